@@ -1,0 +1,51 @@
+"""The ``geardesign`` command: one entry point, one subcommand per job.
+
+Each subcommand lives in its own module with two functions, ``add_parser(subparsers)``
+and ``run(args) -> int``. Errors of the GearDesignError family print one line on stderr
+and exit with status 2; nothing prints a traceback for bad input.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from ..errors import GearDesignError
+
+# Subcommand modules, in the order ``geardesign --help`` lists them.
+SUBCOMMANDS = ("pair", "shift", "atlas", "teeth", "chain", "key", "run")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="geardesign",
+        description="Gear-pair geometry and profile-shift optimisation, roller chains and keys.")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    sub.required = True
+    for name in SUBCOMMANDS:
+        try:
+            module = importlib.import_module(f"{__name__}.{name}")
+        except ModuleNotFoundError as exc:
+            if exc.name == f"{__name__}.{name}":
+                continue  # subcommand not built yet
+            raise
+        p = module.add_parser(sub)
+        p.set_defaults(_run=module.run)
+    return parser
+
+
+def main(argv=None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args._run(args) or 0)
+    except GearDesignError as exc:
+        print(f"geardesign {args.command}: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,70 @@
+"""Shared output helpers of the subcommands: JSON, human tables, a progress bar."""
+from __future__ import annotations
+
+import json
+import math
+import sys
+
+import numpy as np
+import pandas as pd
+
+
+def _plain(value):
+    """Convert numpy and pandas scalars to JSON-ready Python values (NaN -> None)."""
+    if isinstance(value, dict):
+        return {str(k): _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return [_plain(v) for v in value.tolist()]
+    if isinstance(value, (np.bool_, bool)):
+        return bool(value)
+    if isinstance(value, (np.integer,)):
+        return int(value)
+    if isinstance(value, (float, np.floating)):
+        v = float(value)
+        return None if not math.isfinite(v) else v
+    return value
+
+
+def print_json(obj) -> None:
+    print(json.dumps(_plain(obj), indent=2, ensure_ascii=False))
+
+
+def frame_records(frame: pd.DataFrame) -> list[dict]:
+    return [_plain(r) for r in frame.to_dict(orient="records")]
+
+
+def print_frame(frame: pd.DataFrame, title: str | None = None, float_format="{:.6g}") -> None:
+    if title:
+        print(title)
+    with pd.option_context("display.max_rows", 500, "display.max_columns", 50, "display.width", 160):
+        print(frame.to_string(index=False, float_format=float_format.format))
+
+
+def add_json_flag(parser) -> None:
+    parser.add_argument("--json", action="store_true", help="print JSON instead of tables")
+
+
+class Progress:
+    """A one-line progress bar on stderr, shown only on a terminal."""
+
+    def __init__(self, total: int, label: str = "", stream=None):
+        self.total = max(int(total), 1)
+        self.label = label
+        self.stream = stream or sys.stderr
+        self.enabled = self.stream.isatty()
+        self.done = 0
+
+    def update(self, n: int = 1) -> None:
+        self.done += n
+        if self.enabled:
+            frac = min(self.done / self.total, 1.0)
+            bar = "#" * int(30 * frac)
+            self.stream.write(f"\r{self.label} [{bar:<30}] {self.done}/{self.total}")
+            self.stream.flush()
+
+    def close(self) -> None:
+        if self.enabled:
+            self.stream.write("\n")
+            self.stream.flush()

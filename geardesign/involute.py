@@ -1,0 +1,108 @@
+"""The involute function inv(α) = tan α − α and its inverse, exact to a few ulp.
+
+All functions take and return radians (or the dimensionless tangent), broadcast over numpy
+arrays, and return a Python float when every argument is a scalar.
+
+Why not just ``tan(a) - a``: for small angles the two terms cancel (inv α ≈ α³/3), so the
+plain difference loses ~log10(3/α²) digits. Below |tan α| = 0.3 we sum the Taylor series of
+t − atan t in t = tan α instead, which has no cancellation at all.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .errors import GearDesignError
+
+__all__ = ["inv", "inv_from_tan", "inv_inverse", "tan_from_inv"]
+
+# t - atan(t) = t^3 * sum_k (-1)^k t^(2k) / (2k + 3); at |t| < 0.3 the 17th term is < 1e-18.
+_SERIES_T = 0.3
+_SERIES_COEF = np.array([(-1.0) ** k / (2 * k + 3) for k in range(17)])
+
+
+def _scalar_out(value, *inputs):
+    return float(value) if all(np.ndim(x) == 0 for x in inputs) else value
+
+
+def _t_minus_atan(t: np.ndarray) -> np.ndarray:
+    """t − atan t without cancellation (series where |t| is small)."""
+    out = t - np.arctan(t)
+    small = np.abs(t) < _SERIES_T
+    if small.any():
+        ts = t[small]
+        t2 = ts * ts
+        acc = np.full_like(ts, _SERIES_COEF[-1])
+        for c in _SERIES_COEF[-2::-1]:
+            acc = acc * t2 + c
+        out[small] = acc * t2 * ts
+    return out
+
+
+def inv_from_tan(t):
+    """Involute function from the tangent of the angle: inv α = t − atan t, t = tan α.
+
+    Used inside geometry, where tan α is what the geometry gives (tan α_a = √(r_a² − r_b²)/r_b),
+    so no arccos of a number near 1 is ever taken.
+
+    >>> round(inv_from_tan(np.tan(np.radians(20.0))), 12)
+    0.014904383867
+    """
+    t = np.asarray(t, dtype=float)
+    out = _t_minus_atan(np.atleast_1d(t).copy()).reshape(t.shape)
+    return _scalar_out(out, t)
+
+
+def inv(alpha):
+    """Involute function inv α = tan α − α, α in radians (ISO 21771:2007, eq. for inv α).
+
+    Accurate to a few ulp for all α in [0, π/2), including α → 0 where inv α ≈ α³/3.
+
+    >>> round(inv(np.radians(20.0)), 12)   # handbook value inv 20° = 0.014904
+    0.014904383867
+    >>> inv(1e-6)                          # α³/3 + 2α⁵/15, no cancellation
+    3.333333333334666e-19
+    """
+    alpha = np.asarray(alpha, dtype=float)
+    t = np.tan(np.atleast_1d(alpha))
+    out = _t_minus_atan(t).reshape(alpha.shape)
+    return _scalar_out(out, alpha)
+
+
+def tan_from_inv(v, *, validate: bool = True):
+    """tan α of the angle whose involute is v (v > 0); the workhorse behind :func:`inv_inverse`.
+
+    Newton's method on g(t) = t − atan t − v, which is convex and increasing for t > 0.
+    The start t0 = s(1 + s²/5), s = (3v)^(1/3), is the series inverse for small v and
+    t0 = w − 1/w, w = v + π/2 the asymptote for large v; three steps on the plain
+    difference and a last one on the cancellation-free series reach 1 ulp for
+    1e-12 <= v <= 10 (checked against 50-digit mpmath in the tests).
+    """
+    v_in = np.asarray(v, dtype=float)
+    v = np.atleast_1d(v_in)
+    if validate:
+        bad = ~(v > 0) | ~np.isfinite(v)
+        if bad.any():
+            raise GearDesignError(
+                f"involute value must be finite and > 0, got {v[bad][0]!r}")
+    s = np.cbrt(3.0 * v)
+    w = v + np.pi / 2
+    t = np.where(v < 0.5, s * (1.0 + s * s / 5.0), w - 1.0 / w)
+    for _ in range(3):
+        t2 = t * t
+        t = t - (t - np.arctan(t) - v) * (1.0 + t2) / t2
+    t2 = t * t
+    t = t - (_t_minus_atan(t) - v) * (1.0 + t2) / t2
+    return _scalar_out(t.reshape(v_in.shape), v_in)
+
+
+def inv_inverse(v):
+    """The angle α in radians (0 < α < π/2) with inv α = v, for v > 0.
+
+    >>> round(float(np.degrees(inv_inverse(0.014904383867))), 9)
+    20.0
+    >>> v = inv(np.radians(20.0)) + 2 * 0.96 * np.tan(np.radians(20.0)) / 36  # KHK 12/24, x 0.6/0.36
+    >>> round(float(np.degrees(inv_inverse(v))), 4)                           # KHK: α_w = 26.0886°
+    26.0886
+    """
+    t = tan_from_inv(v)
+    return _scalar_out(np.arctan(t), np.asarray(v))
