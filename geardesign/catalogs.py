@@ -1,0 +1,415 @@
+"""Catalog tables (CSV, loaded with pandas) and their validation.
+
+Every table lives in the top-level ``catalogs/`` folder of the source tree, which ships in the
+wheel as the package ``geardesign.catalog_files``. A table is named (``"gost13568"``,
+``"keys"``, ...) or given as the path of a user's own CSV file in the same format (a
+manufacturer's chain list, say). Loading validates the file against its schema: required
+columns, types, units in the column names, positive and monotone values where they must be.
+A broken file raises :class:`~geardesign.errors.CatalogError` naming the file, the row (as
+the line number in the file) and the column.
+
+Units are in the column names (``pitch_mm``, ``breaking_load_kn``, ``mass_kg_m``). Every
+bundled table carries ``edition`` and ``source`` columns; user files need not.
+"""
+from __future__ import annotations
+
+import importlib.resources
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from .errors import CatalogError, GearDesignError
+
+__all__ = [
+    "catalog_dir",
+    "catalog_names",
+    "load_catalog",
+    "chain_catalog",
+    "module_series",
+    "center_distance_series",
+    "key_lengths_mm",
+]
+
+
+@dataclass(frozen=True)
+class Column:
+    """One column of a schema: its kind, whether blanks are allowed and its sign."""
+
+    name: str
+    kind: str = "float"  # "float", "int" or "str"
+    required: bool = True  # False: blanks (NaN) allowed
+    positive: bool = False
+
+
+@dataclass(frozen=True)
+class Schema:
+    kind: str
+    columns: tuple[Column, ...]
+    # columns whose values must increase strictly down the file (within each group, if given)
+    increasing: tuple[str, ...] = ()
+    increasing_within: tuple[str, ...] = ()
+    # (column, "nonincreasing" | "nondecreasing") along ``increasing`` within each group
+    trend: tuple[tuple[str, str], ...] = ()
+    bundled_only: tuple[str, ...] = ("edition", "source")
+    description: str = ""
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return tuple(c.name for c in self.columns)
+
+
+def _f(name, **kw):
+    return Column(name, "float", positive=kw.pop("positive", True), **kw)
+
+
+CHAIN_SCHEMA = Schema(
+    "chains",
+    (
+        Column("designation", "str"),
+        _f("pitch_mm"),
+        Column("strands", "int", positive=True),
+        _f("roller_d1_mm"),
+        _f("inner_width_mm"),
+        _f("pin_d_mm"),
+        _f("transverse_pitch_mm", required=False),
+        _f("hinge_area_mm2"),
+        _f("breaking_load_kn"),
+        _f("mass_kg_m"),
+    ),
+    description="roller chains: one row per chain and strand count; hinge area per strand",
+)
+
+SCHEMAS: dict[str, Schema] = {
+    "chains": CHAIN_SCHEMA,
+    "chain_allowable_pressure": Schema(
+        "chain_allowable_pressure",
+        (_f("pitch_min_mm"), _f("pitch_max_mm"), _f("n1_rpm"), _f("allowable_pressure_mpa")),
+        increasing=("n1_rpm",), increasing_within=("pitch_min_mm",),
+        trend=(("allowable_pressure_mpa", "nonincreasing"),),
+        description="allowable hinge pressure [p] by pitch group and small-sprocket speed"),
+    "chain_safety_factor": Schema(
+        "chain_safety_factor",
+        (_f("pitch_mm"), _f("n1_rpm"), _f("allowable_safety_factor")),
+        description="normative breaking-load safety factor [s] by pitch and speed"),
+    "chain_speed_limits": Schema(
+        "chain_speed_limits",
+        (_f("pitch_mm"), _f("n1_recommended_rpm"), _f("n1_max_rpm"), _f("impacts_allowed_per_s")),
+        increasing=("pitch_mm",),
+        description="recommended and maximum small-sprocket speed, allowed impacts per second"),
+    "chain_operating_factors": Schema(
+        "chain_operating_factors",
+        (Column("factor", "str"), Column("condition", "str"), _f("value")),
+        description="operating factors K_d, K_a, K_n, K_reg, K_lub, K_mode by condition"),
+    "chain_strand_factors": Schema(
+        "chain_strand_factors",
+        (Column("strands", "int", positive=True), _f("hinge_strand_factor"), _f("power_strand_factor")),
+        increasing=("strands",),
+        trend=(("hinge_strand_factor", "nondecreasing"), ("power_strand_factor", "nondecreasing")),
+        description="effective strand counts m*K_m (hinge method) and multiple-strand factors (power rating)"),
+    "keys": Schema(
+        "keys",
+        (_f("d_over_mm"), _f("d_upto_mm"), _f("b_mm"), _f("h_mm"), _f("t1_mm"), _f("t2_mm"),
+         _f("l_min_mm", required=False), _f("l_max_mm", required=False)),
+        increasing=("d_over_mm",),
+        trend=(("b_mm", "nondecreasing"), ("h_mm", "nondecreasing")),
+        description="parallel key sections by shaft diameter (GOST 23360-78 / DIN 6885-1)"),
+    "key_lengths": Schema(
+        "key_lengths", (_f("length_mm"),), increasing=("length_mm",),
+        description="standard key lengths"),
+    "modules": Schema(
+        "modules", (_f("module_mm"), Column("series", "int", positive=True)), increasing=("module_mm",),
+        description="gear module series (ISO 54 / GOST 9563)"),
+    "center_distances": Schema(
+        "center_distances", (_f("a_w_mm"), Column("series", "int", positive=True)), increasing=("a_w_mm",),
+        description="standard centre distances (GOST 2185-66)"),
+}
+
+# Bundled tables: name -> (file, schema kind, row filter on the "series" column or None)
+BUNDLED: dict[str, tuple[str, str, str | None]] = {
+    "gost13568": ("chains_gost13568.csv", "chains", None),
+    "iso606": ("chains_iso606.csv", "chains", None),
+    "iso606a": ("chains_iso606.csv", "chains", "A"),
+    "iso606b": ("chains_iso606.csv", "chains", "B"),
+    "ansi_b29": ("chains_ansi_b29.csv", "chains", None),
+    "chain_allowable_pressure": ("chain_allowable_pressure.csv", "chain_allowable_pressure", None),
+    "chain_safety_factor": ("chain_safety_factor.csv", "chain_safety_factor", None),
+    "chain_speed_limits": ("chain_speed_limits.csv", "chain_speed_limits", None),
+    "chain_operating_factors": ("chain_operating_factors.csv", "chain_operating_factors", None),
+    "chain_strand_factors": ("chain_strand_factors.csv", "chain_strand_factors", None),
+    "keys": ("keys_gost23360.csv", "keys", None),
+    "key_lengths": ("key_lengths.csv", "key_lengths", None),
+    "modules": ("modules_iso54.csv", "modules", None),
+    "center_distances": ("center_distances_gost2185.csv", "center_distances", None),
+}
+CHAIN_CATALOGS = ("gost13568", "iso606", "iso606a", "iso606b", "ansi_b29")
+
+
+def catalog_dir():
+    """The folder holding the bundled CSV tables.
+
+    The source tree's ``catalogs/`` when running in-tree (tests from the repository root),
+    otherwise the installed package ``geardesign.catalog_files``.
+    """
+    here = Path(__file__).resolve().parent.parent / "catalogs"
+    if here.is_dir():
+        return here
+    return importlib.resources.files("geardesign.catalog_files")
+
+
+def catalog_names() -> tuple[str, ...]:
+    """Names accepted by :func:`load_catalog`."""
+    return tuple(BUNDLED)
+
+
+def _where(path, line: int | None = None, column: str | None = None) -> str:
+    parts = [str(path)]
+    if line is not None:
+        parts.append(f"row {line}")
+    if column is not None:
+        parts.append(f"column '{column}'")
+    return ", ".join(parts)
+
+
+def _validate(frame: pd.DataFrame, schema: Schema, path, bundled: bool) -> pd.DataFrame:
+    """Check and coerce ``frame`` in place of a fresh copy; raise CatalogError on the first fault.
+
+    Row numbers in messages are line numbers of the CSV file (the header is line 1).
+    """
+    frame = frame.copy()
+    if frame.empty:
+        raise CatalogError(f"{path}: no rows (a {schema.kind} table needs at least one)")
+    needed = schema.names + (schema.bundled_only if bundled else ())
+    missing = [c for c in needed if c not in frame.columns]
+    if missing:
+        raise CatalogError(
+            f"{path}: missing column(s) {', '.join(repr(m) for m in missing)} "
+            f"(a {schema.kind} table needs {', '.join(needed)})")
+    lines = np.arange(len(frame)) + 2
+    for col in schema.columns:
+        raw = frame[col.name]
+        if col.kind == "str":
+            blank = raw.isna() | (raw.astype(str).str.strip() == "")
+            if col.required and blank.any():
+                i = int(np.argmax(blank.to_numpy()))
+                raise CatalogError(f"{_where(path, lines[i], col.name)}: empty, a text value is required")
+            frame[col.name] = raw.astype(str).str.strip()
+            continue
+        values = pd.to_numeric(raw, errors="coerce")
+        bad_type = values.isna() & raw.notna() & (raw.astype(str).str.strip() != "")
+        if bad_type.any():
+            i = int(np.argmax(bad_type.to_numpy()))
+            raise CatalogError(f"{_where(path, lines[i], col.name)}: not a number, got {raw.iloc[i]!r}")
+        arr = values.to_numpy(dtype=float)
+        if col.required and np.isnan(arr).any():
+            i = int(np.argmax(np.isnan(arr)))
+            raise CatalogError(f"{_where(path, lines[i], col.name)}: empty, a number is required")
+        if np.isinf(arr).any():
+            i = int(np.argmax(np.isinf(arr)))
+            raise CatalogError(f"{_where(path, lines[i], col.name)}: must be finite, got {arr[i]!r}")
+        if col.positive and (arr <= 0).any():
+            i = int(np.argmax(arr <= 0))
+            raise CatalogError(f"{_where(path, lines[i], col.name)}: must be > 0, got {arr[i]!r}")
+        if col.kind == "int":
+            frac = ~np.isnan(arr) & (arr != np.round(arr))
+            if frac.any():
+                i = int(np.argmax(frac))
+                raise CatalogError(f"{_where(path, lines[i], col.name)}: must be a whole number, got {arr[i]!r}")
+            frame[col.name] = arr.astype(np.int64) if not np.isnan(arr).any() else arr
+        else:
+            frame[col.name] = arr
+    groups = [frame.index.to_numpy()] if not schema.increasing_within else [
+        idx.to_numpy() for _, idx in frame.groupby(list(schema.increasing_within), sort=False).groups.items()]
+    for idx in groups:
+        for col in schema.increasing:
+            v = frame.loc[idx, col].to_numpy(dtype=float)
+            bad = np.flatnonzero(np.diff(v) <= 0)
+            if bad.size:
+                i = idx[bad[0] + 1]
+                raise CatalogError(
+                    f"{_where(path, lines[frame.index.get_loc(i)], col)}: values must increase down the "
+                    f"table, got {v[bad[0] + 1]!r} after {v[bad[0]]!r}")
+        for col, how in schema.trend:
+            v = frame.loc[idx, col].to_numpy(dtype=float)
+            step = np.diff(v)
+            bad = np.flatnonzero(step > 0 if how == "nonincreasing" else step < 0)
+            if bad.size:
+                i = idx[bad[0] + 1]
+                word = "rise" if how == "nonincreasing" else "fall"
+                raise CatalogError(
+                    f"{_where(path, lines[frame.index.get_loc(i)], col)}: must not {word} down the table, "
+                    f"got {v[bad[0] + 1]!r} after {v[bad[0]]!r}")
+    _row_rules(frame, schema, path, lines)
+    return frame
+
+
+def _row_rules(frame: pd.DataFrame, schema: Schema, path, lines) -> None:
+    """Consistency rules between columns of one row."""
+    def fail(mask, col, text):
+        if mask.any():
+            i = int(np.argmax(mask))
+            raise CatalogError(f"{_where(path, lines[i], col)}: {text}")
+
+    if schema.kind == "chains":
+        multi = frame["strands"].to_numpy() > 1
+        fail(multi & np.isnan(frame["transverse_pitch_mm"].to_numpy(dtype=float)), "transverse_pitch_mm",
+             "a chain with more than one strand needs its transverse pitch")
+        fail(frame["roller_d1_mm"].to_numpy() >= frame["pitch_mm"].to_numpy(), "roller_d1_mm",
+             "the roller diameter must be smaller than the pitch")
+        fail(frame["pin_d_mm"].to_numpy() >= frame["roller_d1_mm"].to_numpy(), "pin_d_mm",
+             "the pin diameter must be smaller than the roller diameter")
+    elif schema.kind == "chain_allowable_pressure":
+        fail(frame["pitch_max_mm"].to_numpy() < frame["pitch_min_mm"].to_numpy(), "pitch_max_mm",
+             "pitch_max_mm must be >= pitch_min_mm")
+    elif schema.kind == "keys":
+        fail(frame["d_upto_mm"].to_numpy() <= frame["d_over_mm"].to_numpy(), "d_upto_mm",
+             "d_upto_mm must be > d_over_mm")
+        gap = frame["d_over_mm"].to_numpy()[1:] != frame["d_upto_mm"].to_numpy()[:-1]
+        fail(np.concatenate([[False], gap]), "d_over_mm", "shaft ranges must join (d_over = previous d_upto)")
+        fail(frame["t1_mm"].to_numpy() >= frame["h_mm"].to_numpy(), "t1_mm", "shaft depth t1 must be < key height h")
+        lmin, lmax = frame["l_min_mm"].to_numpy(dtype=float), frame["l_max_mm"].to_numpy(dtype=float)
+        fail(lmax < lmin, "l_max_mm", "l_max_mm must be >= l_min_mm")
+    elif schema.kind in ("modules", "center_distances"):
+        fail(~frame["series"].isin([1, 2]).to_numpy(), "series", "series must be 1 or 2")
+
+
+def _schema_for(frame_columns, kind: str | None, path) -> Schema:
+    if kind is not None:
+        if kind not in SCHEMAS:
+            raise GearDesignError(f"catalog kind must be one of {', '.join(SCHEMAS)}, got {kind!r}")
+        return SCHEMAS[kind]
+    for schema in SCHEMAS.values():
+        if set(schema.names) <= set(frame_columns):
+            return schema
+    raise CatalogError(
+        f"{path}: columns {', '.join(frame_columns)} match no known table; pass kind= one of {', '.join(SCHEMAS)}")
+
+
+@lru_cache(maxsize=64)
+def _read_cached(path_text: str, mtime_ns: int, kind: str | None, bundled: bool, series: str | None):
+    path = Path(path_text)
+    try:
+        raw = pd.read_csv(path, dtype=str, keep_default_na=False, na_values=[""], comment=None)
+    except pd.errors.ParserError as exc:
+        raise CatalogError(f"{path}: not a readable CSV file ({exc})") from None
+    except UnicodeDecodeError as exc:
+        raise CatalogError(f"{path}: not UTF-8 text ({exc})") from None
+    raw.columns = [c.strip() for c in raw.columns]
+    schema = _schema_for(tuple(raw.columns), kind, path)
+    frame = _validate(raw, schema, path, bundled)
+    if series is not None:
+        frame = frame[frame["series"] == series].reset_index(drop=True)
+    frame.attrs["path"] = str(path)
+    frame.attrs["kind"] = schema.kind
+    return frame
+
+
+def load_catalog(name_or_path, kind: str | None = None) -> pd.DataFrame:
+    """Load and validate a catalog table.
+
+    Parameters
+    ----------
+    name_or_path : str or path-like
+        A bundled table name (see :func:`catalog_names`: ``"gost13568"``, ``"iso606a"``,
+        ``"keys"``, ``"modules"``, ...) or the path of a CSV file in the same format.
+    kind : str, optional
+        The schema a user file must follow (``"chains"``, ``"keys"``, ...). Inferred from the
+        columns when omitted.
+
+    Returns
+    -------
+    pandas.DataFrame
+        A fresh copy (safe to modify); ``frame.attrs["path"]`` and ``["kind"]`` say where it
+        came from. Lengths in mm, forces in kN, masses in kg/m, speeds in rpm.
+
+    Raises
+    ------
+    CatalogError
+        Unknown name, missing file, or a file that breaks its schema (names file, row, column).
+    """
+    series = None
+    bundled = False
+    if isinstance(name_or_path, str) and name_or_path in BUNDLED:
+        file, bundled_kind, series = BUNDLED[name_or_path]
+        if kind is not None and kind != bundled_kind:
+            raise GearDesignError(f"catalog {name_or_path!r} is a {bundled_kind} table, not {kind!r}")
+        kind = bundled_kind
+        path = catalog_dir() / file
+        bundled = True
+    elif isinstance(name_or_path, (str, Path)) and (
+            isinstance(name_or_path, Path) or name_or_path.lower().endswith(".csv") or "/" in name_or_path
+            or "\\" in name_or_path):
+        path = Path(name_or_path)
+    else:
+        raise CatalogError(
+            f"catalog must be one of {', '.join(BUNDLED)} or the path of a .csv file, got {name_or_path!r}")
+    try:
+        with importlib.resources.as_file(path) as real:
+            real = Path(real)
+            if not real.is_file():
+                raise CatalogError(f"{real}: catalog file not found")
+            frame = _read_cached(str(real), real.stat().st_mtime_ns, kind, bundled, series)
+    except OSError as exc:
+        raise CatalogError(f"{path}: cannot read catalog file ({exc})") from None
+    out = frame.copy()
+    out.attrs = dict(frame.attrs)
+    return out
+
+
+def chain_catalog(name_or_path="gost13568") -> pd.DataFrame:
+    """A validated roller-chain table (see :data:`CHAIN_SCHEMA`), sorted by pitch and strands.
+
+    ``name_or_path`` is one of ``"gost13568"``, ``"iso606"``, ``"iso606a"``, ``"iso606b"``,
+    ``"ansi_b29"`` or a path to a CSV with the chain columns (a manufacturer's list).
+    """
+    if isinstance(name_or_path, str) and name_or_path in BUNDLED and name_or_path not in CHAIN_CATALOGS:
+        raise GearDesignError(
+            f"catalog must be a chain table ({', '.join(CHAIN_CATALOGS)}) or a CSV path, got {name_or_path!r}")
+    frame = load_catalog(name_or_path, kind="chains")
+    attrs = dict(frame.attrs)
+    frame = frame.sort_values(["pitch_mm", "strands", "breaking_load_kn"], kind="stable").reset_index(drop=True)
+    frame.attrs = attrs
+    frame.attrs["name"] = str(name_or_path)
+    return frame
+
+
+def _series_values(name: str, column: str, series) -> np.ndarray:
+    wanted = (series,) if np.ndim(series) == 0 else tuple(series)
+    bad = [s for s in wanted if s not in (1, 2)]
+    if bad or not wanted:
+        raise GearDesignError(f"series must be 1, 2 or (1, 2), got {series!r}")
+    frame = load_catalog(name)
+    return np.sort(frame.loc[frame["series"].isin(wanted), column].to_numpy(dtype=float))
+
+
+def module_series(series=(1, 2), min_mm: float | None = None, max_mm: float | None = None) -> np.ndarray:
+    """Standard gear modules in mm (ISO 54:1996 1-50 mm; GOST 9563-60 0.05-100 mm), sorted.
+
+    ``series`` is 1 (preferred), 2, or (1, 2). ``min_mm``/``max_mm`` bound the range.
+
+    >>> module_series(1, 1, 3).tolist()
+    [1.0, 1.25, 1.5, 2.0, 2.5, 3.0]
+    """
+    values = _series_values("modules", "module_mm", series)
+    lo = -np.inf if min_mm is None else min_mm
+    hi = np.inf if max_mm is None else max_mm
+    return values[(values >= lo) & (values <= hi)]
+
+
+def center_distance_series(series=(1, 2), min_mm: float | None = None, max_mm: float | None = None) -> np.ndarray:
+    """Standard centre distances a_w in mm (GOST 2185-66, series 1 and 2), sorted.
+
+    >>> center_distance_series(2, 100, 200).tolist()
+    [112.0, 140.0, 180.0]
+    """
+    values = _series_values("center_distances", "a_w_mm", series)
+    lo = -np.inf if min_mm is None else min_mm
+    hi = np.inf if max_mm is None else max_mm
+    return values[(values >= lo) & (values <= hi)]
+
+
+def key_lengths_mm() -> np.ndarray:
+    """The standard parallel-key lengths in mm (GOST 23360-78), ascending."""
+    return load_catalog("key_lengths")["length_mm"].to_numpy(dtype=float)

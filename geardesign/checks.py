@@ -1,0 +1,315 @@
+"""Design checks of a spur pair as named constraints with signed, dimensionless margins.
+
+Every check maps a geometry (see :func:`geardesign.geometry.pair_geometry`) to
+
+* ``value`` — the checked quantity, ``limit`` — its bound (a parameter of the check),
+* ``margin`` — signed and dimensionless, >= 0 where the check holds (lengths are divided
+  by the module, so margins of different checks compare),
+* ``gradient`` — ∂margin/∂x1 and ∂margin/∂x2, analytic (checked against finite differences
+  in the tests), for the optimisers of :mod:`geardesign.shift`.
+
+A problem models only the checks asked for: build the list with :func:`make_checks`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+import pandas as pd
+
+from .errors import GearDesignError, require_finite, require_range
+
+__all__ = [
+    "Check", "Undercut", "Interference", "TipThickness", "ContactRatio", "Jamming", "CustomCheck",
+    "make_checks", "evaluate", "DEFAULT_EPS_ALPHA_MIN", "DEFAULT_SA_MIN",
+]
+
+DEFAULT_EPS_ALPHA_MIN = 1.2
+DEFAULT_SA_MIN = 0.25
+
+
+def _other(gear: int) -> int:
+    return 2 if gear == 1 else 1
+
+
+def _drho_a(geo: dict, gear: int):
+    """∂ρ_a/∂x1, ∂ρ_a/∂x2 of the tip radius of curvature ρ_a = √(r_a² − r_b²) of ``gear``.
+
+    ∂ρ_a/∂r_a = r_a/ρ_a and ∂r_a/∂x_j = m(δ_gear,j − ∂Δy/∂x_Σ).
+    """
+    f = geo[f"_ra{gear}"] / geo[f"_rho_a{gear}"] * geo["_m"]
+    own = f * (1.0 - geo["_dk"])
+    other = -f * geo["_dk"]
+    return (own, other) if gear == 1 else (other, own)
+
+
+def _dg(geo: dict):
+    """∂(a_w sin α_w)/∂x_j = m sin α / sin²α_w (same for both j)."""
+    return geo["_m"] * geo["_sa"] / geo["_sin_w"] ** 2
+
+
+@dataclass(frozen=True)
+class Check:
+    """Base of all checks: a name, a readable label and a limit."""
+
+    name: str = ""
+    label: str = ""
+    limit: float = 0.0
+
+    def value(self, geo: dict):
+        raise NotImplementedError
+
+    def limit_value(self, geo: dict):
+        return self.limit
+
+    def margin(self, geo: dict):
+        return self.value(geo) - self.limit_value(geo)
+
+    def gradient(self, geo: dict):
+        raise NotImplementedError
+
+
+@dataclass(frozen=True)
+class Undercut(Check):
+    """No undercut of ``gear``: x >= x_min = h_l* − z sin²α/2 (margin x − x_min)."""
+
+    gear: int = 1
+
+    def __post_init__(self):
+        object.__setattr__(self, "name", self.name or f"undercut{self.gear}")
+        object.__setattr__(self, "label", self.label or f"no undercut of gear {self.gear} (x{self.gear} >= x_min)")
+
+    def value(self, geo):
+        return geo[f"_x{self.gear}"]
+
+    def limit_value(self, geo):
+        return geo[f"x_min{self.gear}"]
+
+    def gradient(self, geo):
+        one, zero = np.ones_like(geo["a"]), np.zeros_like(geo["a"])
+        return (one, zero) if self.gear == 1 else (zero, one)
+
+
+@dataclass(frozen=True)
+class Interference(Check):
+    """No interference of the mate's tip with the fillet of ``gear`` (GOST 16532-70 "заклинивание").
+
+    The start of the active profile (radius of curvature ρ_p = a_w sin α_w − ρ_a,mate) must lie
+    on the generated involute, above its limit point ρ_l (and above the base circle, ρ >= 0, even
+    for an undercut gear). Margin (ρ_p − max(ρ_l, 0))/m.
+    """
+
+    gear: int = 1
+
+    def __post_init__(self):
+        object.__setattr__(self, "name", self.name or f"interference{self.gear}")
+        object.__setattr__(self, "label", self.label or
+                           f"no interference of gear {_other(self.gear)}'s tip with gear {self.gear}'s fillet")
+
+    def value(self, geo):
+        return geo[f"rho_p{self.gear}"] / geo["_m"]
+
+    def limit_value(self, geo):
+        return np.maximum(geo[f"rho_l{self.gear}"], 0.0) / geo["_m"]
+
+    def gradient(self, geo):
+        m = geo["_m"]
+        dg = _dg(geo)
+        dm1, dm2 = _drho_a(geo, _other(self.gear))
+        active_limit = (geo[f"rho_l{self.gear}"] > 0).astype(float) / geo["_sa"]
+        g1 = (dg - dm1) / m - (active_limit if self.gear == 1 else 0.0)
+        g2 = (dg - dm2) / m - (active_limit if self.gear == 2 else 0.0)
+        return g1, g2
+
+
+@dataclass(frozen=True)
+class TipThickness(Check):
+    """Tip thickness s_a >= limit·m (limit = sa_min, 0.25 by default; 0.4 for case-hardened gears).
+
+    Margin s_a/m − sa_min; with sa_min = 0 it is the "not pointed" check.
+    """
+
+    gear: int = 1
+    limit: float = DEFAULT_SA_MIN
+
+    def __post_init__(self):
+        require_range("sa_min", self.limit, 0.0, 2.0)
+        object.__setattr__(self, "name", self.name or f"tip_thickness{self.gear}")
+        object.__setattr__(self, "label", self.label or f"tip thickness of gear {self.gear}: s_a{self.gear}/m >= sa_min")
+
+    def value(self, geo):
+        return geo[f"sa{self.gear}"] / geo["_m"]
+
+    def gradient(self, geo):
+        # s_a = d_a(ψ − inv α_a);  ∂inv α_a/∂d_a = tan α_a / d_a;  ∂ψ/∂x = 2 tan α / z
+        j = self.gear
+        m = geo["_m"]
+        dda_own = 2.0 * m * (1.0 - geo["_dk"])
+        dda_other = -2.0 * m * geo["_dk"]
+        coef = geo[f"_psi{j}"] - geo[f"_inv_a{j}"] - geo[f"_t_a{j}"]
+        dpsi = geo[f"da{j}"] * 2.0 * geo["_ta"] / geo[f"_z{j}"]
+        own = (dda_own * coef + dpsi) / m
+        other = dda_other * coef / m
+        return (own, other) if j == 1 else (other, own)
+
+
+@dataclass(frozen=True)
+class ContactRatio(Check):
+    """Transverse contact ratio ε_α >= limit (eps_alpha_min, 1.2 by default). Margin ε_α − limit."""
+
+    limit: float = DEFAULT_EPS_ALPHA_MIN
+
+    def __post_init__(self):
+        require_range("eps_alpha_min", self.limit, 0.0, 10.0)
+        object.__setattr__(self, "name", self.name or "contact_ratio")
+        object.__setattr__(self, "label", self.label or "transverse contact ratio eps_alpha >= eps_alpha_min")
+
+    def value(self, geo):
+        return geo["eps_alpha"]
+
+    def gradient(self, geo):
+        a1, b1 = _drho_a(geo, 1)
+        a2, b2 = _drho_a(geo, 2)
+        dg = _dg(geo)
+        return (a1 + a2 - dg) / geo["p_b"], (b1 + b2 - dg) / geo["p_b"]
+
+
+@dataclass(frozen=True)
+class Jamming(Check):
+    """Seed 000's jamming test r_a,mate < O_mate N_gear (the mate's tip stays short of the
+    interference point N on the base circle of ``gear``). Margin (O N − r_a)/m. Implied by
+    :class:`Interference`; reported for comparison with hand calculations.
+    """
+
+    gear: int = 1
+
+    def __post_init__(self):
+        o = _other(self.gear)
+        object.__setattr__(self, "name", self.name or f"jamming{self.gear}")
+        object.__setattr__(self, "label", self.label or f"r_a{o} < O{o}N{self.gear} (tip of gear {o} short of N{self.gear})")
+
+    def value(self, geo):
+        return geo[f"_ra{_other(self.gear)}"] / geo["_m"]
+
+    def limit_value(self, geo):
+        return geo[f"o{_other(self.gear)}n{self.gear}"] / geo["_m"]
+
+    def margin(self, geo):
+        return self.limit_value(geo) - self.value(geo)
+
+    def gradient(self, geo):
+        # O2N1² = r_b2² + g², ∂(O2N1)/∂x = g/O2N1 · ∂g/∂x;  ∂r_a2/∂x_j = m(δ2j − ∂Δy/∂x_Σ)
+        o = _other(self.gear)
+        m = geo["_m"]
+        g = geo[f"_rho_a{o}"] + geo[f"rho_p{self.gear}"]
+        don = g / geo[f"o{o}n{self.gear}"] * _dg(geo)
+        dra_own = m * (1.0 - geo["_dk"])
+        dra_other = -m * geo["_dk"]
+        d_o = (don - dra_own) / m
+        d_n = (don - dra_other) / m
+        return (d_n, d_o) if o == 2 else (d_o, d_n)
+
+
+@dataclass(frozen=True)
+class CustomCheck(Check):
+    """A user's own check: ``func(geo) -> value`` with ``value >= limit`` required
+    (``sense=">="``) or ``value <= limit`` (``sense="<="``). ``geo`` is the dict of geometry
+    arrays (the :data:`~geardesign.geometry.GEOMETRY_FIELDS` names). The gradient, when an
+    optimiser needs one, is taken by central differences.
+    """
+
+    func: Callable | None = None
+    sense: str = ">="
+    scale: float = 1.0
+
+    def __post_init__(self):
+        if not callable(self.func):
+            raise GearDesignError(f"CustomCheck {self.name!r}: func must be callable, got {self.func!r}")
+        if self.sense not in (">=", "<="):
+            raise GearDesignError(f"CustomCheck {self.name!r}: sense must be '>=' or '<=', got {self.sense!r}")
+        if not self.name:
+            raise GearDesignError("CustomCheck needs a name")
+        require_finite("limit", self.limit)
+        object.__setattr__(self, "label", self.label or f"{self.name} {self.sense} {self.limit:g}")
+
+    def value(self, geo):
+        return np.asarray(self.func(geo), dtype=float)
+
+    def margin(self, geo):
+        d = self.value(geo) - self.limit
+        return (d if self.sense == ">=" else -d) / self.scale
+
+    def gradient(self, geo):
+        return None  # the optimiser differentiates numerically
+
+
+def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: float | None = DEFAULT_SA_MIN,
+                undercut: bool = True, interference: bool = True, jamming: bool = False,
+                extra=()) -> tuple[Check, ...]:
+    """The list of checks a case asks for (defaults: DESIGN.md's set).
+
+    ``eps_alpha_min=None`` or ``sa_min=None`` drops that check; ``undercut=False`` allows
+    undercut; ``extra`` adds :class:`Check` objects (e.g. a :class:`CustomCheck`).
+
+    >>> [c.name for c in make_checks(sa_min=0.4, undercut=False)]
+    ['interference1', 'interference2', 'tip_thickness1', 'tip_thickness2', 'contact_ratio']
+    """
+    out: list[Check] = []
+    if undercut:
+        out += [Undercut(gear=1), Undercut(gear=2)]
+    if interference:
+        out += [Interference(gear=1), Interference(gear=2)]
+    if jamming:
+        out += [Jamming(gear=1), Jamming(gear=2)]
+    if sa_min is not None:
+        out += [TipThickness(gear=1, limit=float(sa_min)), TipThickness(gear=2, limit=float(sa_min))]
+    if eps_alpha_min is not None:
+        out += [ContactRatio(limit=float(eps_alpha_min))]
+    for c in extra:
+        if not isinstance(c, Check):
+            raise GearDesignError(f"extra checks must be geardesign.checks.Check objects, got {c!r}")
+        out.append(c)
+    names = [c.name for c in out]
+    dup = {n for n in names if names.count(n) > 1}
+    if dup:
+        raise GearDesignError(f"check names must be unique, got duplicates {sorted(dup)}")
+    return tuple(out)
+
+
+def resolve_checks(checks) -> tuple[Check, ...]:
+    """Accept None (defaults), a dict of :func:`make_checks` keywords, or a sequence of Checks."""
+    if checks is None:
+        return make_checks()
+    if isinstance(checks, dict):
+        try:
+            return make_checks(**checks)
+        except TypeError as exc:
+            raise GearDesignError(
+                f"checks: unknown option in {sorted(checks)}; allowed: eps_alpha_min, sa_min, "
+                f"undercut, interference, jamming, extra") from exc
+    checks = tuple(checks)
+    for c in checks:
+        if not isinstance(c, Check):
+            raise GearDesignError(f"checks must be Check objects, got {c!r}")
+    return checks
+
+
+def evaluate(geo: dict, checks) -> pd.DataFrame:
+    """Rows ``check, label, value, limit, margin, ok`` for one design (geo of 0-d arrays)."""
+    rows = []
+    for c in checks:
+        value = float(np.asarray(c.value(geo)))
+        limit = float(np.asarray(c.limit_value(geo)))
+        margin = float(np.asarray(c.margin(geo)))
+        rows.append((c.name, c.label, value, limit, margin, bool(margin >= 0)))
+    return pd.DataFrame(rows, columns=["check", "label", "value", "limit", "margin", "ok"])
+
+
+def margins(geo: dict, checks) -> dict[str, np.ndarray]:
+    """Margin arrays by check name; NaN geometry (designs that do not exist) gives −inf."""
+    out = {}
+    for c in checks:
+        mg = np.asarray(c.margin(geo), dtype=float)
+        out[c.name] = np.where(np.isnan(mg), -np.inf, mg)
+    return out

@@ -1,0 +1,75 @@
+"""``geardesign pair``: geometry and checks of one spur pair."""
+from __future__ import annotations
+
+from ..geometry import GEOMETRY_FIELDS
+from ..pair import GearPair
+from ..rack import BasicRack
+from .output import add_json_flag, frame_records, print_frame, print_json
+
+
+def add_rack_args(p) -> None:
+    g = p.add_argument_group("basic rack (ISO 53 / GOST 13755 defaults)")
+    g.add_argument("--alpha-deg", type=float, default=20.0, help="pressure angle, degrees (20)")
+    g.add_argument("--ha", type=float, default=1.0, help="addendum coefficient h_a* (1.0)")
+    g.add_argument("--c", type=float, default=0.25, help="clearance coefficient c* (0.25)")
+    g.add_argument("--rho-f", type=float, default=0.38, help="root fillet coefficient rho_f* (0.38)")
+
+
+def rack_from_args(args) -> BasicRack:
+    return BasicRack(alpha_deg=args.alpha_deg, ha=args.ha, c=args.c, rho_f=args.rho_f)
+
+
+def add_limit_args(p) -> None:
+    g = p.add_argument_group("check limits")
+    g.add_argument("--eps-alpha-min", type=float, default=1.2, help="minimum contact ratio (1.2)")
+    g.add_argument("--sa-min", type=float, default=0.25, help="minimum tip thickness / module (0.25)")
+
+
+def add_parser(sub):
+    p = sub.add_parser("pair", help="geometry and checks of one spur pair",
+                       description="Geometry (ISO 21771 / GOST 16532-70) and checks of an external spur pair.")
+    p.add_argument("--module", "-m", type=float, required=True, help="module, mm")
+    p.add_argument("--z1", type=float, required=True, help="teeth of gear 1")
+    p.add_argument("--z2", type=float, required=True, help="teeth of gear 2")
+    p.add_argument("--x1", type=float, default=None, help="profile shift of gear 1 (0)")
+    p.add_argument("--x2", type=float, default=None, help="profile shift of gear 2 (0)")
+    p.add_argument("--center-distance", type=float, default=None, metavar="A",
+                   help="operating centre distance a_w, mm: x2 = x_sum(a_w) - x1 "
+                        "(x1 balances specific sliding when not given)")
+    p.add_argument("--no-tip-shortening", action="store_true",
+                   help="keep d_a = d + 2(h_a* + x)m instead of shortening tips by dy*m")
+    add_rack_args(p)
+    add_limit_args(p)
+    add_json_flag(p)
+    return p
+
+
+def run(args) -> int:
+    rack = rack_from_args(args)
+    shorten = not args.no_tip_shortening
+    if args.center_distance is not None:
+        pair = GearPair.from_center_distance(args.module, args.z1, args.z2, args.center_distance,
+                                             x1=args.x1, rack=rack, tip_shortening=shorten)
+    else:
+        pair = GearPair(args.module, args.z1, args.z2, args.x1 or 0.0, args.x2 or 0.0, rack, shorten)
+    geo = pair.geometry()
+    table = pair.checks(eps_alpha_min=args.eps_alpha_min, sa_min=args.sa_min)
+    if args.json:
+        print_json({
+            "input": {"m": pair.m, "z1": pair.z1, "z2": pair.z2, "x1": pair.x1, "x2": pair.x2,
+                      "alpha_deg": rack.alpha_deg, "ha": rack.ha, "c": rack.c, "rho_f": rack.rho_f,
+                      "tip_shortening": shorten},
+            "geometry": geo.to_dict(),
+            "checks": frame_records(table[["check", "value", "limit", "margin", "ok"]]),
+        })
+        return 0
+    print(f"Spur pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1 = {pair.x1:.6g}, x2 = {pair.x2:.6g}, "
+          f"rack {rack.alpha_deg:g} deg / {rack.ha:g} / {rack.c:g} / {rack.rho_f:g}"
+          f"{'' if shorten else ', no tip shortening'}")
+    frame = geo.to_frame()
+    frame["unit"] = [GEOMETRY_FIELDS[k][0] for k in frame["quantity"]]
+    print_frame(frame[["quantity", "value", "unit", "description"]], "\nGeometry", float_format="{:.8g}")
+    print_frame(table[["check", "value", "limit", "margin", "ok", "label"]], "\nChecks (margin >= 0 holds)")
+    failed = table.loc[~table["ok"], "check"].tolist()
+    print("\nAll checks hold." if not failed else f"\nFailing checks: {', '.join(failed)}")
+    return 0

@@ -1,0 +1,399 @@
+"""External spur gear-pair geometry (ISO 21771:2007, GOST 16532-70), vectorised.
+
+One call evaluates any number of designs: every argument broadcasts (numpy rules) over
+m, z1, z2, x1, x2; the rack is one :class:`~geardesign.rack.BasicRack`. Lengths are in mm
+(or in the unit of ``m``), angles in degrees at the interface and radians inside.
+
+Cancellation-free forms are used where the textbook form loses digits:
+y = (z1+z2)/2 · (cos α − cos α_w)/cos α_w with cos α − cos α_w = 2 sin((α_w+α)/2) sin((α_w−α)/2);
+r_a² − r_b² = (r_a − r_b)(r_a + r_b) with r_a − r_b = m(z sin²(α/2) + h_a* + x − Δy) [GOST tip];
+inv α_a from tan α_a (no arccos near 1); inv itself from a series at small angles.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, fields
+
+import numpy as np
+import pandas as pd
+
+from .errors import GearDesignError, require_finite, require_int, require_positive
+from .involute import inv, inv_from_tan, tan_from_inv
+from .rack import BasicRack
+
+__all__ = [
+    "Geometry",
+    "pair_geometry",
+    "x_sum_from_center_distance",
+    "undercut_x_min",
+    "GEOMETRY_FIELDS",
+    "Z_MIN",
+]
+
+Z_MIN = 3  # smallest tooth count accepted
+
+# name -> (unit, description); the order is the order of reports.
+GEOMETRY_FIELDS: dict[str, tuple[str, str]] = {
+    "alpha_w_deg": ("deg", "operating (working) pressure angle α_w"),
+    "inv_alpha_w": ("-", "involute of α_w"),
+    "a": ("mm", "reference centre distance m(z1+z2)/2"),
+    "a_w": ("mm", "operating centre distance"),
+    "y": ("-", "centre distance modification coefficient (a_w − a)/m"),
+    "dy": ("-", "tip shortening coefficient Δy = x1 + x2 − y"),
+    "d1": ("mm", "reference diameter, gear 1"),
+    "d2": ("mm", "reference diameter, gear 2"),
+    "db1": ("mm", "base diameter, gear 1"),
+    "db2": ("mm", "base diameter, gear 2"),
+    "dw1": ("mm", "operating pitch diameter, gear 1"),
+    "dw2": ("mm", "operating pitch diameter, gear 2"),
+    "da1": ("mm", "tip diameter, gear 1"),
+    "da2": ("mm", "tip diameter, gear 2"),
+    "df1": ("mm", "root diameter, gear 1"),
+    "df2": ("mm", "root diameter, gear 2"),
+    "s1": ("mm", "tooth thickness on the reference circle, gear 1"),
+    "s2": ("mm", "tooth thickness on the reference circle, gear 2"),
+    "sw1": ("mm", "tooth thickness on the operating pitch circle, gear 1"),
+    "sw2": ("mm", "tooth thickness on the operating pitch circle, gear 2"),
+    "sa1": ("mm", "tooth thickness on the tip circle, gear 1"),
+    "sa2": ("mm", "tooth thickness on the tip circle, gear 2"),
+    "p_b": ("mm", "base pitch π m cos α"),
+    "p_w": ("mm", "circular pitch on the operating pitch circle"),
+    "g_alpha": ("mm", "length of the path of contact (active line of action)"),
+    "eps_alpha": ("-", "transverse contact ratio g_α/p_b"),
+    "alpha_a1_deg": ("deg", "pressure angle at the tip, gear 1"),
+    "alpha_a2_deg": ("deg", "pressure angle at the tip, gear 2"),
+    "clearance1": ("mm", "tip-to-root clearance at the tip of gear 1"),
+    "clearance2": ("mm", "tip-to-root clearance at the tip of gear 2"),
+    "x_min1": ("-", "smallest shift of gear 1 without undercut"),
+    "x_min2": ("-", "smallest shift of gear 2 without undercut"),
+    "rho_l1": ("mm", "involute radius of curvature at the limit (form) point, gear 1; < 0 = undercut"),
+    "rho_l2": ("mm", "involute radius of curvature at the limit (form) point, gear 2; < 0 = undercut"),
+    "rho_p1": ("mm", "radius of curvature at the start of the active profile, gear 1"),
+    "rho_p2": ("mm", "radius of curvature at the start of the active profile, gear 2"),
+    "d_l1": ("mm", "limit (form) circle diameter d_Ff, gear 1 (base circle if undercut)"),
+    "d_l2": ("mm", "limit (form) circle diameter d_Ff, gear 2 (base circle if undercut)"),
+    "d_p1": ("mm", "start-of-active-profile diameter d_Nf, gear 1"),
+    "d_p2": ("mm", "start-of-active-profile diameter d_Nf, gear 2"),
+    "o2n1": ("mm", "distance O2N1 from gear 2's centre to gear 1's interference point"),
+    "o1n2": ("mm", "distance O1N2 from gear 1's centre to gear 2's interference point"),
+    "sliding1_root": ("-", "specific sliding of gear 1 at the start of its active profile"),
+    "sliding1_tip": ("-", "specific sliding of gear 1 at its tip"),
+    "sliding2_root": ("-", "specific sliding of gear 2 at the start of its active profile"),
+    "sliding2_tip": ("-", "specific sliding of gear 2 at its tip"),
+    "spec_pressure_pitch": ("-", "specific pressure coefficient m/ρ_red at the pitch point"),
+}
+
+
+# --- formulas ---------------------------------------------------------------------------
+
+def inv_operating_angle(z1, z2, x1, x2, alpha):
+    """inv α_w = inv α + 2 (x1 + x2) tan α / (z1 + z2)  (ISO 21771:2007 eq. (62); GOST 16532-70 Table 1).
+
+    >>> round(float(inv_operating_angle(12, 24, 0.6, 0.36, math.radians(20))), 6)   # KHK: 0.034316
+    0.034316
+    """
+    return inv(alpha) + 2.0 * (np.asarray(x1) + x2) * math.tan(alpha) / (np.asarray(z1) + z2)
+
+
+def undercut_x_min(z, rack: BasicRack = BasicRack()):
+    """Smallest profile shift without undercut, x_min = h_l* − z sin²α / 2.
+
+    h_l* = h_a* + c* − ρ_f*(1 − sin α) is where the cutter's straight flank ends (see
+    :attr:`BasicRack.h_limit`); with ρ_f* = c*/(1 − sin α) it equals h_a*, the textbook form
+    x_min = h_a* − z sin²α/2 (KHK; Litvin & Fuentes §10.5).
+
+    >>> r = BasicRack(rho_f=0.25 / (1 - math.sin(math.radians(20))))
+    >>> [round(float(undercut_x_min(z, r)), 5) for z in (12, 24)]   # KHK: 0.29813, -0.40373
+    [0.29813, -0.40373]
+    """
+    return rack.h_limit - np.asarray(z, dtype=float) * math.sin(rack.alpha) ** 2 / 2.0
+
+
+def x_sum_from_center_distance(m, z1, z2, a_w, rack: BasicRack = BasicRack()):
+    """Sum of profile shifts that gives the operating centre distance a_w (zero backlash).
+
+    cos α_w = a cos α / a_w;  x1 + x2 = (z1 + z2)(inv α_w − inv α) / (2 tan α)
+    (ISO 21771:2007 eq. (62) solved for x_Σ).
+
+    >>> round(x_sum_from_center_distance(3, 12, 24, 56.4999), 6)   # KHK: 0.960013
+    0.960013
+    """
+    alpha = rack.alpha
+    a = np.asarray(m, dtype=float) * (np.asarray(z1) + z2) / 2.0
+    cos_w = a * math.cos(alpha) / np.asarray(a_w, dtype=float)
+    # tan α_w = √((1 − c)(1 + c))/c keeps digits when a_w is close to a cos α
+    one_minus = (a_w - a * math.cos(alpha)) / a_w
+    tan_w = np.sqrt(one_minus * (1.0 + cos_w)) / cos_w
+    out = (np.asarray(z1) + z2) * (inv_from_tan(tan_w) - inv(alpha)) / (2.0 * math.tan(alpha))
+    return float(out) if np.ndim(out) == 0 else out
+
+
+# --- the vectorised core ----------------------------------------------------------------
+
+def _core(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool) -> dict:
+    """All geometry fields as float arrays, no validation (invalid designs give NaN)."""
+    m, z1, z2, x1, x2 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, z1, z2, x1, x2)))
+    alpha = rack.alpha
+    sa, ca, ta = math.sin(alpha), math.cos(alpha), math.tan(alpha)
+    inv_a = inv(alpha)
+    zs = z1 + z2
+    xs = x1 + x2
+
+    inv_aw = inv_a + 2.0 * xs * ta / zs
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ok = inv_aw > 0
+        if ok.all():
+            t_w = tan_from_inv(inv_aw, validate=False)
+        else:
+            t_w = np.full(inv_aw.shape, np.nan)
+            t_w[ok] = tan_from_inv(inv_aw[ok], validate=False)
+        cos_w = 1.0 / np.sqrt(1.0 + t_w * t_w)
+        sin_w = t_w * cos_w
+        alpha_w = np.arctan(t_w)
+
+        a = m * zs / 2.0
+        # cos α − cos α_w without cancellation
+        y = zs / 2.0 * 2.0 * np.sin((alpha_w + alpha) / 2.0) * np.sin((alpha_w - alpha) / 2.0) / cos_w
+        a_w = a + y * m
+        dy = xs - y
+        k = dy if tip_shortening else np.zeros_like(dy)
+
+        d1, d2 = m * z1, m * z2
+        db1, db2 = d1 * ca, d2 * ca
+        dw1, dw2 = d1 * ca / cos_w, d2 * ca / cos_w
+        da1 = d1 + 2.0 * m * (rack.ha + x1 - k)
+        da2 = d2 + 2.0 * m * (rack.ha + x2 - k)
+        hf = rack.ha + rack.c
+        df1 = d1 - 2.0 * m * (hf - x1)
+        df2 = d2 - 2.0 * m * (hf - x2)
+
+        # r_a − r_b = m (z sin²(α/2) + h_a* + x − k): exact when the tip is near the base circle
+        s2h = math.sin(alpha / 2.0) ** 2
+        gap1 = m * (z1 * s2h + rack.ha + x1 - k)
+        gap2 = m * (z2 * s2h + rack.ha + x2 - k)
+        rho_a1 = np.sqrt(gap1 * (gap1 + db1))  # √(r_a² − r_b²) = r_b tan α_a
+        rho_a2 = np.sqrt(gap2 * (gap2 + db2))
+        t_a1, t_a2 = 2.0 * rho_a1 / db1, 2.0 * rho_a2 / db2
+
+        psi1 = math.pi / (2.0 * z1) + 2.0 * x1 * ta / z1 + inv_a   # s/d + inv α
+        psi2 = math.pi / (2.0 * z2) + 2.0 * x2 * ta / z2 + inv_a
+        s1, s2 = d1 * (psi1 - inv_a), d2 * (psi2 - inv_a)
+        inv_a1, inv_a2 = inv_from_tan(t_a1), inv_from_tan(t_a2)
+        sa1 = da1 * (psi1 - inv_a1)
+        sa2 = da2 * (psi2 - inv_a2)
+        sw1 = dw1 * (psi1 - inv_aw)
+        sw2 = dw2 * (psi2 - inv_aw)
+
+        p_b = math.pi * m * ca
+        g = (db1 + db2) / 2.0 * t_w            # N1N2 = a_w sin α_w
+        g_alpha = rho_a1 + rho_a2 - g
+        eps_alpha = g_alpha / p_b
+
+        rho_p1 = g - rho_a2
+        rho_p2 = g - rho_a1
+        x_min1 = rack.h_limit - z1 * sa * sa / 2.0
+        x_min2 = rack.h_limit - z2 * sa * sa / 2.0
+        rho_l1 = m * (x1 - x_min1) / sa
+        rho_l2 = m * (x2 - x_min2) / sa
+
+        u = z2 / z1
+        # specific sliding ϑ1 = 1 − ρ2/(u ρ1), ϑ2 = 1 − u ρ1/ρ2 at both ends of the path of contact
+        sliding1_root = 1.0 - rho_a2 / (u * rho_p1)
+        sliding2_tip = 1.0 - u * rho_p1 / rho_a2
+        sliding1_tip = 1.0 - rho_p2 / (u * rho_a1)
+        sliding2_root = 1.0 - u * rho_a1 / rho_p2
+        rho_w1 = dw1 / 2.0 * sin_w
+        rho_w2 = dw2 / 2.0 * sin_w
+        spec_pressure = m * (rho_w1 + rho_w2) / (rho_w1 * rho_w2)
+
+    return {
+        "alpha_w_deg": np.degrees(alpha_w),
+        "inv_alpha_w": inv_aw,
+        "a": a, "a_w": a_w, "y": y, "dy": dy,
+        "d1": d1, "d2": d2, "db1": db1, "db2": db2, "dw1": dw1, "dw2": dw2,
+        "da1": da1, "da2": da2, "df1": df1, "df2": df2,
+        "s1": s1, "s2": s2, "sw1": sw1, "sw2": sw2, "sa1": sa1, "sa2": sa2,
+        "p_b": p_b, "p_w": math.pi * dw1 / z1,
+        "g_alpha": g_alpha, "eps_alpha": eps_alpha,
+        "alpha_a1_deg": np.degrees(np.arctan(t_a1)), "alpha_a2_deg": np.degrees(np.arctan(t_a2)),
+        "clearance1": a_w - da1 / 2.0 - df2 / 2.0, "clearance2": a_w - da2 / 2.0 - df1 / 2.0,
+        "x_min1": x_min1, "x_min2": x_min2,
+        "rho_l1": rho_l1, "rho_l2": rho_l2, "rho_p1": rho_p1, "rho_p2": rho_p2,
+        "d_l1": 2.0 * np.sqrt(db1 * db1 / 4.0 + np.maximum(rho_l1, 0.0) ** 2),
+        "d_l2": 2.0 * np.sqrt(db2 * db2 / 4.0 + np.maximum(rho_l2, 0.0) ** 2),
+        "d_p1": 2.0 * np.sqrt(db1 * db1 / 4.0 + rho_p1 * rho_p1),
+        "d_p2": 2.0 * np.sqrt(db2 * db2 / 4.0 + rho_p2 * rho_p2),
+        "o2n1": np.sqrt(db2 * db2 / 4.0 + g * g), "o1n2": np.sqrt(db1 * db1 / 4.0 + g * g),
+        "sliding1_root": sliding1_root, "sliding1_tip": sliding1_tip,
+        "sliding2_root": sliding2_root, "sliding2_tip": sliding2_tip,
+        "spec_pressure_pitch": spec_pressure,
+        # internals used by checks and gradients (not reported)
+        "_ra1": da1 / 2.0, "_ra2": da2 / 2.0, "_rho_a1": rho_a1, "_rho_a2": rho_a2,
+        "_sin_w": sin_w, "_t_a1": t_a1, "_t_a2": t_a2, "_psi1": psi1, "_psi2": psi2,
+        "_gap1": gap1, "_gap2": gap2, "_k": k,
+        # ∂Δy/∂(x1 + x2) = 1 − sin α / sin α_w (∂y/∂x_Σ = sin α / sin α_w), 0 without shortening
+        "_dk": (1.0 - sa / sin_w) if tip_shortening else np.zeros_like(sin_w), "_sa": sa, "_ta": ta,
+        "_inv_a1": inv_a1, "_inv_a2": inv_a2, "_m": m, "_z1": z1, "_z2": z2, "_x1": x1, "_x2": x2,
+    }
+
+
+# --- validation -------------------------------------------------------------------------
+
+def validate_inputs(m, z1, z2, x1, x2):
+    """Check the raw inputs; return them as arrays (z as integers)."""
+    m = require_positive("m (module)", m, unit="mm")
+    z1 = require_int("z1", z1, Z_MIN)
+    z2 = require_int("z2", z2, Z_MIN)
+    x1 = require_finite("x1", x1)
+    x2 = require_finite("x2", x2)
+    return m, z1, z2, x1, x2
+
+
+def _first(mask: np.ndarray) -> tuple[str, tuple]:
+    idx = tuple(int(i) for i in np.argwhere(np.atleast_1d(mask))[0])
+    where = "" if mask.ndim == 0 else f" (design at index {idx if len(idx) > 1 else idx[0]})"
+    return where, idx if mask.ndim else ()
+
+
+def validate_geometry(geo: dict, rack: BasicRack) -> None:
+    """Raise a GearDesignError for designs whose geometry does not exist."""
+    zs = geo["_z1"] + geo["_z2"]
+    bad = ~(geo["inv_alpha_w"] > 0)
+    if bad.any():
+        where, i = _first(bad)
+        xs = (geo["_x1"] + geo["_x2"])[i]
+        lo = -float(zs[i]) * inv(rack.alpha) / (2.0 * math.tan(rack.alpha))
+        raise GearDesignError(
+            f"x1 + x2 = {xs:.6g}{where} is too negative: inv alpha_w must be > 0, "
+            f"so x1 + x2 must be > {lo:.6g} for z1 + z2 = {int(zs[i])}")
+    for j in (1, 2):
+        bad = ~(geo[f"_gap{j}"] > 0)
+        if bad.any():
+            where, i = _first(bad)
+            z, x = geo[f"_z{j}"][i], geo[f"_x{j}"][i]
+            k = geo["_k"][i]
+            raise GearDesignError(
+                f"x{j} = {x:.6g}{where}: the tip circle of gear {j} (d_a{j} = {geo[f'da{j}'][i]:.6g}) "
+                f"is inside its base circle (d_b{j} = {geo[f'db{j}'][i]:.6g}); x{j} must be > "
+                f"{float(k - rack.ha - z * math.sin(rack.alpha / 2) ** 2):.6g} for z{j} = {int(z)}")
+        bad = ~(geo[f"df{j}"] > 0)
+        if bad.any():
+            where, i = _first(bad)
+            z, x = geo[f"_z{j}"][i], geo[f"_x{j}"][i]
+            raise GearDesignError(
+                f"x{j} = {x:.6g}{where}: the root diameter of gear {j} is not positive; "
+                f"x{j} must be > {rack.ha + rack.c - z / 2.0:.6g} for z{j} = {int(z)}")
+
+
+# --- result object ----------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Geometry:
+    """Geometry of one gear pair (floats) or of many (arrays), in mm and degrees.
+
+    Field names, units and meanings are listed in :data:`GEOMETRY_FIELDS`.
+    ``to_dict()`` gives plain values, ``to_frame()`` a DataFrame (one row per design for
+    arrays; for one pair, rows ``quantity, value, unit, description``).
+    """
+
+    alpha_w_deg: object
+    inv_alpha_w: object
+    a: object
+    a_w: object
+    y: object
+    dy: object
+    d1: object
+    d2: object
+    db1: object
+    db2: object
+    dw1: object
+    dw2: object
+    da1: object
+    da2: object
+    df1: object
+    df2: object
+    s1: object
+    s2: object
+    sw1: object
+    sw2: object
+    sa1: object
+    sa2: object
+    p_b: object
+    p_w: object
+    g_alpha: object
+    eps_alpha: object
+    alpha_a1_deg: object
+    alpha_a2_deg: object
+    clearance1: object
+    clearance2: object
+    x_min1: object
+    x_min2: object
+    rho_l1: object
+    rho_l2: object
+    rho_p1: object
+    rho_p2: object
+    d_l1: object
+    d_l2: object
+    d_p1: object
+    d_p2: object
+    o2n1: object
+    o1n2: object
+    sliding1_root: object
+    sliding1_tip: object
+    sliding2_root: object
+    sliding2_tip: object
+    spec_pressure_pitch: object
+
+    @classmethod
+    def _from_core(cls, geo: dict, scalar: bool) -> "Geometry":
+        vals = {}
+        for f in fields(cls):
+            v = np.broadcast_to(geo[f.name], geo["a"].shape)
+            vals[f.name] = float(v) if scalar else np.array(v)
+        return cls(**vals)
+
+    @property
+    def is_scalar(self) -> bool:
+        return np.ndim(self.a) == 0
+
+    def to_dict(self) -> dict:
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+    def to_frame(self) -> pd.DataFrame:
+        if self.is_scalar:
+            return pd.DataFrame(
+                [(k, getattr(self, k), u, d) for k, (u, d) in GEOMETRY_FIELDS.items()],
+                columns=["quantity", "value", "unit", "description"])
+        return pd.DataFrame({k: np.ravel(getattr(self, k)) for k in GEOMETRY_FIELDS})
+
+    def __repr__(self) -> str:
+        if not self.is_scalar:
+            return f"Geometry(<{np.size(self.a)} designs; fields: {', '.join(GEOMETRY_FIELDS)}>)"
+        lines = ["Geometry("]
+        for k, (u, _) in GEOMETRY_FIELDS.items():
+            lines.append(f"  {k:<20} = {getattr(self, k):.10g} {u if u != '-' else ''}".rstrip())
+        lines.append(")")
+        return "\n".join(lines)
+
+
+def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shortening: bool = True) -> Geometry:
+    """Geometry of external spur pairs; every argument but ``rack`` broadcasts.
+
+    Returns a :class:`Geometry` of arrays (of floats when all inputs are scalars). Raises
+    :class:`~geardesign.errors.GearDesignError` naming the first design whose geometry
+    does not exist (x-sum too negative for α_w, tip inside the base circle, root diameter <= 0).
+
+    >>> g = pair_geometry(3, 12, 24, 0.6, 0.36)      # KHK worked example
+    >>> round(g.a_w, 4), round(g.alpha_w_deg, 4), round(g.da1, 3), round(g.eps_alpha, 3)
+    (56.4999, 26.0886, 44.84, 1.202)
+    >>> import numpy as np
+    >>> pair_geometry(2, 17, 34, 0.0, np.array([0.0, 0.0])).a_w   # seed 001 task 2: a_w = 51 mm
+    array([51., 51.])
+    """
+    if not isinstance(rack, BasicRack):
+        raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
+    scalar = all(np.ndim(v) == 0 for v in (m, z1, z2, x1, x2))
+    m, z1, z2, x1, x2 = validate_inputs(m, z1, z2, x1, x2)
+    geo = _core(m, z1, z2, x1, x2, rack, bool(tip_shortening))
+    validate_geometry(geo, rack)
+    return Geometry._from_core(geo, scalar)

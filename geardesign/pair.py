@@ -1,0 +1,131 @@
+"""One gear pair as an object: inputs, geometry, checks."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+from scipy.optimize import brentq
+
+from . import checks as _checks
+from .errors import GearDesignError, require_positive
+from .geometry import Geometry, _core, validate_geometry, validate_inputs, x_sum_from_center_distance
+from .rack import BasicRack
+
+__all__ = ["GearPair", "balanced_sliding_split"]
+
+
+def balanced_sliding_split(m, z1, z2, x_sum, rack: BasicRack = BasicRack(), tip_shortening: bool = True) -> float:
+    """x1 of the split of ``x_sum`` that equalises the specific sliding at the roots of both gears.
+
+    Equal ϑ at the two ends of the path of contact is the classic distribution rule for
+    closed gearing (GOST 16532-70 appendix; Kudryavtsev's blocking-contour practice). Solved
+    with Brent's method on ϑ1,root(x1) − ϑ2,root(x_sum − x1), increasing in x1.
+    Falls back to the split in inverse proportion to z (x1 = x_Σ z2/(z1+z2)) when no such
+    point exists for this x-sum.
+    """
+    def f(x1):
+        geo = _core(m, z1, z2, x1, x_sum - x1, rack, tip_shortening)
+        return geo["sliding1_root"] - geo["sliding2_root"]
+
+    grid = x_sum / 2.0 + np.linspace(-3.0, 3.0, 1201)
+    geo = _core(m, z1, z2, grid, x_sum - grid, rack, tip_shortening)
+    ok = (geo["rho_p1"] > 0) & (geo["rho_p2"] > 0) & (geo["_gap1"] > 0) & (geo["_gap2"] > 0)
+    diff = geo["sliding1_root"] - geo["sliding2_root"]
+    idx = np.flatnonzero(ok[:-1] & ok[1:] & (np.sign(diff[:-1]) != np.sign(diff[1:])))
+    if idx.size == 0:
+        return float(x_sum * z2 / (z1 + z2))
+    i = idx[0]
+    return float(brentq(f, grid[i], grid[i + 1], xtol=1e-14, rtol=1e-15))
+
+
+@dataclass(frozen=True)
+class GearPair:
+    """An external spur gear pair.
+
+    Parameters
+    ----------
+    m : module, mm.  z1, z2 : tooth counts (whole numbers >= 3).
+    x1, x2 : profile shift coefficients.  rack : the :class:`BasicRack` (standard by default).
+    tip_shortening : reduce both tips by Δy·m so the clearance stays c*·m (GOST 16532-70);
+        ``False`` keeps d_a = d + 2(h_a* + x)m.
+
+    >>> p = GearPair(8, 17, 26, 0.898, 0.517)          # seed 000's engine pair
+    >>> round(p.geometry().alpha_w_deg, 2)             # the seed prints 26°08'; inv α_w gives 27.13°
+    27.13
+    >>> bool(p.checks().set_index("check").loc["contact_ratio", "ok"])   # ε_α = 1.153 < 1.2
+    False
+    """
+
+    m: float
+    z1: int
+    z2: int
+    x1: float = 0.0
+    x2: float = 0.0
+    rack: BasicRack = field(default_factory=BasicRack)
+    tip_shortening: bool = True
+
+    def __post_init__(self):
+        if not isinstance(self.rack, BasicRack):
+            raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(self.rack).__name__}")
+        for name in ("m", "z1", "z2", "x1", "x2"):
+            if np.ndim(getattr(self, name)) != 0:
+                raise GearDesignError(f"{name} must be a single number for GearPair (use pair_geometry for arrays)")
+        m, z1, z2, x1, x2 = validate_inputs(self.m, self.z1, self.z2, self.x1, self.x2)
+        object.__setattr__(self, "m", float(m))
+        object.__setattr__(self, "z1", int(z1))
+        object.__setattr__(self, "z2", int(z2))
+        object.__setattr__(self, "x1", float(x1))
+        object.__setattr__(self, "x2", float(x2))
+        object.__setattr__(self, "tip_shortening", bool(self.tip_shortening))
+        geo = _core(self.m, self.z1, self.z2, self.x1, self.x2, self.rack, self.tip_shortening)
+        validate_geometry(geo, self.rack)
+        object.__setattr__(self, "_geo", geo)
+
+    @classmethod
+    def from_center_distance(cls, m, z1, z2, a_w, x1=None, rack: BasicRack | None = None,
+                             tip_shortening: bool = True) -> "GearPair":
+        """The pair whose x-sum gives the operating centre distance ``a_w`` (mm) at zero backlash.
+
+        ``x1`` fixes the split (x2 = x_Σ − x1); with ``x1=None`` the split equalises the
+        specific sliding at both roots (:func:`balanced_sliding_split`).
+
+        >>> p = GearPair.from_center_distance(3, 12, 24, 56.4999, x1=0.6)   # KHK: x_Σ = 0.960013
+        >>> round(p.x1 + p.x2, 6)
+        0.960013
+        """
+        rack = rack or BasicRack()
+        m_arr, z1_arr, z2_arr, _, _ = validate_inputs(m, z1, z2, 0.0, 0.0)
+        a_w = float(require_positive("a_w (center distance)", a_w, unit="mm"))
+        m, z1, z2 = float(m_arr), int(z1_arr), int(z2_arr)
+        a = m * (z1 + z2) / 2.0
+        a_min = a * np.cos(rack.alpha)
+        if a_w <= a_min:
+            raise GearDesignError(
+                f"a_w = {a_w:g} mm is too small: it must be > a·cos(alpha) = {a_min:.6g} mm "
+                f"for m = {m:g}, z1 + z2 = {z1 + z2}")
+        xs = float(x_sum_from_center_distance(m, z1, z2, a_w, rack))
+        if x1 is None:
+            x1 = balanced_sliding_split(m, z1, z2, xs, rack, tip_shortening)
+        x1 = float(x1)
+        return cls(m, z1, z2, x1, xs - x1, rack, tip_shortening)
+
+    def geometry(self) -> Geometry:
+        """All geometry of the pair (mm, degrees); see :data:`geardesign.geometry.GEOMETRY_FIELDS`."""
+        return Geometry._from_core(self._geo, scalar=True)
+
+    def checks(self, eps_alpha_min: float | None = _checks.DEFAULT_EPS_ALPHA_MIN,
+               sa_min: float | None = _checks.DEFAULT_SA_MIN, undercut: bool = True,
+               interference: bool = True, jamming: bool = True, extra=()) -> pd.DataFrame:
+        """Table of checks: ``check, value, limit, margin, ok`` (and ``label``), one row per check.
+
+        Margins are dimensionless and >= 0 where the check holds (see :mod:`geardesign.checks`).
+        ``jamming`` adds seed 000's r_a2 < O2N1 rows (implied by the interference rows).
+        """
+        cs = _checks.make_checks(eps_alpha_min=eps_alpha_min, sa_min=sa_min, undercut=undercut,
+                                 interference=interference, jamming=jamming, extra=extra)
+        return _checks.evaluate(self._geo, cs)[["check", "value", "limit", "margin", "ok", "label"]]
+
+    def ok(self, **limits) -> bool:
+        """True when every check of :meth:`checks` holds."""
+        return bool(self.checks(**limits)["ok"].all())

@@ -1,0 +1,82 @@
+"""The basic rack profile (ISO 53 / GOST 13755-81) that generates and defines a spur gear."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .errors import GearDesignError, require_finite, require_range
+
+__all__ = ["BasicRack"]
+
+
+@dataclass(frozen=True)
+class BasicRack:
+    """Basic rack profile, in units of the module.
+
+    Parameters
+    ----------
+    alpha_deg : pressure angle α in degrees, 0 < α < 45 (standard 20).
+    ha : addendum coefficient h_a* (standard 1.0); the gear tooth addendum is h_a*·m.
+    c : bottom clearance coefficient c* (standard 0.25); the dedendum is (h_a* + c*)·m.
+    rho_f : root fillet radius coefficient ρ_f* of the rack tip that cuts the root
+        (standard 0.38, ISO 53 profile A / GOST 13755-81).
+
+    The defaults are the standard rack. ``rho_f`` must fit on the tip of the generating rack:
+    0 <= ρ_f* <= s_tip·cos α / (2(1 − sin α)), s_tip = π/2 − 2(h_a* + c*) tan α the cutter's
+    tip land. (ρ_f* = c*/(1 − sin α) = 0.37995 makes the fillet end exactly h_a* above the datum;
+    the standard's 0.38 rounds it.)
+
+    >>> r = BasicRack()
+    >>> round(r.h_limit, 5)        # straight flank of the cutter ends ~h_a* above the datum
+    0.99997
+    >>> round(r.z_min_no_undercut, 3)
+    17.097
+    """
+
+    alpha_deg: float = 20.0
+    ha: float = 1.0
+    c: float = 0.25
+    rho_f: float = 0.38
+
+    def __post_init__(self):
+        for name in ("alpha_deg", "ha", "c", "rho_f"):
+            object.__setattr__(self, name, float(require_finite(name, getattr(self, name))))
+        require_range("alpha_deg", self.alpha_deg, 0.0, 45.0, lo_open=True, hi_open=True, unit="deg")
+        require_range("ha", self.ha, 0.0, 2.0, lo_open=True)
+        require_range("c", self.c, 0.0, 1.0)
+        rho_max = self.rho_f_max
+        if not (0.0 <= self.rho_f <= rho_max + 1e-12):
+            raise GearDesignError(
+                f"rho_f must be in [0, {rho_max:.4g}] for alpha_deg={self.alpha_deg:g}, "
+                f"ha={self.ha:g}, c={self.c:g} (the fillet must fit on the cutter tip), got {self.rho_f!r}")
+
+    @property
+    def alpha(self) -> float:
+        """Pressure angle in radians."""
+        return math.radians(self.alpha_deg)
+
+    @property
+    def rho_f_max(self) -> float:
+        """Largest fillet radius coefficient that fits on the generating rack's tip."""
+        a = self.alpha
+        one_minus_sin = 1.0 - math.sin(a)
+        land = math.pi / 2 - 2.0 * (self.ha + self.c) * math.tan(a)  # tip land of the cutter, /m
+        if land <= 0:
+            return 0.0
+        return land * math.cos(a) / (2.0 * one_minus_sin)
+
+    @property
+    def h_limit(self) -> float:
+        """Height (/m) above the datum line where the cutter's straight flank ends.
+
+        h_l* = h_a* + c* − ρ_f*(1 − sin α): the cutter tooth is h_a* + c* high and its tip
+        fillet of radius ρ_f* meets the straight flank (1 − sin α)·ρ_f* below the tip line.
+        This point generates the limit point of the involute (Litvin & Fuentes, Gear Geometry
+        and Applied Theory, 2nd ed., §10.5; ISO 21771:2007, §5.4).
+        """
+        return self.ha + self.c - self.rho_f * (1.0 - math.sin(self.alpha))
+
+    @property
+    def z_min_no_undercut(self) -> float:
+        """Smallest unshifted tooth count without undercut, 2 h_l*/sin²α (17.1 for 20°)."""
+        return 2.0 * self.h_limit / math.sin(self.alpha) ** 2
