@@ -347,9 +347,13 @@ class Geometry:
     @classmethod
     def _from_core(cls, geo: dict, scalar: bool) -> "Geometry":
         vals = {}
+        shape = geo["a"].shape
         for f in fields(cls):
-            v = np.broadcast_to(geo[f.name], geo["a"].shape)
-            vals[f.name] = float(v) if scalar else np.array(v)
+            v = geo[f.name]
+            if scalar:
+                vals[f.name] = float(v)
+            else:
+                vals[f.name] = v if np.shape(v) == shape else np.full(shape, v, dtype=float)
         return cls(**vals)
 
     @property
