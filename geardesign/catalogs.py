@@ -220,8 +220,11 @@ def _validate(frame: pd.DataFrame, schema: Schema, path, bundled: bool) -> pd.Da
             frame[col.name] = arr.astype(np.int64) if not np.isnan(arr).any() else arr
         else:
             frame[col.name] = arr
-    groups = [frame.index.to_numpy()] if not schema.increasing_within else [
-        idx.to_numpy() for _, idx in frame.groupby(list(schema.increasing_within), sort=False).groups.items()]
+    if schema.increasing_within:
+        codes = frame.groupby(list(schema.increasing_within), sort=False).ngroup().to_numpy()
+        groups = [frame.index.to_numpy()[codes == g] for g in np.unique(codes)]
+    else:
+        groups = [frame.index.to_numpy()]
     for idx in groups:
         for col in schema.increasing:
             v = frame.loc[idx, col].to_numpy(dtype=float)

@@ -1,0 +1,256 @@
+"""Parallel keys (GOST 23360-78 / DIN 6885-1): selection and load capacity.
+
+Checks, each a margin (>= 0 holds):
+
+- crushing (bearing) of the key flank in the hub, σ = 2T / (d·(h − t1)·l_p·n_eff): ``1 − σ/[σ]``;
+- shear of the key, τ = 2T / (d·b·l_p·n_eff): ``1 − τ/[τ]``;
+
+with l_p the working length (l − b for rounded ends, l − b/2 for one rounded end, l for flat
+ends) and n_eff = 1 for one key, 2·0.75 = 1.5 for two keys at 180° (load-sharing factor 0.75).
+T in N·mm inside (N·m at the interface), lengths in mm, stresses in MPa.
+
+Sources: crushing and shear formulas, reference/key_allowable_stress.csv (GOST practice:
+github code file ids 33588987375, 13674368523); two-key factor 0.75, same file (dzen.ru
+kbsemenov; mechanixcalc DIN 6885 after Roloff/Matek).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from .catalogs import key_lengths_mm, load_catalog
+from .errors import GearDesignError, require_int, require_positive, require_range
+
+__all__ = ["KeySelection", "select", "capacity", "section", "crushing_stress_mpa", "shear_stress_mpa",
+           "working_length_mm", "DEFAULT_CRUSH_MPA", "DEFAULT_SHEAR_MPA", "TWO_KEY_FACTOR"]
+
+# Defaults (low confidence, see catalogs/README and reference/key_allowable_stress.csv):
+# [σ] = 130 MPa, steel hub, worked example on 3-net.ru (key 12x8, d = 40, T = 250 N·m);
+# [τ] = 85 MPa, steel 45 key under pulsating load, github code file id 33588987375.
+DEFAULT_CRUSH_MPA = 130.0
+DEFAULT_SHEAR_MPA = 85.0
+TWO_KEY_FACTOR = 0.75
+ENDS = ("rounded", "half", "flat")
+
+
+def working_length_mm(length_mm, b_mm, end="rounded"):
+    """Working (bearing) length l_p of a key: l − b (rounded ends), l − b/2 (one), l (flat).
+
+    >>> float(working_length_mm(32, 18))
+    14.0
+    """
+    if end not in ENDS:
+        raise GearDesignError(f"end must be one of {', '.join(ENDS)}, got {end!r}")
+    cut = {"rounded": 1.0, "half": 0.5, "flat": 0.0}[end]
+    return np.asarray(length_mm, dtype=float) - cut * np.asarray(b_mm, dtype=float)
+
+
+def crushing_stress_mpa(torque_nm, d_mm, h_mm, t1_mm, working_length_mm, n_keys=1):
+    """Crushing stress σ = 2T / (d·(h − t1)·l_p·n_eff) [MPa], T in N·m (×1000 inside).
+
+    n_eff = 1 for one key, 1.5 for two keys at 180°.
+
+    Seed 002 (1.9.7) with d = 60, key 18x11 (t1 = 7, so h − t1 = 4 mm), T = 503.129 N·m:
+    l_p = 13.976 mm brings σ to the 300 MPa it allows:
+
+    >>> round(float(crushing_stress_mpa(503.129, 60, 11, 7, 2 * 503129 / (60 * 4 * 300))), 6)
+    300.0
+    """
+    n_eff = _n_eff(n_keys)
+    k = np.asarray(h_mm, dtype=float) - np.asarray(t1_mm, dtype=float)
+    return (2000.0 * np.asarray(torque_nm, dtype=float)
+            / (np.asarray(d_mm, dtype=float) * k * np.asarray(working_length_mm, dtype=float) * n_eff))
+
+
+def shear_stress_mpa(torque_nm, d_mm, b_mm, working_length_mm, n_keys=1):
+    """Shear stress τ = 2T / (d·b·l_p·n_eff) [MPa], T in N·m (×1000 inside)."""
+    n_eff = _n_eff(n_keys)
+    return (2000.0 * np.asarray(torque_nm, dtype=float)
+            / (np.asarray(d_mm, dtype=float) * np.asarray(b_mm, dtype=float)
+               * np.asarray(working_length_mm, dtype=float) * n_eff))
+
+
+def _n_eff(n_keys):
+    n = np.asarray(n_keys)
+    return np.where(n >= 2, 2.0 * TWO_KEY_FACTOR, 1.0)
+
+
+def section(d_mm) -> pd.Series:
+    """The key section (b, h, t1, t2, length range) for a shaft of diameter d (d_over < d <= d_upto).
+
+    >>> s = section(60); (float(s.b_mm), float(s.h_mm), float(s.t1_mm))
+    (18.0, 11.0, 7.0)
+    """
+    keys = load_catalog("keys")
+    lo, hi = float(keys["d_over_mm"].iloc[0]), float(keys["d_upto_mm"].iloc[-1])
+    d = float(require_range("d_mm", d_mm, lo, hi, lo_open=True, unit="mm"))
+    row = keys[(keys["d_over_mm"] < d) & (d <= keys["d_upto_mm"])].iloc[0]
+    return row
+
+
+@dataclass(frozen=True, eq=False)
+class KeySelection:
+    """Result of :func:`select`: the chosen key (or why none fits) and every length tried."""
+
+    feasible: bool
+    message: str
+    d_mm: float
+    torque_nm: float
+    hub_length_mm: float
+    b_mm: float
+    h_mm: float
+    t1_mm: float
+    t2_mm: float
+    length_mm: float
+    working_length_mm: float
+    n_keys: int
+    crush_mpa: float
+    shear_mpa: float
+    allowable_crush_mpa: float
+    allowable_shear_mpa: float
+    margin_crush: float
+    margin_shear: float
+    end: str
+    candidates: pd.DataFrame
+
+    _FIELDS = ("feasible", "message", "d_mm", "torque_nm", "hub_length_mm", "b_mm", "h_mm", "t1_mm", "t2_mm",
+               "length_mm", "working_length_mm", "n_keys", "crush_mpa", "shear_mpa", "allowable_crush_mpa",
+               "allowable_shear_mpa", "margin_crush", "margin_shear", "end")
+
+    def to_dict(self) -> dict:
+        out = {}
+        for k in self._FIELDS:
+            v = getattr(self, k)
+            if isinstance(v, (float, np.floating)):
+                v = float(v) if np.isfinite(v) else None
+            elif isinstance(v, (np.integer,)):
+                v = int(v)
+            elif isinstance(v, np.bool_):
+                v = bool(v)
+            out[k] = v
+        return out
+
+    def to_frame(self) -> pd.DataFrame:
+        return self.candidates.copy()
+
+    def __repr__(self) -> str:
+        head = (f"KeySelection(d={self.d_mm:g} mm, T={self.torque_nm:g} N·m, hub {self.hub_length_mm:g} mm): "
+                f"{self.message}")
+        if not self.feasible:
+            return head
+        return (head + f"\n  key {self.b_mm:g}x{self.h_mm:g}x{self.length_mm:g} ({self.end} ends), t1={self.t1_mm:g} mm, "
+                f"n_keys={self.n_keys}, l_p={self.working_length_mm:g} mm"
+                f"\n  crush {self.crush_mpa:.1f}/{self.allowable_crush_mpa:g} MPa (margin {self.margin_crush:+.3f}), "
+                f"shear {self.shear_mpa:.1f}/{self.allowable_shear_mpa:g} MPa (margin {self.margin_shear:+.3f})")
+
+
+def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA,
+           allowable_shear_mpa=DEFAULT_SHEAR_MPA, end="rounded", max_keys=2) -> KeySelection:
+    """Pick the shortest standard parallel key that fits the hub and carries the torque.
+
+    The section (b, h, t1) comes from the shaft diameter; lengths from the standard series,
+    no longer than the hub and within the section's length range where the table gives one.
+    One key first; if no length passes, two keys at 180° (n_eff = 1.5) and the message says so.
+    When nothing fits, ``feasible`` is False and the message says by how much the longest key
+    that fits falls short.
+
+    Parameters: d_mm shaft diameter [mm]; torque_nm [N·m]; hub_length_mm [mm];
+    allowable_crush_mpa [σ], allowable_shear_mpa [τ] [MPa]; end "rounded" | "half" | "flat";
+    max_keys 1 or 2.
+    """
+    sec = section(d_mm)
+    d = float(d_mm)
+    torque = float(require_positive("torque_nm", torque_nm, "N·m"))
+    hub = float(require_positive("hub_length_mm", hub_length_mm, "mm"))
+    s_cr = float(require_positive("allowable_crush_mpa", allowable_crush_mpa, "MPa"))
+    s_sh = float(require_positive("allowable_shear_mpa", allowable_shear_mpa, "MPa"))
+    if end not in ENDS:
+        raise GearDesignError(f"end must be one of {', '.join(ENDS)}, got {end!r}")
+    max_keys = int(require_range("max_keys", require_int("max_keys", max_keys, 1), 1, 2))
+    b, h, t1, t2 = (float(sec[c]) for c in ("b_mm", "h_mm", "t1_mm", "t2_mm"))
+
+    lengths = key_lengths_mm()
+    l_min = float(sec["l_min_mm"]) if np.isfinite(sec["l_min_mm"]) else 0.0
+    l_max = float(sec["l_max_mm"]) if np.isfinite(sec["l_max_mm"]) else np.inf
+    n_keys = np.arange(1, max_keys + 1)
+    L = np.tile(lengths, len(n_keys))
+    N = np.repeat(n_keys, len(lengths))
+    lp = working_length_mm(L, b, end)
+    fits = (L <= hub) & (L >= l_min) & (L <= l_max) & (lp > 0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lp_pos = np.where(lp > 0, lp, np.nan)
+        sig = crushing_stress_mpa(torque, d, h, t1, lp_pos, N)
+        tau = shear_stress_mpa(torque, d, b, lp_pos, N)
+    cand = pd.DataFrame({"n_keys": N, "length_mm": L, "working_length_mm": lp, "fits_hub": fits,
+                         "crush_mpa": sig, "shear_mpa": tau, "margin_crush": 1.0 - sig / s_cr,
+                         "margin_shear": 1.0 - tau / s_sh})
+    cand["feasible"] = fits & (cand["margin_crush"] >= 0) & (cand["margin_shear"] >= 0)
+    ok = cand[cand["feasible"]]
+
+    common = dict(d_mm=d, torque_nm=torque, hub_length_mm=hub, b_mm=b, h_mm=h, t1_mm=t1, t2_mm=t2,
+                  allowable_crush_mpa=s_cr, allowable_shear_mpa=s_sh, end=end, candidates=cand)
+    if len(ok):
+        row = ok.iloc[0]  # ordered by n_keys, then length: one key before two, shortest first
+        n = int(row["n_keys"])
+        msg = (f"one key {b:g}x{h:g}x{row['length_mm']:g}" if n == 1 else
+               f"one key of any standard length up to the hub fails; two keys {b:g}x{h:g}x{row['length_mm']:g} "
+               f"at 180 deg (load-sharing factor {TWO_KEY_FACTOR})")
+        return KeySelection(feasible=True, message=msg, length_mm=float(row["length_mm"]),
+                            working_length_mm=float(row["working_length_mm"]), n_keys=n,
+                            crush_mpa=float(row["crush_mpa"]), shear_mpa=float(row["shear_mpa"]),
+                            margin_crush=float(row["margin_crush"]), margin_shear=float(row["margin_shear"]), **common)
+    fitting = cand[cand["fits_hub"]]
+    if fitting.empty:
+        msg = (f"no standard length of the {b:g}x{h:g} key fits a {hub:g} mm hub "
+               f"(shortest usable {max(l_min, L[lp > 0].min() if (lp > 0).any() else np.inf):g} mm)")
+        nan = float("nan")
+        return KeySelection(feasible=False, message=msg, length_mm=nan, working_length_mm=nan, n_keys=0,
+                            crush_mpa=nan, shear_mpa=nan, margin_crush=nan, margin_shear=nan, **common)
+    best = fitting.assign(m=np.minimum(fitting["margin_crush"], fitting["margin_shear"])).sort_values(
+        "m", ascending=False).iloc[0]
+    check = "crushing" if best["margin_crush"] <= best["margin_shear"] else "shear"
+    msg = (f"nothing fits: the best is {int(best['n_keys'])} key(s) {b:g}x{h:g}x{best['length_mm']:g}, "
+           f"which fails {check} with margin {min(best['margin_crush'], best['margin_shear']):+.3f}; "
+           f"lengthen the hub, raise the allowable stress or use a spline")
+    return KeySelection(feasible=False, message=msg, length_mm=float(best["length_mm"]),
+                        working_length_mm=float(best["working_length_mm"]), n_keys=int(best["n_keys"]),
+                        crush_mpa=float(best["crush_mpa"]), shear_mpa=float(best["shear_mpa"]),
+                        margin_crush=float(best["margin_crush"]), margin_shear=float(best["margin_shear"]), **common)
+
+
+def capacity(d_mm, length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA, allowable_shear_mpa=DEFAULT_SHEAR_MPA,
+             b_mm=None, h_mm=None, t1_mm=None, end="rounded", n_keys=1) -> dict:
+    """The largest torque a key carries [N·m]: the smaller of the crushing and shear limits.
+
+    T_crush = [σ]·d·(h − t1)·l_p·n_eff / 2000, T_shear = [τ]·d·b·l_p·n_eff / 2000 (T in N·m).
+    b, h, t1 default to the standard section for d.
+
+    Seed 002 key 18x11x32 on d = 60 with [σ] = 300 MPa: 300·60·4·14/2000 = 504 N·m.
+
+    >>> round(capacity(60, 32, 300, 120)["torque_nm"], 6)
+    504.0
+    """
+    d = float(require_positive("d_mm", d_mm, "mm"))
+    if b_mm is None or h_mm is None or t1_mm is None:
+        sec = section(d)
+        b_mm = float(sec["b_mm"]) if b_mm is None else b_mm
+        h_mm = float(sec["h_mm"]) if h_mm is None else h_mm
+        t1_mm = float(sec["t1_mm"]) if t1_mm is None else t1_mm
+    b = float(require_positive("b_mm", b_mm, "mm"))
+    h = float(require_positive("h_mm", h_mm, "mm"))
+    t1 = float(require_range("t1_mm", t1_mm, 0.0, h, lo_open=True, hi_open=True, unit="mm"))
+    length = float(require_positive("length_mm", length_mm, "mm"))
+    n = int(require_range("n_keys", require_int("n_keys", n_keys, 1), 1, 2))
+    lp = float(working_length_mm(length, b, end))
+    if lp <= 0:
+        raise GearDesignError(f"length_mm must exceed the rounded ends ({length:g} mm leaves l_p = {lp:g} mm)")
+    s_cr = float(require_positive("allowable_crush_mpa", allowable_crush_mpa, "MPa"))
+    s_sh = float(require_positive("allowable_shear_mpa", allowable_shear_mpa, "MPa"))
+    n_eff = float(_n_eff(n))
+    t_crush = s_cr * d * (h - t1) * lp * n_eff / 2000.0
+    t_shear = s_sh * d * b * lp * n_eff / 2000.0
+    return {"torque_nm": min(t_crush, t_shear), "torque_crush_nm": t_crush, "torque_shear_nm": t_shear,
+            "governing": "crushing" if t_crush <= t_shear else "shear", "working_length_mm": lp,
+            "b_mm": b, "h_mm": h, "t1_mm": t1, "n_keys": n}
