@@ -480,6 +480,11 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     w_max_u = np.where(match >= 0, sp["impacts_allowed_per_s"].to_numpy()[match], np.nan)
     inv = np.searchsorted(np.unique(t), t)
     cand["n1_max_rpm"] = n_max_u[inv]
+    if method == "hinge_pressure" and np.isfinite(n_max_u).any() and n1 > np.nanmax(n_max_u):
+        j = int(np.nanargmax(n_max_u))
+        raise GearDesignError(
+            f"n1_rpm = {n1:g} rpm is above the maximum speed of every chain in {cat_name!r} "
+            f"(the fastest, pitch {np.unique(t)[j]:g} mm, allows {n_max_u[j]:g} rpm); use a belt or gear stage first")
     cand["allowable_impacts_per_s"] = w_max_u[inv]
 
     if allowable_safety_factor is not None:

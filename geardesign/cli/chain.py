@@ -1,0 +1,91 @@
+"""``geardesign chain``: size a roller-chain drive from a catalog.
+
+Exit status 0 when a candidate passes every check, 1 when none does (the output says which
+check stops each chain family), 2 on bad input.
+"""
+from __future__ import annotations
+
+from .. import chain
+from ..catalogs import CHAIN_CATALOGS
+from ..errors import GearDesignError
+from .output import add_json_flag, frame_records, print_frame, print_json
+
+SHOW = ["rank", "designation", "pitch_mm", "strands", "z1", "z2", "links", "center_distance_mm", "speed_m_s",
+        "force_n", "pressure_mpa", "allowable_pressure_mpa", "safety_factor", "allowable_safety_factor",
+        "mass_kg_m", "min_margin", "limiting_check", "feasible"]
+SHOW_POWER = ["rank", "designation", "pitch_mm", "strands", "z1", "z2", "links", "center_distance_mm", "speed_m_s",
+              "force_n", "rated_power_kw", "design_power_kw", "rating_limit", "safety_factor", "mass_kg_m",
+              "min_margin", "limiting_check", "feasible"]
+
+
+def _strands(text: str):
+    try:
+        values = tuple(int(s) for s in text.split(",") if s.strip())
+    except ValueError:
+        raise GearDesignError(f"--strands must be whole numbers separated by commas, e.g. 1,2, got {text!r}") from None
+    if not values:
+        raise GearDesignError(f"--strands must list at least one strand count, got {text!r}")
+    return values
+
+
+def add_parser(subparsers):
+    p = subparsers.add_parser(
+        "chain", help="size a roller-chain drive from a catalog (GOST 13568, ISO 606, ANSI B29.1)",
+        description="Evaluate every catalog chain x strands x z1 for a drive and rank the feasible ones. "
+                    "Every check is a margin (>= 0 holds).")
+    load = p.add_mutually_exclusive_group(required=True)
+    load.add_argument("--torque", type=float, metavar="N_M", help="torque on the small sprocket [N·m]")
+    load.add_argument("--power", type=float, metavar="KW", help="power transmitted [kW]")
+    p.add_argument("--n1", type=float, required=True, metavar="RPM", help="small-sprocket speed [rpm]")
+    p.add_argument("--ratio", type=float, required=True, help="speed ratio u = n1/n2 (1 to 10)")
+    p.add_argument("--z1", type=int, help="small-sprocket teeth (default: odd counts 13 .. 29-2u)")
+    p.add_argument("--catalog", default="gost13568",
+                   help=f"chain catalog: {', '.join(CHAIN_CATALOGS)} or a CSV path (default gost13568)")
+    p.add_argument("--strands", default="1,2,3", help="strand counts to try, comma separated (default 1,2,3)")
+    p.add_argument("--k-e", type=float, dest="k_e", help="operating factor K_e (product of K_d..K_mode; default 1)")
+    p.add_argument("--p-allow", type=float, dest="p_allow", metavar="MPA",
+                   help="allowable hinge pressure [p] (default: table by pitch and n1)")
+    p.add_argument("--s-allow", type=float, dest="s_allow", help="allowable safety factor [s] (default: table)")
+    p.add_argument("--center-distance", type=float, dest="center_distance", metavar="MM",
+                   help="target centre distance [mm] (default 40 pitches)")
+    p.add_argument("--objective", default="min_mass", choices=chain.OBJECTIVES)
+    p.add_argument("--method", default="hinge_pressure", choices=chain.METHODS)
+    p.add_argument("--top", type=int, default=10, help="candidates to list (default 10; 0 = all)")
+    add_json_flag(p)
+    return p
+
+
+def run(args) -> int:
+    result = chain.design(
+        torque_nm=args.torque, power_kw=args.power, n1_rpm=args.n1, ratio=args.ratio, z1=args.z1,
+        catalog=args.catalog, strands=_strands(args.strands), k_e=args.k_e,
+        allowable_pressure_mpa=args.p_allow, allowable_safety_factor=args.s_allow,
+        center_distance_mm=args.center_distance, objective=args.objective, method=args.method)
+    if args.top < 0:
+        raise GearDesignError(f"--top must be >= 0, got {args.top}")
+    top = result.candidates if args.top == 0 else result.candidates.head(args.top)
+    cols = SHOW if args.method == "hinge_pressure" else SHOW_POWER
+    if args.json:
+        out = result.to_dict()
+        out["candidates"] = frame_records(top.drop(columns=[c for c in ("edition", "source", "note") if c in top]))
+        print_json(out)
+    else:
+        print(result.message)
+        if result.pitch_estimate_mm:
+            print("pitch estimate (starting point): " + ", ".join(
+                f"{k} strand{'s' if k > 1 else ''} t >= {v:.2f} mm" for k, v in result.pitch_estimate_mm.items()))
+        if result.best is not None:
+            b = result.best
+            print(f"sprockets: pitch diameters {b['sprocket1_pitch_diameter_mm']:.2f} / "
+                  f"{b['sprocket2_pitch_diameter_mm']:.2f} mm, tip {b['sprocket1_tip_diameter_mm']:.2f} / "
+                  f"{b['sprocket2_tip_diameter_mm']:.2f} mm, root {b['sprocket1_root_diameter_mm']:.2f} / "
+                  f"{b['sprocket2_root_diameter_mm']:.2f} mm")
+        print()
+        print_frame(top[[c for c in cols if c in top.columns]],
+                    title=f"candidates ({len(top)} of {len(result.candidates)}, K_e = {result.k_e:g}):")
+        if not result.success:
+            print()
+            print_frame(result.blocking, title="what stops each chain family (best candidate of each):")
+        for note in result.notes:
+            print(f"note: {note}")
+    return 0 if result.success else 1
