@@ -1,0 +1,80 @@
+"""The chain and key subcommands. Expected designs are the ones derived by hand in
+tests/test_chain.py and tests/test_key.py (seed 002 recomputed)."""
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+from geardesign.cli import main
+
+SEED = ["chain", "--torque", "380", "--n1", "120", "--ratio", "1", "--z1", "13", "--strands", "1,2",
+        "--k-e", "2.148", "--p-allow", "29"]
+
+
+def test_chain_table(capsys):
+    assert main(SEED + ["--objective", "min_sprocket_diameter", "--top", "3"]) == 0
+    out = capsys.readouterr().out
+    # seed 002's choice: two-strand 31.75 mm chain; pitch estimates 36.2 / 30.35 mm (seed 1.9.5)
+    assert out.startswith("2PR-31,75-177 with z1/z2 = 13/13")
+    assert "1 strand t >= 36.2" in out and "2 strands t >= 30.35" in out
+    assert "candidates (3 of" in out
+
+
+def test_chain_json(capsys):
+    assert main(SEED + ["--json", "--top", "0"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["success"] and data["best"]["designation"] == "PR-38,1-127"
+    assert len(data["candidates"]) == data["n_candidates"]
+    assert data["candidates"][0]["rank"] == 1
+
+
+def test_chain_infeasible_exit_1(capsys):
+    assert main(["chain", "--torque", "20000", "--n1", "120", "--ratio", "1", "--z1", "13", "--strands", "1,2",
+                 "--p-allow", "29"]) == 1
+    out = capsys.readouterr().out
+    assert "no candidate passes" in out and "what stops each chain family" in out
+
+
+def test_chain_bad_input_exit_2(capsys):
+    assert main(["chain", "--torque", "-380", "--n1", "120", "--ratio", "1"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "torque_nm must be > 0" in err[0]
+    assert main(["chain", "--torque", "380", "--n1", "120", "--ratio", "1", "--catalog", "din8187"]) == 2
+    assert "catalog must be one of" in capsys.readouterr().err
+    assert main(["chain", "--torque", "380", "--n1", "120", "--ratio", "1", "--strands", "one"]) == 2
+
+
+def test_chain_power_rating(capsys):
+    # Bhandari Ex. 14.3 inputs; published choice 08A, 122 links, a = 500.8 mm
+    assert main(["chain", "--power", "5", "--n1", "1400", "--ratio", "3", "--z1", "21", "--k-e", "1.3",
+                 "--catalog", "iso606a", "--strands", "1", "--center-distance", "500", "--method", "power_rating",
+                 "--json"]) == 0
+    best = json.loads(capsys.readouterr().out)["best"]
+    assert best["designation"] == "08A" and best["links"] == 122
+
+
+def test_key_select(capsys):
+    # d = 60, T = 503 N·m, hub 50 with [σ] = 130 MPa: two keys 18x11x40 (tests/test_key.py)
+    assert main(["key", "--d", "60", "--torque", "503", "--hub-length", "50", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert (data["n_keys"], data["length_mm"], data["b_mm"]) == (2, 40.0, 18.0)
+    assert main(["key", "--d", "60", "--torque", "503.129", "--hub-length", "50", "--crush", "300",
+                 "--shear", "120"]) == 0
+    assert "one key 18x11x32" in capsys.readouterr().out
+
+
+def test_key_capacity_and_errors(capsys):
+    # 300·60·(11 - 7)·(32 - 18)/2000 = 504 N·m
+    assert main(["key", "--d", "60", "--length", "32", "--crush", "300", "--shear", "120"]) == 0
+    assert "carries 504.0 N·m" in capsys.readouterr().out
+    assert main(["key", "--d", "60", "--torque", "503", "--hub-length", "10"]) == 1
+    assert main(["key", "--d", "60", "--torque", "503"]) == 2
+    assert "--hub-length" in capsys.readouterr().err
+
+
+def test_python_m_geardesign_chain():
+    root = Path(__file__).resolve().parent.parent
+    proc = subprocess.run([sys.executable, "-m", "geardesign"] + SEED + ["--json", "--top", "2"],
+                          cwd=root, capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert json.loads(proc.stdout)["best"]["designation"] == "PR-38,1-127"
