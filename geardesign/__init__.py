@@ -5,18 +5,19 @@
 >>> round(pair.geometry().eps_alpha, 3)
 1.153
 """
-from . import checks, involute
+from . import catalogs, chain, checks, involute, key, sprocket
 from .checks import make_checks
 from .errors import CatalogError, GearDesignError
 from .geometry import GEOMETRY_FIELDS, Geometry, pair_geometry, x_sum_from_center_distance
 from .involute import inv, inv_inverse
 from .pair import GearPair
 from .rack import BasicRack
+from .shift import ShiftResult, optimize_shifts
 
 __version__ = "0.1.0"
 
 __all__ = [
     "BasicRack", "GearPair", "Geometry", "GEOMETRY_FIELDS", "GearDesignError", "CatalogError",
     "pair_geometry", "x_sum_from_center_distance", "inv", "inv_inverse", "make_checks",
-    "checks", "involute",
+    "checks", "involute", "optimize_shifts", "ShiftResult", "catalogs", "chain", "key", "sprocket",
 ]

@@ -18,7 +18,7 @@ import numpy as np
 import pandas as pd
 
 from .errors import GearDesignError, require_finite, require_int, require_positive
-from .involute import inv, inv_from_tan, tan_from_inv
+from .involute import _t_minus_atan, inv, inv_from_tan, tan_from_inv
 from .rack import BasicRack
 
 __all__ = [
@@ -147,13 +147,26 @@ def _core(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool) -> dict:
         else:
             t_w = np.full(inv_aw.shape, np.nan)
             t_w[ok] = tan_from_inv(inv_aw[ok], validate=False)
+        # Refine Δt = tan α_w − tan α itself, so that α_w − α keeps its digits when it is small:
+        # inv α_w − inv α = Δt·t t_w/(1 + t t_w) + (u − atan u), u = Δt/(1 + t t_w), two terms
+        # of one sign; Newton with d(inv α_w)/dΔt = t_w²/(1 + t_w²).
+        D = 2.0 * xs * ta / zs
+        dt = t_w - ta
+        for _ in range(2):
+            t_w = ta + dt
+            q = 1.0 + ta * t_w
+            u = dt / q
+            resid = dt * ta * t_w / q + _t_minus_atan(u) - D
+            dt = dt - resid * (1.0 + t_w * t_w) / (t_w * t_w)
+        t_w = ta + dt
+        delta = np.arctan(dt / (1.0 + ta * t_w))     # α_w − α
         cos_w = 1.0 / np.sqrt(1.0 + t_w * t_w)
         sin_w = t_w * cos_w
-        alpha_w = np.arctan(t_w)
+        alpha_w = alpha + delta
 
         a = m * zs / 2.0
-        # cos α − cos α_w without cancellation
-        y = zs / 2.0 * 2.0 * np.sin((alpha_w + alpha) / 2.0) * np.sin((alpha_w - alpha) / 2.0) / cos_w
+        # cos α − cos α_w = 2 sin(α + δ/2) sin(δ/2): no cancellation
+        y = zs * np.sin(alpha + delta / 2.0) * np.sin(delta / 2.0) / cos_w
         a_w = a + y * m
         dy = xs - y
         k = dy if tip_shortening else np.zeros_like(dy)
@@ -186,11 +199,16 @@ def _core(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool) -> dict:
 
         p_b = math.pi * m * ca
         g = (db1 + db2) / 2.0 * t_w            # N1N2 = a_w sin α_w
-        g_alpha = rho_a1 + rho_a2 - g
+        # e_i = ρ_ai − r_bi tan α_w = (r_ai² − r_wi²)/(ρ_ai + r_bi tan α_w) with
+        # r_ai − r_wi = m(h_a* + x_i − k − y z_i/z_Σ): the path of contact without cancellation
+        rw1, rw2 = dw1 / 2.0, dw2 / 2.0
+        e1 = m * (rack.ha + x1 - k - y * z1 / zs) * (da1 / 2.0 + rw1) / (rho_a1 + db1 / 2.0 * t_w)
+        e2 = m * (rack.ha + x2 - k - y * z2 / zs) * (da2 / 2.0 + rw2) / (rho_a2 + db2 / 2.0 * t_w)
+        g_alpha = e1 + e2
         eps_alpha = g_alpha / p_b
 
-        rho_p1 = g - rho_a2
-        rho_p2 = g - rho_a1
+        rho_p1 = db1 / 2.0 * t_w - e2
+        rho_p2 = db2 / 2.0 * t_w - e1
         x_min1 = rack.h_limit - z1 * sa * sa / 2.0
         x_min2 = rack.h_limit - z2 * sa * sa / 2.0
         rho_l1 = m * (x1 - x_min1) / sa
@@ -202,8 +220,8 @@ def _core(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool) -> dict:
         sliding2_tip = 1.0 - u * rho_p1 / rho_a2
         sliding1_tip = 1.0 - rho_p2 / (u * rho_a1)
         sliding2_root = 1.0 - u * rho_a1 / rho_p2
-        rho_w1 = dw1 / 2.0 * sin_w
-        rho_w2 = dw2 / 2.0 * sin_w
+        rho_w1 = rw1 * sin_w
+        rho_w2 = rw2 * sin_w
         spec_pressure = m * (rho_w1 + rho_w2) / (rho_w1 * rho_w2)
 
     return {
@@ -216,7 +234,8 @@ def _core(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool) -> dict:
         "p_b": p_b, "p_w": math.pi * dw1 / z1,
         "g_alpha": g_alpha, "eps_alpha": eps_alpha,
         "alpha_a1_deg": np.degrees(np.arctan(t_a1)), "alpha_a2_deg": np.degrees(np.arctan(t_a2)),
-        "clearance1": a_w - da1 / 2.0 - df2 / 2.0, "clearance2": a_w - da2 / 2.0 - df1 / 2.0,
+        # a_w − r_a1 − r_f2 = m(c* + k − Δy), the same for both gears
+        "clearance1": m * (rack.c + k - dy), "clearance2": m * (rack.c + k - dy),
         "x_min1": x_min1, "x_min2": x_min2,
         "rho_l1": rho_l1, "rho_l2": rho_l2, "rho_p1": rho_p1, "rho_p2": rho_p2,
         "d_l1": 2.0 * np.sqrt(db1 * db1 / 4.0 + np.maximum(rho_l1, 0.0) ** 2),

@@ -163,6 +163,19 @@ def _groups(designs):
     return g
 
 
+def _conditioning(name, r):
+    """How much the problem itself amplifies a one-ulp change of its inputs, where that exceeds
+    what 1e-12 can absorb. Specific sliding at a root divides by ρ_p, which is a difference of
+    two lengths of size r_b tan α_w: one ulp of x moves ρ_p by ~ε·r_b tan α_w, so the sliding
+    there is only defined to ~ε·r_b tan α_w/|ρ_p| relative (z = 5/6 at α = 10° puts ρ_p at
+    1.5e-4·m). Everywhere else this factor is 1."""
+    if name in ("sliding1_root", "sliding2_root"):
+        j = name[7]
+        big = r[f"db{j}"] / 2 * mp.tan(mp.radians(r["alpha_w_deg"]))
+        return max(1.0, float(16 * mp.mpf(2) ** -52 * big / abs(r[f"rho_p{j}"]) / mp.mpf(RTOL)))
+    return 1.0
+
+
 def compare(valid):
     """Per field: worst error relative to max(|reference|, scale) and the design where it occurs."""
     worst = {name: (0.0, None) for name in gd.GEOMETRY_FIELDS}
@@ -177,6 +190,7 @@ def compare(valid):
                 r = d["ref"][name]
                 scale = max(abs(float(r)), ref.field_scale(name, d["m"], alpha_deg))
                 err = float(abs(mp.mpf(float(ours[i])) - r)) / scale if scale > 0 else abs(float(ours[i]))
+                err /= _conditioning(name, d["ref"])
                 if not err <= worst[name][0]:      # also catches NaN
                     worst[name] = (err, dict({k: d[k] for k in d if k != "ref"}, ours=float(ours[i]),
                                              reference=mp.nstr(r, 20)))
@@ -291,8 +305,9 @@ def test_cancellation_near_base_tip_with_huge_mate():
     """Tip of gear 1 1e-3·m above its base circle with a 10 000-tooth mate: the gap
     m(z sin²(α/2) + h_a* + x − Δy) inherits Δy's z_Σ·ε error, relative 1e-9 on the gap."""
     fields = ["alpha_a1_deg", "sa1", "eps_alpha", "g_alpha", "sliding1_tip"]
-    d = dict(m=2.0, z1=40, z2=10000, x1=-1.0, x2=-1.0, alpha_deg=30.0, ha=1.0, c=0.25, rho_f=0.110349, ts=True)
+    d = dict(m=2.0, z1=40, z2=10000, x1=-3.67, x2=-1.0, alpha_deg=30.0, ha=1.0, c=0.25, rho_f=0.110349, ts=True)
     x1 = _solve_x1(d, lambda f: (f["da1"] - f["db1"]) / 2 - mp.mpf("1e-3") * d["m"])
+    assert x1 is not None
     _check_fields(fields, 2.0, 40, 10000, x1, -1.0, alpha_deg=30.0, rho_f=0.110349)
 
 

@@ -1,0 +1,537 @@
+"""Optimal profile shifts x1/x2 for given tooth counts: three methods, one answer.
+
+Every objective is written as "maximise t subject to piece_k(x) >= t and margin_i(x) >= 0"
+(one piece for a smooth objective, two for balanced sliding, the normalised margins for
+``max_margin``), so the three methods share one formulation:
+
+* ``grid``   — all pieces and margins on an N×N grid in one vectorised call; the best feasible
+  node. Coarse and fast; the achieved tolerance is half the grid spacing.
+* ``convex`` — sequential convex programming in cvxpy with the Clarabel solver: the checks are
+  linearised at the iterate and the linear program is solved inside a trust region, repeated.
+  The cvxpy problem is built once with Parameters (DPP) and re-solved; its dual values give the
+  sensitivities.
+* ``exact``  — SLSQP from the best grid node, then Newton (``scipy.optimize.root``) on the
+  active set: the active checks at zero and, when one fewer is active than free variables,
+  the stationarity condition. Reaches ~1e-12 in x.
+
+Sensitivities are d(fun)/d(limit) of the active checks: how much the optimum moves per unit
+rise of each active limit (for undercut and interference, per unit of extra margin required).
+"""
+from __future__ import annotations
+
+import itertools
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+from scipy.optimize import minimize, root
+
+from . import checks as _checks
+from .errors import GearDesignError, require_positive, require_range
+from .geometry import x_sum_from_center_distance
+from .problem import DEFAULT_BOUNDS, OBJECTIVES, Problem
+
+__all__ = ["optimize_shifts", "ShiftResult", "METHODS", "smallest_conflict"]
+
+METHODS = ("grid", "convex", "exact")
+DEFAULT_TOL = {"grid": 1e-2, "convex": 1e-7, "exact": 1e-9}
+_START_N = 41          # grid nodes per axis for the start of convex and exact
+_BIG = 1e3             # stands in for −inf margins inside the smooth solvers
+
+
+@dataclass
+class ShiftResult:
+    """The optimum of :func:`optimize_shifts`, in the manner of ``scipy.optimize.OptimizeResult``.
+
+    ``fun`` is the objective in its natural sense (x1 + x2 for ``max_x_sum``, ε_α for
+    ``max_eps_alpha``, max |ϑ| for ``balanced_sliding``, the specific pressure coefficient for
+    ``min_specific_pressure``, the distance in x to the nearest check boundary for ``max_margin``).
+    """
+
+    x1: float
+    x2: float
+    fun: float
+    objective: str
+    success: bool
+    message: str
+    method: str
+    tol: float
+    nit: int
+    time_s: float
+    margins: dict = field(default_factory=dict)
+    active: list = field(default_factory=list)
+    sensitivity: dict = field(default_factory=dict)
+    conflict: list = field(default_factory=list)
+    z1: int = 0
+    z2: int = 0
+    m: float = 1.0
+    x_sum_fixed: float | None = None
+    a_w: float = math.nan
+    eps_alpha: float = math.nan
+
+    @property
+    def x(self) -> np.ndarray:
+        return np.array([self.x1, self.x2])
+
+    def to_dict(self) -> dict:
+        d = {k: getattr(self, k) for k in self.__dataclass_fields__}
+        d["margins"] = dict(self.margins)
+        return d
+
+    def to_frame(self) -> pd.DataFrame:
+        """One row per check: margin, active, sensitivity."""
+        return pd.DataFrame({
+            "check": list(self.margins),
+            "margin": list(self.margins.values()),
+            "active": [k in self.active for k in self.margins],
+            "sensitivity": [self.sensitivity.get(k, 0.0) for k in self.margins],
+        })
+
+    def __repr__(self) -> str:
+        lines = [
+            f"     message: {self.message}",
+            f"     success: {self.success}",
+            f"       pairs: z1/z2 = {self.z1}/{self.z2}" + (f", x1 + x2 fixed at {self.x_sum_fixed:.10g}"
+                                                          if self.x_sum_fixed is not None else ""),
+            f"      x1, x2: {self.x1:.10g}, {self.x2:.10g}",
+            f"         fun: {self.fun:.10g}  ({self.objective})",
+            f"   eps_alpha: {self.eps_alpha:.6g}   a_w: {self.a_w:.6g} mm (m = {self.m:g})",
+            f"      active: {', '.join(self.active) if self.active else '-'}",
+            f" sensitivity: " + (", ".join(f"{k} {v:+.4g}" for k, v in self.sensitivity.items()) or "-"),
+            "     margins: " + ", ".join(f"{k} {v:+.4g}" for k, v in self.margins.items()),
+            f"      method: {self.method}, tol {self.tol:g}, nit {self.nit}, {self.time_s * 1e3:.2f} ms",
+        ]
+        if self.conflict:
+            lines.insert(2, f"    conflict: {', '.join(self.conflict)}")
+        return "\n".join(lines)
+
+
+# --- helpers ------------------------------------------------------------------------------
+
+def _limit_factor(check) -> float:
+    """d(margin)/d(limit) → converts a multiplier into d(fun)/d(limit)."""
+    if isinstance(check, _checks.Jamming):
+        return -1.0
+    if isinstance(check, _checks.CustomCheck):
+        return (1.0 if check.sense == ">=" else -1.0) / check.scale
+    return 1.0
+
+
+def grid_points(prob: Problem, n: int, bounds) -> np.ndarray:
+    lo, hi = bounds
+    if prob.nvar == 1:
+        lo1 = max(lo, prob.x_sum - hi)
+        hi1 = min(hi, prob.x_sum - lo)
+        return np.linspace(lo1, hi1, n)[:, None]
+    g = np.linspace(lo, hi, n)
+    X1, X2 = np.meshgrid(g, g, indexing="ij")
+    return np.column_stack([X1.ravel(), X2.ravel()])
+
+
+def _best_feasible(prob: Problem, V: np.ndarray):
+    P, M = prob.evaluate(V, grads=False)
+    feasible = (M >= 0).all(axis=0) if M.size else np.ones(V.shape[0], bool)
+    score = np.where(feasible, P.min(axis=0), -np.inf)
+    if not np.isfinite(score).any():
+        return None, P, M
+    return int(np.argmax(score)), P, M
+
+
+def _least_infeasible(prob: Problem, V, M):
+    worst = M.min(axis=0) if M.size else np.zeros(V.shape[0])
+    return int(np.argmax(worst))
+
+
+class _Evaluator:
+    """Caches Problem.evaluate at one point for the scipy callbacks (w = (v, t))."""
+
+    def __init__(self, prob: Problem):
+        self.prob = prob
+        self.key = None
+        self.nfev = 0
+
+    def __call__(self, v):
+        key = np.asarray(v, dtype=float).tobytes()
+        if key != self.key:
+            P, M, GP, GM = self.prob.evaluate(np.asarray(v, dtype=float)[None, :], grads=True)
+            self.val = (np.nan_to_num(P[:, 0], neginf=-_BIG), np.nan_to_num(M[:, 0], neginf=-_BIG),
+                        np.nan_to_num(GP[..., 0]), np.nan_to_num(GM[..., 0]))
+            self.key = key
+            self.nfev += 1
+        return self.val
+
+
+def _slsqp(prob: Problem, v0, bounds, ftol=1e-15, maxiter=200, pieces_only=False):
+    """SLSQP on w = (v, t): maximise t s.t. pieces − t >= 0, margins >= 0."""
+    ev = _Evaluator(prob)
+    nv = prob.nvar
+    P0, M0, _, _ = ev(v0)
+    w0 = np.append(v0, P0.min())
+
+    def cons(w):
+        P, M, _, _ = ev(w[:nv])
+        return np.concatenate([P - w[nv], [] if pieces_only else M])
+
+    def cons_jac(w):
+        _, _, GP, GM = ev(w[:nv])
+        top = np.hstack([GP, -np.ones((GP.shape[0], 1))])
+        if pieces_only:
+            return top
+        return np.vstack([top, np.hstack([GM, np.zeros((GM.shape[0], 1))])])
+
+    lo, hi = bounds
+    if nv == 1:
+        vb = [(max(lo, prob.x_sum - hi), min(hi, prob.x_sum - lo))]
+    else:
+        vb = [(lo, hi), (lo, hi)]
+    res = minimize(lambda w: -w[nv], w0, jac=lambda w: np.append(np.zeros(nv), -1.0),
+                   constraints=[{"type": "ineq", "fun": cons, "jac": cons_jac}],
+                   bounds=vb + [(None, None)], method="SLSQP",
+                   options={"ftol": ftol, "maxiter": maxiter})
+    return res.x, res.nit, ev
+
+
+def _kkt_system(prob: Problem, act_p, act_m, ev: _Evaluator):
+    nv = prob.nvar
+    need = nv + 1
+    neq = len(act_p) + len(act_m)
+
+    def grads(w):
+        P, M, GP, GM = ev(w[:nv])
+        rows = [np.append(GP[k], -1.0) for k in act_p] + [np.append(GM[i], 0.0) for i in act_m]
+        return P, M, rows
+
+    def F(w):
+        P, M, rows = grads(w)
+        eqs = [P[k] - w[nv] for k in act_p] + [M[i] for i in act_m]
+        if neq == need - 1:
+            A = np.vstack([np.append(np.zeros(nv), 1.0)] + rows)
+            scale = np.prod([max(np.linalg.norm(r), 1e-300) for r in rows])
+            eqs.append(np.linalg.det(A) / scale)
+        return np.array(eqs)
+
+    return F
+
+
+def _multipliers(prob: Problem, w, act_p, act_m, ev):
+    """λ of the active constraints from e_t + Σ λ_j ∇c_j = 0 (least squares)."""
+    nv = prob.nvar
+    _, _, GP, GM = ev(w[:nv])
+    rows = [np.append(GP[k], -1.0) for k in act_p] + [np.append(GM[i], 0.0) for i in act_m]
+    if not rows:
+        return np.zeros(0), np.zeros(0)
+    A = np.array(rows).T
+    lam, *_ = np.linalg.lstsq(A, -np.append(np.zeros(nv), 1.0), rcond=None)
+    return lam[:len(act_p)], lam[len(act_p):]
+
+
+def _polish(prob: Problem, w, ev: _Evaluator, tol: float, act_tol=1e-5):
+    """Newton on the active set. Returns (w, act_p, act_m) or None if no polish applies."""
+    nv = prob.nvar
+    P, M, _, _ = ev(w[:nv])
+    t = w[nv]
+    cand_p = [k for k in range(P.size) if P[k] - t < act_tol]
+    cand_m = [i for i in range(M.size) if M[i] < act_tol]
+    need = nv + 1
+    best = None
+    options = []
+    for n_m in range(len(cand_m), -1, -1):
+        for sub_m in itertools.combinations(cand_m, n_m):
+            for n_p in range(len(cand_p), 0, -1):
+                for sub_p in itertools.combinations(cand_p, n_p):
+                    if n_m + n_p in (need, need - 1):
+                        options.append((list(sub_p), list(sub_m)))
+    options.sort(key=lambda o: -(len(o[0]) + len(o[1])))
+    for act_p, act_m in options[:24]:
+        F = _kkt_system(prob, act_p, act_m, ev)
+        sol = root(F, w, method="hybr", options={"xtol": 1e-15})
+        wn = sol.x
+        if not np.all(np.isfinite(wn)) or np.max(np.abs(F(wn))) > 1e-10:
+            continue
+        Pn, Mn, _, _ = ev(wn[:nv])
+        if Mn.size and Mn.min() < -1e-12:
+            continue
+        tn = Pn.min()
+        if tn < t - 1e-9 or np.linalg.norm(wn[:nv] - w[:nv]) > 1e-3:
+            continue
+        lp, lm = _multipliers(prob, np.append(wn[:nv], tn), act_p, act_m, ev)
+        if (lp.size and lp.min() < -1e-7) or (lm.size and lm.min() < -1e-7):
+            continue
+        best = (tn, np.append(wn[:nv], tn), act_p, act_m)
+        break   # SLSQP put us next to the optimum: the first valid KKT point near it is it
+    return None if best is None else best[1:]
+
+
+# --- the convex (SCP) method ----------------------------------------------------------------
+
+_SCP_CACHE: dict = {}
+
+
+def _scp_problem(P: int, K: int, nv: int):
+    """The convex subproblem, built once per shape and re-solved with new Parameters (DPP):
+    maximise t − ½‖L d‖² s.t. pieces + GP d >= t, margins + GM d >= 0, lo <= d <= hi,
+    with LᵀL the PSD part of the Lagrangian's curvature (so the steps are SQP steps)."""
+    key = (P, K, nv)
+    if key not in _SCP_CACHE:
+        import cvxpy as cp
+
+        d = cp.Variable(nv)
+        t = cp.Variable()
+        Pp, GPp = cp.Parameter(P), cp.Parameter((P, nv))
+        Mp, GMp = cp.Parameter(K), cp.Parameter((K, nv))
+        lo, hi, Lp = cp.Parameter(nv), cp.Parameter(nv), cp.Parameter((nv, nv))
+        cons = [Pp + GPp @ d >= t, d >= lo, d <= hi]
+        if K:
+            cons.append(Mp + GMp @ d >= 0)
+        problem = cp.Problem(cp.Maximize(t - 0.5 * cp.sum_squares(Lp @ d)), cons)
+        _SCP_CACHE[key] = (problem, d, t, Pp, GPp, Mp, GMp, lo, hi, Lp, cons)
+    return _SCP_CACHE[key]
+
+
+def _curvature(prob: Problem, v, lam_p, lam_m, h=1e-5):
+    """L with LᵀL = PSD part of −∇²(Σ λ_p p + Σ λ_m m), second derivatives by differences of
+    the analytic gradients (one vectorised call)."""
+    nv = prob.nvar
+    V = np.vstack([v + h * e for e in np.eye(nv)] + [v - h * e for e in np.eye(nv)])
+    _, _, GP, GM = prob.evaluate(V, grads=True)
+    GP, GM = np.nan_to_num(GP), np.nan_to_num(GM)
+    H = np.zeros((nv, nv))
+    for j in range(nv):
+        dGP = (GP[:, :, j] - GP[:, :, nv + j]) / (2 * h)
+        dGM = (GM[:, :, j] - GM[:, :, nv + j]) / (2 * h)
+        H[:, j] = lam_p @ dGP + (lam_m @ dGM if lam_m.size else 0.0)
+    B = -(H + H.T) / 2
+    vals, vecs = np.linalg.eigh(B)
+    vals = np.clip(vals, 1e-8, None)
+    return (vecs * np.sqrt(vals)).T
+
+
+def _solve_convex(prob: Problem, v0, bounds, tol, maxit=100):
+    import cvxpy as cp
+
+    nv = prob.nvar
+    ev = _Evaluator(prob)
+    P, M, GP, GM = ev(v0)
+    problem, d, t, Pp, GPp, Mp, GMp, lo, hi, Lp, cons = _scp_problem(P.size, M.size, nv)
+    blo, bhi = bounds
+    if nv == 1:
+        box_lo, box_hi = np.array([max(blo, prob.x_sum - bhi)]), np.array([min(bhi, prob.x_sum - blo)])
+    else:
+        box_lo, box_hi = np.array([blo, blo]), np.array([bhi, bhi])
+    v = np.asarray(v0, dtype=float)
+    radius = 0.25
+    penalty = 10.0
+
+    def merit(P, M):
+        return P.min() - penalty * np.clip(-M, 0, None).sum()
+
+    lam_p = np.full(P.size, 1.0 / P.size)
+    lam_m = np.zeros(M.size)
+    L = np.eye(nv) * 1e-4
+    nit = 0
+    for nit in range(1, maxit + 1):
+        Pp.value, GPp.value, Lp.value = P, GP, L
+        if M.size:
+            Mp.value, GMp.value = M, GM
+        lo.value = np.maximum(-radius, box_lo - v)
+        hi.value = np.minimum(radius, box_hi - v)
+        problem.solve(solver=cp.CLARABEL)
+        if d.value is None:
+            radius /= 4
+            if radius < tol:
+                break
+            continue
+        step = np.asarray(d.value, dtype=float)
+        predicted = float(problem.value) - merit(P, M)
+        P1, M1, GP1, GM1 = ev(v + step)
+        actual = merit(P1, M1) - merit(P, M)
+        if actual < 0.1 * predicted and M.size and (M1 < 0).any():
+            # second-order correction (Maratos effect): pull the violated checks back to zero
+            bad = M1 < 0
+            corr = -np.linalg.pinv(GM[bad]) @ M1[bad]
+            P2, M2, GP2, GM2 = ev(v + step + corr)
+            if merit(P2, M2) - merit(P, M) >= 0.1 * predicted:
+                step = step + corr
+                P1, M1, GP1, GM1 = P2, M2, GP2, GM2
+                actual = merit(P1, M1) - merit(P, M)
+        if predicted <= 1e-15 or actual >= 0.1 * predicted:
+            v, P, M, GP, GM = v + step, P1, M1, GP1, GM1
+            lam_p = np.asarray(cons[0].dual_value, dtype=float)
+            if M.size:
+                lam_m = np.asarray(cons[3].dual_value, dtype=float)
+            L = _curvature(prob, v, lam_p, lam_m)
+            if predicted > 0 and actual > 0.75 * predicted and np.max(np.abs(step)) > 0.9 * radius:
+                radius = min(2 * radius, 1.0)
+            if np.max(np.abs(step)) < tol:
+                break
+        else:
+            radius = min(radius, np.max(np.abs(step))) / 4
+            if radius < tol:
+                break
+    return v, nit, lam_m, ev
+
+
+# --- conflicts ----------------------------------------------------------------------------
+
+def smallest_conflict(prob: Problem, bounds=DEFAULT_BOUNDS, n: int = 161) -> list[str]:
+    """A smallest set of checks that no (x1, x2) in the window satisfies together.
+
+    Subsets are tried by size: the largest smallest-margin over a grid shows which subsets look
+    empty, and a local maximisation of the smallest margin (SLSQP) confirms it.
+    """
+    V = grid_points(prob, n, bounds)
+    _, M = prob.evaluate(V, grads=False)
+    K = M.shape[0]
+    for size in range(1, K + 1):
+        for sub in itertools.combinations(range(K), size):
+            worst = M[list(sub)].min(axis=0)
+            i = int(np.argmax(worst))
+            if worst[i] >= 0:
+                continue
+            sub_prob = Problem(prob.z1, prob.z2, prob.rack, [prob.checks[j] for j in sub], "max_x_sum",
+                               prob.m, prob.tip_shortening, prob.x_sum)
+            # maximise the smallest margin of the subset
+            w, _, ev = _slsqp(_MinMargin(sub_prob), V[i], bounds, ftol=1e-12, pieces_only=True)
+            if w[-1] < -1e-9:
+                return [prob.names[j] for j in sub]
+    return []
+
+
+class _MinMargin(Problem):
+    """Pieces = the margins themselves (to maximise the smallest), no hard constraints."""
+
+    def __init__(self, base: Problem):
+        self.__dict__.update(base.__dict__)
+
+    def evaluate(self, V, grads=True):
+        out = Problem.evaluate(self, V, grads)
+        if not grads:
+            return out[1], out[1][:0]
+        P, M, GP, GM = out
+        return M, M[:0], GM, GM[:0]
+
+
+# --- the public function --------------------------------------------------------------------
+
+def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: str = "exact",
+                    tol: float | None = None, a_w: float | None = None, m: float = 1.0, rack=None,
+                    tip_shortening: bool = True, bounds=DEFAULT_BOUNDS, grid_n: int | None = None) -> ShiftResult:
+    """The best profile shifts x1, x2 for tooth counts z1, z2 under the chosen checks.
+
+    Parameters
+    ----------
+    z1, z2 : tooth counts.  objective : one of :data:`geardesign.problem.OBJECTIVES`.
+    checks : None (no undercut, no interference, s_a >= 0.25 m, ε_α >= 1.2), a dict of
+        :func:`geardesign.checks.make_checks` options (``{"sa_min": 0.4, "undercut": False}``),
+        or a list of :class:`geardesign.checks.Check`.
+    method : "grid", "convex" or "exact".  tol : tolerance in x (defaults: grid 0.01,
+        convex 1e-7, exact 1e-9); every returned point satisfies the checks to within it.
+    a_w : operating centre distance in mm (with ``m``): fixes x1 + x2; the objective picks the split.
+    m : module, mm (scales a_w only; the shifts do not depend on it).
+    bounds : the window (lo, hi) searched for each of x1, x2.
+    grid_n : nodes per axis of the grid method (default from ``tol``).
+
+    >>> r = optimize_shifts(17, 26)          # seed 000's tooth counts: ε_α >= 1.2 caps x1 + x2
+    >>> r.success, r.active, round(r.fun, 6)
+    (True, ['contact_ratio'], 1.337093)
+    """
+    t0 = time.perf_counter()
+    if method not in METHODS:
+        raise GearDesignError(f"method must be one of {list(METHODS)}, got {method!r}")
+    tol = DEFAULT_TOL[method] if tol is None else float(require_positive("tol", tol))
+    require_range("tol", tol, 1e-14, 1.0)
+    lo, hi = (float(b) for b in bounds)
+    if not lo < hi:
+        raise GearDesignError(f"bounds must be (lo, hi) with lo < hi, got {bounds!r}")
+    x_sum = None
+    prob0 = Problem(z1, z2, rack, checks, objective, m, tip_shortening)
+    if a_w is not None:
+        a_w = float(require_positive("a_w (center distance)", a_w, unit="mm"))
+        a_ref = prob0.m * (prob0.z1 + prob0.z2) / 2.0
+        if a_w <= a_ref * math.cos(prob0.rack.alpha):
+            raise GearDesignError(f"a_w = {a_w:g} mm must be > a·cos(alpha) = {a_ref * math.cos(prob0.rack.alpha):.6g} mm")
+        x_sum = float(x_sum_from_center_distance(prob0.m, prob0.z1, prob0.z2, a_w, prob0.rack))
+    prob = Problem(z1, z2, rack, checks, objective, m, tip_shortening, x_sum)
+    bounds = (lo, hi)
+
+    def finish(v, nit, success, message, sensitivity=None, conflict=None):
+        x1, x2 = (float(c[0]) for c in prob.xy(np.asarray(v)[None, :]))
+        geo = prob.geo(x1, x2)
+        mg = {name: float(v_) for name, v_ in zip(prob.names, prob.margins(geo))}
+        P, _ = prob.evaluate(np.asarray(v)[None, :], grads=False)
+        fun = float(prob.objective.sense * P.min()) if prob.objective.kind != "margin" else float(P.min())
+        active = [k for k, v_ in mg.items() if abs(v_) <= max(tol, 1e-9) * 10]
+        return ShiftResult(
+            x1=x1, x2=x2, fun=fun, objective=prob.objective.name, success=success, message=message,
+            method=method, tol=tol, nit=nit, time_s=time.perf_counter() - t0, margins=mg, active=active,
+            sensitivity=sensitivity or {}, conflict=conflict or [], z1=prob.z1, z2=prob.z2, m=prob.m,
+            x_sum_fixed=x_sum, a_w=float(geo["a_w"]), eps_alpha=float(geo["eps_alpha"]))
+
+    if method == "grid":
+        span = hi - lo
+        n = grid_n or int(min(max(math.ceil(span / (2 * tol)) + 1, 11), 1001 if prob.nvar == 2 else 200001))
+        V = grid_points(prob, n, bounds)
+        i, P, M = _best_feasible(prob, V)
+        h = (V[-1, 0] - V[0, 0]) / (n - 1) if n > 1 else 0.0
+        tol = max(h / 2, tol) if h > 0 else tol
+        if i is None:
+            j = _least_infeasible(prob, V, M)
+            w, _, _ = _slsqp(_MinMargin(prob), V[j], bounds, ftol=1e-12, pieces_only=True)
+            if w[-1] >= 0:
+                return finish(w[:-1], 1, True, f"no feasible node among {V.shape[0]} (spacing {h:.3g}): the "
+                              "region is thinner than the grid; returned its most central point nearby")
+            conflict = smallest_conflict(prob, bounds)
+            return finish(V[j], 1, False, f"no feasible point: checks {', '.join(conflict)} conflict",
+                          conflict=conflict)
+        return finish(V[i], 1, True, f"best of {V.shape[0]} grid nodes (spacing {h:.3g})")
+
+    # a feasible start for convex and exact
+    V = grid_points(prob, _START_N if prob.nvar == 2 else 401, bounds)
+    i, P, M = _best_feasible(prob, V)
+    if i is None:
+        j = _least_infeasible(prob, V, M)
+        w, _, ev = _slsqp(_MinMargin(prob), V[j], bounds, ftol=1e-12, pieces_only=True)
+        if w[-1] >= 0:
+            v0 = w[:-1]
+        else:
+            conflict = smallest_conflict(prob, bounds)
+            return finish(w[:-1], 1, False, f"no feasible point: checks {', '.join(conflict)} conflict",
+                          conflict=conflict)
+    else:
+        v0 = V[i]
+
+    sense = prob.objective.sense if prob.objective.kind != "margin" else 1.0
+    if method == "convex":
+        v, nit, lam, ev = _solve_convex(prob, v0, bounds, tol)
+        Pv, Mv, _, _ = ev(v)
+        sens = {}
+        if prob.objective.kind != "margin":
+            for c, lam_i, mi in zip(prob.checks, lam, Mv):
+                if abs(mi) <= 10 * tol and lam_i > 1e-9:
+                    sens[c.name] = float(-sense * lam_i * _limit_factor(c))
+        ok = not (Mv.size and Mv.min() < -tol)
+        msg = "converged: trust region below tol" if ok else "stopped with a check violated beyond tol"
+        return finish(v, nit, ok, msg, sens)
+
+    # exact: SLSQP, then Newton on the active set
+    w, nit, ev = _slsqp(prob, v0, bounds)
+    polished = _polish(prob, w, ev, tol)
+    if polished is not None:
+        w, act_p, act_m = polished
+        msg = "converged: KKT system of the active set solved by Newton"
+    else:
+        P, M, _, _ = ev(w[:prob.nvar])
+        act_p = [k for k in range(P.size) if P[k] - w[-1] < 1e-6]
+        act_m = [k for k in range(M.size) if M[k] < 1e-6]
+        msg = "converged (SLSQP; active-set polish not applicable)"
+    lp, lm = _multipliers(prob, w, act_p, act_m, ev)
+    sens = {}
+    if prob.objective.kind != "margin":
+        for i_m, lam_i in zip(act_m, lm):
+            c = prob.checks[i_m]
+            sens[c.name] = float(-sense * lam_i * _limit_factor(c))
+    _, Mv, _, _ = ev(w[:prob.nvar])
+    ok = not (Mv.size and Mv.min() < -tol)
+    return finish(w[:prob.nvar], nit, ok, msg if ok else "a check is violated beyond tol", sens)

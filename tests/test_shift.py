@@ -1,0 +1,161 @@
+"""Optimal shifts: the three methods against an independent brute-force reference.
+
+The reference (written here) uses no gradients and no solver: a dense grid over the window,
+then repeated zooming grids around the best feasible node, with the exact margins of
+geardesign.checks (the geometry under them is tested against mpmath in test_extremes.py).
+"""
+import numpy as np
+import pytest
+
+import geardesign as gd
+from geardesign import checks as ck
+from geardesign.geometry import _core
+
+
+def reference_optimum(z1, z2, fun, checks=None, sense=+1, lo=-1.5, hi=3.0, n=41, levels=34):
+    """Nested zooming grids: for every x1 node, the best feasible x2 (inner zoom, all x1 nodes
+    at once); then zoom in x1 around the best of those. The value of the inner problem is a
+    smooth function of x1, so the outer zoom converges even when the optimum slides along a
+    curved boundary (where a plain 2-D zoom stalls at ~√(grid step))."""
+    cs = ck.resolve_checks(checks)
+    rack = gd.BasicRack()
+
+    def scores(X1, X2):
+        geo = _core(1.0, z1, z2, X1, X2, rack, True)
+        ok = np.ones(X1.shape, bool)
+        for c in cs:
+            ok &= np.nan_to_num(c.margin(geo), nan=-1.0) >= 0
+        return np.where(ok, sense * fun(geo), -np.inf)
+
+    def inner(x1):
+        # best x2 for each x1: a dense first look, then zoom around each row's best node
+        c2 = np.full(x1.shape, (lo + hi) / 2)
+        half = np.full(x1.shape, (hi - lo) / 2)
+        for level in range(levels):
+            X2 = c2[:, None] + half[:, None] * np.linspace(-1, 1, 12 * n if level == 0 else n)[None, :]
+            X1 = np.broadcast_to(x1[:, None], X2.shape)
+            s = scores(X1, X2)
+            j = np.argmax(s, axis=1)
+            c2 = X2[np.arange(len(x1)), j]
+            half = half * (0.05 if level == 0 else 0.35)
+        return c2, scores(x1, c2)
+
+    c1, half1 = (lo + hi) / 2, (hi - lo) / 2
+    for level in range(levels):
+        x1 = c1 + half1 * np.linspace(-1, 1, 12 * n if level == 0 else n)
+        x2, s = inner(x1)
+        i = int(np.argmax(s))
+        assert np.isfinite(s[i]), "reference found no feasible point"
+        c1, best = x1[i], (x1[i], x2[i], s[i])
+        half1 *= 0.05 if level == 0 else 0.35
+    return best
+
+
+PAIRS = [(17, 26), (12, 24), (10, 40), (30, 90), (20, 20), (14, 60), (25, 31), (40, 120)]
+
+
+@pytest.mark.parametrize("z1,z2", PAIRS)
+def test_max_x_sum_matches_reference(z1, z2):
+    ref = reference_optimum(z1, z2, lambda g: g["_x1"] + g["_x2"])
+    r = gd.optimize_shifts(z1, z2, "max_x_sum", method="exact")
+    assert r.success
+    assert abs(r.x1 - ref[0]) < 1e-6 and abs(r.x2 - ref[1]) < 1e-6
+    assert r.fun >= ref[2] - 1e-9           # never worse than the reference
+
+
+@pytest.mark.parametrize("z1,z2", PAIRS[:5])
+def test_max_eps_alpha_matches_reference(z1, z2):
+    ref = reference_optimum(z1, z2, lambda g: g["eps_alpha"])
+    r = gd.optimize_shifts(z1, z2, "max_eps_alpha", method="exact")
+    assert abs(r.x1 - ref[0]) < 1e-6 and abs(r.x2 - ref[1]) < 1e-6
+
+
+@pytest.mark.parametrize("z1,z2", [(17, 26), (12, 24), (30, 90)])
+def test_balanced_sliding_matches_reference(z1, z2):
+    ref = reference_optimum(z1, z2, lambda g: np.maximum(abs(g["sliding1_root"]), abs(g["sliding2_root"])), sense=-1)
+    r = gd.optimize_shifts(z1, z2, "balanced_sliding", method="exact")
+    assert abs(r.x1 - ref[0]) < 1e-6 and abs(r.x2 - ref[1]) < 1e-6
+
+
+@pytest.mark.parametrize("z1,z2", PAIRS[:5] + [(8, 40)])
+@pytest.mark.parametrize("objective", ["max_x_sum", "max_eps_alpha", "balanced_sliding",
+                                       "min_specific_pressure", "max_margin"])
+def test_three_methods_agree_within_their_tolerance(z1, z2, objective):
+    exact = gd.optimize_shifts(z1, z2, objective, method="exact")
+    convex = gd.optimize_shifts(z1, z2, objective, method="convex", tol=1e-7)
+    grid = gd.optimize_shifts(z1, z2, objective, method="grid", tol=0.01)
+    assert exact.success and convex.success and grid.success
+    for r in (exact, convex, grid):
+        # every returned point satisfies the exact checks to within its tolerance
+        assert min(r.margins.values()) >= -r.tol
+    # the convex answer: within its tolerance in x, up to the conditioning of flat optima
+    assert abs(convex.fun - exact.fun) <= 1e-6 * max(1.0, abs(exact.fun))
+    assert np.hypot(convex.x1 - exact.x1, convex.x2 - exact.x2) < 1e-4
+    # the grid answer: its objective is within one grid step's worth of the optimum
+    assert exact.objective == grid.objective
+    if objective != "max_margin":
+        sign = 1 if objective.startswith("max") else -1
+        assert sign * (exact.fun - grid.fun) >= -1e-9
+
+
+def test_seed000_shifts_are_outside_and_eps_is_why():
+    # Seed 000 took x 0.898/0.517 from Kudryavtsev's tables; with GOST tip shortening ε_α = 1.153.
+    pair = gd.GearPair(8, 17, 26, 0.898, 0.517)
+    failing = pair.checks().query("not ok")["check"].tolist()
+    assert failing == ["contact_ratio"]
+    r = gd.optimize_shifts(17, 26, "max_x_sum", m=8)
+    assert r.success and min(r.margins.values()) >= -1e-9
+    assert r.active == ["contact_ratio"]                # ε_α = 1.2 is what limits the x-sum
+    assert r.x1 + r.x2 < 0.898 + 0.517
+    # at m = 8 the optimum holds every check (ε_α = 1.2 to the last ulp)
+    assert (gd.GearPair(8, 17, 26, r.x1, r.x2).checks()["margin"] >= -1e-12).all()
+
+
+def test_infeasible_pair_names_conflict():
+    r = gd.optimize_shifts(5, 5, method="exact")
+    assert not r.success
+    assert r.conflict, r.message
+    assert "conflict" in r.message
+    # the named set really is infeasible on its own: no node of a fine grid satisfies it
+    sub = [c for c in ck.make_checks() if c.name in r.conflict]
+    g = np.linspace(-1.5, 3.0, 401)
+    X1, X2 = np.meshgrid(g, g)
+    geo = _core(1.0, 5, 5, X1, X2, gd.BasicRack(), True)
+    ok = np.ones(X1.shape, bool)
+    for c in sub:
+        ok &= np.nan_to_num(c.margin(geo), nan=-1) >= 0
+    assert not ok.any()
+
+
+def test_fixed_center_distance_picks_split():
+    # a_w fixed -> x1 + x2 fixed; balanced_sliding picks the split with equal root sliding
+    pair = gd.GearPair(2, 17, 34, 0.3, 0.2)
+    a_w = pair.geometry().a_w
+    r = gd.optimize_shifts(17, 34, "balanced_sliding", a_w=a_w, m=2)
+    assert abs(r.x1 + r.x2 - 0.5) < 1e-12
+    geo = gd.GearPair(2, 17, 34, r.x1, r.x2).geometry()
+    assert geo.sliding1_root == pytest.approx(geo.sliding2_root, rel=1e-9)
+    assert r.a_w == pytest.approx(a_w, rel=1e-12)
+
+
+def test_limits_change_the_answer():
+    base = gd.optimize_shifts(30, 90, "max_x_sum")
+    hard = gd.optimize_shifts(30, 90, "max_x_sum", checks={"sa_min": 0.4})
+    assert hard.margins["tip_thickness1"] >= -1e-9 and hard.margins["tip_thickness2"] >= -1e-9
+    loose = gd.optimize_shifts(30, 90, "max_x_sum", checks={"eps_alpha_min": 1.1})
+    assert loose.fun >= base.fun - 1e-12
+    # sensitivity of the optimum to the active ε limit matches a finite difference
+    if "contact_ratio" in base.active:
+        h = 1e-4
+        up = gd.optimize_shifts(30, 90, "max_x_sum", checks={"eps_alpha_min": 1.2 + h})
+        fd = (up.fun - base.fun) / h
+        assert base.sensitivity["contact_ratio"] == pytest.approx(fd, rel=1e-3)
+
+
+def test_bad_arguments():
+    with pytest.raises(gd.GearDesignError, match="objective must be one of"):
+        gd.optimize_shifts(17, 26, "max_fun")
+    with pytest.raises(gd.GearDesignError, match="method must be one of"):
+        gd.optimize_shifts(17, 26, method="magic")
+    with pytest.raises(gd.GearDesignError, match="a_w = 10 mm must be >"):
+        gd.optimize_shifts(17, 26, a_w=10, m=1)
