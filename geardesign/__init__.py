@@ -13,11 +13,13 @@ from .involute import inv, inv_inverse
 from .pair import GearPair
 from .rack import BasicRack
 from .shift import ShiftResult, optimize_shifts
+from .region import Region, feasible_region
+from .atlas import shift_atlas
 
 __version__ = "0.1.0"
 
 __all__ = [
     "BasicRack", "GearPair", "Geometry", "GEOMETRY_FIELDS", "GearDesignError", "CatalogError",
     "pair_geometry", "x_sum_from_center_distance", "inv", "inv_inverse", "make_checks",
-    "checks", "involute", "optimize_shifts", "ShiftResult", "catalogs", "chain", "key", "sprocket",
+    "checks", "involute", "optimize_shifts", "ShiftResult", "feasible_region", "Region", "shift_atlas", "catalogs", "chain", "key", "sprocket",
 ]

@@ -417,7 +417,8 @@ class _MinMargin(Problem):
 
 def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: str = "exact",
                     tol: float | None = None, a_w: float | None = None, m: float = 1.0, rack=None,
-                    tip_shortening: bool = True, bounds=DEFAULT_BOUNDS, grid_n: int | None = None) -> ShiftResult:
+                    tip_shortening: bool = True, bounds=DEFAULT_BOUNDS, grid_n: int | None = None,
+                    start=None) -> ShiftResult:
     """The best profile shifts x1, x2 for tooth counts z1, z2 under the chosen checks.
 
     Parameters
@@ -432,6 +433,8 @@ def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: s
     m : module, mm (scales a_w only; the shifts do not depend on it).
     bounds : the window (lo, hi) searched for each of x1, x2.
     grid_n : nodes per axis of the grid method (default from ``tol``).
+    start : a feasible (x1, x2) to start convex/exact from instead of their own coarse grid
+        (the atlas passes the best node of its batched grid).
 
     >>> r = optimize_shifts(17, 26)          # seed 000's tooth counts: ε_α >= 1.2 caps x1 + x2
     >>> r.success, r.active, round(r.fun, 6)
@@ -488,8 +491,14 @@ def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: s
         return finish(V[i], 1, True, f"best of {V.shape[0]} grid nodes (spacing {h:.3g})")
 
     # a feasible start for convex and exact
-    V = grid_points(prob, _START_N if prob.nvar == 2 else 401, bounds)
+    if start is not None and prob.nvar == 2:
+        V = np.asarray(start, dtype=float).reshape(1, 2)
+    else:
+        V = grid_points(prob, _START_N if prob.nvar == 2 else 401, bounds)
     i, P, M = _best_feasible(prob, V)
+    if i is None and start is not None and prob.nvar == 2:
+        V = grid_points(prob, _START_N, bounds)
+        i, P, M = _best_feasible(prob, V)
     if i is None:
         j = _least_infeasible(prob, V, M)
         w, _, ev = _slsqp(_MinMargin(prob), V[j], bounds, ftol=1e-12, pieces_only=True)
