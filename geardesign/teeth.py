@@ -1,0 +1,375 @@
+"""Tooth counts for a ratio: enumerate the (z1, z2) pairs, solve the shifts for each, rank.
+
+The discrete part (tooth counts, modules, standard centre distances) is enumerated with
+vectorised numpy over the whole candidate set; the continuous part (the profile shifts) is
+solved per candidate with :func:`geardesign.shift.optimize_shifts`.
+
+* Centre distance free (``a_w=None``): for each pair the shifts are optimised for the
+  objective over the whole feasible region; the module only scales lengths, so each pair is
+  solved once whatever the module.
+* Centre distance given (``a_w`` in mm, with a module): for each pair and module the x-sum
+  follows from a_w (cos α_w = a cos α / a_w, x1 + x2 = (z1 + z2)(inv α_w − inv α)/(2 tan α),
+  ISO 21771:2007 eq. (62)); the objective picks the split. Pairs with a_w <= a cos α, or
+  with an x-sum outside ``x_sum_window`` (a pair that needs more shift than any gear
+  carries), are skipped before any solve and listed with the reason in ``skipped``.
+
+Ranking (best first): feasible before infeasible; then the smaller |ratio error|; then
+modules of the first (preferred) series of ISO 54 / GOST 9563 before the second; then the
+better objective (larger for ``max_*``, smaller for ``min_*`` and ``balanced_sliding``);
+then the smaller tooth sum (a smaller, lighter pair — or, for a fixed a_w, the larger,
+stronger module); finally the smaller module.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from . import catalogs
+from .checks import resolve_checks
+from .errors import GearDesignError, require_int, require_positive, require_range
+from .geometry import Z_MIN, x_sum_from_center_distance
+from .problem import DEFAULT_BOUNDS, OBJECTIVES
+from .rack import BasicRack
+from .shift import METHODS, optimize_shifts
+
+__all__ = ["select_teeth", "ratio_pairs", "TeethSelection", "X_SUM_WINDOW", "MAX_SOLVES"]
+
+# x1 + x2 outside this window is not solved: it is the shift window of one gear in
+# optimize_shifts (DEFAULT_BOUNDS); a pair that needs more than that in total is absurd.
+X_SUM_WINDOW = DEFAULT_BOUNDS
+MAX_SOLVES = 3000        # refuse searches that would call the optimiser more often than this
+_RATIO_EPS = 1e-12       # relative slack on ratio_tol and for grouping equal ratio errors
+
+
+def ratio_pairs(ratio: float, ratio_tol: float = 0.02, z1_range=(8, 40), z_sum_max: int | None = None):
+    """Every (z1, z2) with |z2/z1 − ratio|/ratio <= ratio_tol, z1 in z1_range, z1 + z2 <= z_sum_max.
+
+    Returns two int arrays, sorted by z1 then z2.
+
+    >>> z1, z2 = ratio_pairs(2.0, 0.0, (10, 12))
+    >>> list(zip(z1.tolist(), z2.tolist()))
+    [(10, 20), (11, 22), (12, 24)]
+    """
+    ratio = float(require_range("ratio", ratio, 1.0, 100.0))
+    ratio_tol = float(require_range("ratio_tol", ratio_tol, 0.0, 0.5))
+    lo, hi = _z1_range(z1_range)
+    z1 = np.arange(lo, hi + 1)
+    z2_lo = max(int(math.floor(lo * ratio * (1 - ratio_tol))), Z_MIN)
+    z2_hi = int(math.ceil(hi * ratio * (1 + ratio_tol)))
+    z2 = np.arange(z2_lo, z2_hi + 1)
+    Z1, Z2 = np.meshgrid(z1, z2, indexing="ij")
+    ok = np.abs(Z2 / Z1 - ratio) / ratio <= ratio_tol + _RATIO_EPS
+    if z_sum_max is not None:
+        ok &= Z1 + Z2 <= int(require_int("z_sum_max", z_sum_max, 2 * Z_MIN))
+    return Z1[ok].astype(int), Z2[ok].astype(int)
+
+
+def _z1_range(z1_range):
+    try:
+        lo, hi = z1_range
+    except (TypeError, ValueError):
+        raise GearDesignError(f"z1_range must be (min, max), got {z1_range!r}") from None
+    lo = int(require_int("z1_range min", lo, Z_MIN))
+    hi = int(require_int("z1_range max", hi, Z_MIN))
+    if hi < lo:
+        raise GearDesignError(f"z1_range must be (min, max) with min <= max, got {z1_range!r}")
+    if hi - lo > 2000:
+        raise GearDesignError(f"z1_range must span at most 2000 tooth counts, got {z1_range!r}")
+    return lo, hi
+
+
+@dataclass
+class TeethSelection:
+    """The ranked result of :func:`select_teeth`.
+
+    ``table`` — one row per solved candidate, best first (see the module docstring for the
+    ranking); ``skipped`` — candidates dropped before solving, with ``reason``;
+    ``best`` — the first row if it is feasible, else None; ``choice`` — why it was chosen.
+    """
+
+    table: pd.DataFrame
+    skipped: pd.DataFrame
+    ratio: float
+    ratio_tol: float
+    objective: str
+    m: object
+    a_w: object
+    method: str
+    checks: list = field(default_factory=list)
+    n_solved: int = 0
+    time_s: float = 0.0
+
+    @property
+    def best(self) -> pd.Series | None:
+        if self.table.empty or not bool(self.table["feasible"].iloc[0]):
+            return None
+        return self.table.iloc[0]
+
+    @property
+    def feasible(self) -> pd.DataFrame:
+        return self.table[self.table["feasible"]]
+
+    @property
+    def choice(self) -> str:
+        """One paragraph: which row is chosen and why, in the terms of the ranking."""
+        b = self.best
+        if b is None:
+            n = len(self.table)
+            return (f"no feasible candidate among {n} solved (and {len(self.skipped)} skipped); "
+                    "see the reason column: the checks that conflict for each pair")
+        obj = OBJECTIVES[self.objective]
+        feas = self.feasible
+        same_err = feas[np.isclose(feas["ratio_error"].abs(), abs(b["ratio_error"]), rtol=0, atol=_RATIO_EPS)]
+        word = "largest" if obj.sense > 0 else "smallest"
+        err = "exact" if abs(b["ratio_error"]) <= _RATIO_EPS else f"error {100 * b['ratio_error']:+.3g} %"
+        text = (f"z1/z2 = {b['z1']:d}/{b['z2']:d} (ratio {b['ratio']:.6g}, {err}), m = {b['module_mm']:g} mm, "
+                f"x1 = {b['x1']:.4f}, x2 = {b['x2']:.4f}, a_w = {b['a_w_mm']:.6g} mm: "
+                f"{len(feas)} of {len(self.table)} solved candidates are feasible; ")
+        if len(feas) == 1:
+            return text + "it is the only feasible one."
+        text += (f"{len(same_err)} feasible candidate(s) share the smallest ratio error, and among them it has the "
+                 f"{word} {self.objective} = {b['objective']:.6g}")
+        ties = same_err[np.isclose(same_err["objective"], b["objective"], rtol=1e-9, atol=1e-12)]
+        if len(ties) > 1:
+            text += f" (tied with {len(ties) - 1} other(s); the smaller tooth sum wins)"
+        return text + "."
+
+    def to_frame(self) -> pd.DataFrame:
+        return self.table.copy()
+
+    def to_dict(self) -> dict:
+        best = self.best
+        return {
+            "input": {"ratio": self.ratio, "ratio_tol": self.ratio_tol, "objective": self.objective,
+                      "m": self.m, "a_w": self.a_w, "method": self.method, "checks": list(self.checks)},
+            "best": None if best is None else best.to_dict(),
+            "choice": self.choice,
+            "n_solved": self.n_solved,
+            "time_s": self.time_s,
+            "table": self.table.to_dict(orient="records"),
+            "skipped": self.skipped.to_dict(orient="records"),
+        }
+
+    def __repr__(self) -> str:
+        cols = ["z1", "z2", "ratio", "module_mm", "a_w_mm", "x1", "x2", "eps_alpha", "objective", "feasible"]
+        head = self.table[cols].head(8)
+        with pd.option_context("display.width", 160, "display.max_columns", 20):
+            body = head.to_string(index=False, float_format=lambda v: f"{v:.5g}")
+        return "\n".join([
+            f"TeethSelection(ratio {self.ratio:g} ± {100 * self.ratio_tol:g} %, objective {self.objective}, "
+            f"m = {self.m}, a_w = {self.a_w}, method {self.method})",
+            f"  {len(self.table)} candidates solved ({int(self.table['feasible'].sum()) if len(self.table) else 0} "
+            f"feasible), {len(self.skipped)} skipped, {self.time_s:.2f} s",
+            f"  choice: {self.choice}",
+            body,
+        ])
+
+
+def _modules(m, m_range):
+    """(module values, series) to search."""
+    if isinstance(m, str):
+        if m != "series":
+            raise GearDesignError(f"m must be a module in mm, 'series' or None, got {m!r}")
+        lo, hi = (1.0, 50.0) if m_range is None else (float(v) for v in m_range)
+        require_positive("m_range min", lo, unit="mm")
+        require_positive("m_range max", hi, unit="mm")
+        frame = catalogs.load_catalog("modules")
+        frame = frame[(frame["module_mm"] >= lo) & (frame["module_mm"] <= hi)]
+        if frame.empty:
+            raise GearDesignError(f"m_range must hold at least one standard module, got {m_range!r}")
+        return frame["module_mm"].to_numpy(float), frame["series"].to_numpy(int)
+    mm = float(require_positive("m (module)", m, unit="mm"))
+    std = catalogs.load_catalog("modules")
+    hit = std.loc[np.isclose(std["module_mm"], mm, rtol=1e-12), "series"]
+    return np.array([mm]), np.array([int(hit.iloc[0]) if len(hit) else 0])
+
+
+def _standard_center_distance(a):
+    """The smallest GOST 2185-66 centre distance (series 1 and 2) >= a; NaN above the table."""
+    values = catalogs.center_distance_series((1, 2))
+    i = np.searchsorted(values, np.asarray(a) * (1 - 1e-12), side="left")
+    return np.where(i < values.size, values[np.minimum(i, values.size - 1)], np.nan)
+
+
+def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_sum_max=None,
+                 objective=None, checks=None, rack=None, method="exact", *, m_range=None,
+                 x_sum_window=X_SUM_WINDOW, tip_shortening=True, progress=None) -> TeethSelection:
+    """Tooth counts z1/z2 for a gear ratio u = z2/z1, with the best profile shifts for each, ranked.
+
+    Parameters
+    ----------
+    ratio : the wanted ratio u = z2/z1 >= 1 (z1 the pinion).
+    ratio_tol : the relative ratio error allowed, |z2/z1 − u|/u <= ratio_tol (0.02 = 2 %).
+    m : module in mm; ``"series"`` searches the standard modules of ISO 54 / GOST 9563
+        within ``m_range`` (default 1..50 mm); ``None`` means "no module given": with ``a_w``
+        it searches the series, without ``a_w`` lengths are per unit module (m = 1).
+        Without ``a_w`` the module does not change the shifts or any check, only the size:
+        ``m="series"`` then lists every (pair, module) with its a and a_w in mm, so the
+        module can be picked by size or strength from one table (each pair solved once).
+        With ``a_w`` given, ``m="series"`` keeps the modules for which some tooth sum fits
+        that centre distance with an x-sum inside ``x_sum_window``.
+    a_w : operating centre distance in mm, or ``"series"``: for each pair and module the
+        smallest standard centre distance of GOST 2185-66 (series 1 and 2) >= a = m(z1 + z2)/2,
+        i.e. the nearest standard value that needs a non-negative x-sum. The x-sum follows
+        from a_w; the objective picks the split.
+    z1_range : (min, max) teeth of the pinion, inclusive.  z_sum_max : largest z1 + z2.
+    objective : one of :data:`geardesign.problem.OBJECTIVES`; default ``"max_x_sum"`` with the
+        centre distance free, ``"balanced_sliding"`` with ``a_w`` given (the x-sum is then
+        fixed, so "max_x_sum" could not choose the split; equal specific sliding at both
+        roots is the classic rule, GOST 16532-70 appendix).  checks : as for
+        :func:`geardesign.shift.optimize_shifts` (None: no undercut, no interference,
+        s_a >= 0.25 m, ε_α >= 1.2).  rack : :class:`BasicRack` (standard by default).
+    method : "grid", "convex" or "exact" (see :mod:`geardesign.shift`).
+    x_sum_window : (lo, hi) of x1 + x2 worth solving when a_w fixes it.
+    progress : optional callable(done, total) called after each solve.
+
+    Returns
+    -------
+    TeethSelection
+        ``table`` columns: z1, z2, z_sum, ratio, ratio_error (signed, relative), module_mm,
+        module_series (1, 2, or 0 for a non-standard module), a_mm, a_w_mm, x_sum, x1, x2,
+        eps_alpha, objective (its value, in its own sense), feasible, active, reason (the
+        conflicting checks of an infeasible row), one ``margin_<check>`` per check, rank.
+        Ranked as described in :mod:`geardesign.teeth`.
+
+    >>> sel = select_teeth(2.0, ratio_tol=0.0, m=2, z1_range=(20, 21))
+    >>> sel.table[["z1", "z2"]].values.tolist()
+    [[21, 42], [20, 40]]
+    """
+    t0 = time.perf_counter()
+    if objective is None:
+        objective = "max_x_sum" if a_w is None else "balanced_sliding"
+    if objective not in OBJECTIVES:
+        raise GearDesignError(f"objective must be one of {sorted(OBJECTIVES)}, got {objective!r}")
+    if method not in METHODS:
+        raise GearDesignError(f"method must be one of {list(METHODS)}, got {method!r}")
+    rack = rack or BasicRack()
+    if not isinstance(rack, BasicRack):
+        raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
+    check_names = [c.name for c in resolve_checks(checks)]
+    xs_lo, xs_hi = (float(v) for v in x_sum_window)
+    z1, z2 = ratio_pairs(ratio, ratio_tol, z1_range, z_sum_max)
+    ratio = float(ratio)
+    if isinstance(a_w, str):
+        if a_w != "series":
+            raise GearDesignError(f"a_w must be a centre distance in mm, 'series' or None, got {a_w!r}")
+    elif a_w is not None:
+        a_w = float(require_positive("a_w (center distance)", a_w, unit="mm"))
+    if m is None:
+        m_used = "series" if a_w is not None else 1.0
+    else:
+        m_used = m
+    mods, series = _modules(m_used, m_range)
+
+    # every (pair, module) candidate, vectorised
+    P, M = np.meshgrid(np.arange(z1.size), np.arange(mods.size), indexing="ij")
+    P, M = P.ravel(), M.ravel()
+    c = pd.DataFrame({"z1": z1[P], "z2": z2[P]})
+    c["z_sum"] = c["z1"] + c["z2"]
+    c["ratio"] = c["z2"] / c["z1"]
+    c["ratio_error"] = (c["ratio"] - ratio) / ratio
+    c["module_mm"] = mods[M]
+    c["module_series"] = series[M]
+    c["a_mm"] = c["module_mm"] * c["z_sum"] / 2.0
+    reason = np.full(len(c), "", dtype=object)
+    if a_w is None:
+        c["a_w_target_mm"] = np.nan
+    else:
+        target = _standard_center_distance(c["a_mm"].to_numpy()) if a_w == "series" else np.full(len(c), a_w)
+        c["a_w_target_mm"] = target
+        a_cos = c["a_mm"].to_numpy() * math.cos(rack.alpha)
+        above = np.isnan(target)
+        reason[above] = "a is above the largest GOST 2185 centre distance"
+        small = ~above & (target <= a_cos)
+        for i in np.flatnonzero(small):
+            reason[i] = f"a_w = {target[i]:g} mm <= a·cos(alpha) = {a_cos[i]:.6g} mm"
+        okw = ~above & ~small
+        xs = np.full(len(c), np.nan)
+        xs[okw] = x_sum_from_center_distance(c["module_mm"].to_numpy()[okw], c["z1"].to_numpy()[okw],
+                                             c["z2"].to_numpy()[okw], target[okw], rack)
+        c["x_sum_target"] = xs
+        out = okw & ((xs < xs_lo) | (xs > xs_hi))
+        for i in np.flatnonzero(out):
+            reason[i] = f"x1 + x2 = {xs[i]:.4g} outside [{xs_lo:g}, {xs_hi:g}]"
+    keep = reason == ""
+    skipped = c.loc[~keep, ["z1", "z2", "ratio", "ratio_error", "module_mm", "a_mm", "a_w_target_mm"]].copy()
+    skipped["reason"] = reason[~keep]
+    skipped = skipped.rename(columns={"a_w_target_mm": "a_w_mm"}).reset_index(drop=True)
+    c = c[keep].reset_index(drop=True)
+
+    # one solve per distinct problem: without a_w the module only scales lengths
+    keys = list(zip(c["z1"], c["z2"])) if a_w is None else list(zip(c["z1"], c["z2"], c["module_mm"],
+                                                                      c["a_w_target_mm"]))
+    unique = list(dict.fromkeys(keys))
+    if len(unique) > MAX_SOLVES:
+        raise GearDesignError(
+            f"the search needs {len(unique)} shift solves, more than the limit {MAX_SOLVES}: narrow z1_range, "
+            f"ratio_tol, z_sum_max or m_range")
+    solved = {}
+    for k, key in enumerate(unique):
+        try:
+            if a_w is None:
+                r = optimize_shifts(key[0], key[1], objective, checks, method, a_w=None, m=1.0, rack=rack,
+                                    tip_shortening=tip_shortening)
+            else:
+                r = optimize_shifts(key[0], key[1], objective, checks, method, a_w=key[3], m=key[2], rack=rack,
+                                    tip_shortening=tip_shortening)
+            solved[key] = r
+        except GearDesignError as exc:
+            solved[key] = exc
+        if progress is not None:
+            progress(k + 1, len(unique))
+
+    rows = []
+    for key, mod in zip(keys, c["module_mm"]):
+        r = solved[key]
+        if isinstance(r, GearDesignError):
+            rows.append(dict(a_w_mm=np.nan, x_sum=np.nan, x1=np.nan, x2=np.nan, eps_alpha=np.nan,
+                             objective=np.nan, feasible=False, active="", reason=str(r),
+                             **{f"margin_{n}": np.nan for n in check_names}))
+            continue
+        feasible = bool(r.success and not r.conflict)
+        if feasible:
+            why = ""
+        elif r.conflict:
+            why = "conflict: " + ", ".join(r.conflict)
+        else:
+            why = r.message
+        rows.append(dict(
+            a_w_mm=r.a_w * (mod if a_w is None else 1.0), x_sum=r.x1 + r.x2, x1=r.x1, x2=r.x2,
+            eps_alpha=r.eps_alpha, objective=r.fun, feasible=feasible, active=", ".join(r.active), reason=why,
+            **{f"margin_{n}": r.margins.get(n, np.nan) for n in check_names}))
+    sol = pd.DataFrame(rows, index=c.index, columns=["a_w_mm", "x_sum", "x1", "x2", "eps_alpha", "objective",
+                                                     "feasible", "active", "reason"]
+                       + [f"margin_{n}" for n in check_names])
+    table = pd.concat([c.drop(columns=[k for k in ("a_w_target_mm", "x_sum_target") if k in c]), sol], axis=1)
+    table["feasible"] = table["feasible"].astype(bool)
+    table = _rank(table, OBJECTIVES[objective].sense)
+    return TeethSelection(table=table, skipped=skipped, ratio=ratio, ratio_tol=float(ratio_tol),
+                          objective=objective, m=m_used, a_w=a_w, method=method, checks=check_names,
+                          n_solved=len(unique), time_s=time.perf_counter() - t0)
+
+
+def _rank(table: pd.DataFrame, sense: int) -> pd.DataFrame:
+    """Feasible first, |ratio error|, first-series module, objective in its sense, z-sum, module."""
+    if table.empty:
+        table["rank"] = pd.Series(dtype=int)
+        return table
+    key = pd.DataFrame({
+        "infeasible": ~table["feasible"],
+        # round so that equal ratios (16/24, 18/27) compare equal despite float noise
+        "err": np.round(table["ratio_error"].abs().to_numpy() / _RATIO_EPS) * _RATIO_EPS,
+        "series": np.where(table["module_series"] == 1, 0, 1),
+        # rounded: with a fixed a_w, max_x_sum values differ only by rounding noise
+        "obj": np.round(np.nan_to_num(-sense * table["objective"].to_numpy(float), nan=np.inf), 9),
+        "z_sum": table["z_sum"],
+        "m": table["module_mm"],
+    }, index=table.index)
+    order = key.sort_values(list(key.columns), kind="stable").index
+    out = table.loc[order].reset_index(drop=True)
+    out["rank"] = np.arange(1, len(out) + 1)
+    return out
