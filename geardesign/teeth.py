@@ -138,6 +138,11 @@ class TeethSelection:
             text += f" (tied with {len(ties) - 1} other(s); the smaller tooth sum wins)"
         return text + "."
 
+    def best_per_module(self) -> pd.DataFrame:
+        """The best feasible row of each module, in ranking order (read with ``m="series"``)."""
+        feas = self.feasible
+        return feas.drop_duplicates("module_mm").reset_index(drop=True)
+
     def to_frame(self) -> pd.DataFrame:
         return self.table.copy()
 

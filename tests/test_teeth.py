@@ -103,6 +103,9 @@ def test_module_series_with_fixed_center_distance():
     feas = sel.table[sel.table["feasible"]]
     s = feas["module_series"].tolist()
     assert s == sorted(s, key=lambda v: 0 if v == 1 else 1)
+    per = sel.best_per_module()
+    assert per["module_mm"].is_unique and per["feasible"].all()
+    assert set(per["module_mm"]) == set(feas["module_mm"])
 
 
 # --- ranking and feasibility ----------------------------------------------------------------
