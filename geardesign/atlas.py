@@ -109,6 +109,23 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, rack, tip_shortening, iters: int
     return out
 
 
+def _contour_area(g, F) -> float:
+    """Area inside the zero contour of F (linear interpolation between nodes, so the error is
+    ~ perimeter × step², not perimeter × step as a node count would give)."""
+    import contourpy
+
+    h = g[1] - g[0]
+    gp = np.concatenate([[g[0] - h], g, [g[-1] + h]])
+    Fp = np.full((F.shape[0] + 2, F.shape[1] + 2), -1.0)
+    Fp[1:-1, 1:-1] = F
+    gen = contourpy.contour_generator(x=gp, y=gp, z=Fp.T, line_type=contourpy.LineType.Separate)
+    total = 0.0
+    for L in gen.lines(0.0):
+        x, y = np.clip(L[:, 0], g[0], g[-1]), np.clip(L[:, 1], g[0], g[-1])
+        total += abs(0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+    return total
+
+
 def _row_at(proto: Problem, z1, z2, x, area, rack, tip_shortening) -> dict:
     geo = _core(1.0, z1, z2, x[0], x[1], rack, tip_shortening)
     M = proto.margins(geo)
@@ -127,8 +144,8 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     """One row per tooth pair: feasible, x1, x2, objective, all margins, active checks, region area.
 
     The first pass is batched: every pair's margins on a 41×41 grid of (x1, x2) in one
-    vectorised call per chunk of pairs. It gives the region area (feasible nodes × cell area,
-    so ±1 cell per boundary node) and each pair's best node, from which ``method`` then polishes
+    vectorised call per chunk of pairs. It gives the region area (traced on that grid
+    from the zero contour of the smallest margin) and each pair's best node, from which ``method`` then polishes
     the optimum (``grid`` keeps the node). ``upper_only`` keeps z2 >= z1. ``progress`` is
     called with the number of pairs done.
 
@@ -145,7 +162,6 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     lo, hi = bounds
     g = np.linspace(lo, hi, _ATLAS_N)
     X1, X2 = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
-    cell = (g[1] - g[0]) ** 2
     chunk = max(1, 200_000 // X1.size)
     area = np.zeros(Z1.size)
     start = np.full((Z1.size, 2), np.nan)
@@ -156,7 +172,9 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
         feas = (M >= 0).all(axis=0) if M.size else np.ones(geo["a"].shape, bool)
         P = proto.pieces(geo).min(axis=0) if proto.objective.kind != "margin" else M.min(axis=0)
         score = np.where(feas, P, -np.inf)
-        area[s:s + chunk] = feas.sum(axis=1) * cell
+        F = np.where(np.isfinite(M.min(axis=0)), M.min(axis=0), -1.0) if M.size else np.ones(geo["a"].shape)
+        for k in range(F.shape[0]):
+            area[s + k] = _contour_area(g, F[k].reshape(_ATLAS_N, _ATLAS_N))
         best = np.argmax(score, axis=1)
         ok = np.isfinite(score[np.arange(len(best)), best])
         start[s:s + chunk][ok] = np.column_stack([X1[best], X2[best]])[ok]

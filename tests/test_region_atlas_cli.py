@@ -1,0 +1,122 @@
+"""Feasible region, shift atlas and the shift/atlas commands."""
+import json
+
+import numpy as np
+import pytest
+
+import geardesign as gd
+from geardesign import checks as ck
+from geardesign.cli import main
+from geardesign.geometry import _core
+
+
+def test_region_boundary_lies_on_the_named_checks():
+    reg = gd.feasible_region(17, 26)
+    assert reg.feasible
+    b = reg.boundary
+    prob = reg.problem
+    M = prob.margins(prob.geo(b.x1.to_numpy(), b.x2.to_numpy()))
+    for i, name in enumerate(b.check):
+        # every vertex sits on the curve of the check that limits its edge, and holds the others
+        assert abs(M[prob.names.index(name), i]) < 1e-10 or abs(M[:, i].min()) < 1e-10
+        assert M[:, i].min() > -1e-10
+
+
+def test_region_area_matches_a_fine_grid_count():
+    reg = gd.feasible_region(17, 26)
+    g = np.linspace(-1.5, 3.0, 1201)
+    X1, X2 = np.meshgrid(g, g)
+    inside = reg.contains(X1, X2)
+    # independent: cell count on a fine grid (error ~ perimeter × cell ≈ 1e-2 relative)
+    area_count = inside.sum() * (g[1] - g[0]) ** 2
+    assert reg.area == pytest.approx(area_count, rel=1e-2)
+
+
+def test_region_contains_agrees_with_pair_checks():
+    reg = gd.feasible_region(20, 45)
+    rng = np.random.default_rng(3)
+    pts = rng.uniform(-1.0, 2.0, (300, 2))
+    inside = reg.contains(pts[:, 0], pts[:, 1])
+    for (x1, x2), ins in zip(pts, inside):
+        try:
+            ok = gd.GearPair(1, 20, 45, x1, x2).checks(jamming=False)["ok"].all()
+        except gd.GearDesignError:
+            ok = False
+        assert ok == ins
+
+
+def test_region_checks_can_be_dropped_and_changed():
+    base = gd.feasible_region(17, 26)
+    loose = gd.feasible_region(17, 26, checks={"undercut": False, "eps_alpha_min": 1.1})
+    assert loose.area > base.area
+    assert "undercut1" not in loose.checks
+    hard = gd.feasible_region(17, 26, checks={"sa_min": 0.4})
+    assert hard.area < base.area
+
+
+def test_empty_region_names_a_conflict():
+    reg = gd.feasible_region(5, 5)
+    assert not reg.feasible and reg.area == 0.0
+    assert set(reg.conflict) <= set(reg.checks) and reg.conflict
+    # that set alone admits no point of a fine grid
+    sub = [c for c in ck.make_checks() if c.name in reg.conflict]
+    g = np.linspace(-1.5, 3.0, 301)
+    X1, X2 = np.meshgrid(g, g)
+    geo = _core(1.0, 5, 5, X1, X2, gd.BasicRack(), True)
+    assert not np.all([np.nan_to_num(c.margin(geo), nan=-1) >= 0 for c in sub], axis=0).any()
+
+
+def test_region_plot(tmp_path):
+    import matplotlib
+    matplotlib.use("Agg")
+    reg = gd.feasible_region(17, 26)
+    ax = reg.plot(optimum=gd.optimize_shifts(17, 26))
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert "contact_ratio" in labels and "feasible" in labels and "optimum" in labels
+    ax.figure.savefig(tmp_path / "c.png")
+    assert (tmp_path / "c.png").stat().st_size > 10_000
+
+
+def test_atlas_agrees_with_one_by_one_solves():
+    df = gd.shift_atlas([12, 17, 25], [26, 40, 90])
+    assert len(df) == 9
+    for _, row in df.iterrows():
+        r = gd.optimize_shifts(int(row.z1), int(row.z2))
+        assert row.feasible == r.success
+        if r.success:
+            assert abs(row.x1 - r.x1) < 1e-9 and abs(row.x2 - r.x2) < 1e-9
+            # the area estimate is a grid count: close to the traced region's area
+            assert row.area == pytest.approx(gd.feasible_region(int(row.z1), int(row.z2)).area, rel=0.03)
+
+
+def test_atlas_reports_infeasible_pairs():
+    df = gd.shift_atlas([5, 6], [5, 6])
+    assert not df.feasible.any()
+    assert (df.conflict.str.len() > 0).all()
+
+
+def test_cli_shift_json_and_plot(tmp_path, capsys):
+    png = tmp_path / "contour.png"
+    assert main(["shift", "--z1", "17", "--z2", "26", "--module", "8", "--plot", str(png), "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["success"] and doc["active"] == ["contact_ratio"]
+    assert doc["region"]["feasible"] and png.exists()
+
+
+def test_cli_shift_infeasible_exit_1(capsys):
+    assert main(["shift", "--z1", "5", "--z2", "5"]) == 1
+    assert "conflict" in capsys.readouterr().out
+
+
+def test_cli_shift_options(capsys):
+    assert main(["shift", "--z1", "17", "--z2", "26", "--allow-undercut", "--eps-alpha-min", "1.1",
+                 "--sa-min", "0.4", "--objective", "max_eps_alpha", "--method", "convex", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert "undercut1" not in doc["margins"] and doc["method"] == "convex"
+
+
+def test_cli_atlas(tmp_path, capsys):
+    out = tmp_path / "atlas.csv"
+    assert main(["atlas", "--z1", "12:13", "--z2", "20,30", "--out", str(out)]) == 0
+    assert out.read_text().count("\n") == 5
+    assert main(["atlas", "--z1", "x:y", "--z2", "20"]) == 2
