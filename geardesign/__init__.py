@@ -15,11 +15,12 @@ from .rack import BasicRack
 from .shift import ShiftResult, optimize_shifts
 from .region import Region, feasible_region
 from .atlas import shift_atlas
+from .teeth import TeethSelection, select_teeth
 
 __version__ = "0.1.0"
 
 __all__ = [
     "BasicRack", "GearPair", "Geometry", "GEOMETRY_FIELDS", "GearDesignError", "CatalogError",
     "pair_geometry", "x_sum_from_center_distance", "inv", "inv_inverse", "make_checks",
-    "checks", "involute", "optimize_shifts", "ShiftResult", "feasible_region", "Region", "shift_atlas", "catalogs", "chain", "key", "sprocket",
+    "checks", "involute", "optimize_shifts", "ShiftResult", "feasible_region", "Region", "shift_atlas", "select_teeth", "TeethSelection", "catalogs", "chain", "key", "sprocket",
 ]

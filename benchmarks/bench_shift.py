@@ -1,0 +1,60 @@
+"""Shift optimisation: the speed-accuracy trade of each method, and the atlas time.
+
+Run: python benchmarks/bench_shift.py [n_pairs]
+For each method and tolerance: median time per pair (one call per pair) and the error
+against method="exact" (distance in x and objective gap) over a fixed set of pairs;
+then the batched atlas for z1 in 8..40, z2 in z1..120. Prints figures; asserts nothing.
+"""
+import sys
+import time
+
+import numpy as np
+
+import geardesign as gd
+
+
+def pairs(n, seed=7):
+    rng = np.random.default_rng(seed)
+    out = set()
+    while len(out) < n:
+        z1 = int(rng.integers(10, 41))
+        z2 = int(rng.integers(z1, 121))
+        out.add((z1, z2))
+    return sorted(out)
+
+
+def main(n=200):
+    ps = pairs(n)
+    exact = {}
+    t_exact = []
+    for z1, z2 in ps:
+        t0 = time.perf_counter()
+        exact[(z1, z2)] = gd.optimize_shifts(z1, z2, method="exact")
+        t_exact.append(time.perf_counter() - t0)
+    feasible = [p for p in ps if exact[p].success]
+    print(f"{len(ps)} pairs (z1 10..40, z2 z1..120), objective max_x_sum, default checks; "
+          f"{len(feasible)} feasible")
+    print(f"{'method':<8} {'tol':>8} {'median ms/pair':>15} {'max |dx|':>10} {'median |dx|':>12} {'max obj gap':>12}")
+    print(f"{'exact':<8} {1e-9:>8.0e} {np.median(t_exact) * 1e3:>15.2f} {0:>10.1e} {0:>12.1e} {0:>12.1e}")
+    gd.optimize_shifts(17, 26, method="convex")   # compile the cvxpy problem once
+    for method, tols, subset in (("convex", (1e-4, 1e-7), feasible[:60]), ("grid", (0.05, 0.01, 0.002), feasible)):
+        for tol in tols:
+            times, dx, gap = [], [], []
+            for p in subset:
+                t0 = time.perf_counter()
+                r = gd.optimize_shifts(*p, method=method, tol=tol)
+                times.append(time.perf_counter() - t0)
+                e = exact[p]
+                dx.append(np.hypot(r.x1 - e.x1, r.x2 - e.x2))
+                gap.append(abs(r.fun - e.fun))
+            print(f"{method:<8} {tol:>8.0e} {np.median(times) * 1e3:>15.2f} {max(dx):>10.1e} "
+                  f"{np.median(dx):>12.1e} {max(gap):>12.1e}" + (f"   ({len(subset)} pairs)" if len(subset) != len(feasible) else ""))
+    t0 = time.perf_counter()
+    df = gd.shift_atlas(range(8, 41), range(8, 121))
+    dt = time.perf_counter() - t0
+    print(f"atlas z1 8..40 x z2 z1..120 (exact, batched): {len(df)} pairs in {dt:.2f} s "
+          f"({dt / len(df) * 1e3:.2f} ms/pair), {int(df.feasible.sum())} feasible")
+
+
+if __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 200)
