@@ -1,0 +1,47 @@
+"""Feasible-region area and optimal shifts (max x-sum) for z1 in 8..40 and z2 in z1..120.
+
+Writes studies/out/atlas.csv and atlas.png (heat maps of area, x1, x2, x1 + x2).
+"""
+import sys
+import time
+from pathlib import Path
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # run from a checkout
+import geardesign as gd  # noqa: E402
+
+OUT = Path(__file__).resolve().parent / "out"
+
+
+def main():
+    OUT.mkdir(exist_ok=True)
+    t0 = time.perf_counter()
+    df = gd.shift_atlas(range(8, 41), range(8, 121), objective="max_x_sum")
+    dt = time.perf_counter() - t0
+    df.to_csv(OUT / "atlas.csv", index=False)
+    fig, axes = plt.subplots(2, 2, figsize=(12, 8), sharex=True, sharey=True)
+    df = df.assign(x_sum=df["x1"] + df["x2"])
+    for ax, col in zip(axes.ravel(), ("area", "x1", "x2", "x_sum")):
+        piv = df.pivot(index="z2", columns="z1", values=col).where(df.pivot(index="z2", columns="z1",
+                                                                             values="feasible").astype(bool))
+        im = ax.pcolormesh(piv.columns, piv.index, piv.values, shading="nearest", cmap="viridis")
+        fig.colorbar(im, ax=ax)
+        ax.set_title(col if col != "area" else "feasible-region area in (x1, x2)")
+        ax.set_xlabel("z1"); ax.set_ylabel("z2")
+    fig.suptitle("Shift atlas: max x1 + x2 with ε_α >= 1.2, s_a >= 0.25 m, no undercut or interference")
+    fig.savefig(OUT / "atlas.png", dpi=110, bbox_inches="tight")
+    act = df.loc[df["feasible"], "active"].value_counts()
+    print(f"{len(df)} pairs in {dt:.1f} s; feasible {int(df['feasible'].sum())}")
+    print(f"area: min {df['area'].min():.3f} at z1/z2 = {df.loc[df['area'].idxmin(), ['z1', 'z2']].tolist()}, "
+          f"max {df['area'].max():.3f}")
+    print(f"x_sum: {df['x_sum'].min():.3f} .. {df['x_sum'].max():.3f}")
+    print("active sets at the optimum:")
+    print(act.head(6).to_string())
+
+
+if __name__ == "__main__":
+    main()
