@@ -16,11 +16,14 @@ from .shift import ShiftResult, optimize_shifts
 from .region import Region, feasible_region
 from .atlas import shift_atlas
 from .teeth import TeethSelection, select_teeth
+from . import scene, studies
+from .scene import load_scene, run_scene
+from .studies import sweep
 
 __version__ = "0.1.0"
 
 __all__ = [
     "BasicRack", "GearPair", "Geometry", "GEOMETRY_FIELDS", "GearDesignError", "CatalogError",
     "pair_geometry", "x_sum_from_center_distance", "inv", "inv_inverse", "make_checks",
-    "checks", "involute", "optimize_shifts", "ShiftResult", "feasible_region", "Region", "shift_atlas", "select_teeth", "TeethSelection", "catalogs", "chain", "key", "sprocket",
+    "checks", "involute", "optimize_shifts", "ShiftResult", "feasible_region", "Region", "shift_atlas", "select_teeth", "TeethSelection", "scene", "studies", "load_scene", "run_scene", "sweep", "catalogs", "chain", "key", "sprocket",
 ]

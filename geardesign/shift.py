@@ -337,7 +337,7 @@ def _solve_convex(prob: Problem, v0, bounds, tol, maxit=100):
             Mp.value, GMp.value = M, GM
         lo.value = np.maximum(-radius, box_lo - v)
         hi.value = np.minimum(radius, box_hi - v)
-        problem.solve(solver=cp.CLARABEL)
+        problem.solve(solver=cp.CLARABEL, tol_gap_abs=1e-12, tol_gap_rel=1e-12, tol_feas=1e-12)
         if d.value is None:
             radius /= 4
             if radius < tol:
@@ -364,11 +364,11 @@ def _solve_convex(prob: Problem, v0, bounds, tol, maxit=100):
             L = _curvature(prob, v, lam_p, lam_m)
             if predicted > 0 and actual > 0.75 * predicted and np.max(np.abs(step)) > 0.9 * radius:
                 radius = min(2 * radius, 1.0)
-            if np.max(np.abs(step)) < tol:
+            if np.max(np.abs(step)) < 0.01 * tol:   # the next SQP step would be ~(tol/100)²
                 break
         else:
             radius = min(radius, np.max(np.abs(step))) / 4
-            if radius < tol:
+            if radius < 0.01 * tol:
                 break
     return v, nit, lam_m, ev
 
