@@ -31,7 +31,7 @@ from scipy.optimize import minimize, root
 from . import checks as _checks
 from .errors import GearDesignError, require_positive, require_range
 from .geometry import x_sum_from_center_distance
-from .problem import DEFAULT_BOUNDS, OBJECTIVES, Problem
+from .problem import DEFAULT_BOUNDS, Problem
 
 __all__ = ["optimize_shifts", "ShiftResult", "METHODS", "smallest_conflict"]
 
@@ -99,7 +99,7 @@ class ShiftResult:
             f"         fun: {self.fun:.10g}  ({self.objective})",
             f"   eps_alpha: {self.eps_alpha:.6g}   a_w: {self.a_w:.6g} mm (m = {self.m:g})",
             f"      active: {', '.join(self.active) if self.active else '-'}",
-            f" sensitivity: " + (", ".join(f"{k} {v:+.4g}" for k, v in self.sensitivity.items()) or "-"),
+            " sensitivity: " + (", ".join(f"{k} {v:+.4g}" for k, v in self.sensitivity.items()) or "-"),
             "     margins: " + ", ".join(f"{k} {v:+.4g}" for k, v in self.margins.items()),
             f"      method: {self.method}, tol {self.tol:g}, nit {self.nit}, {self.time_s * 1e3:.2f} ms",
         ]
