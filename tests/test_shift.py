@@ -159,3 +159,35 @@ def test_bad_arguments():
         gd.optimize_shifts(17, 26, method="magic")
     with pytest.raises(gd.GearDesignError, match="a_w = 10 mm must be >"):
         gd.optimize_shifts(17, 26, a_w=10, m=1)
+
+
+from hypothesis import given, settings, strategies as st
+
+
+@settings(max_examples=12, deadline=None, derandomize=True)
+@given(z1=st.integers(10, 40), dz=st.integers(0, 80),
+       objective=st.sampled_from(["max_x_sum", "max_eps_alpha", "balanced_sliding"]),
+       method=st.sampled_from(["exact", "convex"]))
+def test_no_feasible_neighbour_is_better(z1, dz, objective, method):
+    """Property: the returned point holds every check to within tol, and no feasible point
+    in a small neighbourhood beats it by more than the tolerance (sign by the objective's sense)."""
+    z2 = z1 + dz
+    r = gd.optimize_shifts(z1, z2, objective, method=method)
+    if not r.success:
+        assert r.conflict
+        return
+    assert min(r.margins.values()) >= -r.tol
+    cs = ck.make_checks()
+    rng = np.random.default_rng(z1 * 1000 + z2)
+    for radius in (1e-2, 1e-4):
+        pts = np.array([r.x1, r.x2]) + rng.uniform(-radius, radius, (400, 2))
+        geo = _core(1.0, z1, z2, pts[:, 0], pts[:, 1], gd.BasicRack(), True)
+        ok = np.all([np.nan_to_num(c.margin(geo), nan=-1) >= 0 for c in cs], axis=0)
+        if objective == "max_x_sum":
+            f = geo["_x1"] + geo["_x2"]
+        elif objective == "max_eps_alpha":
+            f = geo["eps_alpha"]
+        else:
+            f = -np.maximum(abs(geo["sliding1_root"]), abs(geo["sliding2_root"]))
+        fun = r.fun if objective != "balanced_sliding" else -r.fun
+        assert (f[ok] <= fun + 1e-9).all()
