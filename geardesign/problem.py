@@ -120,24 +120,30 @@ class Problem:
             cos2 = 1.0 - geo["_sin_w"] ** 2
             g = geo["spec_pressure_pitch"] * 2.0 * geo["_ta"] / ((geo["_z1"] + geo["_z2"]) * t_w ** 3 * cos2)
             return np.stack([g, g])[None]
+        return self._fd_gradient(self.pieces, x1, x2)
+
+    def _fd_gradient(self, func, x1, x2) -> np.ndarray:
+        """(R, 2, n) central differences of func(geo) -> (R, n), all four shifted points in one call."""
         h = _FD_STEP
-        d1 = (self.pieces(self.geo(x1 + h, x2)) - self.pieces(self.geo(x1 - h, x2))) / (2 * h)
-        d2 = (self.pieces(self.geo(x1, x2 + h)) - self.pieces(self.geo(x1, x2 - h))) / (2 * h)
-        return np.stack([d1, d2], axis=1)
+        x1, x2 = np.ravel(x1), np.ravel(x2)
+        n = x1.size
+        geo4 = self.geo(np.concatenate([x1 + h, x1 - h, x1, x1]), np.concatenate([x2, x2, x2 + h, x2 - h]))
+        f4 = np.asarray(func(geo4)).reshape(-1, 4, n)
+        return np.stack([(f4[:, 0] - f4[:, 1]) / (2 * h), (f4[:, 2] - f4[:, 3]) / (2 * h)], axis=1)
+
+    def _normalised(self, geo) -> np.ndarray:
+        """(K, n) margin/‖∇margin‖: each check's first-order distance in x to its boundary."""
+        M = self.margins(geo)
+        G = self.margin_gradients(geo, geo["_x1"], geo["_x2"])
+        with np.errstate(invalid="ignore", divide="ignore"):
+            P = M / np.sqrt(G[:, 0] ** 2 + G[:, 1] ** 2)
+        return np.where(np.isfinite(P), P, -np.inf)
 
     def fun(self, geo) -> np.ndarray:
         """The objective in its natural sense (what the user asked to max- or minimise)."""
         if self.objective.kind == "margin":
-            return self.normalised_margin(geo, geo["_x1"], geo["_x2"])
+            return self._normalised(geo).min(axis=0)
         return self.objective.sense * self.pieces(geo).min(axis=0)
-
-    def normalised_margin(self, geo, x1, x2) -> np.ndarray:
-        """min over checks of margin/‖∇margin‖: the distance in x to the nearest boundary (first order)."""
-        mg = self.margins(geo)
-        gr = self.margin_gradients(geo, x1, x2)
-        nrm = np.sqrt(gr[:, 0] ** 2 + gr[:, 1] ** 2)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            return np.where(np.isfinite(mg), mg / nrm, -np.inf).min(axis=0)
 
     # --- the design variables -----------------------------------------------------------
     @property
@@ -160,48 +166,20 @@ class Problem:
         smooth objectives, two for balanced sliding, and the normalised margins for max_margin.
         """
         x1, x2 = self.xy(V)
-        n = x1.size
         geo = self.geo(x1, x2)
         M = self.margins(geo)
-        if self.objective.kind == "margin":
-            G = self.margin_gradients(geo, x1, x2)
-            with np.errstate(invalid="ignore", divide="ignore"):
-                P = M / np.sqrt(G[:, 0] ** 2 + G[:, 1] ** 2)
-            P = np.where(np.isfinite(P), P, -np.inf)
-        else:
-            P = self.pieces(geo)
+        P = self._normalised(geo) if self.objective.kind == "margin" else self.pieces(geo)
         if not grads:
             return P, M
         GM = self.margin_gradients(geo, x1, x2)
-        if self.objective.kind == "margin" or self.objective.name == "balanced_sliding":
-            h = _FD_STEP
-            X1 = np.concatenate([x1 + h, x1 - h, x1, x1])
-            X2 = np.concatenate([x2, x2, x2 + h, x2 - h])
-            if self.objective.kind == "margin":
-                geo4 = self.geo(X1, X2)
-                m4 = self.margins(geo4)
-                g4 = self.margin_gradients(geo4, X1, X2)
-                with np.errstate(invalid="ignore", divide="ignore"):
-                    p4 = m4 / np.sqrt(g4[:, 0] ** 2 + g4[:, 1] ** 2)
-            else:
-                p4 = self.pieces(self.geo(X1, X2))
-            p4 = p4.reshape(p4.shape[0], 4, n)
-            GP = np.stack([(p4[:, 0] - p4[:, 1]) / (2 * h), (p4[:, 2] - p4[:, 3]) / (2 * h)], axis=1)
+        if self.objective.kind == "margin":
+            GP = self._fd_gradient(self._normalised, x1, x2)
         else:
             GP = self.piece_gradients(geo, x1, x2)
         if self.x_sum is not None:   # d/dx1 along x2 = x_sum − x1
             GM = (GM[:, 0] - GM[:, 1])[:, None]
             GP = (GP[:, 0] - GP[:, 1])[:, None]
         return P, M, GP, GM
-
-    def a_w(self, x_sum) -> float:
-        geo = self.geo(x_sum / 2.0, x_sum / 2.0)
-        return float(geo["a_w"])
-
-    def describe(self) -> str:
-        lim = ", ".join(f"{c.name}>={c.limit:g}" if c.limit else c.name for c in self.checks)
-        xs = "" if self.x_sum is None else f", x1 + x2 = {self.x_sum:.10g}"
-        return f"z1/z2 = {self.z1}/{self.z2}{xs}; objective {self.objective.name}; checks: {lim}"
 
 
 # The x window searched: [−1.5, 3] covers every shift used in practice (handbook blocking
