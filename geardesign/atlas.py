@@ -52,10 +52,10 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, rack, tip_shortening, iters: int
 
     def grads_at(x1, x2):
         geo = _core(1.0, z1, z2, x1, x2, rack, tip_shortening)
-        return geo, proto.margins(geo), proto.margin_gradients(geo, x1, x2)
+        return geo, proto.margins(geo), proto.margin_gradients(geo)
 
     def pgrad(geo, x1, x2):
-        return proto.piece_gradients(geo, x1, x2)[0]
+        return proto.piece_gradients(geo)[0]
 
     for _ in range(iters):
         x1, x2 = X[:, 0], X[:, 1]
@@ -71,7 +71,7 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, rack, tip_shortening, iters: int
             gp_, gp__ = [], []
             for sgn in (1.0, -1.0):
                 geo_s = _core(1.0, z1, z2, x1 + sgn * dx1, x2 + sgn * dx2, rack, tip_shortening)
-                G_s = proto.margin_gradients(geo_s, x1 + sgn * dx1, x2 + sgn * dx2)[a_idx, :, rows]
+                G_s = proto.margin_gradients(geo_s)[a_idx, :, rows]
                 P_s = pgrad(geo_s, x1 + sgn * dx1, x2 + sgn * dx2).T
                 (gp_ if sgn > 0 else gp__).append(P_s[:, 0] * G_s[:, 1] - P_s[:, 1] * G_s[:, 0])
             dcross[:, j] = (gp_[0] - gp__[0]) / (2 * h)

@@ -1,6 +1,7 @@
 """Design checks of a spur pair as named constraints with signed, dimensionless margins.
 
-Every check maps a geometry (see :func:`geardesign.geometry.pair_geometry`) to
+Every check maps a geometry (the dict of :func:`geardesign.geometry._core`, arrays or, on the
+optimisers' single-design path, Python floats) to
 
 * ``value`` — the checked quantity, ``limit`` — its bound (a parameter of the check),
 * ``margin`` — signed and dimensionless, >= 0 where the check holds (lengths are divided
@@ -49,6 +50,26 @@ def _dg(geo: dict):
     return geo["_m"] * geo["_sa"] / geo["_sin_w"] ** 2
 
 
+def sliding_root_gradient(geo: dict, gear: int):
+    """∂ϑ/∂x1, ∂ϑ/∂x2 of the specific sliding of ``gear`` at the start of its active profile.
+
+    ϑ1 = 1 − ρ_a2/(u ρ_p1) and ϑ2 = 1 − u ρ_a1/ρ_p2 with ρ_p = N1N2 − ρ_a,mate and
+    ∂N1N2/∂x_j = :func:`_dg`; the quotient rule on each.
+    """
+    o = _other(gear)
+    rho_m, rho_p = geo[f"_rho_a{o}"], geo[f"rho_p{gear}"]
+    u = geo["_z2"] / geo["_z1"]
+    dg = _dg(geo)
+    out = []
+    for dm in _drho_a(geo, o):
+        dp = dg - dm
+        if gear == 1:
+            out.append(-(dm * rho_p - rho_m * dp) / (u * rho_p * rho_p))
+        else:
+            out.append(-u * (dm * rho_p - rho_m * dp) / (rho_p * rho_p))
+    return tuple(out)
+
+
 @dataclass(frozen=True)
 class Check:
     """Base of all checks: a name, a readable label and a limit."""
@@ -87,8 +108,7 @@ class Undercut(Check):
         return geo[f"x_min{self.gear}"]
 
     def gradient(self, geo):
-        one, zero = np.ones_like(geo["a"]), np.zeros_like(geo["a"])
-        return (one, zero) if self.gear == 1 else (zero, one)
+        return (1.0, 0.0) if self.gear == 1 else (0.0, 1.0)
 
 
 @dataclass(frozen=True)
@@ -111,13 +131,14 @@ class Interference(Check):
         return geo[f"rho_p{self.gear}"] / geo["_m"]
 
     def limit_value(self, geo):
-        return np.maximum(geo[f"rho_l{self.gear}"], 0.0) / geo["_m"]
+        rho_l = geo[f"rho_l{self.gear}"]
+        return rho_l * (rho_l > 0) / geo["_m"]      # max(ρ_l, 0), for arrays and floats alike
 
     def gradient(self, geo):
         m = geo["_m"]
         dg = _dg(geo)
         dm1, dm2 = _drho_a(geo, _other(self.gear))
-        active_limit = (geo[f"rho_l{self.gear}"] > 0).astype(float) / geo["_sa"]
+        active_limit = (geo[f"rho_l{self.gear}"] > 0) / geo["_sa"]
         g1 = (dg - dm1) / m - (active_limit if self.gear == 1 else 0.0)
         g2 = (dg - dm2) / m - (active_limit if self.gear == 2 else 0.0)
         return g1, g2

@@ -9,6 +9,8 @@ t − atan t in t = tan α instead, which has no cancellation at all.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from .errors import GearDesignError
@@ -17,33 +19,33 @@ __all__ = ["inv", "inv_from_tan", "inv_inverse", "tan_from_inv"]
 
 # s - atan(s) = s^3 * sum_k (-1)^k s^(2k) / (2k + 3); after three half-angle steps |s| <= tan(π/16)
 # = 0.199, where 13 terms reach 1e-19.
-_SERIES_COEF = np.array([(-1.0) ** k / (2 * k + 3) for k in range(13)])
+_SERIES_COEF = tuple((-1.0) ** k / (2 * k + 3) for k in range(13))
+_SERIES_HORNER = _SERIES_COEF[-2::-1]
 
 
 def _scalar_out(value, *inputs):
     return float(value) if all(np.ndim(x) == 0 for x in inputs) else value
 
 
-def _t_minus_atan(t: np.ndarray) -> np.ndarray:
-    """t − atan t with no cancellation for any t.
+def _t_minus_atan(t, sqrt=np.sqrt):
+    """t − atan t with no cancellation for any t (an array, or a float with ``sqrt=math.sqrt``).
 
     With the half-angle tangent s = t/(1 + √(1 + t²)) (atan t = 2 atan s),
     t − atan t = t³/(1 + √(1 + t²))² + 2 (s − atan s): both terms have the sign of t, so
     nothing cancels. Three steps bring |s| below tan(π/16), where the Taylor series of
     s − atan s converges fast.
     """
-    t = np.asarray(t, dtype=float)
-    acc = np.zeros_like(t)
+    acc = 0.0
     scale = 1.0
     s = t
     for _ in range(3):
-        r = 1.0 + np.sqrt(1.0 + s * s)
+        r = 1.0 + sqrt(1.0 + s * s)
         acc = acc + scale * (s * s * s) / (r * r)
         s = s / r
         scale *= 2.0
     s2 = s * s
-    ser = np.full_like(s, _SERIES_COEF[-1])
-    for c in _SERIES_COEF[-2::-1]:
+    ser = _SERIES_COEF[-1]
+    for c in _SERIES_HORNER:
         ser = ser * s2 + c
     return acc + scale * ser * s2 * s
 
@@ -102,6 +104,26 @@ def tan_from_inv(v, *, validate: bool = True):
     t2 = t * t
     t = t - (_t_minus_atan(t) - v) * (1.0 + t2) / t2
     return _scalar_out(t.reshape(v_in.shape), v_in)
+
+
+def _tan_from_inv_float(v: float) -> float:
+    """:func:`tan_from_inv` for one Python float (the single-design fast path of the optimisers).
+
+    The same start and the same Newton steps; raises ValueError unless v > 0.
+    """
+    if not v > 0.0:
+        raise ValueError(f"involute value must be > 0, got {v!r}")
+    if v < 0.5:
+        s = (3.0 * v) ** (1.0 / 3.0)
+        t = s * (1.0 + s * s / 5.0)
+    else:
+        w = v + math.pi / 2
+        t = w - 1.0 / w
+    for _ in range(3):
+        t2 = t * t
+        t = t - (t - math.atan(t) - v) * (1.0 + t2) / t2
+    t2 = t * t
+    return t - (_t_minus_atan(t, math.sqrt) - v) * (1.0 + t2) / t2
 
 
 def inv_inverse(v):

@@ -13,7 +13,7 @@ import numpy as np
 
 from . import checks as _checks
 from .errors import GearDesignError, require_int, require_positive
-from .geometry import Z_MIN, _core
+from .geometry import Z_MIN, _core, _core_float
 from .rack import BasicRack
 
 __all__ = ["OBJECTIVES", "Problem", "Objective"]
@@ -67,74 +67,89 @@ class Problem:
         self.names = [c.name for c in self.checks]
 
     # --- evaluation ---------------------------------------------------------------------
+    # The checks and pieces are written once, as formulas on a geometry dict; the dict holds
+    # arrays (the vectorised path: grids, regions, atlases) or Python floats (the
+    # single-point path of the local solvers, ~20× cheaper than a one-element array call).
+
     def geo(self, x1, x2) -> dict:
         return _core(self.m, self.z1, self.z2, x1, x2, self.rack, self.tip_shortening)
 
+    def _geo_like(self, geo):
+        """geo(x1, x2) -> dict at the same m, z1, z2 as ``geo`` (arrays or floats alike)."""
+        core = _core_float if isinstance(geo["a"], float) else _core
+        return lambda x1, x2: core(geo["_m"], geo["_z1"], geo["_z2"], x1, x2, self.rack, self.tip_shortening)
+
+    def _central(self, func, geo):
+        """(∂func/∂x1, ∂func/∂x2) by central differences around the design(s) of ``geo``."""
+        h, at = _FD_STEP, self._geo_like(geo)
+        x1, x2 = geo["_x1"], geo["_x2"]
+        return ((func(at(x1 + h, x2)) - func(at(x1 - h, x2))) / (2 * h),
+                (func(at(x1, x2 + h)) - func(at(x1, x2 - h))) / (2 * h))
+
+    def _margin_values(self, geo) -> list:
+        return [c.margin(geo) for c in self.checks]
+
+    def _margin_gradient_values(self, geo) -> list:
+        """[(∂m/∂x1, ∂m/∂x2)] per check: analytic, central differences for custom checks."""
+        return [c.gradient(geo) or self._central(c.margin, geo) for c in self.checks]
+
+    def _piece_values(self, geo) -> tuple:
+        name = self.objective.name
+        if name == "max_x_sum":
+            return (geo["_x1"] + geo["_x2"],)
+        if name == "max_eps_alpha":
+            return (geo["eps_alpha"],)
+        if name == "min_specific_pressure":
+            return (-geo["spec_pressure_pitch"],)
+        if name == "balanced_sliding":
+            return (-abs(geo["sliding1_root"]), -abs(geo["sliding2_root"]))
+        if name == "max_margin":
+            return (0.0 * geo["a"],)
+        raise AssertionError(name)
+
+    def _piece_gradient_values(self, geo) -> list:
+        name = self.objective.name
+        if name == "max_x_sum":
+            return [(1.0, 1.0)]
+        if name == "max_eps_alpha":
+            return [_checks.ContactRatio().gradient(geo)]
+        if name == "max_margin":
+            return [(0.0, 0.0)]
+        if name == "min_specific_pressure":
+            # Γ ∝ 1/tan α_w depends on x1 + x2 only: ∂(−Γ)/∂x_j = Γ · 2 tan α / (z_Σ tan³α_w cos²α_w)
+            g = (geo["spec_pressure_pitch"] * 2.0 * geo["_ta"]
+                 / ((geo["_z1"] + geo["_z2"]) * geo["_t_w"] ** 3 * geo["_cos_w"] ** 2))
+            return [(g, g)]
+        if name == "balanced_sliding":   # pieces −|ϑ|
+            out = []
+            for gear in (1, 2):
+                sign = np.sign(geo[f"sliding{gear}_root"])
+                d1, d2 = _checks.sliding_root_gradient(geo, gear)
+                out.append((-sign * d1, -sign * d2))
+            return out
+        raise AssertionError(name)
+
     def margins(self, geo) -> np.ndarray:
         """(K, ...) margins; designs whose geometry does not exist get −inf."""
-        out = np.stack([np.asarray(c.margin(geo), dtype=float) * np.ones_like(geo["a"])
-                        for c in self.checks]) if self.checks else np.zeros((0,) + geo["a"].shape)
+        out = _stack(self._margin_values(geo), geo["a"])
         return np.where(np.isnan(out), -np.inf, out)
 
-    def margin_gradients(self, geo, x1, x2) -> np.ndarray:
-        """(K, 2, ...) ∂margin/∂(x1, x2): analytic, central differences for custom checks."""
-        grads = []
-        for c in self.checks:
-            g = c.gradient(geo)
-            if g is None:
-                h = _FD_STEP
-                g = ((c.margin(self.geo(x1 + h, x2)) - c.margin(self.geo(x1 - h, x2))) / (2 * h),
-                     (c.margin(self.geo(x1, x2 + h)) - c.margin(self.geo(x1, x2 - h))) / (2 * h))
-            grads.append(np.stack([np.broadcast_to(g[0], geo["a"].shape), np.broadcast_to(g[1], geo["a"].shape)]))
-        return np.stack(grads) if grads else np.zeros((0, 2) + geo["a"].shape)
+    def margin_gradients(self, geo) -> np.ndarray:
+        """(K, 2, ...) ∂margin/∂(x1, x2)."""
+        return _stack_pairs(self._margin_gradient_values(geo), geo["a"])
 
     def pieces(self, geo) -> np.ndarray:
         """(P, ...) pieces whose minimum is the maximised function F = sense·fun."""
-        name = self.objective.name
-        if name == "max_x_sum":
-            return (geo["_x1"] + geo["_x2"])[None]
-        if name == "max_eps_alpha":
-            return geo["eps_alpha"][None]
-        if name == "min_specific_pressure":
-            return -geo["spec_pressure_pitch"][None]
-        if name == "balanced_sliding":
-            return np.stack([-np.abs(geo["sliding1_root"]), -np.abs(geo["sliding2_root"])])
-        if name == "max_margin":
-            return np.zeros((1,) + geo["a"].shape)
-        raise AssertionError(name)
+        return _stack(self._piece_values(geo), geo["a"])
 
-    def piece_gradients(self, geo, x1, x2) -> np.ndarray:
-        """(P, 2, ...) gradients of :meth:`pieces` (analytic where cheap, else central differences)."""
-        name = self.objective.name
-        shape = geo["a"].shape
-        if name == "max_x_sum":
-            return np.ones((1, 2) + shape)
-        if name == "max_eps_alpha":
-            g = _checks.ContactRatio().gradient(geo)
-            return np.stack([np.broadcast_to(g[0], shape), np.broadcast_to(g[1], shape)])[None]
-        if name == "max_margin":
-            return np.zeros((1, 2) + shape)
-        if name == "min_specific_pressure":
-            # Γ ∝ 1/tan α_w depends on x1 + x2 only: ∂(−Γ)/∂x_j = Γ · 2 tan α / (z_Σ tan³α_w cos²α_w)
-            t_w = geo["_sin_w"] / np.sqrt(1.0 - geo["_sin_w"] ** 2)
-            cos2 = 1.0 - geo["_sin_w"] ** 2
-            g = geo["spec_pressure_pitch"] * 2.0 * geo["_ta"] / ((geo["_z1"] + geo["_z2"]) * t_w ** 3 * cos2)
-            return np.stack([g, g])[None]
-        return self._fd_gradient(self.pieces, x1, x2)
-
-    def _fd_gradient(self, func, x1, x2) -> np.ndarray:
-        """(R, 2, n) central differences of func(geo) -> (R, n), all four shifted points in one call."""
-        h = _FD_STEP
-        x1, x2 = np.ravel(x1), np.ravel(x2)
-        n = x1.size
-        geo4 = self.geo(np.concatenate([x1 + h, x1 - h, x1, x1]), np.concatenate([x2, x2, x2 + h, x2 - h]))
-        f4 = np.asarray(func(geo4)).reshape(-1, 4, n)
-        return np.stack([(f4[:, 0] - f4[:, 1]) / (2 * h), (f4[:, 2] - f4[:, 3]) / (2 * h)], axis=1)
+    def piece_gradients(self, geo) -> np.ndarray:
+        """(P, 2, ...) gradients of :meth:`pieces`."""
+        return _stack_pairs(self._piece_gradient_values(geo), geo["a"])
 
     def _normalised(self, geo) -> np.ndarray:
-        """(K, n) margin/‖∇margin‖: each check's first-order distance in x to its boundary."""
+        """(K, ...) margin/‖∇margin‖: each check's first-order distance in x to its boundary."""
         M = self.margins(geo)
-        G = self.margin_gradients(geo, geo["_x1"], geo["_x2"])
+        G = self.margin_gradients(geo)
         with np.errstate(invalid="ignore", divide="ignore"):
             P = M / np.sqrt(G[:, 0] ** 2 + G[:, 1] ** 2)
         return np.where(np.isfinite(P), P, -np.inf)
@@ -171,15 +186,58 @@ class Problem:
         P = self._normalised(geo) if self.objective.kind == "margin" else self.pieces(geo)
         if not grads:
             return P, M
-        GM = self.margin_gradients(geo, x1, x2)
+        GM = self.margin_gradients(geo)
         if self.objective.kind == "margin":
-            GP = self._fd_gradient(self._normalised, x1, x2)
+            GP = np.stack(self._central(self._normalised, geo), axis=1)
         else:
-            GP = self.piece_gradients(geo, x1, x2)
-        if self.x_sum is not None:   # d/dx1 along x2 = x_sum − x1
-            GM = (GM[:, 0] - GM[:, 1])[:, None]
-            GP = (GP[:, 0] - GP[:, 1])[:, None]
-        return P, M, GP, GM
+            GP = self.piece_gradients(geo)
+        return P, M, self._free(GP), self._free(GM)
+
+    def evaluate_point(self, v):
+        """:meth:`evaluate` at one point v (nvar,) on the float path: P (P,), M (K,),
+        GP (P, nvar), GM (K, nvar)."""
+        x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - float(v[0]))
+        geo = _core_float(self.m, self.z1, self.z2, x1, x2, self.rack, self.tip_shortening)
+        P, M, GP, GM = self.evaluate_geo(geo)
+        return P, M, self._free(GP), self._free(GM)
+
+    def evaluate_geo(self, geo):
+        """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict."""
+        def margins_and_gradients(g):
+            return (np.array(self._margin_values(g), dtype=float),
+                    np.array(self._margin_gradient_values(g), dtype=float).reshape(-1, 2))
+
+        M, GM = margins_and_gradients(geo)
+        if self.objective.kind == "margin":
+            P = _normalise(M, GM)
+            GP = np.array(self._central(lambda g: _normalise(*margins_and_gradients(g)), geo)).T
+        else:
+            P = np.array(self._piece_values(geo), dtype=float)
+            GP = np.array(self._piece_gradient_values(geo), dtype=float).reshape(-1, 2)
+        return P, np.where(np.isnan(M), -np.inf, M), GP, GM
+
+    def _free(self, G):
+        """Gradients in (x1, x2) → in the free variables (d/dx1 along x2 = x_sum − x1)."""
+        return G if self.x_sum is None else (G[:, 0] - G[:, 1])[:, None]
+
+
+def _stack(values, like) -> np.ndarray:
+    shape = np.shape(like)
+    return np.stack([np.broadcast_to(np.asarray(v, dtype=float), shape) for v in values]) if values \
+        else np.zeros((0,) + shape)
+
+
+def _stack_pairs(pairs, like) -> np.ndarray:
+    shape = np.shape(like)
+    return np.stack([np.stack([np.broadcast_to(np.asarray(g, dtype=float), shape) for g in p]) for p in pairs]) \
+        if pairs else np.zeros((0, 2) + shape)
+
+
+def _normalise(M, G) -> np.ndarray:
+    """margin/‖∇margin‖ for (K,) margins and (K, 2) gradients of one design; −inf where undefined."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        P = M / np.hypot(G[:, 0], G[:, 1])
+    return np.where(np.isfinite(P), P, -np.inf)
 
 
 # The x window searched: [−1.5, 3] covers every shift used in practice (handbook blocking

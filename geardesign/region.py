@@ -132,7 +132,7 @@ def _project(prob: Problem, P: np.ndarray, idx: np.ndarray, iters: int = 6) -> n
         x1, x2 = P[:, 0], P[:, 1]
         geo = prob.geo(x1, x2)
         M = prob.margins(geo)[idx, rows]
-        G = prob.margin_gradients(geo, x1, x2)[idx, :, rows]
+        G = prob.margin_gradients(geo)[idx, :, rows]
         nrm2 = (G ** 2).sum(axis=1)
         step = np.where(np.isfinite(M) & (nrm2 > 0), M / np.where(nrm2 > 0, nrm2, 1.0), 0.0)
         step = np.clip(step, -0.05, 0.05)
@@ -148,7 +148,7 @@ def _corners(prob: Problem, P: np.ndarray, a: np.ndarray, b: np.ndarray, iters: 
         x1, x2 = P[:, 0], P[:, 1]
         geo = prob.geo(x1, x2)
         M = prob.margins(geo)
-        G = prob.margin_gradients(geo, x1, x2)
+        G = prob.margin_gradients(geo)
         ma, mb = M[a, rows], M[b, rows]
         ga, gb = G[a, :, rows], G[b, :, rows]
         det = ga[:, 0] * gb[:, 1] - ga[:, 1] * gb[:, 0]

@@ -155,9 +155,9 @@ class _Evaluator:
     def __call__(self, v):
         key = np.asarray(v, dtype=float).tobytes()
         if key != self.key:
-            P, M, GP, GM = self.prob.evaluate(np.asarray(v, dtype=float)[None, :], grads=True)
-            self.val = (np.nan_to_num(P[:, 0], neginf=-_BIG), np.nan_to_num(M[:, 0], neginf=-_BIG),
-                        np.nan_to_num(GP[..., 0]), np.nan_to_num(GM[..., 0]))
+            P, M, GP, GM = self.prob.evaluate_point(v)
+            self.val = (np.nan_to_num(P, neginf=-_BIG), np.nan_to_num(M, neginf=-_BIG),
+                        np.nan_to_num(GP), np.nan_to_num(GM))
             self.key = key
             self.nfev += 1
         return self.val
@@ -410,6 +410,10 @@ class _MinMargin(Problem):
         if not grads:
             return out[1], out[1][:0]
         P, M, GP, GM = out
+        return M, M[:0], GM, GM[:0]
+
+    def evaluate_point(self, v):
+        P, M, GP, GM = Problem.evaluate_point(self, v)
         return M, M[:0], GM, GM[:0]
 
 

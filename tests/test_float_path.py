@@ -1,0 +1,80 @@
+"""The single-design float path of the optimisers agrees with the vectorised array path.
+
+The local solvers evaluate one design at a time in Python floats (:func:`_core_float`,
+:meth:`Problem.evaluate_point`) because a one-element numpy call costs ~20× more. Both run the
+same formulas (:func:`geardesign.geometry._formulas`) on different backends; these tests hold
+them together, so that the golden and mpmath tests of the array path cover the float path too.
+The analytic gradients of the objective pieces are held against central differences.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from hypothesis import assume, given
+from hypothesis import strategies as st
+
+from geardesign.checks import CustomCheck, make_checks
+from geardesign.geometry import _core, _core_float
+from geardesign.problem import OBJECTIVES, Problem
+
+from test_properties import SETTINGS, designs
+
+
+@SETTINGS
+@given(designs())
+def test_float_core_equals_array_core(d):
+    args = (d["m"], d["z1"], d["z2"], d["x1"], d["x2"], d["rack"], d["ts"])
+    arr, flt = _core(*args), _core_float(*args)
+    assert arr.keys() == flt.keys()
+    for k, v in arr.items():
+        v = float(v)
+        assert isinstance(flt[k], float), k
+        assert abs(flt[k] - v) <= 1e-13 * max(1.0, abs(v)), (k, flt[k], v)
+
+
+def test_float_core_gives_nan_where_the_design_does_not_exist():
+    """x-sum too negative for an operating angle: NaN on both paths, never an exception."""
+    from geardesign.rack import BasicRack
+    arr = _core(1.0, 10, 10, -2.0, -2.0, BasicRack(), True)
+    flt = _core_float(1.0, 10, 10, -2.0, -2.0, BasicRack(), True)
+    assert math.isnan(flt["a_w"]) and np.isnan(arr["a_w"])
+
+
+@SETTINGS
+@given(z1=st.integers(8, 150), z2=st.integers(8, 300), x1=st.floats(-0.5, 1.5), x2=st.floats(-0.5, 1.5),
+       objective=st.sampled_from(sorted(OBJECTIVES)), fixed=st.booleans())
+def test_evaluate_point_equals_evaluate(z1, z2, x1, x2, objective, fixed):
+    extra = (CustomCheck(name="a_w_max", func=lambda g: g["a_w"], limit=1e4, sense="<="),)
+    prob = Problem(z1, z2, checks=make_checks(extra=extra), objective=objective,
+                   x_sum=(x1 + x2) if fixed else None)
+    v = np.array([x1] if fixed else [x1, x2])
+    arr = [a[..., 0] for a in prob.evaluate(v[None, :])]
+    flt = prob.evaluate_point(v)
+    assume(np.isfinite(arr[1]).all())
+    for name, a, f in zip(("P", "M", "GP", "GM"), arr, flt):
+        assert a.shape == f.shape, name
+        # finite differences (custom check, max_margin pieces) agree to their own precision
+        assert np.allclose(f, a, rtol=1e-7, atol=1e-7), (name, f, a)
+
+
+@SETTINGS
+@given(designs())
+def test_piece_gradients_match_central_differences(d):
+    """Analytic gradients of the pieces (specific sliding, ε_α, specific pressure)."""
+    g = d["geo"]
+    assume(min(abs(g.rho_p1), abs(g.rho_p2)) > 1e-3 * d["m"])
+    assume(min(abs(g.sliding1_root), abs(g.sliding2_root)) > 1e-6)
+    h = 1e-6
+    for objective in ("balanced_sliding", "max_eps_alpha", "min_specific_pressure"):
+        prob = Problem(d["z1"], d["z2"], rack=d["rack"], objective=objective, m=d["m"], tip_shortening=d["ts"])
+        geo = _core_float(d["m"], d["z1"], d["z2"], d["x1"], d["x2"], d["rack"], d["ts"])
+        an = np.array(prob._piece_gradient_values(geo), dtype=float)
+        for j, (dx1, dx2) in enumerate(((h, 0.0), (0.0, h))):
+            up = np.array(prob._piece_values(prob.geo(d["x1"] + dx1, d["x2"] + dx2)), dtype=float)
+            dn = np.array(prob._piece_values(prob.geo(d["x1"] - dx1, d["x2"] - dx2)), dtype=float)
+            fd = (up - dn) / (2 * h)
+            scale = np.maximum(1.0, np.abs(fd))
+            # conditioning of the difference: the pieces are O(|piece|), the step 1e-6
+            tol = 1e-6 * scale + 1e-9 * np.abs(up) / h
+            assert (np.abs(an[:, j] - fd) <= tol).all(), (objective, j, an[:, j], fd)
