@@ -90,6 +90,16 @@ class Check:
     def gradient(self, geo: dict):
         raise NotImplementedError
 
+    # The optimisers see each check as smooth parts whose minimum is its margin (one part
+    # for most checks); a kink of the margin then becomes a corner between two parts.
+    n_parts = 1
+
+    def part_margins(self, geo: dict) -> list:
+        return [self.margin(geo)]
+
+    def part_gradients(self, geo: dict) -> list:
+        return [self.gradient(geo)]
+
 
 @dataclass(frozen=True)
 class Undercut(Check):
@@ -127,6 +137,8 @@ class Interference(Check):
         object.__setattr__(self, "label", self.label or
                            f"no interference of gear {_other(self.gear)}'s tip with gear {self.gear}'s fillet")
 
+    n_parts = 2
+
     def value(self, geo):
         return geo[f"rho_p{self.gear}"] / geo["_m"]
 
@@ -135,13 +147,24 @@ class Interference(Check):
         return rho_l * (rho_l > 0) / geo["_m"]      # max(ρ_l, 0), for arrays and floats alike
 
     def gradient(self, geo):
+        limit_point, base_circle = self.part_gradients(geo)
+        on = geo[f"rho_l{self.gear}"] > 0
+        return tuple(on * a + (1 - on) * b for a, b in zip(limit_point, base_circle))
+
+    def part_margins(self, geo):
+        """(ρ_p − ρ_l)/m and ρ_p/m: above the limit point and above the base circle."""
+        m = geo["_m"]
+        rho_p = geo[f"rho_p{self.gear}"]
+        return [(rho_p - geo[f"rho_l{self.gear}"]) / m, rho_p / m]
+
+    def part_gradients(self, geo):
         m = geo["_m"]
         dg = _dg(geo)
         dm1, dm2 = _drho_a(geo, _other(self.gear))
-        active_limit = (geo[f"rho_l{self.gear}"] > 0) / geo["_sa"]
-        g1 = (dg - dm1) / m - (active_limit if self.gear == 1 else 0.0)
-        g2 = (dg - dm2) / m - (active_limit if self.gear == 2 else 0.0)
-        return g1, g2
+        base = ((dg - dm1) / m, (dg - dm2) / m)
+        # ∂ρ_l/∂x_gear = m / sin α
+        lim = (base[0] - 1.0 / geo["_sa"], base[1]) if self.gear == 1 else (base[0], base[1] - 1.0 / geo["_sa"])
+        return [lim, base]
 
 
 @dataclass(frozen=True)

@@ -65,6 +65,8 @@ class Problem:
         self.tip_shortening = bool(tip_shortening)
         self.x_sum = None if x_sum is None else float(x_sum)
         self.names = [c.name for c in self.checks]
+        # the smooth parts the solvers see (see Check.part_margins): part -> index of its check
+        self.part_check = [i for i, c in enumerate(self.checks) for _ in range(c.n_parts)]
 
     # --- evaluation ---------------------------------------------------------------------
     # The checks and pieces are written once, as formulas on a geometry dict; the dict holds
@@ -83,14 +85,21 @@ class Problem:
         """(∂func/∂x1, ∂func/∂x2) by central differences around the design(s) of ``geo``."""
         h, at = _FD_STEP, self._geo_like(geo)
         x1, x2 = geo["_x1"], geo["_x2"]
-        return ((func(at(x1 + h, x2)) - func(at(x1 - h, x2))) / (2 * h),
-                (func(at(x1, x2 + h)) - func(at(x1, x2 - h))) / (2 * h))
+        with np.errstate(invalid="ignore"):
+            return ((func(at(x1 + h, x2)) - func(at(x1 - h, x2))) / (2 * h),
+                    (func(at(x1, x2 + h)) - func(at(x1, x2 - h))) / (2 * h))
 
-    def _margin_values(self, geo) -> list:
+    def _margin_values(self, geo, parts: bool = False) -> list:
+        if parts:
+            return [v for c in self.checks for v in c.part_margins(geo)]
         return [c.margin(geo) for c in self.checks]
 
-    def _margin_gradient_values(self, geo) -> list:
-        """[(∂m/∂x1, ∂m/∂x2)] per check: analytic, central differences for custom checks."""
+    def _margin_gradient_values(self, geo, parts: bool = False) -> list:
+        """[(∂m/∂x1, ∂m/∂x2)] per check (or per part): analytic, central differences for
+        custom checks."""
+        if parts:
+            return [g or self._central(lambda gg, c=c, j=j: c.part_margins(gg)[j], geo)
+                    for c in self.checks for j, g in enumerate(c.part_gradients(geo))]
         return [c.gradient(geo) or self._central(c.margin, geo) for c in self.checks]
 
     def _piece_values(self, geo) -> tuple:
@@ -194,18 +203,20 @@ class Problem:
         return P, M, self._free(GP), self._free(GM)
 
     def evaluate_point(self, v):
-        """:meth:`evaluate` at one point v (nvar,) on the float path: P (P,), M (K,),
-        GP (P, nvar), GM (K, nvar)."""
+        """:meth:`evaluate` at one point v (nvar,) on the float path, for the local solvers:
+        P (P,), M (parts,), GP (P, nvar), GM (parts, nvar). The margins come as the checks'
+        smooth parts (:attr:`part_check` maps each to its check)."""
         x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - float(v[0]))
         geo = _core_float(self.m, self.z1, self.z2, x1, x2, self.rack, self.tip_shortening)
-        P, M, GP, GM = self.evaluate_geo(geo)
+        P, M, GP, GM = self.evaluate_geo(geo, parts=True)
         return P, M, self._free(GP), self._free(GM)
 
-    def evaluate_geo(self, geo):
-        """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict."""
+    def evaluate_geo(self, geo, parts: bool = False):
+        """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict
+        (margins per check, or per smooth part with ``parts``)."""
         def margins_and_gradients(g):
-            return (np.array(self._margin_values(g), dtype=float),
-                    np.array(self._margin_gradient_values(g), dtype=float).reshape(-1, 2))
+            return (np.array(self._margin_values(g, parts), dtype=float),
+                    np.array(self._margin_gradient_values(g, parts), dtype=float).reshape(-1, 2))
 
         M, GM = margins_and_gradients(geo)
         if self.objective.kind == "margin":

@@ -26,11 +26,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
-from scipy.optimize import minimize, root
+from scipy.optimize import minimize
 
 from . import checks as _checks
 from .errors import GearDesignError, require_positive, require_range
-from .geometry import x_sum_from_center_distance
+from .geometry import _core_float, x_sum_from_center_distance
 from .problem import DEFAULT_BOUNDS, Problem
 
 __all__ = ["optimize_shifts", "ShiftResult", "METHODS", "smallest_conflict"]
@@ -145,22 +145,44 @@ def _least_infeasible(prob: Problem, V, M):
 
 
 class _Evaluator:
-    """Caches Problem.evaluate at one point for the scipy callbacks (w = (v, t))."""
+    """Caches Problem.evaluate_point at one point for the solvers (w = (v, t)).
 
-    def __init__(self, prob: Problem):
+    With ``window`` (lo, hi) the window's edges join the margins as linear checks
+    v − lo >= 0 and hi − v >= 0 (after the problem's own), so that an optimum on the window
+    is a KKT point like any other.
+    """
+
+    def __init__(self, prob: Problem, window=None):
         self.prob = prob
         self.key = None
         self.nfev = 0
+        self.window = window
 
     def __call__(self, v):
-        key = np.asarray(v, dtype=float).tobytes()
+        v = np.asarray(v, dtype=float)
+        key = v.tobytes()
         if key != self.key:
             P, M, GP, GM = self.prob.evaluate_point(v)
-            self.val = (np.nan_to_num(P, neginf=-_BIG), np.nan_to_num(M, neginf=-_BIG),
-                        np.nan_to_num(GP), np.nan_to_num(GM))
+            if self.window is not None:
+                eye = np.eye(v.size)
+                M = np.concatenate([M, v - self.window[0], self.window[1] - v])
+                GM = np.vstack([GM, eye, -eye])
+            bad = ~np.isfinite(M)
+            if bad.any() or not np.isfinite(P).all():
+                P, M = np.nan_to_num(P, nan=-_BIG, neginf=-_BIG), np.nan_to_num(M, nan=-_BIG, neginf=-_BIG)
+                GP, GM = np.nan_to_num(GP), np.nan_to_num(GM)
+            self.val = (P, M, GP, GM)
             self.key = key
             self.nfev += 1
         return self.val
+
+
+def _window(prob: Problem, bounds):
+    """The box of the free variables: (lo, hi) arrays."""
+    lo, hi = bounds
+    if prob.nvar == 1:
+        return np.array([max(lo, prob.x_sum - hi)]), np.array([min(hi, prob.x_sum - lo)])
+    return np.array([lo, lo], dtype=float), np.array([hi, hi], dtype=float)
 
 
 def _slsqp(prob: Problem, v0, bounds, ftol=1e-15, maxiter=200, pieces_only=False):
@@ -181,87 +203,145 @@ def _slsqp(prob: Problem, v0, bounds, ftol=1e-15, maxiter=200, pieces_only=False
             return top
         return np.vstack([top, np.hstack([GM, np.zeros((GM.shape[0], 1))])])
 
-    lo, hi = bounds
-    if nv == 1:
-        vb = [(max(lo, prob.x_sum - hi), min(hi, prob.x_sum - lo))]
-    else:
-        vb = [(lo, hi), (lo, hi)]
+    lo, hi = _window(prob, bounds)
     res = minimize(lambda w: -w[nv], w0, jac=lambda w: np.append(np.zeros(nv), -1.0),
                    constraints=[{"type": "ineq", "fun": cons, "jac": cons_jac}],
-                   bounds=vb + [(None, None)], method="SLSQP",
+                   bounds=list(zip(lo, hi)) + [(None, None)], method="SLSQP",
                    options={"ftol": ftol, "maxiter": maxiter})
     return res.x, res.nit, ev
 
 
-def _kkt_system(prob: Problem, act_p, act_m, ev: _Evaluator):
-    nv = prob.nvar
-    need = nv + 1
-    neq = len(act_p) + len(act_m)
+# --- the exact method: KKT systems of candidate active sets, solved by Newton ---------------
 
-    def grads(w):
+def _rows(GP, GM, act_p, act_m):
+    """Gradients in w = (v, t) of the active constraints piece_k − t and margin_i."""
+    return ([np.append(GP[k], -1.0) for k in act_p] + [np.append(GM[i], 0.0) for i in act_m])
+
+
+def _stationarity(rows, nv):
+    """det [e_t; rows] / Π‖row‖: zero when e_t lies in the span of the nv active gradients,
+    i.e. the Lagrangian is stationary with one active constraint fewer than variables + 1."""
+    if nv == 1:
+        return -rows[0][0] / math.hypot(*rows[0])
+    (a0, a1, a2), (b0, b1, b2) = rows
+    return (a0 * b1 - a1 * b0) / (math.sqrt(a0 * a0 + a1 * a1 + a2 * a2) * math.sqrt(b0 * b0 + b1 * b1 + b2 * b2))
+
+
+def _kkt_newton(ev: _Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxit: int = 30):
+    """Newton on the KKT system of one active set: active pieces = t, active margins = 0 and,
+    with one equation short, :func:`_stationarity`. The active rows of the Jacobian are the
+    analytic gradients; the stationarity row starts from forward differences and is then kept
+    by Broyden's update (one evaluation per step instead of nv + 1).
+    Returns (w, iterations) or None when it diverges, leaves ``max_move`` or stalls."""
+    edge = len(act_p) + len(act_m) == nv
+    w = np.array(w0, dtype=float)
+
+    def system(w):
         P, M, GP, GM = ev(w[:nv])
-        rows = [np.append(GP[k], -1.0) for k in act_p] + [np.append(GM[i], 0.0) for i in act_m]
-        return P, M, rows
+        rows = _rows(GP, GM, act_p, act_m)
+        F = [P[k] - w[nv] for k in act_p] + [M[i] for i in act_m]
+        if edge:
+            F.append(_stationarity(rows, nv))
+        return np.array(F), rows
 
-    def F(w):
-        P, M, rows = grads(w)
-        eqs = [P[k] - w[nv] for k in act_p] + [M[i] for i in act_m]
-        if neq == need - 1:
-            A = np.vstack([np.append(np.zeros(nv), 1.0)] + rows)
-            scale = np.prod([max(np.linalg.norm(r), 1e-300) for r in rows])
-            eqs.append(np.linalg.det(A) / scale)
-        return np.array(eqs)
-
-    return F
+    F, rows = system(w)
+    if edge:
+        srow = np.zeros(nv + 1)
+        for j in range(nv):
+            step = 1e-7 * max(1.0, abs(w[j]))
+            vj = w[:nv].copy()
+            vj[j] += step
+            _, _, GPj, GMj = ev(vj)
+            srow[j] = (_stationarity(_rows(GPj, GMj, act_p, act_m), nv) - F[-1]) / step
+    for it in range(1, maxit + 1):
+        try:
+            dw = np.linalg.solve(np.array(rows + [srow] if edge else rows), -F)
+        except np.linalg.LinAlgError:
+            return None
+        w = w + dw
+        if not np.all(np.isfinite(w)) or np.max(np.abs(w[:nv] - w0[:nv])) > max_move:
+            return None
+        F_old = F
+        F, rows = system(w)
+        if edge:   # Broyden: the row's directional derivative along the step matches the change
+            srow = srow + (F[-1] - F_old[-1] - srow @ dw) * dw / (dw @ dw)
+        if np.max(np.abs(dw[:nv])) <= 1e-13 * max(1.0, np.max(np.abs(w[:nv]))) or np.max(np.abs(F)) == 0.0:
+            break
+    return (w, it) if np.max(np.abs(F)) <= 1e-10 else None
 
 
 def _multipliers(prob: Problem, w, act_p, act_m, ev):
     """λ of the active constraints from e_t + Σ λ_j ∇c_j = 0 (least squares)."""
     nv = prob.nvar
     _, _, GP, GM = ev(w[:nv])
-    rows = [np.append(GP[k], -1.0) for k in act_p] + [np.append(GM[i], 0.0) for i in act_m]
+    rows = _rows(GP, GM, act_p, act_m)
     if not rows:
         return np.zeros(0), np.zeros(0)
-    A = np.array(rows).T
-    lam, *_ = np.linalg.lstsq(A, -np.append(np.zeros(nv), 1.0), rcond=None)
+    lam, *_ = np.linalg.lstsq(np.array(rows).T, -np.append(np.zeros(nv), 1.0), rcond=None)
     return lam[:len(act_p)], lam[len(act_p):]
 
 
-def _polish(prob: Problem, w, ev: _Evaluator, tol: float, act_tol=1e-5):
-    """Newton on the active set. Returns (w, act_p, act_m) or None if no polish applies."""
-    nv = prob.nvar
-    P, M, _, _ = ev(w[:nv])
-    t = w[nv]
-    cand_p = [k for k in range(P.size) if P[k] - t < act_tol]
-    cand_m = [i for i in range(M.size) if M[i] < act_tol]
+def _active_sets(near_p, near_m, nv):
+    """Candidate active sets (>= 1 piece; nv + 1 constraints, or nv with stationarity),
+    the fully determined ones (vertices) first."""
     need = nv + 1
-    best = None
-    options = []
-    for n_m in range(len(cand_m), -1, -1):
-        for sub_m in itertools.combinations(cand_m, n_m):
-            for n_p in range(len(cand_p), 0, -1):
-                for sub_p in itertools.combinations(cand_p, n_p):
+    out = []
+    for n_m in range(len(near_m), -1, -1):
+        for sub_m in itertools.combinations(near_m, n_m):
+            for n_p in range(len(near_p), 0, -1):
+                for sub_p in itertools.combinations(near_p, n_p):
                     if n_m + n_p in (need, need - 1):
-                        options.append((list(sub_p), list(sub_m)))
-    options.sort(key=lambda o: -(len(o[0]) + len(o[1])))
-    for act_p, act_m in options[:24]:
-        F = _kkt_system(prob, act_p, act_m, ev)
-        sol = root(F, w, method="hybr", options={"xtol": 1e-15})
-        wn = sol.x
-        if not np.all(np.isfinite(wn)) or np.max(np.abs(F(wn))) > 1e-10:
+                        out.append((list(sub_p), list(sub_m)))
+    out.sort(key=lambda o: -(len(o[0]) + len(o[1])))
+    return out
+
+
+def _first_kkt_point(prob: Problem, ev: _Evaluator, w0, near_p, near_m, max_move: float, limit: int = 24):
+    """The first candidate active set whose Newton solution is a KKT point: it holds every
+    check, no piece is below t, the multipliers are >= 0, and t is no worse than at w0.
+
+    Returns (w, act_p, act_m, newton iterations) or None.
+    """
+    nv = prob.nvar
+    t0 = w0[nv]
+    nit = 0
+    for act_p, act_m in _active_sets(near_p, near_m, nv)[:limit]:
+        out = _kkt_newton(ev, nv, act_p, act_m, w0, max_move)
+        if out is None:
             continue
-        Pn, Mn, _, _ = ev(wn[:nv])
-        if Mn.size and Mn.min() < -1e-12:
+        w, it = out
+        nit += it
+        P, M, _, _ = ev(w[:nv])
+        if (M.size and M.min() < -1e-12) or P.min() < w[nv] - 1e-10 or w[nv] < t0 - 1e-9:
             continue
-        tn = Pn.min()
-        if tn < t - 1e-9 or np.linalg.norm(wn[:nv] - w[:nv]) > 1e-3:
-            continue
-        lp, lm = _multipliers(prob, np.append(wn[:nv], tn), act_p, act_m, ev)
+        lp, lm = _multipliers(prob, w, act_p, act_m, ev)
         if (lp.size and lp.min() < -1e-7) or (lm.size and lm.min() < -1e-7):
             continue
-        best = (tn, np.append(wn[:nv], tn), act_p, act_m)
-        break   # SLSQP put us next to the optimum: the first valid KKT point near it is it
-    return None if best is None else best[1:]
+        return w, act_p, act_m, nit
+    return None
+
+
+def _near(ev: _Evaluator, nv: int, w, reach: float, most: int = 4):
+    """Pieces and margins whose boundary (to first order) lies within ``reach`` of w in x."""
+    P, M, GP, GM = ev(w[:nv])
+    t = w[nv]
+    k0 = int(np.argmin(P))
+    dist_p = [(P[k] - t) / max(np.linalg.norm(GP[k] - GP[k0]), 1e-300) if k != k0 else 0.0
+              for k in range(P.size)]
+    dist_m = [M[i] / max(np.linalg.norm(GM[i]), 1e-300) for i in range(M.size)]
+    near_p = [k for k in np.argsort(dist_p)[:most] if dist_p[k] <= reach]
+    near_m = [i for i in np.argsort(dist_m)[:most] if dist_m[i] <= reach]
+    return sorted(int(k) for k in near_p), sorted(int(i) for i in near_m)
+
+
+def _polish(prob: Problem, w, ev: _Evaluator, tol: float, act_tol=1e-5):
+    """Newton on the active set of a converged SLSQP point: (w, act_p, act_m) or None."""
+    nv = prob.nvar
+    P, M, _, _ = ev(w[:nv])
+    near_p = [k for k in range(P.size) if P[k] - w[nv] < act_tol]
+    near_m = [i for i in range(M.size) if M[i] < act_tol]
+    found = _first_kkt_point(prob, ev, w, near_p, near_m, max_move=1e-3)
+    return None if found is None else found[:3]
 
 
 # --- the convex (SCP) method ----------------------------------------------------------------
@@ -290,18 +370,17 @@ def _scp_problem(P: int, K: int, nv: int):
     return _SCP_CACHE[key]
 
 
-def _curvature(prob: Problem, v, lam_p, lam_m, h=1e-5):
-    """L with LᵀL = PSD part of −∇²(Σ λ_p p + Σ λ_m m), second derivatives by differences of
-    the analytic gradients (one vectorised call)."""
-    nv = prob.nvar
-    V = np.vstack([v + h * e for e in np.eye(nv)] + [v - h * e for e in np.eye(nv)])
-    _, _, GP, GM = prob.evaluate(V, grads=True)
-    GP, GM = np.nan_to_num(GP), np.nan_to_num(GM)
+def _curvature(ev: _Evaluator, v, lam_p, lam_m, h=1e-5):
+    """L with LᵀL = PSD part of −∇²(Σ λ_p p + Σ λ_m m), second derivatives by central
+    differences of the analytic gradients."""
+    nv = v.size
     H = np.zeros((nv, nv))
     for j in range(nv):
-        dGP = (GP[:, :, j] - GP[:, :, nv + j]) / (2 * h)
-        dGM = (GM[:, :, j] - GM[:, :, nv + j]) / (2 * h)
-        H[:, j] = lam_p @ dGP + (lam_m @ dGM if lam_m.size else 0.0)
+        e = np.zeros(nv)
+        e[j] = h
+        _, _, GPu, GMu = ev(v + e)
+        _, _, GPd, GMd = ev(v - e)
+        H[:, j] = lam_p @ (GPu - GPd) / (2 * h) + (lam_m @ (GMu - GMd) / (2 * h) if lam_m.size else 0.0)
     B = -(H + H.T) / 2
     vals, vecs = np.linalg.eigh(B)
     vals = np.clip(vals, 1e-8, None)
@@ -361,7 +440,8 @@ def _solve_convex(prob: Problem, v0, bounds, tol, maxit=100):
             lam_p = np.asarray(cons[0].dual_value, dtype=float)
             if M.size:
                 lam_m = np.asarray(cons[3].dual_value, dtype=float)
-            L = _curvature(prob, v, lam_p, lam_m)
+            L = _curvature(ev, v, lam_p, lam_m)
+            ev(v)   # back to the iterate in the cache
             if predicted > 0 and actual > 0.75 * predicted and np.max(np.abs(step)) > 0.9 * radius:
                 radius = min(2 * radius, 1.0)
             if np.max(np.abs(step)) < 0.01 * tol:   # the next SQP step would be ~(tol/100)²
@@ -465,9 +545,9 @@ def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: s
 
     def finish(v, nit, success, message, sensitivity=None, conflict=None):
         x1, x2 = (float(c[0]) for c in prob.xy(np.asarray(v)[None, :]))
-        geo = prob.geo(x1, x2)
-        mg = {name: float(v_) for name, v_ in zip(prob.names, prob.margins(geo))}
-        P, _ = prob.evaluate(np.asarray(v)[None, :], grads=False)
+        geo = _core_float(prob.m, prob.z1, prob.z2, x1, x2, prob.rack, prob.tip_shortening)
+        P, M, _, _ = prob.evaluate_geo(geo)
+        mg = {name: float(v_) for name, v_ in zip(prob.names, M)}
         fun = float(prob.objective.sense * P.min()) if prob.objective.kind != "margin" else float(P.min())
         active = [k for k, v_ in mg.items() if abs(v_) <= max(tol, 1e-9) * 10]
         return ShiftResult(
@@ -521,30 +601,42 @@ def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: s
         Pv, Mv, _, _ = ev(v)
         sens = {}
         if prob.objective.kind != "margin":
-            for c, lam_i, mi in zip(prob.checks, lam, Mv):
+            for i, lam_i, mi in zip(prob.part_check, lam, Mv):
                 if abs(mi) <= 10 * tol and lam_i > 1e-9:
-                    sens[c.name] = float(-sense * lam_i * _limit_factor(c))
+                    c = prob.checks[i]
+                    sens[c.name] = sens.get(c.name, 0.0) + float(-sense * lam_i * _limit_factor(c))
         ok = not (Mv.size and Mv.min() < -tol)
         msg = "converged: trust region below tol" if ok else "stopped with a check violated beyond tol"
         return finish(v, nit, ok, msg, sens)
 
-    # exact: SLSQP, then Newton on the active set
-    w, nit, ev = _slsqp(prob, v0, bounds)
-    polished = _polish(prob, w, ev, tol)
-    if polished is not None:
-        w, act_p, act_m = polished
-        msg = "converged: KKT system of the active set solved by Newton"
+    # exact: Newton on the KKT systems of the checks that pass near the start (the window's
+    # edges count as checks); SLSQP, then that polish, only when none gives a KKT point
+    nv = prob.nvar
+    h = (hi - lo) / ((_START_N if nv == 2 else 401) - 1)
+    ev = _Evaluator(prob, window=_window(prob, bounds))
+    w0 = np.append(v0, ev(v0)[0].min())
+    found = _first_kkt_point(prob, ev, w0, *_near(ev, nv, w0, reach=2.2 * h), max_move=3 * h)
+    if found is not None:
+        w, act_p, act_m, nit = found
+        msg = "converged: KKT system of the active set solved by Newton from the best grid node"
     else:
-        P, M, _, _ = ev(w[:prob.nvar])
-        act_p = [k for k in range(P.size) if P[k] - w[-1] < 1e-6]
-        act_m = [k for k in range(M.size) if M[k] < 1e-6]
-        msg = "converged (SLSQP; active-set polish not applicable)"
+        w, nit, ev = _slsqp(prob, v0, bounds)
+        polished = _polish(prob, w, ev, tol)
+        if polished is not None:
+            w, act_p, act_m = polished
+            msg = "converged: SLSQP, then Newton on the KKT system of its active set"
+        else:
+            P, M, _, _ = ev(w[:nv])
+            act_p = [k for k in range(P.size) if P[k] - w[-1] < 1e-6]
+            act_m = [k for k in range(M.size) if M[k] < 1e-6]
+            msg = "converged (SLSQP; active-set polish not applicable)"
     lp, lm = _multipliers(prob, w, act_p, act_m, ev)
     sens = {}
     if prob.objective.kind != "margin":
         for i_m, lam_i in zip(act_m, lm):
-            c = prob.checks[i_m]
-            sens[c.name] = float(-sense * lam_i * _limit_factor(c))
-    _, Mv, _, _ = ev(w[:prob.nvar])
+            if i_m < len(prob.part_check):      # not a window edge
+                c = prob.checks[prob.part_check[i_m]]
+                sens[c.name] = sens.get(c.name, 0.0) + float(-sense * lam_i * _limit_factor(c))
+    Mv = ev(w[:nv])[1][:len(prob.part_check)]
     ok = not (Mv.size and Mv.min() < -tol)
-    return finish(w[:prob.nvar], nit, ok, msg if ok else "a check is violated beyond tol", sens)
+    return finish(w[:nv], nit, ok, msg if ok else "a check is violated beyond tol", sens)

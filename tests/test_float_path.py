@@ -45,17 +45,44 @@ def test_float_core_gives_nan_where_the_design_does_not_exist():
 @given(z1=st.integers(8, 150), z2=st.integers(8, 300), x1=st.floats(-0.5, 1.5), x2=st.floats(-0.5, 1.5),
        objective=st.sampled_from(sorted(OBJECTIVES)), fixed=st.booleans())
 def test_evaluate_point_equals_evaluate(z1, z2, x1, x2, objective, fixed):
+    """The float path gives the checks as smooth parts: the smallest part of each check is its
+    margin, and that part's gradient is the check's gradient."""
     extra = (CustomCheck(name="a_w_max", func=lambda g: g["a_w"], limit=1e4, sense="<="),)
     prob = Problem(z1, z2, checks=make_checks(extra=extra), objective=objective,
                    x_sum=(x1 + x2) if fixed else None)
     v = np.array([x1] if fixed else [x1, x2])
-    arr = [a[..., 0] for a in prob.evaluate(v[None, :])]
-    flt = prob.evaluate_point(v)
-    assume(np.isfinite(arr[1]).all())
-    for name, a, f in zip(("P", "M", "GP", "GM"), arr, flt):
-        assert a.shape == f.shape, name
-        # finite differences (custom check, max_margin pieces) agree to their own precision
-        assert np.allclose(f, a, rtol=1e-7, atol=1e-7), (name, f, a)
+    P, M, GP, GM = (a[..., 0] for a in prob.evaluate(v[None, :]))
+    fP, fM, fGP, fGM = prob.evaluate_point(v)
+    assume(np.isfinite(M).all())
+    # finite differences (custom check, max_margin pieces) agree to their own precision
+    if objective == "max_margin":   # pieces per part there: the same smallest piece
+        assert abs(fP.min() - P.min()) <= 1e-7 * max(1.0, abs(P.min()))
+    else:
+        assert np.allclose(fP, P, rtol=1e-7, atol=1e-7) and np.allclose(fGP, GP, rtol=1e-7, atol=1e-7)
+    part_check = np.array(prob.part_check)
+    for i in range(len(prob.checks)):
+        parts = np.flatnonzero(part_check == i)
+        j = parts[np.argmin(fM[parts])]
+        assert abs(fM[j] - M[i]) <= 1e-12 * max(1.0, abs(M[i])), (prob.names[i], fM[parts], M[i])
+        gap = np.sort(fM[parts])[1] - fM[j] if parts.size > 1 else np.inf
+        if gap > 1e-9:   # off the kink, the gradient is that part's
+            assert np.allclose(fGM[j], GM[i], rtol=1e-7, atol=1e-7), (prob.names[i], fGM[j], GM[i])
+
+
+@SETTINGS
+@given(designs())
+def test_part_gradients_match_central_differences(d):
+    """Interference's two parts (above the limit point, above the base circle) are smooth."""
+    m, rack, ts = d["m"], d["rack"], d["ts"]
+    geo = _core_float(m, d["z1"], d["z2"], d["x1"], d["x2"], rack, ts)
+    h = 1e-6
+    for check in make_checks():
+        an = np.array(check.part_gradients(geo), dtype=float)
+        for j, (dx1, dx2) in enumerate(((h, 0.0), (0.0, h))):
+            up = _core_float(m, d["z1"], d["z2"], d["x1"] + dx1, d["x2"] + dx2, rack, ts)
+            dn = _core_float(m, d["z1"], d["z2"], d["x1"] - dx1, d["x2"] - dx2, rack, ts)
+            fd = (np.array(check.part_margins(up)) - np.array(check.part_margins(dn))) / (2 * h)
+            assert np.allclose(an[:, j], fd, rtol=1e-6, atol=1e-6), (check.name, j, an[:, j], fd)
 
 
 @SETTINGS
