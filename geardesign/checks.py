@@ -324,7 +324,7 @@ def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: flo
 def resolve_checks(checks) -> tuple[Check, ...]:
     """Accept None (defaults), a dict of :func:`make_checks` keywords, or a sequence of Checks."""
     if checks is None:
-        return make_checks()
+        return _DEFAULT_CHECKS
     if isinstance(checks, dict):
         try:
             return make_checks(**checks)
@@ -337,6 +337,9 @@ def resolve_checks(checks) -> tuple[Check, ...]:
         if not isinstance(c, Check):
             raise GearDesignError(f"checks must be Check objects, got {c!r}")
     return checks
+
+
+_DEFAULT_CHECKS = make_checks()
 
 
 def evaluate(geo: dict, checks) -> pd.DataFrame:

@@ -11,6 +11,7 @@ inv α_a from tan α_a (no arccos near 1); inv itself from a series at small ang
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, fields
 from types import SimpleNamespace
@@ -139,17 +140,28 @@ def _float_tan_from_inv(v: float) -> float:
     return _tan_from_inv_float(v) if v > 0.0 else math.nan
 
 
+def _per_distinct(func, v):
+    """func(v) for an array v, evaluated once per distinct value when v repeats a lot: on a
+    grid of (x1, x2) the operating angle depends on x1 + x2 alone, which takes ~2n of n² values."""
+    if v.size >= 256:
+        u, where = np.unique(v, return_inverse=True)
+        if 4 * u.size <= v.size:
+            return tuple(r[where].reshape(v.shape) for r in func(u))
+    return func(v)
+
+
 # Elementwise functions for arrays (numpy) and for one design in Python floats: the same
 # formulas run on either; floats skip numpy's per-call overhead (~1 µs a call), which is
 # what a single-pair optimiser pays ~200 times per evaluation.
 _ARRAY_OPS = SimpleNamespace(
     sqrt=np.sqrt, sin=np.sin, atan=np.arctan, degrees=np.degrees,
     positive=lambda v: np.maximum(v, 0.0), t_minus_atan=_t_minus_atan,
-    tan_from_inv=lambda v: tan_from_inv(np.where(v > 0, v, np.nan), validate=False))
+    tan_from_inv=lambda v: tan_from_inv(np.where(v > 0, v, np.nan), validate=False),
+    per_distinct=_per_distinct)
 _FLOAT_OPS = SimpleNamespace(
     sqrt=_float_sqrt, sin=math.sin, atan=math.atan, degrees=math.degrees,
     positive=lambda v: v if v > 0.0 else 0.0 * v, t_minus_atan=lambda t: _t_minus_atan(t, _float_sqrt),
-    tan_from_inv=_float_tan_from_inv)
+    tan_from_inv=_float_tan_from_inv, per_distinct=lambda func, v: func(v))
 
 
 def _core(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool) -> dict:
@@ -170,19 +182,19 @@ def _core_float(m: float, z1: float, z2: float, x1: float, x2: float, rack: Basi
         return {k: float(v) for k, v in geo.items()}
 
 
-def _formulas(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool, ops) -> dict:
-    alpha = rack.alpha
-    sa, ca, ta = math.sin(alpha), math.cos(alpha), math.tan(alpha)
-    inv_a = _t_minus_atan(ta, math.sqrt)
-    zs = z1 + z2
-    xs = x1 + x2
+@functools.lru_cache(maxsize=64)
+def _inv_alpha(alpha: float) -> float:
+    """inv α of the rack (the same float on both backends)."""
+    return _t_minus_atan(math.tan(alpha), math.sqrt)
 
-    inv_aw = inv_a + 2.0 * xs * ta / zs
+
+def _operating_angle(D, alpha, ta, inv_a, ops):
+    """inv α_w, tan α_w and α_w − α from D = inv α_w − inv α = 2 x_Σ tan α / z_Σ."""
+    inv_aw = inv_a + D
     t_w = ops.tan_from_inv(inv_aw)
     # Refine Δt = tan α_w − tan α itself, so that α_w − α keeps its digits when it is small:
     # inv α_w − inv α = Δt·t t_w/(1 + t t_w) + (u − atan u), u = Δt/(1 + t t_w), two terms
     # of one sign; Newton with d(inv α_w)/dΔt = t_w²/(1 + t_w²).
-    D = 2.0 * xs * ta / zs
     dt = t_w - ta
     for _ in range(2):
         t_w = ta + dt
@@ -191,7 +203,18 @@ def _formulas(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool, ops) -> 
         resid = dt * ta * t_w / q + ops.t_minus_atan(u) - D
         dt = dt - resid * (1.0 + t_w * t_w) / (t_w * t_w)
     t_w = ta + dt
-    delta = ops.atan(dt / (1.0 + ta * t_w))     # α_w − α
+    return inv_aw, t_w, ops.atan(dt / (1.0 + ta * t_w))
+
+
+def _formulas(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool, ops) -> dict:
+    alpha = rack.alpha
+    sa, ca, ta = math.sin(alpha), math.cos(alpha), math.tan(alpha)
+    inv_a = _inv_alpha(alpha)
+    zs = z1 + z2
+    xs = x1 + x2
+
+    inv_aw, t_w, delta = ops.per_distinct(lambda D: _operating_angle(D, alpha, ta, inv_a, ops),
+                                          2.0 * xs * ta / zs)
     cos_w = 1.0 / ops.sqrt(1.0 + t_w * t_w)
     sin_w = t_w * cos_w
     alpha_w = alpha + delta

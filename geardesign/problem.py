@@ -41,6 +41,7 @@ OBJECTIVES = {
 }
 
 _FD_STEP = 1e-6
+_DEFAULT_RACK = BasicRack()
 
 
 class Problem:
@@ -55,7 +56,7 @@ class Problem:
         self.z1 = int(require_int("z1", z1, Z_MIN))
         self.z2 = int(require_int("z2", z2, Z_MIN))
         self.m = float(require_positive("m (module)", m, unit="mm"))
-        self.rack = rack or BasicRack()
+        self.rack = rack or _DEFAULT_RACK
         if not isinstance(self.rack, BasicRack):
             raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(self.rack).__name__}")
         self.checks = _checks.resolve_checks(checks)
@@ -225,7 +226,9 @@ class Problem:
         else:
             P = np.array(self._piece_values(geo), dtype=float)
             GP = np.array(self._piece_gradient_values(geo), dtype=float).reshape(-1, 2)
-        return P, np.where(np.isnan(M), -np.inf, M), GP, GM
+        if np.isnan(M).any():
+            M = np.where(np.isnan(M), -np.inf, M)
+        return P, M, GP, GM
 
     def _free(self, G):
         """Gradients in (x1, x2) → in the free variables (d/dx1 along x2 = x_sum − x1)."""

@@ -19,6 +19,7 @@ rise of each active limit (for undercut and interference, per unit of extra marg
 """
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 import time
@@ -37,7 +38,7 @@ __all__ = ["optimize_shifts", "ShiftResult", "METHODS", "smallest_conflict"]
 
 METHODS = ("grid", "convex", "exact")
 DEFAULT_TOL = {"grid": 1e-2, "convex": 1e-7, "exact": 1e-9}
-_START_N = 41          # grid nodes per axis for the start of convex and exact
+_START_N = 31          # grid nodes per axis for the start of convex and exact (spacing 0.15)
 _BIG = 1e3             # stands in for −inf margins inside the smooth solvers
 
 
@@ -125,9 +126,16 @@ def grid_points(prob: Problem, n: int, bounds) -> np.ndarray:
         lo1 = max(lo, prob.x_sum - hi)
         hi1 = min(hi, prob.x_sum - lo)
         return np.linspace(lo1, hi1, n)[:, None]
+    return _square_grid(n, float(lo), float(hi))
+
+
+@functools.lru_cache(maxsize=16)
+def _square_grid(n: int, lo: float, hi: float) -> np.ndarray:
     g = np.linspace(lo, hi, n)
     X1, X2 = np.meshgrid(g, g, indexing="ij")
-    return np.column_stack([X1.ravel(), X2.ravel()])
+    V = np.column_stack([X1.ravel(), X2.ravel()])
+    V.flags.writeable = False
+    return V
 
 
 def _best_feasible(prob: Problem, V: np.ndarray):
@@ -157,18 +165,19 @@ class _Evaluator:
         self.key = None
         self.nfev = 0
         self.window = window
+        if window is not None:
+            eye = np.eye(prob.nvar)
+            self._window_rows = np.concatenate((eye, -eye))
 
     def __call__(self, v):
-        v = np.asarray(v, dtype=float)
-        key = v.tobytes()
+        key = tuple(float(c) for c in v)
         if key != self.key:
-            P, M, GP, GM = self.prob.evaluate_point(v)
+            v = np.array(key)
+            P, M, GP, GM = self.prob.evaluate_point(key)
             if self.window is not None:
-                eye = np.eye(v.size)
-                M = np.concatenate([M, v - self.window[0], self.window[1] - v])
-                GM = np.vstack([GM, eye, -eye])
-            bad = ~np.isfinite(M)
-            if bad.any() or not np.isfinite(P).all():
+                M = np.concatenate((M, v - self.window[0], self.window[1] - v))
+                GM = np.concatenate((GM, self._window_rows))
+            if not (np.isfinite(M).all() and np.isfinite(P).all()):
                 P, M = np.nan_to_num(P, nan=-_BIG, neginf=-_BIG), np.nan_to_num(M, nan=-_BIG, neginf=-_BIG)
                 GP, GM = np.nan_to_num(GP), np.nan_to_num(GM)
             self.val = (P, M, GP, GM)
@@ -213,16 +222,40 @@ def _slsqp(prob: Problem, v0, bounds, ftol=1e-15, maxiter=200, pieces_only=False
 
 # --- the exact method: KKT systems of candidate active sets, solved by Newton ---------------
 
-def _rows(GP, GM, act_p, act_m):
-    """Gradients in w = (v, t) of the active constraints piece_k − t and margin_i."""
-    return ([np.append(GP[k], -1.0) for k in act_p] + [np.append(GM[i], 0.0) for i in act_m])
+# These systems have at most three unknowns; they are solved in Python floats, where a
+# numpy call (~10 µs for np.linalg.solve) would cost more than the arithmetic.
+
+def _rows(GP, GM, act_p, act_m) -> list:
+    """Gradients in w = (v, t) of the active constraints piece_k − t and margin_i, as rows."""
+    return [GP[k].tolist() + [-1.0] for k in act_p] + [GM[i].tolist() + [0.0] for i in act_m]
+
+
+def _solve_small(A: list, b: list) -> list:
+    """x with A x = b for a square system of a few rows: Gaussian elimination with partial
+    pivoting. Raises LinAlgError when A is singular to working precision."""
+    n = len(b)
+    A = [row[:] + [bi] for row, bi in zip(A, b)]
+    scale = max((abs(a) for row in A for a in row[:n]), default=0.0)
+    for c in range(n):
+        p = max(range(c, n), key=lambda r: abs(A[r][c]))
+        if abs(A[p][c]) <= 1e-14 * scale:
+            raise np.linalg.LinAlgError("singular active-set system")
+        A[c], A[p] = A[p], A[c]
+        for r in range(c + 1, n):
+            f = A[r][c] / A[c][c]
+            if f:
+                A[r] = [a - f * ac for a, ac in zip(A[r], A[c])]
+    x = [0.0] * n
+    for c in range(n - 1, -1, -1):
+        x[c] = (A[c][n] - sum(A[c][k] * x[k] for k in range(c + 1, n))) / A[c][c]
+    return x
 
 
 def _stationarity(rows, nv):
     """det [e_t; rows] / Π‖row‖: zero when e_t lies in the span of the nv active gradients,
     i.e. the Lagrangian is stationary with one active constraint fewer than variables + 1."""
     if nv == 1:
-        return -rows[0][0] / math.hypot(*rows[0])
+        return -rows[0][0] / math.hypot(rows[0][0], rows[0][1])
     (a0, a1, a2), (b0, b1, b2) = rows
     return (a0 * b1 - a1 * b0) / (math.sqrt(a0 * a0 + a1 * a1 + a2 * a2) * math.sqrt(b0 * b0 + b1 * b1 + b2 * b2))
 
@@ -234,40 +267,43 @@ def _kkt_newton(ev: _Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxi
     by Broyden's update (one evaluation per step instead of nv + 1).
     Returns (w, iterations) or None when it diverges, leaves ``max_move`` or stalls."""
     edge = len(act_p) + len(act_m) == nv
-    w = np.array(w0, dtype=float)
+    w0 = [float(c) for c in w0]
+    w = w0[:]
 
     def system(w):
         P, M, GP, GM = ev(w[:nv])
         rows = _rows(GP, GM, act_p, act_m)
-        F = [P[k] - w[nv] for k in act_p] + [M[i] for i in act_m]
+        F = [float(P[k]) - w[nv] for k in act_p] + [float(M[i]) for i in act_m]
         if edge:
             F.append(_stationarity(rows, nv))
-        return np.array(F), rows
+        return F, rows
 
     F, rows = system(w)
     if edge:
-        srow = np.zeros(nv + 1)
+        srow = [0.0] * (nv + 1)
         for j in range(nv):
             step = 1e-7 * max(1.0, abs(w[j]))
-            vj = w[:nv].copy()
+            vj = w[:nv]
             vj[j] += step
             _, _, GPj, GMj = ev(vj)
             srow[j] = (_stationarity(_rows(GPj, GMj, act_p, act_m), nv) - F[-1]) / step
     for it in range(1, maxit + 1):
         try:
-            dw = np.linalg.solve(np.array(rows + [srow] if edge else rows), -F)
+            dw = _solve_small(rows + [srow] if edge else rows, [-f for f in F])
         except np.linalg.LinAlgError:
             return None
-        w = w + dw
-        if not np.all(np.isfinite(w)) or np.max(np.abs(w[:nv] - w0[:nv])) > max_move:
+        w = [a + d for a, d in zip(w, dw)]
+        if not all(map(math.isfinite, w)) or max(abs(a - b) for a, b in zip(w[:nv], w0)) > max_move:
             return None
         F_old = F
         F, rows = system(w)
         if edge:   # Broyden: the row's directional derivative along the step matches the change
-            srow = srow + (F[-1] - F_old[-1] - srow @ dw) * dw / (dw @ dw)
-        if np.max(np.abs(dw[:nv])) <= 1e-13 * max(1.0, np.max(np.abs(w[:nv]))) or np.max(np.abs(F)) == 0.0:
+            dd = sum(d * d for d in dw)
+            r = (F[-1] - F_old[-1] - sum(a * d for a, d in zip(srow, dw))) / dd
+            srow = [a + r * d for a, d in zip(srow, dw)]
+        if max(map(abs, dw[:nv])) <= 1e-13 * max(1.0, max(map(abs, w[:nv]))) or max(map(abs, F)) == 0.0:
             break
-    return (w, it) if np.max(np.abs(F)) <= 1e-10 else None
+    return (np.array(w), it) if max(map(abs, F)) <= 1e-10 else None
 
 
 def _multipliers(prob: Problem, w, act_p, act_m, ev):
@@ -277,7 +313,12 @@ def _multipliers(prob: Problem, w, act_p, act_m, ev):
     rows = _rows(GP, GM, act_p, act_m)
     if not rows:
         return np.zeros(0), np.zeros(0)
-    lam, *_ = np.linalg.lstsq(np.array(rows).T, -np.append(np.zeros(nv), 1.0), rcond=None)
+    # least squares by the normal equations R Rᵀ λ = −R e_t: at most nv + 1 well-scaled rows
+    A = [[sum(a * b for a, b in zip(r1, r2)) for r2 in rows] for r1 in rows]
+    try:
+        lam = np.array(_solve_small(A, [-r[-1] for r in rows]))
+    except np.linalg.LinAlgError:
+        lam, *_ = np.linalg.lstsq(np.array(rows).T, -np.append(np.zeros(nv), 1.0), rcond=None)
     return lam[:len(act_p)], lam[len(act_p):]
 
 
@@ -305,7 +346,10 @@ def _first_kkt_point(prob: Problem, ev: _Evaluator, w0, near_p, near_m, max_move
     nv = prob.nvar
     t0 = w0[nv]
     nit = 0
-    for act_p, act_m in _active_sets(near_p, near_m, nv)[:limit]:
+    cands = _active_sets(near_p, near_m, nv)
+    if len(cands) > 1:   # try first the sets whose multipliers, linearised at w0, are >= 0
+        cands.sort(key=lambda c: min(np.concatenate(_multipliers(prob, w0, *c, ev)), default=0.0) < 0)
+    for act_p, act_m in cands[:limit]:
         out = _kkt_newton(ev, nv, act_p, act_m, w0, max_move)
         if out is None:
             continue
@@ -324,14 +368,14 @@ def _first_kkt_point(prob: Problem, ev: _Evaluator, w0, near_p, near_m, max_move
 def _near(ev: _Evaluator, nv: int, w, reach: float, most: int = 4):
     """Pieces and margins whose boundary (to first order) lies within ``reach`` of w in x."""
     P, M, GP, GM = ev(w[:nv])
-    t = w[nv]
     k0 = int(np.argmin(P))
-    dist_p = [(P[k] - t) / max(np.linalg.norm(GP[k] - GP[k0]), 1e-300) if k != k0 else 0.0
-              for k in range(P.size)]
-    dist_m = [M[i] / max(np.linalg.norm(GM[i]), 1e-300) for i in range(M.size)]
-    near_p = [k for k in np.argsort(dist_p)[:most] if dist_p[k] <= reach]
-    near_m = [i for i in np.argsort(dist_m)[:most] if dist_m[i] <= reach]
-    return sorted(int(k) for k in near_p), sorted(int(i) for i in near_m)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        dist_p = (P - w[nv]) / np.sqrt(((GP - GP[k0]) ** 2).sum(axis=1))
+        dist_m = M / np.sqrt((GM ** 2).sum(axis=1))
+    dist_p[k0] = 0.0
+    near_p = [int(k) for k in np.argsort(dist_p)[:most] if dist_p[k] <= reach]
+    near_m = [int(i) for i in np.argsort(dist_m)[:most] if dist_m[i] <= reach]
+    return sorted(near_p), sorted(near_m)
 
 
 def _polish(prob: Problem, w, ev: _Evaluator, tol: float, act_tol=1e-5):
@@ -533,14 +577,13 @@ def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: s
     if not lo < hi:
         raise GearDesignError(f"bounds must be (lo, hi) with lo < hi, got {bounds!r}")
     x_sum = None
-    prob0 = Problem(z1, z2, rack, checks, objective, m, tip_shortening)
+    prob = Problem(z1, z2, rack, checks, objective, m, tip_shortening)
     if a_w is not None:
         a_w = float(require_positive("a_w (center distance)", a_w, unit="mm"))
-        a_ref = prob0.m * (prob0.z1 + prob0.z2) / 2.0
-        if a_w <= a_ref * math.cos(prob0.rack.alpha):
-            raise GearDesignError(f"a_w = {a_w:g} mm must be > a·cos(alpha) = {a_ref * math.cos(prob0.rack.alpha):.6g} mm")
-        x_sum = float(x_sum_from_center_distance(prob0.m, prob0.z1, prob0.z2, a_w, prob0.rack))
-    prob = Problem(z1, z2, rack, checks, objective, m, tip_shortening, x_sum)
+        a_ref = prob.m * (prob.z1 + prob.z2) / 2.0
+        if a_w <= a_ref * math.cos(prob.rack.alpha):
+            raise GearDesignError(f"a_w = {a_w:g} mm must be > a·cos(alpha) = {a_ref * math.cos(prob.rack.alpha):.6g} mm")
+        x_sum = prob.x_sum = float(x_sum_from_center_distance(prob.m, prob.z1, prob.z2, a_w, prob.rack))
     bounds = (lo, hi)
 
     def finish(v, nit, success, message, sensitivity=None, conflict=None):
