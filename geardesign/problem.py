@@ -68,6 +68,9 @@ class Problem:
         self.names = [c.name for c in self.checks]
         # the smooth parts the solvers see (see Check.part_margins): part -> index of its check
         self.part_check = [i for i, c in enumerate(self.checks) for _ in range(c.n_parts)]
+        # gradients that are central differences carry ~1e-10 noise, their derivatives more
+        self.fd_gradients = (self.objective.kind == "margin"
+                             or any(isinstance(c, _checks.CustomCheck) for c in self.checks))
 
     # --- evaluation ---------------------------------------------------------------------
     # The checks and pieces are written once, as formulas on a geometry dict; the dict holds

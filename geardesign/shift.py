@@ -265,13 +265,17 @@ def _stationarity(rows, nv):
     return (a0 * b1 - a1 * b0) / (math.sqrt(a0 * a0 + a1 * a1 + a2 * a2) * math.sqrt(b0 * b0 + b1 * b1 + b2 * b2))
 
 
-def _kkt_newton(ev: _Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxit: int = 30):
+def _kkt_newton(ev: _Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxit: int = 30,
+                noisy: bool = False):
     """Newton on the KKT system of one active set: active pieces = t, active margins = 0 and,
     with one equation short, :func:`_stationarity`. The active rows of the Jacobian are the
     analytic gradients; the stationarity row starts from forward differences and is then kept
     by Broyden's update (one evaluation per step instead of nv + 1).
+    With ``noisy`` gradients (central differences) the stationarity holds to ~1e-9 only, so it
+    is accepted at 1e-8 and the steps stop at 1e-10.
     Returns (w, iterations) or None when it diverges, leaves ``max_move`` or stalls."""
     edge = len(act_p) + len(act_m) == nv
+    step_tol, stat_tol = (1e-10, 1e-8) if noisy else (1e-13, 1e-10)
     w0 = [float(c) for c in w0]
     w = w0[:]
 
@@ -287,7 +291,7 @@ def _kkt_newton(ev: _Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxi
     if edge:
         srow = [0.0] * (nv + 1)
         for j in range(nv):
-            step = 1e-7 * max(1.0, abs(w[j]))
+            step = 1e-5 * max(1.0, abs(w[j]))   # gradients may be differences themselves
             vj = w[:nv]
             vj[j] += step
             _, _, GPj, GMj = ev(vj)
@@ -306,9 +310,10 @@ def _kkt_newton(ev: _Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxi
             dd = sum(d * d for d in dw)
             r = (F[-1] - F_old[-1] - sum(a * d for a, d in zip(srow, dw))) / dd
             srow = [a + r * d for a, d in zip(srow, dw)]
-        if max(map(abs, dw[:nv])) <= 1e-13 * max(1.0, max(map(abs, w[:nv]))) or max(map(abs, F)) == 0.0:
+        if max(map(abs, dw[:nv])) <= step_tol * max(1.0, max(map(abs, w[:nv]))) or max(map(abs, F)) == 0.0:
             break
-    return (np.array(w), it) if max(map(abs, F)) <= 1e-10 else None
+    ok = max(map(abs, F[:-1] if edge else F), default=0.0) <= 1e-10 and (not edge or abs(F[-1]) <= stat_tol)
+    return (np.array(w), it) if ok else None
 
 
 def _multipliers(prob: Problem, w, act_p, act_m, ev):
@@ -355,7 +360,7 @@ def _first_kkt_point(prob: Problem, ev: _Evaluator, w0, near_p, near_m, max_move
     if len(cands) > 1:   # try first the sets whose multipliers, linearised at w0, are >= 0
         cands.sort(key=lambda c: min(np.concatenate(_multipliers(prob, w0, *c, ev)), default=0.0) < 0)
     for act_p, act_m in cands[:limit]:
-        out = _kkt_newton(ev, nv, act_p, act_m, w0, max_move)
+        out = _kkt_newton(ev, nv, act_p, act_m, w0, max_move, noisy=prob.fd_gradients)
         if out is None:
             continue
         w, it = out
