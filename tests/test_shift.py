@@ -33,6 +33,7 @@ def reference_optimum(z1, z2, fun, checks=None, sense=+1, lo=-1.5, hi=3.0, n=41,
         half = np.full(x1.shape, (hi - lo) / 2)
         for level in range(levels):
             X2 = c2[:, None] + half[:, None] * np.linspace(-1, 1, 12 * n if level == 0 else n)[None, :]
+            X2 = np.clip(X2, lo, hi)     # the zoom stays inside the window
             X1 = np.broadcast_to(x1[:, None], X2.shape)
             s = scores(X1, X2)
             j = np.argmax(s, axis=1)
@@ -42,7 +43,7 @@ def reference_optimum(z1, z2, fun, checks=None, sense=+1, lo=-1.5, hi=3.0, n=41,
 
     c1, half1 = (lo + hi) / 2, (hi - lo) / 2
     for level in range(levels):
-        x1 = c1 + half1 * np.linspace(-1, 1, 12 * n if level == 0 else n)
+        x1 = np.clip(c1 + half1 * np.linspace(-1, 1, 12 * n if level == 0 else n), lo, hi)
         x2, s = inner(x1)
         i = int(np.argmax(s))
         assert np.isfinite(s[i]), "reference found no feasible point"
@@ -74,6 +75,27 @@ def test_max_eps_alpha_matches_reference(z1, z2):
 def test_balanced_sliding_matches_reference(z1, z2):
     ref = reference_optimum(z1, z2, lambda g: np.maximum(abs(g["sliding1_root"]), abs(g["sliding2_root"])), sense=-1)
     r = gd.optimize_shifts(z1, z2, "balanced_sliding", method="exact")
+    assert abs(r.x1 - ref[0]) < 1e-6 and abs(r.x2 - ref[1]) < 1e-6
+
+
+def test_optimum_on_the_window_edge_matches_reference():
+    """With ε_α >= 1.0 alone, 40/120 runs into the window (x2 = 3): a vertex of the window's
+    edge and the contact ratio, which the exact method solves like any other vertex."""
+    checks = (ck.ContactRatio(limit=1.0),)
+    ref = reference_optimum(40, 120, lambda g: g["_x1"] + g["_x2"], checks=checks)
+    r = gd.optimize_shifts(40, 120, "max_x_sum", checks=checks)
+    assert r.success and "grid node" in r.message
+    assert abs(r.x2 - 3.0) < 1e-12 and r.active == ["contact_ratio"]
+    assert abs(r.x1 - ref[0]) < 1e-6 and abs(r.x2 - ref[1]) < 1e-6
+
+
+def test_custom_check_with_difference_gradients_matches_reference():
+    """A user's check (no analytic gradient: central differences) limiting the centre distance."""
+    a_w_max = ck.CustomCheck(name="a_w_max", func=lambda g: g["a_w"], limit=22.2, sense="<=")
+    checks = ck.make_checks(extra=(a_w_max,))
+    ref = reference_optimum(17, 26, lambda g: g["eps_alpha"], checks=checks)
+    r = gd.optimize_shifts(17, 26, "max_eps_alpha", checks=checks)
+    assert r.success
     assert abs(r.x1 - ref[0]) < 1e-6 and abs(r.x2 - ref[1]) < 1e-6
 
 
