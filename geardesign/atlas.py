@@ -54,7 +54,7 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, rack, tip_shortening, iters: int
         geo = _core(1.0, z1, z2, x1, x2, rack, tip_shortening)
         return geo, proto.margins(geo), proto.margin_gradients(geo)
 
-    def pgrad(geo, x1, x2):
+    def pgrad(geo):
         return proto.piece_gradients(geo)[0]
 
     for _ in range(iters):
@@ -63,7 +63,7 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, rack, tip_shortening, iters: int
             geo, M, G = grads_at(x1, x2)
         ma, ga = M[a_idx, rows], G[a_idx, :, rows]
         mb, gb = M[b_idx, rows], G[b_idx, :, rows]
-        gp = pgrad(geo, x1, x2).T                       # (n, 2)
+        gp = pgrad(geo).T                               # (n, 2)
         # the stationarity residual of edge candidates and its derivative by differences
         cross = gp[:, 0] * ga[:, 1] - gp[:, 1] * ga[:, 0]
         dcross = np.empty((len(rows), 2))
@@ -72,7 +72,7 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, rack, tip_shortening, iters: int
             for sgn in (1.0, -1.0):
                 geo_s = _core(1.0, z1, z2, x1 + sgn * dx1, x2 + sgn * dx2, rack, tip_shortening)
                 G_s = proto.margin_gradients(geo_s)[a_idx, :, rows]
-                P_s = pgrad(geo_s, x1 + sgn * dx1, x2 + sgn * dx2).T
+                P_s = pgrad(geo_s).T
                 (gp_ if sgn > 0 else gp__).append(P_s[:, 0] * G_s[:, 1] - P_s[:, 1] * G_s[:, 0])
             dcross[:, j] = (gp_[0] - gp__[0]) / (2 * h)
         r2 = np.where(is_v, mb, cross)
@@ -86,7 +86,7 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, rack, tip_shortening, iters: int
         X = X - np.clip(np.column_stack([d1, d2]), -0.2, 0.2)
     x1, x2 = X[:, 0], X[:, 1]
     geo, M, G = grads_at(x1, x2)
-    gp = pgrad(geo, x1, x2).T
+    gp = pgrad(geo).T
     ma, mb = M[a_idx, rows], M[b_idx, rows]
     ga, gb = G[a_idx, :, rows], G[b_idx, :, rows]
     cross = gp[:, 0] * ga[:, 1] - gp[:, 1] * ga[:, 0]

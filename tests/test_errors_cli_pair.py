@@ -1,7 +1,6 @@
 """Bad input raises GearDesignError naming the input, its value and the allowed range;
 the `geardesign pair` command prints tables, JSON, and one-line errors."""
 import json
-import math
 import os
 import subprocess
 import sys
