@@ -147,9 +147,10 @@ class Interference(Check):
         return rho_l * (rho_l > 0) / geo["_m"]      # max(ρ_l, 0), for arrays and floats alike
 
     def gradient(self, geo):
-        limit_point, base_circle = self.part_gradients(geo)
-        on = geo[f"rho_l{self.gear}"] > 0
-        return tuple(on * a + (1 - on) * b for a, b in zip(limit_point, base_circle))
+        # the limit-point part where ρ_l > 0 (it is the smaller there), else the base-circle part
+        g1, g2 = self.part_gradients(geo)[1]
+        own = (geo[f"rho_l{self.gear}"] > 0) / geo["_sa"]
+        return (g1 - own, g2) if self.gear == 1 else (g1, g2 - own)
 
     def part_margins(self, geo):
         """(ρ_p − ρ_l)/m and ρ_p/m: above the limit point and above the base circle."""

@@ -398,6 +398,19 @@ def _polish(prob: Problem, w, ev: _Evaluator, tol: float, act_tol=1e-5):
     return None if found is None else found[:3]
 
 
+def _sensitivities(prob: Problem, parts, lams) -> dict:
+    """d(fun)/d(limit) of each check from the multipliers of its active smooth parts (indices
+    past the checks' parts are window edges and have no limit); none for ``max_margin``."""
+    if prob.objective.kind == "margin":
+        return {}
+    sens = {}
+    for j, lam in zip(parts, lams):
+        if j < len(prob.part_check):
+            c = prob.checks[prob.part_check[j]]
+            sens[c.name] = sens.get(c.name, 0.0) - prob.objective.sense * float(lam) * _limit_factor(c)
+    return sens
+
+
 # --- the convex (SCP) method ----------------------------------------------------------------
 
 _SCP_CACHE: dict = {}
@@ -495,7 +508,6 @@ def _solve_convex(prob: Problem, v0, bounds, tol, maxit=100):
             if M.size:
                 lam_m = np.asarray(cons[3].dual_value, dtype=float)
             L = _curvature(ev, v, lam_p, lam_m)
-            ev(v)   # back to the iterate in the cache
             if predicted > 0 and actual > 0.75 * predicted and np.max(np.abs(step)) > 0.9 * radius:
                 radius = min(2 * radius, 1.0)
             if np.max(np.abs(step)) < 0.01 * tol:   # the next SQP step would be ~(tol/100)²
@@ -628,10 +640,11 @@ def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: s
         return finish(V[i], 1, True, f"best of {V.shape[0]} grid nodes (spacing {h:.3g})")
 
     # a feasible start for convex and exact
+    n_start = _START_N if prob.nvar == 2 else 401
     if start is not None and prob.nvar == 2:
         V = np.asarray(start, dtype=float).reshape(1, 2)
     else:
-        V = grid_points(prob, _START_N if prob.nvar == 2 else 401, bounds)
+        V = grid_points(prob, n_start, bounds)
     i, P, M = _best_feasible(prob, V)
     if i is None and start is not None and prob.nvar == 2:
         V = grid_points(prob, _START_N, bounds)
@@ -648,16 +661,11 @@ def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: s
     else:
         v0 = V[i]
 
-    sense = prob.objective.sense if prob.objective.kind != "margin" else 1.0
     if method == "convex":
         v, nit, lam, ev = _solve_convex(prob, v0, bounds, tol)
         Pv, Mv, _, _ = ev(v)
-        sens = {}
-        if prob.objective.kind != "margin":
-            for i, lam_i, mi in zip(prob.part_check, lam, Mv):
-                if abs(mi) <= 10 * tol and lam_i > 1e-9:
-                    c = prob.checks[i]
-                    sens[c.name] = sens.get(c.name, 0.0) + float(-sense * lam_i * _limit_factor(c))
+        active = [j for j, (lam_j, m_j) in enumerate(zip(lam, Mv)) if abs(m_j) <= 10 * tol and lam_j > 1e-9]
+        sens = _sensitivities(prob, active, lam[active])
         ok = not (Mv.size and Mv.min() < -tol)
         msg = "converged: trust region below tol" if ok else "stopped with a check violated beyond tol"
         return finish(v, nit, ok, msg, sens)
@@ -665,7 +673,7 @@ def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: s
     # exact: Newton on the KKT systems of the checks that pass near the start (the window's
     # edges count as checks); SLSQP, then that polish, only when none gives a KKT point
     nv = prob.nvar
-    h = (hi - lo) / ((_START_N if nv == 2 else 401) - 1)
+    h = (hi - lo) / (n_start - 1)
     ev = _Evaluator(prob, window=_window(prob, bounds))
     w0 = np.append(v0, ev(v0)[0].min())
     found = _first_kkt_point(prob, ev, w0, *_near(ev, nv, w0, reach=2.2 * h), max_move=3 * h)
@@ -684,12 +692,7 @@ def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: s
             act_m = [k for k in range(M.size) if M[k] < 1e-6]
             msg = "converged (SLSQP; active-set polish not applicable)"
     lp, lm = _multipliers(prob, w, act_p, act_m, ev)
-    sens = {}
-    if prob.objective.kind != "margin":
-        for i_m, lam_i in zip(act_m, lm):
-            if i_m < len(prob.part_check):      # not a window edge
-                c = prob.checks[prob.part_check[i_m]]
-                sens[c.name] = sens.get(c.name, 0.0) + float(-sense * lam_i * _limit_factor(c))
+    sens = _sensitivities(prob, act_m, lm)
     Mv = ev(w[:nv])[1][:len(prob.part_check)]
     ok = not (Mv.size and Mv.min() < -tol)
     return finish(w[:nv], nit, ok, msg if ok else "a check is violated beyond tol", sens)
