@@ -16,6 +16,10 @@ __all__ = [
     "require_positive",
     "require_range",
     "require_int",
+    "require_count",
+    "require_choice",
+    "require_bool",
+    "broadcast_inputs",
 ]
 
 
@@ -28,9 +32,12 @@ class CatalogError(GearDesignError):
 
 
 def _show(value) -> str:
-    arr = np.asarray(value)
+    try:
+        arr = np.asarray(value)
+    except Exception:   # ragged lists and the like
+        return _short(value)
     if arr.ndim == 0:
-        return repr(value.item() if hasattr(value, "item") else value)
+        return _short(value.item() if hasattr(value, "item") else value)
     return f"array of shape {arr.shape}"
 
 
@@ -43,9 +50,11 @@ def _first_bad(arr: np.ndarray, bad: np.ndarray) -> str:
 
 def require_finite(name: str, value) -> np.ndarray:
     """Return ``value`` as a float array; raise if any element is NaN or infinite."""
+    if isinstance(value, (str, bytes, bool, np.bool_)):
+        raise GearDesignError(f"{name} must be a number, got {_short(value)}")
     try:
         arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise GearDesignError(f"{name} must be a number, got {_show(value)}") from None
     bad = ~np.isfinite(arr)
     if bad.any():
@@ -78,23 +87,69 @@ def require_range(name: str, value, lo: float, hi: float, *, lo_open=False, hi_o
     return arr
 
 
-def require_int(name: str, value, minimum: int) -> np.ndarray:
-    """Whole numbers (an int, or a float with no fractional part) >= minimum."""
-    if isinstance(value, bool):
-        raise GearDesignError(f"{name} must be a whole number >= {minimum}, got {value!r}")
+def require_int(name: str, value, minimum: int, maximum: int | None = None) -> np.ndarray:
+    """Whole numbers (an int, or a float with no fractional part) in [minimum, maximum].
+
+    ``maximum`` defaults to 10**15 so that every accepted value is exact in int64 and a float
+    such as 1e308 is refused by name instead of wrapping around.
+    """
+    hi = _INT_MAX if maximum is None else int(maximum)
+    rng = f"in [{minimum}, {hi:.6g}]"
+    if isinstance(value, (bool, np.bool_)) or isinstance(value, (str, bytes)):
+        raise GearDesignError(f"{name} must be a whole number {rng}, got {value!r}")
     if isinstance(value, numbers.Integral):
-        arr = np.asarray(value, dtype=np.int64)
-    else:
-        farr = require_finite(name, value)
-        frac = farr != np.round(farr)
-        if frac.any():
-            raise GearDesignError(
-                f"{name} must be a whole number >= {minimum}, got {_first_bad(farr, frac)}")
-        arr = farr.astype(np.int64)
-    bad = arr < minimum
+        v = int(value)
+        if not minimum <= v <= hi:
+            raise GearDesignError(f"{name} must be a whole number {rng}, got {_short(v)}")
+        return np.asarray(v, dtype=np.int64)
+    farr = require_finite(name, value)
+    frac = farr != np.round(farr)
+    if frac.any():
+        raise GearDesignError(f"{name} must be a whole number {rng}, got {_first_bad(farr, frac)}")
+    bad = (farr < minimum) | (farr > hi)
     if bad.any():
-        raise GearDesignError(f"{name} must be a whole number >= {minimum}, got {_first_bad(arr, bad)}")
-    return arr
+        raise GearDesignError(f"{name} must be a whole number {rng}, got {_first_bad(farr, bad)}")
+    return farr.astype(np.int64)
+
+
+def require_count(name: str, value, lo: int, hi: int) -> int:
+    """One whole number in [lo, hi]: a size (grid nodes, pairs, values) checked before any work."""
+    if np.ndim(value) != 0:
+        raise GearDesignError(f"{name} must be one whole number in [{lo}, {hi}], got {_show(value)}")
+    return int(require_int(name, value, lo, hi))
+
+
+def require_choice(name: str, value, choices) -> str:
+    """One of ``choices`` (strings); anything else, a list included, is refused by name."""
+    choices = list(choices)
+    if not isinstance(value, str) or value not in choices:
+        raise GearDesignError(f"{name} must be one of {choices}, got {_short(value)}")
+    return value
+
+
+def require_bool(name: str, value) -> bool:
+    """True or False (numpy booleans too); 0/1 and strings are refused."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise GearDesignError(f"{name} must be True or False, got {_short(value)}")
+    return bool(value)
+
+
+def broadcast_inputs(**arrays) -> list[np.ndarray]:
+    """numpy-broadcast the named arrays; shapes that do not broadcast are refused by name."""
+    try:
+        return list(np.broadcast_arrays(*arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"{k} {np.shape(v)}" for k, v in arrays.items())
+        raise GearDesignError(f"input shapes do not broadcast together: {shapes}") from None
+
+
+_INT_MAX = 10**15
+
+
+def _short(value) -> str:
+    """repr of a value, cut to 60 characters (a 400-digit integer must not fill the screen)."""
+    text = repr(value)
+    return text if len(text) <= 60 else text[:40] + f"... ({len(text)} characters)"
 
 
 def is_scalar(*values) -> bool:

@@ -30,9 +30,11 @@ __all__ = [
     "undercut_x_min",
     "GEOMETRY_FIELDS",
     "Z_MIN",
+    "Z_MAX",
 ]
 
-Z_MIN = 3  # smallest tooth count accepted
+Z_MIN = 3        # smallest tooth count accepted
+Z_MAX = 100_000  # largest tooth count accepted (the accuracy tests reach 10 000)
 
 # name -> (unit, description); the order is the order of reports.
 GEOMETRY_FIELDS: dict[str, tuple[str, str]] = {
@@ -319,8 +321,8 @@ def _formulas(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool, ops) -> 
 def validate_inputs(m, z1, z2, x1, x2):
     """Check the raw inputs; return them as arrays (z as integers)."""
     m = require_positive("m (module)", m, unit="mm")
-    z1 = require_int("z1", z1, Z_MIN)
-    z2 = require_int("z2", z2, Z_MIN)
+    z1 = require_int("z1", z1, Z_MIN, Z_MAX)
+    z2 = require_int("z2", z2, Z_MIN, Z_MAX)
     x1 = require_finite("x1", x1)
     x2 = require_finite("x2", x2)
     return m, z1, z2, x1, x2

@@ -13,7 +13,7 @@ import numpy as np
 
 from . import checks as _checks
 from .errors import GearDesignError, require_int, require_positive
-from .geometry import Z_MIN, _core, _core_float
+from .geometry import Z_MAX, Z_MIN, _core, _core_float
 from .rack import BasicRack
 
 __all__ = ["OBJECTIVES", "Problem", "Objective"]
@@ -53,8 +53,8 @@ class Problem:
 
     def __init__(self, z1, z2, rack=None, checks=None, objective="max_x_sum", m=1.0,
                  tip_shortening=True, x_sum=None):
-        self.z1 = int(require_int("z1", z1, Z_MIN))
-        self.z2 = int(require_int("z2", z2, Z_MIN))
+        self.z1 = int(require_int("z1", z1, Z_MIN, Z_MAX))
+        self.z2 = int(require_int("z2", z2, Z_MIN, Z_MAX))
         self.m = float(require_positive("m (module)", m, unit="mm"))
         self.rack = rack or _DEFAULT_RACK
         if not isinstance(self.rack, BasicRack):

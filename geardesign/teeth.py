@@ -31,7 +31,7 @@ import pandas as pd
 from . import catalogs
 from .checks import resolve_checks
 from .errors import GearDesignError, require_int, require_positive, require_range
-from .geometry import Z_MIN, x_sum_from_center_distance
+from .geometry import Z_MAX, Z_MIN, x_sum_from_center_distance
 from .problem import DEFAULT_BOUNDS, OBJECTIVES
 from .rack import BasicRack
 from .shift import METHODS, optimize_shifts
@@ -73,8 +73,8 @@ def _z1_range(z1_range):
         lo, hi = z1_range
     except (TypeError, ValueError):
         raise GearDesignError(f"z1_range must be (min, max), got {z1_range!r}") from None
-    lo = int(require_int("z1_range min", lo, Z_MIN))
-    hi = int(require_int("z1_range max", hi, Z_MIN))
+    lo = int(require_int("z1_range min", lo, Z_MIN, Z_MAX))
+    hi = int(require_int("z1_range max", hi, Z_MIN, Z_MAX))
     if hi < lo:
         raise GearDesignError(f"z1_range must be (min, max) with min <= max, got {z1_range!r}")
     if hi - lo > 2000:

@@ -15,7 +15,7 @@ from geardesign.cli import main
 @pytest.mark.parametrize("kwargs,words", [
     (dict(m=0, z1=17, z2=26), ["m (module)", "0", "> 0"]),
     (dict(m=-1, z1=17, z2=26), ["m (module)", "-1"]),
-    (dict(m=2, z1=2, z2=26), ["z1", ">= 3", "2"]),
+    (dict(m=2, z1=2, z2=26), ["z1", "in [3, 100000]", "2"]),
     (dict(m=2, z1=17.5, z2=26), ["z1", "whole number", "17.5"]),
     (dict(m=2, z1=17, z2=26, x1=float("nan")), ["x1", "finite", "nan"]),
     (dict(m=float("inf"), z1=17, z2=26), ["m (module)", "finite"]),
