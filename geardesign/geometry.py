@@ -19,7 +19,7 @@ from types import SimpleNamespace
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError, require_finite, require_int, require_positive
+from .errors import GearDesignError, require_finite, require_int, require_positive, require_range
 from .involute import _t_minus_atan, _tan_from_inv_float, inv, inv_from_tan, tan_from_inv
 from .rack import BasicRack
 
@@ -27,14 +27,19 @@ __all__ = [
     "Geometry",
     "pair_geometry",
     "x_sum_from_center_distance",
+    "center_distance_from_x_sum",
     "undercut_x_min",
     "GEOMETRY_FIELDS",
     "Z_MIN",
     "Z_MAX",
+    "M_RANGE_MM",
+    "X_ABS_MAX",
 ]
 
 Z_MIN = 3        # smallest tooth count accepted
 Z_MAX = 100_000  # largest tooth count accepted (the accuracy tests reach 10 000)
+M_RANGE_MM = (1e-4, 1e4)   # module: watch gears to mill gears with room to spare; outside, results overflow
+X_ABS_MAX = 10.0           # |x|: beyond a few units the tip or root crosses the base circle anyway
 
 # name -> (unit, description); the order is the order of reports.
 GEOMETRY_FIELDS: dict[str, tuple[str, str]] = {
@@ -129,6 +134,25 @@ def x_sum_from_center_distance(m, z1, z2, a_w, rack: BasicRack = BasicRack()):
     one_minus = (a_w - a * math.cos(alpha)) / a_w
     tan_w = np.sqrt(one_minus * (1.0 + cos_w)) / cos_w
     out = (np.asarray(z1) + z2) * (inv_from_tan(tan_w) - inv(alpha)) / (2.0 * math.tan(alpha))
+    return float(out) if np.ndim(out) == 0 else out
+
+
+def center_distance_from_x_sum(m, z1, z2, x_sum, rack: BasicRack = BasicRack()):
+    """Operating centre distance a_w (mm) at zero backlash for the shift sum ``x_sum``.
+
+    inv α_w = inv α + 2 x_Σ tan α / (z1 + z2);  a_w = a cos α / cos α_w
+    (ISO 21771:2007 eq. (62) and (63)). NaN where inv α_w <= 0 (no such pair).
+
+    >>> round(float(center_distance_from_x_sum(3, 12, 24, 0.960013)), 4)   # KHK: a_w = 56.4999 mm
+    56.4999
+    """
+    alpha = rack.alpha
+    zs = np.asarray(z1, dtype=float) + np.asarray(z2, dtype=float)
+    inv_w = inv(alpha) + 2.0 * np.asarray(x_sum, dtype=float) * math.tan(alpha) / zs
+    ok = inv_w > 0
+    t_w = np.where(ok, tan_from_inv(np.where(ok, inv_w, 1.0)), np.nan)
+    # a cos α / cos α_w = a cos α · √(1 + tan²α_w)
+    out = np.asarray(m, dtype=float) * zs / 2.0 * math.cos(alpha) * np.hypot(1.0, t_w)
     return float(out) if np.ndim(out) == 0 else out
 
 
@@ -320,12 +344,17 @@ def _formulas(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool, ops) -> 
 
 def validate_inputs(m, z1, z2, x1, x2):
     """Check the raw inputs; return them as arrays (z as integers)."""
-    m = require_positive("m (module)", m, unit="mm")
+    m = require_module(m)
     z1 = require_int("z1", z1, Z_MIN, Z_MAX)
     z2 = require_int("z2", z2, Z_MIN, Z_MAX)
-    x1 = require_finite("x1", x1)
-    x2 = require_finite("x2", x2)
+    x1 = require_range("x1", x1, -X_ABS_MAX, X_ABS_MAX)
+    x2 = require_range("x2", x2, -X_ABS_MAX, X_ABS_MAX)
     return m, z1, z2, x1, x2
+
+
+def require_module(m):
+    """The module in mm, inside :data:`M_RANGE_MM`."""
+    return require_range("m (module)", require_positive("m (module)", m, unit="mm"), *M_RANGE_MM, unit="mm")
 
 
 def _first(mask: np.ndarray) -> tuple[str, tuple]:

@@ -12,8 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import checks as _checks
-from .errors import GearDesignError, require_int, require_positive
-from .geometry import Z_MAX, Z_MIN, _core, _core_float
+from .errors import GearDesignError, require_choice, require_int, require_positive
+from .geometry import X_ABS_MAX, Z_MAX, Z_MIN, _core, _core_float, require_module
 from .rack import BasicRack
 
 __all__ = ["OBJECTIVES", "Problem", "Objective"]
@@ -41,6 +41,7 @@ OBJECTIVES = {
 }
 
 _FD_STEP = 1e-6
+_FLOAT_FAULTS = (ZeroDivisionError, OverflowError, ValueError)
 _DEFAULT_RACK = BasicRack()
 
 
@@ -55,13 +56,12 @@ class Problem:
                  tip_shortening=True, x_sum=None):
         self.z1 = int(require_int("z1", z1, Z_MIN, Z_MAX))
         self.z2 = int(require_int("z2", z2, Z_MIN, Z_MAX))
-        self.m = float(require_positive("m (module)", m, unit="mm"))
+        self.m = float(require_module(m))
         self.rack = rack or _DEFAULT_RACK
         if not isinstance(self.rack, BasicRack):
             raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(self.rack).__name__}")
         self.checks = _checks.resolve_checks(checks)
-        if objective not in OBJECTIVES:
-            raise GearDesignError(f"objective must be one of {sorted(OBJECTIVES)}, got {objective!r}")
+        require_choice("objective", objective, OBJECTIVES)
         self.objective = OBJECTIVES[objective]
         self.tip_shortening = bool(tip_shortening)
         self.x_sum = None if x_sum is None else float(x_sum)
@@ -211,9 +211,24 @@ class Problem:
         P (P,), M (parts,), GP (P, nvar), GM (parts, nvar). The margins come as the checks'
         smooth parts (:attr:`part_check` maps each to its check)."""
         x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - float(v[0]))
-        geo = _core_float(self.m, self.z1, self.z2, x1, x2, self.rack, self.tip_shortening)
-        P, M, GP, GM = self.evaluate_geo(geo, parts=True)
+        try:
+            P, M, GP, GM = self.evaluate_geo(self.point_geo(x1, x2), parts=True)
+        except _FLOAT_FAULTS:
+            P, M, GP, GM = self.evaluate_geo(self._point_geo_array(x1, x2), parts=True)
         return P, M, self._free(GP), self._free(GM)
+
+    def point_geo(self, x1: float, x2: float) -> dict:
+        """The geometry of one design on the float path; where Python floats fault (a division
+        by zero exactly at a boundary, an overflow), the same formulas on 0-d numpy arrays,
+        which give inf/NaN as the vectorised path does."""
+        try:
+            return _core_float(self.m, self.z1, self.z2, x1, x2, self.rack, self.tip_shortening)
+        except _FLOAT_FAULTS:
+            return self._point_geo_array(x1, x2)
+
+    def _point_geo_array(self, x1: float, x2: float) -> dict:
+        with np.errstate(all="ignore"):
+            return self.geo(np.float64(x1), np.float64(x2))
 
     def evaluate_geo(self, geo, parts: bool = False):
         """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict
@@ -222,13 +237,14 @@ class Problem:
             return (np.array(self._margin_values(g, parts), dtype=float),
                     np.array(self._margin_gradient_values(g, parts), dtype=float).reshape(-1, 2))
 
-        M, GM = margins_and_gradients(geo)
-        if self.objective.kind == "margin":
-            P = _normalise(M, GM)
-            GP = np.array(self._central(lambda g: _normalise(*margins_and_gradients(g)), geo)).T
-        else:
-            P = np.array(self._piece_values(geo), dtype=float)
-            GP = np.array(self._piece_gradient_values(geo), dtype=float).reshape(-1, 2)
+        with np.errstate(all="ignore"):   # boundaries of existence give inf/NaN, handled below
+            M, GM = margins_and_gradients(geo)
+            if self.objective.kind == "margin":
+                P = _normalise(M, GM)
+                GP = np.array(self._central(lambda g: _normalise(*margins_and_gradients(g)), geo)).T
+            else:
+                P = np.array(self._piece_values(geo), dtype=float)
+                GP = np.array(self._piece_gradient_values(geo), dtype=float).reshape(-1, 2)
         if np.isnan(M).any():
             M = np.where(np.isnan(M), -np.inf, M)
         return P, M, GP, GM
@@ -261,4 +277,7 @@ def _normalise(M, G) -> np.ndarray:
 # contours span about −1 … 2.5); with the default checks the tip thickness closes the region
 # from above and undercut from below, well inside it.
 DEFAULT_BOUNDS = (-1.5, 3.0)
+# No window reaches past ±10: shifts beyond a few units make no gear (the tip or root circle
+# crosses the base circle long before), and the geometry refuses them by name.
+X_WINDOW_LIMIT = X_ABS_MAX
 

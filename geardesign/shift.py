@@ -35,16 +35,24 @@ import pandas as pd
 from scipy.optimize import minimize
 
 from . import checks as _checks
-from .errors import GearDesignError, require_positive, require_range
-from .geometry import _core_float, x_sum_from_center_distance
-from .problem import DEFAULT_BOUNDS, Problem
+from .errors import GearDesignError, require_choice, require_count, require_positive, require_range
+from .geometry import center_distance_from_x_sum, x_sum_from_center_distance
+from .involute import inv
+from .problem import DEFAULT_BOUNDS, OBJECTIVES, X_WINDOW_LIMIT, Problem
 
-__all__ = ["optimize_shifts", "ShiftResult", "METHODS", "smallest_conflict"]
+__all__ = ["optimize_shifts", "ShiftResult", "METHODS", "smallest_conflict", "reachable_center_distance",
+           "x_sum_for_housing", "GRID_N_MAX"]
 
 METHODS = ("grid", "convex", "exact")
 DEFAULT_TOL = {"grid": 1e-2, "convex": 1e-7, "exact": 1e-9}
 _START_N = 31          # grid nodes per axis for the start of convex and exact (spacing 0.15)
 _BIG = 1e3             # stands in for −inf margins inside the smooth solvers
+_ACCURACY = {
+    "exact": "KKT point solved by Newton: x to ~1e-12, checks hold to {tol:g}",
+    "convex": "SQP stopped when its step fell below tol: x within ~{tol:g} of the optimum",
+    "grid": ("best grid node: fun within one node spacing's change of the optimum; x within "
+             "{tol:g} of it unless the optimum slides along a boundary nearly level with fun"),
+}
 
 
 @dataclass
@@ -76,6 +84,8 @@ class ShiftResult:
     x_sum_fixed: float | None = None
     a_w: float = math.nan
     eps_alpha: float = math.nan
+    sensitivity_sides: dict = field(default_factory=dict)
+    accuracy: str = ""
 
     @property
     def x(self) -> np.ndarray:
@@ -87,13 +97,23 @@ class ShiftResult:
         return d
 
     def to_frame(self) -> pd.DataFrame:
-        """One row per check: margin, active, sensitivity."""
+        """One row per check: margin, active, sensitivity (d fun / d limit; at a corner where it
+        is one-sided, the value as the limit rises, and both sides in their own columns)."""
+        side = {k: self.sensitivity_sides.get(k, {}) for k in self.margins}
         return pd.DataFrame({
             "check": list(self.margins),
             "margin": list(self.margins.values()),
             "active": [k in self.active for k in self.margins],
             "sensitivity": [self.sensitivity.get(k, 0.0) for k in self.margins],
+            "sensitivity_raised": [side[k].get("raised", self.sensitivity.get(k, 0.0)) for k in self.margins],
+            "sensitivity_lowered": [side[k].get("lowered", self.sensitivity.get(k, 0.0)) for k in self.margins],
         })
+
+    def _sensitivity_text(self, name, value) -> str:
+        sides = self.sensitivity_sides.get(name)
+        if sides:
+            return f"{name} {sides['raised']:+.4g} if raised / {sides['lowered']:+.4g} if lowered (corner)"
+        return f"{name} {value:+.4g}"
 
     def __repr__(self) -> str:
         lines = [
@@ -105,13 +125,73 @@ class ShiftResult:
             f"         fun: {self.fun:.10g}  ({self.objective})",
             f"   eps_alpha: {self.eps_alpha:.6g}   a_w: {self.a_w:.6g} mm (m = {self.m:g})",
             f"      active: {', '.join(self.active) if self.active else '-'}",
-            " sensitivity: " + (", ".join(f"{k} {v:+.4g}" for k, v in self.sensitivity.items()) or "-"),
+            " sensitivity: " + (", ".join(self._sensitivity_text(k, v) for k, v in self.sensitivity.items()) or "-"),
             "     margins: " + ", ".join(f"{k} {v:+.4g}" for k, v in self.margins.items()),
             f"      method: {self.method}, tol {self.tol:g}, nit {self.nit}, {self.time_s * 1e3:.2f} ms",
+            f"    accuracy: {self.accuracy}",
         ]
         if self.conflict:
             lines.insert(2, f"    conflict: {', '.join(self.conflict)}")
         return "\n".join(lines)
+
+
+# --- inputs -------------------------------------------------------------------------------
+
+GRID_N_MAX = 2001       # nodes per axis of the grid method: 4 M designs, ~4 s and ~3 GB at most
+_CONSTANT_ON_LINE = ("max_x_sum", "min_specific_pressure")   # depend on x1 + x2 alone
+
+
+def _default_objective(objective, a_w) -> str:
+    """``max_x_sum`` on the plane; ``balanced_sliding`` on a fixed-a_w line, where objectives of
+    the x-sum alone are constant and refused."""
+    if objective is None:
+        return "max_x_sum" if a_w is None else "balanced_sliding"
+    objective = require_choice("objective", objective, OBJECTIVES)
+    if a_w is not None and objective in _CONSTANT_ON_LINE:
+        others = [o for o in OBJECTIVES if o not in _CONSTANT_ON_LINE]
+        raise GearDesignError(
+            f"objective {objective!r} depends on x1 + x2 alone, which a_w fixes: nothing to optimise; "
+            f"with a fixed center distance choose one of {others}")
+    return objective
+
+
+def _bounds(bounds) -> tuple[float, float]:
+    try:
+        lo, hi = bounds
+    except (TypeError, ValueError):
+        raise GearDesignError(f"bounds must be (lo, hi), got {bounds!r}") from None
+    lo = float(require_range("bounds lo", lo, -X_WINDOW_LIMIT, X_WINDOW_LIMIT))
+    hi = float(require_range("bounds hi", hi, -X_WINDOW_LIMIT, X_WINDOW_LIMIT))
+    if not lo < hi:
+        raise GearDesignError(f"bounds must be (lo, hi) with lo < hi, got {bounds!r}")
+    return lo, hi
+
+
+def reachable_center_distance(prob: Problem, bounds=DEFAULT_BOUNDS) -> tuple[float, float]:
+    """(a_w min, a_w max) in mm that x1 + x2 within ``bounds`` can give this pair: the x-sum
+    runs over [2 lo, 2 hi], and above the x-sum where inv α_w = 0 (a_w = a cos α)."""
+    lo, hi = bounds
+    xs_zero = -(prob.z1 + prob.z2) * inv(prob.rack.alpha) / (2.0 * math.tan(prob.rack.alpha))
+    a_cos = prob.m * (prob.z1 + prob.z2) / 2.0 * math.cos(prob.rack.alpha)
+    a_lo = a_cos if 2 * lo <= xs_zero else center_distance_from_x_sum(prob.m, prob.z1, prob.z2, 2 * lo, prob.rack)
+    a_hi = center_distance_from_x_sum(prob.m, prob.z1, prob.z2, 2 * hi, prob.rack) if 2 * hi > xs_zero else a_cos
+    return float(a_lo), float(a_hi)
+
+
+def x_sum_for_housing(prob: Problem, a_w, bounds=DEFAULT_BOUNDS) -> float:
+    """The x-sum of a housing centre distance ``a_w`` (mm), or one line naming the range of a_w
+    this pair, module, rack and window can reach."""
+    a_w = float(require_positive("a_w (center distance)", a_w, unit="mm"))
+    a_lo, a_hi = reachable_center_distance(prob, bounds)
+    r = prob.rack
+    where = (f"for m = {prob.m:g} mm, z1/z2 = {prob.z1}/{prob.z2}, rack {r.alpha_deg:g} deg, "
+             f"x1, x2 in [{bounds[0]:g}, {bounds[1]:g}]")
+    if not a_lo < a_w <= a_hi:
+        raise GearDesignError(f"a_w (center distance) = {a_w:.10g} mm is out of reach: it must be in "
+                              f"({a_lo:.8g}, {a_hi:.8g}] mm {where}")
+    x_sum = float(x_sum_from_center_distance(prob.m, prob.z1, prob.z2, a_w, prob.rack))
+    # the window holds x_sum/2 on both gears, so the fixed-sum line meets it
+    return min(max(x_sum, 2 * bounds[0]), 2 * bounds[1])
 
 
 # --- helpers ------------------------------------------------------------------------------
@@ -259,10 +339,14 @@ def _solve_small(A: list, b: list) -> list:
 def _stationarity(rows, nv):
     """det [e_t; rows] / Π‖row‖: zero when e_t lies in the span of the nv active gradients,
     i.e. the Lagrangian is stationary with one active constraint fewer than variables + 1."""
+    # a zero row (a check flat at its boundary, a pointed tip) has no direction: NaN, and the
+    # Newton on this active set gives up
     if nv == 1:
-        return -rows[0][0] / math.hypot(rows[0][0], rows[0][1])
+        norm = math.hypot(rows[0][0], rows[0][1])
+        return -rows[0][0] / norm if norm > 0 else math.nan
     (a0, a1, a2), (b0, b1, b2) = rows
-    return (a0 * b1 - a1 * b0) / (math.sqrt(a0 * a0 + a1 * a1 + a2 * a2) * math.sqrt(b0 * b0 + b1 * b1 + b2 * b2))
+    norm = math.sqrt(a0 * a0 + a1 * a1 + a2 * a2) * math.sqrt(b0 * b0 + b1 * b1 + b2 * b2)
+    return (a0 * b1 - a1 * b0) / norm if norm > 0 else math.nan
 
 
 def _kkt_newton(ev: _Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxit: int = 30,
@@ -288,6 +372,8 @@ def _kkt_newton(ev: _Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxi
         return F, rows
 
     F, rows = system(w)
+    if not all(map(math.isfinite, F)):
+        return None
     if edge:
         srow = [0.0] * (nv + 1)
         for j in range(nv):
@@ -296,6 +382,8 @@ def _kkt_newton(ev: _Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxi
             vj[j] += step
             _, _, GPj, GMj = ev(vj)
             srow[j] = (_stationarity(_rows(GPj, GMj, act_p, act_m), nv) - F[-1]) / step
+        if not all(map(math.isfinite, srow)):
+            return None
     for it in range(1, maxit + 1):
         try:
             dw = _solve_small(rows + [srow] if edge else rows, [-f for f in F])
@@ -306,8 +394,10 @@ def _kkt_newton(ev: _Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxi
             return None
         F_old = F
         F, rows = system(w)
-        if edge:   # Broyden: the row's directional derivative along the step matches the change
-            dd = sum(d * d for d in dw)
+        if not all(map(math.isfinite, F)):
+            return None
+        dd = sum(d * d for d in dw)
+        if edge and dd > 0:   # Broyden: the row's directional derivative along the step matches the change
             r = (F[-1] - F_old[-1] - sum(a * d for a, d in zip(srow, dw))) / dd
             srow = [a + r * d for a, d in zip(srow, dw)]
         if max(map(abs, dw[:nv])) <= step_tol * max(1.0, max(map(abs, w[:nv]))) or max(map(abs, F)) == 0.0:
@@ -398,17 +488,68 @@ def _polish(prob: Problem, w, ev: _Evaluator, tol: float, act_tol=1e-5):
     return None if found is None else found[:3]
 
 
-def _sensitivities(prob: Problem, parts, lams) -> dict:
-    """d(fun)/d(limit) of each check from the multipliers of its active smooth parts (indices
-    past the checks' parts are window edges and have no limit); none for ``max_margin``."""
+def _sensitivities_at(prob: Problem, ev: _Evaluator, w, act_tol: float):
+    """d(fun)/d(limit) of each active check at the optimum w, from the multipliers of the
+    constraints active there (within ``act_tol``; window edges have no limit), and none for
+    ``max_margin``.
+
+    Where more constraints are active than the multipliers need (a degenerate corner), the
+    multipliers are not unique and the optimum is not differentiable in the limit: the
+    one-sided derivatives are the extremes of the check's multiplier over the multiplier set
+    (Gauvin & Tolle 1977, Theorem 3.3), found by two small linear programs. Those checks get
+    both sides in the second dict: {"raised": d fun/d limit as the limit rises, "lowered": ...}.
+    Both methods call this one function, so they report the same values.
+    """
     if prob.objective.kind == "margin":
-        return {}
-    sens = {}
-    for j, lam in zip(parts, lams):
+        return {}, {}
+    nv = prob.nvar
+    P, M, GP, GM = ev(w[:nv])
+    act_p = [k for k in range(P.size) if P[k] - w[nv] <= act_tol * max(1.0, abs(w[nv]))]
+    act_m = [i for i in range(M.size) if abs(M[i]) <= act_tol]
+    if not act_m:
+        return {}, {}
+    lp, lm = _multipliers(prob, w, act_p, act_m, ev)
+    sens, sides = {}, {}
+    checks_of = {}
+    for pos, j in enumerate(act_m):
         if j < len(prob.part_check):
-            c = prob.checks[prob.part_check[j]]
-            sens[c.name] = sens.get(c.name, 0.0) - prob.objective.sense * float(lam) * _limit_factor(c)
-    return sens
+            checks_of.setdefault(prob.part_check[j], []).append(pos)
+    degenerate = len(act_p) + len(act_m) > nv + 1
+    rows = np.array(_rows(GP, GM, act_p, act_m)) if degenerate else None
+    for ci, positions in checks_of.items():
+        c = prob.checks[ci]
+        f = -prob.objective.sense * _limit_factor(c)
+        lam = float(sum(lm[p] for p in positions))
+        if degenerate:
+            rng = _multiplier_range(rows, nv, [len(act_p) + p for p in positions])
+            if rng is not None and rng[1] - rng[0] > 1e-7 * max(1.0, abs(rng[1])):
+                lo, hi = rng
+                raised = f * (hi if _limit_factor(c) > 0 else lo)
+                lowered = f * (lo if _limit_factor(c) > 0 else hi)
+                sides[c.name] = {"raised": raised + 0.0, "lowered": lowered + 0.0}
+                sens[c.name] = raised + 0.0
+                continue
+            if rng is not None:
+                lam = rng[0]
+        sens[c.name] = f * lam + 0.0
+    return sens, sides
+
+
+def _multiplier_range(rows: np.ndarray, nv: int, idx: list):
+    """(min, max) of Σ λ[idx] over {λ >= 0 : Rᵀ λ = −e_t}, or None when the LP fails."""
+    from scipy.optimize import linprog
+
+    A = rows.T
+    b = -np.eye(nv + 1)[nv]
+    c = np.zeros(rows.shape[0])
+    c[idx] = 1.0
+    out = []
+    for sign in (1.0, -1.0):
+        res = linprog(sign * c, A_eq=A, b_eq=b, bounds=(0, None), method="highs")
+        if res.status != 0:
+            return None
+        out.append(sign * res.fun)
+    return out[0], out[1]
 
 
 # --- the convex (SCP) method ----------------------------------------------------------------
@@ -565,24 +706,30 @@ class _MinMargin(Problem):
 
 # --- the public function --------------------------------------------------------------------
 
-def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: str = "exact",
-                    tol: float | None = None, a_w: float | None = None, m: float = 1.0, rack=None,
+def optimize_shifts(z1, z2, objective: str | None = None, checks=None, method: str = "exact",
+                    tol: float | None = None, a_w: float | None = None, m: float | None = None, rack=None,
                     tip_shortening: bool = True, bounds=DEFAULT_BOUNDS, grid_n: int | None = None,
                     start=None) -> ShiftResult:
     """The best profile shifts x1, x2 for tooth counts z1, z2 under the chosen checks.
 
     Parameters
     ----------
-    z1, z2 : tooth counts.  objective : one of :data:`geardesign.problem.OBJECTIVES`.
+    z1, z2 : tooth counts.
+    objective : one of :data:`geardesign.problem.OBJECTIVES`; default ``max_x_sum``, or
+        ``balanced_sliding`` when ``a_w`` fixes the x-sum (objectives that depend on the x-sum
+        alone, ``max_x_sum`` and ``min_specific_pressure``, are refused then: they are constant).
     checks : None (no undercut, no interference, s_a >= 0.25 m, ε_α >= 1.2), a dict of
         :func:`geardesign.checks.make_checks` options (``{"sa_min": 0.4, "undercut": False}``),
         or a list of :class:`geardesign.checks.Check`.
-    method : "grid", "convex" or "exact".  tol : tolerance in x (defaults: grid 0.01,
-        convex 1e-7, exact 1e-9); every returned point satisfies the checks to within it.
-    a_w : operating centre distance in mm (with ``m``): fixes x1 + x2; the objective picks the split.
-    m : module, mm (scales a_w only; the shifts do not depend on it).
+    method : "grid" (fastest, x within half a node spacing), "convex" (SQP in cvxpy/Clarabel,
+        ~1e-7 in x, dual sensitivities) or "exact" (active-set Newton, ~1e-12 in x; default).
+    tol : tolerance in x (defaults: grid 0.01, convex 1e-7, exact 1e-9); every returned point
+        satisfies the checks to within it.
+    a_w : operating centre distance of the housing, mm; needs ``m``. It fixes x1 + x2 and the
+        objective picks the split; an a_w the window cannot reach is refused with the reachable range.
+    m : module, mm (scales a_w only; the shifts do not depend on it). Default 1 without ``a_w``.
     bounds : the window (lo, hi) searched for each of x1, x2.
-    grid_n : nodes per axis of the grid method (default from ``tol``).
+    grid_n : nodes per axis of the grid method (default from ``tol``; at most GRID_N_MAX).
     start : a feasible (x1, x2) to start convex/exact from instead of their own coarse grid
         (the atlas passes the best node of its batched grid).
 
@@ -591,39 +738,51 @@ def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: s
     (True, ['contact_ratio'], 1.337093)
     """
     t0 = time.perf_counter()
-    if method not in METHODS:
-        raise GearDesignError(f"method must be one of {list(METHODS)}, got {method!r}")
-    tol = DEFAULT_TOL[method] if tol is None else float(require_positive("tol", tol))
-    require_range("tol", tol, 1e-14, 1.0)
-    lo, hi = (float(b) for b in bounds)
-    if not lo < hi:
-        raise GearDesignError(f"bounds must be (lo, hi) with lo < hi, got {bounds!r}")
+    method = require_choice("method", method, METHODS)
+    if a_w is not None and m is None:
+        raise GearDesignError(f"a_w (center distance) = {a_w!r} mm needs the module m: give m (mm) too")
+    objective = _default_objective(objective, a_w)
+    tol = DEFAULT_TOL[method] if tol is None else float(require_range("tol", tol, 1e-14, 1.0))
+    lo, hi = _bounds(bounds)
+    if grid_n is not None:
+        grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
+    prob = Problem(z1, z2, rack, checks, objective, 1.0 if m is None else m, tip_shortening)
     x_sum = None
-    prob = Problem(z1, z2, rack, checks, objective, m, tip_shortening)
     if a_w is not None:
-        a_w = float(require_positive("a_w (center distance)", a_w, unit="mm"))
-        a_ref = prob.m * (prob.z1 + prob.z2) / 2.0
-        if a_w <= a_ref * math.cos(prob.rack.alpha):
-            raise GearDesignError(f"a_w = {a_w:g} mm must be > a·cos(alpha) = {a_ref * math.cos(prob.rack.alpha):.6g} mm")
-        x_sum = prob.x_sum = float(x_sum_from_center_distance(prob.m, prob.z1, prob.z2, a_w, prob.rack))
+        x_sum = prob.x_sum = x_sum_for_housing(prob, a_w, (lo, hi))
     bounds = (lo, hi)
 
-    def finish(v, nit, success, message, sensitivity=None, conflict=None):
+    def finish(v, nit, success, message, sensitivity=None, conflict=None, sides=None, accuracy=None):
         x1, x2 = (float(c[0]) for c in prob.xy(np.asarray(v)[None, :]))
-        geo = _core_float(prob.m, prob.z1, prob.z2, x1, x2, prob.rack, prob.tip_shortening)
-        P, M, _, _ = prob.evaluate_geo(geo)
-        mg = {name: float(v_) for name, v_ in zip(prob.names, M)}
+        geo = prob.point_geo(x1, x2)
+        try:
+            P, M, _, _ = prob.evaluate_geo(geo)
+        except (ZeroDivisionError, OverflowError, ValueError):
+            geo = prob._point_geo_array(x1, x2)
+            P, M, _, _ = prob.evaluate_geo(geo)
+        # a margin the solver cannot tell from zero is zero (no -2.8e-16 in reports)
+        zero = tol if method != "grid" else 1e-12
+        mg = {name: (0.0 if abs(v_) <= zero else float(v_)) for name, v_ in zip(prob.names, M)}
         fun = float(prob.objective.sense * P.min()) if prob.objective.kind != "margin" else float(P.min())
+        values = [fun, float(geo["a_w"]), float(geo["eps_alpha"]), *mg.values()]
+        if success and not all(map(math.isfinite, values)):
+            success, message = False, "the geometry at the solver's point does not exist (no finite result)"
+        if prob.x_sum is not None:
+            message += (f"; x1 + x2 = {prob.x_sum:.10g} fixed by a_w = {a_w:.10g} mm, "
+                        f"objective {prob.objective.name}")
         active = [k for k, v_ in mg.items() if abs(v_) <= max(tol, 1e-9) * 10]
         return ShiftResult(
             x1=x1, x2=x2, fun=fun, objective=prob.objective.name, success=success, message=message,
             method=method, tol=tol, nit=nit, time_s=time.perf_counter() - t0, margins=mg, active=active,
             sensitivity=sensitivity or {}, conflict=conflict or [], z1=prob.z1, z2=prob.z2, m=prob.m,
-            x_sum_fixed=x_sum, a_w=float(geo["a_w"]), eps_alpha=float(geo["eps_alpha"]))
+            x_sum_fixed=x_sum, a_w=float(geo["a_w"]), eps_alpha=float(geo["eps_alpha"]),
+            sensitivity_sides=sides or {}, accuracy=accuracy or _ACCURACY[method].format(tol=tol))
 
     if method == "grid":
         span = hi - lo
         n = grid_n or int(min(max(math.ceil(span / (2 * tol)) + 1, 11), 1001 if prob.nvar == 2 else 200001))
+        if prob.nvar == 2:
+            n = min(n, GRID_N_MAX)
         V = grid_points(prob, n, bounds)
         i, P, M = _best_feasible(prob, V)
         h = (V[-1, 0] - V[0, 0]) / (n - 1) if n > 1 else 0.0
@@ -635,64 +794,154 @@ def optimize_shifts(z1, z2, objective: str = "max_x_sum", checks=None, method: s
                 return finish(w[:-1], 1, True, f"no feasible node among {V.shape[0]} (spacing {h:.3g}): the "
                               "region is thinner than the grid; returned its most central point nearby")
             conflict = smallest_conflict(prob, bounds)
-            return finish(V[j], 1, False, f"no feasible point: checks {', '.join(conflict)} conflict",
-                          conflict=conflict)
+            return finish(V[j], 1, False, _conflict_message(conflict), conflict=conflict)
         return finish(V[i], 1, True, f"best of {V.shape[0]} grid nodes (spacing {h:.3g})")
 
-    # a feasible start for convex and exact
+    # feasible starts for convex and exact
     n_start = _START_N if prob.nvar == 2 else 401
     if start is not None and prob.nvar == 2:
         V = np.asarray(start, dtype=float).reshape(1, 2)
+        starts, M = _starts(prob, V, 1)
+        if not starts:
+            V = grid_points(prob, _START_N, bounds)
+            starts, M = _starts(prob, V, _START_N)
     else:
         V = grid_points(prob, n_start, bounds)
-    i, P, M = _best_feasible(prob, V)
-    if i is None and start is not None and prob.nvar == 2:
-        V = grid_points(prob, _START_N, bounds)
-        i, P, M = _best_feasible(prob, V)
-    if i is None:
+        starts, M = _starts(prob, V, n_start)
+    if not starts or not _feasible_at(prob, starts[0]):
+        # no feasible node: the region, if any, is thinner than the grid; the most central
+        # point near the least infeasible node starts the solve
         j = _least_infeasible(prob, V, M)
         w, _, ev = _slsqp(_MinMargin(prob), V[j], bounds, ftol=1e-12, pieces_only=True)
-        if w[-1] >= 0:
-            v0 = w[:-1]
-        else:
+        if w[-1] < 0:
             conflict = smallest_conflict(prob, bounds)
-            return finish(w[:-1], 1, False, f"no feasible point: checks {', '.join(conflict)} conflict",
-                          conflict=conflict)
-    else:
-        v0 = V[i]
+            return finish(w[:-1], 1, False, _conflict_message(conflict), conflict=conflict)
+        starts = [w[:-1]] + starts[:_MAX_STARTS - 1]
 
     if method == "convex":
-        v, nit, lam, ev = _solve_convex(prob, v0, bounds, tol)
+        v, nit, lam, ev = _solve_convex(prob, starts[0], bounds, tol)
         Pv, Mv, _, _ = ev(v)
-        active = [j for j, (lam_j, m_j) in enumerate(zip(lam, Mv)) if abs(m_j) <= 10 * tol and lam_j > 1e-9]
-        sens = _sensitivities(prob, active, lam[active])
         ok = not (Mv.size and Mv.min() < -tol)
         msg = "converged: trust region below tol" if ok else "stopped with a check violated beyond tol"
-        return finish(v, nit, ok, msg, sens)
+        w = np.append(v, Pv.min())
+        sens, sides = _sensitivities_at(prob, _Evaluator(prob, window=_window(prob, bounds)), w, act_tol=10 * tol)
+        return finish(v, nit, ok, msg, sens, sides=sides)
 
-    # exact: Newton on the KKT systems of the checks that pass near the start (the window's
-    # edges count as checks); SLSQP, then that polish, only when none gives a KKT point
-    nv = prob.nvar
-    h = (hi - lo) / (n_start - 1)
+    # exact: from each start (the best node of each separate feasible piece and the grid's local
+    # maxima, best first), Newton on the KKT systems of the checks that pass near it (the
+    # window's edges count as checks); SLSQP, then that polish, only when none gives a KKT point.
+    # The best of these local optima is returned: a region may have several pieces and corners.
     ev = _Evaluator(prob, window=_window(prob, bounds))
+    h = (hi - lo) / (n_start - 1)
+    best = None
+    nit = 0
+    nv = prob.nvar
+    for v0 in starts:
+        w, it, msg = _exact_from(prob, ev, v0, bounds, tol, h)
+        nit += it
+        Mw = ev(w[:nv])[1]
+        score = w[-1] if not (Mw.size and Mw.min() < -tol) else -math.inf
+        if best is None or score > best[0] + 1e-12:
+            best = (score, w, msg)
+    score, w, msg = best
+    if score == -math.inf and not _exists(prob, w[:nv]):
+        return finish(starts[0], nit, False, _NO_OPTIMUM.format(objective=prob.objective.name))
+    Mv = ev(w[:nv])[1][:len(prob.part_check)]
+    ok = not (Mv.size and Mv.min() < -tol)
+    if len(starts) > 1:
+        msg += f" (best of {len(starts)} starts)"
+    sens, sides = _sensitivities_at(prob, ev, w, act_tol=1e-9)
+    return finish(w[:nv], nit, ok, msg if ok else "a check is violated beyond tol", sens, sides=sides)
+
+
+_MAX_STARTS = 4
+_NO_OPTIMUM = ("no optimum: {objective} keeps improving toward the edge where the pair stops existing "
+               "(inv alpha_w -> 0 or a tip circle at its base circle); the checks asked for do not bound it "
+               "(keep the interference checks, or narrow the window); returned the best start node")
+
+
+def _feasible_at(prob: Problem, v) -> bool:
+    """True when every check holds at v."""
+    M = prob.evaluate_point(v)[1]
+    return not (M.size and M.min() < 0)
+
+
+def _exists(prob: Problem, v) -> bool:
+    """True when the pair's geometry exists (every margin and piece finite) at v."""
+    P, M, _, _ = prob.evaluate_point(v)
+    return bool(np.isfinite(P).all() and np.isfinite(M).all())
+
+
+def _starts(prob: Problem, V: np.ndarray, n: int):
+    """Start points for the local solvers on the grid V (n nodes per axis), best first, at most
+    _MAX_STARTS: the best node of every separate feasible piece of the grid, and the local
+    maxima of the objective over the nodes that miss feasibility by less than one node
+    spacing (first-order distance to every violated boundary), away from the feasible nodes,
+    where they beat every feasible node: a piece thinner than the grid holds no node, but its
+    neighbours come that close. Returns (starts, margins at V)."""
+    from scipy import ndimage
+
+    P, M = prob.evaluate(V, grads=False)
+    feasible = (M >= 0).all(axis=0) if M.size else np.ones(V.shape[0], bool)
+    fun = P.min(axis=0)
+    fun = np.where(np.isnan(fun), -np.inf, fun)
+    score = np.where(feasible, fun, -np.inf)
+    if V.shape[0] < n ** prob.nvar:                       # a given start, no grid
+        return ([V[int(np.argmax(score))]] if np.isfinite(score).any() else []), M
+    shape = (n, n) if prob.nvar == 2 else (n,)
+    box = np.ones((3,) * prob.nvar, bool)
+    labels, count = ndimage.label(feasible.reshape(shape), structure=box)
+    if count <= 1:
+        idx = [int(np.argmax(score))] if count else []
+    else:
+        best_of = ndimage.maximum_position(score.reshape(shape), labels, range(1, count + 1))
+        idx = [int(np.ravel_multi_index(p, shape)) for p in best_of]
+    best = score.max()
+    # beyond two nodes of every feasible node, better than all of them
+    far = ~ndimage.binary_dilation(feasible.reshape(shape), structure=box, iterations=2).ravel()
+    cand = far & (fun > best)
+    if M.size and cand.any():
+        h = (V[-1, 0] - V[0, 0]) / (n - 1)
+        Mg = np.where(np.isfinite(M), M, np.nan).reshape((-1,) + shape)
+        slope = np.zeros_like(Mg)
+        for ax in range(1, prob.nvar + 1):    # largest one-node change along either axis, per unit x
+            d = np.abs(np.diff(Mg, axis=ax)) / h
+            lo = [(0, 0)] * Mg.ndim
+            hi = [(0, 0)] * Mg.ndim
+            lo[ax], hi[ax] = (1, 0), (0, 1)
+            slope = np.fmax(slope, np.fmax(np.pad(d, lo, constant_values=np.nan), np.pad(d, hi, constant_values=np.nan)))
+        with np.errstate(invalid="ignore"):
+            near = ((M >= 0) | (-M <= h * slope.reshape(M.shape))).all(axis=0)
+        near_score = np.where(cand & near, fun, -np.inf).reshape(shape)
+        if np.isfinite(near_score).any():
+            peak = np.isfinite(near_score) & (near_score >= ndimage.maximum_filter(near_score, footprint=box,
+                                                                                    mode="constant", cval=-np.inf))
+            idx += [int(i) for i in np.flatnonzero(peak.ravel())]
+    chosen = []
+    for i in sorted(idx, key=lambda k: (not feasible[k], -fun[k])):
+        at = np.array(np.unravel_index(i, shape))
+        if all(np.abs(at - np.array(np.unravel_index(c, shape))).max() > 2 for c in chosen):
+            chosen.append(i)
+        if len(chosen) == _MAX_STARTS:
+            break
+    return [V[i] for i in chosen], M
+
+
+def _exact_from(prob: Problem, ev: _Evaluator, v0, bounds, tol, h):
+    """One local exact solve from the feasible point v0: (w, iterations, message)."""
+    nv = prob.nvar
     w0 = np.append(v0, ev(v0)[0].min())
     found = _first_kkt_point(prob, ev, w0, *_near(ev, nv, w0, reach=2.2 * h), max_move=3 * h)
     if found is not None:
-        w, act_p, act_m, nit = found
-        msg = "converged: KKT system of the active set solved by Newton from the best grid node"
-    else:
-        w, nit, ev = _slsqp(prob, v0, bounds)
-        polished = _polish(prob, w, ev, tol)
-        if polished is not None:
-            w, act_p, act_m = polished
-            msg = "converged: SLSQP, then Newton on the KKT system of its active set"
-        else:
-            P, M, _, _ = ev(w[:nv])
-            act_p = [k for k in range(P.size) if P[k] - w[-1] < 1e-6]
-            act_m = [k for k in range(M.size) if M[k] < 1e-6]
-            msg = "converged (SLSQP; active-set polish not applicable)"
-    lp, lm = _multipliers(prob, w, act_p, act_m, ev)
-    sens = _sensitivities(prob, act_m, lm)
-    Mv = ev(w[:nv])[1][:len(prob.part_check)]
-    ok = not (Mv.size and Mv.min() < -tol)
-    return finish(w[:nv], nit, ok, msg if ok else "a check is violated beyond tol", sens)
+        return found[0], found[3], "converged: KKT system of the active set solved by Newton from a grid node"
+    w, nit, ev_s = _slsqp(prob, v0, bounds)
+    polished = _polish(prob, w, ev_s, tol)
+    if polished is not None:
+        return polished[0], nit, "converged: SLSQP, then Newton on the KKT system of its active set"
+    return w, nit, "converged (SLSQP; active-set polish not applicable)"
+
+
+def _conflict_message(conflict) -> str:
+    if conflict:
+        return f"no feasible point: checks {', '.join(conflict)} conflict"
+    return "no feasible point in the window: every check passes somewhere, but not all together"
