@@ -19,15 +19,19 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError, require_finite, require_range
+from .errors import GearDesignError, _show, require_bool, require_finite, require_positive, require_range
 
 __all__ = [
-    "Check", "Undercut", "Interference", "TipThickness", "ContactRatio", "Jamming", "CustomCheck",
-    "make_checks", "evaluate", "DEFAULT_EPS_ALPHA_MIN", "DEFAULT_SA_MIN",
+    "Check", "Undercut", "Interference", "TipThickness", "ContactRatio", "Jamming", "CenterDistance", "CustomCheck",
+    "make_checks", "evaluate", "DEFAULT_EPS_ALPHA_MIN", "DEFAULT_SA_MIN", "EPS_ALPHA_MIN_RANGE", "SA_MIN_RANGE",
 ]
 
 DEFAULT_EPS_ALPHA_MIN = 1.2
 DEFAULT_SA_MIN = 0.25
+# The ranges a limit may take (the scene schema and the CLI read them from here): ε_α below 1
+# gives gaps in the mesh but is allowed for studies; s_a above 1·m leaves no addendum to speak of.
+EPS_ALPHA_MIN_RANGE = (0.0, 10.0)
+SA_MIN_RANGE = (0.0, 2.0)
 
 
 def _other(gear: int) -> int:
@@ -179,7 +183,7 @@ class TipThickness(Check):
     limit: float = DEFAULT_SA_MIN
 
     def __post_init__(self):
-        require_range("sa_min", self.limit, 0.0, 2.0)
+        require_range("sa_min", self.limit, *SA_MIN_RANGE)
         object.__setattr__(self, "name", self.name or f"tip_thickness{self.gear}")
         object.__setattr__(self, "label", self.label or f"tip thickness of gear {self.gear}: s_a{self.gear}/m >= sa_min")
 
@@ -206,7 +210,7 @@ class ContactRatio(Check):
     limit: float = DEFAULT_EPS_ALPHA_MIN
 
     def __post_init__(self):
-        require_range("eps_alpha_min", self.limit, 0.0, 10.0)
+        require_range("eps_alpha_min", self.limit, *EPS_ALPHA_MIN_RANGE)
         object.__setattr__(self, "name", self.name or "contact_ratio")
         object.__setattr__(self, "label", self.label or "transverse contact ratio eps_alpha >= eps_alpha_min")
 
@@ -257,6 +261,41 @@ class Jamming(Check):
 
 
 @dataclass(frozen=True)
+class CenterDistance(Check):
+    """The proposed shifts fit the housing: their own operating centre distance a_w (zero
+    backlash) equals the housing's ``limit`` (mm) within ``tol_mm``. Margin
+    (tol − |a_w − a_housing|)/m. A report check: the optimisers take a housing a_w as a fixed
+    x-sum instead (``a_w=`` of :func:`geardesign.optimize_shifts`).
+
+    ``tol_mm`` defaults to 1e-3·m, a tenth or less of the centre-distance tolerance f_a of
+    ISO 1328 accuracy grades 6–8 for such gears (DIN 3964 tables).
+    """
+
+    tol_mm: float | None = None
+
+    def __post_init__(self):
+        require_positive("a_w housing (center distance)", self.limit, unit="mm")
+        if self.tol_mm is not None:
+            require_positive("center distance tolerance", self.tol_mm, unit="mm")
+        object.__setattr__(self, "name", self.name or "center_distance")
+        object.__setattr__(self, "label", self.label or f"a_w of x1 + x2 = housing a_w {self.limit:.10g} mm")
+
+    def value(self, geo):
+        return geo["a_w"]
+
+    def _tol(self, geo):
+        return 1e-3 * geo["_m"] if self.tol_mm is None else self.tol_mm
+
+    def margin(self, geo):
+        return (self._tol(geo) - abs(geo["a_w"] - self.limit)) / geo["_m"]
+
+    def gradient(self, geo):
+        # ∂a_w/∂x_j = m sin α / sin α_w for both j (ISO 21771 eq. (62) differentiated)
+        g = -np.sign(geo["a_w"] - self.limit) * geo["_sa"] / geo["_sin_w"]
+        return g, g
+
+
+@dataclass(frozen=True)
 class CustomCheck(Check):
     """A user's own check: ``func(geo) -> value`` with ``value >= limit`` required
     (``sense=">="``) or ``value <= limit`` (``sense="<="``). ``geo`` is the dict of geometry
@@ -300,6 +339,8 @@ def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: flo
     >>> [c.name for c in make_checks(sa_min=0.4, undercut=False)]
     ['interference1', 'interference2', 'tip_thickness1', 'tip_thickness2', 'contact_ratio']
     """
+    for flag, value in (("undercut", undercut), ("interference", interference), ("jamming", jamming)):
+        require_bool(flag, value)
     out: list[Check] = []
     if undercut:
         out += [Undercut(gear=1), Undercut(gear=2)]
@@ -308,9 +349,14 @@ def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: flo
     if jamming:
         out += [Jamming(gear=1), Jamming(gear=2)]
     if sa_min is not None:
-        out += [TipThickness(gear=1, limit=float(sa_min)), TipThickness(gear=2, limit=float(sa_min))]
+        sa_min = float(require_range("sa_min", sa_min, *SA_MIN_RANGE))
+        out += [TipThickness(gear=1, limit=sa_min), TipThickness(gear=2, limit=sa_min)]
     if eps_alpha_min is not None:
-        out += [ContactRatio(limit=float(eps_alpha_min))]
+        out += [ContactRatio(limit=float(require_range("eps_alpha_min", eps_alpha_min, *EPS_ALPHA_MIN_RANGE)))]
+    if isinstance(extra, Check):
+        extra = (extra,)
+    if not isinstance(extra, (list, tuple)):
+        raise GearDesignError(f"extra must be a list of geardesign.checks.Check objects, got {_show(extra)}")
     for c in extra:
         if not isinstance(c, Check):
             raise GearDesignError(f"extra checks must be geardesign.checks.Check objects, got {c!r}")
@@ -343,6 +389,20 @@ def resolve_checks(checks) -> tuple[Check, ...]:
 _DEFAULT_CHECKS = make_checks()
 
 
+class CheckTable(pd.DataFrame):
+    """The checks of one design, a DataFrame whose printout leaves out the long ``label``
+    column, so that check, margin and ok fit a plain terminal (the labels stay in the frame)."""
+
+    @property
+    def _constructor(self):
+        return CheckTable
+
+    def __repr__(self) -> str:
+        cols = [c for c in self.columns if c != "label"]
+        text = pd.DataFrame(self[cols]).to_string(float_format=lambda v: f"{v:.6g}")
+        return text + ("\n(each check's meaning: the 'label' column)" if "label" in self.columns else "")
+
+
 def evaluate(geo: dict, checks) -> pd.DataFrame:
     """Rows ``check, label, value, limit, margin, ok`` for one design (geo of 0-d arrays)."""
     rows = []
@@ -351,7 +411,7 @@ def evaluate(geo: dict, checks) -> pd.DataFrame:
         limit = float(np.asarray(c.limit_value(geo)))
         margin = float(np.asarray(c.margin(geo)))
         rows.append((c.name, c.label, value, limit, margin, bool(margin >= 0)))
-    return pd.DataFrame(rows, columns=["check", "label", "value", "limit", "margin", "ok"])
+    return CheckTable(rows, columns=["check", "label", "value", "limit", "margin", "ok"])
 
 
 def margins(geo: dict, checks) -> dict[str, np.ndarray]:

@@ -54,7 +54,9 @@ def require_finite(name: str, value) -> np.ndarray:
         raise GearDesignError(f"{name} must be a number, got {_short(value)}")
     try:
         arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError, OverflowError):
+    except OverflowError:
+        raise GearDesignError(f"{name} must be finite, got {_show(value)}") from None
+    except (TypeError, ValueError):
         raise GearDesignError(f"{name} must be a number, got {_show(value)}") from None
     bad = ~np.isfinite(arr)
     if bad.any():

@@ -19,7 +19,8 @@ from types import SimpleNamespace
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError, require_finite, require_int, require_positive, require_range
+from .errors import (GearDesignError, broadcast_inputs, require_bool, require_finite, require_int,
+                     require_positive, require_range)
 from .involute import _t_minus_atan, _tan_from_inv_float, inv, inv_from_tan, tan_from_inv
 from .rack import BasicRack
 
@@ -40,6 +41,7 @@ Z_MIN = 3        # smallest tooth count accepted
 Z_MAX = 100_000  # largest tooth count accepted (the accuracy tests reach 10 000)
 M_RANGE_MM = (1e-4, 1e4)   # module: watch gears to mill gears with room to spare; outside, results overflow
 X_ABS_MAX = 10.0           # |x|: beyond a few units the tip or root crosses the base circle anyway
+DESIGNS_MAX = 20_000_000   # designs in one vectorised call: ~1.5 GB of fields per million, so ~30 GB
 
 # name -> (unit, description); the order is the order of reports.
 GEOMETRY_FIELDS: dict[str, tuple[str, str]] = {
@@ -363,8 +365,12 @@ def _first(mask: np.ndarray) -> tuple[str, tuple]:
     return where, idx if mask.ndim else ()
 
 
-def validate_geometry(geo: dict, rack: BasicRack) -> None:
-    """Raise a GearDesignError for designs whose geometry does not exist."""
+def validate_geometry(geo: dict, rack: BasicRack, contact: bool = False) -> None:
+    """Raise a GearDesignError for designs whose geometry does not exist and, with ``contact``,
+    for gears that do not mesh (path of contact <= 0: the tips do not reach across the line of
+    action). :class:`~geardesign.GearPair` asks for contact; the vectorised
+    :func:`pair_geometry` reports such designs with g_alpha <= 0 (and ε_α <= 0), as the
+    regions and atlases need every design of a grid."""
     zs = geo["_z1"] + geo["_z2"]
     bad = ~(geo["inv_alpha_w"] > 0)
     if bad.any():
@@ -391,6 +397,14 @@ def validate_geometry(geo: dict, rack: BasicRack) -> None:
             raise GearDesignError(
                 f"x{j} = {x:.6g}{where}: the root diameter of gear {j} is not positive; "
                 f"x{j} must be > {rack.ha + rack.c - z / 2.0:.6g} for z{j} = {int(z)}")
+    bad = ~(geo["g_alpha"] > 0)
+    if contact and bad.any():
+        where, i = _first(bad)
+        raise GearDesignError(
+            f"the gears do not mesh{where}: their tip circles do not overlap along the line of action "
+            f"(path of contact {float(np.asarray(geo['g_alpha'])[i]):.6g} mm, "
+            f"eps_alpha {float(np.asarray(geo['eps_alpha'])[i]):.4g}); "
+            f"x1 + x2 = {float((geo['_x1'] + geo['_x2'])[i]):.6g} is too large for these tips")
 
 
 # --- result object ----------------------------------------------------------------------
@@ -494,6 +508,8 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
     Returns a :class:`Geometry` of arrays (of floats when all inputs are scalars). Raises
     :class:`~geardesign.errors.GearDesignError` naming the first design whose geometry
     does not exist (x-sum too negative for α_w, tip inside the base circle, root diameter <= 0).
+    Designs whose gears do not mesh are returned with g_alpha <= 0 and eps_alpha <= 0
+    (:class:`~geardesign.GearPair` refuses them by name).
 
     >>> g = pair_geometry(3, 12, 24, 0.6, 0.36)      # KHK worked example
     >>> round(g.a_w, 4), round(g.alpha_w_deg, 4), round(g.da1, 3), round(g.eps_alpha, 3)
@@ -506,6 +522,11 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
         raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
     scalar = all(np.ndim(v) == 0 for v in (m, z1, z2, x1, x2))
     m, z1, z2, x1, x2 = validate_inputs(m, z1, z2, x1, x2)
-    geo = _core(m, z1, z2, x1, x2, rack, bool(tip_shortening))
+    broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2)
+    n = int(np.prod(np.broadcast_shapes(*(np.shape(v) for v in (m, z1, z2, x1, x2)))))
+    if n > DESIGNS_MAX:
+        raise GearDesignError(f"pair_geometry takes at most {DESIGNS_MAX:,} designs in one call, got {n:,}")
+    with np.errstate(all="ignore"):   # designs that do not exist are refused by name just below
+        geo = _core(m, z1, z2, x1, x2, rack, require_bool("tip_shortening", tip_shortening))
     validate_geometry(geo, rack)
     return Geometry._from_core(geo, scalar)

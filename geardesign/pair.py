@@ -1,6 +1,7 @@
 """One gear pair as an object: inputs, geometry, checks."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -13,6 +14,8 @@ from .geometry import Geometry, _core, validate_geometry, validate_inputs, x_sum
 from .rack import BasicRack
 
 __all__ = ["GearPair", "balanced_sliding_split"]
+
+_ZERO_MARGIN = 1e-12   # margins this close to 0 are rounding of an exact boundary: shown as 0
 
 
 def balanced_sliding_split(m, z1, z2, x_sum, rack: BasicRack = BasicRack(), tip_shortening: bool = True) -> float:
@@ -79,7 +82,7 @@ class GearPair:
         object.__setattr__(self, "x2", float(x2))
         object.__setattr__(self, "tip_shortening", bool(self.tip_shortening))
         geo = _core(self.m, self.z1, self.z2, self.x1, self.x2, self.rack, self.tip_shortening)
-        validate_geometry(geo, self.rack)
+        validate_geometry(geo, self.rack, contact=True)
         object.__setattr__(self, "_geo", geo)
 
     @classmethod
@@ -116,15 +119,38 @@ class GearPair:
 
     def checks(self, eps_alpha_min: float | None = _checks.DEFAULT_EPS_ALPHA_MIN,
                sa_min: float | None = _checks.DEFAULT_SA_MIN, undercut: bool = True,
-               interference: bool = True, jamming: bool = True, extra=()) -> pd.DataFrame:
+               interference: bool = True, jamming: bool = True, extra=(),
+               housing_a_w: float | None = None, housing_tol_mm: float | None = None) -> pd.DataFrame:
         """Table of checks: ``check, value, limit, margin, ok`` (and ``label``), one row per check.
 
-        Margins are dimensionless and >= 0 where the check holds (see :mod:`geardesign.checks`).
-        ``jamming`` adds seed 000's r_a2 < O2N1 rows (implied by the interference rows).
+        Margins are dimensionless and >= 0 where the check holds (see :mod:`geardesign.checks`);
+        a margin within 1e-12 of zero shows as 0. ``jamming`` adds seed 000's r_a2 < O2N1 rows
+        (implied by the interference rows). ``housing_a_w`` (mm) adds the ``center_distance``
+        check of the pair's own a_w against the housing's, labelled with the x-sum it needs.
+
+        >>> t = GearPair(8, 17, 26, 0.898, 0.517).checks(housing_a_w=180)
+        >>> row = t.set_index("check").loc["center_distance"]
+        >>> round(float(row["value"]), 4), bool(row["ok"])   # a_w = 181.6016 mm (seed 000), not 180 mm
+        (181.6016, False)
         """
+        extra = tuple(extra) if not isinstance(extra, _checks.Check) else (extra,)
+        if housing_a_w is not None:
+            need = float(x_sum_from_center_distance(self.m, self.z1, self.z2,
+                                                   float(require_positive("housing_a_w", housing_a_w, unit="mm")),
+                                                   self.rack)) if housing_a_w > self._housing_min() else math.nan
+            label = (f"a_w of x1 + x2 = housing a_w {float(housing_a_w):.10g} mm "
+                     + (f"(needs x1 + x2 = {need:.6g}; here {self.x1 + self.x2:.6g})" if math.isfinite(need)
+                        else "(unreachable: housing a_w <= a cos alpha)"))
+            extra += (_checks.CenterDistance(limit=float(housing_a_w), tol_mm=housing_tol_mm, label=label),)
         cs = _checks.make_checks(eps_alpha_min=eps_alpha_min, sa_min=sa_min, undercut=undercut,
                                  interference=interference, jamming=jamming, extra=extra)
-        return _checks.evaluate(self._geo, cs)[["check", "value", "limit", "margin", "ok", "label"]]
+        # margin and ok first: a plain session shows the columns that fit its width, the label last
+        table = _checks.evaluate(self._geo, cs)[["check", "margin", "ok", "value", "limit", "label"]]
+        table["margin"] = table["margin"].where(table["margin"].abs() > _ZERO_MARGIN, 0.0)
+        return table
+
+    def _housing_min(self) -> float:
+        return self.m * (self.z1 + self.z2) / 2.0 * math.cos(self.rack.alpha)
 
     def ok(self, **limits) -> bool:
         """True when every check of :meth:`checks` holds."""

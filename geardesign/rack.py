@@ -4,9 +4,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .errors import GearDesignError, require_finite, require_range
+import numpy as np
 
-__all__ = ["BasicRack"]
+from .errors import GearDesignError, _show, require_finite, require_range
+
+__all__ = ["BasicRack", "ALPHA_RANGE_DEG"]
+
+# Pressure angles accepted: 1°–44° (standards use 14.5°–25°; the accuracy tests cover 10°–35°).
+# At 0° the involute degenerates, at 45° the rack tooth has no tip land.
+ALPHA_RANGE_DEG = (1.0, 44.0)
 
 
 @dataclass(frozen=True)
@@ -15,7 +21,7 @@ class BasicRack:
 
     Parameters
     ----------
-    alpha_deg : pressure angle α in degrees, 0 < α < 45 (standard 20).
+    alpha_deg : pressure angle α in degrees, 1 <= α <= 44 (standard 20).
     ha : addendum coefficient h_a* (standard 1.0); the gear tooth addendum is h_a*·m.
     c : bottom clearance coefficient c* (standard 0.25); the dedendum is (h_a* + c*)·m.
     rho_f : root fillet radius coefficient ρ_f* of the rack tip that cuts the root
@@ -40,8 +46,11 @@ class BasicRack:
 
     def __post_init__(self):
         for name in ("alpha_deg", "ha", "c", "rho_f"):
-            object.__setattr__(self, name, float(require_finite(name, getattr(self, name))))
-        require_range("alpha_deg", self.alpha_deg, 0.0, 45.0, lo_open=True, hi_open=True, unit="deg")
+            value = getattr(self, name)
+            if np.ndim(value) != 0:
+                raise GearDesignError(f"{name} must be a single number, got {_show(value)}")
+            object.__setattr__(self, name, float(require_finite(name, value)))
+        require_range("alpha_deg", self.alpha_deg, *ALPHA_RANGE_DEG, unit="deg")
         require_range("ha", self.ha, 0.0, 2.0, lo_open=True)
         require_range("c", self.c, 0.0, 1.0)
         rho_max = self.rho_f_max
