@@ -1,6 +1,8 @@
 """``geardesign pair``: geometry and checks of one spur pair."""
 from __future__ import annotations
 
+from ..checks import DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN
+from ..errors import GearDesignError
 from ..geometry import GEOMETRY_FIELDS
 from ..pair import GearPair
 from ..rack import BasicRack
@@ -21,8 +23,10 @@ def rack_from_args(args) -> BasicRack:
 
 def add_limit_args(p) -> None:
     g = p.add_argument_group("check limits")
-    g.add_argument("--eps-alpha-min", type=float, default=1.2, help="minimum contact ratio (1.2)")
-    g.add_argument("--sa-min", type=float, default=0.25, help="minimum tip thickness / module (0.25)")
+    g.add_argument("--eps-alpha-min", type=float, default=DEFAULT_EPS_ALPHA_MIN,
+                   help=f"minimum contact ratio ({DEFAULT_EPS_ALPHA_MIN:g})")
+    g.add_argument("--sa-min", type=float, default=DEFAULT_SA_MIN,
+                   help=f"minimum tip thickness / module ({DEFAULT_SA_MIN:g})")
 
 
 def add_parser(sub):
@@ -34,8 +38,9 @@ def add_parser(sub):
     p.add_argument("--x1", type=float, default=None, help="profile shift of gear 1 (0)")
     p.add_argument("--x2", type=float, default=None, help="profile shift of gear 2 (0)")
     p.add_argument("--center-distance", type=float, default=None, metavar="A",
-                   help="operating centre distance a_w, mm: x2 = x_sum(a_w) - x1 "
-                        "(x1 balances specific sliding when not given)")
+                   help="operating centre distance a_w of the housing, mm. With x1 only: x2 = x_sum(a_w) - x1; "
+                        "with neither: the split that balances specific sliding; with both x1 and x2: the "
+                        "proposed shifts are kept and a center_distance check compares their a_w with A")
     p.add_argument("--no-tip-shortening", action="store_true",
                    help="keep d_a = d + 2(h_a* + x)m instead of shortening tips by dy*m")
     add_rack_args(p)
@@ -47,13 +52,20 @@ def add_parser(sub):
 def run(args) -> int:
     rack = rack_from_args(args)
     shorten = not args.no_tip_shortening
-    if args.center_distance is not None:
+    housing = None
+    if args.center_distance is not None and args.x1 is not None and args.x2 is not None:
+        pair = GearPair(args.module, args.z1, args.z2, args.x1, args.x2, rack, shorten)
+        housing = args.center_distance
+    elif args.center_distance is not None:
+        if args.x2 is not None:
+            raise GearDesignError("--x2 with --center-distance needs --x1 too (or give neither: the split "
+                                  "then balances specific sliding)")
         pair = GearPair.from_center_distance(args.module, args.z1, args.z2, args.center_distance,
                                              x1=args.x1, rack=rack, tip_shortening=shorten)
     else:
         pair = GearPair(args.module, args.z1, args.z2, args.x1 or 0.0, args.x2 or 0.0, rack, shorten)
     geo = pair.geometry()
-    table = pair.checks(eps_alpha_min=args.eps_alpha_min, sa_min=args.sa_min)
+    table = pair.checks(eps_alpha_min=args.eps_alpha_min, sa_min=args.sa_min, housing_a_w=housing)
     if args.json:
         print_json({
             "input": {"m": pair.m, "z1": pair.z1, "z2": pair.z2, "x1": pair.x1, "x2": pair.x2,

@@ -1,11 +1,17 @@
 """``geardesign shift``: the feasible x1/x2 region and the optimal shifts of one tooth pair."""
 from __future__ import annotations
 
+from ..errors import GearDesignError
 from ..problem import OBJECTIVES
-from ..region import feasible_region
-from ..shift import METHODS, optimize_shifts
+from ..shift import DEFAULT_TOL, METHODS
 from .output import add_json_flag, frame_records, print_frame, print_json
 from .pair import add_limit_args, add_rack_args, rack_from_args
+
+_METHOD_HELP = {
+    "exact": "active-set Newton, x to ~1e-12 (default)",
+    "convex": "SQP in cvxpy/Clarabel, x to ~tol, slower",
+    "grid": "best node of a grid, fastest, x within the node spacing",
+}
 
 
 def add_check_args(p) -> None:
@@ -24,14 +30,23 @@ def add_parser(sub):
                        description="The blocking contour of z1/z2 and the best x1/x2 in it.")
     p.add_argument("--z1", type=float, required=True)
     p.add_argument("--z2", type=float, required=True)
-    p.add_argument("--module", "-m", type=float, default=1.0, help="module, mm (scales a_w; 1)")
-    p.add_argument("--objective", choices=sorted(OBJECTIVES), default="max_x_sum")
-    p.add_argument("--method", choices=METHODS, default="exact")
-    p.add_argument("--tol", type=float, default=None, help="tolerance in x (method default)")
+    p.add_argument("--module", "-m", type=float, default=None,
+                   help="module, mm: needed with --center-distance; otherwise it only scales a_w (default 1)")
+    p.add_argument("--objective", choices=sorted(OBJECTIVES), default=None,
+                   help="what the optimum maximises or minimises (default max_x_sum; balanced_sliding with "
+                        "--center-distance): " + "; ".join(f"{k}: {o.description}" for k, o in OBJECTIVES.items()))
+    p.add_argument("--method", choices=METHODS, default="exact",
+                   help="; ".join(f"{k}: {v}" for k, v in _METHOD_HELP.items()))
+    p.add_argument("--tol", type=float, default=None,
+                   help="tolerance in x (" + ", ".join(f"{k} {v:g}" for k, v in DEFAULT_TOL.items()) + ")")
     p.add_argument("--center-distance", type=float, default=None, metavar="A",
-                   help="fixed operating centre distance a_w, mm: the objective picks the split")
+                   help="the housing's operating centre distance a_w, mm (with --module): fixes x1 + x2, "
+                        "the objective picks the split")
+    p.add_argument("--x1", type=float, default=None, help="a proposed x1 to check and mark (with --x2)")
+    p.add_argument("--x2", type=float, default=None, help="a proposed x2 to check and mark (with --x1)")
     p.add_argument("--no-tip-shortening", action="store_true")
     p.add_argument("--plot", metavar="PNG", default=None, help="write the blocking contour to this PNG")
+    p.add_argument("--overwrite", action="store_true", help="replace an existing --plot file")
     add_rack_args(p)
     add_check_args(p)
     add_json_flag(p)
@@ -39,26 +54,39 @@ def add_parser(sub):
 
 
 def run(args) -> int:
+    from ..files import check_output_path, write_file_atomic
+    from ..pair import GearPair
+    from ..region import feasible_region
+    from ..shift import optimize_shifts
+
+    if (args.x1 is None) != (args.x2 is None):
+        raise GearDesignError("--x1 and --x2 go together: give both to check a proposed pair")
+    if args.plot:
+        check_output_path(args.plot, overwrite=args.overwrite, suffixes=(".png",), what="--plot")
     rack = rack_from_args(args)
     checks = checks_from_args(args)
     shorten = not args.no_tip_shortening
     res = optimize_shifts(args.z1, args.z2, objective=args.objective, checks=checks, method=args.method,
                           tol=args.tol, a_w=args.center_distance, m=args.module, rack=rack,
                           tip_shortening=shorten)
-    region = feasible_region(args.z1, args.z2, rack=rack, checks=checks, m=args.module, tip_shortening=shorten)
+    m = 1.0 if args.module is None else args.module
+    proposed = None
+    if args.x1 is not None:
+        pair = GearPair(m, args.z1, args.z2, args.x1, args.x2, rack, shorten)
+        proposed = pair.checks(eps_alpha_min=args.eps_alpha_min, sa_min=args.sa_min,
+                               undercut=not args.allow_undercut, interference=not args.allow_interference,
+                               jamming=False, housing_a_w=args.center_distance)
+    region = feasible_region(args.z1, args.z2, rack=rack, checks=checks, m=m, tip_shortening=shorten)
     if args.plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
-        ax = region.plot(optimum=res if res.success else None)
-        ax.figure.savefig(args.plot, dpi=120, bbox_inches="tight")
-        plt.close(ax.figure)
+        _write_plot(region, res, proposed, args, write_file_atomic)
     if args.json:
         d = res.to_dict()
         d["region"] = {"feasible": region.feasible, "area": region.area, "conflict": region.conflict,
                        "limiting_checks": region.limiting_checks() if region.feasible else [],
                        "boundary": frame_records(region.boundary)}
+        if proposed is not None:
+            d["proposed"] = {"x1": args.x1, "x2": args.x2,
+                             "checks": frame_records(proposed[["check", "value", "limit", "margin", "ok"]])}
         print_json(d)
         return 0 if res.success else 1
     print(repr(res))
@@ -66,6 +94,25 @@ def run(args) -> int:
     print(repr(region))
     if res.success:
         print_frame(res.to_frame(), "\nChecks at the optimum (margin >= 0 holds; sensitivity = d fun / d limit)")
+    if proposed is not None:
+        print_frame(proposed[["check", "value", "limit", "margin", "ok"]],
+                    f"\nThe proposed pair x1 = {args.x1:g}, x2 = {args.x2:g}")
+        failed = proposed.loc[~proposed["ok"], "check"].tolist()
+        print("All checks hold." if not failed else f"Failing checks: {', '.join(failed)}")
     if args.plot:
         print(f"\nblocking contour written to {args.plot}")
     return 0 if res.success else 1
+
+
+def _write_plot(region, res, proposed, args, write_file_atomic) -> None:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    ax = region.plot(optimum=res if res.success else None,
+                     proposed=None if proposed is None else (args.x1, args.x2),
+                     x_sum=res.x_sum_fixed)
+    try:
+        write_file_atomic(args.plot, lambda tmp: ax.figure.savefig(tmp, dpi=120, bbox_inches="tight", format="png"))
+    finally:
+        plt.close(ax.figure)
