@@ -14,11 +14,12 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError, require_int, require_range
-from .problem import DEFAULT_BOUNDS, Problem
+from .errors import GearDesignError, require_count, require_int, require_range
+from .geometry import center_distance_from_x_sum
+from .problem import DEFAULT_BOUNDS, X_WINDOW_LIMIT, Problem
 from .shift import smallest_conflict
 
-__all__ = ["feasible_region", "Region"]
+__all__ = ["feasible_region", "Region", "CHECK_COLOURS", "check_style"]
 
 WINDOW = "window"
 
@@ -43,6 +44,7 @@ class Region:
     tol: float
     bounds: tuple
     problem: Problem = field(repr=False)
+    area_error: float = 0.0
 
     @property
     def checks(self) -> list[str]:
@@ -68,63 +70,145 @@ class Region:
 
     def __repr__(self) -> str:
         if not self.feasible:
-            return (f"Region(z1/z2 = {self.z1}/{self.z2}: empty; conflicting checks: "
-                    f"{', '.join(self.conflict) or 'none found'})")
-        return (f"Region(z1/z2 = {self.z1}/{self.z2}, area {self.area:.6g}, {len(self.boundary)} vertices, "
+            why = (f"checks {', '.join(self.conflict)} conflict" if self.conflict
+                   else "every check holds somewhere in the window, but not all together")
+            return f"Region(z1/z2 = {self.z1}/{self.z2}: empty; {why})"
+        return (f"Region(z1/z2 = {self.z1}/{self.z2}, area {self.area:.6g} ± {self.area_error:.1g}, "
+                f"{len(self.boundary)} vertices, "
                 f"limited by {', '.join(self.limiting_checks())}; method {self.method}, tol {self.tol:g})")
 
-    def plot(self, ax=None, isolines=("eps_alpha", "sa"), optimum=None, n: int = 241):
-        """Draw the region and every check's curve, like a handbook blocking contour.
+    def plot(self, ax=None, isolines=("eps_alpha", "sa"), optimum=None, proposed=None, x_sum=None,
+             n: int = 241):
+        """Draw the blocking contour as a handbook does: every check's curve in its own fixed
+        colour (:data:`CHECK_COLOURS`; solid for gear 1, dashed for gear 2) with ticks on its
+        forbidden side, the feasible region shaded, thin grey isolines of ε_α and s_a/m (levels
+        that coincide with a check's limit are left to the check's curve).
 
-        ``isolines``: any of "eps_alpha" (ε_α) and "sa" (s_a/m of both gears) drawn as thin
-        labelled contours; ``optimum``: a :class:`~geardesign.shift.ShiftResult` or (x1, x2) to mark.
-        Returns the matplotlib Axes.
+        ``optimum``: a :class:`~geardesign.shift.ShiftResult` or (x1, x2), marked with a star;
+        ``proposed``: (x1, x2) of a proposed pair, marked with a cross; ``x_sum``: the line
+        x1 + x2 = x_sum of a fixed centre distance, its feasible part drawn thick. An empty
+        region says so in the axes, with the checks that conflict. Returns the matplotlib Axes.
         """
         import matplotlib.pyplot as plt
+        from matplotlib import patheffects
 
+        n = require_count("n", n, 11, PLOT_N_MAX)
         if ax is None:
-            _, ax = plt.subplots(figsize=(7, 6))
+            _, ax = plt.subplots(figsize=(8.6, 6.2))
         lo, hi = self.bounds
         g = np.linspace(lo, hi, n)
         X1, X2 = np.meshgrid(g, g, indexing="ij")
-        geo = self.problem.geo(X1, X2)
-        M = self.problem.margins(geo)
-        colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+        with np.errstate(all="ignore"):
+            geo = self.problem.geo(X1, X2)
+            M = self.problem.margins(geo)
         handles = []
         for k, c in enumerate(self.problem.checks):
-            mk = np.where(np.isfinite(M[k]), M[k], -10.0)
-            if mk.min() < 0 < mk.max():
-                cs = ax.contour(X1, X2, mk, levels=[0.0], colors=[colors[k % len(colors)]], linewidths=1.4)
-                handles.append(plt.Line2D([], [], color=colors[k % len(colors)], label=c.name))
-                del cs
+            # no geometry is no curve: masked, so a curve ends where the pair stops existing
+            # instead of a staircase along the edge of existence
+            mk = np.ma.masked_invalid(np.where(np.isfinite(M[k]), M[k], np.nan))
+            if mk.count() == 0 or not (mk.min() < 0 < mk.max()):
+                continue
+            colour, style = check_style(c.name)
+            cs = ax.contour(X1, X2, mk, levels=[0.0], colors=[colour], linewidths=1.6, linestyles=style)
+            # ticks on the side where the margin is negative (contour lines keep higher values
+            # on their left, the ticks go right)
+            cs.set(path_effects=[patheffects.withTickedStroke(angle=-60, spacing=7, length=0.6)])
+            handles.append(plt.Line2D([], [], color=colour, ls=style, lw=1.6, label=c.name))
+        limits = {c.name: c.limit for c in self.problem.checks}
         if isolines:
-            with np.errstate(invalid="ignore"):
-                if "eps_alpha" in isolines:
-                    cs = ax.contour(X1, X2, geo["eps_alpha"], levels=[1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6],
-                                    colors="0.6", linewidths=0.6, linestyles=":")
-                    ax.clabel(cs, fmt="ε=%.1f", fontsize=7)
-                if "sa" in isolines:
-                    for j in (1, 2):
-                        cs = ax.contour(X1, X2, geo[f"sa{j}"] / geo["_m"], levels=[0.0, 0.25, 0.4],
-                                        colors="0.75", linewidths=0.6, linestyles="--")
-                        ax.clabel(cs, fmt=f"s_a{j}/m=%.2f", fontsize=6)
+            _isolines(ax, X1, X2, geo, isolines, limits)
         if self.feasible:
             for _, comp in self.boundary.groupby("component"):
-                ax.fill(comp["x1"], comp["x2"], color="tab:green", alpha=0.25, lw=0)
-            handles.append(plt.Rectangle((0, 0), 1, 1, color="tab:green", alpha=0.25, label="feasible"))
+                ax.fill(comp["x1"], comp["x2"], color="tab:green", alpha=0.22, lw=0)
+            handles.append(plt.Rectangle((0, 0), 1, 1, color="tab:green", alpha=0.22, label="feasible"))
+        else:
+            why = (f"checks {', '.join(self.conflict)} conflict" if self.conflict
+                   else "no point holds every check")
+            ax.text(0.5, 0.5, f"no feasible x1, x2:\n{why}", transform=ax.transAxes, ha="center", va="center",
+                    fontsize=12, color="darkred", bbox=dict(boxstyle="round", fc="white", ec="darkred", alpha=0.9))
+        if x_sum is not None:
+            handles += self._plot_x_sum(ax, float(x_sum))
         if optimum is not None:
             ox, oy = (optimum.x1, optimum.x2) if hasattr(optimum, "x1") else optimum
-            ax.plot([ox], [oy], "k*", ms=12)
-            handles.append(plt.Line2D([], [], color="k", marker="*", ls="", ms=10, label="optimum"))
-        ax.set_xlabel("x1 (profile shift, gear 1)")
-        ax.set_ylabel("x2 (profile shift, gear 2)")
-        ax.set_title(f"Blocking contour z1/z2 = {self.z1}/{self.z2}")
-        ax.grid(True, lw=0.3)
-        ax.legend(handles=handles, fontsize=8, loc="upper right")
+            ax.plot([ox], [oy], marker="*", color="k", ms=15, ls="", zorder=5)
+            handles.append(plt.Line2D([], [], color="k", marker="*", ls="", ms=11,
+                                      label=f"optimum ({ox:.3f}, {oy:.3f})"))
+        if proposed is not None:
+            px, py = proposed
+            ok = bool(self.contains(px, py))
+            ax.plot([px], [py], marker="X", color="tab:red" if not ok else "tab:blue", ms=11, ls="",
+                    mec="white", zorder=5)
+            handles.append(plt.Line2D([], [], color="tab:red" if not ok else "tab:blue", marker="X", ls="", ms=9,
+                                      label=f"proposed ({px:.3f}, {py:.3f}){'' if ok else ': fails'}"))
+        handles.append(plt.Line2D([], [], color="0.25", lw=0.7, ls=(0, (3, 2)), label="isolines ε_α, s_a/m"))
+        ax.set_xlim(lo, hi)
+        ax.set_ylim(lo, hi)
+        ax.set_xlabel("x1 (profile shift, gear 1)", fontsize=10)
+        ax.set_ylabel("x2 (profile shift, gear 2)", fontsize=10)
+        ax.set_title(f"Blocking contour z1/z2 = {self.z1}/{self.z2} (ticks: forbidden side)", fontsize=11)
+        ax.grid(True, lw=0.3, alpha=0.6)
+        ax.set_aspect("equal")
+        ax.legend(handles=handles, fontsize=8.5, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)
         return ax
 
+    def _plot_x_sum(self, ax, x_sum: float) -> list:
+        """The line x1 + x2 = x_sum across the window, its feasible part thick."""
+        import matplotlib.pyplot as plt
 
-def _project(prob: Problem, P: np.ndarray, idx: np.ndarray, iters: int = 6) -> np.ndarray:
+        lo, hi = self.bounds
+        t = np.linspace(max(lo, x_sum - hi), min(hi, x_sum - lo), 2001)
+        if t.size == 0 or t[0] > t[-1]:
+            return []
+        inside = self.contains(t, x_sum - t)
+        prob = self.problem
+        a_w = float(center_distance_from_x_sum(prob.m, prob.z1, prob.z2, x_sum, prob.rack))
+        ax.plot(t, x_sum - t, color="k", lw=0.9, ls="--", zorder=3)
+        seg = np.where(inside, x_sum - t, np.nan)
+        ax.plot(t, seg, color="k", lw=3.2, solid_capstyle="butt", zorder=4)
+        return [plt.Line2D([], [], color="k", lw=0.9, ls="--",
+                           label=f"a_w = {a_w:.6g} mm (x1 + x2 = {x_sum:.4g})"),
+                plt.Line2D([], [], color="k", lw=3.2, label="its feasible part")]
+
+
+CHECK_COLOURS = {
+    "undercut": "tab:blue", "interference": "tab:red", "tip_thickness": "tab:orange",
+    "contact_ratio": "tab:purple", "jamming": "tab:brown", "center_distance": "tab:cyan",
+}
+_CUSTOM_COLOURS = ("tab:olive", "tab:pink", "tab:gray", "darkgoldenrod", "teal")
+PLOT_N_MAX = 1201      # nodes per axis of a plot's curves: 1.4 M designs, ~1 s
+
+
+def check_style(name: str) -> tuple[str, str]:
+    """(colour, line style) of a check, the same in every plot: the colour by its kind, solid
+    for gear 1 and dashed for gear 2; a custom check gets a colour from its name."""
+    kind = name.rstrip("12")
+    gear2 = name.endswith("2") and kind in CHECK_COLOURS
+    if kind in CHECK_COLOURS:
+        return CHECK_COLOURS[kind], "--" if gear2 else "-"
+    return _CUSTOM_COLOURS[sum(map(ord, name)) % len(_CUSTOM_COLOURS)], "-."
+
+
+def _isolines(ax, X1, X2, geo, isolines, limits) -> None:
+    """Thin grey labelled isolines; a level equal to a check's limit is that check's curve."""
+    eps_limit = limits.get("contact_ratio")
+    sa_limit = {j: limits.get(f"tip_thickness{j}") for j in (1, 2)}
+    style = dict(colors="0.35", linewidths=0.6, linestyles=[(0, (3, 2))])
+    with np.errstate(invalid="ignore"):
+        if "eps_alpha" in isolines:
+            levels = [v for v in (1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.8) if eps_limit is None
+                      or abs(v - eps_limit) > 1e-9]
+            cs = ax.contour(X1, X2, np.ma.masked_invalid(geo["eps_alpha"]), levels=levels, **style)
+            ax.clabel(cs, fmt="ε=%.1f", fontsize=8, inline_spacing=2)
+        if "sa" in isolines:
+            for j in (1, 2):
+                levels = [v for v in (0.0, 0.25, 0.4) if sa_limit[j] is None or abs(v - sa_limit[j]) > 1e-9]
+                if not levels:
+                    continue
+                cs = ax.contour(X1, X2, np.ma.masked_invalid(geo[f"sa{j}"] / geo["_m"]), levels=levels, **style)
+                ax.clabel(cs, fmt=f"s_a{j}/m=%.2f", fontsize=7.5, inline_spacing=2)
+
+
+def _project(prob: Problem, P: np.ndarray, idx: np.ndarray, iters: int = 10) -> np.ndarray:
     """Newton steps x ← x − m_k ∇m_k/‖∇m_k‖² onto check idx[i]'s curve, all points at once."""
     P = P.copy()
     rows = np.arange(len(P))
@@ -160,6 +244,10 @@ def _corners(prob: Problem, P: np.ndarray, a: np.ndarray, b: np.ndarray, iters: 
     return P
 
 
+REGION_N_MAX = 2001     # nodes per axis of a region's grid: 4 M designs, ~3 GB of geometry at most
+NO_GEOMETRY = "no_geometry"   # edge where the pair stops existing (α_w -> 0, a tip at its base circle)
+
+
 def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: float | None = None,
                     m: float = 1.0, tip_shortening: bool = True, bounds=DEFAULT_BOUNDS,
                     n: int | None = None) -> Region:
@@ -167,74 +255,236 @@ def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: 
 
     Parameters as :func:`geardesign.shift.optimize_shifts`; ``method`` "grid" keeps the
     grid-interpolated contour (vertex error ~ grid step²), "exact" (default) puts every vertex
-    on its check's curve and solves the corners to ~1e-12. ``n`` nodes per axis (default 161,
-    or from ``tol`` for "grid"). An empty region is a result: ``feasible`` False and
-    ``conflict`` naming a smallest set of conflicting checks.
+    on its check's curve (or the window's edge) and solves the corners to ~1e-12. ``n`` nodes
+    per axis (default 321, or from ``tol`` for "grid"; at most REGION_N_MAX). A region thinner
+    than the grid is found by a local search and traced on a finer grid around it. The area
+    comes with ``area_error``, an estimate of its error (the change when every edge is halved
+    onto its curve, over 3: chords lose area as the square of their length). An empty region is
+    a result: ``feasible`` False and ``conflict`` naming a smallest set of conflicting checks.
 
     >>> reg = feasible_region(17, 26)
     >>> reg.feasible, bool(reg.contains(0.5, 0.5)), bool(reg.contains(0.898, 0.517))
     (True, True, False)
     """
-    import contourpy
-
     if method not in ("grid", "exact"):
         raise GearDesignError(f"method must be 'grid' or 'exact' for a region, got {method!r}")
     tol = (0.01 if method == "grid" else 1e-9) if tol is None else float(require_range("tol", tol, 1e-14, 1.0))
-    lo, hi = (float(b) for b in bounds)
+    lo, hi = _bounds(bounds)
+    if n is None:
+        n = int(min(max(math.ceil((hi - lo) / tol) + 1, 41), 801)) if method == "grid" else 321
+    n = require_count("n", n, 11, REGION_N_MAX)
+    prob = Problem(z1, z2, rack, checks, "max_x_sum", m, tip_shortening)
+    window = (lo, hi)
+    box_used = (lo, hi, lo, hi)
+    loops = _trace(prob, box_used, n, window, method)
+    h = (hi - lo) / (n - 1)
+    if not loops or sum(abs(_shoelace(L)) for L, _ in loops) < h * h:
+        # thinner than the grid? the most central point nearby says; then trace around it
+        point = _central_point(prob, window)
+        if point is not None:
+            for w in (0.02, 0.06, 0.2, 0.6):
+                box = (max(lo, point[0] - w), min(hi, point[0] + w), max(lo, point[1] - w), min(hi, point[1] + w))
+                loops = _trace(prob, box, n, window, method)
+                box_used = box
+                if loops and not _touches_box(loops, box, window):
+                    break
+    if not loops:
+        conflict = smallest_conflict(prob, window)
+        return Region(prob.z1, prob.z2, pd.DataFrame(columns=["component", "x1", "x2", "check"]), 0.0,
+                      False, conflict, method, tol, window, prob, area_error=0.0)
+    frames, area, area_fine, off = [], 0.0, 0.0, 0.0
+    for comp, (L, names) in enumerate(loops):
+        off += _off_curve_area(prob, L, names)
+        a = _shoelace(L)
+        if a < 0:   # counter-clockwise, edge labels follow the start vertex
+            L, names = L[::-1], np.roll(names[::-1], -1)
+            a = -a
+        area += a
+        area_fine += abs(_shoelace(_halved(prob, L, names))) if method == "exact" else a
+        frames.append(pd.DataFrame({"component": comp, "x1": L[:, 0], "x2": L[:, 1], "check": names}))
+    err = abs(area_fine - area) / 3.0 + off
+    if method == "exact" and len(loops) and n >= 41:
+        # and what the same trace gives at half the resolution: a loop that pinches off or a
+        # vertex that misses its curve shows there, where the chord estimate cannot see it
+        coarse = sum(abs(_shoelace(L)) for L, _ in _trace(prob, box_used, (n + 1) // 2, window, method))
+        err = max(err, abs(coarse - (area_fine + (area_fine - area) / 3.0)))
+    return Region(prob.z1, prob.z2, pd.concat(frames, ignore_index=True), area_fine + (area_fine - area) / 3.0,
+                  True, [], method, tol, window, prob, area_error=err)
+
+
+def _bounds(bounds) -> tuple[float, float]:
+    try:
+        lo, hi = (float(require_range("bounds", b, -X_WINDOW_LIMIT, X_WINDOW_LIMIT)) for b in bounds)
+    except (TypeError, ValueError) as exc:
+        if isinstance(exc, GearDesignError):
+            raise
+        raise GearDesignError(f"bounds must be (lo, hi), got {bounds!r}") from None
     if not lo < hi:
         raise GearDesignError(f"bounds must be (lo, hi) with lo < hi, got {bounds!r}")
-    if n is None:
-        n = int(min(max(math.ceil((hi - lo) / tol) + 1, 41), 801)) if method == "grid" else 161
-    n = int(require_int("n", n, 11))
-    prob = Problem(z1, z2, rack, checks, "max_x_sum", m, tip_shortening)
-    g = np.linspace(lo, hi, n)
-    X1, X2 = np.meshgrid(g, g, indexing="ij")
-    M = prob.margins(prob.geo(X1, X2))
+    return lo, hi
+
+
+def _shoelace(L: np.ndarray) -> float:
+    x, y = L[:, 0], L[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
+
+
+def _off_curve_area(prob: Problem, L: np.ndarray, names: np.ndarray) -> float:
+    """Area a vertex left off its curve can misplace: its first-order distance to the curve
+    times half its two edges, summed (0 where every vertex sits on its curve)."""
+    index = {name: k for k, name in enumerate(prob.names)}
+    k = np.array([index.get(nm, -1) for nm in names])
+    on = k >= 0
+    if not on.any():
+        return 0.0
+    with np.errstate(all="ignore"):
+        geo = prob.geo(L[on, 0], L[on, 1])
+        rows = np.arange(on.sum())
+        mk = prob.margins(geo)[k[on], rows]
+        G = prob.margin_gradients(geo)[k[on], :, rows]
+        dist = np.abs(mk) / np.hypot(G[:, 0], G[:, 1])
+    edge = np.hypot(*(np.roll(L, -1, axis=0) - L).T)
+    half = (edge + np.roll(edge, 1)) / 2
+    return float(np.nansum(np.where(np.isfinite(dist), dist, 0.0) * half[on]))
+
+
+def _halved(prob: Problem, L: np.ndarray, names: np.ndarray) -> np.ndarray:
+    """The polygon with the midpoint of every check edge moved onto that check's curve."""
+    nxt = np.roll(np.arange(len(L)), -1)
+    index = {name: k for k, name in enumerate(prob.names)}
+    on_check = np.array([nm in index for nm in names])
+    mids = (L + L[nxt]) / 2
+    if on_check.any():
+        k = np.flatnonzero(on_check)
+        moved = _project(prob, mids[k], np.array([index[nm] for nm in names[k]]))
+        good = np.isfinite(moved).all(axis=1)
+        mids[k[good]] = moved[good]
+    out = np.empty((2 * len(L), 2))
+    out[0::2], out[1::2] = L, mids
+    return out
+
+
+def _central_point(prob: Problem, window):
+    """A point where every check holds near the least infeasible node of a coarse grid, or None."""
+    from .shift import _MinMargin, _least_infeasible, _slsqp, grid_points
+
+    V = grid_points(prob, 61, window)
+    _, M = prob.evaluate(V, grads=False)
+    if not M.size:
+        return None
+    w, _, _ = _slsqp(_MinMargin(prob), V[_least_infeasible(prob, V, M)], window, ftol=1e-12, pieces_only=True)
+    return w[:2] if w[-1] >= 0 and np.isfinite(w).all() else None
+
+
+def _touches_box(loops, box, window) -> bool:
+    """True when a traced loop runs along an edge of the zoom box that is not the window's."""
+    for L, _ in loops:
+        for coord, edge in ((0, box[0]), (0, box[1]), (1, box[2]), (1, box[3])):
+            if edge not in window and (np.abs(L[:, coord] - edge) < 1e-12).any():
+                return True
+    return False
+
+
+def _trace(prob: Problem, box, n: int, window, method: str) -> list:
+    """The loops [(vertices, edge labels)] of the zero contour of the smallest margin over the
+    box (x1 lo, x1 hi, x2 lo, x2 hi), labelled, and with ``exact`` moved onto their curves."""
+    import contourpy
+
+    g1, g2 = np.linspace(box[0], box[1], n), np.linspace(box[2], box[3], n)
+    X1, X2 = np.meshgrid(g1, g2, indexing="ij")
+    with np.errstate(all="ignore"):
+        M = prob.margins(prob.geo(X1, X2))
     F = M.min(axis=0) if M.size else np.ones_like(X1)
     F = np.where(np.isfinite(F), F, -1.0)
-    h = g[1] - g[0]
-    gp = np.concatenate([[lo - h], g, [hi + h]])
+    # a frame of -1 outside the box closes the loops along its edges
+    h1, h2 = g1[1] - g1[0], g2[1] - g2[0]
+    gp1 = np.concatenate([[box[0] - h1], g1, [box[1] + h1]])
+    gp2 = np.concatenate([[box[2] - h2], g2, [box[3] + h2]])
     Fp = np.full((n + 2, n + 2), -1.0)
     Fp[1:-1, 1:-1] = F
-    gen = contourpy.contour_generator(x=gp, y=gp, z=Fp.T, line_type=contourpy.LineType.Separate)
-    loops = [np.asarray(l) for l in gen.lines(0.0) if len(l) >= 4]
-    if not loops:
-        conflict = smallest_conflict(prob, (lo, hi))
-        return Region(prob.z1, prob.z2, pd.DataFrame(columns=["component", "x1", "x2", "check"]), 0.0,
-                      False, conflict, method, tol, (lo, hi), prob)
-    frames, area = [], 0.0
-    for comp, L in enumerate(loops):
+    gen = contourpy.contour_generator(x=gp1, y=gp2, z=Fp.T, line_type=contourpy.LineType.Separate)
+    out = []
+    for L in gen.lines(0.0):
+        L = np.asarray(L, dtype=float)
+        if len(L) < 4:
+            continue
         if np.allclose(L[0], L[-1]):
             L = L[:-1]
-        L = np.clip(L, lo, hi)
-        on_window = (np.abs(L[:, 0] - lo) < 1e-12) | (np.abs(L[:, 0] - hi) < 1e-12) | \
-                    (np.abs(L[:, 1] - lo) < 1e-12) | (np.abs(L[:, 1] - hi) < 1e-12)
+        L[:, 0] = np.clip(L[:, 0], box[0], box[1])
+        L[:, 1] = np.clip(L[:, 1], box[2], box[3])
+        out.append(_label(prob, L, box, window, method))
+    return out
+
+
+def _label(prob: Problem, L: np.ndarray, box, window, method: str):
+    """Vertices and edge labels of one loop: the smallest check at each vertex, the window, or
+    the edge of existence; with ``exact`` each vertex moved onto its curve, each corner solved."""
+    lo, hi = window
+    on_box = ((np.abs(L[:, 0] - box[0]) < 1e-12) | (np.abs(L[:, 0] - box[1]) < 1e-12)
+              | (np.abs(L[:, 1] - box[2]) < 1e-12) | (np.abs(L[:, 1] - box[3]) < 1e-12))
+    with np.errstate(all="ignore"):
         Mv = prob.margins(prob.geo(L[:, 0], L[:, 1]))
-        idx = np.argmin(np.where(np.isfinite(Mv), np.abs(Mv), np.inf), axis=0)
-        if method == "exact" and (~on_window).any():
-            inner = ~on_window
-            L[inner] = _project(prob, L[inner], idx[inner])
-            # corners: consecutive vertices limited by different checks
-            nxt = np.roll(np.arange(len(L)), -1)
-            change = inner & inner[nxt] & (idx != idx[nxt])
-            if change.any():
-                i = np.flatnonzero(change)
-                mids = (L[i] + L[nxt[i]]) / 2
-                C = _corners(prob, mids, idx[i], idx[nxt[i]])
-                pts, labs, win = [], [], []
-                ins = dict(zip(i.tolist(), range(len(i))))
-                for k in range(len(L)):
-                    pts.append(L[k]); labs.append(idx[k]); win.append(on_window[k])
-                    if k in ins:
-                        pts.append(C[ins[k]]); labs.append(idx[nxt[k]]); win.append(False)
-                L, idx, on_window = np.array(pts), np.array(labs), np.array(win)
-        names = np.array(prob.names, dtype=object)[idx]
-        names = np.where(on_window & np.roll(on_window, -1), WINDOW, names)
-        x, y = L[:, 0], L[:, 1]
-        signed = 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
-        if signed < 0:   # counter-clockwise, edge labels follow the start vertex
-            L, names = L[::-1], np.roll(names[::-1], -1)
-            signed = -signed
-        area += signed
-        frames.append(pd.DataFrame({"component": comp, "x1": L[:, 0], "x2": L[:, 1], "check": names}))
-    return Region(prob.z1, prob.z2, pd.concat(frames, ignore_index=True), area, True, [], method, tol, (lo, hi), prob)
+    finite = np.isfinite(Mv).all(axis=0) if Mv.size else np.ones(len(L), bool)
+    idx = np.argmin(np.where(np.isfinite(Mv), np.abs(Mv), np.inf), axis=0) if Mv.size else np.zeros(len(L), int)
+    if method == "exact" and Mv.size:
+        inner = ~on_box & finite
+        if inner.any():
+            moved = _project(prob, L[inner], idx[inner])
+            ok = np.isfinite(moved).all(axis=1)
+            L[np.flatnonzero(inner)[ok]] = moved[ok]
+        L, idx, on_box, finite = _solve_corners(prob, L, idx, on_box, finite)
+    names = np.array(prob.names, dtype=object)[idx] if Mv.size else np.full(len(L), WINDOW, dtype=object)
+    names = np.where(~finite, NO_GEOMETRY, names)
+    names = np.where(on_box & np.roll(on_box, -1), WINDOW, names)
+    return L, names
+
+
+def _solve_corners(prob: Problem, L, idx, on_box, finite):
+    """Insert the exact corner between consecutive vertices limited by different checks, and move
+    each box vertex next to a check vertex onto that check's curve along the box's edge."""
+    nxt = np.roll(np.arange(len(L)), -1)
+    inner = ~on_box & finite
+    change = inner & inner[nxt] & (idx != idx[nxt])
+    ins = {}
+    if change.any():
+        i = np.flatnonzero(change)
+        C = _corners(prob, (L[i] + L[nxt[i]]) / 2, idx[i], idx[nxt[i]])
+        ins = {int(k): C[j] for j, k in enumerate(i) if np.isfinite(C[j]).all()}
+    # a box vertex whose neighbour lies on a check: where that check's curve crosses the edge
+    prv = np.roll(np.arange(len(L)), 1)
+    for k in np.flatnonzero(on_box & finite):
+        for nb in (prv[k], nxt[k]):
+            if inner[nb]:
+                moved = _slide(prob, L[k], int(idx[nb]))
+                if moved is not None:
+                    L[k] = moved
+                    idx[k] = idx[nb]
+                break
+    pts, labs, box, fin = [], [], [], []
+    for k in range(len(L)):
+        pts.append(L[k]); labs.append(idx[k]); box.append(on_box[k]); fin.append(finite[k])
+        if k in ins:
+            pts.append(ins[k]); labs.append(idx[nxt[k]]); box.append(False); fin.append(True)
+    return np.array(pts), np.array(labs), np.array(box), np.array(fin)
+
+
+def _slide(prob: Problem, p: np.ndarray, k: int, iters: int = 8):
+    """Newton along the box edge through p (the coordinate that is not on the edge moves) onto
+    check k's curve; None when it does not converge within a small step."""
+    p = p.copy()
+    start = p.copy()
+    for _ in range(iters):
+        with np.errstate(all="ignore"):
+            geo = prob.geo(np.array([p[0]]), np.array([p[1]]))
+            mk = prob.margins(geo)[k, 0]
+            G = prob.margin_gradients(geo)[k, :, 0]
+        # the free coordinate is the one along which the box edge runs: pick the larger slope
+        j = int(np.argmax(np.abs(G)))
+        if not (np.isfinite(mk) and np.isfinite(G[j]) and G[j] != 0):
+            return None
+        p[j] -= mk / G[j]
+        if abs(mk) < 1e-14:
+            break
+    return p if np.abs(p - start).max() < 0.1 and np.isfinite(p).all() else None
+
+

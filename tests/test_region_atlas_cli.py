@@ -69,12 +69,73 @@ def test_empty_region_names_a_conflict():
 def test_region_plot(tmp_path):
     import matplotlib
     matplotlib.use("Agg")
+    from matplotlib.colors import to_hex
+
     reg = gd.feasible_region(17, 26)
-    ax = reg.plot(optimum=gd.optimize_shifts(17, 26))
-    labels = [t.get_text() for t in ax.get_legend().get_texts()]
-    assert "contact_ratio" in labels and "feasible" in labels and "optimum" in labels
+    ax = reg.plot(optimum=gd.optimize_shifts(17, 26), proposed=(0.898, 0.517), x_sum=1.0)
+    leg = ax.get_legend()
+    labels = [t.get_text() for t in leg.get_texts()]
+    assert "contact_ratio" in labels and "feasible" in labels
+    assert any(t.startswith("optimum (0.360, 0.977)") for t in labels)
+    assert any(t.startswith("proposed (0.898, 0.517): fails") for t in labels)   # ε_α 1.153 < 1.2
+    assert any(t.startswith("a_w = ") and "x1 + x2 = 1" in t for t in labels)
+    # one colour per check, the same in every plot
+    colours = {t.get_text(): to_hex(h.get_color()) for t, h in zip(leg.get_texts(), leg.legend_handles)
+               if t.get_text() in reg.problem.names}
+    other = gd.feasible_region(12, 31).plot().get_legend()
+    for t, h in zip(other.get_texts(), other.legend_handles):
+        if t.get_text() in colours:
+            assert to_hex(h.get_color()) == colours[t.get_text()]
     ax.figure.savefig(tmp_path / "c.png")
     assert (tmp_path / "c.png").stat().st_size > 10_000
+
+
+def test_empty_region_plot_says_so():
+    import matplotlib
+    matplotlib.use("Agg")
+    reg = gd.feasible_region(5, 5)
+    assert not reg.feasible
+    texts = [t.get_text() for t in reg.plot().texts]
+    assert any("no feasible x1, x2" in t and all(c in t for c in reg.conflict) for t in texts)
+
+
+def test_thin_region_is_found_and_its_area_is_honest():
+    # 8/44: a sliver ~0.02 wide that no node of the default grid falls in, yet the optimum is
+    # feasible there; the area agrees with a 1601-node trace within the stated error
+    reg = gd.feasible_region(8, 44)
+    r = gd.optimize_shifts(8, 44)
+    assert r.success and reg.feasible and bool(reg.contains(r.x1, r.x2) or min(r.margins.values()) >= -1e-9)
+    fine = gd.feasible_region(8, 44, n=1601)
+    assert abs(reg.area - fine.area) <= reg.area_error + 1e-12
+
+
+@pytest.mark.parametrize("z1,z2", [(33, 123), (17, 26), (40, 120)])
+def test_area_within_its_stated_error(z1, z2):
+    """Against an independent count: the fraction of a fine grid's cell centres where every
+    check holds (error ~ perimeter × cell size), within the region's stated error plus that."""
+    reg = gd.feasible_region(z1, z2)
+    n = 3000
+    h = 4.5 / n
+    g = -1.5 + h * (np.arange(n) + 0.5)
+    inside = 0
+    for rows in np.array_split(g, 30):
+        X1, X2 = np.meshgrid(rows, g, indexing="ij")
+        with np.errstate(all="ignore"):
+            geo = _core(1.0, z1, z2, X1, X2, gd.BasicRack(), True)
+            ok = np.ones(X1.shape, bool)
+            for c in ck.make_checks():
+                ok &= np.nan_to_num(c.margin(geo), nan=-1) >= 0
+        inside += int(ok.sum())
+    counted = inside * h * h
+    perimeter = float(np.hypot(*np.diff(reg.boundary[["x1", "x2"]].to_numpy(), axis=0).T).sum())
+    assert abs(reg.area - counted) <= reg.area_error + perimeter * h
+
+
+def test_region_sizes_are_bounded_up_front():
+    with pytest.raises(gd.GearDesignError, match=r"n must be .* \[11, 2001\]"):
+        gd.feasible_region(17, 26, n=10**5)
+    reg = gd.feasible_region(17, 26, checks=[])
+    assert reg.feasible and reg.area == pytest.approx(4.5 ** 2, rel=1e-9)
 
 
 def test_atlas_agrees_with_one_by_one_solves():
