@@ -52,6 +52,11 @@ FACTOR_NAMES = ("k_d", "k_a", "k_n", "k_reg", "k_lub", "k_mode")
 # Formulas
 # --------------------------------------------------------------------------------------------
 
+CENTER_DISTANCE_MAX_MM = 1e5        # 100 m: past any roller-chain drive
+CENTER_DISTANCE_PITCHES_MAX = 80.0  # longest span a roller chain is laid out for (a <= 80 p; ISO 10823 notes)
+Z2_MAX_LIMIT = 250                  # largest sprocket the tooth-count rules are written for
+
+
 def recommended_z1(ratio):
     """Small-sprocket teeth from the rule z1 = 29 − 2u, rounded to odd, bounded to [13, 29].
 
@@ -410,18 +415,27 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     if allowable_safety_factor is not None:
         allowable_safety_factor = float(require_range("allowable_safety_factor", allowable_safety_factor, 1.0, 100.0))
     sag = float(require_range("sag_factor", sag_factor, 0.0, 10.0))
-    z2_max = int(require_int("z2_max", z2_max, 9))
+    z2_max = int(require_int("z2_max", z2_max, 9, Z2_MAX_LIMIT))
     if z1 is None:
-        z1_values = np.arange(13, recommended_z1(u) + 1, 2, dtype=np.int64)
+        # odd counts from 13 up to the rule z1 = 29 − 2u; at u > 8 the rule falls below 13,
+        # the smallest small sprocket of the tables, which is then the only candidate
+        z1_values = np.arange(13, max(recommended_z1(u), 13) + 1, 2, dtype=np.int64)
+        if round(u * 13) > z2_max:
+            raise GearDesignError(
+                f"ratio = {u:g} needs z2 = {round(u * 13)} teeth on the smallest small sprocket (z1 = 13), above "
+                f"z2_max = {z2_max}; the ratio can be at most {z2_max / 13:.4g} here (raise z2_max or split the ratio)")
     else:
-        z1_values = np.atleast_1d(require_int("z1", z1, 7)).astype(np.int64)
+        z1_values = np.atleast_1d(require_int("z1", z1, 7, 200)).astype(np.int64)
+        if z1_values.size == 0 or z1_values.size > 100:
+            raise GearDesignError(f"z1 must list 1 to 100 tooth counts, got {z1_values.size}")
         z2_given = np.round(u * z1_values)
         if (z2_given > z2_max).any():
             raise GearDesignError(
                 f"z1 = {int(z1_values[np.argmax(z2_given > z2_max)])} with ratio {u:g} needs "
                 f"z2 = {int(z2_given.max())} teeth, above z2_max = {z2_max}; choose a smaller z1")
     if center_distance_mm is not None:
-        center_distance_mm = float(require_positive("center_distance_mm", center_distance_mm, "mm"))
+        center_distance_mm = float(require_range("center_distance_mm", center_distance_mm, 0.0, CENTER_DISTANCE_MAX_MM,
+                                                 lo_open=True, unit="mm"))
     cpitches = float(require_range("center_distance_pitches", center_distance_pitches, 10.0, 100.0))
 
     chains = chain_catalog(catalog)
@@ -437,6 +451,9 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     cand["z1"] = np.tile(z1_values, nc)
     cand["z2"] = np.round(u * cand["z1"].to_numpy()).astype(np.int64)
     cand = cand[cand["z2"] <= z2_max].reset_index(drop=True)
+    if cand.empty:
+        raise GearDesignError(f"no small sprocket z1 in {[int(z) for z in z1_values]} keeps z2 = u·z1 <= z2_max = "
+                              f"{z2_max} at ratio {u:g}")
 
     t = cand["pitch_mm"].to_numpy(dtype=float)
     z1a = cand["z1"].to_numpy(dtype=float)
@@ -447,7 +464,13 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     de1 = sprocket.tip_diameter_mm(t, z1a)
     de2 = sprocket.tip_diameter_mm(t, z2a)
     clearance = 0.5 * (de1 + de2) + 30.0
-    a0 = np.full(t.shape, center_distance_mm) if center_distance_mm is not None else np.maximum(cpitches * t, clearance)
+    a_asked = np.full(t.shape, center_distance_mm) if center_distance_mm is not None else cpitches * t
+    # the loop is laid out at the asked distance where the sprockets clear each other and the
+    # chain is not longer than 80 pitches of span; otherwise at the nearest such distance, and
+    # the candidate fails the center_distance check by the shortfall or excess
+    a_span_max = CENTER_DISTANCE_PITCHES_MAX * t
+    a0 = (np.clip(a_asked, clearance, np.maximum(a_span_max, clearance)) if center_distance_mm is not None
+          else np.maximum(a_asked, clearance))
     links = sprocket.even_links(sprocket.link_count(a0, t, z1a, z2a))
     a = sprocket.center_distance_for_links_mm(links, t, z1a, z2a)
     q = cand["mass_kg_m"].to_numpy(dtype=float)
@@ -468,6 +491,10 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     cand["chain_mass_kg"] = q * links * t / 1000.0
     cand["impacts_per_s"] = sprocket.impacts_per_second(z1a, n1, links)
     cand["breaking_load_n"] = cand["breaking_load_kn"].to_numpy(dtype=float) * 1000.0
+    cd_check = []
+    if center_distance_mm is not None:
+        cand["margin_center_distance"] = np.minimum(a_asked / clearance, a_span_max / a_asked) - 1.0
+        cd_check = ["margin_center_distance"]
     cand["safety_factor"] = safety_factor(cand["breaking_load_n"].to_numpy(), force, k_d, q, v, a, sag)
     notes = []
 
@@ -475,7 +502,7 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     speed_tab = load_catalog("chain_speed_limits")
     sp = speed_tab.set_index("pitch_mm")
     match = np.array([np.isclose(sp.index.to_numpy(), x, atol=1e-6).argmax() if np.isclose(sp.index.to_numpy(), x, atol=1e-6).any()
-                      else -1 for x in np.unique(t)])
+                      else -1 for x in np.unique(t)], dtype=np.int64)
     n_max_u = np.where(match >= 0, sp["n1_max_rpm"].to_numpy()[match], np.nan)
     w_max_u = np.where(match >= 0, sp["impacts_allowed_per_s"].to_numpy()[match], np.nan)
     inv = np.searchsorted(np.unique(t), t)
@@ -515,7 +542,7 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
         cand["margin_pressure"] = 1.0 - p / p_allow
         cand["margin_speed"] = 1.0 - n1 / cand["n1_max_rpm"].to_numpy()
         cand["margin_impacts"] = 1.0 - cand["impacts_per_s"].to_numpy() / cand["allowable_impacts_per_s"].to_numpy()
-        checks = ["margin_pressure", "margin_safety", "margin_speed", "margin_impacts"]
+        checks = ["margin_pressure", "margin_safety", "margin_speed", "margin_impacts"] + cd_check
     else:
         k_pl = cand["rating_k_plate"].to_numpy(dtype=float) if "rating_k_plate" in cand else np.full(t.shape, 0.004)
         k_rb = cand["rating_k_roller"].to_numpy(dtype=float) if "rating_k_roller" in cand else np.full(t.shape, 17.0)
@@ -529,7 +556,7 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
         cand["margin_power"] = cand["rated_power_kw"] / cand["design_power_kw"] - 1.0
         cand["pressure_mpa"] = hinge_pressure_mpa(force, 1.0, cand["hinge_area_mm2"].to_numpy(), m_pow)
         cand["allowable_pressure_mpa"] = np.nan
-        checks = ["margin_power"] + (["margin_safety"] if allowable_safety_factor is not None else [])
+        checks = ["margin_power"] + cd_check + (["margin_safety"] if allowable_safety_factor is not None else [])
         if not str(cat_name).startswith("ansi") and not str(cat_name).startswith("iso606a"):
             notes.append("power ratings use the ANSI B29.1 formulas; for chains that are not ANSI/ISO A series "
                          "they are an approximation")
@@ -588,7 +615,9 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
                 p_ref = np.nanmax(cand.loc[cand["strands"] == s, "allowable_pressure_mpa"].to_numpy(dtype=float),
                                   initial=np.nan) if (cand["strands"] == s).any() else np.nan
             z_ref = float(z1_values[0]) if z1 is not None else float(recommended_z1(u))
-            estimate[s] = float(pitch_estimate_mm(torque, z_ref, p_ref, k_e_val, float(strand_tab.loc[s, "hinge_strand_factor"])))
+            t_est = float(pitch_estimate_mm(torque, z_ref, p_ref, k_e_val, float(strand_tab.loc[s, "hinge_strand_factor"])))
+            if np.isfinite(t_est):   # no [p] for these pitches and speed: no estimate either
+                estimate[s] = t_est
     inputs = dict(torque_nm=torque, power_kw=power_w / 1000.0, n1_rpm=n1, ratio=u, k_e=k_e_val, k_d=k_d,
                   allowable_pressure_mpa=allowable_pressure_mpa, allowable_safety_factor=allowable_safety_factor,
                   strands=list(strands_t), z1=None if z1 is None else [int(z) for z in z1_values],

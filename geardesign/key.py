@@ -35,6 +35,11 @@ TWO_KEY_FACTOR = 0.75
 ENDS = ("rounded", "half", "flat")
 
 
+HUB_ALLOWANCE_MM = 5.0     # key shorter than the hub by 5…10 mm (Dunaevsky & Lelikov §6.1): the lower end
+LENGTH_MAX_MM = 10_000.0   # keys, hubs and shafts up to 10 m; past that the tables say nothing
+TORQUE_MAX_NM = 1e9
+
+
 def working_length_mm(length_mm, b_mm, end="rounded"):
     """Working (bearing) length l_p of a key: l − b (rounded ends), l − b/2 (one), l (flat).
 
@@ -147,12 +152,15 @@ class KeySelection:
 
 
 def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA,
-           allowable_shear_mpa=DEFAULT_SHEAR_MPA, end="rounded", max_keys=2) -> KeySelection:
-    """Pick the shortest standard parallel key that fits the hub and carries the torque.
+           allowable_shear_mpa=DEFAULT_SHEAR_MPA, end="rounded", max_keys=2,
+           hub_allowance_mm=HUB_ALLOWANCE_MM) -> KeySelection:
+    """Pick the parallel key as designers do: the longest standard length that fits the hub
+    with its usual allowance, l <= l_hub − (5…10) mm (Dunaevsky & Lelikov, Konstruirovanie
+    uzlov i detalei mashin, §6.1; ``hub_allowance_mm`` = 5 by default), then check it.
 
-    The section (b, h, t1) comes from the shaft diameter; lengths from the standard series,
-    no longer than the hub and within the section's length range where the table gives one.
-    One key first; if no length passes, two keys at 180° (n_eff = 1.5) and the message says so.
+    The section (b, h, t1, t2) comes from the shaft diameter; lengths from the standard series,
+    within the section's length range where the table gives one. One key first; if it fails,
+    two keys of that length at 180° (n_eff = 1.5), and the message says so.
     When nothing fits, ``feasible`` is False and the message says by how much the longest key
     that fits falls short.
 
@@ -162,10 +170,11 @@ def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA
     """
     sec = section(d_mm)
     d = float(d_mm)
-    torque = float(require_positive("torque_nm", torque_nm, "N·m"))
-    hub = float(require_positive("hub_length_mm", hub_length_mm, "mm"))
-    s_cr = float(require_positive("allowable_crush_mpa", allowable_crush_mpa, "MPa"))
-    s_sh = float(require_positive("allowable_shear_mpa", allowable_shear_mpa, "MPa"))
+    torque = float(require_range("torque_nm", torque_nm, 0.0, TORQUE_MAX_NM, lo_open=True, unit="N·m"))
+    hub = float(require_range("hub_length_mm", hub_length_mm, 0.0, LENGTH_MAX_MM, lo_open=True, unit="mm"))
+    allowance = float(require_range("hub_allowance_mm", hub_allowance_mm, 0.0, 50.0, unit="mm"))
+    s_cr = float(require_range("allowable_crush_mpa", allowable_crush_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
+    s_sh = float(require_range("allowable_shear_mpa", allowable_shear_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
     if end not in ENDS:
         raise GearDesignError(f"end must be one of {', '.join(ENDS)}, got {end!r}")
     max_keys = int(require_range("max_keys", require_int("max_keys", max_keys, 1), 1, 2))
@@ -178,7 +187,9 @@ def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA
     L = np.tile(lengths, len(n_keys))
     N = np.repeat(n_keys, len(lengths))
     lp = working_length_mm(L, b, end)
-    fits = (L <= hub) & (L >= l_min) & (L <= l_max) & (lp > 0)
+    fits = (L <= hub - allowance) & (L >= l_min) & (L <= l_max) & (lp > 0)
+    # the rule takes the longest length that fits; shorter ones are listed, not chosen
+    longest = L == (L[fits].max() if fits.any() else -1.0)
     with np.errstate(divide="ignore", invalid="ignore"):
         lp_pos = np.where(lp > 0, lp, np.nan)
         sig = crushing_stress_mpa(torque, d, h, t1, lp_pos, N)
@@ -187,27 +198,30 @@ def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA
                          "crush_mpa": sig, "shear_mpa": tau, "margin_crush": 1.0 - sig / s_cr,
                          "margin_shear": 1.0 - tau / s_sh})
     cand["feasible"] = fits & (cand["margin_crush"] >= 0) & (cand["margin_shear"] >= 0)
-    ok = cand[cand["feasible"]]
+    ok = cand[cand["feasible"] & longest]
 
     common = dict(d_mm=d, torque_nm=torque, hub_length_mm=hub, b_mm=b, h_mm=h, t1_mm=t1, t2_mm=t2,
                   allowable_crush_mpa=s_cr, allowable_shear_mpa=s_sh, end=end, candidates=cand)
     if len(ok):
         row = ok.iloc[0]  # ordered by n_keys, then length: one key before two, shortest first
         n = int(row["n_keys"])
-        msg = (f"one key {b:g}x{h:g}x{row['length_mm']:g}" if n == 1 else
-               f"one key of any standard length up to the hub fails; two keys {b:g}x{h:g}x{row['length_mm']:g} "
-               f"at 180 deg (load-sharing factor {TWO_KEY_FACTOR})")
+        rule = (f"the longest standard length <= hub {hub:g} mm - {allowance:g} mm allowance; "
+                f"t1 = {t1:g} mm in the shaft, t2 = {t2:g} mm in the hub")
+        msg = (f"one key {b:g}x{h:g}x{row['length_mm']:g} ({rule})" if n == 1 else
+               f"one key fails; two keys {b:g}x{h:g}x{row['length_mm']:g} at 180 deg (load-sharing factor "
+               f"{TWO_KEY_FACTOR}; {rule})")
         return KeySelection(feasible=True, message=msg, length_mm=float(row["length_mm"]),
                             working_length_mm=float(row["working_length_mm"]), n_keys=n,
                             crush_mpa=float(row["crush_mpa"]), shear_mpa=float(row["shear_mpa"]),
                             margin_crush=float(row["margin_crush"]), margin_shear=float(row["margin_shear"]), **common)
     fitting = cand[cand["fits_hub"]]
     if fitting.empty:
-        msg = (f"no standard length of the {b:g}x{h:g} key fits a {hub:g} mm hub "
+        msg = (f"no standard length of the {b:g}x{h:g} key fits a {hub:g} mm hub with {allowance:g} mm allowance "
                f"(shortest usable {max(l_min, L[lp > 0].min() if (lp > 0).any() else np.inf):g} mm)")
         nan = float("nan")
         return KeySelection(feasible=False, message=msg, length_mm=nan, working_length_mm=nan, n_keys=0,
                             crush_mpa=nan, shear_mpa=nan, margin_crush=nan, margin_shear=nan, **common)
+    fitting = cand[cand["fits_hub"] & longest]
     best = fitting.assign(m=np.minimum(fitting["margin_crush"], fitting["margin_shear"])).sort_values(
         "m", ascending=False).iloc[0]
     check = "crushing" if best["margin_crush"] <= best["margin_shear"] else "shear"
@@ -232,7 +246,7 @@ def capacity(d_mm, length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA, allowable_s
     >>> round(capacity(60, 32, 300, 120)["torque_nm"], 6)
     504.0
     """
-    d = float(require_positive("d_mm", d_mm, "mm"))
+    d = float(require_range("d_mm", d_mm, 0.0, LENGTH_MAX_MM, lo_open=True, unit="mm"))
     if b_mm is None or h_mm is None or t1_mm is None:
         sec = section(d)
         b_mm = float(sec["b_mm"]) if b_mm is None else b_mm
@@ -241,13 +255,13 @@ def capacity(d_mm, length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA, allowable_s
     b = float(require_positive("b_mm", b_mm, "mm"))
     h = float(require_positive("h_mm", h_mm, "mm"))
     t1 = float(require_range("t1_mm", t1_mm, 0.0, h, lo_open=True, hi_open=True, unit="mm"))
-    length = float(require_positive("length_mm", length_mm, "mm"))
+    length = float(require_range("length_mm", length_mm, 0.0, LENGTH_MAX_MM, lo_open=True, unit="mm"))
     n = int(require_range("n_keys", require_int("n_keys", n_keys, 1), 1, 2))
     lp = float(working_length_mm(length, b, end))
     if lp <= 0:
         raise GearDesignError(f"length_mm must exceed the rounded ends ({length:g} mm leaves l_p = {lp:g} mm)")
-    s_cr = float(require_positive("allowable_crush_mpa", allowable_crush_mpa, "MPa"))
-    s_sh = float(require_positive("allowable_shear_mpa", allowable_shear_mpa, "MPa"))
+    s_cr = float(require_range("allowable_crush_mpa", allowable_crush_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
+    s_sh = float(require_range("allowable_shear_mpa", allowable_shear_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
     n_eff = float(_n_eff(n))
     t_crush = s_cr * d * (h - t1) * lp * n_eff / 2000.0
     t_shear = s_sh * d * b * lp * n_eff / 2000.0

@@ -54,13 +54,14 @@ def test_chain_power_rating(capsys):
 
 
 def test_key_select(capsys):
-    # d = 60, T = 503 N·m, hub 50 with [σ] = 130 MPa: two keys 18x11x40 (tests/test_key.py)
+    # d = 60, T = 503 N·m, hub 50 with [σ] = 130 MPa: two keys 18x11x45 (tests/test_key.py)
     assert main(["key", "--d", "60", "--torque", "503", "--hub-length", "50", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert (data["n_keys"], data["length_mm"], data["b_mm"]) == (2, 40.0, 18.0)
+    assert (data["n_keys"], data["length_mm"], data["b_mm"]) == (2, 45.0, 18.0)
     assert main(["key", "--d", "60", "--torque", "503.129", "--hub-length", "50", "--crush", "300",
                  "--shear", "120"]) == 0
-    assert "one key 18x11x32" in capsys.readouterr().out
+    out = capsys.readouterr().out
+    assert "one key 18x11x45" in out and "t2 = 4.4 mm" in out
 
 
 def test_key_capacity_and_errors(capsys):
