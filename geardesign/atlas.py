@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 
 from .errors import GearDesignError, require_int
-from .geometry import Z_MIN, _core
+from .geometry import Z_MAX, Z_MIN, _core
 from .problem import DEFAULT_BOUNDS, Problem
 from .rack import BasicRack
 from .shift import optimize_shifts
@@ -17,9 +17,34 @@ __all__ = ["shift_atlas"]
 _ATLAS_N = 41   # grid nodes per axis of the batched first pass (area estimate and start points)
 
 
+ATLAS_PAIRS_MAX = 100_000   # ~3 min at ~2 ms a pair; more is a batch job, split it
+
+
+def _values(name, values) -> np.ndarray:
+    if np.ndim(values) == 0 and not isinstance(values, (list, tuple, range)):
+        values = [values]          # one tooth count is a list of one
+    try:
+        n = len(values)
+    except TypeError:
+        raise GearDesignError(f"{name} must be tooth counts (a list, range or array), got {values!r}") from None
+    if not 1 <= n <= ATLAS_PAIRS_MAX:
+        raise GearDesignError(f"{name} must hold 1 to {ATLAS_PAIRS_MAX:,} tooth counts, got {n:,}")
+    return np.atleast_1d(require_int(name, np.asarray(list(values)), Z_MIN, Z_MAX))
+
+
+def atlas_size(z1_values, z2_values, upper_only: bool = True) -> int:
+    """How many pairs an atlas of these tooth counts holds (checked before any work)."""
+    z1, z2 = np.sort(_values("z1_values", z1_values)), _values("z2_values", z2_values)
+    if not upper_only:
+        return int(z1.size * z2.size)
+    return int(np.searchsorted(z1, z2, side="right").sum())
+
+
 def _pairs(z1_values, z2_values, upper_only):
-    z1 = np.atleast_1d(require_int("z1_values", np.asarray(list(z1_values)), Z_MIN))
-    z2 = np.atleast_1d(require_int("z2_values", np.asarray(list(z2_values)), Z_MIN))
+    n = atlas_size(z1_values, z2_values, upper_only)
+    if n > ATLAS_PAIRS_MAX:
+        raise GearDesignError(f"an atlas takes at most {ATLAS_PAIRS_MAX:,} pairs, these tooth counts make {n:,}")
+    z1, z2 = _values("z1_values", z1_values), _values("z2_values", z2_values)
     Z1, Z2 = np.meshgrid(z1, z2, indexing="ij")
     Z1, Z2 = Z1.ravel(), Z2.ravel()
     keep = Z2 >= Z1 if upper_only else np.ones(Z1.shape, bool)

@@ -38,6 +38,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from .files import check_output_dir, write_dir_atomic
 from .errors import GearDesignError
 
 __all__ = ["load_scene", "run_scene", "Scene", "SceneReport", "SECTIONS"]
@@ -346,18 +347,55 @@ def _cross_checks(where: _Where, s: dict):
             where.fail("study", "parameter2", "expected a parameter other than parameter")
 
 
+SCENE_BYTES_MAX = 1 << 20    # 1 MiB: a scene is a page of settings, not data
+SCENE_DEPTH_MAX = 8          # sections, tables of tables, lists: a few levels at most
+SCENE_INT_MAX = 10**15       # integers beyond this are typing slips (and overflow floats)
+
+
+def _read_bounded(path: Path) -> bytes:
+    """The scene file's bytes: a regular file of at most SCENE_BYTES_MAX (a device such as
+    /dev/zero, a folder or a huge file is refused before it is read)."""
+    try:
+        if not path.exists():
+            raise GearDesignError(f"{path}: cannot read the scene file (no such file)")
+        if not path.is_file():
+            raise GearDesignError(f"{path}: not a regular file (a scene is a .toml text file)")
+        with open(path, "rb") as fh:
+            text = fh.read(SCENE_BYTES_MAX + 1)
+    except OSError as exc:
+        raise GearDesignError(f"{path}: cannot read the scene file ({exc.strerror or exc})") from None
+    if len(text) > SCENE_BYTES_MAX:
+        raise GearDesignError(f"{path}: larger than {SCENE_BYTES_MAX // 1024} KiB; a scene file is a page of settings")
+    return text
+
+
+def _check_values(path: Path, value, key: str = "", depth: int = 0) -> None:
+    """Refuse nesting deeper than SCENE_DEPTH_MAX and integers beyond SCENE_INT_MAX, by key."""
+    if depth > SCENE_DEPTH_MAX:
+        raise GearDesignError(f"{path}: {key or 'the file'} is nested deeper than {SCENE_DEPTH_MAX} levels")
+    if isinstance(value, dict):
+        for k, v in value.items():
+            _check_values(path, v, f"{key}.{k}" if key else str(k), depth + 1)
+    elif isinstance(value, list):
+        for v in value:
+            _check_values(path, v, key, depth + 1)
+    elif isinstance(value, int) and not isinstance(value, bool) and abs(value) > SCENE_INT_MAX:
+        raise GearDesignError(f"{path}: {key} = an integer of {len(str(abs(value)))} digits; "
+                              f"whole numbers must be within ±{SCENE_INT_MAX:.0e}")
+
+
 def load_scene(path) -> Scene:
     """Read and validate a scene file; raise one :class:`GearDesignError` on the first problem."""
     path = Path(path)
     where = _Where(path)
-    try:
-        text = path.read_bytes()
-    except OSError as exc:
-        raise GearDesignError(f"{path}: cannot read the scene file ({exc.strerror or exc})") from None
+    text = _read_bounded(path)
     try:
         raw = tomllib.loads(text.decode("utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise GearDesignError(f"{path}: not a valid TOML file: {exc}") from None
+        raise GearDesignError(f"{path}: not a valid TOML file: {' '.join(str(exc).split())}") from None
+    except RecursionError:
+        raise GearDesignError(f"{path}: nested deeper than a scene can be (at most {SCENE_DEPTH_MAX} levels)") from None
+    _check_values(path, raw)
     top = {k: v for k, v in raw.items() if not isinstance(v, (dict, list)) or k not in SECTIONS}
     for k, v in top.items():
         if k not in SCHEMA[""]:
@@ -635,39 +673,32 @@ def compute_scene(scene: Scene) -> SceneReport:
     return rep
 
 
-def write_report(rep: SceneReport, out_dir) -> Path:
-    """Write report.md, the CSV tables and the PNG plots into ``out_dir`` (created if needed).
-
-    Files go to a temporary directory beside ``out_dir`` first and are moved in at the end.
-    """
+def write_report(rep: SceneReport, out_dir, overwrite: bool = False) -> Path:
+    """Write report.md, the CSV tables and the PNG plots into ``out_dir``: a new or empty
+    folder (its contents replaced only with ``overwrite``). Everything is written into a
+    temporary folder beside it first and moved into place whole; a failure leaves nothing."""
     import matplotlib.pyplot as plt
 
-    out = Path(out_dir)
-    if out.exists() and not out.is_dir():
-        raise GearDesignError(f"--out {out}: exists and is not a directory")
-    parent = out.parent if str(out.parent) else Path(".")
-    parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=".scene-", dir=parent))
-    try:
+    out = check_output_dir(out_dir, overwrite=overwrite)
+
+    def write(tmp: Path) -> None:
         for name, frame in rep.tables.items():
             frame.to_csv(tmp / f"{name}.csv", index=False)
         for name, fig in rep.figures.items():
             fig.savefig(tmp / f"{name}.png", dpi=110, bbox_inches="tight")
             plt.close(fig)
         (tmp / "report.md").write_text("\n".join(rep.markdown), encoding="utf-8")
-        out.mkdir(exist_ok=True)
-        for f in tmp.iterdir():
-            os.replace(f, out / f.name)
-    finally:
-        shutil.rmtree(tmp, ignore_errors=True)
-    return out
+
+    return write_dir_atomic(out, write)
 
 
-def run_scene(path, out_dir) -> SceneReport:
+def run_scene(path, out_dir, overwrite: bool = False) -> SceneReport:
     """Load, validate and run a scene file, then write its report into ``out_dir``.
 
-    Nothing is written when the scene is wrong or a section fails.
+    The output folder is checked first; nothing is written when the scene is wrong or a
+    section fails.
     """
+    check_output_dir(out_dir, overwrite=overwrite)
     rep = compute_scene(load_scene(path))
-    write_report(rep, out_dir)
+    write_report(rep, out_dir, overwrite=overwrite)
     return rep

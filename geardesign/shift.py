@@ -886,7 +886,7 @@ def _starts(prob: Problem, V: np.ndarray, n: int):
     fun = P.min(axis=0)
     fun = np.where(np.isnan(fun), -np.inf, fun)
     score = np.where(feasible, fun, -np.inf)
-    if V.shape[0] < n ** prob.nvar:                       # a given start, no grid
+    if n < 2 or V.shape[0] < n ** prob.nvar:              # a given start, no grid
         return ([V[int(np.argmax(score))]] if np.isfinite(score).any() else []), M
     shape = (n, n) if prob.nvar == 2 else (n,)
     box = np.ones((3,) * prob.nvar, bool)

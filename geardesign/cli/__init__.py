@@ -9,6 +9,9 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
+import warnings
+
+import numpy as np
 
 from ..errors import GearDesignError
 
@@ -38,17 +41,21 @@ def main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
-        return int(args._run(args) or 0)
+        # numpy's divide/invalid warnings at the edges of existence are handled in the code
+        # (NaN -> a named failure); they must not reach the user's terminal beside the one line
+        with warnings.catch_warnings(), np.errstate(all="ignore"):
+            warnings.simplefilter("ignore", RuntimeWarning)
+            return int(args._run(args) or 0)
     except GearDesignError as exc:
-        print(f"geardesign {args.command}: error: {exc}", file=sys.stderr)
+        print(f"geardesign {args.command}: error: {' '.join(str(exc).split())}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # output piped into `head` and the like: stop quietly
         import os
 
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
-    except KeyboardInterrupt:
-        print("interrupted", file=sys.stderr)
+    except KeyboardInterrupt:   # outputs are written whole or not at all (geardesign.files)
+        print(f"geardesign {args.command}: interrupted, nothing written", file=sys.stderr)
         return 130
 
 

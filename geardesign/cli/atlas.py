@@ -3,7 +3,8 @@ from __future__ import annotations
 
 import re
 
-from ..atlas import shift_atlas
+from ..atlas import ATLAS_PAIRS_MAX, atlas_size, shift_atlas
+from ..files import check_output_path, write_file_atomic
 from ..errors import GearDesignError
 from ..problem import OBJECTIVES
 from ..shift import METHODS
@@ -19,7 +20,7 @@ def parse_range(text: str, name: str) -> list[int]:
         lo, hi = int(m.group(1)), int(m.group(2))
         if hi < lo:
             raise GearDesignError(f"{name} range {text!r} must be LO:HI with LO <= HI")
-        return list(range(lo, hi + 1))
+        return range(lo, hi + 1)      # a range, not a list: its size is checked before any work
     try:
         return [int(v) for v in text.split(",")]
     except ValueError:
@@ -34,6 +35,7 @@ def add_parser(sub):
     p.add_argument("--objective", choices=sorted(OBJECTIVES), default="max_x_sum")
     p.add_argument("--method", choices=METHODS, default="exact")
     p.add_argument("--out", metavar="CSV", default=None, help="write the table to this CSV")
+    p.add_argument("--overwrite", action="store_true", help="replace an existing --out file")
     add_rack_args(p)
     add_check_args(p)
     add_json_flag(p)
@@ -43,13 +45,18 @@ def add_parser(sub):
 def run(args) -> int:
     z1 = parse_range(args.z1, "--z1")
     z2 = parse_range(args.z2, "--z2")
-    n = sum(1 for a in z1 for b in z2 if b >= a)
+    n = atlas_size(z1, z2)
+    if n > ATLAS_PAIRS_MAX:
+        raise GearDesignError(f"--z1 {args.z1} --z2 {args.z2} make {n:,} pairs; an atlas takes at most "
+                              f"{ATLAS_PAIRS_MAX:,}")
+    if args.out:
+        check_output_path(args.out, overwrite=args.overwrite, suffixes=(".csv",), what="--out")
     bar = Progress(n, "atlas")
     df = shift_atlas(z1, z2, objective=args.objective, checks=checks_from_args(args), method=args.method,
                      rack=rack_from_args(args), progress=lambda k: bar.update(1))
     bar.close()
     if args.out:
-        df.to_csv(args.out, index=False)
+        write_file_atomic(args.out, lambda tmp: df.to_csv(tmp, index=False))
     if args.json:
         print_json({"time_s": df.attrs.get("time_s"), "rows": frame_records(df)})
         return 0

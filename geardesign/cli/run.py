@@ -17,7 +17,9 @@ def add_parser(subparsers):
         description="Run one design case described in a TOML scene file ([gear], [teeth], [chain], [key], "
                     "[study]; see docs/studies.md) and write report.md, CSV tables and PNG plots.")
     p.add_argument("scene", help="the scene file (.toml)")
-    p.add_argument("--out", required=True, metavar="DIR", help="directory for report.md, CSV and PNG files")
+    p.add_argument("--out", required=True, metavar="DIR",
+                   help="folder for report.md, CSV and PNG files: new, or empty (written whole or not at all)")
+    p.add_argument("--overwrite", action="store_true", help="replace the contents of a non-empty --out folder")
     add_json_flag(p)
     return p
 
@@ -25,7 +27,7 @@ def add_parser(subparsers):
 def run(args) -> int:
     from ..scene import run_scene
 
-    rep = run_scene(args.scene, args.out)
+    rep = run_scene(args.scene, args.out, overwrite=args.overwrite)
     out = Path(args.out)
     if args.json:
         d = rep.to_dict()

@@ -10,6 +10,7 @@ from pathlib import Path
 from ..errors import GearDesignError
 from ..problem import OBJECTIVES
 from ..teeth import select_teeth
+from ..files import check_output_path, write_file_atomic
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
 from .pair import add_limit_args, add_rack_args, rack_from_args
 
@@ -49,6 +50,7 @@ def add_parser(subparsers):
     p.add_argument("--method", choices=("grid", "convex", "exact"), default="exact", help="shift solver (exact)")
     p.add_argument("--top", type=int, default=20, help="rows to print (0: all; default 20)")
     p.add_argument("--out", default=None, metavar="CSV", help="write the whole ranked table to this CSV file")
+    p.add_argument("--overwrite", action="store_true", help="replace an existing --out file")
     add_rack_args(p)
     add_limit_args(p)
     add_json_flag(p)
@@ -63,6 +65,8 @@ def run(args) -> int:
     m_range = None
     if args.m_min is not None or args.m_max is not None:
         m_range = (args.m_min if args.m_min is not None else 1.0, args.m_max if args.m_max is not None else 50.0)
+    if args.out:
+        check_output_path(args.out, overwrite=args.overwrite, suffixes=(".csv",), what="--out")
     bar = Progress(0, "solving shifts")
 
     def progress(done, total):
@@ -78,9 +82,8 @@ def run(args) -> int:
         if bar.done:
             bar.close()
     if args.out:
-        path = Path(args.out)
         try:
-            sel.table.to_csv(path, index=False)
+            write_file_atomic(args.out, lambda tmp: sel.table.to_csv(tmp, index=False))
         except OSError as exc:
             raise GearDesignError(f"--out {args.out!r}: cannot write ({exc.strerror})") from None
     top = sel.table if args.top == 0 else sel.table.head(args.top)
