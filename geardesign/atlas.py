@@ -6,7 +6,7 @@ import time
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError, require_int
+from .errors import ndim, GearDesignError, require_int
 from .geometry import Z_MAX, Z_MIN, _core
 from .problem import DEFAULT_BOUNDS, Problem
 from .rack import BasicRack
@@ -21,7 +21,7 @@ ATLAS_PAIRS_MAX = 100_000   # ~3 min at ~2 ms a pair; more is a batch job, split
 
 
 def _values(name, values) -> np.ndarray:
-    if np.ndim(values) == 0 and not isinstance(values, (list, tuple, range)):
+    if ndim(values) == 0 and not isinstance(values, (list, tuple, range)):
         values = [values]          # one tooth count is a list of one
     try:
         n = len(values)

@@ -22,7 +22,7 @@ import pandas as pd
 
 from . import sprocket
 from .catalogs import chain_catalog, load_catalog
-from .errors import GearDesignError, require_int, require_positive, require_range
+from .errors import one_number, GearDesignError, require_int, require_positive, require_range
 
 __all__ = [
     "Conditions",
@@ -227,7 +227,7 @@ class Conditions:
                                           f"got {value!r}")
                 values[key] = float(rows["value"].iloc[0])
             else:
-                values[key] = float(require_positive(f"conditions[{key!r}]", value))
+                values[key] = one_number(f"conditions[{key!r}]", require_positive(f"conditions[{key!r}]", value))
         return cls(**values)
 
 
@@ -235,7 +235,7 @@ def _conditions(conditions, k_e):
     if conditions is not None and k_e is not None:
         raise GearDesignError("give either conditions (the named factors) or k_e (their product), not both")
     if conditions is None:
-        k = 1.0 if k_e is None else float(require_range("k_e", k_e, 0.1, 20.0))
+        k = 1.0 if k_e is None else one_number("k_e", require_range("k_e", k_e, 0.1, 20.0))
         return None, k, 1.0
     if isinstance(conditions, Mapping):
         conditions = Conditions.from_mapping(conditions)
@@ -393,14 +393,14 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     # ---- inputs ----
     if (torque_nm is None) == (power_kw is None):
         raise GearDesignError("give exactly one of torque_nm or power_kw")
-    n1 = float(require_positive("n1_rpm", n1_rpm, "rpm"))
-    u = float(require_range("ratio", ratio, 1.0, 10.0))
+    n1 = one_number("n1_rpm", require_positive("n1_rpm", n1_rpm, "rpm"))
+    u = one_number("ratio", require_range("ratio", ratio, 1.0, 10.0))
     omega = 2.0 * np.pi * n1 / 60.0
     if torque_nm is not None:
-        torque = float(require_positive("torque_nm", torque_nm, "N·m"))
+        torque = one_number("torque_nm", require_positive("torque_nm", torque_nm, "N·m"))
         power_w = torque * omega
     else:
-        power_w = float(require_positive("power_kw", power_kw, "kW")) * 1000.0
+        power_w = one_number("power_kw", require_positive("power_kw", power_kw, "kW")) * 1000.0
         torque = power_w / omega
     if objective not in OBJECTIVES:
         raise GearDesignError(f"objective must be one of {', '.join(OBJECTIVES)}, got {objective!r}")
@@ -411,10 +411,10 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     if not strands_t or max(strands_t) > 4:
         raise GearDesignError(f"strands must be whole numbers in [1, 4], got {strands!r}")
     if allowable_pressure_mpa is not None:
-        allowable_pressure_mpa = float(require_positive("allowable_pressure_mpa", allowable_pressure_mpa, "MPa"))
+        allowable_pressure_mpa = one_number("allowable_pressure_mpa", require_positive("allowable_pressure_mpa", allowable_pressure_mpa, "MPa"))
     if allowable_safety_factor is not None:
-        allowable_safety_factor = float(require_range("allowable_safety_factor", allowable_safety_factor, 1.0, 100.0))
-    sag = float(require_range("sag_factor", sag_factor, 0.0, 10.0))
+        allowable_safety_factor = one_number("allowable_safety_factor", require_range("allowable_safety_factor", allowable_safety_factor, 1.0, 100.0))
+    sag = one_number("sag_factor", require_range("sag_factor", sag_factor, 0.0, 10.0))
     z2_max = int(require_int("z2_max", z2_max, 9, Z2_MAX_LIMIT))
     if z1 is None:
         # odd counts from 13 up to the rule z1 = 29 − 2u; at u > 8 the rule falls below 13,
@@ -434,9 +434,9 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
                 f"z1 = {int(z1_values[np.argmax(z2_given > z2_max)])} with ratio {u:g} needs "
                 f"z2 = {int(z2_given.max())} teeth, above z2_max = {z2_max}; choose a smaller z1")
     if center_distance_mm is not None:
-        center_distance_mm = float(require_range("center_distance_mm", center_distance_mm, 0.0, CENTER_DISTANCE_MAX_MM,
+        center_distance_mm = one_number("center_distance_mm", require_range("center_distance_mm", center_distance_mm, 0.0, CENTER_DISTANCE_MAX_MM,
                                                  lo_open=True, unit="mm"))
-    cpitches = float(require_range("center_distance_pitches", center_distance_pitches, 10.0, 100.0))
+    cpitches = one_number("center_distance_pitches", require_range("center_distance_pitches", center_distance_pitches, 10.0, 100.0))
 
     chains = chain_catalog(catalog)
     cat_name = str(catalog)

@@ -19,7 +19,7 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError, _show, require_bool, require_finite, require_positive, require_range
+from .errors import one_number, GearDesignError, _show, require_bool, require_finite, require_positive, require_range
 
 __all__ = [
     "Check", "Undercut", "Interference", "TipThickness", "ContactRatio", "Jamming", "CenterDistance", "CustomCheck",
@@ -349,10 +349,10 @@ def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: flo
     if jamming:
         out += [Jamming(gear=1), Jamming(gear=2)]
     if sa_min is not None:
-        sa_min = float(require_range("sa_min", sa_min, *SA_MIN_RANGE))
+        sa_min = one_number("sa_min", require_range("sa_min", sa_min, *SA_MIN_RANGE))
         out += [TipThickness(gear=1, limit=sa_min), TipThickness(gear=2, limit=sa_min)]
     if eps_alpha_min is not None:
-        out += [ContactRatio(limit=float(require_range("eps_alpha_min", eps_alpha_min, *EPS_ALPHA_MIN_RANGE)))]
+        out += [ContactRatio(limit=one_number("eps_alpha_min", require_range("eps_alpha_min", eps_alpha_min, *EPS_ALPHA_MIN_RANGE)))]
     if isinstance(extra, Check):
         extra = (extra,)
     if not isinstance(extra, (list, tuple)):
@@ -379,6 +379,9 @@ def resolve_checks(checks) -> tuple[Check, ...]:
             raise GearDesignError(
                 f"checks: unknown option in {sorted(checks)}; allowed: eps_alpha_min, sa_min, "
                 f"undercut, interference, jamming, extra") from exc
+    if isinstance(checks, (str, bytes, Check)) or not hasattr(checks, "__iter__"):
+        raise GearDesignError(f"checks must be None, a dict of make_checks options or a list of Check objects, "
+                              f"got {_show(checks)}")
     checks = tuple(checks)
     for c in checks:
         if not isinstance(c, Check):

@@ -17,6 +17,8 @@ __all__ = [
     "require_range",
     "require_int",
     "require_count",
+    "one_number",
+    "ndim",
     "require_choice",
     "require_bool",
     "broadcast_inputs",
@@ -114,6 +116,14 @@ def require_int(name: str, value, minimum: int, maximum: int | None = None) -> n
     return farr.astype(np.int64)
 
 
+def one_number(name: str, arr) -> float:
+    """The single number a validator returned, as a float; an array (a list given where one
+    number belongs) is refused by name."""
+    if np.ndim(arr) != 0:
+        raise GearDesignError(f"{name} must be one number, got {_show(arr)}")
+    return float(arr)
+
+
 def require_count(name: str, value, lo: int, hi: int) -> int:
     """One whole number in [lo, hi]: a size (grid nodes, pairs, values) checked before any work."""
     if np.ndim(value) != 0:
@@ -152,6 +162,14 @@ def _short(value) -> str:
     """repr of a value, cut to 60 characters (a 400-digit integer must not fill the screen)."""
     text = repr(value)
     return text if len(text) <= 60 else text[:40] + f"... ({len(text)} characters)"
+
+
+def ndim(value) -> int:
+    """np.ndim of a user's value; -1 for what numpy cannot shape (ragged lists and the like)."""
+    try:
+        return int(np.ndim(value))
+    except (ValueError, TypeError):
+        return -1
 
 
 def is_scalar(*values) -> bool:

@@ -19,7 +19,7 @@ from types import SimpleNamespace
 import numpy as np
 import pandas as pd
 
-from .errors import (GearDesignError, broadcast_inputs, require_bool, require_finite, require_int,
+from .errors import (GearDesignError, ndim, broadcast_inputs, require_bool, require_int,
                      require_positive, require_range)
 from .involute import _t_minus_atan, _tan_from_inv_float, inv, inv_from_tan, tan_from_inv
 from .rack import BasicRack
@@ -520,7 +520,7 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
     """
     if not isinstance(rack, BasicRack):
         raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
-    scalar = all(np.ndim(v) == 0 for v in (m, z1, z2, x1, x2))
+    scalar = all(ndim(v) == 0 for v in (m, z1, z2, x1, x2))
     m, z1, z2, x1, x2 = validate_inputs(m, z1, z2, x1, x2)
     broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2)
     n = int(np.prod(np.broadcast_shapes(*(np.shape(v) for v in (m, z1, z2, x1, x2)))))

@@ -21,7 +21,7 @@ import numpy as np
 import pandas as pd
 
 from .catalogs import key_lengths_mm, load_catalog
-from .errors import GearDesignError, require_int, require_positive, require_range
+from .errors import one_number, GearDesignError, require_int, require_positive, require_range
 
 __all__ = ["KeySelection", "select", "capacity", "section", "crushing_stress_mpa", "shear_stress_mpa",
            "working_length_mm", "DEFAULT_CRUSH_MPA", "DEFAULT_SHEAR_MPA", "TWO_KEY_FACTOR"]
@@ -90,7 +90,7 @@ def section(d_mm) -> pd.Series:
     """
     keys = load_catalog("keys")
     lo, hi = float(keys["d_over_mm"].iloc[0]), float(keys["d_upto_mm"].iloc[-1])
-    d = float(require_range("d_mm", d_mm, lo, hi, lo_open=True, unit="mm"))
+    d = one_number("d_mm", require_range("d_mm", d_mm, lo, hi, lo_open=True, unit="mm"))
     row = keys[(keys["d_over_mm"] < d) & (d <= keys["d_upto_mm"])].iloc[0]
     return row
 
@@ -170,11 +170,11 @@ def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA
     """
     sec = section(d_mm)
     d = float(d_mm)
-    torque = float(require_range("torque_nm", torque_nm, 0.0, TORQUE_MAX_NM, lo_open=True, unit="N·m"))
-    hub = float(require_range("hub_length_mm", hub_length_mm, 0.0, LENGTH_MAX_MM, lo_open=True, unit="mm"))
-    allowance = float(require_range("hub_allowance_mm", hub_allowance_mm, 0.0, 50.0, unit="mm"))
-    s_cr = float(require_range("allowable_crush_mpa", allowable_crush_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
-    s_sh = float(require_range("allowable_shear_mpa", allowable_shear_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
+    torque = one_number("torque_nm", require_range("torque_nm", torque_nm, 0.0, TORQUE_MAX_NM, lo_open=True, unit="N·m"))
+    hub = one_number("hub_length_mm", require_range("hub_length_mm", hub_length_mm, 0.0, LENGTH_MAX_MM, lo_open=True, unit="mm"))
+    allowance = one_number("hub_allowance_mm", require_range("hub_allowance_mm", hub_allowance_mm, 0.0, 50.0, unit="mm"))
+    s_cr = one_number("allowable_crush_mpa", require_range("allowable_crush_mpa", allowable_crush_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
+    s_sh = one_number("allowable_shear_mpa", require_range("allowable_shear_mpa", allowable_shear_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
     if end not in ENDS:
         raise GearDesignError(f"end must be one of {', '.join(ENDS)}, got {end!r}")
     max_keys = int(require_range("max_keys", require_int("max_keys", max_keys, 1), 1, 2))
@@ -218,9 +218,9 @@ def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA
     if fitting.empty:
         msg = (f"no standard length of the {b:g}x{h:g} key fits a {hub:g} mm hub with {allowance:g} mm allowance "
                f"(shortest usable {max(l_min, L[lp > 0].min() if (lp > 0).any() else np.inf):g} mm)")
-        nan = float("nan")
-        return KeySelection(feasible=False, message=msg, length_mm=nan, working_length_mm=nan, n_keys=0,
-                            crush_mpa=nan, shear_mpa=nan, margin_crush=nan, margin_shear=nan, **common)
+        # no key at all: its figures are absent (None), not numbers
+        return KeySelection(feasible=False, message=msg, length_mm=None, working_length_mm=None, n_keys=0,
+                            crush_mpa=None, shear_mpa=None, margin_crush=None, margin_shear=None, **common)
     fitting = cand[cand["fits_hub"] & longest]
     best = fitting.assign(m=np.minimum(fitting["margin_crush"], fitting["margin_shear"])).sort_values(
         "m", ascending=False).iloc[0]
@@ -246,22 +246,22 @@ def capacity(d_mm, length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA, allowable_s
     >>> round(capacity(60, 32, 300, 120)["torque_nm"], 6)
     504.0
     """
-    d = float(require_range("d_mm", d_mm, 0.0, LENGTH_MAX_MM, lo_open=True, unit="mm"))
+    d = one_number("d_mm", require_range("d_mm", d_mm, 0.0, LENGTH_MAX_MM, lo_open=True, unit="mm"))
     if b_mm is None or h_mm is None or t1_mm is None:
         sec = section(d)
         b_mm = float(sec["b_mm"]) if b_mm is None else b_mm
         h_mm = float(sec["h_mm"]) if h_mm is None else h_mm
         t1_mm = float(sec["t1_mm"]) if t1_mm is None else t1_mm
-    b = float(require_positive("b_mm", b_mm, "mm"))
-    h = float(require_positive("h_mm", h_mm, "mm"))
-    t1 = float(require_range("t1_mm", t1_mm, 0.0, h, lo_open=True, hi_open=True, unit="mm"))
-    length = float(require_range("length_mm", length_mm, 0.0, LENGTH_MAX_MM, lo_open=True, unit="mm"))
+    b = one_number("b_mm", require_positive("b_mm", b_mm, "mm"))
+    h = one_number("h_mm", require_positive("h_mm", h_mm, "mm"))
+    t1 = one_number("t1_mm", require_range("t1_mm", t1_mm, 0.0, h, lo_open=True, hi_open=True, unit="mm"))
+    length = one_number("length_mm", require_range("length_mm", length_mm, 0.0, LENGTH_MAX_MM, lo_open=True, unit="mm"))
     n = int(require_range("n_keys", require_int("n_keys", n_keys, 1), 1, 2))
     lp = float(working_length_mm(length, b, end))
     if lp <= 0:
         raise GearDesignError(f"length_mm must exceed the rounded ends ({length:g} mm leaves l_p = {lp:g} mm)")
-    s_cr = float(require_range("allowable_crush_mpa", allowable_crush_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
-    s_sh = float(require_range("allowable_shear_mpa", allowable_shear_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
+    s_cr = one_number("allowable_crush_mpa", require_range("allowable_crush_mpa", allowable_crush_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
+    s_sh = one_number("allowable_shear_mpa", require_range("allowable_shear_mpa", allowable_shear_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
     n_eff = float(_n_eff(n))
     t_crush = s_cr * d * (h - t1) * lp * n_eff / 2000.0
     t_shear = s_sh * d * b * lp * n_eff / 2000.0

@@ -9,8 +9,8 @@ import pandas as pd
 from scipy.optimize import brentq
 
 from . import checks as _checks
-from .errors import GearDesignError, require_positive
-from .geometry import Geometry, _core, validate_geometry, validate_inputs, x_sum_from_center_distance
+from .errors import ndim, one_number, GearDesignError, require_positive, require_range
+from .geometry import X_ABS_MAX, Geometry, _core, validate_geometry, validate_inputs, x_sum_from_center_distance
 from .rack import BasicRack
 
 __all__ = ["GearPair", "balanced_sliding_split"]
@@ -72,7 +72,7 @@ class GearPair:
         if not isinstance(self.rack, BasicRack):
             raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(self.rack).__name__}")
         for name in ("m", "z1", "z2", "x1", "x2"):
-            if np.ndim(getattr(self, name)) != 0:
+            if ndim(getattr(self, name)) != 0:
                 raise GearDesignError(f"{name} must be a single number for GearPair (use pair_geometry for arrays)")
         m, z1, z2, x1, x2 = validate_inputs(self.m, self.z1, self.z2, self.x1, self.x2)
         object.__setattr__(self, "m", float(m))
@@ -99,7 +99,7 @@ class GearPair:
         """
         rack = rack or BasicRack()
         m_arr, z1_arr, z2_arr, _, _ = validate_inputs(m, z1, z2, 0.0, 0.0)
-        a_w = float(require_positive("a_w (center distance)", a_w, unit="mm"))
+        a_w = one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))
         m, z1, z2 = float(m_arr), int(z1_arr), int(z2_arr)
         a = m * (z1 + z2) / 2.0
         a_min = a * np.cos(rack.alpha)
@@ -110,7 +110,9 @@ class GearPair:
         xs = float(x_sum_from_center_distance(m, z1, z2, a_w, rack))
         if x1 is None:
             x1 = balanced_sliding_split(m, z1, z2, xs, rack, tip_shortening)
-        x1 = float(x1)
+        if ndim(x1) != 0:
+            raise GearDesignError(f"x1 must be one number, got {x1!r}")
+        x1 = one_number("x1", require_range("x1", x1, -X_ABS_MAX, X_ABS_MAX))
         return cls(m, z1, z2, x1, xs - x1, rack, tip_shortening)
 
     def geometry(self) -> Geometry:
@@ -136,7 +138,7 @@ class GearPair:
         extra = tuple(extra) if not isinstance(extra, _checks.Check) else (extra,)
         if housing_a_w is not None:
             need = float(x_sum_from_center_distance(self.m, self.z1, self.z2,
-                                                   float(require_positive("housing_a_w", housing_a_w, unit="mm")),
+                                                   one_number("housing_a_w", require_positive("housing_a_w", housing_a_w, unit="mm")),
                                                    self.rack)) if housing_a_w > self._housing_min() else math.nan
             label = (f"a_w of x1 + x2 = housing a_w {float(housing_a_w):.10g} mm "
                      + (f"(needs x1 + x2 = {need:.6g}; here {self.x1 + self.x2:.6g})" if math.isfinite(need)

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import checks as _checks
-from .errors import GearDesignError, require_choice, require_int, require_positive
+from .errors import one_number, GearDesignError, require_choice, require_int
 from .geometry import X_ABS_MAX, Z_MAX, Z_MIN, _core, _core_float, require_module
 from .rack import BasicRack
 
@@ -56,7 +56,7 @@ class Problem:
                  tip_shortening=True, x_sum=None):
         self.z1 = int(require_int("z1", z1, Z_MIN, Z_MAX))
         self.z2 = int(require_int("z2", z2, Z_MIN, Z_MAX))
-        self.m = float(require_module(m))
+        self.m = one_number(m, require_module(m))
         self.rack = rack or _DEFAULT_RACK
         if not isinstance(self.rack, BasicRack):
             raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(self.rack).__name__}")

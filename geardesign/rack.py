@@ -4,9 +4,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
-
-from .errors import GearDesignError, _show, require_finite, require_range
+from .errors import GearDesignError, _show, ndim, one_number, require_finite, require_range
 
 __all__ = ["BasicRack", "ALPHA_RANGE_DEG"]
 
@@ -47,9 +45,9 @@ class BasicRack:
     def __post_init__(self):
         for name in ("alpha_deg", "ha", "c", "rho_f"):
             value = getattr(self, name)
-            if np.ndim(value) != 0:
+            if ndim(value) != 0:
                 raise GearDesignError(f"{name} must be a single number, got {_show(value)}")
-            object.__setattr__(self, name, float(require_finite(name, value)))
+            object.__setattr__(self, name, one_number(name, require_finite(name, value)))
         require_range("alpha_deg", self.alpha_deg, *ALPHA_RANGE_DEG, unit="deg")
         require_range("ha", self.ha, 0.0, 2.0, lo_open=True)
         require_range("c", self.c, 0.0, 1.0)

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError, require_count, require_int, require_range
+from .errors import one_number, GearDesignError, require_count, require_range
 from .geometry import center_distance_from_x_sum
 from .problem import DEFAULT_BOUNDS, X_WINDOW_LIMIT, Problem
 from .shift import smallest_conflict
@@ -268,7 +268,7 @@ def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: 
     """
     if method not in ("grid", "exact"):
         raise GearDesignError(f"method must be 'grid' or 'exact' for a region, got {method!r}")
-    tol = (0.01 if method == "grid" else 1e-9) if tol is None else float(require_range("tol", tol, 1e-14, 1.0))
+    tol = (0.01 if method == "grid" else 1e-9) if tol is None else one_number("tol", require_range("tol", tol, 1e-14, 1.0))
     lo, hi = _bounds(bounds)
     if n is None:
         n = int(min(max(math.ceil((hi - lo) / tol) + 1, 41), 801)) if method == "grid" else 321
@@ -314,7 +314,7 @@ def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: 
 
 def _bounds(bounds) -> tuple[float, float]:
     try:
-        lo, hi = (float(require_range("bounds", b, -X_WINDOW_LIMIT, X_WINDOW_LIMIT)) for b in bounds)
+        lo, hi = (one_number("bounds", require_range("bounds", b, -X_WINDOW_LIMIT, X_WINDOW_LIMIT)) for b in bounds)
     except (TypeError, ValueError) as exc:
         if isinstance(exc, GearDesignError):
             raise

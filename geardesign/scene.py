@@ -27,9 +27,6 @@ directory moved into place, so a failed run leaves nothing behind.
 from __future__ import annotations
 
 import math
-import os
-import shutil
-import tempfile
 import time
 import tomllib
 from dataclasses import dataclass, field

@@ -35,7 +35,7 @@ import pandas as pd
 from scipy.optimize import minimize
 
 from . import checks as _checks
-from .errors import GearDesignError, require_choice, require_count, require_positive, require_range
+from .errors import one_number, GearDesignError, require_choice, require_count, require_positive, require_range
 from .geometry import center_distance_from_x_sum, x_sum_from_center_distance
 from .involute import inv
 from .problem import DEFAULT_BOUNDS, OBJECTIVES, X_WINDOW_LIMIT, Problem
@@ -160,8 +160,8 @@ def _bounds(bounds) -> tuple[float, float]:
         lo, hi = bounds
     except (TypeError, ValueError):
         raise GearDesignError(f"bounds must be (lo, hi), got {bounds!r}") from None
-    lo = float(require_range("bounds lo", lo, -X_WINDOW_LIMIT, X_WINDOW_LIMIT))
-    hi = float(require_range("bounds hi", hi, -X_WINDOW_LIMIT, X_WINDOW_LIMIT))
+    lo = one_number("bounds lo", require_range("bounds lo", lo, -X_WINDOW_LIMIT, X_WINDOW_LIMIT))
+    hi = one_number("bounds hi", require_range("bounds hi", hi, -X_WINDOW_LIMIT, X_WINDOW_LIMIT))
     if not lo < hi:
         raise GearDesignError(f"bounds must be (lo, hi) with lo < hi, got {bounds!r}")
     return lo, hi
@@ -181,7 +181,7 @@ def reachable_center_distance(prob: Problem, bounds=DEFAULT_BOUNDS) -> tuple[flo
 def x_sum_for_housing(prob: Problem, a_w, bounds=DEFAULT_BOUNDS) -> float:
     """The x-sum of a housing centre distance ``a_w`` (mm), or one line naming the range of a_w
     this pair, module, rack and window can reach."""
-    a_w = float(require_positive("a_w (center distance)", a_w, unit="mm"))
+    a_w = one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))
     a_lo, a_hi = reachable_center_distance(prob, bounds)
     r = prob.rack
     where = (f"for m = {prob.m:g} mm, z1/z2 = {prob.z1}/{prob.z2}, rack {r.alpha_deg:g} deg, "
@@ -742,11 +742,14 @@ def optimize_shifts(z1, z2, objective: str | None = None, checks=None, method: s
     if a_w is not None and m is None:
         raise GearDesignError(f"a_w (center distance) = {a_w!r} mm needs the module m: give m (mm) too")
     objective = _default_objective(objective, a_w)
-    tol = DEFAULT_TOL[method] if tol is None else float(require_range("tol", tol, 1e-14, 1.0))
+    tol = DEFAULT_TOL[method] if tol is None else one_number("tol", require_range("tol", tol, 1e-14, 1.0))
     lo, hi = _bounds(bounds)
     if grid_n is not None:
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
     prob = Problem(z1, z2, rack, checks, objective, 1.0 if m is None else m, tip_shortening)
+    if prob.objective.kind == "margin" and not prob.checks:
+        raise GearDesignError("objective 'max_margin' (the point farthest from every check's boundary) needs at "
+                              "least one check, got checks=[]")
     x_sum = None
     if a_w is not None:
         x_sum = prob.x_sum = x_sum_for_housing(prob, a_w, (lo, hi))

@@ -30,7 +30,7 @@ import pandas as pd
 
 from . import catalogs
 from .checks import resolve_checks
-from .errors import GearDesignError, require_int, require_positive, require_range
+from .errors import one_number, GearDesignError, require_int, require_positive, require_range
 from .geometry import Z_MAX, Z_MIN, x_sum_from_center_distance
 from .problem import DEFAULT_BOUNDS, OBJECTIVES
 from .rack import BasicRack
@@ -54,8 +54,8 @@ def ratio_pairs(ratio: float, ratio_tol: float = 0.02, z1_range=(8, 40), z_sum_m
     >>> list(zip(z1.tolist(), z2.tolist()))
     [(10, 20), (11, 22), (12, 24)]
     """
-    ratio = float(require_range("ratio", ratio, 1.0, 100.0))
-    ratio_tol = float(require_range("ratio_tol", ratio_tol, 0.0, 0.5))
+    ratio = one_number("ratio", require_range("ratio", ratio, 1.0, 100.0))
+    ratio_tol = one_number("ratio_tol", require_range("ratio_tol", ratio_tol, 0.0, 0.5))
     lo, hi = _z1_range(z1_range)
     z1 = np.arange(lo, hi + 1)
     z2_lo = max(int(math.floor(lo * ratio * (1 - ratio_tol))), Z_MIN)
@@ -187,7 +187,7 @@ def _modules(m, m_range):
         if frame.empty:
             raise GearDesignError(f"m_range must hold at least one standard module, got {m_range!r}")
         return frame["module_mm"].to_numpy(float), frame["series"].to_numpy(int)
-    mm = float(require_positive("m (module)", m, unit="mm"))
+    mm = one_number("m (module)", require_positive("m (module)", m, unit="mm"))
     std = catalogs.load_catalog("modules")
     hit = std.loc[np.isclose(std["module_mm"], mm, rtol=1e-12), "series"]
     return np.array([mm]), np.array([int(hit.iloc[0]) if len(hit) else 0])
@@ -263,7 +263,7 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
         if a_w != "series":
             raise GearDesignError(f"a_w must be a centre distance in mm, 'series' or None, got {a_w!r}")
     elif a_w is not None:
-        a_w = float(require_positive("a_w (center distance)", a_w, unit="mm"))
+        a_w = one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))
     if m is None:
         m_used = "series" if a_w is not None else 1.0
     else:

@@ -5,7 +5,6 @@ says which checks conflict for each pair), 2 on bad input.
 """
 from __future__ import annotations
 
-from pathlib import Path
 
 from ..errors import GearDesignError
 from ..problem import OBJECTIVES

@@ -1,0 +1,78 @@
+"""The project fuzzes itself: generated bad and extreme input at every public entry point, the
+command line and the scene loader must give a result with finite numbers, or one clear
+GearDesignError (CLI: exit 2, one stderr line), within a time limit, leaving no file behind.
+
+The generator is tests/fuzzcases.py; benchmarks/fuzz.py runs it for 10 000+ cases. Here a
+small reproducible sample (hypothesis, derandomized) keeps CI's budget modest.
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from fuzzcases import TARGETS, run_case
+
+_FAST = [t for t in TARGETS if t not in ("scene", "cli", "shift_atlas", "feasible_region")]
+
+
+def _assert_good(target, seed):
+    outcome, desc, detail = run_case(target, seed, time_limit_s=60.0)
+    assert outcome in ("ok", "clean_error"), f"{outcome}: {desc}\n  -> {detail}"
+
+
+@settings(max_examples=160, deadline=None, derandomize=True, database=None)
+@given(target=st.sampled_from(_FAST), seed=st.integers(0, 10**9))
+def test_functions_answer_or_refuse_cleanly(target, seed):
+    _assert_good(target, seed)
+
+
+@settings(max_examples=24, deadline=None, derandomize=True, database=None)
+@given(target=st.sampled_from(["scene", "cli", "shift_atlas", "feasible_region"]), seed=st.integers(0, 10**9))
+def test_scenes_cli_regions_and_atlases_answer_or_refuse_cleanly(target, seed):
+    _assert_good(target, seed)
+
+
+@pytest.mark.parametrize("argv", [
+    ["pair", "--module", "5e-324", "--z1", "17", "--z2", "26"],
+    ["pair", "--module", "1", "--z1", "1e308", "--z2", "26"],
+    ["shift", "--z1", "12", "--z2", "31", "--center-distance", "55"],
+    ["chain", "--torque", "380", "--n1", "120", "--ratio", "9.5"],
+    ["key", "--d", "60", "--length", "1e308"],
+    ["atlas", "--z1", "3:100000", "--z2", "3:100000"],
+    ["run", "/dev/zero", "--out", "o"],
+])
+def test_cli_in_a_subprocess_one_line_exit_2(argv):
+    with tempfile.TemporaryDirectory() as tmp:
+        proc = subprocess.run([sys.executable, "-m", "geardesign", *argv], capture_output=True, text=True,
+                              cwd=tmp, timeout=120)
+        assert proc.returncode == 2, proc.stderr
+        lines = proc.stderr.strip().splitlines()
+        assert len(lines) == 1 and lines[0].startswith(f"geardesign {argv[0]}: error: "), proc.stderr
+        assert os.listdir(tmp) == []
+
+
+def test_a_failed_run_leaves_the_output_folder_as_it_was(tmp_path):
+    out = tmp_path / "out"
+    (out / "report.md").mkdir(parents=True)        # a folder where the report file would go
+    scene = os.path.join(os.path.dirname(__file__), "..", "studies", "scenes", "seed002_chain.toml")
+    proc = subprocess.run([sys.executable, "-m", "geardesign", "run", scene, "--out", str(out)],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 2 and "not empty" in proc.stderr
+    assert sorted(p.name for p in out.iterdir()) == ["report.md"] and (out / "report.md").is_dir()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
+
+
+def test_existing_plot_is_not_overwritten_without_overwrite(tmp_path):
+    plot = tmp_path / "contour.png"
+    plot.write_bytes(b"precious")
+    proc = subprocess.run([sys.executable, "-m", "geardesign", "shift", "--z1", "17", "--z2", "26",
+                           "--plot", str(plot)], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 2 and "--overwrite" in proc.stderr
+    assert plot.read_bytes() == b"precious"
+    proc = subprocess.run([sys.executable, "-m", "geardesign", "shift", "--z1", "17", "--z2", "26",
+                           "--plot", str(plot), "--overwrite"], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0 and plot.read_bytes()[:4] == b"\x89PNG"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["contour.png"]
