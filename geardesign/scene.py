@@ -35,6 +35,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from .catalogs import CHAIN_CATALOGS
 from .files import check_output_dir, write_dir_atomic
 from .errors import GearDesignError
 
@@ -45,7 +46,7 @@ _OBJECTIVES = ("max_x_sum", "max_eps_alpha", "balanced_sliding", "min_specific_p
 _SHIFT_METHODS = ("grid", "convex", "exact")
 _CHAIN_OBJECTIVES = ("min_mass", "min_width", "min_sprocket_diameter", "max_safety")
 _CHAIN_METHODS = ("hinge_pressure", "power_rating")
-_CHAIN_CATALOGS = ("gost13568", "iso606", "iso606a", "iso606b", "ansi_b29")
+_CHAIN_CATALOGS = CHAIN_CATALOGS
 _FACTORS = ("k_d", "k_a", "k_n", "k_reg", "k_lub", "k_mode")
 
 
@@ -126,7 +127,7 @@ SCHEMA = {
     "chain": {
         "torque_nm": _F(lo=0.0, lo_open=True), "power_kw": _F(lo=0.0, lo_open=True),
         "n1_rpm": _F(required=True, lo=0.0, hi=20000.0, lo_open=True), "ratio": _F(required=True, lo=1.0, hi=10.0),
-        "catalog": _Key("choice", default="gost13568", choices=_CHAIN_CATALOGS),
+        "catalog": _Key("str", default="gost13568"),   # a built-in chain table or a CSV beside the scene
         "k_e": _F(lo=0.1, hi=20.0), "allowable_pressure_mpa": _F(lo=0.0, hi=200.0, lo_open=True),
         "allowable_safety_factor": _F(lo=0.0, hi=100.0, lo_open=True),
         "strands": _Key("ints", default=(1, 2, 3), lo=1, hi=4), "z1": _I(lo=7, hi=120),
@@ -344,6 +345,19 @@ def _cross_checks(where: _Where, s: dict):
             where.fail("study", "parameter2", "expected a parameter other than parameter")
 
 
+def _chain_catalog(where, path: Path, name: str) -> str:
+    """A built-in chain catalog's name, or a user's CSV (relative to the scene file) as a path."""
+    if name in CHAIN_CATALOGS:
+        return name
+    if name.lower().endswith(".csv"):
+        csv = (path.parent / name) if not Path(name).is_absolute() else Path(name)
+        if not csv.is_file():
+            where.fail("chain", "catalog", f"the chain catalog {str(csv)!r} does not exist")
+        return str(csv)
+    where.fail("chain", "catalog", f"expected one of {', '.join(CHAIN_CATALOGS)} or a .csv file of chains "
+                                   f"(relative to the scene file), got {name!r}")
+
+
 SCENE_BYTES_MAX = 1 << 20    # 1 MiB: a scene is a page of settings, not data
 SCENE_DEPTH_MAX = 8          # sections, tables of tables, lists: a few levels at most
 SCENE_INT_MAX = 10**15       # integers beyond this are typing slips (and overflow floats)
@@ -417,6 +431,8 @@ def load_scene(path) -> Scene:
     if not sections:
         where.fail("", None, f"expected at least one of the sections {', '.join(f'[{s}]' for s in SECTIONS)}")
     _cross_checks(where, sections)
+    if "chain" in sections:
+        sections["chain"]["catalog"] = _chain_catalog(where, path, sections["chain"]["catalog"])
     return Scene(str(path), head.get("title", path.stem), head.get("description", ""), sections)
 
 
@@ -641,8 +657,10 @@ def _run_study(rep: SceneReport, st: dict, sections: dict):
     rep.summary.append(f"study: {len(frame)} sweep points over {what}")
 
 
-def compute_scene(scene: Scene) -> SceneReport:
-    """Run every section of a validated scene in memory (nothing is written)."""
+def compute_scene(scene: Scene, progress=None) -> SceneReport:
+    """Run every section of a validated scene in memory (nothing is written).
+
+    ``progress(done, total, section)`` is called before each section and at the end."""
     import matplotlib
     matplotlib.use("Agg")
     t0 = time.perf_counter()
@@ -654,12 +672,17 @@ def compute_scene(scene: Scene) -> SceneReport:
                      f"{', '.join(f'[{s}]' for s in scene.sections)}.", ""]
     s = scene.sections
     runners = (("gear", _run_gear), ("teeth", _run_teeth), ("chain", _run_chain), ("key", _run_keys))
+    todo = [name for name, _ in runners if name in s] + (["study"] if "study" in s else [])
+    step = progress or (lambda done, total, section: None)
     try:
         for name, fn in runners:
             if name in s:
+                step(todo.index(name), len(todo), name)
                 fn(rep, s[name])
         if "study" in s:
+            step(len(todo) - 1, len(todo), "study")
             _run_study(rep, s["study"], s)
+        step(len(todo), len(todo), "done")
     except GearDesignError as exc:
         for fig in rep.figures.values():
             import matplotlib.pyplot as plt
@@ -689,13 +712,13 @@ def write_report(rep: SceneReport, out_dir, overwrite: bool = False) -> Path:
     return write_dir_atomic(out, write)
 
 
-def run_scene(path, out_dir, overwrite: bool = False) -> SceneReport:
+def run_scene(path, out_dir, overwrite: bool = False, progress=None) -> SceneReport:
     """Load, validate and run a scene file, then write its report into ``out_dir``.
 
     The output folder is checked first; nothing is written when the scene is wrong or a
     section fails.
     """
     check_output_dir(out_dir, overwrite=overwrite)
-    rep = compute_scene(load_scene(path))
+    rep = compute_scene(load_scene(path), progress)
     write_report(rep, out_dir, overwrite=overwrite)
     return rep

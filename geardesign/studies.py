@@ -18,7 +18,7 @@ import itertools
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError
+from .errors import GearDesignError, require_finite
 
 __all__ = ["sweep", "sweep_parameters", "local_sensitivities", "plot_tornado", "plot_margins",
            "plot_region_motion", "LIMIT_PARAMETERS", "RACK_PARAMETERS", "CHAIN_PARAMETERS"]
@@ -31,6 +31,10 @@ CHAIN_PARAMETERS = ("torque_nm", "power_kw", "n1_rpm", "ratio", "k_e", "allowabl
                     "allowable_safety_factor", "z1", "center_distance_mm", "sag_factor")
 _DEFAULT_LIMITS = {"eps_alpha_min": 1.2, "sa_min": 0.25}
 _RACK_DEFAULTS = {"alpha_deg": 20.0, "ha": 1.0, "c": 0.25, "rho_f": 0.38}
+
+
+STUDY_VALUES_MAX = 2000      # values of one parameter (~10 s of optimisation at ~5 ms each)
+STUDY_POINTS_MAX = 10_000    # points of a two-parameter study, e.g. 100 x 100 (~1 min)
 
 
 def sweep_parameters(target: str = "gear") -> tuple:
@@ -196,15 +200,18 @@ def sweep(parameter: str, values, parameter2: str | None = None, values2=None, *
         raise GearDesignError("give parameter2 and values2 together")
     if parameter2 == parameter:
         raise GearDesignError(f"parameter2 must differ from parameter, got {parameter2!r} twice")
-    v1 = list(np.atleast_1d(np.asarray(values, dtype=float)))
-    if not v1:
-        raise GearDesignError("values must hold at least one value")
+    v1 = list(np.atleast_1d(require_finite("values", values)).ravel())
+    if not 1 <= len(v1) <= STUDY_VALUES_MAX:
+        raise GearDesignError(f"values must hold 1 to {STUDY_VALUES_MAX} values, got {len(v1)}")
     if parameter2 is None:
         points = [{parameter: v} for v in v1]
     else:
-        v2 = list(np.atleast_1d(np.asarray(values2, dtype=float)))
-        if not v2:
-            raise GearDesignError("values2 must hold at least one value")
+        v2 = list(np.atleast_1d(require_finite("values2", values2)).ravel())
+        if not 1 <= len(v2) <= STUDY_VALUES_MAX:
+            raise GearDesignError(f"values2 must hold 1 to {STUDY_VALUES_MAX} values, got {len(v2)}")
+        if len(v1) * len(v2) > STUDY_POINTS_MAX:
+            raise GearDesignError(f"a two-parameter study takes at most {STUDY_POINTS_MAX:,} points, "
+                                  f"got {len(v1)} x {len(v2)} = {len(v1) * len(v2):,}")
         points = [{parameter: a, parameter2: b} for a, b in itertools.product(v1, v2)]
     if target == "gear":
         for k in ("z1", "z2"):

@@ -8,6 +8,7 @@ import pandas as pd
 import pytest
 from scipy.optimize import brentq
 
+import geardesign as gd
 from geardesign.catalogs import key_lengths_mm
 from geardesign.cli import main
 from geardesign.errors import GearDesignError
@@ -160,3 +161,27 @@ def test_run_seed002_chain_scene(tmp_path, capsys):
         assert k.crush_mpa == pytest.approx(sigma, rel=1e-12) and sigma <= 300
         assert k.length_mm == lengths[lengths <= k.hub_length_mm - 5].max()
     assert "18x11x45" in report
+
+
+def test_scene_takes_a_users_chain_catalog_beside_it(tmp_path):
+    """`catalog = "my_chains.csv"` is read relative to the scene file, as the CLI reads a path:
+    the same rows give the same best chain as the built-in ISO 606 table they were copied from."""
+    from geardesign.catalogs import catalog_dir
+
+    (tmp_path / "my_chains.csv").write_bytes((catalog_dir() / "chains_iso606.csv").read_bytes())
+    scene = tmp_path / "s.toml"
+    scene.write_text('[chain]\ntorque_nm = 380\nn1_rpm = 120\nratio = 1\ncatalog = "my_chains.csv"\n')
+    rep = gd.run_scene(scene, tmp_path / "out")
+    ref = gd.chain.design(torque_nm=380, n1_rpm=120, ratio=1, catalog="iso606")
+    assert any(ref.best["designation"] in line for line in rep.summary)
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[chain]\ntorque_nm = 380\nn1_rpm = 120\nratio = 1\ncatalog = "keys"\n')
+    with pytest.raises(gd.GearDesignError, match="or a .csv file of chains"):
+        gd.load_scene(bad)
+
+
+def test_study_sizes_are_refused_before_any_work():
+    with pytest.raises(gd.GearDesignError, match="values must hold 1 to 2000 values, got 20000"):
+        gd.sweep("eps_alpha_min", np.linspace(1.0, 1.5, 20000), z1=17, z2=26)
+    with pytest.raises(gd.GearDesignError, match="at most 10,000 points"):
+        gd.sweep("eps_alpha_min", np.linspace(1.0, 1.5, 200), "sa_min", np.linspace(0.2, 0.4, 200), z1=17, z2=26)

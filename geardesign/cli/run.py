@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .output import add_json_flag, print_json
+from .output import Progress, add_json_flag, print_json
 
 
 def add_parser(subparsers):
@@ -27,7 +27,17 @@ def add_parser(subparsers):
 def run(args) -> int:
     from ..scene import run_scene
 
-    rep = run_scene(args.scene, args.out, overwrite=args.overwrite)
+    bar = Progress(1, "scene")
+
+    def progress(done, total, section):
+        bar.total, bar.label = max(total, 1), f"scene [{section}]"
+        bar.update(done - bar.done)
+
+    try:
+        rep = run_scene(args.scene, args.out, overwrite=args.overwrite, progress=progress)
+    finally:
+        if bar.done:
+            bar.close()
     out = Path(args.out)
     if args.json:
         d = rep.to_dict()
