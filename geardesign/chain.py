@@ -22,7 +22,7 @@ import pandas as pd
 
 from . import sprocket
 from .catalogs import chain_catalog, load_catalog
-from .errors import one_number, GearDesignError, require_int, require_positive, require_range
+from .errors import ndim, require_count, one_number, GearDesignError, require_int, require_positive, require_range
 
 __all__ = [
     "Conditions",
@@ -52,6 +52,8 @@ FACTOR_NAMES = ("k_d", "k_a", "k_n", "k_reg", "k_lub", "k_mode")
 # Formulas
 # --------------------------------------------------------------------------------------------
 
+TORQUE_RANGE_NM = (1e-3, 1e7)       # a watch escapement to a mill drive; outside, margins overflow
+POWER_RANGE_KW = (1e-6, 1e5)
 CENTER_DISTANCE_MAX_MM = 1e5        # 100 m: past any roller-chain drive
 CENTER_DISTANCE_PITCHES_MAX = 80.0  # longest span a roller chain is laid out for (a <= 80 p; ISO 10823 notes)
 Z2_MAX_LIMIT = 250                  # largest sprocket the tooth-count rules are written for
@@ -397,17 +399,19 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     u = one_number("ratio", require_range("ratio", ratio, 1.0, 10.0))
     omega = 2.0 * np.pi * n1 / 60.0
     if torque_nm is not None:
-        torque = one_number("torque_nm", require_positive("torque_nm", torque_nm, "N·m"))
+        torque = one_number("torque_nm", require_range("torque_nm", torque_nm, *TORQUE_RANGE_NM, unit="N·m"))
         power_w = torque * omega
     else:
-        power_w = one_number("power_kw", require_positive("power_kw", power_kw, "kW")) * 1000.0
+        power_w = one_number("power_kw", require_range("power_kw", power_kw, *POWER_RANGE_KW, unit="kW")) * 1000.0
         torque = power_w / omega
     if objective not in OBJECTIVES:
         raise GearDesignError(f"objective must be one of {', '.join(OBJECTIVES)}, got {objective!r}")
     if method not in METHODS:
         raise GearDesignError(f"method must be one of {', '.join(METHODS)}, got {method!r}")
     cond, k_e_val, k_d = _conditions(conditions, k_e)
-    strands_t = tuple(int(s) for s in np.atleast_1d(require_int("strands", list(np.atleast_1d(strands)), 1)))
+    if ndim(strands) < 0 or isinstance(strands, (str, bytes)):
+        raise GearDesignError(f"strands must be whole numbers in [1, 4], got {strands!r}")
+    strands_t = tuple(int(s) for s in np.atleast_1d(require_int("strands", strands, 1, 4)).ravel())
     if not strands_t or max(strands_t) > 4:
         raise GearDesignError(f"strands must be whole numbers in [1, 4], got {strands!r}")
     if allowable_pressure_mpa is not None:
@@ -415,7 +419,7 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     if allowable_safety_factor is not None:
         allowable_safety_factor = one_number("allowable_safety_factor", require_range("allowable_safety_factor", allowable_safety_factor, 1.0, 100.0))
     sag = one_number("sag_factor", require_range("sag_factor", sag_factor, 0.0, 10.0))
-    z2_max = int(require_int("z2_max", z2_max, 9, Z2_MAX_LIMIT))
+    z2_max = require_count("z2_max", z2_max, 9, Z2_MAX_LIMIT)
     if z1 is None:
         # odd counts from 13 up to the rule z1 = 29 − 2u; at u > 8 the rule falls below 13,
         # the smallest small sprocket of the tables, which is then the only candidate

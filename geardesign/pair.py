@@ -98,6 +98,9 @@ class GearPair:
         0.960013
         """
         rack = rack or BasicRack()
+        for name, value in (("m", m), ("z1", z1), ("z2", z2), ("a_w", a_w)):
+            if ndim(value) != 0:
+                raise GearDesignError(f"{name} must be one number for GearPair.from_center_distance, got {value!r}")
         m_arr, z1_arr, z2_arr, _, _ = validate_inputs(m, z1, z2, 0.0, 0.0)
         a_w = one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))
         m, z1, z2 = float(m_arr), int(z1_arr), int(z2_arr)

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import checks as _checks
-from .errors import one_number, GearDesignError, require_choice, require_int
+from .errors import require_count, one_number, GearDesignError, require_choice
 from .geometry import X_ABS_MAX, Z_MAX, Z_MIN, _core, _core_float, require_module
 from .rack import BasicRack
 
@@ -54,8 +54,8 @@ class Problem:
 
     def __init__(self, z1, z2, rack=None, checks=None, objective="max_x_sum", m=1.0,
                  tip_shortening=True, x_sum=None):
-        self.z1 = int(require_int("z1", z1, Z_MIN, Z_MAX))
-        self.z2 = int(require_int("z2", z2, Z_MIN, Z_MAX))
+        self.z1 = require_count("z1", z1, Z_MIN, Z_MAX)
+        self.z2 = require_count("z2", z2, Z_MIN, Z_MAX)
         self.m = one_number(m, require_module(m))
         self.rack = rack or _DEFAULT_RACK
         if not isinstance(self.rack, BasicRack):

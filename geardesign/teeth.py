@@ -30,7 +30,7 @@ import pandas as pd
 
 from . import catalogs
 from .checks import resolve_checks
-from .errors import one_number, GearDesignError, require_int, require_positive, require_range
+from .errors import require_count, one_number, GearDesignError, require_positive, require_range
 from .geometry import Z_MAX, Z_MIN, x_sum_from_center_distance
 from .problem import DEFAULT_BOUNDS, OBJECTIVES
 from .rack import BasicRack
@@ -64,7 +64,7 @@ def ratio_pairs(ratio: float, ratio_tol: float = 0.02, z1_range=(8, 40), z_sum_m
     Z1, Z2 = np.meshgrid(z1, z2, indexing="ij")
     ok = np.abs(Z2 / Z1 - ratio) / ratio <= ratio_tol + _RATIO_EPS
     if z_sum_max is not None:
-        ok &= Z1 + Z2 <= int(require_int("z_sum_max", z_sum_max, 2 * Z_MIN))
+        ok &= Z1 + Z2 <= require_count("z_sum_max", z_sum_max, 2 * Z_MIN, 10**15)
     return Z1[ok].astype(int), Z2[ok].astype(int)
 
 
@@ -73,8 +73,8 @@ def _z1_range(z1_range):
         lo, hi = z1_range
     except (TypeError, ValueError):
         raise GearDesignError(f"z1_range must be (min, max), got {z1_range!r}") from None
-    lo = int(require_int("z1_range min", lo, Z_MIN, Z_MAX))
-    hi = int(require_int("z1_range max", hi, Z_MIN, Z_MAX))
+    lo = require_count("z1_range min", lo, Z_MIN, Z_MAX)
+    hi = require_count("z1_range max", hi, Z_MIN, Z_MAX)
     if hi < lo:
         raise GearDesignError(f"z1_range must be (min, max) with min <= max, got {z1_range!r}")
     if hi - lo > 2000:

@@ -185,7 +185,7 @@ def test_catalogs_all_run():
 
 
 @pytest.mark.parametrize("kwargs, match", [
-    (dict(torque_nm=-380), r"torque_nm must be > 0"),
+    (dict(torque_nm=-380), r"torque_nm must be in \[0.001, 1e\+07\] N·m, got -380"),
     (dict(torque_nm=380, power_kw=3), "exactly one of torque_nm or power_kw"),
     (dict(torque_nm=380, catalog="din8187"), "catalog must be one of"),
     (dict(torque_nm=380, objective="cheap"), "objective must be one of"),

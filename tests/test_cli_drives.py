@@ -38,7 +38,7 @@ def test_chain_infeasible_exit_1(capsys):
 def test_chain_bad_input_exit_2(capsys):
     assert main(["chain", "--torque", "-380", "--n1", "120", "--ratio", "1"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "torque_nm must be > 0" in err[0]
+    assert len(err) == 1 and "torque_nm must be in [0.001, 1e+07] N·m, got -380" in err[0]
     assert main(["chain", "--torque", "380", "--n1", "120", "--ratio", "1", "--catalog", "din8187"]) == 2
     assert "catalog must be one of" in capsys.readouterr().err
     assert main(["chain", "--torque", "380", "--n1", "120", "--ratio", "1", "--strands", "one"]) == 2
