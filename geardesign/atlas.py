@@ -162,7 +162,8 @@ def _row_at(proto: Problem, z1, z2, x, area, rack, tip_shortening) -> dict:
     row = {"z1": z1, "z2": z2, "feasible": True, "x1": float(x[0]), "x2": float(x[1]),
            "objective": float(fun), "eps_alpha": float(geo["eps_alpha"]), "area": area,
            "active": ",".join(n for n, m in zip(proto.names, M) if abs(m) <= tol), "conflict": ""}
-    row.update({f"margin_{n}": float(m) for n, m in zip(proto.names, M)})
+    # a margin the batched Newton cannot tell from zero is zero (no 1e-16 "dips" in sweeps)
+    row.update({f"margin_{n}": (0.0 if abs(float(m)) <= tol else float(m)) for n, m in zip(proto.names, M)})
     return row
 
 

@@ -96,3 +96,14 @@ def test_local_sensitivities_and_plots():
     studies.plot_region_motion("eps_alpha_min", [1.1, 1.3], 17, 26, ax=axes[2])
     assert len(axes[2].lines) >= 2
     plt.close(fig)
+
+
+def test_sweep_margins_at_the_optimum_are_exact_zeros():
+    """An active check's margin is 0 in a sweep, not a rounding residue of ±1e-16 that a log or
+    two-parameter plot shows as a dip (both the tooth-count path and the limit path)."""
+    import geardesign as gd
+
+    teeth = gd.sweep("z2", [26, 30, 34, 40], z1=17)
+    limits = gd.sweep("eps_alpha_min", [1.15, 1.2, 1.25], z1=17, z2=26)
+    for frame in (teeth, limits):
+        assert (frame["margin_contact_ratio"] == 0.0).all()
