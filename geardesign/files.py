@@ -16,6 +16,17 @@ from .errors import GearDesignError
 __all__ = ["check_output_path", "check_output_dir", "write_file_atomic", "write_dir_atomic"]
 
 
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def _as_if_created(path, mode: int) -> None:
+    """Give a temporary file (0600) or folder (0700) the permissions a plain create would."""
+    os.chmod(path, mode & ~_umask())
+
+
 def _parent_ok(path: Path, what: str) -> None:
     parent = path.parent if str(path.parent) else Path(".")
     if not parent.is_dir():
@@ -64,6 +75,7 @@ def write_file_atomic(path, write) -> Path:
     os.close(fd)
     try:
         write(tmp)
+        _as_if_created(tmp, 0o666)
         os.replace(tmp, p)
     except BaseException:
         if os.path.exists(tmp):
@@ -82,6 +94,10 @@ def write_dir_atomic(path, write) -> Path:
     old = None
     try:
         write(tmp)
+        _as_if_created(tmp, 0o777)
+        for f in tmp.iterdir():
+            if f.is_file():
+                _as_if_created(f, 0o666)
         if p.exists():
             old = Path(tempfile.mkdtemp(prefix=f".{p.name}.", suffix=".old", dir=parent))
             os.rmdir(old)
