@@ -290,11 +290,20 @@ def _schema_for(frame_columns, kind: str | None, path) -> Schema:
         f"{path}: columns {', '.join(frame_columns)} match no known table; pass kind= one of {', '.join(SCHEMAS)}")
 
 
+CATALOG_BYTES_MAX = 4 << 20   # 4 MiB: the largest bundled table is a few kB
+
+
 @lru_cache(maxsize=64)
 def _read_cached(path_text: str, mtime_ns: int, kind: str | None, bundled: bool, series: str | None):
     path = Path(path_text)
+    if not path.is_file():
+        raise CatalogError(f"{path}: not a regular file (a catalog is a CSV text file)")
+    if path.stat().st_size > CATALOG_BYTES_MAX:
+        raise CatalogError(f"{path}: larger than {CATALOG_BYTES_MAX >> 20} MiB; a catalog is a table of standard sizes")
     try:
         raw = pd.read_csv(path, dtype=str, keep_default_na=False, na_values=[""], comment=None)
+    except pd.errors.EmptyDataError:
+        raise CatalogError(f"{path}: empty (a catalog needs a header row and at least one row)") from None
     except pd.errors.ParserError as exc:
         raise CatalogError(f"{path}: not a readable CSV file ({exc})") from None
     except UnicodeDecodeError as exc:

@@ -108,7 +108,7 @@ SCHEMA = {
     "gear": {
         "module": _F(required=True, lo=0.0, hi=100.0, lo_open=True),
         "z1": _I(required=True, lo=3, hi=10000), "z2": _I(required=True, lo=3, hi=10000),
-        "objective": _Key("choice", default="max_x_sum", choices=_OBJECTIVES),
+        "objective": _Key("choice", choices=_OBJECTIVES),   # default: max_x_sum, or balanced_sliding with a_w
         "method": _Key("choice", default="exact", choices=_SHIFT_METHODS),
         "x1": _F(lo=-1.5, hi=3.0), "x2": _F(lo=-1.5, hi=3.0),
         "a_w": _F(lo=0.0, lo_open=True), "tip_shortening": _Key("bool", default=True),
@@ -479,7 +479,7 @@ def _run_gear(rep: SceneReport, g: dict):
     rack = g["_rack"]
     checks = _checks_dict(g.get("checks"))
     kw = dict(checks=checks, rack=rack, tip_shortening=g["tip_shortening"], bounds=tuple(g["bounds"]))
-    res = optimize_shifts(g["z1"], g["z2"], objective=g["objective"], method=g["method"], m=g["module"],
+    res = optimize_shifts(g["z1"], g["z2"], objective=g.get("objective"), method=g["method"], m=g["module"],
                           a_w=g.get("a_w"), **kw)
     reg = feasible_region(g["z1"], g["z2"], m=g["module"], **kw)
     rep.results["gear"] = {"optimum": res, "region": reg}
@@ -513,8 +513,9 @@ def _run_gear(rep: SceneReport, g: dict):
         pair = GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **({"rack": rack} if rack else {}),
                         tip_shortening=g["tip_shortening"])
         lim = {k: v for k, v in (checks or {}).items()}
+        # with a housing a_w as well, the given shifts are checked against it (center_distance)
         chk = pair.checks(**{k: lim[k] for k in ("eps_alpha_min", "sa_min", "undercut", "interference") if k in lim},
-                          jamming=lim.get("jamming", True))
+                          jamming=lim.get("jamming", True), housing_a_w=g.get("a_w"))
         geo = pair.geometry().to_frame()
         rep.tables["gear_given_geometry"] = geo
         rep.tables["gear_given_checks"] = chk
@@ -529,12 +530,8 @@ def _run_gear(rep: SceneReport, g: dict):
                            + ("all checks pass" if not failed else f"FAILS {', '.join(failed)}"))
         given = (g["x1"], g["x2"])
     md += ["Geometry at the optimum (mm, degrees):", "", _md_table(geo_opt[["quantity", "value", "unit"]]), ""]
-    fig, ax = plt.subplots(figsize=(7, 6))
-    reg.plot(ax=ax, optimum=res if res.success else None)
-    if given is not None:
-        ax.plot([given[0]], [given[1]], "rx", ms=10, mew=2, label="given x1, x2")
-        ax.annotate("given", given, textcoords="offset points", xytext=(6, 6), color="r")
-    ax.set_title(f"Blocking contour z1/z2 = {g['z1']}/{g['z2']}")
+    fig, ax = plt.subplots(figsize=(8.6, 6.2))
+    reg.plot(ax=ax, optimum=res if res.success else None, proposed=given, x_sum=res.x_sum_fixed)
     rep.figures["gear_region"] = fig
     md += ["![blocking contour](gear_region.png)", ""]
 
