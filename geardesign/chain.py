@@ -363,7 +363,9 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     n1_rpm : float
         Speed of the small sprocket [rpm].
     ratio : float
-        Speed ratio u = n1/n2 in [1, 10].
+        Speed ratio u = n1/n2 in [1, 10]; with the smallest small sprocket z1 = 13 the large one
+        needs z2 = 13·u <= ``z2_max``, so above z2_max/13 (9.23 at the default 120, the usual limit
+        of chain wear elongation) raise ``z2_max`` (at most 250) or split the ratio.
     conditions : Conditions or mapping, optional
         The operating factors K_d, K_a, K_n, K_reg, K_lub, K_mode (numbers or condition names);
         K_e is their product. ``k_e`` gives the product directly (K_d is then taken as 1 in

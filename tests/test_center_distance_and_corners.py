@@ -215,3 +215,33 @@ def test_cli_refusals_name_the_input_and_its_range():
         assert len(lines) == 1, proc.stderr
         for w in words:
             assert w in lines[0], (w, lines[0])
+
+
+def _fun_with(z1, z2, objective, eps_limit=1.2, undercut_delta=0.0, only_contact=False, method="exact"):
+    if only_contact:
+        checks = [ck.ContactRatio(limit=eps_limit)]
+    else:
+        checks = [_Tightened(undercut_delta)] + [c for c in ck.make_checks(eps_alpha_min=eps_limit)
+                                                 if c.name != "undercut1"]
+    return gd.optimize_shifts(z1, z2, objective, checks=checks, method=method)
+
+
+@pytest.mark.parametrize("case", [
+    # a vertex of two checks (undercut1 and contact_ratio both active, multipliers unique)
+    dict(z1=10, z2=40, objective="max_x_sum"),
+    # the window's edge and one check: 40/120 with only ε_α >= 1 runs to x2 = 3
+    dict(z1=40, z2=120, objective="max_x_sum", only_contact=True),
+])
+def test_sensitivities_at_other_corners_agree_with_finite_differences(case):
+    h = 1e-5
+    only = case.get("only_contact", False)
+    args = (case["z1"], case["z2"], case["objective"])
+    fd = {"contact_ratio": (_fun_with(*args, eps_limit=1.0 + h if only else 1.2 + h, only_contact=only).fun
+                            - _fun_with(*args, eps_limit=1.0 - h if only else 1.2 - h, only_contact=only).fun) / (2 * h)}
+    if not only:
+        fd["undercut1"] = (_fun_with(*args, undercut_delta=h).fun - _fun_with(*args, undercut_delta=-h).fun) / (2 * h)
+    for method in ("exact", "convex"):
+        r = _fun_with(*args, eps_limit=1.0 if only else 1.2, only_contact=only, method=method)
+        assert r.sensitivity_sides == {}, method
+        for name, value in fd.items():
+            assert r.sensitivity[name] == pytest.approx(value, rel=1e-4, abs=1e-6), (method, name)
