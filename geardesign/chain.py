@@ -54,6 +54,7 @@ FACTOR_NAMES = ("k_d", "k_a", "k_n", "k_reg", "k_lub", "k_mode")
 
 TORQUE_RANGE_NM = (1e-3, 1e7)       # a watch escapement to a mill drive; outside, margins overflow
 POWER_RANGE_KW = (1e-6, 1e5)
+N1_RANGE_RPM = (0.1, 20_000.0)      # a hand crank to the fastest small-pitch chain (tables stop lower)
 CENTER_DISTANCE_MAX_MM = 1e5        # 100 m: past any roller-chain drive
 CENTER_DISTANCE_PITCHES_MAX = 80.0  # longest span a roller chain is laid out for (a <= 80 p; ISO 10823 notes)
 Z2_MAX_LIMIT = 250                  # largest sprocket the tooth-count rules are written for
@@ -397,7 +398,7 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     # ---- inputs ----
     if (torque_nm is None) == (power_kw is None):
         raise GearDesignError("give exactly one of torque_nm or power_kw")
-    n1 = one_number("n1_rpm", require_positive("n1_rpm", n1_rpm, "rpm"))
+    n1 = one_number("n1_rpm", require_range("n1_rpm", n1_rpm, *N1_RANGE_RPM, unit="rpm"))
     u = one_number("ratio", require_range("ratio", ratio, 1.0, 10.0))
     omega = 2.0 * np.pi * n1 / 60.0
     if torque_nm is not None:

@@ -11,6 +11,9 @@ __all__ = ["BasicRack", "ALPHA_RANGE_DEG"]
 # Pressure angles accepted: 1°–44° (standards use 14.5°–25°; the accuracy tests cover 10°–35°).
 # At 0° the involute degenerates, at 45° the rack tooth has no tip land.
 ALPHA_RANGE_DEG = (1.0, 44.0)
+# Addendum coefficient: stub teeth use 0.8, standard 1.0, high-contact designs up to ~1.3; below
+# 0.3 there is no tooth to speak of and the contact ratio collapses to nothing.
+HA_RANGE = (0.3, 2.0)
 
 
 @dataclass(frozen=True)
@@ -49,7 +52,7 @@ class BasicRack:
                 raise GearDesignError(f"{name} must be a single number, got {_show(value)}")
             object.__setattr__(self, name, one_number(name, require_finite(name, value)))
         require_range("alpha_deg", self.alpha_deg, *ALPHA_RANGE_DEG, unit="deg")
-        require_range("ha", self.ha, 0.0, 2.0, lo_open=True)
+        require_range("ha", self.ha, *HA_RANGE)
         require_range("c", self.c, 0.0, 1.0)
         rho_max = self.rho_f_max
         if not (0.0 <= self.rho_f <= rho_max + 1e-12):

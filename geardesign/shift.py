@@ -768,8 +768,11 @@ def optimize_shifts(z1, z2, objective: str | None = None, checks=None, method: s
         mg = {name: (0.0 if abs(v_) <= zero else float(v_)) for name, v_ in zip(prob.names, M)}
         fun = float(prob.objective.sense * P.min()) if prob.objective.kind != "margin" else float(P.min())
         values = [fun, float(geo["a_w"]), float(geo["eps_alpha"]), *mg.values()]
-        if success and not all(map(math.isfinite, values)):
-            success, message = False, "the geometry at the solver's point does not exist (no finite result)"
+        if not all(map(math.isfinite, values)):
+            raise GearDesignError(
+                f"no finite result for z1/z2 = {prob.z1}/{prob.z2} ({prob.objective.name}, {method}): the pair's "
+                f"geometry or a check is undefined at the point the solver reached ({x1:.6g}, {x2:.6g}); "
+                f"check the rack and the window")
         if prob.x_sum is not None:
             message += (f"; x1 + x2 = {prob.x_sum:.10g} fixed by a_w = {a_w:.10g} mm, "
                         f"objective {prob.objective.name}")
