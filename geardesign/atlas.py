@@ -6,7 +6,7 @@ import time
 import numpy as np
 import pandas as pd
 
-from .errors import ndim, GearDesignError, require_int
+from .errors import GearDesignError, ndim, require_int
 from .geometry import Z_MAX, Z_MIN, _core
 from .problem import DEFAULT_BOUNDS, Problem
 from .rack import BasicRack

@@ -22,7 +22,7 @@ import pandas as pd
 
 from . import sprocket
 from .catalogs import chain_catalog, load_catalog
-from .errors import ndim, require_count, one_number, GearDesignError, require_int, require_positive, require_range
+from .errors import GearDesignError, ndim, one_number, require_count, require_int, require_positive, require_range
 
 __all__ = [
     "Conditions",

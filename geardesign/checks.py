@@ -19,7 +19,7 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from .errors import one_number, GearDesignError, _show, require_bool, require_finite, require_positive, require_range
+from .errors import GearDesignError, _show, one_number, require_bool, require_finite, require_positive, require_range
 
 __all__ = [
     "Check", "Undercut", "Interference", "TipThickness", "ContactRatio", "Jamming", "CenterDistance", "CustomCheck",

@@ -29,6 +29,7 @@ __all__ = [
     "pair_geometry",
     "x_sum_from_center_distance",
     "center_distance_from_x_sum",
+    "min_center_distance",
     "undercut_x_min",
     "GEOMETRY_FIELDS",
     "Z_MIN",
@@ -137,6 +138,16 @@ def x_sum_from_center_distance(m, z1, z2, a_w, rack: BasicRack = BasicRack()):
     tan_w = np.sqrt(one_minus * (1.0 + cos_w)) / cos_w
     out = (np.asarray(z1) + z2) * (inv_from_tan(tan_w) - inv(alpha)) / (2.0 * math.tan(alpha))
     return float(out) if np.ndim(out) == 0 else out
+
+
+def min_center_distance(m, z1, z2, rack: BasicRack = BasicRack()):
+    """a·cos α (mm): the centre distance approached as inv α_w → 0; every a_w exceeds it
+    (cos α_w = a cos α / a_w < 1).
+
+    >>> round(float(min_center_distance(2.5, 12, 31)), 6)      # 53.75·cos 20°
+    50.508478
+    """
+    return np.asarray(m, dtype=float) * (np.asarray(z1) + np.asarray(z2)) / 2.0 * math.cos(rack.alpha)
 
 
 def center_distance_from_x_sum(m, z1, z2, x_sum, rack: BasicRack = BasicRack()):

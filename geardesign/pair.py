@@ -9,8 +9,9 @@ import pandas as pd
 from scipy.optimize import brentq
 
 from . import checks as _checks
-from .errors import ndim, one_number, GearDesignError, require_positive, require_range
-from .geometry import X_ABS_MAX, Geometry, _core, validate_geometry, validate_inputs, x_sum_from_center_distance
+from .errors import GearDesignError, ndim, one_number, require_positive, require_range
+from .geometry import (X_ABS_MAX, Geometry, _core, min_center_distance, validate_geometry, validate_inputs,
+                       x_sum_from_center_distance)
 from .rack import BasicRack
 
 __all__ = ["GearPair", "balanced_sliding_split"]
@@ -97,15 +98,16 @@ class GearPair:
         >>> round(p.x1 + p.x2, 6)
         0.960013
         """
-        rack = rack or BasicRack()
-        for name, value in (("m", m), ("z1", z1), ("z2", z2), ("a_w", a_w)):
+        rack = BasicRack() if rack is None else rack
+        if not isinstance(rack, BasicRack):
+            raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
+        for name, value in (("m", m), ("z1", z1), ("z2", z2)):
             if ndim(value) != 0:
                 raise GearDesignError(f"{name} must be one number for GearPair.from_center_distance, got {value!r}")
         m_arr, z1_arr, z2_arr, _, _ = validate_inputs(m, z1, z2, 0.0, 0.0)
         a_w = one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))
         m, z1, z2 = float(m_arr), int(z1_arr), int(z2_arr)
-        a = m * (z1 + z2) / 2.0
-        a_min = a * np.cos(rack.alpha)
+        a_min = float(min_center_distance(m, z1, z2, rack))
         if a_w <= a_min:
             raise GearDesignError(
                 f"a_w = {a_w:g} mm is too small: it must be > a·cos(alpha) = {a_min:.6g} mm "
@@ -113,8 +115,6 @@ class GearPair:
         xs = float(x_sum_from_center_distance(m, z1, z2, a_w, rack))
         if x1 is None:
             x1 = balanced_sliding_split(m, z1, z2, xs, rack, tip_shortening)
-        if ndim(x1) != 0:
-            raise GearDesignError(f"x1 must be one number, got {x1!r}")
         x1 = one_number("x1", require_range("x1", x1, -X_ABS_MAX, X_ABS_MAX))
         return cls(m, z1, z2, x1, xs - x1, rack, tip_shortening)
 
@@ -142,7 +142,7 @@ class GearPair:
         if housing_a_w is not None:
             need = float(x_sum_from_center_distance(self.m, self.z1, self.z2,
                                                    one_number("housing_a_w", require_positive("housing_a_w", housing_a_w, unit="mm")),
-                                                   self.rack)) if housing_a_w > self._housing_min() else math.nan
+                                                   self.rack)) if housing_a_w > min_center_distance(self.m, self.z1, self.z2, self.rack) else math.nan
             label = (f"a_w of x1 + x2 = housing a_w {float(housing_a_w):.10g} mm "
                      + (f"(needs x1 + x2 = {need:.6g}; here {self.x1 + self.x2:.6g})" if math.isfinite(need)
                         else "(unreachable: housing a_w <= a cos alpha)"))
@@ -154,8 +154,6 @@ class GearPair:
         table["margin"] = table["margin"].where(table["margin"].abs() > _ZERO_MARGIN, 0.0)
         return table
 
-    def _housing_min(self) -> float:
-        return self.m * (self.z1 + self.z2) / 2.0 * math.cos(self.rack.alpha)
 
     def ok(self, **limits) -> bool:
         """True when every check of :meth:`checks` holds."""

@@ -12,11 +12,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import checks as _checks
-from .errors import require_count, one_number, GearDesignError, require_choice
+from .errors import GearDesignError, one_number, require_choice, require_count, require_range
 from .geometry import X_ABS_MAX, Z_MAX, Z_MIN, _core, _core_float, require_module
 from .rack import BasicRack
 
-__all__ = ["OBJECTIVES", "Problem", "Objective"]
+__all__ = ["OBJECTIVES", "Problem", "Objective", "validate_bounds"]
 
 
 @dataclass(frozen=True)
@@ -211,24 +211,20 @@ class Problem:
         P (P,), M (parts,), GP (P, nvar), GM (parts, nvar). The margins come as the checks'
         smooth parts (:attr:`part_check` maps each to its check)."""
         x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - float(v[0]))
-        try:
-            P, M, GP, GM = self.evaluate_geo(self.point_geo(x1, x2), parts=True)
-        except _FLOAT_FAULTS:
-            P, M, GP, GM = self.evaluate_geo(self._point_geo_array(x1, x2), parts=True)
+        _, (P, M, GP, GM) = self.evaluate_design(x1, x2, parts=True)
         return P, M, self._free(GP), self._free(GM)
 
-    def point_geo(self, x1: float, x2: float) -> dict:
-        """The geometry of one design on the float path; where Python floats fault (a division
-        by zero exactly at a boundary, an overflow), the same formulas on 0-d numpy arrays,
-        which give inf/NaN as the vectorised path does."""
+    def evaluate_design(self, x1: float, x2: float, parts: bool = False):
+        """(geo, (P, M, GP, GM)) of one design on the float path; where Python floats fault (a
+        division by zero exactly at a boundary, an overflow), the same formulas on 0-d numpy
+        arrays, which give inf/NaN as the vectorised path does."""
         try:
-            return _core_float(self.m, self.z1, self.z2, x1, x2, self.rack, self.tip_shortening)
+            geo = _core_float(self.m, self.z1, self.z2, x1, x2, self.rack, self.tip_shortening)
+            return geo, self.evaluate_geo(geo, parts)
         except _FLOAT_FAULTS:
-            return self._point_geo_array(x1, x2)
-
-    def _point_geo_array(self, x1: float, x2: float) -> dict:
-        with np.errstate(all="ignore"):
-            return self.geo(np.float64(x1), np.float64(x2))
+            with np.errstate(all="ignore"):
+                geo = self.geo(np.float64(x1), np.float64(x2))
+            return geo, self.evaluate_geo(geo, parts)
 
     def evaluate_geo(self, geo, parts: bool = False):
         """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict
@@ -280,4 +276,17 @@ DEFAULT_BOUNDS = (-1.5, 3.0)
 # No window reaches past ±10: shifts beyond a few units make no gear (the tip or root circle
 # crosses the base circle long before), and the geometry refuses them by name.
 X_WINDOW_LIMIT = X_ABS_MAX
+
+
+def validate_bounds(bounds) -> tuple[float, float]:
+    """The search window (lo, hi) for each of x1, x2: two numbers within ±X_WINDOW_LIMIT, lo < hi."""
+    try:
+        lo, hi = bounds
+    except (TypeError, ValueError):
+        raise GearDesignError(f"bounds must be (lo, hi), got {bounds!r}") from None
+    lo = one_number("bounds lo", require_range("bounds lo", lo, -X_WINDOW_LIMIT, X_WINDOW_LIMIT))
+    hi = one_number("bounds hi", require_range("bounds hi", hi, -X_WINDOW_LIMIT, X_WINDOW_LIMIT))
+    if not lo < hi:
+        raise GearDesignError(f"bounds must be (lo, hi) with lo < hi, got {bounds!r}")
+    return lo, hi
 

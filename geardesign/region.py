@@ -14,10 +14,10 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from .errors import one_number, GearDesignError, require_count, require_range
+from .errors import GearDesignError, one_number, require_count, require_range
 from .geometry import center_distance_from_x_sum
-from .problem import DEFAULT_BOUNDS, X_WINDOW_LIMIT, Problem
-from .shift import smallest_conflict
+from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
+from .shift import central_point, grid_points, smallest_conflict
 
 __all__ = ["feasible_region", "Region", "CHECK_COLOURS", "check_style"]
 
@@ -269,7 +269,7 @@ def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: 
     if method not in ("grid", "exact"):
         raise GearDesignError(f"method must be 'grid' or 'exact' for a region, got {method!r}")
     tol = (0.01 if method == "grid" else 1e-9) if tol is None else one_number("tol", require_range("tol", tol, 1e-14, 1.0))
-    lo, hi = _bounds(bounds)
+    lo, hi = validate_bounds(bounds)
     if n is None:
         n = int(min(max(math.ceil((hi - lo) / tol) + 1, 41), 801)) if method == "grid" else 321
     n = require_count("n", n, 11, REGION_N_MAX)
@@ -310,18 +310,6 @@ def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: 
         err = max(err, abs(coarse - (area_fine + (area_fine - area) / 3.0)))
     return Region(prob.z1, prob.z2, pd.concat(frames, ignore_index=True), area_fine + (area_fine - area) / 3.0,
                   True, [], method, tol, window, prob, area_error=err)
-
-
-def _bounds(bounds) -> tuple[float, float]:
-    try:
-        lo, hi = (one_number("bounds", require_range("bounds", b, -X_WINDOW_LIMIT, X_WINDOW_LIMIT)) for b in bounds)
-    except (TypeError, ValueError) as exc:
-        if isinstance(exc, GearDesignError):
-            raise
-        raise GearDesignError(f"bounds must be (lo, hi), got {bounds!r}") from None
-    if not lo < hi:
-        raise GearDesignError(f"bounds must be (lo, hi) with lo < hi, got {bounds!r}")
-    return lo, hi
 
 
 def _shoelace(L: np.ndarray) -> float:
@@ -366,13 +354,11 @@ def _halved(prob: Problem, L: np.ndarray, names: np.ndarray) -> np.ndarray:
 
 def _central_point(prob: Problem, window):
     """A point where every check holds near the least infeasible node of a coarse grid, or None."""
-    from .shift import _MinMargin, _least_infeasible, _slsqp, grid_points
-
     V = grid_points(prob, 61, window)
     _, M = prob.evaluate(V, grads=False)
     if not M.size:
         return None
-    w, _, _ = _slsqp(_MinMargin(prob), V[_least_infeasible(prob, V, M)], window, ftol=1e-12, pieces_only=True)
+    w = central_point(prob, V, M, window)
     return w[:2] if w[-1] >= 0 and np.isfinite(w).all() else None
 
 

@@ -35,10 +35,10 @@ import pandas as pd
 from scipy.optimize import minimize
 
 from . import checks as _checks
-from .errors import one_number, GearDesignError, require_choice, require_count, require_positive, require_range
-from .geometry import center_distance_from_x_sum, x_sum_from_center_distance
+from .errors import GearDesignError, one_number, require_choice, require_count, require_positive, require_range
+from .geometry import center_distance_from_x_sum, min_center_distance, x_sum_from_center_distance
 from .involute import inv
-from .problem import DEFAULT_BOUNDS, OBJECTIVES, X_WINDOW_LIMIT, Problem
+from .problem import DEFAULT_BOUNDS, OBJECTIVES, Problem, validate_bounds
 
 __all__ = ["optimize_shifts", "ShiftResult", "METHODS", "smallest_conflict", "reachable_center_distance",
            "x_sum_for_housing", "GRID_N_MAX"]
@@ -155,24 +155,12 @@ def _default_objective(objective, a_w) -> str:
     return objective
 
 
-def _bounds(bounds) -> tuple[float, float]:
-    try:
-        lo, hi = bounds
-    except (TypeError, ValueError):
-        raise GearDesignError(f"bounds must be (lo, hi), got {bounds!r}") from None
-    lo = one_number("bounds lo", require_range("bounds lo", lo, -X_WINDOW_LIMIT, X_WINDOW_LIMIT))
-    hi = one_number("bounds hi", require_range("bounds hi", hi, -X_WINDOW_LIMIT, X_WINDOW_LIMIT))
-    if not lo < hi:
-        raise GearDesignError(f"bounds must be (lo, hi) with lo < hi, got {bounds!r}")
-    return lo, hi
-
-
 def reachable_center_distance(prob: Problem, bounds=DEFAULT_BOUNDS) -> tuple[float, float]:
     """(a_w min, a_w max) in mm that x1 + x2 within ``bounds`` can give this pair: the x-sum
     runs over [2 lo, 2 hi], and above the x-sum where inv α_w = 0 (a_w = a cos α)."""
     lo, hi = bounds
     xs_zero = -(prob.z1 + prob.z2) * inv(prob.rack.alpha) / (2.0 * math.tan(prob.rack.alpha))
-    a_cos = prob.m * (prob.z1 + prob.z2) / 2.0 * math.cos(prob.rack.alpha)
+    a_cos = float(min_center_distance(prob.m, prob.z1, prob.z2, prob.rack))
     a_lo = a_cos if 2 * lo <= xs_zero else center_distance_from_x_sum(prob.m, prob.z1, prob.z2, 2 * lo, prob.rack)
     a_hi = center_distance_from_x_sum(prob.m, prob.z1, prob.z2, 2 * hi, prob.rack) if 2 * hi > xs_zero else a_cos
     return float(a_lo), float(a_hi)
@@ -232,9 +220,12 @@ def _best_feasible(prob: Problem, V: np.ndarray):
     return int(np.argmax(score)), P, M
 
 
-def _least_infeasible(prob: Problem, V, M):
+def central_point(prob: Problem, V, M, bounds) -> np.ndarray:
+    """(x, t): the point that maximises the smallest margin t near the least infeasible node of
+    V (M its margins), by SLSQP; t >= 0 is a feasible point of a region thinner than the grid."""
     worst = M.min(axis=0) if M.size else np.zeros(V.shape[0])
-    return int(np.argmax(worst))
+    w, _, _ = _slsqp(_MinMargin(prob), V[int(np.argmax(worst))], bounds, ftol=1e-12, pieces_only=True)
+    return w
 
 
 class _Evaluator:
@@ -743,7 +734,7 @@ def optimize_shifts(z1, z2, objective: str | None = None, checks=None, method: s
         raise GearDesignError(f"a_w (center distance) = {a_w!r} mm needs the module m: give m (mm) too")
     objective = _default_objective(objective, a_w)
     tol = DEFAULT_TOL[method] if tol is None else one_number("tol", require_range("tol", tol, 1e-14, 1.0))
-    lo, hi = _bounds(bounds)
+    lo, hi = validate_bounds(bounds)
     if grid_n is not None:
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
     prob = Problem(z1, z2, rack, checks, objective, 1.0 if m is None else m, tip_shortening)
@@ -755,14 +746,9 @@ def optimize_shifts(z1, z2, objective: str | None = None, checks=None, method: s
         x_sum = prob.x_sum = x_sum_for_housing(prob, a_w, (lo, hi))
     bounds = (lo, hi)
 
-    def finish(v, nit, success, message, sensitivity=None, conflict=None, sides=None, accuracy=None):
+    def finish(v, nit, success, message, sensitivity=None, conflict=None, sides=None):
         x1, x2 = (float(c[0]) for c in prob.xy(np.asarray(v)[None, :]))
-        geo = prob.point_geo(x1, x2)
-        try:
-            P, M, _, _ = prob.evaluate_geo(geo)
-        except (ZeroDivisionError, OverflowError, ValueError):
-            geo = prob._point_geo_array(x1, x2)
-            P, M, _, _ = prob.evaluate_geo(geo)
+        geo, (P, M, _, _) = prob.evaluate_design(x1, x2)
         # a margin the solver cannot tell from zero is zero (no -2.8e-16 in reports)
         zero = tol if method != "grid" else 1e-12
         mg = {name: (0.0 if abs(v_) <= zero else float(v_)) for name, v_ in zip(prob.names, M)}
@@ -782,7 +768,7 @@ def optimize_shifts(z1, z2, objective: str | None = None, checks=None, method: s
             method=method, tol=tol, nit=nit, time_s=time.perf_counter() - t0, margins=mg, active=active,
             sensitivity=sensitivity or {}, conflict=conflict or [], z1=prob.z1, z2=prob.z2, m=prob.m,
             x_sum_fixed=x_sum, a_w=float(geo["a_w"]), eps_alpha=float(geo["eps_alpha"]),
-            sensitivity_sides=sides or {}, accuracy=accuracy or _ACCURACY[method].format(tol=tol))
+            sensitivity_sides=sides or {}, accuracy=_ACCURACY[method].format(tol=tol))
 
     if method == "grid":
         span = hi - lo
@@ -794,13 +780,12 @@ def optimize_shifts(z1, z2, objective: str | None = None, checks=None, method: s
         h = (V[-1, 0] - V[0, 0]) / (n - 1) if n > 1 else 0.0
         tol = max(h / 2, tol) if h > 0 else tol
         if i is None:
-            j = _least_infeasible(prob, V, M)
-            w, _, _ = _slsqp(_MinMargin(prob), V[j], bounds, ftol=1e-12, pieces_only=True)
+            w = central_point(prob, V, M, bounds)
             if w[-1] >= 0:
                 return finish(w[:-1], 1, True, f"no feasible node among {V.shape[0]} (spacing {h:.3g}): the "
                               "region is thinner than the grid; returned its most central point nearby")
             conflict = smallest_conflict(prob, bounds)
-            return finish(V[j], 1, False, _conflict_message(conflict), conflict=conflict)
+            return finish(w[:-1], 1, False, _conflict_message(conflict), conflict=conflict)
         return finish(V[i], 1, True, f"best of {V.shape[0]} grid nodes (spacing {h:.3g})")
 
     # feasible starts for convex and exact
@@ -817,8 +802,7 @@ def optimize_shifts(z1, z2, objective: str | None = None, checks=None, method: s
     if not starts or not _feasible_at(prob, starts[0]):
         # no feasible node: the region, if any, is thinner than the grid; the most central
         # point near the least infeasible node starts the solve
-        j = _least_infeasible(prob, V, M)
-        w, _, ev = _slsqp(_MinMargin(prob), V[j], bounds, ftol=1e-12, pieces_only=True)
+        w = central_point(prob, V, M, bounds)
         if w[-1] < 0:
             conflict = smallest_conflict(prob, bounds)
             return finish(w[:-1], 1, False, _conflict_message(conflict), conflict=conflict)

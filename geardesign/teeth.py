@@ -30,7 +30,7 @@ import pandas as pd
 
 from . import catalogs
 from .checks import resolve_checks
-from .errors import require_count, one_number, GearDesignError, require_positive, require_range
+from .errors import GearDesignError, one_number, require_count, require_positive, require_range
 from .geometry import Z_MAX, Z_MIN, x_sum_from_center_distance
 from .problem import DEFAULT_BOUNDS, OBJECTIVES
 from .rack import BasicRack
