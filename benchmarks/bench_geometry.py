@@ -10,7 +10,7 @@ import numpy as np
 
 import geardesign as gd
 from geardesign import checks
-from geardesign.geometry import _core
+from geardesign.gears.geometry import _core
 
 
 def designs(n, seed=0):

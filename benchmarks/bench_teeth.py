@@ -13,7 +13,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
-from geardesign.teeth import select_teeth  # noqa: E402
+from geardesign.shifts.teeth import select_teeth  # noqa: E402
 
 CASES = [
     ("u 1.5 ±2 %, a_w 180, m series 1..50, exact", dict(ratio=1.5, a_w=180.0, m="series")),

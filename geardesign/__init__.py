@@ -4,26 +4,56 @@
 >>> pair = gd.GearPair(m=8, z1=17, z2=26, x1=0.898, x2=0.517)
 >>> round(pair.geometry().eps_alpha, 3)
 1.153
+
+The package is layered; each layer imports only the ones before it:
+
+- :mod:`geardesign.errors`, :mod:`geardesign.validate`, :mod:`geardesign.results`, :mod:`geardesign.files`
+- :mod:`geardesign.catalogs` — CSV tables and standard series
+- :mod:`geardesign.gears` — involute, rack, mesh, geometry, checks, :class:`GearPair`
+- :mod:`geardesign.shifts` — the shift problem, its methods, region, atlas, tooth counts
+- :mod:`geardesign.drives` — sprockets, chains, keys
+- :mod:`geardesign.sensitivity` — sweeps and local sensitivities
+- :mod:`geardesign.scene` — TOML scenes and their reports
+- :mod:`geardesign.cli` — the ``geardesign`` command
+
+Names are loaded on first use (PEP 562), so ``import geardesign`` costs little more than numpy and
+a scene loads only what its sections need.
 """
-from . import catalogs, chain, checks, involute, key, sprocket
-from .checks import make_checks
-from .errors import CatalogError, GearDesignError
-from .geometry import GEOMETRY_FIELDS, Geometry, pair_geometry, x_sum_from_center_distance
-from .involute import inv, inv_inverse
-from .pair import GearPair
-from .rack import BasicRack
-from .shift import ShiftResult, optimize_shifts
-from .region import Region, feasible_region
-from .atlas import shift_atlas
-from .teeth import TeethSelection, select_teeth
-from . import scene, studies
-from .scene import load_scene, run_scene
-from .studies import sweep
+import importlib
 
 __version__ = "0.1.0"
 
-__all__ = [
-    "BasicRack", "GearPair", "Geometry", "GEOMETRY_FIELDS", "GearDesignError", "CatalogError",
-    "pair_geometry", "x_sum_from_center_distance", "inv", "inv_inverse", "make_checks",
-    "checks", "involute", "optimize_shifts", "ShiftResult", "feasible_region", "Region", "shift_atlas", "select_teeth", "TeethSelection", "scene", "studies", "load_scene", "run_scene", "sweep", "catalogs", "chain", "key", "sprocket",
-]
+# public name -> module that defines it
+_NAMES = {
+    "GearDesignError": "errors", "CatalogError": "errors",
+    "BasicRack": "gears.rack", "Mesh": "gears.mesh", "inv": "gears.involute", "inv_inverse": "gears.involute",
+    "Geometry": "gears.geometry", "GEOMETRY_FIELDS": "gears.geometry", "pair_geometry": "gears.geometry",
+    "x_sum_from_center_distance": "gears.geometry", "make_checks": "gears.checks", "GearPair": "gears.pair",
+    "optimize_shifts": "shifts.optimize", "ShiftResult": "shifts.result", "OBJECTIVES": "shifts.objectives",
+    "Objective": "shifts.objectives", "feasible_region": "shifts.region", "Region": "shifts.region",
+    "shift_atlas": "shifts.atlas", "select_teeth": "shifts.teeth", "TeethSelection": "shifts.teeth",
+    "sweep": "sensitivity.studies", "load_scene": "scene", "run_scene": "scene",
+}
+# modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
+_MODULES = {
+    "catalogs": "catalogs", "involute": "gears.involute", "checks": "gears.checks", "chain": "drives.chain",
+    "key": "drives.key", "sprocket": "drives.sprocket", "studies": "sensitivity.studies", "scene": "scene",
+    "gears": "gears", "shifts": "shifts", "drives": "drives", "sensitivity": "sensitivity",
+}
+
+__all__ = sorted(_NAMES) + sorted(_MODULES)
+
+
+def __getattr__(name):
+    if name in _NAMES:
+        value = getattr(importlib.import_module(f".{_NAMES[name]}", __name__), name)
+    elif name in _MODULES:
+        value = importlib.import_module(f".{_MODULES[name]}", __name__)
+    else:
+        raise AttributeError(f"module 'geardesign' has no attribute {name!r}")
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))

@@ -19,7 +19,7 @@ sys.path.insert(0, str(HERE.parent))            # run from a checkout
 sys.path.insert(0, str(HERE.parent / "tests"))
 import geardesign as gd  # noqa: E402
 from geardesign.errors import GearDesignError  # noqa: E402
-from geardesign.geometry import GEOMETRY_FIELDS  # noqa: E402
+from geardesign.gears.geometry import GEOMETRY_FIELDS  # noqa: E402
 from reference_mp import field_scale, pair_reference  # noqa: E402
 
 OUT = HERE / "out"

@@ -21,7 +21,7 @@ import pandas as pd
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # run from a checkout
 import geardesign as gd  # noqa: E402
-from geardesign.geometry import GEOMETRY_FIELDS
+from geardesign.gears.geometry import GEOMETRY_FIELDS
 
 HERE = Path(__file__).resolve().parent
 OUT = HERE / "out"

@@ -13,7 +13,7 @@ import pytest
 import geardesign as gd
 from geardesign import checks as ck
 from geardesign.cli import main
-from geardesign.geometry import _core
+from geardesign.gears.geometry import _core
 
 mp.mp.dps = 40
 

@@ -2,7 +2,7 @@
 
 The local solvers evaluate one design at a time in Python floats (:func:`_core_float`,
 :meth:`Problem.evaluate_point`) because a one-element numpy call costs ~20× more. Both run the
-same formulas (:func:`geardesign.geometry._formulas`) on different backends; these tests hold
+same formulas (:func:`geardesign.gears.geometry._formulas`) on different backends; these tests hold
 them together, so that the golden and mpmath tests of the array path cover the float path too.
 The analytic gradients of the objective pieces are held against central differences.
 """
@@ -14,9 +14,9 @@ import numpy as np
 from hypothesis import assume, given
 from hypothesis import strategies as st
 
-from geardesign.checks import CustomCheck, make_checks
-from geardesign.geometry import _core, _core_float
-from geardesign.problem import OBJECTIVES, Problem
+from geardesign.gears.checks import CustomCheck, make_checks
+from geardesign.gears.geometry import _core, _core_float
+from geardesign.shifts.problem import OBJECTIVES, Problem
 
 from test_properties import SETTINGS, designs
 
@@ -35,7 +35,7 @@ def test_float_core_equals_array_core(d):
 
 def test_float_core_gives_nan_where_the_design_does_not_exist():
     """x-sum too negative for an operating angle: NaN on both paths, never an exception."""
-    from geardesign.rack import BasicRack
+    from geardesign.gears.rack import BasicRack
     arr = _core(1.0, 10, 10, -2.0, -2.0, BasicRack(), True)
     flt = _core_float(1.0, 10, 10, -2.0, -2.0, BasicRack(), True)
     assert math.isnan(flt["a_w"]) and np.isnan(arr["a_w"])

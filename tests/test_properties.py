@@ -19,8 +19,8 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import geardesign as gd
-from geardesign.checks import make_checks
-from geardesign.geometry import _core
+from geardesign.gears.checks import make_checks
+from geardesign.gears.geometry import _core
 
 SETTINGS = settings(max_examples=200, deadline=None, derandomize=True)
 

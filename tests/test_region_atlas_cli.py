@@ -7,7 +7,7 @@ import pytest
 import geardesign as gd
 from geardesign import checks as ck
 from geardesign.cli import main
-from geardesign.geometry import _core
+from geardesign.gears.geometry import _core
 
 
 def test_region_boundary_lies_on_the_named_checks():

@@ -2,14 +2,14 @@
 
 The reference (written here) uses no gradients and no solver: a dense grid over the window,
 then repeated zooming grids around the best feasible node, with the exact margins of
-geardesign.checks (the geometry under them is tested against mpmath in test_extremes.py).
+geardesign.gears.checks (the geometry under them is tested against mpmath in test_extremes.py).
 """
 import numpy as np
 import pytest
 
 import geardesign as gd
 from geardesign import checks as ck
-from geardesign.geometry import _core
+from geardesign.gears.geometry import _core
 
 
 def reference_optimum(z1, z2, fun, checks=None, sense=+1, lo=-1.5, hi=3.0, n=41, levels=34):

@@ -9,10 +9,10 @@ import pandas as pd
 import pytest
 
 import geardesign as gd
-from geardesign.checks import make_checks, margins
+from geardesign.gears.checks import make_checks, margins
 from geardesign.cli import main
-from geardesign.geometry import _core
-from geardesign.teeth import TeethSelection, ratio_pairs, select_teeth
+from geardesign.gears.geometry import _core
+from geardesign.shifts.teeth import TeethSelection, ratio_pairs, select_teeth
 
 ALPHA = math.radians(20.0)
 

@@ -5,8 +5,8 @@ check stops each chain family), 2 on bad input.
 """
 from __future__ import annotations
 
-from .. import chain
-from ..catalogs import CHAIN_CATALOGS
+from ..drives import chain
+from ..catalogs.tables import CHAIN_CATALOGS
 from ..errors import GearDesignError
 from .output import add_json_flag, frame_records, print_frame, print_json
 

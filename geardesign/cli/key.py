@@ -4,7 +4,7 @@ Exit status 0 when a key fits and passes, 1 when nothing fits, 2 on bad input.
 """
 from __future__ import annotations
 
-from .. import key
+from ..drives import key
 from .output import add_json_flag, print_json
 
 

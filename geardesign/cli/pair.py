@@ -1,11 +1,11 @@
 """``geardesign pair``: geometry and checks of one spur pair."""
 from __future__ import annotations
 
-from ..checks import DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN
+from ..gears.checks import DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN
 from ..errors import GearDesignError
-from ..geometry import GEOMETRY_FIELDS
-from ..pair import GearPair
-from ..rack import BasicRack
+from ..gears.geometry import GEOMETRY_FIELDS
+from ..gears.pair import GearPair
+from ..gears.rack import BasicRack
 from .output import add_json_flag, frame_records, print_frame, print_json
 
 

@@ -2,8 +2,8 @@
 from __future__ import annotations
 
 from ..errors import GearDesignError
-from ..problem import OBJECTIVES
-from ..shift import DEFAULT_TOL, METHODS
+from ..shifts.problem import OBJECTIVES
+from ..shifts.optimize import DEFAULT_TOL, METHODS
 from .output import add_json_flag, frame_records, print_frame, print_json
 from .pair import add_limit_args, add_rack_args, rack_from_args
 
@@ -55,9 +55,9 @@ def add_parser(sub):
 
 def run(args) -> int:
     from ..files import check_output_path, write_file_atomic
-    from ..pair import GearPair
-    from ..region import feasible_region
-    from ..shift import optimize_shifts
+    from ..gears.pair import GearPair
+    from ..shifts.region import feasible_region
+    from ..shifts.optimize import optimize_shifts
 
     if (args.x1 is None) != (args.x2 is None):
         raise GearDesignError("--x1 and --x2 go together: give both to check a proposed pair")

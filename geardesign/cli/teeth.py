@@ -7,8 +7,8 @@ from __future__ import annotations
 
 
 from ..errors import GearDesignError
-from ..problem import OBJECTIVES
-from ..teeth import select_teeth
+from ..shifts.problem import OBJECTIVES
+from ..shifts.teeth import select_teeth
 from ..files import check_output_path, write_file_atomic
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
 from .pair import add_limit_args, add_rack_args, rack_from_args

@@ -2,7 +2,7 @@
 
 The discrete part (tooth counts, modules, standard centre distances) is enumerated with
 vectorised numpy over the whole candidate set; the continuous part (the profile shifts) is
-solved per candidate with :func:`geardesign.shift.optimize_shifts`.
+solved per candidate with :func:`geardesign.shifts.optimize.optimize_shifts`.
 
 * Centre distance free (``a_w=None``): for each pair the shifts are optimised for the
   objective over the whole feasible region; the module only scales lengths, so each pair is
@@ -28,13 +28,14 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from . import catalogs
-from .checks import resolve_checks
-from .errors import GearDesignError, one_number, require_count, require_positive, require_range
-from .geometry import Z_MAX, Z_MIN, x_sum_from_center_distance
+from .. import catalogs
+from ..gears.checks import resolve_checks
+from ..errors import GearDesignError
+from ..validate import one_number, require_count, require_positive, require_range
+from ..gears.geometry import Z_MAX, Z_MIN, x_sum_from_center_distance
 from .problem import DEFAULT_BOUNDS, OBJECTIVES
-from .rack import BasicRack
-from .shift import METHODS, optimize_shifts
+from ..gears.rack import BasicRack
+from .optimize import METHODS, optimize_shifts
 
 __all__ = ["select_teeth", "ratio_pairs", "TeethSelection", "X_SUM_WINDOW", "MAX_SOLVES"]
 
@@ -222,13 +223,13 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
         i.e. the nearest standard value that needs a non-negative x-sum. The x-sum follows
         from a_w; the objective picks the split.
     z1_range : (min, max) teeth of the pinion, inclusive.  z_sum_max : largest z1 + z2.
-    objective : one of :data:`geardesign.problem.OBJECTIVES`; default ``"max_x_sum"`` with the
+    objective : one of :data:`geardesign.shifts.problem.OBJECTIVES`; default ``"max_x_sum"`` with the
         centre distance free, ``"balanced_sliding"`` with ``a_w`` given (the x-sum is then
         fixed, so "max_x_sum" could not choose the split; equal specific sliding at both
         roots is the classic rule, GOST 16532-70 appendix).  checks : as for
-        :func:`geardesign.shift.optimize_shifts` (None: no undercut, no interference,
+        :func:`geardesign.shifts.optimize.optimize_shifts` (None: no undercut, no interference,
         s_a >= 0.25 m, ε_α >= 1.2).  rack : :class:`BasicRack` (standard by default).
-    method : "grid", "convex" or "exact" (see :mod:`geardesign.shift`).
+    method : "grid", "convex" or "exact" (see :mod:`geardesign.shifts.optimize`).
     x_sum_window : (lo, hi) of x1 + x2 worth solving when a_w fixes it.
     progress : optional callable(done, total) called after each solve.
 
@@ -239,7 +240,7 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
         module_series (1, 2, or 0 for a non-standard module), a_mm, a_w_mm, x_sum, x1, x2,
         eps_alpha, objective (its value, in its own sense), feasible, active, reason (the
         conflicting checks of an infeasible row), one ``margin_<check>`` per check, rank.
-        Ranked as described in :mod:`geardesign.teeth`.
+        Ranked as described in :mod:`geardesign.shifts.teeth`.
 
     >>> sel = select_teeth(2.0, ratio_tol=0.0, m=2, z1_range=(20, 21))
     >>> sel.table[["z1", "z2"]].values.tolist()

@@ -9,9 +9,9 @@ import pandas as pd
 from scipy.optimize import brentq
 
 from . import checks as _checks
-from .errors import GearDesignError, ndim, one_number, require_positive, require_range
-from .geometry import (X_ABS_MAX, Geometry, _core, min_center_distance, validate_geometry, validate_inputs,
-                       x_sum_from_center_distance)
+from ..errors import GearDesignError
+from ..validate import ndim, one_number, require_positive, require_range
+from .geometry import X_ABS_MAX, Geometry, _core, min_center_distance, validate_geometry, validate_inputs, x_sum_from_center_distance
 from .rack import BasicRack
 
 __all__ = ["GearPair", "balanced_sliding_split"]
@@ -119,7 +119,7 @@ class GearPair:
         return cls(m, z1, z2, x1, xs - x1, rack, tip_shortening)
 
     def geometry(self) -> Geometry:
-        """All geometry of the pair (mm, degrees); see :data:`geardesign.geometry.GEOMETRY_FIELDS`."""
+        """All geometry of the pair (mm, degrees); see :data:`geardesign.gears.geometry.GEOMETRY_FIELDS`."""
         return Geometry._from_core(self._geo, scalar=True)
 
     def checks(self, eps_alpha_min: float | None = _checks.DEFAULT_EPS_ALPHA_MIN,
@@ -128,7 +128,7 @@ class GearPair:
                housing_a_w: float | None = None, housing_tol_mm: float | None = None) -> pd.DataFrame:
         """Table of checks: ``check, value, limit, margin, ok`` (and ``label``), one row per check.
 
-        Margins are dimensionless and >= 0 where the check holds (see :mod:`geardesign.checks`);
+        Margins are dimensionless and >= 0 where the check holds (see :mod:`geardesign.gears.checks`);
         a margin within 1e-12 of zero shows as 0. ``jamming`` adds seed 000's r_a2 < O2N1 rows
         (implied by the interference rows). ``housing_a_w`` (mm) adds the ``center_distance``
         check of the pair's own a_w against the housing's, labelled with the x-sum it needs.

@@ -1,6 +1,6 @@
 """A profile-shift problem: tooth counts, rack, the checks a case asks for, and an objective.
 
-Shared by the region (:mod:`geardesign.region`) and the optimisers (:mod:`geardesign.shift`).
+Shared by the region (:mod:`geardesign.shifts.region`) and the optimisers (:mod:`geardesign.shifts.optimize`).
 Everything is evaluated in one vectorised geometry call over any array of (x1, x2).
 Objectives are maximised internally as F = sense · fun; :attr:`Objective.sense` is +1 for
 "max_*" goals and −1 for "min_*" goals.
@@ -11,10 +11,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import checks as _checks
-from .errors import GearDesignError, one_number, require_choice, require_count, require_range
-from .geometry import X_ABS_MAX, Z_MAX, Z_MIN, _core, _core_float, require_module
-from .rack import BasicRack
+from ..gears import checks as _checks
+from ..errors import GearDesignError
+from ..validate import one_number, require_choice, require_count, require_range
+from ..gears.geometry import X_ABS_MAX, Z_MAX, Z_MIN, _core, _core_float, require_module
+from ..gears.rack import BasicRack
 
 __all__ = ["OBJECTIVES", "Problem", "Objective", "validate_bounds"]
 

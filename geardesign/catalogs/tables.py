@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .errors import CatalogError, GearDesignError
+from ..errors import CatalogError, GearDesignError
 
 __all__ = [
     "catalog_dir",
@@ -153,8 +153,8 @@ def catalog_dir():
     The source tree's ``catalogs/`` when running in-tree (tests from the repository root),
     otherwise the installed package ``geardesign.catalog_files``.
     """
-    here = Path(__file__).resolve().parent.parent / "catalogs"
-    if here.is_dir():
+    here = Path(__file__).resolve().parents[2] / "catalogs"   # geardesign/catalogs/tables.py -> repo root
+    if (here / "chains_gost13568.csv").is_file():
         return here
     return importlib.resources.files("geardesign.catalog_files")
 

@@ -3,7 +3,7 @@
 * :func:`sweep` varies one or two inputs (a check limit, a tooth count, a rack parameter, a
   centre distance; or for a chain a load, a speed, the service factor K_e, [p]) over given
   values and returns one row per point with the optimum and every margin. Tooth-count sweeps
-  go through the batched :func:`geardesign.atlas.shift_atlas`; limit and rack sweeps start
+  go through the batched :func:`geardesign.shifts.atlas.shift_atlas`; limit and rack sweeps start
   each solve from the previous optimum.
 * :func:`local_sensitivities` gives d(fun)/d(input) at one design: the convex method's duals
   and the exact method's KKT multipliers for the limits, central differences of re-solved
@@ -18,7 +18,8 @@ import itertools
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError, require_finite
+from ..errors import GearDesignError
+from ..validate import require_finite
 
 __all__ = ["sweep", "sweep_parameters", "local_sensitivities", "plot_tornado", "plot_margins",
            "plot_region_motion", "LIMIT_PARAMETERS", "RACK_PARAMETERS", "CHAIN_PARAMETERS"]
@@ -53,14 +54,14 @@ def base_from_scene(target: str, section: dict) -> dict:
         out.update(m=section["module"], checks=dict(section.get("checks") or {}) or None,
                    rack=section.get("_rack"), bounds=tuple(section["bounds"]), a_w=section.get("a_w"))
         return out
-    from .scene import _chain_kwargs
+    from ..scene.scene import _chain_kwargs
     return _chain_kwargs(section)
 
 
 # --- gear ----------------------------------------------------------------------------------------
 
 def _rack_with(rack, **changes):
-    from .rack import BasicRack
+    from ..gears.rack import BasicRack
     base = {k: getattr(rack, k) for k in RACK_PARAMETERS} if rack is not None else dict(_RACK_DEFAULTS)
     base.update(changes)
     return BasicRack(**base)
@@ -76,7 +77,7 @@ def _gear_row(res, params: dict) -> dict:
 
 
 def _gear_solve(point: dict, base: dict, start=None):
-    from .shift import optimize_shifts
+    from ..shifts.optimize import optimize_shifts
     kw = dict(base)
     checks = kw.pop("checks", None)
     checks = dict(_DEFAULT_LIMITS if checks is None else checks)
@@ -102,7 +103,7 @@ def _gear_sweep(points: list[dict], base: dict) -> pd.DataFrame:
     names = list(points[0])
     only_teeth = all(n in TOOTH_PARAMETERS for n in names) and base.get("a_w") is None
     if only_teeth:
-        from .atlas import shift_atlas
+        from ..shifts.atlas import shift_atlas
         z1s = sorted({int(p["z1"] if "z1" in p else base["z1"]) for p in points})
         z2s = sorted({int(p["z2"] if "z2" in p else base["z2"]) for p in points})
         kw = {k: base[k] for k in ("objective", "checks", "method", "rack", "tip_shortening", "bounds") if k in base}
@@ -110,7 +111,7 @@ def _gear_sweep(points: list[dict], base: dict) -> pd.DataFrame:
         at = at.rename(columns={"objective": "fun"}).assign(x_sum=lambda d: d["x1"] + d["x2"])
         at["success"] = at.pop("feasible")
         # a_w at the optimum for the module of the case
-        from .geometry import pair_geometry
+        from ..gears.geometry import pair_geometry
         m = float(base.get("m", 1.0))
         geo = pair_geometry(m, at["z1"].to_numpy(), at["z2"].to_numpy(), at["x1"].to_numpy(), at["x2"].to_numpy(),
                             **({"rack": base["rack"]} if base.get("rack") is not None else {}))
@@ -137,7 +138,7 @@ def _gear_sweep(points: list[dict], base: dict) -> pd.DataFrame:
 # --- chain ---------------------------------------------------------------------------------------
 
 def _chain_sweep(points: list[dict], base: dict) -> pd.DataFrame:
-    from .chain import design
+    from ..drives.chain import design
     rows = []
     for p in points:
         kw = dict(base)
@@ -179,14 +180,14 @@ def sweep(parameter: str, values, parameter2: str | None = None, values2=None, *
         factor ``k_e``, ``allowable_pressure_mpa``, ``allowable_safety_factor``, ``z1``,
         ``center_distance_mm``, ``sag_factor``.
     parameter2, values2 : an optional second input; the sweep covers every combination.
-    **base : the fixed inputs, as for :func:`geardesign.shift.optimize_shifts` (``z1``, ``z2``,
+    **base : the fixed inputs, as for :func:`geardesign.shifts.optimize.optimize_shifts` (``z1``, ``z2``,
         ``objective``, ``checks`` as a dict of limits, ``rack``, ``method``, ``m``, ``a_w``) or
-        :func:`geardesign.chain.design`.
+        :func:`geardesign.drives.chain.design`.
 
     Returns a DataFrame, one row per point: the input(s), then for gears ``x1, x2, x_sum, fun,
     eps_alpha, a_w_mm, success, active``, one ``margin_<check>`` and one ``sens_<check>``
     (d fun/d limit of the active checks) per check; for chains the best chain and its margins.
-    Tooth-count sweeps are solved in one batched :func:`~geardesign.atlas.shift_atlas` call.
+    Tooth-count sweeps are solved in one batched :func:`~geardesign.shifts.atlas.shift_atlas` call.
 
     >>> df = sweep("eps_alpha_min", [1.1, 1.2, 1.3], z1=17, z2=26)
     >>> bool(df["x_sum"].is_monotonic_decreasing)     # a stricter ε_α limit leaves less x-sum
@@ -236,7 +237,7 @@ def local_sensitivities(z1, z2, objective="max_x_sum", checks=None, rack=None, s
     multiplier (both zero when the check is not active). ``method`` is accepted and ignored
     (a scene passes its own).
     """
-    from .shift import optimize_shifts
+    from ..shifts.optimize import optimize_shifts
     kw = dict(objective=objective, m=m, a_w=a_w, tip_shortening=tip_shortening)
     if bounds is not None:
         kw["bounds"] = tuple(bounds)
@@ -320,7 +321,7 @@ def plot_region_motion(parameter: str, values, z1, z2, checks=None, rack=None, a
                        bounds=(-1.5, 3.0), **_ignored):
     """The feasible region of (x1, x2) for each value of one limit or rack parameter, overlaid."""
     import matplotlib.pyplot as plt
-    from .region import feasible_region
+    from ..shifts.region import feasible_region
     if parameter not in LIMIT_PARAMETERS + RACK_PARAMETERS:
         raise GearDesignError(f"parameter must be one of {', '.join(LIMIT_PARAMETERS + RACK_PARAMETERS)}, "
                               f"got {parameter!r}")

@@ -1,7 +1,7 @@
 """External spur gear-pair geometry (ISO 21771:2007, GOST 16532-70), vectorised.
 
 One call evaluates any number of designs: every argument broadcasts (numpy rules) over
-m, z1, z2, x1, x2; the rack is one :class:`~geardesign.rack.BasicRack`. Lengths are in mm
+m, z1, z2, x1, x2; the rack is one :class:`~geardesign.gears.rack.BasicRack`. Lengths are in mm
 (or in the unit of ``m``), angles in degrees at the interface and radians inside.
 
 Cancellation-free forms are used where the textbook form loses digits:
@@ -19,8 +19,8 @@ from types import SimpleNamespace
 import numpy as np
 import pandas as pd
 
-from .errors import (GearDesignError, ndim, broadcast_inputs, require_bool, require_int,
-                     require_positive, require_range)
+from ..errors import GearDesignError
+from ..validate import broadcast_inputs, ndim, require_bool, require_int, require_positive, require_range
 from .involute import _t_minus_atan, _tan_from_inv_float, inv, inv_from_tan, tan_from_inv
 from .rack import BasicRack
 

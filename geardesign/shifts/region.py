@@ -14,10 +14,11 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError, one_number, require_count, require_range
-from .geometry import center_distance_from_x_sum
+from ..errors import GearDesignError
+from ..validate import one_number, require_count, require_range
+from ..gears.geometry import center_distance_from_x_sum
 from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
-from .shift import central_point, grid_points, smallest_conflict
+from .optimize import central_point, grid_points, smallest_conflict
 
 __all__ = ["feasible_region", "Region", "CHECK_COLOURS", "check_style"]
 
@@ -84,7 +85,7 @@ class Region:
         forbidden side, the feasible region shaded, thin grey isolines of ε_α and s_a/m (levels
         that coincide with a check's limit are left to the check's curve).
 
-        ``optimum``: a :class:`~geardesign.shift.ShiftResult` or (x1, x2), marked with a star;
+        ``optimum``: a :class:`~geardesign.shifts.optimize.ShiftResult` or (x1, x2), marked with a star;
         ``proposed``: (x1, x2) of a proposed pair, marked with a cross; ``x_sum``: the line
         x1 + x2 = x_sum of a fixed centre distance, its feasible part drawn thick. An empty
         region says so in the axes, with the checks that conflict. Returns the matplotlib Axes.
@@ -253,7 +254,7 @@ def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: 
                     n: int | None = None) -> Region:
     """The region of (x1, x2) where every chosen check holds, with its labelled boundary.
 
-    Parameters as :func:`geardesign.shift.optimize_shifts`; ``method`` "grid" keeps the
+    Parameters as :func:`geardesign.shifts.optimize.optimize_shifts`; ``method`` "grid" keeps the
     grid-interpolated contour (vertex error ~ grid step²), "exact" (default) puts every vertex
     on its check's curve (or the window's edge) and solves the corners to ~1e-12. ``n`` nodes
     per axis (default 321, or from ``tol`` for "grid"; at most REGION_N_MAX). A region thinner

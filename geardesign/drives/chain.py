@@ -21,8 +21,9 @@ import numpy as np
 import pandas as pd
 
 from . import sprocket
-from .catalogs import chain_catalog, load_catalog
-from .errors import GearDesignError, ndim, one_number, require_count, require_int, require_positive, require_range
+from ..catalogs.tables import chain_catalog, load_catalog
+from ..errors import GearDesignError
+from ..validate import ndim, one_number, require_count, require_int, require_positive, require_range
 
 __all__ = [
     "Conditions",

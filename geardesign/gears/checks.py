@@ -1,13 +1,13 @@
 """Design checks of a spur pair as named constraints with signed, dimensionless margins.
 
-Every check maps a geometry (the dict of :func:`geardesign.geometry._core`, arrays or, on the
+Every check maps a geometry (the dict of :func:`geardesign.gears.geometry._core`, arrays or, on the
 optimisers' single-design path, Python floats) to
 
 * ``value`` — the checked quantity, ``limit`` — its bound (a parameter of the check),
 * ``margin`` — signed and dimensionless, >= 0 where the check holds (lengths are divided
   by the module, so margins of different checks compare),
 * ``gradient`` — ∂margin/∂x1 and ∂margin/∂x2, analytic (checked against finite differences
-  in the tests), for the optimisers of :mod:`geardesign.shift`.
+  in the tests), for the optimisers of :mod:`geardesign.shifts.optimize`.
 
 A problem models only the checks asked for: build the list with :func:`make_checks`.
 """
@@ -19,7 +19,8 @@ from typing import Callable
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError, _show, one_number, require_bool, require_finite, require_positive, require_range
+from ..errors import GearDesignError
+from ..validate import _show, one_number, require_bool, require_finite, require_positive, require_range
 
 __all__ = [
     "Check", "Undercut", "Interference", "TipThickness", "ContactRatio", "Jamming", "CenterDistance", "CustomCheck",
@@ -299,7 +300,7 @@ class CenterDistance(Check):
 class CustomCheck(Check):
     """A user's own check: ``func(geo) -> value`` with ``value >= limit`` required
     (``sense=">="``) or ``value <= limit`` (``sense="<="``). ``geo`` is the dict of geometry
-    arrays (the :data:`~geardesign.geometry.GEOMETRY_FIELDS` names). The gradient, when an
+    arrays (the :data:`~geardesign.gears.geometry.GEOMETRY_FIELDS` names). The gradient, when an
     optimiser needs one, is taken by central differences.
     """
 
@@ -356,10 +357,10 @@ def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: flo
     if isinstance(extra, Check):
         extra = (extra,)
     if not isinstance(extra, (list, tuple)):
-        raise GearDesignError(f"extra must be a list of geardesign.checks.Check objects, got {_show(extra)}")
+        raise GearDesignError(f"extra must be a list of geardesign.gears.checks.Check objects, got {_show(extra)}")
     for c in extra:
         if not isinstance(c, Check):
-            raise GearDesignError(f"extra checks must be geardesign.checks.Check objects, got {c!r}")
+            raise GearDesignError(f"extra checks must be geardesign.gears.checks.Check objects, got {c!r}")
         out.append(c)
     names = [c.name for c in out]
     dup = {n for n in names if names.count(n) > 1}

@@ -34,10 +34,11 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import minimize
 
-from . import checks as _checks
-from .errors import GearDesignError, one_number, require_choice, require_count, require_positive, require_range
-from .geometry import center_distance_from_x_sum, min_center_distance, x_sum_from_center_distance
-from .involute import inv
+from ..gears import checks as _checks
+from ..errors import GearDesignError
+from ..validate import one_number, require_choice, require_count, require_positive, require_range
+from ..gears.geometry import center_distance_from_x_sum, min_center_distance, x_sum_from_center_distance
+from ..gears.involute import inv
 from .problem import DEFAULT_BOUNDS, OBJECTIVES, Problem, validate_bounds
 
 __all__ = ["optimize_shifts", "ShiftResult", "METHODS", "smallest_conflict", "reachable_center_distance",
@@ -706,12 +707,12 @@ def optimize_shifts(z1, z2, objective: str | None = None, checks=None, method: s
     Parameters
     ----------
     z1, z2 : tooth counts.
-    objective : one of :data:`geardesign.problem.OBJECTIVES`; default ``max_x_sum``, or
+    objective : one of :data:`geardesign.shifts.problem.OBJECTIVES`; default ``max_x_sum``, or
         ``balanced_sliding`` when ``a_w`` fixes the x-sum (objectives that depend on the x-sum
         alone, ``max_x_sum`` and ``min_specific_pressure``, are refused then: they are constant).
     checks : None (no undercut, no interference, s_a >= 0.25 m, ε_α >= 1.2), a dict of
-        :func:`geardesign.checks.make_checks` options (``{"sa_min": 0.4, "undercut": False}``),
-        or a list of :class:`geardesign.checks.Check`.
+        :func:`geardesign.gears.checks.make_checks` options (``{"sa_min": 0.4, "undercut": False}``),
+        or a list of :class:`geardesign.gears.checks.Check`.
     method : "grid" (fastest, x within half a node spacing), "convex" (SQP in cvxpy/Clarabel,
         ~1e-7 in x, dual sensitivities) or "exact" (active-set Newton, ~1e-12 in x; default).
     tol : tolerance in x (defaults: grid 0.01, convex 1e-7, exact 1e-9); every returned point

@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from .errors import GearDesignError
+from ..errors import GearDesignError
 
 __all__ = ["inv", "inv_from_tan", "inv_inverse", "tan_from_inv"]
 

@@ -6,11 +6,12 @@ import time
 import numpy as np
 import pandas as pd
 
-from .errors import GearDesignError, ndim, require_int
-from .geometry import Z_MAX, Z_MIN, _core
+from ..errors import GearDesignError
+from ..validate import ndim, require_int
+from ..gears.geometry import Z_MAX, Z_MIN, _core
 from .problem import DEFAULT_BOUNDS, Problem
-from .rack import BasicRack
-from .shift import optimize_shifts
+from ..gears.rack import BasicRack
+from .optimize import optimize_shifts
 
 __all__ = ["shift_atlas"]
 

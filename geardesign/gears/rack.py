@@ -4,7 +4,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .errors import GearDesignError, _show, ndim, one_number, require_finite, require_range
+from ..errors import GearDesignError
+from ..validate import _show, ndim, one_number, require_finite, require_range
 
 __all__ = ["BasicRack", "ALPHA_RANGE_DEG"]
 

@@ -35,9 +35,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .catalogs import CHAIN_CATALOGS
-from .files import check_output_dir, write_dir_atomic
-from .errors import GearDesignError
+from ..catalogs.tables import CHAIN_CATALOGS
+from ..files import check_output_dir, write_dir_atomic
+from ..errors import GearDesignError
 
 __all__ = ["load_scene", "run_scene", "Scene", "SceneReport", "SECTIONS"]
 
@@ -264,7 +264,7 @@ class Scene:
 
 
 def _rack(where, section, spec):
-    from .rack import BasicRack
+    from ..gears.rack import BasicRack
     if not spec:
         return None
     try:
@@ -294,7 +294,7 @@ def _cross_checks(where: _Where, s: dict):
                 where.fail("gear", "a_w", f"expected a centre distance > a·cos(alpha) = {a * math.cos(alpha):.6g} mm, "
                                           f"got {g['a_w']!r}")
         if "x1" in g:
-            from .pair import GearPair
+            from ..gears.pair import GearPair
             try:
                 GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **({"rack": g["_rack"]} if g["_rack"] else {}),
                          tip_shortening=g["tip_shortening"])
@@ -313,13 +313,13 @@ def _cross_checks(where: _Where, s: dict):
         if "k_e" in c and c.get("conditions"):
             where.fail("chain", "k_e", "expected either k_e or [chain.conditions], not both")
         if c.get("conditions"):
-            from .chain import Conditions
+            from ..drives.chain import Conditions
             try:
                 Conditions.from_mapping(c["conditions"])
             except GearDesignError as exc:
                 where.fail("chain.conditions", None, str(exc))
     for i, k in enumerate(s.get("key", [])):
-        from .key import section as key_section
+        from ..drives.key import section as key_section
         try:
             key_section(k["d_mm"])
         except GearDesignError as exc:
@@ -332,7 +332,7 @@ def _cross_checks(where: _Where, s: dict):
         if ("parameter2" in st) != ("values2" in st):
             where.fail("study", "values2" if "parameter2" in st else "parameter2",
                        "missing; give parameter2 and values2 together")
-        from .studies import sweep_parameters
+        from ..sensitivity.studies import sweep_parameters
         allowed = sweep_parameters(target)
         for key in ("parameter", "parameter2"):
             if key in st and st[key] not in allowed:
@@ -472,9 +472,9 @@ def _md_table(frame: pd.DataFrame, floatfmt="{:.6g}") -> str:
 
 def _run_gear(rep: SceneReport, g: dict):
     import matplotlib.pyplot as plt
-    from .pair import GearPair
-    from .region import feasible_region
-    from .shift import optimize_shifts
+    from ..gears.pair import GearPair
+    from ..shifts.region import feasible_region
+    from ..shifts.optimize import optimize_shifts
 
     rack = g["_rack"]
     checks = _checks_dict(g.get("checks"))
@@ -537,7 +537,7 @@ def _run_gear(rep: SceneReport, g: dict):
 
 
 def _run_teeth(rep: SceneReport, t: dict):
-    from .teeth import select_teeth
+    from ..shifts.teeth import select_teeth
 
     kw = dict(ratio=t["ratio"], ratio_tol=t["ratio_tol"], m=t.get("module"), a_w=t.get("a_w"),
               z1_range=tuple(t["z1_range"]), z_sum_max=t.get("z_sum_max"), objective=t.get("objective"),
@@ -565,7 +565,7 @@ def _chain_kwargs(c: dict) -> dict:
 
 
 def _run_chain(rep: SceneReport, c: dict):
-    from .chain import design
+    from ..drives.chain import design
 
     res = design(**_chain_kwargs(c))
     rep.results["chain"] = res
@@ -595,7 +595,7 @@ def _run_chain(rep: SceneReport, c: dict):
 
 
 def _run_keys(rep: SceneReport, keys: list):
-    from .key import select
+    from ..drives.key import select
 
     rows, results = [], []
     for i, k in enumerate(keys):
@@ -619,7 +619,7 @@ def _run_keys(rep: SceneReport, keys: list):
 
 def _run_study(rep: SceneReport, st: dict, sections: dict):
     import matplotlib.pyplot as plt
-    from . import studies
+    from ..sensitivity import studies
 
     target = st["target"]
     base = studies.base_from_scene(target, sections[target])

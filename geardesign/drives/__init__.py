@@ -1,0 +1,1 @@
+"""Drives: sprockets, roller chains and keys, sized from :mod:`geardesign.catalogs`."""

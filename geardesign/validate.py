@@ -1,0 +1,160 @@
+"""Input validators shared by every layer: each raises a :class:`~geardesign.errors.GearDesignError`
+that names the input, the value it got and the range it allows."""
+from __future__ import annotations
+
+import numbers
+
+import numpy as np
+
+from .errors import GearDesignError
+
+__all__ = [
+    "require_finite", "require_positive", "require_range", "require_int", "require_count", "one_number",
+    "ndim", "require_choice", "require_bool", "broadcast_inputs",
+]
+
+
+def _show(value) -> str:
+    try:
+        arr = np.asarray(value)
+    except Exception:   # ragged lists and the like
+        return _short(value)
+    if arr.ndim == 0:
+        return _short(value.item() if hasattr(value, "item") else value)
+    return f"array of shape {arr.shape}"
+
+
+def _first_bad(arr: np.ndarray, bad: np.ndarray) -> str:
+    if arr.ndim == 0:
+        return repr(arr.item())
+    idx = tuple(int(i) for i in np.argwhere(bad)[0])
+    return f"{arr[idx].item()!r} (at index {idx if len(idx) > 1 else idx[0]})"
+
+
+def require_finite(name: str, value) -> np.ndarray:
+    """Return ``value`` as a float array; raise if any element is NaN or infinite."""
+    if isinstance(value, (str, bytes, bool, np.bool_)):
+        raise GearDesignError(f"{name} must be a number, got {_short(value)}")
+    try:
+        arr = np.asarray(value, dtype=float)
+    except OverflowError:
+        raise GearDesignError(f"{name} must be finite, got {_show(value)}") from None
+    except (TypeError, ValueError):
+        raise GearDesignError(f"{name} must be a number, got {_show(value)}") from None
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        raise GearDesignError(f"{name} must be finite, got {_first_bad(arr, bad)}")
+    return arr
+
+
+def require_positive(name: str, value, unit: str = "") -> np.ndarray:
+    """Finite and strictly positive."""
+    arr = require_finite(name, value)
+    bad = arr <= 0
+    if bad.any():
+        u = f" {unit}" if unit else ""
+        raise GearDesignError(f"{name} must be > 0{u}, got {_first_bad(arr, bad)}")
+    return arr
+
+
+def require_range(name: str, value, lo: float, hi: float, *, lo_open=False, hi_open=False,
+                  unit: str = "") -> np.ndarray:
+    """Finite and inside [lo, hi] (or the open ends asked for)."""
+    arr = require_finite(name, value)
+    bad = (arr <= lo) if lo_open else (arr < lo)
+    bad |= (arr >= hi) if hi_open else (arr > hi)
+    if bad.any():
+        left = "(" if lo_open else "["
+        right = ")" if hi_open else "]"
+        u = f" {unit}" if unit else ""
+        raise GearDesignError(
+            f"{name} must be in {left}{lo:g}, {hi:g}{right}{u}, got {_first_bad(arr, bad)}")
+    return arr
+
+
+def require_int(name: str, value, minimum: int, maximum: int | None = None) -> np.ndarray:
+    """Whole numbers (an int, or a float with no fractional part) in [minimum, maximum].
+
+    ``maximum`` defaults to 10**15 so that every accepted value is exact in int64 and a float
+    such as 1e308 is refused by name instead of wrapping around.
+    """
+    hi = _INT_MAX if maximum is None else int(maximum)
+    rng = f"in [{minimum}, {hi:.6g}]"
+    if isinstance(value, (bool, np.bool_)) or isinstance(value, (str, bytes)):
+        raise GearDesignError(f"{name} must be a whole number {rng}, got {value!r}")
+    if isinstance(value, numbers.Integral):
+        v = int(value)
+        if not minimum <= v <= hi:
+            raise GearDesignError(f"{name} must be a whole number {rng}, got {_short(v)}")
+        return np.asarray(v, dtype=np.int64)
+    farr = require_finite(name, value)
+    frac = farr != np.round(farr)
+    if frac.any():
+        raise GearDesignError(f"{name} must be a whole number {rng}, got {_first_bad(farr, frac)}")
+    bad = (farr < minimum) | (farr > hi)
+    if bad.any():
+        raise GearDesignError(f"{name} must be a whole number {rng}, got {_first_bad(farr, bad)}")
+    return farr.astype(np.int64)
+
+
+def one_number(name: str, arr) -> float:
+    """The single number a validator returned, as a float; an array (a list given where one
+    number belongs) is refused by name."""
+    if np.ndim(arr) != 0:
+        raise GearDesignError(f"{name} must be one number, got {_show(arr)}")
+    return float(arr)
+
+
+def require_count(name: str, value, lo: int, hi: int) -> int:
+    """One whole number in [lo, hi]: a size (grid nodes, pairs, values) checked before any work."""
+    if ndim(value) != 0:
+        raise GearDesignError(f"{name} must be one whole number in [{lo}, {hi:.6g}], got {_show(value)}")
+    return int(require_int(name, value, lo, hi))
+
+
+def require_choice(name: str, value, choices) -> str:
+    """One of ``choices`` (strings); anything else, a list included, is refused by name."""
+    choices = list(choices)
+    if not isinstance(value, str) or value not in choices:
+        raise GearDesignError(f"{name} must be one of {choices}, got {_short(value)}")
+    return value
+
+
+def require_bool(name: str, value) -> bool:
+    """True or False (numpy booleans too); 0/1 and strings are refused."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise GearDesignError(f"{name} must be True or False, got {_short(value)}")
+    return bool(value)
+
+
+def broadcast_inputs(**arrays) -> list[np.ndarray]:
+    """numpy-broadcast the named arrays; shapes that do not broadcast are refused by name."""
+    try:
+        return list(np.broadcast_arrays(*arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"{k} {np.shape(v)}" for k, v in arrays.items())
+        raise GearDesignError(f"input shapes do not broadcast together: {shapes}") from None
+
+
+_INT_MAX = 10**15
+
+
+def _short(value) -> str:
+    """repr of a value, cut to 60 characters (a 400-digit integer must not fill the screen)."""
+    text = repr(value)
+    return text if len(text) <= 60 else text[:40] + f"... ({len(text)} characters)"
+
+
+def ndim(value) -> int:
+    """np.ndim of a user's value; -1 for what numpy cannot shape (ragged lists and the like)."""
+    try:
+        return int(np.ndim(value))
+    except (ValueError, TypeError):
+        return -1
+
+
+def is_scalar(*values) -> bool:
+    """True when every value is a Python or numpy scalar (0-d)."""
+    return all(np.ndim(v) == 0 for v in values)
+
+
