@@ -11,7 +11,7 @@ import time
 import numpy as np
 
 import geardesign as gd
-from geardesign.shifts.problem import OBJECTIVES
+from geardesign.shifts.objectives import OBJECTIVES
 
 
 def pairs(n, seed=7):

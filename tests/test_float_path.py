@@ -16,7 +16,8 @@ from hypothesis import strategies as st
 
 from geardesign.gears.checks import CustomCheck, make_checks
 from geardesign.gears.geometry import _core, _core_float
-from geardesign.shifts.problem import OBJECTIVES, Problem
+from geardesign.shifts.objectives import OBJECTIVES
+from geardesign.shifts.problem import Problem
 
 from test_properties import SETTINGS, designs
 

@@ -6,7 +6,7 @@ import re
 from ..shifts.atlas import ATLAS_PAIRS_MAX, atlas_size, shift_atlas
 from ..files import check_output_path, write_file_atomic
 from ..errors import GearDesignError
-from ..shifts.problem import OBJECTIVES
+from ..shifts.objectives import OBJECTIVES
 from ..shifts.optimize import METHODS
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
 from .pair import add_rack_args, rack_from_args

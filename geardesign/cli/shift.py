@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from ..errors import GearDesignError
-from ..shifts.problem import OBJECTIVES
+from ..shifts.objectives import OBJECTIVES
 from ..shifts.optimize import DEFAULT_TOL, METHODS
 from .output import add_json_flag, frame_records, print_frame, print_json
 from .pair import add_limit_args, add_rack_args, rack_from_args

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 
 from ..errors import GearDesignError
-from ..shifts.problem import OBJECTIVES
+from ..shifts.objectives import OBJECTIVES
 from ..shifts.teeth import select_teeth
 from ..files import check_output_path, write_file_atomic
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json

@@ -238,5 +238,5 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
         if progress is not None:
             progress(k + 1)
     df = pd.DataFrame(rows)
-    df.attrs.update(objective=objective, method=method, time_s=time.perf_counter() - t0)
+    df.attrs.update(objective=proto.objective.name, method=method, time_s=time.perf_counter() - t0)
     return df

@@ -2,44 +2,21 @@
 
 Shared by the region (:mod:`geardesign.shifts.region`) and the optimisers (:mod:`geardesign.shifts.optimize`).
 Everything is evaluated in one vectorised geometry call over any array of (x1, x2).
-Objectives are maximised internally as F = sense · fun; :attr:`Objective.sense` is +1 for
-"max_*" goals and −1 for "min_*" goals.
+Objectives (:mod:`geardesign.shifts.objectives`) are maximised internally as F = sense · fun.
 """
 from __future__ import annotations
-
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..gears import checks as _checks
 from ..errors import GearDesignError
-from ..validate import one_number, require_choice, require_count, require_range
+from ..validate import one_number, require_count, require_range
+from .objectives import Objective, resolve_objective
 from ..gears.geometry import X_ABS_MAX, Z_MAX, Z_MIN, _core, _core_float, require_module
 from ..gears.rack import BasicRack
 
-__all__ = ["OBJECTIVES", "Problem", "Objective", "validate_bounds"]
+__all__ = ["Problem", "validate_bounds", "DEFAULT_BOUNDS"]
 
-
-@dataclass(frozen=True)
-class Objective:
-    name: str
-    sense: int          # +1 maximise fun, −1 minimise fun
-    kind: str           # "smooth", "minimax" (max of pieces) or "margin" (Chebyshev centre)
-    description: str
-
-
-OBJECTIVES = {
-    "max_x_sum": Objective("max_x_sum", +1, "smooth",
-                           "largest x1 + x2 (largest α_w: contact strength)"),
-    "max_eps_alpha": Objective("max_eps_alpha", +1, "smooth", "largest transverse contact ratio ε_α"),
-    "balanced_sliding": Objective("balanced_sliding", -1, "minimax",
-                                  "smallest max(|ϑ1|, |ϑ2|) at the roots; equal sliding at both ends "
-                                  "where no check stops it"),
-    "min_specific_pressure": Objective("min_specific_pressure", -1, "smooth",
-                                       "smallest specific pressure coefficient at the pitch point"),
-    "max_margin": Objective("max_margin", +1, "margin",
-                            "the point farthest (in x) from every check's boundary (robust design)"),
-}
 
 _FD_STEP = 1e-6
 _FLOAT_FAULTS = (ZeroDivisionError, OverflowError, ValueError)
@@ -62,8 +39,7 @@ class Problem:
         if not isinstance(self.rack, BasicRack):
             raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(self.rack).__name__}")
         self.checks = _checks.resolve_checks(checks)
-        require_choice("objective", objective, OBJECTIVES)
-        self.objective = OBJECTIVES[objective]
+        self.objective = resolve_objective(objective)
         self.tip_shortening = bool(tip_shortening)
         self.x_sum = None if x_sum is None else float(x_sum)
         self.names = [c.name for c in self.checks]
@@ -71,6 +47,7 @@ class Problem:
         self.part_check = [i for i, c in enumerate(self.checks) for _ in range(c.n_parts)]
         # gradients that are central differences carry ~1e-10 noise, their derivatives more
         self.fd_gradients = (self.objective.kind == "margin"
+                             or type(self.objective).piece_gradients is Objective.piece_gradients
                              or any(isinstance(c, _checks.CustomCheck) for c in self.checks))
 
     # --- evaluation ---------------------------------------------------------------------
@@ -108,40 +85,14 @@ class Problem:
         return [c.gradient(geo) or self._central(c.margin, geo) for c in self.checks]
 
     def _piece_values(self, geo) -> tuple:
-        name = self.objective.name
-        if name == "max_x_sum":
-            return (geo["_x1"] + geo["_x2"],)
-        if name == "max_eps_alpha":
-            return (geo["eps_alpha"],)
-        if name == "min_specific_pressure":
-            return (-geo["spec_pressure_pitch"],)
-        if name == "balanced_sliding":
-            return (-abs(geo["sliding1_root"]), -abs(geo["sliding2_root"]))
-        if name == "max_margin":
-            return (0.0 * geo["a"],)
-        raise AssertionError(name)
+        return self.objective.pieces(geo)
 
     def _piece_gradient_values(self, geo) -> list:
-        name = self.objective.name
-        if name == "max_x_sum":
-            return [(1.0, 1.0)]
-        if name == "max_eps_alpha":
-            return [_checks.ContactRatio().gradient(geo)]
-        if name == "max_margin":
-            return [(0.0, 0.0)]
-        if name == "min_specific_pressure":
-            # Γ ∝ 1/tan α_w depends on x1 + x2 only: ∂(−Γ)/∂x_j = Γ · 2 tan α / (z_Σ tan³α_w cos²α_w)
-            g = (geo["spec_pressure_pitch"] * 2.0 * geo["_ta"]
-                 / ((geo["_z1"] + geo["_z2"]) * geo["_t_w"] ** 3 * geo["_cos_w"] ** 2))
-            return [(g, g)]
-        if name == "balanced_sliding":   # pieces −|ϑ|
-            out = []
-            for gear in (1, 2):
-                sign = np.sign(geo[f"sliding{gear}_root"])
-                d1, d2 = _checks.sliding_root_gradient(geo, gear)
-                out.append((-sign * d1, -sign * d2))
-            return out
-        raise AssertionError(name)
+        grads = self.objective.piece_gradients(geo)
+        if grads is None:
+            n = len(self.objective.pieces(geo))
+            grads = [self._central(lambda g, k=k: self.objective.pieces(g)[k], geo) for k in range(n)]
+        return grads
 
     def margins(self, geo) -> np.ndarray:
         """(K, ...) margins; designs whose geometry does not exist get −inf."""

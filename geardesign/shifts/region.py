@@ -18,7 +18,9 @@ from ..errors import GearDesignError
 from ..validate import one_number, require_count, require_range
 from ..gears.geometry import center_distance_from_x_sum
 from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
-from .optimize import central_point, grid_points, smallest_conflict
+from .conflict import smallest_conflict
+from .local import central_point
+from .nodes import grid_points
 
 __all__ = ["feasible_region", "Region", "CHECK_COLOURS", "check_style"]
 

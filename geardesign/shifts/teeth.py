@@ -33,7 +33,8 @@ from ..gears.checks import resolve_checks
 from ..errors import GearDesignError
 from ..validate import one_number, require_count, require_positive, require_range
 from ..gears.geometry import Z_MAX, Z_MIN, x_sum_from_center_distance
-from .problem import DEFAULT_BOUNDS, OBJECTIVES
+from .objectives import default_objective
+from .problem import DEFAULT_BOUNDS
 from ..gears.rack import BasicRack
 from .optimize import METHODS, optimize_shifts
 
@@ -103,6 +104,7 @@ class TeethSelection:
     checks: list = field(default_factory=list)
     n_solved: int = 0
     time_s: float = 0.0
+    objective_sense: int = 1     # +1: larger is better, −1: smaller
 
     @property
     def best(self) -> pd.Series | None:
@@ -122,10 +124,9 @@ class TeethSelection:
             n = len(self.table)
             return (f"no feasible candidate among {n} solved (and {len(self.skipped)} skipped); "
                     "see the reason column: the checks that conflict for each pair")
-        obj = OBJECTIVES[self.objective]
         feas = self.feasible
         same_err = feas[np.isclose(feas["ratio_error"].abs(), abs(b["ratio_error"]), rtol=0, atol=_RATIO_EPS)]
-        word = "largest" if obj.sense > 0 else "smallest"
+        word = "largest" if self.objective_sense > 0 else "smallest"
         err = "exact" if abs(b["ratio_error"]) <= _RATIO_EPS else f"error {100 * b['ratio_error']:+.3g} %"
         text = (f"z1/z2 = {b['z1']:d}/{b['z2']:d} (ratio {b['ratio']:.6g}, {err}), m = {b['module_mm']:g} mm, "
                 f"x1 = {b['x1']:.4f}, x2 = {b['x2']:.4f}, a_w = {b['a_w_mm']:.6g} mm: "
@@ -223,7 +224,7 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
         i.e. the nearest standard value that needs a non-negative x-sum. The x-sum follows
         from a_w; the objective picks the split.
     z1_range : (min, max) teeth of the pinion, inclusive.  z_sum_max : largest z1 + z2.
-    objective : one of :data:`geardesign.shifts.problem.OBJECTIVES`; default ``"max_x_sum"`` with the
+    objective : a name in :data:`geardesign.shifts.objectives.OBJECTIVES` or an Objective; default ``"max_x_sum"`` with the
         centre distance free, ``"balanced_sliding"`` with ``a_w`` given (the x-sum is then
         fixed, so "max_x_sum" could not choose the split; equal specific sliding at both
         roots is the classic rule, GOST 16532-70 appendix).  checks : as for
@@ -247,10 +248,7 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     [[21, 42], [20, 40]]
     """
     t0 = time.perf_counter()
-    if objective is None:
-        objective = "max_x_sum" if a_w is None else "balanced_sliding"
-    if objective not in OBJECTIVES:
-        raise GearDesignError(f"objective must be one of {sorted(OBJECTIVES)}, got {objective!r}")
+    objective = default_objective(objective, x_sum_fixed=a_w is not None)
     if method not in METHODS:
         raise GearDesignError(f"method must be one of {list(METHODS)}, got {method!r}")
     rack = rack or BasicRack()
@@ -354,9 +352,9 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
                        + [f"margin_{n}" for n in check_names])
     table = pd.concat([c.drop(columns=[k for k in ("a_w_target_mm", "x_sum_target") if k in c]), sol], axis=1)
     table["feasible"] = table["feasible"].astype(bool)
-    table = _rank(table, OBJECTIVES[objective].sense)
+    table = _rank(table, objective.sense)
     return TeethSelection(table=table, skipped=skipped, ratio=ratio, ratio_tol=float(ratio_tol),
-                          objective=objective, m=m_used, a_w=a_w, method=method, checks=check_names,
+                          objective=objective.name, objective_sense=objective.sense, m=m_used, a_w=a_w, method=method, checks=check_names,
                           n_solved=len(unique), time_s=time.perf_counter() - t0)
 
 

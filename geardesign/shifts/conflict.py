@@ -1,0 +1,42 @@
+"""Which checks conflict: a smallest set of checks that no (x1, x2) in the window satisfies together."""
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from .nodes import grid_points
+from .local import MinMargin, slsqp
+from .problem import DEFAULT_BOUNDS, Problem
+
+__all__ = ["smallest_conflict", "conflict_message"]
+
+
+def smallest_conflict(prob: Problem, bounds=DEFAULT_BOUNDS, n: int = 161) -> list[str]:
+    """A smallest set of checks that no (x1, x2) in the window satisfies together.
+
+    Subsets are tried by size: the largest smallest-margin over a grid shows which subsets look
+    empty, and a local maximisation of the smallest margin (SLSQP) confirms it.
+    """
+    V = grid_points(prob, n, bounds)
+    _, M = prob.evaluate(V, grads=False)
+    K = M.shape[0]
+    for size in range(1, K + 1):
+        for sub in itertools.combinations(range(K), size):
+            worst = M[list(sub)].min(axis=0)
+            i = int(np.argmax(worst))
+            if worst[i] >= 0:
+                continue
+            sub_prob = Problem(prob.z1, prob.z2, prob.rack, [prob.checks[j] for j in sub], "max_x_sum",
+                               prob.m, prob.tip_shortening, prob.x_sum)
+            # maximise the smallest margin of the subset
+            w, _, ev = slsqp(MinMargin(sub_prob), V[i], bounds, ftol=1e-12, pieces_only=True)
+            if w[-1] < -1e-9:
+                return [prob.names[j] for j in sub]
+    return []
+
+
+def conflict_message(conflict) -> str:
+    if conflict:
+        return f"no feasible point: checks {', '.join(conflict)} conflict"
+    return "no feasible point in the window: every check passes somewhere, but not all together"

@@ -1,0 +1,202 @@
+"""The exact method: from each start, Newton on the KKT system of each candidate active set among
+the checks that pass near it (the window's edges count as checks); SLSQP, then the same polish,
+only when none gives a KKT point. Reaches ~1e-12 in x."""
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+
+from .active_set import active_rows, multipliers, solve_small
+from .local import Evaluator, slsqp, window_box
+from .problem import Problem
+from .result import Outcome
+from .sensitivities import sensitivities_at
+
+__all__ = ["solve"]
+
+
+def _stationarity(rows, nv):
+    """det [e_t; rows] / Π‖row‖: zero when e_t lies in the span of the nv active gradients,
+    i.e. the Lagrangian is stationary with one active constraint fewer than variables + 1."""
+    # a zero row (a check flat at its boundary, a pointed tip) has no direction: NaN, and the
+    # Newton on this active set gives up
+    if nv == 1:
+        norm = math.hypot(rows[0][0], rows[0][1])
+        return -rows[0][0] / norm if norm > 0 else math.nan
+    (a0, a1, a2), (b0, b1, b2) = rows
+    norm = math.sqrt(a0 * a0 + a1 * a1 + a2 * a2) * math.sqrt(b0 * b0 + b1 * b1 + b2 * b2)
+    return (a0 * b1 - a1 * b0) / norm if norm > 0 else math.nan
+
+
+def _kkt_newton(ev: Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxit: int = 30,
+                noisy: bool = False):
+    """Newton on the KKT system of one active set: active pieces = t, active margins = 0 and,
+    with one equation short, :func:`_stationarity`. The active rows of the Jacobian are the
+    analytic gradients; the stationarity row starts from forward differences and is then kept
+    by Broyden's update (one evaluation per step instead of nv + 1).
+    With ``noisy`` gradients (central differences) the stationarity holds to ~1e-9 only, so it
+    is accepted at 1e-8 and the steps stop at 1e-10.
+    Returns (w, iterations) or None when it diverges, leaves ``max_move`` or stalls."""
+    edge = len(act_p) + len(act_m) == nv
+    step_tol, stat_tol = (1e-10, 1e-8) if noisy else (1e-13, 1e-10)
+    w0 = [float(c) for c in w0]
+    w = w0[:]
+
+    def system(w):
+        P, M, GP, GM = ev(w[:nv])
+        rows = active_rows(GP, GM, act_p, act_m)
+        F = [float(P[k]) - w[nv] for k in act_p] + [float(M[i]) for i in act_m]
+        if edge:
+            F.append(_stationarity(rows, nv))
+        return F, rows
+
+    F, rows = system(w)
+    if not all(map(math.isfinite, F)):
+        return None
+    if edge:
+        srow = [0.0] * (nv + 1)
+        for j in range(nv):
+            step = 1e-5 * max(1.0, abs(w[j]))   # gradients may be differences themselves
+            vj = w[:nv]
+            vj[j] += step
+            _, _, GPj, GMj = ev(vj)
+            srow[j] = (_stationarity(active_rows(GPj, GMj, act_p, act_m), nv) - F[-1]) / step
+        if not all(map(math.isfinite, srow)):
+            return None
+    for it in range(1, maxit + 1):
+        try:
+            dw = solve_small(rows + [srow] if edge else rows, [-f for f in F])
+        except np.linalg.LinAlgError:
+            return None
+        w = [a + d for a, d in zip(w, dw)]
+        if not all(map(math.isfinite, w)) or max(abs(a - b) for a, b in zip(w[:nv], w0)) > max_move:
+            return None
+        F_old = F
+        F, rows = system(w)
+        if not all(map(math.isfinite, F)):
+            return None
+        dd = sum(d * d for d in dw)
+        if edge and dd > 0:   # Broyden: the row's directional derivative along the step matches the change
+            r = (F[-1] - F_old[-1] - sum(a * d for a, d in zip(srow, dw))) / dd
+            srow = [a + r * d for a, d in zip(srow, dw)]
+        if max(map(abs, dw[:nv])) <= step_tol * max(1.0, max(map(abs, w[:nv]))) or max(map(abs, F)) == 0.0:
+            break
+    ok = max(map(abs, F[:-1] if edge else F), default=0.0) <= 1e-10 and (not edge or abs(F[-1]) <= stat_tol)
+    return (np.array(w), it) if ok else None
+
+
+def _active_sets(near_p, near_m, nv):
+    """Candidate active sets (>= 1 piece; nv + 1 constraints, or nv with stationarity),
+    the fully determined ones (vertices) first."""
+    need = nv + 1
+    out = []
+    for n_m in range(len(near_m), -1, -1):
+        for sub_m in itertools.combinations(near_m, n_m):
+            for n_p in range(len(near_p), 0, -1):
+                for sub_p in itertools.combinations(near_p, n_p):
+                    if n_m + n_p in (need, need - 1):
+                        out.append((list(sub_p), list(sub_m)))
+    out.sort(key=lambda o: -(len(o[0]) + len(o[1])))
+    return out
+
+
+def _first_kkt_point(prob: Problem, ev: Evaluator, w0, near_p, near_m, max_move: float, limit: int = 24):
+    """The first candidate active set whose Newton solution is a KKT point: it holds every
+    check, no piece is below t, the multipliers are >= 0, and t is no worse than at w0.
+
+    Returns (w, act_p, act_m, newton iterations) or None.
+    """
+    nv = prob.nvar
+    t0 = w0[nv]
+    nit = 0
+    cands = _active_sets(near_p, near_m, nv)
+    if len(cands) > 1:   # try first the sets whose multipliers, linearised at w0, are >= 0
+        cands.sort(key=lambda c: min(np.concatenate(multipliers(prob, w0, *c, ev)), default=0.0) < 0)
+    for act_p, act_m in cands[:limit]:
+        out = _kkt_newton(ev, nv, act_p, act_m, w0, max_move, noisy=prob.fd_gradients)
+        if out is None:
+            continue
+        w, it = out
+        nit += it
+        P, M, _, _ = ev(w[:nv])
+        if (M.size and M.min() < -1e-12) or P.min() < w[nv] - 1e-10 or w[nv] < t0 - 1e-9:
+            continue
+        lp, lm = multipliers(prob, w, act_p, act_m, ev)
+        if (lp.size and lp.min() < -1e-7) or (lm.size and lm.min() < -1e-7):
+            continue
+        return w, act_p, act_m, nit
+    return None
+
+
+def _near(ev: Evaluator, nv: int, w, reach: float, most: int = 4):
+    """Pieces and margins whose boundary (to first order) lies within ``reach`` of w in x."""
+    P, M, GP, GM = ev(w[:nv])
+    k0 = int(np.argmin(P))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        dist_p = (P - w[nv]) / np.sqrt(((GP - GP[k0]) ** 2).sum(axis=1))
+        dist_m = M / np.sqrt((GM ** 2).sum(axis=1))
+    dist_p[k0] = 0.0
+    near_p = [int(k) for k in np.argsort(dist_p)[:most] if dist_p[k] <= reach]
+    near_m = [int(i) for i in np.argsort(dist_m)[:most] if dist_m[i] <= reach]
+    return sorted(near_p), sorted(near_m)
+
+
+def _polish(prob: Problem, w, ev: Evaluator, tol: float, act_tol=1e-5):
+    """Newton on the active set of a converged SLSQP point: (w, act_p, act_m) or None."""
+    nv = prob.nvar
+    P, M, _, _ = ev(w[:nv])
+    near_p = [k for k in range(P.size) if P[k] - w[nv] < act_tol]
+    near_m = [i for i in range(M.size) if M[i] < act_tol]
+    found = _first_kkt_point(prob, ev, w, near_p, near_m, max_move=1e-3)
+    return None if found is None else found[:3]
+
+
+def exact_from(prob: Problem, ev: Evaluator, v0, bounds, tol, h):
+    """One local exact solve from the feasible point v0: (w, iterations, message)."""
+    nv = prob.nvar
+    w0 = np.append(v0, ev(v0)[0].min())
+    found = _first_kkt_point(prob, ev, w0, *_near(ev, nv, w0, reach=2.2 * h), max_move=3 * h)
+    if found is not None:
+        return found[0], found[3], "converged: KKT system of the active set solved by Newton from a grid node"
+    w, nit, ev_s = slsqp(prob, v0, bounds)
+    polished = _polish(prob, w, ev_s, tol)
+    if polished is not None:
+        return polished[0], nit, "converged: SLSQP, then Newton on the KKT system of its active set"
+    return w, nit, "converged (SLSQP; active-set polish not applicable)"
+
+
+_NO_OPTIMUM = ("no optimum: {objective} keeps improving toward the edge where the pair stops existing "
+               "(inv alpha_w -> 0 or a tip circle at its base circle); the checks asked for do not bound it "
+               "(keep the interference checks, or narrow the window); returned the best start node")
+
+
+def _exists(prob: Problem, v) -> bool:
+    """True when the pair's geometry exists (every margin and piece finite) at v."""
+    P, M, _, _ = prob.evaluate_point(v)
+    return bool(np.isfinite(P).all() and np.isfinite(M).all())
+
+
+def solve(prob: Problem, starts: list, bounds, tol: float, h: float) -> Outcome:
+    """The best of the local optima from each start (a region may have several pieces and corners);
+    ``h`` is the start grid's spacing, which bounds how far Newton may move."""
+    ev = Evaluator(prob, window=window_box(prob, bounds))
+    nv = prob.nvar
+    best, nit = None, 0
+    for v0 in starts:
+        w, it, msg = exact_from(prob, ev, v0, bounds, tol, h)
+        nit += it
+        Mw = ev(w[:nv])[1]
+        score = w[-1] if not (Mw.size and Mw.min() < -tol) else -math.inf
+        if best is None or score > best[0] + 1e-12:
+            best = (score, w, msg)
+    score, w, msg = best
+    if score == -math.inf and not _exists(prob, w[:nv]):
+        return Outcome(starts[0], nit, False, _NO_OPTIMUM.format(objective=prob.objective.name))
+    Mv = ev(w[:nv])[1][:len(prob.part_check)]
+    ok = not (Mv.size and Mv.min() < -tol)
+    if len(starts) > 1:
+        msg += f" (best of {len(starts)} starts)"
+    sens, sides = sensitivities_at(prob, ev, w, act_tol=1e-9)
+    return Outcome(w[:nv], nit, ok, msg if ok else "a check is violated beyond tol", sens, sides)

@@ -1,0 +1,106 @@
+"""Local solves shared by the methods: one design's values and gradients cached for a solver,
+the search window as linear checks, SLSQP on the max-min form, and the most central point."""
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import minimize
+
+from .problem import Problem
+
+__all__ = ["Evaluator", "window_box", "slsqp", "MinMargin", "central_point", "BIG"]
+
+BIG = 1e3             # stands in for −inf margins inside the smooth solvers
+
+
+class Evaluator:
+    """Caches Problem.evaluate_point at one point for the solvers (w = (v, t)).
+
+    With ``window`` (lo, hi) the window's edges join the margins as linear checks
+    v − lo >= 0 and hi − v >= 0 (after the problem's own), so that an optimum on the window
+    is a KKT point like any other.
+    """
+
+    def __init__(self, prob: Problem, window=None):
+        self.prob = prob
+        self.key = None
+        self.nfev = 0
+        self.window = window
+        if window is not None:
+            eye = np.eye(prob.nvar)
+            self._window_rows = np.concatenate((eye, -eye))
+
+    def __call__(self, v):
+        key = tuple(float(c) for c in v)
+        if key != self.key:
+            v = np.array(key)
+            P, M, GP, GM = self.prob.evaluate_point(key)
+            if self.window is not None:
+                M = np.concatenate((M, v - self.window[0], self.window[1] - v))
+                GM = np.concatenate((GM, self._window_rows))
+            if not (np.isfinite(M).all() and np.isfinite(P).all()):
+                P, M = np.nan_to_num(P, nan=-BIG, neginf=-BIG), np.nan_to_num(M, nan=-BIG, neginf=-BIG)
+                GP, GM = np.nan_to_num(GP), np.nan_to_num(GM)
+            self.val = (P, M, GP, GM)
+            self.key = key
+            self.nfev += 1
+        return self.val
+
+
+def window_box(prob: Problem, bounds):
+    """The box of the free variables: (lo, hi) arrays."""
+    lo, hi = bounds
+    if prob.nvar == 1:
+        return np.array([max(lo, prob.x_sum - hi)]), np.array([min(hi, prob.x_sum - lo)])
+    return np.array([lo, lo], dtype=float), np.array([hi, hi], dtype=float)
+
+
+def slsqp(prob: Problem, v0, bounds, ftol=1e-15, maxiter=200, pieces_only=False):
+    """SLSQP on w = (v, t): maximise t s.t. pieces − t >= 0, margins >= 0."""
+    ev = Evaluator(prob)
+    nv = prob.nvar
+    P0, M0, _, _ = ev(v0)
+    w0 = np.append(v0, P0.min())
+
+    def cons(w):
+        P, M, _, _ = ev(w[:nv])
+        return np.concatenate([P - w[nv], [] if pieces_only else M])
+
+    def cons_jac(w):
+        _, _, GP, GM = ev(w[:nv])
+        top = np.hstack([GP, -np.ones((GP.shape[0], 1))])
+        if pieces_only:
+            return top
+        return np.vstack([top, np.hstack([GM, np.zeros((GM.shape[0], 1))])])
+
+    lo, hi = window_box(prob, bounds)
+    res = minimize(lambda w: -w[nv], w0, jac=lambda w: np.append(np.zeros(nv), -1.0),
+                   constraints=[{"type": "ineq", "fun": cons, "jac": cons_jac}],
+                   bounds=list(zip(lo, hi)) + [(None, None)], method="SLSQP",
+                   options={"ftol": ftol, "maxiter": maxiter})
+    return res.x, res.nit, ev
+
+
+class MinMargin(Problem):
+    """Pieces = the margins themselves (to maximise the smallest), no hard constraints."""
+
+    def __init__(self, base: Problem):
+        self.__dict__.update(base.__dict__)
+
+    def evaluate(self, V, grads=True):
+        out = Problem.evaluate(self, V, grads)
+        if not grads:
+            return out[1], out[1][:0]
+        P, M, GP, GM = out
+        return M, M[:0], GM, GM[:0]
+
+    def evaluate_point(self, v):
+        P, M, GP, GM = Problem.evaluate_point(self, v)
+        return M, M[:0], GM, GM[:0]
+
+
+def central_point(prob: Problem, V, M, bounds) -> np.ndarray:
+    """(x, t): the point that maximises the smallest margin t near the least infeasible node of
+    V (M its margins), by SLSQP; t >= 0 is a feasible point of a region thinner than the grid."""
+    worst = M.min(axis=0) if M.size else np.zeros(V.shape[0])
+    w, _, _ = slsqp(MinMargin(prob), V[int(np.argmax(worst))], bounds, ftol=1e-12, pieces_only=True)
+    return w

@@ -1,0 +1,98 @@
+"""Nodes of the shift plane: the N×N grid of (x1, x2) (or a line of x1 at a fixed x-sum), evaluated
+in one vectorised call; its best feasible node, and the start points it gives the local methods."""
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+from .problem import Problem
+
+__all__ = ["grid_points", "best_feasible", "grid_starts", "START_N", "MAX_STARTS"]
+
+
+START_N = 31          # grid nodes per axis for the start of convex and exact (spacing 0.15)
+
+MAX_STARTS = 4
+
+
+def grid_points(prob: Problem, n: int, bounds) -> np.ndarray:
+    lo, hi = bounds
+    if prob.nvar == 1:
+        lo1 = max(lo, prob.x_sum - hi)
+        hi1 = min(hi, prob.x_sum - lo)
+        return np.linspace(lo1, hi1, n)[:, None]
+    return _square_grid(n, float(lo), float(hi))
+
+
+@functools.lru_cache(maxsize=16)
+def _square_grid(n: int, lo: float, hi: float) -> np.ndarray:
+    g = np.linspace(lo, hi, n)
+    X1, X2 = np.meshgrid(g, g, indexing="ij")
+    V = np.column_stack([X1.ravel(), X2.ravel()])
+    V.flags.writeable = False
+    return V
+
+
+def best_feasible(prob: Problem, V: np.ndarray):
+    P, M = prob.evaluate(V, grads=False)
+    feasible = (M >= 0).all(axis=0) if M.size else np.ones(V.shape[0], bool)
+    score = np.where(feasible, P.min(axis=0), -np.inf)
+    if not np.isfinite(score).any():
+        return None, P, M
+    return int(np.argmax(score)), P, M
+
+
+def grid_starts(prob: Problem, V: np.ndarray, n: int):
+    """Start points for the local solvers on the grid V (n nodes per axis), best first, at most
+    MAX_STARTS: the best node of every separate feasible piece of the grid, and the local
+    maxima of the objective over the nodes that miss feasibility by less than one node
+    spacing (first-order distance to every violated boundary), away from the feasible nodes,
+    where they beat every feasible node: a piece thinner than the grid holds no node, but its
+    neighbours come that close. Returns (starts, margins at V)."""
+    from scipy import ndimage
+
+    P, M = prob.evaluate(V, grads=False)
+    feasible = (M >= 0).all(axis=0) if M.size else np.ones(V.shape[0], bool)
+    fun = P.min(axis=0)
+    fun = np.where(np.isnan(fun), -np.inf, fun)
+    score = np.where(feasible, fun, -np.inf)
+    if n < 2 or V.shape[0] < n ** prob.nvar:              # a given start, no grid
+        return ([V[int(np.argmax(score))]] if np.isfinite(score).any() else []), M
+    shape = (n, n) if prob.nvar == 2 else (n,)
+    box = np.ones((3,) * prob.nvar, bool)
+    labels, count = ndimage.label(feasible.reshape(shape), structure=box)
+    if count <= 1:
+        idx = [int(np.argmax(score))] if count else []
+    else:
+        best_of = ndimage.maximum_position(score.reshape(shape), labels, range(1, count + 1))
+        idx = [int(np.ravel_multi_index(p, shape)) for p in best_of]
+    best = score.max()
+    # beyond two nodes of every feasible node, better than all of them
+    far = ~ndimage.binary_dilation(feasible.reshape(shape), structure=box, iterations=2).ravel()
+    cand = far & (fun > best)
+    if M.size and cand.any():
+        h = (V[-1, 0] - V[0, 0]) / (n - 1)
+        Mg = np.where(np.isfinite(M), M, np.nan).reshape((-1,) + shape)
+        slope = np.zeros_like(Mg)
+        for ax in range(1, prob.nvar + 1):    # largest one-node change along either axis, per unit x
+            d = np.abs(np.diff(Mg, axis=ax)) / h
+            lo = [(0, 0)] * Mg.ndim
+            hi = [(0, 0)] * Mg.ndim
+            lo[ax], hi[ax] = (1, 0), (0, 1)
+            slope = np.fmax(slope, np.fmax(np.pad(d, lo, constant_values=np.nan), np.pad(d, hi, constant_values=np.nan)))
+        with np.errstate(invalid="ignore"):
+            near = ((M >= 0) | (-M <= h * slope.reshape(M.shape))).all(axis=0)
+        near_score = np.where(cand & near, fun, -np.inf).reshape(shape)
+        if np.isfinite(near_score).any():
+            peak = np.isfinite(near_score) & (near_score >= ndimage.maximum_filter(near_score, footprint=box,
+                                                                                    mode="constant", cval=-np.inf))
+            idx += [int(i) for i in np.flatnonzero(peak.ravel())]
+    chosen = []
+    for i in sorted(idx, key=lambda k: (not feasible[k], -fun[k])):
+        at = np.array(np.unravel_index(i, shape))
+        if all(np.abs(at - np.array(np.unravel_index(c, shape))).max() > 2 for c in chosen):
+            chosen.append(i)
+        if len(chosen) == MAX_STARTS:
+            break
+    return [V[i] for i in chosen], M

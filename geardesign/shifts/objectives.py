@@ -1,0 +1,159 @@
+"""Objectives of the shift problem, as objects like the checks: a registry by name, and a user's own.
+
+Every objective is "maximise the smallest piece": F = min_k piece_k(geo) = sense · fun, with one
+piece for a smooth objective and two for balanced sliding (max |ϑ| is the larger of two).
+``max_margin`` is the exception: its pieces are the checks' normalised margins, which the
+problem builds itself (``kind = "margin"``).
+
+>>> sorted(OBJECTIVES)
+['balanced_sliding', 'max_eps_alpha', 'max_margin', 'max_x_sum', 'min_specific_pressure']
+>>> OBJECTIVES["max_x_sum"].pieces({"_x1": 0.5, "_x2": 0.25})
+(0.75,)
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+from ..errors import GearDesignError
+from ..gears.checks import ContactRatio, sliding_root_gradient
+from ..validate import _short
+
+__all__ = ["Objective", "CustomObjective", "OBJECTIVES", "resolve_objective", "default_objective"]
+
+
+class Objective:
+    """What a solve optimises. ``sense`` is +1 for "max_*" goals and −1 for "min_*" goals;
+    ``x_sum_only`` marks goals that depend on x1 + x2 alone (constant on a fixed-a_w line)."""
+
+    name = ""
+    sense = +1
+    kind = "smooth"            # "smooth", "minimax" (min of pieces) or "margin" (Chebyshev centre)
+    description = ""
+    x_sum_only = False
+
+    def pieces(self, geo) -> tuple:
+        """Values whose minimum is sense · fun (floats or arrays, as ``geo`` holds)."""
+        raise NotImplementedError
+
+    def piece_gradients(self, geo) -> list | None:
+        """[(∂piece/∂x1, ∂piece/∂x2)] per piece, or None for central differences."""
+        return None
+
+    def __repr__(self) -> str:
+        return f"<objective {self.name}: {self.description}>"
+
+
+class MaxXSum(Objective):
+    name, sense, description, x_sum_only = "max_x_sum", +1, "largest x1 + x2 (largest α_w: contact strength)", True
+
+    def pieces(self, geo):
+        return (geo["_x1"] + geo["_x2"],)
+
+    def piece_gradients(self, geo):
+        return [(1.0, 1.0)]
+
+
+class MaxEpsAlpha(Objective):
+    name, sense, description = "max_eps_alpha", +1, "largest transverse contact ratio ε_α"
+
+    def pieces(self, geo):
+        return (geo["eps_alpha"],)
+
+    def piece_gradients(self, geo):
+        return [ContactRatio().gradient(geo)]
+
+
+class BalancedSliding(Objective):
+    name, sense, kind = "balanced_sliding", -1, "minimax"
+    description = "smallest max(|ϑ1|, |ϑ2|) at the roots; equal sliding at both ends where no check stops it"
+
+    def pieces(self, geo):
+        return (-abs(geo["sliding1_root"]), -abs(geo["sliding2_root"]))
+
+    def piece_gradients(self, geo):
+        out = []
+        for gear in (1, 2):
+            sign = np.sign(geo[f"sliding{gear}_root"])
+            d1, d2 = sliding_root_gradient(geo, gear)
+            out.append((-sign * d1, -sign * d2))
+        return out
+
+
+class MinSpecificPressure(Objective):
+    name, sense, x_sum_only = "min_specific_pressure", -1, True
+    description = "smallest specific pressure coefficient at the pitch point"
+
+    def pieces(self, geo):
+        return (-geo["spec_pressure_pitch"],)
+
+    def piece_gradients(self, geo):
+        # Γ ∝ 1/tan α_w depends on x1 + x2 only: ∂(−Γ)/∂x_j = Γ · 2 tan α / (z_Σ tan³α_w cos²α_w)
+        g = (geo["spec_pressure_pitch"] * 2.0 * geo["_ta"]
+             / ((geo["_z1"] + geo["_z2"]) * geo["_t_w"] ** 3 * geo["_cos_w"] ** 2))
+        return [(g, g)]
+
+
+class MaxMargin(Objective):
+    name, sense, kind = "max_margin", +1, "margin"
+    description = "the point farthest (in x) from every check's boundary (robust design)"
+
+    def pieces(self, geo):
+        return (0.0 * geo["a"],)
+
+    def piece_gradients(self, geo):
+        return [(0.0, 0.0)]
+
+
+class CustomObjective(Objective):
+    """A user's own goal: ``func(geo) -> value`` (geo holds the
+    :data:`~geardesign.gears.geometry.GEOMETRY_FIELDS` names, floats or arrays), maximised with
+    ``sense="max"`` or minimised with ``sense="min"``; gradients by central differences.
+
+    >>> o = CustomObjective("min_da1", lambda g: g["da1"], sense="min")
+    >>> o.sense, float(o.pieces({"da1": 40.0})[0])
+    (-1, -40.0)
+    """
+
+    def __init__(self, name: str, func: Callable, sense: str = "max", description: str = ""):
+        if not isinstance(name, str) or not name:
+            raise GearDesignError(f"CustomObjective needs a name (a non-empty string), got {_short(name)}")
+        if not callable(func):
+            raise GearDesignError(f"CustomObjective {name!r}: func must be callable, got {_short(func)}")
+        if sense not in ("max", "min"):
+            raise GearDesignError(f"CustomObjective {name!r}: sense must be 'max' or 'min', got {_short(sense)}")
+        self.name, self.func = name, func
+        self.sense = +1 if sense == "max" else -1
+        self.description = description or f"{sense}imise {name}"
+
+    def pieces(self, geo):
+        return (self.sense * np.asarray(self.func(geo), dtype=float)[()],)
+
+
+OBJECTIVES: dict[str, Objective] = {o.name: o for o in (MaxXSum(), MaxEpsAlpha(), BalancedSliding(),
+                                                          MinSpecificPressure(), MaxMargin())}
+
+
+def resolve_objective(objective) -> Objective:
+    """A registered name or an :class:`Objective` object."""
+    if isinstance(objective, Objective):
+        return objective
+    if isinstance(objective, str) and objective in OBJECTIVES:
+        return OBJECTIVES[objective]
+    raise GearDesignError(f"objective must be one of {list(OBJECTIVES)} or an Objective object, "
+                          f"got {_short(objective)}")
+
+
+def default_objective(objective, x_sum_fixed: bool) -> Objective:
+    """``max_x_sum`` on the plane; ``balanced_sliding`` on a fixed-a_w line, where objectives of
+    the x-sum alone are constant and refused."""
+    if objective is None:
+        return OBJECTIVES["balanced_sliding" if x_sum_fixed else "max_x_sum"]
+    objective = resolve_objective(objective)
+    if x_sum_fixed and objective.x_sum_only:
+        others = [o for o, obj in OBJECTIVES.items() if not obj.x_sum_only]
+        raise GearDesignError(
+            f"objective {objective.name!r} depends on x1 + x2 alone, which a_w fixes: nothing to optimise; "
+            f"with a fixed center distance choose one of {others}")
+    return objective

@@ -1,0 +1,128 @@
+"""The convex method: sequential convex programming in cvxpy with Clarabel. The subproblem is
+built once per shape with Parameters (DPP) and re-solved; its duals feed the curvature."""
+from __future__ import annotations
+
+import numpy as np
+
+from .local import Evaluator, window_box
+from .problem import Problem
+from .result import Outcome
+from .sensitivities import sensitivities_at
+
+__all__ = ["solve"]
+
+_SCP_CACHE: dict = {}
+
+
+def _scp_problem(P: int, K: int, nv: int):
+    """The convex subproblem, built once per shape and re-solved with new Parameters (DPP):
+    maximise t − ½‖L d‖² s.t. pieces + GP d >= t, margins + GM d >= 0, lo <= d <= hi,
+    with LᵀL the PSD part of the Lagrangian's curvature (so the steps are SQP steps)."""
+    key = (P, K, nv)
+    if key not in _SCP_CACHE:
+        import cvxpy as cp
+
+        d = cp.Variable(nv)
+        t = cp.Variable()
+        Pp, GPp = cp.Parameter(P), cp.Parameter((P, nv))
+        Mp, GMp = cp.Parameter(K), cp.Parameter((K, nv))
+        lo, hi, Lp = cp.Parameter(nv), cp.Parameter(nv), cp.Parameter((nv, nv))
+        cons = [Pp + GPp @ d >= t, d >= lo, d <= hi]
+        if K:
+            cons.append(Mp + GMp @ d >= 0)
+        problem = cp.Problem(cp.Maximize(t - 0.5 * cp.sum_squares(Lp @ d)), cons)
+        _SCP_CACHE[key] = (problem, d, t, Pp, GPp, Mp, GMp, lo, hi, Lp, cons)
+    return _SCP_CACHE[key]
+
+
+def _curvature(ev: Evaluator, v, lam_p, lam_m, h=1e-5):
+    """L with LᵀL = PSD part of −∇²(Σ λ_p p + Σ λ_m m), second derivatives by central
+    differences of the analytic gradients."""
+    nv = v.size
+    H = np.zeros((nv, nv))
+    for j in range(nv):
+        e = np.zeros(nv)
+        e[j] = h
+        _, _, GPu, GMu = ev(v + e)
+        _, _, GPd, GMd = ev(v - e)
+        H[:, j] = lam_p @ (GPu - GPd) / (2 * h) + (lam_m @ (GMu - GMd) / (2 * h) if lam_m.size else 0.0)
+    B = -(H + H.T) / 2
+    vals, vecs = np.linalg.eigh(B)
+    vals = np.clip(vals, 1e-8, None)
+    return (vecs * np.sqrt(vals)).T
+
+
+def solve_convex(prob: Problem, v0, bounds, tol, maxit=100):
+    import cvxpy as cp
+
+    nv = prob.nvar
+    ev = Evaluator(prob)
+    P, M, GP, GM = ev(v0)
+    problem, d, t, Pp, GPp, Mp, GMp, lo, hi, Lp, cons = _scp_problem(P.size, M.size, nv)
+    blo, bhi = bounds
+    if nv == 1:
+        box_lo, box_hi = np.array([max(blo, prob.x_sum - bhi)]), np.array([min(bhi, prob.x_sum - blo)])
+    else:
+        box_lo, box_hi = np.array([blo, blo]), np.array([bhi, bhi])
+    v = np.asarray(v0, dtype=float)
+    radius = 0.25
+    penalty = 10.0
+
+    def merit(P, M):
+        return P.min() - penalty * np.clip(-M, 0, None).sum()
+
+    lam_p = np.full(P.size, 1.0 / P.size)
+    lam_m = np.zeros(M.size)
+    L = np.eye(nv) * 1e-4
+    nit = 0
+    for nit in range(1, maxit + 1):
+        Pp.value, GPp.value, Lp.value = P, GP, L
+        if M.size:
+            Mp.value, GMp.value = M, GM
+        lo.value = np.maximum(-radius, box_lo - v)
+        hi.value = np.minimum(radius, box_hi - v)
+        problem.solve(solver=cp.CLARABEL, tol_gap_abs=1e-12, tol_gap_rel=1e-12, tol_feas=1e-12)
+        if d.value is None:
+            radius /= 4
+            if radius < tol:
+                break
+            continue
+        step = np.asarray(d.value, dtype=float)
+        predicted = float(problem.value) - merit(P, M)
+        P1, M1, GP1, GM1 = ev(v + step)
+        actual = merit(P1, M1) - merit(P, M)
+        if actual < 0.1 * predicted and M.size and (M1 < 0).any():
+            # second-order correction (Maratos effect): pull the violated checks back to zero
+            bad = M1 < 0
+            corr = -np.linalg.pinv(GM[bad]) @ M1[bad]
+            P2, M2, GP2, GM2 = ev(v + step + corr)
+            if merit(P2, M2) - merit(P, M) >= 0.1 * predicted:
+                step = step + corr
+                P1, M1, GP1, GM1 = P2, M2, GP2, GM2
+                actual = merit(P1, M1) - merit(P, M)
+        if predicted <= 1e-15 or actual >= 0.1 * predicted:
+            v, P, M, GP, GM = v + step, P1, M1, GP1, GM1
+            lam_p = np.asarray(cons[0].dual_value, dtype=float)
+            if M.size:
+                lam_m = np.asarray(cons[3].dual_value, dtype=float)
+            L = _curvature(ev, v, lam_p, lam_m)
+            if predicted > 0 and actual > 0.75 * predicted and np.max(np.abs(step)) > 0.9 * radius:
+                radius = min(2 * radius, 1.0)
+            if np.max(np.abs(step)) < 0.01 * tol:   # the next SQP step would be ~(tol/100)²
+                break
+        else:
+            radius = min(radius, np.max(np.abs(step))) / 4
+            if radius < 0.01 * tol:
+                break
+    return v, nit, lam_m, ev
+
+
+def solve(prob: Problem, starts: list, bounds, tol: float) -> Outcome:
+    """SQP from the best start; sensitivities from the same active-set multipliers as ``exact``."""
+    v, nit, _, ev = solve_convex(prob, starts[0], bounds, tol)
+    Pv, Mv, _, _ = ev(v)
+    ok = not (Mv.size and Mv.min() < -tol)
+    msg = "converged: trust region below tol" if ok else "stopped with a check violated beyond tol"
+    w = np.append(v, Pv.min())
+    sens, sides = sensitivities_at(prob, Evaluator(prob, window=window_box(prob, bounds)), w, act_tol=10 * tol)
+    return Outcome(v, nit, ok, msg, sens, sides)
