@@ -10,7 +10,8 @@ import numpy as np
 
 import geardesign as gd
 from geardesign import checks
-from geardesign.gears.geometry import _core
+from geardesign.gears.geometry import mesh_geometry
+from geardesign.gears.mesh import Mesh
 
 
 def designs(n, seed=0):
@@ -23,7 +24,7 @@ def designs(n, seed=0):
 
 
 def one_pass(z1, z2, x1, x2, rack, cs):
-    geo = _core(1.0, z1, z2, x1, x2, rack, True)
+    geo = mesh_geometry(Mesh(z1, z2, rack, True), 1.0, x1, x2)
     return checks.margins(geo, cs)
 
 

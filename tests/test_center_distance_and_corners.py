@@ -13,7 +13,8 @@ import pytest
 import geardesign as gd
 from geardesign import checks as ck
 from geardesign.cli import main
-from geardesign.gears.geometry import _core
+from geardesign.gears.geometry import mesh_geometry
+from geardesign.gears.mesh import Mesh
 
 mp.mp.dps = 40
 
@@ -56,7 +57,7 @@ def test_fixed_center_distance_defaults_to_balanced_sliding_and_matches_pair():
     assert "balanced_sliding" in r.message and "fixed by a_w = 55 mm" in r.message
     assert float(_a_w(2.5, 12, 31, r.x1 + r.x2)) == pytest.approx(55, rel=1e-13)
     # no check is active here, so the optimum is the split of equal root sliding
-    geo = _core(2.5, 12, 31, r.x1, r.x2, gd.BasicRack(), True)
+    geo = mesh_geometry(Mesh(12, 31, gd.BasicRack(), True), 2.5, r.x1, r.x2)
     assert geo["sliding1_root"] == pytest.approx(geo["sliding2_root"], rel=1e-9)
     pair = gd.GearPair.from_center_distance(2.5, 12, 31, 55)
     assert (pair.x1, pair.x2) == pytest.approx((r.x1, r.x2), abs=1e-9)
@@ -152,7 +153,7 @@ def _brute_force_best(z1, z2, rack, score_of, n=1501, lo=-1.5, hi=3.0):
     for row in np.array_split(g, 15):
         X1, X2 = np.meshgrid(row, g, indexing="ij")
         with np.errstate(all="ignore"):
-            geo = _core(1.0, z1, z2, X1, X2, rack, True)
+            geo = mesh_geometry(Mesh(z1, z2, rack, True), 1.0, X1, X2)
             ok = np.ones(X1.shape, bool)
             for c in checks:
                 ok &= np.nan_to_num(c.margin(geo), nan=-1.0) >= 0

@@ -15,7 +15,8 @@ from hypothesis import assume, given
 from hypothesis import strategies as st
 
 from geardesign.gears.checks import CustomCheck, make_checks
-from geardesign.gears.geometry import _core, _core_float
+from geardesign.gears.geometry import mesh_geometry, mesh_geometry_float
+from geardesign.gears.mesh import Mesh
 from geardesign.shifts.objectives import OBJECTIVES
 from geardesign.shifts.problem import Problem
 
@@ -25,8 +26,8 @@ from test_properties import SETTINGS, designs
 @SETTINGS
 @given(designs())
 def test_float_core_equals_array_core(d):
-    args = (d["m"], d["z1"], d["z2"], d["x1"], d["x2"], d["rack"], d["ts"])
-    arr, flt = _core(*args), _core_float(*args)
+    mesh = Mesh(d["z1"], d["z2"], d["rack"], d["ts"])
+    arr, flt = mesh_geometry(mesh, d["m"], d["x1"], d["x2"]), mesh_geometry_float(mesh, d["m"], d["x1"], d["x2"])
     assert arr.keys() == flt.keys()
     for k, v in arr.items():
         v = float(v)
@@ -37,8 +38,8 @@ def test_float_core_equals_array_core(d):
 def test_float_core_gives_nan_where_the_design_does_not_exist():
     """x-sum too negative for an operating angle: NaN on both paths, never an exception."""
     from geardesign.gears.rack import BasicRack
-    arr = _core(1.0, 10, 10, -2.0, -2.0, BasicRack(), True)
-    flt = _core_float(1.0, 10, 10, -2.0, -2.0, BasicRack(), True)
+    arr = mesh_geometry(Mesh(10, 10, BasicRack(), True), 1.0, -2.0, -2.0)
+    flt = mesh_geometry_float(Mesh(10, 10, BasicRack(), True), 1.0, -2.0, -2.0)
     assert math.isnan(flt["a_w"]) and np.isnan(arr["a_w"])
 
 
@@ -49,7 +50,7 @@ def test_evaluate_point_equals_evaluate(z1, z2, x1, x2, objective, fixed):
     """The float path gives the checks as smooth parts: the smallest part of each check is its
     margin, and that part's gradient is the check's gradient."""
     extra = (CustomCheck(name="a_w_max", func=lambda g: g["a_w"], limit=1e4, sense="<="),)
-    prob = Problem(z1, z2, checks=make_checks(extra=extra), objective=objective,
+    prob = Problem(Mesh(z1, z2), checks=make_checks(extra=extra), objective=objective,
                    x_sum=(x1 + x2) if fixed else None)
     v = np.array([x1] if fixed else [x1, x2])
     P, M, GP, GM = (a[..., 0] for a in prob.evaluate(v[None, :]))
@@ -75,13 +76,13 @@ def test_evaluate_point_equals_evaluate(z1, z2, x1, x2, objective, fixed):
 def test_part_gradients_match_central_differences(d):
     """Interference's two parts (above the limit point, above the base circle) are smooth."""
     m, rack, ts = d["m"], d["rack"], d["ts"]
-    geo = _core_float(m, d["z1"], d["z2"], d["x1"], d["x2"], rack, ts)
+    geo = mesh_geometry_float(Mesh(d["z1"], d["z2"], rack, ts), m, d["x1"], d["x2"])
     h = 1e-6
     for check in make_checks():
         an = np.array(check.part_gradients(geo), dtype=float)
         for j, (dx1, dx2) in enumerate(((h, 0.0), (0.0, h))):
-            up = _core_float(m, d["z1"], d["z2"], d["x1"] + dx1, d["x2"] + dx2, rack, ts)
-            dn = _core_float(m, d["z1"], d["z2"], d["x1"] - dx1, d["x2"] - dx2, rack, ts)
+            up = mesh_geometry_float(Mesh(d["z1"], d["z2"], rack, ts), m, d["x1"] + dx1, d["x2"] + dx2)
+            dn = mesh_geometry_float(Mesh(d["z1"], d["z2"], rack, ts), m, d["x1"] - dx1, d["x2"] - dx2)
             fd = (np.array(check.part_margins(up)) - np.array(check.part_margins(dn))) / (2 * h)
             assert np.allclose(an[:, j], fd, rtol=1e-6, atol=1e-6), (check.name, j, an[:, j], fd)
 
@@ -95,8 +96,8 @@ def test_piece_gradients_match_central_differences(d):
     assume(min(abs(g.sliding1_root), abs(g.sliding2_root)) > 1e-6)
     h = 1e-6
     for objective in ("balanced_sliding", "max_eps_alpha", "min_specific_pressure"):
-        prob = Problem(d["z1"], d["z2"], rack=d["rack"], objective=objective, m=d["m"], tip_shortening=d["ts"])
-        geo = _core_float(d["m"], d["z1"], d["z2"], d["x1"], d["x2"], d["rack"], d["ts"])
+        prob = Problem(Mesh(d["z1"], d["z2"], d["rack"], d["ts"]), objective=objective, m=d["m"])
+        geo = mesh_geometry_float(Mesh(d["z1"], d["z2"], d["rack"], d["ts"]), d["m"], d["x1"], d["x2"])
         an = np.array(prob._piece_gradient_values(geo), dtype=float)
         for j, (dx1, dx2) in enumerate(((h, 0.0), (0.0, h))):
             up = np.array(prob._piece_values(prob.geo(d["x1"] + dx1, d["x2"] + dx2)), dtype=float)

@@ -20,7 +20,8 @@ from hypothesis import strategies as st
 
 import geardesign as gd
 from geardesign.gears.checks import make_checks
-from geardesign.gears.geometry import _core
+from geardesign.gears.geometry import mesh_geometry
+from geardesign.gears.mesh import Mesh
 
 SETTINGS = settings(max_examples=200, deadline=None, derandomize=True)
 
@@ -107,7 +108,7 @@ def test_from_center_distance_round_trip(d):
 def _sliding_balance_exists(d, x_sum):
     """Independent scan: is there an x1 with ϑ1,root = ϑ2,root among existing, interference-free splits?"""
     x1 = x_sum / 2.0 + np.linspace(-6.0, 6.0, 2401)
-    geo = _core(d["m"], d["z1"], d["z2"], x1, x_sum - x1, d["rack"], d["ts"])
+    geo = mesh_geometry(Mesh(d["z1"], d["z2"], d["rack"], d["ts"]), d["m"], x1, x_sum - x1)
     with np.errstate(invalid="ignore"):
         ok = ((geo["da1"] > geo["db1"]) & (geo["da2"] > geo["db2"]) & (geo["df1"] > 0) & (geo["df2"] > 0)
               & (geo["rho_p1"] > 0) & (geo["rho_p2"] > 0))
@@ -136,14 +137,14 @@ def test_check_gradients_match_central_differences(d):
     g = d["geo"]
     # stay off the kink of Interference's max(ρ_l, 0)
     assume(abs(g.rho_l1) > 1e-4 * m and abs(g.rho_l2) > 1e-4 * m)
-    geo = _core(m, d["z1"], d["z2"], d["x1"], d["x2"], rack, ts)
+    geo = mesh_geometry(Mesh(d["z1"], d["z2"], rack, ts), m, d["x1"], d["x2"])
     h = 1e-6
     for check in make_checks(jamming=True):
         an = [float(v) for v in check.gradient(geo)]
         for j in (0, 1):
             dx = (h, 0.0) if j == 0 else (0.0, h)
-            up = _core(m, d["z1"], d["z2"], d["x1"] + dx[0], d["x2"] + dx[1], rack, ts)
-            dn = _core(m, d["z1"], d["z2"], d["x1"] - dx[0], d["x2"] - dx[1], rack, ts)
+            up = mesh_geometry(Mesh(d["z1"], d["z2"], rack, ts), m, d["x1"] + dx[0], d["x2"] + dx[1])
+            dn = mesh_geometry(Mesh(d["z1"], d["z2"], rack, ts), m, d["x1"] - dx[0], d["x2"] - dx[1])
             fd = float(check.margin(up) - check.margin(dn)) / (2.0 * h)
             assert abs(an[j] - fd) <= 1e-6 * max(1.0, abs(fd)), (check.name, j + 1, an[j], fd)
 
@@ -154,7 +155,7 @@ def test_pitch_circles_and_undercut_sign(d):
     g = d["geo"]
     assert close(g.dw1 * d["z2"], g.dw2 * d["z1"], 1e-14)
     assert close(g.dw1 + g.dw2, 2.0 * g.a_w, 1e-14)
-    geo = _core(d["m"], d["z1"], d["z2"], d["x1"], d["x2"], d["rack"], d["ts"])
+    geo = mesh_geometry(Mesh(d["z1"], d["z2"], d["rack"], d["ts"]), d["m"], d["x1"], d["x2"])
     for j, check in ((1, make_checks()[0]), (2, make_checks()[1])):
         assert check.name == f"undercut{j}"
         assert np.sign(float(check.margin(geo))) == np.sign(getattr(g, f"rho_l{j}"))

@@ -7,7 +7,8 @@ import pytest
 import geardesign as gd
 from geardesign import checks as ck
 from geardesign.cli import main
-from geardesign.gears.geometry import _core
+from geardesign.gears.geometry import mesh_geometry
+from geardesign.gears.mesh import Mesh
 
 
 def test_region_boundary_lies_on_the_named_checks():
@@ -62,7 +63,7 @@ def test_empty_region_names_a_conflict():
     sub = [c for c in ck.make_checks() if c.name in reg.conflict]
     g = np.linspace(-1.5, 3.0, 301)
     X1, X2 = np.meshgrid(g, g)
-    geo = _core(1.0, 5, 5, X1, X2, gd.BasicRack(), True)
+    geo = mesh_geometry(Mesh(5, 5, gd.BasicRack(), True), 1.0, X1, X2)
     assert not np.all([np.nan_to_num(c.margin(geo), nan=-1) >= 0 for c in sub], axis=0).any()
 
 
@@ -121,7 +122,7 @@ def test_area_within_its_stated_error(z1, z2):
     for rows in np.array_split(g, 30):
         X1, X2 = np.meshgrid(rows, g, indexing="ij")
         with np.errstate(all="ignore"):
-            geo = _core(1.0, z1, z2, X1, X2, gd.BasicRack(), True)
+            geo = mesh_geometry(Mesh(z1, z2, gd.BasicRack(), True), 1.0, X1, X2)
             ok = np.ones(X1.shape, bool)
             for c in ck.make_checks():
                 ok &= np.nan_to_num(c.margin(geo), nan=-1) >= 0

@@ -9,7 +9,8 @@ import pytest
 
 import geardesign as gd
 from geardesign import checks as ck
-from geardesign.gears.geometry import _core
+from geardesign.gears.geometry import mesh_geometry
+from geardesign.gears.mesh import Mesh
 
 
 def reference_optimum(z1, z2, fun, checks=None, sense=+1, lo=-1.5, hi=3.0, n=41, levels=34):
@@ -21,7 +22,7 @@ def reference_optimum(z1, z2, fun, checks=None, sense=+1, lo=-1.5, hi=3.0, n=41,
     rack = gd.BasicRack()
 
     def scores(X1, X2):
-        geo = _core(1.0, z1, z2, X1, X2, rack, True)
+        geo = mesh_geometry(Mesh(z1, z2, rack, True), 1.0, X1, X2)
         ok = np.ones(X1.shape, bool)
         for c in cs:
             ok &= np.nan_to_num(c.margin(geo), nan=-1.0) >= 0
@@ -142,7 +143,7 @@ def test_infeasible_pair_names_conflict():
     sub = [c for c in ck.make_checks() if c.name in r.conflict]
     g = np.linspace(-1.5, 3.0, 401)
     X1, X2 = np.meshgrid(g, g)
-    geo = _core(1.0, 5, 5, X1, X2, gd.BasicRack(), True)
+    geo = mesh_geometry(Mesh(5, 5, gd.BasicRack(), True), 1.0, X1, X2)
     ok = np.ones(X1.shape, bool)
     for c in sub:
         ok &= np.nan_to_num(c.margin(geo), nan=-1) >= 0
@@ -203,7 +204,7 @@ def test_no_feasible_neighbour_is_better(z1, dz, objective, method):
     rng = np.random.default_rng(z1 * 1000 + z2)
     for radius in (1e-2, 1e-4):
         pts = np.array([r.x1, r.x2]) + rng.uniform(-radius, radius, (400, 2))
-        geo = _core(1.0, z1, z2, pts[:, 0], pts[:, 1], gd.BasicRack(), True)
+        geo = mesh_geometry(Mesh(z1, z2, gd.BasicRack(), True), 1.0, pts[:, 0], pts[:, 1])
         ok = np.all([np.nan_to_num(c.margin(geo), nan=-1) >= 0 for c in cs], axis=0)
         if objective == "max_x_sum":
             f = geo["_x1"] + geo["_x2"]

@@ -11,7 +11,8 @@ import pytest
 import geardesign as gd
 from geardesign.gears.checks import make_checks, margins
 from geardesign.cli import main
-from geardesign.gears.geometry import _core
+from geardesign.gears.geometry import mesh_geometry
+from geardesign.gears.mesh import Mesh
 from geardesign.shifts.teeth import TeethSelection, ratio_pairs, select_teeth
 
 ALPHA = math.radians(20.0)
@@ -152,7 +153,7 @@ def test_seed_000_alternatives_and_choice():
     X1, X2 = np.meshgrid(g, g, indexing="ij")
     brute = {}
     for z1, z2 in exact:
-        geo = _core(8.0, z1, z2, X1, X2, gd.BasicRack(), True)
+        geo = mesh_geometry(Mesh(z1, z2, gd.BasicRack(), True), 8.0, X1, X2)
         ok = np.all([v >= 0 for v in margins(geo, make_checks()).values()], axis=0)
         brute[(z1, z2)] = (X1 + X2)[ok].max() if ok.any() else -np.inf
     winner = max(brute, key=brute.get)

@@ -16,8 +16,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable
 
+import functools
+
 import numpy as np
-import pandas as pd
 
 from ..errors import GearDesignError
 from ..validate import _show, one_number, require_bool, require_finite, require_positive, require_range
@@ -393,21 +394,28 @@ def resolve_checks(checks) -> tuple[Check, ...]:
 _DEFAULT_CHECKS = make_checks()
 
 
-class CheckTable(pd.DataFrame):
-    """The checks of one design, a DataFrame whose printout leaves out the long ``label``
-    column, so that check, margin and ok fit a plain terminal (the labels stay in the frame)."""
+@functools.cache
+def _check_table_class():
+    """CheckTable, built on first use: pandas is imported only when a table is asked for."""
+    import pandas as pd
 
-    @property
-    def _constructor(self):
-        return CheckTable
+    class CheckTable(pd.DataFrame):
+        """The checks of one design, a DataFrame whose printout leaves out the long ``label``
+        column, so that check, margin and ok fit a plain terminal (the labels stay in the frame)."""
 
-    def __repr__(self) -> str:
-        cols = [c for c in self.columns if c != "label"]
-        text = pd.DataFrame(self[cols]).to_string(float_format=lambda v: f"{v:.6g}")
-        return text + ("\n(each check's meaning: the 'label' column)" if "label" in self.columns else "")
+        @property
+        def _constructor(self):
+            return CheckTable
+
+        def __repr__(self) -> str:
+            cols = [c for c in self.columns if c != "label"]
+            text = pd.DataFrame(self[cols]).to_string(float_format=lambda v: f"{v:.6g}")
+            return text + ("\n(each check's meaning: the 'label' column)" if "label" in self.columns else "")
+
+    return CheckTable
 
 
-def evaluate(geo: dict, checks) -> pd.DataFrame:
+def evaluate(geo: dict, checks):
     """Rows ``check, label, value, limit, margin, ok`` for one design (geo of 0-d arrays)."""
     rows = []
     for c in checks:
@@ -415,7 +423,7 @@ def evaluate(geo: dict, checks) -> pd.DataFrame:
         limit = float(np.asarray(c.limit_value(geo)))
         margin = float(np.asarray(c.margin(geo)))
         rows.append((c.name, c.label, value, limit, margin, bool(margin >= 0)))
-    return CheckTable(rows, columns=["check", "label", "value", "limit", "margin", "ok"])
+    return _check_table_class()(rows, columns=["check", "label", "value", "limit", "margin", "ok"])
 
 
 def margins(geo: dict, checks) -> dict[str, np.ndarray]:

@@ -17,16 +17,18 @@ from dataclasses import dataclass, fields
 from types import SimpleNamespace
 
 import numpy as np
-import pandas as pd
 
 from ..errors import GearDesignError
 from ..validate import broadcast_inputs, ndim, require_bool, require_int, require_positive, require_range
-from .involute import _t_minus_atan, _tan_from_inv_float, inv, inv_from_tan, tan_from_inv
+from .involute import _t_minus_atan, _tan_from_inv_float, inv, inv_from_tan, t_minus_atan_float, tan_from_inv
+from .mesh import Z_MAX, Z_MIN, Mesh
 from .rack import BasicRack
 
 __all__ = [
     "Geometry",
     "pair_geometry",
+    "mesh_geometry",
+    "mesh_geometry_float",
     "x_sum_from_center_distance",
     "center_distance_from_x_sum",
     "min_center_distance",
@@ -38,8 +40,6 @@ __all__ = [
     "X_ABS_MAX",
 ]
 
-Z_MIN = 3        # smallest tooth count accepted
-Z_MAX = 100_000  # largest tooth count accepted (the accuracy tests reach 10 000)
 M_RANGE_MM = (1e-4, 1e4)   # module: watch gears to mill gears with room to spare; outside, results overflow
 X_ABS_MAX = 10.0           # |x|: beyond a few units the tip or root crosses the base circle anyway
 DESIGNS_MAX = 20_000_000   # designs in one vectorised call: ~1.5 GB of fields per million, so ~30 GB
@@ -176,7 +176,7 @@ def _float_sqrt(v: float) -> float:
 
 
 def _float_tan_from_inv(v: float) -> float:
-    return _tan_from_inv_float(v) if v > 0.0 else math.nan
+    return _tan_from_inv_float(v, polish=False) if v > 0.0 else math.nan
 
 
 def _per_distinct(func, v):
@@ -201,32 +201,35 @@ _ARRAY_OPS = SimpleNamespace(
     per_distinct=_per_distinct)
 _FLOAT_OPS = SimpleNamespace(
     sqrt=_float_sqrt, sin=math.sin, atan=math.atan, degrees=math.degrees,
-    positive=lambda v: v if v > 0.0 else 0.0 * v, t_minus_atan=lambda t: _t_minus_atan(t, _float_sqrt),
+    positive=lambda v: v if v > 0.0 else 0.0 * v, t_minus_atan=t_minus_atan_float,
     tan_from_inv=_float_tan_from_inv, per_distinct=lambda func, v: func(v))
 
 
-def _core(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool) -> dict:
-    """All geometry fields as float arrays, no validation (invalid designs give NaN)."""
-    m, z1, z2, x1, x2 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, z1, z2, x1, x2)))
+def mesh_geometry(mesh: Mesh, m, x1, x2) -> dict:
+    """All geometry fields of ``mesh`` at module ``m`` (mm) and shifts x1, x2 as float arrays
+    (broadcast with the mesh's tooth counts), no validation: designs that do not exist give NaN.
+    Internal quantities the checks and gradients use carry a leading underscore."""
+    m, z1, z2, x1, x2 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, mesh.z1, mesh.z2, x1, x2)))
     with np.errstate(invalid="ignore", divide="ignore"):
-        return _formulas(m, z1, z2, x1, x2, rack, tip_shortening, _ARRAY_OPS)
+        return _formulas(mesh, m, z1, z2, x1, x2, _ARRAY_OPS)
 
 
-def _core_float(m: float, z1: float, z2: float, x1: float, x2: float, rack: BasicRack,
-                tip_shortening: bool) -> dict:
-    """:func:`_core` for one design in Python floats: the same fields, ~20× faster than a
-    one-element array call (invalid designs give NaN here too)."""
+def mesh_geometry_float(mesh: Mesh, m: float, x1: float, x2: float) -> dict:
+    """:func:`mesh_geometry` of one design in Python floats: the same fields, ~20× faster than a
+    one-element array call (designs that do not exist give NaN here too)."""
     try:
-        return _formulas(float(m), float(z1), float(z2), float(x1), float(x2), rack, tip_shortening, _FLOAT_OPS)
+        return _formulas(mesh, float(m), float(mesh.z1), float(mesh.z2), float(x1), float(x2), _FLOAT_OPS)
     except (ZeroDivisionError, OverflowError):
-        geo = _core(m, z1, z2, x1, x2, rack, tip_shortening)
-        return {k: float(v) for k, v in geo.items()}
+        return {k: float(v) for k, v in mesh_geometry(mesh, m, x1, x2).items()}
 
 
 @functools.lru_cache(maxsize=64)
-def _inv_alpha(alpha: float) -> float:
-    """inv α of the rack (the same float on both backends)."""
-    return _t_minus_atan(math.tan(alpha), math.sqrt)
+def _rack_constants(rack: BasicRack) -> tuple:
+    """α, sin α, cos α, tan α, inv α, sin²(α/2), h_l* of a rack: the same floats on both
+    backends, computed once per rack."""
+    alpha = rack.alpha
+    return (alpha, math.sin(alpha), math.cos(alpha), math.tan(alpha), _t_minus_atan(math.tan(alpha), math.sqrt),
+            math.sin(alpha / 2.0) ** 2, rack.h_limit)
 
 
 def _operating_angle(D, alpha, ta, inv_a, ops):
@@ -235,22 +238,19 @@ def _operating_angle(D, alpha, ta, inv_a, ops):
     t_w = ops.tan_from_inv(inv_aw)
     # Refine Δt = tan α_w − tan α itself, so that α_w − α keeps its digits when it is small:
     # inv α_w − inv α = Δt·t t_w/(1 + t t_w) + (u − atan u), u = Δt/(1 + t t_w), two terms
-    # of one sign; Newton with d(inv α_w)/dΔt = t_w²/(1 + t_w²).
+    # of one sign; Newton with d(inv α_w)/dΔt = t_w²/(1 + t_w²). The start is within a few ulp
+    # of tan α_w in absolute terms, so one step (quadratic) leaves ~ulp² of error in Δt.
     dt = t_w - ta
-    for _ in range(2):
-        t_w = ta + dt
-        q = 1.0 + ta * t_w
-        u = dt / q
-        resid = dt * ta * t_w / q + ops.t_minus_atan(u) - D
-        dt = dt - resid * (1.0 + t_w * t_w) / (t_w * t_w)
+    q = 1.0 + ta * t_w
+    resid = dt * ta * t_w / q + ops.t_minus_atan(dt / q) - D
+    dt = dt - resid * (1.0 + t_w * t_w) / (t_w * t_w)
     t_w = ta + dt
     return inv_aw, t_w, ops.atan(dt / (1.0 + ta * t_w))
 
 
-def _formulas(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool, ops) -> dict:
-    alpha = rack.alpha
-    sa, ca, ta = math.sin(alpha), math.cos(alpha), math.tan(alpha)
-    inv_a = _inv_alpha(alpha)
+def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops) -> dict:
+    rack, tip_shortening = mesh.rack, mesh.tip_shortening
+    alpha, sa, ca, ta, inv_a, s2h, h_limit = _rack_constants(rack)
     zs = z1 + z2
     xs = x1 + x2
 
@@ -277,7 +277,6 @@ def _formulas(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool, ops) -> 
     df2 = d2 - 2.0 * m * (hf - x2)
 
     # r_a − r_b = m (z sin²(α/2) + h_a* + x − k): exact when the tip is near the base circle
-    s2h = math.sin(alpha / 2.0) ** 2
     gap1 = m * (z1 * s2h + rack.ha + x1 - k)
     gap2 = m * (z2 * s2h + rack.ha + x2 - k)
     rho_a1 = ops.sqrt(gap1 * (gap1 + db1))  # √(r_a² − r_b²) = r_b tan α_a
@@ -305,7 +304,6 @@ def _formulas(m, z1, z2, x1, x2, rack: BasicRack, tip_shortening: bool, ops) -> 
 
     rho_p1 = db1 / 2.0 * t_w - e2
     rho_p2 = db2 / 2.0 * t_w - e1
-    h_limit = rack.h_limit
     x_min1 = h_limit - z1 * sa * sa / 2.0
     x_min2 = h_limit - z2 * sa * sa / 2.0
     rho_l1 = m * (x1 - x_min1) / sa
@@ -489,6 +487,14 @@ class Geometry:
                 vals[f.name] = v if np.shape(v) == shape else np.full(shape, v, dtype=float)
         return cls(**vals)
 
+    @classmethod
+    def from_float(cls, geo: dict) -> "Geometry":
+        """One design from a float geometry dict (:func:`mesh_geometry_float`), without the
+        dataclass's per-field setattr: the fields are plain floats already."""
+        obj = object.__new__(cls)
+        obj.__dict__.update({name: geo[name] for name in _FIELD_NAMES})
+        return obj
+
     @property
     def is_scalar(self) -> bool:
         return np.ndim(self.a) == 0
@@ -496,7 +502,9 @@ class Geometry:
     def to_dict(self) -> dict:
         return {f.name: getattr(self, f.name) for f in fields(self)}
 
-    def to_frame(self) -> pd.DataFrame:
+    def to_frame(self):
+        import pandas as pd   # only when a table is asked for
+
         if self.is_scalar:
             return pd.DataFrame(
                 [(k, getattr(self, k), u, d) for k, (u, d) in GEOMETRY_FIELDS.items()],
@@ -511,6 +519,9 @@ class Geometry:
             lines.append(f"  {k:<20} = {getattr(self, k):.10g} {u if u != '-' else ''}".rstrip())
         lines.append(")")
         return "\n".join(lines)
+
+
+_FIELD_NAMES = tuple(GEOMETRY_FIELDS)
 
 
 def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shortening: bool = True) -> Geometry:
@@ -538,6 +549,6 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
     if n > DESIGNS_MAX:
         raise GearDesignError(f"pair_geometry takes at most {DESIGNS_MAX:,} designs in one call, got {n:,}")
     with np.errstate(all="ignore"):   # designs that do not exist are refused by name just below
-        geo = _core(m, z1, z2, x1, x2, rack, require_bool("tip_shortening", tip_shortening))
+        geo = mesh_geometry(Mesh(z1, z2, rack, require_bool("tip_shortening", tip_shortening)), m, x1, x2)
     validate_geometry(geo, rack)
     return Geometry._from_core(geo, scalar)

@@ -50,6 +50,19 @@ def _t_minus_atan(t, sqrt=np.sqrt):
     return acc + scale * ser * s2 * s
 
 
+def t_minus_atan_float(t: float) -> float:
+    """:func:`_t_minus_atan` for one Python float, ~3× cheaper: where |t| >= 0.6 the plain
+    difference keeps all but ~3ε/t² <= 1e-15 of its relative precision, below that the
+    cancellation-free series. (The float path of the optimisers calls this ~5 times a design.)
+
+    >>> abs(t_minus_atan_float(0.7) - (0.7 - math.atan(0.7))) < 1e-16
+    True
+    """
+    if t >= 0.6 or t <= -0.6:
+        return t - math.atan(t)
+    return _t_minus_atan(t, math.sqrt)
+
+
 def inv_from_tan(t):
     """Involute function from the tangent of the angle: inv α = t − atan t, t = tan α.
 
@@ -106,10 +119,12 @@ def tan_from_inv(v, *, validate: bool = True):
     return _scalar_out(t.reshape(v_in.shape), v_in)
 
 
-def _tan_from_inv_float(v: float) -> float:
+def _tan_from_inv_float(v: float, polish: bool = True) -> float:
     """:func:`tan_from_inv` for one Python float (the single-design fast path of the optimisers).
 
-    The same start and the same Newton steps; raises ValueError unless v > 0.
+    The same start and the same Newton steps; raises ValueError unless v > 0. Without
+    ``polish`` the last, cancellation-free step is left to the caller (the operating angle
+    refines tan α_w − tan α itself, which supersedes it).
     """
     if not v > 0.0:
         raise ValueError(f"involute value must be > 0, got {v!r}")
@@ -122,8 +137,10 @@ def _tan_from_inv_float(v: float) -> float:
     for _ in range(3):
         t2 = t * t
         t = t - (t - math.atan(t) - v) * (1.0 + t2) / t2
+    if not polish:
+        return t
     t2 = t * t
-    return t - (_t_minus_atan(t, math.sqrt) - v) * (1.0 + t2) / t2
+    return t - (t_minus_atan_float(t) - v) * (1.0 + t2) / t2
 
 
 def inv_inverse(v):

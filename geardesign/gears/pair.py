@@ -5,13 +5,13 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-import pandas as pd
-from scipy.optimize import brentq
 
 from . import checks as _checks
 from ..errors import GearDesignError
 from ..validate import ndim, one_number, require_positive, require_range
-from .geometry import X_ABS_MAX, Geometry, _core, min_center_distance, validate_geometry, validate_inputs, x_sum_from_center_distance
+from .geometry import (M_RANGE_MM, X_ABS_MAX, Geometry, mesh_geometry, mesh_geometry_float, min_center_distance,
+                       validate_geometry, validate_inputs, x_sum_from_center_distance)
+from .mesh import Mesh
 from .rack import BasicRack
 
 __all__ = ["GearPair", "balanced_sliding_split"]
@@ -28,12 +28,15 @@ def balanced_sliding_split(m, z1, z2, x_sum, rack: BasicRack = BasicRack(), tip_
     Falls back to the split in inverse proportion to z (x1 = x_Σ z2/(z1+z2)) when no such
     point exists for this x-sum.
     """
+    from scipy.optimize import brentq   # here: importing scipy.optimize costs more than a GearPair
+
     def f(x1):
-        geo = _core(m, z1, z2, x1, x_sum - x1, rack, tip_shortening)
+        geo = mesh_geometry_float(mesh, m, x1, x_sum - x1)
         return geo["sliding1_root"] - geo["sliding2_root"]
 
+    mesh = Mesh(z1, z2, rack, tip_shortening)
     grid = x_sum / 2.0 + np.linspace(-3.0, 3.0, 1201)
-    geo = _core(m, z1, z2, grid, x_sum - grid, rack, tip_shortening)
+    geo = mesh_geometry(mesh, m, grid, x_sum - grid)
     ok = (geo["rho_p1"] > 0) & (geo["rho_p2"] > 0) & (geo["_gap1"] > 0) & (geo["_gap2"] > 0)
     diff = geo["sliding1_root"] - geo["sliding2_root"]
     idx = np.flatnonzero(ok[:-1] & ok[1:] & (np.sign(diff[:-1]) != np.sign(diff[1:])))
@@ -41,6 +44,19 @@ def balanced_sliding_split(m, z1, z2, x_sum, rack: BasicRack = BasicRack(), tip_
         return float(x_sum * z2 / (z1 + z2))
     i = idx[0]
     return float(brentq(f, grid[i], grid[i + 1], xtol=1e-14, rtol=1e-15))
+
+
+def _plain_inputs(m, x1, x2) -> bool:
+    """True for Python floats/ints inside their ranges: the common case, checked without numpy."""
+    return (type(m) in (float, int) and M_RANGE_MM[0] <= m <= M_RANGE_MM[1]
+            and type(x1) in (float, int) and -X_ABS_MAX <= x1 <= X_ABS_MAX
+            and type(x2) in (float, int) and -X_ABS_MAX <= x2 <= X_ABS_MAX)
+
+
+def _exists(geo: dict) -> bool:
+    """The conditions :func:`validate_geometry` checks with contact, on one float design."""
+    return (geo["inv_alpha_w"] > 0 and geo["_gap1"] > 0 and geo["_gap2"] > 0 and geo["df1"] > 0
+            and geo["df2"] > 0 and geo["g_alpha"] > 0)
 
 
 @dataclass(frozen=True)
@@ -70,21 +86,24 @@ class GearPair:
     tip_shortening: bool = True
 
     def __post_init__(self):
-        if not isinstance(self.rack, BasicRack):
-            raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(self.rack).__name__}")
-        for name in ("m", "z1", "z2", "x1", "x2"):
-            if ndim(getattr(self, name)) != 0:
-                raise GearDesignError(f"{name} must be a single number for GearPair (use pair_geometry for arrays)")
-        m, z1, z2, x1, x2 = validate_inputs(self.m, self.z1, self.z2, self.x1, self.x2)
-        object.__setattr__(self, "m", float(m))
-        object.__setattr__(self, "z1", int(z1))
-        object.__setattr__(self, "z2", int(z2))
-        object.__setattr__(self, "x1", float(x1))
-        object.__setattr__(self, "x2", float(x2))
-        object.__setattr__(self, "tip_shortening", bool(self.tip_shortening))
-        geo = _core(self.m, self.z1, self.z2, self.x1, self.x2, self.rack, self.tip_shortening)
-        validate_geometry(geo, self.rack, contact=True)
+        if not _plain_inputs(self.m, self.x1, self.x2):   # anything but plain numbers in range: by name
+            for name in ("m", "z1", "z2", "x1", "x2"):
+                if ndim(getattr(self, name)) != 0:
+                    raise GearDesignError(f"{name} must be a single number for GearPair (use pair_geometry for arrays)")
+            m, _, _, x1, x2 = validate_inputs(self.m, 3, 3, self.x1, self.x2)
+            object.__setattr__(self, "m", float(m))
+            object.__setattr__(self, "x1", float(x1))
+            object.__setattr__(self, "x2", float(x2))
+        mesh = Mesh(self.z1, self.z2, self.rack, self.tip_shortening)
+        if mesh.is_batch:
+            raise GearDesignError("z1 and z2 must be single numbers for GearPair (use pair_geometry for arrays)")
+        for name in ("z1", "z2", "rack", "tip_shortening"):
+            object.__setattr__(self, name, getattr(mesh, name))
+        geo = mesh_geometry_float(mesh, self.m, self.x1, self.x2)
+        if not _exists(geo):   # the array path names what is wrong, and where
+            validate_geometry(mesh_geometry(mesh, self.m, self.x1, self.x2), self.rack, contact=True)
         object.__setattr__(self, "_geo", geo)
+        object.__setattr__(self, "mesh", mesh)
 
     @classmethod
     def from_center_distance(cls, m, z1, z2, a_w, x1=None, rack: BasicRack | None = None,
@@ -120,12 +139,12 @@ class GearPair:
 
     def geometry(self) -> Geometry:
         """All geometry of the pair (mm, degrees); see :data:`geardesign.gears.geometry.GEOMETRY_FIELDS`."""
-        return Geometry._from_core(self._geo, scalar=True)
+        return Geometry.from_float(self._geo)
 
     def checks(self, eps_alpha_min: float | None = _checks.DEFAULT_EPS_ALPHA_MIN,
                sa_min: float | None = _checks.DEFAULT_SA_MIN, undercut: bool = True,
                interference: bool = True, jamming: bool = True, extra=(),
-               housing_a_w: float | None = None, housing_tol_mm: float | None = None) -> pd.DataFrame:
+               housing_a_w: float | None = None, housing_tol_mm: float | None = None):
         """Table of checks: ``check, value, limit, margin, ok`` (and ``label``), one row per check.
 
         Margins are dimensionless and >= 0 where the check holds (see :mod:`geardesign.gears.checks`);

@@ -47,6 +47,11 @@ class BasicRack:
     rho_f: float = 0.38
 
     def __post_init__(self):
+        if (type(self.alpha_deg) is float and type(self.ha) is float and type(self.c) is float
+                and type(self.rho_f) is float and ALPHA_RANGE_DEG[0] <= self.alpha_deg <= ALPHA_RANGE_DEG[1]
+                and HA_RANGE[0] <= self.ha <= HA_RANGE[1] and 0.0 <= self.c <= 1.0
+                and 0.0 <= self.rho_f <= self.rho_f_max + 1e-12):
+            return   # plain floats in range (the standard rack): no numpy validation needed
         for name in ("alpha_deg", "ha", "c", "rho_f"):
             value = getattr(self, name)
             if ndim(value) != 0:

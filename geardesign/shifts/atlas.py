@@ -8,9 +8,9 @@ import pandas as pd
 
 from ..errors import GearDesignError
 from ..validate import ndim, require_int
-from ..gears.geometry import Z_MAX, Z_MIN, _core
+from ..gears.geometry import mesh_geometry
+from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from .problem import DEFAULT_BOUNDS, Problem
-from ..gears.rack import BasicRack
 from .optimize import optimize_shifts
 
 __all__ = ["shift_atlas"]
@@ -55,7 +55,7 @@ def _pairs(z1_values, z2_values, upper_only):
     return Z1[keep], Z2[keep]
 
 
-def _batched_kkt(proto: Problem, Z1, Z2, start, rack, tip_shortening, iters: int = 10):
+def _batched_kkt(proto: Problem, Z1, Z2, start, iters: int = 10):
     """Every KKT candidate of every pair at once, for one-piece (smooth) objectives.
 
     Candidates: each pair of checks active (a vertex: m_a = m_b = 0) and each single check
@@ -75,12 +75,13 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, rack, tip_shortening, iters: int
     a_idx = np.tile(A, B)
     b_idx = np.tile(np.where(vertex, Bb, 0), B)
     is_v = np.tile(vertex, B)
+    mesh = proto.mesh.unchecked(z1, z2)
     X = np.repeat(start, C, axis=0)
     rows = np.arange(B * C)
     h = 1e-6
 
     def grads_at(x1, x2):
-        geo = _core(1.0, z1, z2, x1, x2, rack, tip_shortening)
+        geo = mesh_geometry(mesh, 1.0, x1, x2)
         return geo, proto.margins(geo), proto.margin_gradients(geo)
 
     def pgrad(geo):
@@ -99,7 +100,7 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, rack, tip_shortening, iters: int
         for j, (dx1, dx2) in enumerate(((h, 0.0), (0.0, h))):
             gp_, gp__ = [], []
             for sgn in (1.0, -1.0):
-                geo_s = _core(1.0, z1, z2, x1 + sgn * dx1, x2 + sgn * dx2, rack, tip_shortening)
+                geo_s = mesh_geometry(mesh, 1.0, x1 + sgn * dx1, x2 + sgn * dx2)
                 G_s = proto.margin_gradients(geo_s)[a_idx, :, rows]
                 P_s = pgrad(geo_s).T
                 (gp_ if sgn > 0 else gp__).append(P_s[:, 0] * G_s[:, 1] - P_s[:, 1] * G_s[:, 0])
@@ -155,8 +156,8 @@ def _contour_area(g, F) -> float:
     return total
 
 
-def _row_at(proto: Problem, z1, z2, x, area, rack, tip_shortening) -> dict:
-    geo = _core(1.0, z1, z2, x[0], x[1], rack, tip_shortening)
+def _row_at(proto: Problem, z1, z2, x, area) -> dict:
+    geo = mesh_geometry(proto.mesh.unchecked(z1, z2), 1.0, x[0], x[1])
     M = proto.margins(geo)
     fun = proto.fun(geo)
     tol = 1e-8
@@ -187,8 +188,8 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     Z1, Z2 = _pairs(z1_values, z2_values, upper_only)
     if Z1.size == 0:
         raise GearDesignError("shift_atlas: no (z1, z2) pair to solve (with upper_only, z2 must be >= z1)")
-    rack = rack or BasicRack()
-    proto = Problem(int(Z1[0]), int(Z2[0]), rack, checks, objective, 1.0, tip_shortening)
+    proto = Problem(Mesh(int(Z1[0]), int(Z2[0]), rack, tip_shortening), checks, objective, 1.0)
+    rack = proto.rack
     lo, hi = bounds
     g = np.linspace(lo, hi, _ATLAS_N)
     X1, X2 = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
@@ -198,7 +199,7 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     start = np.full((Z1.size, 2), np.nan)
     for s in range(0, Z1.size, chunk):
         z1c, z2c = Z1[s:s + chunk, None], Z2[s:s + chunk, None]
-        geo = _core(1.0, z1c, z2c, X1[None, :], X2[None, :], rack, tip_shortening)
+        geo = mesh_geometry(proto.mesh.unchecked(z1c, z2c), 1.0, X1[None, :], X2[None, :])
         M = proto.margins(geo)
         feas = (M >= 0).all(axis=0) if M.size else np.ones(geo["a"].shape, bool)
         P = proto.pieces(geo).min(axis=0) if proto.objective.kind != "margin" else M.min(axis=0)
@@ -217,12 +218,12 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
         has = ~np.isnan(start[:, 0])
         for s in range(0, int(has.sum()), 400):
             sel = np.flatnonzero(has)[s:s + 400]
-            fast[sel] = _batched_kkt(proto, Z1[sel], Z2[sel], start[sel], rack, tip_shortening)
+            fast[sel] = _batched_kkt(proto, Z1[sel], Z2[sel], start[sel])
     rows = []
     for k, (z1, z2) in enumerate(zip(Z1.tolist(), Z2.tolist())):
         st = None if np.isnan(start[k, 0]) else start[k]
         if not np.isnan(fast[k, 0]):
-            rows.append(_row_at(proto, z1, z2, fast[k], area[k], rack, tip_shortening))
+            rows.append(_row_at(proto, z1, z2, fast[k], area[k]))
             rows[-1]["area_error"] = area_error[k]
             if progress is not None:
                 progress(k + 1)

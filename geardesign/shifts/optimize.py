@@ -30,6 +30,7 @@ import time
 import numpy as np
 
 from ..errors import GearDesignError
+from ..gears.mesh import Mesh
 from ..validate import one_number, require_choice, require_count, require_range
 from . import grid, kkt, scp
 from .center_distance import reachable_center_distance, x_sum_for_housing
@@ -88,7 +89,7 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
     bounds = validate_bounds(bounds)
     if grid_n is not None:
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
-    prob = Problem(z1, z2, rack, checks, objective, 1.0 if m is None else m, tip_shortening)
+    prob = Problem(Mesh(z1, z2, rack, tip_shortening), checks, objective, 1.0 if m is None else m)
     if prob.objective.kind == "margin" and not prob.checks:
         raise GearDesignError("objective 'max_margin' (the point farthest from every check's boundary) needs at "
                               "least one check, got checks=[]")

@@ -12,15 +12,14 @@ from ..gears import checks as _checks
 from ..errors import GearDesignError
 from ..validate import one_number, require_count, require_range
 from .objectives import Objective, resolve_objective
-from ..gears.geometry import X_ABS_MAX, Z_MAX, Z_MIN, _core, _core_float, require_module
-from ..gears.rack import BasicRack
+from ..gears.geometry import X_ABS_MAX, mesh_geometry, mesh_geometry_float, require_module
+from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 
 __all__ = ["Problem", "validate_bounds", "DEFAULT_BOUNDS"]
 
 
 _FD_STEP = 1e-6
 _FLOAT_FAULTS = (ZeroDivisionError, OverflowError, ValueError)
-_DEFAULT_RACK = BasicRack()
 
 
 class Problem:
@@ -30,17 +29,15 @@ class Problem:
     and x2 = x_sum − x1.
     """
 
-    def __init__(self, z1, z2, rack=None, checks=None, objective="max_x_sum", m=1.0,
-                 tip_shortening=True, x_sum=None):
-        self.z1 = require_count("z1", z1, Z_MIN, Z_MAX)
-        self.z2 = require_count("z2", z2, Z_MIN, Z_MAX)
-        self.m = one_number(m, require_module(m))
-        self.rack = rack or _DEFAULT_RACK
-        if not isinstance(self.rack, BasicRack):
-            raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(self.rack).__name__}")
+    def __init__(self, mesh: Mesh, checks=None, objective="max_x_sum", m=1.0, x_sum=None):
+        if not isinstance(mesh, Mesh):
+            raise GearDesignError(f"mesh must be a geardesign.Mesh, got {type(mesh).__name__}")
+        for name in ("z1", "z2"):
+            require_count(name, getattr(mesh, name), Z_MIN, Z_MAX)   # one pair: no arrays here
+        self.mesh = mesh
+        self.m = one_number("m (module)", require_module(m))
         self.checks = _checks.resolve_checks(checks)
         self.objective = resolve_objective(objective)
-        self.tip_shortening = bool(tip_shortening)
         self.x_sum = None if x_sum is None else float(x_sum)
         self.names = [c.name for c in self.checks]
         # the smooth parts the solvers see (see Check.part_margins): part -> index of its check
@@ -55,13 +52,19 @@ class Problem:
     # arrays (the vectorised path: grids, regions, atlases) or Python floats (the
     # single-point path of the local solvers, ~20× cheaper than a one-element array call).
 
+    z1 = property(lambda self: self.mesh.z1)
+    z2 = property(lambda self: self.mesh.z2)
+    rack = property(lambda self: self.mesh.rack)
+
     def geo(self, x1, x2) -> dict:
-        return _core(self.m, self.z1, self.z2, x1, x2, self.rack, self.tip_shortening)
+        return mesh_geometry(self.mesh, self.m, x1, x2)
 
     def _geo_like(self, geo):
-        """geo(x1, x2) -> dict at the same m, z1, z2 as ``geo`` (arrays or floats alike)."""
-        core = _core_float if isinstance(geo["a"], float) else _core
-        return lambda x1, x2: core(geo["_m"], geo["_z1"], geo["_z2"], x1, x2, self.rack, self.tip_shortening)
+        """geo(x1, x2) -> dict at the same m, z1, z2 as ``geo`` (arrays or floats alike; an atlas
+        evaluates many tooth pairs through one problem)."""
+        core = mesh_geometry_float if isinstance(geo["a"], float) else mesh_geometry
+        mesh = self.mesh.unchecked(geo["_z1"], geo["_z2"])
+        return lambda x1, x2: core(mesh, geo["_m"], x1, x2)
 
     def _central(self, func, geo):
         """(∂func/∂x1, ∂func/∂x2) by central differences around the design(s) of ``geo``."""
@@ -171,7 +174,7 @@ class Problem:
         division by zero exactly at a boundary, an overflow), the same formulas on 0-d numpy
         arrays, which give inf/NaN as the vectorised path does."""
         try:
-            geo = _core_float(self.m, self.z1, self.z2, x1, x2, self.rack, self.tip_shortening)
+            geo = mesh_geometry_float(self.mesh, self.m, x1, x2)
             return geo, self.evaluate_geo(geo, parts)
         except _FLOAT_FAULTS:
             with np.errstate(all="ignore"):

@@ -15,6 +15,7 @@ import numpy as np
 import pandas as pd
 
 from ..errors import GearDesignError
+from ..gears.mesh import Mesh
 from ..validate import one_number, require_count, require_range
 from ..gears.geometry import center_distance_from_x_sum
 from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
@@ -276,7 +277,7 @@ def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: 
     if n is None:
         n = int(min(max(math.ceil((hi - lo) / tol) + 1, 41), 801)) if method == "grid" else 321
     n = require_count("n", n, 11, REGION_N_MAX)
-    prob = Problem(z1, z2, rack, checks, "max_x_sum", m, tip_shortening)
+    prob = Problem(Mesh(z1, z2, rack, tip_shortening), checks, "max_x_sum", m)
     window = (lo, hi)
     box_used = (lo, hi, lo, hi)
     loops = _trace(prob, box_used, n, window, method)

@@ -32,7 +32,8 @@ from .. import catalogs
 from ..gears.checks import resolve_checks
 from ..errors import GearDesignError
 from ..validate import one_number, require_count, require_positive, require_range
-from ..gears.geometry import Z_MAX, Z_MIN, x_sum_from_center_distance
+from ..gears.geometry import x_sum_from_center_distance
+from ..gears.mesh import Z_MAX, Z_MIN
 from .objectives import default_objective
 from .problem import DEFAULT_BOUNDS
 from ..gears.rack import BasicRack
