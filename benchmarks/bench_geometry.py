@@ -1,8 +1,15 @@
-"""Geometry speed: designs per second for geometry + all checks, and one scalar pair's latency.
+"""Geometry speed, as ratios against plain references written here (this machine drifts ±50 %):
+
+* vectorised geometry + the seven default check margins against a plain straight-line numpy
+  version of the same seven margins (textbook formulas, arccos and all);
+* one pair's GearPair(...).geometry() against a plain-Python evaluation of a few fields;
+* ``import geardesign`` (and the first GearPair) against ``import numpy``.
 
 Run: python benchmarks/bench_geometry.py [N]
 Prints figures; asserts nothing (speed is measured, not tested).
 """
+import math
+import subprocess
 import sys
 import time
 
@@ -28,6 +35,66 @@ def one_pass(z1, z2, x1, x2, rack, cs):
     return checks.margins(geo, cs)
 
 
+def plain_margins(z1, z2, x1, x2, alpha=math.radians(20.0), ha=1.0, c=0.25, rho_f=0.38, sa_min=0.25, eps_min=1.2):
+    """The seven default margins, straight-line numpy, m = 1 (textbook forms, no care for digits)."""
+    inv = lambda a: np.tan(a) - a
+    inv_w = inv(alpha) + 2 * (x1 + x2) * np.tan(alpha) / (z1 + z2)
+    t = np.cbrt(3 * inv_w)                             # tan α_w by Newton from the series start
+    for _ in range(6):
+        t = t - (t - np.arctan(t) - inv_w) * (1 + t * t) / (t * t)
+    aw_ = np.arctan(t)
+    a = (z1 + z2) / 2
+    a_w = a * np.cos(alpha) / np.cos(aw_)
+    y = a_w - a
+    dy = x1 + x2 - y
+    ra1, ra2 = z1 / 2 + ha + x1 - dy, z2 / 2 + ha + x2 - dy
+    rb1, rb2 = z1 / 2 * np.cos(alpha), z2 / 2 * np.cos(alpha)
+    g = a_w * np.sin(aw_)
+    rho_a1, rho_a2 = np.sqrt(ra1 ** 2 - rb1 ** 2), np.sqrt(ra2 ** 2 - rb2 ** 2)
+    eps = (rho_a1 + rho_a2 - g) / (np.pi * np.cos(alpha))
+    aa1, aa2 = np.arccos(rb1 / ra1), np.arccos(rb2 / ra2)
+    sa1 = 2 * ra1 * (np.pi / (2 * z1) + 2 * x1 * np.tan(alpha) / z1 + inv(alpha) - inv(aa1))
+    sa2 = 2 * ra2 * (np.pi / (2 * z2) + 2 * x2 * np.tan(alpha) / z2 + inv(alpha) - inv(aa2))
+    hl = ha + c - rho_f * (1 - np.sin(alpha))
+    xmin1, xmin2 = hl - z1 * np.sin(alpha) ** 2 / 2, hl - z2 * np.sin(alpha) ** 2 / 2
+    rho_l1, rho_l2 = (x1 - xmin1) / np.sin(alpha), (x2 - xmin2) / np.sin(alpha)
+    rho_p1, rho_p2 = g - rho_a2, g - rho_a1
+    return (x1 - xmin1, x2 - xmin2, rho_p1 - rho_l1, rho_p2 - rho_l2, sa1 - sa_min, sa2 - sa_min, eps - eps_min)
+
+
+def plain_scalar(z1, z2, x1, x2, m, alpha=math.radians(20.0), ha=1.0):
+    """A plain-Python pair evaluation of α_w, a_w, d_a1, d_a2 and ε_α (what scalar peers compute)."""
+    inv_w = math.tan(alpha) - alpha + 2 * (x1 + x2) * math.tan(alpha) / (z1 + z2)
+    t = (3 * inv_w) ** (1 / 3)
+    for _ in range(6):
+        t = t - (t - math.atan(t) - inv_w) * (1 + t * t) / (t * t)
+    aw_ = math.atan(t)
+    a = m * (z1 + z2) / 2
+    a_w = a * math.cos(alpha) / math.cos(aw_)
+    dy = x1 + x2 - (a_w - a) / m
+    da1, da2 = m * (z1 + 2 * (ha + x1 - dy)), m * (z2 + 2 * (ha + x2 - dy))
+    rb1, rb2 = m * z1 / 2 * math.cos(alpha), m * z2 / 2 * math.cos(alpha)
+    eps = (math.sqrt(da1 ** 2 / 4 - rb1 ** 2) + math.sqrt(da2 ** 2 / 4 - rb2 ** 2) - a_w * math.sin(aw_)) \
+        / (math.pi * m * math.cos(alpha))
+    return aw_, a_w, da1, da2, eps
+
+
+def best_of(fn, repeat=5):
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return min(times)
+
+
+def import_cpu_s(code: str) -> float:
+    """CPU seconds of a fresh interpreter running ``code`` (the best of three)."""
+    probe = f"import time; t = time.process_time(); {code}; print(time.process_time() - t)"
+    return min(float(subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                                    check=True).stdout) for _ in range(3))
+
+
 def main(n=1_000_000, repeat=5):
     rack, cs = gd.BasicRack(), gd.make_checks()
     z1, z2, x1, x2 = designs(n)
@@ -49,12 +116,20 @@ def main(n=1_000_000, repeat=5):
     print(f"  first call (fresh memory)  {cold:8.3f} s   {n / cold / 1e6:6.2f} M designs/s")
     print(f"  warm, best of {repeat}           {warm:8.3f} s   {n / warm / 1e6:6.2f} M designs/s")
     print(f"  pair_geometry (validated)  {public:8.3f} s   {n / public / 1e6:6.2f} M designs/s")
-    k = 2000
-    t0 = time.perf_counter()
-    for _ in range(k):
-        gd.GearPair(8, 17, 26, 0.898, 0.517).geometry()
-    lat = (time.perf_counter() - t0) / k
-    print(f"  scalar GearPair(...).geometry() latency: {lat * 1e6:8.1f} us")
+    zf1, zf2 = z1.astype(float), z2.astype(float)
+    plain = best_of(lambda: plain_margins(zf1, zf2, x1, x2), repeat)
+    print(f"  plain straight-line numpy, the 7 margins only: {plain:8.3f} s; geardesign (all fields + margins) "
+          f"is {plain / warm:5.2f}x its speed")
+    k = 5000
+    lat = best_of(lambda: [gd.GearPair(8, 17, 26, 0.898, 0.517).geometry() for _ in range(k)]) / k
+    ref = best_of(lambda: [plain_scalar(17, 26, 0.898, 0.517, 8.0) for _ in range(k)]) / k
+    print(f"  GearPair(...).geometry(), all {len(gd.GEOMETRY_FIELDS)} fields, validated: {lat * 1e6:7.1f} us; "
+          f"plain Python, 5 fields: {ref * 1e6:5.1f} us (ratio {lat / ref:4.1f})")
+    t_np = import_cpu_s("import numpy")
+    t_gd = import_cpu_s("import geardesign")
+    t_pair = import_cpu_s("import geardesign as gd; gd.GearPair(8, 17, 26, 0.898, 0.517).geometry()")
+    print(f"  import numpy {t_np:5.3f} s CPU; import geardesign {t_gd:5.3f} s ({t_gd / t_np:4.2f}x); "
+          f"import + first GearPair.geometry() {t_pair:5.3f} s ({t_pair / t_np:4.2f}x)")
 
 
 if __name__ == "__main__":

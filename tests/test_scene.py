@@ -38,7 +38,7 @@ def write(tmp_path, text, name="case.toml"):
     # unknown key in a sub-table
     (GOOD_GEAR + "[gear.checks]\neps_min = 1.2\n", "eps_min", "unknown key; expected one of eps_alpha_min"),
     # wrong type
-    (GOOD_GEAR.replace("z1 = 17", 'z1 = "seventeen"'), "z1", "expected a whole number in [3, 10000]"),
+    (GOOD_GEAR.replace("z1 = 17", 'z1 = "seventeen"'), "z1", "expected a whole number in [3, 100000]"),   # gears.mesh Z_MIN, Z_MAX
     (GOOD_GEAR.replace("z1 = 17", "z1 = 17.5"), "z1", "expected a whole number"),
     (GOOD_GEAR + "tip_shortening = 1\n", "tip_shortening", "expected true or false"),
     (GOOD_GEAR + 'objective = "max_xsum"\n', "objective", "expected one of 'max_x_sum'"),
@@ -47,8 +47,8 @@ def write(tmp_path, text, name="case.toml"):
     ("[chain]\ntorque_nm = 380\nratio = 1\n", "n1_rpm", "missing"),
     (GOOD_GEAR + "x1 = 0.5\n", "x2", "give both x1 and x2"),
     # out of range
-    (GOOD_GEAR.replace("module = 8", "module = -8"), "module", "expected a number in (0, 100]"),
-    (GOOD_GEAR + "[gear.rack]\nalpha_deg = 50\n", "alpha_deg", "expected a number in (0, 45]"),
+    (GOOD_GEAR.replace("module = 8", "module = -8"), "module", "expected a number in [0.0001, 10000]"),   # gears.geometry M_RANGE_MM
+    (GOOD_GEAR + "[gear.rack]\nalpha_deg = 50\n", "alpha_deg", "expected a number in [1, 44]"),   # gears.rack ALPHA_RANGE_DEG
     ("[chain]\ntorque_nm = 380\nn1_rpm = 120\nratio = 0.5\n", "ratio", "expected a number in [1, 10]"),
     ("[key]\nd_mm = 60\ntorque_nm = 380\nhub_length_mm = 50\nmax_keys = 3\n", "max_keys", "[1, 2]"),
     (GOOD_GEAR + "[study]\nparameter = \"colour\"\nvalues = [1, 2]\n", "parameter", "expected one of eps_alpha_min"),

@@ -25,7 +25,7 @@ def add_parser(subparsers):
 
 
 def run(args) -> int:
-    from ..scene.scene import run_scene
+    from ..scene import run_scene
 
     bar = Progress(1, "scene")
 

@@ -56,6 +56,13 @@ FACTOR_NAMES = ("k_d", "k_a", "k_n", "k_reg", "k_lub", "k_mode")
 TORQUE_RANGE_NM = (1e-3, 1e7)       # a watch escapement to a mill drive; outside, margins overflow
 POWER_RANGE_KW = (1e-6, 1e5)
 N1_RANGE_RPM = (0.1, 20_000.0)      # a hand crank to the fastest small-pitch chain (tables stop lower)
+RATIO_RANGE = (1.0, 10.0)           # one roller-chain stage; beyond ~7 the small sprocket wraps too little
+K_E_RANGE = (0.1, 20.0)             # the product of the operating factors, or one given K_e
+FACTOR_RANGE = (0.1, 10.0)          # each operating factor k_d ... k_mode
+SAFETY_FACTOR_RANGE = (1.0, 100.0)  # an allowable breaking-load safety factor
+SAG_FACTOR_RANGE = (0.0, 10.0)      # k_f of the sag tension (6 horizontal ... 1 vertical)
+Z1_RANGE = (7, 200)                 # small sprocket teeth a catalog row may be given
+STRANDS_RANGE = (1, 4)
 CENTER_DISTANCE_MAX_MM = 1e5        # 100 m: past any roller-chain drive
 CENTER_DISTANCE_PITCHES_MAX = 80.0  # longest span a roller chain is laid out for (a <= 80 p; ISO 10823 notes)
 Z2_MAX_LIMIT = 250                  # largest sprocket the tooth-count rules are written for
@@ -210,7 +217,7 @@ class Conditions:
 
     def __post_init__(self):
         for name in FACTOR_NAMES:
-            require_range(name, getattr(self, name), 0.1, 10.0)
+            require_range(name, getattr(self, name), *FACTOR_RANGE)
 
     @property
     def k_e(self) -> float:
@@ -239,7 +246,7 @@ def _conditions(conditions, k_e):
     if conditions is not None and k_e is not None:
         raise GearDesignError("give either conditions (the named factors) or k_e (their product), not both")
     if conditions is None:
-        k = 1.0 if k_e is None else one_number("k_e", require_range("k_e", k_e, 0.1, 20.0))
+        k = 1.0 if k_e is None else one_number("k_e", require_range("k_e", k_e, *K_E_RANGE))
         return None, k, 1.0
     if isinstance(conditions, Mapping):
         conditions = Conditions.from_mapping(conditions)
@@ -400,7 +407,7 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     if (torque_nm is None) == (power_kw is None):
         raise GearDesignError("give exactly one of torque_nm or power_kw")
     n1 = one_number("n1_rpm", require_range("n1_rpm", n1_rpm, *N1_RANGE_RPM, unit="rpm"))
-    u = one_number("ratio", require_range("ratio", ratio, 1.0, 10.0))
+    u = one_number("ratio", require_range("ratio", ratio, *RATIO_RANGE))
     omega = 2.0 * np.pi * n1 / 60.0
     if torque_nm is not None:
         torque = one_number("torque_nm", require_range("torque_nm", torque_nm, *TORQUE_RANGE_NM, unit="N·m"))
@@ -415,14 +422,14 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
     cond, k_e_val, k_d = _conditions(conditions, k_e)
     if ndim(strands) < 0 or isinstance(strands, (str, bytes)):
         raise GearDesignError(f"strands must be whole numbers in [1, 4], got {strands!r}")
-    strands_t = tuple(int(s) for s in np.atleast_1d(require_int("strands", strands, 1, 4)).ravel())
+    strands_t = tuple(int(s) for s in np.atleast_1d(require_int("strands", strands, *STRANDS_RANGE)).ravel())
     if not strands_t or max(strands_t) > 4:
         raise GearDesignError(f"strands must be whole numbers in [1, 4], got {strands!r}")
     if allowable_pressure_mpa is not None:
         allowable_pressure_mpa = one_number("allowable_pressure_mpa", require_positive("allowable_pressure_mpa", allowable_pressure_mpa, "MPa"))
     if allowable_safety_factor is not None:
-        allowable_safety_factor = one_number("allowable_safety_factor", require_range("allowable_safety_factor", allowable_safety_factor, 1.0, 100.0))
-    sag = one_number("sag_factor", require_range("sag_factor", sag_factor, 0.0, 10.0))
+        allowable_safety_factor = one_number("allowable_safety_factor", require_range("allowable_safety_factor", allowable_safety_factor, *SAFETY_FACTOR_RANGE))
+    sag = one_number("sag_factor", require_range("sag_factor", sag_factor, *SAG_FACTOR_RANGE))
     z2_max = require_count("z2_max", z2_max, 9, Z2_MAX_LIMIT)
     if z1 is None:
         # odd counts from 13 up to the rule z1 = 29 − 2u; at u > 8 the rule falls below 13,
@@ -433,7 +440,7 @@ def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e
                 f"ratio = {u:g} needs z2 = {round(u * 13)} teeth on the smallest small sprocket (z1 = 13), above "
                 f"z2_max = {z2_max}; the ratio can be at most {z2_max / 13:.4g} here (raise z2_max or split the ratio)")
     else:
-        z1_values = np.atleast_1d(require_int("z1", z1, 7, 200)).astype(np.int64)
+        z1_values = np.atleast_1d(require_int("z1", z1, *Z1_RANGE)).astype(np.int64)
         if z1_values.size == 0 or z1_values.size > 100:
             raise GearDesignError(f"z1 must list 1 to 100 tooth counts, got {z1_values.size}")
         z2_given = np.round(u * z1_values)

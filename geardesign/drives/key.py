@@ -39,6 +39,8 @@ ENDS = ("rounded", "half", "flat")
 HUB_ALLOWANCE_MM = 5.0     # key shorter than the hub by 5…10 mm (Dunaevsky & Lelikov §6.1): the lower end
 LENGTH_MAX_MM = 10_000.0   # keys, hubs and shafts up to 10 m; past that the tables say nothing
 TORQUE_MAX_NM = 1e9
+ALLOWABLE_MPA_MAX = 1e4   # allowable stresses above 10 GPa are typing slips
+MAX_KEYS = 2              # two keys at 180° are the most a hub takes (GOST 23360-78)
 
 
 def working_length_mm(length_mm, b_mm, end="rounded"):
@@ -174,11 +176,11 @@ def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA
     torque = one_number("torque_nm", require_range("torque_nm", torque_nm, 0.0, TORQUE_MAX_NM, lo_open=True, unit="N·m"))
     hub = one_number("hub_length_mm", require_range("hub_length_mm", hub_length_mm, 0.0, LENGTH_MAX_MM, lo_open=True, unit="mm"))
     allowance = one_number("hub_allowance_mm", require_range("hub_allowance_mm", hub_allowance_mm, 0.0, 50.0, unit="mm"))
-    s_cr = one_number("allowable_crush_mpa", require_range("allowable_crush_mpa", allowable_crush_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
-    s_sh = one_number("allowable_shear_mpa", require_range("allowable_shear_mpa", allowable_shear_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
+    s_cr = one_number("allowable_crush_mpa", require_range("allowable_crush_mpa", allowable_crush_mpa, 0.0, ALLOWABLE_MPA_MAX, lo_open=True, unit="MPa"))
+    s_sh = one_number("allowable_shear_mpa", require_range("allowable_shear_mpa", allowable_shear_mpa, 0.0, ALLOWABLE_MPA_MAX, lo_open=True, unit="MPa"))
     if end not in ENDS:
         raise GearDesignError(f"end must be one of {', '.join(ENDS)}, got {end!r}")
-    max_keys = int(require_range("max_keys", require_int("max_keys", max_keys, 1), 1, 2))
+    max_keys = int(require_range("max_keys", require_int("max_keys", max_keys, 1), 1, MAX_KEYS))
     b, h, t1, t2 = (float(sec[c]) for c in ("b_mm", "h_mm", "t1_mm", "t2_mm"))
 
     lengths = key_lengths_mm()
@@ -261,8 +263,8 @@ def capacity(d_mm, length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA, allowable_s
     lp = float(working_length_mm(length, b, end))
     if lp <= 0:
         raise GearDesignError(f"length_mm must exceed the rounded ends ({length:g} mm leaves l_p = {lp:g} mm)")
-    s_cr = one_number("allowable_crush_mpa", require_range("allowable_crush_mpa", allowable_crush_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
-    s_sh = one_number("allowable_shear_mpa", require_range("allowable_shear_mpa", allowable_shear_mpa, 0.0, 1e4, lo_open=True, unit="MPa"))
+    s_cr = one_number("allowable_crush_mpa", require_range("allowable_crush_mpa", allowable_crush_mpa, 0.0, ALLOWABLE_MPA_MAX, lo_open=True, unit="MPa"))
+    s_sh = one_number("allowable_shear_mpa", require_range("allowable_shear_mpa", allowable_shear_mpa, 0.0, ALLOWABLE_MPA_MAX, lo_open=True, unit="MPa"))
     n_eff = float(_n_eff(n))
     t_crush = s_cr * d * (h - t1) * lp * n_eff / 2000.0
     t_shear = s_sh * d * b * lp * n_eff / 2000.0

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
-import numpy as np
 
 from ..errors import GearDesignError
 from ..validate import require_bool, require_int
@@ -64,7 +63,7 @@ class Mesh:
     @property
     def is_batch(self) -> bool:
         """True when the tooth counts are arrays (many pairs, one rack)."""
-        return np.ndim(self.z1) > 0 or np.ndim(self.z2) > 0
+        return not (type(self.z1) is int and type(self.z2) is int)   # validation made scalars ints
 
     def with_teeth(self, z1, z2) -> "Mesh":
         """The same rack and tips with other tooth counts."""

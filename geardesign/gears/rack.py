@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from ..errors import GearDesignError
 from ..validate import _show, ndim, one_number, require_finite, require_range
 
-__all__ = ["BasicRack", "ALPHA_RANGE_DEG"]
+__all__ = ["BasicRack", "ALPHA_RANGE_DEG", "HA_RANGE", "C_RANGE"]
 
 # Pressure angles accepted: 1°–44° (standards use 14.5°–25°; the accuracy tests cover 10°–35°).
 # At 0° the involute degenerates, at 45° the rack tooth has no tip land.
@@ -15,6 +15,7 @@ ALPHA_RANGE_DEG = (1.0, 44.0)
 # Addendum coefficient: stub teeth use 0.8, standard 1.0, high-contact designs up to ~1.3; below
 # 0.3 there is no tooth to speak of and the contact ratio collapses to nothing.
 HA_RANGE = (0.3, 2.0)
+C_RANGE = (0.0, 1.0)       # bottom clearance coefficient: 0.25 standard, up to ~0.4 for fine pitch
 
 
 @dataclass(frozen=True)
@@ -49,7 +50,7 @@ class BasicRack:
     def __post_init__(self):
         if (type(self.alpha_deg) is float and type(self.ha) is float and type(self.c) is float
                 and type(self.rho_f) is float and ALPHA_RANGE_DEG[0] <= self.alpha_deg <= ALPHA_RANGE_DEG[1]
-                and HA_RANGE[0] <= self.ha <= HA_RANGE[1] and 0.0 <= self.c <= 1.0
+                and HA_RANGE[0] <= self.ha <= HA_RANGE[1] and C_RANGE[0] <= self.c <= C_RANGE[1]
                 and 0.0 <= self.rho_f <= self.rho_f_max + 1e-12):
             return   # plain floats in range (the standard rack): no numpy validation needed
         for name in ("alpha_deg", "ha", "c", "rho_f"):
@@ -59,7 +60,7 @@ class BasicRack:
             object.__setattr__(self, name, one_number(name, require_finite(name, value)))
         require_range("alpha_deg", self.alpha_deg, *ALPHA_RANGE_DEG, unit="deg")
         require_range("ha", self.ha, *HA_RANGE)
-        require_range("c", self.c, 0.0, 1.0)
+        require_range("c", self.c, *C_RANGE)
         rho_max = self.rho_f_max
         if not (0.0 <= self.rho_f <= rho_max + 1e-12):
             raise GearDesignError(

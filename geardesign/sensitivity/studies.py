@@ -47,17 +47,6 @@ def sweep_parameters(target: str = "gear") -> tuple:
     raise GearDesignError(f"target must be 'gear' or 'chain', got {target!r}")
 
 
-def base_from_scene(target: str, section: dict) -> dict:
-    """The keyword arguments of :func:`sweep` for a validated scene section."""
-    if target == "gear":
-        out = {k: section[k] for k in ("z1", "z2", "objective", "method", "tip_shortening") if k in section}
-        out.update(m=section["module"], checks=dict(section.get("checks") or {}) or None,
-                   rack=section.get("_rack"), bounds=tuple(section["bounds"]), a_w=section.get("a_w"))
-        return out
-    from ..scene.scene import _chain_kwargs
-    return _chain_kwargs(section)
-
-
 # --- gear ----------------------------------------------------------------------------------------
 
 def _rack_with(rack, **changes):

@@ -1,0 +1,216 @@
+"""Scene files: one design case in TOML, validated, run, and written up as a report.
+
+A scene has the optional sections ``[gear]``, ``[teeth]``, ``[chain]``, ``[key]`` (or several
+``[[key]]``) and ``[study]``, plus top-level ``title`` and ``description``. Only the sections
+present are modelled, and only the catalogs they need are loaded. The keys mirror the Python
+arguments::
+
+    title = "Seed 000 engine pair"
+    [gear]
+    module = 8
+    z1 = 17
+    z2 = 26
+    objective = "max_x_sum"
+    x1 = 0.898          # optional: also report this pair's geometry and checks
+    x2 = 0.517
+    [gear.checks]
+    eps_alpha_min = 1.2
+    [gear.rack]
+    alpha_deg = 20
+
+Every value is checked before anything runs: an unknown section or key, a wrong type, a
+missing required value or a value out of range raises one :class:`GearDesignError` naming
+the file, the key and what was expected. :func:`run_scene` computes everything in memory and
+only then writes ``report.md``, the tables (CSV) and the plots (PNG), through a temporary
+directory moved into place, so a failed run leaves nothing behind.
+"""
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..errors import GearDesignError
+from .schema import SECTIONS, Where, section_schema, type_name, validate_table
+
+__all__ = ["Scene", "load_scene", "SCENE_BYTES_MAX", "SCENE_DEPTH_MAX", "SCENE_INT_MAX"]
+
+
+@dataclass
+class Scene:
+    """A validated scene: ``sections`` maps each present section to its checked keys."""
+
+    path: str
+    title: str
+    description: str
+    sections: dict = field(default_factory=dict)
+
+    def __contains__(self, name):
+        return name in self.sections
+
+def _rack(where, section, spec):
+    from ..gears.rack import BasicRack
+    if not spec:
+        return None
+    try:
+        return BasicRack(**spec)
+    except GearDesignError as exc:
+        where.fail(f"{section}.rack", None, str(exc))
+
+def _cross_checks(where: Where, s: dict):
+    """Rules between keys, and the checks the libraries would make later, made up front."""
+    if "gear" in s:
+        g = s["gear"]
+        if ("x1" in g) != ("x2" in g):
+            where.fail("gear", "x2" if "x1" in g else "x1", "missing; give both x1 and x2 or neither")
+        lo, hi = g["bounds"]
+        if not lo < hi:
+            where.fail("gear", "bounds", f"expected [lo, hi] with lo < hi, got {list(g['bounds'])}")
+        g["_rack"] = _rack(where, "gear", g.get("rack"))
+        if "a_w" in g:
+            alpha = math.radians(g.get("rack", {}).get("alpha_deg", 20.0))
+            a = g["module"] * (g["z1"] + g["z2"]) / 2
+            if g["a_w"] <= a * math.cos(alpha):
+                where.fail("gear", "a_w", f"expected a centre distance > a·cos(alpha) = {a * math.cos(alpha):.6g} mm, "
+                                          f"got {g['a_w']!r}")
+        if "x1" in g:
+            from ..gears.pair import GearPair
+            try:
+                GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **({"rack": g["_rack"]} if g["_rack"] else {}),
+                         tip_shortening=g["tip_shortening"])
+            except GearDesignError as exc:
+                where.fail("gear", "x1/x2", f"expected a pair that can be built: {exc}")
+    if "teeth" in s:
+        t = s["teeth"]
+        lo, hi = t["z1_range"]
+        if lo > hi:
+            where.fail("teeth", "z1_range", f"expected [min, max] with min <= max, got {list(t['z1_range'])}")
+        t["_rack"] = _rack(where, "teeth", t.get("rack"))
+    if "chain" in s:
+        c = s["chain"]
+        if ("torque_nm" in c) == ("power_kw" in c):
+            where.fail("chain", "torque_nm", "expected exactly one of torque_nm or power_kw")
+        if "k_e" in c and c.get("conditions"):
+            where.fail("chain", "k_e", "expected either k_e or [chain.conditions], not both")
+        if c.get("conditions"):
+            from ..drives.chain import Conditions
+            try:
+                Conditions.from_mapping(c["conditions"])
+            except GearDesignError as exc:
+                where.fail("chain.conditions", None, str(exc))
+    for i, k in enumerate(s.get("key", [])):
+        from ..drives.key import section as key_section
+        try:
+            key_section(k["d_mm"])
+        except GearDesignError as exc:
+            where.fail("key", "d_mm", f"expected a shaft diameter in the key table: {exc}")
+    if "study" in s:
+        st = s["study"]
+        target = st["target"]
+        if target not in s:
+            where.fail("study", "target", f"expected a section that the scene models; [{target}] is missing")
+        if ("parameter2" in st) != ("values2" in st):
+            where.fail("study", "values2" if "parameter2" in st else "parameter2",
+                       "missing; give parameter2 and values2 together")
+        from ..sensitivity.studies import sweep_parameters
+        allowed = sweep_parameters(target)
+        for key in ("parameter", "parameter2"):
+            if key in st and st[key] not in allowed:
+                where.fail("study", key, f"expected one of {', '.join(allowed)} for target {target!r}, got {st[key]!r}")
+        ints = ("z1", "z2", "strands")
+        for key, vals in (("values", "parameter"), ("values2", "parameter2")):
+            if key in st and st.get(vals) in ints and any(not float(v).is_integer() for v in st[key]):
+                where.fail("study", key, f"expected whole numbers for {st[vals]}, got {list(st[key])}")
+        if st.get("parameter") == st.get("parameter2"):
+            where.fail("study", "parameter2", "expected a parameter other than parameter")
+
+def _chain_catalog(where, path: Path, name: str) -> str:
+    """A built-in chain catalog's name, or a user's CSV (relative to the scene file) as a path."""
+    from ..catalogs.tables import CHAIN_CATALOGS
+
+    if name in CHAIN_CATALOGS:
+        return name
+    if name.lower().endswith(".csv"):
+        csv = (path.parent / name) if not Path(name).is_absolute() else Path(name)
+        if not csv.is_file():
+            where.fail("chain", "catalog", f"the chain catalog {str(csv)!r} does not exist")
+        return str(csv)
+    where.fail("chain", "catalog", f"expected one of {', '.join(CHAIN_CATALOGS)} or a .csv file of chains "
+                                   f"(relative to the scene file), got {name!r}")
+
+SCENE_BYTES_MAX = 1 << 20    # 1 MiB: a scene is a page of settings, not data
+
+SCENE_DEPTH_MAX = 8          # sections, tables of tables, lists: a few levels at most
+
+SCENE_INT_MAX = 10**15       # integers beyond this are typing slips (and overflow floats)
+
+def _read_bounded(path: Path) -> bytes:
+    """The scene file's bytes: a regular file of at most SCENE_BYTES_MAX (a device such as
+    /dev/zero, a folder or a huge file is refused before it is read)."""
+    try:
+        if not path.exists():
+            raise GearDesignError(f"{path}: cannot read the scene file (no such file)")
+        if not path.is_file():
+            raise GearDesignError(f"{path}: not a regular file (a scene is a .toml text file)")
+        with open(path, "rb") as fh:
+            text = fh.read(SCENE_BYTES_MAX + 1)
+    except OSError as exc:
+        raise GearDesignError(f"{path}: cannot read the scene file ({exc.strerror or exc})") from None
+    if len(text) > SCENE_BYTES_MAX:
+        raise GearDesignError(f"{path}: larger than {SCENE_BYTES_MAX // 1024} KiB; a scene file is a page of settings")
+    return text
+
+def _check_values(path: Path, value, key: str = "", depth: int = 0) -> None:
+    """Refuse nesting deeper than SCENE_DEPTH_MAX and integers beyond SCENE_INT_MAX, by key."""
+    if depth > SCENE_DEPTH_MAX:
+        raise GearDesignError(f"{path}: {key or 'the file'} is nested deeper than {SCENE_DEPTH_MAX} levels")
+    if isinstance(value, dict):
+        for k, v in value.items():
+            _check_values(path, v, f"{key}.{k}" if key else str(k), depth + 1)
+    elif isinstance(value, list):
+        for v in value:
+            _check_values(path, v, key, depth + 1)
+    elif isinstance(value, int) and not isinstance(value, bool) and abs(value) > SCENE_INT_MAX:
+        raise GearDesignError(f"{path}: {key} = an integer of {len(str(abs(value)))} digits; "
+                              f"whole numbers must be within ±{SCENE_INT_MAX:.0e}")
+
+def load_scene(path) -> Scene:
+    """Read and validate a scene file; raise one :class:`GearDesignError` on the first problem."""
+    path = Path(path)
+    where = Where(path)
+    text = _read_bounded(path)
+    try:
+        raw = tomllib.loads(text.decode("utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise GearDesignError(f"{path}: not a valid TOML file: {' '.join(str(exc).split())}") from None
+    except RecursionError:
+        raise GearDesignError(f"{path}: nested deeper than a scene can be (at most {SCENE_DEPTH_MAX} levels)") from None
+    _check_values(path, raw)
+    top = {k: v for k, v in raw.items() if not isinstance(v, (dict, list)) or k not in SECTIONS}
+    for k, v in top.items():
+        if k not in section_schema(""):
+            where.fail("", k, f"unknown section or key; expected sections {', '.join(f'[{s}]' for s in SECTIONS)} "
+                              f"and the keys title, description")
+    head = validate_table(where, "", top, section_schema(""))
+    sections = {}
+    for name in SECTIONS:
+        if name not in raw:
+            continue
+        v = raw[name]
+        if name == "key":
+            tables = v if isinstance(v, list) else [v]
+            if not tables or not all(isinstance(t, dict) for t in tables):
+                where.fail("key", None, f"expected a table [key] or tables [[key]], got {v!r}")
+            sections["key"] = [validate_table(where, "key" if len(tables) == 1 else f"key #{i + 1}", t, section_schema("key"))
+                               for i, t in enumerate(tables)]
+            continue
+        if not isinstance(v, dict):
+            where.fail(name, None, f"expected a table [{name}], got {v!r} ({type_name(v)})")
+        sections[name] = validate_table(where, name, v, section_schema(name))
+    if not sections:
+        where.fail("", None, f"expected at least one of the sections {', '.join(f'[{s}]' for s in SECTIONS)}")
+    _cross_checks(where, sections)
+    if "chain" in sections:
+        sections["chain"]["catalog"] = _chain_catalog(where, path, sections["chain"]["catalog"])
+    return Scene(str(path), head.get("title", path.stem), head.get("description", ""), sections)

@@ -1,0 +1,251 @@
+"""The scene schema: a tiny language of typed keys, and one table of keys per section, built from
+the library's own defaults, ranges and choices (each section's table imports only what that
+section models, on first use)."""
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+
+from ..errors import GearDesignError
+
+__all__ = ["SECTIONS", "section_schema", "validate_table", "Where", "type_name"]
+
+SECTIONS = ("gear", "teeth", "chain", "key", "study")
+
+
+@dataclass(frozen=True)
+class _Key:
+    """One scene key: its kind, whether it is required, its default and its range."""
+
+    kind: str                   # "float", "int", "bool", "str", "choice", "floats", "ints", "float_or_str"
+    required: bool = False
+    default: object = None
+    lo: float | None = None
+    hi: float | None = None
+    lo_open: bool = False
+    choices: tuple = ()
+    length: int | None = None   # for lists: exact length
+
+    def expected(self) -> str:
+        rng = ""
+        if self.lo is not None or self.hi is not None:
+            left = "(" if self.lo_open else "["
+            lo = "-inf" if self.lo is None else f"{self.lo:g}"
+            hi = "inf" if self.hi is None else f"{self.hi:g}"
+            rng = f" in {left}{lo}, {hi}]"
+        if self.kind == "float":
+            return "a number" + rng
+        if self.kind == "int":
+            return "a whole number" + rng
+        if self.kind == "bool":
+            return "true or false"
+        if self.kind == "str":
+            return "a string"
+        if self.kind == "choice":
+            return "one of " + ", ".join(repr(c) for c in self.choices)
+        if self.kind == "float_or_str":
+            return "a number" + rng + " or one of " + ", ".join(repr(c) for c in self.choices)
+        n = f"a list of {self.length} " if self.length else "a list of "
+        what = "numbers" if self.kind == "floats" else "whole numbers"
+        return f"{n}{what}{rng}"
+
+def _F(**kw):
+    return _Key("float", **kw)
+
+def _I(**kw):
+    return _Key("int", **kw)
+
+
+def _rack_schema() -> dict:
+    from ..gears.rack import ALPHA_RANGE_DEG, C_RANGE, HA_RANGE, BasicRack
+
+    std = BasicRack()
+    return {"alpha_deg": _F(default=std.alpha_deg, lo=ALPHA_RANGE_DEG[0], hi=ALPHA_RANGE_DEG[1]),
+            "ha": _F(default=std.ha, lo=HA_RANGE[0], hi=HA_RANGE[1]),
+            "c": _F(default=std.c, lo=C_RANGE[0], hi=C_RANGE[1]),
+            "rho_f": _F(default=std.rho_f, lo=0.0)}   # its upper limit depends on the rest: BasicRack checks it
+
+
+def _checks_schema() -> dict:
+    from ..gears.checks import EPS_ALPHA_MIN_RANGE, SA_MIN_RANGE
+
+    return {"eps_alpha_min": _F(lo=EPS_ALPHA_MIN_RANGE[0], hi=EPS_ALPHA_MIN_RANGE[1]),
+            "sa_min": _F(lo=SA_MIN_RANGE[0], hi=SA_MIN_RANGE[1]), "undercut": _Key("bool"),
+            "interference": _Key("bool"), "jamming": _Key("bool")}
+
+
+def _shift_keys() -> dict:
+    """Keys the [gear] and [teeth] sections share with optimize_shifts."""
+    from ..shifts.objectives import OBJECTIVES
+    from ..shifts.optimize import METHODS
+
+    return {"objective": _Key("choice", choices=tuple(OBJECTIVES)),   # default: max_x_sum, or balanced_sliding with a_w
+            "method": _Key("choice", default="exact", choices=METHODS),
+            "checks": _checks_schema(), "rack": _rack_schema()}
+
+
+def _gear_schema() -> dict:
+    from ..gears.geometry import M_RANGE_MM, X_ABS_MAX
+    from ..gears.mesh import Z_MAX, Z_MIN
+    from ..shifts.problem import DEFAULT_BOUNDS, X_WINDOW_LIMIT
+
+    return {"module": _F(required=True, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
+            "z1": _I(required=True, lo=Z_MIN, hi=Z_MAX), "z2": _I(required=True, lo=Z_MIN, hi=Z_MAX),
+            "x1": _F(lo=-X_ABS_MAX, hi=X_ABS_MAX), "x2": _F(lo=-X_ABS_MAX, hi=X_ABS_MAX),
+            "a_w": _F(lo=0.0, lo_open=True), "tip_shortening": _Key("bool", default=True),
+            "bounds": _Key("floats", default=DEFAULT_BOUNDS, lo=-X_WINDOW_LIMIT, hi=X_WINDOW_LIMIT, length=2),
+            **_shift_keys()}
+
+
+def _teeth_schema() -> dict:
+    from ..gears.geometry import M_RANGE_MM
+    from ..gears.mesh import Z_MAX, Z_MIN
+
+    return {"ratio": _F(required=True, lo=1.0, hi=20.0), "ratio_tol": _F(default=0.02, lo=0.0, hi=0.5),
+            "module": _Key("float_or_str", lo=M_RANGE_MM[0], hi=M_RANGE_MM[1], choices=("series",)),
+            "a_w": _Key("float_or_str", lo=0.0, lo_open=True, choices=("series",)),
+            "z1_range": _Key("ints", default=(8, 40), lo=Z_MIN, hi=Z_MAX, length=2),
+            "z_sum_max": _I(lo=2 * Z_MIN, hi=2 * Z_MAX), "top": _I(default=10, lo=1, hi=1000), **_shift_keys()}
+
+
+def _chain_schema() -> dict:
+    from ..drives import chain as c
+
+    return {"torque_nm": _F(lo=c.TORQUE_RANGE_NM[0], hi=c.TORQUE_RANGE_NM[1]),
+            "power_kw": _F(lo=c.POWER_RANGE_KW[0], hi=c.POWER_RANGE_KW[1]),
+            "n1_rpm": _F(required=True, lo=c.N1_RANGE_RPM[0], hi=c.N1_RANGE_RPM[1]),
+            "ratio": _F(required=True, lo=c.RATIO_RANGE[0], hi=c.RATIO_RANGE[1]),
+            "catalog": _Key("str", default="gost13568"),   # a built-in chain table or a CSV beside the scene
+            "k_e": _F(lo=c.K_E_RANGE[0], hi=c.K_E_RANGE[1]),
+            "allowable_pressure_mpa": _F(lo=0.0, lo_open=True),
+            "allowable_safety_factor": _F(lo=c.SAFETY_FACTOR_RANGE[0], hi=c.SAFETY_FACTOR_RANGE[1]),
+            "strands": _Key("ints", default=(1, 2, 3), lo=c.STRANDS_RANGE[0], hi=c.STRANDS_RANGE[1]),
+            "z1": _I(lo=c.Z1_RANGE[0], hi=c.Z1_RANGE[1]),
+            "center_distance_mm": _F(lo=0.0, hi=c.CENTER_DISTANCE_MAX_MM, lo_open=True),
+            "objective": _Key("choice", default=c.OBJECTIVES[0], choices=c.OBJECTIVES),
+            "method": _Key("choice", default=c.METHODS[0], choices=c.METHODS),
+            "sag_factor": _F(default=6.0, lo=c.SAG_FACTOR_RANGE[0], hi=c.SAG_FACTOR_RANGE[1]),
+            "top": _I(default=10, lo=1, hi=1000),
+            "conditions": {k: _Key("float_or_str", lo=c.FACTOR_RANGE[0], hi=c.FACTOR_RANGE[1], choices=())
+                           for k in c.FACTOR_NAMES}}
+
+
+def _key_schema() -> dict:
+    from ..drives import key as k
+
+    return {"name": _Key("str"), "d_mm": _F(required=True, lo=0.0, hi=k.LENGTH_MAX_MM, lo_open=True),
+            "torque_nm": _F(required=True, lo=0.0, hi=k.TORQUE_MAX_NM, lo_open=True),
+            "hub_length_mm": _F(required=True, lo=0.0, hi=k.LENGTH_MAX_MM, lo_open=True),
+            "allowable_crush_mpa": _F(default=k.DEFAULT_CRUSH_MPA, lo=0.0, hi=k.ALLOWABLE_MPA_MAX, lo_open=True),
+            "allowable_shear_mpa": _F(default=k.DEFAULT_SHEAR_MPA, lo=0.0, hi=k.ALLOWABLE_MPA_MAX, lo_open=True),
+            "end": _Key("choice", default=k.ENDS[0], choices=k.ENDS),
+            "max_keys": _I(default=k.MAX_KEYS, lo=1, hi=k.MAX_KEYS)}
+
+
+def _study_schema() -> dict:
+    return {"target": _Key("choice", default="gear", choices=("gear", "chain")),
+            "parameter": _Key("str", required=True), "values": _Key("floats", required=True),
+            "parameter2": _Key("str"), "values2": _Key("floats"),
+            "tornado": _Key("bool", default=True), "step": _F(default=0.02, lo=0.0, hi=0.5, lo_open=True)}
+
+
+_BUILDERS = {"": lambda: {"title": _Key("str"), "description": _Key("str")}, "gear": _gear_schema,
+             "teeth": _teeth_schema, "chain": _chain_schema, "key": _key_schema, "study": _study_schema}
+
+
+@functools.cache
+def section_schema(name: str) -> dict:
+    """The keys of one section (``""`` for the top level): name -> _Key, or a nested table."""
+    return _BUILDERS[name]()
+
+
+class Where:
+    def __init__(self, path):
+        self.path = str(path)
+
+    def fail(self, section: str, key: str | None, text: str):
+        where = f"[{section}]" if section else "top level"
+        if key is not None:
+            where += f" {key}"
+        raise GearDesignError(f"{self.path}: {where}: {text}")
+
+def type_name(v) -> str:
+    return {bool: "boolean", int: "integer", float: "float", str: "string", list: "array",
+            dict: "table"}.get(type(v), type(v).__name__)
+
+def _check_value(where: Where, section: str, key: str, spec: _Key, v):
+    def bad(extra=""):
+        where.fail(section, key, f"expected {spec.expected()}, got {v!r} ({type_name(v)}){extra}")
+
+    def in_range(x):
+        if spec.lo is not None and (x <= spec.lo if spec.lo_open else x < spec.lo):
+            return False
+        return not (spec.hi is not None and x > spec.hi)
+
+    def number(x, whole):
+        if isinstance(x, bool) or not isinstance(x, (int, float)):
+            return None
+        if isinstance(x, float) and not math.isfinite(x):
+            return None
+        if whole:
+            if isinstance(x, float) and not x.is_integer():
+                return None
+            return int(x)
+        return float(x)
+
+    k = spec.kind
+    if k == "bool":
+        if not isinstance(v, bool):
+            bad()
+        return v
+    if k == "str":
+        if not isinstance(v, str):
+            bad()
+        return v
+    if k == "choice":
+        if not isinstance(v, str) or v not in spec.choices:
+            bad()
+        return v
+    if k in ("float", "int", "float_or_str"):
+        if k == "float_or_str" and isinstance(v, str):
+            if spec.choices and v not in spec.choices:
+                bad()
+            return v
+        x = number(v, k == "int")
+        if x is None or not in_range(x):
+            bad()
+        return x
+    # lists
+    if not isinstance(v, list) or not v or (spec.length and len(v) != spec.length):
+        bad()
+    out = []
+    for item in v:
+        x = number(item, k == "ints")
+        if x is None or not in_range(x):
+            bad(f"; the element {item!r} is not")
+        out.append(x)
+    return tuple(out)
+
+def validate_table(where: Where, section: str, table: dict, schema: dict) -> dict:
+    out = {}
+    for key, v in table.items():
+        if key not in schema:
+            allowed = ", ".join(schema)
+            where.fail(section, key, f"unknown key; expected one of {allowed}")
+        spec = schema[key]
+        if isinstance(spec, dict):
+            if not isinstance(v, dict):
+                where.fail(section, key, f"expected a table [{section}.{key}], got {v!r} ({type_name(v)})")
+            out[key] = validate_table(where, f"{section}.{key}", v, spec)
+        else:
+            out[key] = _check_value(where, section, key, spec, v)
+    for key, spec in schema.items():
+        if isinstance(spec, dict):
+            continue
+        if key not in out:
+            if spec.required:
+                where.fail(section, key, f"missing; expected {spec.expected()}")
+            if spec.default is not None:
+                out[key] = spec.default
+    return out

@@ -1,0 +1,241 @@
+"""The scene's sections, each run into a :class:`SceneReport`: tables, figures and Markdown in memory.
+Each runner imports only the part of the library its section models."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .load import Scene
+
+__all__ = ["SceneReport", "RUNNERS", "run_study", "base_from_scene", "chain_kwargs"]
+
+
+@dataclass
+class SceneReport:
+    """Everything a scene produced, in memory: tables, figures, Markdown and a summary."""
+
+    scene: Scene
+    tables: dict = field(default_factory=dict)      # name -> DataFrame (written as name.csv)
+    figures: dict = field(default_factory=dict)     # name -> matplotlib Figure (written as name.png)
+    markdown: list = field(default_factory=list)
+    summary: list = field(default_factory=list)
+    results: dict = field(default_factory=dict)     # section -> result object(s)
+    time_s: float = 0.0
+
+    def to_dict(self) -> dict:
+        return {"scene": self.scene.path, "title": self.scene.title, "summary": list(self.summary),
+                "tables": sorted(f"{k}.csv" for k in self.tables), "figures": sorted(f"{k}.png" for k in self.figures),
+                "time_s": self.time_s}
+
+def _md_table(frame, floatfmt="{:.6g}") -> str:
+    import numpy as np
+
+    def cell(v):
+        if isinstance(v, (bool, np.bool_)):
+            return "yes" if v else "no"
+        if isinstance(v, (float, np.floating)):
+            return "–" if not np.isfinite(v) else floatfmt.format(v)
+        return str(v).replace("|", "\\|")
+    cols = list(frame.columns)
+    lines = ["| " + " | ".join(map(str, cols)) + " |", "|" + "---|" * len(cols)]
+    for row in frame.itertuples(index=False):
+        lines.append("| " + " | ".join(cell(v) for v in row) + " |")
+    return "\n".join(lines)
+
+def _checks_dict(spec: dict | None) -> dict | None:
+    return dict(spec) if spec else None
+
+def _run_gear(rep: SceneReport, g: dict):
+    import matplotlib.pyplot as plt
+    from ..gears.pair import GearPair
+    from ..shifts.region import feasible_region
+    from ..shifts.optimize import optimize_shifts
+
+    rack = g["_rack"]
+    checks = _checks_dict(g.get("checks"))
+    kw = dict(checks=checks, rack=rack, tip_shortening=g["tip_shortening"], bounds=tuple(g["bounds"]))
+    res = optimize_shifts(g["z1"], g["z2"], objective=g.get("objective"), method=g["method"], m=g["module"],
+                          a_w=g.get("a_w"), **kw)
+    reg = feasible_region(g["z1"], g["z2"], m=g["module"], **kw)
+    rep.results["gear"] = {"optimum": res, "region": reg}
+    md = rep.markdown
+    md += [f"## Gear pair z1/z2 = {g['z1']}/{g['z2']}, m = {g['module']:g} mm", ""]
+    limits = {k: v for k, v in (checks or {}).items()}
+    md += [f"Checks: {', '.join(reg.checks)}" + (f" (limits: {', '.join(f'{k} = {v}' for k, v in limits.items())})"
+                                                  if limits else " (default limits: ε_α >= 1.2, s_a >= 0.25 m)"), ""]
+    if reg.feasible:
+        md += [f"Feasible region of (x1, x2): area {reg.area:.4f}, bounded by {', '.join(reg.limiting_checks())}.", ""]
+    else:
+        md += [f"The feasible region is **empty**: checks {', '.join(reg.conflict)} conflict.", ""]
+    import pandas as pd
+
+    opt = pd.DataFrame([{"objective": res.objective, "method": res.method, "x1": res.x1, "x2": res.x2,
+                         "x_sum": res.x1 + res.x2, "fun": res.fun, "eps_alpha": res.eps_alpha,
+                         "a_w_mm": res.a_w, "active": ", ".join(res.active) or "-", "success": res.success}])
+    rep.tables["gear_optimum"] = opt
+    rep.tables["gear_optimum_checks"] = res.to_frame()
+    rep.tables["gear_region_boundary"] = reg.boundary
+    md += ["### Optimum", "", f"{res.message}.", "", _md_table(opt), "",
+           "Margins of every check at the optimum, and d(fun)/d(limit) of the active ones:", "",
+           _md_table(res.to_frame()), ""]
+    sm = (f"gear {g['z1']}/{g['z2']} m={g['module']:g}: optimum ({res.objective}) x1 = {res.x1:.4f}, "
+          f"x2 = {res.x2:.4f}, eps_alpha = {res.eps_alpha:.4f}, a_w = {res.a_w:.4f} mm, "
+          f"active {', '.join(res.active) or '-'}; region area {reg.area:.4f}")
+    rep.summary.append(sm if res.success else f"gear {g['z1']}/{g['z2']}: no feasible shifts: {res.message}")
+    geo_opt = GearPair(g["module"], g["z1"], g["z2"], res.x1, res.x2, **({"rack": rack} if rack else {}),
+                       tip_shortening=g["tip_shortening"]).geometry().to_frame()
+    rep.tables["gear_optimum_geometry"] = geo_opt
+    given = None
+    if "x1" in g:
+        pair = GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **({"rack": rack} if rack else {}),
+                        tip_shortening=g["tip_shortening"])
+        lim = {k: v for k, v in (checks or {}).items()}
+        # with a housing a_w as well, the given shifts are checked against it (center_distance)
+        chk = pair.checks(**{k: lim[k] for k in ("eps_alpha_min", "sa_min", "undercut", "interference") if k in lim},
+                          jamming=lim.get("jamming", True), housing_a_w=g.get("a_w"))
+        geo = pair.geometry().to_frame()
+        rep.tables["gear_given_geometry"] = geo
+        rep.tables["gear_given_checks"] = chk
+        failed = chk.loc[~chk["ok"], "check"].tolist()
+        verdict = ("passes every check" if not failed else f"**fails** {', '.join(failed)}")
+        ga = pair.geometry()
+        md += [f"### Given shifts x1 = {g['x1']:g}, x2 = {g['x2']:g}", "",
+               f"This pair {verdict}: α_w = {ga.alpha_w_deg:.4f}°, a_w = {ga.a_w:.4f} mm, "
+               f"ε_α = {ga.eps_alpha:.4f}.", "", _md_table(chk.drop(columns=["label"])), "",
+               "Geometry of the given pair (mm, degrees):", "", _md_table(geo[["quantity", "value", "unit"]]), ""]
+        rep.summary.append(f"given x1/x2 = {g['x1']:g}/{g['x2']:g}: eps_alpha = {ga.eps_alpha:.4f}, "
+                           + ("all checks pass" if not failed else f"FAILS {', '.join(failed)}"))
+        given = (g["x1"], g["x2"])
+    md += ["Geometry at the optimum (mm, degrees):", "", _md_table(geo_opt[["quantity", "value", "unit"]]), ""]
+    fig, ax = plt.subplots(figsize=(8.6, 6.2))
+    reg.plot(ax=ax, optimum=res if res.success else None, proposed=given, x_sum=res.x_sum_fixed)
+    rep.figures["gear_region"] = fig
+    md += ["![blocking contour](gear_region.png)", ""]
+
+def _run_teeth(rep: SceneReport, t: dict):
+    from ..shifts.teeth import select_teeth
+
+    kw = dict(ratio=t["ratio"], ratio_tol=t["ratio_tol"], m=t.get("module"), a_w=t.get("a_w"),
+              z1_range=tuple(t["z1_range"]), z_sum_max=t.get("z_sum_max"), objective=t.get("objective"),
+              checks=_checks_dict(t.get("checks")), rack=t["_rack"], method=t["method"])
+    sel = select_teeth(**kw)
+    rep.results["teeth"] = sel
+    rep.tables["teeth"] = sel.table
+    cols = [c for c in ("rank", "z1", "z2", "ratio", "ratio_error", "module_mm", "a_w_mm", "x1", "x2", "eps_alpha",
+                        "objective", "feasible", "reason") if c in sel.table.columns]
+    rep.markdown += [f"## Tooth counts for u = {t['ratio']:g} (± {100 * t['ratio_tol']:g} %)", "", sel.choice, "",
+                     _md_table(sel.table[cols].head(t["top"])), ""]
+    b = sel.best
+    rep.summary.append("teeth: " + (f"z1/z2 = {int(b['z1'])}/{int(b['z2'])}, x1 = {b['x1']:.4f}, x2 = {b['x2']:.4f}"
+                                    if b is not None else "no feasible tooth counts"))
+
+def chain_kwargs(c: dict) -> dict:
+    kw = {k: c[k] for k in ("torque_nm", "power_kw", "n1_rpm", "ratio", "catalog", "k_e", "allowable_pressure_mpa",
+                            "allowable_safety_factor", "z1", "center_distance_mm", "objective", "method",
+                            "sag_factor") if k in c}
+    kw["strands"] = tuple(c["strands"])
+    if c.get("conditions"):
+        kw["conditions"] = dict(c["conditions"])
+    return kw
+
+def _run_chain(rep: SceneReport, c: dict):
+    from ..drives.chain import design
+
+    res = design(**chain_kwargs(c))
+    rep.results["chain"] = res
+    rep.tables["chain_candidates"] = res.candidates
+    rep.tables["chain_blocking"] = res.blocking
+    load = f"T1 = {c['torque_nm']:g} N·m" if "torque_nm" in c else f"P = {c['power_kw']:g} kW"
+    md = rep.markdown
+    md += [f"## Roller chain: {load}, n1 = {c['n1_rpm']:g} rpm, u = {c['ratio']:g} ({res.catalog}, {res.method})", "",
+           f"{res.message}. K_e = {res.k_e:.4g}.", ""]
+    if res.pitch_estimate_mm:
+        md += ["Classic pitch estimate: " + ", ".join(f"{k} strand(s) t >= {v:.2f} mm"
+                                                      for k, v in res.pitch_estimate_mm.items()) + ".", ""]
+    show = [col for col in ("designation", "pitch_mm", "strands", "z1", "z2", "links", "center_distance_mm",
+                            "speed_m_s", "force_n", "pressure_mpa", "allowable_pressure_mpa", "safety_factor",
+                            "sprocket1_pitch_diameter_mm", "sprocket2_tip_diameter_mm", "mass_kg_m", "margin_pressure", "margin_safety", "min_margin", "feasible")
+            if col in res.candidates.columns]
+    md += ["Best candidates:", "", _md_table(res.candidates[show].head(c["top"])), ""]
+    for note in res.notes:
+        md += [f"- {note}"]
+    if res.notes:
+        md += [""]
+    b = res.best
+    rep.summary.append("chain: " + (f"{b['designation']} x{int(b['strands'])}, z1/z2 = {int(b['z1'])}/{int(b['z2'])}, "
+                                    f"{int(b['links'])} links, a = {b['center_distance_mm']:.2f} mm, "
+                                    f"limiting {b['limiting_check']} (margin {b['min_margin']:+.3f})"
+                                    if b is not None else f"no chain passes: {res.message}"))
+
+def _run_keys(rep: SceneReport, keys: list):
+    from ..drives.key import select
+
+    rows, results = [], []
+    for i, k in enumerate(keys):
+        sel = select(k["d_mm"], k["torque_nm"], k["hub_length_mm"], k["allowable_crush_mpa"], k["allowable_shear_mpa"],
+                     k["end"], k["max_keys"])
+        results.append(sel)
+        row = {"name": k.get("name", f"key {i + 1}")}
+        row.update(sel.to_dict())
+        rows.append(row)
+        rep.summary.append(f"key '{row['name']}': {sel.message}"
+                           + (f", crush {sel.crush_mpa:.1f}/{sel.allowable_crush_mpa:g} MPa" if sel.feasible else ""))
+    rep.results["key"] = results
+    import pandas as pd
+
+    frame = pd.DataFrame(rows)
+    rep.tables["keys"] = frame
+    show = ["name", "d_mm", "torque_nm", "hub_length_mm", "b_mm", "h_mm", "t1_mm", "length_mm", "working_length_mm",
+            "n_keys", "crush_mpa", "allowable_crush_mpa", "shear_mpa", "allowable_shear_mpa", "margin_crush",
+            "margin_shear", "feasible"]
+    rep.markdown += ["## Parallel keys", "", *[f"- {r['name']}: {r['message']}" for r in rows], "",
+                     _md_table(frame[show]), ""]
+
+def run_study(rep: SceneReport, st: dict, sections: dict):
+    import matplotlib.pyplot as plt
+    from ..sensitivity import studies
+
+    target = st["target"]
+    base = base_from_scene(target, sections[target])
+    frame = studies.sweep(st["parameter"], list(st["values"]), st.get("parameter2"),
+                          None if "values2" not in st else list(st["values2"]), target=target, **base)
+    rep.tables["study_sweep"] = frame
+    rep.results["study"] = {"sweep": frame}
+    md = rep.markdown
+    what = st["parameter"] + (f" × {st['parameter2']}" if "parameter2" in st else "")
+    md += [f"## Study: {target} sweep over {what}", "", _md_table(frame.drop(columns=[c for c in frame.columns
+                                                                                   if c.startswith("sens_")])), ""]
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    studies.plot_margins(frame, st["parameter"], ax=ax, by=st.get("parameter2"))
+    rep.figures["study_margins"] = fig
+    md += ["![margins along the sweep](study_margins.png)", ""]
+    if target == "gear" and st["parameter"] in studies.LIMIT_PARAMETERS and "parameter2" not in st:
+        fig, ax = plt.subplots(figsize=(7, 6))
+        studies.plot_region_motion(st["parameter"], list(st["values"]), ax=ax, **base)
+        rep.figures["study_region_motion"] = fig
+        md += ["![the region moving with the limit](study_region_motion.png)", ""]
+    if target == "gear" and st["tornado"]:
+        tor = studies.local_sensitivities(step=st["step"], **base)
+        rep.tables["study_sensitivities"] = tor
+        rep.results["study"]["sensitivities"] = tor
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        studies.plot_tornado(tor, ax=ax)
+        rep.figures["study_tornado"] = fig
+        md += ["### Local sensitivities of the optimum", "",
+               f"Each input moved by ±{100 * st['step']:g} % (limits: the convex method's duals give the slope "
+               "d fun/d limit; the bars re-solve):", "", _md_table(tor), "",
+               "![tornado chart](study_tornado.png)", ""]
+    rep.summary.append(f"study: {len(frame)} sweep points over {what}")
+
+
+def base_from_scene(target: str, section: dict) -> dict:
+    """The keyword arguments of :func:`geardesign.sensitivity.studies.sweep` for a validated section."""
+    if target == "gear":
+        out = {k: section[k] for k in ("z1", "z2", "objective", "method", "tip_shortening") if k in section}
+        out.update(m=section["module"], checks=dict(section.get("checks") or {}) or None,
+                   rack=section.get("_rack"), bounds=tuple(section["bounds"]), a_w=section.get("a_w"))
+        return out
+    return chain_kwargs(section)
+
+
+# the sections in the order they run; [study] runs last, over the others
+RUNNERS = (("gear", _run_gear), ("teeth", _run_teeth), ("chain", _run_chain), ("key", _run_keys))
