@@ -2,37 +2,19 @@
 from __future__ import annotations
 
 import json
-import math
 import sys
 
-import numpy as np
 import pandas as pd
 
-
-def _plain(value):
-    """Convert numpy and pandas scalars to JSON-ready Python values (NaN -> None)."""
-    if isinstance(value, dict):
-        return {str(k): _plain(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_plain(v) for v in value]
-    if isinstance(value, np.ndarray):
-        return [_plain(v) for v in value.tolist()]
-    if isinstance(value, (np.bool_, bool)):
-        return bool(value)
-    if isinstance(value, (np.integer,)):
-        return int(value)
-    if isinstance(value, (float, np.floating)):
-        v = float(value)
-        return None if not math.isfinite(v) else v
-    return value
+from ..results import plain
 
 
 def print_json(obj) -> None:
-    print(json.dumps(_plain(obj), indent=2, ensure_ascii=False))
+    print(json.dumps(plain(obj), indent=2, ensure_ascii=False))
 
 
 def frame_records(frame: pd.DataFrame) -> list[dict]:
-    return [_plain(r) for r in frame.to_dict(orient="records")]
+    return [plain(r) for r in frame.to_dict(orient="records")]
 
 
 def print_frame(frame: pd.DataFrame, title: str | None = None, float_format="{:.6g}") -> None:

@@ -22,6 +22,7 @@ import pandas as pd
 
 from ..catalogs.tables import key_lengths_mm, load_catalog
 from ..errors import GearDesignError
+from ..results import Result
 from ..validate import one_number, require_int, require_positive, require_range
 
 __all__ = ["KeySelection", "select", "capacity", "section", "crushing_stress_mpa", "shear_stress_mpa",
@@ -99,7 +100,7 @@ def section(d_mm) -> pd.Series:
 
 
 @dataclass(frozen=True, eq=False)
-class KeySelection:
+class KeySelection(Result):
     """Result of :func:`select`: the chosen key (or why none fits) and every length tried."""
 
     feasible: bool
@@ -123,25 +124,8 @@ class KeySelection:
     end: str
     candidates: pd.DataFrame
 
-    _FIELDS = ("feasible", "message", "d_mm", "torque_nm", "hub_length_mm", "b_mm", "h_mm", "t1_mm", "t2_mm",
-               "length_mm", "working_length_mm", "n_keys", "crush_mpa", "shear_mpa", "allowable_crush_mpa",
-               "allowable_shear_mpa", "margin_crush", "margin_shear", "end")
-
-    def to_dict(self) -> dict:
-        out = {}
-        for k in self._FIELDS:
-            v = getattr(self, k)
-            if isinstance(v, (float, np.floating)):
-                v = float(v) if np.isfinite(v) else None
-            elif isinstance(v, (np.integer,)):
-                v = int(v)
-            elif isinstance(v, np.bool_):
-                v = bool(v)
-            out[k] = v
-        return out
-
-    def to_frame(self) -> pd.DataFrame:
-        return self.candidates.copy()
+    _success_field = "feasible"
+    _table_fields = ("candidates",)
 
     def __repr__(self) -> str:
         head = (f"KeySelection(d={self.d_mm:g} mm, T={self.torque_nm:g} N·m, hub {self.hub_length_mm:g} mm): "
@@ -237,8 +221,33 @@ def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA
                         margin_crush=float(best["margin_crush"]), margin_shear=float(best["margin_shear"]), **common)
 
 
+@dataclass(frozen=True)
+class KeyCapacity(Result):
+    """Result of :func:`capacity`: the torque a key carries and which stress governs it. Fields are
+    also readable as ``cap["torque_nm"]`` (the mapping :func:`capacity` returned before)."""
+
+    torque_nm: float
+    torque_crush_nm: float
+    torque_shear_nm: float
+    governing: str           # "crushing" or "shear"
+    working_length_mm: float
+    b_mm: float
+    h_mm: float
+    t1_mm: float
+    n_keys: int
+
+    _success_field = "carries"
+
+    @property
+    def carries(self) -> bool:
+        return self.torque_nm > 0
+
+    def __getitem__(self, name):
+        return getattr(self, name)
+
+
 def capacity(d_mm, length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA, allowable_shear_mpa=DEFAULT_SHEAR_MPA,
-             b_mm=None, h_mm=None, t1_mm=None, end="rounded", n_keys=1) -> dict:
+             b_mm=None, h_mm=None, t1_mm=None, end="rounded", n_keys=1) -> KeyCapacity:
     """The largest torque a key carries [N·m]: the smaller of the crushing and shear limits.
 
     T_crush = [σ]·d·(h − t1)·l_p·n_eff / 2000, T_shear = [τ]·d·b·l_p·n_eff / 2000 (T in N·m).
@@ -268,6 +277,6 @@ def capacity(d_mm, length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA, allowable_s
     n_eff = float(_n_eff(n))
     t_crush = s_cr * d * (h - t1) * lp * n_eff / 2000.0
     t_shear = s_sh * d * b * lp * n_eff / 2000.0
-    return {"torque_nm": min(t_crush, t_shear), "torque_crush_nm": t_crush, "torque_shear_nm": t_shear,
-            "governing": "crushing" if t_crush <= t_shear else "shear", "working_length_mm": lp,
-            "b_mm": b, "h_mm": h, "t1_mm": t1, "n_keys": n}
+    return KeyCapacity(torque_nm=min(t_crush, t_shear), torque_crush_nm=t_crush, torque_shear_nm=t_shear,
+                       governing="crushing" if t_crush <= t_shear else "shear", working_length_mm=lp,
+                       b_mm=b, h_mm=h, t1_mm=t1, n_keys=n)

@@ -84,6 +84,10 @@ class Check:
     label: str = ""
     limit: float = 0.0
 
+    # True for checks that read fields only reports need (geometry.REPORT_FIELDS): the solvers
+    # then compute the full geometry
+    needs_report_fields = False
+
     def value(self, geo: dict):
         raise NotImplementedError
 
@@ -233,6 +237,8 @@ class Jamming(Check):
     :class:`Interference`; reported for comparison with hand calculations.
     """
 
+    needs_report_fields = True   # O2N1, O1N2
+
     gear: int = 1
 
     def __post_init__(self):
@@ -304,6 +310,8 @@ class CustomCheck(Check):
     arrays (the :data:`~geardesign.gears.geometry.GEOMETRY_FIELDS` names). The gradient, when an
     optimiser needs one, is taken by central differences.
     """
+
+    needs_report_fields = True   # a user's func may read any field
 
     func: Callable | None = None
     sense: str = ">="

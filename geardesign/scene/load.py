@@ -49,6 +49,7 @@ class Scene:
     def __contains__(self, name):
         return name in self.sections
 
+
 def _rack(where, section, spec):
     from ..gears.rack import BasicRack
     if not spec:
@@ -57,6 +58,7 @@ def _rack(where, section, spec):
         return BasicRack(**spec)
     except GearDesignError as exc:
         where.fail(f"{section}.rack", None, str(exc))
+
 
 def _cross_checks(where: Where, s: dict):
     """Rules between keys, and the checks the libraries would make later, made up front."""
@@ -125,6 +127,7 @@ def _cross_checks(where: Where, s: dict):
         if st.get("parameter") == st.get("parameter2"):
             where.fail("study", "parameter2", "expected a parameter other than parameter")
 
+
 def _chain_catalog(where, path: Path, name: str) -> str:
     """A built-in chain catalog's name, or a user's CSV (relative to the scene file) as a path."""
     from ..catalogs.tables import CHAIN_CATALOGS
@@ -145,6 +148,7 @@ SCENE_DEPTH_MAX = 8          # sections, tables of tables, lists: a few levels a
 
 SCENE_INT_MAX = 10**15       # integers beyond this are typing slips (and overflow floats)
 
+
 def _read_bounded(path: Path) -> bytes:
     """The scene file's bytes: a regular file of at most SCENE_BYTES_MAX (a device such as
     /dev/zero, a folder or a huge file is refused before it is read)."""
@@ -161,6 +165,7 @@ def _read_bounded(path: Path) -> bytes:
         raise GearDesignError(f"{path}: larger than {SCENE_BYTES_MAX // 1024} KiB; a scene file is a page of settings")
     return text
 
+
 def _check_values(path: Path, value, key: str = "", depth: int = 0) -> None:
     """Refuse nesting deeper than SCENE_DEPTH_MAX and integers beyond SCENE_INT_MAX, by key."""
     if depth > SCENE_DEPTH_MAX:
@@ -174,6 +179,7 @@ def _check_values(path: Path, value, key: str = "", depth: int = 0) -> None:
     elif isinstance(value, int) and not isinstance(value, bool) and abs(value) > SCENE_INT_MAX:
         raise GearDesignError(f"{path}: {key} = an integer of {len(str(abs(value)))} digits; "
                               f"whole numbers must be within ±{SCENE_INT_MAX:.0e}")
+
 
 def load_scene(path) -> Scene:
     """Read and validate a scene file; raise one :class:`GearDesignError` on the first problem."""

@@ -16,8 +16,6 @@ def compute_scene(scene: Scene, progress=None) -> SceneReport:
     """Run every section of a validated scene in memory (nothing is written).
 
     ``progress(done, total, section)`` is called before each section and at the end."""
-    import matplotlib
-    matplotlib.use("Agg")
     t0 = time.perf_counter()
     rep = SceneReport(scene)
     rep.markdown += [f"# {scene.title}", ""]
@@ -39,20 +37,17 @@ def compute_scene(scene: Scene, progress=None) -> SceneReport:
             run_study(rep, s["study"], s)
         step(len(todo), len(todo), "done")
     except GearDesignError as exc:
-        for fig in rep.figures.values():
-            import matplotlib.pyplot as plt
-            plt.close(fig)
+        _close(rep.figures)
         raise GearDesignError(f"{scene.path}: {exc}") from None
     rep.markdown += ["## Files", "", *[f"- `{k}.csv`" for k in rep.tables], *[f"- `{k}.png`" for k in rep.figures], ""]
     rep.time_s = time.perf_counter() - t0
     return rep
 
+
 def write_report(rep: SceneReport, out_dir, overwrite: bool = False) -> Path:
     """Write report.md, the CSV tables and the PNG plots into ``out_dir``: a new or empty
     folder (its contents replaced only with ``overwrite``). Everything is written into a
     temporary folder beside it first and moved into place whole; a failure leaves nothing."""
-    import matplotlib.pyplot as plt
-
     out = check_output_dir(out_dir, overwrite=overwrite)
 
     def write(tmp: Path) -> None:
@@ -60,10 +55,11 @@ def write_report(rep: SceneReport, out_dir, overwrite: bool = False) -> Path:
             frame.to_csv(tmp / f"{name}.csv", index=False)
         for name, fig in rep.figures.items():
             fig.savefig(tmp / f"{name}.png", dpi=110, bbox_inches="tight")
-            plt.close(fig)
+        _close(rep.figures)
         (tmp / "report.md").write_text("\n".join(rep.markdown), encoding="utf-8")
 
     return write_dir_atomic(out, write)
+
 
 def run_scene(path, out_dir, overwrite: bool = False, progress=None) -> SceneReport:
     """Load, validate and run a scene file, then write its report into ``out_dir``.
@@ -75,3 +71,11 @@ def run_scene(path, out_dir, overwrite: bool = False, progress=None) -> SceneRep
     rep = compute_scene(load_scene(path), progress)
     write_report(rep, out_dir, overwrite=overwrite)
     return rep
+
+
+def _close(figures: dict) -> None:
+    """Close the report's figures (pyplot is loaded already when there are any)."""
+    if figures:
+        import matplotlib.pyplot as plt
+        for fig in figures.values():
+            plt.close(fig)

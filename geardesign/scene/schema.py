@@ -50,8 +50,10 @@ class _Key:
         what = "numbers" if self.kind == "floats" else "whole numbers"
         return f"{n}{what}{rng}"
 
+
 def _F(**kw):
     return _Key("float", **kw)
+
 
 def _I(**kw):
     return _Key("int", **kw)
@@ -170,9 +172,11 @@ class Where:
             where += f" {key}"
         raise GearDesignError(f"{self.path}: {where}: {text}")
 
+
 def type_name(v) -> str:
     return {bool: "boolean", int: "integer", float: "float", str: "string", list: "array",
             dict: "table"}.get(type(v), type(v).__name__)
+
 
 def _check_value(where: Where, section: str, key: str, spec: _Key, v):
     def bad(extra=""):
@@ -226,6 +230,7 @@ def _check_value(where: Where, section: str, key: str, spec: _Key, v):
             bad(f"; the element {item!r} is not")
         out.append(x)
     return tuple(out)
+
 
 def validate_table(where: Where, section: str, table: dict, schema: dict) -> dict:
     out = {}

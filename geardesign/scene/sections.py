@@ -4,13 +4,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from ..results import Result
 from .load import Scene
 
 __all__ = ["SceneReport", "RUNNERS", "run_study", "base_from_scene", "chain_kwargs"]
 
 
 @dataclass
-class SceneReport:
+class SceneReport(Result):
     """Everything a scene produced, in memory: tables, figures, Markdown and a summary."""
 
     scene: Scene
@@ -21,10 +22,21 @@ class SceneReport:
     results: dict = field(default_factory=dict)     # section -> result object(s)
     time_s: float = 0.0
 
+    success = True   # a section that fails raises; a report exists only when all ran
+
     def to_dict(self) -> dict:
-        return {"scene": self.scene.path, "title": self.scene.title, "summary": list(self.summary),
+        return {"status": self.status, "scene": self.scene.path, "title": self.scene.title, "summary": list(self.summary),
                 "tables": sorted(f"{k}.csv" for k in self.tables), "figures": sorted(f"{k}.png" for k in self.figures),
                 "time_s": self.time_s}
+
+
+def _pyplot():
+    """matplotlib.pyplot on the file backend, imported when a section draws (a key-only scene never does)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
 
 def _md_table(frame, floatfmt="{:.6g}") -> str:
     import numpy as np
@@ -41,11 +53,13 @@ def _md_table(frame, floatfmt="{:.6g}") -> str:
         lines.append("| " + " | ".join(cell(v) for v in row) + " |")
     return "\n".join(lines)
 
+
 def _checks_dict(spec: dict | None) -> dict | None:
     return dict(spec) if spec else None
 
+
 def _run_gear(rep: SceneReport, g: dict):
-    import matplotlib.pyplot as plt
+    plt = _pyplot()
     from ..gears.pair import GearPair
     from ..shifts.region import feasible_region
     from ..shifts.optimize import optimize_shifts
@@ -111,6 +125,7 @@ def _run_gear(rep: SceneReport, g: dict):
     rep.figures["gear_region"] = fig
     md += ["![blocking contour](gear_region.png)", ""]
 
+
 def _run_teeth(rep: SceneReport, t: dict):
     from ..shifts.teeth import select_teeth
 
@@ -128,6 +143,7 @@ def _run_teeth(rep: SceneReport, t: dict):
     rep.summary.append("teeth: " + (f"z1/z2 = {int(b['z1'])}/{int(b['z2'])}, x1 = {b['x1']:.4f}, x2 = {b['x2']:.4f}"
                                     if b is not None else "no feasible tooth counts"))
 
+
 def chain_kwargs(c: dict) -> dict:
     kw = {k: c[k] for k in ("torque_nm", "power_kw", "n1_rpm", "ratio", "catalog", "k_e", "allowable_pressure_mpa",
                             "allowable_safety_factor", "z1", "center_distance_mm", "objective", "method",
@@ -136,6 +152,7 @@ def chain_kwargs(c: dict) -> dict:
     if c.get("conditions"):
         kw["conditions"] = dict(c["conditions"])
     return kw
+
 
 def _run_chain(rep: SceneReport, c: dict):
     from ..drives.chain import design
@@ -166,6 +183,7 @@ def _run_chain(rep: SceneReport, c: dict):
                                     f"limiting {b['limiting_check']} (margin {b['min_margin']:+.3f})"
                                     if b is not None else f"no chain passes: {res.message}"))
 
+
 def _run_keys(rep: SceneReport, keys: list):
     from ..drives.key import select
 
@@ -190,8 +208,9 @@ def _run_keys(rep: SceneReport, keys: list):
     rep.markdown += ["## Parallel keys", "", *[f"- {r['name']}: {r['message']}" for r in rows], "",
                      _md_table(frame[show]), ""]
 
+
 def run_study(rep: SceneReport, st: dict, sections: dict):
-    import matplotlib.pyplot as plt
+    plt = _pyplot()
     from ..sensitivity import studies
 
     target = st["target"]

@@ -49,6 +49,7 @@ def sweep_parameters(target: str = "gear") -> tuple:
 
 # --- gear ----------------------------------------------------------------------------------------
 
+
 def _rack_with(rack, **changes):
     from ..gears.rack import BasicRack
     base = {k: getattr(rack, k) for k in RACK_PARAMETERS} if rack is not None else dict(_RACK_DEFAULTS)
@@ -125,6 +126,7 @@ def _gear_sweep(points: list[dict], base: dict) -> pd.DataFrame:
 
 
 # --- chain ---------------------------------------------------------------------------------------
+
 
 def _chain_sweep(points: list[dict], base: dict) -> pd.DataFrame:
     from ..drives.chain import design
@@ -264,6 +266,7 @@ def local_sensitivities(z1, z2, objective="max_x_sum", checks=None, rack=None, s
 
 
 # --- plots ---------------------------------------------------------------------------------------
+
 
 def plot_tornado(frame: pd.DataFrame, ax=None):
     """Tornado chart of :func:`local_sensitivities`: the change of the optimum for each input

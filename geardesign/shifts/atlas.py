@@ -81,7 +81,7 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, iters: int = 10):
     h = 1e-6
 
     def grads_at(x1, x2):
-        geo = mesh_geometry(mesh, 1.0, x1, x2)
+        geo = mesh_geometry(mesh, 1.0, x1, x2, proto.full)
         return geo, proto.margins(geo), proto.margin_gradients(geo)
 
     def pgrad(geo):
@@ -100,7 +100,7 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, iters: int = 10):
         for j, (dx1, dx2) in enumerate(((h, 0.0), (0.0, h))):
             gp_, gp__ = [], []
             for sgn in (1.0, -1.0):
-                geo_s = mesh_geometry(mesh, 1.0, x1 + sgn * dx1, x2 + sgn * dx2)
+                geo_s = mesh_geometry(mesh, 1.0, x1 + sgn * dx1, x2 + sgn * dx2, proto.full)
                 G_s = proto.margin_gradients(geo_s)[a_idx, :, rows]
                 P_s = pgrad(geo_s).T
                 (gp_ if sgn > 0 else gp__).append(P_s[:, 0] * G_s[:, 1] - P_s[:, 1] * G_s[:, 0])
@@ -199,7 +199,7 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     start = np.full((Z1.size, 2), np.nan)
     for s in range(0, Z1.size, chunk):
         z1c, z2c = Z1[s:s + chunk, None], Z2[s:s + chunk, None]
-        geo = mesh_geometry(proto.mesh.unchecked(z1c, z2c), 1.0, X1[None, :], X2[None, :])
+        geo = mesh_geometry(proto.mesh.unchecked(z1c, z2c), 1.0, X1[None, :], X2[None, :], proto.full)
         M = proto.margins(geo)
         feas = (M >= 0).all(axis=0) if M.size else np.ones(geo["a"].shape, bool)
         P = proto.pieces(geo).min(axis=0) if proto.objective.kind != "margin" else M.min(axis=0)

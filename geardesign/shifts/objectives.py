@@ -32,6 +32,7 @@ class Objective:
     kind = "smooth"            # "smooth", "minimax" (min of pieces) or "margin" (Chebyshev centre)
     description = ""
     x_sum_only = False
+    needs_report_fields = False   # see Check.needs_report_fields
 
     def pieces(self, geo) -> tuple:
         """Values whose minimum is sense · fun (floats or arrays, as ``geo`` holds)."""
@@ -126,6 +127,7 @@ class CustomObjective(Objective):
         self.name, self.func = name, func
         self.sense = +1 if sense == "max" else -1
         self.description = description or f"{sense}imise {name}"
+        self.needs_report_fields = True
 
     def pieces(self, geo):
         return (self.sense * np.asarray(self.func(geo), dtype=float)[()],)

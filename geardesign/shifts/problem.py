@@ -38,6 +38,8 @@ class Problem:
         self.m = one_number("m (module)", require_module(m))
         self.checks = _checks.resolve_checks(checks)
         self.objective = resolve_objective(objective)
+        # the report-only geometry fields are computed only when a check or the objective reads them
+        self.full = self.objective.needs_report_fields or any(c.needs_report_fields for c in self.checks)
         self.x_sum = None if x_sum is None else float(x_sum)
         self.names = [c.name for c in self.checks]
         # the smooth parts the solvers see (see Check.part_margins): part -> index of its check
@@ -57,14 +59,14 @@ class Problem:
     rack = property(lambda self: self.mesh.rack)
 
     def geo(self, x1, x2) -> dict:
-        return mesh_geometry(self.mesh, self.m, x1, x2)
+        return mesh_geometry(self.mesh, self.m, x1, x2, self.full)
 
     def _geo_like(self, geo):
         """geo(x1, x2) -> dict at the same m, z1, z2 as ``geo`` (arrays or floats alike; an atlas
         evaluates many tooth pairs through one problem)."""
         core = mesh_geometry_float if isinstance(geo["a"], float) else mesh_geometry
         mesh = self.mesh.unchecked(geo["_z1"], geo["_z2"])
-        return lambda x1, x2: core(mesh, geo["_m"], x1, x2)
+        return lambda x1, x2: core(mesh, geo["_m"], x1, x2, self.full)
 
     def _central(self, func, geo):
         """(∂func/∂x1, ∂func/∂x2) by central differences around the design(s) of ``geo``."""
@@ -174,7 +176,7 @@ class Problem:
         division by zero exactly at a boundary, an overflow), the same formulas on 0-d numpy
         arrays, which give inf/NaN as the vectorised path does."""
         try:
-            geo = mesh_geometry_float(self.mesh, self.m, x1, x2)
+            geo = mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
             return geo, self.evaluate_geo(geo, parts)
         except _FLOAT_FAULTS:
             with np.errstate(all="ignore"):

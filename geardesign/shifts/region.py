@@ -15,6 +15,7 @@ import numpy as np
 import pandas as pd
 
 from ..errors import GearDesignError
+from ..results import Result, plain
 from ..gears.mesh import Mesh
 from ..validate import one_number, require_count, require_range
 from ..gears.geometry import center_distance_from_x_sum
@@ -29,7 +30,7 @@ WINDOW = "window"
 
 
 @dataclass
-class Region:
+class Region(Result):
     """Feasible (x1, x2) region of one tooth pair.
 
     ``boundary`` is a DataFrame ``component, x1, x2, check``: ordered polygon vertices
@@ -50,6 +51,15 @@ class Region:
     problem: Problem = field(repr=False)
     area_error: float = 0.0
 
+    _success_field = "feasible"
+    _table_fields = ("boundary",)
+
+    def to_dict(self) -> dict:
+        out = {k: plain(getattr(self, k)) for k in ("z1", "z2", "feasible", "area", "area_error", "conflict",
+                                                     "method", "tol", "bounds", "boundary")}
+        out.update(checks=self.checks, limiting_checks=self.limiting_checks(), status=self.status)
+        return out
+
     @property
     def checks(self) -> list[str]:
         return list(self.problem.names)
@@ -60,9 +70,6 @@ class Region:
         M = self.problem.margins(self.problem.geo(x1, x2))
         out = (M >= 0).all(axis=0) if M.size else np.ones(x1.shape, bool)
         return bool(out) if out.ndim == 0 else out
-
-    def to_frame(self) -> pd.DataFrame:
-        return self.boundary.copy()
 
     def limiting_checks(self) -> list[str]:
         """The checks that form part of the boundary, in order of appearance."""

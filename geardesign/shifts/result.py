@@ -7,6 +7,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..results import Result
+
 __all__ = ["ShiftResult", "Outcome", "ACCURACY"]
 
 ACCURACY = {
@@ -18,7 +20,7 @@ ACCURACY = {
 
 
 @dataclass
-class ShiftResult:
+class ShiftResult(Result):
     """The optimum of :func:`optimize_shifts`, in the manner of ``scipy.optimize.OptimizeResult``.
 
     ``fun`` is the objective in its natural sense (x1 + x2 for ``max_x_sum``, ε_α for
@@ -52,11 +54,6 @@ class ShiftResult:
     @property
     def x(self) -> np.ndarray:
         return np.array([self.x1, self.x2])
-
-    def to_dict(self) -> dict:
-        d = {k: getattr(self, k) for k in self.__dataclass_fields__}
-        d["margins"] = dict(self.margins)
-        return d
 
     def to_frame(self):
         """One row per check: margin, active, sensitivity (d fun / d limit; at a corner where it

@@ -29,6 +29,7 @@ import numpy as np
 import pandas as pd
 
 from .. import catalogs
+from ..results import Result, plain
 from ..gears.checks import resolve_checks
 from ..errors import GearDesignError
 from ..validate import one_number, require_count, require_positive, require_range
@@ -86,7 +87,7 @@ def _z1_range(z1_range):
 
 
 @dataclass
-class TeethSelection:
+class TeethSelection(Result):
     """The ranked result of :func:`select_teeth`.
 
     ``table`` — one row per solved candidate, best first (see the module docstring for the
@@ -106,6 +107,14 @@ class TeethSelection:
     n_solved: int = 0
     time_s: float = 0.0
     objective_sense: int = 1     # +1: larger is better, −1: smaller
+
+    _success_field = "found"
+    _table_fields = ("table",)
+
+    @property
+    def found(self) -> bool:
+        """True when the best row is feasible."""
+        return self.best is not None
 
     @property
     def best(self) -> pd.Series | None:
@@ -146,12 +155,10 @@ class TeethSelection:
         feas = self.feasible
         return feas.drop_duplicates("module_mm").reset_index(drop=True)
 
-    def to_frame(self) -> pd.DataFrame:
-        return self.table.copy()
-
     def to_dict(self) -> dict:
         best = self.best
-        return {
+        return plain({
+            "status": self.status,
             "input": {"ratio": self.ratio, "ratio_tol": self.ratio_tol, "objective": self.objective,
                       "m": self.m, "a_w": self.a_w, "method": self.method, "checks": list(self.checks)},
             "best": None if best is None else best.to_dict(),
@@ -160,7 +167,7 @@ class TeethSelection:
             "time_s": self.time_s,
             "table": self.table.to_dict(orient="records"),
             "skipped": self.skipped.to_dict(orient="records"),
-        }
+        })
 
     def __repr__(self) -> str:
         cols = ["z1", "z2", "ratio", "module_mm", "a_w_mm", "x1", "x2", "eps_alpha", "objective", "feasible"]
