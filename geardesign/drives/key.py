@@ -9,9 +9,10 @@ with l_p the working length (l − b for rounded ends, l − b/2 for one rounded
 ends) and n_eff = 1 for one key, 2·0.75 = 1.5 for two keys at 180° (load-sharing factor 0.75).
 T in N·mm inside (N·m at the interface), lengths in mm, stresses in MPa.
 
-Sources (docs/references.md): the crushing and shear formulas of GOST 23360-78 practice
-(Dunaevsky & Lelikov §6.1; Chernavsky, course design of machine parts); the two-key load-sharing
-factor 0.75 (Roloff/Matek, DIN 6885 keys).
+Sources (docs/references.md): the crushing and shear formulas of GOST 23360-78 course-design
+practice (worked example http://3-net.ru/sign/sign-256685.php; https://dzen.ru/media/kbsemenov/
+raschet-shponochnyh-soedinenii-648c556c0cc0384792bfe899); the two-key load-sharing factor 0.75 (the
+same dzen.ru page; https://www.mechanixcalc.com/standards/din-6885, DIN 6885 after Roloff/Matek).
 """
 from __future__ import annotations
 
@@ -28,19 +29,20 @@ from ..validate import one_number, require_int, require_positive, require_range
 __all__ = ["KeySelection", "select", "capacity", "section", "crushing_stress_mpa", "shear_stress_mpa",
            "working_length_mm", "DEFAULT_CRUSH_MPA", "DEFAULT_SHEAR_MPA", "TWO_KEY_FACTOR"]
 
-# Defaults (low confidence: handbooks give ranges, docs/references.md): [σ] = 130 MPa for a steel
-# hub under steady load, [τ] = 85 MPa for a steel 45 key under pulsating load (Dunaevsky & Lelikov §6.1).
+# Defaults (low confidence, single sources; docs/references.md): [σ] = 130 MPa, improved-steel hub, from the
+# 3-net.ru worked example (key 12x8, d = 40, T = 250 N·m); [τ] = 85 MPa, steel 45 key under pulsating load,
+# from a published course-design key calculator whose own source is not stated.
 DEFAULT_CRUSH_MPA = 130.0
 DEFAULT_SHEAR_MPA = 85.0
 TWO_KEY_FACTOR = 0.75
 ENDS = ("rounded", "half", "flat")
 
 
-HUB_ALLOWANCE_MM = 5.0     # key shorter than the hub by 5…10 mm (Dunaevsky & Lelikov §6.1): the lower end
+HUB_ALLOWANCE_MM = 5.0     # key shorter than the hub by 5…10 mm (Dunaev & Lelikov §6.1): the lower end
 LENGTH_MAX_MM = 10_000.0   # keys, hubs and shafts up to 10 m; past that the tables say nothing
 TORQUE_MAX_NM = 1e9
 ALLOWABLE_MPA_MAX = 1e4   # allowable stresses above 10 GPa are typing slips
-MAX_KEYS = 2              # two keys at 180° are the most a hub takes (GOST 23360-78)
+MAX_KEYS = 2              # one key, or two at 180°: the load-sharing factor (TWO_KEY_FACTOR) is given for two
 
 
 def working_length_mm(length_mm, b_mm, end="rounded"):
@@ -141,7 +143,7 @@ def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA
            allowable_shear_mpa=DEFAULT_SHEAR_MPA, end="rounded", max_keys=2,
            hub_allowance_mm=HUB_ALLOWANCE_MM) -> KeySelection:
     """Pick the parallel key as designers do: the longest standard length that fits the hub
-    with its usual allowance, l <= l_hub − (5…10) mm (Dunaevsky & Lelikov, Konstruirovanie
+    with its usual allowance, l <= l_hub − (5…10) mm (Dunaev & Lelikov, Konstruirovanie
     uzlov i detalei mashin, §6.1; ``hub_allowance_mm`` = 5 by default), then check it.
 
     The section (b, h, t1, t2) comes from the shaft diameter; lengths from the standard series,
