@@ -2,7 +2,7 @@
 
 Error of a shift method: max |x − x_ref| over a sample of tooth pairs, where x_ref is an
 independent brute-force optimum (nested zooming grids over the vectorised geometry, no solver:
-``reference_optimum`` of tests/test_shift.py), whose active contact-ratio boundary is then
+``reference_optimum`` of tests/shifts/test_optimize.py), whose active contact-ratio boundary is then
 confirmed by the 50-digit mpmath geometry of tests/reference_mp.py. Every method, ``exact``
 included, is measured against it, so the plot shows what each really achieves (down to the
 reference's own resolution, printed). Geometry: pair_geometry (vectorised, per design) and

@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 import geardesign as gd
-import reference_mp as ref
+from tests import reference_mp as ref
 
 RTOL = 1e-12
 

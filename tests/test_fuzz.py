@@ -13,7 +13,8 @@ import tempfile
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from fuzzcases import TARGETS, run_case
+import geardesign as gd
+from tests.fuzzcases import TARGETS, run_case
 
 _FAST = [t for t in TARGETS if t not in ("scene", "cli", "shift_atlas", "feasible_region")]
 
@@ -76,3 +77,11 @@ def test_existing_plot_is_not_overwritten_without_overwrite(tmp_path):
                            "--plot", str(plot), "--overwrite"], capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0 and plot.read_bytes()[:4] == b"\x89PNG"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["contour.png"]
+
+
+def test_fuzz_findings_of_the_10000_case_run():
+    """benchmarks/fuzz.py --cases 10000 --seed 7 found two NaN results; both are refused now."""
+    with pytest.raises(gd.GearDesignError, match=r"ha must be in \[0.3, 2\]"):
+        gd.BasicRack(alpha_deg=34.93, ha=1e-300, c=0.109, rho_f=0.096)
+    with pytest.raises(gd.GearDesignError, match=r"n1_rpm must be in \[0.1, 20000\] rpm"):
+        gd.chain.design(torque_nm=907.91, n1_rpm=5e-324, ratio=7.077, catalog="ansi_b29", method="power_rating", z1=7)

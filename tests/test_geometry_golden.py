@@ -1,7 +1,6 @@
 """Golden tests of the pair geometry against published worked examples.
 
-Sources (each row of tests/data/gear_examples.csv names its own; copied from
-../shared/reference/gear_examples.csv):
+Sources (each row of tests/data/gear_examples.csv names its own; docs/references.md lists them):
 * KHK Gear Technical Reference, profile-shifted external pair 12/24, m 3, x 0.6/0.36,
   as reproduced by bolsover/UtilitiesForAlibre unit tests and bolsover.com (E1, E2);
 * bolsover/GearCalculator standard pair 18/25, m 2.5 (E7);

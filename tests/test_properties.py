@@ -6,56 +6,29 @@ round-trips. Also: analytic check gradients = central differences of the margins
 z1/z2 and d_w1 + d_w2 = 2 a_w, the undercut margin has the sign of ρ_l, and swapping the two
 gears swaps the per-gear fields.
 
-Random valid designs: z1, z2 in 5..400, x1, x2 in −0.8..2.5, m 0.5..20 mm, α 14.5..30°;
-designs whose geometry does not exist (geardesign raises GearDesignError) are rejected with
-``assume``. Reproducible: derandomize=True.
+Random valid designs (tests/strategies.py): z1, z2 in 5..400, x1, x2 in −0.8..2.5, m 0.5..20 mm,
+α 14.5..30°; designs whose geometry does not exist (geardesign raises GearDesignError) are rejected
+with ``assume``. Reproducible: derandomize=True.
 """
 from __future__ import annotations
 
 import math
 
 import numpy as np
-from hypothesis import assume, given, settings
-from hypothesis import strategies as st
+from hypothesis import assume, given
 
 import geardesign as gd
 from geardesign.gears.checks import make_checks
 from geardesign.gears.geometry import mesh_geometry
 from geardesign.gears.mesh import Mesh
 
-SETTINGS = settings(max_examples=200, deadline=None, derandomize=True)
+from tests.strategies import SETTINGS, designs
 
 PER_GEAR = [("d1", "d2"), ("db1", "db2"), ("dw1", "dw2"), ("da1", "da2"), ("df1", "df2"), ("s1", "s2"),
             ("sw1", "sw2"), ("sa1", "sa2"), ("alpha_a1_deg", "alpha_a2_deg"), ("clearance1", "clearance2"),
             ("x_min1", "x_min2"), ("rho_l1", "rho_l2"), ("rho_p1", "rho_p2"), ("d_l1", "d_l2"),
             ("d_p1", "d_p2"), ("o2n1", "o1n2"), ("sliding1_root", "sliding2_root"),
             ("sliding1_tip", "sliding2_tip")]
-
-
-def _rack(alpha_deg: float) -> gd.BasicRack:
-    """Standard rack at α; ρ_f* capped where 0.38 no longer fits on the cutter tip (steep α)."""
-    a = math.radians(alpha_deg)
-    land = math.pi / 2 - 2.0 * 1.25 * math.tan(a)
-    rho_max = max(0.0, land * math.cos(a) / (2.0 * (1.0 - math.sin(a))))
-    return gd.BasicRack(alpha_deg=alpha_deg, rho_f=min(0.38, 0.999 * rho_max))
-
-
-@st.composite
-def designs(draw, tip_shortening=None):
-    d = dict(
-        m=draw(st.floats(0.5, 20.0)),
-        z1=draw(st.integers(5, 400)), z2=draw(st.integers(5, 400)),
-        x1=draw(st.floats(-0.8, 2.5)), x2=draw(st.floats(-0.8, 2.5)),
-        alpha_deg=draw(st.floats(14.5, 30.0)),
-        ts=draw(st.booleans()) if tip_shortening is None else tip_shortening,
-    )
-    d["rack"] = _rack(d["alpha_deg"])
-    try:
-        d["geo"] = gd.pair_geometry(d["m"], d["z1"], d["z2"], d["x1"], d["x2"], rack=d["rack"],
-                                    tip_shortening=d["ts"])
-    except gd.GearDesignError:
-        assume(False)
-    return d
 
 
 def close(a, b, tol, scale=0.0):

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import functools
 import math
+import operator
 from dataclasses import dataclass, fields
 from types import SimpleNamespace
 
@@ -20,7 +21,7 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..validate import broadcast_inputs, ndim, require_bool, require_int, require_positive, require_range
-from .involute import _t_minus_atan, _tan_from_inv_float, inv, inv_from_tan, t_minus_atan_float, tan_from_inv
+from .involute import _t_minus_atan, _tan_from_inv_float, inv, inv_from_tan, t_minus_atan, t_minus_atan_float, tan_from_inv
 from .mesh import Z_MAX, Z_MIN, Mesh
 from .rack import BasicRack
 
@@ -204,7 +205,7 @@ def _per_distinct(func, v):
 # what a single-pair optimiser pays ~200 times per evaluation.
 _ARRAY_OPS = SimpleNamespace(
     sqrt=np.sqrt, sin=np.sin, atan=np.arctan, degrees=np.degrees,
-    positive=lambda v: np.maximum(v, 0.0), t_minus_atan=_t_minus_atan,
+    positive=lambda v: np.maximum(v, 0.0), t_minus_atan=t_minus_atan,
     tan_from_inv=lambda v: tan_from_inv(np.where(v > 0, v, np.nan), validate=False),
     per_distinct=_per_distinct)
 _FLOAT_OPS = SimpleNamespace(
@@ -524,7 +525,7 @@ class Geometry:
         """One design from a float geometry dict (:func:`mesh_geometry_float`), without the
         dataclass's per-field setattr: the fields are plain floats already."""
         obj = object.__new__(cls)
-        obj.__dict__.update({name: geo[name] for name in _FIELD_NAMES})
+        obj.__dict__.update(zip(_FIELD_NAMES, _GET_FIELDS(geo)))
         return obj
 
     @property
@@ -560,6 +561,7 @@ class Geometry:
 
 
 _FIELD_NAMES = tuple(GEOMETRY_FIELDS)
+_GET_FIELDS = operator.itemgetter(*_FIELD_NAMES)
 
 
 def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shortening: bool = True,

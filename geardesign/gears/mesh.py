@@ -8,12 +8,12 @@ the formulas, not a new argument in every signature.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 
 
 from ..errors import GearDesignError
 from ..validate import require_bool, require_int
-from .rack import BasicRack
+from .rack import STANDARD_RACK, BasicRack
 
 __all__ = ["Mesh", "Z_MIN", "Z_MAX"]
 
@@ -38,12 +38,12 @@ class Mesh:
 
     z1: object
     z2: object
-    rack: BasicRack = field(default_factory=BasicRack)   # None: the standard rack
+    rack: BasicRack = STANDARD_RACK   # None: the standard rack too
     tip_shortening: bool = True
 
     def __post_init__(self):
         if self.rack is None:
-            object.__setattr__(self, "rack", BasicRack())
+            object.__setattr__(self, "rack", STANDARD_RACK)
         for name in ("z1", "z2"):
             v = getattr(self, name)
             if type(v) is int and Z_MIN <= v <= Z_MAX:   # the common case, without numpy's overhead

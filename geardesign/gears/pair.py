@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -12,7 +12,7 @@ from ..validate import ndim, one_number, require_positive, require_range
 from .geometry import (M_RANGE_MM, X_ABS_MAX, Geometry, mesh_geometry, mesh_geometry_float, min_center_distance,
                        validate_geometry, validate_inputs, x_sum_from_center_distance)
 from .mesh import Mesh
-from .rack import BasicRack
+from .rack import STANDARD_RACK, BasicRack
 
 __all__ = ["GearPair", "balanced_sliding_split"]
 
@@ -82,7 +82,7 @@ class GearPair:
     z2: int
     x1: float = 0.0
     x2: float = 0.0
-    rack: BasicRack = field(default_factory=BasicRack)
+    rack: BasicRack = STANDARD_RACK
     tip_shortening: bool = True
 
     def __post_init__(self):

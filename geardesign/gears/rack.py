@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from ..errors import GearDesignError
 from ..validate import _show, ndim, one_number, require_finite, require_range
 
-__all__ = ["BasicRack", "ALPHA_RANGE_DEG", "HA_RANGE", "C_RANGE"]
+__all__ = ["BasicRack", "STANDARD_RACK", "ALPHA_RANGE_DEG", "HA_RANGE", "C_RANGE"]
 
 # Pressure angles accepted: 1°–44° (standards use 14.5°–25°; the accuracy tests cover 10°–35°).
 # At 0° the involute degenerates, at 45° the rack tooth has no tip land.
@@ -97,3 +97,7 @@ class BasicRack:
     def z_min_no_undercut(self) -> float:
         """Smallest unshifted tooth count without undercut, 2 h_l*/sin²α (17.1 for 20°)."""
         return 2.0 * self.h_limit / math.sin(self.alpha) ** 2
+
+
+# The standard rack, shared as the default of every mesh and pair (a frozen value: sharing is safe).
+STANDARD_RACK = BasicRack()

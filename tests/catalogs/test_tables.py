@@ -1,5 +1,5 @@
-"""Catalog integrity and validation. Numbers are cited from the standards or from
-/work/shared/reference (REF below), never from geardesign's own output."""
+"""Catalog integrity and validation. Numbers are cited from the standards or from the published
+tables listed in docs/references.md (REF below), never from geardesign's own output."""
 import numpy as np
 import pandas as pd
 import pytest

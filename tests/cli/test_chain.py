@@ -1,5 +1,5 @@
-"""The chain and key subcommands. Expected designs are the ones derived by hand in
-tests/test_chain.py and tests/test_key.py (seed 002 recomputed)."""
+"""The `geardesign chain` command. Expected designs are the ones derived by hand in
+tests/drives/test_chain.py (seed 002 recomputed)."""
 import json
 import subprocess
 import sys
@@ -53,28 +53,8 @@ def test_chain_power_rating(capsys):
     assert best["designation"] == "08A" and best["links"] == 122
 
 
-def test_key_select(capsys):
-    # d = 60, T = 503 N·m, hub 50 with [σ] = 130 MPa: two keys 18x11x45 (tests/test_key.py)
-    assert main(["key", "--d", "60", "--torque", "503", "--hub-length", "50", "--json"]) == 0
-    data = json.loads(capsys.readouterr().out)
-    assert (data["n_keys"], data["length_mm"], data["b_mm"]) == (2, 45.0, 18.0)
-    assert main(["key", "--d", "60", "--torque", "503.129", "--hub-length", "50", "--crush", "300",
-                 "--shear", "120"]) == 0
-    out = capsys.readouterr().out
-    assert "one key 18x11x45" in out and "t2 = 4.4 mm" in out
-
-
-def test_key_capacity_and_errors(capsys):
-    # 300·60·(11 - 7)·(32 - 18)/2000 = 504 N·m
-    assert main(["key", "--d", "60", "--length", "32", "--crush", "300", "--shear", "120"]) == 0
-    assert "carries 504.0 N·m" in capsys.readouterr().out
-    assert main(["key", "--d", "60", "--torque", "503", "--hub-length", "10"]) == 1
-    assert main(["key", "--d", "60", "--torque", "503"]) == 2
-    assert "--hub-length" in capsys.readouterr().err
-
-
 def test_python_m_geardesign_chain():
-    root = Path(__file__).resolve().parent.parent
+    root = Path(__file__).resolve().parents[2]
     proc = subprocess.run([sys.executable, "-m", "geardesign"] + SEED + ["--json", "--top", "2"],
                           cwd=root, capture_output=True, text=True, timeout=120)
     assert proc.returncode == 0, proc.stderr

@@ -1,62 +1,35 @@
-"""Bad input raises GearDesignError naming the input, its value and the allowed range;
-the `geardesign pair` command prints tables, JSON, and one-line errors."""
+"""The `geardesign pair` command: tables, JSON, a housing centre distance, and one-line errors
+naming the input and its range; `python -m geardesign` from any directory."""
 import json
 import os
 import subprocess
 import sys
 
-import numpy as np
 import pytest
 
 import geardesign as gd
 from geardesign.cli import main
 
 
-@pytest.mark.parametrize("kwargs,words", [
-    (dict(m=0, z1=17, z2=26), ["m (module)", "0", "> 0"]),
-    (dict(m=-1, z1=17, z2=26), ["m (module)", "-1"]),
-    (dict(m=2, z1=2, z2=26), ["z1", "in [3, 100000]", "2"]),
-    (dict(m=2, z1=17.5, z2=26), ["z1", "whole number", "17.5"]),
-    (dict(m=2, z1=17, z2=26, x1=float("nan")), ["x1", "finite", "nan"]),
-    (dict(m=float("inf"), z1=17, z2=26), ["m (module)", "finite"]),
-    (dict(m=2, z1=17, z2=26, x1=-3, x2=-3), ["x1 + x2", "-6", "> -0.88"]),
-    (dict(m=2, z1=40, z2=40, x1=-2.5, x2=2.6), ["x1 = -2.5", "tip circle", "base circle"]),
-])
-def test_bad_pair_input(kwargs, words):
-    with pytest.raises(gd.GearDesignError) as info:
-        gd.GearPair(**kwargs)
-    assert isinstance(info.value, ValueError)
-    for w in words:
-        assert w in str(info.value), (w, str(info.value))
+def test_pair_cli_with_both_shifts_and_a_housing(capsys):
+    assert main(["pair", "--module", "8", "--z1", "17", "--z2", "26", "--x1", "0.898", "--x2", "0.517",
+                 "--center-distance", "180"]) == 0
+    out = capsys.readouterr().out
+    assert "center_distance" in out and "x1 = 0.898, x2 = 0.517" in out
 
 
-@pytest.mark.parametrize("alpha", [0.0, 45.0, -5.0, float("nan")])
-def test_bad_rack(alpha):
-    with pytest.raises(gd.GearDesignError, match="alpha_deg"):
-        gd.BasicRack(alpha_deg=alpha)
-
-
-def test_bad_fillet():
-    with pytest.raises(gd.GearDesignError, match=r"rho_f must be in \[0, 0\.47"):
-        gd.BasicRack(rho_f=0.6)
-
-
-def test_vectorised_error_names_index():
-    with pytest.raises(gd.GearDesignError, match="index 2"):
-        gd.pair_geometry(1.0, 20, 30, np.array([0.0, 0.1, -40.0]), 0.0)
-
-
-def test_scalar_in_scalar_out_and_broadcast():
-    g = gd.pair_geometry(2.0, 17, 34, 0.0, 0.0)
-    assert isinstance(g.a_w, float)
-    ga = gd.pair_geometry(2.0, np.array([17, 18]), np.array([[34], [40], [50]]), 0.1, 0.2)
-    assert ga.a_w.shape == (3, 2)
-    assert ga.to_frame().shape[0] == 6
-
-
-def test_center_distance_too_small():
-    with pytest.raises(gd.GearDesignError, match="a_w = 40 mm is too small"):
-        gd.GearPair.from_center_distance(2, 17, 34, 40.0)
+def test_cli_refusals_name_the_input_and_its_range():
+    for argv, words in [
+        (["pair", "--module", "1", "--z1", "1e308", "--z2", "26"], ["z1", "1e+308", "[3, 100000]"]),
+        (["pair", "--module", "1", "--z1", "17", "--z2", "26", "--x1", "1e308"], ["x1", "1e+308", "[-10, 10]"]),
+        (["pair", "--module", "1e308", "--z1", "17", "--z2", "26"], ["m (module)", "1e+308"]),
+    ]:
+        proc = subprocess.run([sys.executable, "-m", "geardesign", *argv], capture_output=True, text=True)
+        assert proc.returncode == 2
+        lines = proc.stderr.strip().splitlines()
+        assert len(lines) == 1, proc.stderr
+        for w in words:
+            assert w in lines[0], (w, lines[0])
 
 
 def test_cli_table(capsys):

@@ -1,6 +1,6 @@
 """Roller-chain drive design. Every number is recomputed by hand here (formula written out) or
-taken from a cited source: seed 002 (/work/shared/seeds/002_*.txt), Bhandari's worked examples
-(/work/shared/reference/chain_worked_examples.csv), or the catalog tables."""
+taken from a cited source: seed 002 (the brake test stand course work) and Bhandari's worked examples
+(both in docs/references.md), or the catalog tables."""
 import json
 import math
 

@@ -80,6 +80,13 @@ def test_sweep_errors():
         studies.sweep("eps_alpha_min", [1.2], "sa_min", None, z1=17, z2=26)
 
 
+def test_study_sizes_are_refused_before_any_work():
+    with pytest.raises(gd.GearDesignError, match="values must hold 1 to 2000 values, got 20000"):
+        gd.sweep("eps_alpha_min", np.linspace(1.0, 1.5, 20000), z1=17, z2=26)
+    with pytest.raises(gd.GearDesignError, match="at most 10,000 points"):
+        gd.sweep("eps_alpha_min", np.linspace(1.0, 1.5, 200), "sa_min", np.linspace(0.2, 0.4, 200), z1=17, z2=26)
+
+
 def test_local_sensitivities_and_plots():
     tor = studies.local_sensitivities(17, 26, step=0.01)
     row = tor.set_index("input").loc["eps_alpha_min"]

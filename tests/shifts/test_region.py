@@ -1,12 +1,9 @@
-"""Feasible region, shift atlas and the shift/atlas commands."""
-import json
-
+"""Feasible region of the shifts: its boundary, area, membership, plots and size limits."""
 import numpy as np
 import pytest
 
 import geardesign as gd
 from geardesign import checks as ck
-from geardesign.cli import main
 from geardesign.gears.geometry import mesh_geometry
 from geardesign.gears.mesh import Mesh
 
@@ -137,48 +134,3 @@ def test_region_sizes_are_bounded_up_front():
         gd.feasible_region(17, 26, n=10**5)
     reg = gd.feasible_region(17, 26, checks=[])
     assert reg.feasible and reg.area == pytest.approx(4.5 ** 2, rel=1e-9)
-
-
-def test_atlas_agrees_with_one_by_one_solves():
-    df = gd.shift_atlas([12, 17, 25], [26, 40, 90])
-    assert len(df) == 9
-    for _, row in df.iterrows():
-        r = gd.optimize_shifts(int(row.z1), int(row.z2))
-        assert row.feasible == r.success
-        if r.success:
-            assert abs(row.x1 - r.x1) < 1e-9 and abs(row.x2 - r.x2) < 1e-9
-            # the area estimate is a grid count: close to the traced region's area
-            assert row.area == pytest.approx(gd.feasible_region(int(row.z1), int(row.z2)).area, rel=0.03)
-
-
-def test_atlas_reports_infeasible_pairs():
-    df = gd.shift_atlas([5, 6], [5, 6])
-    assert not df.feasible.any()
-    assert (df.conflict.str.len() > 0).all()
-
-
-def test_cli_shift_json_and_plot(tmp_path, capsys):
-    png = tmp_path / "contour.png"
-    assert main(["shift", "--z1", "17", "--z2", "26", "--module", "8", "--plot", str(png), "--json"]) == 0
-    doc = json.loads(capsys.readouterr().out)
-    assert doc["success"] and doc["active"] == ["contact_ratio"]
-    assert doc["region"]["feasible"] and png.exists()
-
-
-def test_cli_shift_infeasible_exit_1(capsys):
-    assert main(["shift", "--z1", "5", "--z2", "5"]) == 1
-    assert "conflict" in capsys.readouterr().out
-
-
-def test_cli_shift_options(capsys):
-    assert main(["shift", "--z1", "17", "--z2", "26", "--allow-undercut", "--eps-alpha-min", "1.1",
-                 "--sa-min", "0.4", "--objective", "max_eps_alpha", "--method", "convex", "--json"]) == 0
-    doc = json.loads(capsys.readouterr().out)
-    assert "undercut1" not in doc["margins"] and doc["method"] == "convex"
-
-
-def test_cli_atlas(tmp_path, capsys):
-    out = tmp_path / "atlas.csv"
-    assert main(["atlas", "--z1", "12:13", "--z2", "20,30", "--out", str(out)]) == 0
-    assert out.read_text().count("\n") == 5
-    assert main(["atlas", "--z1", "x:y", "--z2", "20"]) == 2

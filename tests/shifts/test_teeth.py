@@ -1,5 +1,5 @@
 """Tooth-count selection: enumeration checked by hand, the x-sum of a fixed centre distance from the
-textbook inv α_w formula, feasibility re-checked with GearPair, the seed 000 case, the command line."""
+textbook inv α_w formula, feasibility re-checked with GearPair, the seed 000 case."""
 import json
 import math
 from fractions import Fraction
@@ -10,7 +10,6 @@ import pytest
 
 import geardesign as gd
 from geardesign.gears.checks import make_checks, margins
-from geardesign.cli import main
 from geardesign.gears.geometry import mesh_geometry
 from geardesign.gears.mesh import Mesh
 from geardesign.shifts.teeth import TeethSelection, ratio_pairs, select_teeth
@@ -203,43 +202,3 @@ def test_bad_input(kwargs, words):
         select_teeth(**kwargs)
     for w in words:
         assert w in str(info.value), (w, str(info.value))
-
-
-# --- command line ------------------------------------------------------------------------
-
-def test_cli_json(capsys):
-    rc = main(["teeth", "--ratio", "1.5", "--module", "8", "--center-distance", "180", "--json"])
-    out = json.loads(capsys.readouterr().out)
-    assert rc == 0
-    assert out["best"]["z1"] == 18 and out["best"]["z2"] == 27
-    assert out["table"][0]["a_w_mm"] == pytest.approx(180.0)
-    assert all(r["reason"] for r in out["skipped"])
-
-
-def test_cli_table_and_csv(capsys, tmp_path):
-    path = tmp_path / "table.csv"
-    rc = main(["teeth", "--ratio", "2", "--ratio-tol", "0", "--module", "2", "--z1-min", "20", "--z1-max", "22",
-               "--method", "grid", "--out", str(path)])
-    text = capsys.readouterr().out
-    assert rc == 0 and "choice:" in text and "rank" in text
-    frame = pd.read_csv(path)
-    assert sorted(zip(frame["z1"], frame["z2"])) == [(20, 40), (21, 42), (22, 44)]
-
-
-@pytest.mark.parametrize("argv,words", [
-    (["--ratio", "0.5", "--module", "8"], ["ratio", "0.5"]),
-    (["--ratio", "1.5", "--module", "eight"], ["--module", "'eight'"]),
-    (["--ratio", "1.5", "--module", "8", "--center-distance", "-5"], ["a_w", "-5"]),
-    (["--ratio", "1.5", "--module", "8", "--z1-min", "2"], ["z1_range min", "2"]),
-])
-def test_cli_errors(capsys, argv, words):
-    rc = main(["teeth"] + argv)
-    err = capsys.readouterr().err
-    assert rc == 2 and err.count("\n") == 1 and err.startswith("geardesign teeth: error:")
-    for w in words:
-        assert w in err
-
-
-def test_cli_no_feasible_exit_1(capsys):
-    rc = main(["teeth", "--ratio", "1", "--ratio-tol", "0", "--module", "1", "--z1-min", "5", "--z1-max", "6"])
-    assert rc == 1 and "no feasible" in capsys.readouterr().out

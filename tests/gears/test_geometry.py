@@ -1,0 +1,80 @@
+"""Pair geometry: vectorised input (an error names the bad index; scalar in, float out; arrays
+broadcast), and the single-design float path against the vectorised array path.
+
+The local solvers evaluate one design at a time in Python floats (:func:`mesh_geometry_float`)
+because a one-element numpy call costs ~20× more. Both run the same formulas
+(:func:`geardesign.gears.geometry._formulas`) on different backends; these tests hold them
+together, so that the golden and mpmath tests of the array path cover the float path too.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given
+
+import geardesign as gd
+from geardesign.errors import GearDesignError
+from geardesign.gears.geometry import REPORT_FIELDS, mesh_geometry, mesh_geometry_float
+from geardesign.gears.mesh import Mesh
+
+from tests.strategies import SETTINGS, designs
+
+
+def test_vectorised_error_names_index():
+    with pytest.raises(gd.GearDesignError, match="index 2"):
+        gd.pair_geometry(1.0, 20, 30, np.array([0.0, 0.1, -40.0]), 0.0)
+
+
+def test_scalar_in_scalar_out_and_broadcast():
+    g = gd.pair_geometry(2.0, 17, 34, 0.0, 0.0)
+    assert isinstance(g.a_w, float)
+    ga = gd.pair_geometry(2.0, np.array([17, 18]), np.array([[34], [40], [50]]), 0.1, 0.2)
+    assert ga.a_w.shape == (3, 2)
+    assert ga.to_frame().shape[0] == 6
+
+
+@SETTINGS
+@given(designs())
+def test_float_core_equals_array_core(d):
+    mesh = Mesh(d["z1"], d["z2"], d["rack"], d["ts"])
+    arr, flt = mesh_geometry(mesh, d["m"], d["x1"], d["x2"]), mesh_geometry_float(mesh, d["m"], d["x1"], d["x2"])
+    assert arr.keys() == flt.keys()
+    for k, v in arr.items():
+        v = float(v)
+        assert isinstance(flt[k], float), k
+        assert abs(flt[k] - v) <= 1e-13 * max(1.0, abs(v)), (k, flt[k], v)
+
+
+def test_float_core_gives_nan_where_the_design_does_not_exist():
+    """x-sum too negative for an operating angle: NaN on both paths, never an exception."""
+    from geardesign.gears.rack import BasicRack
+    arr = mesh_geometry(Mesh(10, 10, BasicRack(), True), 1.0, -2.0, -2.0)
+    flt = mesh_geometry_float(Mesh(10, 10, BasicRack(), True), 1.0, -2.0, -2.0)
+    assert math.isnan(flt["a_w"]) and np.isnan(arr["a_w"])
+
+
+def test_geometry_blocks_equal_one_pass():
+    """Large inputs go through in blocks; the values are those of small calls (same formulas)."""
+    rng = np.random.default_rng(3)
+    n = 70_000                       # more than one block of 65 536
+    z1 = rng.integers(12, 60, n)
+    z2 = rng.integers(20, 150, n)
+    x1, x2 = rng.uniform(-0.3, 0.9, n), rng.uniform(-0.3, 0.9, n)
+    big = mesh_geometry(Mesh(z1, z2), 1.0, x1, x2)
+    for i in (0, 65_535, 65_536, n - 1):
+        one = mesh_geometry_float(Mesh(int(z1[i]), int(z2[i])), 1.0, x1[i], x2[i])
+        for k in ("a_w", "eps_alpha", "sa1", "rho_p2", "o2n1"):
+            assert big[k][i] == pytest.approx(one[k], rel=1e-13, abs=1e-13)
+
+def test_pair_geometry_fields_on_demand():
+    """KHK worked example (12/24, m = 3, x = 0.6/0.36): a_w = 56.4999 mm, ε_α = 1.202."""
+    g = gd.pair_geometry(3, 12, 24, 0.6, 0.36, fields=["a_w", "eps_alpha"])
+    assert g.names == ["a_w", "eps_alpha"]
+    assert round(g.a_w, 4) == 56.4999 and round(g.eps_alpha, 3) == 1.202
+    assert g.sw1 is None and list(g.to_frame()["quantity"]) == ["a_w", "eps_alpha"]
+    full = gd.pair_geometry(3, 12, 24, 0.6, 0.36)
+    assert REPORT_FIELDS <= set(full.names)
+    with pytest.raises(GearDesignError, match="fields must be names of GEOMETRY_FIELDS.*'a_ww'"):
+        gd.pair_geometry(3, 12, 24, 0.6, 0.36, fields=["a_ww"])

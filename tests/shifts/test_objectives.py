@@ -1,0 +1,44 @@
+"""Objectives: a registry of objects, a user's own, and those of the x-sum alone refused when a centre
+distance fixes the x-sum."""
+import numpy as np
+import pytest
+
+import geardesign as gd
+from geardesign.errors import GearDesignError
+from geardesign.gears.geometry import mesh_geometry
+from geardesign.gears.mesh import Mesh
+from geardesign.shifts.objectives import OBJECTIVES, CustomObjective
+
+
+@pytest.mark.parametrize("objective", ["max_x_sum", "min_specific_pressure"])
+def test_objectives_of_the_x_sum_alone_are_refused_on_a_fixed_center_distance(objective):
+    with pytest.raises(gd.GearDesignError, match="depends on x1 \\+ x2 alone"):
+        gd.optimize_shifts(12, 31, objective=objective, a_w=55, m=2.5)
+
+
+def test_custom_objective_equals_the_builtin_it_restates():
+    """Two routes to one optimum: a CustomObjective of x1 + x2 (numeric gradients) and max_x_sum."""
+    mine = gd.optimize_shifts(17, 26, objective=CustomObjective("x_sum", lambda g: g["_x1"] + g["_x2"]))
+    ref = gd.optimize_shifts(17, 26, objective="max_x_sum")
+    assert mine.success and mine.objective == "x_sum"
+    assert mine.x1 == pytest.approx(ref.x1, abs=1e-7) and mine.x2 == pytest.approx(ref.x2, abs=1e-7)
+
+def test_custom_objective_beats_every_feasible_grid_node():
+    """Minimum tip diameter d_a1 against a brute-force 401 x 401 grid of the same checks."""
+    r = gd.optimize_shifts(17, 26, m=8, objective=CustomObjective("min_da1", lambda g: g["da1"], "min"))
+    g = np.linspace(-1.5, 3.0, 401)
+    X1, X2 = np.meshgrid(g, g)
+    geo = mesh_geometry(Mesh(17, 26), 8.0, X1, X2)
+    ok = np.ones(X1.shape, bool)
+    for c in gd.make_checks():
+        with np.errstate(invalid="ignore"):
+            ok &= np.nan_to_num(c.margin(geo), nan=-1.0) >= 0
+    assert r.success and min(r.margins.values()) >= -1e-9
+    assert r.fun <= geo["da1"][ok].min() + 1e-9
+
+def test_objective_registry_and_refusals():
+    assert set(OBJECTIVES) == {"max_x_sum", "max_eps_alpha", "balanced_sliding", "min_specific_pressure", "max_margin"}
+    with pytest.raises(GearDesignError, match="objective must be one of"):
+        gd.optimize_shifts(17, 26, objective="fastest")
+    with pytest.raises(GearDesignError, match="sense must be 'max' or 'min'"):
+        CustomObjective("x", lambda g: g["a"], sense="up")

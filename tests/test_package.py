@@ -1,0 +1,26 @@
+"""The package face: names load on first use, so an import costs only what is used."""
+import subprocess
+import sys
+
+import pytest
+
+
+@pytest.mark.parametrize("code, absent", [
+    ("import geardesign", ("pandas", "scipy", "matplotlib", "cvxpy")),
+    ("import geardesign as gd; gd.GearPair(8, 17, 26, 0.898, 0.517).geometry()", ("pandas", "scipy", "matplotlib")),
+])
+def test_imports_load_only_what_is_used(code, absent):
+    out = subprocess.run([sys.executable, "-c", f"{code}; import sys; print(sorted(sys.modules))"],
+                         capture_output=True, text=True, check=True).stdout
+    loaded = {m.split(".")[0] for m in eval(out)}
+    assert not loaded & set(absent)
+
+def test_key_only_scene_loads_no_solver_and_no_plotting(tmp_path):
+    f = tmp_path / "k.toml"
+    f.write_text("[key]\nd_mm = 60\ntorque_nm = 503\nhub_length_mm = 50\n")
+    code = (f"from geardesign.scene import run_scene; run_scene({str(f)!r}, {str(tmp_path / 'out')!r}); "
+            "import sys; print(sorted(sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    loaded = {m.split(".")[0] for m in eval(out.strip().splitlines()[-1])}
+    assert not loaded & {"scipy", "matplotlib", "cvxpy"}
+    assert (tmp_path / "out" / "report.md").is_file()
