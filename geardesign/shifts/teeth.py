@@ -263,21 +263,33 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     if not isinstance(rack, BasicRack):
         raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
     check_names = [c.name for c in resolve_checks(checks)]
-    xs_lo, xs_hi = (float(v) for v in x_sum_window)
     z1, z2 = ratio_pairs(ratio, ratio_tol, z1_range, z_sum_max)
     ratio = float(ratio)
+    a_w = _housing(a_w)
+    m_used = m if m is not None else ("series" if a_w is not None else 1.0)
+
+    cands = _candidates(z1, z2, ratio, *_modules(m_used, m_range))
+    cands, skipped = _within_reach(cands, a_w, rack, tuple(float(v) for v in x_sum_window))
+    keys, solved = _solve(cands, a_w, objective, checks, method, rack, tip_shortening, progress)
+    table = _rank(_table(cands, keys, solved, a_w, check_names), objective.sense)
+    return TeethSelection(table=table, skipped=skipped, ratio=ratio, ratio_tol=float(ratio_tol),
+                          objective=objective.name, objective_sense=objective.sense, m=m_used, a_w=a_w,
+                          method=method, checks=check_names, n_solved=len(solved), time_s=time.perf_counter() - t0)
+
+
+def _housing(a_w):
+    """The housing centre distance: None, "series" (the GOST 2185 value above a) or a length in mm."""
     if isinstance(a_w, str):
         if a_w != "series":
             raise GearDesignError(f"a_w must be a centre distance in mm, 'series' or None, got {a_w!r}")
-    elif a_w is not None:
-        a_w = one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))
-    if m is None:
-        m_used = "series" if a_w is not None else 1.0
-    else:
-        m_used = m
-    mods, series = _modules(m_used, m_range)
+        return a_w
+    if a_w is None:
+        return None
+    return one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))
 
-    # every (pair, module) candidate, vectorised
+
+def _candidates(z1, z2, ratio: float, mods, series) -> pd.DataFrame:
+    """Every (tooth pair, module) candidate, vectorised: counts, ratio error, module and a."""
     P, M = np.meshgrid(np.arange(z1.size), np.arange(mods.size), indexing="ij")
     P, M = P.ravel(), M.ravel()
     c = pd.DataFrame({"z1": z1[P], "z2": z2[P]})
@@ -287,6 +299,13 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     c["module_mm"] = mods[M]
     c["module_series"] = series[M]
     c["a_mm"] = c["module_mm"] * c["z_sum"] / 2.0
+    return c
+
+
+def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window):
+    """(candidates to solve, skipped with reason): with a housing a_w, the pairs it can hold — a_w
+    above a·cos α (ISO 21771:2007 eq. (62) needs inv α_w > 0) and an x-sum inside the window."""
+    xs_lo, xs_hi = x_sum_window
     reason = np.full(len(c), "", dtype=object)
     if a_w is None:
         c["a_w_target_mm"] = np.nan
@@ -311,9 +330,12 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     skipped = c.loc[~keep, ["z1", "z2", "ratio", "ratio_error", "module_mm", "a_mm", "a_w_target_mm"]].copy()
     skipped["reason"] = reason[~keep]
     skipped = skipped.rename(columns={"a_w_target_mm": "a_w_mm"}).reset_index(drop=True)
-    c = c[keep].reset_index(drop=True)
+    return c[keep].reset_index(drop=True), skipped
 
-    # one solve per distinct problem: without a_w the module only scales lengths
+
+def _solve(c: pd.DataFrame, a_w, objective, checks, method, rack, tip_shortening, progress):
+    """One shift solve per distinct problem (without a_w the module only scales lengths):
+    (each candidate's key, {key: ShiftResult or the GearDesignError it raised})."""
     keys = list(zip(c["z1"], c["z2"])) if a_w is None else list(zip(c["z1"], c["z2"], c["module_mm"],
                                                                       c["a_w_target_mm"]))
     unique = list(dict.fromkeys(keys))
@@ -323,19 +345,19 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
             f"ratio_tol, z_sum_max or m_range")
     solved = {}
     for k, key in enumerate(unique):
+        housing = {"a_w": None, "m": 1.0} if a_w is None else {"a_w": key[3], "m": key[2]}
         try:
-            if a_w is None:
-                r = optimize_shifts(key[0], key[1], objective, checks, method, a_w=None, m=1.0, rack=rack,
-                                    tip_shortening=tip_shortening)
-            else:
-                r = optimize_shifts(key[0], key[1], objective, checks, method, a_w=key[3], m=key[2], rack=rack,
-                                    tip_shortening=tip_shortening)
-            solved[key] = r
+            solved[key] = optimize_shifts(key[0], key[1], objective, checks, method, rack=rack,
+                                          tip_shortening=tip_shortening, **housing)
         except GearDesignError as exc:
             solved[key] = exc
         if progress is not None:
             progress(k + 1, len(unique))
+    return keys, solved
 
+
+def _table(c: pd.DataFrame, keys, solved, a_w, check_names) -> pd.DataFrame:
+    """The candidates with their solutions: a_w, shifts, ε_α, objective, feasibility, margins."""
     rows = []
     for key, mod in zip(keys, c["module_mm"]):
         r = solved[key]
@@ -345,12 +367,7 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
                              **{f"margin_{n}": np.nan for n in check_names}))
             continue
         feasible = bool(r.success and not r.conflict)
-        if feasible:
-            why = ""
-        elif r.conflict:
-            why = "conflict: " + ", ".join(r.conflict)
-        else:
-            why = r.message
+        why = "" if feasible else ("conflict: " + ", ".join(r.conflict) if r.conflict else r.message)
         rows.append(dict(
             a_w_mm=r.a_w * (mod if a_w is None else 1.0), x_sum=r.x1 + r.x2, x1=r.x1, x2=r.x2,
             eps_alpha=r.eps_alpha, objective=r.fun, feasible=feasible, active=", ".join(r.active), reason=why,
@@ -360,10 +377,7 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
                        + [f"margin_{n}" for n in check_names])
     table = pd.concat([c.drop(columns=[k for k in ("a_w_target_mm", "x_sum_target") if k in c]), sol], axis=1)
     table["feasible"] = table["feasible"].astype(bool)
-    table = _rank(table, objective.sense)
-    return TeethSelection(table=table, skipped=skipped, ratio=ratio, ratio_tol=float(ratio_tol),
-                          objective=objective.name, objective_sense=objective.sense, m=m_used, a_w=a_w, method=method, checks=check_names,
-                          n_solved=len(unique), time_s=time.perf_counter() - t0)
+    return table
 
 
 def _rank(table: pd.DataFrame, sense: int) -> pd.DataFrame:

@@ -1,23 +1,9 @@
-"""Roller-chain drive design from standard catalogs.
-
-:func:`design` enumerates every candidate — each catalog row (a chain with its strand count)
-times each small-sprocket tooth count — evaluates all checks in one vectorised pass and ranks
-the candidates for an objective. It is a recipe of small steps (validate the inputs, build the
-candidate table, evaluate every margin, rank, wrap the result in a :class:`ChainDesign`), each
-working on numpy arrays. Every check is a signed dimensionless margin (>= 0 holds):
-
-- hinge pressure ``1 - p/[p]`` with p = F_t·K_e / (A·m_eff) (hinge-pressure method);
-- breaking-load safety ``s/[s] - 1`` with s = Q / (K_d·F_t + F_v + F_f);
-- speed ``1 - n1/n1_max`` and impacts per second ``1 - w/[w]`` (hinge-pressure method);
-- rated power ``P_rated/P_design - 1`` (power-rating method, ISO 606 / ANSI chains).
-
-Units at the interface: torque N·m, power kW, speed rpm, lengths mm, forces N, pressure MPa.
-Inside, powers are in W and chain speeds in m/s.
-"""
+"""The candidates of a chain design: validated inputs, the catalog and reference tables as arrays
+(cached by file), every catalog row × small-sprocket teeth, and every margin of each, vectorised."""
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 from typing import Mapping
@@ -25,185 +11,45 @@ from typing import Mapping
 import numpy as np
 import pandas as pd
 
-from . import sprocket
-from ..catalogs.tables import BUNDLED, catalog_dir, chain_catalog, load_catalog
-from ..errors import GearDesignError
-from ..results import Result, plain
-from ..validate import ndim, one_number, require_count, require_int, require_positive, require_range
+from .. import sprocket
+from ...catalogs.tables import BUNDLED, chain_catalog, load_catalog
+from ...errors import GearDesignError
+from ...validate import ndim, one_number, require_count, require_int, require_positive, require_range
+from .formulas import interp_speed, hinge_pressure_mpa, rated_power_link_plate_kw, rated_power_roller_bushing_kw, recommended_z1, safety_factor
 
-__all__ = [
-    "Conditions",
-    "ChainDesign",
-    "design",
-    "recommended_z1",
-    "pitch_estimate_mm",
-    "hinge_pressure_mpa",
-    "safety_factor",
-    "rated_power_link_plate_kw",
-    "rated_power_roller_bushing_kw",
-    "allowable_pressure_mpa",
-    "OBJECTIVES",
-    "METHODS",
-]
 
 OBJECTIVES = ("min_mass", "min_width", "min_sprocket_diameter", "max_safety")
+
 METHODS = ("hinge_pressure", "power_rating")
-HP_TO_KW = 0.745699872  # 1 mechanical horsepower in kW
-IN_MM = 25.4
-G = 9.81  # m/s²
 
 FACTOR_NAMES = ("k_d", "k_a", "k_n", "k_reg", "k_lub", "k_mode")
 
-
-# --------------------------------------------------------------------------------------------
-# Formulas
-# --------------------------------------------------------------------------------------------
-
 TORQUE_RANGE_NM = (1e-3, 1e7)       # a watch escapement to a mill drive; outside, margins overflow
+
 POWER_RANGE_KW = (1e-6, 1e5)
+
 N1_RANGE_RPM = (0.1, 20_000.0)      # a hand crank to the fastest small-pitch chain (tables stop lower)
+
 RATIO_RANGE = (1.0, 10.0)           # one roller-chain stage; beyond ~7 the small sprocket wraps too little
+
 K_E_RANGE = (0.1, 20.0)             # the product of the operating factors, or one given K_e
+
 FACTOR_RANGE = (0.1, 10.0)          # each operating factor k_d ... k_mode
+
 SAFETY_FACTOR_RANGE = (1.0, 100.0)  # an allowable breaking-load safety factor
+
 SAG_FACTOR_RANGE = (0.0, 10.0)      # k_f of the sag tension (6 horizontal ... 1 vertical)
+
 Z1_RANGE = (7, 200)                 # small sprocket teeth a catalog row may be given
+
 STRANDS_RANGE = (1, 4)
+
 CENTER_DISTANCE_MAX_MM = 1e5        # 100 m: past any roller-chain drive
+
 CENTER_DISTANCE_PITCHES_MAX = 80.0  # longest span a roller chain is laid out for (a <= 80 p; ISO 10823 notes)
+
 Z2_MAX_LIMIT = 250                  # largest sprocket the tooth-count rules are written for
 
-
-def recommended_z1(ratio):
-    """Small-sprocket teeth from the rule z1 = 29 − 2u, rounded to odd, bounded to [13, 29].
-
-    Source: Russian course-design practice (Chernavsky, course design of machine parts, chain
-    drives; docs/references.md): odd tooth counts spread the wear with an even number of links.
-
-    >>> recommended_z1(1), recommended_z1(3), recommended_z1(8)
-    (27, 23, 13)
-    """
-    u = float(ratio)
-    z = 29.0 - 2.0 * u
-    odd = 2 * np.floor(z / 2.0) + 1  # the nearest odd number (an even z rounds up)
-    return int(np.clip(odd, 13, 29))
-
-
-def pitch_estimate_mm(torque_nm, z1, allowable_pressure_mpa, k_e=1.0, strand_factor=1.0):
-    """Classic starting estimate of the pitch, t >= 2.8·(T1·K_e / (z1·[p]·m))^(1/3) [mm].
-
-    T1 in N·mm inside the root (the argument is N·m); m = strands·K_m is the effective strand
-    factor (1, 1.7, 2.5, 3). It follows from p = F_t·K_e/A with A ≈ 0.28·t² per strand and
-    F_t = 2T/d, d ≈ z·t/π. Source: Chernavsky, course design of machine parts; seed 002 1.9.5.
-
-    >>> round(float(pitch_estimate_mm(380, 13, 29, 2.1484, 1.0)), 2)  # seed 002: 36.23 mm
-    36.23
-    >>> round(float(pitch_estimate_mm(380, 13, 29, 2.1484, 2 * 0.85)), 2)  # seed 002: 30.35 mm
-    30.35
-    """
-    t_nmm = np.asarray(torque_nm, dtype=float) * 1000.0
-    return 2.8 * np.cbrt(t_nmm * k_e / (np.asarray(z1, dtype=float) * allowable_pressure_mpa * strand_factor))
-
-
-def hinge_pressure_mpa(force_n, k_e, hinge_area_mm2, strand_factor):
-    """Hinge (pin-bushing) pressure p = F_t·K_e / (A·m_eff) [MPa].
-
-    A is the projected bearing area of one strand (pin diameter × inner-link width) in mm²,
-    m_eff = strands·K_m. Source: Chernavsky, course design of machine parts (chain check
-    p <= [p]); GOST 13568-75 gives A.
-
-    >>> round(float(hinge_pressure_mpa(5785.0, 2.148, 260.0, 1.7)), 2)
-    28.11
-    """
-    return np.asarray(force_n, dtype=float) * k_e / (np.asarray(hinge_area_mm2, dtype=float) * strand_factor)
-
-
-def safety_factor(breaking_load_n, force_n, k_d, mass_kg_m, speed_m_s, center_distance_mm, sag_factor=6.0):
-    """Breaking-load safety factor s = Q / (K_d·F_t + F_v + F_f).
-
-    F_v = q·v² (centrifugal tension), F_f = 9.81·k_f·q·a (sag tension, a in m; k_f = 6 for a
-    horizontal drive, 1.5 at 40°, 1 vertical). Source: Chernavsky, course design of machine
-    parts; Ivanov, Machine parts (chain drives).
-
-    Bhandari Ex. 14.1 uses s = Q/F_t alone (no K_d, no F_v, no F_f): 31 100 N over the tension
-    that carries 14.32 kW at 5.3975 m/s gives 11.722:
-
-    >>> round(float(safety_factor(31100, 14320 / 5.3975, 1.0, 0.0, 5.3975, 0.0)), 4)
-    11.7222
-    """
-    q = np.asarray(mass_kg_m, dtype=float)
-    v = np.asarray(speed_m_s, dtype=float)
-    f_v = q * v * v
-    f_f = G * sag_factor * q * np.asarray(center_distance_mm, dtype=float) / 1000.0
-    return np.asarray(breaking_load_n, dtype=float) / (k_d * np.asarray(force_n, dtype=float) + f_v + f_f)
-
-
-def rated_power_link_plate_kw(z1, n1_rpm, pitch_mm, k_plate=0.004):
-    """Link-plate fatigue rating of one strand, ANSI: HP = K·N^1.08·n^0.9·p^(3.0 − 0.07p) [kW].
-
-    N small-sprocket teeth, n its rpm, p the pitch in inches; K = 0.004 (0.0022 for No. 41).
-    Source: ANSI/ASME B29.1 horsepower formulas as printed in roller-chain catalogue pages
-    (docs/references.md).
-
-    >>> hp = 0.004 * 17**1.08 * 1400**0.9 * 0.5**(3.0 - 0.07 * 0.5)
-    >>> round(float(rated_power_link_plate_kw(17, 1400, 12.7)) / 0.745699872 - hp, 12)
-    0.0
-    """
-    p_in = np.asarray(pitch_mm, dtype=float) / IN_MM
-    hp = (np.asarray(k_plate, dtype=float) * np.asarray(z1, dtype=float) ** 1.08
-          * np.asarray(n1_rpm, dtype=float) ** 0.9 * p_in ** (3.0 - 0.07 * p_in))
-    return hp * HP_TO_KW
-
-
-def rated_power_roller_bushing_kw(z1, n1_rpm, pitch_mm, k_roller=17.0):
-    """Roller-bushing impact rating of one strand, ANSI: HP = 1000·K·N^1.5·p^0.8 / n^1.5 [kW].
-
-    K = 29 for No. 25 and 35, 3.4 for No. 41, 17 for No. 40-240. Same source as
-    :func:`rated_power_link_plate_kw`.
-    """
-    p_in = np.asarray(pitch_mm, dtype=float) / IN_MM
-    hp = (1000.0 * np.asarray(k_roller, dtype=float) * np.asarray(z1, dtype=float) ** 1.5 * p_in ** 0.8
-          / np.asarray(n1_rpm, dtype=float) ** 1.5)
-    return hp * HP_TO_KW
-
-
-def _interp_speed(values_n, values_y, n1):
-    """Interpolate a table row y(n1) linearly; return (value, status).
-
-    status 0: inside the table; -1: below its first speed (the first value is returned: the
-    allowable values fall, and [s] rises, with speed, so the first column is the conservative
-    one for [p] and is flagged); +1: above its last speed (NaN: no silent extrapolation).
-    """
-    if n1 < values_n[0]:
-        return float(values_y[0]), -1
-    if n1 > values_n[-1]:
-        return float("nan"), 1
-    return float(np.interp(n1, values_n, values_y)), 0
-
-
-def allowable_pressure_mpa(pitch_mm, n1_rpm, table: pd.DataFrame | None = None):
-    """Allowable hinge pressure [p] for a pitch at small-sprocket speed n1 [MPa], with status.
-
-    Linear interpolation between the table's speeds. Returns ``(value, status)`` with status
-    as in :func:`_interp_speed`; a pitch outside every group gives (NaN, 2).
-    Source: catalogs/chain_allowable_pressure.csv (Chernavsky/Sheinblit layout, z1 = 17 basis).
-
-    >>> allowable_pressure_mpa(31.75, 200)
-    (29.0, 0)
-    >>> allowable_pressure_mpa(31.75, 125)  # halfway between 35 MPa (50 rpm) and 29 MPa (200 rpm)
-    (32.0, 0)
-    """
-    table = load_catalog("chain_allowable_pressure") if table is None else table
-    tol = 1e-6
-    rows = table[(table["pitch_min_mm"] - tol <= pitch_mm) & (pitch_mm <= table["pitch_max_mm"] + tol)]
-    if rows.empty:
-        return float("nan"), 2
-    return _interp_speed(rows["n1_rpm"].to_numpy(), rows["allowable_pressure_mpa"].to_numpy(), n1_rpm)
-
-
-# --------------------------------------------------------------------------------------------
-# Inputs
-# --------------------------------------------------------------------------------------------
 
 @dataclass(frozen=True)
 class Conditions:
@@ -261,91 +107,8 @@ def _conditions(conditions, k_e):
     return conditions, conditions.k_e, conditions.k_d
 
 
-# --------------------------------------------------------------------------------------------
-# Result
-# --------------------------------------------------------------------------------------------
-
-@dataclass(frozen=True, eq=False)
-class ChainDesign(Result):
-    """Result of :func:`design`: every candidate ranked, the best feasible one, and why.
-
-    Attributes
-    ----------
-    candidates : DataFrame, ranked (feasible first, then by the objective).
-    best : Series or None, the top feasible candidate.
-    success : bool; message : str.
-    blocking : DataFrame, per chain family (designation) the candidate closest to passing, its
-        limiting check and margin — filled whenever no candidate passes, and always available.
-    pitch_estimate_mm : dict strands -> classic pitch estimate (hinge method), a starting point.
-    """
-
-    candidates: pd.DataFrame
-    best: pd.Series | None
-    success: bool
-    message: str
-    method: str
-    objective: str
-    catalog: str
-    k_e: float
-    inputs: dict
-    pitch_estimate_mm: dict
-    blocking: pd.DataFrame
-    notes: tuple = field(default_factory=tuple)
-
-    _table_fields = ("candidates",)
-
-    def to_dict(self) -> dict:
-        return plain({
-            "status": self.status,
-            "success": self.success,
-            "message": self.message,
-            "method": self.method,
-            "objective": self.objective,
-            "catalog": self.catalog,
-            "k_e": self.k_e,
-            "inputs": self.inputs,
-            "pitch_estimate_mm": self.pitch_estimate_mm,
-            "best": None if self.best is None else dict(self.best.items()),
-            "blocking": self.blocking,
-            "notes": list(self.notes),
-            "n_candidates": int(len(self.candidates)),
-            "n_feasible": int(self.candidates["feasible"].sum()),
-        })
-
-    def __repr__(self) -> str:
-        lines = [f"ChainDesign({self.method}, objective={self.objective}, catalog={self.catalog}, "
-                 f"K_e={self.k_e:.4g}): {self.message}"]
-        if self.pitch_estimate_mm:
-            est = ", ".join(f"{k} strand{'s' if k > 1 else ''}: {v:.2f} mm" for k, v in self.pitch_estimate_mm.items())
-            lines.append(f"  pitch estimate t >= {est}")
-        if self.best is not None:
-            b = self.best
-            lines.append(
-                f"  best: {b['designation']}  p={b['pitch_mm']:g} mm x{int(b['strands'])}  z1/z2={int(b['z1'])}/{int(b['z2'])}"
-                f"  links={int(b['links'])}  a={b['center_distance_mm']:.1f} mm  v={b['speed_m_s']:.3g} m/s"
-                f"  F_t={b['force_n']:.0f} N")
-            checks = "  ".join(f"{c[7:]}={b[c]:+.3f}" for c in _MARGINS if c in b and np.isfinite(b[c]))
-            lines.append(f"  margins: {checks}")
-        lines.append(f"  {len(self.candidates)} candidates, {int(self.candidates['feasible'].sum())} feasible")
-        return "\n".join(lines)
-
-
-_MARGINS = ("margin_pressure", "margin_safety", "margin_speed", "margin_impacts", "margin_power")
-
-
-# --------------------------------------------------------------------------------------------
-# Design: a recipe of steps
-#
-#   design(...) = _validate_inputs -> (_load_chains, _reference_tables) -> _candidate_table
-#                 -> _evaluate -> _rank -> _wrap_result
-#
-# Every step works on numpy arrays, one entry per candidate. pandas appears only where a table
-# is read (once per file version: the arrays are kept) and where the ranked table the user sees
-# is built (once per call).
-# --------------------------------------------------------------------------------------------
-
 @dataclass(frozen=True)
-class _Inputs:
+class Inputs:
     """The inputs of :func:`design` after validation, in the units used inside (power in W)."""
 
     torque: float                    # N·m on the small sprocket
@@ -370,7 +133,7 @@ class _Inputs:
 
 
 @dataclass(frozen=True)
-class _ReferenceTables:
+class ReferenceTables:
     """The tables every design reads besides the chain catalog, as read-only numpy arrays.
 
     Sources: catalogs/chain_speed_limits.csv, chain_strand_factors.csv, chain_safety_factor.csv
@@ -423,7 +186,7 @@ def _read_only(a: np.ndarray) -> np.ndarray:
     return a
 
 
-class _Candidates:
+class Candidates:
     """The candidate table under construction: one entry per (chain row, z1) pair.
 
     ``rows`` indexes the chain table; ``columns`` maps a computed column to its numpy array in
@@ -453,34 +216,14 @@ class _Candidates:
     def __setitem__(self, name, values) -> None:
         self.columns[name] = values
 
-
-# The computed columns, in the order they follow the catalog's own columns before the result
-# table puts the main ones first (see _RESULT_FRONT).
-_COMPUTED_ORDER = (
-    "z1", "z2", "speed_m_s", "force_n", "links", "center_distance_mm",
-    "sprocket1_pitch_diameter_mm", "sprocket1_tip_diameter_mm", "sprocket1_root_diameter_mm",
-    "sprocket2_pitch_diameter_mm", "sprocket2_tip_diameter_mm", "sprocket2_root_diameter_mm",
-    "width_mm", "chain_mass_kg", "impacts_per_s", "breaking_load_n", "margin_center_distance", "safety_factor",
-    "n1_max_rpm", "allowable_impacts_per_s", "allowable_safety_factor", "margin_safety", "strand_factor",
-    "pressure_mpa", "allowable_pressure_mpa", "margin_pressure", "margin_speed", "margin_impacts",
-    "rated_power_kw", "rating_limit", "design_power_kw", "margin_power",
-    "min_margin", "limiting_check", "feasible",
-)
-_RESULT_FRONT = ("rank", "designation", "pitch_mm", "strands", "z1", "z2", "links", "center_distance_mm",
-                 "speed_m_s", "force_n", "pressure_mpa", "allowable_pressure_mpa", "safety_factor",
-                 "allowable_safety_factor", "mass_kg_m", "feasible", "min_margin", "limiting_check")
-_RESULT_TAIL = ("edition", "source", "note")
-_BLOCKING_COLUMNS = ("designation", "pitch_mm", "strands", "z1", "feasible", "limiting_check", "min_margin")
-_OBJECTIVE_KEYS = {"min_mass": ("mass_kg_m", True), "min_width": ("width_mm", True),
+OBJECTIVE_KEYS = {"min_mass": ("mass_kg_m", True), "min_width": ("width_mm", True),
                    "min_sprocket_diameter": ("sprocket2_tip_diameter_mm", True), "max_safety": ("min_margin", False)}
 
 
-# ---- step 1: inputs ----
-
-def _validate_inputs(torque_nm, power_kw, n1_rpm, ratio, conditions, k_e, allowable_pressure_mpa,
+def validate_inputs(torque_nm, power_kw, n1_rpm, ratio, conditions, k_e, allowable_pressure_mpa,
                      allowable_safety_factor, catalog, strands, z1, center_distance_mm, objective, method,
-                     sag_factor, z2_max, center_distance_pitches) -> _Inputs:
-    """Check every input of :func:`design` against its range and return them as :class:`_Inputs`.
+                     sag_factor, z2_max, center_distance_pitches) -> Inputs:
+    """Check every input of :func:`design` against its range and return them as :class:`Inputs`.
 
     The load is carried as both torque and power (P = T·ω, ω = 2π·n1/60). Without ``z1`` the
     tooth counts tried are the odd ones from 13 to the rule z1 = 29 − 2u (:func:`recommended_z1`).
@@ -537,14 +280,11 @@ def _validate_inputs(torque_nm, power_kw, n1_rpm, ratio, conditions, k_e, allowa
             "center_distance_mm", center_distance_mm, 0.0, CENTER_DISTANCE_MAX_MM, lo_open=True, unit="mm"))
     cpitches = one_number("center_distance_pitches", require_range(
         "center_distance_pitches", center_distance_pitches, 10.0, 100.0))
-    return _Inputs(torque=torque, power_w=power_w, n1=n1, u=u, conditions=cond, k_e=k_e_val, k_d=k_d,
+    return Inputs(torque=torque, power_w=power_w, n1=n1, u=u, conditions=cond, k_e=k_e_val, k_d=k_d,
                    strands=strands_t, allowable_pressure_mpa=allowable_pressure_mpa,
                    allowable_safety_factor=allowable_safety_factor, sag=sag, z2_max=z2_max, z1_values=z1_values,
                    z1_given=z1 is not None, center_distance_mm=center_distance_mm,
                    center_distance_pitches=cpitches, objective=objective, method=method, catalog=catalog)
-
-
-# ---- step 2: tables and candidates ----
 
 _TABLE_CACHE_SIZE = 32
 
@@ -577,7 +317,7 @@ def _cached_chain_table(key, name_or_path) -> _ChainTable:
     return _ChainTable(chain_catalog(name_or_path))
 
 
-def _load_chains(inp: _Inputs, folder) -> _ChainTable:
+def load_chains(inp: Inputs, folder) -> _ChainTable:
     """The validated chain catalog (:func:`~geardesign.catalogs.tables.chain_catalog`), read once.
 
     Kept (like the catalog loader's own cache) per file, modification time and size, so an
@@ -590,26 +330,25 @@ def _load_chains(inp: _Inputs, folder) -> _ChainTable:
         raise GearDesignError(f"catalog {str(inp.catalog)!r} has no chain with strands in {inp.strands}")
     return chains
 
-
 _REFERENCE_NAMES = ("chain_speed_limits", "chain_strand_factors", "chain_safety_factor", "chain_allowable_pressure")
 
 
 @lru_cache(maxsize=_TABLE_CACHE_SIZE)
-def _cached_reference_tables(keys) -> _ReferenceTables:
+def _cached_reference_tables(keys) -> ReferenceTables:
     """The four reference tables as arrays, kept per the :func:`_file_key` ``keys`` of their files."""
     speed, strand, safety, pressure = (load_catalog(name) for name in _REFERENCE_NAMES)
 
     def cols(frame, *names):
         return tuple(_read_only(frame[n].to_numpy(dtype=float)) for n in names)
 
-    return _ReferenceTables(*cols(speed, "pitch_mm", "n1_max_rpm", "impacts_allowed_per_s"),
+    return ReferenceTables(*cols(speed, "pitch_mm", "n1_max_rpm", "impacts_allowed_per_s"),
                             _read_only(strand["strands"].to_numpy()),
                             *cols(strand, "hinge_strand_factor", "power_strand_factor"),
                             safety=cols(safety, "pitch_mm", "n1_rpm", "allowable_safety_factor"),
                             pressure=cols(pressure, "pitch_min_mm", "pitch_max_mm", "n1_rpm", "allowable_pressure_mpa"))
 
 
-def _reference_tables(folder) -> _ReferenceTables:
+def reference_tables(folder) -> ReferenceTables:
     """The speed-limit, strand-factor, [s] and [p] tables as arrays, read once per file version."""
     keys = tuple(_file_key(name, folder) for name in _REFERENCE_NAMES)
     if any(k is None for k in keys):
@@ -617,7 +356,7 @@ def _reference_tables(folder) -> _ReferenceTables:
     return _cached_reference_tables(keys)
 
 
-def _candidate_table(chains: _ChainTable, inp: _Inputs) -> _Candidates:
+def candidate_table(chains: _ChainTable, inp: Inputs) -> Candidates:
     """Every chain row of the asked strand counts times every z1, z2 = round(u·z1) <= z2_max.
 
     Rows vary slowest (the catalog's order), z1 fastest; built with np.repeat / np.tile.
@@ -631,12 +370,10 @@ def _candidate_table(chains: _ChainTable, inp: _Inputs) -> _Candidates:
     if not keep.any():
         raise GearDesignError(f"no small sprocket z1 in {[int(z) for z in inp.z1_values]} keeps z2 = u·z1 <= "
                               f"z2_max = {inp.z2_max} at ratio {inp.u:g}")
-    return _Candidates(chains, rows[keep], z1[keep], z2[keep])
+    return Candidates(chains, rows[keep], z1[keep], z2[keep])
 
 
-# ---- step 3: evaluate every candidate ----
-
-def _layout(c: _Candidates, inp: _Inputs) -> None:
+def _layout(c: Candidates, inp: Inputs) -> None:
     """Chain speed, pull, loop and sprocket geometry of every candidate (formulas in :mod:`.sprocket`).
 
     v = z1·t·n1/60 000, F_t = P/v; the loop is laid out at the asked centre distance (default
@@ -680,14 +417,14 @@ def _lookup_by_pitch(pitches: np.ndarray, match: np.ndarray, table_n: np.ndarray
     """Interpolate a table along n1 for each distinct pitch; returns (values, status) per candidate.
 
     ``match[i, j]`` says whether table row j belongs to the i-th distinct pitch (np.unique
-    order). Status as in :func:`_interp_speed`; 2 where no row matches (value NaN).
+    order). Status as in :func:`interp_speed`; 2 where no row matches (value NaN).
     """
     _, inverse = np.unique(pitches, return_inverse=True)
     values = np.full(len(match), np.nan)
     status = np.full(len(match), 2, dtype=np.int64)
     for i in np.flatnonzero(match.any(axis=1)):
         rows = match[i]
-        values[i], status[i] = _interp_speed(table_n[rows], table_y[rows], n1)
+        values[i], status[i] = interp_speed(table_n[rows], table_y[rows], n1)
     return values[inverse], status[inverse]
 
 
@@ -697,7 +434,7 @@ def _pressure_groups(unique_pitches, pitch_min, pitch_max, tol=1e-6):
     return (pitch_min[None, :] - tol <= p) & (p <= pitch_max[None, :] + tol)
 
 
-def _speed_limits(c: _Candidates, inp: _Inputs, tables: _ReferenceTables) -> None:
+def _speed_limits(c: Candidates, inp: Inputs, tables: ReferenceTables) -> None:
     """Maximum small-sprocket speed n1_max and allowed impacts per second [w] of each pitch.
 
     A pitch matches a table row within np.isclose (atol 1e-6 mm); a pitch without a row gets
@@ -719,7 +456,7 @@ def _speed_limits(c: _Candidates, inp: _Inputs, tables: _ReferenceTables) -> Non
     c["allowable_impacts_per_s"] = w_max_u[inverse]
 
 
-def _safety_check(c: _Candidates, inp: _Inputs, tables: _ReferenceTables, notes: list) -> None:
+def _safety_check(c: Candidates, inp: Inputs, tables: ReferenceTables, notes: list) -> None:
     """Breaking-load safety s (:func:`safety_factor`) against [s]: margin s/[s] − 1.
 
     [s] is the override or the catalogs/chain_safety_factor.csv value of the pitch,
@@ -740,7 +477,7 @@ def _safety_check(c: _Candidates, inp: _Inputs, tables: _ReferenceTables, notes:
     c["margin_safety"] = c["safety_factor"] / s_allow - 1.0
 
 
-def _hinge_checks(c: _Candidates, inp: _Inputs, tables: _ReferenceTables, notes: list) -> list:
+def _hinge_checks(c: Candidates, inp: Inputs, tables: ReferenceTables, notes: list) -> list:
     """Hinge-pressure method: p = F_t·K_e/(A·m_eff) against [p], n1 against n1_max, w against [w].
 
     Margins 1 − p/[p], 1 − n1/n1_max, 1 − w/[w] (Chernavsky, course design of machine parts).
@@ -749,7 +486,7 @@ def _hinge_checks(c: _Candidates, inp: _Inputs, tables: _ReferenceTables, notes:
     table (NaN: the check has no data). Returns the names of the checks that decide feasibility.
     """
     t = c["pitch_mm"]
-    m_eff = tables.hinge_strand_factor[_strand_index(tables, c["strands"])]
+    m_eff = tables.hinge_strand_factor[strand_index(tables, c["strands"])]
     p = hinge_pressure_mpa(c["force_n"], inp.k_e, c["hinge_area_mm2"], m_eff)
     if inp.allowable_pressure_mpa is not None:
         p_allow = np.full(t.shape, inp.allowable_pressure_mpa)
@@ -771,7 +508,7 @@ def _hinge_checks(c: _Candidates, inp: _Inputs, tables: _ReferenceTables, notes:
     return ["margin_pressure", "margin_safety", "margin_speed", "margin_impacts"]
 
 
-def _power_checks(c: _Candidates, inp: _Inputs, tables: _ReferenceTables, notes: list) -> list:
+def _power_checks(c: Candidates, inp: Inputs, tables: ReferenceTables, notes: list) -> list:
     """Power-rating method: rated power of the strands against the design power P·K_e.
 
     Rated power = min(link-plate, roller-bushing rating) of one strand (ANSI B29.1 formulas,
@@ -783,7 +520,7 @@ def _power_checks(c: _Candidates, inp: _Inputs, tables: _ReferenceTables, notes:
     t, z1a = c["pitch_mm"], c["z1"].astype(float)
     k_pl = c["rating_k_plate"] if "rating_k_plate" in c else np.full(t.shape, 0.004)
     k_rb = c["rating_k_roller"] if "rating_k_roller" in c else np.full(t.shape, 17.0)
-    m_pow = tables.power_strand_factor[_strand_index(tables, c["strands"])]
+    m_pow = tables.power_strand_factor[strand_index(tables, c["strands"])]
     plate = rated_power_link_plate_kw(z1a, inp.n1, t, k_pl)
     roller = rated_power_roller_bushing_kw(z1a, inp.n1, t, k_rb)
     c["strand_factor"] = m_pow
@@ -799,7 +536,7 @@ def _power_checks(c: _Candidates, inp: _Inputs, tables: _ReferenceTables, notes:
     return ["margin_power"]
 
 
-def _strand_index(tables: _ReferenceTables, strands: np.ndarray) -> np.ndarray:
+def strand_index(tables: ReferenceTables, strands: np.ndarray) -> np.ndarray:
     """Row of the strand-factor table for each strand count (KeyError for a count it lacks)."""
     idx = np.searchsorted(tables.strands, strands)
     ok = idx < len(tables.strands)
@@ -809,7 +546,7 @@ def _strand_index(tables: _ReferenceTables, strands: np.ndarray) -> np.ndarray:
     return idx
 
 
-def _limiting_check(c: _Candidates, checks: list) -> None:
+def _limiting_check(c: Candidates, checks: list) -> None:
     """The smallest margin of each candidate, the check it belongs to, and feasibility.
 
     A check without table data (NaN margin) cannot pass but is named as limiting only when
@@ -828,7 +565,7 @@ def _limiting_check(c: _Candidates, checks: list) -> None:
     c["feasible"] = ~no_data.any(axis=1) & (min_margin >= 0)
 
 
-def _evaluate(c: _Candidates, inp: _Inputs, tables: _ReferenceTables) -> tuple[list, list]:
+def evaluate(c: Candidates, inp: Inputs, tables: ReferenceTables) -> tuple[list, list]:
     """Every check of every candidate, vectorised: layout, speed limits, safety, the method's checks.
 
     Returns (checks, notes): the margin columns that decide feasibility, in report order, and
@@ -846,187 +583,3 @@ def _evaluate(c: _Candidates, inp: _Inputs, tables: _ReferenceTables) -> tuple[l
                   + (["margin_safety"] if inp.allowable_safety_factor is not None else []))
     _limiting_check(c, checks)
     return checks, notes
-
-
-# ---- step 4: rank ----
-
-def _rank(c: _Candidates, inp: _Inputs) -> np.ndarray:
-    """The candidate order: feasible first, then the objective, then smaller pitch, fewer
-    strands, z1 nearest the rule z1 = 29 − 2u. A stable sort; NaN objective values go last.
-    """
-    column, ascending = _OBJECTIVE_KEYS[inp.objective]
-    key = np.asarray(c[column], dtype=float)
-    nan = np.isnan(key)
-    key = np.where(nan, 0.0, key if ascending else -key)
-    zdist = np.abs(c["z1"] - recommended_z1(inp.u))
-    return np.lexsort((zdist, c["strands"], c["pitch_mm"], key, nan, ~c["feasible"]))
-
-
-# ---- step 5: result ----
-
-def _result_table(c: _Candidates, order: np.ndarray, checks: list) -> dict:
-    """The ranked candidate table as {column: array}, in the column order users see.
-
-    First rank, the chain, the geometry, the loads, feasibility and the margins that decide it;
-    then the other columns (the catalog's, then the computed ones); the catalog's edition,
-    source and note last.
-    """
-    catalog_cols = c.chains.columns
-    columns = catalog_cols + [k for k in _COMPUTED_ORDER if k in c.columns and k not in catalog_cols]
-    columns += [k for k in c.columns if k not in columns]
-    front = list(_RESULT_FRONT) + checks
-    rest = [k for k in columns if k not in front and k not in _RESULT_TAIL]
-    tail = [k for k in _RESULT_TAIL if k in columns]
-    rows = c.rows[order]
-    table = {}
-    for k in front + rest + tail:
-        if k == "rank":
-            table[k] = np.arange(1, len(order) + 1)
-        elif k in c.columns:
-            table[k] = np.asarray(c.columns[k])[order]
-        else:
-            table[k] = c.chains.take(k, rows)
-    return table
-
-
-def _frame(table: dict, index, attrs: dict) -> pd.DataFrame:
-    """A DataFrame of some rows (``index``, or all) of a column table, with the catalog's attrs."""
-    frame = pd.DataFrame({k: v if index is None else v[index] for k, v in table.items()}, copy=False)
-    frame.attrs = dict(attrs)
-    return frame
-
-
-def _blocking(table: dict, attrs: dict) -> tuple[pd.DataFrame, int]:
-    """Per chain family (designation) the candidate closest to passing, by pitch and strands.
-
-    Returns the table and the row (in ranked order) of the candidate closest to passing overall
-    (largest smallest margin; NaN margins last; ties keep the ranked order).
-    """
-    mm = np.asarray(table["min_margin"], dtype=float)
-    nan = np.isnan(mm)
-    by_margin = np.lexsort((np.where(nan, 0.0, -mm), nan))
-    first: dict = {}
-    for i, name in enumerate(np.asarray(table["designation"], dtype=object)[by_margin].tolist()):
-        first.setdefault(name, i)
-    keep = by_margin[np.fromiter(first.values(), dtype=np.int64, count=len(first))]
-    keep = keep[np.lexsort((table["strands"][keep], table["pitch_mm"][keep]))]
-    blocking = _frame({k: table[k] for k in _BLOCKING_COLUMNS}, keep, attrs)
-    return blocking, int(by_margin[0])
-
-
-def _message(best, table: dict, closest: int) -> str:
-    """One line: the best candidate and its limiting check, or the candidate closest to passing."""
-    if best is not None:
-        return (f"{best['designation']} with z1/z2 = {int(best['z1'])}/{int(best['z2'])}, {int(best['links'])} links; "
-                f"limiting check {best['limiting_check']} (margin {best['min_margin']:+.3f})")
-    return (f"no candidate passes; closest is {table['designation'][closest]} (z1 = {int(table['z1'][closest])}), "
-            f"stopped by {table['limiting_check'][closest]} with margin {table['min_margin'][closest]:+.3f}; "
-            "see .blocking for every family")
-
-
-def _pitch_estimates(c: _Candidates, inp: _Inputs, tables: _ReferenceTables) -> dict:
-    """Classic pitch estimate (:func:`pitch_estimate_mm`) per strand count, hinge method only.
-
-    [p] is the override or the largest table [p] among that strand count's candidates; z1 the
-    first given tooth count or the rule's. A strand count without [p] data gets no estimate.
-    """
-    estimate = {}
-    if inp.method != "hinge_pressure":
-        return estimate
-    strands, p_allow = c["strands"], np.asarray(c["allowable_pressure_mpa"], dtype=float)
-    for s in inp.strands:
-        p_ref = inp.allowable_pressure_mpa
-        if p_ref is None:
-            mine = strands == s
-            p_ref = np.nanmax(p_allow[mine], initial=np.nan) if mine.any() else np.nan
-        z_ref = float(inp.z1_values[0]) if inp.z1_given else float(recommended_z1(inp.u))
-        factor = float(tables.hinge_strand_factor[_strand_index(tables, np.array([s]))[0]])
-        t_est = float(pitch_estimate_mm(inp.torque, z_ref, p_ref, inp.k_e, factor))
-        if np.isfinite(t_est):   # no [p] for these pitches and speed: no estimate either
-            estimate[s] = t_est
-    return estimate
-
-
-def _inputs_record(inp: _Inputs) -> dict:
-    """The inputs as the result reports them (``ChainDesign.inputs``)."""
-    inputs = dict(torque_nm=inp.torque, power_kw=inp.power_w / 1000.0, n1_rpm=inp.n1, ratio=inp.u, k_e=inp.k_e,
-                  k_d=inp.k_d, allowable_pressure_mpa=inp.allowable_pressure_mpa,
-                  allowable_safety_factor=inp.allowable_safety_factor, strands=list(inp.strands),
-                  z1=[int(z) for z in inp.z1_values] if inp.z1_given else None,
-                  center_distance_mm=inp.center_distance_mm, sag_factor=inp.sag)
-    if inp.conditions is not None:
-        inputs.update({k: getattr(inp.conditions, k) for k in FACTOR_NAMES})
-    return inputs
-
-
-def _wrap_result(c: _Candidates, order: np.ndarray, checks: list, notes: list, inp: _Inputs,
-                 tables: _ReferenceTables) -> ChainDesign:
-    """Build the ranked candidate table, the best feasible row, the blocking table and the message."""
-    attrs = c.chains.attrs
-    table = _result_table(c, order, checks)
-    candidates = _frame(table, None, attrs)
-    best = candidates.iloc[0] if table["feasible"][0] else None
-    blocking, closest = _blocking(table, attrs)
-    return ChainDesign(candidates=candidates, best=best, success=best is not None,
-                       message=_message(best, table, closest), method=inp.method, objective=inp.objective,
-                       catalog=str(inp.catalog), k_e=inp.k_e, inputs=_inputs_record(inp),
-                       pitch_estimate_mm=_pitch_estimates(c, inp, tables), blocking=blocking, notes=tuple(notes))
-
-
-def design(torque_nm=None, power_kw=None, *, n1_rpm, ratio, conditions=None, k_e=None,
-           allowable_pressure_mpa=None, allowable_safety_factor=None, catalog="gost13568",
-           strands=(1, 2, 3), z1=None, center_distance_mm=None, objective="min_mass",
-           method="hinge_pressure", sag_factor=6.0, z2_max=120, center_distance_pitches=40.0) -> ChainDesign:
-    """Size a roller-chain drive from a catalog.
-
-    Parameters
-    ----------
-    torque_nm, power_kw : float
-        Load on the small (driving) sprocket: give one, torque in N·m or power in kW.
-    n1_rpm : float
-        Speed of the small sprocket [rpm].
-    ratio : float
-        Speed ratio u = n1/n2 in [1, 10]; with the smallest small sprocket z1 = 13 the large one
-        needs z2 = 13·u <= ``z2_max``, so above z2_max/13 (9.23 at the default 120, the usual limit
-        of chain wear elongation) raise ``z2_max`` (at most 250) or split the ratio.
-    conditions : Conditions or mapping, optional
-        The operating factors K_d, K_a, K_n, K_reg, K_lub, K_mode (numbers or condition names);
-        K_e is their product. ``k_e`` gives the product directly (K_d is then taken as 1 in
-        the safety factor). Neither: K_e = 1.
-    allowable_pressure_mpa, allowable_safety_factor : float, optional
-        Override the [p] and [s] tables.
-    catalog : str or path
-        ``"gost13568"``, ``"iso606"``, ``"iso606a"``, ``"iso606b"``, ``"ansi_b29"`` or a CSV path.
-    strands : iterable of int
-        Strand counts to consider.
-    z1 : int, optional
-        Small-sprocket teeth. Default: every odd count from 13 to the rule z1 = 29 − 2u.
-    center_distance_mm : float, optional
-        Target centre distance; default 40 pitches (30-50 recommended), at least the sprocket
-        clearance 0.5·(D_e1 + D_e2) + 30 mm. The link count is the nearest even number and the
-        centre distance is recomputed exactly for it.
-    objective : {"min_mass", "min_width", "min_sprocket_diameter", "max_safety"}
-        min_mass: lightest chain per metre; min_width: narrowest chain over all strands;
-        min_sprocket_diameter: smallest tip diameter of the large sprocket; max_safety: largest
-        smallest margin. Ties go to the smaller pitch, then to fewer strands.
-    method : {"hinge_pressure", "power_rating"}
-        hinge_pressure: checks p <= [p], s >= [s], n1 <= n1_max, impacts <= [w] (Russian
-        practice, GOST tables). power_rating: rated power of the strands (ANSI link-plate and
-        roller-bushing formulas, z1 enters directly, multiple-strand factor) against the design
-        power P·K_e; [s] is checked only when ``allowable_safety_factor`` is given.
-    sag_factor : float
-        k_f of the sag tension (6 horizontal, 1.5 at 40°, 1 vertical).
-
-    The steps: :func:`_validate_inputs`, :func:`_candidate_table` (catalog rows × z1),
-    :func:`_evaluate` (every margin, vectorised), :func:`_rank`, :func:`_wrap_result`.
-    """
-    inp = _validate_inputs(torque_nm, power_kw, n1_rpm, ratio, conditions, k_e, allowable_pressure_mpa,
-                           allowable_safety_factor, catalog, strands, z1, center_distance_mm, objective, method,
-                           sag_factor, z2_max, center_distance_pitches)
-    folder = catalog_dir()
-    chains = _load_chains(inp, folder)
-    tables = _reference_tables(folder)
-    cand = _candidate_table(chains, inp)
-    checks, notes = _evaluate(cand, inp, tables)
-    order = _rank(cand, inp)
-    return _wrap_result(cand, order, checks, notes, inp, tables)
