@@ -6,8 +6,7 @@ import re
 from ..shifts.atlas import ATLAS_PAIRS_MAX, atlas_size, shift_atlas
 from ..files import check_output_path, write_file_atomic
 from ..errors import GearDesignError
-from ..shifts.objectives import OBJECTIVES
-from ..shifts.optimize import METHODS
+from .options import add_output_file, add_solver_args
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
 from .pair import add_rack_args, rack_from_args
 from .shift import add_check_args, checks_from_args
@@ -32,10 +31,8 @@ def add_parser(sub):
                        description="Optimal shifts, margins and region area for every z1/z2 (z2 >= z1).")
     p.add_argument("--z1", required=True, help="LO:HI or a comma list, e.g. 8:40")
     p.add_argument("--z2", required=True, help="LO:HI or a comma list, e.g. 10:120")
-    p.add_argument("--objective", choices=sorted(OBJECTIVES), default="max_x_sum")
-    p.add_argument("--method", choices=METHODS, default="exact")
-    p.add_argument("--out", metavar="CSV", default=None, help="write the table to this CSV")
-    p.add_argument("--overwrite", action="store_true", help="replace an existing --out file")
+    add_solver_args(p, "max_x_sum")
+    add_output_file(p, "--out", "CSV", "the table")
     add_rack_args(p)
     add_check_args(p)
     add_json_flag(p)

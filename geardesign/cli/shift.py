@@ -4,6 +4,7 @@ from __future__ import annotations
 from ..errors import GearDesignError
 from ..shifts.objectives import OBJECTIVES
 from ..shifts.optimize import DEFAULT_TOL, METHODS
+from .options import add_output_file
 from .output import add_json_flag, frame_records, print_frame, print_json
 from .pair import add_limit_args, add_rack_args, rack_from_args
 
@@ -45,8 +46,7 @@ def add_parser(sub):
     p.add_argument("--x1", type=float, default=None, help="a proposed x1 to check and mark (with --x2)")
     p.add_argument("--x2", type=float, default=None, help="a proposed x2 to check and mark (with --x1)")
     p.add_argument("--no-tip-shortening", action="store_true")
-    p.add_argument("--plot", metavar="PNG", default=None, help="write the blocking contour to this PNG")
-    p.add_argument("--overwrite", action="store_true", help="replace an existing --plot file")
+    add_output_file(p, "--plot", "PNG", "the blocking contour")
     add_rack_args(p)
     add_check_args(p)
     add_json_flag(p)

@@ -7,9 +7,9 @@ from __future__ import annotations
 
 
 from ..errors import GearDesignError
-from ..shifts.objectives import OBJECTIVES
 from ..shifts.teeth import select_teeth
 from ..files import check_output_path, write_file_atomic
+from .options import add_output_file, add_solver_args
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
 from .pair import add_limit_args, add_rack_args, rack_from_args
 
@@ -44,12 +44,9 @@ def add_parser(subparsers):
     p.add_argument("--z-sum-max", type=int, default=None, help="largest z1 + z2")
     p.add_argument("--m-min", type=float, default=None, help="smallest module with --module series, mm (1)")
     p.add_argument("--m-max", type=float, default=None, help="largest module with --module series, mm (50)")
-    p.add_argument("--objective", choices=sorted(OBJECTIVES), default=None,
-                   help="what the shifts optimise (max_x_sum; balanced_sliding with a centre distance)")
-    p.add_argument("--method", choices=("grid", "convex", "exact"), default="exact", help="shift solver (exact)")
+    add_solver_args(p, None, "what the shifts optimise (max_x_sum; balanced_sliding with a centre distance)")
     p.add_argument("--top", type=int, default=20, help="rows to print (0: all; default 20)")
-    p.add_argument("--out", default=None, metavar="CSV", help="write the whole ranked table to this CSV file")
-    p.add_argument("--overwrite", action="store_true", help="replace an existing --out file")
+    add_output_file(p, "--out", "CSV", "the whole ranked table")
     add_rack_args(p)
     add_limit_args(p)
     add_json_flag(p)
