@@ -20,9 +20,11 @@ class Evaluator:
     is a KKT point like any other.
     """
 
+    _CACHE = 16   # points remembered: Newton returns to its iterate after each difference step
+
     def __init__(self, prob: Problem, window=None):
         self.prob = prob
-        self.key = None
+        self.cache = {}
         self.nfev = 0
         self.window = window
         if window is not None:
@@ -31,7 +33,8 @@ class Evaluator:
 
     def __call__(self, v):
         key = tuple(float(c) for c in v)
-        if key != self.key:
+        val = self.cache.get(key)
+        if val is None:
             v = np.array(key)
             P, M, GP, GM = self.prob.evaluate_point(key)
             if self.window is not None:
@@ -40,10 +43,12 @@ class Evaluator:
             if not (np.isfinite(M).all() and np.isfinite(P).all()):
                 P, M = np.nan_to_num(P, nan=-BIG, neginf=-BIG), np.nan_to_num(M, nan=-BIG, neginf=-BIG)
                 GP, GM = np.nan_to_num(GP), np.nan_to_num(GM)
-            self.val = (P, M, GP, GM)
-            self.key = key
+            val = (P, M, GP, GM)
+            if len(self.cache) >= self._CACHE:
+                self.cache.pop(next(iter(self.cache)))
+            self.cache[key] = val
             self.nfev += 1
-        return self.val
+        return val
 
 
 def window_box(prob: Problem, bounds):
