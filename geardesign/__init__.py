@@ -11,6 +11,7 @@ The package is layered; each layer imports only the ones before it:
 - :mod:`geardesign.catalogs` — CSV tables and standard series
 - :mod:`geardesign.gears` — involute, rack, mesh, geometry, checks, :class:`GearPair`
 - :mod:`geardesign.shifts` — the shift problem, its methods, region, atlas, tooth counts
+- :mod:`geardesign.profiles` — tooth profiles as the cutter generates them
 - :mod:`geardesign.drives` — sprockets, chains, keys
 - :mod:`geardesign.sensitivity` — sweeps and local sensitivities
 - :mod:`geardesign.scene` — TOML scenes and their reports
@@ -33,12 +34,13 @@ _NAMES = {
     "Objective": "shifts.objectives", "feasible_region": "shifts.region", "Region": "shifts.region",
     "shift_atlas": "shifts.atlas", "select_teeth": "shifts.teeth", "TeethSelection": "shifts.teeth",
     "sweep": "sensitivity.studies", "load_scene": "scene", "run_scene": "scene",
+    "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {
     "catalogs": "catalogs", "involute": "gears.involute", "checks": "gears.checks", "chain": "drives.chain",
     "key": "drives.key", "sprocket": "drives.sprocket", "studies": "sensitivity.studies", "scene": "scene",
-    "gears": "gears", "shifts": "shifts", "drives": "drives", "sensitivity": "sensitivity",
+    "gears": "gears", "shifts": "shifts", "drives": "drives", "sensitivity": "sensitivity", "profiles": "profiles",
 }
 
 __all__ = sorted(_NAMES) + sorted(_MODULES)

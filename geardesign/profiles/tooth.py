@@ -1,0 +1,184 @@
+"""The transverse tooth profile of an external spur gear as its rack cutter generates it.
+
+The gear rolls its reference circle (radius r = m z / 2) on the rack's generating line, which lies
+x·m below the rack's datum line (the profile shift). The straight rack flank envelops the involute,
+the rack tip's rounding (radius ρ_f*·m) the trochoidal fillet, and the tip line the root circle.
+Each contact point follows from the law of gearing: the common normal passes through the pitch
+point I = (0, r), the instantaneous centre of the rolling (Litvin & Fuentes, *Gear Geometry and
+Applied Theory*, 2nd ed., §10.5). Nothing here uses the involute formulas of
+:mod:`geardesign.gears.geometry`, so the profile is an independent model to test them against.
+
+Coordinates: mm, the gear centre at the origin, the tooth's centre line along +y, the right flank
+at x > 0. The generation runs with a rack tooth centred on the y axis, i.e. a space of the gear
+there; a generated point at polar angle η (from +y toward +x) belongs to the left flank of the tooth
+centred at η = π/z, which mirrors onto the right flank of the tooth centred on +y at π/z − η.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import GearDesignError
+from ..gears.rack import STANDARD_RACK, BasicRack
+from ..results import Result
+from ..validate import one_number, require_count, require_int, require_range
+
+__all__ = ["ToothProfile", "tooth_profile", "POINTS_MAX"]
+
+POINTS_MAX = 20_000   # points per segment: a drawing needs a few hundred
+
+
+@dataclass(frozen=True)
+class _Cutter:
+    """The rack at φ = 0: a tooth centred on x = 0, its datum line at y = r + x·m."""
+
+    m: float
+    z: int
+    r: float           # reference (generating pitch) radius, mm
+    alpha: float       # profile angle, rad
+    xc: float          # centre of the tip rounding (right corner), mm
+    yc: float
+    rho: float         # tip rounding radius, mm
+    flank_x0: float    # x of the right flank where it crosses the pitch line y = r, at φ = 0
+
+    @classmethod
+    def of(cls, m: float, z: int, x: float, rack: BasicRack) -> "_Cutter":
+        r = m * z / 2.0
+        a = rack.alpha
+        datum = r + x * m
+        rho = rack.rho_f * m
+        yc = datum - (rack.ha + rack.c) * m + rho
+        # right flank: x = πm/4 − (datum − y) tan α; the rounding touches it and the tip line
+        xc = math.pi * m / 4.0 - (datum - yc) * math.tan(a) - rho / math.cos(a)
+        return cls(m, z, r, a, xc, yc, rho, math.pi * m / 4.0 - x * m * math.tan(a))
+
+    @property
+    def r_base(self) -> float:
+        return self.r * math.cos(self.alpha)
+
+    def fillet(self, tau):
+        """Points the rounding generates, by the direction τ of its outward normal, from the root
+        (τ = −π/2) to the hand-over to the flank (τ = −α); the normal passes through I."""
+        phi = (self.xc + (self.r - self.yc) * np.cos(tau) / np.sin(tau)) / self.r
+        return _mirror(self, *_gear_frame(self.xc - self.r * phi + self.rho * np.cos(tau),
+                                          self.yc + self.rho * np.sin(tau), phi))
+
+    def tau_form(self) -> float:
+        return -self.alpha
+
+    def flank(self, s):
+        """Points the straight flank generates, by the signed distance s along the line of action
+        from I (s = r sin α at the base circle): the foot of the normal from I on the flank."""
+        ca, sa = math.cos(self.alpha), math.sin(self.alpha)
+        phi = (self.flank_x0 - s / ca) / self.r
+        return _mirror(self, *_gear_frame(s * ca, self.r - s * sa, phi))
+
+    def s_at_radius(self, radius):
+        """s of the flank point at ``radius`` (>= r_b) on the real branch (from N toward the tip)."""
+        return self.r * math.sin(self.alpha) - np.sqrt(np.maximum(np.asarray(radius) ** 2 - self.r_base ** 2, 0.0))
+
+    def s_form(self) -> float:
+        """s where the rounding hands over to the flank (its tangency point's contact)."""
+        ca, sa = math.cos(self.alpha), math.sin(self.alpha)
+        phi = (self.xc + (self.yc - self.r) * ca / sa) / self.r
+        # the flank contact at this φ: s from the flank's x at the pitch line
+        return (self.flank_x0 - self.r * phi) * ca
+
+
+def _gear_frame(px, py, phi):
+    """A fixed-frame point, the gear turned by φ (counter-clockwise), in the gear's frame."""
+    c, s = np.cos(phi), np.sin(phi)
+    return c * px + s * py, -s * px + c * py
+
+
+def _mirror(cut: _Cutter, gx, gy):
+    """Generated points (left flank of the tooth at η = π/z) onto the right flank of the tooth on +y."""
+    radius = np.hypot(gx, gy)
+    eta = math.pi / cut.z - np.arctan2(gx, gy)
+    return radius * np.sin(eta), radius * np.cos(eta)
+
+
+@dataclass(frozen=True, eq=False)
+class ToothProfile(Result):
+    """One tooth's right flank as generated, from the middle of the space to the tip, in mm.
+
+    ``x_mm``, ``y_mm``: points (the tooth's centre line is the y axis); ``segment``: "root",
+    "fillet", "involute" or "tip" per point. ``r_form_mm``: the radius where the fillet meets the
+    involute (the form circle). ``tip_thickness_mm``: the arc thickness on the tip circle, measured
+    on the profile.
+    """
+
+    m: float
+    z: int
+    x: float
+    x_mm: np.ndarray
+    y_mm: np.ndarray
+    segment: np.ndarray
+    r_form_mm: float
+    tip_thickness_mm: float
+
+    _success_field = "exists"
+
+    @property
+    def exists(self) -> bool:
+        return bool(self.x_mm.size)
+
+    def to_frame(self):
+        import pandas as pd
+
+        return pd.DataFrame({"x_mm": self.x_mm, "y_mm": self.y_mm, "segment": self.segment})
+
+    def outline(self) -> tuple[np.ndarray, np.ndarray]:
+        """The whole tooth from the left space middle to the right one (the left flank mirrored)."""
+        return (np.concatenate([-self.x_mm, self.x_mm[-2::-1]]),
+                np.concatenate([self.y_mm, self.y_mm[-2::-1]]))
+
+
+def tooth_profile(m, z, x=0.0, rack: BasicRack | None = None, tip_diameter_mm=None,
+                  points: int = 200) -> ToothProfile:
+    """The generated profile of one tooth of an external spur gear (see the module docstring).
+
+    ``tip_diameter_mm`` cuts the tooth at that circle (default d + 2(h_a* + x)·m, no tip
+    shortening); ``points`` per segment. An undercut gear (the rack's flank ending beyond the
+    interference point) is refused by name: its trimmed profile is not drawn yet.
+
+    >>> p = tooth_profile(8, 17, 0.898)          # seed 000's pinion, tip not shortened
+    >>> round(2 * p.r_form_mm, 3)                # the form circle d_Ff
+    134.443
+    """
+    rack = STANDARD_RACK if rack is None else rack
+    m = one_number("m (module)", require_range("m (module)", m, 1e-4, 1e4, unit="mm"))
+    z = int(require_int("z", z, 3, 100_000))
+    x = one_number("x", require_range("x", x, -10.0, 10.0))
+    n = require_count("points", points, 8, POINTS_MAX)
+    cut = _Cutter.of(m, z, x, rack)
+    r_a = m * z / 2.0 + (rack.ha + x) * m if tip_diameter_mm is None else one_number(
+        "tip_diameter_mm", require_range("tip_diameter_mm", tip_diameter_mm, 0.0, 1e9, lo_open=True, unit="mm")) / 2.0
+    if not r_a > cut.r_base:
+        raise GearDesignError(f"the tip circle (d_a = {2 * r_a:.6g} mm) is inside the base circle "
+                          f"(d_b = {2 * cut.r_base:.6g} mm): no involute to draw")
+
+    s_top = cut.r * math.sin(cut.alpha)            # the contact at the base circle (N)
+    s_form = cut.s_form()
+    if s_form > s_top + 1e-12 * m:
+        # the flank's lower end acts beyond N: the corner's trochoid cuts the involute (undercut)
+        x_min = x + (s_form - s_top) * math.sin(cut.alpha) / m   # ρ_l = m(x − x_min)/sin α = s_top − s_form
+        raise GearDesignError(
+            f"x = {x:.6g} undercuts the tooth (z = {z}): its rack's flank ends beyond the interference point; "
+            f"the profile of an undercut gear is not drawn yet, x must be >= {x_min:.6g}")
+    fx, fy = cut.fillet(np.linspace(-math.pi / 2, cut.tau_form(), n))
+    ix, iy = cut.flank(np.linspace(s_form, float(cut.s_at_radius(r_a)), n))
+    r_form = float(np.hypot(*cut.flank(np.array(s_form))))
+
+    eta_tip = float(np.arctan2(ix[-1], iy[-1]))
+    ang = np.linspace(eta_tip, 0.0, n)
+    tx, ty = r_a * np.sin(ang), r_a * np.cos(ang)
+    r_f = float(np.hypot(fx[0], fy[0]))
+    rang = np.linspace(math.pi / z, float(np.arctan2(fx[0], fy[0])), max(2, n // 4))
+    rx, ry = r_f * np.sin(rang), r_f * np.cos(rang)
+    labels = np.array(["root"] * rx.size + ["fillet"] * fx.size + ["involute"] * ix.size + ["tip"] * tx.size)
+    return ToothProfile(m=m, z=z, x=x, x_mm=np.concatenate([rx, fx, ix, tx]),
+                        y_mm=np.concatenate([ry, fy, iy, ty]), segment=labels, r_form_mm=r_form,
+                        tip_thickness_mm=2.0 * r_a * eta_tip)
