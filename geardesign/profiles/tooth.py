@@ -79,6 +79,30 @@ class _Cutter:
         """s of the flank point at ``radius`` (>= r_b) on the real branch (from N toward the tip)."""
         return self.r * math.sin(self.alpha) - np.sqrt(np.maximum(np.asarray(radius) ** 2 - self.r_base ** 2, 0.0))
 
+    def depth(self, X, Y):
+        """Signed distance (mm) of rack-frame points into the rack tooth centred on X = 0 (> 0 inside)."""
+        X = np.abs(X)
+        a = self.alpha
+        d_flank = (self.flank_x0 + (Y - self.r) * math.tan(a) - X) * math.cos(a)
+        d_tip = Y - (self.yc - self.rho)
+        corner = (Y < self.yc - self.rho * math.sin(a)) & (X > self.xc)
+        return np.where(corner, self.rho - np.hypot(X - self.xc, Y - self.yc), np.minimum(d_flank, d_tip))
+
+    def max_depth(self, r, eta):
+        """How deep the gear point at radius r, polar angle η (generation frame) ever lies inside the
+        cutter over the roll (> 0: the cutter removes it): a grid over φ, then two finer grids."""
+        r, eta = np.broadcast_arrays(np.asarray(r, dtype=float), np.asarray(eta, dtype=float))
+        r, eta = r.reshape(-1, 1), eta.reshape(-1, 1)
+        phi = eta + np.linspace(-1.2, 1.2, 801)[None, :]
+        step = 2.4 / 800
+        for _ in range(3):
+            d = self.depth(r * np.sin(eta - phi) + self.r * phi, r * np.cos(eta - phi))
+            best = phi[np.arange(phi.shape[0]), np.argmax(d, axis=1)][:, None]
+            phi = best + np.linspace(-2 * step, 2 * step, 41)[None, :]
+            step = 4 * step / 40
+        d = self.depth(r * np.sin(eta - phi) + self.r * phi, r * np.cos(eta - phi))
+        return d.max(axis=1)
+
     def s_form(self) -> float:
         """s where the rounding hands over to the flank (its tangency point's contact)."""
         ca, sa = math.cos(self.alpha), math.sin(self.alpha)
@@ -106,8 +130,8 @@ class ToothProfile(Result):
 
     ``x_mm``, ``y_mm``: points (the tooth's centre line is the y axis); ``segment``: "root",
     "fillet", "involute" or "tip" per point. ``r_form_mm``: the radius where the fillet meets the
-    involute (the form circle). ``tip_thickness_mm``: the arc thickness on the tip circle, measured
-    on the profile.
+    involute (the form circle). ``undercut``: the cutter removed part of the involute above the base
+    circle. ``tip_thickness_mm``: the arc thickness on the tip circle, measured on the profile.
     """
 
     m: float
@@ -117,6 +141,7 @@ class ToothProfile(Result):
     y_mm: np.ndarray
     segment: np.ndarray
     r_form_mm: float
+    undercut: bool
     tip_thickness_mm: float
 
     _success_field = "exists"
@@ -130,6 +155,21 @@ class ToothProfile(Result):
 
         return pd.DataFrame({"x_mm": self.x_mm, "y_mm": self.y_mm, "segment": self.segment})
 
+    def to_csv(self, path, overwrite: bool = False):
+        """The whole gear's closed outline as x_mm,y_mm rows (see :mod:`geardesign.profiles.export`)."""
+        from .export import write_csv
+        return write_csv(self, path, overwrite)
+
+    def to_svg(self, path, overwrite: bool = False):
+        """The whole gear's closed outline as an SVG path in mm."""
+        from .export import write_svg
+        return write_svg(self, path, overwrite)
+
+    def to_dxf(self, path, overwrite: bool = False):
+        """The whole gear's closed outline as a DXF polyline in mm (ezdxf)."""
+        from .export import write_dxf
+        return write_dxf(self, path, overwrite)
+
     def outline(self) -> tuple[np.ndarray, np.ndarray]:
         """The whole tooth from the left space middle to the right one (the left flank mirrored)."""
         return (np.concatenate([-self.x_mm, self.x_mm[-2::-1]]),
@@ -141,8 +181,10 @@ def tooth_profile(m, z, x=0.0, rack: BasicRack | None = None, tip_diameter_mm=No
     """The generated profile of one tooth of an external spur gear (see the module docstring).
 
     ``tip_diameter_mm`` cuts the tooth at that circle (default d + 2(h_a* + x)·m, no tip
-    shortening); ``points`` per segment. An undercut gear (the rack's flank ending beyond the
-    interference point) is refused by name: its trimmed profile is not drawn yet.
+    shortening); ``points`` per segment. Where the cutter's corner cuts into the involute above
+    the base circle (an undercut), the profile below the crossing is what the cutter leaves: at
+    each radius, the angle where the material begins (found by testing points against every cutter
+    position), and ``undercut`` is True.
 
     >>> p = tooth_profile(8, 17, 0.898)          # seed 000's pinion, tip not shortened
     >>> round(2 * p.r_form_mm, 3)                # the form circle d_Ff
@@ -162,15 +204,19 @@ def tooth_profile(m, z, x=0.0, rack: BasicRack | None = None, tip_diameter_mm=No
 
     s_top = cut.r * math.sin(cut.alpha)            # the contact at the base circle (N)
     s_form = cut.s_form()
-    if s_form > s_top + 1e-12 * m:
-        # the flank's lower end acts beyond N: the corner's trochoid cuts the involute (undercut)
-        x_min = x + (s_form - s_top) * math.sin(cut.alpha) / m   # ρ_l = m(x − x_min)/sin α = s_top − s_form
-        raise GearDesignError(
-            f"x = {x:.6g} undercuts the tooth (z = {z}): its rack's flank ends beyond the interference point; "
-            f"the profile of an undercut gear is not drawn yet, x must be >= {x_min:.6g}")
-    fx, fy = cut.fillet(np.linspace(-math.pi / 2, cut.tau_form(), n))
-    ix, iy = cut.flank(np.linspace(s_form, float(cut.s_at_radius(r_a)), n))
-    r_form = float(np.hypot(*cut.flank(np.array(s_form))))
+    s_tip = float(cut.s_at_radius(r_a))
+    r_cross = _undercut_radius(cut, m) if s_form > s_top - 1e-6 * m else None
+    if r_cross is None:
+        fx, fy = cut.fillet(np.linspace(-math.pi / 2, cut.tau_form(), n))
+        s_start = min(s_form, s_top)
+    else:   # the corner cuts the involute up to r_cross: below it the profile is what the cutter leaves
+        r_f = cut.yc - cut.rho
+        radii = r_f + (r_cross - r_f) * (1.0 - np.cos(np.linspace(0.0, math.pi / 2, n)))   # dense near r_cross
+        radii[0] = r_f * (1.0 + 1e-12)
+        fx, fy = _mirror(cut, *_polar(radii, _material_angle(cut, radii)))
+        s_start = float(cut.s_at_radius(r_cross))
+    ix, iy = cut.flank(np.linspace(s_start, s_tip, n))
+    r_form = float(np.hypot(ix[0], iy[0]))
 
     eta_tip = float(np.arctan2(ix[-1], iy[-1]))
     ang = np.linspace(eta_tip, 0.0, n)
@@ -181,4 +227,51 @@ def tooth_profile(m, z, x=0.0, rack: BasicRack | None = None, tip_diameter_mm=No
     labels = np.array(["root"] * rx.size + ["fillet"] * fx.size + ["involute"] * ix.size + ["tip"] * tx.size)
     return ToothProfile(m=m, z=z, x=x, x_mm=np.concatenate([rx, fx, ix, tx]),
                         y_mm=np.concatenate([ry, fy, iy, ty]), segment=labels, r_form_mm=r_form,
-                        tip_thickness_mm=2.0 * r_a * eta_tip)
+                        undercut=r_cross is not None, tip_thickness_mm=2.0 * r_a * eta_tip)
+
+
+def _polar(radius, eta):
+    return radius * np.sin(eta), radius * np.cos(eta)
+
+
+def _involute_eta(cut: _Cutter, radius):
+    """Generation-frame polar angle of the flank's involute at ``radius`` (>= r_b)."""
+    return _eta_gen(*cut.flank(cut.s_at_radius(radius)), cut)
+
+
+def _eta_gen(ox, oy, cut: _Cutter):
+    """Generation-frame angle of an output-frame point (undo :func:`_mirror`)."""
+    return math.pi / cut.z - np.arctan2(ox, oy)
+
+
+def _undercut_radius(cut: _Cutter, m: float):
+    """The radius up to which the cutter removes the involute above the base circle, or None when it
+    removes none of it (tested on the involute just above the base circle: the material test)."""
+    r_b = cut.r_base
+    tol = 1e-12 * m
+    lo = r_b * (1.0 + 1e-9)
+    if cut.max_depth(lo, _involute_eta(cut, lo))[0] <= tol:
+        return None
+    hi = r_b * 1.001
+    while cut.max_depth(hi, _involute_eta(cut, hi))[0] > tol:
+        hi = r_b + 2.0 * (hi - r_b)
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if cut.max_depth(mid, _involute_eta(cut, mid))[0] > tol:
+            lo = mid
+        else:
+            hi = mid
+    return hi
+
+
+def _material_angle(cut: _Cutter, radii):
+    """Generation-frame angle where the material begins at each radius: the largest η any cutter
+    position reaches (bisection on η between the space middle and the tooth centre)."""
+    lo = np.zeros_like(radii)
+    hi = np.full_like(radii, math.pi / cut.z)
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        inside = cut.max_depth(radii, mid) > 0.0
+        lo = np.where(inside, mid, lo)
+        hi = np.where(inside, hi, mid)
+    return 0.5 * (lo + hi)

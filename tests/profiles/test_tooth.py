@@ -53,15 +53,29 @@ def test_outline_is_symmetric_and_spans_one_pitch():
 
 
 @pytest.mark.parametrize("z", [8, 10, 12, 14, 17, 25, 40])
-def test_undercut_is_refused_exactly_below_the_undercut_limit(z):
-    """The generation sees the rack's flank end pass the interference point exactly where the
-    undercut check's x_min (h_l* − z sin²α/2) says; below it the profile is refused by name."""
+def test_profile_is_undercut_exactly_below_the_undercut_limit(z):
+    """Material test: the cutter removes involute just above the base circle exactly where the
+    undercut check's x_min (h_l* − z sin²α/2) says, over a sweep of x around it."""
     x_min = float(undercut_x_min(z))
-    for dx in (1e-6, 0.01, 0.2):
-        assert tooth_profile(2, z, x_min + dx).exists
-    for dx in (-1e-6, -0.01, -0.2):
-        with pytest.raises(GearDesignError, match=rf"x must be >= {x_min:.6g}"):
-            tooth_profile(2, z, x_min + dx)
+    for dx in (-0.2, -0.01, -1e-3, 1e-3, 0.01, 0.2):
+        assert tooth_profile(2, z, x_min + dx, points=60).undercut == (dx < 0), dx
+
+
+@pytest.mark.parametrize("m, z, x", [(2.0, 10, 0.0), (2.0, 8, -0.2), (1.0, 14, -0.3)])
+def test_undercut_profile_keeps_the_involute_above_the_cut_and_less_below(m, z, x):
+    p = tooth_profile(m, z, x, points=120)
+    alpha = math.radians(20.0)
+    r_b = m * z / 2 * math.cos(alpha)
+    assert p.undercut and p.r_form_mm > r_b
+    inv = p.segment == "involute"
+    r = np.hypot(p.x_mm[inv], p.y_mm[inv])
+    assert np.max(np.abs(np.arctan2(p.x_mm[inv], p.y_mm[inv]) - _involute_angle(r, m, z, x, alpha)) * r) <= 1e-9 * m
+    cut = (p.segment == "fillet") & (np.hypot(p.x_mm, p.y_mm) > r_b)
+    rc = np.hypot(p.x_mm[cut], p.y_mm[cut])
+    # where the cutter reaches above the base circle the tooth is thinner than the involute
+    assert np.all(np.arctan2(p.x_mm[cut], p.y_mm[cut]) <= _involute_angle(rc, m, z, x, alpha) + 1e-12)
+    g = gd.pair_geometry(m, z, 200, x, 0.0, tip_shortening=False)
+    assert p.tip_thickness_mm == pytest.approx(g.sa1, abs=1e-9 * m)
 
 
 def test_inputs_refused_by_name():
@@ -69,3 +83,42 @@ def test_inputs_refused_by_name():
         tooth_profile(2, 20, 0.0, points=10**9)
     with pytest.raises(GearDesignError, match="tip circle .* inside the base circle"):
         tooth_profile(2, 20, 0.0, tip_diameter_mm=30.0)
+
+
+def test_exports_reopen_closed_with_the_outline_area(tmp_path):
+    """CSV, SVG (parsed) and DXF (read back with ezdxf) hold one closed outline whose area is the
+    generated outline's to 1e-9 relative; an existing file is kept unless overwrite."""
+    import xml.etree.ElementTree as ET
+
+    import ezdxf
+
+    from geardesign.profiles.export import gear_outline, outline_area_mm2
+
+    p = tooth_profile(8, 17, 0.898, points=80)
+    x, y = gear_outline(p)
+    area = outline_area_mm2(x, y)
+    # between the root and tip circles, and close to the tooth-and-space average
+    assert math.pi * (17 * 4 - 10) ** 2 < area < math.pi * (17 * 4 + 15.2) ** 2
+    assert (x[0], y[0]) == (x[-1], y[-1])
+
+    p.to_csv(tmp_path / "g.csv")
+    rows = np.loadtxt(tmp_path / "g.csv", delimiter=",", skiprows=1)
+    assert outline_area_mm2(rows[:, 0], rows[:, 1]) == pytest.approx(area, rel=1e-9)
+
+    p.to_svg(tmp_path / "g.svg")
+    path = ET.parse(tmp_path / "g.svg").getroot().find("{http://www.w3.org/2000/svg}path").get("d")
+    assert path.startswith("M ") and path.endswith(" Z")
+    pts = np.array([[float(v) for v in s.split(",")] for s in path[2:-2].split()])
+    closed = np.vstack([pts, pts[:1]])
+    assert outline_area_mm2(closed[:, 0], -closed[:, 1]) == pytest.approx(area, rel=1e-9)
+
+    p.to_dxf(tmp_path / "g.dxf")
+    poly = list(ezdxf.readfile(tmp_path / "g.dxf").modelspace().query("LWPOLYLINE"))
+    assert len(poly) == 1 and poly[0].closed
+    dx = np.array([v[:2] for v in poly[0].get_points()])
+    closed = np.vstack([dx, dx[:1]])
+    assert outline_area_mm2(closed[:, 0], closed[:, 1]) == pytest.approx(area, rel=1e-9)
+
+    with pytest.raises(GearDesignError, match="exists: give --overwrite"):
+        p.to_dxf(tmp_path / "g.dxf")
+    p.to_dxf(tmp_path / "g.dxf", overwrite=True)
