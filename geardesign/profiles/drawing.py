@@ -1,0 +1,94 @@
+"""The meshing drawing of a spur pair: both gears' generated teeth in mesh, their circles, the line of
+action N1N2 with its active part and contact zones, and the pitch point.
+
+Gear 1 turns about the origin, gear 2 about (0, a_w); in the drawn position a tooth of gear 1 and a
+space of gear 2 are centred on the line of centres, so the teeth touch on both flanks (zero backlash).
+``roll_deg`` turns gear 1 by that angle and gear 2 by −roll·z1/z2.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .export import gear_outline
+from .tooth import tooth_profile
+
+__all__ = ["plot_mesh", "contact_points"]
+
+TEETH_SHOWN = 3   # teeth of each gear drawn either side of the line of centres
+
+
+def contact_points(geo: dict) -> dict:
+    """Points of the line of action (mm, gear 1's centre at the origin, gear 2's at (0, a_w)):
+    N1, N2 (tangency with the base circles), P (pitch point), A (start of contact, gear 2's tip
+    circle) and E (end of contact, gear 1's tip circle); the contact runs from A to E."""
+    a_w, sin_w, cos_w = float(geo["a_w"]), float(geo["_sin_w"]), float(geo["_cos_w"])
+    u = np.array([cos_w, sin_w])          # along N1 → N2: the line of action leans at α_w
+    rb1, rb2 = float(geo["db1"]) / 2, float(geo["db2"]) / 2
+    n1 = rb1 * np.array([-sin_w, cos_w])  # the normal from O1 to the line, turned by α_w from the centre line
+    n2 = np.array([0.0, a_w]) + rb2 * np.array([sin_w, -cos_w])
+    p = np.array([0.0, float(geo["dw1"]) / 2])
+    rho_a1, rho_a2 = float(geo["_rho_a1"]), float(geo["_rho_a2"])
+    g = float(geo["a_w"]) * sin_w
+    return {"N1": n1, "N2": n2, "P": p, "A": n2 - rho_a2 * u, "E": n1 + rho_a1 * u, "u": u,
+            "g": g, "p_b": float(geo["p_b"]), "cos_w": cos_w}
+
+
+def _turned(x, y, angle):
+    c, s = math.cos(angle), math.sin(angle)
+    return c * x - s * y, s * x + c * y
+
+
+def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60):
+    """Draw the meshing picture of a :class:`~geardesign.gears.pair.GearPair` (returns the axes)."""
+    import matplotlib.pyplot as plt
+
+    geo = pair._geo
+    m, z1, z2 = pair.m, pair.z1, pair.z2
+    if ax is None:
+        _, ax = plt.subplots(figsize=(8.6, 7.4))
+    roll = math.radians(float(roll_deg))
+    a_w = float(geo["a_w"])
+    # gear 1: a tooth on the centre line (+y) turned by roll; gear 2: a space on the centre line (−y)
+    p1 = tooth_profile(m, z1, pair.x1, rack=pair.rack, tip_diameter_mm=float(geo["da1"]), points=points)
+    p2 = tooth_profile(m, z2, pair.x2, rack=pair.rack, tip_diameter_mm=float(geo["da2"]), points=points)
+    x1, y1 = _turned(*gear_outline(p1), -roll)
+    x2, y2 = _turned(*gear_outline(p2), math.pi + math.pi / z2 + roll * z1 / z2)
+    y2 = y2 + a_w
+    view = (TEETH_SHOWN + 0.5) * math.pi * m        # half-width of the window around the pitch point
+    ax.fill(x1, y1, color="#c9d9ee", ec="#1f4e89", lw=1.0, label=f"gear 1 (z = {z1}, x = {pair.x1:.4g})")
+    ax.fill(x2, y2, color="#f3d9c4", ec="#8a3b12", lw=1.0, label=f"gear 2 (z = {z2}, x = {pair.x2:.4g})")
+
+    circles = (("db", ":", "base"), ("d", "-.", "reference"), ("dw", "--", "operating pitch"))
+    t = np.linspace(-math.pi, math.pi, 721)
+    for key, ls, what in circles:
+        for gear, centre, col in ((1, 0.0, "#1f4e89"), (2, a_w, "#8a3b12")):
+            r = float(geo[f"{key}{gear}"]) / 2
+            ax.plot(r * np.sin(t), centre + r * np.cos(t), ls, lw=0.7, color=col,
+                    label=f"{what} circles" if gear == 1 else None)
+    c = contact_points(geo)
+    ax.plot(*np.array([c["N1"], c["N2"]]).T, "-", color="0.35", lw=0.9, label="line of action N1N2")
+    ax.plot(*np.array([c["A"], c["E"]]).T, "-", color="k", lw=2.4, label="active part (A to E)")
+    # double contact over p_b·(ε_α − 1) at each end of the active part, single contact in the middle
+    g_alpha = float(np.linalg.norm(c["E"] - c["A"]))
+    d = g_alpha - c["p_b"]
+    if d > 0:
+        for start in (c["A"], c["E"] - d * c["u"]):
+            seg = np.array([start, start + d * c["u"]])
+            ax.plot(*seg.T, "-", color="#d62728", lw=4.5, alpha=0.55,
+                    label="double contact" if start is c["A"] else None)
+    for name in ("N1", "N2", "A", "E", "P"):
+        pt = c[name]
+        ax.plot(*pt, "o", ms=4 if name != "P" else 6, color="k")
+        ax.annotate(name, pt, textcoords="offset points", xytext=(5, 4), fontsize=9)
+    ax.set_xlim(-view, view)
+    centre_y = float(geo["dw1"]) / 2
+    ax.set_ylim(centre_y - 0.8 * view, centre_y + 0.8 * view)
+    ax.set_aspect("equal")
+    ax.set_xlabel("mm")
+    ax.set_title(f"m = {m:g} mm, z1/z2 = {z1}/{z2}, x1/x2 = {pair.x1:.4g}/{pair.x2:.4g}: "
+                 f"α_w = {float(geo['alpha_w_deg']):.4g}°, a_w = {a_w:.6g} mm, ε_α = {float(geo['eps_alpha']):.4g}",
+                 fontsize=10)
+    ax.legend(loc="upper left", fontsize=7, framealpha=0.9)
+    return ax
