@@ -34,7 +34,8 @@ _NAMES = {
     "Objective": "shifts.objectives", "feasible_region": "shifts.region", "Region": "shifts.region",
     "shift_atlas": "shifts.atlas", "select_teeth": "shifts.teeth", "TeethSelection": "shifts.teeth",
     "sweep": "sensitivity.studies", "load_scene": "scene", "run_scene": "scene",
-    "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth",
+    "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth", "plot_mesh": "profiles.drawing",
+    "plot_diagrams": "profiles.drawing",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {

@@ -174,12 +174,6 @@ class GearPair:
         return table
 
 
-    def plot_mesh(self, ax=None, roll_deg: float = 0.0, points: int = 60):
-        """The meshing drawing: both gears' generated teeth, their circles, the line of action with
-        its active part and double-contact zones (:func:`geardesign.profiles.drawing.plot_mesh`)."""
-        from ..profiles.drawing import plot_mesh   # profiles sit above gears: imported when drawn
-        return plot_mesh(self, ax=ax, roll_deg=roll_deg, points=points)
-
     def ok(self, **limits) -> bool:
         """True when every check of :meth:`checks` holds."""
         return bool(self.checks(**limits)["ok"].all())

@@ -14,7 +14,7 @@ import numpy as np
 from .export import gear_outline
 from .tooth import tooth_profile
 
-__all__ = ["plot_mesh", "contact_points"]
+__all__ = ["plot_mesh", "plot_diagrams", "contact_points", "line_of_action_diagrams"]
 
 TEETH_SHOWN = 3   # teeth of each gear drawn either side of the line of centres
 
@@ -92,3 +92,55 @@ def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60):
                  fontsize=10)
     ax.legend(loc="upper left", fontsize=7, framealpha=0.9)
     return ax
+
+
+def line_of_action_diagrams(geo: dict, n: int = 400, s_mm=None) -> dict:
+    """Specific sliding of both gears and the specific pressure coefficient along N1N2, by the
+    distance s from N1 (mm): ρ1 = s, ρ2 = g − s (the radii of curvature at the contact point),
+    ϑ1 = 1 − ρ2/(u ρ1), ϑ2 = 1 − u ρ1/ρ2, γ = m (ρ1 + ρ2)/(ρ1 ρ2) (Kudryavtsev's diagrams; the same
+    definitions as the geometry's end values). ``s_mm`` evaluates at given positions instead of n."""
+    c = contact_points(geo)
+    g, u, m = c["g"], float(geo["_z2"]) / float(geo["_z1"]), float(geo["_m"])
+    s_a = float(np.linalg.norm(c["A"] - c["N1"]))
+    s_e = float(np.linalg.norm(c["E"] - c["N1"]))
+    s = np.linspace(g * 1e-3, g * (1 - 1e-3), n) if s_mm is None else np.asarray(s_mm, dtype=float)
+    rho1, rho2 = s, g - s
+    return {"s_mm": s, "sliding1": 1.0 - rho2 / (u * rho1), "sliding2": 1.0 - u * rho1 / rho2,
+            "pressure": m * (rho1 + rho2) / (rho1 * rho2), "s_A": s_a, "s_E": s_e,
+            "s_P": float(np.linalg.norm(c["P"] - c["N1"])), "g": g, "p_b": c["p_b"]}
+
+
+def plot_diagrams(pair, axes=None):
+    """The diagrams of seed 000 §7.8 along the line of action: specific sliding ϑ1, ϑ2 and the specific
+    pressure coefficient γ, with the active part A–E and its double-contact ends marked."""
+    import matplotlib.pyplot as plt
+
+    d = line_of_action_diagrams(pair._geo)
+    if axes is None:
+        _, axes = plt.subplots(2, 1, figsize=(8.6, 6.4), sharex=True)
+    ax1, ax2 = axes
+    s = d["s_mm"]
+    active = (s >= d["s_A"]) & (s <= d["s_E"])
+    for ax, series in ((ax1, (("sliding1", "ϑ1 (gear 1)", "#1f4e89"), ("sliding2", "ϑ2 (gear 2)", "#8a3b12"))),
+                       (ax2, (("pressure", "γ = m(ρ1 + ρ2)/(ρ1 ρ2)", "k"),))):
+        for key, label, col in series:
+            ax.plot(s, d[key], ":", color=col, lw=0.8)
+            ax.plot(s[active], d[key][active], "-", color=col, lw=1.8, label=label)
+        lo_dc, hi_dc = d["s_A"] + (d["s_E"] - d["s_A"] - d["p_b"]), d["s_E"] - (d["s_E"] - d["s_A"] - d["p_b"])
+        for x0, x1 in ((d["s_A"], lo_dc), (hi_dc, d["s_E"])):
+            if x1 > x0:
+                ax.axvspan(x0, x1, color="#d62728", alpha=0.12, lw=0)
+        for name in ("A", "P", "E"):
+            ax.axvline(d[f"s_{name}"], color="0.5", lw=0.6)
+            ax.annotate(name, (d[f"s_{name}"], 1.0), xycoords=("data", "axes fraction"), xytext=(2, -12),
+                        textcoords="offset points", fontsize=9)
+        ax.grid(alpha=0.3)
+        ax.legend(loc="upper right", fontsize=8)
+    ax1.set_ylim(-3.0, 1.2)
+    ax1.set_ylabel("specific sliding")
+    ax2.set_ylim(0.0, 4.0 * float(pair._geo["spec_pressure_pitch"]))
+    ax2.set_ylabel("specific pressure coefficient")
+    ax2.set_xlabel("position on the line of action from N1, mm (shaded: double contact)")
+    ax1.set_title(f"z1/z2 = {pair.z1}/{pair.z2}, x1/x2 = {pair.x1:.4g}/{pair.x2:.4g}: sliding and pressure along N1N2",
+                  fontsize=10)
+    return axes

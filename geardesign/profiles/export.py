@@ -10,12 +10,11 @@ import math
 import numpy as np
 
 from ..files import check_output_path, write_file_atomic
-from .tooth import ToothProfile
 
 __all__ = ["gear_outline", "outline_area_mm2", "write_csv", "write_svg", "write_dxf"]
 
 
-def gear_outline(profile: ToothProfile) -> tuple[np.ndarray, np.ndarray]:
+def gear_outline(profile) -> tuple[np.ndarray, np.ndarray]:
     """The whole gear's outline (mm), closed: the tooth outline turned z times about the centre;
     the last point repeats the first."""
     xs, ys = profile.outline()
@@ -36,7 +35,7 @@ def outline_area_mm2(x, y) -> float:
     return float(abs(np.dot(x[:-1], y[1:]) - np.dot(x[1:], y[:-1])) / 2.0)
 
 
-def write_csv(profile: ToothProfile, path, overwrite: bool = False):
+def write_csv(profile, path, overwrite: bool = False):
     """The gear outline as ``x_mm,y_mm`` rows (closed: the last row repeats the first)."""
     out = check_output_path(path, overwrite=overwrite, suffixes=(".csv",), what="path")
     x, y = gear_outline(profile)
@@ -49,7 +48,7 @@ def write_csv(profile: ToothProfile, path, overwrite: bool = False):
     return write_file_atomic(out, write)
 
 
-def write_svg(profile: ToothProfile, path, overwrite: bool = False):
+def write_svg(profile, path, overwrite: bool = False):
     """The gear outline as one closed SVG path in mm (y up, as in a drawing)."""
     out = check_output_path(path, overwrite=overwrite, suffixes=(".svg",), what="path")
     x, y = gear_outline(profile)
@@ -68,7 +67,7 @@ def write_svg(profile: ToothProfile, path, overwrite: bool = False):
     return write_file_atomic(out, write)
 
 
-def write_dxf(profile: ToothProfile, path, overwrite: bool = False):
+def write_dxf(profile, path, overwrite: bool = False):
     """The gear outline as one closed LWPOLYLINE in a DXF drawing in mm (ezdxf)."""
     import ezdxf   # only when a DXF is asked for
     from ezdxf import units

@@ -52,7 +52,28 @@ def test_teeth_in_mesh_touch_without_overlap(m, z1, z2, x1, x2, roll_deg):
 
 
 def test_plot_mesh_draws_and_titles():
-    ax = gd.GearPair(8, 17, 26, 0.898, 0.517).plot_mesh()
+    ax = gd.plot_mesh(gd.GearPair(8, 17, 26, 0.898, 0.517))
     assert "a_w = 181.602 mm" in ax.get_title() and "ε_α = 1.153" in ax.get_title()
     import matplotlib.pyplot as plt
     plt.close(ax.figure)
+
+
+@pytest.mark.parametrize("m, z1, z2, x1, x2", PAIRS)
+def test_diagrams_end_and_pitch_values_are_the_geometry_s(m, z1, z2, x1, x2):
+    """Along N1N2: at A (gear 1's root, gear 2's tip) and E the sliding equals the geometry's end
+    values, at P it is zero for both gears and γ equals the pitch-point coefficient."""
+    from geardesign.profiles.drawing import line_of_action_diagrams
+
+    pair = gd.GearPair(m, z1, z2, x1, x2)
+    g = pair.geometry()
+    d0 = line_of_action_diagrams(pair._geo, n=10)
+    d = line_of_action_diagrams(pair._geo, s_mm=[d0["s_A"], d0["s_P"], d0["s_E"]])
+    assert d["sliding1"][0] == pytest.approx(g.sliding1_root, abs=1e-9)
+    assert d["sliding2"][0] == pytest.approx(g.sliding2_tip, abs=1e-9)
+    assert d["sliding1"][2] == pytest.approx(g.sliding1_tip, abs=1e-9)
+    assert d["sliding2"][2] == pytest.approx(g.sliding2_root, abs=1e-9)
+    assert abs(d["sliding1"][1]) < 1e-12 and abs(d["sliding2"][1]) < 1e-12
+    assert d["pressure"][1] == pytest.approx(g.spec_pressure_pitch, rel=1e-12)
+    axes = gd.plot_diagrams(pair)
+    import matplotlib.pyplot as plt
+    plt.close(axes[0].figure)
