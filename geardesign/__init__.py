@@ -35,7 +35,7 @@ _NAMES = {
     "shift_atlas": "shifts.atlas", "select_teeth": "shifts.teeth", "TeethSelection": "shifts.teeth",
     "sweep": "sensitivity.studies", "load_scene": "scene", "run_scene": "scene",
     "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth", "plot_mesh": "profiles.drawing",
-    "plot_diagrams": "profiles.drawing",
+    "plot_diagrams": "profiles.drawing", "export_profiles": "profiles.mesh",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {

@@ -29,9 +29,8 @@ def add_limit_args(p) -> None:
                    help=f"minimum tip thickness / module ({DEFAULT_SA_MIN:g})")
 
 
-def add_parser(sub):
-    p = sub.add_parser("pair", help="geometry and checks of one spur pair",
-                       description="Geometry (ISO 21771 / GOST 16532-70) and checks of an external spur pair.")
+def add_pair_args(p) -> None:
+    """The pair: module, tooth counts, shifts or a housing centre distance, tip shortening, rack."""
     p.add_argument("--module", "-m", type=float, required=True, help="module, mm")
     p.add_argument("--z1", type=float, required=True, help="teeth of gear 1")
     p.add_argument("--z2", type=float, required=True, help="teeth of gear 2")
@@ -44,26 +43,35 @@ def add_parser(sub):
     p.add_argument("--no-tip-shortening", action="store_true",
                    help="keep d_a = d + 2(h_a* + x)m instead of shortening tips by dy*m")
     add_rack_args(p)
+
+
+def pair_from_args(args) -> tuple[GearPair, float | None]:
+    """The pair the arguments describe, and the housing centre distance to check it against (or None)."""
+    rack = rack_from_args(args)
+    shorten = not args.no_tip_shortening
+    if args.center_distance is not None and args.x1 is not None and args.x2 is not None:
+        return GearPair(args.module, args.z1, args.z2, args.x1, args.x2, rack, shorten), args.center_distance
+    if args.center_distance is not None:
+        if args.x2 is not None:
+            raise GearDesignError("--x2 with --center-distance needs --x1 too (or give neither: the split "
+                                  "then balances specific sliding)")
+        return GearPair.from_center_distance(args.module, args.z1, args.z2, args.center_distance,
+                                             x1=args.x1, rack=rack, tip_shortening=shorten), None
+    return GearPair(args.module, args.z1, args.z2, args.x1 or 0.0, args.x2 or 0.0, rack, shorten), None
+
+
+def add_parser(sub):
+    p = sub.add_parser("pair", help="geometry and checks of one spur pair",
+                       description="Geometry (ISO 21771 / GOST 16532-70) and checks of an external spur pair.")
+    add_pair_args(p)
     add_limit_args(p)
     add_json_flag(p)
     return p
 
 
 def run(args) -> int:
-    rack = rack_from_args(args)
-    shorten = not args.no_tip_shortening
-    housing = None
-    if args.center_distance is not None and args.x1 is not None and args.x2 is not None:
-        pair = GearPair(args.module, args.z1, args.z2, args.x1, args.x2, rack, shorten)
-        housing = args.center_distance
-    elif args.center_distance is not None:
-        if args.x2 is not None:
-            raise GearDesignError("--x2 with --center-distance needs --x1 too (or give neither: the split "
-                                  "then balances specific sliding)")
-        pair = GearPair.from_center_distance(args.module, args.z1, args.z2, args.center_distance,
-                                             x1=args.x1, rack=rack, tip_shortening=shorten)
-    else:
-        pair = GearPair(args.module, args.z1, args.z2, args.x1 or 0.0, args.x2 or 0.0, rack, shorten)
+    pair, housing = pair_from_args(args)
+    rack, shorten = pair.rack, not args.no_tip_shortening
     geo = pair.geometry()
     table = pair.checks(eps_alpha_min=args.eps_alpha_min, sa_min=args.sa_min, housing_a_w=housing)
     if args.json:

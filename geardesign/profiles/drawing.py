@@ -1,9 +1,8 @@
 """The meshing drawing of a spur pair: both gears' generated teeth in mesh, their circles, the line of
 action N1N2 with its active part and contact zones, and the pitch point.
 
-Gear 1 turns about the origin, gear 2 about (0, a_w); in the drawn position a tooth of gear 1 and a
-space of gear 2 are centred on the line of centres, so the teeth touch on both flanks (zero backlash).
-``roll_deg`` turns gear 1 by that angle and gear 2 by −roll·z1/z2.
+The gears are placed as :mod:`geardesign.profiles.mesh` puts them (gear 1 about the origin, gear 2
+about (0, a_w), zero backlash; ``roll_deg`` turns them together).
 """
 from __future__ import annotations
 
@@ -11,8 +10,7 @@ import math
 
 import numpy as np
 
-from .export import gear_outline
-from .tooth import tooth_profile
+from .mesh import pair_outlines
 
 __all__ = ["plot_mesh", "plot_diagrams", "contact_points", "line_of_action_diagrams"]
 
@@ -35,11 +33,6 @@ def contact_points(geo: dict) -> dict:
             "g": g, "p_b": float(geo["p_b"]), "cos_w": cos_w}
 
 
-def _turned(x, y, angle):
-    c, s = math.cos(angle), math.sin(angle)
-    return c * x - s * y, s * x + c * y
-
-
 def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60):
     """Draw the meshing picture of a :class:`~geardesign.gears.pair.GearPair` (returns the axes)."""
     import matplotlib.pyplot as plt
@@ -48,14 +41,8 @@ def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60):
     m, z1, z2 = pair.m, pair.z1, pair.z2
     if ax is None:
         _, ax = plt.subplots(figsize=(8.6, 7.4))
-    roll = math.radians(float(roll_deg))
     a_w = float(geo["a_w"])
-    # gear 1: a tooth on the centre line (+y) turned by roll; gear 2: a space on the centre line (−y)
-    p1 = tooth_profile(m, z1, pair.x1, rack=pair.rack, tip_diameter_mm=float(geo["da1"]), points=points)
-    p2 = tooth_profile(m, z2, pair.x2, rack=pair.rack, tip_diameter_mm=float(geo["da2"]), points=points)
-    x1, y1 = _turned(*gear_outline(p1), -roll)
-    x2, y2 = _turned(*gear_outline(p2), math.pi + math.pi / z2 + roll * z1 / z2)
-    y2 = y2 + a_w
+    (_, x1, y1), (_, x2, y2) = pair_outlines(pair, roll_deg, points)
     view = (TEETH_SHOWN + 0.5) * math.pi * m        # half-width of the window around the pitch point
     ax.fill(x1, y1, color="#c9d9ee", ec="#1f4e89", lw=1.0, label=f"gear 1 (z = {z1}, x = {pair.x1:.4g})")
     ax.fill(x2, y2, color="#f3d9c4", ec="#8a3b12", lw=1.0, label=f"gear 2 (z = {z2}, x = {pair.x2:.4g})")

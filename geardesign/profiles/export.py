@@ -1,4 +1,4 @@
-"""A generated gear as a closed outline, written as CSV points, SVG or DXF (ezdxf), in mm.
+"""Generated gears as closed outlines, written as CSV points, SVG or DXF (ezdxf), in mm.
 
 Every writer checks the path first, writes under a temporary name and moves the file into place
 when complete (:mod:`geardesign.files`); an existing file is replaced only with ``overwrite``.
@@ -11,7 +11,9 @@ import numpy as np
 
 from ..files import check_output_path, write_file_atomic
 
-__all__ = ["gear_outline", "outline_area_mm2", "write_csv", "write_svg", "write_dxf"]
+__all__ = ["gear_outline", "turned", "outline_area_mm2", "write_outlines", "FORMATS"]
+
+FORMATS = (".svg", ".dxf", ".csv")
 
 
 def gear_outline(profile) -> tuple[np.ndarray, np.ndarray]:
@@ -29,52 +31,66 @@ def gear_outline(profile) -> tuple[np.ndarray, np.ndarray]:
     return np.append(x, x[0]), np.append(y, y[0])
 
 
+def turned(x, y, angle_rad):
+    """Points turned counter-clockwise about the origin."""
+    c, s = math.cos(angle_rad), math.sin(angle_rad)
+    return c * x - s * y, s * x + c * y
+
+
 def outline_area_mm2(x, y) -> float:
     """Area enclosed by a closed polygon (shoelace), mm²."""
     x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
     return float(abs(np.dot(x[:-1], y[1:]) - np.dot(x[1:], y[:-1])) / 2.0)
 
 
-def write_csv(profile, path, overwrite: bool = False):
-    """The gear outline as ``x_mm,y_mm`` rows (closed: the last row repeats the first)."""
-    out = check_output_path(path, overwrite=overwrite, suffixes=(".csv",), what="path")
-    x, y = gear_outline(profile)
-
+def _csv(outlines, title, stroke_mm):
     def write(tmp):
         with open(tmp, "w", encoding="utf-8") as fh:
-            fh.write("x_mm,y_mm\n")
-            fh.writelines(f"{a!r},{b!r}\n" for a, b in zip(x.tolist(), y.tolist()))
+            fh.write("outline,x_mm,y_mm\n")
+            for name, x, y in outlines:
+                fh.writelines(f"{name},{a!r},{b!r}\n" for a, b in zip(x.tolist(), y.tolist()))
+    return write
 
-    return write_file_atomic(out, write)
 
-
-def write_svg(profile, path, overwrite: bool = False):
-    """The gear outline as one closed SVG path in mm (y up, as in a drawing)."""
-    out = check_output_path(path, overwrite=overwrite, suffixes=(".svg",), what="path")
-    x, y = gear_outline(profile)
-    r = float(np.max(np.hypot(x, y))) * 1.02
-    points = " ".join(f"{a!r},{-b!r}" for a, b in zip(x[:-1].tolist(), y[:-1].tolist()))
-    text = (f'<svg xmlns="http://www.w3.org/2000/svg" width="{2 * r:.6g}mm" height="{2 * r:.6g}mm" '
-            f'viewBox="{-r!r} {-r!r} {2 * r!r} {2 * r!r}">\n'
-            f'  <title>gear m = {profile.m:g} mm, z = {profile.z}, x = {profile.x:g}</title>\n'
-            f'  <path d="M {points} Z" fill="none" stroke="black" stroke-width="{profile.m / 50:.6g}"/>\n'
-            f'</svg>\n')
+def _svg(outlines, title, stroke_mm):
+    # y up as in a drawing: SVG's y runs down, so every y is negated
+    xs = np.concatenate([x for _, x, _ in outlines])
+    ys = -np.concatenate([y for _, _, y in outlines])
+    pad = 0.02 * float(max(np.ptp(xs), np.ptp(ys)))
+    x0, y0 = float(xs.min()) - pad, float(ys.min()) - pad
+    w, h = float(np.ptp(xs)) + 2 * pad, float(np.ptp(ys)) + 2 * pad
+    paths = "".join(
+        f'  <path id="{name}" d="M {" ".join(f"{a!r},{-b!r}" for a, b in zip(x[:-1].tolist(), y[:-1].tolist()))} Z" '
+        f'fill="none" stroke="black" stroke-width="{stroke_mm:.6g}"/>\n' for name, x, y in outlines)
+    text = (f'<svg xmlns="http://www.w3.org/2000/svg" width="{w:.6g}mm" height="{h:.6g}mm" '
+            f'viewBox="{x0!r} {y0!r} {w!r} {h!r}">\n  <title>{title}</title>\n{paths}</svg>\n')
 
     def write(tmp):
         with open(tmp, "w", encoding="utf-8") as fh:
             fh.write(text)
+    return write
 
-    return write_file_atomic(out, write)
 
-
-def write_dxf(profile, path, overwrite: bool = False):
-    """The gear outline as one closed LWPOLYLINE in a DXF drawing in mm (ezdxf)."""
+def _dxf(outlines, title, stroke_mm):
     import ezdxf   # only when a DXF is asked for
     from ezdxf import units
 
-    out = check_output_path(path, overwrite=overwrite, suffixes=(".dxf",), what="path")
-    x, y = gear_outline(profile)
     doc = ezdxf.new()
     doc.units = units.MM
-    doc.modelspace().add_lwpolyline(list(zip(x[:-1].tolist(), y[:-1].tolist())), close=True)
-    return write_file_atomic(out, lambda tmp: doc.saveas(tmp))
+    msp = doc.modelspace()
+    for name, x, y in outlines:
+        doc.layers.add(name)
+        msp.add_lwpolyline(list(zip(x[:-1].tolist(), y[:-1].tolist())), close=True, dxfattribs={"layer": name})
+    return lambda tmp: doc.saveas(tmp)
+
+
+_WRITERS = {".csv": _csv, ".svg": _svg, ".dxf": _dxf}
+
+
+def write_outlines(outlines, path, overwrite: bool = False, title: str = "", stroke_mm: float = 0.1,
+                   suffixes=FORMATS, what: str = "path"):
+    """Closed outlines ``[(name, x_mm, y_mm), ...]`` into one file, its format by the suffix: CSV rows
+    ``outline,x_mm,y_mm``; SVG, one closed ``<path id=name>`` each; DXF, one closed LWPOLYLINE each
+    on a layer of its name."""
+    out = check_output_path(path, overwrite=overwrite, suffixes=suffixes, what=what)
+    return write_file_atomic(out, _WRITERS[out.suffix.lower()](outlines, title, stroke_mm))

@@ -155,20 +155,23 @@ class ToothProfile(Result):
 
         return pd.DataFrame({"x_mm": self.x_mm, "y_mm": self.y_mm, "segment": self.segment})
 
+    def _write(self, path, overwrite: bool, suffix: str):
+        from .export import gear_outline, write_outlines
+        return write_outlines([("gear", *gear_outline(self))], path, overwrite,
+                              f"gear m = {self.m:g} mm, z = {self.z}, x = {self.x:g}", self.m / 50,
+                              suffixes=(suffix,))
+
     def to_csv(self, path, overwrite: bool = False):
-        """The whole gear's closed outline as x_mm,y_mm rows (see :mod:`geardesign.profiles.export`)."""
-        from .export import write_csv
-        return write_csv(self, path, overwrite)
+        """The whole gear's closed outline as ``outline,x_mm,y_mm`` rows (:mod:`geardesign.profiles.export`)."""
+        return self._write(path, overwrite, ".csv")
 
     def to_svg(self, path, overwrite: bool = False):
         """The whole gear's closed outline as an SVG path in mm."""
-        from .export import write_svg
-        return write_svg(self, path, overwrite)
+        return self._write(path, overwrite, ".svg")
 
     def to_dxf(self, path, overwrite: bool = False):
         """The whole gear's closed outline as a DXF polyline in mm (ezdxf)."""
-        from .export import write_dxf
-        return write_dxf(self, path, overwrite)
+        return self._write(path, overwrite, ".dxf")
 
     def outline(self) -> tuple[np.ndarray, np.ndarray]:
         """The whole tooth from the left space middle to the right one (the left flank mirrored)."""

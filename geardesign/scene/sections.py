@@ -124,6 +124,23 @@ def _run_gear(rep: SceneReport, g: dict):
     reg.plot(ax=ax, optimum=res if res.success else None, proposed=given, x_sum=res.x_sum_fixed)
     rep.figures["gear_region"] = fig
     md += ["![blocking contour](gear_region.png)", ""]
+    if g["mesh_drawing"]:
+        pair_kw = dict(**({"rack": rack} if rack else {}), tip_shortening=g["tip_shortening"])
+        drawn = [("optimum", res.x1, res.x2)] if res.success else []
+        drawn += [("given", *given)] if given else []
+        for tag, x1, x2 in drawn:
+            _add_mesh_drawing(rep, GearPair(g["module"], g["z1"], g["z2"], x1, x2, **pair_kw), tag)
+
+
+def _add_mesh_drawing(rep: SceneReport, pair, tag: str):
+    """The meshing drawing and the line-of-action diagrams of one pair (issue 14), as two figures."""
+    from ..profiles.drawing import plot_diagrams, plot_mesh
+
+    rep.figures[f"gear_mesh_{tag}"] = plot_mesh(pair).figure
+    rep.figures[f"gear_diagrams_{tag}"] = plot_diagrams(pair)[0].figure
+    rep.markdown += [f"### The {tag} pair in mesh (x1/x2 = {pair.x1:.4f}/{pair.x2:.4f})", "",
+                     f"![{tag} pair in mesh](gear_mesh_{tag}.png)", "",
+                     f"![specific sliding and pressure along the line of action](gear_diagrams_{tag}.png)", ""]
 
 
 def _run_teeth(rep: SceneReport, t: dict):

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 import geardesign as gd
-from geardesign.profiles.drawing import _turned, contact_points
-from geardesign.profiles.export import gear_outline
+from geardesign.profiles.drawing import contact_points
+from geardesign.profiles.mesh import pair_outlines
 
 matplotlib.use("Agg")
 
@@ -38,12 +38,8 @@ def test_teeth_in_mesh_touch_without_overlap(m, z1, z2, x1, x2, roll_deg):
 
     pair = gd.GearPair(m, z1, z2, x1, x2)
     geo = pair._geo
-    roll = math.radians(roll_deg)
-    p1 = gd.tooth_profile(m, z1, x1, tip_diameter_mm=float(geo["da1"]), points=200)
-    p2 = gd.tooth_profile(m, z2, x2, tip_diameter_mm=float(geo["da2"]), points=200)
-    a1 = np.column_stack(_turned(*gear_outline(p1), -roll))
-    x2_, y2_ = _turned(*gear_outline(p2), math.pi + math.pi / z2 + roll * z1 / z2)
-    a2 = np.column_stack([x2_, y2_ + float(geo["a_w"])])
+    (_, *g1), (_, *g2) = pair_outlines(pair, roll_deg, points=200)
+    a1, a2 = np.column_stack(g1), np.column_stack(g2)
     near = np.linalg.norm(a2 - np.array([0.0, float(geo["dw1"]) / 2]), axis=1) < 3 * m
     inside = Path(a1).contains_points(a2[near], radius=-1e-6 * m)
     assert not inside.any()

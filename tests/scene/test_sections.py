@@ -15,3 +15,22 @@ def test_scene_with_given_shifts_and_a_housing_center_distance(tmp_path):
     assert not given.loc["center_distance", "ok"]
     assert given.loc["center_distance", "value"] == pytest.approx(181.6016, abs=1e-4)
     assert "balanced_sliding" in rep.summary[0] and "a_w = 180.0000 mm" in rep.summary[0]
+
+
+def test_mesh_drawing_adds_the_drawing_and_diagrams_of_both_pairs(tmp_path):
+    """``mesh_drawing = true``: the optimum's and the given pair's meshing drawing and diagrams are
+    written and linked from the report; without it, none are."""
+    scene = tmp_path / "s.toml"
+    scene.write_text("[gear]\nmodule = 8\nz1 = 17\nz2 = 26\nx1 = 0.898\nx2 = 0.517\nmesh_drawing = true\n")
+    gd.run_scene(scene, tmp_path / "out")
+    report = (tmp_path / "out" / "report.md").read_text(encoding="utf-8")
+    for tag in ("optimum", "given"):
+        for kind in ("mesh", "diagrams"):
+            png = tmp_path / "out" / f"gear_{kind}_{tag}.png"
+            assert png.read_bytes()[:4] == b"\x89PNG"
+            assert f"(gear_{kind}_{tag}.png)" in report
+    assert "x1/x2 = 0.8980/0.5170" in report
+    plain = tmp_path / "p.toml"
+    plain.write_text("[gear]\nmodule = 8\nz1 = 17\nz2 = 26\n")
+    gd.run_scene(plain, tmp_path / "out2")
+    assert not list((tmp_path / "out2").glob("gear_mesh_*"))

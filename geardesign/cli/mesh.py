@@ -1,0 +1,108 @@
+"""``geardesign mesh``: the meshing drawing of a spur pair, its line-of-action diagrams, and both gears'
+generated outlines as SVG, DXF or CSV."""
+from __future__ import annotations
+
+import os
+
+from ..errors import GearDesignError
+from .output import add_json_flag, print_json
+from .pair import add_pair_args, pair_from_args
+
+# flag -> (suffix, what is written)
+OUTPUTS = {
+    "--plot": (".png", "the meshing drawing"),
+    "--diagrams": (".png", "the diagrams of specific sliding and pressure along the line of action"),
+    "--svg": (".svg", "both gears' outlines in mesh, SVG in mm"),
+    "--dxf": (".dxf", "both gears' outlines in mesh, DXF in mm (layers gear1, gear2)"),
+    "--csv": (".csv", "both gears' outline points in mesh, CSV in mm"),
+}
+
+
+def add_parser(sub):
+    p = sub.add_parser("mesh", help="meshing drawing, line-of-action diagrams and profile export of a spur pair",
+                       description="Both gears' teeth as their rack cutter generates them, in mesh at a_w: the "
+                                   "drawing (circles, line of action N1N2 with its active part and contact zones), "
+                                   "the diagrams of specific sliding and pressure along N1N2, and the outlines as "
+                                   "SVG/DXF/CSV (gear 1 about the origin, gear 2 about (0, a_w), mm).")
+    add_pair_args(p)
+    p.add_argument("--roll-deg", type=float, default=0.0, help="turn gear 1 by this angle (gear 2 follows), degrees")
+    for flag, (suffix, what) in OUTPUTS.items():
+        p.add_argument(flag, metavar=f"FILE{suffix}", default=None, help=f"write {what}")
+    p.add_argument("--overwrite", action="store_true", help="replace existing output files")
+    add_json_flag(p)
+    return p
+
+
+def _targets(args) -> dict:
+    """Every requested output file, checked before any work (suffix, folder, overwrite, no repeats)."""
+    from ..files import check_output_path
+
+    targets = {}
+    for flag, (suffix, _) in OUTPUTS.items():
+        value = getattr(args, flag[2:])
+        if value is not None:
+            targets[flag] = check_output_path(value, overwrite=args.overwrite, suffixes=(suffix,), what=flag)
+    seen = {}
+    for flag, path in targets.items():
+        key = os.path.abspath(path)
+        if key in seen:
+            raise GearDesignError(f"{flag} {str(path)!r} is also given to {seen[key]}: give each output its own file")
+        seen[key] = flag
+    return targets
+
+
+def _save_figure(ax, path) -> None:
+    import matplotlib.pyplot as plt
+
+    from ..files import write_file_atomic
+    try:
+        write_file_atomic(path, lambda tmp: ax.figure.savefig(tmp, dpi=120, bbox_inches="tight", format="png"))
+    finally:
+        plt.close(ax.figure)
+
+
+def run(args) -> int:
+    targets = _targets(args)
+    pair, _ = pair_from_args(args)
+    from ..profiles.drawing import contact_points, line_of_action_diagrams, plot_diagrams, plot_mesh
+    from ..profiles.mesh import export_profiles
+
+    geo = pair._geo
+    if "--plot" in targets or "--diagrams" in targets:
+        import matplotlib
+        matplotlib.use("Agg")
+    if "--plot" in targets:
+        _save_figure(plot_mesh(pair, roll_deg=args.roll_deg), targets["--plot"])
+    if "--diagrams" in targets:
+        _save_figure(plot_diagrams(pair)[0], targets["--diagrams"])
+    for flag in ("--svg", "--dxf", "--csv"):
+        if flag in targets:
+            export_profiles(pair, targets[flag], overwrite=args.overwrite, roll_deg=args.roll_deg)
+
+    c = contact_points(geo)
+    d = line_of_action_diagrams(geo, n=2, s_mm=[0.5 * c["g"]])
+    g_alpha = d["s_E"] - d["s_A"]
+    double = max(g_alpha - d["p_b"], 0.0)
+    summary = {
+        "m": pair.m, "z1": pair.z1, "z2": pair.z2, "x1": pair.x1, "x2": pair.x2,
+        "a_w_mm": float(geo["a_w"]), "alpha_w_deg": float(geo["alpha_w_deg"]), "eps_alpha": float(geo["eps_alpha"]),
+        "line_of_action_mm": {"N1N2": d["g"], "N1A": d["s_A"], "N1P": d["s_P"], "N1E": d["s_E"],
+                              "active_A_to_E": g_alpha, "base_pitch": d["p_b"],
+                              "double_contact_each_end": double, "single_contact": g_alpha - 2 * double},
+        "points_mm": {k: c[k].tolist() for k in ("N1", "N2", "A", "P", "E")},
+        "files": {flag: str(path) for flag, path in targets.items()},
+    }
+    if args.json:
+        print_json(summary)
+        return 0
+    lo = summary["line_of_action_mm"]
+    print(f"Spur pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1/x2 = {pair.x1:.6g}/{pair.x2:.6g}: "
+          f"a_w = {summary['a_w_mm']:.6g} mm, alpha_w = {summary['alpha_w_deg']:.6g} deg, "
+          f"eps_alpha = {summary['eps_alpha']:.4g}")
+    print(f"Line of action N1N2 = {lo['N1N2']:.6g} mm; from N1: A {lo['N1A']:.6g}, P {lo['N1P']:.6g}, "
+          f"E {lo['N1E']:.6g} mm; active A-E {lo['active_A_to_E']:.6g} mm = "
+          f"{lo['double_contact_each_end']:.6g} double + {lo['single_contact']:.6g} single + "
+          f"{lo['double_contact_each_end']:.6g} double (p_b = {lo['base_pitch']:.6g} mm)")
+    for flag, path in targets.items():
+        print(f"wrote {path} ({OUTPUTS[flag][1]})")
+    return 0

@@ -1,0 +1,52 @@
+"""`geardesign mesh`: every output written and readable, the line-of-action figures agree with the pair
+geometry, outputs are checked before any work (existing file, repeated path) with one-line errors."""
+import json
+import subprocess
+import sys
+
+import pytest
+
+import geardesign as gd
+from geardesign.cli import main
+
+ENGINE = ["mesh", "--module", "8", "--z1", "17", "--z2", "26", "--x1", "0.898", "--x2", "0.517"]
+
+
+def test_mesh_writes_every_output(tmp_path, capsys):
+    files = {flag: tmp_path / name for flag, name in
+             (("--plot", "mesh.png"), ("--diagrams", "diag.png"), ("--svg", "g.svg"), ("--dxf", "g.dxf"),
+              ("--csv", "g.csv"))}
+    argv = ENGINE + [a for flag, path in files.items() for a in (flag, str(path))] + ["--json"]
+    assert main(argv) == 0
+    out = json.loads(capsys.readouterr().out)
+    for path in files.values():
+        assert path.stat().st_size > 1000
+    for png in (files["--plot"], files["--diagrams"]):
+        assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    g = gd.GearPair(8, 17, 26, 0.898, 0.517).geometry()
+    line = out["line_of_action_mm"]
+    assert line["active_A_to_E"] == pytest.approx(g.g_alpha, rel=1e-12)
+    assert line["base_pitch"] == pytest.approx(g.p_b, rel=1e-12)
+    assert line["double_contact_each_end"] == pytest.approx((g.eps_alpha - 1) * g.p_b, rel=1e-9)
+    assert line["N1A"] < line["N1P"] < line["N1E"] < line["N1N2"]
+    assert out["a_w_mm"] == pytest.approx(g.a_w, rel=1e-15)
+
+
+def test_mesh_checks_outputs_before_work(tmp_path):
+    (tmp_path / "g.svg").write_text("keep me")
+    for extra, words in ((["--svg", str(tmp_path / "g.svg")], ["--svg", "exists", "--overwrite"]),
+                         (["--svg", str(tmp_path / "a.svg"), "--plot", str(tmp_path / "a.svg")], ["must end in .png"]),
+                         (["--dxf", str(tmp_path / "d.dxf"), "--z1", "2"], ["z1", "[3, 100000]"])):
+        proc = subprocess.run([sys.executable, "-m", "geardesign", *ENGINE, *extra], capture_output=True, text=True)
+        assert proc.returncode == 2
+        lines = proc.stderr.strip().splitlines()
+        assert len(lines) == 1, proc.stderr
+        assert all(w in lines[0] for w in words), lines[0]
+    assert (tmp_path / "g.svg").read_text() == "keep me"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["g.svg"]
+
+
+def test_mesh_refuses_one_file_for_two_outputs(tmp_path, capsys):
+    assert main(ENGINE + ["--svg", str(tmp_path / "a.svg"), "--plot", str(tmp_path / "m.png"),
+                          "--diagrams", str(tmp_path / "m.png")]) == 2
+    assert "also given to --plot" in capsys.readouterr().err
