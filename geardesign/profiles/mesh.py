@@ -11,7 +11,7 @@ from ..validate import one_number, require_range
 from .export import gear_outline, turned, write_outlines
 from .tooth import tooth_profile
 
-__all__ = ["pair_outlines", "export_profiles"]
+__all__ = ["pair_profiles", "pair_outlines", "export_profiles"]
 
 ROLL_RANGE_DEG = (-3600.0, 3600.0)
 
@@ -22,14 +22,22 @@ def _require_pair(pair):
     return pair
 
 
+def pair_profiles(pair, points: int = 200) -> tuple:
+    """The generated tooth profiles of both gears of a :class:`~geardesign.gears.pair.GearPair`, each
+    cut at the pair's tip circle (so with the pair's tip shortening) and with the pair's rack."""
+    pair = _require_pair(pair)
+    geo = pair._geo
+    return tuple(tooth_profile(pair.m, z, x, rack=pair.rack, tip_diameter_mm=float(geo[f"da{k}"]), points=points)
+                 for k, z, x in ((1, pair.z1, pair.x1), (2, pair.z2, pair.x2)))
+
+
 def pair_outlines(pair, roll_deg: float = 0.0, points: int = 200) -> list:
     """Both gears of a :class:`~geardesign.gears.pair.GearPair`, generated with the pair's tip circles,
     in mesh: ``[("gear1", x_mm, y_mm), ("gear2", x_mm, y_mm)]``, each closed."""
     pair = _require_pair(pair)
     roll = math.radians(one_number("roll_deg", require_range("roll_deg", roll_deg, *ROLL_RANGE_DEG, unit="°")))
     geo = pair._geo
-    p1 = tooth_profile(pair.m, pair.z1, pair.x1, rack=pair.rack, tip_diameter_mm=float(geo["da1"]), points=points)
-    p2 = tooth_profile(pair.m, pair.z2, pair.x2, rack=pair.rack, tip_diameter_mm=float(geo["da2"]), points=points)
+    p1, p2 = pair_profiles(pair, points)
     x1, y1 = turned(*gear_outline(p1), -roll)
     x2, y2 = turned(*gear_outline(p2), math.pi + math.pi / pair.z2 + roll * pair.z1 / pair.z2)
     return [("gear1", x1, y1), ("gear2", x2, y2 + float(geo["a_w"]))]

@@ -19,10 +19,16 @@ def _centroid(x, y):
 
 
 def _areas(pair, points):
-    geo = pair._geo
-    return [outline_area_mm2(*gear_outline(gd.tooth_profile(pair.m, z, x, tip_diameter_mm=float(geo[f"da{k}"]),
-                                                            points=points)))
-            for k, z, x in ((1, pair.z1, pair.x1), (2, pair.z2, pair.x2))]
+    return [outline_area_mm2(*gear_outline(p)) for p in gd.pair_profiles(pair, points)]
+
+
+def test_pair_profiles_are_cut_at_the_pairs_tip_circles():
+    """Tip shortening included: the profiles' tip radius is the pair's d_a/2, the thickness there s_a."""
+    pair = gd.GearPair(8, 17, 26, 0.898, 0.517)
+    g = pair.geometry()
+    for k, p in enumerate(gd.pair_profiles(pair, points=100), start=1):
+        assert np.hypot(p.x_mm[-1], p.y_mm[-1]) == pytest.approx(getattr(g, f"da{k}") / 2, rel=1e-12)
+        assert p.tip_thickness_mm == pytest.approx(getattr(g, f"sa{k}"), abs=1e-9 * 8)
 
 
 def _read(path):
