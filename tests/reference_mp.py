@@ -55,34 +55,46 @@ def _tip_thickness(d_y, d_b, psi):
     return d_y * (psi - inv(alpha_y)), alpha_y
 
 
-def pair_reference(m, z1, z2, x1, x2, alpha_deg=20.0, ha=1.0, c=0.25, rho_f=0.38, tip_shortening=True):
+def pair_reference(m, z1, z2, x1, x2, alpha_deg=20.0, ha=1.0, c=0.25, rho_f=0.38, tip_shortening=True,
+                   beta_deg=0.0, face_width=None):
     """All geometry fields of one pair as mpmath numbers, or None if the geometry does not exist.
 
     Returns ``(fields, reason)``: ``fields`` is a dict keyed like
     ``geardesign.GEOMETRY_FIELDS`` (None when the design does not exist) and ``reason`` a
     string saying why not ("inv_alpha_w <= 0", "tip1 inside base circle", "d_f2 <= 0", ...).
+
+    Helical pairs (ISO 21771:2007 §4–5): ``m`` is the normal module, x1/x2 normal shift
+    coefficients, the rack is given in the normal section; the circles, angles, thicknesses and the
+    path of contact are transverse (α_t = atan(tan α_n / cos β), m_t = m_n / cos β); heights are in
+    m_n. β = 0 is the spur pair.
     """
     m, z1, z2, x1, x2 = (mp.mpf(float(v)) for v in (m, z1, z2, x1, x2))
     ha, c, rho_f = mp.mpf(float(ha)), mp.mpf(float(c)), mp.mpf(float(rho_f))
     alpha = mp.mpf(math.radians(float(alpha_deg)))   # the same double the library uses
-    sin_a, cos_a, tan_a = mp.sin(alpha), mp.cos(alpha), mp.tan(alpha)
+    beta = mp.mpf(math.radians(float(beta_deg)))
+    sin_a, tan_a = mp.sin(alpha), mp.tan(alpha)
+    cos_b = mp.cos(beta)
+    alpha_t = mp.atan(tan_a / cos_b)                  # ISO 21771 (13)
+    m_t = m / cos_b                                   # ISO 21771 (11)
+    sin_t, cos_t = mp.sin(alpha_t), mp.cos(alpha_t)
+    beta_b = mp.atan(mp.tan(beta) * cos_t)            # ISO 21771 (17)
 
-    inv_a = inv(alpha)
-    inv_aw = inv_a + 2 * (x1 + x2) * tan_a / (z1 + z2)
+    inv_t = inv(alpha_t)
+    inv_aw = inv_t + 2 * (x1 + x2) * tan_a / (z1 + z2)
     if inv_aw <= 0:
         return None, "inv_alpha_w <= 0"
     alpha_w = inv_inverse(inv_aw)
     cos_w, sin_w = mp.cos(alpha_w), mp.sin(alpha_w)
 
-    a = m * (z1 + z2) / 2
-    a_w = a * cos_a / cos_w
+    a = m_t * (z1 + z2) / 2
+    a_w = a * cos_t / cos_w
     y = (a_w - a) / m
     dy = x1 + x2 - y
     k = dy if tip_shortening else mp.mpf(0)
 
-    d1, d2 = m * z1, m * z2
-    db1, db2 = d1 * cos_a, d2 * cos_a
-    dw1, dw2 = d1 * cos_a / cos_w, d2 * cos_a / cos_w
+    d1, d2 = m_t * z1, m_t * z2
+    db1, db2 = d1 * cos_t, d2 * cos_t
+    dw1, dw2 = d1 * cos_t / cos_w, d2 * cos_t / cos_w
     da1 = d1 + 2 * m * (ha + x1 - k)
     da2 = d2 + 2 * m * (ha + x2 - k)
     df1 = d1 - 2 * m * (ha + c - x1)
@@ -96,10 +108,10 @@ def pair_reference(m, z1, z2, x1, x2, alpha_deg=20.0, ha=1.0, c=0.25, rho_f=0.38
     if df2 <= 0:
         return None, "d_f2 <= 0"
 
-    s1 = m * (mp.pi / 2 + 2 * x1 * tan_a)
-    s2 = m * (mp.pi / 2 + 2 * x2 * tan_a)
-    psi1 = s1 / d1 + inv_a
-    psi2 = s2 / d2 + inv_a
+    s1 = m_t * (mp.pi / 2 + 2 * x1 * tan_a)           # transverse, on the reference circle
+    s2 = m_t * (mp.pi / 2 + 2 * x2 * tan_a)
+    psi1 = s1 / d1 + inv_t
+    psi2 = s2 / d2 + inv_t
     sw1, _ = _tip_thickness(dw1, db1, psi1)
     sw2, _ = _tip_thickness(dw2, db2, psi2)
     sa1, alpha_a1 = _tip_thickness(da1, db1, psi1)
@@ -110,20 +122,29 @@ def pair_reference(m, z1, z2, x1, x2, alpha_deg=20.0, ha=1.0, c=0.25, rho_f=0.38
     rho_a1 = mp.sqrt(ra1 ** 2 - rb1 ** 2)
     rho_a2 = mp.sqrt(ra2 ** 2 - rb2 ** 2)
     n1n2 = a_w * sin_w
-    p_b = mp.pi * m * cos_a
+    p_b = mp.pi * m_t * cos_t
     g_alpha = rho_a1 + rho_a2 - n1n2
     rho_p1 = n1n2 - rho_a2
     rho_p2 = n1n2 - rho_a1
 
+    # the straight flank of the rack ends h_l·m above its tip line; in the transverse section its
+    # generating line of action leans at α_t from the pitch line, the reference radius is z m_t / 2
     h_l = ha + c - rho_f * (1 - sin_a)
-    x_min1 = h_l - z1 * sin_a ** 2 / 2
-    x_min2 = h_l - z2 * sin_a ** 2 / 2
-    rho_l1 = m * (x1 - x_min1) / sin_a
-    rho_l2 = m * (x2 - x_min2) / sin_a
+    x_min1 = h_l - z1 * sin_t ** 2 / (2 * cos_b)
+    x_min2 = h_l - z2 * sin_t ** 2 / (2 * cos_b)
+    rho_l1 = m * (x1 - x_min1) / sin_t
+    rho_l2 = m * (x2 - x_min2) / sin_t
 
     u = z2 / z1
     rw1, rw2 = dw1 / 2, dw2 / 2
     rho_w1, rho_w2 = rw1 * sin_w, rw2 * sin_w
+    eps_alpha = g_alpha / p_b
+    # ε_β = b sin β / (π m_n) (ISO 21771 (83)); without a face width it is unknown, except for spur
+    # pairs, where it is 0 whatever b is
+    if face_width is None:
+        eps_beta = mp.mpf(0) if beta == 0 else mp.nan
+    else:
+        eps_beta = mp.mpf(float(face_width)) * mp.sin(beta) / (mp.pi * m)
 
     out = {
         "alpha_w_deg": mp.degrees(alpha_w),
@@ -133,7 +154,7 @@ def pair_reference(m, z1, z2, x1, x2, alpha_deg=20.0, ha=1.0, c=0.25, rho_f=0.38
         "da1": da1, "da2": da2, "df1": df1, "df2": df2,
         "s1": s1, "s2": s2, "sw1": sw1, "sw2": sw2, "sa1": sa1, "sa2": sa2,
         "p_b": p_b, "p_w": mp.pi * dw1 / z1,
-        "g_alpha": g_alpha, "eps_alpha": g_alpha / p_b,
+        "g_alpha": g_alpha, "eps_alpha": eps_alpha,
         "alpha_a1_deg": mp.degrees(alpha_a1), "alpha_a2_deg": mp.degrees(alpha_a2),
         "clearance1": a_w - ra1 - rf2, "clearance2": a_w - ra2 - rf1,
         "x_min1": x_min1, "x_min2": x_min2,
@@ -150,7 +171,14 @@ def pair_reference(m, z1, z2, x1, x2, alpha_deg=20.0, ha=1.0, c=0.25, rho_f=0.38
         "sliding2_tip": 1 - u * rho_p1 / rho_a2,
         "sliding1_tip": 1 - rho_p2 / (u * rho_a1),
         "sliding2_root": 1 - u * rho_a1 / rho_p2,
-        "spec_pressure_pitch": m * (rho_w1 + rho_w2) / (rho_w1 * rho_w2),
+        # in the normal section the radii of curvature are ρ_t / cos β_b
+        "spec_pressure_pitch": m * mp.cos(beta_b) * (rho_w1 + rho_w2) / (rho_w1 * rho_w2),
+        "alpha_t_deg": mp.degrees(alpha_t), "beta_b_deg": mp.degrees(beta_b), "m_t": m_t,
+        "z_n1": z1 / (mp.cos(beta_b) ** 2 * cos_b), "z_n2": z2 / (mp.cos(beta_b) ** 2 * cos_b),
+        "eps_beta": eps_beta, "eps_gamma": eps_alpha + eps_beta,
+        # normal tip thickness on the tip cylinder: s_an = s_at cos β_a, tan β_a = tan β d_a / d
+        "san1": sa1 * mp.cos(mp.atan(mp.tan(beta) * da1 / d1)),
+        "san2": sa2 * mp.cos(mp.atan(mp.tan(beta) * da2 / d2)),
     }
     return out, ""
 
