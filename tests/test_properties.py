@@ -28,7 +28,7 @@ PER_GEAR = [("d1", "d2"), ("db1", "db2"), ("dw1", "dw2"), ("da1", "da2"), ("df1"
             ("sw1", "sw2"), ("sa1", "sa2"), ("alpha_a1_deg", "alpha_a2_deg"), ("clearance1", "clearance2"),
             ("x_min1", "x_min2"), ("rho_l1", "rho_l2"), ("rho_p1", "rho_p2"), ("d_l1", "d_l2"),
             ("d_p1", "d_p2"), ("o2n1", "o1n2"), ("sliding1_root", "sliding2_root"),
-            ("sliding1_tip", "sliding2_tip")]
+            ("sliding1_tip", "sliding2_tip"), ("san1", "san2"), ("z_n1", "z_n2")]
 
 
 def close(a, b, tol, scale=0.0):

@@ -22,7 +22,7 @@ import numpy as np
 from ..errors import GearDesignError
 from ..validate import broadcast_inputs, ndim, require_bool, require_int, require_positive, require_range
 from .involute import _t_minus_atan, _tan_from_inv_float, inv, inv_from_tan, t_minus_atan, t_minus_atan_float, tan_from_inv
-from .mesh import Z_MAX, Z_MIN, Mesh
+from .mesh import Z_MAX, Z_MIN, Mesh, section_constants
 from .rack import BasicRack
 
 __all__ = [
@@ -47,12 +47,12 @@ DESIGNS_MAX = 20_000_000   # designs in one vectorised call: ~1.5 GB of fields p
 
 # name -> (unit, description); the order is the order of reports.
 GEOMETRY_FIELDS: dict[str, tuple[str, str]] = {
-    "alpha_w_deg": ("deg", "operating (working) pressure angle α_w"),
+    "alpha_w_deg": ("deg", "transverse operating pressure angle α_w (α_wt)"),
     "inv_alpha_w": ("-", "involute of α_w"),
-    "a": ("mm", "reference centre distance m(z1+z2)/2"),
+    "a": ("mm", "reference centre distance m_t(z1 + z2)/2 (internal: m_t(z2 − z1)/2)"),
     "a_w": ("mm", "operating centre distance"),
-    "y": ("-", "centre distance modification coefficient (a_w − a)/m"),
-    "dy": ("-", "tip shortening coefficient Δy = x1 + x2 − y"),
+    "y": ("-", "centre distance modification coefficient (a_w − a)/m_n"),
+    "dy": ("-", "tip shortening coefficient Δy = x_Σ − y (x_Σ = x1 + x2; internal x2 − x1)"),
     "d1": ("mm", "reference diameter, gear 1"),
     "d2": ("mm", "reference diameter, gear 2"),
     "db1": ("mm", "base diameter, gear 1"),
@@ -63,13 +63,13 @@ GEOMETRY_FIELDS: dict[str, tuple[str, str]] = {
     "da2": ("mm", "tip diameter, gear 2"),
     "df1": ("mm", "root diameter, gear 1"),
     "df2": ("mm", "root diameter, gear 2"),
-    "s1": ("mm", "tooth thickness on the reference circle, gear 1"),
-    "s2": ("mm", "tooth thickness on the reference circle, gear 2"),
+    "s1": ("mm", "transverse tooth thickness on the reference circle, gear 1"),
+    "s2": ("mm", "transverse tooth thickness on the reference circle, gear 2"),
     "sw1": ("mm", "tooth thickness on the operating pitch circle, gear 1"),
     "sw2": ("mm", "tooth thickness on the operating pitch circle, gear 2"),
     "sa1": ("mm", "tooth thickness on the tip circle, gear 1"),
     "sa2": ("mm", "tooth thickness on the tip circle, gear 2"),
-    "p_b": ("mm", "base pitch π m cos α"),
+    "p_b": ("mm", "transverse base pitch π m_t cos α_t"),
     "p_w": ("mm", "circular pitch on the operating pitch circle"),
     "g_alpha": ("mm", "length of the path of contact (active line of action)"),
     "eps_alpha": ("-", "transverse contact ratio g_α/p_b"),
@@ -78,7 +78,7 @@ GEOMETRY_FIELDS: dict[str, tuple[str, str]] = {
     "clearance1": ("mm", "tip-to-root clearance at the tip of gear 1"),
     "clearance2": ("mm", "tip-to-root clearance at the tip of gear 2"),
     "x_min1": ("-", "smallest shift of gear 1 without undercut"),
-    "x_min2": ("-", "smallest shift of gear 2 without undercut"),
+    "x_min2": ("-", "smallest shift of gear 2 without undercut (NaN for a ring gear)"),
     "rho_l1": ("mm", "involute radius of curvature at the limit (form) point, gear 1; < 0 = undercut"),
     "rho_l2": ("mm", "involute radius of curvature at the limit (form) point, gear 2; < 0 = undercut"),
     "rho_p1": ("mm", "radius of curvature at the start of the active profile, gear 1"),
@@ -93,14 +93,23 @@ GEOMETRY_FIELDS: dict[str, tuple[str, str]] = {
     "sliding1_tip": ("-", "specific sliding of gear 1 at its tip"),
     "sliding2_root": ("-", "specific sliding of gear 2 at the start of its active profile"),
     "sliding2_tip": ("-", "specific sliding of gear 2 at its tip"),
-    "spec_pressure_pitch": ("-", "specific pressure coefficient m/ρ_red at the pitch point"),
+    "spec_pressure_pitch": ("-", "specific pressure coefficient m_n/ρ_red at the pitch point (normal section)"),
+    "eps_beta": ("-", "overlap ratio ε_β = b sin β/(π m_n); 0 for spur pairs, NaN without a face width"),
+    "eps_gamma": ("-", "total contact ratio ε_γ = ε_α + ε_β"),
+    "san1": ("mm", "tooth thickness on the tip cylinder in the normal section, gear 1 (= sa1 for spur)"),
+    "san2": ("mm", "tooth thickness on the tip cylinder in the normal section, gear 2 (= sa2 for spur)"),
+    "alpha_t_deg": ("deg", "transverse pressure angle α_t = atan(tan α_n / cos β)"),
+    "beta_b_deg": ("deg", "base helix angle β_b"),
+    "m_t": ("mm", "transverse module m_n / cos β"),
+    "z_n1": ("-", "virtual tooth count z/(cos²β_b cos β), gear 1"),
+    "z_n2": ("-", "virtual tooth count z/(cos²β_b cos β), gear 2"),
 }
 
 
 # Fields that no check or objective of the library needs: computed only when asked for.
 REPORT_FIELDS = frozenset({"s1", "s2", "sw1", "sw2", "p_w", "alpha_a1_deg", "alpha_a2_deg", "clearance1",
                            "clearance2", "d_l1", "d_l2", "d_p1", "d_p2", "o2n1", "o1n2", "sliding1_tip",
-                           "sliding2_tip"})
+                           "sliding2_tip", "alpha_t_deg", "beta_b_deg", "m_t", "z_n1", "z_n2"})
 
 
 # --- formulas ---------------------------------------------------------------------------
@@ -253,12 +262,13 @@ def mesh_geometry_float(mesh: Mesh, m: float, x1: float, x2: float, full: bool =
 
 
 @functools.lru_cache(maxsize=64)
-def _rack_constants(rack: BasicRack) -> tuple:
-    """α, sin α, cos α, tan α, inv α, sin²(α/2), h_l* of a rack: the same floats on both
-    backends, computed once per rack."""
-    alpha = rack.alpha
-    return (alpha, math.sin(alpha), math.cos(alpha), math.tan(alpha), _t_minus_atan(math.tan(alpha), math.sqrt),
-            math.sin(alpha / 2.0) ** 2, rack.h_limit)
+def _section_constants(rack: BasicRack, beta_deg: float) -> tuple:
+    """α_t, sin α_t, cos α_t, tan α_t, inv α_t, sin²(α_t/2), h_l*, tan α_n, cos β, cos β_b of a rack
+    and helix angle: the same floats on both backends, computed once (α_t = α for a spur pair)."""
+    sc = section_constants(rack.alpha, math.radians(beta_deg))
+    alpha = sc.alpha_t
+    return (alpha, sc.sin_t, sc.cos_t, sc.tan_t, _t_minus_atan(sc.tan_t, math.sqrt), math.sin(alpha / 2.0) ** 2,
+            rack.h_limit, sc.tan_n, sc.cos_beta, sc.cos_beta_b)
 
 
 def _operating_angle(D, alpha, ta, inv_a, ops):
@@ -278,70 +288,104 @@ def _operating_angle(D, alpha, ta, inv_a, ops):
 
 
 def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
-    rack, tip_shortening = mesh.rack, mesh.tip_shortening
-    alpha, sa, ca, ta, inv_a, s2h, h_limit = _rack_constants(rack)
-    zs = z1 + z2
-    xs = x1 + x2
+    """Every field of the pair; ``m`` is the normal module, x1/x2 normal shifts, and the circles,
+    angles, thicknesses and the path of contact are transverse (ISO 21771:2007 §4–5). Spur
+    pairs run the very same operations as before helical ones existed: z/cos β is z itself and
+    every factor cos β or cos β_b is 1.0, so the spur results are bit-for-bit unchanged."""
+    rack, internal = mesh.rack, mesh.internal
+    alpha, sa, ca, ta, inv_a, s2h, h_limit, tn, cb, cbb = _section_constants(rack, mesh.beta_deg)
+    # z1 + z2 and x1 + x2 of an external pair, z2 − z1 and x2 − x1 of an internal one (GOST 19274-73)
+    zs = z2 - z1 if internal else z1 + z2
+    xs = x2 - x1 if internal else x1 + x2
+    zt1, zt2 = z1 / cb, z2 / cb                # d/m_n: the reference diameters in normal modules
 
     inv_aw, t_w, delta = ops.per_distinct(lambda D: _operating_angle(D, alpha, ta, inv_a, ops),
-                                          2.0 * xs * ta / zs)
+                                          2.0 * xs * tn / zs)
     cos_w = 1.0 / ops.sqrt(1.0 + t_w * t_w)
     sin_w = t_w * cos_w
     alpha_w = alpha + delta
 
-    a = m * zs / 2.0
+    a = m * zs / cb / 2.0
     # cos α − cos α_w = 2 sin(α + δ/2) sin(δ/2): no cancellation
-    y = zs * ops.sin(alpha + delta / 2.0) * ops.sin(delta / 2.0) / cos_w
+    y = zs / cb * ops.sin(alpha + delta / 2.0) * ops.sin(delta / 2.0) / cos_w
     a_w = a + y * m
     dy = xs - y
-    k = dy if tip_shortening else 0.0 * dy
+    # GOST 16532-70 shortens both tips of an external pair by Δy·m; internal pairs keep their tips
+    k = dy if mesh.tip_shortening and not internal else 0.0 * dy
 
-    d1, d2 = m * z1, m * z2
+    d1, d2 = m * zt1, m * zt2
     db1, db2 = d1 * ca, d2 * ca
     dw1, dw2 = d1 * ca / cos_w, d2 * ca / cos_w
-    da1 = d1 + 2.0 * m * (rack.ha + x1 - k)
-    da2 = d2 + 2.0 * m * (rack.ha + x2 - k)
     hf = rack.ha + rack.c
+    da1 = d1 + 2.0 * m * (rack.ha + x1 - k)
     df1 = d1 - 2.0 * m * (hf - x1)
-    df2 = d2 - 2.0 * m * (hf - x2)
-
     # r_a − r_b = m (z sin²(α/2) + h_a* + x − k): exact when the tip is near the base circle
-    gap1 = m * (z1 * s2h + rack.ha + x1 - k)
-    gap2 = m * (z2 * s2h + rack.ha + x2 - k)
+    gap1 = m * (zt1 * s2h + rack.ha + x1 - k)
+    psi1 = math.pi / (2.0 * z1) + 2.0 * x1 * tn / z1 + inv_a   # s/d + inv α
+    x_min1 = h_limit - zt1 * sa * sa / 2.0
+    rho_l1 = m * (x1 - x_min1) / sa
+    if internal:   # the ring: tips inside the reference circle, roots outside, flanks concave
+        da2 = d2 - 2.0 * m * (rack.ha - x2 - k)
+        df2 = d2 + 2.0 * m * (hf + x2)
+        gap2 = m * (zt2 * s2h - rack.ha + x2 + k)
+        psi2 = math.pi / (2.0 * z2) - 2.0 * x2 * tn / z2 - inv_a   # s/d − inv α: s_y = d_y(ψ + inv α_y)
+        x_min2 = math.nan * x2                 # a ring is not undercut by its generating counter-rack
+        rho_l2 = m * (zt2 * sa * sa / 2.0 + h_limit + x2) / sa   # the form limit near the ring's root
+    else:
+        da2 = d2 + 2.0 * m * (rack.ha + x2 - k)
+        df2 = d2 - 2.0 * m * (hf - x2)
+        gap2 = m * (zt2 * s2h + rack.ha + x2 - k)
+        psi2 = math.pi / (2.0 * z2) + 2.0 * x2 * tn / z2 + inv_a
+        x_min2 = h_limit - zt2 * sa * sa / 2.0
+        rho_l2 = m * (x2 - x_min2) / sa
     rho_a1 = ops.sqrt(gap1 * (gap1 + db1))  # √(r_a² − r_b²) = r_b tan α_a
     rho_a2 = ops.sqrt(gap2 * (gap2 + db2))
     t_a1, t_a2 = 2.0 * rho_a1 / db1, 2.0 * rho_a2 / db2
-
-    psi1 = math.pi / (2.0 * z1) + 2.0 * x1 * ta / z1 + inv_a   # s/d + inv α
-    psi2 = math.pi / (2.0 * z2) + 2.0 * x2 * ta / z2 + inv_a
     inv_a1, inv_a2 = ops.t_minus_atan(t_a1), ops.t_minus_atan(t_a2)
-    sa1 = da1 * (psi1 - inv_a1)
-    sa2 = da2 * (psi2 - inv_a2)
+    if internal or mesh.beta_deg:
+        # s_a = d_a (s/(m_t z) − (inv α_a − inv α_t)) with the difference of involutes taken from
+        # Δt = tan α_a − tan α_t = (r_a − r)(r_a + r)/(r_b (ρ_a + r_b tan α_t)): at large z the two
+        # involutes agree to many digits, and α_t, a derived double, must not leak its rounding
+        # (z·ulp) into s_a. Spur pairs keep the plain form, bit for bit as before helical ones.
+        r1, r2 = d1 / 2.0, d2 / 2.0
+        dt1 = m * (rack.ha + x1 - k) * (da1 / 2.0 + r1) / (db1 / 2.0 * (rho_a1 + db1 / 2.0 * ta))
+        sa1 = da1 * (math.pi / (2.0 * z1) + 2.0 * x1 * tn / z1 - _inv_step(ta, dt1, ops))
+        if internal:
+            dt2 = -m * (rack.ha - x2 - k) * (da2 / 2.0 + r2) / (db2 / 2.0 * (rho_a2 + db2 / 2.0 * ta))
+            sa2 = da2 * (math.pi / (2.0 * z2) - 2.0 * x2 * tn / z2 + _inv_step(ta, dt2, ops))
+        else:
+            dt2 = m * (rack.ha + x2 - k) * (da2 / 2.0 + r2) / (db2 / 2.0 * (rho_a2 + db2 / 2.0 * ta))
+            sa2 = da2 * (math.pi / (2.0 * z2) + 2.0 * x2 * tn / z2 - _inv_step(ta, dt2, ops))
+    else:
+        sa1 = da1 * (psi1 - inv_a1)
+        sa2 = da2 * (psi2 - inv_a2)
 
-    p_b = math.pi * m * ca
-    g = (db1 + db2) / 2.0 * t_w            # N1N2 = a_w sin α_w
-    # e_i = ρ_ai − r_bi tan α_w = (r_ai² − r_wi²)/(ρ_ai + r_bi tan α_w) with
-    # r_ai − r_wi = m(h_a* + x_i − k − y z_i/z_Σ): the path of contact without cancellation
+    p_b = math.pi * m * ca / cb
+    g = (db2 - db1 if internal else db1 + db2) / 2.0 * t_w            # N1N2 = a_w sin α_w
+    # e1 = ρ_a1 − r_b1 tan α_w = (r_a1² − r_w1²)/(ρ_a1 + r_b1 tan α_w) with r_a1 − r_w1 =
+    # m(h_a* + x1 − k − y z1/z_Σ), and e2 the same for gear 2 (for a ring r_w2 − r_a2 =
+    # m(h_a* − x2 − k + y z2/z_Σ), its part of the path runs inside): no cancellation
     rw1, rw2 = dw1 / 2.0, dw2 / 2.0
     e1 = m * (rack.ha + x1 - k - y * z1 / zs) * (da1 / 2.0 + rw1) / (rho_a1 + db1 / 2.0 * t_w)
-    e2 = m * (rack.ha + x2 - k - y * z2 / zs) * (da2 / 2.0 + rw2) / (rho_a2 + db2 / 2.0 * t_w)
+    if internal:
+        e2 = m * (rack.ha - x2 - k + y * z2 / zs) * (da2 / 2.0 + rw2) / (rho_a2 + db2 / 2.0 * t_w)
+    else:
+        e2 = m * (rack.ha + x2 - k - y * z2 / zs) * (da2 / 2.0 + rw2) / (rho_a2 + db2 / 2.0 * t_w)
     g_alpha = e1 + e2
     eps_alpha = g_alpha / p_b
 
+    # radii of curvature where the path of contact ends: the ring's grows with the pinion's
     rho_p1 = db1 / 2.0 * t_w - e2
-    rho_p2 = db2 / 2.0 * t_w - e1
-    x_min1 = h_limit - z1 * sa * sa / 2.0
-    x_min2 = h_limit - z2 * sa * sa / 2.0
-    rho_l1 = m * (x1 - x_min1) / sa
-    rho_l2 = m * (x2 - x_min2) / sa
-
+    rho_p2 = db2 / 2.0 * t_w + e1 if internal else db2 / 2.0 * t_w - e1
     u = z2 / z1
     # specific sliding ϑ1 = 1 − ρ2/(u ρ1), ϑ2 = 1 − u ρ1/ρ2 at both ends of the path of contact
     sliding1_root = 1.0 - rho_a2 / (u * rho_p1)
     sliding2_root = 1.0 - u * rho_a1 / rho_p2
     rho_w1 = rw1 * sin_w
     rho_w2 = rw2 * sin_w
-    spec_pressure = m * (rho_w1 + rho_w2) / (rho_w1 * rho_w2)
+    # m/ρ_red in the normal section, where the radii of curvature are ρ_t/cos β_b; concave ring: 1/ρ1 − 1/ρ2
+    spec_pressure = m * ((rho_w2 - rho_w1) if internal else (rho_w1 + rho_w2)) / (rho_w1 * rho_w2) * cbb
+    eps_beta = _overlap_ratio(mesh, m, ops)
 
     out = {
         "alpha_w_deg": ops.degrees(alpha_w),
@@ -353,29 +397,62 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
         "x_min1": x_min1, "x_min2": x_min2,
         "rho_l1": rho_l1, "rho_l2": rho_l2, "rho_p1": rho_p1, "rho_p2": rho_p2,
         "sliding1_root": sliding1_root, "sliding2_root": sliding2_root, "spec_pressure_pitch": spec_pressure,
+        "eps_beta": eps_beta, "eps_gamma": eps_alpha + eps_beta,
+        "san1": _normal_tip_thickness(sa1, da1, d1, mesh), "san2": _normal_tip_thickness(sa2, da2, d2, mesh),
         # internals used by checks and gradients (not reported)
         "_ra1": da1 / 2.0, "_ra2": da2 / 2.0, "_rho_a1": rho_a1, "_rho_a2": rho_a2,
         "_sin_w": sin_w, "_cos_w": cos_w, "_t_w": t_w, "_t_a1": t_a1, "_t_a2": t_a2, "_psi1": psi1, "_psi2": psi2,
         "_gap1": gap1, "_gap2": gap2, "_k": k,
         # ∂Δy/∂(x1 + x2) = 1 − sin α / sin α_w (∂y/∂x_Σ = sin α / sin α_w), 0 without shortening
-        "_dk": (1.0 - sa / sin_w) if tip_shortening else 0.0 * sin_w, "_sa": sa, "_ta": ta,
+        "_dk": (1.0 - sa / sin_w) if mesh.tip_shortening and not internal else 0.0 * sin_w, "_sa": sa, "_ta": ta,
         "_inv_a1": inv_a1, "_inv_a2": inv_a2, "_m": m, "_z1": z1, "_z2": z2, "_x1": x1, "_x2": x2,
     }
     if full:   # the fields no check or objective of the library needs: only for reports
         out.update({
-            "s1": d1 * (psi1 - inv_a), "s2": d2 * (psi2 - inv_a),
-            "sw1": dw1 * (psi1 - inv_aw), "sw2": dw2 * (psi2 - inv_aw), "p_w": math.pi * dw1 / z1,
+            "s1": d1 * (psi1 - inv_a), "s2": d2 * (psi2 + inv_a) if internal else d2 * (psi2 - inv_a),
+            "sw1": dw1 * (psi1 - inv_aw), "sw2": dw2 * (psi2 + inv_aw) if internal else dw2 * (psi2 - inv_aw),
+            "p_w": math.pi * dw1 / z1,
             "alpha_a1_deg": ops.degrees(ops.atan(t_a1)), "alpha_a2_deg": ops.degrees(ops.atan(t_a2)),
-            # a_w − r_a1 − r_f2 = m(c* + k − Δy), the same for both gears
-            "clearance1": m * (rack.c + k - dy), "clearance2": m * (rack.c + k - dy),
             "d_l1": 2.0 * ops.sqrt(db1 * db1 / 4.0 + ops.positive(rho_l1) ** 2),
             "d_l2": 2.0 * ops.sqrt(db2 * db2 / 4.0 + ops.positive(rho_l2) ** 2),
             "d_p1": 2.0 * ops.sqrt(db1 * db1 / 4.0 + rho_p1 * rho_p1),
             "d_p2": 2.0 * ops.sqrt(db2 * db2 / 4.0 + rho_p2 * rho_p2),
             "o2n1": ops.sqrt(db2 * db2 / 4.0 + g * g), "o1n2": ops.sqrt(db1 * db1 / 4.0 + g * g),
             "sliding1_tip": 1.0 - rho_p2 / (u * rho_a1), "sliding2_tip": 1.0 - u * rho_p1 / rho_a2,
+            "alpha_t_deg": ops.degrees(alpha + 0.0 * m), "beta_b_deg": ops.degrees(mesh.section.beta_b + 0.0 * m),
+            "m_t": m / cb, "z_n1": zt1 / (cbb * cbb), "z_n2": zt2 / (cbb * cbb),
         })
+        # external: a_w − r_a1 − r_f2 = m(c* + k − Δy); internal: r_f2 − a_w − r_a1 = m(c* + k + Δy);
+        # the same for both gears
+        out["clearance1"] = out["clearance2"] = m * (rack.c + k + dy) if internal else m * (rack.c + k - dy)
     return out
+
+
+def _inv_step(t, dt, ops):
+    """inv(atan(t + Δt)) − inv(atan t) without cancellation: Δt·t t₂/(1 + t t₂) + (u − atan u),
+    u = Δt/(1 + t t₂), two terms of one sign (as in :func:`_operating_angle`)."""
+    t2 = t + dt
+    q = 1.0 + t * t2
+    return dt * t * t2 / q + ops.t_minus_atan(dt / q)
+
+
+def _overlap_ratio(mesh: Mesh, m, ops):
+    """ε_β = b sin β / (π m_n) (ISO 21771:2007 eq. (83)): 0 for a spur pair whatever b is, NaN for a
+    helical pair without a face width."""
+    if mesh.beta_deg == 0.0:
+        return 0.0 * m
+    if mesh.face_width_mm is None:
+        return math.nan * m
+    return mesh.face_width_mm * math.sin(math.radians(mesh.beta_deg)) / (math.pi * m)
+
+
+def _normal_tip_thickness(sa, da, d, mesh: Mesh):
+    """s_an = s_at cos β_a, tan β_a = tan β d_a/d (ISO 21771:2007 eq. (54), (55)): the tooth thickness
+    on the tip cylinder across the helix; the transverse s_at for a spur pair."""
+    if mesh.beta_deg == 0.0:
+        return sa
+    tb = math.tan(math.radians(mesh.beta_deg)) * da / d
+    return sa / (1.0 + tb * tb) ** 0.5
 
 
 # --- validation -------------------------------------------------------------------------
@@ -402,38 +479,45 @@ def _first(mask: np.ndarray) -> tuple[str, tuple]:
     return where, idx if mask.ndim else ()
 
 
-def validate_geometry(geo: dict, rack: BasicRack, contact: bool = False) -> None:
+def validate_geometry(geo: dict, mesh: Mesh, contact: bool = False) -> None:
     """Raise a GearDesignError for designs whose geometry does not exist and, with ``contact``,
     for gears that do not mesh (path of contact <= 0: the tips do not reach across the line of
     action). :class:`~geardesign.GearPair` asks for contact; the vectorised
     :func:`pair_geometry` reports such designs with g_alpha <= 0 (and ε_α <= 0), as the
     regions and atlases need every design of a grid."""
-    zs = geo["_z1"] + geo["_z2"]
+    rack = mesh.rack
+    alpha_t, sin_t, _, _, inv_t, s2h, _, tan_n, cos_b, _ = _section_constants(rack, mesh.beta_deg)
+    internal = mesh.internal
+    zs = geo["_z2"] - geo["_z1"] if internal else geo["_z1"] + geo["_z2"]
+    xs_all = geo["_x2"] - geo["_x1"] if internal else geo["_x1"] + geo["_x2"]
+    xs_name, zs_name = ("x2 - x1", "z2 - z1") if internal else ("x1 + x2", "z1 + z2")
     bad = ~(geo["inv_alpha_w"] > 0)
     if bad.any():
         where, i = _first(bad)
-        xs = (geo["_x1"] + geo["_x2"])[i]
-        lo = -float(zs[i]) * inv(rack.alpha) / (2.0 * math.tan(rack.alpha))
+        lo = -float(zs[i]) * inv_t / (2.0 * tan_n)
         raise GearDesignError(
-            f"x1 + x2 = {xs:.6g}{where} is too negative: inv alpha_w must be > 0, "
-            f"so x1 + x2 must be > {lo:.6g} for z1 + z2 = {int(zs[i])}")
+            f"{xs_name} = {xs_all[i]:.6g}{where} is too negative: inv alpha_w must be > 0, "
+            f"so {xs_name} must be > {lo:.6g} for {zs_name} = {int(zs[i])}")
     for j in (1, 2):
+        ring = internal and j == 2
         bad = ~(geo[f"_gap{j}"] > 0)
         if bad.any():
             where, i = _first(bad)
             z, x = geo[f"_z{j}"][i], geo[f"_x{j}"][i]
             k = geo["_k"][i]
+            # gap = m(z sin²(α_t/2)/cos β ± (h_a* ± x − k)) > 0, solved for x
+            limit = (rack.ha - k - z * s2h / cos_b) if ring else (k - rack.ha - z * s2h / cos_b)
             raise GearDesignError(
                 f"x{j} = {x:.6g}{where}: the tip circle of gear {j} (d_a{j} = {geo[f'da{j}'][i]:.6g}) "
                 f"is inside its base circle (d_b{j} = {geo[f'db{j}'][i]:.6g}); x{j} must be > "
-                f"{float(k - rack.ha - z * math.sin(rack.alpha / 2) ** 2):.6g} for z{j} = {int(z)}")
+                f"{float(limit):.6g} for z{j} = {int(z)}")
         bad = ~(geo[f"df{j}"] > 0)
         if bad.any():
             where, i = _first(bad)
             z, x = geo[f"_z{j}"][i], geo[f"_x{j}"][i]
             raise GearDesignError(
                 f"x{j} = {x:.6g}{where}: the root diameter of gear {j} is not positive; "
-                f"x{j} must be > {rack.ha + rack.c - z / 2.0:.6g} for z{j} = {int(z)}")
+                f"x{j} must be > {rack.ha + rack.c - z / cos_b / 2.0:.6g} for z{j} = {int(z)}")
     bad = ~(geo["g_alpha"] > 0)
     if contact and bad.any():
         where, i = _first(bad)
@@ -441,7 +525,7 @@ def validate_geometry(geo: dict, rack: BasicRack, contact: bool = False) -> None
             f"the gears do not mesh{where}: their tip circles do not overlap along the line of action "
             f"(path of contact {float(np.asarray(geo['g_alpha'])[i]):.6g} mm, "
             f"eps_alpha {float(np.asarray(geo['eps_alpha'])[i]):.4g}); "
-            f"x1 + x2 = {float((geo['_x1'] + geo['_x2'])[i]):.6g} is too large for these tips")
+            f"{xs_name} = {float(xs_all[i]):.6g} is too large for these tips")
 
 
 # --- result object ----------------------------------------------------------------------
@@ -503,6 +587,15 @@ class Geometry:
     sliding2_root: object
     sliding2_tip: object
     spec_pressure_pitch: object
+    eps_beta: object
+    eps_gamma: object
+    san1: object
+    san2: object
+    alpha_t_deg: object
+    beta_b_deg: object
+    m_t: object
+    z_n1: object
+    z_n2: object
 
     @classmethod
     def _from_core(cls, geo: dict, scalar: bool, names=None) -> "Geometry":
@@ -565,8 +658,13 @@ _GET_FIELDS = operator.itemgetter(*_FIELD_NAMES)
 
 
 def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shortening: bool = True,
-                  fields=None) -> Geometry:
-    """Geometry of external spur pairs; every argument but ``rack`` broadcasts.
+                  fields=None, beta_deg: float = 0.0, internal: bool = False, face_width=None) -> Geometry:
+    """Geometry of spur and helical, external and internal pairs; m, z1, z2, x1, x2 broadcast.
+
+    ``beta_deg``: reference helix angle (``m`` is then the normal module, x1/x2 normal shifts; the
+    circles, angles, thicknesses and path of contact are transverse). ``internal``: gear 2 is a
+    ring with z2 > z1 teeth (GOST 19274-73 sign convention, see :class:`~geardesign.gears.mesh.Mesh`).
+    ``face_width`` (mm): for the overlap ratio ε_β.
 
     ``fields`` (names of :data:`GEOMETRY_FIELDS`) keeps only those in the result (the others are
     None) and computes only what they need: the report-only fields (:data:`REPORT_FIELDS`) are
@@ -598,8 +696,9 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
     names = None if fields is None else _field_names(fields)
     full = names is None or not REPORT_FIELDS.isdisjoint(names)
     with np.errstate(all="ignore"):   # designs that do not exist are refused by name just below
-        geo = mesh_geometry(Mesh(z1, z2, rack, require_bool("tip_shortening", tip_shortening)), m, x1, x2, full)
-    validate_geometry(geo, rack)
+        mesh = Mesh(z1, z2, rack, require_bool("tip_shortening", tip_shortening), beta_deg, internal, face_width)
+        geo = mesh_geometry(mesh, m, x1, x2, full)
+    validate_geometry(geo, mesh)
     return Geometry._from_core(geo, scalar, names)
 
 

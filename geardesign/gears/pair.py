@@ -101,7 +101,7 @@ class GearPair:
             object.__setattr__(self, name, getattr(mesh, name))
         geo = mesh_geometry_float(mesh, self.m, self.x1, self.x2)
         if not _exists(geo):   # the array path names what is wrong, and where
-            validate_geometry(mesh_geometry(mesh, self.m, self.x1, self.x2), self.rack, contact=True)
+            validate_geometry(mesh_geometry(mesh, self.m, self.x1, self.x2), mesh, contact=True)
         object.__setattr__(self, "_geo", geo)
         object.__setattr__(self, "mesh", mesh)
 
