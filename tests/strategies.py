@@ -41,3 +41,28 @@ def designs(draw, tip_shortening=None):
     except gd.GearDesignError:
         assume(False)
     return d
+
+
+@st.composite
+def kinds(draw):
+    """Random valid helical and internal designs: β 0..45°, internal or not (the ring with 1..300
+    teeth more than the pinion), a face width or none; otherwise as :func:`designs`."""
+    internal = draw(st.booleans())
+    z1 = draw(st.integers(5, 200))
+    d = dict(
+        m=draw(st.floats(0.5, 20.0)), z1=z1,
+        z2=z1 + draw(st.integers(1, 300)) if internal else draw(st.integers(5, 400)),
+        x1=draw(st.floats(-0.8, 2.5)), x2=draw(st.floats(-0.8, 2.5)),
+        alpha_deg=draw(st.floats(14.5, 30.0)), ts=draw(st.booleans()),
+        beta=draw(st.sampled_from([0.0, 8.0, 20.0, 45.0]) | st.floats(0.0, 45.0)),
+        internal=internal, face=draw(st.none() | st.floats(1.0, 500.0)),
+    )
+    d["rack"] = _rack(d["alpha_deg"])
+    d["mesh"] = gd.Mesh(d["z1"], d["z2"], d["rack"], d["ts"], d["beta"], internal, d["face"])
+    try:
+        d["geo"] = gd.pair_geometry(d["m"], d["z1"], d["z2"], d["x1"], d["x2"], rack=d["rack"],
+                                    tip_shortening=d["ts"], beta_deg=d["beta"], internal=internal,
+                                    face_width=d["face"])
+    except gd.GearDesignError:
+        assume(False)
+    return d

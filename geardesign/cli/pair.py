@@ -26,7 +26,9 @@ def add_limit_args(p) -> None:
     g.add_argument("--eps-alpha-min", type=float, default=DEFAULT_EPS_ALPHA_MIN,
                    help=f"minimum contact ratio ({DEFAULT_EPS_ALPHA_MIN:g})")
     g.add_argument("--sa-min", type=float, default=DEFAULT_SA_MIN,
-                   help=f"minimum tip thickness / module ({DEFAULT_SA_MIN:g})")
+                   help=f"minimum tip thickness / module ({DEFAULT_SA_MIN:g}; normal section for helical gears)")
+    g.add_argument("--eps-gamma-min", type=float, default=None,
+                   help="minimum total contact ratio eps_alpha + eps_beta (helical; needs --face-width)")
 
 
 def add_pair_args(p) -> None:
@@ -42,7 +44,18 @@ def add_pair_args(p) -> None:
                         "proposed shifts are kept and a center_distance check compares their a_w with A")
     p.add_argument("--no-tip-shortening", action="store_true",
                    help="keep d_a = d + 2(h_a* + x)m instead of shortening tips by dy*m")
+    g = p.add_argument_group("helical and internal pairs")
+    g.add_argument("--beta", type=float, default=0.0, metavar="DEG",
+                   help="reference helix angle, degrees (0: spur); --module is then the normal module")
+    g.add_argument("--internal", action="store_true",
+                   help="gear 2 is a ring gear with z2 > z1 teeth (a positive x2 moves its flanks outward)")
+    g.add_argument("--face-width", type=float, default=None, metavar="MM",
+                   help="face width b, mm, for the overlap ratio eps_beta")
     add_rack_args(p)
+
+
+def _kind(args) -> dict:
+    return dict(beta_deg=args.beta, internal=args.internal, face_width=args.face_width)
 
 
 def pair_from_args(args) -> tuple[GearPair, float | None]:
@@ -50,19 +63,20 @@ def pair_from_args(args) -> tuple[GearPair, float | None]:
     rack = rack_from_args(args)
     shorten = not args.no_tip_shortening
     if args.center_distance is not None and args.x1 is not None and args.x2 is not None:
-        return GearPair(args.module, args.z1, args.z2, args.x1, args.x2, rack, shorten), args.center_distance
+        return GearPair(args.module, args.z1, args.z2, args.x1, args.x2, rack, shorten, **_kind(args)), args.center_distance
     if args.center_distance is not None:
         if args.x2 is not None:
             raise GearDesignError("--x2 with --center-distance needs --x1 too (or give neither: the split "
                                   "then balances specific sliding)")
         return GearPair.from_center_distance(args.module, args.z1, args.z2, args.center_distance,
-                                             x1=args.x1, rack=rack, tip_shortening=shorten), None
-    return GearPair(args.module, args.z1, args.z2, args.x1 or 0.0, args.x2 or 0.0, rack, shorten), None
+                                             x1=args.x1, rack=rack, tip_shortening=shorten, **_kind(args)), None
+    return GearPair(args.module, args.z1, args.z2, args.x1 or 0.0, args.x2 or 0.0, rack, shorten, **_kind(args)), None
 
 
 def add_parser(sub):
-    p = sub.add_parser("pair", help="geometry and checks of one spur pair",
-                       description="Geometry (ISO 21771 / GOST 16532-70) and checks of an external spur pair.")
+    p = sub.add_parser("pair", help="geometry and checks of one gear pair",
+                       description="Geometry (ISO 21771; GOST 16532-70 external, GOST 19274-73 internal) and checks "
+                                   "of a spur or helical, external or internal pair.")
     add_pair_args(p)
     add_limit_args(p)
     add_json_flag(p)
@@ -73,17 +87,21 @@ def run(args) -> int:
     pair, housing = pair_from_args(args)
     rack, shorten = pair.rack, not args.no_tip_shortening
     geo = pair.geometry()
-    table = pair.checks(eps_alpha_min=args.eps_alpha_min, sa_min=args.sa_min, housing_a_w=housing)
+    table = pair.checks(eps_alpha_min=args.eps_alpha_min, sa_min=args.sa_min, housing_a_w=housing,
+                        eps_gamma_min=args.eps_gamma_min)
     if args.json:
         print_json({
             "input": {"m": pair.m, "z1": pair.z1, "z2": pair.z2, "x1": pair.x1, "x2": pair.x2,
                       "alpha_deg": rack.alpha_deg, "ha": rack.ha, "c": rack.c, "rho_f": rack.rho_f,
-                      "tip_shortening": shorten},
+                      "tip_shortening": shorten, "beta_deg": pair.beta_deg, "internal": pair.internal,
+                      "face_width_mm": pair.face_width},
             "geometry": geo.to_dict(),
             "checks": frame_records(table[["check", "value", "limit", "margin", "ok"]]),
         })
         return 0
-    print(f"Spur pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1 = {pair.x1:.6g}, x2 = {pair.x2:.6g}, "
+    kind = (("internal " if pair.internal else "") + (f"helical (beta = {pair.beta_deg:g} deg) " if pair.beta_deg
+                                                      else "spur ")).capitalize()
+    print(f"{kind}pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1 = {pair.x1:.6g}, x2 = {pair.x2:.6g}, "
           f"rack {rack.alpha_deg:g} deg / {rack.ha:g} / {rack.c:g} / {rack.rho_f:g}"
           f"{'' if shorten else ', no tip shortening'}")
     frame = geo.to_frame()

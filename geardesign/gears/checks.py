@@ -1,4 +1,4 @@
-"""Design checks of a spur pair as named constraints with signed, dimensionless margins.
+"""Design checks of a gear pair as named constraints with signed, dimensionless margins.
 
 Every check maps a geometry (the dict of :func:`geardesign.gears.geometry._core`, arrays or, on the
 optimisers' single-design path, Python floats) to
@@ -10,6 +10,12 @@ optimisers' single-design path, Python floats) to
   in the tests), for the optimisers of :mod:`geardesign.shifts.optimize`.
 
 A problem models only the checks asked for: build the list with :func:`make_checks`.
+
+Helical pairs are checked in the normal section where it decides (undercut by the exact transverse
+form x_min = h_l* − z sin²α_t/(2 cos β), the same as the virtual-gear rule without its
+approximation; tip thickness s_an on the tip cylinder) and on the transverse contact ratio.
+Internal pairs (gear 2 a ring) have their own checks for the ring: :class:`RingInterference`
+and :class:`RingTip`; the pinion keeps undercut and interference at its root.
 """
 from __future__ import annotations
 
@@ -24,8 +30,10 @@ from ..errors import GearDesignError
 from ..validate import _show, one_number, require_bool, require_finite, require_positive, require_range
 
 __all__ = [
-    "Check", "Undercut", "Interference", "TipThickness", "ContactRatio", "Jamming", "CenterDistance", "CustomCheck",
+    "Check", "Undercut", "Interference", "TipThickness", "ContactRatio", "TotalContactRatio", "Jamming",
+    "RingInterference", "RingTip", "CenterDistance", "CustomCheck",
     "make_checks", "evaluate", "DEFAULT_EPS_ALPHA_MIN", "DEFAULT_SA_MIN", "EPS_ALPHA_MIN_RANGE", "SA_MIN_RANGE",
+    "EPS_GAMMA_MIN_RANGE",
 ]
 
 DEFAULT_EPS_ALPHA_MIN = 1.2
@@ -34,6 +42,7 @@ DEFAULT_SA_MIN = 0.25
 # gives gaps in the mesh but is allowed for studies; s_a above 1·m leaves no addendum to speak of.
 EPS_ALPHA_MIN_RANGE = (0.0, 10.0)
 SA_MIN_RANGE = (0.0, 2.0)
+EPS_GAMMA_MIN_RANGE = (0.0, 20.0)   # ε_γ = ε_α + ε_β: wide helical gears reach 5 and more
 
 
 def _other(gear: int) -> int:
@@ -52,8 +61,21 @@ def _drho_a(geo: dict, gear: int):
 
 
 def _dg(geo: dict):
-    """∂(a_w sin α_w)/∂x_j = m sin α / sin²α_w (same for both j)."""
-    return geo["_m"] * geo["_sa"] / geo["_sin_w"] ** 2
+    """(∂N1N2/∂x1, ∂N1N2/∂x2) of N1N2 = a_w sin α_w: m sin α_t / sin²α_w per unit of x_Σ, where
+    x_Σ = x1 + x2 (x2 − x1 for an internal pair, so ∂x_Σ/∂x1 = ``_sgn`` = −1)."""
+    g = geo["_m"] * geo["_sa"] / geo["_sin_w"] ** 2
+    return geo["_sgn"] * g, g
+
+
+def _drho_p(geo: dict, gear: int):
+    """(∂ρ_p/∂x1, ∂ρ_p/∂x2) at the start of the active profile of ``gear``: ρ_p1 = N1N2 − ρ_a2 and
+    ρ_p2 = N1N2 − ρ_a1 externally; ρ_p1 = ρ_a2 − N1N2 and ρ_p2 = N1N2 + ρ_a1 for a ring pair."""
+    sgn = geo["_sgn"]
+    dm = _drho_a(geo, _other(gear))
+    dn = _dg(geo)
+    if gear == 1:
+        return sgn * (dn[0] - dm[0]), sgn * (dn[1] - dm[1])
+    return dn[0] - sgn * dm[0], dn[1] - sgn * dm[1]
 
 
 def sliding_root_gradient(geo: dict, gear: int):
@@ -65,10 +87,8 @@ def sliding_root_gradient(geo: dict, gear: int):
     o = _other(gear)
     rho_m, rho_p = geo[f"_rho_a{o}"], geo[f"rho_p{gear}"]
     u = geo["_z2"] / geo["_z1"]
-    dg = _dg(geo)
     out = []
-    for dm in _drho_a(geo, o):
-        dp = dg - dm
+    for dm, dp in zip(_drho_a(geo, o), _drho_p(geo, gear)):
         if gear == 1:
             out.append(-(dm * rho_p - rho_m * dp) / (u * rho_p * rho_p))
         else:
@@ -170,9 +190,8 @@ class Interference(Check):
 
     def part_gradients(self, geo):
         m = geo["_m"]
-        dg = _dg(geo)
-        dm1, dm2 = _drho_a(geo, _other(self.gear))
-        base = ((dg - dm1) / m, (dg - dm2) / m)
+        dp1, dp2 = _drho_p(geo, self.gear)
+        base = (dp1 / m, dp2 / m)
         # ∂ρ_l/∂x_gear = m / sin α
         lim = (base[0] - 1.0 / geo["_sa"], base[1]) if self.gear == 1 else (base[0], base[1] - 1.0 / geo["_sa"])
         return [lim, base]
@@ -182,7 +201,8 @@ class Interference(Check):
 class TipThickness(Check):
     """Tip thickness s_a >= limit·m (limit = sa_min, 0.25 by default; 0.4 for case-hardened gears).
 
-    Margin s_a/m − sa_min; with sa_min = 0 it is the "not pointed" check.
+    Margin s_an/m − sa_min, in the normal section on the tip cylinder (s_an = s_at cos β_a; the
+    transverse s_a of a spur gear); with sa_min = 0 it is the "not pointed" check.
     """
 
     gear: int = 1
@@ -191,21 +211,33 @@ class TipThickness(Check):
     def __post_init__(self):
         require_range("sa_min", self.limit, *SA_MIN_RANGE)
         object.__setattr__(self, "name", self.name or f"tip_thickness{self.gear}")
-        object.__setattr__(self, "label", self.label or f"tip thickness of gear {self.gear}: s_a{self.gear}/m >= sa_min")
+        object.__setattr__(self, "label", self.label or f"tip thickness of gear {self.gear}: s_a{self.gear}/m >= sa_min (normal section)")
 
     def value(self, geo):
-        return geo[f"sa{self.gear}"] / geo["_m"]
+        return geo[f"san{self.gear}"] / geo["_m"]
 
     def gradient(self, geo):
-        # s_a = d_a(ψ − inv α_a);  ∂inv α_a/∂d_a = tan α_a / d_a;  ∂ψ/∂x = 2 tan α / z
+        # s_a = d_a(ψ − inv α_a);  ∂inv α_a/∂d_a = tan α_a / d_a;  ∂ψ/∂x = 2 tan α_n / z.
+        # A ring's tooth widens outward: s_a2 = d_a2(ψ + inv α_a2), ψ = s/d − inv α, ∂ψ/∂x2 = −2 tan α_n / z2.
         j = self.gear
         m = geo["_m"]
         dda_own = 2.0 * m * (1.0 - geo["_dk"])
         dda_other = -2.0 * m * geo["_dk"]
-        coef = geo[f"_psi{j}"] - geo[f"_inv_a{j}"] - geo[f"_t_a{j}"]
-        dpsi = geo[f"da{j}"] * 2.0 * geo["_ta"] / geo[f"_z{j}"]
+        if geo["_sgn"] < 0 and j == 2:
+            coef = geo["_psi2"] + geo["_inv_a2"] + geo["_t_a2"]
+            dpsi = -geo["da2"] * 2.0 * geo["_tn"] / geo["_z2"]
+        else:
+            coef = geo[f"_psi{j}"] - geo[f"_inv_a{j}"] - geo[f"_t_a{j}"]
+            dpsi = geo[f"da{j}"] * 2.0 * geo["_tn"] / geo[f"_z{j}"]
         own = (dda_own * coef + dpsi) / m
         other = dda_other * coef / m
+        if geo["_tan_beta"]:
+            # s_an = s_a c, c = (1 + tb²)^(−1/2), tb = tan β d_a/d:  ∂c/∂d_a = −c³ tb tan β / d
+            d = geo[f"d{j}"]
+            tb = geo["_tan_beta"] * geo[f"da{j}"] / d
+            c = 1.0 / (1.0 + tb * tb) ** 0.5
+            dc = -c ** 3 * tb * geo["_tan_beta"] / d * geo[f"sa{j}"] / m
+            own, other = own * c + dc * dda_own, other * c + dc * dda_other
         return (own, other) if j == 1 else (other, own)
 
 
@@ -224,10 +256,80 @@ class ContactRatio(Check):
         return geo["eps_alpha"]
 
     def gradient(self, geo):
+        # g_α = ρ_a1 + ρ_a2 − N1N2; for a ring pair ρ_a1 − ρ_a2 + N1N2
+        sgn = geo["_sgn"]
         a1, b1 = _drho_a(geo, 1)
         a2, b2 = _drho_a(geo, 2)
-        dg = _dg(geo)
-        return (a1 + a2 - dg) / geo["p_b"], (b1 + b2 - dg) / geo["p_b"]
+        d1, d2 = _dg(geo)
+        return (a1 + sgn * (a2 - d1)) / geo["p_b"], (b1 + sgn * (b2 - d2)) / geo["p_b"]
+
+
+@dataclass(frozen=True)
+class TotalContactRatio(Check):
+    """Total contact ratio ε_γ = ε_α + ε_β >= limit (helical pairs; ε_β needs the face width).
+    Margin ε_γ − limit; ε_β does not depend on the shifts, so the gradient is ε_α's."""
+
+    limit: float = 2.0
+
+    def __post_init__(self):
+        require_range("eps_gamma_min", self.limit, *EPS_GAMMA_MIN_RANGE)
+        object.__setattr__(self, "name", self.name or "total_contact_ratio")
+        object.__setattr__(self, "label", self.label or "total contact ratio eps_gamma >= eps_gamma_min")
+
+    def value(self, geo):
+        return geo["eps_gamma"]
+
+    def gradient(self, geo):
+        return ContactRatio().gradient(geo)
+
+
+@dataclass(frozen=True)
+class RingInterference(Check):
+    """No interference of the pinion's tip with the ring's root (internal pairs): the contact on the
+    ring ends at ρ_p2 = N1N2 + ρ_a1, which must stay inside the ring's generated involute, below its
+    form limit ρ_l2 near the root (GOST 19274-73, the ring's counterpart of the external
+    condition). Margin (ρ_l2 − ρ_p2)/m."""
+
+    def __post_init__(self):
+        object.__setattr__(self, "name", self.name or "interference2")
+        object.__setattr__(self, "label", self.label or "no interference of gear 1's tip with the ring's root")
+
+    def value(self, geo):
+        return geo["rho_p2"] / geo["_m"]
+
+    def limit_value(self, geo):
+        return geo["rho_l2"] / geo["_m"]
+
+    def margin(self, geo):
+        return (geo["rho_l2"] - geo["rho_p2"]) / geo["_m"]
+
+    def gradient(self, geo):
+        # ∂ρ_l2/∂x2 = m / sin α_t (the counter-rack's flank end moves out with x2)
+        dp1, dp2 = _drho_p(geo, 2)
+        m = geo["_m"]
+        return -dp1 / m, 1.0 / geo["_sa"] - dp2 / m
+
+
+@dataclass(frozen=True)
+class RingTip(Check):
+    """The ring's tip circle lies outside its base circle, so its tip flank is involute (internal
+    pairs; GOST 19274-73): margin (r_a2 − r_b2)/m = z2 sin²(α_t/2)/cos β − h_a* + x2."""
+
+    def __post_init__(self):
+        object.__setattr__(self, "name", self.name or "ring_tip")
+        object.__setattr__(self, "label", self.label or "the ring's tip circle outside its base circle")
+
+    def value(self, geo):
+        return geo["_ra2"] / geo["_m"]
+
+    def limit_value(self, geo):
+        return geo["db2"] / 2.0 / geo["_m"]
+
+    def margin(self, geo):
+        return geo["_gap2"] / geo["_m"]
+
+    def gradient(self, geo):
+        return 0.0, 1.0
 
 
 @dataclass(frozen=True)
@@ -260,7 +362,7 @@ class Jamming(Check):
         o = _other(self.gear)
         m = geo["_m"]
         g = geo[f"_rho_a{o}"] + geo[f"rho_p{self.gear}"]
-        don = g / geo[f"o{o}n{self.gear}"] * _dg(geo)
+        don = g / geo[f"o{o}n{self.gear}"] * _dg(geo)[1]      # external pairs only
         dra_own = m * (1.0 - geo["_dk"])
         dra_other = -m * geo["_dk"]
         d_o = (don - dra_own) / m
@@ -298,9 +400,9 @@ class CenterDistance(Check):
         return (self._tol(geo) - abs(geo["a_w"] - self.limit)) / geo["_m"]
 
     def gradient(self, geo):
-        # ∂a_w/∂x_j = m sin α / sin α_w for both j (ISO 21771 eq. (62) differentiated)
+        # ∂a_w/∂x_Σ = m sin α_t / sin α_w (ISO 21771 eq. (62) differentiated); ∂x_Σ/∂x1 = −1 internally
         g = -np.sign(geo["a_w"] - self.limit) * geo["_sa"] / geo["_sin_w"]
-        return g, g
+        return geo["_sgn"] * g, g
 
 
 @dataclass(frozen=True)
@@ -340,29 +442,39 @@ class CustomCheck(Check):
 
 def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: float | None = DEFAULT_SA_MIN,
                 undercut: bool = True, interference: bool = True, jamming: bool = False,
-                extra=()) -> tuple[Check, ...]:
+                extra=(), eps_gamma_min: float | None = None, internal: bool = False) -> tuple[Check, ...]:
     """The list of checks a case asks for (defaults: no undercut, no interference, s_a >= 0.25·m, ε_α >= 1.2).
 
     ``eps_alpha_min=None`` or ``sa_min=None`` drops that check; ``undercut=False`` allows
-    undercut; ``extra`` adds :class:`Check` objects (e.g. a :class:`CustomCheck`).
+    undercut; ``eps_gamma_min`` adds the total contact ratio of a helical pair; ``extra`` adds
+    :class:`Check` objects (e.g. a :class:`CustomCheck`). ``internal``: the checks of a ring pair —
+    undercut of the pinion only, the ring's :class:`RingInterference` and :class:`RingTip`, no
+    jamming rows (seed 000's test is for external pairs).
 
     >>> [c.name for c in make_checks(sa_min=0.4, undercut=False)]
     ['interference1', 'interference2', 'tip_thickness1', 'tip_thickness2', 'contact_ratio']
+    >>> [c.name for c in make_checks(internal=True)]
+    ['undercut1', 'interference1', 'interference2', 'ring_tip', 'tip_thickness1', 'tip_thickness2', 'contact_ratio']
     """
-    for flag, value in (("undercut", undercut), ("interference", interference), ("jamming", jamming)):
+    for flag, value in (("undercut", undercut), ("interference", interference), ("jamming", jamming),
+                        ("internal", internal)):
         require_bool(flag, value)
     out: list[Check] = []
     if undercut:
-        out += [Undercut(gear=1), Undercut(gear=2)]
+        out += [Undercut(gear=1)] if internal else [Undercut(gear=1), Undercut(gear=2)]
     if interference:
-        out += [Interference(gear=1), Interference(gear=2)]
-    if jamming:
+        out += [Interference(gear=1), RingInterference(), RingTip()] if internal else [Interference(gear=1),
+                                                                                       Interference(gear=2)]
+    if jamming and not internal:
         out += [Jamming(gear=1), Jamming(gear=2)]
     if sa_min is not None:
         sa_min = one_number("sa_min", require_range("sa_min", sa_min, *SA_MIN_RANGE))
         out += [TipThickness(gear=1, limit=sa_min), TipThickness(gear=2, limit=sa_min)]
     if eps_alpha_min is not None:
         out += [ContactRatio(limit=one_number("eps_alpha_min", require_range("eps_alpha_min", eps_alpha_min, *EPS_ALPHA_MIN_RANGE)))]
+    if eps_gamma_min is not None:
+        out += [TotalContactRatio(limit=one_number("eps_gamma_min", require_range(
+            "eps_gamma_min", eps_gamma_min, *EPS_GAMMA_MIN_RANGE)))]
     if isinstance(extra, Check):
         extra = (extra,)
     if not isinstance(extra, (list, tuple)):
@@ -378,17 +490,18 @@ def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: flo
     return tuple(out)
 
 
-def resolve_checks(checks) -> tuple[Check, ...]:
-    """Accept None (defaults), a dict of :func:`make_checks` keywords, or a sequence of Checks."""
+def resolve_checks(checks, internal: bool = False) -> tuple[Check, ...]:
+    """Accept None (defaults), a dict of :func:`make_checks` keywords, or a sequence of Checks;
+    ``internal`` picks the ring pair's checks where the caller leaves the choice to the defaults."""
     if checks is None:
-        return _DEFAULT_CHECKS
+        return _DEFAULT_CHECKS_INTERNAL if internal else _DEFAULT_CHECKS
     if isinstance(checks, dict):
         try:
-            return make_checks(**checks)
+            return make_checks(**{"internal": internal, **checks})
         except TypeError as exc:
             raise GearDesignError(
                 f"checks: unknown option in {sorted(checks)}; allowed: eps_alpha_min, sa_min, "
-                f"undercut, interference, jamming, extra") from exc
+                f"undercut, interference, jamming, extra, eps_gamma_min") from exc
     if isinstance(checks, (str, bytes, Check)) or not hasattr(checks, "__iter__"):
         raise GearDesignError(f"checks must be None, a dict of make_checks options or a list of Check objects, "
                               f"got {_show(checks)}")
@@ -400,6 +513,7 @@ def resolve_checks(checks) -> tuple[Check, ...]:
 
 
 _DEFAULT_CHECKS = make_checks()
+_DEFAULT_CHECKS_INTERNAL = make_checks(internal=True)
 
 
 @functools.cache

@@ -19,29 +19,33 @@ __all__ = ["GearPair", "balanced_sliding_split"]
 _ZERO_MARGIN = 1e-12   # margins this close to 0 are rounding of an exact boundary: shown as 0
 
 
-def balanced_sliding_split(m, z1, z2, x_sum, rack: BasicRack = BasicRack(), tip_shortening: bool = True) -> float:
+def balanced_sliding_split(m, z1, z2, x_sum, rack: BasicRack = BasicRack(), tip_shortening: bool = True,
+                           mesh: Mesh | None = None) -> float:
     """x1 of the split of ``x_sum`` that equalises the specific sliding at the roots of both gears.
 
     Equal ϑ at the two ends of the path of contact is the classic distribution rule for
     closed gearing (GOST 16532-70 appendix; Kudryavtsev's blocking-contour practice). Solved
     with Brent's method on ϑ1,root(x1) − ϑ2,root(x_sum − x1), increasing in x1.
     Falls back to the split in inverse proportion to z (x1 = x_Σ z2/(z1+z2)) when no such
-    point exists for this x-sum.
+    point exists for this x-sum. ``mesh`` (helical, internal) overrides the tooth counts, rack and
+    tip rule; for an internal pair x_Σ = x2 − x1, so x2 = x_Σ + x1.
     """
     from scipy.optimize import brentq   # here: importing scipy.optimize costs more than a GearPair
 
+    mesh = Mesh(z1, z2, rack, tip_shortening) if mesh is None else mesh
+    sgn = mesh.sign
+
     def f(x1):
-        geo = mesh_geometry_float(mesh, m, x1, x_sum - x1)
+        geo = mesh_geometry_float(mesh, m, x1, x_sum - sgn * x1)
         return geo["sliding1_root"] - geo["sliding2_root"]
 
-    mesh = Mesh(z1, z2, rack, tip_shortening)
-    grid = x_sum / 2.0 + np.linspace(-3.0, 3.0, 1201)
-    geo = mesh_geometry(mesh, m, grid, x_sum - grid)
+    grid = x_sum / 2.0 + np.linspace(-3.0, 3.0, 1201) if sgn > 0 else np.linspace(-3.0, 3.0, 1201)
+    geo = mesh_geometry(mesh, m, grid, x_sum - sgn * grid)
     ok = (geo["rho_p1"] > 0) & (geo["rho_p2"] > 0) & (geo["_gap1"] > 0) & (geo["_gap2"] > 0)
     diff = geo["sliding1_root"] - geo["sliding2_root"]
     idx = np.flatnonzero(ok[:-1] & ok[1:] & (np.sign(diff[:-1]) != np.sign(diff[1:])))
     if idx.size == 0:
-        return float(x_sum * z2 / (z1 + z2))
+        return float(x_sum * z2 / (z1 + z2)) if sgn > 0 else 0.0
     i = idx[0]
     return float(brentq(f, grid[i], grid[i + 1], xtol=1e-14, rtol=1e-15))
 
@@ -61,14 +65,17 @@ def _exists(geo: dict) -> bool:
 
 @dataclass(frozen=True)
 class GearPair:
-    """An external spur gear pair.
+    """A spur or helical, external or internal gear pair.
 
     Parameters
     ----------
-    m : module, mm.  z1, z2 : tooth counts (whole numbers >= 3).
-    x1, x2 : profile shift coefficients.  rack : the :class:`BasicRack` (standard by default).
+    m : module, mm (the normal module of a helical pair).  z1, z2 : tooth counts (whole numbers >= 3).
+    x1, x2 : profile shift coefficients (normal).  rack : the :class:`BasicRack` (standard by default).
     tip_shortening : reduce both tips by Δy·m so the clearance stays c*·m (GOST 16532-70);
-        ``False`` keeps d_a = d + 2(h_a* + x)m.
+        ``False`` keeps d_a = d + 2(h_a* + x)m. Internal pairs keep their tips either way.
+    beta_deg : reference helix angle, 0..45° (0: spur).  internal : gear 2 is a ring with z2 > z1
+        teeth (GOST 19274-73 sign convention: a positive x2 moves the ring's flanks outward).
+    face_width : face width b, mm, for the overlap ratio ε_β (None: ε_β unknown for a helical pair).
 
     >>> p = GearPair(8, 17, 26, 0.898, 0.517)          # seed 000's engine pair
     >>> round(p.geometry().alpha_w_deg, 2)             # the seed prints 26°08'; inv α_w gives 27.13°
@@ -84,6 +91,9 @@ class GearPair:
     x2: float = 0.0
     rack: BasicRack = STANDARD_RACK
     tip_shortening: bool = True
+    beta_deg: float = 0.0
+    internal: bool = False
+    face_width: float | None = None
 
     def __post_init__(self):
         if not _plain_inputs(self.m, self.x1, self.x2):   # anything but plain numbers in range: by name
@@ -94,11 +104,12 @@ class GearPair:
             object.__setattr__(self, "m", float(m))
             object.__setattr__(self, "x1", float(x1))
             object.__setattr__(self, "x2", float(x2))
-        mesh = Mesh(self.z1, self.z2, self.rack, self.tip_shortening)
+        mesh = Mesh(self.z1, self.z2, self.rack, self.tip_shortening, self.beta_deg, self.internal, self.face_width)
         if mesh.is_batch:
             raise GearDesignError("z1 and z2 must be single numbers for GearPair (use pair_geometry for arrays)")
-        for name in ("z1", "z2", "rack", "tip_shortening"):
+        for name in ("z1", "z2", "rack", "tip_shortening", "beta_deg", "internal"):
             object.__setattr__(self, name, getattr(mesh, name))
+        object.__setattr__(self, "face_width", mesh.face_width_mm)
         geo = mesh_geometry_float(mesh, self.m, self.x1, self.x2)
         if not _exists(geo):   # the array path names what is wrong, and where
             validate_geometry(mesh_geometry(mesh, self.m, self.x1, self.x2), mesh, contact=True)
@@ -107,11 +118,13 @@ class GearPair:
 
     @classmethod
     def from_center_distance(cls, m, z1, z2, a_w, x1=None, rack: BasicRack | None = None,
-                             tip_shortening: bool = True) -> "GearPair":
+                             tip_shortening: bool = True, beta_deg: float = 0.0, internal: bool = False,
+                             face_width: float | None = None) -> "GearPair":
         """The pair whose x-sum gives the operating centre distance ``a_w`` (mm) at zero backlash.
 
-        ``x1`` fixes the split (x2 = x_Σ − x1); with ``x1=None`` the split equalises the
-        specific sliding at both roots (:func:`balanced_sliding_split`).
+        ``x1`` fixes the split (x2 = x_Σ − x1; for an internal pair x2 = x_Σ + x1, x_Σ = x2 − x1);
+        with ``x1=None`` the split equalises the specific sliding at both roots
+        (:func:`balanced_sliding_split`).
 
         >>> p = GearPair.from_center_distance(3, 12, 24, 56.4999, x1=0.6)   # KHK: x_Σ = 0.960013
         >>> round(p.x1 + p.x2, 6)
@@ -126,16 +139,18 @@ class GearPair:
         m_arr, z1_arr, z2_arr, _, _ = validate_inputs(m, z1, z2, 0.0, 0.0)
         a_w = one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))
         m, z1, z2 = float(m_arr), int(z1_arr), int(z2_arr)
-        a_min = float(min_center_distance(m, z1, z2, rack))
+        mesh = Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width)
+        a_min = float(min_center_distance(m, z1, z2, rack, mesh.beta_deg, mesh.internal))
         if a_w <= a_min:
             raise GearDesignError(
                 f"a_w = {a_w:g} mm is too small: it must be > a·cos(alpha) = {a_min:.6g} mm "
-                f"for m = {m:g}, z1 + z2 = {z1 + z2}")
-        xs = float(x_sum_from_center_distance(m, z1, z2, a_w, rack))
+                f"for m = {m:g}, " + (f"z2 - z1 = {z2 - z1}" if mesh.internal else f"z1 + z2 = {z1 + z2}"))
+        xs = float(x_sum_from_center_distance(m, z1, z2, a_w, rack, mesh.beta_deg, mesh.internal))
         if x1 is None:
-            x1 = balanced_sliding_split(m, z1, z2, xs, rack, tip_shortening)
+            x1 = balanced_sliding_split(m, z1, z2, xs, mesh=mesh)
         x1 = one_number("x1", require_range("x1", x1, -X_ABS_MAX, X_ABS_MAX))
-        return cls(m, z1, z2, x1, xs - x1, rack, tip_shortening)
+        x2 = xs + x1 if mesh.internal else xs - x1
+        return cls(m, z1, z2, x1, x2, rack, tip_shortening, mesh.beta_deg, mesh.internal, mesh.face_width_mm)
 
     def geometry(self) -> Geometry:
         """All geometry of the pair (mm, degrees); see :data:`geardesign.gears.geometry.GEOMETRY_FIELDS`."""
@@ -144,7 +159,8 @@ class GearPair:
     def checks(self, eps_alpha_min: float | None = _checks.DEFAULT_EPS_ALPHA_MIN,
                sa_min: float | None = _checks.DEFAULT_SA_MIN, undercut: bool = True,
                interference: bool = True, jamming: bool = True, extra=(),
-               housing_a_w: float | None = None, housing_tol_mm: float | None = None):
+               housing_a_w: float | None = None, housing_tol_mm: float | None = None,
+               eps_gamma_min: float | None = None):
         """Table of checks: ``check, value, limit, margin, ok`` (and ``label``), one row per check.
 
         Margins are dimensionless and >= 0 where the check holds (see :mod:`geardesign.gears.checks`);
@@ -159,15 +175,19 @@ class GearPair:
         """
         extra = tuple(extra) if not isinstance(extra, _checks.Check) else (extra,)
         if housing_a_w is not None:
-            need = float(x_sum_from_center_distance(self.m, self.z1, self.z2,
-                                                   one_number("housing_a_w", require_positive("housing_a_w", housing_a_w, unit="mm")),
-                                                   self.rack)) if housing_a_w > min_center_distance(self.m, self.z1, self.z2, self.rack) else math.nan
-            label = (f"a_w of x1 + x2 = housing a_w {float(housing_a_w):.10g} mm "
-                     + (f"(needs x1 + x2 = {need:.6g}; here {self.x1 + self.x2:.6g})" if math.isfinite(need)
+            kind = dict(beta_deg=self.beta_deg, internal=self.internal)
+            a_housing = one_number("housing_a_w", require_positive("housing_a_w", housing_a_w, unit="mm"))
+            need = (float(x_sum_from_center_distance(self.m, self.z1, self.z2, a_housing, self.rack, **kind))
+                    if a_housing > min_center_distance(self.m, self.z1, self.z2, self.rack, **kind) else math.nan)
+            xs_name = "x2 - x1" if self.internal else "x1 + x2"
+            here = self.x2 - self.x1 if self.internal else self.x1 + self.x2
+            label = (f"a_w of {xs_name} = housing a_w {float(housing_a_w):.10g} mm "
+                     + (f"(needs {xs_name} = {need:.6g}; here {here:.6g})" if math.isfinite(need)
                         else "(unreachable: housing a_w <= a cos alpha)"))
             extra += (_checks.CenterDistance(limit=float(housing_a_w), tol_mm=housing_tol_mm, label=label),)
         cs = _checks.make_checks(eps_alpha_min=eps_alpha_min, sa_min=sa_min, undercut=undercut,
-                                 interference=interference, jamming=jamming, extra=extra)
+                                 interference=interference, jamming=jamming, extra=extra,
+                                 eps_gamma_min=eps_gamma_min, internal=self.internal)
         # margin and ok first: a plain session shows the columns that fit its width, the label last
         table = _checks.evaluate(self._geo, cs)[["check", "margin", "ok", "value", "limit", "label"]]
         table["margin"] = table["margin"].where(table["margin"].abs() > _ZERO_MARGIN, 0.0)

@@ -90,10 +90,12 @@ class MinSpecificPressure(Objective):
         return (-geo["spec_pressure_pitch"],)
 
     def piece_gradients(self, geo):
-        # Γ ∝ 1/tan α_w depends on x1 + x2 only: ∂(−Γ)/∂x_j = Γ · 2 tan α / (z_Σ tan³α_w cos²α_w)
-        g = (geo["spec_pressure_pitch"] * 2.0 * geo["_ta"]
-             / ((geo["_z1"] + geo["_z2"]) * geo["_t_w"] ** 3 * geo["_cos_w"] ** 2))
-        return [(g, g)]
+        # Γ ∝ 1/tan α_w depends on x_Σ only: ∂(−Γ)/∂x_Σ = Γ · 2 tan α_n / (z_Σ tan³α_w cos²α_w), with
+        # x_Σ, z_Σ = x2 − x1, z2 − z1 for a ring pair (∂x_Σ/∂x1 = −1)
+        zs = geo["_z2"] - geo["_z1"] if geo["_sgn"] < 0 else geo["_z1"] + geo["_z2"]
+        g = (geo["spec_pressure_pitch"] * 2.0 * geo["_tn"]
+             / (zs * geo["_t_w"] ** 3 * geo["_cos_w"] ** 2))
+        return [(geo["_sgn"] * g, g)]
 
 
 class MaxMargin(Objective):

@@ -1,0 +1,133 @@
+"""The checks of helical and internal pairs: analytic gradients equal central differences of the
+margins (hypothesis, tests/strategies.kinds), the ring pair's check list, and the conditions each
+check restates, computed here from the geometry fields."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import assume, given
+
+import geardesign as gd
+from geardesign.gears.checks import make_checks
+from geardesign.gears.geometry import mesh_geometry
+from geardesign.shifts.objectives import OBJECTIVES
+
+from tests.strategies import SETTINGS, kinds
+
+
+def _fd(d, func, h=1e-6):
+    out = []
+    for dx in ((h, 0.0), (0.0, h)):
+        up = mesh_geometry(d["mesh"], d["m"], d["x1"] + dx[0], d["x2"] + dx[1])
+        dn = mesh_geometry(d["mesh"], d["m"], d["x1"] - dx[0], d["x2"] - dx[1])
+        out.append(float(func(up) - func(dn)) / (2.0 * h))
+    return out
+
+
+@SETTINGS
+@given(kinds())
+def test_check_gradients_match_central_differences(d):
+    g = d["geo"]
+    assume(abs(g.rho_l1) > 1e-4 * d["m"] and (d["internal"] or abs(g.rho_l2) > 1e-4 * d["m"]))
+    geo = mesh_geometry(d["mesh"], d["m"], d["x1"], d["x2"])
+    for check in make_checks(internal=d["internal"], eps_gamma_min=1.0 if d["face"] else None):
+        an = [float(v) for v in check.gradient(geo)]
+        fd = _fd(d, check.margin)
+        for j in (0, 1):
+            assert abs(an[j] - fd[j]) <= 1e-6 * max(1.0, abs(fd[j])), (check.name, j + 1, an[j], fd[j], d["internal"])
+
+
+@SETTINGS
+@given(kinds())
+def test_objective_gradients_match_central_differences(d):
+    g = d["geo"]
+    assume(min(abs(g.rho_p1), abs(g.rho_p2)) > 1e-3 * d["m"])
+    geo = mesh_geometry(d["mesh"], d["m"], d["x1"], d["x2"])
+    for name in ("min_specific_pressure", "max_eps_alpha", "balanced_sliding"):
+        obj = OBJECTIVES[name]
+        for k, grad in enumerate(obj.piece_gradients(geo)):
+            fd = _fd(d, lambda gg: obj.pieces(gg)[k])
+            for j in (0, 1):
+                assert abs(float(grad[j]) - fd[j]) <= 1e-6 * max(1.0, abs(fd[j])), (name, k, j, grad, fd)
+
+
+def test_ring_pair_check_list_and_what_each_restates():
+    """KHK's internal pair 16/24 (x 0/0.5): every check computed again from the geometry fields."""
+    pair = gd.pair_geometry(3, 16, 24, 0.0, 0.5, internal=True, tip_shortening=False)
+    geo = mesh_geometry(gd.Mesh(16, 24, internal=True, tip_shortening=False), 3.0, 0.0, 0.5)
+    checks = {c.name: c for c in make_checks(internal=True)}
+    assert list(checks) == ["undercut1", "interference1", "interference2", "ring_tip", "tip_thickness1",
+                            "tip_thickness2", "contact_ratio"]
+    m = 3.0
+    want = {
+        "undercut1": 0.0 - pair.x_min1,
+        "interference1": (pair.rho_p1 - max(pair.rho_l1, 0.0)) / m,
+        "interference2": (pair.rho_l2 - pair.rho_p2) / m,
+        "ring_tip": (pair.da2 - pair.db2) / 2 / m,
+        "tip_thickness1": pair.sa1 / m - 0.25, "tip_thickness2": pair.sa2 / m - 0.25,
+        "contact_ratio": pair.eps_alpha - 1.2,
+    }
+    for name, value in want.items():
+        assert float(checks[name].margin(geo)) == pytest.approx(value, rel=1e-12, abs=1e-14), name
+    # the ring's path of contact ends where the pinion's tip circle crosses N1N2: ρ_p2 = N1N2 + ρ_a1
+    n1n2 = pair.a_w * math.sin(math.radians(pair.alpha_w_deg))
+    assert pair.rho_p2 == pytest.approx(n1n2 + math.sqrt((pair.da1 / 2) ** 2 - (pair.db1 / 2) ** 2), rel=1e-13)
+
+
+def test_helical_tip_thickness_is_normal_and_eps_gamma_adds_eps_beta():
+    """s_an = s_at cos β_a with tan β_a = tan β d_a/d (ISO 21771 (54)-(55)), ε_γ = ε_α + b sin β/(π m_n)."""
+    g = gd.pair_geometry(3.5, 31, 30, 0.3, 0.35, beta_deg=21.0, face_width=50.0)
+    beta_a = math.atan(math.tan(math.radians(21.0)) * g.da1 / g.d1)
+    assert g.san1 == pytest.approx(g.sa1 * math.cos(beta_a), rel=1e-14)
+    assert g.eps_gamma == pytest.approx(g.eps_alpha + 50.0 * math.sin(math.radians(21.0)) / (math.pi * 3.5), rel=1e-14)
+    geo = mesh_geometry(gd.Mesh(31, 30, beta_deg=21.0, face_width_mm=50.0), 3.5, 0.3, 0.35)
+    tip = {c.name: c for c in make_checks(eps_gamma_min=2.5)}
+    assert float(tip["tip_thickness1"].margin(geo)) == pytest.approx(g.san1 / 3.5 - 0.25, rel=1e-13)
+    assert float(tip["total_contact_ratio"].margin(geo)) == pytest.approx(g.eps_gamma - 2.5, rel=1e-13)
+    assert math.isnan(gd.pair_geometry(3.5, 31, 30, 0.3, 0.35, beta_deg=21.0).eps_beta)
+
+
+def test_undercut_limit_of_a_helical_gear_is_the_exact_transverse_one():
+    """x_min = h_l* − z sin²α_t/(2 cos β); the virtual-gear rule h_l* − z_n sin²α_n/2 is close only
+    for small β (here within 2 % of z sin²α_n/2 at β = 15°)."""
+    z, beta = 14, 15.0
+    a_n = math.radians(20.0)
+    a_t = math.atan(math.tan(a_n) / math.cos(math.radians(beta)))
+    g = gd.pair_geometry(2.0, z, 40, 0.2, 0.0, beta_deg=beta)
+    assert g.x_min1 == pytest.approx(gd.BasicRack().h_limit - z * math.sin(a_t) ** 2 / (2 * math.cos(math.radians(beta))),
+                                     rel=1e-14)
+    virtual = gd.BasicRack().h_limit - g.z_n1 * math.sin(a_n) ** 2 / 2
+    assert abs(virtual - g.x_min1) < 0.02 * z * math.sin(a_n) ** 2 / 2
+
+
+@SETTINGS
+@given(kinds())
+def test_center_distance_round_trip(d):
+    """from_center_distance(a_w of the pair, x1) gives back x2, for both kinds (x_Σ = x2 − x1 for a ring)."""
+    g = d["geo"]
+    assume(g.g_alpha > 0)
+    p = gd.GearPair.from_center_distance(d["m"], d["z1"], d["z2"], g.a_w, x1=d["x1"], rack=d["rack"],
+                                         tip_shortening=d["ts"], beta_deg=d["beta"], internal=d["internal"],
+                                         face_width=d["face"])
+    zs = d["z2"] - d["z1"] if d["internal"] else d["z1"] + d["z2"]
+    assert abs(p.x2 - d["x2"]) <= 1e-11 * max(1.0, zs / 50), (p.x2, d["x2"])
+    assert abs(p.geometry().a_w - g.a_w) <= 1e-12 * g.a_w
+
+
+def test_pair_cli_takes_helical_and_internal(capsys):
+    import json
+
+    from geardesign.cli import main
+    assert main(["pair", "--module", "3", "--z1", "16", "--z2", "24", "--x2", "0.5", "--internal",
+                 "--no-tip-shortening", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["input"]["internal"] is True and round(out["geometry"]["a_w"], 4) == 13.1683
+    assert [c["check"] for c in out["checks"]][:4] == ["undercut1", "interference1", "interference2", "ring_tip"]
+    assert main(["pair", "--module", "3.5", "--z1", "31", "--z2", "30", "--beta", "21", "--center-distance",
+                 "116.5", "--face-width", "50", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert abs(out["geometry"]["a_w"] - 116.5) < 1e-9 and round(out["geometry"]["alpha_t_deg"], 10) == 21.2990642859
+    assert main(["pair", "--module", "3", "--z1", "20", "--z2", "30", "--beta", "50"]) == 2
+    assert "beta_deg must be in [0, 45]" in capsys.readouterr().err
