@@ -27,7 +27,7 @@ __version__ = "0.1.0"
 # public name -> module that defines it
 _NAMES = {
     "GearDesignError": "errors", "CatalogError": "errors",
-    "BasicRack": "gears.rack", "Mesh": "gears.mesh", "inv": "gears.involute", "inv_inverse": "gears.involute",
+    "BasicRack": "gears.rack", "Mesh": "gears.mesh", "ShaperCutter": "gears.ring", "inv": "gears.involute", "inv_inverse": "gears.involute",
     "Geometry": "gears.geometry", "GEOMETRY_FIELDS": "gears.geometry", "pair_geometry": "gears.geometry",
     "x_sum_from_center_distance": "gears.geometry", "make_checks": "gears.checks", "GearPair": "gears.pair",
     "optimize_shifts": "shifts.optimize", "ShiftResult": "shifts.result", "OBJECTIVES": "shifts.objectives",

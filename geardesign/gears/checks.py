@@ -19,6 +19,7 @@ and :class:`RingTip`; the pinion keeps undercut and interference at its root.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Callable
 
@@ -31,7 +32,8 @@ from ..validate import _show, one_number, require_bool, require_finite, require_
 
 __all__ = [
     "Check", "Undercut", "Interference", "TipThickness", "ContactRatio", "TotalContactRatio", "Jamming",
-    "RingInterference", "RingTip", "CenterDistance", "CustomCheck",
+    "RingInterference", "RingTip", "TipInterference", "RadialAssembly", "CutterTrimming", "ToothDifference",
+    "CenterDistance", "CustomCheck",
     "make_checks", "evaluate", "DEFAULT_EPS_ALPHA_MIN", "DEFAULT_SA_MIN", "EPS_ALPHA_MIN_RANGE", "SA_MIN_RANGE",
     "EPS_GAMMA_MIN_RANGE",
 ]
@@ -370,6 +372,112 @@ class Jamming(Check):
         return (d_n, d_o) if o == 2 else (d_o, d_n)
 
 
+def _cos_tip(geo: dict, gear: int):
+    """cos α_a of ``gear`` from tan α_a (r_b/r_a)."""
+    t = geo[f"_t_a{gear}"]
+    return 1.0 / (1.0 + t * t) ** 0.5
+
+
+@dataclass(frozen=True)
+class TipInterference(Check):
+    """No tip ("trochoid") interference of pinion and ring as teeth enter and leave mesh
+    (internal pairs; KHK §5.2 eq. (5-6)/(5-7), GOST 19274-73): margin in radians of ring rotation,
+    :func:`geardesign.gears.ring.trochoid_margin`. Gradient by central differences."""
+
+    needs_report_fields = False
+
+    def __post_init__(self):
+        object.__setattr__(self, "name", self.name or "tip_interference")
+        object.__setattr__(self, "label", self.label or "the tips of pinion and ring clear each other (trochoid)")
+
+    def value(self, geo):
+        return self.margin(geo)
+
+    def margin(self, geo):
+        from .ring import trochoid_margin
+        return trochoid_margin(geo["_z1"], geo["_z2"], geo["_ra1"], geo["_ra2"], geo["a_w"],
+                               geo["_inv_a1"], geo["_inv_a2"], geo["inv_alpha_w"])
+
+    def gradient(self, geo):
+        return None
+
+
+@dataclass(frozen=True)
+class RadialAssembly(Check):
+    """The pinion can be put into the ring radially (internal pairs; KHK §5.2 eq. (5-9)/(5-10), the
+    trimming condition at the operating centre distance): margin in radians of pinion rotation;
+    failing means the pinion goes in axially. Optional. Gradient by central differences."""
+
+    def __post_init__(self):
+        object.__setattr__(self, "name", self.name or "radial_assembly")
+        object.__setattr__(self, "label", self.label or "the pinion enters the ring radially (no trimming)")
+
+    def value(self, geo):
+        return self.margin(geo)
+
+    def margin(self, geo):
+        from .ring import trimming_margin
+        return trimming_margin(geo["_z1"], geo["_z2"], _cos_tip(geo, 1), _cos_tip(geo, 2), geo["_inv_a1"],
+                               geo["_inv_a2"], geo["inv_alpha_w"])
+
+    def gradient(self, geo):
+        return None
+
+
+@dataclass(frozen=True)
+class CutterTrimming(Check):
+    """The shaper cutter generates the ring without trimming its tips (internal pairs; KHK eq.
+    (5-9)/(5-10) with the cutter in place of the pinion, in the cutter–ring mesh at zero backlash;
+    KHK's Table 5-3a of the smallest ring per cutter follows from it). ``cutter``: a
+    :class:`~geardesign.gears.ring.ShaperCutter` (default: the standard-size one for the module).
+    Depends on the ring only; gradient by central differences."""
+
+    cutter: object = None
+
+    def __post_init__(self):
+        from .ring import ShaperCutter
+        if self.cutter is None:
+            object.__setattr__(self, "cutter", ShaperCutter())
+        elif not isinstance(self.cutter, ShaperCutter):
+            raise GearDesignError(f"cutter must be a geardesign.ShaperCutter, got {_show(self.cutter)}")
+        object.__setattr__(self, "name", self.name or "cutter_trimming")
+        object.__setattr__(self, "label", self.label or "the shaper cutter generates the ring without trimming")
+
+    def value(self, geo):
+        return self.margin(geo)
+
+    def margin(self, geo):
+        from .ring import cutting_mesh
+        at = math.atan(geo["_ta"]) if np.ndim(geo["_ta"]) == 0 else np.arctan(geo["_ta"])
+        cos_beta = geo["_m"] * geo["_z2"] / geo["d2"]
+        return cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], self.cutter, float(at),
+                            float(np.ravel(geo["_tn"])[0]), cos_beta)[4]
+
+    def gradient(self, geo):
+        return None
+
+
+@dataclass(frozen=True)
+class ToothDifference(Check):
+    """The smallest tooth difference z2 − z1 of an internal pair a designer or shop allows
+    (``limit``; KHK's rule for unshifted standard gears is "more than 9", recomputed in
+    docs/research/internal_helical.md §2(d)). The physical limits are the interference checks; this
+    one is the rule of thumb on top. Not differentiable in x: gradient 0."""
+
+    limit: float = 10.0
+
+    def __post_init__(self):
+        require_range("tooth_difference_min", self.limit, 1, 10_000)
+        object.__setattr__(self, "name", self.name or "tooth_difference")
+        object.__setattr__(self, "label", self.label or "z2 - z1 >= tooth_difference_min")
+
+    def value(self, geo):
+        return geo["_z2"] - geo["_z1"]
+
+    def gradient(self, geo):
+        return 0.0, 0.0
+
+
 @dataclass(frozen=True)
 class CenterDistance(Check):
     """The proposed shifts fit the housing: their own operating centre distance a_w (zero
@@ -442,19 +550,23 @@ class CustomCheck(Check):
 
 def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: float | None = DEFAULT_SA_MIN,
                 undercut: bool = True, interference: bool = True, jamming: bool = False,
-                extra=(), eps_gamma_min: float | None = None, internal: bool = False) -> tuple[Check, ...]:
+                extra=(), eps_gamma_min: float | None = None, internal: bool = False, cutter=None,
+                radial_assembly: bool = False, tooth_difference_min: float | None = None) -> tuple[Check, ...]:
     """The list of checks a case asks for (defaults: no undercut, no interference, s_a >= 0.25·m, ε_α >= 1.2).
 
     ``eps_alpha_min=None`` or ``sa_min=None`` drops that check; ``undercut=False`` allows
     undercut; ``eps_gamma_min`` adds the total contact ratio of a helical pair; ``extra`` adds
     :class:`Check` objects (e.g. a :class:`CustomCheck`). ``internal``: the checks of a ring pair —
-    undercut of the pinion only, the ring's :class:`RingInterference` and :class:`RingTip`, no
-    jamming rows (seed 000's test is for external pairs).
+    undercut of the pinion only, the ring's :class:`RingInterference` and :class:`RingTip`, the tips'
+    :class:`TipInterference`, the cutter's :class:`CutterTrimming` (``cutter``: a
+    :class:`~geardesign.gears.ring.ShaperCutter`, the standard size for the module by default), and
+    on request :class:`RadialAssembly` and :class:`ToothDifference`; no jamming rows (seed 000's
+    test is for external pairs).
 
     >>> [c.name for c in make_checks(sa_min=0.4, undercut=False)]
     ['interference1', 'interference2', 'tip_thickness1', 'tip_thickness2', 'contact_ratio']
-    >>> [c.name for c in make_checks(internal=True)]
-    ['undercut1', 'interference1', 'interference2', 'ring_tip', 'tip_thickness1', 'tip_thickness2', 'contact_ratio']
+    >>> [c.name for c in make_checks(internal=True)][:6]
+    ['undercut1', 'interference1', 'interference2', 'ring_tip', 'tip_interference', 'cutter_trimming']
     """
     for flag, value in (("undercut", undercut), ("interference", interference), ("jamming", jamming),
                         ("internal", internal)):
@@ -462,9 +574,17 @@ def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: flo
     out: list[Check] = []
     if undercut:
         out += [Undercut(gear=1)] if internal else [Undercut(gear=1), Undercut(gear=2)]
-    if interference:
-        out += [Interference(gear=1), RingInterference(), RingTip()] if internal else [Interference(gear=1),
-                                                                                       Interference(gear=2)]
+    for flag, value in (("radial_assembly", radial_assembly),):
+        require_bool(flag, value)
+    if interference and internal:
+        out += [Interference(gear=1), RingInterference(), RingTip(), TipInterference(), CutterTrimming(cutter=cutter)]
+    elif interference:
+        out += [Interference(gear=1), Interference(gear=2)]
+    if internal and radial_assembly:
+        out += [RadialAssembly()]
+    if internal and tooth_difference_min is not None:
+        out += [ToothDifference(limit=one_number("tooth_difference_min", require_range(
+            "tooth_difference_min", tooth_difference_min, 1, 10_000)))]
     if jamming and not internal:
         out += [Jamming(gear=1), Jamming(gear=2)]
     if sa_min is not None:

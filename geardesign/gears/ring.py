@@ -1,0 +1,122 @@
+"""Conditions of internal meshes that external pairs do not have: the tips of pinion and ring
+fouling each other as they enter and leave mesh, the pinion (or the cutter) unable to move in
+radially, and the pinion-type shaper cutter that generates a ring.
+
+Sources: SDP/SI–KHK, *Elements of Metric Gear Technology* (KHK Gear Technical Reference), §5.2,
+eq. (5-4)–(5-10), reproduced against KHK's Tables 5-3 and 5-4 in
+``docs/research/internal_helical.md``; the same trochoid condition in GOST 19274-73's textbook form
+z1(inv α_a1 + δ1) − z2(inv α_a2 + δ2) + (z2 − z1) inv α_w >= 0.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..validate import one_number, require_int, require_range
+from .involute import inv, tan_from_inv
+
+__all__ = ["ShaperCutter", "trochoid_margin", "trimming_margin", "cutting_mesh",
+           "CUTTER_DIAMETER_MM", "Z0_RANGE", "X0_RANGE", "HA0_RANGE"]
+
+# Disc shaper cutters come in nominal reference diameters of 75/80, 100, 125, 160 and 200 mm
+# (DIN 1825, GOST 9323-79); 100 mm is the common middle size. The cutter's tooth count for a module
+# is then about 100/m. The standards' own z0-per-module tables could not be checked here
+# (docs/research/internal_helical.md §3): the default is this stated assumption, not a table.
+CUTTER_DIAMETER_MM = 100.0
+# A ring too small for that cutter gets the largest cutter KHK's Table 5-3a admits for an
+# unshifted cutter and ring: z2 − z0 >= 18 (19 for z0 = 15).
+RING_MINUS_CUTTER_MIN = 18
+Z0_RANGE = (8, 400)
+X0_RANGE = (-1.0, 1.0)
+HA0_RANGE = (0.5, 2.0)
+
+
+@dataclass(frozen=True)
+class ShaperCutter:
+    """A pinion-type shaper cutter: ``z0`` teeth (None: see :meth:`teeth`), shift
+    ``x0`` (0 for a new cutter; regrinding lowers it) and addendum coefficient ``ha0`` (1.25 =
+    h_a* + c* of the standard rack, which KHK's Table 5-3a reproduces only with this value).
+    The cutter has the rack's pressure angle and module; its tip is taken sharp."""
+
+    z0: int | None = None
+    x0: float = 0.0
+    ha0: float = 1.25
+
+    def __post_init__(self):
+        if self.z0 is not None:
+            object.__setattr__(self, "z0", int(require_int("z0", self.z0, *Z0_RANGE)))
+        object.__setattr__(self, "x0", one_number("x0", require_range("x0", self.x0, *X0_RANGE)))
+        object.__setattr__(self, "ha0", one_number("ha0", require_range("ha0", self.ha0, *HA0_RANGE)))
+
+    def teeth(self, m_mm, z2):
+        """z0, or the default for module ``m_mm`` and a ring of ``z2`` teeth: the 100 mm cutter,
+        round(100/m), or for a ring too small for it the largest one with z2 − z0 >= 18 (at least 8).
+
+        >>> [int(c.teeth(4.0, z2)) for c, z2 in ((ShaperCutter(), 90), (ShaperCutter(), 30), (ShaperCutter(z0=30), 90))]
+        [25, 12, 30]
+        """
+        if self.z0 is not None:
+            return self.z0 + 0 * np.asarray(z2)
+        return np.maximum(Z0_RANGE[0], np.minimum(np.round(CUTTER_DIAMETER_MM / np.asarray(m_mm, dtype=float)),
+                                                  np.asarray(z2) - RING_MINUS_CUTTER_MIN)).astype(int)
+
+
+def trochoid_margin(z1, z2, r_a1, r_a2, a_w, inv_a1, inv_a2, inv_aw):
+    """Tip ("trochoid") interference of a pinion and a ring entering and leaving mesh, in radians
+    of ring rotation, >= 0 where the tips clear each other (KHK eq. (5-6), (5-7)):
+
+        [z1 (inv α_a1 + δ1) − z2 (inv α_a2 + δ2) + (z2 − z1) inv α_w] / z2,
+        cos δ1 = (r_a2² − r_a1² − a_w²)/(2 a_w r_a1),  cos δ2 = (r_a2² − r_a1² + a_w²)/(2 a_w r_a2)
+
+    (δ1, δ2: the angles at the centres to where the tip circles cross). Where they do not cross,
+    the tips never meet: δ is taken at the limit of its range.
+
+    >>> # KHK's internal pair 16/24, m 3, x 0/0.5 (r_a, a_w in mm; inv α_a1, inv α_a2, inv α_w)
+    >>> round(float(trochoid_margin(16, 24, 27.0, 34.5, 13.1682677, 0.0760958, 0.0026109, 0.0604007)), 4)
+    0.0401
+    """
+    c1 = np.clip((r_a2 * r_a2 - r_a1 * r_a1 - a_w * a_w) / (2.0 * a_w * r_a1), -1.0, 1.0)
+    c2 = np.clip((r_a2 * r_a2 - r_a1 * r_a1 + a_w * a_w) / (2.0 * a_w * r_a2), -1.0, 1.0)
+    return (z1 * (inv_a1 + np.arccos(c1)) - z2 * (inv_a2 + np.arccos(c2)) + (z2 - z1) * inv_aw) / z2
+
+
+def trimming_margin(z1, z2, cos_a1, cos_a2, inv_a1, inv_a2, inv_aw):
+    """Trimming interference of a pinion (or cutter) moved radially into a ring, >= 0 where it can
+    enter (KHK eq. (5-9), (5-10)), in radians of pinion rotation:
+
+        θ1 + inv α_a1 − inv α_w − (z2/z1)(θ2 + inv α_a2 − inv α_w),
+        θ1 = asin √[(1 − (cos α_a1/cos α_a2)²)/(1 − (z1/z2)²)],
+        θ2 = asin √[((cos α_a2/cos α_a1)² − 1)/((z2/z1)² − 1)].
+
+    Outside the arcsines' domain no radial path exists: NaN (a failing margin).
+    """
+    q = (cos_a1 / cos_a2) ** 2
+    s1 = (1.0 - q) / (1.0 - (z1 / z2) ** 2)
+    s2 = (1.0 / q - 1.0) / ((z2 / z1) ** 2 - 1.0)
+    ok = (s1 >= 0) & (s1 <= 1) & (s2 >= 0) & (s2 <= 1)
+    with np.errstate(invalid="ignore"):
+        t1 = np.arcsin(np.sqrt(np.where(ok, s1, np.nan)))
+        t2 = np.arcsin(np.sqrt(np.where(ok, s2, np.nan)))
+    return t1 + inv_a1 - inv_aw - z2 / z1 * (t2 + inv_a2 - inv_aw)
+
+
+def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n: float, cos_beta: float = 1.0):
+    """The cutter–ring mesh at zero backlash (GOST 19274-73; KHK §5.2): inv α_w0 = inv α_t +
+    2 (x2 − x0) tan α_n /(z2 − z0), a_w0 = m_t (z2 − z0) cos α_t /(2 cos α_w0). Returns
+    ``(z0, a_w0, r_a0, inv α_w0, trimming margin, root diameter d_f2 = 2 a_w0 + d_a0)``; NaN where
+    the cutter has as many teeth as the ring or more (it cannot cut it)."""
+    z0 = cutter.teeth(m_n, z2)
+    z0 = np.where(np.asarray(z2) > z0, z0, np.nan)
+    m_t = m_n / cos_beta
+    inv_w0 = inv(alpha_t) + 2.0 * (x2 - cutter.x0) * tan_n / (z2 - z0)
+    t_w0 = tan_from_inv(np.where(inv_w0 > 0, inv_w0, np.nan), validate=False)
+    cos_w0 = 1.0 / np.sqrt(1.0 + t_w0 * t_w0)
+    a_w0 = m_t * (z2 - z0) * math.cos(alpha_t) / (2.0 * cos_w0)
+    r_a0 = m_t * z0 / 2.0 + (cutter.ha0 + cutter.x0) * m_n
+    r_b0, r_b2 = m_t * z0 / 2.0 * math.cos(alpha_t), m_t * z2 / 2.0 * math.cos(alpha_t)
+    with np.errstate(invalid="ignore"):   # a ring tip inside its base circle: NaN, a failing margin
+        trim = trimming_margin(z0, z2, r_b0 / r_a0, r_b2 / r_a2, inv(np.arccos(r_b0 / r_a0)),
+                               inv(np.arccos(r_b2 / r_a2)), inv_w0)
+    return z0, a_w0, r_a0, inv_w0, trim, 2.0 * a_w0 + 2.0 * r_a0
