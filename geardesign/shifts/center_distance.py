@@ -1,8 +1,6 @@
 """A housing's centre distance on the shift plane: the a_w a pair can reach, and the x-sum it fixes."""
 from __future__ import annotations
 
-import math
-
 from ..errors import GearDesignError
 from ..gears.geometry import center_distance_from_x_sum, min_center_distance, x_sum_from_center_distance
 from ..gears.involute import inv
@@ -12,14 +10,29 @@ from .problem import DEFAULT_BOUNDS, Problem
 __all__ = ["reachable_center_distance", "x_sum_for_housing"]
 
 
-def reachable_center_distance(prob: Problem, bounds=DEFAULT_BOUNDS) -> tuple[float, float]:
-    """(a_w min, a_w max) in mm that x1 + x2 within ``bounds`` can give this pair: the x-sum
-    runs over [2 lo, 2 hi], and above the x-sum where inv α_w = 0 (a_w = a cos α)."""
+def _kind(prob: Problem) -> dict:
+    return dict(beta_deg=prob.mesh.beta_deg, internal=prob.mesh.internal)
+
+
+def x_sum_window(prob: Problem, bounds=DEFAULT_BOUNDS) -> tuple[float, float]:
+    """The x_Σ that x1, x2 within ``bounds`` reach: [2 lo, 2 hi] for x1 + x2, [lo − hi, hi − lo]
+    for a ring pair's x2 − x1."""
     lo, hi = bounds
-    xs_zero = -(prob.z1 + prob.z2) * inv(prob.rack.alpha) / (2.0 * math.tan(prob.rack.alpha))
-    a_cos = float(min_center_distance(prob.m, prob.z1, prob.z2, prob.rack))
-    a_lo = a_cos if 2 * lo <= xs_zero else center_distance_from_x_sum(prob.m, prob.z1, prob.z2, 2 * lo, prob.rack)
-    a_hi = center_distance_from_x_sum(prob.m, prob.z1, prob.z2, 2 * hi, prob.rack) if 2 * hi > xs_zero else a_cos
+    return (lo - hi, hi - lo) if prob.mesh.internal else (2 * lo, 2 * hi)
+
+
+def reachable_center_distance(prob: Problem, bounds=DEFAULT_BOUNDS) -> tuple[float, float]:
+    """(a_w min, a_w max) in mm that x_Σ within ``bounds`` can give this pair (see
+    :func:`x_sum_window`), above the x_Σ where inv α_w = 0 (a_w = a cos α_t)."""
+    xs_lo, xs_hi = x_sum_window(prob, bounds)
+    sc = prob.mesh.section
+    zs = prob.z2 - prob.z1 if prob.mesh.internal else prob.z1 + prob.z2
+    xs_zero = -zs * inv(sc.alpha_t) / (2.0 * sc.tan_n)
+    a_cos = float(min_center_distance(prob.m, prob.z1, prob.z2, prob.rack, **_kind(prob)))
+    a_lo = a_cos if xs_lo <= xs_zero else center_distance_from_x_sum(prob.m, prob.z1, prob.z2, xs_lo, prob.rack,
+                                                                     **_kind(prob))
+    a_hi = center_distance_from_x_sum(prob.m, prob.z1, prob.z2, xs_hi, prob.rack,
+                                      **_kind(prob)) if xs_hi > xs_zero else a_cos
     return float(a_lo), float(a_hi)
 
 
@@ -34,6 +47,7 @@ def x_sum_for_housing(prob: Problem, a_w, bounds=DEFAULT_BOUNDS) -> float:
     if not a_lo < a_w <= a_hi:
         raise GearDesignError(f"a_w (center distance) = {a_w:.10g} mm is out of reach: it must be in "
                               f"({a_lo:.8g}, {a_hi:.8g}] mm {where}")
-    x_sum = float(x_sum_from_center_distance(prob.m, prob.z1, prob.z2, a_w, prob.rack))
-    # the window holds x_sum/2 on both gears, so the fixed-sum line meets it
-    return min(max(x_sum, 2 * bounds[0]), 2 * bounds[1])
+    x_sum = float(x_sum_from_center_distance(prob.m, prob.z1, prob.z2, a_w, prob.rack, **_kind(prob)))
+    # inside its window the fixed-x_Σ line meets the square of x1, x2
+    xs_lo, xs_hi = x_sum_window(prob, bounds)
+    return min(max(x_sum, xs_lo), xs_hi)

@@ -55,7 +55,8 @@ def window_box(prob: Problem, bounds):
     """The box of the free variables: (lo, hi) arrays."""
     lo, hi = bounds
     if prob.nvar == 1:
-        return np.array([max(lo, prob.x_sum - hi)]), np.array([min(hi, prob.x_sum - lo)])
+        lo1, hi1 = prob.x1_on_line(lo, hi)
+        return np.array([lo1]), np.array([hi1])
     return np.array([lo, lo], dtype=float), np.array([hi, hi], dtype=float)
 
 

@@ -19,8 +19,7 @@ MAX_STARTS = 4
 def grid_points(prob: Problem, n: int, bounds) -> np.ndarray:
     lo, hi = bounds
     if prob.nvar == 1:
-        lo1 = max(lo, prob.x_sum - hi)
-        hi1 = min(hi, prob.x_sum - lo)
+        lo1, hi1 = prob.x1_on_line(lo, hi)
         return np.linspace(lo1, hi1, n)[:, None]
     return _square_grid(n, float(lo), float(hi))
 

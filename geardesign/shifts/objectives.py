@@ -47,13 +47,14 @@ class Objective:
 
 
 class MaxXSum(Objective):
-    name, sense, description, x_sum_only = "max_x_sum", +1, "largest x1 + x2 (largest α_w: contact strength)", True
+    name, sense, x_sum_only = "max_x_sum", +1, True
+    description = "largest x_Σ = x1 + x2 (x2 − x1 for a ring pair): the largest α_w, contact strength"
 
     def pieces(self, geo):
-        return (geo["_x1"] + geo["_x2"],)
+        return (geo["_x2"] + geo.get("_sgn", 1.0) * geo["_x1"],)
 
     def piece_gradients(self, geo):
-        return [(1.0, 1.0)]
+        return [(geo.get("_sgn", 1.0), 1.0)]
 
 
 class MaxEpsAlpha(Objective):

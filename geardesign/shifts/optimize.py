@@ -51,7 +51,8 @@ METHODS = tuple(DEFAULT_TOL)
 def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
                     tol: float | None = None, a_w: float | None = None, m: float | None = None, rack=None,
                     tip_shortening: bool = True, bounds=DEFAULT_BOUNDS, grid_n: int | None = None,
-                    start=None) -> ShiftResult:
+                    start=None, beta_deg: float = 0.0, internal: bool = False,
+                    face_width: float | None = None) -> ShiftResult:
     """The best profile shifts x1, x2 for tooth counts z1, z2 under the chosen checks.
 
     Parameters
@@ -68,13 +69,16 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
         ~1e-7 in x, dual sensitivities) or "exact" (active-set Newton, ~1e-12 in x; default).
     tol : tolerance in x (defaults: grid 0.01, convex 1e-7, exact 1e-9); every returned point
         satisfies the checks to within it.
-    a_w : operating centre distance of the housing, mm; needs ``m``. It fixes x1 + x2 and the
+    a_w : operating centre distance of the housing, mm; needs ``m``. It fixes x_Σ and the
         objective picks the split; an a_w the window cannot reach is refused with the reachable range.
     m : module, mm (scales a_w only; the shifts do not depend on it). Default 1 without ``a_w``.
     bounds : the window (lo, hi) searched for each of x1, x2.
     grid_n : nodes per axis of the grid method (default from ``tol``; at most GRID_N_MAX).
     start : a feasible (x1, x2) to start convex/exact from instead of their own coarse grid
         (the atlas passes the best node of its batched grid).
+    beta_deg, internal, face_width : a helical pair (normal module and shifts), an internal pair
+        (gear 2 a ring; its x_Σ, which a_w fixes and ``max_x_sum`` maximises, is x2 − x1), and the
+        face width for ε_β (see :class:`~geardesign.gears.mesh.Mesh`).
 
     >>> r = optimize_shifts(17, 26)          # seed 000's tooth counts: ε_α >= 1.2 caps x1 + x2
     >>> r.success, r.active, round(r.fun, 6)
@@ -89,7 +93,8 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
     bounds = validate_bounds(bounds)
     if grid_n is not None:
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
-    prob = Problem(Mesh(z1, z2, rack, tip_shortening), checks, objective, 1.0 if m is None else m)
+    prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width), checks, objective,
+                   1.0 if m is None else m)
     if prob.objective.kind == "margin" and not prob.checks:
         raise GearDesignError("objective 'max_margin' (the point farthest from every check's boundary) needs at "
                               "least one check, got checks=[]")
@@ -127,7 +132,8 @@ def _result(prob: Problem, out: Outcome, method: str, tol: float, a_w, t0: float
             f"check the rack and the window")
     message = out.message
     if prob.x_sum is not None:
-        message += f"; x1 + x2 = {prob.x_sum:.10g} fixed by a_w = {a_w:.10g} mm, objective {prob.objective.name}"
+        xs_name = "x2 - x1" if prob.mesh.internal else "x1 + x2"
+        message += f"; {xs_name} = {prob.x_sum:.10g} fixed by a_w = {a_w:.10g} mm, objective {prob.objective.name}"
     active = [k for k, v in mg.items() if abs(v) <= max(tol, 1e-9) * 10]
     return ShiftResult(
         x1=x1, x2=x2, fun=fun, objective=prob.objective.name, success=out.success, message=message,

@@ -26,7 +26,7 @@ class Problem:
     """The checks and the objective of one tooth pair, as vectorised functions of (x1, x2).
 
     With ``x_sum`` given (a fixed centre distance) the design has one free variable, x1,
-    and x2 = x_sum − x1.
+    and x2 = x_sum − x1 (x2 = x_sum + x1 for an internal pair, whose x_Σ is x2 − x1).
     """
 
     def __init__(self, mesh: Mesh, checks=None, objective="max_x_sum", m=1.0, x_sum=None):
@@ -36,7 +36,8 @@ class Problem:
             require_count(name, getattr(mesh, name), Z_MIN, Z_MAX)   # one pair: no arrays here
         self.mesh = mesh
         self.m = one_number("m (module)", require_module(m))
-        self.checks = _checks.resolve_checks(checks)
+        self.checks = _checks.resolve_checks(checks, internal=mesh.internal)
+        self.sgn = mesh.sign
         self.objective = resolve_objective(objective)
         # the report-only geometry fields are computed only when a check or the objective reads them
         self.full = self.objective.needs_report_fields or any(c.needs_report_fields for c in self.checks)
@@ -141,7 +142,13 @@ class Problem:
         V = np.atleast_2d(np.asarray(V, dtype=float))
         if self.x_sum is None:
             return V[:, 0], V[:, 1]
-        return V[:, 0], self.x_sum - V[:, 0]
+        return V[:, 0], self.x_sum - self.sgn * V[:, 0]
+
+    def x1_on_line(self, lo: float, hi: float) -> tuple[float, float]:
+        """The x1 interval where the fixed-x_Σ line stays inside the window [lo, hi]²."""
+        if self.sgn > 0:
+            return max(lo, self.x_sum - hi), min(hi, self.x_sum - lo)
+        return max(lo, lo - self.x_sum), min(hi, hi - self.x_sum)
 
     def evaluate(self, V, grads: bool = True):
         """Pieces (P, n) and margins (K, n) at points V (n, nvar), and with ``grads`` their
@@ -167,7 +174,7 @@ class Problem:
         """:meth:`evaluate` at one point v (nvar,) on the float path, for the local solvers:
         P (P,), M (parts,), GP (P, nvar), GM (parts, nvar). The margins come as the checks'
         smooth parts (:attr:`part_check` maps each to its check)."""
-        x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - float(v[0]))
+        x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - self.sgn * float(v[0]))
         _, (P, M, GP, GM) = self.evaluate_design(x1, x2, parts=True)
         return P, M, self._free(GP), self._free(GM)
 
@@ -203,8 +210,8 @@ class Problem:
         return P, M, GP, GM
 
     def _free(self, G):
-        """Gradients in (x1, x2) → in the free variables (d/dx1 along x2 = x_sum − x1)."""
-        return G if self.x_sum is None else (G[:, 0] - G[:, 1])[:, None]
+        """Gradients in (x1, x2) → in the free variables (d/dx1 along x2 = x_sum − sgn·x1)."""
+        return G if self.x_sum is None else (G[:, 0] - self.sgn * G[:, 1])[:, None]
 
 
 def _stack(values, like) -> np.ndarray:

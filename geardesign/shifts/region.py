@@ -163,27 +163,33 @@ class Region(Result):
         return ax
 
     def _plot_x_sum(self, ax, x_sum: float) -> list:
-        """The line x1 + x2 = x_sum across the window, its feasible part thick."""
+        """The line x_Σ = x_sum (x1 + x2, or x2 − x1 for a ring pair) across the window, its
+        feasible part thick."""
         import matplotlib.pyplot as plt
 
-        lo, hi = self.bounds
-        t = np.linspace(max(lo, x_sum - hi), min(hi, x_sum - lo), 2001)
+        prob = self.problem
+        prob_line = Problem(prob.mesh, prob.checks, "max_x_sum", prob.m, x_sum)
+        t = np.linspace(*prob_line.x1_on_line(*self.bounds), 2001)
         if t.size == 0 or t[0] > t[-1]:
             return []
-        inside = self.contains(t, x_sum - t)
-        prob = self.problem
-        a_w = float(center_distance_from_x_sum(prob.m, prob.z1, prob.z2, x_sum, prob.rack))
-        ax.plot(t, x_sum - t, color="k", lw=0.9, ls="--", zorder=3)
-        seg = np.where(inside, x_sum - t, np.nan)
+        x2 = x_sum - prob.sgn * t
+        inside = self.contains(t, x2)
+        a_w = float(center_distance_from_x_sum(prob.m, prob.z1, prob.z2, x_sum, prob.rack,
+                                               beta_deg=prob.mesh.beta_deg, internal=prob.mesh.internal))
+        ax.plot(t, x2, color="k", lw=0.9, ls="--", zorder=3)
+        seg = np.where(inside, x2, np.nan)
         ax.plot(t, seg, color="k", lw=3.2, solid_capstyle="butt", zorder=4)
+        xs_name = "x2 − x1" if prob.mesh.internal else "x1 + x2"
         return [plt.Line2D([], [], color="k", lw=0.9, ls="--",
-                           label=f"a_w = {a_w:.6g} mm (x1 + x2 = {x_sum:.4g})"),
+                           label=f"a_w = {a_w:.6g} mm ({xs_name} = {x_sum:.4g})"),
                 plt.Line2D([], [], color="k", lw=3.2, label="its feasible part")]
 
 
 CHECK_COLOURS = {
     "undercut": "tab:blue", "interference": "tab:red", "tip_thickness": "tab:orange",
     "contact_ratio": "tab:purple", "jamming": "tab:brown", "center_distance": "tab:cyan",
+    "ring_tip": "darkgreen", "tip_interference": "magenta", "cutter_trimming": "saddlebrown",
+    "total_contact_ratio": "indigo", "radial_assembly": "slategray", "tooth_difference": "black",
 }
 _CUSTOM_COLOURS = ("tab:olive", "tab:pink", "tab:gray", "darkgoldenrod", "teal")
 PLOT_N_MAX = 1201      # nodes per axis of a plot's curves: 1.4 M designs, ~1 s
@@ -261,7 +267,8 @@ NO_GEOMETRY = "no_geometry"   # edge where the pair stops existing (α_w -> 0, a
 
 def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: float | None = None,
                     m: float = 1.0, tip_shortening: bool = True, bounds=DEFAULT_BOUNDS,
-                    n: int | None = None) -> Region:
+                    n: int | None = None, beta_deg: float = 0.0, internal: bool = False,
+                    face_width: float | None = None) -> Region:
     """The region of (x1, x2) where every chosen check holds, with its labelled boundary.
 
     Parameters as :func:`geardesign.shifts.optimize.optimize_shifts`; ``method`` "grid" keeps the
@@ -284,7 +291,7 @@ def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: 
     if n is None:
         n = int(min(max(math.ceil((hi - lo) / tol) + 1, 41), 801)) if method == "grid" else 321
     n = require_count("n", n, 11, REGION_N_MAX)
-    prob = Problem(Mesh(z1, z2, rack, tip_shortening), checks, "max_x_sum", m)
+    prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width), checks, "max_x_sum", m)
     window = (lo, hi)
     box_used = (lo, hi, lo, hi)
     loops = _trace(prob, box_used, n, window, method)

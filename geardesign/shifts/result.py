@@ -80,7 +80,7 @@ class ShiftResult(Result):
         lines = [
             f"     message: {self.message}",
             f"     success: {self.success}",
-            f"       pairs: z1/z2 = {self.z1}/{self.z2}" + (f", x1 + x2 fixed at {self.x_sum_fixed:.10g}"
+            f"       pairs: z1/z2 = {self.z1}/{self.z2}" + (f", x_Σ fixed at {self.x_sum_fixed:.10g}"
                                                           if self.x_sum_fixed is not None else ""),
             f"      x1, x2: {self.x1:.10g}, {self.x2:.10g}",
             f"         fun: {self.fun:.10g}  ({self.objective})",

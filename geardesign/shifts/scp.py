@@ -61,7 +61,7 @@ def solve_convex(prob: Problem, v0, bounds, tol, maxit=100):
     problem, d, t, Pp, GPp, Mp, GMp, lo, hi, Lp, cons = _scp_problem(P.size, M.size, nv)
     blo, bhi = bounds
     if nv == 1:
-        box_lo, box_hi = np.array([max(blo, prob.x_sum - bhi)]), np.array([min(bhi, prob.x_sum - blo)])
+        box_lo, box_hi = (np.array([v]) for v in prob.x1_on_line(blo, bhi))
     else:
         box_lo, box_hi = np.array([blo, blo]), np.array([bhi, bhi])
     v = np.asarray(v0, dtype=float)

@@ -14,16 +14,16 @@ from geardesign.gears.geometry import mesh_geometry
 from geardesign.gears.mesh import Mesh
 
 
-def reference_optimum(z1, z2, fun, checks=None, sense=+1, lo=-1.5, hi=3.0, n=41, levels=34):
+def reference_optimum(z1, z2, fun, checks=None, sense=+1, lo=-1.5, hi=3.0, n=41, levels=34, mesh=None):
     """Nested zooming grids: for every x1 node, the best feasible x2 (inner zoom, all x1 nodes
     at once); then zoom in x1 around the best of those. The value of the inner problem is a
     smooth function of x1, so the outer zoom converges even when the optimum slides along a
     curved boundary (where a plain 2-D zoom stalls at ~√(grid step))."""
-    cs = ck.resolve_checks(checks)
-    rack = gd.BasicRack()
+    mesh = Mesh(z1, z2, gd.BasicRack(), True) if mesh is None else mesh
+    cs = ck.resolve_checks(checks, internal=mesh.internal)
 
     def scores(X1, X2):
-        geo = mesh_geometry(Mesh(z1, z2, rack, True), 1.0, X1, X2)
+        geo = mesh_geometry(mesh, 1.0, X1, X2)
         ok = np.ones(X1.shape, bool)
         for c in cs:
             ok &= np.nan_to_num(c.margin(geo), nan=-1.0) >= 0
