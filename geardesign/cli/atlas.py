@@ -8,7 +8,7 @@ from ..files import check_output_path, write_file_atomic
 from ..errors import GearDesignError
 from .options import add_output_file, add_solver_args
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
-from .pair import add_rack_args, rack_from_args
+from .pair import add_kind_args, add_rack_args, kind_from_args, rack_from_args
 from .shift import add_check_args, checks_from_args
 
 
@@ -33,6 +33,7 @@ def add_parser(sub):
     p.add_argument("--z2", required=True, help="LO:HI or a comma list, e.g. 10:120")
     add_solver_args(p, "max_x_sum")
     add_output_file(p, "--out", "CSV", "the table")
+    add_kind_args(p)
     add_rack_args(p)
     add_check_args(p)
     add_json_flag(p)
@@ -42,7 +43,7 @@ def add_parser(sub):
 def run(args) -> int:
     z1 = parse_range(args.z1, "--z1")
     z2 = parse_range(args.z2, "--z2")
-    n = atlas_size(z1, z2)
+    n = atlas_size(z1, z2, internal=args.internal)
     if n > ATLAS_PAIRS_MAX:
         raise GearDesignError(f"--z1 {args.z1} --z2 {args.z2} make {n:,} pairs; an atlas takes at most "
                               f"{ATLAS_PAIRS_MAX:,}")
@@ -50,7 +51,7 @@ def run(args) -> int:
         check_output_path(args.out, overwrite=args.overwrite, suffixes=(".csv",), what="--out")
     bar = Progress(n, "atlas")
     df = shift_atlas(z1, z2, objective=args.objective, checks=checks_from_args(args), method=args.method,
-                     rack=rack_from_args(args), progress=lambda k: bar.update(1))
+                     rack=rack_from_args(args), progress=lambda k: bar.update(1), **kind_from_args(args))
     bar.close()
     if args.out:
         write_file_atomic(args.out, lambda tmp: df.to_csv(tmp, index=False))

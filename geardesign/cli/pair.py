@@ -44,6 +44,12 @@ def add_pair_args(p) -> None:
                         "proposed shifts are kept and a center_distance check compares their a_w with A")
     p.add_argument("--no-tip-shortening", action="store_true",
                    help="keep d_a = d + 2(h_a* + x)m instead of shortening tips by dy*m")
+    add_kind_args(p)
+    add_rack_args(p)
+
+
+def add_kind_args(p) -> None:
+    """--beta, --internal, --face-width: the kind of pair (see geardesign.gears.mesh.Mesh)."""
     g = p.add_argument_group("helical and internal pairs")
     g.add_argument("--beta", type=float, default=0.0, metavar="DEG",
                    help="reference helix angle, degrees (0: spur); --module is then the normal module")
@@ -51,11 +57,18 @@ def add_pair_args(p) -> None:
                    help="gear 2 is a ring gear with z2 > z1 teeth (a positive x2 moves its flanks outward)")
     g.add_argument("--face-width", type=float, default=None, metavar="MM",
                    help="face width b, mm, for the overlap ratio eps_beta")
-    add_rack_args(p)
 
 
-def _kind(args) -> dict:
+def kind_from_args(args) -> dict:
     return dict(beta_deg=args.beta, internal=args.internal, face_width=args.face_width)
+
+
+def limits_from_args(args) -> dict:
+    """The check limits of add_limit_args as make_checks options."""
+    out = {"eps_alpha_min": args.eps_alpha_min, "sa_min": args.sa_min}
+    if args.eps_gamma_min is not None:
+        out["eps_gamma_min"] = args.eps_gamma_min
+    return out
 
 
 def pair_from_args(args) -> tuple[GearPair, float | None]:
@@ -63,14 +76,14 @@ def pair_from_args(args) -> tuple[GearPair, float | None]:
     rack = rack_from_args(args)
     shorten = not args.no_tip_shortening
     if args.center_distance is not None and args.x1 is not None and args.x2 is not None:
-        return GearPair(args.module, args.z1, args.z2, args.x1, args.x2, rack, shorten, **_kind(args)), args.center_distance
+        return GearPair(args.module, args.z1, args.z2, args.x1, args.x2, rack, shorten, **kind_from_args(args)), args.center_distance
     if args.center_distance is not None:
         if args.x2 is not None:
             raise GearDesignError("--x2 with --center-distance needs --x1 too (or give neither: the split "
                                   "then balances specific sliding)")
         return GearPair.from_center_distance(args.module, args.z1, args.z2, args.center_distance,
-                                             x1=args.x1, rack=rack, tip_shortening=shorten, **_kind(args)), None
-    return GearPair(args.module, args.z1, args.z2, args.x1 or 0.0, args.x2 or 0.0, rack, shorten, **_kind(args)), None
+                                             x1=args.x1, rack=rack, tip_shortening=shorten, **kind_from_args(args)), None
+    return GearPair(args.module, args.z1, args.z2, args.x1 or 0.0, args.x2 or 0.0, rack, shorten, **kind_from_args(args)), None
 
 
 def add_parser(sub):

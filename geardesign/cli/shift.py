@@ -6,7 +6,7 @@ from ..shifts.objectives import OBJECTIVES
 from ..shifts.optimize import DEFAULT_TOL, METHODS
 from .options import add_output_file
 from .output import add_json_flag, frame_records, print_frame, print_json
-from .pair import add_limit_args, add_rack_args, rack_from_args
+from .pair import add_kind_args, add_limit_args, add_rack_args, kind_from_args, limits_from_args, rack_from_args
 
 _METHOD_HELP = {
     "exact": "active-set Newton, x to ~1e-12 (default)",
@@ -22,8 +22,8 @@ def add_check_args(p) -> None:
 
 
 def checks_from_args(args) -> dict:
-    return {"eps_alpha_min": args.eps_alpha_min, "sa_min": args.sa_min,
-            "undercut": not args.allow_undercut, "interference": not args.allow_interference}
+    return {**limits_from_args(args), "undercut": not args.allow_undercut,
+            "interference": not args.allow_interference}
 
 
 def add_parser(sub):
@@ -46,6 +46,7 @@ def add_parser(sub):
     p.add_argument("--x1", type=float, default=None, help="a proposed x1 to check and mark (with --x2)")
     p.add_argument("--x2", type=float, default=None, help="a proposed x2 to check and mark (with --x1)")
     p.add_argument("--no-tip-shortening", action="store_true")
+    add_kind_args(p)
     add_output_file(p, "--plot", "PNG", "the blocking contour")
     add_rack_args(p)
     add_check_args(p)
@@ -66,17 +67,17 @@ def run(args) -> int:
     rack = rack_from_args(args)
     checks = checks_from_args(args)
     shorten = not args.no_tip_shortening
+    kind = kind_from_args(args)
     res = optimize_shifts(args.z1, args.z2, objective=args.objective, checks=checks, method=args.method,
                           tol=args.tol, a_w=args.center_distance, m=args.module, rack=rack,
-                          tip_shortening=shorten)
+                          tip_shortening=shorten, **kind)
     m = 1.0 if args.module is None else args.module
     proposed = None
     if args.x1 is not None:
-        pair = GearPair(m, args.z1, args.z2, args.x1, args.x2, rack, shorten)
-        proposed = pair.checks(eps_alpha_min=args.eps_alpha_min, sa_min=args.sa_min,
-                               undercut=not args.allow_undercut, interference=not args.allow_interference,
+        pair = GearPair(m, args.z1, args.z2, args.x1, args.x2, rack, shorten, **kind)
+        proposed = pair.checks(**limits_from_args(args), undercut=not args.allow_undercut, interference=not args.allow_interference,
                                jamming=False, housing_a_w=args.center_distance)
-    region = feasible_region(args.z1, args.z2, rack=rack, checks=checks, m=m, tip_shortening=shorten)
+    region = feasible_region(args.z1, args.z2, rack=rack, checks=checks, m=m, tip_shortening=shorten, **kind)
     if args.plot:
         _write_plot(region, res, proposed, args, write_file_atomic)
     if args.json:

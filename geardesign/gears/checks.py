@@ -285,14 +285,41 @@ class TotalContactRatio(Check):
         return ContactRatio().gradient(geo)
 
 
+def _cutter(cutter):
+    """The check's shaper cutter: the given one, or the default (standard size for the module)."""
+    from .ring import ShaperCutter
+    if cutter is None:
+        return ShaperCutter()
+    if not isinstance(cutter, ShaperCutter):
+        raise GearDesignError(f"cutter must be a geardesign.ShaperCutter, got {_show(cutter)}")
+    return cutter
+
+
+def _cutting_mesh(geo: dict, cutter):
+    """The cutter–ring mesh (:func:`geardesign.gears.ring.cutting_mesh`) of the ring in ``geo``."""
+    from .ring import cutting_mesh
+    at = math.atan(geo["_ta"]) if np.ndim(geo["_ta"]) == 0 else np.arctan(geo["_ta"])
+    cos_beta = geo["_m"] * geo["_z2"] / geo["d2"]
+    return cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], cutter, float(at),
+                        float(np.ravel(geo["_tn"])[0]), cos_beta)
+
+
 @dataclass(frozen=True)
 class RingInterference(Check):
     """No interference of the pinion's tip with the ring's root (internal pairs): the contact on the
-    ring ends at ρ_p2 = N1N2 + ρ_a1, which must stay inside the ring's generated involute, below its
-    form limit ρ_l2 near the root (GOST 19274-73, the ring's counterpart of the external
-    condition). Margin (ρ_l2 − ρ_p2)/m."""
+    ring ends at ρ_p2 = N1N2 + ρ_a1, which must stay on the involute the shaper ``cutter``
+    generated, below its form limit ρ_F2 = ρ_a0 + a_w0 sin α_w0 near the root (the ring's
+    counterpart of the external condition, GOST 19274-73; the form limit from the cutter–ring
+    mesh, :func:`geardesign.gears.ring.cutting_mesh`). Margin (ρ_F2 − ρ_p2)/m.
+
+    The geometry's ``rho_l2`` is the rack-equivalent limit (the cutter of infinite teeth, KHK's
+    d_f2 = d_a2 + 2h): a real shaper starts the ring's involute lower down the flank — on KHK's
+    16/24 pair with a 12-tooth cutter ρ_F2 is 3 mm below it — so the check uses the cutter."""
+
+    cutter: object = None
 
     def __post_init__(self):
+        object.__setattr__(self, "cutter", _cutter(self.cutter))
         object.__setattr__(self, "name", self.name or "interference2")
         object.__setattr__(self, "label", self.label or "no interference of gear 1's tip with the ring's root")
 
@@ -300,16 +327,16 @@ class RingInterference(Check):
         return geo["rho_p2"] / geo["_m"]
 
     def limit_value(self, geo):
-        return geo["rho_l2"] / geo["_m"]
+        return _cutting_mesh(geo, self.cutter).rho_form2 / geo["_m"]
 
     def margin(self, geo):
-        return (geo["rho_l2"] - geo["rho_p2"]) / geo["_m"]
+        return (_cutting_mesh(geo, self.cutter).rho_form2 - geo["rho_p2"]) / geo["_m"]
 
     def gradient(self, geo):
-        # ∂ρ_l2/∂x2 = m / sin α_t (the counter-rack's flank end moves out with x2)
+        # ρ_F2 depends on x2 alone, through α_w0 (:class:`~geardesign.gears.ring.CuttingMesh`)
         dp1, dp2 = _drho_p(geo, 2)
         m = geo["_m"]
-        return -dp1 / m, 1.0 / geo["_sa"] - dp2 / m
+        return -dp1 / m, (_cutting_mesh(geo, self.cutter).drho_form2_dx2 - dp2) / m
 
 
 @dataclass(frozen=True)
@@ -435,11 +462,7 @@ class CutterTrimming(Check):
     cutter: object = None
 
     def __post_init__(self):
-        from .ring import ShaperCutter
-        if self.cutter is None:
-            object.__setattr__(self, "cutter", ShaperCutter())
-        elif not isinstance(self.cutter, ShaperCutter):
-            raise GearDesignError(f"cutter must be a geardesign.ShaperCutter, got {_show(self.cutter)}")
+        object.__setattr__(self, "cutter", _cutter(self.cutter))
         object.__setattr__(self, "name", self.name or "cutter_trimming")
         object.__setattr__(self, "label", self.label or "the shaper cutter generates the ring without trimming")
 
@@ -447,11 +470,7 @@ class CutterTrimming(Check):
         return self.margin(geo)
 
     def margin(self, geo):
-        from .ring import cutting_mesh
-        at = math.atan(geo["_ta"]) if np.ndim(geo["_ta"]) == 0 else np.arctan(geo["_ta"])
-        cos_beta = geo["_m"] * geo["_z2"] / geo["d2"]
-        return cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], self.cutter, float(at),
-                            float(np.ravel(geo["_tn"])[0]), cos_beta)[4]
+        return _cutting_mesh(geo, self.cutter).trimming
 
     def gradient(self, geo):
         return None
@@ -577,7 +596,8 @@ def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: flo
     for flag, value in (("radial_assembly", radial_assembly),):
         require_bool(flag, value)
     if interference and internal:
-        out += [Interference(gear=1), RingInterference(), RingTip(), TipInterference(), CutterTrimming(cutter=cutter)]
+        out += [Interference(gear=1), RingInterference(cutter=cutter), RingTip(), TipInterference(),
+                CutterTrimming(cutter=cutter)]
     elif interference:
         out += [Interference(gear=1), Interference(gear=2)]
     if internal and radial_assembly:

@@ -60,6 +60,16 @@ def section_constants(alpha_n: float, beta: float) -> SectionConstants:
                             math.tan(alpha_t), cos_b, math.sin(beta), math.cos(beta_b), beta_b)
 
 
+def kind_text(beta_deg: float, internal: bool) -> str:
+    """The kind of pair in words, for titles: "" (external spur), " (internal, helical β = 12°)".
+
+    >>> kind_text(12.0, True)
+    ' (internal, helical β = 12°)'
+    """
+    words = (["internal"] if internal else []) + ([f"helical β = {beta_deg:g}°"] if beta_deg else [])
+    return f" ({', '.join(words)})" if words else ""
+
+
 @dataclass(frozen=True, eq=False)
 class Mesh:
     """Tooth counts ``z1``, ``z2`` (whole numbers in [Z_MIN, Z_MAX]; integer arrays for a batch of
@@ -135,6 +145,11 @@ class Mesh:
         signed tooth and shift sums of ISO 21771 (where an internal gear has z < 0 and the
         opposite sign of x)."""
         return -1 if self.internal else 1
+
+    @property
+    def kind_text(self) -> str:
+        """" (internal, helical β = 12°)" for the report titles; "" for an external spur pair."""
+        return kind_text(self.beta_deg, self.internal)
 
     @property
     def ratio(self):

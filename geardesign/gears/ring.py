@@ -11,13 +11,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
 from ..validate import one_number, require_int, require_range
 from .involute import inv, tan_from_inv
 
-__all__ = ["ShaperCutter", "trochoid_margin", "trimming_margin", "cutting_mesh",
+__all__ = ["ShaperCutter", "trochoid_margin", "trimming_margin", "cutting_mesh", "CuttingMesh",
            "CUTTER_DIAMETER_MM", "Z0_RANGE", "X0_RANGE", "HA0_RANGE"]
 
 # Disc shaper cutters come in nominal reference diameters of 75/80, 100, 125, 160 and 200 mm
@@ -102,21 +103,47 @@ def trimming_margin(z1, z2, cos_a1, cos_a2, inv_a1, inv_a2, inv_aw):
     return t1 + inv_a1 - inv_aw - z2 / z1 * (t2 + inv_a2 - inv_aw)
 
 
-def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n: float, cos_beta: float = 1.0):
+class CuttingMesh(NamedTuple):
+    """The cutter–ring mesh of :func:`cutting_mesh` (lengths in mm, arrays like the inputs)."""
+
+    z0: object          # the cutter's teeth
+    a_w0: object        # cutter–ring centre distance at zero backlash
+    r_a0: object        # the cutter's tip radius
+    inv_w0: object      # inv α_w0
+    trimming: object    # margin of :func:`trimming_margin`, rad
+    d_f2: object        # the ring's root diameter, 2 a_w0 + d_a0
+    rho_form2: object   # radius of curvature where the ring's involute starts (its form circle), mm
+    drho_form2_dx2: object   # ∂rho_form2/∂x2, mm
+
+
+def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n: float,
+                 cos_beta: float = 1.0) -> CuttingMesh:
     """The cutter–ring mesh at zero backlash (GOST 19274-73; KHK §5.2): inv α_w0 = inv α_t +
-    2 (x2 − x0) tan α_n /(z2 − z0), a_w0 = m_t (z2 − z0) cos α_t /(2 cos α_w0). Returns
-    ``(z0, a_w0, r_a0, inv α_w0, trimming margin, root diameter d_f2 = 2 a_w0 + d_a0)``; NaN where
-    the cutter has as many teeth as the ring or more (it cannot cut it)."""
+    2 (x2 − x0) tan α_n /(z2 − z0), a_w0 = m_t (z2 − z0) cos α_t /(2 cos α_w0); the ring's root
+    d_f2 = 2 a_w0 + d_a0, and its form limit: the cutter's tip generates the ring's involute down
+    to the point where the cutter's tip circle meets their line of action, so on the ring
+    ρ_F2 = ρ_a0 + a_w0 sin α_w0, ρ_a0 = √(r_a0² − r_b0²) (both centres on one side, as in
+    docs/research/internal_helical.md §1.4 and §3). NaN where the cutter has as many teeth as the
+    ring or more (it cannot cut it).
+
+    >>> c = cutting_mesh(3.0, 24, 0.0, 33.0, ShaperCutter(z0=12), math.radians(20), math.tan(math.radians(20)))
+    >>> round(float(c.d_f2), 6)               # x0 = x2 = 0: d2 + 2 (h_a* + c*) m
+    79.5
+    """
     z0 = cutter.teeth(m_n, z2)
     z0 = np.where(np.asarray(z2) > z0, z0, np.nan)
     m_t = m_n / cos_beta
     inv_w0 = inv(alpha_t) + 2.0 * (x2 - cutter.x0) * tan_n / (z2 - z0)
     t_w0 = tan_from_inv(np.where(inv_w0 > 0, inv_w0, np.nan), validate=False)
     cos_w0 = 1.0 / np.sqrt(1.0 + t_w0 * t_w0)
-    a_w0 = m_t * (z2 - z0) * math.cos(alpha_t) / (2.0 * cos_w0)
+    cos_t = math.cos(alpha_t)
+    a_w0 = m_t * (z2 - z0) * cos_t / (2.0 * cos_w0)
     r_a0 = m_t * z0 / 2.0 + (cutter.ha0 + cutter.x0) * m_n
-    r_b0, r_b2 = m_t * z0 / 2.0 * math.cos(alpha_t), m_t * z2 / 2.0 * math.cos(alpha_t)
+    r_b0, r_b2 = m_t * z0 / 2.0 * cos_t, m_t * z2 / 2.0 * cos_t
     with np.errstate(invalid="ignore"):   # a ring tip inside its base circle: NaN, a failing margin
         trim = trimming_margin(z0, z2, r_b0 / r_a0, r_b2 / r_a2, inv(np.arccos(r_b0 / r_a0)),
                                inv(np.arccos(r_b2 / r_a2)), inv_w0)
-    return z0, a_w0, r_a0, inv_w0, trim, 2.0 * a_w0 + 2.0 * r_a0
+    # a_w0 sin α_w0 = m_t (z2 − z0) cos α_t tan α_w0 / 2; d tan α_w0 / d inv α_w0 = (1 + t²)/t²
+    rho_form2 = np.sqrt((r_a0 - r_b0) * (r_a0 + r_b0)) + m_t * (z2 - z0) * cos_t * t_w0 / 2.0
+    drho = m_t * cos_t * tan_n * (1.0 + t_w0 * t_w0) / (t_w0 * t_w0)
+    return CuttingMesh(z0, a_w0, r_a0, inv_w0, trim, 2.0 * a_w0 + 2.0 * r_a0, rho_form2, drho)

@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from .mesh import pair_outlines
+from .mesh import require_pair, pair_outlines
 
 __all__ = ["plot_mesh", "plot_diagrams", "contact_points", "line_of_action_diagrams"]
 
@@ -43,7 +43,7 @@ def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60):
         _, ax = plt.subplots(figsize=(8.6, 7.4))
     a_w = float(geo["a_w"])
     (_, x1, y1), (_, x2, y2) = pair_outlines(pair, roll_deg, points)
-    view = (TEETH_SHOWN + 0.5) * math.pi * m        # half-width of the window around the pitch point
+    view = (TEETH_SHOWN + 0.5) * math.pi * float(geo["d1"]) / z1   # (π m_t) half-width of the window around the pitch point
     ax.fill(x1, y1, color="#c9d9ee", ec="#1f4e89", lw=1.0, label=f"gear 1 (z = {z1}, x = {pair.x1:.4g})")
     ax.fill(x2, y2, color="#f3d9c4", ec="#8a3b12", lw=1.0, label=f"gear 2 (z = {z2}, x = {pair.x2:.4g})")
 
@@ -74,8 +74,10 @@ def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60):
     ax.set_ylim(centre_y - 0.8 * view, centre_y + 0.8 * view)
     ax.set_aspect("equal")
     ax.set_xlabel("mm")
-    ax.set_title(f"m = {m:g} mm, z1/z2 = {z1}/{z2}, x1/x2 = {pair.x1:.4g}/{pair.x2:.4g}: "
-                 f"α_w = {float(geo['alpha_w_deg']):.4g}°, a_w = {a_w:.6g} mm, ε_α = {float(geo['eps_alpha']):.4g}",
+    section = " (transverse section)" if pair.mesh.beta_deg else ""
+    ax.set_title(f"m = {m:g} mm{pair.mesh.kind_text}{section}, z1/z2 = {z1}/{z2}, x1/x2 = {pair.x1:.4g}/{pair.x2:.4g}"
+                 + ("\n" if section else ": ")
+                 + f"α_w = {float(geo['alpha_w_deg']):.4g}°, a_w = {a_w:.6g} mm, ε_α = {float(geo['eps_alpha']):.4g}",
                  fontsize=10)
     ax.legend(loc="upper left", fontsize=7, framealpha=0.9)
     return ax
@@ -102,7 +104,7 @@ def plot_diagrams(pair, axes=None):
     pressure coefficient γ, with the active part A–E and its double-contact ends marked."""
     import matplotlib.pyplot as plt
 
-    d = line_of_action_diagrams(pair._geo)
+    d = line_of_action_diagrams(require_pair(pair)._geo)
     if axes is None:
         _, axes = plt.subplots(2, 1, figsize=(8.6, 6.4), sharex=True)
     ax1, ax2 = axes

@@ -26,7 +26,6 @@ directory moved into place, so a failed run leaves nothing behind.
 """
 from __future__ import annotations
 
-import math
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -60,6 +59,12 @@ def _rack(where, section, spec):
         where.fail(f"{section}.rack", None, str(exc))
 
 
+def scene_kind(section: dict) -> dict:
+    """The kind of pair of a validated [gear] or [teeth] section, as keyword arguments of the
+    library (beta_deg, internal, face_width)."""
+    return dict(beta_deg=section["beta_deg"], internal=section["internal"], face_width=section.get("face_width_mm"))
+
+
 def _cross_checks(where: Where, s: dict):
     """Rules between keys, and the checks the libraries would make later, made up front."""
     if "gear" in s:
@@ -70,17 +75,26 @@ def _cross_checks(where: Where, s: dict):
         if not lo < hi:
             where.fail("gear", "bounds", f"expected [lo, hi] with lo < hi, got {list(g['bounds'])}")
         g["_rack"] = _rack(where, "gear", g.get("rack"))
+        kind = scene_kind(g)
+        if kind["internal"] and g["mesh_drawing"]:
+            where.fail("gear", "mesh_drawing", "expected false for an internal pair: the meshing drawing is built "
+                                               "for external pairs only")
+        if kind["internal"] and not g["z2"] > g["z1"]:
+            where.fail("gear", "z2", f"expected a ring with more teeth than the pinion (z2 > z1 = {g['z1']}), "
+                                     f"got {g['z2']!r}")
         if "a_w" in g:
-            alpha = math.radians(g.get("rack", {}).get("alpha_deg", 20.0))
-            a = g["module"] * (g["z1"] + g["z2"]) / 2
-            if g["a_w"] <= a * math.cos(alpha):
-                where.fail("gear", "a_w", f"expected a centre distance > a·cos(alpha) = {a * math.cos(alpha):.6g} mm, "
+            from ..gears.geometry import min_center_distance
+            from ..gears.rack import BasicRack
+            a_cos = float(min_center_distance(g["module"], g["z1"], g["z2"], g["_rack"] or BasicRack(),
+                                              kind["beta_deg"], kind["internal"]))
+            if g["a_w"] <= a_cos:
+                where.fail("gear", "a_w", f"expected a centre distance > a·cos(alpha_t) = {a_cos:.6g} mm, "
                                           f"got {g['a_w']!r}")
         if "x1" in g:
             from ..gears.pair import GearPair
             try:
                 GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **({"rack": g["_rack"]} if g["_rack"] else {}),
-                         tip_shortening=g["tip_shortening"])
+                         tip_shortening=g["tip_shortening"], **kind)
             except GearDesignError as exc:
                 where.fail("gear", "x1/x2", f"expected a pair that can be built: {exc}")
     if "teeth" in s:

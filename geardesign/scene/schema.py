@@ -70,19 +70,26 @@ def _rack_schema() -> dict:
 
 
 def _checks_schema() -> dict:
-    from ..gears.checks import EPS_ALPHA_MIN_RANGE, SA_MIN_RANGE
+    from ..gears.checks import EPS_ALPHA_MIN_RANGE, EPS_GAMMA_MIN_RANGE, SA_MIN_RANGE
 
     return {"eps_alpha_min": _F(lo=EPS_ALPHA_MIN_RANGE[0], hi=EPS_ALPHA_MIN_RANGE[1]),
+            "eps_gamma_min": _F(lo=EPS_GAMMA_MIN_RANGE[0], hi=EPS_GAMMA_MIN_RANGE[1]),
             "sa_min": _F(lo=SA_MIN_RANGE[0], hi=SA_MIN_RANGE[1]), "undercut": _Key("bool"),
             "interference": _Key("bool"), "jamming": _Key("bool")}
 
 
 def _shift_keys() -> dict:
-    """Keys the [gear] and [teeth] sections share with optimize_shifts."""
+    """Keys the [gear] and [teeth] sections share with optimize_shifts: the solver, the checks,
+    the rack and the kind of pair (helical: ``module`` is the normal module; internal: gear 2 is
+    a ring with z2 > z1 teeth)."""
+    from ..gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM
     from ..shifts.objectives import OBJECTIVES
     from ..shifts.optimize import METHODS
 
-    return {"objective": _Key("choice", choices=tuple(OBJECTIVES)),   # default: max_x_sum, or balanced_sliding with a_w
+    return {"beta_deg": _F(default=0.0, lo=BETA_RANGE_DEG[0], hi=BETA_RANGE_DEG[1]),
+            "internal": _Key("bool", default=False),
+            "face_width_mm": _F(lo=FACE_WIDTH_RANGE_MM[0], hi=FACE_WIDTH_RANGE_MM[1], lo_open=True),
+            "objective": _Key("choice", choices=tuple(OBJECTIVES)),   # default: max_x_sum, or balanced_sliding with a_w
             "method": _Key("choice", default="exact", choices=METHODS),
             "checks": _checks_schema(), "rack": _rack_schema()}
 

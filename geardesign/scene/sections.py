@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..results import Result
-from .load import Scene
+from .load import Scene, scene_kind
 
 __all__ = ["SceneReport", "RUNNERS", "run_study", "base_from_scene", "chain_kwargs"]
 
@@ -60,19 +60,21 @@ def _checks_dict(spec: dict | None) -> dict | None:
 
 def _run_gear(rep: SceneReport, g: dict):
     plt = _pyplot()
+    from ..gears.mesh import kind_text
     from ..gears.pair import GearPair
     from ..shifts.region import feasible_region
     from ..shifts.optimize import optimize_shifts
 
     rack = g["_rack"]
     checks = _checks_dict(g.get("checks"))
-    kw = dict(checks=checks, rack=rack, tip_shortening=g["tip_shortening"], bounds=tuple(g["bounds"]))
+    kind = scene_kind(g)
+    kw = dict(checks=checks, rack=rack, tip_shortening=g["tip_shortening"], bounds=tuple(g["bounds"]), **kind)
     res = optimize_shifts(g["z1"], g["z2"], objective=g.get("objective"), method=g["method"], m=g["module"],
                           a_w=g.get("a_w"), **kw)
     reg = feasible_region(g["z1"], g["z2"], m=g["module"], **kw)
     rep.results["gear"] = {"optimum": res, "region": reg}
     md = rep.markdown
-    md += [f"## Gear pair z1/z2 = {g['z1']}/{g['z2']}, m = {g['module']:g} mm", ""]
+    md += [f"## Gear pair z1/z2 = {g['z1']}/{g['z2']}{kind_text(kind['beta_deg'], kind['internal'])}, m = {g['module']:g} mm", ""]
     limits = {k: v for k, v in (checks or {}).items()}
     md += [f"Checks: {', '.join(reg.checks)}" + (f" (limits: {', '.join(f'{k} = {v}' for k, v in limits.items())})"
                                                   if limits else " (default limits: ε_α >= 1.2, s_a >= 0.25 m)"), ""]
@@ -83,7 +85,7 @@ def _run_gear(rep: SceneReport, g: dict):
     import pandas as pd
 
     opt = pd.DataFrame([{"objective": res.objective, "method": res.method, "x1": res.x1, "x2": res.x2,
-                         "x_sum": res.x1 + res.x2, "fun": res.fun, "eps_alpha": res.eps_alpha,
+                         "x_sum": res.x_sum, "fun": res.fun, "eps_alpha": res.eps_alpha,
                          "a_w_mm": res.a_w, "active": ", ".join(res.active) or "-", "success": res.success}])
     rep.tables["gear_optimum"] = opt
     rep.tables["gear_optimum_checks"] = res.to_frame()
@@ -95,16 +97,16 @@ def _run_gear(rep: SceneReport, g: dict):
           f"x2 = {res.x2:.4f}, eps_alpha = {res.eps_alpha:.4f}, a_w = {res.a_w:.4f} mm, "
           f"active {', '.join(res.active) or '-'}; region area {reg.area:.4f}")
     rep.summary.append(sm if res.success else f"gear {g['z1']}/{g['z2']}: no feasible shifts: {res.message}")
-    geo_opt = GearPair(g["module"], g["z1"], g["z2"], res.x1, res.x2, **({"rack": rack} if rack else {}),
-                       tip_shortening=g["tip_shortening"]).geometry().to_frame()
+    pair_kw = dict(**({"rack": rack} if rack else {}), tip_shortening=g["tip_shortening"], **kind)
+    geo_opt = GearPair(g["module"], g["z1"], g["z2"], res.x1, res.x2, **pair_kw).geometry().to_frame()
     rep.tables["gear_optimum_geometry"] = geo_opt
     given = None
     if "x1" in g:
-        pair = GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **({"rack": rack} if rack else {}),
-                        tip_shortening=g["tip_shortening"])
+        pair = GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **pair_kw)
         lim = {k: v for k, v in (checks or {}).items()}
         # with a housing a_w as well, the given shifts are checked against it (center_distance)
-        chk = pair.checks(**{k: lim[k] for k in ("eps_alpha_min", "sa_min", "undercut", "interference") if k in lim},
+        chk = pair.checks(**{k: lim[k] for k in ("eps_alpha_min", "sa_min", "undercut", "interference",
+                                                 "eps_gamma_min") if k in lim},
                           jamming=lim.get("jamming", True), housing_a_w=g.get("a_w"))
         geo = pair.geometry().to_frame()
         rep.tables["gear_given_geometry"] = geo
@@ -125,7 +127,6 @@ def _run_gear(rep: SceneReport, g: dict):
     rep.figures["gear_region"] = fig
     md += ["![blocking contour](gear_region.png)", ""]
     if g["mesh_drawing"]:
-        pair_kw = dict(**({"rack": rack} if rack else {}), tip_shortening=g["tip_shortening"])
         drawn = [("optimum", res.x1, res.x2)] if res.success else []
         drawn += [("given", *given)] if given else []
         for tag, x1, x2 in drawn:
@@ -144,17 +145,19 @@ def _add_mesh_drawing(rep: SceneReport, pair, tag: str):
 
 
 def _run_teeth(rep: SceneReport, t: dict):
+    from ..gears.mesh import kind_text
     from ..shifts.teeth import select_teeth
 
     kw = dict(ratio=t["ratio"], ratio_tol=t["ratio_tol"], m=t.get("module"), a_w=t.get("a_w"),
               z1_range=tuple(t["z1_range"]), z_sum_max=t.get("z_sum_max"), objective=t.get("objective"),
-              checks=_checks_dict(t.get("checks")), rack=t["_rack"], method=t["method"])
+              checks=_checks_dict(t.get("checks")), rack=t["_rack"], method=t["method"], **scene_kind(t))
     sel = select_teeth(**kw)
     rep.results["teeth"] = sel
     rep.tables["teeth"] = sel.table
     cols = [c for c in ("rank", "z1", "z2", "ratio", "ratio_error", "module_mm", "a_w_mm", "x1", "x2", "eps_alpha",
                         "objective", "feasible", "reason") if c in sel.table.columns]
-    rep.markdown += [f"## Tooth counts for u = {t['ratio']:g} (± {100 * t['ratio_tol']:g} %)", "", sel.choice, "",
+    rep.markdown += [f"## Tooth counts for u = {t['ratio']:g} (± {100 * t['ratio_tol']:g} %)"
+                     f"{kind_text(t['beta_deg'], t['internal'])}", "", sel.choice, "",
                      _md_table(sel.table[cols].head(t["top"])), ""]
     b = sel.best
     rep.summary.append("teeth: " + (f"z1/z2 = {int(b['z1'])}/{int(b['z2'])}, x1 = {b['x1']:.4f}, x2 = {b['x2']:.4f}"
@@ -267,6 +270,7 @@ def base_from_scene(target: str, section: dict) -> dict:
     """The keyword arguments of :func:`geardesign.sensitivity.studies.sweep` for a validated section."""
     if target == "gear":
         out = {k: section[k] for k in ("z1", "z2", "objective", "method", "tip_shortening") if k in section}
+        out.update(scene_kind(section))
         out.update(m=section["module"], checks=dict(section.get("checks") or {}) or None,
                    rack=section.get("_rack"), bounds=tuple(section["bounds"]), a_w=section.get("a_w"))
         return out

@@ -59,7 +59,7 @@ def _rack_with(rack, **changes):
 
 def _gear_row(res, params: dict) -> dict:
     row = dict(params)
-    row.update(x1=res.x1, x2=res.x2, x_sum=res.x1 + res.x2, fun=res.fun, eps_alpha=res.eps_alpha, a_w_mm=res.a_w,
+    row.update(x1=res.x1, x2=res.x2, x_sum=res.x_sum, fun=res.fun, eps_alpha=res.eps_alpha, a_w_mm=res.a_w,
                success=bool(res.success), active=",".join(res.active))
     row.update({f"margin_{k}": v for k, v in res.margins.items()})
     row.update({f"sens_{k}": res.sensitivity.get(k, 0.0) for k in res.margins})
@@ -96,15 +96,19 @@ def _gear_sweep(points: list[dict], base: dict) -> pd.DataFrame:
         from ..shifts.atlas import shift_atlas
         z1s = sorted({int(p["z1"] if "z1" in p else base["z1"]) for p in points})
         z2s = sorted({int(p["z2"] if "z2" in p else base["z2"]) for p in points})
+        kind = {k: base[k] for k in ("beta_deg", "internal", "face_width") if k in base}
         kw = {k: base[k] for k in ("objective", "checks", "method", "rack", "tip_shortening", "bounds") if k in base}
-        at = shift_atlas(z1s, z2s, upper_only=False, **kw)
-        at = at.rename(columns={"objective": "fun"}).assign(x_sum=lambda d: d["x1"] + d["x2"])
+        m = float(base.get("m", 1.0))
+        # the atlas works per unit module: its face width is b/m
+        fw = None if kind.get("face_width") is None else kind["face_width"] / m
+        at = shift_atlas(z1s, z2s, upper_only=False, **kw, **{**kind, "face_width": fw})
+        sgn = -1.0 if kind.get("internal") else 1.0
+        at = at.rename(columns={"objective": "fun"}).assign(x_sum=lambda d: d["x2"] + sgn * d["x1"])
         at["success"] = at.pop("feasible")
         # a_w at the optimum for the module of the case
         from ..gears.geometry import pair_geometry
-        m = float(base.get("m", 1.0))
         geo = pair_geometry(m, at["z1"].to_numpy(), at["z2"].to_numpy(), at["x1"].to_numpy(), at["x2"].to_numpy(),
-                            **({"rack": base["rack"]} if base.get("rack") is not None else {}))
+                            **({"rack": base["rack"]} if base.get("rack") is not None else {}), **kind)
         at["a_w_mm"] = np.where(at["success"], geo.a_w, np.nan)
         keys = pd.DataFrame(points).astype(int)
         full = keys.assign(**{k: base[k] for k in TOOTH_PARAMETERS if k not in keys.columns})
@@ -218,8 +222,9 @@ def sweep(parameter: str, values, parameter2: str | None = None, values2=None, *
     return _chain_sweep(points, base)
 
 
-def local_sensitivities(z1, z2, objective="max_x_sum", checks=None, rack=None, step=0.02, m=1.0, a_w=None,
-                        method=None, tip_shortening=True, bounds=None) -> pd.DataFrame:
+def local_sensitivities(z1, z2, objective=None, checks=None, rack=None, step=0.02, m=1.0, a_w=None,
+                        method=None, tip_shortening=True, bounds=None, beta_deg: float = 0.0,
+                        internal: bool = False, face_width: float | None = None) -> pd.DataFrame:
     """d(fun)/d(input) at the optimum of one pair, for every limit and rack parameter.
 
     For each input the optimum is re-solved (method "exact") with the input moved by
@@ -229,7 +234,8 @@ def local_sensitivities(z1, z2, objective="max_x_sum", checks=None, rack=None, s
     (a scene passes its own).
     """
     from ..shifts.optimize import optimize_shifts
-    kw = dict(objective=objective, m=m, a_w=a_w, tip_shortening=tip_shortening)
+    kw = dict(objective=objective, m=m, a_w=a_w, tip_shortening=tip_shortening, beta_deg=beta_deg,
+              internal=internal, face_width=face_width)
     if bounds is not None:
         kw["bounds"] = tuple(bounds)
     limits = dict(_DEFAULT_LIMITS if checks is None else checks)
@@ -261,7 +267,7 @@ def local_sensitivities(z1, z2, objective="max_x_sum", checks=None, rack=None, s
             row["slope_kkt"] = np.nan
         rows.append(row)
     out = pd.DataFrame(rows)
-    out.attrs.update(objective=objective, x1=exact.x1, x2=exact.x2, active=list(exact.active))
+    out.attrs.update(objective=exact.objective, x1=exact.x1, x2=exact.x2, active=list(exact.active))
     return out
 
 

@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 
 from ..errors import GearDesignError
-from ..validate import ndim, require_int
+from ..validate import ndim, require_bool, require_int
 from ..gears.geometry import mesh_geometry
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from .problem import DEFAULT_BOUNDS, Problem
@@ -36,25 +36,29 @@ def _values(name, values) -> np.ndarray:
     return np.atleast_1d(require_int(name, list(values), Z_MIN, Z_MAX)).ravel()
 
 
-def atlas_size(z1_values, z2_values, upper_only: bool = True) -> int:
-    """How many pairs an atlas of these tooth counts holds (checked before any work)."""
+def atlas_size(z1_values, z2_values, upper_only: bool = True, internal: bool = False) -> int:
+    """How many pairs an atlas of these tooth counts holds (checked before any work). An
+    internal pair needs a ring larger than its pinion: z2 > z1 always."""
     z1, z2 = np.sort(_values("z1_values", z1_values)), _values("z2_values", z2_values)
+    if internal:
+        return int(np.searchsorted(z1, z2, side="left").sum())
     if not upper_only:
         return int(z1.size * z2.size)
     return int(np.searchsorted(z1, z2, side="right").sum())
 
 
-def _pairs(z1_values, z2_values, upper_only):
-    n = atlas_size(z1_values, z2_values, upper_only)
+def _pairs(z1_values, z2_values, upper_only, internal):
+    n = atlas_size(z1_values, z2_values, upper_only, internal)
     if n > ATLAS_PAIRS_MAX:
         raise GearDesignError(f"an atlas takes at most {ATLAS_PAIRS_MAX:,} pairs, these tooth counts make {n:,}")
     z1, z2 = _values("z1_values", z1_values), _values("z2_values", z2_values)
     Z1, Z2 = np.meshgrid(z1, z2, indexing="ij")
     Z1, Z2 = Z1.ravel(), Z2.ravel()
-    keep = Z2 >= Z1 if upper_only else np.ones(Z1.shape, bool)
+    keep = Z2 > Z1 if internal else (Z2 >= Z1 if upper_only else np.ones(Z1.shape, bool))
     return Z1[keep], Z2[keep]
 
 
+@np.errstate(all="ignore")   # diverging candidates give NaN and inf: they are discarded at the end
 def _batched_kkt(proto: Problem, Z1, Z2, start, iters: int = 10):
     """Every KKT candidate of every pair at once, for one-piece (smooth) objectives.
 
@@ -89,8 +93,7 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, iters: int = 10):
 
     for _ in range(iters):
         x1, x2 = X[:, 0], X[:, 1]
-        with np.errstate(all="ignore"):
-            geo, M, G = grads_at(x1, x2)
+        geo, M, G = grads_at(x1, x2)
         ma, ga = M[a_idx, rows], G[a_idx, :, rows]
         mb, gb = M[b_idx, rows], G[b_idx, :, rows]
         gp = pgrad(geo).T                               # (n, 2)
@@ -114,9 +117,13 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, iters: int = 10):
             d1 = np.where(ok, (ma * j2[:, 1] - r2 * ga[:, 1]) / sdet, 0.0)
             d2 = np.where(ok, (r2 * ga[:, 0] - ma * j2[:, 0]) / sdet, 0.0)
         X = X - np.clip(np.column_stack([d1, d2]), -0.2, 0.2)
+    geo, M, G = grads_at(X[:, 0], X[:, 1])
+    return _best_candidate(proto, geo, M, G, pgrad(geo).T, X, a_idx, b_idx, is_v, rows, B, C)
+
+
+def _best_candidate(proto, geo, M, G, gp, X, a_idx, b_idx, is_v, rows, B, C):
+    """Each pair's best converged, feasible KKT candidate (NaN where none)."""
     x1, x2 = X[:, 0], X[:, 1]
-    geo, M, G = grads_at(x1, x2)
-    gp = pgrad(geo).T
     ma, mb = M[a_idx, rows], M[b_idx, rows]
     ga, gb = G[a_idx, :, rows], G[b_idx, :, rows]
     cross = gp[:, 0] * ga[:, 1] - gp[:, 1] * ga[:, 0]
@@ -171,24 +178,31 @@ def _row_at(proto: Problem, z1, z2, x, area) -> dict:
 
 def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None, method: str = "exact",
                 tol: float | None = None, rack=None, tip_shortening: bool = True, bounds=DEFAULT_BOUNDS,
-                upper_only: bool = True, progress=None) -> pd.DataFrame:
+                upper_only: bool = True, progress=None, beta_deg: float = 0.0, internal: bool = False,
+                face_width: float | None = None) -> pd.DataFrame:
     """One row per tooth pair: feasible, x1, x2, objective, all margins, active checks, region area.
 
     The first pass is batched: every pair's margins on a 41×41 grid of (x1, x2) in one
     vectorised call per chunk of pairs. It gives the region area (traced on that grid
     from the zero contour of the smallest margin) and each pair's best node, from which ``method`` then polishes
-    the optimum (``grid`` keeps the node). ``upper_only`` keeps z2 >= z1. ``progress`` is
-    called with the number of pairs done.
+    the optimum (``grid`` keeps the node). ``upper_only`` keeps z2 >= z1 (an internal pair
+    always needs z2 > z1). ``progress`` is called with the number of pairs done.
+    ``beta_deg``, ``internal``, ``face_width``: the kind of every pair, as for
+    :class:`~geardesign.gears.mesh.Mesh`; lengths are per unit module (m = 1), so ``face_width``
+    is b/m here.
 
     >>> df = shift_atlas([17], [26, 40])
     >>> list(df.columns[:6]), bool(df.feasible.all())
     (['z1', 'z2', 'feasible', 'x1', 'x2', 'objective'], True)
     """
     t0 = time.perf_counter()
-    Z1, Z2 = _pairs(z1_values, z2_values, upper_only)
+    internal = require_bool("internal", internal)
+    Z1, Z2 = _pairs(z1_values, z2_values, upper_only, internal)
     if Z1.size == 0:
-        raise GearDesignError("shift_atlas: no (z1, z2) pair to solve (with upper_only, z2 must be >= z1)")
-    proto = Problem(Mesh(int(Z1[0]), int(Z2[0]), rack, tip_shortening), checks, objective, 1.0)
+        raise GearDesignError("shift_atlas: no (z1, z2) pair to solve (with upper_only, z2 must be >= z1; "
+                              "internal pairs need z2 > z1)")
+    proto = Problem(Mesh(int(Z1[0]), int(Z2[0]), rack, tip_shortening, beta_deg, internal, face_width), checks,
+                    objective, 1.0)
     rack = proto.rack
     lo, hi = bounds
     g = np.linspace(lo, hi, _ATLAS_N)
@@ -200,7 +214,8 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     for s in range(0, Z1.size, chunk):
         z1c, z2c = Z1[s:s + chunk, None], Z2[s:s + chunk, None]
         geo = mesh_geometry(proto.mesh.unchecked(z1c, z2c), 1.0, X1[None, :], X2[None, :], proto.full)
-        M = proto.margins(geo)
+        with np.errstate(all="ignore"):   # nodes where a gear does not exist: margin NaN → −inf
+            M = proto.margins(geo)
         feas = (M >= 0).all(axis=0) if M.size else np.ones(geo["a"].shape, bool)
         P = proto.pieces(geo).min(axis=0) if proto.objective.kind != "margin" else M.min(axis=0)
         score = np.where(feas, P, -np.inf)
@@ -229,7 +244,8 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
                 progress(k + 1)
             continue
         r = optimize_shifts(z1, z2, objective=objective, checks=checks, method=method, tol=tol, rack=rack,
-                            tip_shortening=tip_shortening, bounds=bounds, start=st,
+                            tip_shortening=tip_shortening, bounds=bounds, start=st, beta_deg=beta_deg,
+                            internal=internal, face_width=face_width,
                             grid_n=_ATLAS_N if method == "grid" else None)
         row = {"z1": z1, "z2": z2, "feasible": r.success, "x1": r.x1, "x2": r.x2, "objective": r.fun,
                "eps_alpha": r.eps_alpha, "area": area[k], "area_error": area_error[k],

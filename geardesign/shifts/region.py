@@ -156,7 +156,8 @@ class Region(Result):
         ax.set_ylim(lo, hi)
         ax.set_xlabel("x1 (profile shift, gear 1)", fontsize=10)
         ax.set_ylabel("x2 (profile shift, gear 2)", fontsize=10)
-        ax.set_title(f"Blocking contour z1/z2 = {self.z1}/{self.z2} (ticks: forbidden side)", fontsize=11)
+        ax.set_title(f"Blocking contour z1/z2 = {self.z1}/{self.z2}{self.problem.mesh.kind_text} "
+                     "(ticks: forbidden side)", fontsize=11)
         ax.grid(True, lw=0.3, alpha=0.6)
         ax.set_aspect("equal")
         ax.legend(handles=handles, fontsize=8.5, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..gears.mesh import kind_text
 from ..results import Result
 
 __all__ = ["ShiftResult", "Outcome", "ACCURACY"]
@@ -50,10 +51,17 @@ class ShiftResult(Result):
     eps_alpha: float = math.nan
     sensitivity_sides: dict = field(default_factory=dict)
     accuracy: str = ""
+    beta_deg: float = 0.0
+    internal: bool = False
 
     @property
     def x(self) -> np.ndarray:
         return np.array([self.x1, self.x2])
+
+    @property
+    def x_sum(self) -> float:
+        """x_Σ: x1 + x2, or x2 − x1 for an internal pair (what a_w fixes)."""
+        return self.x2 - self.x1 if self.internal else self.x1 + self.x2
 
     def to_frame(self):
         """One row per check: margin, active, sensitivity (d fun / d limit; at a corner where it
@@ -80,8 +88,8 @@ class ShiftResult(Result):
         lines = [
             f"     message: {self.message}",
             f"     success: {self.success}",
-            f"       pairs: z1/z2 = {self.z1}/{self.z2}" + (f", x_Σ fixed at {self.x_sum_fixed:.10g}"
-                                                          if self.x_sum_fixed is not None else ""),
+            f"       pairs: z1/z2 = {self.z1}/{self.z2}" + kind_text(self.beta_deg, self.internal)
+            + (f", x_Σ fixed at {self.x_sum_fixed:.10g}" if self.x_sum_fixed is not None else ""),
             f"      x1, x2: {self.x1:.10g}, {self.x2:.10g}",
             f"         fun: {self.fun:.10g}  ({self.objective})",
             f"   eps_alpha: {self.eps_alpha:.6g}   a_w: {self.a_w:.6g} mm (m = {self.m:g})",

@@ -33,8 +33,8 @@ from ..results import Result, plain
 from ..gears.checks import resolve_checks
 from ..errors import GearDesignError
 from ..validate import one_number, require_count, require_positive, require_range
-from ..gears.geometry import x_sum_from_center_distance
-from ..gears.mesh import Z_MAX, Z_MIN
+from ..gears.geometry import min_center_distance, x_sum_from_center_distance
+from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from .objectives import default_objective
 from .problem import DEFAULT_BOUNDS
 from ..gears.rack import BasicRack
@@ -212,7 +212,8 @@ def _standard_center_distance(a):
 
 def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_sum_max=None,
                  objective=None, checks=None, rack=None, method="exact", *, m_range=None,
-                 x_sum_window=X_SUM_WINDOW, tip_shortening=True, progress=None) -> TeethSelection:
+                 x_sum_window=X_SUM_WINDOW, tip_shortening=True, progress=None, beta_deg: float = 0.0,
+                 internal: bool = False, face_width: float | None = None) -> TeethSelection:
     """Tooth counts z1/z2 for a gear ratio u = z2/z1, with the best profile shifts for each, ranked.
 
     Parameters
@@ -241,6 +242,10 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     method : "grid", "convex" or "exact" (see :mod:`geardesign.shifts.optimize`).
     x_sum_window : (lo, hi) of x1 + x2 worth solving when a_w fixes it.
     progress : optional callable(done, total) called after each solve.
+    beta_deg, internal, face_width : helical (``m`` the normal module), internal (z2 the ring,
+        u = z2/z1, x_Σ = x2 − x1, a = m (z2 − z1)/2) and the face width in mm for ε_β, as for
+        :class:`~geardesign.gears.mesh.Mesh`. With a face width each (pair, module) is solved
+        on its own: ε_β = b sin β/(π m) depends on the module.
 
     Returns
     -------
@@ -262,15 +267,18 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     rack = rack or BasicRack()
     if not isinstance(rack, BasicRack):
         raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
-    check_names = [c.name for c in resolve_checks(checks)]
+    # the kind is validated once, on a proto mesh; every candidate shares it
+    kind = Mesh(20, 60, rack, tip_shortening, beta_deg, internal, face_width)
+    kind = dict(beta_deg=kind.beta_deg, internal=kind.internal, face_width=kind.face_width_mm)
+    check_names = [c.name for c in resolve_checks(checks, internal=kind["internal"])]
     z1, z2 = ratio_pairs(ratio, ratio_tol, z1_range, z_sum_max)
     ratio = float(ratio)
     a_w = _housing(a_w)
     m_used = m if m is not None else ("series" if a_w is not None else 1.0)
 
-    cands = _candidates(z1, z2, ratio, *_modules(m_used, m_range))
-    cands, skipped = _within_reach(cands, a_w, rack, tuple(float(v) for v in x_sum_window))
-    keys, solved = _solve(cands, a_w, objective, checks, method, rack, tip_shortening, progress)
+    cands = _candidates(z1, z2, ratio, *_modules(m_used, m_range), kind)
+    cands, skipped = _within_reach(cands, a_w, rack, tuple(float(v) for v in x_sum_window), kind)
+    keys, solved = _solve(cands, a_w, objective, checks, method, rack, tip_shortening, progress, kind)
     table = _rank(_table(cands, keys, solved, a_w, check_names), objective.sense)
     return TeethSelection(table=table, skipped=skipped, ratio=ratio, ratio_tol=float(ratio_tol),
                           objective=objective.name, objective_sense=objective.sense, m=m_used, a_w=a_w,
@@ -288,8 +296,9 @@ def _housing(a_w):
     return one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))
 
 
-def _candidates(z1, z2, ratio: float, mods, series) -> pd.DataFrame:
-    """Every (tooth pair, module) candidate, vectorised: counts, ratio error, module and a."""
+def _candidates(z1, z2, ratio: float, mods, series, kind) -> pd.DataFrame:
+    """Every (tooth pair, module) candidate, vectorised: counts, ratio error, module and a
+    (m (z2 ± z1)/(2 cos β))."""
     P, M = np.meshgrid(np.arange(z1.size), np.arange(mods.size), indexing="ij")
     P, M = P.ravel(), M.ravel()
     c = pd.DataFrame({"z1": z1[P], "z2": z2[P]})
@@ -298,13 +307,15 @@ def _candidates(z1, z2, ratio: float, mods, series) -> pd.DataFrame:
     c["ratio_error"] = (c["ratio"] - ratio) / ratio
     c["module_mm"] = mods[M]
     c["module_series"] = series[M]
-    c["a_mm"] = c["module_mm"] * c["z_sum"] / 2.0
+    zs = c["z2"] - c["z1"] if kind["internal"] else c["z_sum"]
+    c["a_mm"] = c["module_mm"] * zs / (2.0 * math.cos(math.radians(kind["beta_deg"])))
     return c
 
 
-def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window):
+def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window, kind):
     """(candidates to solve, skipped with reason): with a housing a_w, the pairs it can hold — a_w
-    above a·cos α (ISO 21771:2007 eq. (62) needs inv α_w > 0) and an x-sum inside the window."""
+    above a·cos α_t (ISO 21771:2007 eq. (62) needs inv α_w > 0) and an x-sum inside the window."""
+    section = dict(beta_deg=kind["beta_deg"], internal=kind["internal"])
     xs_lo, xs_hi = x_sum_window
     reason = np.full(len(c), "", dtype=object)
     if a_w is None:
@@ -312,7 +323,8 @@ def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window):
     else:
         target = _standard_center_distance(c["a_mm"].to_numpy()) if a_w == "series" else np.full(len(c), a_w)
         c["a_w_target_mm"] = target
-        a_cos = c["a_mm"].to_numpy() * math.cos(rack.alpha)
+        a_cos = min_center_distance(c["module_mm"].to_numpy(), c["z1"].to_numpy(), c["z2"].to_numpy(), rack,
+                                    **section)
         above = np.isnan(target)
         reason[above] = "a is above the largest GOST 2185 centre distance"
         small = ~above & (target <= a_cos)
@@ -321,11 +333,12 @@ def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window):
         okw = ~above & ~small
         xs = np.full(len(c), np.nan)
         xs[okw] = x_sum_from_center_distance(c["module_mm"].to_numpy()[okw], c["z1"].to_numpy()[okw],
-                                             c["z2"].to_numpy()[okw], target[okw], rack)
+                                             c["z2"].to_numpy()[okw], target[okw], rack, **section)
         c["x_sum_target"] = xs
         out = okw & ((xs < xs_lo) | (xs > xs_hi))
+        name = "x2 − x1" if kind["internal"] else "x1 + x2"
         for i in np.flatnonzero(out):
-            reason[i] = f"x1 + x2 = {xs[i]:.4g} outside [{xs_lo:g}, {xs_hi:g}]"
+            reason[i] = f"{name} = {xs[i]:.4g} outside [{xs_lo:g}, {xs_hi:g}]"
     keep = reason == ""
     skipped = c.loc[~keep, ["z1", "z2", "ratio", "ratio_error", "module_mm", "a_mm", "a_w_target_mm"]].copy()
     skipped["reason"] = reason[~keep]
@@ -333,11 +346,13 @@ def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window):
     return c[keep].reset_index(drop=True), skipped
 
 
-def _solve(c: pd.DataFrame, a_w, objective, checks, method, rack, tip_shortening, progress):
-    """One shift solve per distinct problem (without a_w the module only scales lengths):
-    (each candidate's key, {key: ShiftResult or the GearDesignError it raised})."""
-    keys = list(zip(c["z1"], c["z2"])) if a_w is None else list(zip(c["z1"], c["z2"], c["module_mm"],
-                                                                      c["a_w_target_mm"]))
+def _solve(c: pd.DataFrame, a_w, objective, checks, method, rack, tip_shortening, progress, kind):
+    """One shift solve per distinct problem (without a_w and face width the module only scales
+    lengths): (each candidate's key, {key: ShiftResult or the GearDesignError it raised})."""
+    if a_w is None:
+        keys = list(zip(c["z1"], c["z2"], *([c["module_mm"]] if kind["face_width"] is not None else [])))
+    else:
+        keys = list(zip(c["z1"], c["z2"], c["module_mm"], c["a_w_target_mm"]))
     unique = list(dict.fromkeys(keys))
     if len(unique) > MAX_SOLVES:
         raise GearDesignError(
@@ -345,10 +360,10 @@ def _solve(c: pd.DataFrame, a_w, objective, checks, method, rack, tip_shortening
             f"ratio_tol, z_sum_max or m_range")
     solved = {}
     for k, key in enumerate(unique):
-        housing = {"a_w": None, "m": 1.0} if a_w is None else {"a_w": key[3], "m": key[2]}
+        housing = {"a_w": key[3] if len(key) == 4 else None, "m": key[2] if len(key) > 2 else 1.0}
         try:
             solved[key] = optimize_shifts(key[0], key[1], objective, checks, method, rack=rack,
-                                          tip_shortening=tip_shortening, **housing)
+                                          tip_shortening=tip_shortening, **housing, **kind)
         except GearDesignError as exc:
             solved[key] = exc
         if progress is not None:
@@ -369,7 +384,8 @@ def _table(c: pd.DataFrame, keys, solved, a_w, check_names) -> pd.DataFrame:
         feasible = bool(r.success and not r.conflict)
         why = "" if feasible else ("conflict: " + ", ".join(r.conflict) if r.conflict else r.message)
         rows.append(dict(
-            a_w_mm=r.a_w * (mod if a_w is None else 1.0), x_sum=r.x1 + r.x2, x1=r.x1, x2=r.x2,
+            a_w_mm=r.a_w * (mod if len(key) == 2 else 1.0), x_sum=r.x_sum,
+            x1=r.x1, x2=r.x2,
             eps_alpha=r.eps_alpha, objective=r.fun, feasible=feasible, active=", ".join(r.active), reason=why,
             **{f"margin_{n}": r.margins.get(n, np.nan) for n in check_names}))
     sol = pd.DataFrame(rows, index=c.index, columns=["a_w_mm", "x_sum", "x1", "x2", "eps_alpha", "objective",

@@ -5,11 +5,12 @@ from __future__ import annotations
 
 import math
 
+import mpmath as mp
 import pytest
 from hypothesis import assume, given
 
 import geardesign as gd
-from geardesign.gears.checks import make_checks
+from geardesign.gears.checks import RingInterference, make_checks
 from geardesign.gears.geometry import mesh_geometry
 from geardesign.shifts.objectives import OBJECTIVES
 
@@ -57,6 +58,30 @@ def test_objective_gradients_match_central_differences(d):
                 assert abs(float(grad[j]) - fd[j]) <= 1e-6 * max(1.0, abs(fd[j])), (name, k, j, grad, fd)
 
 
+def _shaper_form_radius(m, z2, x2, z0, x0=0.0, ha0=1.25, alpha_deg=20.0):
+    """ρ_F2 = ρ_a0 + a_w0 sin α_w0 of a ring cut by a sharp-tipped shaper (docs/research/internal_helical.md
+    §3), in 50-digit arithmetic: inv α_w0 = inv α + 2 (x2 − x0) tan α/(z2 − z0) solved by findroot."""
+    mp.mp.dps = 50
+    a = mp.radians(alpha_deg)
+    inv_w0 = mp.tan(a) - a + 2 * (x2 - x0) * mp.tan(a) / (z2 - z0)
+    aw = mp.findroot(lambda t: mp.tan(t) - t - inv_w0, a)
+    a_w0 = m * (z2 - z0) * mp.cos(a) / (2 * mp.cos(aw))
+    r_a0, r_b0 = m * z0 / mp.mpf(2) + (ha0 + x0) * m, m * z0 / mp.mpf(2) * mp.cos(a)
+    return float(mp.sqrt(r_a0 ** 2 - r_b0 ** 2) + a_w0 * mp.sin(aw))
+
+
+def test_large_shaper_cuts_the_ring_like_its_rack():
+    """A shaper of many teeth tends to the rack of the same sharp tip (ρ_f = 0, h_l* = h_a0* = 1.25):
+    the interference check's form limit then tends to the rack-equivalent ρ_l2 of the geometry."""
+    rack = gd.BasicRack(rho_f=0.0)
+    for z0 in (100, 200, 400):     # the gap closes like 1/z0 (in modules: ~35/z0 here)
+        z2 = 2 * z0
+        geo = mesh_geometry(gd.Mesh(60, z2, rack, internal=True), 1.0, 0.0, 0.4)
+        form = float(RingInterference(cutter=gd.ShaperCutter(z0=z0)).limit_value(geo))
+        assert form == pytest.approx(_shaper_form_radius(1.0, z2, 0.4, z0), rel=1e-12)
+        assert 0.0 < float(geo["rho_l2"]) - form < 50.0 / z0
+
+
 def test_ring_pair_check_list_and_what_each_restates():
     """KHK's internal pair 16/24 (x 0/0.5): every check computed again from the geometry fields."""
     pair = gd.pair_geometry(3, 16, 24, 0.0, 0.5, internal=True, tip_shortening=False)
@@ -68,7 +93,7 @@ def test_ring_pair_check_list_and_what_each_restates():
     want = {
         "undercut1": 0.0 - pair.x_min1,
         "interference1": (pair.rho_p1 - max(pair.rho_l1, 0.0)) / m,
-        "interference2": (pair.rho_l2 - pair.rho_p2) / m,
+        "interference2": (_shaper_form_radius(m, 24, 0.5, z0=8) - pair.rho_p2) / m,   # default cutter: 8 teeth
         "ring_tip": (pair.da2 - pair.db2) / 2 / m,
         "tip_thickness1": pair.sa1 / m - 0.25, "tip_thickness2": pair.sa2 / m - 0.25,
         "contact_ratio": pair.eps_alpha - 1.2,
