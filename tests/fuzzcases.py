@@ -63,6 +63,20 @@ def _rack(rng):
                 c=_pick(rng, lambda r: r.uniform(0.0, 0.5)), rho_f=_pick(rng, lambda r: r.uniform(0, 0.5)))
 
 
+def _kind(rng) -> dict:
+    """Helical and internal pairs (issue 12) a third of the time, now and then with a bad value."""
+    if rng.random() < 0.67:
+        return {}
+    out = {}
+    if rng.random() < 0.6:
+        out["beta_deg"] = _pick(rng, [8.0, 15.0, 30.0, 45.0, 46.0, -1.0], 0.2)
+    if rng.random() < 0.6:
+        out["internal"] = _pick(rng, [True, True, False, 1, "yes"], 0.05)
+    if rng.random() < 0.3:
+        out["face_width"] = _pick(rng, [20.0, 60.0, 0.0, -5.0], 0.2)
+    return out
+
+
 def _make_rack(spec):
     return None if spec is None else gd.BasicRack(**spec)
 
@@ -70,7 +84,8 @@ def _make_rack(spec):
 # --- the targets: each returns (description, call) ------------------------------------------
 
 def _pair(rng):
-    a = dict(m=_pick(rng, _m), z1=_pick(rng, _z), z2=_pick(rng, _z), x1=_pick(rng, _x), x2=_pick(rng, _x))
+    a = dict(m=_pick(rng, _m), z1=_pick(rng, _z), z2=_pick(rng, _z), x1=_pick(rng, _x), x2=_pick(rng, _x),
+             **_kind(rng))
     rack = _rack(rng)
     limits = dict(eps_alpha_min=_pick(rng, [1.0, 1.2, 1.5], 0.1), sa_min=_pick(rng, [0.25, 0.4], 0.1))
 
@@ -83,7 +98,7 @@ def _pair(rng):
 def _pair_geometry(rng):
     n = rng.choice([1, 3, 50])
     a = dict(m=_pick(rng, _m), z1=[_z(rng) for _ in range(n)], z2=_pick(rng, _z),
-             x1=[_x(rng) for _ in range(rng.choice([n, n, 2]))], x2=_pick(rng, _x))
+             x1=[_x(rng) for _ in range(rng.choice([n, n, 2]))], x2=_pick(rng, _x), **_kind(rng))
     return f"pair_geometry({a})", lambda: gd.pair_geometry(**a)
 
 
@@ -93,8 +108,9 @@ def _from_center_distance(rng):
     scale = m if isinstance(m, (int, float)) and not isinstance(m, bool) and 0 < abs(m) < 1e6 else 1.0
     a_w = _pick(rng, lambda r: (z1 + z2) / 2 * scale * r.uniform(0.9, 1.2))
     x1 = _pick(rng, [None, 0.0, 0.5], 0.1)
-    return (f"GearPair.from_center_distance({m}, {z1}, {z2}, {a_w}, x1={x1})",
-            lambda: gd.GearPair.from_center_distance(m, z1, z2, a_w, x1=x1).geometry())
+    kind = _kind(rng)
+    return (f"GearPair.from_center_distance({m}, {z1}, {z2}, {a_w}, x1={x1}, **{kind})",
+            lambda: gd.GearPair.from_center_distance(m, z1, z2, a_w, x1=x1, **kind).geometry())
 
 
 def _optimize(rng):
@@ -116,6 +132,7 @@ def _optimize(rng):
     if rng.random() < 0.3:
         kw["checks"] = _pick(rng, [{}, {"undercut": False}, {"interference": False}, {"sa_min": 0.4},
                                    {"eps_alpha_min": None}, [], {"bogus": 1}])
+    kw.update(_kind(rng))
     rack = _rack(rng)
     return (f"optimize_shifts({z1}, {z2}, rack={rack}, **{kw})",
             lambda: gd.optimize_shifts(z1, z2, rack=_make_rack(rack), **kw))
@@ -128,6 +145,7 @@ def _region(rng):
         kw["n"] = _pick(rng, [11, 41, 201, 10**5])
     if rng.random() < 0.3:
         kw["checks"] = _pick(rng, [{}, [], {"undercut": False, "interference": False}, {"sa_min": 0.26}])
+    kw.update(_kind(rng))
     return f"feasible_region({z1}, {z2}, **{kw})", lambda: gd.feasible_region(z1, z2, **kw)
 
 
@@ -135,7 +153,8 @@ def _atlas(rng):
     z1 = _pick(rng, [range(10, 13), [17], 17, range(3, 100000)], 0.1)
     z2 = _pick(rng, [range(20, 23), [26, 40], 26], 0.1)
     obj = rng.choice(["max_x_sum", "balanced_sliding"])
-    return f"shift_atlas({z1}, {z2}, {obj})", lambda: gd.shift_atlas(z1, z2, objective=obj)
+    kind = _kind(rng)
+    return f"shift_atlas({z1}, {z2}, {obj}, **{kind})", lambda: gd.shift_atlas(z1, z2, objective=obj, **kind)
 
 
 def _teeth(rng):
@@ -144,6 +163,7 @@ def _teeth(rng):
         kw["ratio_tol"] = _pick(rng, [0.01, 0.05, 0.0, 2.0])
     if rng.random() < 0.3:
         kw["z1_range"] = _pick(rng, [(12, 20), (8, 40), (40, 8), (3, 100000)])
+    kw.update(_kind(rng))
     return f"select_teeth(**{kw})", lambda: gd.select_teeth(**kw)
 
 
@@ -241,6 +261,9 @@ _CLI = [
                "--ratio", str(_pick(r, [1, 8.67, 9.5, 11]))],
     lambda r: ["key", "--d", str(_pick(r, [60, 30, 5])), "--torque", "503", "--hub-length", str(_pick(r, [50, 10]))],
     lambda r: ["teeth", "--ratio", str(round(r.uniform(1, 6), 2)), "--module", "2"],
+    lambda r: [r.choice(["shift", "teeth"]), "--internal", "--beta", str(r.choice([0, 12, 45, 60]))]
+    + (["--z1", str(r.randint(5, 40)), "--z2", str(r.randint(5, 120))] if r.random() < 0.5 else
+       ["--ratio", str(round(r.uniform(1, 6), 2)), "--module", "2"]),
     lambda r: ["atlas", "--z1", r.choice(["10:12", "3:100000", "17"]), "--z2", r.choice(["20:22", "26"])],
 ]
 
@@ -282,6 +305,11 @@ TARGETS = {
 
 # --- judging a result -----------------------------------------------------------------------
 
+# Geometry fields whose description says when they are NaN by design ("not applicable": a ring's
+# undercut limit, ε_β without a face width); any other NaN is a fault.
+NOT_APPLICABLE = frozenset(k for k, (_, text) in gd.GEOMETRY_FIELDS.items() if "NaN" in text)
+
+
 def non_finite(obj, depth=0) -> str | None:
     """Where a NaN or inf hides in a result, or None."""
     if depth > 6:
@@ -315,6 +343,8 @@ def non_finite(obj, depth=0) -> str | None:
     if is_dataclass(obj):
         for f in fields(obj):
             if f.name in ("candidates", "problem", "table", "skipped", "blocking", "boundary"):
+                continue
+            if isinstance(obj, gd.Geometry) and f.name in NOT_APPLICABLE:
                 continue
             w = non_finite(getattr(obj, f.name), depth + 1)
             if w:

@@ -95,7 +95,7 @@ GEOMETRY_FIELDS: dict[str, tuple[str, str]] = {
     "sliding2_tip": ("-", "specific sliding of gear 2 at its tip"),
     "spec_pressure_pitch": ("-", "specific pressure coefficient m_n/ρ_red at the pitch point (normal section)"),
     "eps_beta": ("-", "overlap ratio ε_β = b sin β/(π m_n); 0 for spur pairs, NaN without a face width"),
-    "eps_gamma": ("-", "total contact ratio ε_γ = ε_α + ε_β"),
+    "eps_gamma": ("-", "total contact ratio ε_γ = ε_α + ε_β (NaN when ε_β is)"),
     "san1": ("mm", "tooth thickness on the tip cylinder in the normal section, gear 1 (= sa1 for spur)"),
     "san2": ("mm", "tooth thickness on the tip cylinder in the normal section, gear 2 (= sa2 for spur)"),
     "alpha_t_deg": ("deg", "transverse pressure angle α_t = atan(tan α_n / cos β)"),
