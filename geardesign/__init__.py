@@ -37,6 +37,8 @@ _NAMES = {
     "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth", "plot_mesh": "profiles.drawing",
     "plot_diagrams": "profiles.drawing", "export_profiles": "profiles.mesh",
     "pair_profiles": "profiles.mesh",
+    "PlanetarySet": "gears.planetary", "optimize_planetary_shifts": "shifts.planetary",
+    "planetary_region": "shifts.planetary", "select_planetary_teeth": "shifts.planetary_teeth",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {

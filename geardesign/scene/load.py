@@ -103,6 +103,16 @@ def _cross_checks(where: Where, s: dict):
         if lo > hi:
             where.fail("teeth", "z1_range", f"expected [min, max] with min <= max, got {list(t['z1_range'])}")
         t["_rack"] = _rack(where, "teeth", t.get("rack"))
+    if "planetary" in s:
+        p = s["planetary"]
+        p["_rack"] = _rack(where, "planetary", p.get("rack"))
+        if "ratio" not in p:
+            for k in ("z_sun", "z_planet", "z_ring"):
+                if k not in p:
+                    where.fail("planetary", k, "missing; give z_sun, z_planet and z_ring, or ratio to search them")
+        if ("x_sun" in p) != ("x_planet" in p):
+            where.fail("planetary", "x_planet" if "x_sun" in p else "x_sun", "missing; give both x_sun and x_planet "
+                                                                             "or neither")
     if "chain" in s:
         c = s["chain"]
         if ("torque_nm" in c) == ("power_kw" in c):

@@ -11,7 +11,7 @@ from ..errors import GearDesignError
 
 __all__ = ["SECTIONS", "section_schema", "validate_table", "Where", "type_name"]
 
-SECTIONS = ("gear", "teeth", "chain", "key", "study")
+SECTIONS = ("gear", "teeth", "planetary", "chain", "key", "study")
 
 
 @dataclass(frozen=True)
@@ -118,6 +118,37 @@ def _teeth_schema() -> dict:
             "z_sum_max": _I(lo=2 * Z_MIN, hi=2 * Z_MAX), "top": _I(default=10, lo=1, hi=1000), **_shift_keys()}
 
 
+def _planetary_schema() -> dict:
+    from ..gears.geometry import M_RANGE_MM, X_ABS_MAX
+    from ..gears.mesh import BETA_RANGE_DEG, Z_MAX, Z_MIN
+    from ..gears.planetary import (ARRANGEMENTS, DEFAULT_NEIGHBOUR_CLEARANCE, N_PLANETS_RANGE,
+                                   NEIGHBOUR_CLEARANCE_RANGE)
+    from ..shifts.objectives import OBJECTIVES
+    from ..shifts.optimize import METHODS
+    from ..shifts.planetary_teeth import NONSTANDARD_MAX_RANGE, Z_SUN_RANGE_LIMIT
+
+    z = dict(lo=Z_MIN, hi=Z_MAX)
+    x = dict(lo=-X_ABS_MAX, hi=X_ABS_MAX)
+    checks = _checks_schema()
+    checks.pop("jamming")
+    checks.pop("eps_gamma_min")
+    checks["neighbour_clearance"] = _F(default=DEFAULT_NEIGHBOUR_CLEARANCE, lo=NEIGHBOUR_CLEARANCE_RANGE[0],
+                                       hi=NEIGHBOUR_CLEARANCE_RANGE[1])
+    return {"module": _F(required=True, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
+            "n_planets": _I(required=True, lo=N_PLANETS_RANGE[0], hi=N_PLANETS_RANGE[1]),
+            "z_sun": _I(**z), "z_planet": _I(**z), "z_ring": _I(**z),
+            "x_sun": _F(**x), "x_planet": _F(**x), "x_ring": _F(**x), "a_w": _F(lo=0.0, lo_open=True),
+            "arrangement": _Key("choice", default="ring_fixed", choices=tuple(ARRANGEMENTS)),
+            "beta_deg": _F(default=0.0, lo=BETA_RANGE_DEG[0], hi=BETA_RANGE_DEG[1]),
+            "objective": _Key("choice", choices=tuple(OBJECTIVES)),
+            "method": _Key("choice", default="exact", choices=METHODS),
+            "ratio": _F(lo=-1e4, hi=1e4), "ratio_tol": _F(default=0.02, lo=0.0, hi=0.5),
+            "z_sun_range": _Key("ints", default=(12, 40), lo=Z_SUN_RANGE_LIMIT[0], hi=Z_SUN_RANGE_LIMIT[1], length=2),
+            "nonstandard_max": _I(default=2, lo=NONSTANDARD_MAX_RANGE[0], hi=NONSTANDARD_MAX_RANGE[1]),
+            "drawing": _Key("bool", default=True), "top": _I(default=10, lo=1, hi=1000),
+            "checks": checks, "rack": _rack_schema()}
+
+
 def _chain_schema() -> dict:
     from ..drives import chain as c
 
@@ -160,7 +191,7 @@ def _study_schema() -> dict:
 
 
 _BUILDERS = {"": lambda: {"title": _Key("str"), "description": _Key("str")}, "gear": _gear_schema,
-             "teeth": _teeth_schema, "chain": _chain_schema, "key": _key_schema, "study": _study_schema}
+             "teeth": _teeth_schema, "planetary": _planetary_schema, "chain": _chain_schema, "key": _key_schema, "study": _study_schema}
 
 
 @functools.cache

@@ -164,6 +164,63 @@ def _run_teeth(rep: SceneReport, t: dict):
                                     if b is not None else "no feasible tooth counts"))
 
 
+def _run_planetary(rep: SceneReport, p: dict):
+    """A set's best shifts (region and drawing), the checks of given shifts, or tooth counts for a ratio."""
+    from ..gears.planetary import PlanetarySet
+
+    checks = dict(p.get("checks") or {})
+    kw = dict(rack=p["_rack"], beta_deg=p["beta_deg"])
+    if "ratio" in p:
+        from ..shifts.planetary_teeth import DEFAULT_OBJECTIVE, select_planetary_teeth
+
+        sel = select_planetary_teeth(p["ratio"], p["n_planets"], p["module"], ratio_tol=p["ratio_tol"],
+                                     z_sun_range=tuple(p["z_sun_range"]), nonstandard_max=p["nonstandard_max"],
+                                     arrangement=p["arrangement"], objective=p.get("objective") or DEFAULT_OBJECTIVE,
+                                     checks=checks, method=p["method"], **kw)
+        rep.results["planetary"] = sel
+        rep.tables["planetary_teeth"] = sel.table
+        rep.markdown += [f"## Planetary tooth counts for ratio {p['ratio']:g} (± {100 * p['ratio_tol']:g} %), "
+                         f"{p['n_planets']} planets", "", sel.message, "", _md_table(sel.table.head(p["top"])), ""]
+        rep.summary.append("planetary: " + sel.message)
+        return
+    sizes = (p["module"], p["z_sun"], p["z_planet"], p["z_ring"], p["n_planets"])
+    if "x_sun" in p:
+        s = (PlanetarySet(*sizes, p["x_sun"], p["x_planet"], p["x_ring"], arrangement=p["arrangement"], **kw)
+             if "x_ring" in p else PlanetarySet.coaxial(*sizes, p["x_sun"], p["x_planet"], arrangement=p["arrangement"], **kw))
+        table = s.checks(checks)
+        rep.results["planetary"] = s
+        rep.tables["planetary_checks"] = table
+        failed = table.loc[~table["ok"], "check"].tolist()
+        head = (f"x = {s.x_sun:.4f}/{s.x_planet:.4f}/{s.x_ring:.4f}, a_w {s.a_w:.6g} mm: "
+                + ("every check holds" if not failed else f"fails {', '.join(failed)}"))
+    else:
+        from ..shifts.planetary import optimize_planetary_shifts, planetary_region
+
+        r = optimize_planetary_shifts(*sizes[1:], sizes[0], a_w=p.get("a_w"), objective=p.get("objective"),
+                                      checks=checks, method=p["method"], arrangement=p["arrangement"], **kw)
+        rep.results["planetary"] = r
+        table = r.to_frame()
+        rep.tables["planetary_optimum"] = table
+        reg = planetary_region(*sizes[1:], sizes[0], checks=checks, **kw)
+        _pyplot()
+        rep.figures["planetary_region"] = reg.plot(optimum=(r.x_sun, r.x_planet) if r.success else None,
+                                                   x_sum=(r.x_sun + r.x_planet) if "a_w" in p else None).figure
+        head = (f"{r.objective}: x = {r.x_sun:.4f}/{r.x_planet:.4f}/{r.x_ring:.4f}, a_w {r.a_w:.6g} mm"
+                if r.success else r.message)
+        s = PlanetarySet(*sizes, r.x_sun, r.x_planet, r.x_ring, arrangement=p["arrangement"], **kw) if r.success else None
+    rep.markdown += [f"## Planetary set z_s/z_p/z_r = {p['z_sun']}/{p['z_planet']}/{p['z_ring']}, "
+                     f"{p['n_planets']} planets, m = {p['module']:g} mm", "", head, "", _md_table(table), ""]
+    if "planetary_region" in rep.figures:
+        rep.markdown += ["![feasible (x_sun, x_planet) region](planetary_region.png)", ""]
+    if s is not None and p["drawing"]:
+        from ..profiles.planetary import plot_planetary
+
+        _pyplot()
+        rep.figures["planetary_set"] = plot_planetary(s).figure
+        rep.markdown += ["![the set along its axis](planetary_set.png)", ""]
+    rep.summary.append("planetary: " + head)
+
+
 def chain_kwargs(c: dict) -> dict:
     kw = {k: c[k] for k in ("torque_nm", "power_kw", "n1_rpm", "ratio", "catalog", "k_e", "allowable_pressure_mpa",
                             "allowable_safety_factor", "z1", "center_distance_mm", "objective", "method",
@@ -278,4 +335,5 @@ def base_from_scene(target: str, section: dict) -> dict:
 
 
 # the sections in the order they run; [study] runs last, over the others
-RUNNERS = (("gear", _run_gear), ("teeth", _run_teeth), ("chain", _run_chain), ("key", _run_keys))
+RUNNERS = (("gear", _run_gear), ("teeth", _run_teeth), ("planetary", _run_planetary), ("chain", _run_chain),
+           ("key", _run_keys))

@@ -27,7 +27,7 @@ def smallest_conflict(prob: Problem, bounds=DEFAULT_BOUNDS, n: int = 161) -> lis
             i = int(np.argmax(worst))
             if worst[i] >= 0:
                 continue
-            sub_prob = Problem(prob.mesh, [prob.checks[j] for j in sub], "max_x_sum", prob.m, prob.x_sum)
+            sub_prob = prob.subproblem(sub)
             # maximise the smallest margin of the subset
             w, _, ev = slsqp(MinMargin(sub_prob), V[i], bounds, ftol=1e-12, pieces_only=True)
             if w[-1] < -1e-9:

@@ -86,21 +86,25 @@ def slsqp(prob: Problem, v0, bounds, ftol=1e-15, maxiter=200, pieces_only=False)
     return res.x, res.nit, ev
 
 
-class MinMargin(Problem):
-    """Pieces = the margins themselves (to maximise the smallest), no hard constraints."""
+class MinMargin:
+    """A problem seen with pieces = its margins (to maximise the smallest), no hard constraints;
+    everything else is the base problem's (a pair's or a planetary set's)."""
 
     def __init__(self, base: Problem):
-        self.__dict__.update(base.__dict__)
+        self.base = base
+
+    def __getattr__(self, name):
+        return getattr(self.base, name)
 
     def evaluate(self, V, grads=True):
-        out = Problem.evaluate(self, V, grads)
+        out = self.base.evaluate(V, grads)
         if not grads:
             return out[1], out[1][:0]
         P, M, GP, GM = out
         return M, M[:0], GM, GM[:0]
 
     def evaluate_point(self, v):
-        P, M, GP, GM = Problem.evaluate_point(self, v)
+        P, M, GP, GM = self.base.evaluate_point(v)
         return M, M[:0], GM, GM[:0]
 
 

@@ -101,11 +101,12 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
     if a_w is not None:
         prob.x_sum = x_sum_for_housing(prob, a_w, bounds)
 
-    outcome = _dispatch(prob, method, bounds, tol, grid_n, start)
+    outcome = solve_problem(prob, method, bounds, tol, grid_n, start)
     return _result(prob, outcome, method, outcome.tol or tol, a_w, t0)
 
 
-def _dispatch(prob: Problem, method: str, bounds, tol: float, grid_n, start) -> Outcome:
+def solve_problem(prob: Problem, method: str, bounds, tol: float, grid_n=None, start=None) -> Outcome:
+    """Hand a built problem to its method (the table of methods); the Outcome at the method's point."""
     if method == "grid":
         return grid.solve(prob, bounds, tol, grid_n)
     starts, infeasible = feasible_starts(prob, bounds, start)

@@ -131,6 +131,17 @@ class Problem:
             return self._normalised(geo).min(axis=0)
         return self.objective.sense * self.pieces(geo).min(axis=0)
 
+    def subproblem(self, indices) -> "Problem":
+        """The same design space with only the checks at ``indices`` (the conflict search)."""
+        return Problem(self.mesh, [self.checks[j] for j in indices], "max_x_sum", self.m, self.x_sum)
+
+    @property
+    def title(self) -> str:
+        """What the plots and reprs call this problem: "z1/z2 = 17/26 (internal)"."""
+        return f"z1/z2 = {self.z1}/{self.z2}{self.mesh.kind_text}"
+
+    axis_labels = ("x1 (profile shift, gear 1)", "x2 (profile shift, gear 2)")
+
     # --- the design variables -----------------------------------------------------------
     @property
     def nvar(self) -> int:

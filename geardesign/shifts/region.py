@@ -83,8 +83,8 @@ class Region(Result):
         if not self.feasible:
             why = (f"checks {', '.join(self.conflict)} conflict" if self.conflict
                    else "every check holds somewhere in the window, but not all together")
-            return f"Region(z1/z2 = {self.z1}/{self.z2}: empty; {why})"
-        return (f"Region(z1/z2 = {self.z1}/{self.z2}, area {self.area:.6g} ± {self.area_error:.1g}, "
+            return f"Region({self.problem.title}: empty; {why})"
+        return (f"Region({self.problem.title}, area {self.area:.6g} ± {self.area_error:.1g}, "
                 f"{len(self.boundary)} vertices, "
                 f"limited by {', '.join(self.limiting_checks())}; method {self.method}, tol {self.tol:g})")
 
@@ -154,9 +154,9 @@ class Region(Result):
         handles.append(plt.Line2D([], [], color="0.25", lw=0.7, ls=(0, (3, 2)), label="isolines ε_α, s_a/m"))
         ax.set_xlim(lo, hi)
         ax.set_ylim(lo, hi)
-        ax.set_xlabel("x1 (profile shift, gear 1)", fontsize=10)
-        ax.set_ylabel("x2 (profile shift, gear 2)", fontsize=10)
-        ax.set_title(f"Blocking contour z1/z2 = {self.z1}/{self.z2}{self.problem.mesh.kind_text} "
+        ax.set_xlabel(self.problem.axis_labels[0], fontsize=10)
+        ax.set_ylabel(self.problem.axis_labels[1], fontsize=10)
+        ax.set_title(f"Blocking contour {self.problem.title} "
                      "(ticks: forbidden side)", fontsize=11)
         ax.grid(True, lw=0.3, alpha=0.6)
         ax.set_aspect("equal")
@@ -169,7 +169,8 @@ class Region(Result):
         import matplotlib.pyplot as plt
 
         prob = self.problem
-        prob_line = Problem(prob.mesh, prob.checks, "max_x_sum", prob.m, x_sum)
+        prob_line = prob.subproblem(range(len(prob.checks)))
+        prob_line.x_sum = x_sum
         t = np.linspace(*prob_line.x1_on_line(*self.bounds), 2001)
         if t.size == 0 or t[0] > t[-1]:
             return []
@@ -191,6 +192,7 @@ CHECK_COLOURS = {
     "contact_ratio": "tab:purple", "jamming": "tab:brown", "center_distance": "tab:cyan",
     "ring_tip": "darkgreen", "tip_interference": "magenta", "cutter_trimming": "saddlebrown",
     "total_contact_ratio": "indigo", "radial_assembly": "slategray", "tooth_difference": "black",
+    "neighbours": "teal",
 }
 _CUSTOM_COLOURS = ("tab:olive", "tab:pink", "tab:gray", "darkgoldenrod", "teal")
 PLOT_N_MAX = 1201      # nodes per axis of a plot's curves: 1.4 M designs, ~1 s
@@ -198,7 +200,14 @@ PLOT_N_MAX = 1201      # nodes per axis of a plot's curves: 1.4 M designs, ~1 s
 
 def check_style(name: str) -> tuple[str, str]:
     """(colour, line style) of a check, the same in every plot: the colour by its kind, solid
-    for gear 1 and dashed for gear 2; a custom check gets a colour from its name."""
+    for gear 1 and dashed for gear 2; a custom check gets a colour from its name. A planetary
+    set's checks ("planet-ring:interference_planet") take their kind's colour and their mesh's
+    style: solid sun-planet, dashed planet-ring, dotted for the set's own."""
+    if ":" in name:
+        mesh, kind = name.split(":", 1)
+        kind = kind.rsplit("_", 1)[0] if kind.rsplit("_", 1)[-1] in ("sun", "planet", "ring") else kind
+        colour = CHECK_COLOURS.get(kind, _CUSTOM_COLOURS[sum(map(ord, kind)) % len(_CUSTOM_COLOURS)])
+        return colour, {"sun-planet": "-", "planet-ring": "--"}.get(mesh, ":")
     kind = name.rstrip("12")
     gear2 = name.endswith("2") and kind in CHECK_COLOURS
     if kind in CHECK_COLOURS:
@@ -293,7 +302,13 @@ def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: 
         n = int(min(max(math.ceil((hi - lo) / tol) + 1, 41), 801)) if method == "grid" else 321
     n = require_count("n", n, 11, REGION_N_MAX)
     prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width), checks, "max_x_sum", m)
-    window = (lo, hi)
+    return region_of(prob, method, tol, (lo, hi), n)
+
+
+def region_of(prob: Problem, method: str, tol: float, window: tuple, n: int) -> Region:
+    """The feasible region of a built problem (a pair's, or a planetary set's in its free shifts)
+    in the validated ``window`` on an n×n grid: see :func:`feasible_region`."""
+    lo, hi = window
     box_used = (lo, hi, lo, hi)
     loops = _trace(prob, box_used, n, window, method)
     h = (hi - lo) / (n - 1)

@@ -14,6 +14,7 @@ __all__ = ["sensitivities_at"]
 
 def _limit_factor(check) -> float:
     """d(margin)/d(limit) → converts a multiplier into d(fun)/d(limit)."""
+    check = getattr(check, "inner", check)   # a planetary set's check of one mesh
     if isinstance(check, _checks.Jamming):
         return -1.0
     if isinstance(check, _checks.CustomCheck):

@@ -1,0 +1,170 @@
+"""``geardesign planetary``: a planetary set — check given shifts, find the best ones, or find tooth
+counts for a ratio."""
+from __future__ import annotations
+
+from ..errors import GearDesignError
+from .options import add_output_file, add_solver_args
+from .output import add_json_flag, print_frame, print_json
+from .pair import add_limit_args, add_rack_args, limits_from_args, rack_from_args
+
+
+def add_parser(sub):
+    from ..gears.planetary import ARRANGEMENTS, DEFAULT_NEIGHBOUR_CLEARANCE
+
+    p = sub.add_parser("planetary", help="planetary set: coaxial shifts of sun, planets and ring; tooth counts",
+                       description="A simple planetary set (sun, N planets, ring). With --x-sun/--x-planet: "
+                                   "check those shifts (the ring's from coaxiality unless --x-ring). Without: the "
+                                   "best coaxial shifts. With --ratio: tooth counts for the ratio, each solved.")
+    p.add_argument("--module", "-m", type=float, required=True, help="module, mm")
+    p.add_argument("--planets", type=int, required=True, help="number of planets N")
+    p.add_argument("--z-sun", type=int, default=None)
+    p.add_argument("--z-planet", type=int, default=None)
+    p.add_argument("--z-ring", type=int, default=None)
+    p.add_argument("--x-sun", type=float, default=None, help="given shift of the sun (with --x-planet)")
+    p.add_argument("--x-planet", type=float, default=None)
+    p.add_argument("--x-ring", type=float, default=None, help="given shift of the ring (default: coaxial)")
+    p.add_argument("--center-distance", type=float, default=None, metavar="A",
+                   help="fixed carrier arm a_w, mm: fixes x_sun + x_planet, the objective picks the split")
+    p.add_argument("--arrangement", choices=tuple(ARRANGEMENTS), default="ring_fixed",
+                   help="fixed member (ring_fixed: sun in, carrier out; carrier_fixed: sun in, ring out; "
+                        "sun_fixed: ring in, carrier out)")
+    p.add_argument("--beta", type=float, default=0.0, metavar="DEG", help="helix angle, degrees (0: spur)")
+    p.add_argument("--neighbour-clearance", type=float, default=DEFAULT_NEIGHBOUR_CLEARANCE, metavar="K",
+                   help=f"least gap between adjacent planet tips, in modules ({DEFAULT_NEIGHBOUR_CLEARANCE:g})")
+    p.add_argument("--ratio", type=float, default=None, help="find tooth counts for this ratio n_in/n_out")
+    p.add_argument("--ratio-tol", type=float, default=0.02, help="relative ratio tolerance (0.02)")
+    p.add_argument("--z-sun-range", default="12:40", metavar="LO:HI", help="sun teeth searched (12:40)")
+    p.add_argument("--nonstandard-max", type=int, default=2,
+                   help="largest |z_ring - z_sun - 2 z_planet| searched (2; 0: standard sets only)")
+    add_solver_args(p, objective_help="what the optimum maximises or minimises over both meshes (default "
+                                      "max_x_sum; balanced_sliding with --center-distance; max_eps_alpha "
+                                      "for --ratio)")
+    add_output_file(p, "--plot", "PNG", "the feasible (x_sun, x_planet) region")
+    p.add_argument("--drawing", metavar="PNG", default=None, help="write the set's drawing (circles) to this PNG")
+    add_rack_args(p)
+    add_limit_args(p)
+    add_json_flag(p)
+    return p
+
+
+def _checks(args) -> dict:
+    out = {k: v for k, v in limits_from_args(args).items() if k != "eps_gamma_min"}
+    out["neighbour_clearance"] = args.neighbour_clearance
+    return out
+
+
+def _range(text: str) -> tuple[int, int]:
+    try:
+        lo, hi = (int(v) for v in text.split(":"))
+    except ValueError:
+        raise GearDesignError(f"--z-sun-range must be LO:HI whole numbers, got {text!r}") from None
+    return lo, hi
+
+
+def _save(path, ax, overwrite):
+    import matplotlib.pyplot as plt
+
+    from ..files import write_file_atomic
+
+    try:
+        write_file_atomic(path, lambda tmp: ax.figure.savefig(tmp, dpi=120, bbox_inches="tight", format="png"))
+    finally:
+        plt.close(ax.figure)
+
+
+def run(args) -> int:
+    from ..files import check_output_path
+
+    for flag in ("plot", "drawing"):
+        if getattr(args, flag):
+            check_output_path(getattr(args, flag), overwrite=args.overwrite, suffixes=(".png",), what=f"--{flag}")
+    if args.plot or args.drawing:
+        import matplotlib
+        matplotlib.use("Agg")
+    if args.ratio is not None:
+        return _teeth(args)
+    missing = [f"--{n.replace('_', '-')}" for n in ("z_sun", "z_planet", "z_ring") if getattr(args, n) is None]
+    if missing:
+        raise GearDesignError(f"{', '.join(missing)} needed (or --ratio to search tooth counts)")
+    if (args.x_sun is None) != (args.x_planet is None):
+        raise GearDesignError("--x-sun and --x-planet go together: give both to check a set")
+    if args.x_sun is not None:
+        return _check(args)
+    return _optimize(args)
+
+
+def _set_kwargs(args) -> dict:
+    return dict(rack=rack_from_args(args), beta_deg=args.beta, arrangement=args.arrangement)
+
+
+def _check(args) -> int:
+    from ..gears.planetary import PlanetarySet
+
+    sizes = (args.module, args.z_sun, args.z_planet, args.z_ring, args.planets)
+    s = (PlanetarySet.coaxial(*sizes, args.x_sun, args.x_planet, **_set_kwargs(args)) if args.x_ring is None
+         else PlanetarySet(*sizes, args.x_sun, args.x_planet, args.x_ring, **_set_kwargs(args)))
+    table = s.checks(_checks(args))
+    ok = bool(table["ok"].all())
+    if args.drawing:
+        from ..profiles.planetary import plot_planetary
+        _save(args.drawing, plot_planetary(s), args.overwrite)
+    if args.json:
+        print_json({"x_sun": s.x_sun, "x_planet": s.x_planet, "x_ring": s.x_ring, "a_w": s.a_w,
+                    "a_w_planet_ring": s.a_w_planet_ring, "ratio": s.ratio, "ok": ok,
+                    "checks": table[["check", "mesh", "margin", "ok", "value", "limit"]]})
+        return 0 if ok else 1
+    print(f"Planetary set {s.meshes.title}, m = {s.m:g} mm: x = {s.x_sun:.6g}/{s.x_planet:.6g}/{s.x_ring:.6g}, "
+          f"a_w = {s.a_w:.8g} mm (planet-ring {s.a_w_planet_ring:.8g} mm), ratio {s.ratio:.6g} ({s.arrangement})")
+    print_frame(table[["check", "margin", "ok", "value", "limit"]])
+    failed = table.loc[~table["ok"], "check"].tolist()
+    print("All checks hold." if ok else f"Failing checks: {', '.join(failed)}")
+    return 0 if ok else 1
+
+
+def _optimize(args) -> int:
+    from ..gears.planetary import PlanetarySet
+    from ..shifts.planetary import optimize_planetary_shifts, planetary_region
+
+    kw = dict(rack=rack_from_args(args), beta_deg=args.beta)
+    r = optimize_planetary_shifts(args.z_sun, args.z_planet, args.z_ring, args.planets, args.module,
+                                  a_w=args.center_distance, objective=args.objective, checks=_checks(args),
+                                  method=args.method, arrangement=args.arrangement, **kw)
+    if args.plot:
+        reg = planetary_region(args.z_sun, args.z_planet, args.z_ring, args.planets, args.module,
+                               checks=_checks(args), **kw)
+        ax = reg.plot(optimum=(r.x_sun, r.x_planet) if r.success else None, x_sum=(
+            r.x_sun + r.x_planet) if args.center_distance is not None else None)
+        _save(args.plot, ax, args.overwrite)
+    if args.drawing and r.success:
+        from ..profiles.planetary import plot_planetary
+        s = PlanetarySet(args.module, args.z_sun, args.z_planet, args.z_ring, args.planets, r.x_sun, r.x_planet,
+                         r.x_ring, arrangement=args.arrangement, **kw)
+        _save(args.drawing, plot_planetary(s), args.overwrite)
+    if args.json:
+        print_json(r.to_dict())
+        return 0 if r.success else 1
+    print(repr(r))
+    if r.success:
+        print_frame(r.to_frame(), "\nChecks at the optimum (margin >= 0 holds; sensitivity = d fun / d limit)")
+    for flag, what in (("plot", "region"), ("drawing", "drawing")):
+        if getattr(args, flag) and (flag == "plot" or r.success):
+            print(f"{what} written to {getattr(args, flag)}")
+    return 0 if r.success else 1
+
+
+def _teeth(args) -> int:
+    from ..shifts.planetary_teeth import DEFAULT_OBJECTIVE, select_planetary_teeth
+
+    sel = select_planetary_teeth(args.ratio, args.planets, args.module, ratio_tol=args.ratio_tol,
+                                 z_sun_range=_range(args.z_sun_range), nonstandard_max=args.nonstandard_max,
+                                 arrangement=args.arrangement, objective=args.objective or DEFAULT_OBJECTIVE,
+                                 checks=_checks(args), method=args.method, rack=rack_from_args(args),
+                                 beta_deg=args.beta)
+    if args.json:
+        print_json(sel.to_dict() | {"message": sel.message})
+        return 0 if sel.found else 1
+    print(sel.message)
+    cols = ["z_sun", "z_planet", "z_ring", "standard", "ratio", "feasible", "x_sun", "x_planet", "x_ring", "a_w",
+            "fun", "reason"]
+    print_frame(sel.table[cols].head(25), f"\n{len(sel.table)} candidates ({sel.n_solved} solved), best first:")
+    return 0 if sel.found else 1

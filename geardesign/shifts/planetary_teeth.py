@@ -1,0 +1,187 @@
+"""Tooth counts of a planetary set for a ratio: standard and non-standard sets, solved and ranked.
+
+Enumeration (vectorised, bounded before any solve): every z_sun in ``z_sun_range``, every z_ring
+whose ratio (:func:`~geardesign.gears.planetary.planetary_ratio` of the arrangement) is within
+``ratio_tol`` of the asked one, and every z_planet with |z_ring − z_sun − 2 z_planet| <=
+``nonstandard_max`` (0 is the standard set z_r = z_s + 2 z_p, coaxial without shifts; a
+difference of a tooth or two is what shifts can absorb). Candidates whose planets cannot be
+assembled ((z_s + z_r)/N not whole) or whose planets overlap even at zero shifts are listed
+with that reason and not solved; every other one gets :func:`optimize_planetary_shifts`.
+
+Ranking (best first): feasible before infeasible; the smaller |ratio error|; the better
+objective (default ``max_eps_alpha``: the smaller of the two meshes' ε_α, largest first); the
+smaller ring (a smaller set).
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from ..errors import GearDesignError
+from ..gears.planetary import ARRANGEMENTS, N_PLANETS_RANGE, planetary_ratio
+from ..results import Result
+from ..validate import one_number, require_choice, require_int, require_positive, require_range
+from .objectives import resolve_objective
+from .optimize import METHODS
+from .planetary import optimize_planetary_shifts
+
+__all__ = ["select_planetary_teeth", "PlanetaryTeethSelection", "PLANETARY_SOLVES_MAX", "NONSTANDARD_MAX_RANGE"]
+
+PLANETARY_SOLVES_MAX = 2000        # candidates solved at most in one search (~50 ms each)
+NONSTANDARD_MAX_RANGE = (0, 6)     # teeth: beyond a few, no shift within the window makes a set coaxial
+Z_SUN_RANGE_LIMIT = (3, 1000)
+DEFAULT_OBJECTIVE = "max_eps_alpha"
+
+
+@dataclass
+class PlanetaryTeethSelection(Result):
+    """The ranked result of :func:`select_planetary_teeth`: ``table`` one row per candidate (solved
+    or not, ``reason`` says why a row fails), best first; ``best`` the first row if feasible."""
+
+    table: pd.DataFrame
+    ratio: float
+    ratio_tol: float
+    n_planets: int
+    m: float
+    arrangement: str
+    objective: str
+    method: str
+    n_solved: int = 0
+    time_s: float = 0.0
+
+    _success_field = "found"
+    _table_fields = ("table",)
+
+    @property
+    def found(self) -> bool:
+        return self.best is not None
+
+    @property
+    def best(self):
+        if self.table.empty or not bool(self.table["feasible"].iloc[0]):
+            return None
+        return self.table.iloc[0]
+
+    @property
+    def message(self) -> str:
+        b = self.best
+        if b is None:
+            return (f"no feasible set among {len(self.table)} candidates for ratio {self.ratio:g} ± "
+                    f"{self.ratio_tol:.3g} with {self.n_planets} planets; see the reasons in the table")
+        kind = "standard" if b["standard"] else "non-standard"
+        return (f"z_s/z_p/z_r = {b['z_sun']}/{b['z_planet']}/{b['z_ring']} ({kind}), ratio {b['ratio']:.6g}, "
+                f"x = {b['x_sun']:.4f}/{b['x_planet']:.4f}/{b['x_ring']:.4f}, a_w {b['a_w']:.6g} mm")
+
+    def __repr__(self) -> str:
+        return (f"PlanetaryTeethSelection({self.status}: {self.message}; {len(self.table)} candidates, "
+                f"{self.n_solved} solved, {self.time_s:.2f} s)")
+
+
+def _candidates(ratio, ratio_tol, n_planets, z_sun_range, nonstandard_max, arrangement):
+    """(z_s, z_p, z_r) arrays of every candidate within the ratio tolerance."""
+    zs = np.arange(z_sun_range[0], z_sun_range[1] + 1)
+    lo, hi = ratio * (1 - ratio_tol), ratio * (1 + ratio_tol)
+    # z_r interval per z_sun from the ratio's inverse (monotonic in z_r for each arrangement)
+    if arrangement == "ring_fixed":
+        r_lo, r_hi = (lo - 1) * zs, (hi - 1) * zs
+    elif arrangement == "carrier_fixed":   # |ratio| = z_r/z_s
+        r_lo, r_hi = abs(ratio) * (1 - ratio_tol) * zs, abs(ratio) * (1 + ratio_tol) * zs
+    else:   # sun_fixed: 1 + z_s/z_r
+        with np.errstate(divide="ignore"):
+            r_lo, r_hi = zs / max(hi - 1, 1e-300), zs / max(lo - 1, 1e-300)
+    rows = []
+    for s, a, b in zip(zs, np.ceil(r_lo - 1e-9).astype(np.int64), np.floor(r_hi + 1e-9).astype(np.int64)):
+        for r in range(max(int(a), int(s) + 7), min(int(b), 100_000) + 1):
+            for d in range(-nonstandard_max, nonstandard_max + 1):
+                if (r - s - d) % 2 == 0 and (r - s - d) // 2 >= 3:
+                    rows.append((int(s), (r - s - d) // 2, r))
+            if len(rows) > 50 * PLANETARY_SOLVES_MAX:
+                raise GearDesignError(f"more than {50 * PLANETARY_SOLVES_MAX} tooth-count candidates for ratio "
+                                      f"{ratio:g} ± {ratio_tol:g}: narrow z_sun_range or ratio_tol")
+    return np.array(rows, dtype=np.int64).reshape(-1, 3)
+
+
+def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_range=(12, 40),
+                           nonstandard_max: int = 2, arrangement: str = "ring_fixed", objective=DEFAULT_OBJECTIVE,
+                           checks=None, method: str = "exact", rack=None, beta_deg: float = 0.0
+                           ) -> PlanetaryTeethSelection:
+    """Every (z_sun, z_planet, z_ring) for ``ratio`` (n_in/n_out of ``arrangement``; for
+    "carrier_fixed" the ring turns the other way and ±ratio are the same), standard and
+    non-standard, with the shifts that make each fit, ranked (see the module docstring).
+
+    >>> sel = select_planetary_teeth(5.0, 3, 2.0, ratio_tol=0.0, z_sun_range=(18, 18), nonstandard_max=0)
+    >>> sel.best[["z_sun", "z_planet", "z_ring", "standard"]].tolist()    # 1 + 72/18 = 5, (18 + 72)/3 = 30
+    [18, 27, 72, True]
+    """
+    t0 = time.perf_counter()
+    ratio = one_number("ratio", require_range("ratio", ratio, -1e4, 1e4))
+    arrangement = require_choice("arrangement", arrangement, tuple(ARRANGEMENTS))
+    if arrangement == "ring_fixed" and not ratio > 1 or arrangement == "sun_fixed" and not 1 < ratio < 2 \
+            or arrangement == "carrier_fixed" and abs(ratio) <= 1:
+        allowed = {"ring_fixed": "> 1", "sun_fixed": "in (1, 2)", "carrier_fixed": "|ratio| > 1"}[arrangement]
+        raise GearDesignError(f"ratio = {ratio:g} cannot be made by a simple planetary set with the {arrangement} "
+                              f"arrangement: it must be {allowed}")
+    ratio_tol = one_number("ratio_tol", require_range("ratio_tol", ratio_tol, 0.0, 0.5))
+    n_planets = int(require_int("n_planets", n_planets, *N_PLANETS_RANGE))
+    nonstandard_max = int(require_int("nonstandard_max", nonstandard_max, *NONSTANDARD_MAX_RANGE))
+    try:
+        zlo, zhi = (int(require_int("z_sun_range", v, *Z_SUN_RANGE_LIMIT)) for v in z_sun_range)
+    except (TypeError, ValueError):
+        raise GearDesignError(f"z_sun_range must be (lo, hi) whole numbers, got {z_sun_range!r}") from None
+    if zlo > zhi:
+        raise GearDesignError(f"z_sun_range must be (lo, hi) with lo <= hi, got {z_sun_range!r}")
+    method = require_choice("method", method, METHODS)
+    obj = resolve_objective(objective)
+    m = float(one_number("m (module)", require_positive("m (module)", m, unit="mm")))
+
+    cand = _candidates(ratio, ratio_tol, n_planets, (zlo, zhi), nonstandard_max, arrangement)
+    z_s, z_p, z_r = (cand[:, k] for k in range(3))
+    ratios = planetary_ratio(z_s, z_r, arrangement) if len(cand) else np.zeros(0)
+    ratio_error = (np.abs(ratios) - abs(ratio)) / abs(ratio) if len(cand) else np.zeros(0)
+    assembles = ((z_s + z_r) % n_planets == 0)
+    # planets that overlap with tips at zero shift cannot be saved by the shifts this rule allows
+    # for (the planet's tip grows with its shift as fast as a_w): 2 a sin(π/N) > d_p + 2 m
+    a_ref = (z_s + z_p) / 2.0
+    fits = (n_planets == 1) | (2 * a_ref * math.sin(math.pi / n_planets) > z_p + 2.0)
+    todo = np.flatnonzero(assembles & fits)
+    if todo.size > PLANETARY_SOLVES_MAX:
+        raise GearDesignError(f"{todo.size} tooth-count candidates to solve, more than {PLANETARY_SOLVES_MAX}: "
+                              f"narrow z_sun_range, ratio_tol or nonstandard_max")
+    rows = []
+    for i in range(len(cand)):
+        row = dict(z_sun=int(z_s[i]), z_planet=int(z_p[i]), z_ring=int(z_r[i]),
+                   standard=bool(z_r[i] == z_s[i] + 2 * z_p[i]), ratio=float(ratios[i]),
+                   ratio_error=float(ratio_error[i]), feasible=False, x_sun=math.nan, x_planet=math.nan,
+                   x_ring=math.nan, a_w=math.nan, eps_alpha_sun_planet=math.nan, eps_alpha_planet_ring=math.nan,
+                   fun=math.nan, reason="")
+        if not assembles[i]:
+            row["reason"] = (f"set:assembly: (z_s + z_r)/N = {(z_s[i] + z_r[i]) / n_planets:.4g} is not whole")
+        elif not fits[i]:
+            row["reason"] = "set:neighbours: the planets overlap whatever the shifts"
+        else:
+            try:
+                r = optimize_planetary_shifts(int(z_s[i]), int(z_p[i]), int(z_r[i]), n_planets, m, objective=obj,
+                                              checks=checks, method=method, rack=rack, beta_deg=beta_deg,
+                                              arrangement=arrangement)
+            except GearDesignError as exc:
+                row["reason"] = str(exc)
+            else:
+                row.update(feasible=bool(r.success), x_sun=r.x_sun, x_planet=r.x_planet, x_ring=r.x_ring,
+                           a_w=r.a_w, eps_alpha_sun_planet=r.eps_alpha_sun_planet,
+                           eps_alpha_planet_ring=r.eps_alpha_planet_ring, fun=r.fun,
+                           reason="" if r.success else f"checks {', '.join(r.conflict)} conflict")
+        rows.append(row)
+    table = pd.DataFrame(rows, columns=list(rows[0]) if rows else
+                         ["z_sun", "z_planet", "z_ring", "standard", "ratio", "ratio_error", "feasible", "x_sun",
+                          "x_planet", "x_ring", "a_w", "eps_alpha_sun_planet", "eps_alpha_planet_ring", "fun",
+                          "reason"])
+    if not table.empty:
+        key = pd.DataFrame({"inf": ~table["feasible"], "err": table["ratio_error"].abs().round(12),
+                            "fun": (-obj.sense * table["fun"]).fillna(np.inf), "zr": table["z_ring"]})
+        table = table.loc[key.sort_values(["inf", "err", "fun", "zr"], kind="stable").index].reset_index(drop=True)
+    return PlanetaryTeethSelection(table, ratio, ratio_tol, n_planets, m, arrangement, obj.name, method,
+                                   n_solved=int(todo.size), time_s=time.perf_counter() - t0)
