@@ -34,3 +34,31 @@ def test_mesh_drawing_adds_the_drawing_and_diagrams_of_both_pairs(tmp_path):
     plain.write_text("[gear]\nmodule = 8\nz1 = 17\nz2 = 26\n")
     gd.run_scene(plain, tmp_path / "out2")
     assert not list((tmp_path / "out2").glob("gear_mesh_*"))
+
+
+def test_planetary_section_optimises_checks_and_searches(tmp_path):
+    """[planetary]: the best coaxial shifts with the region and the set's drawing; given shifts get
+    every check of both meshes and of the set (LECAD's printed set fails the planet's fillet by the
+    ring's tip); a ratio searches tooth counts; a missing tooth count is one line."""
+    opt = tmp_path / "o.toml"
+    opt.write_text("[planetary]\nmodule = 1.75\nz_sun = 21\nz_planet = 43\nz_ring = 108\nn_planets = 3\n"
+                   "objective = \"max_eps_alpha\"\n")
+    rep = gd.run_scene(opt, tmp_path / "o")
+    r = rep.results["planetary"]
+    assert r.success and abs(r.a_w - r.a_w_planet_ring) < 1e-9
+    for png in ("planetary_region.png", "planetary_set.png"):
+        assert (tmp_path / "o" / png).read_bytes()[:4] == b"\x89PNG"
+    given = tmp_path / "g.toml"
+    given.write_text("[planetary]\nmodule = 1.75\nz_sun = 21\nz_planet = 43\nz_ring = 108\nn_planets = 3\n"
+                     "x_sun = 0.438\nx_planet = 0.0426\nx_ring = 0.0\n")
+    gd.run_scene(given, tmp_path / "g")
+    t = pd.read_csv(tmp_path / "g" / "planetary_checks.csv").set_index("check")
+    assert t.loc["set:coaxiality", "ok"] and not t.loc["planet-ring:interference_planet", "ok"]
+    search = tmp_path / "s.toml"
+    search.write_text("[planetary]\nmodule = 2\nn_planets = 3\nratio = 5\nz_sun_range = [18, 21]\n")
+    rep = gd.run_scene(search, tmp_path / "s")
+    assert rep.results["planetary"].found
+    bad = tmp_path / "b.toml"
+    bad.write_text("[planetary]\nmodule = 2\nn_planets = 3\nz_sun = 20\n")
+    with pytest.raises(gd.GearDesignError, match=r"\[planetary\] z_planet: missing"):
+        gd.load_scene(bad)
