@@ -201,13 +201,20 @@ PLOT_N_MAX = 1201      # nodes per axis of a plot's curves: 1.4 M designs, ~1 s
 def check_style(name: str) -> tuple[str, str]:
     """(colour, line style) of a check, the same in every plot: the colour by its kind, solid
     for gear 1 and dashed for gear 2; a custom check gets a colour from its name. A planetary
-    set's checks ("planet-ring:interference_planet") take their kind's colour and their mesh's
-    style: solid sun-planet, dashed planet-ring, dotted for the set's own."""
+    set's checks ("planet-ring:interference_planet") take their kind's colour, darker in the
+    planet-ring mesh, and their gear's style: solid sun, dashed planet, dash-dot ring; a check of
+    the whole mesh solid in sun-planet, dashed in planet-ring; the set's own dotted."""
     if ":" in name:
+        from matplotlib.colors import to_rgb
+
         mesh, kind = name.split(":", 1)
-        kind = kind.rsplit("_", 1)[0] if kind.rsplit("_", 1)[-1] in ("sun", "planet", "ring") else kind
+        gear = kind.rsplit("_", 1)[-1] if kind.rsplit("_", 1)[-1] in ("sun", "planet", "ring") else None
+        kind = kind.rsplit("_", 1)[0] if gear else kind
         colour = CHECK_COLOURS.get(kind, _CUSTOM_COLOURS[sum(map(ord, kind)) % len(_CUSTOM_COLOURS)])
-        return colour, {"sun-planet": "-", "planet-ring": "--"}.get(mesh, ":")
+        if mesh == "planet-ring":
+            colour = tuple(0.55 * c for c in to_rgb(colour))
+        style = {"sun": "-", "planet": "--", "ring": "-."}.get(gear) or {"sun-planet": "-", "planet-ring": "--"}.get(mesh, ":")
+        return colour, style
     kind = name.rstrip("12")
     gear2 = name.endswith("2") and kind in CHECK_COLOURS
     if kind in CHECK_COLOURS:
