@@ -167,6 +167,58 @@ def _teeth(rng):
     return f"select_teeth(**{kw})", lambda: gd.select_teeth(**kw)
 
 
+def _planetary_sizes(rng):
+    """Tooth counts of a set: near-standard mostly, anything now and then."""
+    z_s, z_p = _pick(rng, lambda r: r.randint(8, 60), 0.1), _pick(rng, lambda r: r.randint(8, 60), 0.1)
+    if isinstance(z_s, int) and isinstance(z_p, int) and rng.random() < 0.8:
+        z_r = z_s + 2 * z_p + rng.randint(-3, 3)
+    else:
+        z_r = _pick(rng, _z)
+    return z_s, z_p, z_r, _pick(rng, [1, 3, 3, 4, 5, 7], 0.1)
+
+
+def _planetary_set(rng):
+    sizes = _planetary_sizes(rng)
+    m = _pick(rng, _m)
+    xs = [_pick(rng, _x) for _ in range(3)]
+    kw = {}
+    if rng.random() < 0.3:
+        kw["beta_deg"] = _pick(rng, [10.0, 30.0, 50.0])
+    if rng.random() < 0.2:
+        kw["arrangement"] = _pick(rng, ["carrier_fixed", "sun_fixed", "ring_in"], 0.2)
+    if rng.random() < 0.3:
+        return (f"PlanetarySet.coaxial({m}, *{sizes}, {xs[0]}, {xs[1]}, **{kw})",
+                lambda: gd.PlanetarySet.coaxial(m, *sizes, xs[0], xs[1], **kw).checks())
+    return f"PlanetarySet({m}, *{sizes}, *{xs}, **{kw})", lambda: gd.PlanetarySet(m, *sizes, *xs, **kw).checks()
+
+
+def _optimize_planetary(rng):
+    sizes = _planetary_sizes(rng)
+    kw = dict(m=_pick(rng, [1.0, 2.0, 1.75, 8.0], 0.1),
+              objective=_pick(rng, [None, "max_x_sum", "max_eps_alpha", "balanced_sliding", "max_margin"], 0.1),
+              method=_pick(rng, ["exact", "exact", "grid"], 0.05))
+    if rng.random() < 0.25:
+        plain = all(type(v) in (int, float) and abs(v) < 1e4 for v in (kw["m"], sizes[0], sizes[1]))
+        half = (sizes[0] + sizes[1]) * kw["m"] / 2 if plain else 20.0
+        kw["a_w"] = _pick(rng, lambda r: half * r.uniform(0.95, 1.1))
+    if rng.random() < 0.2:
+        kw["checks"] = _pick(rng, [{}, {"neighbour_clearance": 0.0}, {"neighbour_clearance": None},
+                                   {"undercut": False}, {"bogus": 1}, [1]])
+    return f"optimize_planetary_shifts(*{sizes}, **{kw})", lambda: gd.optimize_planetary_shifts(*sizes, **kw)
+
+
+def _planetary_teeth(rng):
+    kw = dict(ratio=_pick(rng, lambda r: round(r.uniform(2.5, 9), 3)), n_planets=_pick(rng, [3, 4, 5], 0.1),
+              m=_pick(rng, [2, 3, 1.5], 0.1))
+    lo = rng.randint(12, 30)
+    kw["z_sun_range"] = _pick(rng, [(lo, lo + rng.randint(0, 3)), (30, 12), (3, 1000)], 0.1)
+    if rng.random() < 0.3:
+        kw["ratio_tol"] = _pick(rng, [0.0, 0.01, 0.6])
+    if rng.random() < 0.2:
+        kw["arrangement"] = _pick(rng, ["carrier_fixed", "sun_fixed"])
+    return f"select_planetary_teeth(**{kw})", lambda: gd.select_planetary_teeth(**kw)
+
+
 def _chain(rng):
     kw = dict(torque_nm=_pick(rng, lambda r: round(r.uniform(1, 2000), 2)),
               n1_rpm=_pick(rng, lambda r: round(r.uniform(20, 1500), 1)),
@@ -300,6 +352,8 @@ TARGETS = {
     "pair": _pair, "pair_geometry": _pair_geometry, "from_center_distance": _from_center_distance,
     "optimize_shifts": _optimize, "feasible_region": _region, "shift_atlas": _atlas, "select_teeth": _teeth,
     "chain": _chain, "key": _key, "scene": _scene, "cli": _cli,
+    "planetary_set": _planetary_set, "optimize_planetary_shifts": _optimize_planetary,
+    "select_planetary_teeth": _planetary_teeth,
 }
 
 

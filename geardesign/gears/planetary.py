@@ -35,11 +35,11 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import one_number, require_choice, require_int, require_positive, require_range
+from ..validate import one_number, require_choice, require_count, require_positive, require_range
 from . import checks as _checks
-from .geometry import (Geometry, mesh_geometry, mesh_geometry_float, min_center_distance, require_module,
+from .geometry import (X_ABS_MAX, Geometry, mesh_geometry, mesh_geometry_float, min_center_distance, require_module,
                        validate_geometry)
-from .mesh import Mesh
+from .mesh import Z_MAX, Z_MIN, Mesh
 from .rack import STANDARD_RACK, BasicRack
 
 __all__ = ["PlanetarySet", "PlanetaryMeshes", "ARRANGEMENTS", "N_PLANETS_RANGE", "MeshCheck", "Neighbours",
@@ -110,8 +110,8 @@ class PlanetaryMeshes:
 
     def __post_init__(self):
         for name in ("z_sun", "z_planet", "z_ring"):
-            object.__setattr__(self, name, int(require_int(name, getattr(self, name), 3, 100_000)))
-        object.__setattr__(self, "n_planets", int(require_int("n_planets", self.n_planets, *N_PLANETS_RANGE)))
+            object.__setattr__(self, name, require_count(name, getattr(self, name), Z_MIN, Z_MAX))
+        object.__setattr__(self, "n_planets", require_count("n_planets", self.n_planets, *N_PLANETS_RANGE))
         if self.z_ring <= self.z_planet:
             raise GearDesignError(f"z_ring must exceed z_planet (the ring is internal): z_ring = {self.z_ring} "
                                   f"<= z_planet = {self.z_planet}")
@@ -317,17 +317,18 @@ class Assembly(_checks.Check):
         return 0.0, 0.0
 
 
-def set_checks(meshes: PlanetaryMeshes, checks=None) -> tuple:
+def set_checks(meshes: PlanetaryMeshes, checks=None, cutter=None) -> tuple:
     """The checks of a set, each named by its mesh ("sun-planet:undercut_sun",
     "planet-ring:ring_tip", "set:neighbours"): ``checks`` None (the defaults of both meshes and
     ``neighbours`` at 0.5 m), or a dict of :func:`~geardesign.gears.checks.make_checks` options
-    for both meshes plus ``neighbour_clearance`` (in modules; None drops the check)."""
+    for both meshes plus ``neighbour_clearance`` (in modules; None drops the check); ``cutter``: the
+    :class:`~geardesign.gears.ring.ShaperCutter` of the ring (None: the standard one for the module)."""
     opts = {} if checks is None else dict(checks) if isinstance(checks, dict) else None
     if opts is None:
         raise GearDesignError(f"checks of a planetary set must be None or a dict of options, got {checks!r}")
     clearance = opts.pop("neighbour_clearance", DEFAULT_NEIGHBOUR_CLEARANCE)
     sp = _checks.resolve_checks(opts or None, internal=False)
-    pr = _checks.resolve_checks(opts or None, internal=True)
+    pr = _checks.resolve_checks({**opts, "cutter": cutter} if cutter is not None else opts or None, internal=True)
     # the planet's undercut and tip thickness are one condition in both meshes: kept once
     out = [MeshCheck(inner=c, mesh="sun-planet") for c in sp]
     out += [MeshCheck(inner=c, mesh="planet-ring") for c in pr if c.name not in ("undercut1", "tip_thickness1")]
@@ -352,6 +353,7 @@ class PlanetarySet:
         or "sun_fixed" (ring in, carrier out).
     planet_angles_deg : carrier angles of the planets from planet 1 for unequal spacing (None:
         equally spaced).
+    cutter : the ring's :class:`~geardesign.gears.ring.ShaperCutter` (None: the standard one).
 
     >>> s = PlanetarySet(1.75, 21, 43, 108, 3, 0.438, 0.0426, 0.0)     # LECAD's test run
     >>> round(s.ratio, 5), round(s.a_w, 3), round(s.a_w_planet_ring, 3)   # printed 6.14286, a = 56.8
@@ -370,12 +372,14 @@ class PlanetarySet:
     beta_deg: float = 0.0
     arrangement: str = "ring_fixed"
     planet_angles_deg: tuple | None = None
+    cutter: object = None
     meshes: PlanetaryMeshes = field(init=False, repr=False)
 
     def __post_init__(self):
         object.__setattr__(self, "m", float(one_number("m (module)", require_module(self.m))))
         for name in ("x_sun", "x_planet", "x_ring"):
-            object.__setattr__(self, name, float(one_number(name, require_range(name, getattr(self, name), -10, 10))))
+            object.__setattr__(self, name, float(one_number(name, require_range(name, getattr(self, name),
+                                                                                  -X_ABS_MAX, X_ABS_MAX))))
         require_choice("arrangement", self.arrangement, tuple(ARRANGEMENTS))
         meshes = PlanetaryMeshes(self.z_sun, self.z_planet, self.z_ring, self.n_planets, self.rack, self.beta_deg,
                                  self.planet_angles_deg)
@@ -418,7 +422,10 @@ class PlanetarySet:
         """The set whose ring shift makes both meshes' a_w equal, for given sun and planet shifts."""
         meshes = PlanetaryMeshes(z_sun, z_planet, z_ring, n_planets, kw.get("rack", STANDARD_RACK),
                                  kw.get("beta_deg", 0.0))
-        geo = set_geometry(meshes, float(m), float(x_sun), float(x_planet))
+        m = float(one_number("m (module)", require_module(m)))
+        x_sun, x_planet = (float(one_number(n, require_range(n, v, -X_ABS_MAX, X_ABS_MAX)))
+                           for n, v in (("x_sun", x_sun), ("x_planet", x_planet)))
+        geo = set_geometry(meshes, m, x_sun, x_planet)
         x_ring = geo["x_ring"]
         if not math.isfinite(x_ring):
             a_min = float(min_center_distance(m, z_planet, z_ring, meshes.rack, meshes.beta_deg, internal=True))
@@ -434,7 +441,7 @@ class PlanetarySet:
         if coaxiality_tol_mm is not None:
             coaxiality_tol_mm = one_number("coaxiality_tol_mm", require_positive("coaxiality_tol_mm",
                                                                                  coaxiality_tol_mm, unit="mm"))
-        cs = set_checks(self.meshes, checks) + (Coaxiality(tol_mm=coaxiality_tol_mm), Assembly(meshes=self.meshes))
+        cs = set_checks(self.meshes, checks, self.cutter) + (Coaxiality(tol_mm=coaxiality_tol_mm), Assembly(meshes=self.meshes))
         table = _checks.evaluate(self._geo, cs)
         table.insert(1, "mesh", [c.split(":", 1)[0] for c in table["check"]])
         table["margin"] = table["margin"].where(table["margin"].abs() > 1e-12, 0.0)

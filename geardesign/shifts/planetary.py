@@ -68,11 +68,11 @@ class PlanetaryProblem(Problem):
     """The shift problem of a planetary set (see the module docstring)."""
 
     def __init__(self, meshes: PlanetaryMeshes, m, checks=None, objective="max_x_sum", x_sum=None,
-                 check_list=None):
+                 check_list=None, cutter=None):
         self.meshes = meshes
         self.mesh = meshes.sun_planet
         self.m = float(m)
-        self.checks = set_checks(meshes, checks) if check_list is None else tuple(check_list)
+        self.checks = set_checks(meshes, checks, cutter) if check_list is None else tuple(check_list)
         self.sgn = 1
         objective = objective if isinstance(objective, _SetObjective) else _SetObjective(
             default_objective(objective, x_sum_fixed=False))
@@ -181,14 +181,15 @@ class PlanetaryShiftResult(Result):
 
 
 def _problem(z_sun, z_planet, z_ring, n_planets, m, objective, checks, rack, beta_deg, planet_angles_deg, a_w,
-             bounds) -> PlanetaryProblem:
+             bounds, cutter=None) -> PlanetaryProblem:
     """Validated inputs as a problem; a fixed ``a_w`` fixes x_s + x_p (one free shift)."""
     from ..gears.geometry import require_module
 
     m = one_number("m (module)", require_module(m))
     meshes = PlanetaryMeshes(z_sun, z_planet, z_ring, n_planets, rack, beta_deg,
                              None if planet_angles_deg is None else tuple(planet_angles_deg))
-    prob = PlanetaryProblem(meshes, m, checks, default_objective(objective, x_sum_fixed=a_w is not None))
+    prob = PlanetaryProblem(meshes, m, checks, default_objective(objective, x_sum_fixed=a_w is not None),
+                            cutter=cutter)
     if a_w is not None:
         prob.x_sum = x_sum_for_housing(prob, a_w, bounds)
         a_min = float(min_center_distance(m, meshes.z_planet, meshes.z_ring, meshes.rack, meshes.beta_deg,
@@ -203,7 +204,7 @@ def _problem(z_sun, z_planet, z_ring, n_planets, m, objective, checks, rack, bet
 def optimize_planetary_shifts(z_sun, z_planet, z_ring, n_planets, m, a_w=None, objective=None, checks=None,
                               method: str = "exact", tol: float | None = None, rack=None, beta_deg: float = 0.0,
                               bounds=DEFAULT_BOUNDS, grid_n: int | None = None, arrangement: str = "ring_fixed",
-                              planet_angles_deg=None) -> PlanetaryShiftResult:
+                              planet_angles_deg=None, cutter=None) -> PlanetaryShiftResult:
     """The best shifts of a planetary set's three gears, both meshes coaxial.
 
     Parameters
@@ -220,6 +221,7 @@ def optimize_planetary_shifts(z_sun, z_planet, z_ring, n_planets, m, a_w=None, o
         window bounds x_sun and x_planet.
     arrangement : which member is fixed, for the ratio (see
         :data:`~geardesign.gears.planetary.ARRANGEMENTS`).  planet_angles_deg : unequal spacing.
+    cutter : the ring's :class:`~geardesign.gears.ring.ShaperCutter` (None: the standard one).
 
     >>> r = optimize_planetary_shifts(21, 43, 108, 3, 1.75, a_w=56.8)      # LECAD's set at its a_w
     >>> r.success, abs(r.a_w - r.a_w_planet_ring) < 1e-9
@@ -236,7 +238,7 @@ def optimize_planetary_shifts(z_sun, z_planet, z_ring, n_planets, m, a_w=None, o
     if grid_n is not None:
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
     prob = _problem(z_sun, z_planet, z_ring, n_planets, m, objective, checks, rack, beta_deg, planet_angles_deg,
-                    a_w, bounds)
+                    a_w, bounds, cutter)
     if prob.objective.kind == "margin" and not prob.checks:
         raise GearDesignError("objective 'max_margin' needs at least one check, got none")
     out = solve_problem(prob, method, bounds, tol, grid_n)
@@ -279,7 +281,7 @@ def _result(prob: PlanetaryProblem, out, method, tol, a_w, arrangement, t0) -> P
 
 def planetary_region(z_sun, z_planet, z_ring, n_planets, m, checks=None, method: str = "exact",
                      tol: float | None = None, rack=None, beta_deg: float = 0.0, bounds=DEFAULT_BOUNDS,
-                     n: int | None = None) -> Region:
+                     n: int | None = None, cutter=None) -> Region:
     """The region of (x_sun, x_planet) where every check of both meshes and ``neighbours`` holds,
     x_ring following from coaxiality; its boundary labelled with each check and its mesh. Like
     :func:`~geardesign.shifts.region.feasible_region` (``.plot()`` draws it, sun–planet checks
@@ -297,6 +299,5 @@ def planetary_region(z_sun, z_planet, z_ring, n_planets, m, checks=None, method:
     lo, hi = validate_bounds(bounds)
     n = 321 if n is None else require_count("n", n, 11, REGION_N_MAX)
     prob = _problem(z_sun, z_planet, z_ring, n_planets, m, "max_x_sum", checks, rack, beta_deg, None, None,
-                    (lo, hi))
-    reg = region_of(prob, method, tol, (lo, hi), n)
-    return reg
+                    (lo, hi), cutter)
+    return region_of(prob, method, tol, (lo, hi), n)

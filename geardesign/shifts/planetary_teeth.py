@@ -24,7 +24,7 @@ import pandas as pd
 from ..errors import GearDesignError
 from ..gears.planetary import ARRANGEMENTS, N_PLANETS_RANGE, planetary_ratio
 from ..results import Result
-from ..validate import one_number, require_choice, require_int, require_positive, require_range
+from ..validate import one_number, require_choice, require_count, require_positive, require_range
 from .objectives import resolve_objective
 from .optimize import METHODS
 from .planetary import optimize_planetary_shifts
@@ -107,8 +107,8 @@ def _candidates(ratio, ratio_tol, n_planets, z_sun_range, nonstandard_max, arran
 
 def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_range=(12, 40),
                            nonstandard_max: int = 2, arrangement: str = "ring_fixed", objective=DEFAULT_OBJECTIVE,
-                           checks=None, method: str = "exact", rack=None, beta_deg: float = 0.0
-                           ) -> PlanetaryTeethSelection:
+                           checks=None, method: str = "exact", rack=None, beta_deg: float = 0.0,
+                           cutter=None) -> PlanetaryTeethSelection:
     """Every (z_sun, z_planet, z_ring) for ``ratio`` (n_in/n_out of ``arrangement``; for
     "carrier_fixed" the ring turns the other way and ±ratio are the same), standard and
     non-standard, with the shifts that make each fit, ranked (see the module docstring).
@@ -126,12 +126,12 @@ def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_r
         raise GearDesignError(f"ratio = {ratio:g} cannot be made by a simple planetary set with the {arrangement} "
                               f"arrangement: it must be {allowed}")
     ratio_tol = one_number("ratio_tol", require_range("ratio_tol", ratio_tol, 0.0, 0.5))
-    n_planets = int(require_int("n_planets", n_planets, *N_PLANETS_RANGE))
-    nonstandard_max = int(require_int("nonstandard_max", nonstandard_max, *NONSTANDARD_MAX_RANGE))
-    try:
-        zlo, zhi = (int(require_int("z_sun_range", v, *Z_SUN_RANGE_LIMIT)) for v in z_sun_range)
-    except (TypeError, ValueError):
-        raise GearDesignError(f"z_sun_range must be (lo, hi) whole numbers, got {z_sun_range!r}") from None
+    n_planets = require_count("n_planets", n_planets, *N_PLANETS_RANGE)
+    nonstandard_max = require_count("nonstandard_max", nonstandard_max, *NONSTANDARD_MAX_RANGE)
+    if isinstance(z_sun_range, (str, bytes, dict)) or not hasattr(z_sun_range, "__len__") or len(z_sun_range) != 2:
+        raise GearDesignError(f"z_sun_range must be (lo, hi) whole numbers in [{Z_SUN_RANGE_LIMIT[0]}, "
+                              f"{Z_SUN_RANGE_LIMIT[1]}], got {z_sun_range!r}")
+    zlo, zhi = (require_count("z_sun_range", v, *Z_SUN_RANGE_LIMIT) for v in z_sun_range)
     if zlo > zhi:
         raise GearDesignError(f"z_sun_range must be (lo, hi) with lo <= hi, got {z_sun_range!r}")
     method = require_choice("method", method, METHODS)
@@ -166,7 +166,7 @@ def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_r
             try:
                 r = optimize_planetary_shifts(int(z_s[i]), int(z_p[i]), int(z_r[i]), n_planets, m, objective=obj,
                                               checks=checks, method=method, rack=rack, beta_deg=beta_deg,
-                                              arrangement=arrangement)
+                                              arrangement=arrangement, cutter=cutter)
             except GearDesignError as exc:
                 row["reason"] = str(exc)
             else:
