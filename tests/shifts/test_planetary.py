@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 import geardesign as gd
 from geardesign.gears import checks as ck
@@ -171,3 +172,18 @@ def test_tooth_count_search_rows_check_out():
 def test_tooth_count_search_refuses_by_name(kw, words):
     with pytest.raises(gd.GearDesignError, match=words):
         gd.select_planetary_teeth(n_planets=3, m=2.0, **kw)
+
+
+@settings(max_examples=12, deadline=None, derandomize=True, database=None)
+@given(z_s=st.integers(12, 40), z_p=st.integers(12, 40), d=st.integers(-2, 2), n=st.sampled_from([3, 4]),
+       objective=st.sampled_from(["max_eps_alpha", "balanced_sliding", "max_x_sum"]))
+def test_every_optimum_is_coaxial_and_holds_every_check(z_s, z_p, d, n, objective):
+    z_r = z_s + 2 * z_p + d
+    r = gd.optimize_planetary_shifts(z_s, z_p, z_r, n, 2.0, objective=objective)
+    if not r.success:
+        assert r.conflict and all(":" in c for c in r.conflict)
+        return
+    assert abs(r.a_w - r.a_w_planet_ring) < 1e-9
+    s = gd.PlanetarySet(2.0, z_s, z_p, z_r, n, r.x_sun, r.x_planet, r.x_ring)
+    t = s.checks(coaxiality_tol_mm=1e-9)
+    assert (t["margin"] >= -1e-9).all(), t[t["margin"] < -1e-9]
