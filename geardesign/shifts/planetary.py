@@ -223,9 +223,11 @@ def optimize_planetary_shifts(z_sun, z_planet, z_ring, n_planets, m, a_w=None, o
         :data:`~geardesign.gears.planetary.ARRANGEMENTS`).  planet_angles_deg : unequal spacing.
     cutter : the ring's :class:`~geardesign.gears.ring.ShaperCutter` (None: the standard one).
 
-    >>> r = optimize_planetary_shifts(21, 43, 108, 3, 1.75, a_w=56.8)      # LECAD's set at its a_w
-    >>> r.success, abs(r.a_w - r.a_w_planet_ring) < 1e-9
-    (True, True)
+    >>> r = optimize_planetary_shifts(21, 43, 108, 3, 1.75, objective="max_eps_alpha")   # LECAD's teeth
+    >>> round(r.x_sun, 4), round(r.x_planet, 4), round(r.x_ring, 4), abs(r.a_w - r.a_w_planet_ring) < 1e-9
+    (-0.2283, 0.8262, 0.8894, True)
+    >>> optimize_planetary_shifts(21, 43, 108, 3, 1.75, a_w=56.8).conflict     # at LECAD's printed a = 56.8 mm
+    ['sun-planet:undercut_sun', 'planet-ring:interference_planet']
     """
     t0 = time.perf_counter()
     method = require_choice("method", method, METHODS)

@@ -114,8 +114,9 @@ def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_r
     non-standard, with the shifts that make each fit, ranked (see the module docstring).
 
     >>> sel = select_planetary_teeth(5.0, 3, 2.0, ratio_tol=0.0, z_sun_range=(18, 18), nonstandard_max=0)
-    >>> sel.best[["z_sun", "z_planet", "z_ring", "standard"]].tolist()    # 1 + 72/18 = 5, (18 + 72)/3 = 30
-    [18, 27, 72, True]
+    >>> b = sel.best                       # 1 + 72/18 = 5, (18 + 72)/3 = 30: the standard set
+    >>> int(b["z_sun"]), int(b["z_planet"]), int(b["z_ring"]), bool(b["standard"])
+    (18, 27, 72, True)
     """
     t0 = time.perf_counter()
     ratio = one_number("ratio", require_range("ratio", ratio, -1e4, 1e4))
