@@ -119,6 +119,25 @@ def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_r
     (18, 27, 72, True)
     """
     t0 = time.perf_counter()
+    ratio, ratio_tol, n_planets, nonstandard_max, z_range, arrangement = _validate(
+        ratio, ratio_tol, n_planets, nonstandard_max, z_sun_range, arrangement)
+    method = require_choice("method", method, METHODS)
+    obj = resolve_objective(objective)
+    m = float(one_number("m (module)", require_positive("m (module)", m, unit="mm")))
+    table = _screen(_candidates(ratio, ratio_tol, n_planets, z_range, nonstandard_max, arrangement),
+                    ratio, n_planets, arrangement)
+    todo = table.index[table["reason"] == ""]
+    if todo.size > PLANETARY_SOLVES_MAX:
+        raise GearDesignError(f"{todo.size} tooth-count candidates to solve, more than {PLANETARY_SOLVES_MAX}: "
+                              f"narrow z_sun_range, ratio_tol or nonstandard_max")
+    for i in todo:
+        _solve_row(table, i, n_planets, m, dict(objective=obj, checks=checks, method=method, rack=rack,
+                                                 beta_deg=beta_deg, arrangement=arrangement, cutter=cutter))
+    return PlanetaryTeethSelection(_rank(table, obj.sense), ratio, ratio_tol, n_planets, m, arrangement, obj.name,
+                                   method, n_solved=int(todo.size), time_s=time.perf_counter() - t0)
+
+
+def _validate(ratio, ratio_tol, n_planets, nonstandard_max, z_sun_range, arrangement):
     ratio = one_number("ratio", require_range("ratio", ratio, -1e4, 1e4))
     arrangement = require_choice("arrangement", arrangement, tuple(ARRANGEMENTS))
     if arrangement == "ring_fixed" and not ratio > 1 or arrangement == "sun_fixed" and not 1 < ratio < 2 \
@@ -135,54 +154,49 @@ def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_r
     zlo, zhi = (require_count("z_sun_range", v, *Z_SUN_RANGE_LIMIT) for v in z_sun_range)
     if zlo > zhi:
         raise GearDesignError(f"z_sun_range must be (lo, hi) with lo <= hi, got {z_sun_range!r}")
-    method = require_choice("method", method, METHODS)
-    obj = resolve_objective(objective)
-    m = float(one_number("m (module)", require_positive("m (module)", m, unit="mm")))
+    return ratio, ratio_tol, n_planets, nonstandard_max, (zlo, zhi), arrangement
 
-    cand = _candidates(ratio, ratio_tol, n_planets, (zlo, zhi), nonstandard_max, arrangement)
+
+_COLUMNS = ["z_sun", "z_planet", "z_ring", "standard", "ratio", "ratio_error", "feasible", "x_sun", "x_planet",
+            "x_ring", "a_w", "eps_alpha_sun_planet", "eps_alpha_planet_ring", "fun", "reason"]
+
+
+def _screen(cand, ratio, n_planets, arrangement) -> pd.DataFrame:
+    """One row per candidate; the reason for those that no shift can save: planets that cannot be
+    assembled, or that overlap with tips at zero shift (the planet's tip grows with its shift as
+    fast as a_w does: 2 a sin(π/N) > d_p + 2m is needed)."""
     z_s, z_p, z_r = (cand[:, k] for k in range(3))
     ratios = planetary_ratio(z_s, z_r, arrangement) if len(cand) else np.zeros(0)
-    ratio_error = (np.abs(ratios) - abs(ratio)) / abs(ratio) if len(cand) else np.zeros(0)
-    assembles = ((z_s + z_r) % n_planets == 0)
-    # planets that overlap with tips at zero shift cannot be saved by the shifts this rule allows
-    # for (the planet's tip grows with its shift as fast as a_w): 2 a sin(π/N) > d_p + 2 m
-    a_ref = (z_s + z_p) / 2.0
-    fits = (n_planets == 1) | (2 * a_ref * math.sin(math.pi / n_planets) > z_p + 2.0)
-    todo = np.flatnonzero(assembles & fits)
-    if todo.size > PLANETARY_SOLVES_MAX:
-        raise GearDesignError(f"{todo.size} tooth-count candidates to solve, more than {PLANETARY_SOLVES_MAX}: "
-                              f"narrow z_sun_range, ratio_tol or nonstandard_max")
-    rows = []
-    for i in range(len(cand)):
-        row = dict(z_sun=int(z_s[i]), z_planet=int(z_p[i]), z_ring=int(z_r[i]),
-                   standard=bool(z_r[i] == z_s[i] + 2 * z_p[i]), ratio=float(ratios[i]),
-                   ratio_error=float(ratio_error[i]), feasible=False, x_sun=math.nan, x_planet=math.nan,
-                   x_ring=math.nan, a_w=math.nan, eps_alpha_sun_planet=math.nan, eps_alpha_planet_ring=math.nan,
-                   fun=math.nan, reason="")
-        if not assembles[i]:
-            row["reason"] = (f"set:assembly: (z_s + z_r)/N = {(z_s[i] + z_r[i]) / n_planets:.4g} is not whole")
-        elif not fits[i]:
-            row["reason"] = "set:neighbours: the planets overlap whatever the shifts"
-        else:
-            try:
-                r = optimize_planetary_shifts(int(z_s[i]), int(z_p[i]), int(z_r[i]), n_planets, m, objective=obj,
-                                              checks=checks, method=method, rack=rack, beta_deg=beta_deg,
-                                              arrangement=arrangement, cutter=cutter)
-            except GearDesignError as exc:
-                row["reason"] = str(exc)
-            else:
-                row.update(feasible=bool(r.success), x_sun=r.x_sun, x_planet=r.x_planet, x_ring=r.x_ring,
-                           a_w=r.a_w, eps_alpha_sun_planet=r.eps_alpha_sun_planet,
-                           eps_alpha_planet_ring=r.eps_alpha_planet_ring, fun=r.fun,
-                           reason="" if r.success else f"checks {', '.join(r.conflict)} conflict")
-        rows.append(row)
-    table = pd.DataFrame(rows, columns=list(rows[0]) if rows else
-                         ["z_sun", "z_planet", "z_ring", "standard", "ratio", "ratio_error", "feasible", "x_sun",
-                          "x_planet", "x_ring", "a_w", "eps_alpha_sun_planet", "eps_alpha_planet_ring", "fun",
-                          "reason"])
-    if not table.empty:
-        key = pd.DataFrame({"inf": ~table["feasible"], "err": table["ratio_error"].abs().round(12),
-                            "fun": (-obj.sense * table["fun"]).fillna(np.inf), "zr": table["z_ring"]})
-        table = table.loc[key.sort_values(["inf", "err", "fun", "zr"], kind="stable").index].reset_index(drop=True)
-    return PlanetaryTeethSelection(table, ratio, ratio_tol, n_planets, m, arrangement, obj.name, method,
-                                   n_solved=int(todo.size), time_s=time.perf_counter() - t0)
+    table = pd.DataFrame({"z_sun": z_s, "z_planet": z_p, "z_ring": z_r, "standard": z_r == z_s + 2 * z_p,
+                          "ratio": ratios, "ratio_error": (np.abs(ratios) - abs(ratio)) / abs(ratio),
+                          "feasible": False}, columns=_COLUMNS)
+    for c in _COLUMNS[7:-1]:
+        table[c] = np.nan
+    q = (z_s + z_r) / n_planets
+    fits = (n_planets == 1) | ((z_s + z_p) * math.sin(math.pi / n_planets) > z_p + 2.0)
+    table["reason"] = np.where(q != np.round(q), [f"set:assembly: (z_s + z_r)/N = {v:.4g} is not whole" for v in q],
+                               np.where(fits, "", "set:neighbours: the planets overlap whatever the shifts"))
+    return table
+
+
+def _solve_row(table, i, n_planets, m, kw) -> None:
+    row = table.loc[i]
+    try:
+        r = optimize_planetary_shifts(int(row["z_sun"]), int(row["z_planet"]), int(row["z_ring"]), n_planets, m, **kw)
+    except GearDesignError as exc:
+        table.loc[i, "reason"] = str(exc)
+        return
+    table.loc[i, ["feasible", "x_sun", "x_planet", "x_ring", "a_w", "eps_alpha_sun_planet", "eps_alpha_planet_ring",
+                  "fun", "reason"]] = [bool(r.success), r.x_sun, r.x_planet, r.x_ring, r.a_w, r.eps_alpha_sun_planet,
+                                       r.eps_alpha_planet_ring, r.fun,
+                                       "" if r.success else f"checks {', '.join(r.conflict)} conflict"]
+
+
+def _rank(table, sense) -> pd.DataFrame:
+    """Feasible first, the smaller |ratio error|, the better objective, the smaller ring."""
+    if table.empty:
+        return table
+    table["feasible"] = table["feasible"].astype(bool)
+    key = pd.DataFrame({"inf": ~table["feasible"], "err": table["ratio_error"].abs().round(12),
+                        "fun": (-sense * table["fun"]).fillna(np.inf), "zr": table["z_ring"]})
+    return table.loc[key.sort_values(["inf", "err", "fun", "zr"], kind="stable").index].reset_index(drop=True)
