@@ -18,12 +18,13 @@ Modelling choices (written down here, once):
   for the ring and the ring's tip against the planet's root; the planet's undercut and tip
   thickness are the same condition in both meshes and are kept once (in the sun–planet mesh).
 * ``neighbours``: adjacent planets' tip circles clear each other, 2 a_w sin(π/N) − d_a,p >=
-  clearance (default 0.5·m: "often 0.5 m … m", docs/research/internal_helical.md §6).
-* ``assembly``: N equally spaced planets can be put in when (z_s + z_r)/N is whole; planets at
-  carrier angles θ_k (unequal spacing) when every (z_s + z_r)·θ_k/360° is whole (the phasing
-  condition of a simple planetary set: a planet can sit wherever the sun and ring teeth are in
-  the same phase as at planet 1; Müller, *Epicyclic Drive Trains*, §2; KHK Gear Technical
-  Reference, planetary gear mechanism).
+  clearance (SDP/SI–KHK *Elements of Metric Gear Technology* D785 §13.3.1 eq. (13-9), (13-10) ask
+  d_a,p < 2 a sin(π/N); the default clearance of 0.5·m is a shop rule, see
+  docs/research/planetary.md §3).
+* ``assembly``: N equally spaced planets can be put in when (z_s + z_r)/N is whole (D785 eq.
+  (13-7)); planets at carrier angles θ_k (unequal spacing) when every (z_s + z_r)·θ_k/360° is
+  whole (D785 eq. (13-8), written for the angle from planet 1: a planet sits wherever the sun
+  and ring teeth are in the phase they have at planet 1).
 * ``coaxiality`` (given shifts): |a_w,sp − a_w,pr| <= tol, 1e-3·m by default (the housing
   tolerance of :class:`~geardesign.gears.checks.CenterDistance`).
 """
