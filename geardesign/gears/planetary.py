@@ -20,7 +20,7 @@ Modelling choices (written down here, once):
 * ``neighbours``: adjacent planets' tip circles clear each other, 2 a_w sin(π/N) − d_a,p >=
   clearance (SDP/SI–KHK *Elements of Metric Gear Technology* D785 §13.3.1 eq. (13-9), (13-10) ask
   d_a,p < 2 a sin(π/N); the default clearance of 0.5·m is a shop rule, see
-  docs/research/planetary.md §3).
+  docs/research/planetary.md §4).
 * ``assembly``: N equally spaced planets can be put in when (z_s + z_r)/N is whole (D785 eq.
   (13-7)); planets at carrier angles θ_k (unequal spacing) when every (z_s + z_r)·θ_k/360° is
   whole (D785 eq. (13-8), written for the angle from planet 1: a planet sits wherever the sun
