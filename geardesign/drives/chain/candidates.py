@@ -597,13 +597,15 @@ def _limiting_check(c: Candidates, checks: list) -> None:
     c["feasible"] = ~no_data.any(axis=1) & (min_margin >= 0)
 
 
-def evaluate(c: Candidates, inp: Inputs, tables: ReferenceTables) -> tuple[list, list]:
+def evaluate(c: Candidates, inp: Inputs, tables: ReferenceTables, summary: bool = True) -> tuple[list, list]:
     """Every check of every candidate, vectorised: layout, speed limits, safety, the method's checks.
 
     ``inp.n1``, ``inp.power_w`` and ``inp.torque`` are one load for all candidates (:func:`design`)
     or arrays aligned with them (a drive, where each candidate's load follows the ratio split
     upstream; see :func:`with_loads`): the same formulas either way, and a speed above every
     chain's limit then fails the speed check of those candidates instead of stopping the design.
+    ``summary=False`` leaves out min_margin, limiting_check and feasible (a caller that combines
+    the margins with its own checks computes them itself).
 
     Returns (checks, notes): the margin columns that decide feasibility, in report order, and
     the notes about table ranges.
@@ -618,5 +620,6 @@ def evaluate(c: Candidates, inp: Inputs, tables: ReferenceTables) -> tuple[list,
     else:
         checks = (_power_checks(c, inp, tables, notes) + cd_check
                   + (["margin_safety"] if inp.allowable_safety_factor is not None else []))
-    _limiting_check(c, checks)
+    if summary:
+        _limiting_check(c, checks)
     return checks, notes
