@@ -450,9 +450,11 @@ class Drive:
                 z1, z2 = st.pairs(w_lo, w_hi)
                 ratio = z2 / z1
             if ratio.size == 0:
+                reach = (math.prod(a for a, _ in span), math.prod(b for _, b in span))
                 return self._no_split(U, tol, objective, t0,
                                       f"stage '{st.name}' has no option with a ratio in [{w_lo:.4g}, {w_hi:.4g}], "
-                                      f"the window the other stages leave it for u = {U:g} ± {100 * tol:g} %")
+                                      f"the window the other stages leave it for u = {U:g} ± {100 * tol:g} % "
+                                      f"(the stages' ratio ranges reach u in [{reach[0]:.4g}, {reach[1]:.4g}])")
             options.append(dict(z1=z1, z2=z2, ratio=ratio))
 
         # 2. ratio combinations inside the window (one option per stage)
