@@ -250,7 +250,7 @@ class Drive:
 
     ``motor`` (a :class:`~geardesign.drives.motor.MotorSelection` or its ``.motor`` row) sets the
     input speed to its rated speed and, when no load is given, the power to its rated power; the
-    motor then has a check ``power``: 1 − P_in/P_rated.
+    motor then has a check ``power``: 1 − P_in/P_rated (when the load is given, not taken from it).
     """
 
     stages: tuple
@@ -259,6 +259,7 @@ class Drive:
     output_torque_nm: float | None = None
     shafts: tuple = ()
     motor: object = None
+    _load_from_motor: bool = field(default=False, init=False, repr=False, compare=False)
 
     def __post_init__(self):
         stages = tuple(self.stages) if isinstance(self.stages, (list, tuple)) else None
@@ -281,6 +282,7 @@ class Drive:
                 object.__setattr__(self, "n_in_rpm", float(motor["rated_speed_rpm"]))
             if self.power_kw is None and self.output_torque_nm is None:
                 object.__setattr__(self, "power_kw", float(motor["power_kw"]))
+                object.__setattr__(self, "_load_from_motor", True)
         if self.n_in_rpm is None:
             raise GearDesignError("n_in_rpm is required (or a motor)")
         object.__setattr__(self, "n_in_rpm", one_number("n_in_rpm", require_range(
@@ -310,7 +312,7 @@ class Drive:
         return power_flow(self.n_in_rpm, ratios, self._efficiencies(), self.power_kw, self.output_torque_nm)
 
     def _motor_margins(self, power_in_kw) -> dict:
-        if self.motor is None:
+        if self.motor is None or self._load_from_motor:   # its own rated power: nothing to check
             return {}
         return {"power": 1.0 - np.asarray(power_in_kw, dtype=float) / float(self.motor["power_kw"])}
 
@@ -731,7 +733,9 @@ class Drive:
                                    strands=(int(ci["strands"][c]),), _inputs=None))
             else:
                 new.append(st)
-        return replace(self, stages=tuple(new))
+        fixed = replace(self, stages=tuple(new))
+        object.__setattr__(fixed, "_load_from_motor", self._load_from_motor)
+        return fixed
 
 
 @lru_cache(maxsize=256)
