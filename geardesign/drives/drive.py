@@ -229,7 +229,8 @@ class DriveOptimum(Result):
         out = {f: getattr(self, f) for f in ("success", "message", "objective", "total_ratio", "ratio_tol",
                                              "conflict", "n_combinations", "n_candidates", "n_shift_solves",
                                              "time_s")}
-        out.update(status=self.status, table=self.table, best=None if self.best is None else self.best.to_dict())
+        records = [{k: (None if v is pd.NA else v) for k, v in r.items()} for r in self.table.to_dict("records")]
+        out.update(status=self.status, table=records, best=None if self.best is None else self.best.to_dict())
         return plain(out)
 
     def __repr__(self) -> str:
@@ -691,6 +692,8 @@ class Drive:
             if not conflict:
                 conflict = tuple(fails)
         table = pd.DataFrame(rows)
+        if len(table):
+            table["rank"] = table["rank"].astype("Int64")     # failing designs have no rank
         if feas.size:
             c = feas[0]
             best = self._fixed(c, idx, options, chain_info, objective).analyse(objective)

@@ -11,7 +11,7 @@ from ..errors import GearDesignError
 
 __all__ = ["SECTIONS", "section_schema", "validate_table", "Where", "type_name"]
 
-SECTIONS = ("gear", "teeth", "chain", "key", "study")
+SECTIONS = ("gear", "teeth", "chain", "key", "study", "drive")
 
 
 @dataclass(frozen=True)
@@ -160,7 +160,8 @@ def _study_schema() -> dict:
 
 
 _BUILDERS = {"": lambda: {"title": _Key("str"), "description": _Key("str")}, "gear": _gear_schema,
-             "teeth": _teeth_schema, "chain": _chain_schema, "key": _key_schema, "study": _study_schema}
+             "teeth": _teeth_schema, "chain": _chain_schema, "key": _key_schema, "study": _study_schema,
+             "drive": lambda: __import__("geardesign.scene.drive", fromlist=["drive_schema"]).drive_schema("")}
 
 
 @functools.cache
