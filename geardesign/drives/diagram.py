@@ -32,7 +32,9 @@ def plot_drive(analysis, ax=None):
     drive = analysis.drive
     label = (f"motor\n{drive.motor['designation']}" if drive is not None and drive.motor is not None else "input")
     box(0.0, 1.2, 0.9, _COLORS["input"], f"{label}\n{flow['power_kw'].iloc[0]:.3g} kW")
-    xs = [1.35]                      # shaft k at xs[k], seen end-on: the wheels turn about them
+    first = stages[0]["summary"] if stages else {"kind": "given"}
+    r_first = {"gear": 0.9 / max(1.0, first.get("ratio", 1.0)), "chain": 0.35}.get(first["kind"], 0.0)
+    xs = [1.35 + r_first]            # shaft k at xs[k], seen end-on: the wheels turn about them
     for st in stages:
         s = st["summary"]
         x = xs[-1]
