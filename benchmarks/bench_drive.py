@@ -67,7 +67,7 @@ def main():
         plain = per_combo * r.n_combinations
         print(f"{objective:12} {first:7.3f} ({first_cpu:6.3f}) {repeat:7.3f} ({repeat_cpu:6.3f}) "
               f"{r.n_combinations:12d} {r.n_candidates:9d} {r.n_shift_solves:12d} {plain:10.1f} "
-              f"{plain / first:8.0f}x")
+              f"{plain / first_cpu:8.0f}x")
         b = r.table.iloc[0]
         print(f"{'':12} best: gear {b['gear.z1']}/{b['gear.z2']}, chain {b['chain.designation']} "
               f"{b['chain.z1']}/{b['chain.z2']}, u = {b['total_ratio']:.4f}, size {b['size_mm2']:.4g} mm², "
