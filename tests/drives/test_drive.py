@@ -255,3 +255,21 @@ def test_power_flow_is_vectorised():
     t0 = 2000 / _omega(1000)
     assert t[:, 2].tolist() == pytest.approx([t0 * 2 * 0.9 * 3 * 0.8, t0 * 4 * 0.9 * 1 * 0.8], rel=1e-15)
     assert n[:, 2].tolist() == pytest.approx([1000 / 6, 250], rel=1e-15)
+
+
+def test_enumerations_are_bounded_up_front():
+    from geardesign.drives.stages import GEAR_PAIRS_MAX
+    wide = gd.GearStage(1, z1_range=(10, 400), z2_max=4000, ratio_range=(1, 10))
+    with pytest.raises(GearDesignError) as e:
+        gd.Drive(power_kw=1, n_in_rpm=1000, stages=[wide]).optimize(5, ratio_tol=0.5)
+    assert str(GEAR_PAIRS_MAX) in str(e.value) and "z1_range" in str(e.value)
+
+
+def test_helical_stage_flows_through():
+    # a helical pair: the same flow; the tip circles of the solved shifts enter the size
+    st = gd.GearStage(2, beta_deg=15, z1_range=(17, 18), z2_max=60, ratio_range=(2, 3))
+    r = gd.Drive(power_kw=2, n_in_rpm=1000, stages=[st]).optimize(2.5, 0.02)
+    b = r.table.iloc[0]
+    pair = gd.GearPair(2, int(b["gear.z1"]), int(b["gear.z2"]), b["gear.x1"], b["gear.x2"], beta_deg=15)
+    g = pair.geometry()
+    assert b["size_mm2"] == pytest.approx((g.a_w + (g.da1 + g.da2) / 2) * max(g.da1, g.da2), rel=1e-12)
