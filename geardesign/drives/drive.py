@@ -556,7 +556,6 @@ class Drive:
             s, m_ = _gear_bounds(stages[k], options[k]["z1"].astype(float), options[k]["z2"].astype(float))
             lb_size += s[idx[:, k]]
             lb_mass += m_[idx[:, k]]
-        sense = -1.0 if objective == "max_margin" else 1.0
         lb_cost = {"min_size": lb_size, "min_mass": lb_mass, "max_margin": -ng_min}[objective]
         err = np.abs(np.prod(ratios, axis=1) - U) / U
 
@@ -733,7 +732,7 @@ class Drive:
             elif isinstance(st, ChainStage):
                 ci = chain_info[k]
                 new.append(replace(st, z1=int(ci["z1"][c]), z2=int(ci["z2"][c]), designation=str(ci["designation"][c]),
-                                   strands=(int(ci["strands"][c]),), _inputs=None))
+                                   strands=(int(ci["strands"][c]),)))
             else:
                 new.append(st)
         fixed = replace(self, stages=tuple(new))

@@ -232,7 +232,7 @@ class ChainStage:
     ratio_range: tuple = (1.0, 7.0)
     objective: str = "min_mass"
     name: str = "chain"
-    _inputs: object = field(default=None, repr=False, compare=False)
+    _inputs: object = field(default=None, init=False, repr=False, compare=False)
 
     kind = "chain"
 
