@@ -562,10 +562,11 @@ class Drive:
         group_key = np.zeros(n_cand, dtype=np.int64)
         for k in gear_k:
             group_key = group_key * options[k]["ratio"].size + idx[:, k]
-        lim_names = np.array([f"{a}: {b}" for a, b in names] or [""], dtype=object)
+        # limiting checks and gear reasons as codes into lists (object arrays of ~10⁶ strings are slow)
+        labels = [f"{a}: {b}" for a, b in names] or [""]
         ex = dict(cost=np.full(n_cand, np.nan), mm=np.full(n_cand, np.nan), size=np.full(n_cand, np.nan),
                   mass=np.full(n_cand, np.nan), feas=np.zeros(n_cand, dtype=bool), done=np.zeros(n_cand, dtype=bool),
-                  lim=lim_names[ng_arg], why=np.full(n_cand, "", dtype=object))
+                  lim=ng_arg.astype(np.int64), why=np.full(n_cand, -1, dtype=np.int64), labels=labels, reasons=[])
         heap: list = []          # the `top` best costs so far, as a max-heap of −cost
         cand = np.flatnonzero(ng_ok)
         order = cand[np.argsort(group_key[cand], kind="stable")]
@@ -587,7 +588,7 @@ class Drive:
                     elif -v > heap[0]:
                         heapq.heapreplace(heap, -float(v))
         return self._wrap(U, tol, objective, top, t0, ex, idx, options, chain_info, key_n, ratios, err,
-                          ng_ok, ng_min, names, M, n_comb, n_cand, n_solves, ng_size, ng_mass, lim_names, ng_arg)
+                          ng_ok, ng_min, names, M, n_comb, n_cand, n_solves, ng_size, ng_mass)
 
     # -- optimize helpers
     def _ratio_span(self, st):
@@ -616,9 +617,13 @@ class Drive:
         mm = np.minimum(ng, gmm)
         size, mass = ng_size[members] + gsize, ng_mass[members] + gmass
         ex["size"][members], ex["mass"][members], ex["mm"][members] = size, mass, mm
-        ex["lim"][members] = np.where(gmm < ng, glim, ex["lim"][members])
+        if glim:
+            ex["labels"].append(glim)
+            ex["lim"][members] = np.where(gmm < ng, len(ex["labels"]) - 1, ex["lim"][members])
         ex["feas"][members] = gfeas & (mm >= 0)
-        ex["why"][members] = why
+        if why:
+            ex["reasons"].append(why)
+            ex["why"][members] = len(ex["reasons"]) - 1
         ex["done"][members] = True
         ex["cost"][members] = {"min_size": size, "min_mass": mass, "max_margin": -mm}[objective]
 
@@ -649,7 +654,7 @@ class Drive:
         return row
 
     def _wrap(self, U, tol, objective, top, t0, ex, idx, options, chain_info, key_n, ratios, err, ng_ok, ng_min,
-              names, M, n_comb, n_cand, n_solves, ng_size, ng_mass, lim_names, ng_arg) -> DriveOptimum:
+              names, M, n_comb, n_cand, n_solves, ng_size, ng_mass) -> DriveOptimum:
         gear_k = [k for k, st in enumerate(self.stages) if isinstance(st, GearStage)]
         feas = np.flatnonzero(ex["feas"])
         feas = feas[np.lexsort((ex["size"][feas], np.round(err[feas], 12), np.round(ex["cost"][feas], 9)))]
@@ -657,7 +662,7 @@ class Drive:
         rows = []
         for rank, c in enumerate(feas[:top]):
             row = {"rank": rank + 1, "feasible": True, "size_mm2": ex["size"][c], "mass_kg": ex["mass"][c],
-                   "min_margin": ex["mm"][c], "limiting": ex["lim"][c],
+                   "min_margin": ex["mm"][c], "limiting": ex["labels"][ex["lim"][c]],
                    **self._row(c, idx, options, chain_info, key_n, ratios, err),
                    **self._gear_cols(c, idx, options, gear_k, objective)}
             if rank == 0:
@@ -675,15 +680,15 @@ class Drive:
         conflict: tuple = ()
         for c in bad:
             fails = [f"{names[j][0]}: {names[j][1]} ({M[c, j]:+.3g})" for j in range(len(names)) if not M[c, j] >= 0]
-            if ex["why"][c]:
-                fails.append(ex["why"][c])
+            if ex["why"][c] >= 0:
+                fails.append(ex["reasons"][ex["why"][c]])
             elif ex["done"][c] and ex["mm"][c] < 0 and not fails:
-                fails.append(f"{ex['lim'][c]} ({ex['mm'][c]:+.3g})")
+                fails.append(f"{ex['labels'][ex['lim'][c]]} ({ex['mm'][c]:+.3g})")
             known = bool(ex["done"][c]) or not gear_k
             row = {"rank": None, "feasible": False,
                    "size_mm2": ex["size"][c] if ex["done"][c] else (ng_size[c] if known else np.nan),
                    "mass_kg": ex["mass"][c] if ex["done"][c] else (ng_mass[c] if known else np.nan),
-                   "min_margin": ex["mm"][c] if ex["done"][c] else ng_min[c], "limiting": ex["lim"][c],
+                   "min_margin": ex["mm"][c] if ex["done"][c] else ng_min[c], "limiting": ex["labels"][ex["lim"][c]],
                    **self._row(c, idx, options, chain_info, key_n, ratios, err),
                    **self._gear_cols(c, idx, options, gear_k, objective, solve=bool(ex["done"][c])),
                    "reason": "fails " + "; ".join(fails)}
@@ -698,7 +703,7 @@ class Drive:
             best = self._fixed(c, idx, options, chain_info, objective).analyse(objective)
             msg = (f"u = {float(np.prod(ratios[c])):.6g} ({100 * float(err[c]):.3g} % off): size "
                    f"{ex['size'][c]:.6g} mm², mass {ex['mass'][c]:.4g} kg, smallest margin {ex['mm'][c]:+.4f} "
-                   f"({ex['lim'][c]}); {int(ex['done'].sum())} of {n_cand} designs evaluated in full")
+                   f"({ex['labels'][ex['lim'][c]]}); {int(ex['done'].sum())} of {n_cand} designs evaluated in full")
             conflict = ()
         else:
             best = None
