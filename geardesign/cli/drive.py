@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..errors import GearDesignError
 from .options import add_output_file
-from .output import add_json_flag, print_frame, print_json
+from .output import Progress, add_json_flag, print_frame, print_json
 
 
 def add_parser(subparsers):
@@ -32,7 +32,17 @@ def run(args) -> int:
     if "drive" not in scene:
         raise GearDesignError(f"{args.scene}: no [drive] section (this command runs only that section)")
     target = check_output_path(args.plot, overwrite=args.overwrite) if args.plot else None
-    drive, motor, opt, an = compute_drive(scene.sections["drive"])
+    bar = Progress(1, "drive: gear pairs")
+
+    def progress(done, total):
+        bar.total = max(total, 1)
+        bar.update(done - bar.done)
+
+    try:
+        drive, motor, opt, an = compute_drive(scene.sections["drive"], progress)
+    finally:
+        if bar.done:
+            bar.close()
     if target is not None and an is not None:
         import matplotlib
         matplotlib.use("Agg")

@@ -417,7 +417,7 @@ class Drive:
                              mass_kg=mass, drive=self, key_results=tuple(key_results))
 
     # -- optimize
-    def optimize(self, total_ratio, ratio_tol=0.03, objective="min_size", top=10) -> DriveOptimum:
+    def optimize(self, total_ratio, ratio_tol=0.03, objective="min_size", top=10, progress=None) -> DriveOptimum:
         """The ratio split and every free variable chosen together for ``objective``.
 
         ``min_size``: smallest sum of the stages' side-view envelopes (a + (D1 + D2)/2)·max(D1, D2)
@@ -427,6 +427,8 @@ class Drive:
         plus the chain (mass per metre × length); ``max_margin``: the largest smallest margin of
         every check of the drive. Ties go to the smaller ratio error, then the smaller size.
         The total ratio must hold within ``ratio_tol`` (relative). ``top`` alternatives are listed.
+        ``progress(done, total)`` is called after each group of designs sharing their gear tooth pairs
+        (the walk may stop well before ``total``).
         """
         t0 = time.perf_counter()
         U = one_number("total_ratio", require_range("total_ratio", total_ratio, *TOTAL_RATIO_RANGE))
@@ -580,6 +582,8 @@ class Drive:
                     break      # no design of this or any later group can enter the list
                 members = order[starts[g]:ends[g]]
                 sols = [solution(k, idx[members[0], k]) for k in gear_k]
+                if progress is not None:
+                    progress(int(np.count_nonzero(glb <= glb[g])), starts.size)
                 self._exact(members, sols, gear_k, objective, ng_size, ng_mass, ng_min, ex)
                 costs = np.sort(ex["cost"][members][ex["feas"][members]])[:top]
                 for v in costs:

@@ -179,12 +179,13 @@ def build_drive(section: dict):
     return drive, motor
 
 
-def compute_drive(section: dict):
+def compute_drive(section: dict, progress=None):
     """(Drive, motor selection, DriveOptimum or None, DriveAnalysis or None): optimised with
-    ``total_ratio``, analysed otherwise."""
+    ``total_ratio`` (``progress`` as for Drive.optimize), analysed otherwise."""
     drive, motor = build_drive(section)
     if "total_ratio" in section:
-        opt = drive.optimize(section["total_ratio"], section["ratio_tol"], section["objective"], section["top"])
+        opt = drive.optimize(section["total_ratio"], section["ratio_tol"], section["objective"], section["top"],
+                             progress=progress)
         return drive, motor, opt, opt.best
     return drive, motor, None, drive.analyse(section["objective"])
 

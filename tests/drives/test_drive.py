@@ -273,3 +273,10 @@ def test_helical_stage_flows_through():
     pair = gd.GearPair(2, int(b["gear.z1"]), int(b["gear.z2"]), b["gear.x1"], b["gear.x2"], beta_deg=15)
     g = pair.geometry()
     assert b["size_mm2"] == pytest.approx((g.a_w + (g.da1 + g.da2) / 2) * max(g.da1, g.da2), rel=1e-12)
+
+
+def test_progress_reports_the_walk(small_case):
+    drive, U, tol, _ = small_case
+    calls = []
+    drive.optimize(U, tol, objective="min_size", progress=lambda done, total: calls.append((done, total)))
+    assert calls and all(0 < d <= t for d, t in calls) and [d for d, _ in calls] == sorted(d for d, _ in calls)
