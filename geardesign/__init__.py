@@ -12,7 +12,7 @@ The package is layered; each layer imports only the ones before it:
 - :mod:`geardesign.gears` — involute, rack, mesh, geometry, checks, :class:`GearPair`
 - :mod:`geardesign.shifts` — the shift problem, its methods, region, atlas, tooth counts
 - :mod:`geardesign.profiles` — tooth profiles as the cutter generates them
-- :mod:`geardesign.drives` — sprockets, chains, keys
+- :mod:`geardesign.drives` — sprockets, chains, keys, motors; stages and the linked drive
 - :mod:`geardesign.sensitivity` — sweeps and local sensitivities
 - :mod:`geardesign.scene` — TOML scenes and their reports
 - :mod:`geardesign.cli` — the ``geardesign`` command
@@ -39,12 +39,15 @@ _NAMES = {
     "pair_profiles": "profiles.mesh",
     "PlanetarySet": "gears.planetary", "optimize_planetary_shifts": "shifts.planetary",
     "planetary_region": "shifts.planetary", "select_planetary_teeth": "shifts.planetary_teeth",
+    "Drive": "drives.drive", "GearStage": "drives.stages", "ChainStage": "drives.stages",
+    "GivenStage": "drives.stages", "Shaft": "drives.stages",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {
     "catalogs": "catalogs", "involute": "gears.involute", "checks": "gears.checks", "chain": "drives.chain",
     "key": "drives.key", "sprocket": "drives.sprocket", "studies": "sensitivity.studies", "scene": "scene",
     "gears": "gears", "shifts": "shifts", "drives": "drives", "sensitivity": "sensitivity", "profiles": "profiles",
+    "motor": "drives.motor",
 }
 
 __all__ = sorted(_NAMES) + sorted(_MODULES)

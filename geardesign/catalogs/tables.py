@@ -125,6 +125,12 @@ SCHEMAS: dict[str, Schema] = {
     "center_distances": Schema(
         "center_distances", (_f("a_w_mm"), Column("series", "int", positive=True)), increasing=("a_w_mm",),
         description="standard centre distances (GOST 2185-66)"),
+    "motors": Schema(
+        "motors",
+        (Column("designation", "str"), _f("power_kw"), Column("poles", "int", positive=True), _f("sync_speed_rpm"),
+         _f("rated_speed_rpm"), _f("max_torque_ratio"), _f("shaft_d_mm")),
+        increasing=("power_kw",), increasing_within=("sync_speed_rpm",),
+        description="three-phase asynchronous motors: rated power and speed, T_max/T_nom, shaft end diameter"),
 }
 
 # Bundled tables: name -> (file, schema kind, row filter on the "series" column or None)
@@ -143,6 +149,7 @@ BUNDLED: dict[str, tuple[str, str, str | None]] = {
     "key_lengths": ("key_lengths.csv", "key_lengths", None),
     "modules": ("modules_iso54.csv", "modules", None),
     "center_distances": ("center_distances_gost2185.csv", "center_distances", None),
+    "motors_air": ("motors_air.csv", "motors", None),
 }
 CHAIN_CATALOGS = ("gost13568", "iso606", "iso606a", "iso606b", "ansi_b29")
 
@@ -274,6 +281,12 @@ def _row_rules(frame: pd.DataFrame, schema: Schema, path, lines) -> None:
         fail(frame["t1_mm"].to_numpy() >= frame["h_mm"].to_numpy(), "t1_mm", "shaft depth t1 must be < key height h")
         lmin, lmax = frame["l_min_mm"].to_numpy(dtype=float), frame["l_max_mm"].to_numpy(dtype=float)
         fail(lmax < lmin, "l_max_mm", "l_max_mm must be >= l_min_mm")
+    elif schema.kind == "motors":
+        sync, rated = frame["sync_speed_rpm"].to_numpy(), frame["rated_speed_rpm"].to_numpy()
+        fail(np.abs(sync * frame["poles"].to_numpy() - 6000.0) > 1e-9, "sync_speed_rpm",
+             "the synchronous speed must be 6000/poles rpm (50 Hz mains)")
+        fail(rated >= sync, "rated_speed_rpm", "an asynchronous motor runs below its synchronous speed")
+        fail(frame["max_torque_ratio"].to_numpy() <= 1.0, "max_torque_ratio", "T_max/T_nom must exceed 1")
     elif schema.kind in ("modules", "center_distances"):
         fail(~frame["series"].isin([1, 2]).to_numpy(), "series", "series must be 1 or 2")
 

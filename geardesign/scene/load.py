@@ -1,7 +1,7 @@
 """Scene files: one design case in TOML, validated, run, and written up as a report.
 
 A scene has the optional sections ``[gear]``, ``[teeth]``, ``[chain]``, ``[key]`` (or several
-``[[key]]``) and ``[study]``, plus top-level ``title`` and ``description``. Only the sections
+``[[key]]``), ``[study]`` and ``[drive]`` (stages linked from the motor to the output: scene/drive.py), plus top-level ``title`` and ``description``. Only the sections
 present are modelled, and only the catalogs they need are loaded. The keys mirror the Python
 arguments::
 
@@ -228,6 +228,10 @@ def load_scene(path) -> Scene:
         if name not in raw:
             continue
         v = raw[name]
+        if name == "drive":
+            from .drive import load_drive
+            sections["drive"] = load_drive(where, path, v)
+            continue
         if name == "key":
             tables = v if isinstance(v, list) else [v]
             if not tables or not all(isinstance(t, dict) for t in tables):

@@ -11,7 +11,7 @@ from ..errors import GearDesignError
 
 __all__ = ["SECTIONS", "section_schema", "validate_table", "Where", "type_name"]
 
-SECTIONS = ("gear", "teeth", "planetary", "chain", "key", "study")
+SECTIONS = ("gear", "teeth", "planetary", "chain", "key", "study", "drive")
 
 
 @dataclass(frozen=True)
@@ -190,8 +190,15 @@ def _study_schema() -> dict:
             "tornado": _Key("bool", default=True), "step": _F(default=0.02, lo=0.0, hi=0.5, lo_open=True)}
 
 
+def _drive_schema() -> dict:
+    from .drive import drive_schema   # its own module: the [drive] section's tables nest stages and shafts
+
+    return drive_schema("")
+
+
 _BUILDERS = {"": lambda: {"title": _Key("str"), "description": _Key("str")}, "gear": _gear_schema,
-             "teeth": _teeth_schema, "planetary": _planetary_schema, "chain": _chain_schema, "key": _key_schema, "study": _study_schema}
+             "teeth": _teeth_schema, "planetary": _planetary_schema, "chain": _chain_schema, "key": _key_schema,
+             "study": _study_schema, "drive": _drive_schema}
 
 
 @functools.cache

@@ -334,6 +334,11 @@ def base_from_scene(target: str, section: dict) -> dict:
     return chain_kwargs(section)
 
 
+def _run_drive(rep: SceneReport, d: dict):
+    from .drive import run_drive
+    run_drive(rep, d)
+
+
 # the sections in the order they run; [study] runs last, over the others
 RUNNERS = (("gear", _run_gear), ("teeth", _run_teeth), ("planetary", _run_planetary), ("chain", _run_chain),
-           ("key", _run_keys))
+           ("key", _run_keys), ("drive", _run_drive))

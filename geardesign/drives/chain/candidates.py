@@ -348,6 +348,16 @@ def _cached_reference_tables(keys) -> ReferenceTables:
                             pressure=cols(pressure, "pitch_min_mm", "pitch_max_mm", "n1_rpm", "allowable_pressure_mpa"))
 
 
+def with_loads(inp: Inputs, n1_rpm, torque_nm) -> Inputs:
+    """``inp`` with one load per candidate: arrays of small-sprocket speed [rpm] and torque [N·m]
+    (power P = T·ω follows), for :func:`evaluate` on candidates built by the caller."""
+    from dataclasses import replace
+
+    n1 = np.asarray(n1_rpm, dtype=float)
+    torque = np.asarray(torque_nm, dtype=float)
+    return replace(inp, n1=n1, torque=torque, power_w=torque * 2.0 * np.pi * n1 / 60.0)
+
+
 def reference_tables(folder) -> ReferenceTables:
     """The speed-limit, strand-factor, [s] and [p] tables as arrays, read once per file version."""
     keys = tuple(_file_key(name, folder) for name in _REFERENCE_NAMES)
@@ -420,12 +430,28 @@ def _lookup_by_pitch(pitches: np.ndarray, match: np.ndarray, table_n: np.ndarray
     order). Status as in :func:`interp_speed`; 2 where no row matches (value NaN).
     """
     _, inverse = np.unique(pitches, return_inverse=True)
+    if np.ndim(n1):
+        return _lookup_per_candidate(inverse, match, table_n, table_y, np.asarray(n1, dtype=float))
     values = np.full(len(match), np.nan)
     status = np.full(len(match), 2, dtype=np.int64)
     for i in np.flatnonzero(match.any(axis=1)):
         rows = match[i]
         values[i], status[i] = interp_speed(table_n[rows], table_y[rows], n1)
     return values[inverse], status[inverse]
+
+
+def _lookup_per_candidate(inverse, match, table_n, table_y, n1):
+    """:func:`_lookup_by_pitch` when each candidate has its own speed n1 (same rule as
+    :func:`interp_speed`: the first value below the table with status -1, NaN above it with 1)."""
+    values = np.full(len(n1), np.nan)
+    status = np.full(len(n1), 2, dtype=np.int64)
+    for i in np.flatnonzero(match.any(axis=1)):
+        mine = inverse == i
+        tn, ty, n = table_n[match[i]], table_y[match[i]], n1[mine]
+        below, above = n < tn[0], n > tn[-1]
+        values[mine] = np.where(below, ty[0], np.where(above, np.nan, np.interp(n, tn, ty)))
+        status[mine] = np.where(below, -1, np.where(above, 1, 0))
+    return values, status
 
 
 def _pressure_groups(unique_pitches, pitch_min, pitch_max, tol=1e-6):
@@ -447,7 +473,8 @@ def _speed_limits(c: Candidates, inp: Inputs, tables: ReferenceTables) -> None:
     match = np.where(close.any(axis=1), close.argmax(axis=1), -1)
     n_max_u = np.where(match >= 0, tables.n1_max_rpm[match], np.nan)
     w_max_u = np.where(match >= 0, tables.impacts_allowed_per_s[match], np.nan)
-    if inp.method == "hinge_pressure" and np.isfinite(n_max_u).any() and inp.n1 > np.nanmax(n_max_u):
+    if (inp.method == "hinge_pressure" and np.ndim(inp.n1) == 0 and np.isfinite(n_max_u).any()
+            and inp.n1 > np.nanmax(n_max_u)):
         j = int(np.nanargmax(n_max_u))
         raise GearDesignError(
             f"n1_rpm = {inp.n1:g} rpm is above the maximum speed of every chain in {str(inp.catalog)!r} "
@@ -472,7 +499,7 @@ def _safety_check(c: Candidates, inp: Inputs, tables: ReferenceTables, notes: li
         match = np.isclose(pitch[None, :], np.unique(t)[:, None], rtol=0, atol=1e-6)
         s_allow, s_status = _lookup_by_pitch(t, match, n1_rpm, value, inp.n1)
         if (s_status == -1).any():
-            notes.append(f"n1 = {inp.n1:g} rpm is below the [s] table: its lowest-speed column is used")
+            notes.append(f"n1 = {_speed_text(inp.n1)} rpm is below the [s] table: its lowest-speed column is used")
     c["allowable_safety_factor"] = s_allow
     c["margin_safety"] = c["safety_factor"] / s_allow - 1.0
 
@@ -494,10 +521,10 @@ def _hinge_checks(c: Candidates, inp: Inputs, tables: ReferenceTables, notes: li
         lo, hi, n1_rpm, value = tables.pressure
         p_allow, p_status = _lookup_by_pitch(t, _pressure_groups(np.unique(t), lo, hi), n1_rpm, value, inp.n1)
         if (p_status == -1).any():
-            notes.append(f"n1 = {inp.n1:g} rpm is below the [p] table (50 rpm): the 50 rpm value is used "
+            notes.append(f"n1 = {_speed_text(inp.n1)} rpm is below the [p] table (50 rpm): the 50 rpm value is used "
                          "(conservative: [p] falls with speed)")
         if (p_status == 1).any():
-            notes.append(f"n1 = {inp.n1:g} rpm is above the [p] table for some pitches: no extrapolation, "
+            notes.append(f"n1 = {_speed_text(inp.n1)} rpm is above the [p] table for some pitches: no extrapolation, "
                          "those candidates fail with 'pressure (no [p] data)'")
     c["strand_factor"] = m_eff
     c["pressure_mpa"] = p
@@ -536,6 +563,11 @@ def _power_checks(c: Candidates, inp: Inputs, tables: ReferenceTables, notes: li
     return ["margin_power"]
 
 
+def _speed_text(n1) -> str:
+    """n1 for a note: the one speed, or the range when each candidate has its own."""
+    return f"{n1:g}" if np.ndim(n1) == 0 else f"{np.min(n1):g}…{np.max(n1):g}"
+
+
 def strand_index(tables: ReferenceTables, strands: np.ndarray) -> np.ndarray:
     """Row of the strand-factor table for each strand count (KeyError for a count it lacks)."""
     idx = np.searchsorted(tables.strands, strands)
@@ -565,8 +597,15 @@ def _limiting_check(c: Candidates, checks: list) -> None:
     c["feasible"] = ~no_data.any(axis=1) & (min_margin >= 0)
 
 
-def evaluate(c: Candidates, inp: Inputs, tables: ReferenceTables) -> tuple[list, list]:
+def evaluate(c: Candidates, inp: Inputs, tables: ReferenceTables, summary: bool = True) -> tuple[list, list]:
     """Every check of every candidate, vectorised: layout, speed limits, safety, the method's checks.
+
+    ``inp.n1``, ``inp.power_w`` and ``inp.torque`` are one load for all candidates (:func:`design`)
+    or arrays aligned with them (a drive, where each candidate's load follows the ratio split
+    upstream; see :func:`with_loads`): the same formulas either way, and a speed above every
+    chain's limit then fails the speed check of those candidates instead of stopping the design.
+    ``summary=False`` leaves out min_margin, limiting_check and feasible (a caller that combines
+    the margins with its own checks computes them itself).
 
     Returns (checks, notes): the margin columns that decide feasibility, in report order, and
     the notes about table ranges.
@@ -581,5 +620,6 @@ def evaluate(c: Candidates, inp: Inputs, tables: ReferenceTables) -> tuple[list,
     else:
         checks = (_power_checks(c, inp, tables, notes) + cd_check
                   + (["margin_safety"] if inp.allowable_safety_factor is not None else []))
-    _limiting_check(c, checks)
+    if summary:
+        _limiting_check(c, checks)
     return checks, notes

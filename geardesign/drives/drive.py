@@ -1,0 +1,768 @@
+"""A drive: an input (a motor, or a power or output torque at a speed), stages linked by shafts,
+the power flow through them, and the ratio split optimised across the stages.
+
+Power flow (shaft k is the output of stage k; shaft 0 the input):
+n_k = n_{k−1}/u_k, T_k = T_{k−1}·u_k·η_k, P_k = T_k·ω_k, T_0 = P/ω_0 (P in W, ω in rad/s);
+with an output torque instead of a power, T_k = T_N/∏_{j>k}(u_j·η_j).
+
+:meth:`Drive.optimize` chooses the ratio split and every free variable together: it enumerates the
+tooth pairs of every stage whose product meets the total ratio within its tolerance, times the
+chain catalog rows, evaluates every non-gear check of all of them in vectorised passes (chains
+with one load per design, keys by their capacity, bought units by their rated torque), then walks
+the gear tooth pairs best bound first, solving the shifts of a pair only while its bound can still
+reach the best designs found (branch and bound; the bound replaces each gear by its base circles,
+below any tip circle, and leaves its margins unknown). Every limit on the work is a named constant.
+"""
+from __future__ import annotations
+
+import heapq
+import math
+import time
+from dataclasses import dataclass, field, replace
+from functools import lru_cache
+
+import numpy as np
+import pandas as pd
+
+from ..errors import GearDesignError
+from ..results import Result, plain
+from ..validate import one_number, require_range
+from .stages import ChainStage, GearStage, GivenStage, Shaft, disc_mass_kg, stage_area_mm2
+
+__all__ = ["Drive", "DriveAnalysis", "DriveOptimum", "power_flow", "OBJECTIVES", "STAGES_MAX", "COMBINATIONS_MAX",
+           "CANDIDATES_MAX", "TOP_MAX", "TOTAL_RATIO_RANGE", "RATIO_TOL_RANGE", "SPEED_RANGE_RPM", "MARGIN_TOL"]
+
+OBJECTIVES = ("min_size", "min_mass", "max_margin")
+STAGES_MAX = 6                    # stages in one drive
+COMBINATIONS_MAX = 200_000        # ratio combinations (one tooth pair per stage) inside the ratio window
+CANDIDATES_MAX = 2_000_000        # designs evaluated at once: combinations × chain catalog rows
+TOP_MAX = 1000                    # alternatives listed
+TOTAL_RATIO_RANGE = (1e-3, 1e5)
+RATIO_TOL_RANGE = (0.0, 0.5)
+SPEED_RANGE_RPM = (0.1, 100_000.0)
+POWER_RANGE_KW = (1e-6, 1e5)
+TORQUE_RANGE_NM = (1e-3, 1e9)
+MARGIN_TOL = 1e-9                 # the exact shift solver holds its checks to 1e-9: such margins hold
+_SHIFT_CACHE = 4096               # solved tooth pairs kept between calls (each ~2-6 ms to solve)
+_INFEASIBLE_SHOWN = 5             # closest failing designs listed after the feasible ones
+
+
+def power_flow(n_in_rpm, ratios, efficiencies, power_kw=None, output_torque_nm=None):
+    """Speeds [rpm], torques [N·m] and powers [kW] of every shaft: arrays (..., N+1) for
+    ``ratios`` (..., N) and ``efficiencies`` (N,).
+
+    n_k = n_{k−1}/u_k, T_k = T_{k−1}·u_k·η_k; T_0 = P/ω_0, ω = 2πn/60 (or T_N given).
+
+    Seed 002: 4 kW at 1500 rpm through the gear motor u = 12.5, η = 0.87:
+
+    >>> n, T, P = power_flow(1500, [12.5], [0.87], power_kw=4)
+    >>> [round(float(v), 3) for v in (n[1], T[0], T[1], P[1])]
+    [120.0, 25.465, 276.93, 3.48]
+    """
+    u = np.asarray(ratios, dtype=float)
+    eta = np.asarray(efficiencies, dtype=float)
+    ones = np.ones(u.shape[:-1] + (1,))
+    n = float(n_in_rpm) / np.concatenate([ones, np.cumprod(u, axis=-1)], axis=-1)
+    gain = np.concatenate([ones, np.cumprod(u * eta, axis=-1)], axis=-1)
+    omega = 2.0 * np.pi * n / 60.0
+    if power_kw is not None:
+        torque = 1000.0 * power_kw / omega[..., :1] * gain
+    else:
+        torque = output_torque_nm * gain / gain[..., -1:]
+    return n, torque, torque * omega / 1000.0
+
+
+# ---------------------------------------------------------------------------------------------- gears
+
+@lru_cache(maxsize=_SHIFT_CACHE)
+def _shift_solution(m, z1, z2, checks_key, beta_deg, face_width_mm, objective) -> dict:
+    """The shifts of one tooth pair by optimize_shifts (exact), with the pair's geometry and margins."""
+    from ..gears.pair import GearPair
+    from ..shifts.optimize import optimize_shifts
+
+    checks = dict(checks_key) or None
+    try:
+        r = optimize_shifts(int(z1), int(z2), objective, checks, "exact", m=m, beta_deg=beta_deg, face_width=face_width_mm)
+    except GearDesignError as exc:
+        return dict(feasible=False, reason=str(exc), margins={})
+    if not (r.success and not r.conflict):
+        why = "conflict: " + ", ".join(r.conflict) if r.conflict else r.message
+        return dict(feasible=False, reason=why, margins=dict(r.margins))
+    geo = GearPair(m, int(z1), int(z2), r.x1, r.x2, beta_deg=beta_deg, face_width=face_width_mm).geometry()
+    return dict(feasible=True, reason="", x1=r.x1, x2=r.x2, margins=dict(r.margins), a_w=geo.a_w, da1=geo.da1,
+                da2=geo.da2)
+
+
+def _gear_solution(stage: GearStage, z1: int, z2: int, objective: str) -> dict:
+    """Shifts, geometry and margins of one tooth pair of a gear stage (fixed or solved shifts)."""
+    if not stage.free_shifts:
+        pair = stage.fixed_pair()
+        table = pair.checks(**{"jamming": False, **(stage.checks or {})})
+        geo = pair.geometry()
+        margins = dict(zip(table["check"], table["margin"].astype(float)))
+        failing = [k for k, v in margins.items() if v < -MARGIN_TOL]
+        return dict(feasible=not failing, reason=("fails " + ", ".join(failing)) if failing else "", x1=pair.x1,
+                    x2=pair.x2, margins=margins, a_w=geo.a_w, da1=geo.da1, da2=geo.da2)
+    shift_objective = stage.shift_objective or ("max_margin" if objective == "max_margin" else "max_x_sum")
+    return _shift_solution(stage.m, int(z1), int(z2), stage.checks_key(), stage.beta_deg, stage.face_width_mm,
+                           shift_objective)
+
+
+def _gear_bounds(stage: GearStage, z1, z2):
+    """Lower bounds of a gear stage's size [mm²] and mass [kg] whatever its shifts: base circles
+    (below every tip circle) at the centre distance a·cos α_t (below every operating one)."""
+    alpha_t = math.atan(math.tan(math.radians(20.0)) / math.cos(math.radians(stage.beta_deg)))
+    scale = stage.m / math.cos(math.radians(stage.beta_deg))
+    db1, db2 = scale * z1 * math.cos(alpha_t), scale * z2 * math.cos(alpha_t)
+    a_cos = 0.5 * scale * (z1 + z2) * math.cos(alpha_t)
+    return stage_area_mm2(a_cos, db1, db2), disc_mass_kg(db1, stage.width_mm) + disc_mass_kg(db2, stage.width_mm)
+
+
+def _min_margin(margins: dict):
+    """(smallest margin, its check) of a {check: margin} dict; margins within MARGIN_TOL of 0 are 0."""
+    if not margins:
+        return math.inf, ""
+    name = min(margins, key=lambda k: (margins[k] if np.isfinite(margins[k]) else -math.inf))
+    v = float(margins[name])
+    return (0.0 if abs(v) <= MARGIN_TOL else v), name
+
+
+# ---------------------------------------------------------------------------------------------- chains
+
+def _chain_check_names(stage: ChainStage) -> list:
+    """The margins that decide a chain (as chain.design's evaluate): the method's, the centre distance's."""
+    cd = ["margin_center_distance"] if stage.center_distance_mm is not None else []
+    if stage.method == "hinge_pressure":
+        return ["margin_pressure", "margin_safety", "margin_speed", "margin_impacts"] + cd
+    return ["margin_power"] + cd + (["margin_safety"] if stage.allowable_safety_factor is not None else [])
+
+
+def _chain_batch(stage: ChainStage, rows, z1, z2, n1_rpm, torque_nm) -> dict:
+    """Every margin, size and mass of chain candidates that each carry their own load."""
+    from ..catalogs.tables import catalog_dir
+    from .chain.candidates import Candidates, evaluate, reference_tables, with_loads
+
+    chains = stage.table()
+    c = Candidates(chains, rows, z1, z2)
+    checks, _ = evaluate(c, with_loads(stage._inputs, n1_rpm, torque_nm), reference_tables(catalog_dir()), summary=False)
+    out = {k[len("margin_"):]: np.asarray(c[k], dtype=float) for k in checks}
+    de1, de2 = c["sprocket1_tip_diameter_mm"], c["sprocket2_tip_diameter_mm"]
+    width = c["width_mm"]
+    size = stage_area_mm2(c["center_distance_mm"], de1, de2)
+    mass = disc_mass_kg(de1, width) + disc_mass_kg(de2, width) + c["chain_mass_kg"]
+    return dict(margins=out, size=size, mass=mass, designation=chains.take("designation", rows),
+                strands=np.asarray(c["strands"]), pitch=np.asarray(c["pitch_mm"]), links=np.asarray(c["links"]),
+                a=np.asarray(c["center_distance_mm"]))
+
+
+# ---------------------------------------------------------------------------------------------- results
+
+@dataclass(frozen=True, eq=False)
+class DriveAnalysis(Result):
+    """The power flow of a fully specified drive, every stage's checks and every key.
+
+    ``flow``: one row per shaft (n_rpm, torque_nm, power_kw); ``checks``: one row per check of the
+    whole drive (item, check, margin, ok); ``keys``: one row per keyed hub; ``stages``: per stage
+    its result (GearPair and its checks, ChainDesign and the chosen row, or the given unit);
+    ``min_margin`` and ``limiting``: the smallest margin of the drive and its item and check.
+    """
+
+    success: bool
+    message: str
+    flow: pd.DataFrame
+    checks: pd.DataFrame
+    keys: pd.DataFrame
+    stages: tuple
+    min_margin: float
+    limiting: str
+    total_ratio: float
+    size_mm2: float
+    mass_kg: float
+    drive: object = field(repr=False, default=None)
+    key_results: tuple = field(repr=False, default=())
+
+    _table_fields = ("flow", "checks", "keys")
+
+    def to_dict(self) -> dict:
+        return plain({"status": self.status, "success": self.success, "message": self.message,
+                      "total_ratio": self.total_ratio, "min_margin": self.min_margin, "limiting": self.limiting,
+                      "size_mm2": self.size_mm2, "mass_kg": self.mass_kg, "flow": self.flow, "checks": self.checks,
+                      "keys": self.keys, "stages": [s["summary"] for s in self.stages]})
+
+    def __repr__(self) -> str:
+        with pd.option_context("display.width", 160, "display.max_columns", 20):
+            flow = self.flow.to_string(index=False, float_format=lambda v: f"{v:.5g}")
+        return f"DriveAnalysis: {self.message}\n{flow}"
+
+    def plot(self, ax=None):
+        """The drive's diagram (input, stages, shafts with n and T, keys): a matplotlib Axes."""
+        from .diagram import plot_drive
+        return plot_drive(self, ax=ax)
+
+
+@dataclass(frozen=True, eq=False)
+class DriveOptimum(Result):
+    """Result of :meth:`Drive.optimize`: the ranked alternatives and the best design analysed.
+
+    ``table``: feasible designs best first (``reason`` says why each loses to the one above it),
+    then the closest failing ones (``reason`` names the stage and checks that fail); ``best``: the
+    :class:`DriveAnalysis` of rank 1, re-evaluated by the standalone functions; ``conflict``: when
+    nothing passes, the stage checks that fail in the closest design.
+    """
+
+    success: bool
+    message: str
+    objective: str
+    total_ratio: float
+    ratio_tol: float
+    table: pd.DataFrame
+    best: DriveAnalysis | None
+    conflict: tuple
+    n_combinations: int
+    n_candidates: int
+    n_shift_solves: int
+    time_s: float
+
+    _table_fields = ("table",)
+
+    def to_dict(self) -> dict:
+        out = {f: getattr(self, f) for f in ("success", "message", "objective", "total_ratio", "ratio_tol",
+                                             "conflict", "n_combinations", "n_candidates", "n_shift_solves",
+                                             "time_s")}
+        records = [{k: (None if v is pd.NA else v) for k, v in r.items()} for r in self.table.to_dict("records")]
+        out.update(status=self.status, table=records, best=None if self.best is None else self.best.to_dict())
+        return plain(out)
+
+    def __repr__(self) -> str:
+        cols = [c for c in self.table.columns if c not in ("reason",)][:14]
+        with pd.option_context("display.width", 180, "display.max_columns", 20):
+            body = self.table[cols].head(8).to_string(index=False, float_format=lambda v: f"{v:.5g}")
+        return (f"DriveOptimum({self.objective}, u = {self.total_ratio:g} ± {100 * self.ratio_tol:g} %): {self.message}\n"
+                f"  {self.n_combinations} ratio combinations, {self.n_candidates} designs, {self.n_shift_solves} shift "
+                f"solves, {self.time_s:.3f} s\n{body}")
+
+
+# ---------------------------------------------------------------------------------------------- drive
+
+@dataclass(frozen=True)
+class Drive:
+    """A drive: input speed ``n_in_rpm`` with ``power_kw`` (input power) or ``output_torque_nm``
+    (torque on the last shaft), ``stages`` in the order of the power flow, keyed hubs ``shafts``.
+
+    ``motor`` (a :class:`~geardesign.drives.motor.MotorSelection` or its ``.motor`` row) sets the
+    input speed to its rated speed and, when no load is given, the power to its rated power; the
+    motor then has a check ``power``: 1 − P_in/P_rated (when the load is given, not taken from it).
+    """
+
+    stages: tuple
+    n_in_rpm: float | None = None
+    power_kw: float | None = None
+    output_torque_nm: float | None = None
+    shafts: tuple = ()
+    motor: object = None
+    _load_from_motor: bool = field(default=False, init=False, repr=False, compare=False)
+
+    def __post_init__(self):
+        stages = tuple(self.stages) if isinstance(self.stages, (list, tuple)) else None
+        if not stages or len(stages) > STAGES_MAX:
+            raise GearDesignError(f"stages must list 1 to {STAGES_MAX} stages, got {self.stages!r}")
+        for s in stages:
+            if not isinstance(s, (GivenStage, GearStage, ChainStage)):
+                raise GearDesignError(f"stages must be GivenStage, GearStage or ChainStage, got {type(s).__name__}")
+        names = [s.name for s in stages]
+        if len(set(names)) != len(names):
+            raise GearDesignError(f"stage names must differ (they name the checks), got {names}")
+        object.__setattr__(self, "stages", stages)
+        motor = self.motor
+        if motor is not None:
+            motor = getattr(motor, "motor", motor)
+            if motor is None or not all(k in motor for k in ("power_kw", "rated_speed_rpm", "designation")):
+                raise GearDesignError("motor must be a MotorSelection (gd.motor.select) that found a motor, or its row")
+            object.__setattr__(self, "motor", motor)
+            if self.n_in_rpm is None:
+                object.__setattr__(self, "n_in_rpm", float(motor["rated_speed_rpm"]))
+            if self.power_kw is None and self.output_torque_nm is None:
+                object.__setattr__(self, "power_kw", float(motor["power_kw"]))
+                object.__setattr__(self, "_load_from_motor", True)
+        if self.n_in_rpm is None:
+            raise GearDesignError("n_in_rpm is required (or a motor)")
+        object.__setattr__(self, "n_in_rpm", one_number("n_in_rpm", require_range(
+            "n_in_rpm", self.n_in_rpm, *SPEED_RANGE_RPM, unit="rpm")))
+        if (self.power_kw is None) == (self.output_torque_nm is None):
+            raise GearDesignError("give exactly one of power_kw (input power) or output_torque_nm (torque on the output shaft)")
+        if self.power_kw is not None:
+            object.__setattr__(self, "power_kw", one_number("power_kw", require_range(
+                "power_kw", self.power_kw, *POWER_RANGE_KW, unit="kW")))
+        else:
+            object.__setattr__(self, "output_torque_nm", one_number("output_torque_nm", require_range(
+                "output_torque_nm", self.output_torque_nm, *TORQUE_RANGE_NM, unit="N·m")))
+        shafts = tuple(self.shafts or ())
+        for s in shafts:
+            if not isinstance(s, Shaft):
+                raise GearDesignError(f"shafts must be Shaft objects, got {type(s).__name__}")
+            if s.at > len(stages):
+                raise GearDesignError(f"shaft '{s.name}': at = {s.at} must be in [0, {len(stages)}] "
+                                      f"(0 the input shaft, k the output shaft of stage k)")
+        object.__setattr__(self, "shafts", shafts)
+
+    # -- helpers
+    def _efficiencies(self) -> np.ndarray:
+        return np.array([s.efficiency for s in self.stages])
+
+    def _flow(self, ratios):
+        return power_flow(self.n_in_rpm, ratios, self._efficiencies(), self.power_kw, self.output_torque_nm)
+
+    def _motor_margins(self, power_in_kw) -> dict:
+        if self.motor is None or self._load_from_motor:   # its own rated power: nothing to check
+            return {}
+        return {"power": 1.0 - np.asarray(power_in_kw, dtype=float) / float(self.motor["power_kw"])}
+
+    @staticmethod
+    def _fixed_ratio(stage) -> float:
+        if isinstance(stage, GivenStage):
+            return stage.ratio
+        if stage.z1 is None or stage.z2 is None:
+            raise GearDesignError(f"analyse() needs every ratio: stage '{stage.name}' has free tooth counts "
+                                  f"(give z1 and z2, or use optimize())")
+        return stage.z2 / stage.z1
+
+    # -- analyse
+    def analyse(self, objective: str = "min_size") -> DriveAnalysis:
+        """The power flow, every stage's checks and margins, every key, the smallest margin.
+
+        Every stage needs its tooth counts; free gear shifts are solved (``objective`` only picks
+        the shift rule, as in :meth:`optimize`), a free chain row is chosen by chain.design.
+        """
+        from .chain import design as chain_design
+
+        ratios = np.array([self._fixed_ratio(s) for s in self.stages])
+        n, T, P = (a.ravel() for a in self._flow(ratios))
+        rows = []
+        stages_out = []
+        size = mass = 0.0
+        for name, v in self._motor_margins(P[0]).items():
+            rows.append(("motor", name, float(v)))
+        for i, st in enumerate(self.stages):
+            if isinstance(st, GivenStage):
+                margins = {k: float(v) for k, v in st.margins(T[i + 1]).items()}
+                stages_out.append(dict(stage=st, summary=dict(name=st.name, kind="given", ratio=st.ratio,
+                                                              efficiency=st.efficiency)))
+            elif isinstance(st, GearStage):
+                sol = _gear_solution(st, st.z1, st.z2, objective)
+                if not sol["feasible"] and "x1" not in sol:
+                    raise GearDesignError(f"stage '{st.name}': z1/z2 = {st.z1}/{st.z2} has no feasible shifts "
+                                          f"({sol['reason']})")
+                from ..gears.pair import GearPair
+                pair = GearPair(st.m, st.z1, st.z2, sol["x1"], sol["x2"], beta_deg=st.beta_deg, face_width=st.face_width_mm)
+                table = pair.checks(**{"jamming": False, **(st.checks or {})})
+                margins = dict(zip(table["check"], table["margin"].astype(float)))
+                geo = pair.geometry()
+                size += float(stage_area_mm2(geo.a_w, geo.da1, geo.da2))
+                mass += float(disc_mass_kg(geo.da1, st.width_mm) + disc_mass_kg(geo.da2, st.width_mm))
+                stages_out.append(dict(stage=st, pair=pair, checks=table, summary=dict(
+                    name=st.name, kind="gear", m=st.m, z1=st.z1, z2=st.z2, x1=pair.x1, x2=pair.x2, a_w_mm=geo.a_w,
+                    da1_mm=geo.da1, da2_mm=geo.da2, ratio=st.z2 / st.z1, efficiency=st.efficiency)))
+            else:
+                res = chain_design(torque_nm=float(T[i]), n1_rpm=float(n[i]), ratio=st.z2 / st.z1, z1=st.z1,
+                                   **st.design_kwargs())
+                cand = res.candidates
+                if st.designation is not None:
+                    cand = cand[cand["designation"] == st.designation]
+                row = cand.iloc[0]   # ranked: the best feasible, or the closest when none passes
+                margins = {k[len("margin_"):]: float(row[k]) for k in _chain_check_names(st)}
+                de1, de2, w = row["sprocket1_tip_diameter_mm"], row["sprocket2_tip_diameter_mm"], row["width_mm"]
+                size += float(stage_area_mm2(row["center_distance_mm"], de1, de2))
+                mass += float(disc_mass_kg(de1, w) + disc_mass_kg(de2, w) + row["chain_mass_kg"])
+                stages_out.append(dict(stage=st, design=res, row=row, summary=dict(
+                    name=st.name, kind="chain", designation=row["designation"], strands=int(row["strands"]),
+                    pitch_mm=float(row["pitch_mm"]), z1=st.z1, z2=st.z2, links=int(row["links"]),
+                    center_distance_mm=float(row["center_distance_mm"]), ratio=st.z2 / st.z1,
+                    efficiency=st.efficiency)))
+            rows += [(st.name, k, v) for k, v in margins.items()]
+        key_rows, key_results = [], []
+        for sh in self.shafts:
+            sel = sh.select(float(T[sh.at]))
+            key_results.append(sel)
+            key_rows.append(dict(name=sh.name, at=sh.at, d_mm=sh.d_mm, hub_length_mm=sh.hub_length_mm,
+                                 torque_nm=float(T[sh.at]), b_mm=sel.b_mm, h_mm=sel.h_mm, length_mm=sel.length_mm,
+                                 n_keys=sel.n_keys, crush_mpa=sel.crush_mpa, shear_mpa=sel.shear_mpa,
+                                 margin_crush=sel.margin_crush, margin_shear=sel.margin_shear, feasible=sel.feasible,
+                                 message=sel.message))
+            rows += [(f"key '{sh.name}'", "crushing", sel.margin_crush), (f"key '{sh.name}'", "shear", sel.margin_shear)]
+        checks = pd.DataFrame(rows, columns=["item", "check", "margin"])
+        checks["margin"] = checks["margin"].astype(float)
+        checks.loc[checks["margin"].abs() <= MARGIN_TOL, "margin"] = 0.0
+        checks["ok"] = checks["margin"] >= 0
+        flow = pd.DataFrame({"shaft": np.arange(len(n)),
+                             "after": ["input" if self.motor is None else f"motor {self.motor['designation']}"]
+                             + [s.name for s in self.stages],
+                             "n_rpm": n, "torque_nm": T, "power_kw": P})
+        keys = pd.DataFrame(key_rows, columns=["name", "at", "d_mm", "hub_length_mm", "torque_nm", "b_mm", "h_mm",
+                                               "length_mm", "n_keys", "crush_mpa", "shear_mpa", "margin_crush",
+                                               "margin_shear", "feasible", "message"])
+        if checks.empty:
+            mm, lim = math.inf, ""
+        else:
+            m = checks["margin"].fillna(-np.inf)
+            j = int(np.argmin(m.to_numpy()))
+            mm, lim = float(checks["margin"].iloc[j]), f"{checks['item'].iloc[j]}: {checks['check'].iloc[j]}"
+        ok = bool(checks["ok"].all())
+        failing = checks[~checks["ok"]]
+        msg = (f"u = {float(np.prod(ratios)):.6g}, output {n[-1]:.6g} rpm, {T[-1]:.6g} N·m; "
+               + (f"every check holds; smallest margin {mm:+.4f} ({lim})" if ok else
+                  "fails " + ", ".join(f"{a}: {b} ({c:+.3f})" for a, b, c in failing[["item", "check", "margin"]]
+                                       .itertuples(index=False))))
+        return DriveAnalysis(success=ok, message=msg, flow=flow, checks=checks, keys=keys, stages=tuple(stages_out),
+                             min_margin=mm, limiting=lim, total_ratio=float(np.prod(ratios)), size_mm2=size,
+                             mass_kg=mass, drive=self, key_results=tuple(key_results))
+
+    # -- optimize
+    def optimize(self, total_ratio, ratio_tol=0.03, objective="min_size", top=10, progress=None) -> DriveOptimum:
+        """The ratio split and every free variable chosen together for ``objective``.
+
+        ``min_size``: smallest sum of the stages' side-view envelopes (a + (D1 + D2)/2)·max(D1, D2)
+        (gears at their tip circles and operating centre distance, chains at their sprocket tip
+        circles and centre distance; bought units are fixed and left out); ``min_mass``: smallest
+        mass of gear blanks and sprockets as steel discs of their tip diameters and face widths,
+        plus the chain (mass per metre × length); ``max_margin``: the largest smallest margin of
+        every check of the drive. Ties go to the smaller ratio error, then the smaller size.
+        The total ratio must hold within ``ratio_tol`` (relative). ``top`` alternatives are listed.
+        ``progress(done, total)`` is called after each group of designs sharing their gear tooth pairs
+        (the walk may stop well before ``total``).
+        """
+        t0 = time.perf_counter()
+        U = one_number("total_ratio", require_range("total_ratio", total_ratio, *TOTAL_RATIO_RANGE))
+        tol = one_number("ratio_tol", require_range("ratio_tol", ratio_tol, *RATIO_TOL_RANGE))
+        if objective not in OBJECTIVES:
+            raise GearDesignError(f"objective must be one of {', '.join(OBJECTIVES)}, got {objective!r}")
+        top = int(require_range("top", top, 1, TOP_MAX))
+        u_lo, u_hi = U * (1 - tol), U * (1 + tol)
+        stages = self.stages
+        N = len(stages)
+
+        # 1. each stage's options (tooth pairs) inside the window its neighbours leave it
+        span = [self._ratio_span(s) for s in stages]
+        options = []
+        for k, st in enumerate(stages):
+            lo_rest = math.prod(span[j][0] for j in range(N) if j != k)
+            hi_rest = math.prod(span[j][1] for j in range(N) if j != k)
+            w_lo, w_hi = u_lo / hi_rest, u_hi / lo_rest
+            if isinstance(st, GivenStage):
+                z1 = z2 = np.zeros(1, dtype=np.int64)
+                ratio = np.array([st.ratio])
+                ratio = ratio if w_lo * (1 - 1e-12) <= st.ratio <= w_hi * (1 + 1e-12) else ratio[:0]
+            else:
+                z1, z2 = st.pairs(w_lo, w_hi)
+                ratio = z2 / z1
+            if ratio.size == 0:
+                reach = (math.prod(a for a, _ in span), math.prod(b for _, b in span))
+                return self._no_split(U, tol, objective, t0,
+                                      f"stage '{st.name}' has no option with a ratio in [{w_lo:.4g}, {w_hi:.4g}], "
+                                      f"the window the other stages leave it for u = {U:g} ± {100 * tol:g} % "
+                                      f"(the stages' ratio ranges reach u in [{reach[0]:.4g}, {reach[1]:.4g}])")
+            options.append(dict(z1=z1, z2=z2, ratio=ratio))
+
+        # 2. ratio combinations inside the window (one option per stage)
+        idx = np.zeros((1, 0), dtype=np.int64)
+        prod = np.ones(1)
+        for k, o in enumerate(options):
+            rest_lo = math.prod(float(options[j]["ratio"].min()) for j in range(k + 1, N))
+            rest_hi = math.prod(float(options[j]["ratio"].max()) for j in range(k + 1, N))
+            new = prod[:, None] * o["ratio"][None, :]
+            keep = (new * rest_hi >= u_lo * (1 - 1e-12)) & (new * rest_lo <= u_hi * (1 + 1e-12))
+            i, j = np.nonzero(keep)
+            if i.size > COMBINATIONS_MAX:
+                raise GearDesignError(f"the ratio split has {i.size} combinations of tooth pairs, more than "
+                                      f"{COMBINATIONS_MAX}: narrow the stages' z1_range, z2_max or ratio_range")
+            idx = np.column_stack([idx[i], j])
+            prod = new[i, j]
+        if prod.size == 0:
+            return self._no_split(U, tol, objective, t0, f"no combination of the stages' tooth pairs gives "
+                                                         f"u = {U:g} ± {100 * tol:g} %")
+        n_comb = prod.size
+
+        # 3. times the chain catalog rows of every chain stage
+        chain_rows = {}
+        for k, st in enumerate(stages):
+            if isinstance(st, ChainStage):
+                r = st.rows()
+                total = idx.shape[0] * r.size
+                if total > CANDIDATES_MAX:
+                    raise GearDesignError(f"{total} designs (ratio combinations x chain rows) exceed {CANDIDATES_MAX}: "
+                                          f"narrow the stages' ranges, strands or catalog")
+                idx = np.repeat(idx, r.size, axis=0)
+                for kk in chain_rows:
+                    chain_rows[kk] = np.repeat(chain_rows[kk], r.size)
+                chain_rows[k] = np.tile(r, idx.shape[0] // r.size)
+        n_cand = idx.shape[0]
+        ratios = np.column_stack([options[k]["ratio"][idx[:, k]] for k in range(N)])
+        n, T, P = self._flow(ratios)
+
+        # 4. every non-gear check, vectorised
+        margins: dict = {}
+        ng_size = np.zeros(n_cand)
+        ng_mass = np.zeros(n_cand)
+        chain_info = {}
+        for name, v in self._motor_margins(P[:, 0]).items():
+            margins[("motor", name)] = v
+        for k, st in enumerate(stages):
+            if isinstance(st, GivenStage):
+                for name, v in st.margins(T[:, k + 1]).items():
+                    margins[(st.name, name)] = v
+            elif isinstance(st, ChainStage):
+                z1 = options[k]["z1"][idx[:, k]]
+                z2 = options[k]["z2"][idx[:, k]]
+                ch = _chain_batch(st, chain_rows[k], z1, z2, n[:, k], T[:, k])
+                for name, v in ch["margins"].items():
+                    margins[(st.name, name)] = v
+                ng_size += ch["size"]
+                ng_mass += ch["mass"]
+                chain_info[k] = dict(ch, z1=z1, z2=z2)
+        key_n = {}
+        for sh in self.shafts:
+            _, caps = _key_caps(sh)
+            Ts = T[:, sh.at]
+            one = (Ts <= min(caps[1])) | (sh.max_keys < 2)
+            nk = np.where(one, 1, 2)
+            crush = np.where(one, caps[1][0], caps[2][0])
+            shear = np.where(one, caps[1][1], caps[2][1])
+            margins[(f"key '{sh.name}'", "crushing")] = 1.0 - Ts / crush
+            margins[(f"key '{sh.name}'", "shear")] = 1.0 - Ts / shear
+            key_n[sh.name] = nk
+        names = list(margins)
+        M = np.column_stack([np.asarray(margins[k], dtype=float) for k in names]) if names else np.zeros((n_cand, 0))
+        M = np.where(np.abs(M) <= MARGIN_TOL, 0.0, M)
+        Mf = np.where(np.isnan(M), -np.inf, M)
+        ng_min = Mf.min(axis=1) if names else np.full(n_cand, np.inf)
+        ng_arg = Mf.argmin(axis=1) if names else np.zeros(n_cand, dtype=np.int64)
+        ng_ok = ng_min >= 0
+
+        # 5. the gears: fixed ones at once, free ones best bound first (branch and bound)
+        gear_k = [k for k, st in enumerate(stages) if isinstance(st, GearStage)]
+        solved: dict = {}
+        n_solves = 0
+
+        def solution(k, j):
+            nonlocal n_solves
+            key = (k, int(j))
+            if key not in solved:
+                st = stages[k]
+                before = _shift_solution.cache_info().misses
+                solved[key] = _gear_solution(st, options[k]["z1"][j], options[k]["z2"][j], objective)
+                n_solves += _shift_solution.cache_info().misses - before
+            return solved[key]
+
+        lb_size = ng_size.copy()
+        lb_mass = ng_mass.copy()
+        for k in gear_k:
+            s, m_ = _gear_bounds(stages[k], options[k]["z1"].astype(float), options[k]["z2"].astype(float))
+            lb_size += s[idx[:, k]]
+            lb_mass += m_[idx[:, k]]
+        lb_cost = {"min_size": lb_size, "min_mass": lb_mass, "max_margin": -ng_min}[objective]
+        err = np.abs(np.prod(ratios, axis=1) - U) / U
+
+        group_key = np.zeros(n_cand, dtype=np.int64)
+        for k in gear_k:
+            group_key = group_key * options[k]["ratio"].size + idx[:, k]
+        # limiting checks and gear reasons as codes into lists (object arrays of ~10⁶ strings are slow)
+        labels = [f"{a}: {b}" for a, b in names] or [""]
+        ex = dict(cost=np.full(n_cand, np.nan), mm=np.full(n_cand, np.nan), size=np.full(n_cand, np.nan),
+                  mass=np.full(n_cand, np.nan), feas=np.zeros(n_cand, dtype=bool), done=np.zeros(n_cand, dtype=bool),
+                  lim=ng_arg.astype(np.int64), why=np.full(n_cand, -1, dtype=np.int64), labels=labels, reasons=[])
+        heap: list = []          # the `top` best costs so far, as a max-heap of −cost
+        cand = np.flatnonzero(ng_ok)
+        order = cand[np.argsort(group_key[cand], kind="stable")]
+        if order.size:
+            gk = group_key[order]
+            starts = np.flatnonzero(np.r_[True, gk[1:] != gk[:-1]])
+            glb = np.minimum.reduceat(lb_cost[order], starts)
+            ends = np.r_[starts[1:], order.size]
+            for g in np.argsort(glb, kind="stable"):
+                if len(heap) >= top and glb[g] > -heap[0] + 1e-12 * abs(heap[0]):
+                    break      # no design of this or any later group can enter the list
+                members = order[starts[g]:ends[g]]
+                sols = [solution(k, idx[members[0], k]) for k in gear_k]
+                if progress is not None:
+                    progress(int(np.count_nonzero(glb <= glb[g])), starts.size)
+                self._exact(members, sols, gear_k, objective, ng_size, ng_mass, ng_min, ex)
+                costs = np.sort(ex["cost"][members][ex["feas"][members]])[:top]
+                for v in costs:
+                    if len(heap) < top:
+                        heapq.heappush(heap, -float(v))
+                    elif -v > heap[0]:
+                        heapq.heapreplace(heap, -float(v))
+        return self._wrap(U, tol, objective, top, t0, ex, idx, options, chain_info, key_n, ratios, err,
+                          ng_ok, ng_min, names, M, n_comb, n_cand, n_solves, ng_size, ng_mass)
+
+    # -- optimize helpers
+    def _ratio_span(self, st):
+        if isinstance(st, GivenStage):
+            return (st.ratio, st.ratio)
+        if st.z1 is not None and st.z2 is not None:
+            return (st.z2 / st.z1, st.z2 / st.z1)
+        return st.ratio_range
+
+    def _exact(self, members, sols, gear_k, objective, ng_size, ng_mass, ng_min, ex) -> None:
+        """Cost, smallest margin, size, mass and feasibility of the designs ``members``, which share
+        their gear tooth pairs (solutions ``sols``), written into ``ex``."""
+        gsize = gmass = 0.0
+        gmm, glim, gfeas, why = math.inf, "", True, ""
+        for k, sol in zip(gear_k, sols):
+            st = self.stages[k]
+            m, name = _min_margin(sol["margins"]) if sol["margins"] else (-math.inf, "shifts")
+            if m < gmm:
+                gmm, glim = m, f"{st.name}: {name}"
+            if not sol["feasible"]:
+                gfeas, why = False, f"stage '{st.name}': {sol['reason']}"
+                continue
+            gsize += float(stage_area_mm2(sol["a_w"], sol["da1"], sol["da2"]))
+            gmass += float(disc_mass_kg(sol["da1"], st.width_mm) + disc_mass_kg(sol["da2"], st.width_mm))
+        ng = ng_min[members]
+        mm = np.minimum(ng, gmm)
+        size, mass = ng_size[members] + gsize, ng_mass[members] + gmass
+        ex["size"][members], ex["mass"][members], ex["mm"][members] = size, mass, mm
+        if glim:
+            ex["labels"].append(glim)
+            ex["lim"][members] = np.where(gmm < ng, len(ex["labels"]) - 1, ex["lim"][members])
+        ex["feas"][members] = gfeas & (mm >= 0)
+        if why:
+            ex["reasons"].append(why)
+            ex["why"][members] = len(ex["reasons"]) - 1
+        ex["done"][members] = True
+        ex["cost"][members] = {"min_size": size, "min_mass": mass, "max_margin": -mm}[objective]
+
+    def _no_split(self, U, tol, objective, t0, why) -> DriveOptimum:
+        return DriveOptimum(success=False, message=f"no design: {why}", objective=objective, total_ratio=U,
+                            ratio_tol=tol, table=pd.DataFrame(), best=None, conflict=(f"ratio: {why}",),
+                            n_combinations=0, n_candidates=0, n_shift_solves=0, time_s=time.perf_counter() - t0)
+
+    def _row(self, c, idx, options, chain_info, key_n, ratios, err) -> dict:
+        row = {"total_ratio": float(np.prod(ratios[c])), "ratio_error": float(err[c])}
+        for k, st in enumerate(self.stages):
+            p = st.name
+            row[f"{p}.ratio"] = float(ratios[c, k])
+            if isinstance(st, GearStage):
+                row[f"{p}.z1"] = int(options[k]["z1"][idx[c, k]])
+                row[f"{p}.z2"] = int(options[k]["z2"][idx[c, k]])
+            elif isinstance(st, ChainStage):
+                ci = chain_info[k]
+                row[f"{p}.designation"] = str(ci["designation"][c])
+                row[f"{p}.strands"] = int(ci["strands"][c])
+                row[f"{p}.pitch_mm"] = float(ci["pitch"][c])
+                row[f"{p}.z1"] = int(ci["z1"][c])
+                row[f"{p}.z2"] = int(ci["z2"][c])
+                row[f"{p}.links"] = int(ci["links"][c])
+                row[f"{p}.center_distance_mm"] = float(ci["a"][c])
+        for name, nk in key_n.items():
+            row[f"key '{name}'.n_keys"] = int(nk[c])
+        return row
+
+    def _wrap(self, U, tol, objective, top, t0, ex, idx, options, chain_info, key_n, ratios, err, ng_ok, ng_min,
+              names, M, n_comb, n_cand, n_solves, ng_size, ng_mass) -> DriveOptimum:
+        gear_k = [k for k, st in enumerate(self.stages) if isinstance(st, GearStage)]
+        feas = np.flatnonzero(ex["feas"])
+        feas = feas[np.lexsort((ex["size"][feas], np.round(err[feas], 12), np.round(ex["cost"][feas], 9)))]
+        what = {"min_size": "size", "min_mass": "mass", "max_margin": "smallest margin"}[objective]
+        rows = []
+        for rank, c in enumerate(feas[:top]):
+            row = {"rank": rank + 1, "feasible": True, "size_mm2": ex["size"][c], "mass_kg": ex["mass"][c],
+                   "min_margin": ex["mm"][c], "limiting": ex["labels"][ex["lim"][c]],
+                   **self._row(c, idx, options, chain_info, key_n, ratios, err),
+                   **self._gear_cols(c, idx, options, gear_k, objective)}
+            if rank == 0:
+                row["reason"] = "best"
+            else:
+                c0, d = ex["cost"][feas[0]], ex["cost"][c] - ex["cost"][feas[0]]
+                row["reason"] = (f"{what} {100 * abs(d) / max(abs(c0), 1e-300):.3g} % worse than rank 1"
+                                 if d > 1e-9 * max(abs(c0), 1e-300) else
+                                 "ties rank 1 on the objective; loses on ratio error or size")
+            rows.append(row)
+        # the closest failing designs (largest smallest margin), each with the stage checks that fail
+        bad = np.flatnonzero((ex["done"] & ~ex["feas"]) | ~ng_ok)
+        mm = np.where(ex["done"], ex["mm"], ng_min)[bad]
+        bad = bad[np.argsort(-np.where(np.isnan(mm), -np.inf, mm), kind="stable")][:_INFEASIBLE_SHOWN]
+        conflict: tuple = ()
+        for c in bad:
+            fails = [f"{names[j][0]}: {names[j][1]} ({M[c, j]:+.3g})" for j in range(len(names)) if not M[c, j] >= 0]
+            if ex["why"][c] >= 0:
+                fails.append(ex["reasons"][ex["why"][c]])
+            elif ex["done"][c] and ex["mm"][c] < 0 and not fails:
+                fails.append(f"{ex['labels'][ex['lim'][c]]} ({ex['mm'][c]:+.3g})")
+            known = bool(ex["done"][c]) or not gear_k
+            row = {"rank": None, "feasible": False,
+                   "size_mm2": ex["size"][c] if ex["done"][c] else (ng_size[c] if known else np.nan),
+                   "mass_kg": ex["mass"][c] if ex["done"][c] else (ng_mass[c] if known else np.nan),
+                   "min_margin": ex["mm"][c] if ex["done"][c] else ng_min[c], "limiting": ex["labels"][ex["lim"][c]],
+                   **self._row(c, idx, options, chain_info, key_n, ratios, err),
+                   **self._gear_cols(c, idx, options, gear_k, objective, solve=bool(ex["done"][c])),
+                   "reason": "fails " + "; ".join(fails)}
+            rows.append(row)
+            if not conflict:
+                conflict = tuple(fails)
+        table = pd.DataFrame(rows)
+        if len(table):
+            table["rank"] = table["rank"].astype("Int64")     # failing designs have no rank
+        if feas.size:
+            c = feas[0]
+            best = self._fixed(c, idx, options, chain_info, objective).analyse(objective)
+            msg = (f"u = {float(np.prod(ratios[c])):.6g} ({100 * float(err[c]):.3g} % off): size "
+                   f"{ex['size'][c]:.6g} mm², mass {ex['mass'][c]:.4g} kg, smallest margin {ex['mm'][c]:+.4f} "
+                   f"({ex['labels'][ex['lim'][c]]}); {int(ex['done'].sum())} of {n_cand} designs evaluated in full")
+            conflict = ()
+        else:
+            best = None
+            msg = ("no design passes every check; the closest fails " + "; ".join(conflict)) if conflict else \
+                "no design passes every check"
+        return DriveOptimum(success=bool(feas.size), message=msg, objective=objective, total_ratio=U, ratio_tol=tol,
+                            table=table, best=best, conflict=conflict, n_combinations=int(n_comb),
+                            n_candidates=int(n_cand), n_shift_solves=int(n_solves), time_s=time.perf_counter() - t0)
+
+    def _gear_cols(self, c, idx, options, gear_k, objective, solve=True) -> dict:
+        out = {}
+        for k in gear_k:
+            st = self.stages[k]
+            j = idx[c, k]
+            z1, z2 = options[k]["z1"][j], options[k]["z2"][j]
+            sol = _gear_solution(st, z1, z2, objective) if solve else None
+            out[f"{st.name}.x1"] = sol["x1"] if sol and sol["feasible"] else np.nan
+            out[f"{st.name}.x2"] = sol["x2"] if sol and sol["feasible"] else np.nan
+            out[f"{st.name}.a_w_mm"] = sol["a_w"] if sol and sol["feasible"] else np.nan
+        return out
+
+    def _fixed(self, c, idx, options, chain_info, objective) -> "Drive":
+        """This drive with every free variable fixed at design c (shifts, teeth, chain row)."""
+        new = []
+        for k, st in enumerate(self.stages):
+            if isinstance(st, GearStage):
+                j = idx[c, k]
+                z1, z2 = int(options[k]["z1"][j]), int(options[k]["z2"][j])
+                sol = _gear_solution(st, z1, z2, objective)
+                new.append(replace(st, z1=z1, z2=z2, x1=sol["x1"], x2=sol["x2"]))
+            elif isinstance(st, ChainStage):
+                ci = chain_info[k]
+                new.append(replace(st, z1=int(ci["z1"][c]), z2=int(ci["z2"][c]), designation=str(ci["designation"][c]),
+                                   strands=(int(ci["strands"][c]),)))
+            else:
+                new.append(st)
+        fixed = replace(self, stages=tuple(new))
+        object.__setattr__(fixed, "_load_from_motor", self._load_from_motor)
+        return fixed
+
+
+@lru_cache(maxsize=256)
+def _key_caps_cached(d, hub, crush, shear, end, max_keys):
+    from . import key
+
+    sh = Shaft(d, hub, 0, allowable_crush_mpa=crush, allowable_shear_mpa=shear, end=end, max_keys=max_keys)
+    sel = sh.select(1e-6)
+    caps = {}
+    for n_keys in (1, 2):
+        cap = key.capacity(d, sel.length_mm, crush, shear, end=end, n_keys=min(n_keys, max_keys))
+        caps[n_keys] = (cap.torque_crush_nm, cap.torque_shear_nm)
+    return sel.length_mm, caps
+
+
+def _key_caps(sh: Shaft):
+    """(key length, {n_keys: (torque at the crushing limit, at the shear limit)}) of a hub [mm, N·m]."""
+    return _key_caps_cached(sh.d_mm, sh.hub_length_mm, sh.allowable_crush_mpa, sh.allowable_shear_mpa, sh.end,
+                            sh.max_keys)

@@ -1,0 +1,100 @@
+"""Three-phase asynchronous motors from a catalog, and the choice of one for a drive.
+
+The bundled table (catalogs/motors_air.csv) is the AIR series as the Russian course-design books
+tabulate it: rated power P (the IEC 60034 power steps 0.37 … 30 kW), synchronous speed
+n_s = 6000/poles rpm (50 Hz), rated speed n, the ratio T_max/T_nom and the shaft-end diameter.
+Efficiency, starting-torque ratio and mass are not in the one source found, so the table leaves
+them out (docs/drive.md) rather than guess them.
+
+Rated torque T = 9550·P/n [N·m] (P in kW, n in rpm), i.e. T = P/ω with ω = 2πn/60.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import pandas as pd
+
+from ..catalogs.tables import load_catalog
+from ..errors import GearDesignError
+from ..results import Result
+from ..validate import one_number, require_range
+
+__all__ = ["MotorSelection", "select", "rated_torque_nm", "MOTOR_CATALOGS", "SERVICE_FACTOR_RANGE",
+           "POWER_RANGE_KW", "SPEED_RANGE_RPM"]
+
+MOTOR_CATALOGS = ("motors_air",)
+SERVICE_FACTOR_RANGE = (1.0, 5.0)    # a design allowance on the power, not a second motor
+POWER_RANGE_KW = (1e-3, 1e5)
+SPEED_RANGE_RPM = (1.0, 10_000.0)    # 50 Hz mains: at most 3000 rpm synchronous; a wish above is a slip
+
+
+def rated_torque_nm(power_kw, speed_rpm):
+    """Rated torque T = P/ω = 9550·P/n [N·m], P in kW, n in rpm (ω = 2πn/60).
+
+    Seed 002's AIR100L4 (4 kW) at its 1410 rpm rated speed:
+
+    >>> round(rated_torque_nm(4.0, 1410), 3)
+    27.09
+    """
+    return 1000.0 * power_kw / (2.0 * math.pi * speed_rpm / 60.0)
+
+
+@dataclass(frozen=True, eq=False)
+class MotorSelection(Result):
+    """Result of :func:`select`: the chosen motor (a catalog row) and every row considered.
+
+    ``motor`` has the catalog's columns plus ``rated_torque_nm`` and ``max_torque_nm``;
+    ``candidates`` lists the rows with enough power, nearest speed first.
+    """
+
+    found: bool
+    message: str
+    power_kw: float
+    speed_rpm: float
+    service_factor: float
+    motor: pd.Series | None
+    candidates: pd.DataFrame
+
+    _success_field = "found"
+    _table_fields = ("candidates",)
+
+    def __repr__(self) -> str:
+        return f"MotorSelection(P >= {self.power_kw * self.service_factor:g} kW, n ~ {self.speed_rpm:g} rpm): {self.message}"
+
+
+def select(power_kw, speed_rpm, service_factor=1.0, catalog="motors_air") -> MotorSelection:
+    """The motor for a drive: the smallest rated power P >= power_kw·service_factor, of the
+    synchronous speed whose rated speed is nearest ``speed_rpm`` (the usual course-design rule:
+    pick the speed series, then the first power step that covers the need).
+
+    Ties in speed go to the faster series (a smaller, lighter motor for the same power).
+
+    >>> select(3.5, 1450).motor["designation"]
+    'AIR100L4'
+    """
+    p = one_number("power_kw", require_range("power_kw", power_kw, *POWER_RANGE_KW, unit="kW"))
+    n = one_number("speed_rpm", require_range("speed_rpm", speed_rpm, *SPEED_RANGE_RPM, unit="rpm"))
+    sf = one_number("service_factor", require_range("service_factor", service_factor, *SERVICE_FACTOR_RANGE))
+    if not (isinstance(catalog, str) and (catalog in MOTOR_CATALOGS or catalog.lower().endswith(".csv"))):
+        raise GearDesignError(f"catalog must be one of {', '.join(MOTOR_CATALOGS)} or a motor CSV path, got {catalog!r}")
+    table = load_catalog(catalog, kind="motors")
+    need = p * sf
+    enough = table[table["power_kw"] >= need * (1 - 1e-12)].copy()
+    if enough.empty:
+        top = table["power_kw"].max()
+        return MotorSelection(False, f"no motor in {catalog!r} gives {need:g} kW (the largest is {top:g} kW)",
+                              p, n, sf, None, enough)
+    enough["rated_torque_nm"] = rated_torque_nm(enough["power_kw"], enough["rated_speed_rpm"])
+    enough["max_torque_nm"] = enough["rated_torque_nm"] * enough["max_torque_ratio"]
+    enough["speed_error_rpm"] = (enough["rated_speed_rpm"] - n).abs()
+    # one row per speed series: its first power step that covers the need
+    first = enough.sort_values(["sync_speed_rpm", "power_kw"], kind="stable").groupby("sync_speed_rpm").head(1)
+    ranked = first.sort_values(["speed_error_rpm", "sync_speed_rpm"], ascending=[True, False], kind="stable")
+    ranked = ranked.reset_index(drop=True)
+    best = ranked.iloc[0]
+    msg = (f"{best['designation']}: {best['power_kw']:g} kW, {best['rated_speed_rpm']:g} rpm "
+           f"({best['sync_speed_rpm']:g} rpm synchronous), T_nom = {best['rated_torque_nm']:.4g} N·m, "
+           f"T_max/T_nom = {best['max_torque_ratio']:g}; needed {need:g} kW"
+           + (f" (= {p:g} kW x service factor {sf:g})" if sf != 1.0 else ""))
+    return MotorSelection(True, msg, p, n, sf, best, ranked)
