@@ -98,6 +98,8 @@ def inv_from_tan(t):
     >>> round(inv_from_tan(np.tan(np.radians(20.0))), 12)
     0.014904383867
     """
+    if type(t) is float:   # one number: without numpy's per-call cost
+        return t_minus_atan_float(t)
     t = np.asarray(t, dtype=float)
     return _scalar_out(_t_minus_atan(t), t)
 
@@ -112,6 +114,8 @@ def inv(alpha):
     >>> f"{inv(1e-6):.12e}"                # α³/3 + 2α⁵/15 (50-digit: 3.333333333334666e-19)
     '3.333333333335e-19'
     """
+    if type(alpha) is float:   # one number: without numpy's per-call cost
+        return t_minus_atan_float(math.tan(alpha))
     alpha = np.asarray(alpha, dtype=float)
     t = np.tan(np.atleast_1d(alpha))
     out = _t_minus_atan(t).reshape(alpha.shape)

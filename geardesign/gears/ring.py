@@ -16,7 +16,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..validate import one_number, require_int, require_range
-from .involute import inv, tan_from_inv
+from .involute import _tan_from_inv_float, inv, inv_from_tan, tan_from_inv
 
 __all__ = ["ShaperCutter", "trochoid_margin", "trimming_margin", "cutting_mesh", "CuttingMesh",
            "CUTTER_DIAMETER_MM", "Z0_RANGE", "X0_RANGE", "HA0_RANGE"]
@@ -132,18 +132,28 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
     """
     z0 = cutter.teeth(m_n, z2)
     z0 = np.where(np.asarray(z2) > z0, z0, np.nan)
+    # one design (the optimisers' path) in Python floats: numpy's per-call cost would dominate
+    scalar = all(np.ndim(v) == 0 for v in (m_n, z2, x2, r_a2))
+    if scalar:
+        z0, m_n, z2, x2, r_a2 = (float(v) for v in (z0, m_n, z2, x2, r_a2))
     m_t = m_n / cos_beta
     inv_w0 = inv(alpha_t) + 2.0 * (x2 - cutter.x0) * tan_n / (z2 - z0)
-    t_w0 = tan_from_inv(np.where(inv_w0 > 0, inv_w0, np.nan), validate=False)
+    if scalar:
+        t_w0 = _tan_from_inv_float(inv_w0) if inv_w0 > 0 else math.nan
+    else:
+        t_w0 = tan_from_inv(np.where(inv_w0 > 0, inv_w0, np.nan), validate=False)
     cos_w0 = 1.0 / np.sqrt(1.0 + t_w0 * t_w0)
     cos_t = math.cos(alpha_t)
     a_w0 = m_t * (z2 - z0) * cos_t / (2.0 * cos_w0)
     r_a0 = m_t * z0 / 2.0 + (cutter.ha0 + cutter.x0) * m_n
     r_b0, r_b2 = m_t * z0 / 2.0 * cos_t, m_t * z2 / 2.0 * cos_t
     with np.errstate(invalid="ignore"):   # a ring tip inside its base circle: NaN, a failing margin
-        trim = trimming_margin(z0, z2, r_b0 / r_a0, r_b2 / r_a2, inv(np.arccos(r_b0 / r_a0)),
-                               inv(np.arccos(r_b2 / r_a2)), inv_w0)
+        # inv α_a from tan α_a = ρ_a/r_b, ρ_a = √(r_a² − r_b²): no arccos near 1
+        rho_a0 = np.sqrt((r_a0 - r_b0) * (r_a0 + r_b0))
+        rho_a2 = np.sqrt((r_a2 - r_b2) * (r_a2 + r_b2))
+        trim = trimming_margin(z0, z2, r_b0 / r_a0, r_b2 / r_a2, inv_from_tan(rho_a0 / r_b0),
+                               inv_from_tan(rho_a2 / r_b2), inv_w0)
     # a_w0 sin α_w0 = m_t (z2 − z0) cos α_t tan α_w0 / 2; d tan α_w0 / d inv α_w0 = (1 + t²)/t²
-    rho_form2 = np.sqrt((r_a0 - r_b0) * (r_a0 + r_b0)) + m_t * (z2 - z0) * cos_t * t_w0 / 2.0
+    rho_form2 = rho_a0 + m_t * (z2 - z0) * cos_t * t_w0 / 2.0
     drho = m_t * cos_t * tan_n * (1.0 + t_w0 * t_w0) / (t_w0 * t_w0)
     return CuttingMesh(z0, a_w0, r_a0, inv_w0, trim, 2.0 * a_w0 + 2.0 * r_a0, rho_form2, drho)
