@@ -78,8 +78,9 @@ def trochoid_margin(z1, z2, r_a1, r_a2, a_w, inv_a1, inv_a2, inv_aw):
     >>> round(float(trochoid_margin(16, 24, 27.0, 34.5, 13.1682677, 0.0760958, 0.0026109, 0.0604007)), 4)
     0.0401
     """
-    c1 = np.clip((r_a2 * r_a2 - r_a1 * r_a1 - a_w * a_w) / (2.0 * a_w * r_a1), -1.0, 1.0)
-    c2 = np.clip((r_a2 * r_a2 - r_a1 * r_a1 + a_w * a_w) / (2.0 * a_w * r_a2), -1.0, 1.0)
+    # clipped to [-1, 1] by two ufuncs (np.clip costs ~10 µs on one number)
+    c1 = np.minimum(np.maximum((r_a2 * r_a2 - r_a1 * r_a1 - a_w * a_w) / (2.0 * a_w * r_a1), -1.0), 1.0)
+    c2 = np.minimum(np.maximum((r_a2 * r_a2 - r_a1 * r_a1 + a_w * a_w) / (2.0 * a_w * r_a2), -1.0), 1.0)
     return (z1 * (inv_a1 + np.arccos(c1)) - z2 * (inv_a2 + np.arccos(c2)) + (z2 - z1) * inv_aw) / z2
 
 
@@ -131,11 +132,13 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
     79.5
     """
     z0 = cutter.teeth(m_n, z2)
-    z0 = np.where(np.asarray(z2) > z0, z0, np.nan)
     # one design (the optimisers' path) in Python floats: numpy's per-call cost would dominate
     scalar = all(np.ndim(v) == 0 for v in (m_n, z2, x2, r_a2))
     if scalar:
         z0, m_n, z2, x2, r_a2 = (float(v) for v in (z0, m_n, z2, x2, r_a2))
+        z0 = z0 if z2 > z0 else math.nan
+    else:
+        z0 = np.where(np.asarray(z2) > z0, z0, np.nan)
     m_t = m_n / cos_beta
     inv_w0 = inv(alpha_t) + 2.0 * (x2 - cutter.x0) * tan_n / (z2 - z0)
     if scalar:
