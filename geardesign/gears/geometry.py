@@ -357,22 +357,28 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     rho_a1 = ops.sqrt(gap1 * (gap1 + db1))  # √(r_a² − r_b²) = r_b tan α_a
     rho_a2 = ops.sqrt(gap2 * (gap2 + db2))
     t_a1, t_a2 = 2.0 * rho_a1 / db1, 2.0 * rho_a2 / db2
-    inv_a1, inv_a2 = ops.t_minus_atan(t_a1), ops.t_minus_atan(t_a2)
     if internal or mesh.beta_deg:
         # s_a = d_a (s/(m_t z) − (inv α_a − inv α_t)) with the difference of involutes taken from
         # Δt = tan α_a − tan α_t = (r_a − r)(r_a + r)/(r_b (ρ_a + r_b tan α_t)): at large z the two
         # involutes agree to many digits, and α_t, a derived double, must not leak its rounding
         # (z·ulp) into s_a. Spur pairs keep the plain form, bit for bit as before helical ones.
         r1, r2 = d1 / 2.0, d2 / 2.0
+        # The tip involutes (only the checks' margins and gradients read them, where an absolute
+        # error ~ulp·inv α_t is harmless) follow as inv α_t + step: no second t − atan t per gear.
         dt1 = m * (rack.ha + x1 - k) * (da1 / 2.0 + r1) / (db1 / 2.0 * (rho_a1 + db1 / 2.0 * ta))
-        sa1 = da1 * (math.pi / (2.0 * z1) + 2.0 * x1 * tn / z1 - _inv_step(ta, dt1, ops))
+        step1 = _inv_step(ta, dt1, ops)
+        sa1 = da1 * (math.pi / (2.0 * z1) + 2.0 * x1 * tn / z1 - step1)
         if internal:
             dt2 = -m * (rack.ha - x2 - k) * (da2 / 2.0 + r2) / (db2 / 2.0 * (rho_a2 + db2 / 2.0 * ta))
-            sa2 = da2 * (math.pi / (2.0 * z2) - 2.0 * x2 * tn / z2 + _inv_step(ta, dt2, ops))
+            step2 = _inv_step(ta, dt2, ops)
+            sa2 = da2 * (math.pi / (2.0 * z2) - 2.0 * x2 * tn / z2 + step2)
         else:
             dt2 = m * (rack.ha + x2 - k) * (da2 / 2.0 + r2) / (db2 / 2.0 * (rho_a2 + db2 / 2.0 * ta))
-            sa2 = da2 * (math.pi / (2.0 * z2) + 2.0 * x2 * tn / z2 - _inv_step(ta, dt2, ops))
+            step2 = _inv_step(ta, dt2, ops)
+            sa2 = da2 * (math.pi / (2.0 * z2) + 2.0 * x2 * tn / z2 - step2)
+        inv_a1, inv_a2 = inv_a + step1, inv_a + step2
     else:
+        inv_a1, inv_a2 = ops.t_minus_atan(t_a1), ops.t_minus_atan(t_a2)
         sa1 = da1 * (psi1 - inv_a1)
         sa2 = da2 * (psi2 - inv_a2)
 
