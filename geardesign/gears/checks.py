@@ -420,7 +420,8 @@ def _cos_tip(geo: dict, gear: int):
 class TipInterference(Check):
     """No tip ("trochoid") interference of pinion and ring as teeth enter and leave mesh
     (internal pairs; KHK §5.2 eq. (5-6)/(5-7), GOST 19274-73): margin in radians of ring rotation,
-    :func:`geardesign.gears.ring.trochoid_margin`. Gradient by central differences."""
+    :func:`geardesign.gears.ring.trochoid_margin`, its gradient
+    :func:`~geardesign.gears.ring.trochoid_margin_gradient`."""
 
     needs_report_fields = False
 
@@ -437,7 +438,19 @@ class TipInterference(Check):
                                geo["_inv_a1"], geo["_inv_a2"], geo["inv_alpha_w"])
 
     def gradient(self, geo):
-        return None
+        from .ring import trochoid_margin_gradient
+        m, sgn = geo["_m"], geo["_sgn"]
+        # ∂r_a/∂x_j = m(δ_gear,j − ∂Δy/∂x_Σ ∂x_Σ/∂x_j); ∂a_w/∂x_Σ = m sin α_t / sin α_w (as
+        # CenterDistance); ∂inv α_w/∂x_Σ = 2 tan α_n / z_Σ; ∂x_Σ/∂x1 = sgn, ∂x_Σ/∂x2 = 1
+        zs = geo["_z2"] - geo["_z1"] if sgn < 0 else geo["_z1"] + geo["_z2"]
+        daw, dinv = m * geo["_sa"] / geo["_sin_w"], 2.0 * geo["_tn"] / zs
+        out = []
+        for j, dxs in ((1, sgn), (2, 1.0)):
+            d_ra1 = m * ((j == 1) - geo["_dk"] * dxs)
+            d_ra2 = m * ((j == 2) - geo["_dk"] * dxs)
+            out.append(trochoid_margin_gradient(geo["_z1"], geo["_z2"], geo["_ra1"], geo["_ra2"], geo["a_w"],
+                                                geo["_t_a1"], geo["_t_a2"], d_ra1, d_ra2, daw * dxs, dinv * dxs))
+        return tuple(out)
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,7 @@ import numpy as np
 from ..validate import one_number, require_int, require_range
 from .involute import _tan_from_inv_float, inv, inv_from_tan, tan_from_inv
 
-__all__ = ["ShaperCutter", "trochoid_margin", "trimming_margin", "cutting_mesh", "CuttingMesh",
+__all__ = ["ShaperCutter", "trochoid_margin", "trochoid_margin_gradient", "trimming_margin", "cutting_mesh", "CuttingMesh",
            "CUTTER_DIAMETER_MM", "Z0_RANGE", "X0_RANGE", "HA0_RANGE"]
 
 # Disc shaper cutters come in nominal reference diameters of 75/80, 100, 125, 160 and 200 mm
@@ -60,6 +60,8 @@ class ShaperCutter:
         """
         if self.z0 is not None:
             return self.z0 + 0 * np.asarray(z2)
+        if np.ndim(m_mm) == 0 and np.ndim(z2) == 0:   # one design: Python's round is numpy's (half to even)
+            return max(Z0_RANGE[0], min(round(CUTTER_DIAMETER_MM / float(m_mm)), int(z2) - RING_MINUS_CUTTER_MIN))
         return np.maximum(Z0_RANGE[0], np.minimum(np.round(CUTTER_DIAMETER_MM / np.asarray(m_mm, dtype=float)),
                                                   np.asarray(z2) - RING_MINUS_CUTTER_MIN)).astype(int)
 
@@ -82,6 +84,23 @@ def trochoid_margin(z1, z2, r_a1, r_a2, a_w, inv_a1, inv_a2, inv_aw):
     c1 = np.minimum(np.maximum((r_a2 * r_a2 - r_a1 * r_a1 - a_w * a_w) / (2.0 * a_w * r_a1), -1.0), 1.0)
     c2 = np.minimum(np.maximum((r_a2 * r_a2 - r_a1 * r_a1 + a_w * a_w) / (2.0 * a_w * r_a2), -1.0), 1.0)
     return (z1 * (inv_a1 + np.arccos(c1)) - z2 * (inv_a2 + np.arccos(c2)) + (z2 - z1) * inv_aw) / z2
+
+
+def trochoid_margin_gradient(z1, z2, r_a1, r_a2, a_w, t_a1, t_a2, d_ra1, d_ra2, d_aw, d_inv_aw):
+    """The derivative of :func:`trochoid_margin` along a change of the shifts, given the changes
+    of its inputs (d_ra1, d_ra2, d_aw, d_inv_aw: mm and rad per unit of the shift). By the chain rule:
+    d inv α_a = tan α_a dr_a / r_a (cos α_a = r_b/r_a), dδ = −dc/√(1 − c²) with c = N/D and
+    dc = (dN − c dD)/D; 0 where the tip circles do not cross (δ at the limit of its range)."""
+    n1 = r_a2 * r_a2 - r_a1 * r_a1 - a_w * a_w
+    n2 = r_a2 * r_a2 - r_a1 * r_a1 + a_w * a_w
+    c1, c2 = n1 / (2.0 * a_w * r_a1), n2 / (2.0 * a_w * r_a2)
+    dn = 2.0 * (r_a2 * d_ra2 - r_a1 * d_ra1)
+    dc1 = (dn - 2.0 * a_w * d_aw - c1 * 2.0 * (d_aw * r_a1 + a_w * d_ra1)) / (2.0 * a_w * r_a1)
+    dc2 = (dn + 2.0 * a_w * d_aw - c2 * 2.0 * (d_aw * r_a2 + a_w * d_ra2)) / (2.0 * a_w * r_a2)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        dd1 = np.where(np.abs(c1) < 1.0, -dc1 / np.sqrt(np.abs(1.0 - c1 * c1)), 0.0)
+        dd2 = np.where(np.abs(c2) < 1.0, -dc2 / np.sqrt(np.abs(1.0 - c2 * c2)), 0.0)
+    return (z1 * (t_a1 * d_ra1 / r_a1 + dd1) - z2 * (t_a2 * d_ra2 / r_a2 + dd2) + (z2 - z1) * d_inv_aw) / z2
 
 
 def trimming_margin(z1, z2, cos_a1, cos_a2, inv_a1, inv_a2, inv_aw):
