@@ -47,10 +47,6 @@ SA_MIN_RANGE = (0.0, 2.0)
 EPS_GAMMA_MIN_RANGE = (0.0, 20.0)   # ε_γ = ε_α + ε_β: wide helical gears reach 5 and more
 
 
-# Central-difference step in x2 of the checks that depend on the ring alone (as the solvers' step)
-_FD_STEP_X2 = 1e-6
-
-
 def _other(gear: int) -> int:
     return 2 if gear == 1 else 1
 
@@ -299,20 +295,17 @@ def _cutter(cutter):
     return cutter
 
 
-def _cutting_mesh(geo: dict, cutter, dx2: float = 0.0):
-    """The cutter–ring mesh (:func:`geardesign.gears.ring.cutting_mesh`) of the ring in ``geo``, or
-    of the ring shifted by ``dx2`` (its tip radius moves by m·dx2: an internal pair keeps its tips).
-    Kept in ``geo`` by cutter and dx2: the margin, the gradient and :class:`CutterTrimming` of one
-    design share it."""
+def _cutting_mesh(geo: dict, cutter):
+    """The cutter–ring mesh (:func:`geardesign.gears.ring.cutting_mesh`) of the ring in ``geo``,
+    kept in ``geo`` by cutter: the margins and gradients of one design share it."""
     memo = geo.setdefault("_cutting_meshes", {})
-    key = (cutter, dx2)
-    if key not in memo:
+    if cutter not in memo:
         from .ring import cutting_mesh
         at = math.atan(geo["_ta"]) if np.ndim(geo["_ta"]) == 0 else np.arctan(geo["_ta"])
         cos_beta = geo["_m"] * geo["_z2"] / geo["d2"]
-        memo[key] = cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"] + dx2, geo["_ra2"] + geo["_m"] * dx2, cutter,
-                                 float(at), float(np.ravel(geo["_tn"])[0]), cos_beta)
-    return memo[key]
+        memo[cutter] = cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], cutter, float(at),
+                                    float(np.ravel(geo["_tn"])[0]), cos_beta)
+    return memo[cutter]
 
 
 @dataclass(frozen=True)
@@ -481,7 +474,7 @@ class CutterTrimming(Check):
     (5-9)/(5-10) with the cutter in place of the pinion, in the cutter–ring mesh at zero backlash;
     KHK's Table 5-3a of the smallest ring per cutter follows from it). ``cutter``: a
     :class:`~geardesign.gears.ring.ShaperCutter` (default: the standard-size one for the module).
-    Depends on the ring only: gradient (0, ∂/∂x2) by central differences of the cutter–ring mesh."""
+    Depends on the ring only: gradient (0, ∂/∂x2), :func:`geardesign.gears.ring.trimming_margin_gradient`."""
 
     cutter: object = None
 
@@ -497,9 +490,7 @@ class CutterTrimming(Check):
         return _cutting_mesh(geo, self.cutter).trimming
 
     def gradient(self, geo):
-        h = _FD_STEP_X2
-        d = (_cutting_mesh(geo, self.cutter, h).trimming - _cutting_mesh(geo, self.cutter, -h).trimming) / (2 * h)
-        return 0.0, d
+        return 0.0, _cutting_mesh(geo, self.cutter).dtrimming_dx2
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,7 @@ import numpy as np
 from ..validate import one_number, require_int, require_range
 from .involute import _tan_from_inv_float, inv, inv_from_tan, tan_from_inv
 
-__all__ = ["ShaperCutter", "trochoid_margin", "trochoid_margin_gradient", "trimming_margin", "cutting_mesh", "CuttingMesh",
+__all__ = ["ShaperCutter", "trochoid_margin", "trochoid_margin_gradient", "trimming_margin", "trimming_margin_gradient", "cutting_mesh", "CuttingMesh",
            "CUTTER_DIAMETER_MM", "Z0_RANGE", "X0_RANGE", "HA0_RANGE"]
 
 # Disc shaper cutters come in nominal reference diameters of 75/80, 100, 125, 160 and 200 mm
@@ -123,6 +123,23 @@ def trimming_margin(z1, z2, cos_a1, cos_a2, inv_a1, inv_a2, inv_aw):
     return t1 + inv_a1 - inv_aw - z2 / z1 * (t2 + inv_a2 - inv_aw)
 
 
+def trimming_margin_gradient(z1, z2, cos_a1, cos_a2, r_a2, t_a2, d_ra2, d_inv_aw):
+    """The derivative of :func:`trimming_margin` when the ring's tip radius changes by d_ra2 (mm)
+    and inv α_w by d_inv_aw, the pinion (or cutter) fixed. Chain rule: q = (cos α_a1/cos α_a2)²,
+    cos α_a2 = r_b2/r_a2, so dq = 2q dr_a2/r_a2; ds1 = −dq/(1 − (z1/z2)²),
+    ds2 = −(dq/q²)/((z2/z1)² − 1); dθ = ds/(2√(s(1 − s))); d inv α_a2 = tan α_a2 dr_a2/r_a2."""
+    q = (cos_a1 / cos_a2) ** 2
+    s1 = (1.0 - q) / (1.0 - (z1 / z2) ** 2)
+    s2 = (1.0 / q - 1.0) / ((z2 / z1) ** 2 - 1.0)
+    dq = 2.0 * q * d_ra2 / r_a2
+    ds1 = -dq / (1.0 - (z1 / z2) ** 2)
+    ds2 = -dq / (q * q) / ((z2 / z1) ** 2 - 1.0)
+    with np.errstate(invalid="ignore", divide="ignore"):   # outside the arcsines' domain: NaN, as the margin
+        dt1 = ds1 / (2.0 * np.sqrt(s1 * (1.0 - s1)))
+        dt2 = ds2 / (2.0 * np.sqrt(s2 * (1.0 - s2)))
+    return dt1 - d_inv_aw - z2 / z1 * (dt2 + t_a2 * d_ra2 / r_a2 - d_inv_aw)
+
+
 class CuttingMesh(NamedTuple):
     """The cutter–ring mesh of :func:`cutting_mesh` (lengths in mm, arrays like the inputs)."""
 
@@ -131,6 +148,7 @@ class CuttingMesh(NamedTuple):
     r_a0: object        # the cutter's tip radius
     inv_w0: object      # inv α_w0
     trimming: object    # margin of :func:`trimming_margin`, rad
+    dtrimming_dx2: object   # ∂trimming/∂x2, rad
     d_f2: object        # the ring's root diameter, 2 a_w0 + d_a0
     rho_form2: object   # radius of curvature where the ring's involute starts (its form circle), mm
     drho_form2_dx2: object   # ∂rho_form2/∂x2, mm
@@ -175,7 +193,10 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
         rho_a2 = np.sqrt((r_a2 - r_b2) * (r_a2 + r_b2))
         trim = trimming_margin(z0, z2, r_b0 / r_a0, r_b2 / r_a2, inv_from_tan(rho_a0 / r_b0),
                                inv_from_tan(rho_a2 / r_b2), inv_w0)
+        # x2 moves the ring's tip by m_n (r_a2 = r2 − m_n(h_a* − x2)) and inv α_w0 by 2 tan α_n/(z2 − z0)
+        dtrim = trimming_margin_gradient(z0, z2, r_b0 / r_a0, r_b2 / r_a2, r_a2, rho_a2 / r_b2, m_n,
+                                         2.0 * tan_n / (z2 - z0))
     # a_w0 sin α_w0 = m_t (z2 − z0) cos α_t tan α_w0 / 2; d tan α_w0 / d inv α_w0 = (1 + t²)/t²
     rho_form2 = rho_a0 + m_t * (z2 - z0) * cos_t * t_w0 / 2.0
     drho = m_t * cos_t * tan_n * (1.0 + t_w0 * t_w0) / (t_w0 * t_w0)
-    return CuttingMesh(z0, a_w0, r_a0, inv_w0, trim, 2.0 * a_w0 + 2.0 * r_a0, rho_form2, drho)
+    return CuttingMesh(z0, a_w0, r_a0, inv_w0, trim, dtrim, 2.0 * a_w0 + 2.0 * r_a0, rho_form2, drho)
