@@ -251,8 +251,8 @@ def mesh_geometry(mesh: Mesh, m, x1, x2, full: bool = True, then=None) -> dict:
     Internal quantities the checks and gradients use carry a leading underscore. ``full=False``
     leaves out the fields only reports use (:data:`REPORT_FIELDS`). Large inputs are evaluated
     in blocks of :data:`BLOCK` designs. ``then``: a function of the geometry dict (e.g. the
-    checks' margins) applied block by block, whose dict of arrays is returned instead: only what
-    it returns is stored at full size, not the ~50 fields."""
+    checks' margins) applied block by block, whose dict of arrays (the designs along their last
+    axis) is returned instead: only what it returns is stored at full size, not the ~50 fields."""
     m, z1, z2, x1, x2 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, mesh.z1, mesh.z2, x1, x2)))
     with np.errstate(invalid="ignore", divide="ignore"):
         if m.size <= BLOCK:
@@ -269,9 +269,9 @@ def mesh_geometry(mesh: Mesh, m, x1, x2, full: bool = True, then=None) -> dict:
                     out[k] = v
                     continue
                 if k not in out:
-                    out[k] = np.empty(m.size, dtype=v.dtype)
-                out[k][s:s + v.size] = v
-        return {k: (v.reshape(shape) if np.ndim(v) else v) for k, v in out.items()}
+                    out[k] = np.empty(v.shape[:-1] + (m.size,), dtype=v.dtype)
+                out[k][..., s:s + v.shape[-1]] = v
+        return {k: (v.reshape(v.shape[:-1] + shape) if np.ndim(v) else v) for k, v in out.items()}
 
 
 def mesh_geometry_float(mesh: Mesh, m: float, x1: float, x2: float, full: bool = True) -> dict:
