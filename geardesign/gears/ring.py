@@ -66,6 +66,46 @@ class ShaperCutter:
                                                   np.asarray(z2) - RING_MINUS_CUTTER_MIN)).astype(int)
 
 
+# The formulas below take arrays or, on the optimisers' one-design path, Python floats; these pick
+# math for floats (numpy costs ~1-10 µs a call on one number) and give NaN where numpy would.
+def _sqrt(v):
+    if type(v) is float:
+        return math.sqrt(v) if v >= 0.0 else math.nan
+    return np.sqrt(v)
+
+
+def _darccos_clipped(c, dc):
+    """The change of :func:`_arccos_clipped` for a change dc of c: −dc/√(1 − c²) inside (−1, 1),
+    0 where c is clipped."""
+    if type(c) is float:
+        return -dc / math.sqrt(1.0 - c * c) if -1.0 < c < 1.0 else 0.0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(np.abs(c) < 1.0, -dc / np.sqrt(np.abs(1.0 - c * c)), 0.0)
+
+
+def _darcsin_sqrt(s, ds):
+    """The change of asin √s for a change ds of s: ds/(2√(s(1 − s))) (NaN outside 0 < s < 1)."""
+    if type(s) is float:
+        return ds / (2.0 * math.sqrt(s * (1.0 - s))) if 0.0 < s < 1.0 else math.nan
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return ds / (2.0 * np.sqrt(s * (1.0 - s)))
+
+
+def _arccos_clipped(c):
+    """arccos of c clipped to [-1, 1] (NaN stays NaN)."""
+    if type(c) is float:
+        return math.acos(min(max(c, -1.0), 1.0))   # max(nan, -1.0) is nan
+    return np.arccos(np.minimum(np.maximum(c, -1.0), 1.0))   # np.clip costs ~10 µs on one number
+
+
+def _arcsin_sqrt(s, ok):
+    """asin √s where ``ok``, else NaN."""
+    if type(ok) is bool:
+        return math.asin(math.sqrt(s)) if ok else math.nan
+    with np.errstate(invalid="ignore"):
+        return np.arcsin(np.sqrt(np.where(ok, s, np.nan)))
+
+
 def trochoid_margin(z1, z2, r_a1, r_a2, a_w, inv_a1, inv_a2, inv_aw):
     """Tip ("trochoid") interference of a pinion and a ring entering and leaving mesh, in radians
     of ring rotation, >= 0 where the tips clear each other (KHK eq. (5-6), (5-7)):
@@ -80,10 +120,9 @@ def trochoid_margin(z1, z2, r_a1, r_a2, a_w, inv_a1, inv_a2, inv_aw):
     >>> round(float(trochoid_margin(16, 24, 27.0, 34.5, 13.1682677, 0.0760958, 0.0026109, 0.0604007)), 4)
     0.0401
     """
-    # clipped to [-1, 1] by two ufuncs (np.clip costs ~10 µs on one number)
-    c1 = np.minimum(np.maximum((r_a2 * r_a2 - r_a1 * r_a1 - a_w * a_w) / (2.0 * a_w * r_a1), -1.0), 1.0)
-    c2 = np.minimum(np.maximum((r_a2 * r_a2 - r_a1 * r_a1 + a_w * a_w) / (2.0 * a_w * r_a2), -1.0), 1.0)
-    return (z1 * (inv_a1 + np.arccos(c1)) - z2 * (inv_a2 + np.arccos(c2)) + (z2 - z1) * inv_aw) / z2
+    c1 = (r_a2 * r_a2 - r_a1 * r_a1 - a_w * a_w) / (2.0 * a_w * r_a1)
+    c2 = (r_a2 * r_a2 - r_a1 * r_a1 + a_w * a_w) / (2.0 * a_w * r_a2)
+    return (z1 * (inv_a1 + _arccos_clipped(c1)) - z2 * (inv_a2 + _arccos_clipped(c2)) + (z2 - z1) * inv_aw) / z2
 
 
 def trochoid_margin_gradient(z1, z2, r_a1, r_a2, a_w, t_a1, t_a2, d_ra1, d_ra2, d_aw, d_inv_aw):
@@ -97,9 +136,7 @@ def trochoid_margin_gradient(z1, z2, r_a1, r_a2, a_w, t_a1, t_a2, d_ra1, d_ra2, 
     dn = 2.0 * (r_a2 * d_ra2 - r_a1 * d_ra1)
     dc1 = (dn - 2.0 * a_w * d_aw - c1 * 2.0 * (d_aw * r_a1 + a_w * d_ra1)) / (2.0 * a_w * r_a1)
     dc2 = (dn + 2.0 * a_w * d_aw - c2 * 2.0 * (d_aw * r_a2 + a_w * d_ra2)) / (2.0 * a_w * r_a2)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        dd1 = np.where(np.abs(c1) < 1.0, -dc1 / np.sqrt(np.abs(1.0 - c1 * c1)), 0.0)
-        dd2 = np.where(np.abs(c2) < 1.0, -dc2 / np.sqrt(np.abs(1.0 - c2 * c2)), 0.0)
+    dd1, dd2 = _darccos_clipped(c1, dc1), _darccos_clipped(c2, dc2)
     return (z1 * (t_a1 * d_ra1 / r_a1 + dd1) - z2 * (t_a2 * d_ra2 / r_a2 + dd2) + (z2 - z1) * d_inv_aw) / z2
 
 
@@ -117,9 +154,7 @@ def trimming_margin(z1, z2, cos_a1, cos_a2, inv_a1, inv_a2, inv_aw):
     s1 = (1.0 - q) / (1.0 - (z1 / z2) ** 2)
     s2 = (1.0 / q - 1.0) / ((z2 / z1) ** 2 - 1.0)
     ok = (s1 >= 0) & (s1 <= 1) & (s2 >= 0) & (s2 <= 1)
-    with np.errstate(invalid="ignore"):
-        t1 = np.arcsin(np.sqrt(np.where(ok, s1, np.nan)))
-        t2 = np.arcsin(np.sqrt(np.where(ok, s2, np.nan)))
+    t1, t2 = _arcsin_sqrt(s1, ok), _arcsin_sqrt(s2, ok)
     return t1 + inv_a1 - inv_aw - z2 / z1 * (t2 + inv_a2 - inv_aw)
 
 
@@ -134,9 +169,7 @@ def trimming_margin_gradient(z1, z2, cos_a1, cos_a2, r_a2, t_a2, d_ra2, d_inv_aw
     dq = 2.0 * q * d_ra2 / r_a2
     ds1 = -dq / (1.0 - (z1 / z2) ** 2)
     ds2 = -dq / (q * q) / ((z2 / z1) ** 2 - 1.0)
-    with np.errstate(invalid="ignore", divide="ignore"):   # outside the arcsines' domain: NaN, as the margin
-        dt1 = ds1 / (2.0 * np.sqrt(s1 * (1.0 - s1)))
-        dt2 = ds2 / (2.0 * np.sqrt(s2 * (1.0 - s2)))
+    dt1, dt2 = _darcsin_sqrt(s1, ds1), _darcsin_sqrt(s2, ds2)   # outside the arcsines' domain: NaN
     return dt1 - d_inv_aw - z2 / z1 * (dt2 + t_a2 * d_ra2 / r_a2 - d_inv_aw)
 
 
@@ -182,15 +215,15 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
         t_w0 = _tan_from_inv_float(inv_w0) if inv_w0 > 0 else math.nan
     else:
         t_w0 = tan_from_inv(np.where(inv_w0 > 0, inv_w0, np.nan), validate=False)
-    cos_w0 = 1.0 / np.sqrt(1.0 + t_w0 * t_w0)
+    cos_w0 = 1.0 / _sqrt(1.0 + t_w0 * t_w0)
     cos_t = math.cos(alpha_t)
     a_w0 = m_t * (z2 - z0) * cos_t / (2.0 * cos_w0)
     r_a0 = m_t * z0 / 2.0 + (cutter.ha0 + cutter.x0) * m_n
     r_b0, r_b2 = m_t * z0 / 2.0 * cos_t, m_t * z2 / 2.0 * cos_t
     with np.errstate(invalid="ignore"):   # a ring tip inside its base circle: NaN, a failing margin
         # inv α_a from tan α_a = ρ_a/r_b, ρ_a = √(r_a² − r_b²): no arccos near 1
-        rho_a0 = np.sqrt((r_a0 - r_b0) * (r_a0 + r_b0))
-        rho_a2 = np.sqrt((r_a2 - r_b2) * (r_a2 + r_b2))
+        rho_a0 = _sqrt((r_a0 - r_b0) * (r_a0 + r_b0))
+        rho_a2 = _sqrt((r_a2 - r_b2) * (r_a2 + r_b2))
         trim = trimming_margin(z0, z2, r_b0 / r_a0, r_b2 / r_a2, inv_from_tan(rho_a0 / r_b0),
                                inv_from_tan(rho_a2 / r_b2), inv_w0)
         # x2 moves the ring's tip by m_n (r_a2 = r2 − m_n(h_a* − x2)) and inv α_w0 by 2 tan α_n/(z2 − z0)
