@@ -301,10 +301,11 @@ def _cutting_mesh(geo: dict, cutter):
     memo = geo.setdefault("_cutting_meshes", {})
     if cutter not in memo:
         from .ring import cutting_mesh
-        at = math.atan(geo["_ta"]) if np.ndim(geo["_ta"]) == 0 else np.arctan(geo["_ta"])
+        ta, tn = geo["_ta"], geo["_tn"]   # tan α_t, tan α_n: one value for every design
+        at = math.atan(ta) if type(ta) is float else float(np.arctan(np.ravel(ta)[0]))
         cos_beta = geo["_m"] * geo["_z2"] / geo["d2"]
-        memo[cutter] = cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], cutter, float(at),
-                                    float(np.ravel(geo["_tn"])[0]), cos_beta)
+        memo[cutter] = cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], cutter, at,
+                                    tn if type(tn) is float else float(np.ravel(tn)[0]), cos_beta)
     return memo[cutter]
 
 

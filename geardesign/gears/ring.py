@@ -9,6 +9,7 @@ z1(inv α_a1 + δ1) − z2(inv α_a2 + δ2) + (z2 − z1) inv α_w >= 0.
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import NamedTuple
@@ -187,6 +188,12 @@ class CuttingMesh(NamedTuple):
     drho_form2_dx2: object   # ∂rho_form2/∂x2, mm
 
 
+@functools.lru_cache(maxsize=64)
+def _inv_of(alpha_t: float) -> float:
+    """inv α_t of the few rack angles in use, computed once each."""
+    return inv(alpha_t)
+
+
 def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n: float,
                  cos_beta: float = 1.0) -> CuttingMesh:
     """The cutter–ring mesh at zero backlash (GOST 19274-73; KHK §5.2): inv α_w0 = inv α_t +
@@ -203,14 +210,14 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
     """
     z0 = cutter.teeth(m_n, z2)
     # one design (the optimisers' path) in Python floats: numpy's per-call cost would dominate
-    scalar = all(np.ndim(v) == 0 for v in (m_n, z2, x2, r_a2))
+    scalar = all(type(v) in (float, int) or np.ndim(v) == 0 for v in (m_n, z2, x2, r_a2))
     if scalar:
         z0, m_n, z2, x2, r_a2 = (float(v) for v in (z0, m_n, z2, x2, r_a2))
         z0 = z0 if z2 > z0 else math.nan
     else:
         z0 = np.where(np.asarray(z2) > z0, z0, np.nan)
     m_t = m_n / cos_beta
-    inv_w0 = inv(alpha_t) + 2.0 * (x2 - cutter.x0) * tan_n / (z2 - z0)
+    inv_w0 = _inv_of(alpha_t) + 2.0 * (x2 - cutter.x0) * tan_n / (z2 - z0)
     if scalar:
         t_w0 = _tan_from_inv_float(inv_w0) if inv_w0 > 0 else math.nan
     else:
