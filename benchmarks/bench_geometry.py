@@ -3,7 +3,11 @@
 * vectorised geometry + the seven default check margins against a plain straight-line numpy
   version of the same seven margins (textbook formulas, arccos and all);
 * one pair's GearPair(...).geometry() against a plain-Python evaluation of a few fields;
-* ``import geardesign`` (and the first GearPair) against ``import numpy``.
+* ``import geardesign`` (and the first GearPair) against ``import numpy``;
+* helical (β = 15°) and internal pairs against spur pairs with the same tooth counts and shifts
+  (vectorised and one design), the ratios issue 12 asks to keep within 1.3x;
+* a region's grid (41 × 41 nodes of one pair, what feasible_region and the atlas evaluate), where
+  the operating angle is computed once per distinct x1 + x2, against the plain version on the same nodes.
 
 Run: python benchmarks/bench_geometry.py [N]
 Prints figures; asserts nothing (speed is measured, not tested).
@@ -30,9 +34,21 @@ def designs(n, seed=0):
     return z1, z2, x1, x2
 
 
-def one_pass(z1, z2, x1, x2, rack, cs):
-    geo = mesh_geometry(Mesh(z1, z2, rack, True), 1.0, x1, x2)
-    return checks.margins(geo, cs)
+def one_pass(z1, z2, x1, x2, rack, cs, full=True):
+    """Every design's geometry (all fields, or with ``full=False`` those the checks read) and its
+    margins, block by block: only the margins are kept at full size."""
+    return mesh_geometry(Mesh(z1, z2, rack, True), 1.0, x1, x2, full, then=lambda geo: checks.margins(geo, cs))
+
+
+def kind_designs(n, seed=1):
+    """Designs every kind admits (z2 > z1 for a ring), shared by the spur, helical and internal runs."""
+    rng = np.random.default_rng(seed)
+    z1 = rng.integers(12, 60, n)
+    z2 = z1 + rng.integers(15, 90, n)
+    return z1, z2, rng.uniform(0.0, 0.6, n), rng.uniform(0.0, 0.6, n)
+
+
+KINDS = (("spur", {}), ("helical 15°", dict(beta_deg=15.0)), ("internal", dict(internal=True)))
 
 
 def plain_margins(z1, z2, x1, x2, alpha=math.radians(20.0), ha=1.0, c=0.25, rho_f=0.38, sa_min=0.25, eps_min=1.2):
@@ -118,18 +134,51 @@ def main(n=1_000_000, repeat=5):
     print(f"  pair_geometry (validated)  {public:8.3f} s   {n / public / 1e6:6.2f} M designs/s")
     zf1, zf2 = z1.astype(float), z2.astype(float)
     plain = best_of(lambda: plain_margins(zf1, zf2, x1, x2), repeat)
+    lean = best_of(lambda: one_pass(z1, z2, x1, x2, rack, cs, full=False), repeat)
     print(f"  plain straight-line numpy, the 7 margins only: {plain:8.3f} s; geardesign (all fields + margins) "
-          f"is {plain / warm:5.2f}x its speed")
+          f"is {plain / warm:5.2f}x its speed; with the fields the checks read (full=False, what "
+          f"pair_geometry(fields=...) and the solvers use) {lean:6.3f} s, {plain / lean:5.2f}x")
     k = 5000
     lat = best_of(lambda: [gd.GearPair(8, 17, 26, 0.898, 0.517).geometry() for _ in range(k)]) / k
     ref = best_of(lambda: [plain_scalar(17, 26, 0.898, 0.517, 8.0) for _ in range(k)]) / k
     print(f"  GearPair(...).geometry(), all {len(gd.GEOMETRY_FIELDS)} fields, validated: {lat * 1e6:7.1f} us; "
           f"plain Python, 5 fields: {ref * 1e6:5.1f} us (ratio {lat / ref:4.1f})")
+    kinds(min(n, 200_000), repeat)
+    region_grid(repeat)
     t_np = import_cpu_s("import numpy")
     t_gd = import_cpu_s("import geardesign")
     t_pair = import_cpu_s("import geardesign as gd; gd.GearPair(8, 17, 26, 0.898, 0.517).geometry()")
     print(f"  import numpy {t_np:5.3f} s CPU; import geardesign {t_gd:5.3f} s ({t_gd / t_np:4.2f}x); "
           f"import + first GearPair.geometry() {t_pair:5.3f} s ({t_pair / t_np:4.2f}x)")
+
+
+def kinds(n, repeat):
+    """Each kind's geometry (all fields) against spur's, vectorised and for one design."""
+    z1, z2, x1, x2 = kind_designs(n)
+    rack = gd.BasicRack()
+    vec, one = {}, {}
+    for name, kind in KINDS:
+        mesh = Mesh(z1, z2, rack, True, **kind)
+        vec[name] = best_of(lambda: mesh_geometry(mesh, 1.0, x1, x2), repeat)
+        k = 3000
+        one[name] = best_of(lambda: [gd.GearPair(8, 17, 40, 0.4, 0.3, **kind).geometry() for _ in range(k)]) / k
+    print(f"  kinds, {n:,} designs vectorised (all fields) and GearPair(8, 17, 40, 0.4, 0.3).geometry():")
+    for name, _ in KINDS:
+        print(f"    {name:<12} {n / vec[name] / 1e6:6.2f} M designs/s ({vec[name] / vec['spur']:4.2f}x spur's time); "
+              f"one design {one[name] * 1e6:6.1f} us ({one[name] / one['spur']:4.2f}x spur's time)")
+
+
+def region_grid(repeat, z1=17, z2=26, n=41):
+    """One pair's region grid (n × n nodes of x1, x2 in [-1, 2]): geometry + margins, against plain."""
+    g = np.linspace(-1.0, 2.0, n)
+    X1, X2 = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
+    rack, cs = gd.BasicRack(), gd.make_checks()
+    reps = 50
+    ours = best_of(lambda: [one_pass(z1, z2, X1, X2, rack, cs, full=False) for _ in range(reps)], repeat) / reps
+    with np.errstate(all="ignore"):
+        plain = best_of(lambda: [plain_margins(float(z1), float(z2), X1, X2) for _ in range(reps)], repeat) / reps
+    print(f"  region grid {n}x{n} of {z1}/{z2}, geometry (check fields) + margins: {ours * 1e3:6.3f} ms; "
+          f"plain {plain * 1e3:6.3f} ms; geardesign is {plain / ours:4.2f}x its speed")
 
 
 if __name__ == "__main__":

@@ -3,7 +3,9 @@
 Run: python benchmarks/bench_shift.py [n_pairs]
 For each method and tolerance: median time per pair (one call per pair) and the error
 against method="exact" (distance in x and objective gap) over a fixed set of pairs;
-then the batched atlas for z1 in 8..40, z2 in z1..120. Prints figures; asserts nothing.
+then ``exact`` for helical (β = 15°) and internal pairs as a ratio of the spur time on the same
+tooth counts (issue 12 asks for 1.5x at most); then the batched atlas for z1 in 8..40, z2 in z1..120.
+Prints figures; asserts nothing.
 """
 import sys
 import time
@@ -68,11 +70,31 @@ def main(n=200):
         gd.optimize_shifts(z1, z2, objective="balanced_sliding", a_w=a_w, m=1.0)
         times.append(time.perf_counter() - t0)
     print(f"  balanced_sliding, a_w fixed (1 variable): {np.median(times) * 1e3:.2f} ms median (100 pairs)")
+    kinds(ps[:60])
     t0 = time.perf_counter()
     df = gd.shift_atlas(range(8, 41), range(8, 121))
     dt = time.perf_counter() - t0
     print(f"atlas z1 8..40 x z2 z1..120 (exact, batched): {len(df)} pairs in {dt:.2f} s "
           f"({dt / len(df) * 1e3:.2f} ms/pair), {int(df.feasible.sum())} feasible")
+
+
+def kinds(ps):
+    """exact per pair for each kind on the same tooth counts (a ring keeps >= 10 more teeth than its
+    pinion), the kinds interleaved pair by pair and timed in CPU seconds, so that the load of other
+    processes falls on all of them alike."""
+    ps = [(z1, max(z2, z1 + 10)) for z1, z2 in ps]
+    kinds = (("spur", {}), ("helical 15°", dict(beta_deg=15.0)), ("internal", dict(internal=True)))
+    times = {name: [] for name, _ in kinds}
+    for name, kind in kinds:
+        gd.optimize_shifts(*ps[0], **kind)
+    for p in ps:
+        for name, kind in kinds:
+            t0 = time.process_time()
+            gd.optimize_shifts(*p, method="exact", **kind)
+            times[name].append(time.process_time() - t0)
+    med = {k: np.median(v) for k, v in times.items()}
+    print(f"exact per kind ({len(ps)} pairs, z2 >= z1 + 10, CPU time): " + "; ".join(
+        f"{k} {v * 1e3:.2f} ms median ({v / med['spur']:.2f}x spur)" for k, v in med.items()))
 
 
 if __name__ == "__main__":

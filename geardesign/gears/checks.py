@@ -296,12 +296,17 @@ def _cutter(cutter):
 
 
 def _cutting_mesh(geo: dict, cutter):
-    """The cutter–ring mesh (:func:`geardesign.gears.ring.cutting_mesh`) of the ring in ``geo``."""
-    from .ring import cutting_mesh
-    at = math.atan(geo["_ta"]) if np.ndim(geo["_ta"]) == 0 else np.arctan(geo["_ta"])
-    cos_beta = geo["_m"] * geo["_z2"] / geo["d2"]
-    return cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], cutter, float(at),
-                        float(np.ravel(geo["_tn"])[0]), cos_beta)
+    """The cutter–ring mesh (:func:`geardesign.gears.ring.cutting_mesh`) of the ring in ``geo``,
+    kept in ``geo`` by cutter: the margins and gradients of one design share it."""
+    memo = geo.setdefault("_cutting_meshes", {})
+    if cutter not in memo:
+        from .ring import cutting_mesh
+        ta, tn = geo["_ta"], geo["_tn"]   # tan α_t, tan α_n: one value for every design
+        at = math.atan(ta) if type(ta) is float else float(np.arctan(np.ravel(ta)[0]))
+        cos_beta = geo["_m"] * geo["_z2"] / geo["d2"]
+        memo[cutter] = cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], cutter, at,
+                                    tn if type(tn) is float else float(np.ravel(tn)[0]), cos_beta)
+    return memo[cutter]
 
 
 @dataclass(frozen=True)
@@ -409,7 +414,8 @@ def _cos_tip(geo: dict, gear: int):
 class TipInterference(Check):
     """No tip ("trochoid") interference of pinion and ring as teeth enter and leave mesh
     (internal pairs; KHK §5.2 eq. (5-6)/(5-7), GOST 19274-73): margin in radians of ring rotation,
-    :func:`geardesign.gears.ring.trochoid_margin`. Gradient by central differences."""
+    :func:`geardesign.gears.ring.trochoid_margin`, its gradient
+    :func:`~geardesign.gears.ring.trochoid_margin_gradient`."""
 
     needs_report_fields = False
 
@@ -426,7 +432,19 @@ class TipInterference(Check):
                                geo["_inv_a1"], geo["_inv_a2"], geo["inv_alpha_w"])
 
     def gradient(self, geo):
-        return None
+        from .ring import trochoid_margin_gradient
+        m, sgn = geo["_m"], geo["_sgn"]
+        # ∂r_a/∂x_j = m(δ_gear,j − ∂Δy/∂x_Σ ∂x_Σ/∂x_j); ∂a_w/∂x_Σ = m sin α_t / sin α_w (as
+        # CenterDistance); ∂inv α_w/∂x_Σ = 2 tan α_n / z_Σ; ∂x_Σ/∂x1 = sgn, ∂x_Σ/∂x2 = 1
+        zs = geo["_z2"] - geo["_z1"] if sgn < 0 else geo["_z1"] + geo["_z2"]
+        daw, dinv = m * geo["_sa"] / geo["_sin_w"], 2.0 * geo["_tn"] / zs
+        out = []
+        for j, dxs in ((1, sgn), (2, 1.0)):
+            d_ra1 = m * ((j == 1) - geo["_dk"] * dxs)
+            d_ra2 = m * ((j == 2) - geo["_dk"] * dxs)
+            out.append(trochoid_margin_gradient(geo["_z1"], geo["_z2"], geo["_ra1"], geo["_ra2"], geo["a_w"],
+                                                geo["_t_a1"], geo["_t_a2"], d_ra1, d_ra2, daw * dxs, dinv * dxs))
+        return tuple(out)
 
 
 @dataclass(frozen=True)
@@ -457,7 +475,7 @@ class CutterTrimming(Check):
     (5-9)/(5-10) with the cutter in place of the pinion, in the cutter–ring mesh at zero backlash;
     KHK's Table 5-3a of the smallest ring per cutter follows from it). ``cutter``: a
     :class:`~geardesign.gears.ring.ShaperCutter` (default: the standard-size one for the module).
-    Depends on the ring only; gradient by central differences."""
+    Depends on the ring only: gradient (0, ∂/∂x2), :func:`geardesign.gears.ring.trimming_margin_gradient`."""
 
     cutter: object = None
 
@@ -473,7 +491,7 @@ class CutterTrimming(Check):
         return _cutting_mesh(geo, self.cutter).trimming
 
     def gradient(self, geo):
-        return None
+        return 0.0, _cutting_mesh(geo, self.cutter).dtrimming_dx2
 
 
 @dataclass(frozen=True)

@@ -58,6 +58,15 @@ _SHORT_HORNER = _SHORT_COEF[-2::-1]
 DIRECT_T = 0.9
 
 
+def _short_series(t):
+    """t − atan t for |t| < _SHORT_T: its Taylor series, 9 terms (3e-18 relative)."""
+    t2 = t * t
+    ser = _SHORT_COEF[-1]
+    for c in _SHORT_HORNER:
+        ser = ser * t2 + c
+    return ser * t2 * t
+
+
 def t_minus_atan_float(t: float) -> float:
     """:func:`t_minus_atan` for one Python float (the float path of the optimisers calls it ~5 times
     a design).
@@ -67,26 +76,31 @@ def t_minus_atan_float(t: float) -> float:
     """
     if t >= DIRECT_T or t <= -DIRECT_T:
         return t - math.atan(t)
-    if -_SHORT_T < t < _SHORT_T:   # the Taylor series itself: 9 terms reach 3e-18 (the common small u)
-        t2 = t * t
-        ser = _SHORT_COEF[-1]
-        for c in _SHORT_HORNER:
-            ser = ser * t2 + c
-        return ser * t2 * t
+    if -_SHORT_T < t < _SHORT_T:   # the Taylor series itself (the common small u)
+        return _short_series(t)
     return _t_minus_atan(t, math.sqrt)
 
 
 def t_minus_atan(t: np.ndarray) -> np.ndarray:
-    """t − atan t for an array: the plain difference where |t| >= DIRECT_T, the cancellation-free
-    series (:func:`_t_minus_atan`) on the rest only (a tip or an operating angle is rarely that small)."""
+    """t − atan t for an array, in the three ranges of :func:`t_minus_atan_float`: the plain
+    difference where |t| >= DIRECT_T, the short series where |t| < _SHORT_T (the refinement steps of
+    the operating angle and the helical thicknesses, where t is a small difference), the
+    cancellation-free half-angle form (:func:`_t_minus_atan`) between."""
+    t0 = np.asarray(t)
+    t = np.atleast_1d(t0)
     with np.errstate(invalid="ignore"):
-        out = t - np.arctan(t)
-        small = np.abs(t) < DIRECT_T
-    if out.ndim == 0:
-        return _t_minus_atan(t) if small else out
-    if small.any():
-        out[small] = _t_minus_atan(t[small])
-    return out
+        a = np.abs(t)
+        small = a < _SHORT_T
+        if small.all():   # every t small: no gather and scatter
+            out = _short_series(t)
+        else:
+            out = t - np.arctan(t)
+            mid = (a < DIRECT_T) & ~small
+            if small.any():
+                out[small] = _short_series(t[small])
+            if mid.any():
+                out[mid] = _t_minus_atan(t[mid])
+    return out.reshape(t0.shape)
 
 
 def inv_from_tan(t):
@@ -98,6 +112,8 @@ def inv_from_tan(t):
     >>> round(inv_from_tan(np.tan(np.radians(20.0))), 12)
     0.014904383867
     """
+    if type(t) is float:   # one number: without numpy's per-call cost
+        return t_minus_atan_float(t)
     t = np.asarray(t, dtype=float)
     return _scalar_out(_t_minus_atan(t), t)
 
@@ -112,20 +128,23 @@ def inv(alpha):
     >>> f"{inv(1e-6):.12e}"                # α³/3 + 2α⁵/15 (50-digit: 3.333333333334666e-19)
     '3.333333333335e-19'
     """
+    if type(alpha) is float:   # one number: without numpy's per-call cost
+        return t_minus_atan_float(math.tan(alpha))
     alpha = np.asarray(alpha, dtype=float)
     t = np.tan(np.atleast_1d(alpha))
     out = _t_minus_atan(t).reshape(alpha.shape)
     return _scalar_out(out, alpha)
 
 
-def tan_from_inv(v, *, validate: bool = True):
+def tan_from_inv(v, *, validate: bool = True, polish: bool = True):
     """tan α of the angle whose involute is v (v > 0); the workhorse behind :func:`inv_inverse`.
 
     Newton's method on g(t) = t − atan t − v, which is convex and increasing for t > 0.
     The start t0 = s(1 + s²/5), s = (3v)^(1/3), is the series inverse for small v and
     t0 = w − 1/w, w = v + π/2 the asymptote for large v; three steps on the plain
     difference and a last one on the cancellation-free series reach 1 ulp for
-    1e-12 <= v <= 10 (checked against 50-digit mpmath in the tests).
+    1e-12 <= v <= 10 (checked against 50-digit mpmath in the tests). Without ``polish`` the last
+    step is left to the caller (as in :func:`_tan_from_inv_float`).
     """
     v_in = np.asarray(v, dtype=float)
     v = np.atleast_1d(v_in)
@@ -140,8 +159,9 @@ def tan_from_inv(v, *, validate: bool = True):
     for _ in range(3):
         t2 = t * t
         t = t - (t - np.arctan(t) - v) * (1.0 + t2) / t2
-    t2 = t * t
-    t = t - (_t_minus_atan(t) - v) * (1.0 + t2) / t2
+    if polish:
+        t2 = t * t
+        t = t - (_t_minus_atan(t) - v) * (1.0 + t2) / t2
     return _scalar_out(t.reshape(v_in.shape), v_in)
 
 

@@ -117,7 +117,7 @@ class Mesh:
             raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(self.rack).__name__}")
         if type(self.tip_shortening) is not bool:
             object.__setattr__(self, "tip_shortening", require_bool("tip_shortening", self.tip_shortening))
-        if not (type(self.beta_deg) is float and self.beta_deg == 0.0):
+        if not (type(self.beta_deg) is float and BETA_RANGE_DEG[0] <= self.beta_deg <= BETA_RANGE_DEG[1]):
             object.__setattr__(self, "beta_deg", one_number("beta_deg", require_range(
                 "beta_deg", self.beta_deg, *BETA_RANGE_DEG, unit="deg")))
         if type(self.internal) is not bool:
@@ -125,7 +125,7 @@ class Mesh:
         if self.face_width_mm is not None:
             object.__setattr__(self, "face_width_mm", one_number("face_width_mm", require_range(
                 "face_width_mm", self.face_width_mm, *FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")))
-        if self.internal:
+        if self.internal and not (type(self.z1) is int and type(self.z2) is int and self.z2 > self.z1):
             z1, z2 = np.broadcast_arrays(np.asarray(self.z1), np.asarray(self.z2))
             short = np.atleast_1d(z2 <= z1)
             if short.any():

@@ -9,6 +9,7 @@ z1(inv α_a1 + δ1) − z2(inv α_a2 + δ2) + (z2 − z1) inv α_w >= 0.
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import NamedTuple
@@ -16,9 +17,9 @@ from typing import NamedTuple
 import numpy as np
 
 from ..validate import one_number, require_int, require_range
-from .involute import inv, tan_from_inv
+from .involute import _tan_from_inv_float, inv, inv_from_tan, tan_from_inv
 
-__all__ = ["ShaperCutter", "trochoid_margin", "trimming_margin", "cutting_mesh", "CuttingMesh",
+__all__ = ["ShaperCutter", "trochoid_margin", "trochoid_margin_gradient", "trimming_margin", "trimming_margin_gradient", "cutting_mesh", "CuttingMesh",
            "CUTTER_DIAMETER_MM", "Z0_RANGE", "X0_RANGE", "HA0_RANGE"]
 
 # Disc shaper cutters come in nominal reference diameters of 75/80, 100, 125, 160 and 200 mm
@@ -60,8 +61,50 @@ class ShaperCutter:
         """
         if self.z0 is not None:
             return self.z0 + 0 * np.asarray(z2)
+        if np.ndim(m_mm) == 0 and np.ndim(z2) == 0:   # one design: Python's round is numpy's (half to even)
+            return max(Z0_RANGE[0], min(round(CUTTER_DIAMETER_MM / float(m_mm)), int(z2) - RING_MINUS_CUTTER_MIN))
         return np.maximum(Z0_RANGE[0], np.minimum(np.round(CUTTER_DIAMETER_MM / np.asarray(m_mm, dtype=float)),
                                                   np.asarray(z2) - RING_MINUS_CUTTER_MIN)).astype(int)
+
+
+# The formulas below take arrays or, on the optimisers' one-design path, Python floats; these pick
+# math for floats (numpy costs ~1-10 µs a call on one number) and give NaN where numpy would.
+def _sqrt(v):
+    if type(v) is float:
+        return math.sqrt(v) if v >= 0.0 else math.nan
+    return np.sqrt(v)
+
+
+def _darccos_clipped(c, dc):
+    """The change of :func:`_arccos_clipped` for a change dc of c: −dc/√(1 − c²) inside (−1, 1),
+    0 where c is clipped."""
+    if type(c) is float:
+        return -dc / math.sqrt(1.0 - c * c) if -1.0 < c < 1.0 else 0.0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(np.abs(c) < 1.0, -dc / np.sqrt(np.abs(1.0 - c * c)), 0.0)
+
+
+def _darcsin_sqrt(s, ds):
+    """The change of asin √s for a change ds of s: ds/(2√(s(1 − s))) (NaN outside 0 < s < 1)."""
+    if type(s) is float:
+        return ds / (2.0 * math.sqrt(s * (1.0 - s))) if 0.0 < s < 1.0 else math.nan
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return ds / (2.0 * np.sqrt(s * (1.0 - s)))
+
+
+def _arccos_clipped(c):
+    """arccos of c clipped to [-1, 1] (NaN stays NaN)."""
+    if type(c) is float:
+        return math.acos(min(max(c, -1.0), 1.0))   # max(nan, -1.0) is nan
+    return np.arccos(np.minimum(np.maximum(c, -1.0), 1.0))   # np.clip costs ~10 µs on one number
+
+
+def _arcsin_sqrt(s, ok):
+    """asin √s where ``ok``, else NaN."""
+    if type(ok) is bool:
+        return math.asin(math.sqrt(s)) if ok else math.nan
+    with np.errstate(invalid="ignore"):
+        return np.arcsin(np.sqrt(np.where(ok, s, np.nan)))
 
 
 def trochoid_margin(z1, z2, r_a1, r_a2, a_w, inv_a1, inv_a2, inv_aw):
@@ -78,9 +121,24 @@ def trochoid_margin(z1, z2, r_a1, r_a2, a_w, inv_a1, inv_a2, inv_aw):
     >>> round(float(trochoid_margin(16, 24, 27.0, 34.5, 13.1682677, 0.0760958, 0.0026109, 0.0604007)), 4)
     0.0401
     """
-    c1 = np.clip((r_a2 * r_a2 - r_a1 * r_a1 - a_w * a_w) / (2.0 * a_w * r_a1), -1.0, 1.0)
-    c2 = np.clip((r_a2 * r_a2 - r_a1 * r_a1 + a_w * a_w) / (2.0 * a_w * r_a2), -1.0, 1.0)
-    return (z1 * (inv_a1 + np.arccos(c1)) - z2 * (inv_a2 + np.arccos(c2)) + (z2 - z1) * inv_aw) / z2
+    c1 = (r_a2 * r_a2 - r_a1 * r_a1 - a_w * a_w) / (2.0 * a_w * r_a1)
+    c2 = (r_a2 * r_a2 - r_a1 * r_a1 + a_w * a_w) / (2.0 * a_w * r_a2)
+    return (z1 * (inv_a1 + _arccos_clipped(c1)) - z2 * (inv_a2 + _arccos_clipped(c2)) + (z2 - z1) * inv_aw) / z2
+
+
+def trochoid_margin_gradient(z1, z2, r_a1, r_a2, a_w, t_a1, t_a2, d_ra1, d_ra2, d_aw, d_inv_aw):
+    """The derivative of :func:`trochoid_margin` along a change of the shifts, given the changes
+    of its inputs (d_ra1, d_ra2, d_aw, d_inv_aw: mm and rad per unit of the shift). By the chain rule:
+    d inv α_a = tan α_a dr_a / r_a (cos α_a = r_b/r_a), dδ = −dc/√(1 − c²) with c = N/D and
+    dc = (dN − c dD)/D; 0 where the tip circles do not cross (δ at the limit of its range)."""
+    n1 = r_a2 * r_a2 - r_a1 * r_a1 - a_w * a_w
+    n2 = r_a2 * r_a2 - r_a1 * r_a1 + a_w * a_w
+    c1, c2 = n1 / (2.0 * a_w * r_a1), n2 / (2.0 * a_w * r_a2)
+    dn = 2.0 * (r_a2 * d_ra2 - r_a1 * d_ra1)
+    dc1 = (dn - 2.0 * a_w * d_aw - c1 * 2.0 * (d_aw * r_a1 + a_w * d_ra1)) / (2.0 * a_w * r_a1)
+    dc2 = (dn + 2.0 * a_w * d_aw - c2 * 2.0 * (d_aw * r_a2 + a_w * d_ra2)) / (2.0 * a_w * r_a2)
+    dd1, dd2 = _darccos_clipped(c1, dc1), _darccos_clipped(c2, dc2)
+    return (z1 * (t_a1 * d_ra1 / r_a1 + dd1) - z2 * (t_a2 * d_ra2 / r_a2 + dd2) + (z2 - z1) * d_inv_aw) / z2
 
 
 def trimming_margin(z1, z2, cos_a1, cos_a2, inv_a1, inv_a2, inv_aw):
@@ -97,10 +155,23 @@ def trimming_margin(z1, z2, cos_a1, cos_a2, inv_a1, inv_a2, inv_aw):
     s1 = (1.0 - q) / (1.0 - (z1 / z2) ** 2)
     s2 = (1.0 / q - 1.0) / ((z2 / z1) ** 2 - 1.0)
     ok = (s1 >= 0) & (s1 <= 1) & (s2 >= 0) & (s2 <= 1)
-    with np.errstate(invalid="ignore"):
-        t1 = np.arcsin(np.sqrt(np.where(ok, s1, np.nan)))
-        t2 = np.arcsin(np.sqrt(np.where(ok, s2, np.nan)))
+    t1, t2 = _arcsin_sqrt(s1, ok), _arcsin_sqrt(s2, ok)
     return t1 + inv_a1 - inv_aw - z2 / z1 * (t2 + inv_a2 - inv_aw)
+
+
+def trimming_margin_gradient(z1, z2, cos_a1, cos_a2, r_a2, t_a2, d_ra2, d_inv_aw):
+    """The derivative of :func:`trimming_margin` when the ring's tip radius changes by d_ra2 (mm)
+    and inv α_w by d_inv_aw, the pinion (or cutter) fixed. Chain rule: q = (cos α_a1/cos α_a2)²,
+    cos α_a2 = r_b2/r_a2, so dq = 2q dr_a2/r_a2; ds1 = −dq/(1 − (z1/z2)²),
+    ds2 = −(dq/q²)/((z2/z1)² − 1); dθ = ds/(2√(s(1 − s))); d inv α_a2 = tan α_a2 dr_a2/r_a2."""
+    q = (cos_a1 / cos_a2) ** 2
+    s1 = (1.0 - q) / (1.0 - (z1 / z2) ** 2)
+    s2 = (1.0 / q - 1.0) / ((z2 / z1) ** 2 - 1.0)
+    dq = 2.0 * q * d_ra2 / r_a2
+    ds1 = -dq / (1.0 - (z1 / z2) ** 2)
+    ds2 = -dq / (q * q) / ((z2 / z1) ** 2 - 1.0)
+    dt1, dt2 = _darcsin_sqrt(s1, ds1), _darcsin_sqrt(s2, ds2)   # outside the arcsines' domain: NaN
+    return dt1 - d_inv_aw - z2 / z1 * (dt2 + t_a2 * d_ra2 / r_a2 - d_inv_aw)
 
 
 class CuttingMesh(NamedTuple):
@@ -111,9 +182,16 @@ class CuttingMesh(NamedTuple):
     r_a0: object        # the cutter's tip radius
     inv_w0: object      # inv α_w0
     trimming: object    # margin of :func:`trimming_margin`, rad
+    dtrimming_dx2: object   # ∂trimming/∂x2, rad
     d_f2: object        # the ring's root diameter, 2 a_w0 + d_a0
     rho_form2: object   # radius of curvature where the ring's involute starts (its form circle), mm
     drho_form2_dx2: object   # ∂rho_form2/∂x2, mm
+
+
+@functools.lru_cache(maxsize=64)
+def _inv_of(alpha_t: float) -> float:
+    """inv α_t of the few rack angles in use, computed once each."""
+    return inv(alpha_t)
 
 
 def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n: float,
@@ -131,19 +209,34 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
     79.5
     """
     z0 = cutter.teeth(m_n, z2)
-    z0 = np.where(np.asarray(z2) > z0, z0, np.nan)
+    # one design (the optimisers' path) in Python floats: numpy's per-call cost would dominate
+    scalar = all(type(v) in (float, int) or np.ndim(v) == 0 for v in (m_n, z2, x2, r_a2))
+    if scalar:
+        z0, m_n, z2, x2, r_a2 = (float(v) for v in (z0, m_n, z2, x2, r_a2))
+        z0 = z0 if z2 > z0 else math.nan
+    else:
+        z0 = np.where(np.asarray(z2) > z0, z0, np.nan)
     m_t = m_n / cos_beta
-    inv_w0 = inv(alpha_t) + 2.0 * (x2 - cutter.x0) * tan_n / (z2 - z0)
-    t_w0 = tan_from_inv(np.where(inv_w0 > 0, inv_w0, np.nan), validate=False)
-    cos_w0 = 1.0 / np.sqrt(1.0 + t_w0 * t_w0)
+    inv_w0 = _inv_of(alpha_t) + 2.0 * (x2 - cutter.x0) * tan_n / (z2 - z0)
+    if scalar:
+        t_w0 = _tan_from_inv_float(inv_w0) if inv_w0 > 0 else math.nan
+    else:
+        t_w0 = tan_from_inv(np.where(inv_w0 > 0, inv_w0, np.nan), validate=False)
+    cos_w0 = 1.0 / _sqrt(1.0 + t_w0 * t_w0)
     cos_t = math.cos(alpha_t)
     a_w0 = m_t * (z2 - z0) * cos_t / (2.0 * cos_w0)
     r_a0 = m_t * z0 / 2.0 + (cutter.ha0 + cutter.x0) * m_n
     r_b0, r_b2 = m_t * z0 / 2.0 * cos_t, m_t * z2 / 2.0 * cos_t
     with np.errstate(invalid="ignore"):   # a ring tip inside its base circle: NaN, a failing margin
-        trim = trimming_margin(z0, z2, r_b0 / r_a0, r_b2 / r_a2, inv(np.arccos(r_b0 / r_a0)),
-                               inv(np.arccos(r_b2 / r_a2)), inv_w0)
+        # inv α_a from tan α_a = ρ_a/r_b, ρ_a = √(r_a² − r_b²): no arccos near 1
+        rho_a0 = _sqrt((r_a0 - r_b0) * (r_a0 + r_b0))
+        rho_a2 = _sqrt((r_a2 - r_b2) * (r_a2 + r_b2))
+        trim = trimming_margin(z0, z2, r_b0 / r_a0, r_b2 / r_a2, inv_from_tan(rho_a0 / r_b0),
+                               inv_from_tan(rho_a2 / r_b2), inv_w0)
+        # x2 moves the ring's tip by m_n (r_a2 = r2 − m_n(h_a* − x2)) and inv α_w0 by 2 tan α_n/(z2 − z0)
+        dtrim = trimming_margin_gradient(z0, z2, r_b0 / r_a0, r_b2 / r_a2, r_a2, rho_a2 / r_b2, m_n,
+                                         2.0 * tan_n / (z2 - z0))
     # a_w0 sin α_w0 = m_t (z2 − z0) cos α_t tan α_w0 / 2; d tan α_w0 / d inv α_w0 = (1 + t²)/t²
-    rho_form2 = np.sqrt((r_a0 - r_b0) * (r_a0 + r_b0)) + m_t * (z2 - z0) * cos_t * t_w0 / 2.0
+    rho_form2 = rho_a0 + m_t * (z2 - z0) * cos_t * t_w0 / 2.0
     drho = m_t * cos_t * tan_n * (1.0 + t_w0 * t_w0) / (t_w0 * t_w0)
-    return CuttingMesh(z0, a_w0, r_a0, inv_w0, trim, 2.0 * a_w0 + 2.0 * r_a0, rho_form2, drho)
+    return CuttingMesh(z0, a_w0, r_a0, inv_w0, trim, dtrim, 2.0 * a_w0 + 2.0 * r_a0, rho_form2, drho)

@@ -8,7 +8,7 @@ import pandas as pd
 
 from ..errors import GearDesignError
 from ..validate import ndim, require_bool, require_int
-from ..gears.geometry import mesh_geometry
+from ..gears.geometry import mesh_geometry, mesh_geometry_float
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from .problem import DEFAULT_BOUNDS, Problem
 from .optimize import optimize_shifts
@@ -82,6 +82,8 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, iters: int = 10):
     mesh = proto.mesh.unchecked(z1, z2)
     X = np.repeat(start, C, axis=0)
     rows = np.arange(B * C)
+    edge = np.flatnonzero(~is_v)
+    edge_mesh, edge_rows = proto.mesh.unchecked(z1[edge], z2[edge]), np.arange(edge.size)
     h = 1e-6
 
     def grads_at(x1, x2):
@@ -99,15 +101,16 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, iters: int = 10):
         gp = pgrad(geo).T                               # (n, 2)
         # the stationarity residual of edge candidates and its derivative by differences
         cross = gp[:, 0] * ga[:, 1] - gp[:, 1] * ga[:, 0]
-        dcross = np.empty((len(rows), 2))
+        # its derivative only where it is used: the edge candidates (a quarter of the rows)
+        dcross = np.zeros((len(rows), 2))
         for j, (dx1, dx2) in enumerate(((h, 0.0), (0.0, h))):
             gp_, gp__ = [], []
             for sgn in (1.0, -1.0):
-                geo_s = mesh_geometry(mesh, 1.0, x1 + sgn * dx1, x2 + sgn * dx2, proto.full)
-                G_s = proto.margin_gradients(geo_s)[a_idx, :, rows]
+                geo_s = mesh_geometry(edge_mesh, 1.0, x1[edge] + sgn * dx1, x2[edge] + sgn * dx2, proto.full)
+                G_s = proto.margin_gradients(geo_s)[a_idx[edge], :, edge_rows]
                 P_s = pgrad(geo_s).T
                 (gp_ if sgn > 0 else gp__).append(P_s[:, 0] * G_s[:, 1] - P_s[:, 1] * G_s[:, 0])
-            dcross[:, j] = (gp_[0] - gp__[0]) / (2 * h)
+            dcross[edge, j] = (gp_[0] - gp__[0]) / (2 * h)
         r2 = np.where(is_v, mb, cross)
         j2 = np.where(is_v[:, None], gb, dcross)
         det = ga[:, 0] * j2[:, 1] - ga[:, 1] * j2[:, 0]
@@ -164,7 +167,7 @@ def _contour_area(g, F) -> float:
 
 
 def _row_at(proto: Problem, z1, z2, x, area) -> dict:
-    geo = mesh_geometry(proto.mesh.unchecked(z1, z2), 1.0, x[0], x[1])
+    geo = mesh_geometry_float(proto.mesh.unchecked(z1, z2), 1.0, x[0], x[1])
     M = proto.margins(geo)
     fun = proto.fun(geo)
     tol = 1e-8
@@ -211,15 +214,22 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     area = np.zeros(Z1.size)
     area_error = np.zeros(Z1.size)
     start = np.full((Z1.size, 2), np.nan)
-    for s in range(0, Z1.size, chunk):
-        z1c, z2c = Z1[s:s + chunk, None], Z2[s:s + chunk, None]
-        geo = mesh_geometry(proto.mesh.unchecked(z1c, z2c), 1.0, X1[None, :], X2[None, :], proto.full)
+    def node_values(geo):
+        """The smallest margin (-1 where a gear does not exist) and the objective where feasible."""
         with np.errstate(all="ignore"):   # nodes where a gear does not exist: margin NaN → −inf
             M = proto.margins(geo)
-        feas = (M >= 0).all(axis=0) if M.size else np.ones(geo["a"].shape, bool)
-        P = proto.pieces(geo).min(axis=0) if proto.objective.kind != "margin" else M.min(axis=0)
-        score = np.where(feas, P, -np.inf)
-        F = np.where(np.isfinite(M.min(axis=0)), M.min(axis=0), -1.0) if M.size else np.ones(geo["a"].shape)
+        if not M.size:
+            return {"F": np.ones(geo["a"].shape), "score": proto.pieces(geo).min(axis=0)}
+        m_min = M.min(axis=0)
+        P = proto.pieces(geo).min(axis=0) if proto.objective.kind != "margin" else m_min
+        return {"F": np.where(np.isfinite(m_min), m_min, -1.0), "score": np.where(m_min >= 0, P, -np.inf)}
+
+    for s in range(0, Z1.size, chunk):
+        z1c, z2c = Z1[s:s + chunk, None], Z2[s:s + chunk, None]
+        # block by block: only the two node values are stored for the whole chunk
+        nodes = mesh_geometry(proto.mesh.unchecked(z1c, z2c), 1.0, X1[None, :], X2[None, :], proto.full,
+                              then=node_values)
+        F, score = nodes["F"], nodes["score"]
         for k in range(F.shape[0]):
             Fk = F[k].reshape(_ATLAS_N, _ATLAS_N)
             area[s + k] = _contour_area(g, Fk)

@@ -75,11 +75,10 @@ def grid_starts(prob: Problem, V: np.ndarray, n: int):
         Mg = np.where(np.isfinite(M), M, np.nan).reshape((-1,) + shape)
         slope = np.zeros_like(Mg)
         for ax in range(1, prob.nvar + 1):    # largest one-node change along either axis, per unit x
-            d = np.abs(np.diff(Mg, axis=ax)) / h
-            lo = [(0, 0)] * Mg.ndim
-            hi = [(0, 0)] * Mg.ndim
-            lo[ax], hi[ax] = (1, 0), (0, 1)
-            slope = np.fmax(slope, np.fmax(np.pad(d, lo, constant_values=np.nan), np.pad(d, hi, constant_values=np.nan)))
+            d = np.moveaxis(np.abs(np.diff(Mg, axis=ax)) / h, ax, -1)
+            s = np.moveaxis(slope, ax, -1)    # a view: the updates land in slope
+            s[..., 1:] = np.fmax(s[..., 1:], d)     # the change to the node before
+            s[..., :-1] = np.fmax(s[..., :-1], d)   # and to the node after (NaN where one is missing)
         with np.errstate(invalid="ignore"):
             near = ((M >= 0) | (-M <= h * slope.reshape(M.shape))).all(axis=0)
         near_score = np.where(cand & near, fun, -np.inf).reshape(shape)

@@ -169,11 +169,14 @@ class Problem:
         smooth objectives, two for balanced sliding, and the normalised margins for max_margin.
         """
         x1, x2 = self.xy(V)
+        if not grads:   # block by block: only P and M are stored for all points (grids reach millions)
+            out = mesh_geometry(self.mesh, self.m, x1, x2, self.full, then=lambda geo: {
+                "M": self.margins(geo),
+                "P": self._normalised(geo) if self.objective.kind == "margin" else self.pieces(geo)})
+            return out["P"], out["M"]
         geo = self.geo(x1, x2)
         M = self.margins(geo)
         P = self._normalised(geo) if self.objective.kind == "margin" else self.pieces(geo)
-        if not grads:
-            return P, M
         GM = self.margin_gradients(geo)
         if self.objective.kind == "margin":
             GP = np.stack(self._central(self._normalised, geo), axis=1)

@@ -44,7 +44,18 @@ def test_float_core_equals_array_core(d):
     for k, v in arr.items():
         v = float(v)
         assert isinstance(flt[k], float), k
-        assert abs(flt[k] - v) <= 1e-13 * max(1.0, abs(v)), (k, flt[k], v)
+        assert abs(flt[k] - v) <= 1e-13 * max(1.0, abs(v)) * _conditioning(k, flt), (k, flt[k], v)
+
+
+def _conditioning(name, geo):
+    """The specific sliding at a root divides by ρ_p, a difference of two lengths of size
+    r_b tan α_w: one ulp there moves it by ~ε·r_b tan α_w/|ρ_p| relative (the allowance of
+    tests/test_extremes.py::_conditioning), which exceeds 1e-13 near an interference point."""
+    if name not in ("sliding1_root", "sliding2_root"):
+        return 1.0
+    j = name[7]
+    big = geo[f"db{j}"] / 2.0 * geo["_t_w"]
+    return max(1.0, 16 * 2.0 ** -52 * big / abs(geo[f"rho_p{j}"]) / 1e-13)
 
 
 def test_float_core_gives_nan_where_the_design_does_not_exist():
