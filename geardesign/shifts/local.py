@@ -112,5 +112,10 @@ def central_point(prob: Problem, V, M, bounds) -> np.ndarray:
     """(x, t): the point that maximises the smallest margin t near the least infeasible node of
     V (M its margins), by SLSQP; t >= 0 is a feasible point of a region thinner than the grid."""
     worst = M.min(axis=0) if M.size else np.zeros(V.shape[0])
-    w, _, _ = slsqp(MinMargin(prob), V[int(np.argmax(worst))], bounds, ftol=1e-12, pieces_only=True)
+    i = int(np.argmax(worst))
+    w, _, ev = slsqp(MinMargin(prob), V[i], bounds, ftol=1e-12, pieces_only=True)
+    if not w[-1] > worst[i] and not (ev(w[:-1])[0] > -BIG).all():
+        # SLSQP left for where the design stops existing (margins −BIG): the node it started from
+        # is the better answer
+        return np.append(V[i], worst[i])
     return w

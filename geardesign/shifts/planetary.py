@@ -95,6 +95,10 @@ class PlanetaryProblem(Problem):
     def geo(self, x1, x2) -> dict:
         return set_geometry(self.meshes, self.m, x1, x2, full=self.full)
 
+    def geo_then(self, x1, x2, then) -> dict:
+        # both meshes' geometry at once: a set's grids are small enough (the start grid, a region)
+        return then(self.geo(x1, x2))
+
     def _geo_like(self, geo):
         return lambda x1, x2: set_geometry(self.meshes, geo["_m"], x1, x2, full=self.full)
 

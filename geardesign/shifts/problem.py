@@ -62,6 +62,10 @@ class Problem:
     def geo(self, x1, x2) -> dict:
         return mesh_geometry(self.mesh, self.m, x1, x2, self.full)
 
+    def geo_then(self, x1, x2, then) -> dict:
+        """``then(geo)`` over the designs block by block, only its values kept (see mesh_geometry)."""
+        return mesh_geometry(self.mesh, self.m, x1, x2, self.full, then=then)
+
     def _geo_like(self, geo):
         """geo(x1, x2) -> dict at the same m, z1, z2 as ``geo`` (arrays or floats alike; an atlas
         evaluates many tooth pairs through one problem)."""
@@ -170,7 +174,7 @@ class Problem:
         """
         x1, x2 = self.xy(V)
         if not grads:   # block by block: only P and M are stored for all points (grids reach millions)
-            out = mesh_geometry(self.mesh, self.m, x1, x2, self.full, then=lambda geo: {
+            out = self.geo_then(x1, x2, lambda geo: {
                 "M": self.margins(geo),
                 "P": self._normalised(geo) if self.objective.kind == "margin" else self.pieces(geo)})
             return out["P"], out["M"]
