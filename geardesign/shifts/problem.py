@@ -122,12 +122,19 @@ class Problem:
         return _stack_pairs(self._piece_gradient_values(geo), geo["a"])
 
     def _normalised(self, geo) -> np.ndarray:
-        """(K, ...) margin/‖∇margin‖: each check's first-order distance in x to its boundary."""
-        M = self.margins(geo)
-        G = self.margin_gradients(geo)
+        """(K, ...) each check's first-order distance in x to its boundary: the smallest over its
+        smooth parts of part/‖∇part‖, the pieces the single-design path maximises (a check of two
+        parts, ρ_p >= ρ_l and ρ_p >= 0, has two boundaries; the margin's active part alone would
+        miss the other's)."""
+        M = _stack(self._margin_values(geo, parts=True), geo["a"])
+        G = _stack_pairs(self._margin_gradient_values(geo, parts=True), geo["a"])
         with np.errstate(invalid="ignore", divide="ignore"):
             P = M / np.sqrt(G[:, 0] ** 2 + G[:, 1] ** 2)
-        return np.where(np.isfinite(P), P, -np.inf)
+        P = np.where(np.isfinite(P), P, -np.inf)
+        if P.shape[0] == len(self.checks):
+            return P
+        owner = np.asarray(self.part_check)
+        return np.stack([P[owner == i].min(axis=0) for i in range(len(self.checks))])
 
     def fun(self, geo) -> np.ndarray:
         """The objective in its natural sense (what the user asked to max- or minimise)."""
