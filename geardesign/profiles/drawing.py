@@ -102,7 +102,7 @@ def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60, cutter=Non
             seg = np.array([start, start + d * c["u"]])
             ax.plot(*seg.T, "-", color="#d62728", lw=4.5, alpha=0.55,
                     label="double contact" if start is c["A"] else None)
-    for name, offset in (("N1", (-16, -12)), ("N2", (-16, -12)), ("A", (5, 4)), ("E", (5, 4)), ("P", (5, 4))):
+    for name, offset in (("N1", (-16, -12)), ("N2", (-16, -12)), ("A", (5, 4)), ("E", (5, 4)), ("P", (-13, 5))):
         pt = c[name]
         ax.plot(*pt, "o", ms=4 if name != "P" else 6, color="k")
         ax.annotate(name, pt, textcoords="offset points", xytext=offset, fontsize=9)
