@@ -176,10 +176,11 @@ def plot_diagrams(pair, axes=None):
         marks = (("A", d["s_A"]), ("P", d["s_P"]), ("E", d["s_E"])) + ((("N1", 0.0),) if d["internal"] else ())
         for name, pos in marks:
             ax.axvline(pos, color="0.5", lw=0.6, ls="-" if name != "N1" else "--")
-            ax.annotate(name, (pos, 1.0), xycoords=("data", "axes fraction"), xytext=(2, -12),
-                        textcoords="offset points", fontsize=9)
+            # N1 at the foot of its line: on a ring pair A may sit next to it
+            ax.annotate(name, (pos, 1.0 if name != "N1" else 0.0), xycoords=("data", "axes fraction"),
+                        xytext=(2, -12 if name != "N1" else 4), textcoords="offset points", fontsize=9)
         ax.grid(alpha=0.3)
-        ax.legend(loc="upper right", fontsize=8)
+        ax.legend(loc="upper right", bbox_to_anchor=(1.0, 0.9), fontsize=8)   # below the A, P, E marks
     ax1.set_ylim(-3.0, 1.2)
     ax1.set_ylabel("specific sliding")
     ax2.set_ylim(0.0, 4.0 * float(pair._geo["spec_pressure_pitch"]))
