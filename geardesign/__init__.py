@@ -36,7 +36,7 @@ _NAMES = {
     "sweep": "sensitivity.studies", "load_scene": "scene", "run_scene": "scene",
     "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth", "plot_mesh": "profiles.drawing",
     "plot_diagrams": "profiles.drawing", "export_profiles": "profiles.mesh",
-    "pair_profiles": "profiles.mesh",
+    "pair_profiles": "profiles.mesh", "ring_profile": "profiles.ring", "RingProfile": "profiles.ring",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {

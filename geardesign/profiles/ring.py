@@ -69,6 +69,8 @@ class RingProfile(ToothProfile):
     cutting mesh's interference point N0, or where the cutter's teeth rolling out cut into it): the
     points labelled "interference" are what the cutter leaves there, found by a material test."""
 
+    _kind = "ring gear"
+
     z0: int = 0
     x0: float = 0.0
     a_w0_mm: float = 0.0

@@ -145,6 +145,7 @@ class ToothProfile(Result):
     tip_thickness_mm: float
 
     _success_field = "exists"
+    _kind = "gear"     # the files' title
 
     @property
     def exists(self) -> bool:
@@ -162,9 +163,8 @@ class ToothProfile(Result):
 
     def _write(self, path, overwrite: bool, suffix: str):
         from .export import write_outlines
-        kind = "ring gear" if self.outlines()[-1][0].endswith("_rim") else "gear"
         return write_outlines(self.outlines(), path, overwrite,
-                              f"{kind} m = {self.m:g} mm, z = {self.z}, x = {self.x:g}", self.m / 50,
+                              f"{self._kind} m = {self.m:g} mm, z = {self.z}, x = {self.x:g}", self.m / 50,
                               suffixes=(suffix,))
 
     def to_csv(self, path, overwrite: bool = False):
