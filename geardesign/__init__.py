@@ -36,7 +36,7 @@ _NAMES = {
     "sweep": "sensitivity.studies", "load_scene": "scene", "run_scene": "scene",
     "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth", "plot_mesh": "profiles.drawing",
     "plot_diagrams": "profiles.drawing", "export_profiles": "profiles.mesh",
-    "pair_profiles": "profiles.mesh",
+    "pair_profiles": "profiles.mesh", "ring_profile": "profiles.ring", "RingProfile": "profiles.ring",
     "PlanetarySet": "gears.planetary", "optimize_planetary_shifts": "shifts.planetary",
     "planetary_region": "shifts.planetary", "select_planetary_teeth": "shifts.planetary_teeth",
     "Drive": "drives.drive", "GearStage": "drives.stages", "ChainStage": "drives.stages",

@@ -1,5 +1,5 @@
-"""``geardesign mesh``: the meshing drawing of a spur pair, its line-of-action diagrams, and both gears'
-generated outlines as SVG, DXF or CSV."""
+"""``geardesign mesh``: the meshing drawing of a pair (external or internal, spur or helical in the
+transverse section), its line-of-action diagrams, and both gears' generated outlines as SVG, DXF or CSV."""
 from __future__ import annotations
 
 import os
@@ -19,12 +19,18 @@ OUTPUTS = {
 
 
 def add_parser(sub):
-    p = sub.add_parser("mesh", help="meshing drawing, line-of-action diagrams and profile export of a spur pair",
-                       description="Both gears' teeth as their rack cutter generates them, in mesh at a_w: the "
-                                   "drawing (circles, line of action N1N2 with its active part and contact zones), "
-                                   "the diagrams of specific sliding and pressure along N1N2, and the outlines as "
-                                   "SVG/DXF/CSV (gear 1 about the origin, gear 2 about (0, a_w), mm).")
+    p = sub.add_parser("mesh", help="meshing drawing, line-of-action diagrams and profile export of a pair",
+                       description="Both gears' teeth as their cutters generate them (a rack; a ring's shaper "
+                                   "cutter), in mesh at a_w: the drawing (circles, line of action N1N2 with its "
+                                   "active part and contact zones), the diagrams of specific sliding and pressure "
+                                   "along N1N2, and the outlines as SVG/DXF/CSV (gear 1 about the origin, gear 2 "
+                                   "about (0, a_w), a ring about (0, -a_w) with its rim as gear2_rim; mm).")
     add_pair_args(p)
+    g = p.add_argument_group("the ring's shaper cutter (--internal)")
+    g.add_argument("--cutter-teeth", type=float, default=None, metavar="Z0",
+                   help="teeth of the shaper cutter that generates the ring (default: the checks' cutter for the "
+                        "module, see geardesign.ShaperCutter)")
+    g.add_argument("--cutter-shift", type=float, default=0.0, metavar="X0", help="the cutter's profile shift (0)")
     p.add_argument("--roll-deg", type=float, default=0.0, help="turn gear 1 by this angle (gear 2 follows), degrees")
     for flag, (suffix, what) in OUTPUTS.items():
         p.add_argument(flag, metavar=f"FILE{suffix}", default=None, help=f"write {what}")
@@ -61,9 +67,20 @@ def _save_figure(ax, path) -> None:
         plt.close(ax.figure)
 
 
+def _cutter(args, pair):
+    from ..gears.ring import ShaperCutter
+
+    if not pair.internal:
+        if args.cutter_teeth is not None or args.cutter_shift != 0.0:
+            raise GearDesignError("--cutter-teeth and --cutter-shift describe a ring's shaper cutter: give --internal")
+        return None
+    return ShaperCutter(z0=args.cutter_teeth, x0=args.cutter_shift)
+
+
 def run(args) -> int:
     targets = _targets(args)
     pair, _ = pair_from_args(args)
+    cutter = _cutter(args, pair)
     from ..profiles.drawing import contact_points, line_of_action_diagrams, plot_diagrams, plot_mesh
     from ..profiles.mesh import export_profiles
 
@@ -72,12 +89,12 @@ def run(args) -> int:
         import matplotlib
         matplotlib.use("Agg")
     if "--plot" in targets:
-        _save_figure(plot_mesh(pair, roll_deg=args.roll_deg), targets["--plot"])
+        _save_figure(plot_mesh(pair, roll_deg=args.roll_deg, cutter=cutter), targets["--plot"])
     if "--diagrams" in targets:
         _save_figure(plot_diagrams(pair)[0], targets["--diagrams"])
     for flag in ("--svg", "--dxf", "--csv"):
         if flag in targets:
-            export_profiles(pair, targets[flag], overwrite=args.overwrite, roll_deg=args.roll_deg)
+            export_profiles(pair, targets[flag], overwrite=args.overwrite, roll_deg=args.roll_deg, cutter=cutter)
 
     c = contact_points(geo)
     d = line_of_action_diagrams(geo, n=2, s_mm=[0.5 * c["g"]])
@@ -89,6 +106,7 @@ def run(args) -> int:
         "line_of_action_mm": {"N1N2": d["g"], "N1A": d["s_A"], "N1P": d["s_P"], "N1E": d["s_E"],
                               "active_A_to_E": g_alpha, "base_pitch": d["p_b"],
                               "double_contact_each_end": double, "single_contact": g_alpha - 2 * double},
+        "internal": bool(pair.internal), "beta_deg": pair.beta_deg,
         "points_mm": {k: c[k].tolist() for k in ("N1", "N2", "A", "P", "E")},
         "files": {flag: str(path) for flag, path in targets.items()},
     }
@@ -96,7 +114,8 @@ def run(args) -> int:
         print_json(summary)
         return 0
     lo = summary["line_of_action_mm"]
-    print(f"Spur pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1/x2 = {pair.x1:.6g}/{pair.x2:.6g}: "
+    kind = ("Internal " if pair.internal else "") + (f"helical (beta = {pair.beta_deg:g} deg) " if pair.beta_deg else "spur ")
+    print(f"{kind[0].upper() + kind[1:]}pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1/x2 = {pair.x1:.6g}/{pair.x2:.6g}: "
           f"a_w = {summary['a_w_mm']:.6g} mm, alpha_w = {summary['alpha_w_deg']:.6g} deg, "
           f"eps_alpha = {summary['eps_alpha']:.4g}")
     print(f"Line of action N1N2 = {lo['N1N2']:.6g} mm; from N1: A {lo['N1A']:.6g}, P {lo['N1P']:.6g}, "

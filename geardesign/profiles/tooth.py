@@ -25,7 +25,7 @@ from ..gears.rack import STANDARD_RACK, BasicRack
 from ..results import Result
 from ..validate import one_number, require_count, require_int, require_range
 
-__all__ = ["ToothProfile", "tooth_profile", "POINTS_MAX"]
+__all__ = ["ToothProfile", "tooth_profile", "transverse_rack", "POINTS_MAX"]
 
 POINTS_MAX = 20_000   # points per segment: a drawing needs a few hundred
 
@@ -145,6 +145,7 @@ class ToothProfile(Result):
     tip_thickness_mm: float
 
     _success_field = "exists"
+    _kind = "gear"     # the files' title
 
     @property
     def exists(self) -> bool:
@@ -155,10 +156,15 @@ class ToothProfile(Result):
 
         return pd.DataFrame({"x_mm": self.x_mm, "y_mm": self.y_mm, "segment": self.segment})
 
+    def outlines(self, name: str = "gear") -> list:
+        """The whole gear as closed outlines ``[(name, x_mm, y_mm)]`` (a ring adds its rim)."""
+        from .export import gear_outline
+        return [(name, *gear_outline(self))]
+
     def _write(self, path, overwrite: bool, suffix: str):
-        from .export import gear_outline, write_outlines
-        return write_outlines([("gear", *gear_outline(self))], path, overwrite,
-                              f"gear m = {self.m:g} mm, z = {self.z}, x = {self.x:g}", self.m / 50,
+        from .export import write_outlines
+        return write_outlines(self.outlines(), path, overwrite,
+                              f"{self._kind} m = {self.m:g} mm, z = {self.z}, x = {self.x:g}", self.m / 50,
                               suffixes=(suffix,))
 
     def to_csv(self, path, overwrite: bool = False):
@@ -166,11 +172,11 @@ class ToothProfile(Result):
         return self._write(path, overwrite, ".csv")
 
     def to_svg(self, path, overwrite: bool = False):
-        """The whole gear's closed outline as an SVG path in mm."""
+        """The whole gear's closed outline(s) as SVG paths in mm."""
         return self._write(path, overwrite, ".svg")
 
     def to_dxf(self, path, overwrite: bool = False):
-        """The whole gear's closed outline as a DXF polyline in mm (ezdxf)."""
+        """The whole gear's closed outline(s) as DXF polylines in mm (ezdxf), one layer each."""
         return self._write(path, overwrite, ".dxf")
 
     def outline(self) -> tuple[np.ndarray, np.ndarray]:
@@ -278,3 +284,20 @@ def _material_angle(cut: _Cutter, radii):
         lo = np.where(inside, mid, lo)
         hi = np.where(inside, hi, mid)
     return 0.5 * (lo + hi)
+
+
+def transverse_rack(rack: BasicRack, beta_deg: float) -> tuple[BasicRack, float]:
+    """(the rack's transverse section as a rack of module m_t, cos β): α_t from tan α_t = tan α/cos β,
+    h_a*, c*, ρ_f* times cos β (the same heights in mm over m_t = m/cos β); ρ_f* is kept within
+    what fits the transverse rack's tip.
+
+    >>> r, cb = transverse_rack(BasicRack(), 20.0)
+    >>> round(r.alpha_deg, 6), round(r.ha, 6)     # atan(tan 20°/cos 20°), cos 20°
+    (21.172832, 0.939693)
+    """
+    cb = math.cos(math.radians(beta_deg))
+    if cb == 1.0:
+        return rack, 1.0
+    alpha_t = math.degrees(math.atan(math.tan(rack.alpha) / cb))
+    loose = BasicRack(alpha_deg=alpha_t, ha=rack.ha * cb, c=rack.c * cb, rho_f=0.0)
+    return BasicRack(alpha_deg=alpha_t, ha=loose.ha, c=loose.c, rho_f=min(rack.rho_f * cb, loose.rho_f_max)), cb

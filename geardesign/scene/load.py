@@ -76,9 +76,6 @@ def _cross_checks(where: Where, s: dict):
             where.fail("gear", "bounds", f"expected [lo, hi] with lo < hi, got {list(g['bounds'])}")
         g["_rack"] = _rack(where, "gear", g.get("rack"))
         kind = scene_kind(g)
-        if kind["internal"] and g["mesh_drawing"]:
-            where.fail("gear", "mesh_drawing", "expected false for an internal pair: the meshing drawing is built "
-                                               "for external pairs only")
         if kind["internal"] and not g["z2"] > g["z1"]:
             where.fail("gear", "z2", f"expected a ring with more teeth than the pinion (z2 > z1 = {g['z1']}), "
                                      f"got {g['z2']!r}")

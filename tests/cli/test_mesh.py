@@ -50,3 +50,28 @@ def test_mesh_refuses_one_file_for_two_outputs(tmp_path, capsys):
     assert main(ENGINE + ["--svg", str(tmp_path / "a.svg"), "--plot", str(tmp_path / "m.png"),
                           "--diagrams", str(tmp_path / "m.png")]) == 2
     assert "also given to --plot" in capsys.readouterr().err
+
+
+def test_mesh_draws_and_exports_an_internal_pair(tmp_path, capsys):
+    """--internal: the ring pair 20/60 drawn and exported (the DXF holds the pinion, the ring's toothed bore
+    and its rim); --cutter-teeth picks the shaper that generates the ring; cutter options need --internal."""
+    import ezdxf
+
+    ring = ["mesh", "--module", "2", "--z1", "20", "--z2", "60", "--x1", "0.3", "--x2", "0.6", "--internal"]
+    files = {flag: tmp_path / name for flag, name in (("--plot", "m.png"), ("--diagrams", "d.png"), ("--dxf", "g.dxf"))}
+    argv = ring + ["--cutter-teeth", "30"] + [a for flag, path in files.items() for a in (flag, str(path))] + ["--json"]
+    assert main(argv) == 0
+    out = json.loads(capsys.readouterr().out)
+    g = gd.GearPair(2, 20, 60, 0.3, 0.6, internal=True).geometry()
+    assert out["internal"] is True
+    assert out["line_of_action_mm"]["active_A_to_E"] == pytest.approx(g.g_alpha, rel=1e-12)
+    lo, pts = out["line_of_action_mm"], out["points_mm"]
+    import math
+    # N1 and N2 on one side of P: P–N2 = N1N2 + N1P
+    assert math.dist(pts["P"], pts["N2"]) == pytest.approx(lo["N1N2"] + lo["N1P"], rel=1e-12)
+    layers = sorted(e.dxf.layer for e in ezdxf.readfile(files["--dxf"]).modelspace().query("LWPOLYLINE"))
+    assert layers == ["gear1", "gear2", "gear2_rim"]
+    assert main(["mesh", "--module", "2", "--z1", "20", "--z2", "60", "--cutter-teeth", "30",
+                 "--svg", str(tmp_path / "x.svg")]) == 2
+    assert "give --internal" in capsys.readouterr().err
+    assert not (tmp_path / "x.svg").exists()

@@ -1,7 +1,6 @@
 """Helical pairs drawn in the transverse section (issue 14 with issue 12): the generated transverse
 tooth has the thicknesses of ISO 21771 (s_t = m_t (π/2 + 2 x_n tan α_n) at the reference circle,
-the transverse tip thickness of the 50-digit reference at the tip); internal pairs are refused
-with one line rather than drawn wrong."""
+the transverse tip thickness of the 50-digit reference at the tip). Helical rings: tests/profiles/test_ring.py."""
 import math
 
 import pytest
@@ -29,12 +28,3 @@ def test_mesh_profiles_have_the_reference_tip_thickness(beta):
     p1, p2 = gd.pair_profiles(pair)
     assert p1.tip_thickness_mm == pytest.approx(float(ref["sa1"]), rel=1e-10)
     assert p2.tip_thickness_mm == pytest.approx(float(ref["sa2"]), rel=1e-10)
-
-
-def test_internal_pairs_are_refused_with_one_line(tmp_path):
-    pair = gd.GearPair(2, 20, 60, 0.3, 0.6, internal=True)
-    for call in (lambda: gd.plot_mesh(pair), lambda: gd.plot_diagrams(pair),
-                 lambda: gd.export_profiles(pair, tmp_path / "r.svg")):
-        with pytest.raises(gd.GearDesignError, match="internal=True.*external pairs"):
-            call()
-    assert not (tmp_path / "r.svg").exists()

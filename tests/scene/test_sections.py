@@ -30,6 +30,11 @@ def test_mesh_drawing_adds_the_drawing_and_diagrams_of_both_pairs(tmp_path):
             assert png.read_bytes()[:4] == b"\x89PNG"
             assert f"(gear_{kind}_{tag}.png)" in report
     assert "x1/x2 = 0.8980/0.5170" in report
+    ring = tmp_path / "r.toml"      # a ring pair: drawn with the ring its shaper cutter generates
+    ring.write_text("[gear]\nmodule = 2\nz1 = 20\nz2 = 60\nx1 = 0.3\nx2 = 0.6\ninternal = true\nmesh_drawing = true\n")
+    gd.run_scene(ring, tmp_path / "out3")
+    for tag in ("optimum", "given"):
+        assert (tmp_path / "out3" / f"gear_mesh_{tag}.png").read_bytes()[:4] == b"\x89PNG"
     plain = tmp_path / "p.toml"
     plain.write_text("[gear]\nmodule = 8\nz1 = 17\nz2 = 26\n")
     gd.run_scene(plain, tmp_path / "out2")
