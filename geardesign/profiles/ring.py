@@ -50,7 +50,7 @@ from ..gears.mesh import BETA_RANGE_DEG
 from ..gears.rack import STANDARD_RACK, BasicRack
 from ..gears.ring import ShaperCutter, cutting_mesh
 from ..validate import one_number, require_count, require_int, require_range
-from .tooth import POINTS_MAX, ToothProfile, transverse_rack
+from .tooth import POINTS_MAX, ToothProfile, material_angle, transverse_rack
 
 __all__ = ["RingProfile", "ring_profile", "RIM_MODULES", "rim_circle"]
 
@@ -257,7 +257,7 @@ def ring_profile(m, z, x=0.0, cutter: ShaperCutter | None = None, rack: BasicRac
         r_cross = float(np.hypot(ix[-1], iy[-1]))
         radii = r_cross - (r_cross - r_a) * (1.0 - np.cos(np.linspace(0.0, math.pi / 2, n)))[1:]  # dense near r_cross
         radii[-1] = r_a
-        eta_m = math.pi / z - _material_angle(cut, radii)
+        eta_m = math.pi / z - material_angle(cut, radii)
         mx, my = radii * np.sin(eta_m), radii * np.cos(eta_m)
         ix, iy = np.concatenate([ix, mx]), np.concatenate([iy, my])
         eta_tip = float(eta_m[-1])
@@ -298,16 +298,3 @@ def _interference_roll(cut: _Cutting, t_lo: float, t_hi: float, m: float):
         mid = 0.5 * (lo + hi)
         lo, hi = (mid, hi) if cut_away(mid) else (lo, mid)
     return hi
-
-
-def _material_angle(cut: _Cutting, radii):
-    """Generation-frame angle where the ring's material begins at each radius: the largest η any cutter
-    position reaches (bisection between the space middle and the tooth centre π/z)."""
-    lo = np.zeros_like(radii)
-    hi = np.full_like(radii, math.pi / cut.z)
-    for _ in range(50):
-        mid = 0.5 * (lo + hi)
-        inside = cut.max_depth(radii, mid) > 0.0
-        lo = np.where(inside, mid, lo)
-        hi = np.where(inside, hi, mid)
-    return 0.5 * (lo + hi)

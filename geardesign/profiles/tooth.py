@@ -222,7 +222,7 @@ def tooth_profile(m, z, x=0.0, rack: BasicRack | None = None, tip_diameter_mm=No
         r_f = cut.yc - cut.rho
         radii = r_f + (r_cross - r_f) * (1.0 - np.cos(np.linspace(0.0, math.pi / 2, n)))   # dense near r_cross
         radii[0] = r_f * (1.0 + 1e-12)
-        fx, fy = _mirror(cut, *_polar(radii, _material_angle(cut, radii)))
+        fx, fy = _mirror(cut, *_polar(radii, material_angle(cut, radii)))
         s_start = float(cut.s_at_radius(r_cross))
     ix, iy = cut.flank(np.linspace(s_start, s_tip, n))
     r_form = float(np.hypot(ix[0], iy[0]))
@@ -273,9 +273,10 @@ def _undercut_radius(cut: _Cutter, m: float):
     return hi
 
 
-def _material_angle(cut: _Cutter, radii):
+def material_angle(cut, radii):
     """Generation-frame angle where the material begins at each radius: the largest η any cutter
-    position reaches (bisection on η between the space middle and the tooth centre)."""
+    position reaches (bisection on η between the space middle and the tooth centre π/z). ``cut``
+    is a generating cutter (a rack's, or a ring's shaper) with ``z`` and ``max_depth(radii, η)``."""
     lo = np.zeros_like(radii)
     hi = np.full_like(radii, math.pi / cut.z)
     for _ in range(50):

@@ -22,7 +22,7 @@ With ``total_ratio`` the drive is optimised; without it, analysed as given::
 """
 from __future__ import annotations
 
-from .schema import _F, _I, _Key, Where, type_name, validate_table
+from .schema import _F, _I, _Key, Where, section_schema, type_name, validate_table
 
 __all__ = ["drive_schema", "load_drive", "build_drive", "run_drive", "STAGE_KINDS"]
 
@@ -86,14 +86,9 @@ def drive_schema(part: str = "") -> dict:
                 "objective": _Key("choice", default=c.OBJECTIVES[0], choices=c.OBJECTIVES),
                 "conditions": {key: _Key("float_or_str", lo=c.FACTOR_RANGE[0], hi=c.FACTOR_RANGE[1], choices=())
                                for key in c.FACTOR_NAMES}}
-    if part == "shaft":
-        return {"at": _I(required=True, lo=0, hi=d.STAGES_MAX), "name": _Key("str"),
-                "d_mm": _F(required=True, lo=0.0, hi=k.LENGTH_MAX_MM, lo_open=True),
-                "hub_length_mm": _F(required=True, lo=0.0, hi=k.LENGTH_MAX_MM, lo_open=True),
-                "allowable_crush_mpa": _F(default=k.DEFAULT_CRUSH_MPA, lo=0.0, hi=k.ALLOWABLE_MPA_MAX, lo_open=True),
-                "allowable_shear_mpa": _F(default=k.DEFAULT_SHEAR_MPA, lo=0.0, hi=k.ALLOWABLE_MPA_MAX, lo_open=True),
-                "end": _Key("choice", default=k.ENDS[0], choices=k.ENDS),
-                "max_keys": _I(default=k.MAX_KEYS, lo=1, hi=k.MAX_KEYS)}
+    if part == "shaft":   # a [key] whose torque is the shaft's own, and the shaft it sits on
+        keys = {name: spec for name, spec in section_schema("key").items() if name != "torque_nm"}
+        return {"at": _I(required=True, lo=0, hi=d.STAGES_MAX), **keys}
     raise KeyError(part)
 
 
