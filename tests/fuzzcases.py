@@ -219,6 +219,28 @@ def _planetary_teeth(rng):
     return f"select_planetary_teeth(**{kw})", lambda: gd.select_planetary_teeth(**kw)
 
 
+def _drive(rng):
+    """A linked drive: a given stage, a gear stage and a chain with keyed shafts, analysed or optimised."""
+    power = _pick(rng, [2.0, 4.0, 7.5], 0.1)
+    n_in = _pick(rng, [1410.0, 950.0, 2850.0], 0.1)
+    ratio = _pick(rng, lambda r: round(r.uniform(2, 30), 2), 0.1)
+    given = dict(ratio=_pick(rng, [2.0, 4.0, 12.5], 0.1), efficiency=_pick(rng, [0.87, 0.95], 0.1))
+    gear = dict(m=_pick(rng, [2.0, 3.0, 4.0], 0.1))
+    shaft = dict(d_mm=_pick(rng, [30.0, 40.0, 60.0], 0.1), hub_length_mm=_pick(rng, [50.0, 80.0], 0.1))
+    kw = dict(total_ratio=ratio, ratio_tol=_pick(rng, [0.03, 0.05], 0.1),
+              objective=_pick(rng, ["min_size", "min_mass"], 0.05))
+    use_gear = rng.random() < 0.5
+
+    def call():
+        stages = [gd.GivenStage(**given, name="gear motor")]
+        stages += [gd.GearStage(**gear)] if use_gear else []
+        stages += [gd.ChainStage()]
+        drive = gd.Drive(power_kw=power, n_in_rpm=n_in, stages=stages,
+                         shafts=[gd.Shaft(**shaft, at=len(stages))])
+        return drive.optimize(**kw)
+    return f"Drive({power} kW, {n_in} rpm, {given}, gear={use_gear and gear}, {shaft}).optimize(**{kw})", call
+
+
 def _chain(rng):
     kw = dict(torque_nm=_pick(rng, lambda r: round(r.uniform(1, 2000), 2)),
               n1_rpm=_pick(rng, lambda r: round(r.uniform(20, 1500), 1)),
@@ -353,7 +375,7 @@ TARGETS = {
     "optimize_shifts": _optimize, "feasible_region": _region, "shift_atlas": _atlas, "select_teeth": _teeth,
     "chain": _chain, "key": _key, "scene": _scene, "cli": _cli,
     "planetary_set": _planetary_set, "optimize_planetary_shifts": _optimize_planetary,
-    "select_planetary_teeth": _planetary_teeth,
+    "select_planetary_teeth": _planetary_teeth, "drive": _drive,
 }
 
 
