@@ -14,7 +14,7 @@ from .output import Progress, add_json_flag, print_json
 def add_parser(subparsers):
     p = subparsers.add_parser(
         "run", help="run a scene file (TOML) and write a report with tables and plots",
-        description="Run one design case described in a TOML scene file ([gear], [teeth], [chain], [key], [drive], "
+        description="Run one design case described in a TOML scene file ([gear], [teeth], [planetary], [chain], [key], [drive], "
                     "[study]; see docs/studies.md) and write report.md, CSV tables and PNG plots.")
     p.add_argument("scene", help="the scene file (.toml)")
     p.add_argument("--out", required=True, metavar="DIR",
