@@ -29,7 +29,7 @@ __all__ = ["Result", "plain"]
 
 def plain(value):
     """numpy and pandas values as JSON-ready Python values: NaN and ±inf become None, arrays lists,
-    DataFrames lists of records."""
+    DataFrames lists of records, Series dicts."""
     if isinstance(value, dict):
         return {str(k): plain(v) for k, v in value.items()}
     if isinstance(value, (list, tuple)):
@@ -45,6 +45,8 @@ def plain(value):
         return v if math.isfinite(v) else None
     if hasattr(value, "to_dict") and hasattr(value, "columns"):      # a DataFrame
         return plain(value.to_dict(orient="records"))
+    if hasattr(value, "to_dict") and hasattr(value, "index"):        # a Series (a catalog row)
+        return plain(value.to_dict())
     if isinstance(value, Result):
         return value.to_dict()
     return value

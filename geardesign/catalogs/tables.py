@@ -82,6 +82,8 @@ CHAIN_SCHEMA = Schema(
     description="roller chains: one row per chain and strand count; hinge area per strand",
 )
 
+MOTOR_TORQUE_RATIO_MAX = 10.0   # T/T_nom of a cage motor: catalogues print about 1.5 ... 5.5
+
 SCHEMAS: dict[str, Schema] = {
     "chains": CHAIN_SCHEMA,
     "chain_allowable_pressure": Schema(
@@ -128,9 +130,13 @@ SCHEMAS: dict[str, Schema] = {
     "motors": Schema(
         "motors",
         (Column("designation", "str"), _f("power_kw"), Column("poles", "int", positive=True), _f("sync_speed_rpm"),
-         _f("rated_speed_rpm"), _f("max_torque_ratio"), _f("shaft_d_mm")),
-        increasing=("power_kw",), increasing_within=("sync_speed_rpm",),
-        description="three-phase asynchronous motors: rated power and speed, T_max/T_nom, shaft end diameter"),
+         _f("rated_speed_rpm"), _f("max_torque_ratio", required=False), _f("shaft_d_mm", required=False),
+         _f("efficiency_pct", required=False), _f("start_torque_ratio", required=False),
+         _f("mass_kg", required=False)),
+        # two frames may carry one power step (a catalogue's long-core variant)
+        increasing_within=("sync_speed_rpm",), trend=(("power_kw", "nondecreasing"),),
+        description="three-phase asynchronous motors: rated power and speed; T_max/T_nom, shaft end diameter, "
+                    "efficiency, T_start/T_nom and mass where the source prints them (blank otherwise)"),
 }
 
 # Bundled tables: name -> (file, schema kind, row filter on the "series" column or None)
@@ -150,6 +156,7 @@ BUNDLED: dict[str, tuple[str, str, str | None]] = {
     "modules": ("modules_iso54.csv", "modules", None),
     "center_distances": ("center_distances_gost2185.csv", "center_distances", None),
     "motors_air": ("motors_air.csv", "motors", None),
+    "motors_soga_mt3": ("motors_soga_mt3.csv", "motors", None),
 }
 CHAIN_CATALOGS = ("gost13568", "iso606", "iso606a", "iso606b", "ansi_b29")
 
@@ -188,12 +195,15 @@ def _validate(frame: pd.DataFrame, schema: Schema, path, bundled: bool) -> pd.Da
     frame = frame.copy()
     if frame.empty:
         raise CatalogError(f"{path}: no rows (a {schema.kind} table needs at least one)")
-    needed = schema.names + (schema.bundled_only if bundled else ())
+    needed = tuple(c.name for c in schema.columns if c.required) + (schema.bundled_only if bundled else ())
     missing = [c for c in needed if c not in frame.columns]
     if missing:
         raise CatalogError(
             f"{path}: missing column(s) {', '.join(repr(m) for m in missing)} "
             f"(a {schema.kind} table needs {', '.join(needed)})")
+    for col in schema.columns:
+        if col.name not in frame.columns:     # an optional column left out: all blank
+            frame[col.name] = np.nan
     lines = np.arange(len(frame)) + 2
     for col in schema.columns:
         raw = frame[col.name]
@@ -287,6 +297,9 @@ def _row_rules(frame: pd.DataFrame, schema: Schema, path, lines) -> None:
              "the synchronous speed must be 6000/poles rpm (50 Hz mains)")
         fail(rated >= sync, "rated_speed_rpm", "an asynchronous motor runs below its synchronous speed")
         fail(frame["max_torque_ratio"].to_numpy() <= 1.0, "max_torque_ratio", "T_max/T_nom must exceed 1")
+        fail(frame["efficiency_pct"].to_numpy() >= 100.0, "efficiency_pct", "efficiency must be below 100 %")
+        for col, top in (("max_torque_ratio", MOTOR_TORQUE_RATIO_MAX), ("start_torque_ratio", MOTOR_TORQUE_RATIO_MAX)):
+            fail(frame[col].to_numpy() > top, col, f"a torque ratio above {top:g} is not a catalogue motor's")
     elif schema.kind in ("modules", "center_distances"):
         fail(~frame["series"].isin([1, 2]).to_numpy(), "series", "series must be 1 or 2")
 
@@ -297,7 +310,7 @@ def _schema_for(frame_columns, kind: str | None, path) -> Schema:
             raise GearDesignError(f"catalog kind must be one of {', '.join(SCHEMAS)}, got {kind!r}")
         return SCHEMAS[kind]
     for schema in SCHEMAS.values():
-        if set(schema.names) <= set(frame_columns):
+        if {c.name for c in schema.columns if c.required} <= set(frame_columns):
             return schema
     raise CatalogError(
         f"{path}: columns {', '.join(frame_columns)} match no known table; pass kind= one of {', '.join(SCHEMAS)}")

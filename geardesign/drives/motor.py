@@ -1,10 +1,16 @@
 """Three-phase asynchronous motors from a catalog, and the choice of one for a drive.
 
-The bundled table (catalogs/motors_air.csv) is the AIR series as the Russian course-design books
-tabulate it: rated power P (the IEC 60034 power steps 0.37 … 30 kW), synchronous speed
-n_s = 6000/poles rpm (50 Hz), rated speed n, the ratio T_max/T_nom and the shaft-end diameter.
-Efficiency, starting-torque ratio and mass are not in the one source found, so the table leaves
-them out (docs/drive.md) rather than guess them.
+Two bundled tables (docs/drive.md says where each value comes from):
+
+- ``motors_air`` (the default): the AIR series as the Russian course-design books tabulate it:
+  rated power P (the IEC 60034 power steps 0.37 … 30 kW), synchronous speed n_s = 6000/poles rpm
+  (50 Hz), rated speed n, T_max/T_nom and the shaft-end diameter; efficiency, T_start/T_nom and
+  mass are not in its source, so they are blank.
+- ``motors_soga_mt3``: SOGA's MT3 IE3 series (catalogue table, 400 V 50 Hz): power, rated speed,
+  efficiency, T_start/T_nom and mass as printed; T_max/T_nom and the shaft diameter are not in
+  that table, so they are blank.
+
+A blank is a value the source does not print, never an estimate.
 
 Rated torque T = 9550·P/n [N·m] (P in kW, n in rpm), i.e. T = P/ω with ω = 2πn/60.
 """
@@ -23,10 +29,15 @@ from ..validate import one_number, require_range
 __all__ = ["MotorSelection", "select", "rated_torque_nm", "MOTOR_CATALOGS", "SERVICE_FACTOR_RANGE",
            "POWER_RANGE_KW", "SPEED_RANGE_RPM"]
 
-MOTOR_CATALOGS = ("motors_air",)
+MOTOR_CATALOGS = ("motors_air", "motors_soga_mt3")   # the first is the default
 SERVICE_FACTOR_RANGE = (1.0, 5.0)    # a design allowance on the power, not a second motor
 POWER_RANGE_KW = (1e-3, 1e5)
 SPEED_RANGE_RPM = (1.0, 10_000.0)    # 50 Hz mains: at most 3000 rpm synchronous; a wish above is a slip
+
+
+# the optional catalog values the message reports when the row has them
+_PRINTED = (("T_max/T_nom", "max_torque_ratio", ""), ("T_start/T_nom", "start_torque_ratio", ""),
+            ("efficiency", "efficiency_pct", " %"), ("mass", "mass_kg", " kg"))
 
 
 def rated_torque_nm(power_kw, speed_rpm):
@@ -44,7 +55,8 @@ def rated_torque_nm(power_kw, speed_rpm):
 class MotorSelection(Result):
     """Result of :func:`select`: the chosen motor (a catalog row) and every row considered.
 
-    ``motor`` has the catalog's columns plus ``rated_torque_nm`` and ``max_torque_nm``;
+    ``motor`` has the catalog's columns plus ``rated_torque_nm``, ``max_torque_nm`` and
+    ``start_torque_nm`` (NaN, None in ``to_dict``, where the catalog leaves the ratio blank);
     ``candidates`` lists the rows with enough power, nearest speed first.
     """
 
@@ -68,7 +80,8 @@ def select(power_kw, speed_rpm, service_factor=1.0, catalog="motors_air") -> Mot
     synchronous speed whose rated speed is nearest ``speed_rpm`` (the usual course-design rule:
     pick the speed series, then the first power step that covers the need).
 
-    Ties in speed go to the faster series (a smaller, lighter motor for the same power).
+    Ties in speed go to the faster series (a smaller, lighter motor for the same power); two
+    frames of one power in a series (SOGA MT3 lists some) go to the lighter.
 
     >>> select(3.5, 1450).motor["designation"]
     'AIR100L4'
@@ -87,14 +100,18 @@ def select(power_kw, speed_rpm, service_factor=1.0, catalog="motors_air") -> Mot
                               p, n, sf, None, enough)
     enough["rated_torque_nm"] = rated_torque_nm(enough["power_kw"], enough["rated_speed_rpm"])
     enough["max_torque_nm"] = enough["rated_torque_nm"] * enough["max_torque_ratio"]
+    enough["start_torque_nm"] = enough["rated_torque_nm"] * enough["start_torque_ratio"]
     enough["speed_error_rpm"] = (enough["rated_speed_rpm"] - n).abs()
-    # one row per speed series: its first power step that covers the need
-    first = enough.sort_values(["sync_speed_rpm", "power_kw"], kind="stable").groupby("sync_speed_rpm").head(1)
+    # one row per speed series: its first power step that covers the need (of two frames with
+    # one power, the lighter where the catalog prints masses, else the first listed)
+    first = (enough.sort_values(["sync_speed_rpm", "power_kw", "mass_kg"], kind="stable", na_position="last")
+             .groupby("sync_speed_rpm").head(1))
     ranked = first.sort_values(["speed_error_rpm", "sync_speed_rpm"], ascending=[True, False], kind="stable")
     ranked = ranked.reset_index(drop=True)
     best = ranked.iloc[0]
+    printed = [f"{label} = {best[col]:g}{unit}" for label, col, unit in _PRINTED if not math.isnan(best[col])]
     msg = (f"{best['designation']}: {best['power_kw']:g} kW, {best['rated_speed_rpm']:g} rpm "
-           f"({best['sync_speed_rpm']:g} rpm synchronous), T_nom = {best['rated_torque_nm']:.4g} N·m, "
-           f"T_max/T_nom = {best['max_torque_ratio']:g}; needed {need:g} kW"
+           f"({best['sync_speed_rpm']:g} rpm synchronous), T_nom = {best['rated_torque_nm']:.4g} N·m"
+           + "".join(", " + s for s in printed) + f"; needed {need:g} kW"
            + (f" (= {p:g} kW x service factor {sf:g})" if sf != 1.0 else ""))
     return MotorSelection(True, msg, p, n, sf, best, ranked)
