@@ -32,7 +32,8 @@ from ..validate import _show, one_number, require_bool, require_finite, require_
 
 __all__ = [
     "Check", "Undercut", "Interference", "TipThickness", "ContactRatio", "TotalContactRatio", "Jamming",
-    "RingInterference", "RingTip", "TipInterference", "RadialAssembly", "CutterTrimming", "ToothDifference",
+    "RingInterference", "RingTip", "TipInterference", "RadialAssembly", "CutterTrimming", "CutterInterference",
+    "ToothDifference",
     "CenterDistance", "CustomCheck",
     "make_checks", "evaluate", "DEFAULT_EPS_ALPHA_MIN", "DEFAULT_SA_MIN", "EPS_ALPHA_MIN_RANGE", "SA_MIN_RANGE",
     "EPS_GAMMA_MIN_RANGE",
@@ -495,6 +496,46 @@ class CutterTrimming(Check):
 
 
 @dataclass(frozen=True)
+class CutterInterference(Check):
+    """The shaper cutter generates the ring's whole flank with its involute (internal pairs): in
+    the cutter–ring mesh the ring's tip point ρ_a2 must lie beyond the cutter's interference point
+    N0, ρ_a2 >= N0N2 = a_w0 sin α_w0 — KHK eq. (5-4), z0/z2 >= 1 − tan α_a2/tan α_w0, with the
+    cutter in place of the pinion. Otherwise the cutter's tip region runs below its base circle and
+    cuts the ring's tips away (the generated ring shows it: :func:`geardesign.profiles.ring.ring_profile`
+    sets ``cutting_interference``). Margin (ρ_a2 − a_w0 sin α_w0)/m; N0N2 = ρ_F2 − ρ_a0 from the
+    cutting mesh. Depends on the ring only: gradient (0, (m r_a2/ρ_a2 − ∂ρ_F2/∂x2)/m)."""
+
+    cutter: object = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "cutter", _cutter(self.cutter))
+        object.__setattr__(self, "name", self.name or "cutter_interference")
+        object.__setattr__(self, "label", self.label or "the shaper cutter's involute generates the ring's tip "
+                                                         "(no involute interference in cutting)")
+
+    def _n0n2(self, geo):
+        cm = _cutting_mesh(geo, self.cutter)
+        r_b0 = geo["db2"] / 2.0 * cm.z0 / geo["_z2"]
+        rho_a0 = (cm.r_a0 - r_b0) * (cm.r_a0 + r_b0)
+        rho_a0 = rho_a0 ** 0.5 if type(rho_a0) is float else np.sqrt(rho_a0)
+        return cm.rho_form2 - rho_a0
+
+    def value(self, geo):
+        return geo["_rho_a2"] / geo["_m"]
+
+    def limit_value(self, geo):
+        return self._n0n2(geo) / geo["_m"]
+
+    def margin(self, geo):
+        return (geo["_rho_a2"] - self._n0n2(geo)) / geo["_m"]
+
+    def gradient(self, geo):
+        m = geo["_m"]
+        # ρ_a2² = r_a2² − r_b2², ∂r_a2/∂x2 = m (the ring's tip moves out with x2); N0N2 = ρ_F2 − ρ_a0
+        return 0.0, (m * geo["_ra2"] / geo["_rho_a2"] - _cutting_mesh(geo, self.cutter).drho_form2_dx2) / m
+
+
+@dataclass(frozen=True)
 class ToothDifference(Check):
     """The smallest tooth difference z2 − z1 of an internal pair a designer or shop allows
     (``limit``; KHK's rule for unshifted standard gears is "more than 9", recomputed in
@@ -615,7 +656,7 @@ def make_checks(eps_alpha_min: float | None = DEFAULT_EPS_ALPHA_MIN, sa_min: flo
         require_bool(flag, value)
     if interference and internal:
         out += [Interference(gear=1), RingInterference(cutter=cutter), RingTip(), TipInterference(),
-                CutterTrimming(cutter=cutter)]
+                CutterTrimming(cutter=cutter), CutterInterference(cutter=cutter)]
     elif interference:
         out += [Interference(gear=1), Interference(gear=2)]
     if internal and radial_assembly:

@@ -192,7 +192,7 @@ CHECK_COLOURS = {
     "contact_ratio": "tab:purple", "jamming": "tab:brown", "center_distance": "tab:cyan",
     "ring_tip": "darkgreen", "tip_interference": "magenta", "cutter_trimming": "saddlebrown",
     "total_contact_ratio": "indigo", "radial_assembly": "slategray", "tooth_difference": "black",
-    "neighbours": "teal",
+    "neighbours": "teal", "cutter_interference": "olive",
 }
 _CUSTOM_COLOURS = ("tab:olive", "tab:pink", "tab:gray", "darkgoldenrod", "teal")
 PLOT_N_MAX = 1201      # nodes per axis of a plot's curves: 1.4 M designs, ~1 s
