@@ -24,7 +24,7 @@ from dataclasses import fields
 
 import numpy as np
 
-__all__ = ["Result", "plain"]
+__all__ = ["Result", "RankedTable", "plain"]
 
 
 def plain(value):
@@ -76,3 +76,22 @@ class Result:
         if not self._table_fields:
             raise NotImplementedError(f"{type(self).__name__} has no table")
         return getattr(self, self._table_fields[0]).copy()
+
+
+class RankedTable(Result):
+    """A search result whose ``table`` is ranked best first and has a boolean ``feasible`` column:
+    ``best`` is the first row when it is feasible (else None), ``found`` whether there is one."""
+
+    _success_field = "found"
+    _table_fields = ("table",)
+
+    @property
+    def best(self):
+        if self.table.empty or not bool(self.table["feasible"].iloc[0]):
+            return None
+        return self.table.iloc[0]
+
+    @property
+    def found(self) -> bool:
+        """True when the best row is feasible."""
+        return self.best is not None

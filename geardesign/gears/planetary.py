@@ -31,7 +31,7 @@ Modelling choices (written down here, once):
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 

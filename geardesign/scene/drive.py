@@ -33,7 +33,6 @@ def drive_schema(part: str = "") -> dict:
     """The keys of ``[drive]`` (part ""), ``[drive.motor]``, each stage kind and ``[[drive.shaft]]``."""
     from ..drives import chain as c
     from ..drives import drive as d
-    from ..drives import key as k
     from ..drives import motor as mo
     from ..drives import stages as s
 

@@ -23,8 +23,8 @@ import numpy as np
 from ..errors import GearDesignError
 from ..gears import checks as _checks
 from ..gears.geometry import min_center_distance
-from ..gears.planetary import (ARRANGEMENTS, MESH_NAMES, Assembly, PlanetaryMeshes, assembly_value, planetary_ratio,
-                               set_checks, set_geometry)
+from ..gears.planetary import (ARRANGEMENTS, MESH_NAMES, Assembly, PlanetaryMeshes, planetary_ratio, set_checks,
+                               set_geometry)
 from ..results import Result
 from ..validate import one_number, require_choice, require_count, require_range
 from .center_distance import x_sum_for_housing

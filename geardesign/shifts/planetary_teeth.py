@@ -16,14 +16,14 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 
 from ..errors import GearDesignError
 from ..gears.planetary import ARRANGEMENTS, N_PLANETS_RANGE, planetary_ratio
-from ..results import Result
+from ..results import RankedTable
 from ..validate import one_number, require_choice, require_count, require_positive, require_range
 from .objectives import resolve_objective
 from .optimize import METHODS
@@ -38,7 +38,7 @@ DEFAULT_OBJECTIVE = "max_eps_alpha"
 
 
 @dataclass
-class PlanetaryTeethSelection(Result):
+class PlanetaryTeethSelection(RankedTable):
     """The ranked result of :func:`select_planetary_teeth`: ``table`` one row per candidate (solved
     or not, ``reason`` says why a row fails), best first; ``best`` the first row if feasible."""
 
@@ -52,19 +52,6 @@ class PlanetaryTeethSelection(Result):
     method: str
     n_solved: int = 0
     time_s: float = 0.0
-
-    _success_field = "found"
-    _table_fields = ("table",)
-
-    @property
-    def found(self) -> bool:
-        return self.best is not None
-
-    @property
-    def best(self):
-        if self.table.empty or not bool(self.table["feasible"].iloc[0]):
-            return None
-        return self.table.iloc[0]
 
     @property
     def message(self) -> str:

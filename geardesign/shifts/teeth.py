@@ -29,7 +29,7 @@ import numpy as np
 import pandas as pd
 
 from .. import catalogs
-from ..results import Result, plain
+from ..results import RankedTable, plain
 from ..gears.checks import resolve_checks
 from ..errors import GearDesignError
 from ..validate import one_number, require_count, require_positive, require_range
@@ -87,7 +87,7 @@ def _z1_range(z1_range):
 
 
 @dataclass
-class TeethSelection(Result):
+class TeethSelection(RankedTable):
     """The ranked result of :func:`select_teeth`.
 
     ``table`` — one row per solved candidate, best first (see the module docstring for the
@@ -107,20 +107,6 @@ class TeethSelection(Result):
     n_solved: int = 0
     time_s: float = 0.0
     objective_sense: int = 1     # +1: larger is better, −1: smaller
-
-    _success_field = "found"
-    _table_fields = ("table",)
-
-    @property
-    def found(self) -> bool:
-        """True when the best row is feasible."""
-        return self.best is not None
-
-    @property
-    def best(self) -> pd.Series | None:
-        if self.table.empty or not bool(self.table["feasible"].iloc[0]):
-            return None
-        return self.table.iloc[0]
 
     @property
     def feasible(self) -> pd.DataFrame:

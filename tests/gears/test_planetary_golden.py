@@ -6,7 +6,6 @@ Sources: LECAD (University of Ljubljana) pg test run; the NREL 5 MW and DTU 10 M
 drivetrains' KISSsoft reports and input files (public repository gfsReboucas/Drivetrain); the
 drivetrainhub planetary notebook's standard helical sets. Ring shifts converted to the GOST sign.
 """
-import math
 import re
 from pathlib import Path
 
