@@ -188,7 +188,10 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     The first pass is batched: every pair's margins on a 41×41 grid of (x1, x2) in one
     vectorised call per chunk of pairs. It gives the region area (traced on that grid
     from the zero contour of the smallest margin) and each pair's best node, from which ``method`` then polishes
-    the optimum (``grid`` keeps the node). ``upper_only`` keeps z2 >= z1 (an internal pair
+    the optimum (``grid`` keeps the node). A pair whose region holds no node (a sliver, as for 8 to 11
+    pinion teeth) starts the batched Newton from its least infeasible node; only pairs the batched
+    Newton cannot settle (no valid KKT point: infeasible pairs, whose conflict is then searched) are
+    solved one by one. ``upper_only`` keeps z2 >= z1 (an internal pair
     always needs z2 > z1). ``progress`` is called with the number of pairs done.
     ``beta_deg``, ``internal``, ``face_width``: the kind of every pair, as for
     :class:`~geardesign.gears.mesh.Mesh`; lengths are per unit module (m = 1), so ``face_width``
@@ -214,6 +217,7 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     area = np.zeros(Z1.size)
     area_error = np.zeros(Z1.size)
     start = np.full((Z1.size, 2), np.nan)
+    near = np.full((Z1.size, 2), np.nan)    # the least infeasible node of a pair with no feasible node
     def node_values(geo):
         """The smallest margin (-1 where a gear does not exist) and the objective where feasible."""
         with np.errstate(all="ignore"):   # nodes where a gear does not exist: margin NaN → −inf
@@ -238,12 +242,15 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
         best = np.argmax(score, axis=1)
         ok = np.isfinite(score[np.arange(len(best)), best])
         start[s:s + chunk][ok] = np.column_stack([X1[best], X2[best]])[ok]
+        least = np.argmax(F, axis=1)
+        near[s:s + chunk][~ok] = np.column_stack([X1[least], X2[least]])[~ok]
     fast = np.full((Z1.size, 2), np.nan)
     if method == "exact" and proto.objective.kind == "smooth":
-        has = ~np.isnan(start[:, 0])
+        from_node = np.where(np.isnan(start), near, start)
+        has = ~np.isnan(from_node[:, 0])
         for s in range(0, int(has.sum()), 400):
             sel = np.flatnonzero(has)[s:s + 400]
-            fast[sel] = _batched_kkt(proto, Z1[sel], Z2[sel], start[sel])
+            fast[sel] = _batched_kkt(proto, Z1[sel], Z2[sel], from_node[sel])
     rows = []
     for k, (z1, z2) in enumerate(zip(Z1.tolist(), Z2.tolist())):
         st = None if np.isnan(start[k, 0]) else start[k]
