@@ -149,33 +149,112 @@ def _best_candidate(proto, geo, M, G, gp, X, a_idx, b_idx, is_v, rows, B, C):
     return out
 
 
-def _contour_area(g, F) -> float:
-    """Area inside the zero contour of F (linear interpolation between nodes, so the error is
-    ~ perimeter × step², not perimeter × step as a node count would give)."""
-    import contourpy
-
-    h = g[1] - g[0]
-    gp = np.concatenate([[g[0] - h], g, [g[-1] + h]])
-    Fp = np.full((F.shape[0] + 2, F.shape[1] + 2), -1.0)
-    Fp[1:-1, 1:-1] = F
-    gen = contourpy.contour_generator(x=gp, y=gp, z=Fp.T, line_type=contourpy.LineType.Separate)
-    total = 0.0
-    for L in gen.lines(0.0):
-        x, y = np.clip(L[:, 0], g[0], g[-1]), np.clip(L[:, 1], g[0], g[-1])
-        total += abs(0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
-    return total
+_CX = np.array([0.0, 1.0, 1.0, 0.0])     # a cell's corners, counter-clockwise, in node spacings
+_CY = np.array([0.0, 0.0, 1.0, 1.0])
+_DX, _DY = np.roll(_CX, -1) - _CX, np.roll(_CY, -1) - _CY
 
 
-def _row_at(proto: Problem, z1, z2, x, area) -> dict:
+def grid_areas(F: np.ndarray, h: float) -> np.ndarray:
+    """Area where F >= 0 for each grid ``F[..., i, j]`` of nodes ``h`` apart, F taken linear along
+    each cell edge (the zero contour's linear interpolation, so the error is ~ perimeter × h², not
+    perimeter × h as a node count would give). A cell with all four corners >= 0 counts whole; a
+    cell the contour crosses counts the polygon of its corners >= 0 and its edges' zero crossings,
+    walked round the cell, by the shoelace formula. Holes are subtracted, pieces added.
+
+    >>> g = np.linspace(-1.0, 1.0, 41)
+    >>> X1, X2 = np.meshgrid(g, g, indexing="ij")
+    >>> round(float(grid_areas(0.5 - np.abs(X1) - np.abs(X2), g[1] - g[0])), 12)   # a square of diagonal 1
+    0.5
+    """
+    P = (F >= 0).view(np.uint8)
+    n_pos = P[..., :-1, :-1] + P[..., 1:, :-1] + P[..., 1:, 1:] + P[..., :-1, 1:]
+    whole = np.count_nonzero(n_pos == 4, axis=(-1, -2))
+    *lead, i, j = np.nonzero((n_pos > 0) & (n_pos < 4))
+    a = np.stack([F[(*lead, i, j)], F[(*lead, i + 1, j)], F[(*lead, i + 1, j + 1)], F[(*lead, i, j + 1)]], axis=1)
+    p = a >= 0
+    cross = p != np.roll(p, -1, axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.where(cross, a / (a - np.roll(a, -1, axis=1)), 0.0)
+    # eight slots per cell: corner k, then the zero crossing on edge k (k -> k + 1)
+    X, Y, used = np.empty((a.shape[0], 8)), np.empty((a.shape[0], 8)), np.empty((a.shape[0], 8), bool)
+    X[:, 0::2], Y[:, 0::2], used[:, 0::2] = _CX, _CY, p
+    X[:, 1::2], Y[:, 1::2], used[:, 1::2] = _CX + t * _DX, _CY + t * _DY, cross
+    # an unused slot repeats the used one before it (cyclically): an edge of zero length
+    last = np.maximum.accumulate(np.where(np.tile(used, 2), np.arange(16), -1), axis=1)[:, 8:] % 8
+    X, Y = np.take_along_axis(X, last, 1), np.take_along_axis(Y, last, 1)
+    part = 0.5 * (X * np.roll(Y, -1, axis=1) - np.roll(X, -1, axis=1) * Y).sum(axis=1)
+    shape = F.shape[:-2]
+    owner = np.ravel_multi_index(lead, shape) if shape else np.zeros(part.size, dtype=np.intp)
+    total = whole.ravel() + np.bincount(owner, weights=part, minlength=max(1, int(np.prod(shape, dtype=int))))
+    return h * h * total.reshape(shape)
+
+
+def _row_at(proto: Problem, z1, z2, x) -> dict:
     geo = mesh_geometry_float(proto.mesh.unchecked(z1, z2), 1.0, x[0], x[1])
     M = proto.margins(geo)
     fun = proto.fun(geo)
     tol = 1e-8
     row = {"z1": z1, "z2": z2, "feasible": True, "x1": float(x[0]), "x2": float(x[1]),
-           "objective": float(fun), "eps_alpha": float(geo["eps_alpha"]), "area": area,
+           "objective": float(fun), "eps_alpha": float(geo["eps_alpha"]), "area": np.nan, "area_error": np.nan,
            "active": ",".join(n for n, m in zip(proto.names, M) if abs(m) <= tol), "conflict": ""}
     # a margin the batched Newton cannot tell from zero is zero (no 1e-16 "dips" in sweeps)
     row.update({f"margin_{n}": (0.0 if abs(float(m)) <= tol else float(m)) for n, m in zip(proto.names, M)})
+    return row
+
+
+def _first_pass(proto: Problem, Z1, Z2, bounds):
+    """Every pair's margins on the _ATLAS_N² grid, chunk by chunk: (area, area_error, best feasible
+    node, least infeasible node), the nodes NaN where they do not apply."""
+    lo, hi = bounds
+    g = np.linspace(lo, hi, _ATLAS_N)
+    X1, X2 = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
+    chunk = max(1, 200_000 // X1.size)
+    area, area_error = np.zeros(Z1.size), np.zeros(Z1.size)
+    start, least = np.full((Z1.size, 2), np.nan), np.full((Z1.size, 2), np.nan)
+
+    def node_values(geo):
+        """The smallest margin (-1 where a gear does not exist) and the objective where feasible."""
+        with np.errstate(all="ignore"):   # nodes where a gear does not exist: margin NaN → −inf
+            M = proto.margins(geo)
+        if not M.size:
+            return {"F": np.ones(geo["a"].shape), "score": proto.pieces(geo).min(axis=0)}
+        m_min = M.min(axis=0)
+        P = proto.pieces(geo).min(axis=0) if proto.objective.kind != "margin" else m_min
+        return {"F": np.where(np.isfinite(m_min), m_min, -1.0), "score": np.where(m_min >= 0, P, -np.inf)}
+
+    for s in range(0, Z1.size, chunk):
+        z1c, z2c = Z1[s:s + chunk, None], Z2[s:s + chunk, None]
+        # block by block: only the two node values are stored for the whole chunk
+        nodes = mesh_geometry(proto.mesh.unchecked(z1c, z2c), 1.0, X1[None, :], X2[None, :], proto.full,
+                              then=node_values)
+        F, score = nodes["F"].reshape(-1, _ATLAS_N, _ATLAS_N), nodes["score"]
+        area[s:s + chunk] = grid_areas(F, g[1] - g[0])
+        # the same contour on every other node: the change bounds the interpolation error
+        area_error[s:s + chunk] = np.abs(area[s:s + chunk] - grid_areas(F[:, ::2, ::2], g[2] - g[0]))
+        best, worst = np.argmax(score, axis=1), np.argmax(nodes["F"], axis=1)
+        ok = np.isfinite(score[np.arange(len(best)), best])
+        start[s:s + chunk][ok] = np.column_stack([X1[best], X2[best]])[ok]
+        least[s:s + chunk][~ok] = np.column_stack([X1[worst], X2[worst]])[~ok]
+    return area, area_error, start, least
+
+
+def _polish(proto: Problem, Z1, Z2, start, batch: int = 400):
+    """The batched KKT Newton (:func:`_batched_kkt`) for every pair with a start node; NaN elsewhere."""
+    fast = np.full((Z1.size, 2), np.nan)
+    has = np.flatnonzero(~np.isnan(start[:, 0]))
+    for s in range(0, has.size, batch):
+        sel = has[s:s + batch]
+        fast[sel] = _batched_kkt(proto, Z1[sel], Z2[sel], start[sel])
+    return fast
+
+
+def _row_solved(z1: int, z2: int, start, solve_kw: dict) -> dict:
+    """A row from optimize_shifts on one pair (its own starts and, when infeasible, its conflict)."""
+    r = optimize_shifts(z1, z2, start=start, **solve_kw)
+    row = {"z1": z1, "z2": z2, "feasible": r.success, "x1": r.x1, "x2": r.x2, "objective": r.fun,
+           "eps_alpha": r.eps_alpha, "area": np.nan, "area_error": np.nan, "active": ",".join(r.active),
+           "conflict": ",".join(r.conflict)}
+    row.update({f"margin_{name}": v for name, v in r.margins.items()})
     return row
 
 
@@ -209,66 +288,21 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
                               "internal pairs need z2 > z1)")
     proto = Problem(Mesh(int(Z1[0]), int(Z2[0]), rack, tip_shortening, beta_deg, internal, face_width), checks,
                     objective, 1.0)
-    rack = proto.rack
-    lo, hi = bounds
-    g = np.linspace(lo, hi, _ATLAS_N)
-    X1, X2 = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
-    chunk = max(1, 200_000 // X1.size)
-    area = np.zeros(Z1.size)
-    area_error = np.zeros(Z1.size)
-    start = np.full((Z1.size, 2), np.nan)
-    near = np.full((Z1.size, 2), np.nan)    # the least infeasible node of a pair with no feasible node
-    def node_values(geo):
-        """The smallest margin (-1 where a gear does not exist) and the objective where feasible."""
-        with np.errstate(all="ignore"):   # nodes where a gear does not exist: margin NaN → −inf
-            M = proto.margins(geo)
-        if not M.size:
-            return {"F": np.ones(geo["a"].shape), "score": proto.pieces(geo).min(axis=0)}
-        m_min = M.min(axis=0)
-        P = proto.pieces(geo).min(axis=0) if proto.objective.kind != "margin" else m_min
-        return {"F": np.where(np.isfinite(m_min), m_min, -1.0), "score": np.where(m_min >= 0, P, -np.inf)}
-
-    for s in range(0, Z1.size, chunk):
-        z1c, z2c = Z1[s:s + chunk, None], Z2[s:s + chunk, None]
-        # block by block: only the two node values are stored for the whole chunk
-        nodes = mesh_geometry(proto.mesh.unchecked(z1c, z2c), 1.0, X1[None, :], X2[None, :], proto.full,
-                              then=node_values)
-        F, score = nodes["F"], nodes["score"]
-        for k in range(F.shape[0]):
-            Fk = F[k].reshape(_ATLAS_N, _ATLAS_N)
-            area[s + k] = _contour_area(g, Fk)
-            # the same contour on every other node: the change bounds the interpolation error
-            area_error[s + k] = abs(area[s + k] - _contour_area(g[::2], Fk[::2, ::2]))
-        best = np.argmax(score, axis=1)
-        ok = np.isfinite(score[np.arange(len(best)), best])
-        start[s:s + chunk][ok] = np.column_stack([X1[best], X2[best]])[ok]
-        least = np.argmax(F, axis=1)
-        near[s:s + chunk][~ok] = np.column_stack([X1[least], X2[least]])[~ok]
+    area, area_error, start, least = _first_pass(proto, Z1, Z2, bounds)
     fast = np.full((Z1.size, 2), np.nan)
     if method == "exact" and proto.objective.kind == "smooth":
-        from_node = np.where(np.isnan(start), near, start)
-        has = ~np.isnan(from_node[:, 0])
-        for s in range(0, int(has.sum()), 400):
-            sel = np.flatnonzero(has)[s:s + 400]
-            fast[sel] = _batched_kkt(proto, Z1[sel], Z2[sel], from_node[sel])
+        # pairs with no feasible node (a sliver thinner than the grid) start from their least infeasible node
+        fast = _polish(proto, Z1, Z2, np.where(np.isnan(start), least, start))
+    solve_kw = dict(objective=objective, checks=checks, method=method, tol=tol, rack=proto.rack,
+                    tip_shortening=tip_shortening, bounds=bounds, beta_deg=beta_deg, internal=internal,
+                    face_width=face_width, grid_n=_ATLAS_N if method == "grid" else None)
     rows = []
     for k, (z1, z2) in enumerate(zip(Z1.tolist(), Z2.tolist())):
-        st = None if np.isnan(start[k, 0]) else start[k]
-        if not np.isnan(fast[k, 0]):
-            rows.append(_row_at(proto, z1, z2, fast[k], area[k]))
-            rows[-1]["area_error"] = area_error[k]
-            if progress is not None:
-                progress(k + 1)
-            continue
-        r = optimize_shifts(z1, z2, objective=objective, checks=checks, method=method, tol=tol, rack=rack,
-                            tip_shortening=tip_shortening, bounds=bounds, start=st, beta_deg=beta_deg,
-                            internal=internal, face_width=face_width,
-                            grid_n=_ATLAS_N if method == "grid" else None)
-        row = {"z1": z1, "z2": z2, "feasible": r.success, "x1": r.x1, "x2": r.x2, "objective": r.fun,
-               "eps_alpha": r.eps_alpha, "area": area[k], "area_error": area_error[k],
-               "active": ",".join(r.active), "conflict": ",".join(r.conflict)}
-        row.update({f"margin_{name}": v for name, v in r.margins.items()})
-        rows.append(row)
+        if np.isnan(fast[k, 0]):    # not settled in the batch: one by one, with the conflict search
+            rows.append(_row_solved(z1, z2, None if np.isnan(start[k, 0]) else start[k], solve_kw))
+        else:
+            rows.append(_row_at(proto, z1, z2, fast[k]))
+        rows[-1].update(area=area[k], area_error=area_error[k])
         if progress is not None:
             progress(k + 1)
     df = pd.DataFrame(rows)
