@@ -58,74 +58,83 @@ def _pairs(z1_values, z2_values, upper_only, internal):
     return Z1[keep], Z2[keep]
 
 
+_REACH = 6.0   # node spacings: checks whose boundary lies farther from a pair's start node are not candidates
+
+
 @np.errstate(all="ignore")   # diverging candidates give NaN and inf: they are discarded at the end
-def _batched_kkt(proto: Problem, Z1, Z2, start, iters: int = 10):
+def _batched_kkt(proto: Problem, Z1, Z2, start, h_node: float, iters: int = 10):
     """Every KKT candidate of every pair at once, for one-piece (smooth) objectives.
 
     Candidates: each pair of checks active (a vertex: m_a = m_b = 0) and each single check
-    active with the objective's gradient normal to it (m_a = 0, ∇f × ∇m_a = 0). Newton runs on
-    all (pair, candidate) systems in lockstep from the pair's best grid node; a candidate counts
+    active with the objective's gradient normal to it (m_a = 0, ∇f × ∇m_a = 0), among the checks
+    whose boundary lies (to first order) within ``_REACH`` node spacings ``h_node`` of the pair's
+    start node. Newton runs on all (pair, candidate) systems in lockstep from the start node; a
+    system leaves the loop once its step is below 1e-13 or it breaks down. A candidate counts
     when it converged, holds every check, and has multipliers >= 0. The best valid candidate
     per pair is returned (NaN where none is valid; those pairs go to the one-by-one solver).
     """
     K = len(proto.checks)
-    combos = [(a, b) for a in range(K) for b in range(a + 1, K)] + [(a, -1) for a in range(K)]
-    B, C = len(Z1), len(combos)
-    A = np.array([c[0] for c in combos])
-    Bb = np.array([c[1] for c in combos])
-    vertex = Bb >= 0
-    z1 = np.repeat(Z1, C).astype(float)
-    z2 = np.repeat(Z2, C).astype(float)
-    a_idx = np.tile(A, B)
-    b_idx = np.tile(np.where(vertex, Bb, 0), B)
-    is_v = np.tile(vertex, B)
-    mesh = proto.mesh.unchecked(z1, z2)
-    X = np.repeat(start, C, axis=0)
-    rows = np.arange(B * C)
-    edge = np.flatnonzero(~is_v)
-    edge_mesh, edge_rows = proto.mesh.unchecked(z1[edge], z2[edge]), np.arange(edge.size)
+    geo0 = mesh_geometry(proto.mesh.unchecked(Z1.astype(float), Z2.astype(float)), 1.0, start[:, 0], start[:, 1],
+                         proto.full)
+    M0, G0 = proto.margins(geo0), proto.margin_gradients(geo0)
+    near = (M0 <= _REACH * h_node * np.sqrt((G0 ** 2).sum(axis=1))) | ~np.isfinite(M0)    # (K, B)
+    combos = np.array([(a, b) for a in range(K) for b in range(a + 1, K)] + [(a, -1) for a in range(K)])
+    take = near[combos[:, 0]] & np.where(combos[:, 1:2] >= 0, near[np.maximum(combos[:, 1], 0)], True)
+    cand, pair = np.nonzero(take)                   # rows: (candidate, pair)
+    a_idx, b_idx = combos[cand, 0], combos[cand, 1]
+    is_v = b_idx >= 0
+    b_idx = np.maximum(b_idx, 0)
+    z1, z2 = Z1[pair].astype(float), Z2[pair].astype(float)
+    X = start[pair].copy()
+    live = np.arange(pair.size)
     h = 1e-6
-
-    def grads_at(x1, x2):
-        geo = mesh_geometry(mesh, 1.0, x1, x2, proto.full)
-        return geo, proto.margins(geo), proto.margin_gradients(geo)
 
     def pgrad(geo):
         return proto.piece_gradients(geo)[0]
 
     for _ in range(iters):
-        x1, x2 = X[:, 0], X[:, 1]
-        geo, M, G = grads_at(x1, x2)
-        ma, ga = M[a_idx, rows], G[a_idx, :, rows]
-        mb, gb = M[b_idx, rows], G[b_idx, :, rows]
+        if not live.size:
+            break
+        x1, x2, r = X[live, 0], X[live, 1], np.arange(live.size)
+        geo = mesh_geometry(proto.mesh.unchecked(z1[live], z2[live]), 1.0, x1, x2, proto.full)
+        M, G = proto.margins(geo), proto.margin_gradients(geo)
+        ma, ga = M[a_idx[live], r], G[a_idx[live], :, r]
+        mb, gb = M[b_idx[live], r], G[b_idx[live], :, r]
         gp = pgrad(geo).T                               # (n, 2)
-        # the stationarity residual of edge candidates and its derivative by differences
+        # the stationarity residual of edge candidates and its derivative by central differences
         cross = gp[:, 0] * ga[:, 1] - gp[:, 1] * ga[:, 0]
-        # its derivative only where it is used: the edge candidates (a quarter of the rows)
-        dcross = np.zeros((len(rows), 2))
-        for j, (dx1, dx2) in enumerate(((h, 0.0), (0.0, h))):
-            gp_, gp__ = [], []
-            for sgn in (1.0, -1.0):
-                geo_s = mesh_geometry(edge_mesh, 1.0, x1[edge] + sgn * dx1, x2[edge] + sgn * dx2, proto.full)
-                G_s = proto.margin_gradients(geo_s)[a_idx[edge], :, edge_rows]
-                P_s = pgrad(geo_s).T
-                (gp_ if sgn > 0 else gp__).append(P_s[:, 0] * G_s[:, 1] - P_s[:, 1] * G_s[:, 0])
-            dcross[edge, j] = (gp_[0] - gp__[0]) / (2 * h)
-        r2 = np.where(is_v, mb, cross)
-        j2 = np.where(is_v[:, None], gb, dcross)
+        dcross = np.zeros((live.size, 2))
+        edge = np.flatnonzero(~is_v[live])
+        if edge.size:
+            e_mesh, e_rows = proto.mesh.unchecked(z1[live[edge]], z2[live[edge]]), np.arange(edge.size)
+            for j, (dx1, dx2) in enumerate(((h, 0.0), (0.0, h))):
+                side = []
+                for sgn in (1.0, -1.0):
+                    geo_s = mesh_geometry(e_mesh, 1.0, x1[edge] + sgn * dx1, x2[edge] + sgn * dx2, proto.full)
+                    G_s = proto.margin_gradients(geo_s)[a_idx[live[edge]], :, e_rows]
+                    P_s = pgrad(geo_s).T
+                    side.append(P_s[:, 0] * G_s[:, 1] - P_s[:, 1] * G_s[:, 0])
+                dcross[edge, j] = (side[0] - side[1]) / (2 * h)
+        v = is_v[live]
+        r2 = np.where(v, mb, cross)
+        j2 = np.where(v[:, None], gb, dcross)
         det = ga[:, 0] * j2[:, 1] - ga[:, 1] * j2[:, 0]
         ok = np.isfinite(det) & (np.abs(det) > 1e-14) & np.isfinite(ma) & np.isfinite(r2)
         sdet = np.where(ok, det, 1.0)
-        with np.errstate(all="ignore"):
-            d1 = np.where(ok, (ma * j2[:, 1] - r2 * ga[:, 1]) / sdet, 0.0)
-            d2 = np.where(ok, (r2 * ga[:, 0] - ma * j2[:, 0]) / sdet, 0.0)
-        X = X - np.clip(np.column_stack([d1, d2]), -0.2, 0.2)
-    geo, M, G = grads_at(X[:, 0], X[:, 1])
-    return _best_candidate(proto, geo, M, G, pgrad(geo).T, X, a_idx, b_idx, is_v, rows, B, C)
+        d1 = np.where(ok, (ma * j2[:, 1] - r2 * ga[:, 1]) / sdet, 0.0)
+        d2 = np.where(ok, (r2 * ga[:, 0] - ma * j2[:, 0]) / sdet, 0.0)
+        step = np.clip(np.column_stack([d1, d2]), -0.2, 0.2)
+        X[live] -= step
+        # converged (a step below 1e-13) or broken down (no finite Newton step): leave the loop
+        live = live[ok & (np.abs(step).max(axis=1) > 1e-13)]
+    geo = mesh_geometry(proto.mesh.unchecked(z1, z2), 1.0, X[:, 0], X[:, 1], proto.full)
+    M, G = proto.margins(geo), proto.margin_gradients(geo)
+    return _best_candidate(proto, geo, M, G, pgrad(geo).T, X, a_idx, b_idx, is_v, pair, Z1.size)
 
 
-def _best_candidate(proto, geo, M, G, gp, X, a_idx, b_idx, is_v, rows, B, C):
+def _best_candidate(proto, geo, M, G, gp, X, a_idx, b_idx, is_v, pair, B):
     """Each pair's best converged, feasible KKT candidate (NaN where none)."""
+    rows = np.arange(X.shape[0])
     x1, x2 = X[:, 0], X[:, 1]
     ma, mb = M[a_idx, rows], M[b_idx, rows]
     ga, gb = G[a_idx, :, rows], G[b_idx, :, rows]
@@ -140,12 +149,12 @@ def _best_candidate(proto, geo, M, G, gp, X, a_idx, b_idx, is_v, rows, B, C):
     lam_a_e = -(gp * ga).sum(axis=1) / np.maximum((ga * ga).sum(axis=1), 1e-300)
     kkt = np.where(is_v, (lam_a_v >= -1e-9) & (lam_b_v >= -1e-9), lam_a_e >= -1e-9)
     valid = conv & feas & kkt & np.isfinite(x1) & np.isfinite(x2)
-    f = np.where(valid, proto.pieces(geo)[0], -np.inf).reshape(B, C)
-    best = np.argmax(f, axis=1)
-    got = np.isfinite(f[np.arange(B), best])
+    f = np.where(valid, proto.pieces(geo)[0], -np.inf)
+    best = np.full(B, -np.inf)
+    np.maximum.at(best, pair, f)
     out = np.full((B, 2), np.nan)
-    pick = np.arange(B) * C + best
-    out[got] = X[pick[got]]
+    win = valid & (f == best[pair])
+    out[pair[win]] = X[win]
     return out
 
 
@@ -238,13 +247,13 @@ def _first_pass(proto: Problem, Z1, Z2, bounds):
     return area, area_error, start, least
 
 
-def _polish(proto: Problem, Z1, Z2, start, batch: int = 400):
+def _polish(proto: Problem, Z1, Z2, start, h_node: float, batch: int = 400):
     """The batched KKT Newton (:func:`_batched_kkt`) for every pair with a start node; NaN elsewhere."""
     fast = np.full((Z1.size, 2), np.nan)
     has = np.flatnonzero(~np.isnan(start[:, 0]))
     for s in range(0, has.size, batch):
         sel = has[s:s + batch]
-        fast[sel] = _batched_kkt(proto, Z1[sel], Z2[sel], start[sel])
+        fast[sel] = _batched_kkt(proto, Z1[sel], Z2[sel], start[sel], h_node)
     return fast
 
 
@@ -292,7 +301,8 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     fast = np.full((Z1.size, 2), np.nan)
     if method == "exact" and proto.objective.kind == "smooth":
         # pairs with no feasible node (a sliver thinner than the grid) start from their least infeasible node
-        fast = _polish(proto, Z1, Z2, np.where(np.isnan(start), least, start))
+        fast = _polish(proto, Z1, Z2, np.where(np.isnan(start), least, start),
+                       (bounds[1] - bounds[0]) / (_ATLAS_N - 1))
     solve_kw = dict(objective=objective, checks=checks, method=method, tol=tol, rack=proto.rack,
                     tip_shortening=tip_shortening, bounds=bounds, beta_deg=beta_deg, internal=internal,
                     face_width=face_width, grid_n=_ATLAS_N if method == "grid" else None)
