@@ -157,6 +157,7 @@ BUNDLED: dict[str, tuple[str, str, str | None]] = {
     "center_distances": ("center_distances_gost2185.csv", "center_distances", None),
     "motors_air": ("motors_air.csv", "motors", None),
     "motors_soga_mt3": ("motors_soga_mt3.csv", "motors", None),
+    "motors_motive_delphi": ("motors_motive_delphi.csv", "motors", None),
 }
 CHAIN_CATALOGS = ("gost13568", "iso606", "iso606a", "iso606b", "ansi_b29")
 

@@ -1,6 +1,6 @@
 """Three-phase asynchronous motors from a catalog, and the choice of one for a drive.
 
-Two bundled tables (docs/drive.md says where each value comes from):
+Three bundled tables (docs/drive.md says where each value comes from):
 
 - ``motors_air`` (the default): the AIR series as the Russian course-design books tabulate it:
   rated power P (the IEC 60034 power steps 0.37 … 30 kW), synchronous speed n_s = 6000/poles rpm
@@ -9,6 +9,10 @@ Two bundled tables (docs/drive.md says where each value comes from):
 - ``motors_soga_mt3``: SOGA's MT3 IE3 series (catalogue table, 400 V 50 Hz): power, rated speed,
   efficiency, T_start/T_nom and mass as printed; T_max/T_nom and the shaft diameter are not in
   that table, so they are blank.
+- ``motors_motive_delphi``: Motive's Delphi series (general catalogue 07 04 Rev.03, 400 V 50 Hz,
+  S1), 2, 4, 6 and 8 poles, 0.06 … 315 kW: every column — power, rated speed, efficiency,
+  T_start/T_nom, T_max/T_nom and mass from the technical-data tables, the shaft-end diameter from
+  the catalogue's B3 dimension table (by frame and poles).
 
 A blank is a value the source does not print, never an estimate.
 
@@ -29,7 +33,7 @@ from ..validate import one_number, require_range
 __all__ = ["MotorSelection", "select", "rated_torque_nm", "MOTOR_CATALOGS", "SERVICE_FACTOR_RANGE",
            "POWER_RANGE_KW", "SPEED_RANGE_RPM"]
 
-MOTOR_CATALOGS = ("motors_air", "motors_soga_mt3")   # the first is the default
+MOTOR_CATALOGS = ("motors_air", "motors_soga_mt3", "motors_motive_delphi")   # the first is the default
 SERVICE_FACTOR_RANGE = (1.0, 5.0)    # a design allowance on the power, not a second motor
 POWER_RANGE_KW = (1e-3, 1e5)
 SPEED_RANGE_RPM = (1.0, 10_000.0)    # 50 Hz mains: at most 3000 rpm synchronous; a wish above is a slip

@@ -39,7 +39,11 @@ def test_rated_torque_formula():
     ("motors_air", 21.0, 980, 1.0),
     # SOGA MT3 has two frames for 1.5, 5.5 and 11 kW: the lighter one wins
     ("motors_soga_mt3", 1.4, 2900, 1.0), ("motors_soga_mt3", 5.0, 2900, 1.0), ("motors_soga_mt3", 10.0, 2950, 1.0),
-    ("motors_soga_mt3", 0.7, 1400, 1.0), ("motors_soga_mt3", 0.7, 2000, 1.0)])
+    ("motors_soga_mt3", 0.7, 1400, 1.0), ("motors_soga_mt3", 0.7, 2000, 1.0),
+    # Motive Delphi: long-core frames give two motors of one power (4 kW 4-pole: 100LC-4 and 112M-4)
+    ("motors_motive_delphi", 4.0, 1450, 1.0), ("motors_motive_delphi", 22.0, 1450, 1.0),
+    ("motors_motive_delphi", 5.5, 2900, 1.0), ("motors_motive_delphi", 3.0, 960, 1.0),
+    ("motors_motive_delphi", 0.3, 700, 1.0), ("motors_motive_delphi", 25.0, 980, 1.2)])
 def test_select_matches_a_plain_loop(catalog, power, speed, sf):
     rows = load_catalog(catalog).to_dict("records")
     mass = lambda r: r["mass_kg"] if r["mass_kg"] == r["mass_kg"] else math.inf   # blank (NaN): last
@@ -149,3 +153,71 @@ def test_a_user_motor_file_may_leave_out_the_optional_columns(tmp_path):
     path.write_text("designation,power_kw,poles,sync_speed_rpm,rated_speed_rpm\nM1,4,4,1500,1440\nM2,5.5,4,1500,1450\n")
     sel = gd.motor.select(5.0, 1450, catalog=str(path))
     assert sel.found and sel.motor["designation"] == "M2" and math.isnan(sel.motor["max_torque_nm"])
+
+
+# Motive s.r.l. (Italy), "General catalogue Delphi series asynchronous three-phase electric motors",
+# 07 04 Rev.03: technical data p. 20 (2 poles), p. 21 (4), p. 22 (6), p. 23 (8) at 400 V 50 Hz; shaft
+# end D from the B3 dimension table, p. 16. Read as text at https://github.com/ArtemFilin1990/Mar/blob/
+# 7b871a585843d5d9236be7a5c36364a6ecb97a9d/12_Прочее_сопутствующее/Прочее/jelektrodvigateli-motive.md
+# As printed: type, page, kW, rpm, Cn N·m, Cs/Cn, Cmax/Cn, efficiency % at 100 % load, kg, Cs N·m,
+# Cmax N·m; then D mm of the type's frame and poles on p. 16.
+MOTIVE_DELPHI_PRINTED = [
+    ("80A-2", 20, 0.75, 2854, 2.51, 2.8, 3.0, 79.0, 10.0, 7.10, 7.50, 19),
+    ("132MB-2", 20, 11.0, 2919, 35.99, 2.3, 3.0, 88.6, 55.0, 82.90, 108.10, 38),
+    ("180M-2", 20, 22.0, 2959, 71.00, 2.5, 3.1, 91.4, 165.0, 174.50, 220.80, 48),
+    ("71B-4", 21, 0.37, 1366, 2.59, 2.3, 2.4, 71.5, 6.3, 6.00, 6.10, 14),
+    ("100LC-4", 21, 4.0, 1415, 27.00, 3.0, 3.0, 84.2, 27.0, 80.99, 80.99, 28),
+    ("112M-4", 21, 4.0, 1453, 26.29, 2.5, 3.2, 85.8, 28.0, 65.80, 85.20, 28),
+    ("200L-4", 21, 30.0, 1480, 193.58, 2.2, 2.3, 92.6, 245.0, 425.88, 445.24, 55),
+    ("132MB-6", 22, 5.5, 972, 54.04, 1.6, 2.6, 84.6, 55.0, 84.90, 143.00, 38),
+    ("200LB-6", 22, 22.0, 970, 216.60, 2.1, 2.1, 90.1, 244.0, 454.86, 454.86, 55),
+    ("160L-8", 23, 7.5, 720, 99.48, 2.0, 2.0, 87.2, 90.0, 198.96, 198.96, 42),
+]
+
+
+@pytest.mark.parametrize("name, page, kw, rpm, cn, start, top, eta, mass, cs_nm, cmax_nm, d", MOTIVE_DELPHI_PRINTED)
+def test_motive_delphi_rows_as_printed(name, page, kw, rpm, cn, start, top, eta, mass, cs_nm, cmax_nm, d):
+    row = load_catalog("motors_motive_delphi").set_index("designation").loc["Delphi " + name]
+    poles = int(name[-1])
+    assert (row["power_kw"], row["poles"], row["sync_speed_rpm"], row["rated_speed_rpm"]) == (kw, poles, 6000 / poles, rpm)
+    assert (row["start_torque_ratio"], row["max_torque_ratio"], row["efficiency_pct"], row["mass_kg"],
+            row["shaft_d_mm"]) == (start, top, eta, mass, d)
+    assert f"p. {page}," in row["source"] and "p. 16" in row["source"]
+    # the catalogue's rated torque is Cn = 9550·P/n printed to 0.01 N·m; ours (P/ω) agrees to 1e-4
+    assert abs(9550 * kw / rpm - cn) <= 0.005 + 1e-9
+    assert gd.motor.rated_torque_nm(kw, rpm) == pytest.approx(cn, rel=1e-4, abs=0.006)
+    # the ratios (printed to 0.1) are the catalogue's own torques over Cn: Cs = (Cs/Cn)·Cn, Cmax = (Cmax/Cn)·Cn
+    assert row["start_torque_ratio"] * cn == pytest.approx(cs_nm, abs=0.05 * cn + 0.01)
+    assert row["max_torque_ratio"] * cn == pytest.approx(cmax_nm, abs=0.05 * cn + 0.01)
+
+
+def test_motive_delphi_has_every_column_for_every_row():
+    t = load_catalog("motors_motive_delphi")
+    assert len(t) == 129 and t["poles"].value_counts().to_dict() == {4: 41, 2: 40, 6: 27, 8: 21}
+    cols = ["power_kw", "rated_speed_rpm", "efficiency_pct", "start_torque_ratio", "max_torque_ratio",
+            "shaft_d_mm", "mass_kg", "frame", "source"]
+    assert t[cols].notna().all().all()
+    pages = {2: "p. 20,", 4: "p. 21,", 6: "p. 22,", 8: "p. 23,"}
+    assert all(pages[p] in s for p, s in zip(t["poles"], t["source"]))
+    # a breakdown torque is the top of the torque-speed curve, so T_max >= T_start; four small motors are
+    # printed the other way round (by 0.1 ... 0.3) and carry a note saying so
+    odd = t[t["start_torque_ratio"] > t["max_torque_ratio"]]
+    assert sorted(odd["designation"]) == ["Delphi 63C-2", "Delphi 71B-2", "Delphi 90LB-4", "Delphi 90S-4"]
+    assert odd["note"].str.contains("exceeds").all()
+    # Motive's brake-motor catalogue ATDC (REV00, dimension table, same frames) prints the same shaft ends:
+    # ATDC 63 ... 160L: D = 11, 14, 19, 24, 24, 28, 28, 38, 38, 42, 42 mm
+    atdc = {"63": 11, "71": 14, "80": 19, "90S": 24, "90L": 24, "100L": 28, "112M": 28, "132S": 38, "132M": 38,
+            "160M": 42, "160L": 42}
+    for frame, d in atdc.items():
+        assert set(t.loc[t["frame"] == frame, "shaft_d_mm"]) == {d}, frame
+
+
+def test_motive_delphi_select_four_kw_at_1450():
+    # p. 21 prints two 4 kW 4-pole motors: 100LC-4 (1415 rpm, 27 kg) and 112M-4 (1453 rpm, 28 kg); the
+    # 2-pole 4 kW motors run at 2885 rpm. The speed series is 1500 rpm; of one power the lighter frame wins.
+    sel = gd.motor.select(4.0, 1450, catalog="motors_motive_delphi")
+    assert sel.found and sel.motor["designation"] == "Delphi 100LC-4" and sel.motor["shaft_d_mm"] == 28
+    for text in ("T_max/T_nom = 3", "T_start/T_nom = 3", "efficiency = 84.2 %", "mass = 27 kg"):
+        assert text in sel.message
+    assert sel.motor["max_torque_nm"] == pytest.approx(3.0 * 27.00, rel=2e-3)
+    assert list(sel.candidates["sync_speed_rpm"]) == [1500, 1000, 750, 3000]
