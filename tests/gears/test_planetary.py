@@ -25,6 +25,8 @@ def mp_ring_shift(m, z_s, z_p, z_r, x_s, x_p, alpha_deg=20):
     a = mp.radians(alpha_deg)
     inv = lambda t: mp.tan(t) - t   # noqa: E731
     inv_w = inv(a) + 2 * (mp.mpf(x_s) + mp.mpf(x_p)) * mp.tan(a) / (z_s + z_p)
+    if inv_w <= 0:   # no sun-planet mesh: inv α_w must be > 0 (findroot would return a negative angle)
+        return None, None
     aw_a = mp.findroot(lambda t: inv(t) - inv_w, mp.mpf("0.5"))
     a_w = mp.mpf(m) * (z_s + z_p) * mp.cos(a) / (2 * mp.cos(aw_a))
     cos_b = mp.mpf(m) * (z_r - z_p) * mp.cos(a) / (2 * a_w)
@@ -73,12 +75,14 @@ def test_standard_set_is_coaxial_exactly(z_s, z_p, m):
 @settings(max_examples=30, deadline=None)
 @given(z_s=st.integers(12, 60), z_p=st.integers(12, 60), d=st.integers(-2, 2),
        x_s=st.floats(-0.3, 0.8), x_p=st.floats(-0.3, 0.8))
+@example(z_s=12, z_p=12, d=0, x_s=-0.25, x_p=-0.25)   # x_Σ below the sun-planet mesh's existence: NaN
 def test_ring_shift_against_mpmath(z_s, z_p, d, x_s, x_p):
     z_r = z_s + 2 * z_p + d
     x_r, a_w = mp_ring_shift(2.0, z_s, z_p, z_r, x_s, x_p)
     geo = pl.set_geometry(pl.PlanetaryMeshes(z_s, z_p, z_r, 1), 2.0, float(x_s), float(x_p))
     if x_r is None:
         assert math.isnan(geo["x_ring"])
+        assert a_w is not None or math.isnan(geo["a_w"])
         return
     assert abs(geo["x_ring"] - float(x_r)) < 1e-11
     assert abs(geo["a_w"] - float(a_w)) < 1e-11 * float(a_w)
