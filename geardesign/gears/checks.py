@@ -736,14 +736,22 @@ def _check_table_class():
     return CheckTable
 
 
+UNDEFINED = " (undefined for this design: a quantity the check needs does not exist here, so it fails)"
+
+
 def evaluate(geo: dict, checks):
-    """Rows ``check, label, value, limit, margin, ok`` for one design (geo of 0-d arrays)."""
+    """Rows ``check, label, value, limit, margin, ok`` for one design (geo of 0-d arrays). A
+    margin that does not exist (NaN: e.g. no cutter–ring mesh at this ring shift) is −inf, a
+    failing check, and its label says so, as :func:`margins` treats it in the solvers."""
     rows = []
     for c in checks:
         value = float(np.asarray(c.value(geo)))
         limit = float(np.asarray(c.limit_value(geo)))
         margin = float(np.asarray(c.margin(geo)))
-        rows.append((c.name, c.label, value, limit, margin, bool(margin >= 0)))
+        label = c.label
+        if math.isnan(margin):
+            margin, label = -math.inf, label + UNDEFINED
+        rows.append((c.name, label, value, limit, margin, bool(margin >= 0)))
     return _check_table_class()(rows, columns=["check", "label", "value", "limit", "margin", "ok"])
 
 

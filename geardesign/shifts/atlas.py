@@ -8,7 +8,7 @@ import pandas as pd
 
 from ..errors import GearDesignError
 from ..validate import ndim, require_bool, require_int
-from ..gears.geometry import mesh_geometry, mesh_geometry_float
+from ..gears.geometry import exact_sum_nodes, mesh_geometry, mesh_geometry_float
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from .problem import DEFAULT_BOUNDS, Problem
 from .optimize import optimize_shifts
@@ -215,7 +215,7 @@ def _first_pass(proto: Problem, Z1, Z2, bounds):
     """Every pair's margins on the _ATLAS_N² grid, chunk by chunk: (area, area_error, best feasible
     node, least infeasible node), the nodes NaN where they do not apply."""
     lo, hi = bounds
-    g = np.linspace(lo, hi, _ATLAS_N)
+    g = exact_sum_nodes(lo, hi, _ATLAS_N)     # one operating angle per x-sum diagonal
     X1, X2 = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
     chunk = max(1, 200_000 // X1.size)
     area, area_error = np.zeros(Z1.size), np.zeros(Z1.size)

@@ -6,6 +6,7 @@ import functools
 
 import numpy as np
 
+from ..gears.geometry import exact_sum_nodes
 from .problem import Problem
 
 __all__ = ["grid_points", "best_feasible", "grid_starts", "START_N", "MAX_STARTS"]
@@ -26,7 +27,7 @@ def grid_points(prob: Problem, n: int, bounds) -> np.ndarray:
 
 @functools.lru_cache(maxsize=16)
 def _square_grid(n: int, lo: float, hi: float) -> np.ndarray:
-    g = np.linspace(lo, hi, n)
+    g = exact_sum_nodes(lo, hi, n)     # one operating angle per x-sum diagonal
     X1, X2 = np.meshgrid(g, g, indexing="ij")
     V = np.column_stack([X1.ravel(), X2.ravel()])
     V.flags.writeable = False

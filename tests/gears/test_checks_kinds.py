@@ -39,10 +39,28 @@ def test_check_gradients_match_central_differences(d):
         if check.name in numeric:
             assert check.gradient(geo) is None
             continue
+        if math.isnan(float(check.margin(geo))):   # undefined here: a failing row (next test), no slope
+            continue
         an = [float(v) for v in check.gradient(geo)]
         fd = _fd(d, check.margin)
         for j in (0, 1):
             assert abs(an[j] - fd[j]) <= 1e-6 * max(1.0, abs(fd[j])), (check.name, j + 1, an[j], fd[j], d["internal"])
+
+
+def test_an_undefined_check_fails_and_says_so():
+    """A ring shift so negative that the cutter–ring mesh has no operating angle: with the default
+    100 mm cutter at m = 1 (z0 = min(100, z2 − 18) = 43, x0 = 0) on a ring of 61 teeth, β = 8°,
+    inv α_w0 = inv α_t + 2 (x2 − x0) tan α_n / (z2 − z0) < 0 (GOST 19274-73, computed here). The
+    checks that need that mesh are undefined: the table reports them failing (margin −inf) with
+    the reason, not a 0 that reads like a check at its limit."""
+    x2, z0 = -0.738, 43
+    alpha_t = math.atan(math.tan(math.radians(20.0)) / math.cos(math.radians(8.0)))
+    assert math.tan(alpha_t) - alpha_t + 2 * (x2 - 0.0) * math.tan(math.radians(20.0)) / (61 - z0) < 0
+    table = gd.GearPair(1.0, 5, 61, -0.738, x2, beta_deg=8.0, internal=True).checks().set_index("check")
+    for name in ("interference2", "cutter_interference"):
+        row = table.loc[name]
+        assert row["margin"] == -math.inf and not row["ok"] and "undefined for this design" in row["label"]
+    assert table.loc["tip_thickness1", "margin"] > 0          # the rest are evaluated as usual
 
 
 @SETTINGS

@@ -89,3 +89,23 @@ def test_pair_geometry_fields_on_demand():
     assert REPORT_FIELDS <= set(full.names)
     with pytest.raises(GearDesignError, match="fields must be names of GEOMETRY_FIELDS.*'a_ww'"):
         gd.pair_geometry(3, 12, 24, 0.6, 0.36, fields=["a_ww"])
+
+
+def test_grid_geometry_is_each_designs_own():
+    """A design's fields do not depend on its neighbours: on a grid (where the operating angle is
+    computed once per x-sum, nodes that do not exist included) every field equals the design's
+    own one-element evaluation bit for bit."""
+    import numpy as np
+
+    from geardesign.gears.geometry import exact_sum_nodes, mesh_geometry
+    from geardesign.gears.mesh import Mesh
+
+    g = exact_sum_nodes(-1.5, 3.0, 31)
+    X1, X2 = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
+    for mesh in (Mesh(12, 12, None, True), Mesh(20, 60, None, True, 0.0, True)):
+        grid = mesh_geometry(mesh, 2.0, X1, X2, full=False)
+        assert np.isnan(grid["a_w"]).any() and np.isfinite(grid["a_w"]).any()   # both kinds of node
+        for i in range(0, X1.size, 37):
+            one = mesh_geometry(mesh, 2.0, X1[i:i + 1], X2[i:i + 1], full=False)
+            for k in ("a_w", "sa1", "eps_alpha", "rho_p1", "_t_w"):
+                np.testing.assert_array_equal(grid[k][i:i + 1], one[k])
