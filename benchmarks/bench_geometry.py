@@ -21,7 +21,7 @@ import numpy as np
 
 import geardesign as gd
 from geardesign import checks
-from geardesign.gears.geometry import mesh_geometry
+from geardesign.gears.geometry import exact_sum_nodes, mesh_geometry
 from geardesign.gears.mesh import Mesh
 
 
@@ -169,8 +169,9 @@ def kinds(n, repeat):
 
 
 def region_grid(repeat, z1=17, z2=26, n=41):
-    """One pair's region grid (n × n nodes of x1, x2 in [-1, 2]): geometry + margins, against plain."""
-    g = np.linspace(-1.0, 2.0, n)
+    """One pair's region grid (n × n nodes of x1, x2 in [-1, 2], on exact_sum_nodes as the start grid
+    and the atlas lay them): geometry + margins, against plain."""
+    g = exact_sum_nodes(-1.0, 2.0, n)
     X1, X2 = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
     rack, cs = gd.BasicRack(), gd.make_checks()
     reps = 50
