@@ -4,8 +4,12 @@ All functions take and return radians (or the dimensionless tangent), broadcast 
 arrays, and return a Python float when every argument is a scalar.
 
 Why not just ``tan(a) - a``: for small angles the two terms cancel (inv α ≈ α³/3), so the
-plain difference loses ~log10(3/α²) digits. Below |tan α| = 0.3 we sum the Taylor series of
-t − atan t in t = tan α instead, which has no cancellation at all.
+plain difference loses ~log10(3/α²) digits. t − atan t (t = tan α) is therefore taken in three
+ranges: its Taylor series below |t| = 0.12; between 0.12 and 0.9 from a tabled node c <= t and
+the short step t − c (the tangent subtraction formula, no cancellation); the plain difference
+above 0.9, where it keeps all but ~3ε/t² of its digits (each within 3 ulp of a 40-digit value).
+Arrays passed to the public :func:`inv` and :func:`inv_from_tan` take the half-angle form
+(:func:`_t_minus_atan`) throughout.
 """
 from __future__ import annotations
 
