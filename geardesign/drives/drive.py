@@ -436,17 +436,54 @@ class Drive:
         if objective not in OBJECTIVES:
             raise GearDesignError(f"objective must be one of {', '.join(OBJECTIVES)}, got {objective!r}")
         top = int(require_range("top", top, 1, TOP_MAX))
-        u_lo, u_hi = U * (1 - tol), U * (1 + tol)
-        stages = self.stages
-        N = len(stages)
+        search = _Search(self, U, tol, objective, top, t0)
+        why = search.enumerate()                  # 1-3: options per stage, ratio combinations, chain rows
+        if why:
+            return search.no_split(why)
+        search.non_gear_checks()                  # 4: every chain, key, bought unit and motor check at once
+        search.branch_and_bound(progress)         # 5: the gears, best bound first
+        return search.result()                    # 6: ranked table, the closest failing designs, the best
 
-        # 1. each stage's options (tooth pairs) inside the window its neighbours leave it
-        span = [self._ratio_span(s) for s in stages]
-        options = []
+    def _ratio_span(self, st):
+        if isinstance(st, GivenStage):
+            return (st.ratio, st.ratio)
+        if st.z1 is not None and st.z2 is not None:
+            return (st.z2 / st.z1, st.z2 / st.z1)
+        return st.ratio_range
+
+
+class _Search:
+    """One :meth:`Drive.optimize` call: the designs (one option per stage × chain rows) as index
+    arrays, their flow and non-gear margins, and what the branch and bound has evaluated (``ex``)."""
+
+    def __init__(self, drive: Drive, U: float, tol: float, objective: str, top: int, t0: float):
+        self.drive, self.stages, self.U, self.tol = drive, drive.stages, U, tol
+        self.objective, self.top, self.t0 = objective, top, t0
+        self.u_lo, self.u_hi = U * (1 - tol), U * (1 + tol)
+        self.gear_k = [k for k, st in enumerate(self.stages) if isinstance(st, GearStage)]
+        self.n_solves = 0
+
+    # -- 1-3: the designs
+    def enumerate(self) -> str:
+        """Options, combinations and chain rows; the reason when there is no design, else ''."""
+        why = self._stage_options() or self._combinations()
+        if why:
+            return why
+        self._chain_rows()
+        self.ratios = np.column_stack([self.options[k]["ratio"][self.idx[:, k]] for k in range(len(self.stages))])
+        self.n, self.T, self.P = self.drive._flow(self.ratios)
+        self.err = np.abs(np.prod(self.ratios, axis=1) - self.U) / self.U
+        return ""
+
+    def _stage_options(self) -> str:
+        """Each stage's options (tooth pairs) inside the window its neighbours leave it."""
+        stages, N = self.stages, len(self.stages)
+        span = [self.drive._ratio_span(s) for s in stages]
+        self.options = []
         for k, st in enumerate(stages):
             lo_rest = math.prod(span[j][0] for j in range(N) if j != k)
             hi_rest = math.prod(span[j][1] for j in range(N) if j != k)
-            w_lo, w_hi = u_lo / hi_rest, u_hi / lo_rest
+            w_lo, w_hi = self.u_lo / hi_rest, self.u_hi / lo_rest
             if isinstance(st, GivenStage):
                 z1 = z2 = np.zeros(1, dtype=np.int64)
                 ratio = np.array([st.ratio])
@@ -456,20 +493,23 @@ class Drive:
                 ratio = z2 / z1
             if ratio.size == 0:
                 reach = (math.prod(a for a, _ in span), math.prod(b for _, b in span))
-                return self._no_split(U, tol, objective, t0,
-                                      f"stage '{st.name}' has no option with a ratio in [{w_lo:.4g}, {w_hi:.4g}], "
-                                      f"the window the other stages leave it for u = {U:g} ± {100 * tol:g} % "
-                                      f"(the stages' ratio ranges reach u in [{reach[0]:.4g}, {reach[1]:.4g}])")
-            options.append(dict(z1=z1, z2=z2, ratio=ratio))
+                return (f"stage '{st.name}' has no option with a ratio in [{w_lo:.4g}, {w_hi:.4g}], the window "
+                        f"the other stages leave it for u = {self.U:g} ± {100 * self.tol:g} % (the stages' ratio "
+                        f"ranges reach u in [{reach[0]:.4g}, {reach[1]:.4g}])")
+            self.options.append(dict(z1=z1, z2=z2, ratio=ratio))
+        return ""
 
-        # 2. ratio combinations inside the window (one option per stage)
+    def _combinations(self) -> str:
+        """One option per stage, the product inside the ratio window (the remaining stages' range
+        bounds each partial product)."""
+        options, N = self.options, len(self.options)
         idx = np.zeros((1, 0), dtype=np.int64)
         prod = np.ones(1)
         for k, o in enumerate(options):
             rest_lo = math.prod(float(options[j]["ratio"].min()) for j in range(k + 1, N))
             rest_hi = math.prod(float(options[j]["ratio"].max()) for j in range(k + 1, N))
             new = prod[:, None] * o["ratio"][None, :]
-            keep = (new * rest_hi >= u_lo * (1 - 1e-12)) & (new * rest_lo <= u_hi * (1 + 1e-12))
+            keep = (new * rest_hi >= self.u_lo * (1 - 1e-12)) & (new * rest_lo <= self.u_hi * (1 + 1e-12))
             i, j = np.nonzero(keep)
             if i.size > COMBINATIONS_MAX:
                 raise GearDesignError(f"the ratio split has {i.size} combinations of tooth pairs, more than "
@@ -477,13 +517,14 @@ class Drive:
             idx = np.column_stack([idx[i], j])
             prod = new[i, j]
         if prod.size == 0:
-            return self._no_split(U, tol, objective, t0, f"no combination of the stages' tooth pairs gives "
-                                                         f"u = {U:g} ± {100 * tol:g} %")
-        n_comb = prod.size
+            return f"no combination of the stages' tooth pairs gives u = {self.U:g} ± {100 * self.tol:g} %"
+        self.idx, self.n_comb = idx, prod.size
+        return ""
 
-        # 3. times the chain catalog rows of every chain stage
-        chain_rows = {}
-        for k, st in enumerate(stages):
+    def _chain_rows(self) -> None:
+        """The combinations times the catalog rows of every chain stage."""
+        idx, rows = self.idx, {}
+        for k, st in enumerate(self.stages):
             if isinstance(st, ChainStage):
                 r = st.rows()
                 total = idx.shape[0] * r.size
@@ -491,123 +532,112 @@ class Drive:
                     raise GearDesignError(f"{total} designs (ratio combinations x chain rows) exceed {CANDIDATES_MAX}: "
                                           f"narrow the stages' ranges, strands or catalog")
                 idx = np.repeat(idx, r.size, axis=0)
-                for kk in chain_rows:
-                    chain_rows[kk] = np.repeat(chain_rows[kk], r.size)
-                chain_rows[k] = np.tile(r, idx.shape[0] // r.size)
-        n_cand = idx.shape[0]
-        ratios = np.column_stack([options[k]["ratio"][idx[:, k]] for k in range(N)])
-        n, T, P = self._flow(ratios)
+                for kk in rows:
+                    rows[kk] = np.repeat(rows[kk], r.size)
+                rows[k] = np.tile(r, idx.shape[0] // r.size)
+        self.idx, self.chain_rows, self.n_cand = idx, rows, idx.shape[0]
 
-        # 4. every non-gear check, vectorised
-        margins: dict = {}
-        ng_size = np.zeros(n_cand)
-        ng_mass = np.zeros(n_cand)
-        chain_info = {}
-        for name, v in self._motor_margins(P[:, 0]).items():
-            margins[("motor", name)] = v
-        for k, st in enumerate(stages):
+    # -- 4: every non-gear check
+    def non_gear_checks(self) -> None:
+        n_cand, T = self.n_cand, self.T
+        margins: dict = {("motor", name): v for name, v in self.drive._motor_margins(self.P[:, 0]).items()}
+        self.ng_size, self.ng_mass, self.chain_info = np.zeros(n_cand), np.zeros(n_cand), {}
+        for k, st in enumerate(self.stages):
             if isinstance(st, GivenStage):
-                for name, v in st.margins(T[:, k + 1]).items():
-                    margins[(st.name, name)] = v
+                margins.update({(st.name, name): v for name, v in st.margins(T[:, k + 1]).items()})
             elif isinstance(st, ChainStage):
-                z1 = options[k]["z1"][idx[:, k]]
-                z2 = options[k]["z2"][idx[:, k]]
-                ch = _chain_batch(st, chain_rows[k], z1, z2, n[:, k], T[:, k])
-                for name, v in ch["margins"].items():
-                    margins[(st.name, name)] = v
-                ng_size += ch["size"]
-                ng_mass += ch["mass"]
-                chain_info[k] = dict(ch, z1=z1, z2=z2)
-        key_n = {}
-        for sh in self.shafts:
+                z1 = self.options[k]["z1"][self.idx[:, k]]
+                z2 = self.options[k]["z2"][self.idx[:, k]]
+                ch = _chain_batch(st, self.chain_rows[k], z1, z2, self.n[:, k], T[:, k])
+                margins.update({(st.name, name): v for name, v in ch["margins"].items()})
+                self.ng_size += ch["size"]
+                self.ng_mass += ch["mass"]
+                self.chain_info[k] = dict(ch, z1=z1, z2=z2)
+        self.key_n = {}
+        for sh in self.drive.shafts:
             _, caps = _key_caps(sh)
             Ts = T[:, sh.at]
             one = (Ts <= min(caps[1])) | (sh.max_keys < 2)
-            nk = np.where(one, 1, 2)
             crush = np.where(one, caps[1][0], caps[2][0])
             shear = np.where(one, caps[1][1], caps[2][1])
             margins[(f"key '{sh.name}'", "crushing")] = 1.0 - Ts / crush
             margins[(f"key '{sh.name}'", "shear")] = 1.0 - Ts / shear
-            key_n[sh.name] = nk
-        names = list(margins)
-        M = np.column_stack([np.asarray(margins[k], dtype=float) for k in names]) if names else np.zeros((n_cand, 0))
-        M = np.where(np.abs(M) <= MARGIN_TOL, 0.0, M)
-        Mf = np.where(np.isnan(M), -np.inf, M)
-        ng_min = Mf.min(axis=1) if names else np.full(n_cand, np.inf)
-        ng_arg = Mf.argmin(axis=1) if names else np.zeros(n_cand, dtype=np.int64)
-        ng_ok = ng_min >= 0
+            self.key_n[sh.name] = np.where(one, 1, 2)
+        self.names = list(margins)
+        M = (np.column_stack([np.asarray(margins[k], dtype=float) for k in self.names]) if self.names
+             else np.zeros((n_cand, 0)))
+        self.M = np.where(np.abs(M) <= MARGIN_TOL, 0.0, M)
+        Mf = np.where(np.isnan(self.M), -np.inf, self.M)
+        self.ng_min = Mf.min(axis=1) if self.names else np.full(n_cand, np.inf)
+        self.ng_arg = Mf.argmin(axis=1) if self.names else np.zeros(n_cand, dtype=np.int64)
+        self.ng_ok = self.ng_min >= 0
 
-        # 5. the gears: fixed ones at once, free ones best bound first (branch and bound)
-        gear_k = [k for k, st in enumerate(stages) if isinstance(st, GearStage)]
-        solved: dict = {}
-        n_solves = 0
+    # -- 5: the gears, branch and bound
+    def _solution(self, k: int, j: int) -> dict:
+        key = (k, int(j))
+        if key not in self._solved:
+            before = _shift_solution.cache_info().misses
+            o = self.options[k]
+            self._solved[key] = _gear_solution(self.stages[k], o["z1"][j], o["z2"][j], self.objective)
+            self.n_solves += _shift_solution.cache_info().misses - before
+        return self._solved[key]
 
-        def solution(k, j):
-            nonlocal n_solves
-            key = (k, int(j))
-            if key not in solved:
-                st = stages[k]
-                before = _shift_solution.cache_info().misses
-                solved[key] = _gear_solution(st, options[k]["z1"][j], options[k]["z2"][j], objective)
-                n_solves += _shift_solution.cache_info().misses - before
-            return solved[key]
+    def _lower_bounds(self) -> np.ndarray:
+        """Each design's cost whatever its gears' shifts (base circles at a·cos α_t; margins unknown)."""
+        if self.objective == "max_margin":
+            return -self.ng_min
+        bound = (self.ng_size if self.objective == "min_size" else self.ng_mass).copy()
+        for k in self.gear_k:
+            o = self.options[k]
+            s, m_ = _gear_bounds(self.stages[k], o["z1"].astype(float), o["z2"].astype(float))
+            bound += (s if self.objective == "min_size" else m_)[self.idx[:, k]]
+        return bound
 
-        lb_size = ng_size.copy()
-        lb_mass = ng_mass.copy()
-        for k in gear_k:
-            s, m_ = _gear_bounds(stages[k], options[k]["z1"].astype(float), options[k]["z2"].astype(float))
-            lb_size += s[idx[:, k]]
-            lb_mass += m_[idx[:, k]]
-        lb_cost = {"min_size": lb_size, "min_mass": lb_mass, "max_margin": -ng_min}[objective]
-        err = np.abs(np.prod(ratios, axis=1) - U) / U
-
+    def branch_and_bound(self, progress) -> None:
+        """Designs grouped by their gear tooth pairs, solved best bound first while a bound can still
+        enter the ``top`` list; what each evaluated design costs is kept in ``self.ex``."""
+        n_cand, top = self.n_cand, self.top
+        self._solved = {}
+        lb_cost = self._lower_bounds()
         group_key = np.zeros(n_cand, dtype=np.int64)
-        for k in gear_k:
-            group_key = group_key * options[k]["ratio"].size + idx[:, k]
+        for k in self.gear_k:
+            group_key = group_key * self.options[k]["ratio"].size + self.idx[:, k]
         # limiting checks and gear reasons as codes into lists (object arrays of ~10⁶ strings are slow)
-        labels = [f"{a}: {b}" for a, b in names] or [""]
-        ex = dict(cost=np.full(n_cand, np.nan), mm=np.full(n_cand, np.nan), size=np.full(n_cand, np.nan),
-                  mass=np.full(n_cand, np.nan), feas=np.zeros(n_cand, dtype=bool), done=np.zeros(n_cand, dtype=bool),
-                  lim=ng_arg.astype(np.int64), why=np.full(n_cand, -1, dtype=np.int64), labels=labels, reasons=[])
+        labels = [f"{a}: {b}" for a, b in self.names] or [""]
+        self.ex = ex = dict(cost=np.full(n_cand, np.nan), mm=np.full(n_cand, np.nan), size=np.full(n_cand, np.nan),
+                            mass=np.full(n_cand, np.nan), feas=np.zeros(n_cand, dtype=bool),
+                            done=np.zeros(n_cand, dtype=bool), lim=self.ng_arg.astype(np.int64),
+                            why=np.full(n_cand, -1, dtype=np.int64), labels=labels, reasons=[])
         heap: list = []          # the `top` best costs so far, as a max-heap of −cost
-        cand = np.flatnonzero(ng_ok)
+        cand = np.flatnonzero(self.ng_ok)
         order = cand[np.argsort(group_key[cand], kind="stable")]
-        if order.size:
-            gk = group_key[order]
-            starts = np.flatnonzero(np.r_[True, gk[1:] != gk[:-1]])
-            glb = np.minimum.reduceat(lb_cost[order], starts)
-            ends = np.r_[starts[1:], order.size]
-            for g in np.argsort(glb, kind="stable"):
-                if len(heap) >= top and glb[g] > -heap[0] + 1e-12 * abs(heap[0]):
-                    break      # no design of this or any later group can enter the list
-                members = order[starts[g]:ends[g]]
-                sols = [solution(k, idx[members[0], k]) for k in gear_k]
-                if progress is not None:
-                    progress(int(np.count_nonzero(glb <= glb[g])), starts.size)
-                self._exact(members, sols, gear_k, objective, ng_size, ng_mass, ng_min, ex)
-                costs = np.sort(ex["cost"][members][ex["feas"][members]])[:top]
-                for v in costs:
-                    if len(heap) < top:
-                        heapq.heappush(heap, -float(v))
-                    elif -v > heap[0]:
-                        heapq.heapreplace(heap, -float(v))
-        return self._wrap(U, tol, objective, top, t0, ex, idx, options, chain_info, key_n, ratios, err,
-                          ng_ok, ng_min, names, M, n_comb, n_cand, n_solves, ng_size, ng_mass)
+        if not order.size:
+            return
+        gk = group_key[order]
+        starts = np.flatnonzero(np.r_[True, gk[1:] != gk[:-1]])
+        glb = np.minimum.reduceat(lb_cost[order], starts)
+        ends = np.r_[starts[1:], order.size]
+        for g in np.argsort(glb, kind="stable"):
+            if len(heap) >= top and glb[g] > -heap[0] + 1e-12 * abs(heap[0]):
+                break      # no design of this or any later group can enter the list
+            members = order[starts[g]:ends[g]]
+            sols = [self._solution(k, self.idx[members[0], k]) for k in self.gear_k]
+            if progress is not None:
+                progress(int(np.count_nonzero(glb <= glb[g])), starts.size)
+            self._exact(members, sols)
+            for v in np.sort(ex["cost"][members][ex["feas"][members]])[:top]:
+                if len(heap) < top:
+                    heapq.heappush(heap, -float(v))
+                elif -v > heap[0]:
+                    heapq.heapreplace(heap, -float(v))
 
-    # -- optimize helpers
-    def _ratio_span(self, st):
-        if isinstance(st, GivenStage):
-            return (st.ratio, st.ratio)
-        if st.z1 is not None and st.z2 is not None:
-            return (st.z2 / st.z1, st.z2 / st.z1)
-        return st.ratio_range
-
-    def _exact(self, members, sols, gear_k, objective, ng_size, ng_mass, ng_min, ex) -> None:
+    def _exact(self, members, sols) -> None:
         """Cost, smallest margin, size, mass and feasibility of the designs ``members``, which share
         their gear tooth pairs (solutions ``sols``), written into ``ex``."""
+        ex = self.ex
         gsize = gmass = 0.0
         gmm, glim, gfeas, why = math.inf, "", True, ""
-        for k, sol in zip(gear_k, sols):
+        for k, sol in zip(self.gear_k, sols):
             st = self.stages[k]
             m, name = _min_margin(sol["margins"]) if sol["margins"] else (-math.inf, "shifts")
             if m < gmm:
@@ -617,9 +647,9 @@ class Drive:
                 continue
             gsize += float(stage_area_mm2(sol["a_w"], sol["da1"], sol["da2"]))
             gmass += float(disc_mass_kg(sol["da1"], st.width_mm) + disc_mass_kg(sol["da2"], st.width_mm))
-        ng = ng_min[members]
+        ng = self.ng_min[members]
         mm = np.minimum(ng, gmm)
-        size, mass = ng_size[members] + gsize, ng_mass[members] + gmass
+        size, mass = self.ng_size[members] + gsize, self.ng_mass[members] + gmass
         ex["size"][members], ex["mass"][members], ex["mm"][members] = size, mass, mm
         if glim:
             ex["labels"].append(glim)
@@ -629,23 +659,24 @@ class Drive:
             ex["reasons"].append(why)
             ex["why"][members] = len(ex["reasons"]) - 1
         ex["done"][members] = True
-        ex["cost"][members] = {"min_size": size, "min_mass": mass, "max_margin": -mm}[objective]
+        ex["cost"][members] = {"min_size": size, "min_mass": mass, "max_margin": -mm}[self.objective]
 
-    def _no_split(self, U, tol, objective, t0, why) -> DriveOptimum:
-        return DriveOptimum(success=False, message=f"no design: {why}", objective=objective, total_ratio=U,
-                            ratio_tol=tol, table=pd.DataFrame(), best=None, conflict=(f"ratio: {why}",),
-                            n_combinations=0, n_candidates=0, n_shift_solves=0, time_s=time.perf_counter() - t0)
+    # -- 6: the result
+    def no_split(self, why: str) -> DriveOptimum:
+        return DriveOptimum(success=False, message=f"no design: {why}", objective=self.objective, total_ratio=self.U,
+                            ratio_tol=self.tol, table=pd.DataFrame(), best=None, conflict=(f"ratio: {why}",),
+                            n_combinations=0, n_candidates=0, n_shift_solves=0, time_s=time.perf_counter() - self.t0)
 
-    def _row(self, c, idx, options, chain_info, key_n, ratios, err) -> dict:
-        row = {"total_ratio": float(np.prod(ratios[c])), "ratio_error": float(err[c])}
+    def _row(self, c) -> dict:
+        row = {"total_ratio": float(np.prod(self.ratios[c])), "ratio_error": float(self.err[c])}
         for k, st in enumerate(self.stages):
             p = st.name
-            row[f"{p}.ratio"] = float(ratios[c, k])
+            row[f"{p}.ratio"] = float(self.ratios[c, k])
             if isinstance(st, GearStage):
-                row[f"{p}.z1"] = int(options[k]["z1"][idx[c, k]])
-                row[f"{p}.z2"] = int(options[k]["z2"][idx[c, k]])
+                row[f"{p}.z1"] = int(self.options[k]["z1"][self.idx[c, k]])
+                row[f"{p}.z2"] = int(self.options[k]["z2"][self.idx[c, k]])
             elif isinstance(st, ChainStage):
-                ci = chain_info[k]
+                ci = self.chain_info[k]
                 row[f"{p}.designation"] = str(ci["designation"][c])
                 row[f"{p}.strands"] = int(ci["strands"][c])
                 row[f"{p}.pitch_mm"] = float(ci["pitch"][c])
@@ -653,22 +684,30 @@ class Drive:
                 row[f"{p}.z2"] = int(ci["z2"][c])
                 row[f"{p}.links"] = int(ci["links"][c])
                 row[f"{p}.center_distance_mm"] = float(ci["a"][c])
-        for name, nk in key_n.items():
+        for name, nk in self.key_n.items():
             row[f"key '{name}'.n_keys"] = int(nk[c])
         return row
 
-    def _wrap(self, U, tol, objective, top, t0, ex, idx, options, chain_info, key_n, ratios, err, ng_ok, ng_min,
-              names, M, n_comb, n_cand, n_solves, ng_size, ng_mass) -> DriveOptimum:
-        gear_k = [k for k, st in enumerate(self.stages) if isinstance(st, GearStage)]
-        feas = np.flatnonzero(ex["feas"])
-        feas = feas[np.lexsort((ex["size"][feas], np.round(err[feas], 12), np.round(ex["cost"][feas], 9)))]
-        what = {"min_size": "size", "min_mass": "mass", "max_margin": "smallest margin"}[objective]
+    def _gear_cols(self, c, solve=True) -> dict:
+        out = {}
+        for k in self.gear_k:
+            st = self.stages[k]
+            j = self.idx[c, k]
+            z1, z2 = self.options[k]["z1"][j], self.options[k]["z2"][j]
+            sol = _gear_solution(st, z1, z2, self.objective) if solve else None
+            out[f"{st.name}.x1"] = sol["x1"] if sol and sol["feasible"] else np.nan
+            out[f"{st.name}.x2"] = sol["x2"] if sol and sol["feasible"] else np.nan
+            out[f"{st.name}.a_w_mm"] = sol["a_w"] if sol and sol["feasible"] else np.nan
+        return out
+
+    def _ranked_rows(self, feas) -> list:
+        ex = self.ex
+        what = {"min_size": "size", "min_mass": "mass", "max_margin": "smallest margin"}[self.objective]
         rows = []
-        for rank, c in enumerate(feas[:top]):
+        for rank, c in enumerate(feas[:self.top]):
             row = {"rank": rank + 1, "feasible": True, "size_mm2": ex["size"][c], "mass_kg": ex["mass"][c],
-                   "min_margin": ex["mm"][c], "limiting": ex["labels"][ex["lim"][c]],
-                   **self._row(c, idx, options, chain_info, key_n, ratios, err),
-                   **self._gear_cols(c, idx, options, gear_k, objective)}
+                   "min_margin": ex["mm"][c], "limiting": ex["labels"][ex["lim"][c]], **self._row(c),
+                   **self._gear_cols(c)}
             if rank == 0:
                 row["reason"] = "best"
             else:
@@ -677,75 +716,73 @@ class Drive:
                                  if d > 1e-9 * max(abs(c0), 1e-300) else
                                  "ties rank 1 on the objective; loses on ratio error or size")
             rows.append(row)
-        # the closest failing designs (largest smallest margin), each with the stage checks that fail
-        bad = np.flatnonzero((ex["done"] & ~ex["feas"]) | ~ng_ok)
-        mm = np.where(ex["done"], ex["mm"], ng_min)[bad]
+        return rows
+
+    def _failing_rows(self) -> tuple[list, tuple]:
+        """The closest failing designs (largest smallest margin), each with the stage checks that fail;
+        and the first one's failing checks."""
+        ex, names, M = self.ex, self.names, self.M
+        bad = np.flatnonzero((ex["done"] & ~ex["feas"]) | ~self.ng_ok)
+        mm = np.where(ex["done"], ex["mm"], self.ng_min)[bad]
         bad = bad[np.argsort(-np.where(np.isnan(mm), -np.inf, mm), kind="stable")][:_INFEASIBLE_SHOWN]
-        conflict: tuple = ()
+        rows, first = [], ()
         for c in bad:
             fails = [f"{names[j][0]}: {names[j][1]} ({M[c, j]:+.3g})" for j in range(len(names)) if not M[c, j] >= 0]
             if ex["why"][c] >= 0:
                 fails.append(ex["reasons"][ex["why"][c]])
             elif ex["done"][c] and ex["mm"][c] < 0 and not fails:
                 fails.append(f"{ex['labels'][ex['lim'][c]]} ({ex['mm'][c]:+.3g})")
-            known = bool(ex["done"][c]) or not gear_k
-            row = {"rank": None, "feasible": False,
-                   "size_mm2": ex["size"][c] if ex["done"][c] else (ng_size[c] if known else np.nan),
-                   "mass_kg": ex["mass"][c] if ex["done"][c] else (ng_mass[c] if known else np.nan),
-                   "min_margin": ex["mm"][c] if ex["done"][c] else ng_min[c], "limiting": ex["labels"][ex["lim"][c]],
-                   **self._row(c, idx, options, chain_info, key_n, ratios, err),
-                   **self._gear_cols(c, idx, options, gear_k, objective, solve=bool(ex["done"][c])),
-                   "reason": "fails " + "; ".join(fails)}
-            rows.append(row)
-            if not conflict:
-                conflict = tuple(fails)
-        table = pd.DataFrame(rows)
+            known = bool(ex["done"][c]) or not self.gear_k
+            rows.append({"rank": None, "feasible": False,
+                         "size_mm2": ex["size"][c] if ex["done"][c] else (self.ng_size[c] if known else np.nan),
+                         "mass_kg": ex["mass"][c] if ex["done"][c] else (self.ng_mass[c] if known else np.nan),
+                         "min_margin": ex["mm"][c] if ex["done"][c] else self.ng_min[c],
+                         "limiting": ex["labels"][ex["lim"][c]], **self._row(c),
+                         **self._gear_cols(c, solve=bool(ex["done"][c])), "reason": "fails " + "; ".join(fails)})
+            first = first or tuple(fails)
+        return rows, first
+
+    def result(self) -> DriveOptimum:
+        ex, err = self.ex, self.err
+        feas = np.flatnonzero(ex["feas"])
+        feas = feas[np.lexsort((ex["size"][feas], np.round(err[feas], 12), np.round(ex["cost"][feas], 9)))]
+        failing, conflict = self._failing_rows()
+        table = pd.DataFrame(self._ranked_rows(feas) + failing)
         if len(table):
             table["rank"] = table["rank"].astype("Int64")     # failing designs have no rank
         if feas.size:
             c = feas[0]
-            best = self._fixed(c, idx, options, chain_info, objective).analyse(objective)
-            msg = (f"u = {float(np.prod(ratios[c])):.6g} ({100 * float(err[c]):.3g} % off): size "
+            best = self._fixed(c).analyse(self.objective)
+            msg = (f"u = {float(np.prod(self.ratios[c])):.6g} ({100 * float(err[c]):.3g} % off): size "
                    f"{ex['size'][c]:.6g} mm², mass {ex['mass'][c]:.4g} kg, smallest margin {ex['mm'][c]:+.4f} "
-                   f"({ex['labels'][ex['lim'][c]]}); {int(ex['done'].sum())} of {n_cand} designs evaluated in full")
+                   f"({ex['labels'][ex['lim'][c]]}); {int(ex['done'].sum())} of {self.n_cand} designs evaluated in full")
             conflict = ()
         else:
             best = None
             msg = ("no design passes every check; the closest fails " + "; ".join(conflict)) if conflict else \
                 "no design passes every check"
-        return DriveOptimum(success=bool(feas.size), message=msg, objective=objective, total_ratio=U, ratio_tol=tol,
-                            table=table, best=best, conflict=conflict, n_combinations=int(n_comb),
-                            n_candidates=int(n_cand), n_shift_solves=int(n_solves), time_s=time.perf_counter() - t0)
+        return DriveOptimum(success=bool(feas.size), message=msg, objective=self.objective, total_ratio=self.U,
+                            ratio_tol=self.tol, table=table, best=best, conflict=conflict,
+                            n_combinations=int(self.n_comb), n_candidates=int(self.n_cand),
+                            n_shift_solves=int(self.n_solves), time_s=time.perf_counter() - self.t0)
 
-    def _gear_cols(self, c, idx, options, gear_k, objective, solve=True) -> dict:
-        out = {}
-        for k in gear_k:
-            st = self.stages[k]
-            j = idx[c, k]
-            z1, z2 = options[k]["z1"][j], options[k]["z2"][j]
-            sol = _gear_solution(st, z1, z2, objective) if solve else None
-            out[f"{st.name}.x1"] = sol["x1"] if sol and sol["feasible"] else np.nan
-            out[f"{st.name}.x2"] = sol["x2"] if sol and sol["feasible"] else np.nan
-            out[f"{st.name}.a_w_mm"] = sol["a_w"] if sol and sol["feasible"] else np.nan
-        return out
-
-    def _fixed(self, c, idx, options, chain_info, objective) -> "Drive":
-        """This drive with every free variable fixed at design c (shifts, teeth, chain row)."""
+    def _fixed(self, c) -> Drive:
+        """The drive with every free variable fixed at design c (shifts, teeth, chain row)."""
         new = []
         for k, st in enumerate(self.stages):
             if isinstance(st, GearStage):
-                j = idx[c, k]
-                z1, z2 = int(options[k]["z1"][j]), int(options[k]["z2"][j])
-                sol = _gear_solution(st, z1, z2, objective)
+                j = self.idx[c, k]
+                z1, z2 = int(self.options[k]["z1"][j]), int(self.options[k]["z2"][j])
+                sol = _gear_solution(st, z1, z2, self.objective)
                 new.append(replace(st, z1=z1, z2=z2, x1=sol["x1"], x2=sol["x2"]))
             elif isinstance(st, ChainStage):
-                ci = chain_info[k]
+                ci = self.chain_info[k]
                 new.append(replace(st, z1=int(ci["z1"][c]), z2=int(ci["z2"][c]), designation=str(ci["designation"][c]),
                                    strands=(int(ci["strands"][c]),)))
             else:
                 new.append(st)
-        fixed = replace(self, stages=tuple(new))
-        object.__setattr__(fixed, "_load_from_motor", self._load_from_motor)
+        fixed = replace(self.drive, stages=tuple(new))
+        object.__setattr__(fixed, "_load_from_motor", self.drive._load_from_motor)
         return fixed
 
 
