@@ -10,6 +10,7 @@ z1(inv α_a1 + δ1) − z2(inv α_a2 + δ2) + (z2 − z1) inv α_w >= 0.
 from __future__ import annotations
 
 import functools
+import contextlib
 import math
 from dataclasses import dataclass
 from typing import NamedTuple
@@ -59,9 +60,10 @@ class ShaperCutter:
         >>> [int(c.teeth(4.0, z2)) for c, z2 in ((ShaperCutter(), 90), (ShaperCutter(), 30), (ShaperCutter(z0=30), 90))]
         [25, 12, 30]
         """
+        one = type(z2) in (float, int) and type(m_mm) in (float, int)   # no np.ndim on the optimisers' path
         if self.z0 is not None:
-            return self.z0 + 0 * np.asarray(z2)
-        if np.ndim(m_mm) == 0 and np.ndim(z2) == 0:   # one design: Python's round is numpy's (half to even)
+            return self.z0 if one else self.z0 + 0 * np.asarray(z2)
+        if one or (np.ndim(m_mm) == 0 and np.ndim(z2) == 0):   # one design: Python's round is numpy's (half to even)
             return max(Z0_RANGE[0], min(round(CUTTER_DIAMETER_MM / float(m_mm)), int(z2) - RING_MINUS_CUTTER_MIN))
         return np.maximum(Z0_RANGE[0], np.minimum(np.round(CUTTER_DIAMETER_MM / np.asarray(m_mm, dtype=float)),
                                                   np.asarray(z2) - RING_MINUS_CUTTER_MIN)).astype(int)
@@ -210,7 +212,8 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
     """
     z0 = cutter.teeth(m_n, z2)
     # one design (the optimisers' path) in Python floats: numpy's per-call cost would dominate
-    scalar = all(type(v) in (float, int) or np.ndim(v) == 0 for v in (m_n, z2, x2, r_a2))
+    scalar = all(type(v) is float for v in (m_n, z2, x2, r_a2)) or \
+        all(type(v) in (float, int) or np.ndim(v) == 0 for v in (m_n, z2, x2, r_a2))
     if scalar:
         z0, m_n, z2, x2, r_a2 = (float(v) for v in (z0, m_n, z2, x2, r_a2))
         z0 = z0 if z2 > z0 else math.nan
@@ -227,7 +230,8 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
     a_w0 = m_t * (z2 - z0) * cos_t / (2.0 * cos_w0)
     r_a0 = m_t * z0 / 2.0 + (cutter.ha0 + cutter.x0) * m_n
     r_b0, r_b2 = m_t * z0 / 2.0 * cos_t, m_t * z2 / 2.0 * cos_t
-    with np.errstate(invalid="ignore"):   # a ring tip inside its base circle: NaN, a failing margin
+    # a ring tip inside its base circle: NaN, a failing margin (floats: _sqrt gives the NaN itself)
+    with (contextlib.nullcontext() if scalar else np.errstate(invalid="ignore")):
         # inv α_a from tan α_a = ρ_a/r_b, ρ_a = √(r_a² − r_b²): no arccos near 1
         rho_a0 = _sqrt((r_a0 - r_b0) * (r_a0 + r_b0))
         rho_a2 = _sqrt((r_a2 - r_b2) * (r_a2 + r_b2))
