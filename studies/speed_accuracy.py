@@ -27,7 +27,7 @@ HERE = Path(__file__).resolve().parent
 OUT = HERE / "out"
 sys.path.insert(0, str(HERE.parent / "tests"))
 from reference_mp import pair_reference  # noqa: E402
-from test_shift import reference_optimum  # noqa: E402
+from tests.shifts.test_optimize import reference_optimum  # noqa: E402
 
 PAIRS = [(11, 30), (10, 40), (12, 30), (14, 60), (17, 26), (20, 50), (25, 25), (30, 90), (36, 100), (40, 120)]
 CASES = [("grid", 0.05), ("grid", 0.01), ("grid", 0.002), ("convex", 1e-4), ("convex", 1e-7),
