@@ -1,6 +1,7 @@
 """The package face: names load on first use, so an import costs only what is used."""
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -24,3 +25,13 @@ def test_key_only_scene_loads_no_solver_and_no_plotting(tmp_path):
     loaded = {m.split(".")[0] for m in eval(out.strip().splitlines()[-1])}
     assert not loaded & {"scipy", "matplotlib", "cvxpy"}
     assert (tmp_path / "out" / "report.md").is_file()
+
+
+@pytest.mark.parametrize("script", sorted(p.name for p in (Path(__file__).resolve().parents[1] / "studies").glob("*.py")))
+def test_study_scripts_import(script):
+    """Each runnable study loads (its imports, helpers from tests/ included) without running its main:
+    a moved module must not leave README's study commands broken."""
+    path = Path(__file__).resolve().parents[1] / "studies" / script
+    out = subprocess.run([sys.executable, "-c", f"import runpy; runpy.run_path({str(path)!r}, run_name='check')"],
+                         capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr[-2000:]
