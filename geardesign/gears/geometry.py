@@ -531,6 +531,11 @@ def _first(mask: np.ndarray) -> tuple[str, tuple]:
     return where, idx if mask.ndim else ()
 
 
+# the fields :func:`validate_geometry` reads
+_VALIDATION_FIELDS = frozenset({"_z1", "_z2", "_x1", "_x2", "inv_alpha_w", "_gap1", "_gap2", "_k", "da1", "da2",
+                                "db1", "db2", "df1", "df2", "g_alpha", "eps_alpha"})
+
+
 def validate_geometry(geo: dict, mesh: Mesh, contact: bool = False) -> None:
     """Raise a GearDesignError for designs whose geometry does not exist and, with ``contact``,
     for gears that do not mesh (path of contact <= 0: the tips do not reach across the line of
@@ -720,7 +725,8 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
 
     ``fields`` (names of :data:`GEOMETRY_FIELDS`) keeps only those in the result (the others are
     None) and computes only what they need: the report-only fields (:data:`REPORT_FIELDS`) are
-    skipped unless one of them is asked for.
+    skipped unless one of them is asked for, and only the fields asked for and those the
+    validation reads are stored at full size (10⁶ designs: ~7× faster than every field).
 
     Returns a :class:`Geometry` of arrays (of floats when all inputs are scalars). Raises
     :class:`~geardesign.errors.GearDesignError` naming the first design whose geometry
@@ -747,9 +753,12 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
         raise GearDesignError(f"pair_geometry takes at most {DESIGNS_MAX:,} designs in one call, got {n:,}")
     names = None if fields is None else _field_names(fields)
     full = names is None or not REPORT_FIELDS.isdisjoint(names)
+    # with ``fields``, only those and what the validation reads are stored at full size
+    keep = None if names is None else _VALIDATION_FIELDS.union(names, ("a",))
     with np.errstate(all="ignore"):   # designs that do not exist are refused by name just below
         mesh = Mesh(z1, z2, rack, require_bool("tip_shortening", tip_shortening), beta_deg, internal, face_width)
-        geo = mesh_geometry(mesh, m, x1, x2, full)
+        geo = mesh_geometry(mesh, m, x1, x2, full, then=None if keep is None else (
+            lambda g: {k: v for k, v in g.items() if k in keep}))
     validate_geometry(geo, mesh)
     return Geometry._from_core(geo, scalar, names)
 

@@ -109,3 +109,25 @@ def test_grid_geometry_is_each_designs_own():
             one = mesh_geometry(mesh, 2.0, X1[i:i + 1], X2[i:i + 1], full=False)
             for k in ("a_w", "sa1", "eps_alpha", "rho_p1", "_t_w"):
                 np.testing.assert_array_equal(grid[k][i:i + 1], one[k])
+
+
+def test_fields_asked_for_equal_the_full_result_and_are_validated_alike():
+    """pair_geometry(fields=...) stores only those fields (and what the validation reads) block by
+    block: the values are the full call's, bit for bit, over more than one block, and a design that
+    does not exist is refused by name as without ``fields``."""
+    import numpy as np
+
+    from geardesign.gears.geometry import BLOCK
+
+    rng = np.random.default_rng(3)
+    n = BLOCK + 1000
+    z1, z2 = rng.integers(12, 60, n), rng.integers(20, 150, n)
+    x1, x2 = rng.uniform(-0.3, 0.9, n), rng.uniform(-0.3, 0.9, n)
+    some = gd.pair_geometry(2.0, z1, z2, x1, x2, fields=["a_w", "sa1", "eps_alpha", "d_l1"])
+    every = gd.pair_geometry(2.0, z1, z2, x1, x2)
+    assert some.names == ["a_w", "sa1", "eps_alpha", "d_l1"] and some.da1 is None
+    for k in some.names:
+        np.testing.assert_array_equal(getattr(some, k), getattr(every, k))
+    x1[-1] = -3.0
+    with pytest.raises(gd.GearDesignError, match="index 17383"):
+        gd.pair_geometry(2.0, z1, z2, x1, x2, fields=["a_w"])
