@@ -190,9 +190,74 @@ def _study_schema() -> dict:
             "tornado": _Key("bool", default=True), "step": _F(default=0.02, lo=0.0, hi=0.5, lo_open=True)}
 
 
-def _drive_schema() -> dict:
-    from .drive import drive_schema   # its own module: the [drive] section's tables nest stages and shafts
+STAGE_KINDS = ("given", "gear", "chain")
 
+
+def drive_schema(part: str = "") -> dict:
+    """The keys of ``[drive]`` (part ""), ``[drive.motor]``, each stage kind and ``[[drive.shaft]]``
+    (the [drive] section's tables nest stages and shafts; scene/drive.py loads and runs it)."""
+    from ..drives import chain as c
+    from ..drives import drive as d
+    from ..drives import motor as mo
+    from ..drives import stages as s
+
+    eff = dict(lo=s.EFFICIENCY_RANGE[0], hi=s.EFFICIENCY_RANGE[1], lo_open=True)
+    if part == "":
+        return {"power_kw": _F(lo=d.POWER_RANGE_KW[0], hi=d.POWER_RANGE_KW[1]),
+                "output_torque_nm": _F(lo=d.TORQUE_RANGE_NM[0], hi=d.TORQUE_RANGE_NM[1]),
+                "n_in_rpm": _F(lo=d.SPEED_RANGE_RPM[0], hi=d.SPEED_RANGE_RPM[1]),
+                "total_ratio": _F(lo=d.TOTAL_RATIO_RANGE[0], hi=d.TOTAL_RATIO_RANGE[1]),
+                "ratio_tol": _F(default=0.03, lo=d.RATIO_TOL_RANGE[0], hi=d.RATIO_TOL_RANGE[1]),
+                "objective": _Key("choice", default=d.OBJECTIVES[0], choices=d.OBJECTIVES),
+                "top": _I(default=10, lo=1, hi=d.TOP_MAX),
+                "motor": {"power_kw": _F(required=True, lo=mo.POWER_RANGE_KW[0], hi=mo.POWER_RANGE_KW[1]),
+                          "speed_rpm": _F(required=True, lo=mo.SPEED_RANGE_RPM[0], hi=mo.SPEED_RANGE_RPM[1]),
+                          "service_factor": _F(default=1.0, lo=mo.SERVICE_FACTOR_RANGE[0], hi=mo.SERVICE_FACTOR_RANGE[1]),
+                          "catalog": _Key("choice", default=mo.MOTOR_CATALOGS[0], choices=mo.MOTOR_CATALOGS)}}
+    if part == "given":
+        return {"kind": _Key("choice", required=True, choices=STAGE_KINDS), "name": _Key("str"),
+                "ratio": _F(required=True, lo=s.GIVEN_RATIO_RANGE[0], hi=s.GIVEN_RATIO_RANGE[1]),
+                "efficiency": _F(required=True, **eff), "rated_output_torque_nm": _F(lo=0.0, lo_open=True)}
+    if part == "gear":
+        from ..gears.geometry import M_RANGE_MM, X_ABS_MAX
+        from ..gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
+        from ..shifts.objectives import OBJECTIVES
+
+        return {"kind": _Key("choice", required=True, choices=STAGE_KINDS), "name": _Key("str"),
+                "module": _F(required=True, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
+                "z1": _I(lo=Z_MIN, hi=Z_MAX), "z2": _I(lo=Z_MIN, hi=Z_MAX),
+                "x1": _F(lo=-X_ABS_MAX, hi=X_ABS_MAX), "x2": _F(lo=-X_ABS_MAX, hi=X_ABS_MAX),
+                "efficiency": _F(default=0.98, **eff), "beta_deg": _F(default=0.0, lo=BETA_RANGE_DEG[0], hi=BETA_RANGE_DEG[1]),
+                "face_width_mm": _F(lo=FACE_WIDTH_RANGE_MM[0], hi=FACE_WIDTH_RANGE_MM[1], lo_open=True),
+                "z1_range": _Key("ints", lo=Z_MIN, hi=Z_MAX, length=2), "z2_max": _I(lo=Z_MIN, hi=Z_MAX),
+                "ratio_range": _Key("floats", lo=1.0, hi=100.0, length=2),
+                "shift_objective": _Key("choice", choices=tuple(OBJECTIVES)),
+                "checks": {key: v for key, v in _checks_schema().items() if key != "jamming"}}
+    if part == "chain":
+        return {"kind": _Key("choice", required=True, choices=STAGE_KINDS), "name": _Key("str"),
+                "catalog": _Key("str", default="gost13568"), "z1": _I(lo=c.Z1_RANGE[0], hi=c.Z1_RANGE[1]),
+                "z2": _I(lo=c.Z1_RANGE[0], hi=c.Z2_MAX_LIMIT), "designation": _Key("str"),
+                "strands": _Key("ints", lo=c.STRANDS_RANGE[0], hi=c.STRANDS_RANGE[1]),
+                "efficiency": _F(default=0.96, **eff), "k_e": _F(lo=c.K_E_RANGE[0], hi=c.K_E_RANGE[1]),
+                "allowable_pressure_mpa": _F(lo=0.0, lo_open=True),
+                "allowable_safety_factor": _F(lo=c.SAFETY_FACTOR_RANGE[0], hi=c.SAFETY_FACTOR_RANGE[1]),
+                "method": _Key("choice", default=c.METHODS[0], choices=c.METHODS),
+                "center_distance_mm": _F(lo=0.0, hi=c.CENTER_DISTANCE_MAX_MM, lo_open=True),
+                "sag_factor": _F(default=6.0, lo=c.SAG_FACTOR_RANGE[0], hi=c.SAG_FACTOR_RANGE[1]),
+                "z2_max": _I(default=120, lo=9, hi=c.Z2_MAX_LIMIT),
+                "ratio_range": _Key("floats", lo=c.RATIO_RANGE[0], hi=c.RATIO_RANGE[1], length=2),
+                "objective": _Key("choice", default=c.OBJECTIVES[0], choices=c.OBJECTIVES),
+                "conditions": {key: _Key("float_or_str", lo=c.FACTOR_RANGE[0], hi=c.FACTOR_RANGE[1], choices=())
+                               for key in c.FACTOR_NAMES}}
+    if part == "shaft":   # a [key] whose torque is the shaft's own, and the shaft it sits on
+        keys = {name: spec for name, spec in section_schema("key").items() if name != "torque_nm"}
+        return {"at": _I(required=True, lo=0, hi=d.STAGES_MAX), **keys}
+    raise KeyError(part)
+
+
+
+
+def _drive_schema() -> dict:
     return drive_schema("")
 
 

@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 
 from ..results import Result
 from .load import Scene, scene_kind
+from .markdown import md_table, pyplot
 
 __all__ = ["SceneReport", "RUNNERS", "run_study", "base_from_scene", "chain_kwargs"]
 
@@ -30,36 +31,12 @@ class SceneReport(Result):
                 "time_s": self.time_s}
 
 
-def _pyplot():
-    """matplotlib.pyplot on the file backend, imported when a section draws (a key-only scene never does)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    return plt
-
-
-def _md_table(frame, floatfmt="{:.6g}") -> str:
-    import numpy as np
-
-    def cell(v):
-        if isinstance(v, (bool, np.bool_)):
-            return "yes" if v else "no"
-        if isinstance(v, (float, np.floating)):
-            return "–" if not np.isfinite(v) else floatfmt.format(v)
-        return str(v).replace("|", "\\|")
-    cols = list(frame.columns)
-    lines = ["| " + " | ".join(map(str, cols)) + " |", "|" + "---|" * len(cols)]
-    for row in frame.itertuples(index=False):
-        lines.append("| " + " | ".join(cell(v) for v in row) + " |")
-    return "\n".join(lines)
-
-
 def _checks_dict(spec: dict | None) -> dict | None:
     return dict(spec) if spec else None
 
 
 def _run_gear(rep: SceneReport, g: dict):
-    plt = _pyplot()
+    plt = pyplot()
     from ..gears.mesh import kind_text
     from ..gears.pair import GearPair
     from ..shifts.region import feasible_region
@@ -90,9 +67,9 @@ def _run_gear(rep: SceneReport, g: dict):
     rep.tables["gear_optimum"] = opt
     rep.tables["gear_optimum_checks"] = res.to_frame()
     rep.tables["gear_region_boundary"] = reg.boundary
-    md += ["### Optimum", "", f"{res.message}.", "", _md_table(opt), "",
+    md += ["### Optimum", "", f"{res.message}.", "", md_table(opt), "",
            "Margins of every check at the optimum, and d(fun)/d(limit) of the active ones:", "",
-           _md_table(res.to_frame()), ""]
+           md_table(res.to_frame()), ""]
     sm = (f"gear {g['z1']}/{g['z2']} m={g['module']:g}: optimum ({res.objective}) x1 = {res.x1:.4f}, "
           f"x2 = {res.x2:.4f}, eps_alpha = {res.eps_alpha:.4f}, a_w = {res.a_w:.4f} mm, "
           f"active {', '.join(res.active) or '-'}; region area {reg.area:.4f}")
@@ -116,12 +93,12 @@ def _run_gear(rep: SceneReport, g: dict):
         ga = pair.geometry()
         md += [f"### Given shifts x1 = {g['x1']:g}, x2 = {g['x2']:g}", "",
                f"This pair {verdict}: α_w = {ga.alpha_w_deg:.4f}°, a_w = {ga.a_w:.4f} mm, "
-               f"ε_α = {ga.eps_alpha:.4f}.", "", _md_table(chk.drop(columns=["label"])), "",
-               "Geometry of the given pair (mm, degrees):", "", _md_table(geo[["quantity", "value", "unit"]]), ""]
+               f"ε_α = {ga.eps_alpha:.4f}.", "", md_table(chk.drop(columns=["label"])), "",
+               "Geometry of the given pair (mm, degrees):", "", md_table(geo[["quantity", "value", "unit"]]), ""]
         rep.summary.append(f"given x1/x2 = {g['x1']:g}/{g['x2']:g}: eps_alpha = {ga.eps_alpha:.4f}, "
                            + ("all checks pass" if not failed else f"FAILS {', '.join(failed)}"))
         given = (g["x1"], g["x2"])
-    md += ["Geometry at the optimum (mm, degrees):", "", _md_table(geo_opt[["quantity", "value", "unit"]]), ""]
+    md += ["Geometry at the optimum (mm, degrees):", "", md_table(geo_opt[["quantity", "value", "unit"]]), ""]
     fig, ax = plt.subplots(figsize=(8.6, 6.2))
     reg.plot(ax=ax, optimum=res if res.success else None, proposed=given, x_sum=res.x_sum_fixed)
     rep.figures["gear_region"] = fig
@@ -158,7 +135,7 @@ def _run_teeth(rep: SceneReport, t: dict):
                         "objective", "feasible", "reason") if c in sel.table.columns]
     rep.markdown += [f"## Tooth counts for u = {t['ratio']:g} (± {100 * t['ratio_tol']:g} %)"
                      f"{kind_text(t['beta_deg'], t['internal'])}", "", sel.choice, "",
-                     _md_table(sel.table[cols].head(t["top"])), ""]
+                     md_table(sel.table[cols].head(t["top"])), ""]
     b = sel.best
     rep.summary.append("teeth: " + (f"z1/z2 = {int(b['z1'])}/{int(b['z2'])}, x1 = {b['x1']:.4f}, x2 = {b['x2']:.4f}"
                                     if b is not None else "no feasible tooth counts"))
@@ -180,7 +157,7 @@ def _run_planetary(rep: SceneReport, p: dict):
         rep.results["planetary"] = sel
         rep.tables["planetary_teeth"] = sel.table
         rep.markdown += [f"## Planetary tooth counts for ratio {p['ratio']:g} (± {100 * p['ratio_tol']:g} %), "
-                         f"{p['n_planets']} planets", "", sel.message, "", _md_table(sel.table.head(p["top"])), ""]
+                         f"{p['n_planets']} planets", "", sel.message, "", md_table(sel.table.head(p["top"])), ""]
         rep.summary.append("planetary: " + sel.message)
         return
     sizes = (p["module"], p["z_sun"], p["z_planet"], p["z_ring"], p["n_planets"])
@@ -202,20 +179,20 @@ def _run_planetary(rep: SceneReport, p: dict):
         table = r.to_frame()
         rep.tables["planetary_optimum"] = table
         reg = planetary_region(*sizes[1:], sizes[0], checks=checks, **kw)
-        _pyplot()
+        pyplot()
         rep.figures["planetary_region"] = reg.plot(optimum=(r.x_sun, r.x_planet) if r.success else None,
                                                    x_sum=(r.x_sun + r.x_planet) if "a_w" in p else None).figure
         head = (f"{r.objective}: x = {r.x_sun:.4f}/{r.x_planet:.4f}/{r.x_ring:.4f}, a_w {r.a_w:.6g} mm"
                 if r.success else r.message)
         s = PlanetarySet(*sizes, r.x_sun, r.x_planet, r.x_ring, arrangement=p["arrangement"], **kw) if r.success else None
     rep.markdown += [f"## Planetary set z_s/z_p/z_r = {p['z_sun']}/{p['z_planet']}/{p['z_ring']}, "
-                     f"{p['n_planets']} planets, m = {p['module']:g} mm", "", head, "", _md_table(table), ""]
+                     f"{p['n_planets']} planets, m = {p['module']:g} mm", "", head, "", md_table(table), ""]
     if "planetary_region" in rep.figures:
         rep.markdown += ["![feasible (x_sun, x_planet) region](planetary_region.png)", ""]
     if s is not None and p["drawing"]:
         from ..profiles.planetary import plot_planetary
 
-        _pyplot()
+        pyplot()
         rep.figures["planetary_set"] = plot_planetary(s).figure
         rep.markdown += ["![the set along its axis](planetary_set.png)", ""]
     rep.summary.append("planetary: " + head)
@@ -249,7 +226,7 @@ def _run_chain(rep: SceneReport, c: dict):
                             "speed_m_s", "force_n", "pressure_mpa", "allowable_pressure_mpa", "safety_factor",
                             "sprocket1_pitch_diameter_mm", "sprocket2_tip_diameter_mm", "mass_kg_m", "margin_pressure", "margin_safety", "min_margin", "feasible")
             if col in res.candidates.columns]
-    md += ["Best candidates:", "", _md_table(res.candidates[show].head(c["top"])), ""]
+    md += ["Best candidates:", "", md_table(res.candidates[show].head(c["top"])), ""]
     for note in res.notes:
         md += [f"- {note}"]
     if res.notes:
@@ -283,11 +260,11 @@ def _run_keys(rep: SceneReport, keys: list):
             "n_keys", "crush_mpa", "allowable_crush_mpa", "shear_mpa", "allowable_shear_mpa", "margin_crush",
             "margin_shear", "feasible"]
     rep.markdown += ["## Parallel keys", "", *[f"- {r['name']}: {r['message']}" for r in rows], "",
-                     _md_table(frame[show]), ""]
+                     md_table(frame[show]), ""]
 
 
 def run_study(rep: SceneReport, st: dict, sections: dict):
-    plt = _pyplot()
+    plt = pyplot()
     from ..sensitivity import studies
 
     target = st["target"]
@@ -298,7 +275,7 @@ def run_study(rep: SceneReport, st: dict, sections: dict):
     rep.results["study"] = {"sweep": frame}
     md = rep.markdown
     what = st["parameter"] + (f" × {st['parameter2']}" if "parameter2" in st else "")
-    md += [f"## Study: {target} sweep over {what}", "", _md_table(frame.drop(columns=[c for c in frame.columns
+    md += [f"## Study: {target} sweep over {what}", "", md_table(frame.drop(columns=[c for c in frame.columns
                                                                                    if c.startswith("sens_")])), ""]
     fig, ax = plt.subplots(figsize=(7, 4.5))
     studies.plot_margins(frame, st["parameter"], ax=ax, by=st.get("parameter2"))
@@ -318,7 +295,7 @@ def run_study(rep: SceneReport, st: dict, sections: dict):
         rep.figures["study_tornado"] = fig
         md += ["### Local sensitivities of the optimum", "",
                f"Each input moved by ±{100 * st['step']:g} % (limits: the convex method's duals give the slope "
-               "d fun/d limit; the bars re-solve):", "", _md_table(tor), "",
+               "d fun/d limit; the bars re-solve):", "", md_table(tor), "",
                "![tornado chart](study_tornado.png)", ""]
     rep.summary.append(f"study: {len(frame)} sweep points over {what}")
 
