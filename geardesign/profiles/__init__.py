@@ -1,1 +1,2 @@
-"""Tooth profiles as the cutter generates them (issue 14 builds the meshing drawing and the exports on these)."""
+"""Tooth profiles as the cutter generates them (rack for external gears, shaper for rings), the meshing
+drawing, its diagrams and the DXF/SVG/CSV exports."""

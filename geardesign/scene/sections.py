@@ -111,7 +111,7 @@ def _run_gear(rep: SceneReport, g: dict):
 
 
 def _add_mesh_drawing(rep: SceneReport, pair, tag: str):
-    """The meshing drawing and the line-of-action diagrams of one pair (issue 14), as two figures."""
+    """The meshing drawing and the line-of-action diagrams of one pair, as two figures."""
     from ..profiles.drawing import plot_diagrams, plot_mesh
 
     rep.figures[f"gear_mesh_{tag}"] = plot_mesh(pair).figure
