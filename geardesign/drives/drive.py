@@ -333,52 +333,22 @@ class Drive:
         Every stage needs its tooth counts; free gear shifts are solved (``objective`` only picks
         the shift rule, as in :meth:`optimize`), a free chain row is chosen by chain.design.
         """
-        from .chain import design as chain_design
-
         ratios = np.array([self._fixed_ratio(s) for s in self.stages])
         n, T, P = (a.ravel() for a in self._flow(ratios))
-        rows = []
+        rows = [("motor", name, float(v)) for name, v in self._motor_margins(P[0]).items()]
         stages_out = []
         size = mass = 0.0
-        for name, v in self._motor_margins(P[0]).items():
-            rows.append(("motor", name, float(v)))
         for i, st in enumerate(self.stages):
             if isinstance(st, GivenStage):
-                margins = {k: float(v) for k, v in st.margins(T[i + 1]).items()}
-                stages_out.append(dict(stage=st, summary=dict(name=st.name, kind="given", ratio=st.ratio,
-                                                              efficiency=st.efficiency)))
+                out = _given_stage(st, T[i + 1])
             elif isinstance(st, GearStage):
-                sol = _gear_solution(st, st.z1, st.z2, objective)
-                if not sol["feasible"] and "x1" not in sol:
-                    raise GearDesignError(f"stage '{st.name}': z1/z2 = {st.z1}/{st.z2} has no feasible shifts "
-                                          f"({sol['reason']})")
-                from ..gears.pair import GearPair
-                pair = GearPair(st.m, st.z1, st.z2, sol["x1"], sol["x2"], beta_deg=st.beta_deg, face_width=st.face_width_mm)
-                table = pair.checks(**{"jamming": False, **(st.checks or {})})
-                margins = dict(zip(table["check"], table["margin"].astype(float)))
-                geo = pair.geometry()
-                size += float(stage_area_mm2(geo.a_w, geo.da1, geo.da2))
-                mass += float(disc_mass_kg(geo.da1, st.width_mm) + disc_mass_kg(geo.da2, st.width_mm))
-                stages_out.append(dict(stage=st, pair=pair, checks=table, summary=dict(
-                    name=st.name, kind="gear", m=st.m, z1=st.z1, z2=st.z2, x1=pair.x1, x2=pair.x2, a_w_mm=geo.a_w,
-                    da1_mm=geo.da1, da2_mm=geo.da2, ratio=st.z2 / st.z1, efficiency=st.efficiency)))
+                out = _gear_stage(st, objective)
             else:
-                res = chain_design(torque_nm=float(T[i]), n1_rpm=float(n[i]), ratio=st.z2 / st.z1, z1=st.z1,
-                                   **st.design_kwargs())
-                cand = res.candidates
-                if st.designation is not None:
-                    cand = cand[cand["designation"] == st.designation]
-                row = cand.iloc[0]   # ranked: the best feasible, or the closest when none passes
-                margins = {k[len("margin_"):]: float(row[k]) for k in _chain_check_names(st)}
-                de1, de2, w = row["sprocket1_tip_diameter_mm"], row["sprocket2_tip_diameter_mm"], row["width_mm"]
-                size += float(stage_area_mm2(row["center_distance_mm"], de1, de2))
-                mass += float(disc_mass_kg(de1, w) + disc_mass_kg(de2, w) + row["chain_mass_kg"])
-                stages_out.append(dict(stage=st, design=res, row=row, summary=dict(
-                    name=st.name, kind="chain", designation=row["designation"], strands=int(row["strands"]),
-                    pitch_mm=float(row["pitch_mm"]), z1=st.z1, z2=st.z2, links=int(row["links"]),
-                    center_distance_mm=float(row["center_distance_mm"]), ratio=st.z2 / st.z1,
-                    efficiency=st.efficiency)))
-            rows += [(st.name, k, v) for k, v in margins.items()]
+                out = _chain_stage(st, T[i], n[i])
+            rows += [(st.name, k, v) for k, v in out.pop("margins").items()]
+            size += out.pop("size", 0.0)
+            mass += out.pop("mass", 0.0)
+            stages_out.append(out)
         key_rows, key_results = [], []
         for sh in self.shafts:
             sel = sh.select(float(T[sh.at]))
@@ -389,10 +359,7 @@ class Drive:
                                  margin_crush=sel.margin_crush, margin_shear=sel.margin_shear, feasible=sel.feasible,
                                  message=sel.message))
             rows += [(f"key '{sh.name}'", "crushing", sel.margin_crush), (f"key '{sh.name}'", "shear", sel.margin_shear)]
-        checks = pd.DataFrame(rows, columns=["item", "check", "margin"])
-        checks["margin"] = checks["margin"].astype(float)
-        checks.loc[checks["margin"].abs() <= MARGIN_TOL, "margin"] = 0.0
-        checks["ok"] = checks["margin"] >= 0
+        checks = _checks_table(rows)
         flow = pd.DataFrame({"shaft": np.arange(len(n)),
                              "after": ["input" if self.motor is None else f"motor {self.motor['designation']}"]
                              + [s.name for s in self.stages],
@@ -400,12 +367,7 @@ class Drive:
         keys = pd.DataFrame(key_rows, columns=["name", "at", "d_mm", "hub_length_mm", "torque_nm", "b_mm", "h_mm",
                                                "length_mm", "n_keys", "crush_mpa", "shear_mpa", "margin_crush",
                                                "margin_shear", "feasible", "message"])
-        if checks.empty:
-            mm, lim = math.inf, ""
-        else:
-            m = checks["margin"].fillna(-np.inf)
-            j = int(np.argmin(m.to_numpy()))
-            mm, lim = float(checks["margin"].iloc[j]), f"{checks['item'].iloc[j]}: {checks['check'].iloc[j]}"
+        mm, lim = _smallest(checks)
         ok = bool(checks["ok"].all())
         failing = checks[~checks["ok"]]
         msg = (f"u = {float(np.prod(ratios)):.6g}, output {n[-1]:.6g} rpm, {T[-1]:.6g} N·m; "
@@ -450,6 +412,69 @@ class Drive:
         if st.z1 is not None and st.z2 is not None:
             return (st.z2 / st.z1, st.z2 / st.z1)
         return st.ratio_range
+
+
+# ---------------------------------------------------------------------------------------------- analyse
+
+def _given_stage(st: GivenStage, torque_out_nm) -> dict:
+    """A bought unit's margins (its rated output torque) and summary."""
+    return dict(stage=st, margins={k: float(v) for k, v in st.margins(torque_out_nm).items()},
+                summary=dict(name=st.name, kind="given", ratio=st.ratio, efficiency=st.efficiency))
+
+
+def _gear_stage(st: GearStage, objective: str) -> dict:
+    """A gear stage at its tooth counts (free shifts solved): its checks, size and mass."""
+    from ..gears.pair import GearPair
+
+    sol = _gear_solution(st, st.z1, st.z2, objective)
+    if not sol["feasible"] and "x1" not in sol:
+        raise GearDesignError(f"stage '{st.name}': z1/z2 = {st.z1}/{st.z2} has no feasible shifts ({sol['reason']})")
+    pair = GearPair(st.m, st.z1, st.z2, sol["x1"], sol["x2"], beta_deg=st.beta_deg, face_width=st.face_width_mm)
+    table = pair.checks(**{"jamming": False, **(st.checks or {})})
+    geo = pair.geometry()
+    return dict(stage=st, pair=pair, checks=table, margins=dict(zip(table["check"], table["margin"].astype(float))),
+                size=float(stage_area_mm2(geo.a_w, geo.da1, geo.da2)),
+                mass=float(disc_mass_kg(geo.da1, st.width_mm) + disc_mass_kg(geo.da2, st.width_mm)),
+                summary=dict(name=st.name, kind="gear", m=st.m, z1=st.z1, z2=st.z2, x1=pair.x1, x2=pair.x2,
+                             a_w_mm=geo.a_w, da1_mm=geo.da1, da2_mm=geo.da2, ratio=st.z2 / st.z1,
+                             efficiency=st.efficiency))
+
+
+def _chain_stage(st: ChainStage, torque_nm, n1_rpm) -> dict:
+    """A chain stage by chain.design with the flow's load (its designation, when fixed, picks the row)."""
+    from .chain import design as chain_design
+
+    res = chain_design(torque_nm=float(torque_nm), n1_rpm=float(n1_rpm), ratio=st.z2 / st.z1, z1=st.z1,
+                       **st.design_kwargs())
+    cand = res.candidates
+    if st.designation is not None:
+        cand = cand[cand["designation"] == st.designation]
+    row = cand.iloc[0]   # ranked: the best feasible, or the closest when none passes
+    de1, de2, w = row["sprocket1_tip_diameter_mm"], row["sprocket2_tip_diameter_mm"], row["width_mm"]
+    return dict(stage=st, design=res, row=row, margins={k[len("margin_"):]: float(row[k]) for k in _chain_check_names(st)},
+                size=float(stage_area_mm2(row["center_distance_mm"], de1, de2)),
+                mass=float(disc_mass_kg(de1, w) + disc_mass_kg(de2, w) + row["chain_mass_kg"]),
+                summary=dict(name=st.name, kind="chain", designation=row["designation"], strands=int(row["strands"]),
+                             pitch_mm=float(row["pitch_mm"]), z1=st.z1, z2=st.z2, links=int(row["links"]),
+                             center_distance_mm=float(row["center_distance_mm"]), ratio=st.z2 / st.z1,
+                             efficiency=st.efficiency))
+
+
+def _checks_table(rows) -> pd.DataFrame:
+    """item, check, margin, ok; margins within MARGIN_TOL of zero are zero."""
+    checks = pd.DataFrame(rows, columns=["item", "check", "margin"])
+    checks["margin"] = checks["margin"].astype(float)
+    checks.loc[checks["margin"].abs() <= MARGIN_TOL, "margin"] = 0.0
+    checks["ok"] = checks["margin"] >= 0
+    return checks
+
+
+def _smallest(checks: pd.DataFrame):
+    """(smallest margin, "item: check") of a checks table (NaN counts as −inf)."""
+    if checks.empty:
+        return math.inf, ""
+    j = int(np.argmin(checks["margin"].fillna(-np.inf).to_numpy()))
+    return float(checks["margin"].iloc[j]), f"{checks['item'].iloc[j]}: {checks['check'].iloc[j]}"
 
 
 class _Search:
