@@ -167,43 +167,21 @@ def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA
         raise GearDesignError(f"end must be one of {', '.join(ENDS)}, got {end!r}")
     max_keys = int(require_range("max_keys", require_int("max_keys", max_keys, 1), 1, MAX_KEYS))
     b, h, t1, t2 = (float(sec[c]) for c in ("b_mm", "h_mm", "t1_mm", "t2_mm"))
-
-    lengths = key_lengths_mm()
-    l_min = float(sec["l_min_mm"]) if np.isfinite(sec["l_min_mm"]) else 0.0
-    l_max = float(sec["l_max_mm"]) if np.isfinite(sec["l_max_mm"]) else np.inf
-    n_keys = np.arange(1, max_keys + 1)
-    L = np.tile(lengths, len(n_keys))
-    N = np.repeat(n_keys, len(lengths))
-    lp = working_length_mm(L, b, end)
-    fits = (L <= hub - allowance) & (L >= l_min) & (L <= l_max) & (lp > 0)
-    # the rule takes the longest length that fits; shorter ones are listed, not chosen
-    longest = L == (L[fits].max() if fits.any() else -1.0)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        lp_pos = np.where(lp > 0, lp, np.nan)
-        sig = crushing_stress_mpa(torque, d, h, t1, lp_pos, N)
-        tau = shear_stress_mpa(torque, d, b, lp_pos, N)
-    cand = pd.DataFrame({"n_keys": N, "length_mm": L, "working_length_mm": lp, "fits_hub": fits,
-                         "crush_mpa": sig, "shear_mpa": tau, "margin_crush": 1.0 - sig / s_cr,
-                         "margin_shear": 1.0 - tau / s_sh})
-    cand["feasible"] = fits & (cand["margin_crush"] >= 0) & (cand["margin_shear"] >= 0)
-    ok = cand[cand["feasible"] & longest]
-
+    cand, longest = _candidates(sec, d, torque, hub - allowance, s_cr, s_sh, end, max_keys)
     common = dict(d_mm=d, torque_nm=torque, hub_length_mm=hub, b_mm=b, h_mm=h, t1_mm=t1, t2_mm=t2,
                   allowable_crush_mpa=s_cr, allowable_shear_mpa=s_sh, end=end, candidates=cand)
+    ok = cand[cand["feasible"] & longest]
     if len(ok):
         row = ok.iloc[0]  # ordered by n_keys, then length: one key before two, shortest first
-        n = int(row["n_keys"])
         rule = (f"the longest standard length <= hub {hub:g} mm - {allowance:g} mm allowance; "
                 f"t1 = {t1:g} mm in the shaft, t2 = {t2:g} mm in the hub")
-        msg = (f"one key {b:g}x{h:g}x{row['length_mm']:g} ({rule})" if n == 1 else
+        msg = (f"one key {b:g}x{h:g}x{row['length_mm']:g} ({rule})" if int(row["n_keys"]) == 1 else
                f"one key fails; two keys {b:g}x{h:g}x{row['length_mm']:g} at 180 deg (load-sharing factor "
                f"{TWO_KEY_FACTOR}; {rule})")
-        return KeySelection(feasible=True, message=msg, length_mm=float(row["length_mm"]),
-                            working_length_mm=float(row["working_length_mm"]), n_keys=n,
-                            crush_mpa=float(row["crush_mpa"]), shear_mpa=float(row["shear_mpa"]),
-                            margin_crush=float(row["margin_crush"]), margin_shear=float(row["margin_shear"]), **common)
-    fitting = cand[cand["fits_hub"]]
-    if fitting.empty:
+        return KeySelection(feasible=True, message=msg, **_key_fields(row), **common)
+    if not cand["fits_hub"].any():
+        L, lp = cand["length_mm"].to_numpy(), cand["working_length_mm"].to_numpy()
+        l_min = float(sec["l_min_mm"]) if np.isfinite(sec["l_min_mm"]) else 0.0
         msg = (f"no standard length of the {b:g}x{h:g} key fits a {hub:g} mm hub with {allowance:g} mm allowance "
                f"(shortest usable {max(l_min, L[lp > 0].min() if (lp > 0).any() else np.inf):g} mm)")
         # no key at all: its figures are absent (None), not numbers
@@ -216,10 +194,39 @@ def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA
     msg = (f"nothing fits: the best is {int(best['n_keys'])} key(s) {b:g}x{h:g}x{best['length_mm']:g}, "
            f"which fails {check} with margin {min(best['margin_crush'], best['margin_shear']):+.3f}; "
            f"lengthen the hub, raise the allowable stress or use a spline")
-    return KeySelection(feasible=False, message=msg, length_mm=float(best["length_mm"]),
-                        working_length_mm=float(best["working_length_mm"]), n_keys=int(best["n_keys"]),
-                        crush_mpa=float(best["crush_mpa"]), shear_mpa=float(best["shear_mpa"]),
-                        margin_crush=float(best["margin_crush"]), margin_shear=float(best["margin_shear"]), **common)
+    return KeySelection(feasible=False, message=msg, **_key_fields(best), **common)
+
+
+def _candidates(sec, d, torque, l_fit, s_cr, s_sh, end, max_keys):
+    """Every standard length × 1..max_keys keys with its stresses and margins, and which rows have the
+    longest length that fits (``l_fit`` = hub − allowance, within the section's length range)."""
+    b, h, t1 = (float(sec[c]) for c in ("b_mm", "h_mm", "t1_mm"))
+    lengths = key_lengths_mm()
+    l_min = float(sec["l_min_mm"]) if np.isfinite(sec["l_min_mm"]) else 0.0
+    l_max = float(sec["l_max_mm"]) if np.isfinite(sec["l_max_mm"]) else np.inf
+    n_keys = np.arange(1, max_keys + 1)
+    L = np.tile(lengths, len(n_keys))
+    N = np.repeat(n_keys, len(lengths))
+    lp = working_length_mm(L, b, end)
+    fits = (L <= l_fit) & (L >= l_min) & (L <= l_max) & (lp > 0)
+    # the rule takes the longest length that fits; shorter ones are listed, not chosen
+    longest = L == (L[fits].max() if fits.any() else -1.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lp_pos = np.where(lp > 0, lp, np.nan)
+        sig = crushing_stress_mpa(torque, d, h, t1, lp_pos, N)
+        tau = shear_stress_mpa(torque, d, b, lp_pos, N)
+    cand = pd.DataFrame({"n_keys": N, "length_mm": L, "working_length_mm": lp, "fits_hub": fits,
+                         "crush_mpa": sig, "shear_mpa": tau, "margin_crush": 1.0 - sig / s_cr,
+                         "margin_shear": 1.0 - tau / s_sh})
+    cand["feasible"] = fits & (cand["margin_crush"] >= 0) & (cand["margin_shear"] >= 0)
+    return cand, longest
+
+
+def _key_fields(row) -> dict:
+    """The chosen (or closest) key's length, count, stresses and margins from a candidates row."""
+    return dict(length_mm=float(row["length_mm"]), working_length_mm=float(row["working_length_mm"]),
+                n_keys=int(row["n_keys"]), crush_mpa=float(row["crush_mpa"]), shear_mpa=float(row["shear_mpa"]),
+                margin_crush=float(row["margin_crush"]), margin_shear=float(row["margin_shear"]))
 
 
 @dataclass(frozen=True)
