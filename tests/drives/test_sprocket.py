@@ -42,8 +42,9 @@ def test_pitch_diameter_closes_the_pitch_polygon():
 
 
 def test_pitch_diameter_published_and_exact():
-    # Six teeth: a regular hexagon, d = 2p exactly. ANSI 40 (1/2 in pitch), 19 teeth: Martin sprocket
-    # catalog pitch diameter 3.038 in = 77.16 mm (hand: 12.7/sin(9.4737°) = 12.7/0.1645946 = 77.1593 mm).
+    # Six teeth: a regular hexagon, d = 2p exactly. ANSI 40 (1/2 in pitch), 19 teeth: U.S. Tsubaki sprocket
+    # catalog, No. 40 plain bore sprockets, pitch diameter 3.038 in = 77.16 mm (online.flippingbook.com/view/
+    # 303869790/42-43); by hand 12.7/sin(9.4737°) = 12.7/0.1645946 = 77.1593 mm.
     assert sprocket.pitch_diameter_mm(12.7, 6) == pytest.approx(25.4, rel=1e-14)
     assert sprocket.pitch_diameter_mm(12.7, 19) / 25.4 == pytest.approx(3.038, abs=5e-4)
     assert sprocket.pitch_diameter_mm(12.7, 19) == pytest.approx(12.7 / 0.1645946, rel=1e-6)
