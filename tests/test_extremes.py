@@ -7,7 +7,7 @@ value is near zero (scales in reference_mp.FIELD_SCALE). Designs whose geometry 
 exist (per the reference: inv α_w <= 0, tip inside the base circle, d_f <= 0) are left out
 of the grid and must make geardesign raise GearDesignError instead.
 
-Also the involute function and its inverse against 50-digit mpmath.
+The involute function and its inverse: tests/gears/test_involute.py.
 """
 from __future__ import annotations
 
@@ -239,62 +239,6 @@ def test_nonexistent_geometry_raises():
     with pytest.raises(gd.GearDesignError):
         gd.pair_geometry(*(np.array([v[k] for v in good]) for k in ("m", "z1", "z2", "x1", "x2")),
                          rack=_rack(d["alpha_deg"], d["ha"], d["c"], d["rho_f"]), tip_shortening=d["ts"])
-
-
-# --- the involute function --------------------------------------------------------------------
-
-def test_inv_inverse_against_mpmath():
-    """inv_inverse to 1e-14 relative for every v on a dense log grid 1e-12 … 10 (issue #2)."""
-    v = np.logspace(-12, 1, 1500)
-    ours = gd.inv_inverse(v)
-    worst = 0.0
-    for vi, oi in zip(v, ours):
-        r = ref.inv_inverse(mp.mpf(float(vi)))
-        worst = max(worst, float(abs(mp.mpf(float(oi)) - r) / r))
-    assert worst <= 1e-14, worst
-
-
-def test_inv_against_mpmath():
-    """inv α to ~1e-15 relative for α from 1e-8 to 1.5 rad."""
-    alpha = np.concatenate([np.logspace(-8, np.log10(1.5), 1500),
-                            np.linspace(0.28, 0.31, 200)])   # around the series/difference switch
-    ours = gd.inv(alpha)
-    worst, at = 0.0, None
-    for ai, oi in zip(alpha, ours):
-        r = ref.inv(mp.mpf(float(ai)))
-        e = float(abs(mp.mpf(float(oi)) - r) / r)
-        if e > worst:
-            worst, at = e, float(ai)
-    assert worst <= 1e-15, (worst, at)
-
-
-def test_t_minus_atan_in_its_three_ranges_against_mpmath():
-    """The geometry's t − atan t (array and float) to 1e-15 relative on −1.2 … 1.2: the series
-    below 0.12, the tabled node and its step up to 0.9 (both sides of every node and of both
-    switches), the plain difference above."""
-    from geardesign.gears.involute import t_minus_atan, t_minus_atan_float
-
-    nodes = np.arange(1, 30) / 32
-    t = np.concatenate([np.linspace(1e-6, 1.2, 3001), nodes, np.nextafter(nodes, 0), np.nextafter(nodes, 1),
-                        [0.12, np.nextafter(0.12, 0), 0.9, np.nextafter(0.9, 0)]])
-    t = np.concatenate([t, -t])
-    arr = t_minus_atan(t)
-    worst = 0.0
-    for ti, ai in zip(t, arr):
-        r = mp.mpf(float(ti)) - mp.atan(mp.mpf(float(ti)))
-        for ours in (ai, t_minus_atan_float(float(ti))):
-            worst = max(worst, float(abs(mp.mpf(float(ours)) - r) / abs(r)))
-    assert worst <= 1e-15, worst
-
-
-def test_inv_scalar_in_float_out():
-    assert type(gd.inv(0.3)) is float
-    assert type(gd.inv_inverse(0.01)) is float
-    assert type(gd.inv(np.float64(0.3))) is float
-    assert isinstance(gd.inv(np.array([0.3, 0.4])), np.ndarray)
-    # round trip through the reference: inv_inverse(inv(20°)) = 20°
-    a = math.radians(20.0)
-    assert abs(gd.inv_inverse(float(ref.inv(a))) - a) <= 1e-15 * a
 
 
 # --- focused cases: one design per cancellation found by the grid ------------------------------

@@ -1,5 +1,5 @@
 """The `geardesign chain` command. Expected designs are the ones derived by hand in
-tests/drives/test_chain.py (seed 002 recomputed)."""
+tests/drives/chain/ and tests/drives/test_sprocket.py (seed 002 recomputed)."""
 import json
 import subprocess
 import sys

@@ -1,5 +1,5 @@
 """Optimal shifts of planetary sets against an independent brute-force reference, the coaxiality
-they keep, conflicts named with their mesh, and the tooth-count search.
+they keep, and conflicts named with their mesh (the tooth-count search: tests/shifts/test_planetary_teeth.py).
 
 The reference (written here) builds the set without geardesign's planetary code: the ring's shift
 from the common a_w by its own involute relations (ISO 21771:2007 eq. (62) for each mesh), each
@@ -143,35 +143,6 @@ def test_region_contains_the_optimum_and_labels_meshes():
     labels = set(reg.boundary["check"])
     assert any(lab.startswith("planet-ring:") for lab in labels) and any(lab.startswith("sun-planet:") for lab in labels)
     assert not reg.contains(-1.4, -1.4)      # both gears undercut
-
-
-def test_tooth_count_search_rows_check_out():
-    sel = gd.select_planetary_teeth(5.0, 3, 2.0, ratio_tol=0.01, z_sun_range=(18, 24))
-    assert sel.found
-    feas = sel.table[sel.table["feasible"]]
-    assert len(feas) >= 3 and (~sel.table["standard"]).any() and sel.table["standard"].any()
-    for _, row in feas.iterrows():
-        assert abs(row["ratio"] - 5.0) <= 0.01 * 5.0 + 1e-12
-        assert (row["z_sun"] + row["z_ring"]) % 3 == 0
-        s = gd.PlanetarySet(2.0, int(row["z_sun"]), int(row["z_planet"]), int(row["z_ring"]), 3,
-                            row["x_sun"], row["x_planet"], row["x_ring"])
-        t = s.checks(coaxiality_tol_mm=1e-9)
-        assert (t["margin"] >= -1e-8).all(), t
-    bad = sel.table[~sel.table["feasible"]]
-    assert (bad["reason"].str.len() > 0).all()
-    # ranked: feasible first, then the ratio error
-    assert list(sel.table["feasible"]) == sorted(sel.table["feasible"], reverse=True)
-
-
-@pytest.mark.parametrize("kw, words", [
-    (dict(ratio=0.5), "ring_fixed"),
-    (dict(ratio=5.0, arrangement="sun_fixed"), "in \\(1, 2\\)"),
-    (dict(ratio=5.0, z_sun_range=(40, 12)), "lo <= hi"),
-    (dict(ratio=5.0, nonstandard_max=9), "nonstandard_max"),
-])
-def test_tooth_count_search_refuses_by_name(kw, words):
-    with pytest.raises(gd.GearDesignError, match=words):
-        gd.select_planetary_teeth(n_planets=3, m=2.0, **kw)
 
 
 @settings(max_examples=12, deadline=None, derandomize=True, database=None)

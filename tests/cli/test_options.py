@@ -1,0 +1,53 @@
+"""Options shared by subcommands (geardesign.cli.options): --objective/--method take exactly the
+library's registries, and an output file that exists is refused without --overwrite (common rules),
+checked through the real commands on files written here."""
+import argparse
+
+import pytest
+
+from geardesign.cli import build_parser, main
+from geardesign.cli.options import add_output_file, add_solver_args
+from geardesign.shifts.objectives import OBJECTIVES
+from geardesign.shifts.optimize import METHODS
+
+
+def test_solver_args_take_the_registries():
+    p = argparse.ArgumentParser()
+    add_solver_args(p, "max_x_sum")
+    args = p.parse_args([])
+    assert args.objective == "max_x_sum" and args.method == "exact"
+    for name in OBJECTIVES:
+        assert p.parse_args(["--objective", name]).objective == name
+    for name in METHODS:
+        assert p.parse_args(["--method", name]).method == name
+    with pytest.raises(SystemExit) as e:
+        p.parse_args(["--objective", "max_beauty"])
+    assert e.value.code == 2
+
+
+def test_output_file_and_overwrite_flag():
+    p = argparse.ArgumentParser()
+    add_output_file(p, "--out", "CSV", "the table")
+    assert vars(p.parse_args([])) == {"out": None, "overwrite": False}
+    assert vars(p.parse_args(["--out", "t.csv", "--overwrite"])) == {"out": "t.csv", "overwrite": True}
+
+
+def test_every_command_with_an_output_file_offers_overwrite():
+    sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    with_output = [name for name, p in sub.choices.items()
+                   if any(o in p._option_string_actions for o in ("--out", "--plot"))]
+    assert {"atlas", "shift", "teeth", "planetary", "drive"} <= set(with_output)
+    for name in with_output:
+        assert "--overwrite" in sub.choices[name]._option_string_actions, name
+
+
+def test_existing_output_refused_without_overwrite_and_kept(tmp_path, capsys):
+    out = tmp_path / "atlas.csv"
+    out.write_text("keep me\n")
+    argv = ["atlas", "--z1", "12:13", "--z2", "20,30", "--out", str(out)]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--overwrite" in err[0]
+    assert out.read_text() == "keep me\n"
+    assert main(argv + ["--overwrite"]) == 0
+    assert out.read_text() != "keep me\n"

@@ -1,0 +1,29 @@
+"""Sequential convex programming (geardesign.shifts.scp.solve_convex) on stand-in problems with
+analytic optima (tests/shifts/toy_problems.py): max x1 + x2 on a disc of radius r is (r/√2, r/√2)
+(Lagrange: ∇(x1 + x2) = λ∇(x1² + x2²)), on a triangle the vertex set by its hypotenuse and the window."""
+import math
+
+import numpy as np
+import pytest
+
+from geardesign.shifts.scp import solve_convex
+from tests.shifts.toy_problems import Disk, Triangle
+
+
+# starts inside the disc, as the grid gives them (a start whose linearised margin cannot reach 0 within the
+# first trust radius makes the subproblem infeasible and the solver stop where it started)
+@pytest.mark.parametrize("r, start", [(1.0, (0.0, 0.0)), (0.6, (-0.3, 0.1)), (2.0, (1.0, -1.0))])
+def test_disc_optimum(r, start):
+    v, nit, lam_m, _ = solve_convex(Disk(r), np.array(start, dtype=float), (-1.5, 3.0), tol=1e-8)
+    np.testing.assert_allclose(v, [r / math.sqrt(2), r / math.sqrt(2)], atol=1e-6)
+    assert nit >= 1
+    # the margin (r² − |x|²)/(2r) has gradient −x/r = −(1, 1)/√2 at the optimum; the multiplier that
+    # balances the objective's (1, 1) against it is √2
+    assert lam_m[0] == pytest.approx(math.sqrt(2), rel=1e-4)
+
+
+def test_window_edge_bounds_the_optimum():
+    # x1, x2 >= 0 and x1 + x2 <= 10: the hypotenuse lies outside the window [-1.5, 3]², so the
+    # window's corner (3, 3) is the optimum
+    v, _, _, _ = solve_convex(Triangle(0.0, 10.0), np.array([0.5, 0.5]), (-1.5, 3.0), tol=1e-8)
+    np.testing.assert_allclose(v, [3.0, 3.0], atol=1e-7)
