@@ -8,16 +8,9 @@ import pytest
 from geardesign.errors import GearDesignError
 from geardesign.scene import load_scene
 from geardesign.scene.drive import build_drive, compute_drive
+from tests.scene_files import GIVEN_DRIVE, write
 
-BODY = """
-[drive]
-power_kw = 4
-n_in_rpm = 1500
-[[drive.stage]]
-kind = 'given'
-ratio = 12.5
-efficiency = 0.87
-name = 'gear motor'
+BODY = GIVEN_DRIVE + """name = 'gear motor'
 [[drive.stage]]
 kind = 'gear'
 module = 2
@@ -33,9 +26,7 @@ hub_length_mm = 80
 
 
 def _section(tmp_path, body=BODY):
-    p = tmp_path / "d.toml"
-    p.write_text(body)
-    return load_scene(str(p)).sections["drive"]
+    return load_scene(str(write(tmp_path, body))).sections["drive"]
 
 
 def test_section_builds_the_drive_written_in_it(tmp_path):

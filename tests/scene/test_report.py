@@ -8,22 +8,13 @@ import pytest
 from geardesign.errors import GearDesignError
 from geardesign.scene import load_scene
 from geardesign.scene.report import compute_scene, run_scene, write_report
+from tests.scene_files import GIVEN_DRIVE, write
 
-BODY = """title = "hand drive"
-[drive]
-power_kw = 4
-n_in_rpm = 1500
-[[drive.stage]]
-kind = 'given'
-ratio = 12.5
-efficiency = 0.87
-"""
+BODY = 'title = "hand drive"' + GIVEN_DRIVE
 
 
 def _file(tmp_path, body=BODY):
-    p = tmp_path / "s.toml"
-    p.write_text(body)
-    return p
+    return write(tmp_path, body, "s.toml")
 
 
 def test_compute_writes_nothing_and_reports_progress(tmp_path):
