@@ -41,9 +41,9 @@ class Progress:
     def update(self, n: int = 1) -> None:
         self.done += n
         if self.enabled:
-            frac = min(self.done / self.total, 1.0)
-            bar = "#" * int(30 * frac)
-            self.stream.write(f"\r{self.label} [{bar:<30}] {self.done}/{self.total}")
+            shown = min(self.done, self.total)   # a caller that overshoots its total still reads n/n
+            bar = "#" * int(30 * shown / self.total)
+            self.stream.write(f"\r{self.label} [{bar:<30}] {shown}/{self.total}")
             self.stream.flush()
 
     def close(self) -> None:
