@@ -300,14 +300,15 @@ def _cutting_mesh(geo: dict, cutter):
     """The cutter–ring mesh (:func:`geardesign.gears.ring.cutting_mesh`) of the ring in ``geo``,
     kept in ``geo`` by cutter: the margins and gradients of one design share it."""
     memo = geo.setdefault("_cutting_meshes", {})
-    if cutter not in memo:
+    key = (cutter.z0, cutter.x0, cutter.ha0)   # equal cutters share it; a plain tuple hashes in C
+    if key not in memo:
         from .ring import cutting_mesh
         ta, tn = geo["_ta"], geo["_tn"]   # tan α_t, tan α_n: one value for every design
         at = math.atan(ta) if type(ta) is float else float(np.arctan(np.ravel(ta)[0]))
         cos_beta = geo["_m"] * geo["_z2"] / geo["d2"]
-        memo[cutter] = cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], cutter, at,
-                                    tn if type(tn) is float else float(np.ravel(tn)[0]), cos_beta)
-    return memo[cutter]
+        memo[key] = cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], cutter, at,
+                                 tn if type(tn) is float else float(np.ravel(tn)[0]), cos_beta)
+    return memo[key]
 
 
 @dataclass(frozen=True)
