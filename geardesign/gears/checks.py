@@ -503,7 +503,7 @@ class CutterInterference(Check):
     N0, ρ_a2 >= N0N2 = a_w0 sin α_w0 — KHK eq. (5-4), z0/z2 >= 1 − tan α_a2/tan α_w0, with the
     cutter in place of the pinion. Otherwise the cutter's tip region runs below its base circle and
     cuts the ring's tips away (the generated ring shows it: :func:`geardesign.profiles.ring.ring_profile`
-    sets ``cutting_interference``). Margin (ρ_a2 − a_w0 sin α_w0)/m; N0N2 = ρ_F2 − ρ_a0 from the
+    sets ``cutting_interference``). Margin (ρ_a2 − N0N2)/m, N0N2 = a_w0 sin α_w0 from the
     cutting mesh. Depends on the ring only: gradient (0, (m r_a2/ρ_a2 − ∂ρ_F2/∂x2)/m)."""
 
     cutter: object = None
@@ -514,25 +514,18 @@ class CutterInterference(Check):
         object.__setattr__(self, "label", self.label or "the shaper cutter's involute generates the ring's tip "
                                                          "(no involute interference in cutting)")
 
-    def _n0n2(self, geo):
-        cm = _cutting_mesh(geo, self.cutter)
-        r_b0 = geo["db2"] / 2.0 * cm.z0 / geo["_z2"]
-        rho_a0 = (cm.r_a0 - r_b0) * (cm.r_a0 + r_b0)
-        rho_a0 = rho_a0 ** 0.5 if type(rho_a0) is float else np.sqrt(rho_a0)
-        return cm.rho_form2 - rho_a0
-
     def value(self, geo):
         return geo["_rho_a2"] / geo["_m"]
 
     def limit_value(self, geo):
-        return self._n0n2(geo) / geo["_m"]
+        return _cutting_mesh(geo, self.cutter).n0n2 / geo["_m"]
 
     def margin(self, geo):
-        return (geo["_rho_a2"] - self._n0n2(geo)) / geo["_m"]
+        return (geo["_rho_a2"] - _cutting_mesh(geo, self.cutter).n0n2) / geo["_m"]
 
     def gradient(self, geo):
         m = geo["_m"]
-        # ρ_a2² = r_a2² − r_b2², ∂r_a2/∂x2 = m (the ring's tip moves out with x2); N0N2 = ρ_F2 − ρ_a0
+        # ρ_a2² = r_a2² − r_b2², ∂r_a2/∂x2 = m (the ring's tip moves out with x2); ∂N0N2/∂x2 = ∂ρ_F2/∂x2 (ρ_a0 is the cutter's)
         return 0.0, (m * geo["_ra2"] / geo["_rho_a2"] - _cutting_mesh(geo, self.cutter).drho_form2_dx2) / m
 
 

@@ -73,26 +73,20 @@ def _short_series(t):
 
 # Between _SHORT_T and DIRECT_T: from the node c = ⌊32 t⌋/32 below t, whose c − atan c is tabled,
 # t − atan t = (c − atan c) + Δt·c t/(1 + c t) + (u − atan u), u = Δt/(1 + c t) < 1/32, Δt = t − c
-# (exact): three terms of one sign, the last a six-term series (u² < 1e-3: 1e-19 relative).
+# (exact): three terms of one sign, the last the short series (u < 1/32 < _SHORT_T).
 # atan t − atan c = atan u is the tangent subtraction formula. ~25 array operations where the
 # half-angle form takes ~55.
 _NODES_PER_UNIT = 32
 _NODE_INV = tuple(_t_minus_atan(k / _NODES_PER_UNIT, math.sqrt) if k else 0.0
                   for k in range(int(DIRECT_T * _NODES_PER_UNIT) + 1))
 _NODE_INV_ARRAY = np.array(_NODE_INV)
-_TABLE_HORNER = _SERIES_COEF[4::-1]
 
 
 def _from_node(t, c, node_inv):
     """t − atan t from the node c <= t (c − atan c = node_inv); arrays or floats alike."""
     dt = t - c
     q = 1.0 + c * t
-    u = dt / q
-    u2 = u * u
-    ser = _SERIES_COEF[5]
-    for coef in _TABLE_HORNER:
-        ser = ser * u2 + coef
-    return node_inv + dt * c * t / q + ser * u2 * u
+    return node_inv + dt * c * t / q + _short_series(dt / q)
 
 
 def t_minus_atan_float(t: float) -> float:

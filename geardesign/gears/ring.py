@@ -188,6 +188,7 @@ class CuttingMesh(NamedTuple):
     d_f2: object        # the ring's root diameter, 2 a_w0 + d_a0
     rho_form2: object   # radius of curvature where the ring's involute starts (its form circle), mm
     drho_form2_dx2: object   # ∂rho_form2/∂x2, mm
+    n0n2: object        # a_w0 sin α_w0: on the ring, the cutter's interference point N0, mm
 
 
 @functools.lru_cache(maxsize=64)
@@ -241,6 +242,6 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
         dtrim = trimming_margin_gradient(z0, z2, r_b0 / r_a0, r_b2 / r_a2, r_a2, rho_a2 / r_b2, m_n,
                                          2.0 * tan_n / (z2 - z0))
     # a_w0 sin α_w0 = m_t (z2 − z0) cos α_t tan α_w0 / 2; d tan α_w0 / d inv α_w0 = (1 + t²)/t²
-    rho_form2 = rho_a0 + m_t * (z2 - z0) * cos_t * t_w0 / 2.0
+    n0n2 = m_t * (z2 - z0) * cos_t * t_w0 / 2.0
     drho = m_t * cos_t * tan_n * (1.0 + t_w0 * t_w0) / (t_w0 * t_w0)
-    return CuttingMesh(z0, a_w0, r_a0, inv_w0, trim, dtrim, 2.0 * a_w0 + 2.0 * r_a0, rho_form2, drho)
+    return CuttingMesh(z0, a_w0, r_a0, inv_w0, trim, dtrim, 2.0 * a_w0 + 2.0 * r_a0, rho_a0 + n0n2, drho, n0n2)
