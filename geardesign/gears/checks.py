@@ -525,7 +525,8 @@ class CutterInterference(Check):
 
     def gradient(self, geo):
         m = geo["_m"]
-        # ρ_a2² = r_a2² − r_b2², ∂r_a2/∂x2 = m (the ring's tip moves out with x2); ∂N0N2/∂x2 = ∂ρ_F2/∂x2 (ρ_a0 is the cutter's)
+        # ρ_a2² = r_a2² − r_b2², ∂r_a2/∂x2 = m (the ring's tip moves out with x2);
+        # ∂N0N2/∂x2 = ∂ρ_F2/∂x2 (ρ_a0 is the cutter's)
         return 0.0, (m * geo["_ra2"] / geo["_rho_a2"] - _cutting_mesh(geo, self.cutter).drho_form2_dx2) / m
 
 
