@@ -33,13 +33,8 @@ def run(args) -> int:
         raise GearDesignError(f"{args.scene}: no [drive] section (this command runs only that section)")
     target = check_output_path(args.plot, overwrite=args.overwrite) if args.plot else None
     bar = Progress(1, "drive: gear pairs")
-
-    def progress(done, total):
-        bar.total = max(total, 1)
-        bar.update(done - bar.done)
-
     try:
-        drive, motor, opt, an = compute_drive(scene.sections["drive"], progress)
+        drive, motor, opt, an = compute_drive(scene.sections["drive"], bar.to)
     finally:
         if bar.done:
             bar.close()

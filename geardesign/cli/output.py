@@ -46,6 +46,13 @@ class Progress:
             self.stream.write(f"\r{self.label} [{bar:<30}] {shown}/{self.total}")
             self.stream.flush()
 
+    def to(self, done: int, total: int, label: str | None = None) -> None:
+        """Show ``done`` of ``total`` (a callback that reports counts rather than steps)."""
+        self.total = max(int(total), 1)
+        if label is not None:
+            self.label = label
+        self.update(done - self.done)
+
     def close(self) -> None:
         if self.enabled:
             self.stream.write("\n")

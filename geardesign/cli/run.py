@@ -28,13 +28,9 @@ def run(args) -> int:
     from ..scene import run_scene
 
     bar = Progress(1, "scene")
-
-    def progress(done, total, section):
-        bar.total, bar.label = max(total, 1), f"scene [{section}]"
-        bar.update(done - bar.done)
-
     try:
-        rep = run_scene(args.scene, args.out, overwrite=args.overwrite, progress=progress)
+        rep = run_scene(args.scene, args.out, overwrite=args.overwrite,
+                        progress=lambda done, total, section: bar.to(done, total, f"scene [{section}]"))
     finally:
         if bar.done:
             bar.close()

@@ -65,16 +65,11 @@ def run(args) -> int:
     if args.out:
         check_output_path(args.out, overwrite=args.overwrite, suffixes=(".csv",), what="--out")
     bar = Progress(0, "solving shifts")
-
-    def progress(done, total):
-        bar.total = total
-        bar.update(done - bar.done)
-
     try:
         sel = select_teeth(args.ratio, ratio_tol=args.ratio_tol, m=m, a_w=a_w, z1_range=(args.z1_min, args.z1_max),
                            z_sum_max=args.z_sum_max, objective=args.objective,
                            checks=limits_from_args(args), rack=rack_from_args(args), method=args.method,
-                           m_range=m_range, progress=progress, **kind_from_args(args))
+                           m_range=m_range, progress=bar.to, **kind_from_args(args))
     finally:
         if bar.done:
             bar.close()

@@ -51,3 +51,16 @@ def test_progress_only_on_a_terminal():
     frames = tty.getvalue().split("\r")[1:]
     assert frames[0] == "walk [" + "#" * 15 + " " * 15 + "] 2/4"
     assert frames[1] == "walk [" + "#" * 30 + "] 4/4\n"
+
+
+def test_progress_to_takes_counts_and_a_zero_total():
+    """Callbacks report (done, total): the bar shows them as given; a total of 0 (nothing to solve yet)
+    is shown as 0/1, not a division by zero."""
+    tty = _Tty()
+    bar = Progress(1, "walk", stream=tty)
+    bar.to(0, 0)
+    bar.to(3, 6, "run")
+    bar.close()
+    frames = tty.getvalue().split("\r")[1:]
+    assert frames[0] == "walk [" + " " * 30 + "] 0/1"
+    assert frames[1] == "run [" + "#" * 15 + " " * 15 + "] 3/6\n"
