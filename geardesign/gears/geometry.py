@@ -107,7 +107,7 @@ GEOMETRY_FIELDS: dict[str, tuple[str, str]] = {
 
 
 # Fields that no check or objective of the library needs: computed only when asked for.
-REPORT_FIELDS = frozenset({"s1", "s2", "sw1", "sw2", "p_w", "alpha_a1_deg", "alpha_a2_deg", "clearance1",
+REPORT_FIELDS = frozenset({"alpha_w_deg", "s1", "s2", "sw1", "sw2", "p_w", "alpha_a1_deg", "alpha_a2_deg", "clearance1",
                            "clearance2", "d_l1", "d_l2", "d_p1", "d_p2", "o2n1", "o1n2", "sliding1_tip",
                            "sliding2_tip", "alpha_t_deg", "beta_b_deg", "m_t", "z_n1", "z_n2"})
 
@@ -251,12 +251,12 @@ def exact_sum_nodes(lo: float, hi: float, n: int) -> np.ndarray:
 # formulas run on either; floats skip numpy's per-call overhead (~1 µs a call), which is
 # what a single-pair optimiser pays ~200 times per evaluation.
 _ARRAY_OPS = SimpleNamespace(
-    sqrt=np.sqrt, sin=np.sin, atan=np.arctan, degrees=np.degrees,
+    sqrt=np.sqrt, atan=np.arctan, degrees=np.degrees,
     positive=lambda v: np.maximum(v, 0.0), t_minus_atan=t_minus_atan,
     tan_from_inv=lambda v: tan_from_inv(np.where(v > 0, v, np.nan), validate=False, polish=False),
     per_distinct=_per_distinct)
 _FLOAT_OPS = SimpleNamespace(
-    sqrt=_float_sqrt, sin=math.sin, atan=math.atan, degrees=math.degrees,
+    sqrt=_float_sqrt, atan=math.atan, degrees=math.degrees,
     positive=lambda v: v if v > 0.0 else 0.0 * v, t_minus_atan=t_minus_atan_float,
     tan_from_inv=_float_tan_from_inv, per_distinct=lambda func, v: func(v))
 
@@ -315,8 +315,8 @@ def _section_constants(rack: BasicRack, beta_deg: float) -> tuple:
             rack.h_limit, sc.tan_n, sc.cos_beta, sc.cos_beta_b)
 
 
-def _operating_angle(D, alpha, ta, inv_a, ops):
-    """inv α_w, tan α_w and α_w − α from D = inv α_w − inv α = 2 x_Σ tan α / z_Σ."""
+def _operating_angle(D, ta, inv_a, ops):
+    """inv α_w, tan α_w and tan α_w − tan α from D = inv α_w − inv α = 2 x_Σ tan α / z_Σ."""
     inv_aw = inv_a + D
     t_w = ops.tan_from_inv(inv_aw)
     # Refine Δt = tan α_w − tan α itself, so that α_w − α keeps its digits when it is small:
@@ -327,8 +327,7 @@ def _operating_angle(D, alpha, ta, inv_a, ops):
     q = 1.0 + ta * t_w
     resid = dt * ta * t_w / q + ops.t_minus_atan(dt / q) - D
     dt = dt - resid * (1.0 + t_w * t_w) / (t_w * t_w)
-    t_w = ta + dt
-    return inv_aw, t_w, ops.atan(dt / (1.0 + ta * t_w))
+    return inv_aw, ta + dt, dt
 
 
 def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
@@ -343,15 +342,15 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     xs = x2 - x1 if internal else x1 + x2
     zt1, zt2 = z1 / cb, z2 / cb                # d/m_n: the reference diameters in normal modules
 
-    inv_aw, t_w, delta = ops.per_distinct(lambda D: _operating_angle(D, alpha, ta, inv_a, ops),
-                                          2.0 * xs * tn / zs)
+    inv_aw, t_w, dt_w = ops.per_distinct(lambda D: _operating_angle(D, ta, inv_a, ops),
+                                         2.0 * xs * tn / zs)
     cos_w = 1.0 / ops.sqrt(1.0 + t_w * t_w)
     sin_w = t_w * cos_w
-    alpha_w = alpha + delta
 
     a = m * zs / cb / 2.0
-    # cos α − cos α_w = 2 sin(α + δ/2) sin(δ/2): no cancellation
-    y = zs / cb * ops.sin(alpha + delta / 2.0) * ops.sin(delta / 2.0) / cos_w
+    # y = a (cos α − cos α_w)/(m cos α_w), cos α − cos α_w = (cos²α − cos²α_w)/(cos α + cos α_w)
+    # = Δt (tan α + tan α_w) cos²α cos²α_w/(cos α + cos α_w), Δt = tan α_w − tan α: no cancellation
+    y = zs / (2.0 * cb) * dt_w * (ta + t_w) * (ca * ca) * cos_w / (ca + cos_w)
     a_w = a + y * m
     dy = xs - y
     # GOST 16532-70 shortens both tips of an external pair by Δy·m; internal pairs keep their tips
@@ -438,7 +437,6 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     eps_beta = _overlap_ratio(mesh, m, ops)
 
     out = {
-        "alpha_w_deg": ops.degrees(alpha_w),
         "inv_alpha_w": inv_aw,
         "a": a, "a_w": a_w, "y": y, "dy": dy,
         "d1": d1, "d2": d2, "db1": db1, "db2": db2, "dw1": dw1, "dw2": dw2,
@@ -461,6 +459,7 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     }
     if full:   # the fields no check or objective of the library needs: only for reports
         out.update({
+            "alpha_w_deg": ops.degrees(alpha + ops.atan(dt_w / (1.0 + ta * t_w))),   # α_w = α + atan Δt/(1 + t t_w)
             "s1": d1 * (psi1 - inv_a), "s2": d2 * (psi2 + inv_a) if internal else d2 * (psi2 - inv_a),
             "sw1": dw1 * (psi1 - inv_aw), "sw2": dw2 * (psi2 + inv_aw) if internal else dw2 * (psi2 - inv_aw),
             "p_w": math.pi * dw1 / z1,

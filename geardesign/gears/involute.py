@@ -4,10 +4,10 @@ All functions take and return radians (or the dimensionless tangent), broadcast 
 arrays, and return a Python float when every argument is a scalar.
 
 Why not just ``tan(a) - a``: for small angles the two terms cancel (inv α ≈ α³/3), so the
-plain difference loses ~log10(3/α²) digits. t − atan t (t = tan α) is therefore taken in three
-ranges: its Taylor series below |t| = 0.12; between 0.12 and 0.9 from a tabled node c <= t and
-the short step t − c (the tangent subtraction formula, no cancellation); the plain difference
-above 0.9, where it keeps all but ~3ε/t² of its digits (each within 3 ulp of a 40-digit value).
+plain difference loses ~log10(3/α²) digits. t − atan t (t = tan α) is therefore taken from a
+tabled node c <= |t| and the short step |t| − c (the tangent subtraction formula, no
+cancellation) below |t| = 8, the plain difference above, where it keeps all but ~3ε/t² of its
+digits (each within 3 ulp of a 40-digit value).
 Arrays passed to the public :func:`inv` and :func:`inv_from_tan` take the half-angle form
 (:func:`_t_minus_atan`) throughout.
 """
@@ -54,39 +54,31 @@ def _t_minus_atan(t, sqrt=np.sqrt):
     return acc + scale * ser * s2 * s
 
 
-_SHORT_T = 0.12                      # |t|² < 0.0144: nine terms of the series suffice
-_SHORT_COEF = _SERIES_COEF[:9]
-_SHORT_HORNER = _SHORT_COEF[-2::-1]
-# Above this |t| the plain difference t − atan t keeps all but ~3ε/t² <= 8.2e-16 of its relative
-# precision (the 50-digit tests hold it to 1e-12 everywhere); below it the series is needed.
-DIRECT_T = 0.9
-
-
-def _short_series(t):
-    """t − atan t for |t| < _SHORT_T: its Taylor series, 9 terms (3e-18 relative)."""
-    t2 = t * t
-    ser = _SHORT_COEF[-1]
-    for c in _SHORT_HORNER:
-        ser = ser * t2 + c
-    return ser * t2 * t
-
-
-# Between _SHORT_T and DIRECT_T: from the node c = ⌊32 t⌋/32 below t, whose c − atan c is tabled,
-# t − atan t = (c − atan c) + Δt·c t/(1 + c t) + (u − atan u), u = Δt/(1 + c t) < 1/32, Δt = t − c
-# (exact): three terms of one sign, the last the short series (u < 1/32 < _SHORT_T).
-# atan t − atan c = atan u is the tangent subtraction formula. ~25 array operations where the
-# half-angle form takes ~55.
+# From the node c = ⌊32|t|⌋/32 below |t| < TABLE_T, whose c − atan c is tabled,
+# t − atan t = (c − atan c) + c t u + (u − atan u), u = Δt/(1 + c t) < 1/32, Δt = t − c (exact):
+# atan t − atan c = atan u is the tangent subtraction formula, the three terms have one sign (no
+# cancellation), and u − atan u is six terms of its series (|u| < 1/32: 2e-19 relative). One path
+# for every t below TABLE_T, no masks; above it the plain difference keeps all but ~3ε/t² of its
+# digits. ~25 array operations where the half-angle form takes ~55.
 _NODES_PER_UNIT = 32
+TABLE_T = 8.0
+_STEP_COEF = _SERIES_COEF[:6]
+_STEP_HORNER = _STEP_COEF[-2::-1]
 _NODE_INV = tuple(_t_minus_atan(k / _NODES_PER_UNIT, math.sqrt) if k else 0.0
-                  for k in range(int(DIRECT_T * _NODES_PER_UNIT) + 1))
+                  for k in range(int(TABLE_T * _NODES_PER_UNIT)))
 _NODE_INV_ARRAY = np.array(_NODE_INV)
 
 
-def _from_node(t, c, node_inv):
-    """t − atan t from the node c <= t (c − atan c = node_inv); arrays or floats alike."""
-    dt = t - c
-    q = 1.0 + c * t
-    return node_inv + dt * c * t / q + _short_series(dt / q)
+def _from_node(a, k, node_inv):
+    """a − atan a (0 <= a < TABLE_T) from its node k = ⌊32 a⌋ (node_inv its tabled value); arrays or floats."""
+    c = k * (1.0 / _NODES_PER_UNIT)
+    ca = c * a
+    u = (a - c) / (1.0 + ca)
+    u2 = u * u
+    ser = _STEP_COEF[-1]
+    for coef in _STEP_HORNER:
+        ser = ser * u2 + coef
+    return node_inv + ca * u + ser * u2 * u
 
 
 def t_minus_atan_float(t: float) -> float:
@@ -97,37 +89,31 @@ def t_minus_atan_float(t: float) -> float:
     True
     """
     a = abs(t)
-    if a < _SHORT_T:               # the Taylor series itself (the common small u)
-        return _short_series(t)
-    if not a < DIRECT_T:           # the plain difference (NaN and inf too)
+    if not a < TABLE_T:           # the plain difference (NaN and inf too)
         return t - math.atan(t)
     k = int(a * _NODES_PER_UNIT)
-    v = _from_node(a, k / _NODES_PER_UNIT, _NODE_INV[k])
+    v = _from_node(a, k, _NODE_INV[k])
     return v if t > 0 else -v
 
 
 def t_minus_atan(t: np.ndarray) -> np.ndarray:
-    """t − atan t for an array, in the three ranges of :func:`t_minus_atan_float`: the plain
-    difference where |t| >= DIRECT_T, the short series where |t| < _SHORT_T (the refinement steps of
-    the operating angle and the helical thicknesses, where t is a small difference), the tabled
-    node and its short step (:func:`_from_node`) between."""
-    t0 = np.asarray(t)
-    t = np.atleast_1d(t0)
-    with np.errstate(invalid="ignore"):
-        a = np.abs(t)
-        small = a < _SHORT_T
-        if small.all():   # every t small: no gather and scatter
-            out = _short_series(t)
-        else:
-            out = t - np.arctan(t)
-            mid = (a < DIRECT_T) & ~small
-            if small.any():
-                out[small] = _short_series(t[small])
-            if mid.any():
-                tm = a[mid]
-                k = (tm * _NODES_PER_UNIT).astype(np.intp)
-                out[mid] = np.copysign(_from_node(tm, k / _NODES_PER_UNIT, _NODE_INV_ARRAY[k]), t[mid])
-    return out.reshape(t0.shape)
+    """t − atan t for an array: the tabled node and its step (:func:`_from_node`) below TABLE_T,
+    the plain difference above (and for NaN)."""
+    t0 = np.asarray(t, dtype=float)
+    t = t0.reshape(-1)
+    if t.size == 0:
+        return t0.copy()
+    a = np.abs(t)
+    beyond = not a.max() < TABLE_T   # NaN too
+    if beyond:
+        inside = a < TABLE_T
+        a = np.where(inside, a, 0.0)
+    k = (a * _NODES_PER_UNIT).astype(np.intp)
+    out = _from_node(a, k, _NODE_INV_ARRAY.take(k))
+    if beyond:
+        with np.errstate(invalid="ignore"):
+            out = np.where(inside, out, np.abs(t) - np.arctan(np.abs(t)))
+    return np.copysign(out, t).reshape(t0.shape)
 
 
 def inv_from_tan(t):

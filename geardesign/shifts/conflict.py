@@ -29,7 +29,7 @@ def smallest_conflict(prob: Problem, bounds=DEFAULT_BOUNDS, n: int = 161) -> lis
                 continue
             sub_prob = prob.subproblem(sub)
             # maximise the smallest margin of the subset
-            w, _, ev = slsqp(MinMargin(sub_prob), V[i], bounds, ftol=1e-12, pieces_only=True)
+            w, _, _, _ = slsqp(MinMargin(sub_prob), V[i], bounds, ftol=1e-12, pieces_only=True)
             if w[-1] < -1e-9:
                 return [prob.names[j] for j in sub]
     return []

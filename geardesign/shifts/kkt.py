@@ -154,17 +154,21 @@ def _polish(prob: Problem, w, ev: Evaluator, tol: float, act_tol=1e-5):
 
 
 def exact_from(prob: Problem, ev: Evaluator, v0, bounds, tol, h):
-    """One local exact solve from the feasible point v0: (w, iterations, message)."""
+    """One local exact solve from the feasible point v0: (w, iterations, message, edge), edge True
+    when SLSQP failed without a KKT point after walking to where the pair stops existing."""
     nv = prob.nvar
     w0 = np.append(v0, ev(v0)[0].min())
     found = _first_kkt_point(prob, ev, w0, *_near(ev, nv, w0, reach=2.2 * h), max_move=3 * h)
     if found is not None:
-        return found[0], found[3], "converged: KKT system of the active set solved by Newton from a grid node"
-    w, nit, ev_s = slsqp(prob, v0, bounds)
+        return found[0], found[3], "converged: KKT system of the active set solved by Newton from a grid node", False
+    w, nit, ev_s, ok = slsqp(prob, v0, bounds)
     polished = _polish(prob, w, ev_s, tol)
     if polished is not None:
-        return polished[0], nit, "converged: SLSQP, then Newton on the KKT system of its active set"
-    return w, nit, "converged (SLSQP; active-set polish not applicable)"
+        return polished[0], nit, "converged: SLSQP, then Newton on the KKT system of its active set", False
+    # Where SLSQP stops after a failed line search depends on the last digits of the margins
+    # near the edge (on it or just inside): the edge is recognised by SLSQP having reached it.
+    edge = not ok and ev_s.missing > 0
+    return w, nit, "converged (SLSQP; active-set polish not applicable)", edge
 
 
 _NO_OPTIMUM = ("no optimum: {objective} keeps improving toward the edge where the pair stops existing "
@@ -185,14 +189,14 @@ def solve(prob: Problem, starts: list, bounds, tol: float, h: float) -> Outcome:
     nv = prob.nvar
     best, nit = None, 0
     for v0 in starts:
-        w, it, msg = exact_from(prob, ev, v0, bounds, tol, h)
+        w, it, msg, edge = exact_from(prob, ev, v0, bounds, tol, h)
         nit += it
         Mw = ev(w[:nv])[1]
-        score = w[-1] if not (Mw.size and Mw.min() < -tol) else -math.inf
+        score = w[-1] if not (edge or (Mw.size and Mw.min() < -tol)) else -math.inf
         if best is None or score > best[0] + 1e-12:
-            best = (score, w, msg)
-    score, w, msg = best
-    if score == -math.inf and not _exists(prob, w[:nv]):
+            best = (score, w, msg, edge)
+    score, w, msg, edge = best
+    if score == -math.inf and (edge or not _exists(prob, w[:nv])):
         return Outcome(starts[0], nit, False, _NO_OPTIMUM.format(objective=prob.objective.name))
     Mv = ev(w[:nv])[1][:len(prob.part_check)]
     ok = not (Mv.size and Mv.min() < -tol)

@@ -26,6 +26,7 @@ class Evaluator:
         self.prob = prob
         self.cache = {}
         self.nfev = 0
+        self.missing = 0   # points where the pair's geometry does not exist (a solver walked to its edge)
         self.window = window
         if window is not None:
             eye = np.eye(prob.nvar)
@@ -41,6 +42,7 @@ class Evaluator:
                 M = np.concatenate((M, v - self.window[0], self.window[1] - v))
                 GM = np.concatenate((GM, self._window_rows))
             if not (np.isfinite(M).all() and np.isfinite(P).all()):
+                self.missing += 1
                 P, M = np.nan_to_num(P, nan=-BIG, neginf=-BIG), np.nan_to_num(M, nan=-BIG, neginf=-BIG)
                 GP, GM = np.nan_to_num(GP), np.nan_to_num(GM)
             val = (P, M, GP, GM)
@@ -61,7 +63,8 @@ def window_box(prob: Problem, bounds):
 
 
 def slsqp(prob: Problem, v0, bounds, ftol=1e-15, maxiter=200, pieces_only=False):
-    """SLSQP on w = (v, t): maximise t s.t. pieces − t >= 0, margins >= 0."""
+    """SLSQP on w = (v, t): maximise t s.t. pieces − t >= 0, margins >= 0: (w, iterations, the
+    evaluator, whether SLSQP reports success)."""
     ev = Evaluator(prob)
     nv = prob.nvar
     P0, M0, _, _ = ev(v0)
@@ -83,7 +86,7 @@ def slsqp(prob: Problem, v0, bounds, ftol=1e-15, maxiter=200, pieces_only=False)
                    constraints=[{"type": "ineq", "fun": cons, "jac": cons_jac}],
                    bounds=list(zip(lo, hi)) + [(None, None)], method="SLSQP",
                    options={"ftol": ftol, "maxiter": maxiter})
-    return res.x, res.nit, ev
+    return res.x, res.nit, ev, bool(res.success)
 
 
 class MinMargin:
@@ -113,7 +116,7 @@ def central_point(prob: Problem, V, M, bounds) -> np.ndarray:
     V (M its margins), by SLSQP; t >= 0 is a feasible point of a region thinner than the grid."""
     worst = M.min(axis=0) if M.size else np.zeros(V.shape[0])
     i = int(np.argmax(worst))
-    w, _, ev = slsqp(MinMargin(prob), V[i], bounds, ftol=1e-12, pieces_only=True)
+    w, _, ev, _ = slsqp(MinMargin(prob), V[i], bounds, ftol=1e-12, pieces_only=True)
     if not w[-1] > worst[i] and not (ev(w[:-1])[0] > -BIG).all():
         # SLSQP left for where the design stops existing (margins −BIG): the node it started from
         # is the better answer

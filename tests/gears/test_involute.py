@@ -36,15 +36,15 @@ def test_inv_against_mpmath():
 
 
 
-def test_t_minus_atan_in_its_three_ranges_against_mpmath():
-    """The geometry's t − atan t (array and float) to 1e-15 relative on −1.2 … 1.2: the series
-    below 0.12, the tabled node and its step up to 0.9 (both sides of every node and of both
-    switches), the plain difference above."""
-    from geardesign.gears.involute import t_minus_atan, t_minus_atan_float
+def test_t_minus_atan_tabled_and_plain_against_mpmath():
+    """The geometry's t − atan t (array and float) to 1e-15 relative on −10 … 10: the tabled node
+    and its step below 8 (both sides of every node, tiny t on node 0), the plain difference above
+    (both sides of the switch), NaN and inf passed through."""
+    from geardesign.gears.involute import TABLE_T, t_minus_atan, t_minus_atan_float
 
-    nodes = np.arange(1, 30) / 32
-    t = np.concatenate([np.linspace(1e-6, 1.2, 3001), nodes, np.nextafter(nodes, 0), np.nextafter(nodes, 1),
-                        [0.12, np.nextafter(0.12, 0), 0.9, np.nextafter(0.9, 0)]])
+    nodes = np.arange(1, int(TABLE_T * 32) + 1) / 32
+    t = np.concatenate([np.geomspace(1e-9, 1e-2, 200), np.linspace(1e-6, 10.0, 3001), nodes,
+                        np.nextafter(nodes, 0), np.nextafter(nodes, 10)])
     t = np.concatenate([t, -t])
     arr = t_minus_atan(t)
     worst = 0.0
@@ -53,6 +53,11 @@ def test_t_minus_atan_in_its_three_ranges_against_mpmath():
         for ours in (ai, t_minus_atan_float(float(ti))):
             worst = max(worst, float(abs(mp.mpf(float(ours)) - r) / abs(r)))
     assert worst <= 1e-15, worst
+    odd = np.array([np.nan, np.inf, -np.inf, 0.0])
+    got = t_minus_atan(odd)
+    assert np.isnan(got[0]) and got[1] == np.inf and got[2] == -np.inf and got[3] == 0.0
+    assert math.isnan(t_minus_atan_float(math.nan)) and t_minus_atan_float(0.0) == 0.0
+    assert t_minus_atan(np.empty((0, 3))).shape == (0, 3)
 
 
 
