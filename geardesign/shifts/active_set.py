@@ -22,20 +22,29 @@ def solve_small(A: list, b: list) -> list:
     """x with A x = b for a square system of a few rows: Gaussian elimination with partial
     pivoting. Raises LinAlgError when A is singular to working precision."""
     n = len(b)
-    A = [row[:] + [bi] for row, bi in zip(A, b)]
-    scale = max((abs(a) for row in A for a in row[:n]), default=0.0)
+    rows = [row[:n] + [bi] for row, bi in zip(A, b)]
+    tiny = 1e-14 * max(max(map(abs, row[:n])) for row in rows) if n else 0.0
     for c in range(n):
-        p = max(range(c, n), key=lambda r: abs(A[r][c]))
-        if abs(A[p][c]) <= 1e-14 * scale:
-            raise np.linalg.LinAlgError("singular active-set system")
-        A[c], A[p] = A[p], A[c]
+        p = c
         for r in range(c + 1, n):
-            f = A[r][c] / A[c][c]
+            if abs(rows[r][c]) > abs(rows[p][c]):
+                p = r
+        piv = rows[p]
+        if abs(piv[c]) <= tiny:
+            raise np.linalg.LinAlgError("singular active-set system")
+        rows[c], rows[p] = piv, rows[c]
+        for r in range(c + 1, n):
+            row = rows[r]
+            f = row[c] / piv[c]
             if f:
-                A[r] = [a - f * ac for a, ac in zip(A[r], A[c])]
+                rows[r] = [a - f * ac for a, ac in zip(row, piv)]
     x = [0.0] * n
     for c in range(n - 1, -1, -1):
-        x[c] = (A[c][n] - sum(A[c][k] * x[k] for k in range(c + 1, n))) / A[c][c]
+        row = rows[c]
+        acc = row[n]
+        for k in range(c + 1, n):
+            acc -= row[k] * x[k]
+        x[c] = acc / row[c]
     return x
 
 

@@ -31,15 +31,15 @@ class Evaluator:
         if window is not None:
             eye = np.eye(prob.nvar)
             self._window_rows = np.concatenate((eye, -eye))
+            self._lo, self._hi = [float(c) for c in window[0]], [float(c) for c in window[1]]
 
     def __call__(self, v):
-        key = tuple(float(c) for c in v)
+        key = tuple(map(float, v))
         val = self.cache.get(key)
         if val is None:
-            v = np.array(key)
             P, M, GP, GM = self.prob.evaluate_point(key)
             if self.window is not None:
-                M = np.concatenate((M, v - self.window[0], self.window[1] - v))
+                M = np.concatenate((M, [a - b for a, b in zip(key, self._lo)] + [b - a for a, b in zip(key, self._hi)]))
                 GM = np.concatenate((GM, self._window_rows))
             if not (np.isfinite(M).all() and np.isfinite(P).all()):
                 self.missing += 1

@@ -69,19 +69,18 @@ def grid_starts(prob: Problem, V: np.ndarray, n: int):
         idx = [int(np.ravel_multi_index(p, shape)) for p in best_of]
     best = score.max()
     # beyond two nodes of every feasible node, better than all of them
-    far = ~ndimage.binary_dilation(feasible.reshape(shape), structure=box, iterations=2).ravel()
+    far = ~ndimage.maximum_filter(feasible.reshape(shape), size=5, mode="constant", cval=False).ravel()
     cand = far & (fun > best)
     if M.size and cand.any():
-        h = (V[-1, 0] - V[0, 0]) / (n - 1)
         Mg = np.where(np.isfinite(M), M, np.nan).reshape((-1,) + shape)
-        slope = np.zeros_like(Mg)
-        for ax in range(1, prob.nvar + 1):    # largest one-node change along either axis, per unit x
-            d = np.moveaxis(np.abs(np.diff(Mg, axis=ax)) / h, ax, -1)
-            s = np.moveaxis(slope, ax, -1)    # a view: the updates land in slope
-            s[..., 1:] = np.fmax(s[..., 1:], d)     # the change to the node before
-            s[..., :-1] = np.fmax(s[..., :-1], d)   # and to the node after (NaN where one is missing)
+        step = np.zeros_like(Mg)   # the largest one-node change of each margin, along either axis
+        for ax in range(1, prob.nvar + 1):
+            d = np.moveaxis(np.abs(np.diff(Mg, axis=ax)), ax, -1)
+            s = np.moveaxis(step, ax, -1)    # a view: the updates land in step
+            np.fmax(s[..., 1:], d, out=s[..., 1:])     # the change to the node before
+            np.fmax(s[..., :-1], d, out=s[..., :-1])   # and to the node after (NaN where one is missing)
         with np.errstate(invalid="ignore"):
-            near = ((M >= 0) | (-M <= h * slope.reshape(M.shape))).all(axis=0)
+            near = ((M >= 0) | (-M <= step.reshape(M.shape))).all(axis=0)
         near_score = np.where(cand & near, fun, -np.inf).reshape(shape)
         if np.isfinite(near_score).any():
             peak = np.isfinite(near_score) & (near_score >= ndimage.maximum_filter(near_score, footprint=box,

@@ -217,21 +217,26 @@ class Problem:
 
     def evaluate_geo(self, geo, parts: bool = False):
         """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict
-        (margins per check, or per smooth part with ``parts``)."""
-        def margins_and_gradients(g):
-            return (np.array(self._margin_values(g, parts), dtype=float),
-                    np.array(self._margin_gradient_values(g, parts), dtype=float).reshape(-1, 2))
+        (margins per check, or per smooth part with ``parts``); a margin that does not exist is −inf."""
+        if type(geo["a"]) is not float:   # 0-d arrays: boundaries of existence give inf/NaN quietly
+            with np.errstate(all="ignore"):
+                return self._evaluate_geo(geo, parts)
+        return self._evaluate_geo(geo, parts)
 
-        with np.errstate(all="ignore"):   # boundaries of existence give inf/NaN, handled below
-            M, GM = margins_and_gradients(geo)
-            if self.objective.kind == "margin":
-                P = _normalise(M, GM)
-                GP = np.array(self._central(lambda g: _normalise(*margins_and_gradients(g)), geo)).T
-            else:
-                P = np.array(self._piece_values(geo), dtype=float)
-                GP = np.array(self._piece_gradient_values(geo), dtype=float).reshape(-1, 2)
-        if np.isnan(M).any():
-            M = np.where(np.isnan(M), -np.inf, M)
+    def _margins_and_gradients(self, g, parts: bool):
+        M = self._margin_values(g, parts)
+        if any(v != v for v in M):   # NaN: the margin does not exist here
+            M = [v if v == v else -np.inf for v in M]
+        return np.array(M, dtype=float), np.array(self._margin_gradient_values(g, parts), dtype=float).reshape(-1, 2)
+
+    def _evaluate_geo(self, geo, parts: bool):
+        M, GM = self._margins_and_gradients(geo, parts)
+        if self.objective.kind == "margin":
+            P = _normalise(M, GM)
+            GP = np.array(self._central(lambda g: _normalise(*self._margins_and_gradients(g, parts)), geo)).T
+        else:
+            P = np.array(self._piece_values(geo), dtype=float)
+            GP = np.array(self._piece_gradient_values(geo), dtype=float).reshape(-1, 2)
         return P, M, GP, GM
 
     def _free(self, G):
