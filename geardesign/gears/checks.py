@@ -754,6 +754,5 @@ def margins(geo: dict, checks) -> dict[str, np.ndarray]:
     """Margin arrays by check name; NaN geometry (designs that do not exist) gives −inf."""
     out = {}
     for c in checks:
-        mg = np.asarray(c.margin(geo), dtype=float)
-        out[c.name] = np.where(np.isnan(mg), -np.inf, mg)
+        out[c.name] = np.fmax(c.margin(geo), -np.inf)   # fmax passes the number where one is NaN
     return out

@@ -344,8 +344,8 @@ def _operating_angle(D, ta, inv_a, ops):
 def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     """Every field of the pair; ``m`` is the normal module, x1/x2 normal shifts, and the circles,
     angles, thicknesses and the path of contact are transverse (ISO 21771:2007 §4–5). Spur
-    pairs run the very same operations as before helical ones existed: z/cos β is z itself and
-    every factor cos β or cos β_b is 1.0, so the spur results are bit-for-bit unchanged."""
+    pair is a helical one with z/cos β = z and every factor cos β or cos β_b = 1.0; only its tip
+    involutes take the plain t − atan t."""
     rack, internal = mesh.rack, mesh.internal
     alpha, sa, ca, ta, inv_a, s2h, h_limit, tn, cb, cbb = _section_constants(rack, mesh.beta_deg)
     # z1 + z2 and x1 + x2 of an external pair, z2 − z1 and x2 − x1 of an internal one (GOST 19274-73)
@@ -369,51 +369,57 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
 
     d1, d2 = m * zt1, m * zt2
     db1, db2 = d1 * ca, d2 * ca
-    dw1, dw2 = d1 * ca / cos_w, d2 * ca / cos_w
+    rb1, rb2 = db1 / 2.0, db2 / 2.0
+    rw1, rw2 = rb1 / cos_w, rb2 / cos_w        # operating pitch radii r_b/cos α_w
+    m2 = 2.0 * m
     hf = rack.ha + rack.c
-    da1 = d1 + 2.0 * m * (rack.ha + x1 - k)
-    df1 = d1 - 2.0 * m * (hf - x1)
+    s2a = sa * sa / 2.0
+    # tip heights over the reference circle in modules: h_a* + x − k; a ring's tip lies inside it
+    h1 = rack.ha + x1 - k
+    h2 = rack.ha - x2 - k if internal else rack.ha + x2 - k
+    # s/d = (π/2 + 2 x tan α_n)/z (a ring's tooth is its counter-rack's gap: minus), ψ = s/d ± inv α
+    s_d1 = (math.pi / 2.0 + 2.0 * x1 * tn) / z1
+    s_d2 = (math.pi / 2.0 - 2.0 * x2 * tn if internal else math.pi / 2.0 + 2.0 * x2 * tn) / z2
+    da1 = d1 + m2 * h1
+    df1 = d1 - m2 * (hf - x1)
     # r_a − r_b = m (z sin²(α/2) + h_a* + x − k): exact when the tip is near the base circle
-    gap1 = m * (zt1 * s2h + rack.ha + x1 - k)
-    psi1 = math.pi / (2.0 * z1) + 2.0 * x1 * tn / z1 + inv_a   # s/d + inv α
-    x_min1 = h_limit - zt1 * sa * sa / 2.0
+    gap1 = m * (zt1 * s2h + rack.ha + x1 - k)   # terms that cancel at a tip near the base circle: kept as they are
+    psi1 = s_d1 + inv_a   # s/d + inv α
+    x_min1 = h_limit - zt1 * s2a
     rho_l1 = m * (x1 - x_min1) / sa
     if internal:   # the ring: tips inside the reference circle, roots outside, flanks concave
-        da2 = d2 - 2.0 * m * (rack.ha - x2 - k)
-        df2 = d2 + 2.0 * m * (hf + x2)
+        da2 = d2 - m2 * h2
+        df2 = d2 + m2 * (hf + x2)
         gap2 = m * (zt2 * s2h - rack.ha + x2 + k)
-        psi2 = math.pi / (2.0 * z2) - 2.0 * x2 * tn / z2 - inv_a   # s/d − inv α: s_y = d_y(ψ + inv α_y)
+        psi2 = s_d2 - inv_a   # s/d − inv α: s_y = d_y(ψ + inv α_y)
         x_min2 = math.nan * x2                 # a ring is not undercut by its generating counter-rack
-        rho_l2 = m * (zt2 * sa * sa / 2.0 + h_limit + x2) / sa   # the form limit near the ring's root
+        rho_l2 = m * (zt2 * s2a + h_limit + x2) / sa   # the form limit near the ring's root
     else:
-        da2 = d2 + 2.0 * m * (rack.ha + x2 - k)
-        df2 = d2 - 2.0 * m * (hf - x2)
+        da2 = d2 + m2 * h2
+        df2 = d2 - m2 * (hf - x2)
         gap2 = m * (zt2 * s2h + rack.ha + x2 - k)
-        psi2 = math.pi / (2.0 * z2) + 2.0 * x2 * tn / z2 + inv_a
-        x_min2 = h_limit - zt2 * sa * sa / 2.0
+        psi2 = s_d2 + inv_a
+        x_min2 = h_limit - zt2 * s2a
         rho_l2 = m * (x2 - x_min2) / sa
+    ra1, ra2 = da1 / 2.0, da2 / 2.0
     rho_a1 = ops.sqrt(gap1 * (gap1 + db1))  # √(r_a² − r_b²) = r_b tan α_a
     rho_a2 = ops.sqrt(gap2 * (gap2 + db2))
-    t_a1, t_a2 = 2.0 * rho_a1 / db1, 2.0 * rho_a2 / db2
+    t_a1, t_a2 = rho_a1 / rb1, rho_a2 / rb2
     if internal or mesh.beta_deg:
         # s_a = d_a (s/(m_t z) − (inv α_a − inv α_t)) with the difference of involutes taken from
         # Δt = tan α_a − tan α_t = (r_a − r)(r_a + r)/(r_b (ρ_a + r_b tan α_t)): at large z the two
         # involutes agree to many digits, and α_t, a derived double, must not leak its rounding
-        # (z·ulp) into s_a. Spur pairs keep the plain form, bit for bit as before helical ones.
-        r1, r2 = d1 / 2.0, d2 / 2.0
+        # (z·ulp) into s_a. Spur pairs keep the plain form.
         # The tip involutes (only the checks' margins and gradients read them, where an absolute
         # error ~ulp·inv α_t is harmless) follow as inv α_t + step: no second t − atan t per gear.
-        dt1 = m * (rack.ha + x1 - k) * (da1 / 2.0 + r1) / (db1 / 2.0 * (rho_a1 + db1 / 2.0 * ta))
-        step1 = _inv_step(ta, dt1, ops)
-        sa1 = da1 * (math.pi / (2.0 * z1) + 2.0 * x1 * tn / z1 - step1)
-        if internal:
-            dt2 = -m * (rack.ha - x2 - k) * (da2 / 2.0 + r2) / (db2 / 2.0 * (rho_a2 + db2 / 2.0 * ta))
-            step2 = _inv_step(ta, dt2, ops)
-            sa2 = da2 * (math.pi / (2.0 * z2) - 2.0 * x2 * tn / z2 + step2)
+        step1 = _inv_step(ta, m * h1 * (ra1 + d1 / 2.0) / (rb1 * (rho_a1 + rb1 * ta)), ops)
+        sa1 = da1 * (s_d1 - step1)
+        if internal:   # the ring's tip lies below its reference circle: Δt < 0
+            step2 = _inv_step(ta, -m * h2 * (ra2 + d2 / 2.0) / (rb2 * (rho_a2 + rb2 * ta)), ops)
+            sa2 = da2 * (s_d2 + step2)
         else:
-            dt2 = m * (rack.ha + x2 - k) * (da2 / 2.0 + r2) / (db2 / 2.0 * (rho_a2 + db2 / 2.0 * ta))
-            step2 = _inv_step(ta, dt2, ops)
-            sa2 = da2 * (math.pi / (2.0 * z2) + 2.0 * x2 * tn / z2 - step2)
+            step2 = _inv_step(ta, m * h2 * (ra2 + d2 / 2.0) / (rb2 * (rho_a2 + rb2 * ta)), ops)
+            sa2 = da2 * (s_d2 - step2)
         inv_a1, inv_a2 = inv_a + step1, inv_a + step2
     else:
         inv_a1, inv_a2 = ops.t_minus_atan_both(t_a1, t_a2)
@@ -421,22 +427,18 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
         sa2 = da2 * (psi2 - inv_a2)
 
     p_b = math.pi * m * ca / cb
-    g = (db2 - db1 if internal else db1 + db2) / 2.0 * t_w            # N1N2 = a_w sin α_w
+    g1, g2 = rb1 * t_w, rb2 * t_w              # N1N2 = g1 + g2 = a_w sin α_w (a ring pair: g2 − g1)
     # e1 = ρ_a1 − r_b1 tan α_w = (r_a1² − r_w1²)/(ρ_a1 + r_b1 tan α_w) with r_a1 − r_w1 =
     # m(h_a* + x1 − k − y z1/z_Σ), and e2 the same for gear 2 (for a ring r_w2 − r_a2 =
     # m(h_a* − x2 − k + y z2/z_Σ), its part of the path runs inside): no cancellation
-    rw1, rw2 = dw1 / 2.0, dw2 / 2.0
-    e1 = m * (rack.ha + x1 - k - y * z1 / zs) * (da1 / 2.0 + rw1) / (rho_a1 + db1 / 2.0 * t_w)
-    if internal:
-        e2 = m * (rack.ha - x2 - k + y * z2 / zs) * (da2 / 2.0 + rw2) / (rho_a2 + db2 / 2.0 * t_w)
-    else:
-        e2 = m * (rack.ha + x2 - k - y * z2 / zs) * (da2 / 2.0 + rw2) / (rho_a2 + db2 / 2.0 * t_w)
+    e1 = m * (h1 - y * z1 / zs) * (ra1 + rw1) / (rho_a1 + g1)
+    e2 = m * ((h2 + y * z2 / zs) if internal else (h2 - y * z2 / zs)) * (ra2 + rw2) / (rho_a2 + g2)
     g_alpha = e1 + e2
     eps_alpha = g_alpha / p_b
 
     # radii of curvature where the path of contact ends: the ring's grows with the pinion's
-    rho_p1 = db1 / 2.0 * t_w - e2
-    rho_p2 = db2 / 2.0 * t_w + e1 if internal else db2 / 2.0 * t_w - e1
+    rho_p1 = g1 - e2
+    rho_p2 = g2 + e1 if internal else g2 - e1
     u = z2 / z1
     # specific sliding ϑ1 = 1 − ρ2/(u ρ1), ϑ2 = 1 − u ρ1/ρ2 at both ends of the path of contact
     sliding1_root = 1.0 - rho_a2 / (u * rho_p1)
@@ -450,7 +452,7 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     out = {
         "inv_alpha_w": inv_aw,
         "a": a, "a_w": a_w, "y": y, "dy": dy,
-        "d1": d1, "d2": d2, "db1": db1, "db2": db2, "dw1": dw1, "dw2": dw2,
+        "d1": d1, "d2": d2, "db1": db1, "db2": db2, "dw1": 2.0 * rw1, "dw2": 2.0 * rw2,
         "da1": da1, "da2": da2, "df1": df1, "df2": df2,
         "sa1": sa1, "sa2": sa2, "p_b": p_b, "g_alpha": g_alpha, "eps_alpha": eps_alpha,
         "x_min1": x_min1, "x_min2": x_min2,
@@ -459,7 +461,7 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
         "eps_beta": eps_beta, "eps_gamma": eps_alpha + eps_beta,
         "san1": _normal_tip_thickness(sa1, da1, d1, mesh), "san2": _normal_tip_thickness(sa2, da2, d2, mesh),
         # internals used by checks and gradients (not reported)
-        "_ra1": da1 / 2.0, "_ra2": da2 / 2.0, "_rho_a1": rho_a1, "_rho_a2": rho_a2,
+        "_ra1": ra1, "_ra2": ra2, "_rho_a1": rho_a1, "_rho_a2": rho_a2,
         "_sin_w": sin_w, "_cos_w": cos_w, "_t_w": t_w, "_t_a1": t_a1, "_t_a2": t_a2, "_psi1": psi1, "_psi2": psi2,
         "_gap1": gap1, "_gap2": gap2, "_k": k,
         # ∂Δy/∂(x1 + x2) = 1 − sin α / sin α_w (∂y/∂x_Σ = sin α / sin α_w), 0 without shortening
@@ -469,17 +471,19 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
         "_sgn": -1.0 if internal else 1.0, "_tn": tn, "_tan_beta": math.tan(math.radians(mesh.beta_deg)),
     }
     if full:   # the fields no check or objective of the library needs: only for reports
+        dw1, dw2 = out["dw1"], out["dw2"]
+        g = g2 - g1 if internal else g1 + g2
         out.update({
             "alpha_w_deg": ops.degrees(alpha + ops.atan(dt_w / (1.0 + ta * t_w))),   # α_w = α + atan Δt/(1 + t t_w)
             "s1": d1 * (psi1 - inv_a), "s2": d2 * (psi2 + inv_a) if internal else d2 * (psi2 - inv_a),
             "sw1": dw1 * (psi1 - inv_aw), "sw2": dw2 * (psi2 + inv_aw) if internal else dw2 * (psi2 - inv_aw),
             "p_w": math.pi * dw1 / z1,
             "alpha_a1_deg": ops.degrees(ops.atan(t_a1)), "alpha_a2_deg": ops.degrees(ops.atan(t_a2)),
-            "d_l1": 2.0 * ops.sqrt(db1 * db1 / 4.0 + ops.positive(rho_l1) ** 2),
-            "d_l2": 2.0 * ops.sqrt(db2 * db2 / 4.0 + ops.positive(rho_l2) ** 2),
-            "d_p1": 2.0 * ops.sqrt(db1 * db1 / 4.0 + rho_p1 * rho_p1),
-            "d_p2": 2.0 * ops.sqrt(db2 * db2 / 4.0 + rho_p2 * rho_p2),
-            "o2n1": ops.sqrt(db2 * db2 / 4.0 + g * g), "o1n2": ops.sqrt(db1 * db1 / 4.0 + g * g),
+            "d_l1": 2.0 * ops.sqrt(rb1 * rb1 + ops.positive(rho_l1) ** 2),
+            "d_l2": 2.0 * ops.sqrt(rb2 * rb2 + ops.positive(rho_l2) ** 2),
+            "d_p1": 2.0 * ops.sqrt(rb1 * rb1 + rho_p1 * rho_p1),
+            "d_p2": 2.0 * ops.sqrt(rb2 * rb2 + rho_p2 * rho_p2),
+            "o2n1": ops.sqrt(rb2 * rb2 + g * g), "o1n2": ops.sqrt(rb1 * rb1 + g * g),
             "sliding1_tip": 1.0 - rho_p2 / (u * rho_a1), "sliding2_tip": 1.0 - u * rho_p1 / rho_a2,
             "alpha_t_deg": ops.degrees(alpha + 0.0 * m), "beta_b_deg": ops.degrees(mesh.section.beta_b + 0.0 * m),
             "m_t": m / cb, "z_n1": zt1 / (cbb * cbb), "z_n2": zt2 / (cbb * cbb),

@@ -167,8 +167,10 @@ def tan_from_inv(v, *, validate: bool = True, polish: bool = True):
             raise GearDesignError(
                 f"involute value must be finite and > 0, got {v[bad][0]!r}")
     s = np.cbrt(3.0 * v)
-    w = v + np.pi / 2
-    t = np.where(v < 0.5, s * (1.0 + s * s / 5.0), w - 1.0 / w)
+    t = s * (1.0 + s * s / 5.0)
+    if not v.max(initial=0.0) < 0.5:   # large involutes (and NaN): the asymptote start where needed
+        w = v + np.pi / 2
+        t = np.where(v < 0.5, t, w - 1.0 / w)
     for _ in range(3):
         t2 = t * t
         t = t - (t - np.arctan(t) - v) * (1.0 + t2) / t2

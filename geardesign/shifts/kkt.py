@@ -154,21 +154,22 @@ def _polish(prob: Problem, w, ev: Evaluator, tol: float, act_tol=1e-5):
 
 
 def exact_from(prob: Problem, ev: Evaluator, v0, bounds, tol, h):
-    """One local exact solve from the feasible point v0: (w, iterations, message, edge), edge True
-    when SLSQP failed without a KKT point after walking to where the pair stops existing."""
+    """One local exact solve from the feasible point v0: (w, iterations, message, kind), kind
+    "kkt" for a KKT point, "slsqp" for SLSQP's point where no KKT point was found near it, "edge"
+    when SLSQP failed after walking to where the pair stops existing."""
     nv = prob.nvar
     w0 = np.append(v0, ev(v0)[0].min())
     found = _first_kkt_point(prob, ev, w0, *_near(ev, nv, w0, reach=2.2 * h), max_move=3 * h)
     if found is not None:
-        return found[0], found[3], "converged: KKT system of the active set solved by Newton from a grid node", False
+        return found[0], found[3], "converged: KKT system of the active set solved by Newton from a grid node", "kkt"
     w, nit, ev_s, ok = slsqp(prob, v0, bounds)
     polished = _polish(prob, w, ev_s, tol)
     if polished is not None:
-        return polished[0], nit, "converged: SLSQP, then Newton on the KKT system of its active set", False
+        return polished[0], nit, "converged: SLSQP, then Newton on the KKT system of its active set", "kkt"
     # Where SLSQP stops after a failed line search depends on the last digits of the margins
     # near the edge (on it or just inside): the edge is recognised by SLSQP having reached it.
-    edge = not ok and ev_s.missing > 0
-    return w, nit, "converged (SLSQP; active-set polish not applicable)", edge
+    kind = "edge" if not ok and ev_s.missing > 0 else "slsqp"
+    return w, nit, "converged (SLSQP; active-set polish not applicable)", kind
 
 
 _NO_OPTIMUM = ("no optimum: {objective} keeps improving toward the edge where the pair stops existing "
@@ -189,14 +190,17 @@ def solve(prob: Problem, starts: list, bounds, tol: float, h: float) -> Outcome:
     nv = prob.nvar
     best, nit = None, 0
     for v0 in starts:
-        w, it, msg, edge = exact_from(prob, ev, v0, bounds, tol, h)
+        w, it, msg, kind = exact_from(prob, ev, v0, bounds, tol, h)
         nit += it
         Mw = ev(w[:nv])[1]
-        score = w[-1] if not (edge or (Mw.size and Mw.min() < -tol)) else -math.inf
-        if best is None or score > best[0] + 1e-12:
-            best = (score, w, msg, edge)
-    score, w, msg, edge = best
-    if score == -math.inf and (edge or not _exists(prob, w[:nv])):
+        score = w[-1] if not (kind == "edge" or (Mw.size and Mw.min() < -tol)) else -math.inf
+        # a point that holds every check ranks above one that misses a check by less than tol (SLSQP's
+        # own points do, and gain ~multiplier × tol in the objective by it)
+        rank = (not (Mw.size and Mw.min() < -1e-12), score)
+        if best is None or rank[0] > best[0][0] or (rank[0] == best[0][0] and score > best[1] + 1e-12):
+            best = (rank, score, w, msg, kind)
+    _, score, w, msg, kind = best
+    if score == -math.inf and (kind == "edge" or not _exists(prob, w[:nv])):
         return Outcome(starts[0], nit, False, _NO_OPTIMUM.format(objective=prob.objective.name))
     Mv = ev(w[:nv])[1][:len(prob.part_check)]
     ok = not (Mv.size and Mv.min() < -tol)

@@ -106,8 +106,7 @@ class Problem:
 
     def margins(self, geo) -> np.ndarray:
         """(K, ...) margins; designs whose geometry does not exist get −inf."""
-        out = _stack(self._margin_values(geo), geo["a"])
-        return np.where(np.isnan(out), -np.inf, out)
+        return np.fmax(_stack(self._margin_values(geo), geo["a"]), -np.inf)   # fmax passes the number where one is NaN
 
     def margin_gradients(self, geo) -> np.ndarray:
         """(K, 2, ...) ∂margin/∂(x1, x2)."""
@@ -200,8 +199,14 @@ class Problem:
         P (P,), M (parts,), GP (P, nvar), GM (parts, nvar). The margins come as the checks'
         smooth parts (:attr:`part_check` maps each to its check)."""
         x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - self.sgn * float(v[0]))
+        last = self.__dict__.get("_last_point")
+        key = (x1, x2, self.x_sum)   # the free variables' gradients depend on x_sum too
+        if last is not None and last[0] == key:   # a start checked for feasibility, then solved from
+            return last[1]
         _, (P, M, GP, GM) = self.evaluate_design(x1, x2, parts=True)
-        return P, M, self._free(GP), self._free(GM)
+        out = P, M, self._free(GP), self._free(GM)
+        self._last_point = (key, out)
+        return out
 
     def evaluate_design(self, x1: float, x2: float, parts: bool = False):
         """(geo, (P, M, GP, GM)) of one design on the float path; where Python floats fault (a
