@@ -1,0 +1,26 @@
+"""The benchmarks' plain references compute what the library computes, so that the speed ratios they
+print compare like with like: bench_geometry's straight-line numpy margins (textbook forms, written
+independently in the benchmark) against the library's seven default margins."""
+import sys
+from pathlib import Path
+
+import numpy as np
+
+import geardesign as gd
+from geardesign import checks
+from geardesign.gears.geometry import mesh_geometry
+from geardesign.gears.mesh import Mesh
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+from bench_geometry import designs, plain_margins  # noqa: E402
+
+
+def test_plain_margins_of_bench_geometry_are_the_librarys():
+    z1, z2, x1, x2 = designs(5000, seed=5)
+    cs = gd.make_checks()
+    ours = checks.margins(mesh_geometry(Mesh(z1, z2, gd.BasicRack(), True), 1.0, x1, x2, False), cs)
+    plain = plain_margins(z1.astype(float), z2.astype(float), x1, x2)
+    assert [c.name for c in cs] == ["undercut1", "undercut2", "interference1", "interference2",
+                                    "tip_thickness1", "tip_thickness2", "contact_ratio"]
+    for c, p in zip(cs, plain):
+        np.testing.assert_allclose(ours[c.name], p, rtol=0, atol=1e-9, err_msg=c.name)
