@@ -55,10 +55,12 @@ def multipliers(prob: Problem, w, act_p, act_m, ev):
     rows = active_rows(GP, GM, act_p, act_m)
     if not rows:
         return np.zeros(0), np.zeros(0)
-    # least squares by the normal equations R Rᵀ λ = −R e_t: at most nv + 1 well-scaled rows
-    A = [[sum(a * b for a, b in zip(r1, r2)) for r2 in rows] for r1 in rows]
     try:
-        lam = np.array(solve_small(A, [-r[-1] for r in rows]))
+        if len(rows) == nv + 1:   # a vertex: Rᵀ λ = −e_t is square
+            lam = np.array(solve_small([list(col) for col in zip(*rows)], [0.0] * nv + [-1.0]))
+        else:   # an edge (or a degenerate corner): least squares by the normal equations R Rᵀ λ = −R e_t
+            A = [[sum(a * b for a, b in zip(r1, r2)) for r2 in rows] for r1 in rows]
+            lam = np.array(solve_small(A, [-r[-1] for r in rows]))
     except np.linalg.LinAlgError:
         lam, *_ = np.linalg.lstsq(np.array(rows).T, -np.append(np.zeros(nv), 1.0), rcond=None)
     return lam[:len(act_p)], lam[len(act_p):]

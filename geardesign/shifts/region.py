@@ -271,8 +271,9 @@ def _corners(prob: Problem, P: np.ndarray, a: np.ndarray, b: np.ndarray, iters: 
         ga, gb = G[a, :, rows], G[b, :, rows]
         det = ga[:, 0] * gb[:, 1] - ga[:, 1] * gb[:, 0]
         ok = np.abs(det) > 1e-12
-        d1 = np.where(ok, (ma * gb[:, 1] - mb * ga[:, 1]) / np.where(ok, det, 1.0), 0.0)
-        d2 = np.where(ok, (mb * ga[:, 0] - ma * gb[:, 0]) / np.where(ok, det, 1.0), 0.0)
+        with np.errstate(invalid="ignore"):   # a point past the pair's edge (margin −inf) becomes NaN, dropped later
+            d1 = np.where(ok, (ma * gb[:, 1] - mb * ga[:, 1]) / np.where(ok, det, 1.0), 0.0)
+            d2 = np.where(ok, (mb * ga[:, 0] - ma * gb[:, 0]) / np.where(ok, det, 1.0), 0.0)
         P[:, 0] -= np.clip(d1, -0.05, 0.05)
         P[:, 1] -= np.clip(d2, -0.05, 0.05)
     return P

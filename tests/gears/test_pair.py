@@ -42,3 +42,19 @@ def test_housing_check_of_proposed_shifts():
     assert f"needs x1 + x2 = {float(need):.6g}" in row["label"]
     ok = gd.GearPair(8, 17, 26, 0.6, float(need) - 0.6).checks(housing_a_w=180).set_index("check")
     assert ok.loc["center_distance", "ok"]
+
+
+def test_a_pair_whose_tips_do_not_overlap_is_refused_by_name():
+    """z1 = z2 = 5, x1 = x2 = 2 on a 15° rack with tip shortening: the tips exist but the path of
+    contact is negative. Independently, in mpmath: ρ_a1 + ρ_a2 < a_w sin α_w with the tips shortened
+    by Δy·m (GOST 16532-70), so the tip circles do not overlap along the line of action."""
+    mp.mp.dps = 40
+    m, z, x, al = 1, 5, mp.mpf(2), mp.radians(15)
+    a_w = _a_w(m, z, z, 2 * x, alpha_deg=15)
+    aw = mp.acos(m * z * mp.cos(al) / a_w)          # a_w cos α_w = a cos α, a = m z (z1 = z2)
+    dy = 2 * x - (a_w - m * z) / m
+    r_a = m * z / mp.mpf(2) + (1 + x - dy) * m
+    rho_a = mp.sqrt(r_a ** 2 - (m * z / mp.mpf(2) * mp.cos(al)) ** 2)
+    assert 2 * rho_a < a_w * mp.sin(aw)
+    with pytest.raises(gd.GearDesignError, match="do not mesh.*tip circles do not overlap.*x1 \\+ x2 = 4"):
+        gd.GearPair(1, 5, 5, 2.0, 2.0, rack=gd.BasicRack(alpha_deg=15.0))
