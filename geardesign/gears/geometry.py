@@ -250,9 +250,6 @@ def exact_sum_nodes(lo: float, hi: float, n: int) -> np.ndarray:
     return first + step * np.arange(n)
 
 
-# Elementwise functions for arrays (numpy) and for one design in Python floats: the same
-# formulas run on either; floats skip numpy's per-call overhead (~1 µs a call), which is
-# what a single-pair optimiser pays ~200 times per evaluation.
 def _t_minus_atan_both(t1, t2):
     """t − atan t of two arrays of one shape in one call: half the ~25 numpy calls, which is what
     a grid of ~1000 nodes pays (the values are each element's own)."""
@@ -260,6 +257,9 @@ def _t_minus_atan_both(t1, t2):
     return both[:np.size(t1)].reshape(np.shape(t1)), both[np.size(t1):].reshape(np.shape(t2))
 
 
+# Elementwise functions for arrays (numpy) and for one design in Python floats: the same
+# formulas run on either; floats skip numpy's per-call overhead (~1 µs a call), which is
+# what a single-pair optimiser pays ~200 times per evaluation.
 _ARRAY_OPS = SimpleNamespace(
     sqrt=np.sqrt, atan=np.arctan, degrees=np.degrees,
     positive=lambda v: np.maximum(v, 0.0), t_minus_atan=t_minus_atan, t_minus_atan_both=_t_minus_atan_both,
@@ -343,9 +343,9 @@ def _operating_angle(D, ta, inv_a, ops):
 
 def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     """Every field of the pair; ``m`` is the normal module, x1/x2 normal shifts, and the circles,
-    angles, thicknesses and the path of contact are transverse (ISO 21771:2007 §4–5). Spur
+    angles, thicknesses and the path of contact are transverse (ISO 21771:2007 §4–5). A spur
     pair is a helical one with z/cos β = z and every factor cos β or cos β_b = 1.0; only its tip
-    involutes take the plain t − atan t."""
+    involutes are taken directly (t − atan t) rather than as a step from inv α_t."""
     rack, internal = mesh.rack, mesh.internal
     alpha, sa, ca, ta, inv_a, s2h, h_limit, tn, cb, cbb = _section_constants(rack, mesh.beta_deg)
     # z1 + z2 and x1 + x2 of an external pair, z2 − z1 and x2 − x1 of an internal one (GOST 19274-73)
@@ -371,6 +371,7 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     db1, db2 = d1 * ca, d2 * ca
     rb1, rb2 = db1 / 2.0, db2 / 2.0
     rw1, rw2 = rb1 / cos_w, rb2 / cos_w        # operating pitch radii r_b/cos α_w
+    dw1, dw2 = 2.0 * rw1, 2.0 * rw2
     m2 = 2.0 * m
     hf = rack.ha + rack.c
     s2a = sa * sa / 2.0
@@ -383,7 +384,9 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     da1 = d1 + m2 * h1
     df1 = d1 - m2 * (hf - x1)
     # r_a − r_b = m (z sin²(α/2) + h_a* + x − k): exact when the tip is near the base circle
-    gap1 = m * (zt1 * s2h + rack.ha + x1 - k)   # terms that cancel at a tip near the base circle: kept as they are
+    # (summed left to right: at a tip near the base circle the terms cancel, and this order holds the
+    # 50-digit extremes to 1e-12 where h_a* + x − k summed first does not)
+    gap1 = m * (zt1 * s2h + rack.ha + x1 - k)
     psi1 = s_d1 + inv_a   # s/d + inv α
     x_min1 = h_limit - zt1 * s2a
     rho_l1 = m * (x1 - x_min1) / sa
@@ -452,7 +455,7 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     out = {
         "inv_alpha_w": inv_aw,
         "a": a, "a_w": a_w, "y": y, "dy": dy,
-        "d1": d1, "d2": d2, "db1": db1, "db2": db2, "dw1": 2.0 * rw1, "dw2": 2.0 * rw2,
+        "d1": d1, "d2": d2, "db1": db1, "db2": db2, "dw1": dw1, "dw2": dw2,
         "da1": da1, "da2": da2, "df1": df1, "df2": df2,
         "sa1": sa1, "sa2": sa2, "p_b": p_b, "g_alpha": g_alpha, "eps_alpha": eps_alpha,
         "x_min1": x_min1, "x_min2": x_min2,
@@ -471,7 +474,6 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
         "_sgn": -1.0 if internal else 1.0, "_tn": tn, "_tan_beta": math.tan(math.radians(mesh.beta_deg)),
     }
     if full:   # the fields no check or objective of the library needs: only for reports
-        dw1, dw2 = out["dw1"], out["dw2"]
         g = g2 - g1 if internal else g1 + g2
         out.update({
             "alpha_w_deg": ops.degrees(alpha + ops.atan(dt_w / (1.0 + ta * t_w))),   # α_w = α + atan Δt/(1 + t t_w)

@@ -9,8 +9,8 @@ z1(inv α_a1 + δ1) − z2(inv α_a2 + δ2) + (z2 − z1) inv α_w >= 0.
 """
 from __future__ import annotations
 
-import functools
 import contextlib
+import functools
 import math
 from dataclasses import dataclass
 from typing import NamedTuple

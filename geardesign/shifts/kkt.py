@@ -196,9 +196,9 @@ def solve(prob: Problem, starts: list, bounds, tol: float, h: float) -> Outcome:
         score = w[-1] if not (kind == "edge" or (Mw.size and Mw.min() < -tol)) else -math.inf
         # a point that holds every check ranks above one that misses a check by less than tol (SLSQP's
         # own points do, and gain ~multiplier × tol in the objective by it)
-        rank = (score > -math.inf and not (Mw.size and Mw.min() < -1e-12), score)
-        if best is None or rank[0] > best[0][0] or (rank[0] == best[0][0] and score > best[1] + 1e-12):
-            best = (rank, score, w, msg, kind)
+        holds = score > -math.inf and not (Mw.size and Mw.min() < -1e-12)
+        if best is None or (holds, score) > (best[0], best[1] + 1e-12):
+            best = (holds, score, w, msg, kind)
     _, score, w, msg, kind = best
     if score == -math.inf and (kind == "edge" or not _exists(prob, w[:nv])):
         return Outcome(starts[0], nit, False, _NO_OPTIMUM.format(objective=prob.objective.name))

@@ -6,6 +6,8 @@ Objectives (:mod:`geardesign.shifts.objectives`) are maximised internally as F =
 """
 from __future__ import annotations
 
+import contextlib
+
 import numpy as np
 
 from ..gears import checks as _checks
@@ -28,6 +30,8 @@ class Problem:
     With ``x_sum`` given (a fixed centre distance) the design has one free variable, x1,
     and x2 = x_sum − x1 (x2 = x_sum + x1 for an internal pair, whose x_Σ is x2 − x1).
     """
+
+    _last_point = None   # (key, evaluate_point's value) of the last point evaluated
 
     def __init__(self, mesh: Mesh, checks=None, objective="max_x_sum", m=1.0, x_sum=None):
         if not isinstance(mesh, Mesh):
@@ -199,10 +203,9 @@ class Problem:
         P (P,), M (parts,), GP (P, nvar), GM (parts, nvar). The margins come as the checks'
         smooth parts (:attr:`part_check` maps each to its check)."""
         x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - self.sgn * float(v[0]))
-        last = self.__dict__.get("_last_point")
         key = (x1, x2, self.x_sum)   # the free variables' gradients depend on x_sum too
-        if last is not None and last[0] == key:   # a start checked for feasibility, then solved from
-            return last[1]
+        if self._last_point is not None and self._last_point[0] == key:   # a start checked, then solved from
+            return self._last_point[1]
         _, (P, M, GP, GM) = self.evaluate_design(x1, x2, parts=True)
         out = P, M, self._free(GP), self._free(GM)
         self._last_point = (key, out)
@@ -223,26 +226,22 @@ class Problem:
     def evaluate_geo(self, geo, parts: bool = False):
         """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict
         (margins per check, or per smooth part with ``parts``); a margin that does not exist is −inf."""
-        if type(geo["a"]) is not float:   # 0-d arrays: boundaries of existence give inf/NaN quietly
-            with np.errstate(all="ignore"):
-                return self._evaluate_geo(geo, parts)
-        return self._evaluate_geo(geo, parts)
+        # 0-d arrays (where floats faulted): boundaries of existence give inf/NaN quietly
+        with contextlib.nullcontext() if type(geo["a"]) is float else np.errstate(all="ignore"):
+            M, GM = self._margins_and_gradients(geo, parts)
+            if self.objective.kind == "margin":
+                P = _normalise(M, GM)
+                GP = np.array(self._central(lambda g: _normalise(*self._margins_and_gradients(g, parts)), geo)).T
+            else:
+                P = np.array(self._piece_values(geo), dtype=float)
+                GP = np.array(self._piece_gradient_values(geo), dtype=float).reshape(-1, 2)
+        return P, M, GP, GM
 
     def _margins_and_gradients(self, g, parts: bool):
         M = self._margin_values(g, parts)
         if any(v != v for v in M):   # NaN: the margin does not exist here
             M = [v if v == v else -np.inf for v in M]
         return np.array(M, dtype=float), np.array(self._margin_gradient_values(g, parts), dtype=float).reshape(-1, 2)
-
-    def _evaluate_geo(self, geo, parts: bool):
-        M, GM = self._margins_and_gradients(geo, parts)
-        if self.objective.kind == "margin":
-            P = _normalise(M, GM)
-            GP = np.array(self._central(lambda g: _normalise(*self._margins_and_gradients(g, parts)), geo)).T
-        else:
-            P = np.array(self._piece_values(geo), dtype=float)
-            GP = np.array(self._piece_gradient_values(geo), dtype=float).reshape(-1, 2)
-        return P, M, GP, GM
 
     def _free(self, G):
         """Gradients in (x1, x2) → in the free variables (d/dx1 along x2 = x_sum − sgn·x1)."""
