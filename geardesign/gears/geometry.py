@@ -7,7 +7,7 @@ m, z1, z2, x1, x2; the rack is one :class:`~geardesign.gears.rack.BasicRack`. Le
 Cancellation-free forms are used where the textbook form loses digits:
 y = (z1+z2)/2 · (cos α − cos α_w)/cos α_w with cos α − cos α_w = 2 sin((α_w+α)/2) sin((α_w−α)/2);
 r_a² − r_b² = (r_a − r_b)(r_a + r_b) with r_a − r_b = m(z sin²(α/2) + h_a* + x − Δy) [GOST tip];
-inv α_a from tan α_a (no arccos near 1); inv itself from a series at small angles.
+inv α_a − inv α as a step from tan α_a − tan α (no arccos near 1, no two involutes subtracted).
 """
 from __future__ import annotations
 
@@ -250,25 +250,17 @@ def exact_sum_nodes(lo: float, hi: float, n: int) -> np.ndarray:
     return first + step * np.arange(n)
 
 
-def _t_minus_atan_both(t1, t2):
-    """t − atan t of two arrays of one shape in one call: half the ~25 numpy calls, which is what
-    a grid of ~1000 nodes pays (the values are each element's own)."""
-    both = t_minus_atan(np.concatenate((np.ravel(t1), np.ravel(t2))))
-    return both[:np.size(t1)].reshape(np.shape(t1)), both[np.size(t1):].reshape(np.shape(t2))
-
-
 # Elementwise functions for arrays (numpy) and for one design in Python floats: the same
 # formulas run on either; floats skip numpy's per-call overhead (~1 µs a call), which is
 # what a single-pair optimiser pays ~200 times per evaluation.
 _ARRAY_OPS = SimpleNamespace(
     sqrt=np.sqrt, atan=np.arctan, degrees=np.degrees,
-    positive=lambda v: np.maximum(v, 0.0), t_minus_atan=t_minus_atan, t_minus_atan_both=_t_minus_atan_both,
+    positive=lambda v: np.maximum(v, 0.0), t_minus_atan=t_minus_atan,
     tan_from_inv=lambda v: tan_from_inv(np.where(v > 0, v, np.nan), validate=False, polish=False),
     per_distinct=_per_distinct)
 _FLOAT_OPS = SimpleNamespace(
     sqrt=_float_sqrt, atan=math.atan, degrees=math.degrees,
     positive=lambda v: v if v > 0.0 else 0.0 * v, t_minus_atan=t_minus_atan_float,
-    t_minus_atan_both=lambda t1, t2: (t_minus_atan_float(t1), t_minus_atan_float(t2)),
     tan_from_inv=_float_tan_from_inv, per_distinct=lambda func, v: func(v))
 
 
@@ -408,26 +400,19 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     rho_a1 = ops.sqrt(gap1 * (gap1 + db1))  # √(r_a² − r_b²) = r_b tan α_a
     rho_a2 = ops.sqrt(gap2 * (gap2 + db2))
     t_a1, t_a2 = rho_a1 / rb1, rho_a2 / rb2
-    if internal or mesh.beta_deg:
-        # s_a = d_a (s/(m_t z) − (inv α_a − inv α_t)) with the difference of involutes taken from
-        # Δt = tan α_a − tan α_t = (r_a − r)(r_a + r)/(r_b (ρ_a + r_b tan α_t)): at large z the two
-        # involutes agree to many digits, and α_t, a derived double, must not leak its rounding
-        # (z·ulp) into s_a. Spur pairs keep the plain form.
-        # The tip involutes (only the checks' margins and gradients read them, where an absolute
-        # error ~ulp·inv α_t is harmless) follow as inv α_t + step: no second t − atan t per gear.
-        step1 = _inv_step(ta, m * h1 * (ra1 + d1 / 2.0) / (rb1 * (rho_a1 + rb1 * ta)), ops)
-        sa1 = da1 * (s_d1 - step1)
-        if internal:   # the ring's tip lies below its reference circle: Δt < 0
-            step2 = _inv_step(ta, -m * h2 * (ra2 + d2 / 2.0) / (rb2 * (rho_a2 + rb2 * ta)), ops)
-            sa2 = da2 * (s_d2 + step2)
-        else:
-            step2 = _inv_step(ta, m * h2 * (ra2 + d2 / 2.0) / (rb2 * (rho_a2 + rb2 * ta)), ops)
-            sa2 = da2 * (s_d2 - step2)
-        inv_a1, inv_a2 = inv_a + step1, inv_a + step2
+    # s_a = d_a (s/(m_t z) − (inv α_a − inv α_t)), the difference of involutes a step from
+    # Δt = tan α_a − tan α_t = (r_a − r)(r_a + r)/(r_b (ρ_a + r_b tan α_t)): at large z the two
+    # involutes agree to many digits, and α_t, a derived double, must not leak its rounding (z·ulp)
+    # into s_a; the checks' gradients read inv α_a as inv α_t + step
+    step1 = _inv_step(ta, m * h1 * (ra1 + d1 / 2.0) / (rb1 * (rho_a1 + rb1 * ta)), ops)
+    sa1 = da1 * (s_d1 - step1)
+    if internal:   # the ring's tip lies below its reference circle: Δt < 0
+        step2 = _inv_step(ta, -m * h2 * (ra2 + d2 / 2.0) / (rb2 * (rho_a2 + rb2 * ta)), ops)
+        sa2 = da2 * (s_d2 + step2)
     else:
-        inv_a1, inv_a2 = ops.t_minus_atan_both(t_a1, t_a2)
-        sa1 = da1 * (psi1 - inv_a1)
-        sa2 = da2 * (psi2 - inv_a2)
+        step2 = _inv_step(ta, m * h2 * (ra2 + d2 / 2.0) / (rb2 * (rho_a2 + rb2 * ta)), ops)
+        sa2 = da2 * (s_d2 - step2)
+    inv_a1, inv_a2 = inv_a + step1, inv_a + step2
 
     p_b = math.pi * m * ca / cb
     g1, g2 = rb1 * t_w, rb2 * t_w              # N1N2 = g1 + g2 = a_w sin α_w (a ring pair: g2 − g1)
@@ -498,10 +483,14 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
 
 def _inv_step(t, dt, ops):
     """inv(atan(t + Δt)) − inv(atan t) without cancellation: Δt·t t₂/(1 + t t₂) + (u − atan u),
-    u = Δt/(1 + t t₂), two terms of one sign (as in :func:`_operating_angle`)."""
+    u = Δt/(1 + t t₂), two terms of one sign (as in :func:`_operating_angle`). u − atan u is the plain
+    difference: where it cancels (small u) it is the cubic term beside the linear one, so its error,
+    ~ε|u|, is ~ε/(t t₂) of the step (t = tan α_t is never small); where the linear term vanishes
+    (t₂ → 0) u is not small. The 50-digit extremes hold s_a to 1e-12 with it."""
     t2 = t + dt
     q = 1.0 + t * t2
-    return dt * t * t2 / q + ops.t_minus_atan(dt / q)
+    u = dt / q
+    return dt * t * t2 / q + (u - ops.atan(u))
 
 
 def _overlap_ratio(mesh: Mesh, m, ops):

@@ -41,6 +41,10 @@ def _kkt_newton(ev: Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxit
     Returns (w, iterations) or None when it diverges, leaves ``max_move`` or stalls."""
     edge = len(act_p) + len(act_m) == nv
     step_tol, stat_tol = (1e-10, 1e-8) if noisy else (1e-13, 1e-10)
+    # at a vertex every equation is a margin or piece with an O(1) gradient: a residual at rounding level
+    # puts x there too, without the last step's confirmation; the stationarity row of an edge may be
+    # flat, so edges stop on the step
+    res_tol = 1e-14 if not (edge or noisy) else 0.0
     w0 = [float(c) for c in w0]
     w = w0[:]
 
@@ -81,7 +85,7 @@ def _kkt_newton(ev: Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxit
         if edge and dd > 0:   # Broyden: the row's directional derivative along the step matches the change
             r = (F[-1] - F_old[-1] - sum(a * d for a, d in zip(srow, dw))) / dd
             srow = [a + r * d for a, d in zip(srow, dw)]
-        if max(map(abs, dw[:nv])) <= step_tol * max(1.0, max(map(abs, w[:nv]))) or max(map(abs, F)) == 0.0:
+        if max(map(abs, dw[:nv])) <= step_tol * max(1.0, max(map(abs, w[:nv]))) or max(map(abs, F)) <= res_tol:
             break
     ok = max(map(abs, F[:-1] if edge else F), default=0.0) <= 1e-10 and (not edge or abs(F[-1]) <= stat_tol)
     return (np.array(w), it) if ok else None
@@ -102,6 +106,22 @@ def _active_sets(near_p, near_m, nv):
     return out
 
 
+def _promising_first(prob: Problem, ev: Evaluator, w0, cands):
+    """The candidate sets whose multipliers, linearised at w0, are >= 0 first, then the others, each
+    group in its order (a stable sort on that test, its multipliers computed only as far as the
+    candidates are tried)."""
+    if len(cands) <= 1:
+        yield from cands
+        return
+    later = []
+    for c in cands:
+        if min(np.concatenate(multipliers(prob, w0, *c, ev)), default=0.0) < 0:
+            later.append(c)
+        else:
+            yield c
+    yield from later
+
+
 def _first_kkt_point(prob: Problem, ev: Evaluator, w0, near_p, near_m, max_move: float, limit: int = 24):
     """The first candidate active set whose Newton solution is a KKT point: it holds every
     check, no piece is below t, the multipliers are >= 0, and t is no worse than at w0.
@@ -111,10 +131,7 @@ def _first_kkt_point(prob: Problem, ev: Evaluator, w0, near_p, near_m, max_move:
     nv = prob.nvar
     t0 = w0[nv]
     nit = 0
-    cands = _active_sets(near_p, near_m, nv)
-    if len(cands) > 1:   # try first the sets whose multipliers, linearised at w0, are >= 0
-        cands.sort(key=lambda c: min(np.concatenate(multipliers(prob, w0, *c, ev)), default=0.0) < 0)
-    for act_p, act_m in cands[:limit]:
+    for act_p, act_m in itertools.islice(_promising_first(prob, ev, w0, _active_sets(near_p, near_m, nv)), limit):
         out = _kkt_newton(ev, nv, act_p, act_m, w0, max_move, noisy=prob.fd_gradients)
         if out is None:
             continue

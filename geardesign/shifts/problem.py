@@ -31,7 +31,7 @@ class Problem:
     and x2 = x_sum − x1 (x2 = x_sum + x1 for an internal pair, whose x_Σ is x2 − x1).
     """
 
-    _last_point = None   # (key, evaluate_point's value) of the last point evaluated
+    _last_point = None   # (key, evaluate_point's value, its geometry) of the last point evaluated
 
     def __init__(self, mesh: Mesh, checks=None, objective="max_x_sum", m=1.0, x_sum=None):
         if not isinstance(mesh, Mesh):
@@ -206,22 +206,27 @@ class Problem:
         key = (x1, x2, self.x_sum)   # the free variables' gradients depend on x_sum too
         if self._last_point is not None and self._last_point[0] == key:   # a start checked, then solved from
             return self._last_point[1]
-        _, (P, M, GP, GM) = self.evaluate_design(x1, x2, parts=True)
+        geo, (P, M, GP, GM) = self.evaluate_design(x1, x2, parts=True)
         out = P, M, self._free(GP), self._free(GM)
-        self._last_point = (key, out)
+        self._last_point = (key, out, geo)
         return out
 
     def evaluate_design(self, x1: float, x2: float, parts: bool = False):
         """(geo, (P, M, GP, GM)) of one design on the float path; where Python floats fault (a
         division by zero exactly at a boundary, an overflow), the same formulas on 0-d numpy
-        arrays, which give inf/NaN as the vectorised path does."""
-        try:
-            geo = mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
-            return geo, self.evaluate_geo(geo, parts)
-        except _FLOAT_FAULTS:
-            with np.errstate(all="ignore"):
-                geo = self.geo(np.float64(x1), np.float64(x2))
-            return geo, self.evaluate_geo(geo, parts)
+        arrays, which give inf/NaN as the vectorised path does. The geometry of the point
+        :meth:`evaluate_point` saw last (a solver's final iterate, usually) is reused."""
+        last = self._last_point
+        if last is not None and last[0] == (x1, x2, self.x_sum):
+            geo = last[2]
+        else:
+            try:
+                geo = mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
+                return geo, self.evaluate_geo(geo, parts)
+            except _FLOAT_FAULTS:
+                with np.errstate(all="ignore"):
+                    geo = self.geo(np.float64(x1), np.float64(x2))
+        return geo, self.evaluate_geo(geo, parts)
 
     def evaluate_geo(self, geo, parts: bool = False):
         """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict
