@@ -336,116 +336,45 @@ def _operating_angle(D, ta, inv_a, ops):
 def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     """Every field of the pair; ``m`` is the normal module, x1/x2 normal shifts, and the circles,
     angles, thicknesses and the path of contact are transverse (ISO 21771:2007 §4–5). A spur
-    pair is a helical one with z/cos β = z and every factor cos β or cos β_b = 1.0; only its tip
-    involutes are taken directly (t − atan t) rather than as a step from inv α_t."""
+    pair is a helical one with z/cos β = z and every factor cos β or cos β_b = 1.0.
+    The steps hand their values on as tuples (the float path of the optimisers runs this ~10⁴
+    times a second, where dicts between the steps cost a sixth of its time)."""
     rack, internal = mesh.rack, mesh.internal
-    alpha, sa, ca, ta, inv_a, s2h, h_limit, tn, cb, cbb = _section_constants(rack, mesh.beta_deg)
-    # z1 + z2 and x1 + x2 of an external pair, z2 − z1 and x2 − x1 of an internal one (GOST 19274-73)
-    zs = z2 - z1 if internal else z1 + z2
-    xs = x2 - x1 if internal else x1 + x2
-    zt1, zt2 = z1 / cb, z2 / cb                # d/m_n: the reference diameters in normal modules
-
-    inv_aw, t_w, dt_w = ops.per_distinct(lambda D: _operating_angle(D, ta, inv_a, ops),
-                                         2.0 * xs * tn / zs)
-    cos_w = 1.0 / ops.sqrt(1.0 + t_w * t_w)
-    sin_w = t_w * cos_w
-
-    a = m * zs / cb / 2.0
-    # y = a (cos α − cos α_w)/(m cos α_w), cos α − cos α_w = (cos²α − cos²α_w)/(cos α + cos α_w)
-    # = Δt (tan α + tan α_w) cos²α cos²α_w/(cos α + cos α_w), Δt = tan α_w − tan α: no cancellation
-    y = zs / (2.0 * cb) * dt_w * (ta + t_w) * (ca * ca) * cos_w / (ca + cos_w)
-    a_w = a + y * m
-    dy = xs - y
-    # GOST 16532-70 shortens both tips of an external pair by Δy·m; internal pairs keep their tips
-    k = dy if mesh.tip_shortening and not internal else 0.0 * dy
-
-    d1, d2 = m * zt1, m * zt2
-    db1, db2 = d1 * ca, d2 * ca
-    rb1, rb2 = db1 / 2.0, db2 / 2.0
-    rw1, rw2 = rb1 / cos_w, rb2 / cos_w        # operating pitch radii r_b/cos α_w
-    dw1, dw2 = 2.0 * rw1, 2.0 * rw2
-    m2 = 2.0 * m
-    hf = rack.ha + rack.c
-    s2a = sa * sa / 2.0
-    # tip heights over the reference circle in modules: h_a* + x − k; a ring's tip lies inside it
-    h1 = rack.ha + x1 - k
-    h2 = rack.ha - x2 - k if internal else rack.ha + x2 - k
-    # s/d = (π/2 + 2 x tan α_n)/z (a ring's tooth is its counter-rack's gap: minus), ψ = s/d ± inv α
-    s_d1 = (math.pi / 2.0 + 2.0 * x1 * tn) / z1
-    s_d2 = (math.pi / 2.0 - 2.0 * x2 * tn if internal else math.pi / 2.0 + 2.0 * x2 * tn) / z2
-    da1 = d1 + m2 * h1
-    df1 = d1 - m2 * (hf - x1)
-    # r_a − r_b = m (z sin²(α/2) + h_a* + x − k): exact when the tip is near the base circle
-    # (summed left to right: at a tip near the base circle the terms cancel, and this order holds the
-    # 50-digit extremes to 1e-12 where h_a* + x − k summed first does not)
-    gap1 = m * (zt1 * s2h + rack.ha + x1 - k)
-    psi1 = s_d1 + inv_a   # s/d + inv α
-    x_min1 = h_limit - zt1 * s2a
-    rho_l1 = m * (x1 - x_min1) / sa
-    if internal:   # the ring: tips inside the reference circle, roots outside, flanks concave
-        da2 = d2 - m2 * h2
-        df2 = d2 + m2 * (hf + x2)
-        gap2 = m * (zt2 * s2h - rack.ha + x2 + k)
-        psi2 = s_d2 - inv_a   # s/d − inv α: s_y = d_y(ψ + inv α_y)
-        x_min2 = math.nan * x2                 # a ring is not undercut by its generating counter-rack
-        rho_l2 = m * (zt2 * s2a + h_limit + x2) / sa   # the form limit near the ring's root
-    else:
-        da2 = d2 + m2 * h2
-        df2 = d2 - m2 * (hf - x2)
-        gap2 = m * (zt2 * s2h + rack.ha + x2 - k)
-        psi2 = s_d2 + inv_a
-        x_min2 = h_limit - zt2 * s2a
-        rho_l2 = m * (x2 - x_min2) / sa
-    ra1, ra2 = da1 / 2.0, da2 / 2.0
-    rho_a1 = ops.sqrt(gap1 * (gap1 + db1))  # √(r_a² − r_b²) = r_b tan α_a
-    rho_a2 = ops.sqrt(gap2 * (gap2 + db2))
-    t_a1, t_a2 = rho_a1 / rb1, rho_a2 / rb2
-    # s_a = d_a (s/(m_t z) − (inv α_a − inv α_t)), the difference of involutes a step from
-    # Δt = tan α_a − tan α_t = (r_a − r)(r_a + r)/(r_b (ρ_a + r_b tan α_t)): at large z the two
-    # involutes agree to many digits, and α_t, a derived double, must not leak its rounding (z·ulp)
-    # into s_a; the checks' gradients read inv α_a as inv α_t + step
-    step1 = _inv_step(ta, m * h1 * (ra1 + d1 / 2.0) / (rb1 * (rho_a1 + rb1 * ta)), ops)
-    sa1 = da1 * (s_d1 - step1)
-    if internal:   # the ring's tip lies below its reference circle: Δt < 0
-        step2 = _inv_step(ta, -m * h2 * (ra2 + d2 / 2.0) / (rb2 * (rho_a2 + rb2 * ta)), ops)
-        sa2 = da2 * (s_d2 + step2)
-    else:
-        step2 = _inv_step(ta, m * h2 * (ra2 + d2 / 2.0) / (rb2 * (rho_a2 + rb2 * ta)), ops)
-        sa2 = da2 * (s_d2 - step2)
-    inv_a1, inv_a2 = inv_a + step1, inv_a + step2
+    c = _section_constants(rack, mesh.beta_deg)
+    alpha, sa, ca, ta, inv_a, s2h, h_limit, tn, cb, cbb = c
+    zs, inv_aw, t_w, dt_w, cos_w, sin_w, a, y, a_w, dy, k = _operating_mesh(mesh, c, m, z1, z2, x1, x2, ops)
+    zt1, d1, db1, rb1, rw1, h1, da1, df1, ra1, gap1, psi1, x_min1, rho_l1, rho_a1, t_a1, sa1, inv_a1 = \
+        _gear(rack, c, m, z1, x1, k, cos_w, ops)
+    zt2, d2, db2, rb2, rw2, h2, da2, df2, ra2, gap2, psi2, x_min2, rho_l2, rho_a2, t_a2, sa2, inv_a2 = \
+        _gear(rack, c, m, z2, x2, k, cos_w, ops, ring=internal)
 
     p_b = math.pi * m * ca / cb
-    g1, g2 = rb1 * t_w, rb2 * t_w              # N1N2 = g1 + g2 = a_w sin α_w (a ring pair: g2 − g1)
+    n1, n2 = rb1 * t_w, rb2 * t_w              # N1N2 = n1 + n2 = a_w sin α_w (a ring pair: n2 − n1)
     # e1 = ρ_a1 − r_b1 tan α_w = (r_a1² − r_w1²)/(ρ_a1 + r_b1 tan α_w) with r_a1 − r_w1 =
     # m(h_a* + x1 − k − y z1/z_Σ), and e2 the same for gear 2 (for a ring r_w2 − r_a2 =
     # m(h_a* − x2 − k + y z2/z_Σ), its part of the path runs inside): no cancellation
-    e1 = m * (h1 - y * z1 / zs) * (ra1 + rw1) / (rho_a1 + g1)
-    e2 = m * ((h2 + y * z2 / zs) if internal else (h2 - y * z2 / zs)) * (ra2 + rw2) / (rho_a2 + g2)
+    e1 = m * (h1 - y * z1 / zs) * (ra1 + rw1) / (rho_a1 + n1)
+    e2 = m * ((h2 + y * z2 / zs) if internal else (h2 - y * z2 / zs)) * (ra2 + rw2) / (rho_a2 + n2)
     g_alpha = e1 + e2
     eps_alpha = g_alpha / p_b
-
     # radii of curvature where the path of contact ends: the ring's grows with the pinion's
-    rho_p1 = g1 - e2
-    rho_p2 = g2 + e1 if internal else g2 - e1
+    rho_p1 = n1 - e2
+    rho_p2 = n2 + e1 if internal else n2 - e1
     u = z2 / z1
-    # specific sliding ϑ1 = 1 − ρ2/(u ρ1), ϑ2 = 1 − u ρ1/ρ2 at both ends of the path of contact
-    sliding1_root = 1.0 - rho_a2 / (u * rho_p1)
-    sliding2_root = 1.0 - u * rho_a1 / rho_p2
-    rho_w1 = rw1 * sin_w
-    rho_w2 = rw2 * sin_w
-    # m/ρ_red in the normal section, where the radii of curvature are ρ_t/cos β_b; concave ring: 1/ρ1 − 1/ρ2
-    spec_pressure = m * ((rho_w2 - rho_w1) if internal else (rho_w1 + rho_w2)) / (rho_w1 * rho_w2) * cbb
+    rho_w1, rho_w2 = rw1 * sin_w, rw2 * sin_w
     eps_beta = _overlap_ratio(mesh, m, ops)
-
     out = {
         "inv_alpha_w": inv_aw,
         "a": a, "a_w": a_w, "y": y, "dy": dy,
-        "d1": d1, "d2": d2, "db1": db1, "db2": db2, "dw1": dw1, "dw2": dw2,
+        "d1": d1, "d2": d2, "db1": db1, "db2": db2, "dw1": 2.0 * rw1, "dw2": 2.0 * rw2,
         "da1": da1, "da2": da2, "df1": df1, "df2": df2,
         "sa1": sa1, "sa2": sa2, "p_b": p_b, "g_alpha": g_alpha, "eps_alpha": eps_alpha,
         "x_min1": x_min1, "x_min2": x_min2,
         "rho_l1": rho_l1, "rho_l2": rho_l2, "rho_p1": rho_p1, "rho_p2": rho_p2,
-        "sliding1_root": sliding1_root, "sliding2_root": sliding2_root, "spec_pressure_pitch": spec_pressure,
+        # specific sliding ϑ1 = 1 − ρ2/(u ρ1), ϑ2 = 1 − u ρ1/ρ2 at both ends of the path of contact
+        "sliding1_root": 1.0 - rho_a2 / (u * rho_p1), "sliding2_root": 1.0 - u * rho_a1 / rho_p2,
+        # m/ρ_red in the normal section, where the radii of curvature are ρ_t/cos β_b; concave ring: 1/ρ1 − 1/ρ2
+        "spec_pressure_pitch": m * ((rho_w2 - rho_w1) if internal else (rho_w1 + rho_w2)) / (rho_w1 * rho_w2) * cbb,
         "eps_beta": eps_beta, "eps_gamma": eps_alpha + eps_beta,
         "san1": _normal_tip_thickness(sa1, da1, d1, mesh), "san2": _normal_tip_thickness(sa2, da2, d2, mesh),
         # internals used by checks and gradients (not reported)
@@ -458,27 +387,101 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
         # ∂x_Σ/∂x1 (−1 for an internal pair, where x_Σ = x2 − x1), tan α_n and tan β for the gradients
         "_sgn": -1.0 if internal else 1.0, "_tn": tn, "_tan_beta": math.tan(math.radians(mesh.beta_deg)),
     }
-    if full:   # the fields no check or objective of the library needs: only for reports
-        g = g2 - g1 if internal else g1 + g2
-        out.update({
-            "alpha_w_deg": ops.degrees(alpha + ops.atan(dt_w / (1.0 + ta * t_w))),   # α_w = α + atan Δt/(1 + t t_w)
-            "s1": d1 * (psi1 - inv_a), "s2": d2 * (psi2 + inv_a) if internal else d2 * (psi2 - inv_a),
-            "sw1": dw1 * (psi1 - inv_aw), "sw2": dw2 * (psi2 + inv_aw) if internal else dw2 * (psi2 - inv_aw),
-            "p_w": math.pi * dw1 / z1,
-            "alpha_a1_deg": ops.degrees(ops.atan(t_a1)), "alpha_a2_deg": ops.degrees(ops.atan(t_a2)),
-            "d_l1": 2.0 * ops.sqrt(rb1 * rb1 + ops.positive(rho_l1) ** 2),
-            "d_l2": 2.0 * ops.sqrt(rb2 * rb2 + ops.positive(rho_l2) ** 2),
-            "d_p1": 2.0 * ops.sqrt(rb1 * rb1 + rho_p1 * rho_p1),
-            "d_p2": 2.0 * ops.sqrt(rb2 * rb2 + rho_p2 * rho_p2),
-            "o2n1": ops.sqrt(rb2 * rb2 + g * g), "o1n2": ops.sqrt(rb1 * rb1 + g * g),
-            "sliding1_tip": 1.0 - rho_p2 / (u * rho_a1), "sliding2_tip": 1.0 - u * rho_p1 / rho_a2,
-            "alpha_t_deg": ops.degrees(alpha + 0.0 * m), "beta_b_deg": ops.degrees(mesh.section.beta_b + 0.0 * m),
-            "m_t": m / cb, "z_n1": zt1 / (cbb * cbb), "z_n2": zt2 / (cbb * cbb),
-        })
-        # external: a_w − r_a1 − r_f2 = m(c* + k − Δy); internal: r_f2 − a_w − r_a1 = m(c* + k + Δy);
-        # the same for both gears
-        out["clearance1"] = out["clearance2"] = m * (rack.c + k + dy) if internal else m * (rack.c + k - dy)
+    if not full:
+        return out
+    # the fields no check or objective of the library needs: only for reports
+    dw1, dw2 = out["dw1"], out["dw2"]
+    g = n2 - n1 if internal else n1 + n2
+    # external: a_w − r_a1 − r_f2 = m(c* + k − Δy); internal: r_f2 − a_w − r_a1 = m(c* + k + Δy); both gears
+    clearance = m * (rack.c + k + dy) if internal else m * (rack.c + k - dy)
+    out.update({
+        "alpha_w_deg": ops.degrees(alpha + ops.atan(dt_w / (1.0 + ta * t_w))),   # α_w = α + atan Δt/(1 + t t_w)
+        "s1": d1 * (psi1 - inv_a), "s2": d2 * (psi2 + inv_a) if internal else d2 * (psi2 - inv_a),
+        "sw1": dw1 * (psi1 - inv_aw), "sw2": dw2 * (psi2 + inv_aw) if internal else dw2 * (psi2 - inv_aw),
+        "p_w": math.pi * dw1 / z1,
+        "alpha_a1_deg": ops.degrees(ops.atan(t_a1)), "alpha_a2_deg": ops.degrees(ops.atan(t_a2)),
+        "d_l1": 2.0 * ops.sqrt(rb1 * rb1 + ops.positive(rho_l1) ** 2),
+        "d_l2": 2.0 * ops.sqrt(rb2 * rb2 + ops.positive(rho_l2) ** 2),
+        "d_p1": 2.0 * ops.sqrt(rb1 * rb1 + rho_p1 * rho_p1),
+        "d_p2": 2.0 * ops.sqrt(rb2 * rb2 + rho_p2 * rho_p2),
+        "o2n1": ops.sqrt(rb2 * rb2 + g * g), "o1n2": ops.sqrt(rb1 * rb1 + g * g),
+        "sliding1_tip": 1.0 - rho_p2 / (u * rho_a1), "sliding2_tip": 1.0 - u * rho_p1 / rho_a2,
+        "alpha_t_deg": ops.degrees(alpha + 0.0 * m), "beta_b_deg": ops.degrees(mesh.section.beta_b + 0.0 * m),
+        "m_t": m / cb, "z_n1": zt1 / (cbb * cbb), "z_n2": zt2 / (cbb * cbb),
+        "clearance1": clearance, "clearance2": clearance,
+    })
     return out
+
+
+def _operating_mesh(mesh: Mesh, c, m, z1, z2, x1, x2, ops) -> tuple:
+    """z_Σ, inv α_w, tan α_w, tan α_w − tan α, cos α_w, sin α_w, a, y, a_w, Δy and the tip shortening k
+    (lengths in mm, y, Δy and k in modules)."""
+    _, _, ca, ta, inv_a, _, _, tn, cb, _ = c
+    internal = mesh.internal
+    # z1 + z2 and x1 + x2 of an external pair, z2 − z1 and x2 − x1 of an internal one (GOST 19274-73)
+    zs = z2 - z1 if internal else z1 + z2
+    xs = x2 - x1 if internal else x1 + x2
+    inv_aw, t_w, dt_w = ops.per_distinct(lambda D: _operating_angle(D, ta, inv_a, ops),
+                                         2.0 * xs * tn / zs)
+    cos_w = 1.0 / ops.sqrt(1.0 + t_w * t_w)
+    a = m * zs / cb / 2.0
+    # y = a (cos α − cos α_w)/(m cos α_w), cos α − cos α_w = (cos²α − cos²α_w)/(cos α + cos α_w)
+    # = Δt (tan α + tan α_w) cos²α cos²α_w/(cos α + cos α_w), Δt = tan α_w − tan α: no cancellation
+    y = zs / (2.0 * cb) * dt_w * (ta + t_w) * (ca * ca) * cos_w / (ca + cos_w)
+    dy = xs - y
+    # GOST 16532-70 shortens both tips of an external pair by Δy·m; internal pairs keep their tips
+    k = dy if mesh.tip_shortening and not internal else 0.0 * dy
+    return zs, inv_aw, t_w, dt_w, cos_w, t_w * cos_w, a, y, a + y * m, dy, k
+
+
+def _gear(rack: BasicRack, c, m, z, x, k, cos_w, ops, ring: bool = False) -> tuple:
+    """One gear: z/cos β, d, d_b, r_b, r_w, tip height h (modules), d_a, d_f, r_a, r_a − r_b, ψ = s/d ± inv α,
+    x_min, ρ_l, ρ_a, tan α_a, s_a, inv α_a. An external gear, or with ``ring`` the internal gear of an
+    internal pair (tips inside the reference circle, roots outside, flanks concave)."""
+    _, sa, ca, ta, inv_a, s2h, h_limit, tn, cb, _ = c
+    zt = z / cb                                # d/m_n: the reference diameter in normal modules
+    d = m * zt
+    db = d * ca
+    rb = db / 2.0
+    m2 = 2.0 * m
+    hf = rack.ha + rack.c
+    s2a = sa * sa / 2.0
+    if ring:
+        h = rack.ha - x - k                    # the tip height inside the reference circle
+        s_d = (math.pi / 2.0 - 2.0 * x * tn) / z   # a ring's tooth is its counter-rack's gap
+        da = d - m2 * h
+        df = d + m2 * (hf + x)
+        gap = m * (zt * s2h - rack.ha + x + k)
+        psi = s_d - inv_a   # s/d − inv α: s_y = d_y(ψ + inv α_y)
+        x_min = math.nan * x                   # a ring is not undercut by its generating counter-rack
+        rho_l = m * (zt * s2a + h_limit + x) / sa   # the form limit near the ring's root
+    else:
+        h = rack.ha + x - k                    # tip height over the reference circle in modules: h_a* + x − k
+        s_d = (math.pi / 2.0 + 2.0 * x * tn) / z   # s/d = (π/2 + 2 x tan α_n)/z
+        da = d + m2 * h
+        df = d - m2 * (hf - x)
+        # r_a − r_b = m (z sin²(α/2) + h_a* + x − k): exact when the tip is near the base circle
+        # (summed left to right: at a tip near the base circle the terms cancel, and this order holds the
+        # 50-digit extremes to 1e-12 where h_a* + x − k summed first does not)
+        gap = m * (zt * s2h + rack.ha + x - k)
+        psi = s_d + inv_a   # s/d + inv α
+        x_min = h_limit - zt * s2a
+        rho_l = m * (x - x_min) / sa
+    ra = da / 2.0
+    rho_a = ops.sqrt(gap * (gap + db))         # √(r_a² − r_b²) = r_b tan α_a
+    # s_a = d_a (s/(m_t z) − (inv α_a − inv α_t)), the difference of involutes a step from
+    # Δt = tan α_a − tan α_t = (r_a − r)(r_a + r)/(r_b (ρ_a + r_b tan α_t)): at large z the two
+    # involutes agree to many digits, and α_t, a derived double, must not leak its rounding (z·ulp)
+    # into s_a; the checks' gradients read inv α_a as inv α_t + step. A ring's tip lies below its
+    # reference circle: Δt < 0.
+    if ring:
+        step = _inv_step(ta, -m * h * (ra + d / 2.0) / (rb * (rho_a + rb * ta)), ops)
+        s_a = da * (s_d + step)
+    else:
+        step = _inv_step(ta, m * h * (ra + d / 2.0) / (rb * (rho_a + rb * ta)), ops)
+        s_a = da * (s_d - step)
+    return (zt, d, db, rb, rb / cos_w, h, da, df, ra, gap, psi, x_min, rho_l, rho_a, rho_a / rb, s_a,
+            inv_a + step)
 
 
 def _inv_step(t, dt, ops):
