@@ -1,7 +1,8 @@
 """Geometry speed, as ratios against plain references written here (this machine drifts ±50 %):
 
 * vectorised geometry + the seven default check margins against a plain straight-line numpy
-  version of the same seven margins (textbook formulas, arccos and all);
+  version of the same seven margins (textbook formulas, arccos and all), and that plain version
+  evaluated in the library's cache-sized blocks (what blocking alone gives a numpy kernel doing its work);
 * one pair's GearPair(...).geometry() against a plain-Python evaluation of a few fields;
 * ``import geardesign`` (and the first GearPair) against ``import numpy``;
 * helical (β = 15°) and internal pairs against spur pairs with the same tooth counts and shifts

@@ -12,7 +12,7 @@ from geardesign.gears.geometry import mesh_geometry
 from geardesign.gears.mesh import Mesh
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-from bench_geometry import designs, plain_margins  # noqa: E402
+from bench_geometry import designs, plain_blocked, plain_margins  # noqa: E402
 
 
 def test_plain_margins_of_bench_geometry_are_the_librarys():
@@ -24,3 +24,11 @@ def test_plain_margins_of_bench_geometry_are_the_librarys():
                                     "tip_thickness1", "tip_thickness2", "contact_ratio"]
     for c, p in zip(cs, plain):
         np.testing.assert_allclose(ours[c.name], p, rtol=0, atol=1e-9, err_msg=c.name)
+
+
+def test_blocked_plain_margins_are_the_plain_margins():
+    """The blocked plain version (bench_geometry's ceiling of a numpy kernel) computes the same values,
+    across block boundaries."""
+    z1, z2, x1, x2 = designs(40_000, seed=6)
+    z1, z2 = z1.astype(float), z2.astype(float)
+    np.testing.assert_array_equal(plain_blocked(z1, z2, x1, x2), np.array(plain_margins(z1, z2, x1, x2)))

@@ -217,16 +217,14 @@ class Problem:
         arrays, which give inf/NaN as the vectorised path does. The geometry of the point
         :meth:`evaluate_point` saw last (a solver's final iterate, usually) is reused."""
         last = self._last_point
-        if last is not None and last[0] == (x1, x2, self.x_sum):
-            geo = last[2]
-        else:
-            try:
-                geo = mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
-                return geo, self.evaluate_geo(geo, parts)
-            except _FLOAT_FAULTS:
-                with np.errstate(all="ignore"):
-                    geo = self.geo(np.float64(x1), np.float64(x2))
-        return geo, self.evaluate_geo(geo, parts)
+        try:
+            geo = last[2] if last is not None and last[0] == (x1, x2, self.x_sum) else \
+                mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
+            return geo, self.evaluate_geo(geo, parts)
+        except _FLOAT_FAULTS:
+            with np.errstate(all="ignore"):
+                geo = self.geo(np.float64(x1), np.float64(x2))
+            return geo, self.evaluate_geo(geo, parts)
 
     def evaluate_geo(self, geo, parts: bool = False):
         """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict
