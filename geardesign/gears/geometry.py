@@ -415,7 +415,8 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
 
 def _operating_mesh(mesh: Mesh, c, m, z1, z2, x1, x2, ops) -> tuple:
     """z_Σ, inv α_w, tan α_w, tan α_w − tan α, cos α_w, sin α_w, a, y, a_w, Δy and the tip shortening k
-    (lengths in mm, y, Δy and k in modules)."""
+    (lengths in mm, y, Δy and k in modules): ISO 21771:2007 eq. (62), (63); the tip shortening
+    after GOST 16532-70 Table 1, item 7."""
     _, _, ca, ta, inv_a, _, _, tn, cb, _ = c
     internal = mesh.internal
     # z1 + z2 and x1 + x2 of an external pair, z2 − z1 and x2 − x1 of an internal one (GOST 19274-73)
@@ -436,8 +437,9 @@ def _operating_mesh(mesh: Mesh, c, m, z1, z2, x1, x2, ops) -> tuple:
 
 def _gear(rack: BasicRack, c, m, z, x, k, cos_w, ops, ring: bool = False) -> tuple:
     """One gear: z/cos β, d, d_b, r_b, r_w, tip height h (modules), d_a, d_f, r_a, r_a − r_b, ψ = s/d ± inv α,
-    x_min, ρ_l, ρ_a, tan α_a, s_a, inv α_a. An external gear, or with ``ring`` the internal gear of an
-    internal pair (tips inside the reference circle, roots outside, flanks concave)."""
+    x_min, ρ_l, ρ_a, tan α_a, s_a, inv α_a. An external gear (ISO 21771:2007 §4–5), or with ``ring``
+    the internal gear of an internal pair (tips inside the reference circle, roots outside, flanks
+    concave; KHK Table 5-1 and GOST 19274-73, docs/references.md)."""
     _, sa, ca, ta, inv_a, s2h, h_limit, tn, cb, _ = c
     zt = z / cb                                # d/m_n: the reference diameter in normal modules
     d = m * zt
