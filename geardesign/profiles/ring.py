@@ -208,6 +208,29 @@ def ring_profile(m, z, x=0.0, cutter: ShaperCutter | None = None, rack: BasicRac
         "tip_diameter_mm", require_range("tip_diameter_mm", tip_diameter_mm, 0.0, 1e9, lo_open=True, unit="mm")) / 2.0)
     rim = RIM_MODULES * m if rim_mm is None else one_number(
         "rim_mm", require_range("rim_mm", rim_mm, 0.0, 1e9, lo_open=True, unit="mm"))
+    cut, t_a0, psi_a0, r_b, r_f = _cutter_in_place(m, z, x, r_a, cutter, rack, alpha, m_t, cb)
+    # fillet: the corner's normal turns from the radial (it cuts the root) to the flank's (the form point)
+    cx, cy = (cut.r_a0 * v for v in _e(psi_a0))
+    chi = np.linspace(psi_a0, psi_a0 + math.pi / 2.0 - math.atan(t_a0), n)
+    fx, fy = _mirror(z, *cut.envelope(cx, cy, *_e(chi)))
+    ix, iy, eta_tip, t_cross = _flank(cut, z, r_a, r_b, t_a0, m, n)
+    tang = np.linspace(eta_tip, 0.0, n)
+    tx, ty = r_a * np.sin(tang), r_a * np.cos(tang)
+    rang = np.linspace(math.pi / z, float(np.arctan2(fx[0], fy[0])), max(2, n // 4))
+    rx, ry = r_f * np.sin(rang), r_f * np.cos(rang)
+    labels = np.array(["root"] * rx.size + ["fillet"] * fx.size + ["involute"] * n
+                      + ["interference"] * (ix.size - n) + ["tip"] * tx.size)
+    return RingProfile(m=m_t, z=z, x=x * cb, x_mm=np.concatenate([rx, fx, ix, tx]), y_mm=np.concatenate([ry, fy, iy, ty]),
+                       segment=labels, r_form_mm=float(np.hypot(ix[0], iy[0])), undercut=False,
+                       cutting_interference=t_cross is not None,
+                       tip_thickness_mm=2.0 * r_a * eta_tip, z0=cut.z0, x0=cutter.x0 * cb, a_w0_mm=cut.a_w0, r_root_mm=r_f,
+                       rim_diameter_mm=2.0 * (r_f + rim))
+
+
+def _cutter_in_place(m, z, x, r_a, cutter: ShaperCutter, rack: BasicRack, alpha, m_t, cb):
+    """The cutter at full depth in the ring (the cutting mesh at zero backlash): its motion, tan α at
+    its tip and its tip's half-angle ψ_a0, the ring's base and root radii; the
+    designs with no cutting position, a pointed cutter or no ring tooth refused by name."""
     z0 = int(cutter.teeth(m, z))
     if z0 >= z:
         raise GearDesignError(f"the shaper cutter has z0 = {z0} teeth, the ring z = {z}: a cutter needs fewer "
@@ -235,11 +258,15 @@ def ring_profile(m, z, x=0.0, cutter: ShaperCutter | None = None, rack: BasicRac
     if not r_a < r_f:
         raise GearDesignError(f"the ring's tip circle (d_a2 = {2 * r_a:.6g} mm) is outside its root "
                               f"(d_f2 = {2 * r_f:.6g} mm): no tooth to draw")
+    return cut, t_a0, psi_a0, r_b, r_f
 
-    # fillet: the corner's normal turns from the radial (it cuts the root) to the flank's (the form point)
-    cx, cy = (r_a0 * v for v in _e(psi_a0))
-    chi = np.linspace(psi_a0, psi_a0 + math.pi / 2.0 - math.atan(t_a0), n)
-    fx, fy = _mirror(z, *cut.envelope(cx, cy, *_e(chi)))
+
+def _flank(cut: "_Cutting", z: int, r_a, r_b, t_a0, m, n: int):
+    """The ring's flank from its form point to its tip circle: the envelope of the cutter's involute,
+    continued where the cutter cuts into it by what the cutter leaves (x, y, the tip's half-angle η_tip,
+    and the cutter's roll where the interference begins, None without). A tooth pointed before its
+    tip circle is refused by name."""
+    a_w0, r_w0, r_b0 = cut.a_w0, cut.r_w0, cut.r_b0
     # the flank point that cuts the ring's tip circle lies on the cutting mesh's line of action:
     # ρ0 = ρ_a2 − a_w0 sin α_w0. Where that is below the cutter's base circle (past N0), or the
     # cutter's teeth rolling out cut into the involute, the ring is what the cutter leaves
@@ -265,17 +292,7 @@ def ring_profile(m, z, x=0.0, cutter: ShaperCutter | None = None, rack: BasicRac
     if not tip_kept:
         raise GearDesignError(f"the ring's tooth is pointed (or cut away) before its tip circle (d_a2 = {2 * r_a:.6g} mm): "
                               "lower its tip or change its shift or the cutter")
-    tang = np.linspace(eta_tip, 0.0, n)
-    tx, ty = r_a * np.sin(tang), r_a * np.cos(tang)
-    rang = np.linspace(math.pi / z, float(np.arctan2(fx[0], fy[0])), max(2, n // 4))
-    rx, ry = r_f * np.sin(rang), r_f * np.cos(rang)
-    labels = np.array(["root"] * rx.size + ["fillet"] * fx.size + ["involute"] * n
-                      + ["interference"] * (ix.size - n) + ["tip"] * tx.size)
-    return RingProfile(m=m_t, z=z, x=x * cb, x_mm=np.concatenate([rx, fx, ix, tx]), y_mm=np.concatenate([ry, fy, iy, ty]),
-                       segment=labels, r_form_mm=float(np.hypot(ix[0], iy[0])), undercut=False,
-                       cutting_interference=t_cross is not None,
-                       tip_thickness_mm=2.0 * r_a * eta_tip, z0=z0, x0=cutter.x0 * cb, a_w0_mm=a_w0, r_root_mm=r_f,
-                       rim_diameter_mm=2.0 * (r_f + rim))
+    return ix, iy, eta_tip, t_cross
 
 
 def _interference_roll(cut: _Cutting, t_lo: float, t_hi: float, m: float):
