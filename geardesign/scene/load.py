@@ -66,87 +66,104 @@ def scene_kind(section: dict) -> dict:
 
 
 def _cross_checks(where: Where, s: dict):
-    """Rules between keys, and the checks the libraries would make later, made up front."""
-    if "gear" in s:
-        g = s["gear"]
-        if ("x1" in g) != ("x2" in g):
-            where.fail("gear", "x2" if "x1" in g else "x1", "missing; give both x1 and x2 or neither")
-        lo, hi = g["bounds"]
-        if not lo < hi:
-            where.fail("gear", "bounds", f"expected [lo, hi] with lo < hi, got {list(g['bounds'])}")
-        g["_rack"] = _rack(where, "gear", g.get("rack"))
-        kind = scene_kind(g)
-        if kind["internal"] and not g["z2"] > g["z1"]:
-            where.fail("gear", "z2", f"expected a ring with more teeth than the pinion (z2 > z1 = {g['z1']}), "
-                                     f"got {g['z2']!r}")
-        if "a_w" in g:
-            from ..gears.geometry import min_center_distance
-            from ..gears.rack import BasicRack
-            a_cos = float(min_center_distance(g["module"], g["z1"], g["z2"], g["_rack"] or BasicRack(),
-                                              kind["beta_deg"], kind["internal"]))
-            if g["a_w"] <= a_cos:
-                where.fail("gear", "a_w", f"expected a centre distance > a·cos(alpha_t) = {a_cos:.6g} mm, "
-                                          f"got {g['a_w']!r}")
-        if "x1" in g:
-            from ..gears.pair import GearPair
-            try:
-                GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **({"rack": g["_rack"]} if g["_rack"] else {}),
-                         tip_shortening=g["tip_shortening"], **kind)
-            except GearDesignError as exc:
-                where.fail("gear", "x1/x2", f"expected a pair that can be built: {exc}")
-    if "teeth" in s:
-        t = s["teeth"]
-        lo, hi = t["z1_range"]
-        if lo > hi:
-            where.fail("teeth", "z1_range", f"expected [min, max] with min <= max, got {list(t['z1_range'])}")
-        t["_rack"] = _rack(where, "teeth", t.get("rack"))
-    if "planetary" in s:
-        p = s["planetary"]
-        p["_rack"] = _rack(where, "planetary", p.get("rack"))
-        if "ratio" not in p:
-            for k in ("z_sun", "z_planet", "z_ring"):
-                if k not in p:
-                    where.fail("planetary", k, "missing; give z_sun, z_planet and z_ring, or ratio to search them")
-        if ("x_sun" in p) != ("x_planet" in p):
-            where.fail("planetary", "x_planet" if "x_sun" in p else "x_sun", "missing; give both x_sun and x_planet "
-                                                                             "or neither")
-    if "chain" in s:
-        c = s["chain"]
-        if ("torque_nm" in c) == ("power_kw" in c):
-            where.fail("chain", "torque_nm", "expected exactly one of torque_nm or power_kw")
-        if "k_e" in c and c.get("conditions"):
-            where.fail("chain", "k_e", "expected either k_e or [chain.conditions], not both")
-        if c.get("conditions"):
-            from ..drives.chain import Conditions
-            try:
-                Conditions.from_mapping(c["conditions"])
-            except GearDesignError as exc:
-                where.fail("chain.conditions", None, str(exc))
-    for i, k in enumerate(s.get("key", [])):
-        from ..drives.key import section as key_section
+    """Rules between keys, and the checks the libraries would make later, made up front: one step
+    per section the scene has."""
+    for name, check in _CROSS_CHECKS.items():
+        if name in s:
+            check(where, s[name], s)
+
+
+def _cross_gear(where: Where, g: dict, s: dict):
+    if ("x1" in g) != ("x2" in g):
+        where.fail("gear", "x2" if "x1" in g else "x1", "missing; give both x1 and x2 or neither")
+    lo, hi = g["bounds"]
+    if not lo < hi:
+        where.fail("gear", "bounds", f"expected [lo, hi] with lo < hi, got {list(g['bounds'])}")
+    g["_rack"] = _rack(where, "gear", g.get("rack"))
+    kind = scene_kind(g)
+    if kind["internal"] and not g["z2"] > g["z1"]:
+        where.fail("gear", "z2", f"expected a ring with more teeth than the pinion (z2 > z1 = {g['z1']}), "
+                                 f"got {g['z2']!r}")
+    if "a_w" in g:
+        from ..gears.geometry import min_center_distance
+        from ..gears.rack import BasicRack
+        a_cos = float(min_center_distance(g["module"], g["z1"], g["z2"], g["_rack"] or BasicRack(),
+                                          kind["beta_deg"], kind["internal"]))
+        if g["a_w"] <= a_cos:
+            where.fail("gear", "a_w", f"expected a centre distance > a·cos(alpha_t) = {a_cos:.6g} mm, "
+                                      f"got {g['a_w']!r}")
+    if "x1" in g:
+        from ..gears.pair import GearPair
+        try:
+            GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **({"rack": g["_rack"]} if g["_rack"] else {}),
+                     tip_shortening=g["tip_shortening"], **kind)
+        except GearDesignError as exc:
+            where.fail("gear", "x1/x2", f"expected a pair that can be built: {exc}")
+
+
+def _cross_teeth(where: Where, t: dict, s: dict):
+    lo, hi = t["z1_range"]
+    if lo > hi:
+        where.fail("teeth", "z1_range", f"expected [min, max] with min <= max, got {list(t['z1_range'])}")
+    t["_rack"] = _rack(where, "teeth", t.get("rack"))
+
+
+def _cross_planetary(where: Where, p: dict, s: dict):
+    p["_rack"] = _rack(where, "planetary", p.get("rack"))
+    if "ratio" not in p:
+        for k in ("z_sun", "z_planet", "z_ring"):
+            if k not in p:
+                where.fail("planetary", k, "missing; give z_sun, z_planet and z_ring, or ratio to search them")
+    if ("x_sun" in p) != ("x_planet" in p):
+        where.fail("planetary", "x_planet" if "x_sun" in p else "x_sun", "missing; give both x_sun and x_planet "
+                                                                         "or neither")
+
+
+def _cross_chain(where: Where, c: dict, s: dict):
+    if ("torque_nm" in c) == ("power_kw" in c):
+        where.fail("chain", "torque_nm", "expected exactly one of torque_nm or power_kw")
+    if "k_e" in c and c.get("conditions"):
+        where.fail("chain", "k_e", "expected either k_e or [chain.conditions], not both")
+    if c.get("conditions"):
+        from ..drives.chain import Conditions
+        try:
+            Conditions.from_mapping(c["conditions"])
+        except GearDesignError as exc:
+            where.fail("chain.conditions", None, str(exc))
+
+
+def _cross_keys(where: Where, keys: list, s: dict):
+    from ..drives.key import section as key_section
+    for k in keys:
         try:
             key_section(k["d_mm"])
         except GearDesignError as exc:
             where.fail("key", "d_mm", f"expected a shaft diameter in the key table: {exc}")
-    if "study" in s:
-        st = s["study"]
-        target = st["target"]
-        if target not in s:
-            where.fail("study", "target", f"expected a section that the scene models; [{target}] is missing")
-        if ("parameter2" in st) != ("values2" in st):
-            where.fail("study", "values2" if "parameter2" in st else "parameter2",
-                       "missing; give parameter2 and values2 together")
-        from ..sensitivity.studies import sweep_parameters
-        allowed = sweep_parameters(target)
-        for key in ("parameter", "parameter2"):
-            if key in st and st[key] not in allowed:
-                where.fail("study", key, f"expected one of {', '.join(allowed)} for target {target!r}, got {st[key]!r}")
-        ints = ("z1", "z2", "strands")
-        for key, vals in (("values", "parameter"), ("values2", "parameter2")):
-            if key in st and st.get(vals) in ints and any(not float(v).is_integer() for v in st[key]):
-                where.fail("study", key, f"expected whole numbers for {st[vals]}, got {list(st[key])}")
-        if st.get("parameter") == st.get("parameter2"):
-            where.fail("study", "parameter2", "expected a parameter other than parameter")
+
+
+def _cross_study(where: Where, st: dict, s: dict):
+    target = st["target"]
+    if target not in s:
+        where.fail("study", "target", f"expected a section that the scene models; [{target}] is missing")
+    if ("parameter2" in st) != ("values2" in st):
+        where.fail("study", "values2" if "parameter2" in st else "parameter2",
+                   "missing; give parameter2 and values2 together")
+    from ..sensitivity.studies import sweep_parameters
+    allowed = sweep_parameters(target)
+    for key in ("parameter", "parameter2"):
+        if key in st and st[key] not in allowed:
+            where.fail("study", key, f"expected one of {', '.join(allowed)} for target {target!r}, got {st[key]!r}")
+    ints = ("z1", "z2", "strands")
+    for key, vals in (("values", "parameter"), ("values2", "parameter2")):
+        if key in st and st.get(vals) in ints and any(not float(v).is_integer() for v in st[key]):
+            where.fail("study", key, f"expected whole numbers for {st[vals]}, got {list(st[key])}")
+    if st.get("parameter") == st.get("parameter2"):
+        where.fail("study", "parameter2", "expected a parameter other than parameter")
+
+
+# section -> its cross-checks, in the order they run
+_CROSS_CHECKS = {"gear": _cross_gear, "teeth": _cross_teeth, "planetary": _cross_planetary, "chain": _cross_chain,
+                 "key": _cross_keys, "study": _cross_study}
 
 
 def _chain_catalog(where, path: Path, name: str) -> str:
