@@ -112,6 +112,11 @@ REPORT_FIELDS = frozenset({"alpha_w_deg", "s1", "s2", "sw1", "sw2", "p_w", "alph
                            "sliding2_tip", "alpha_t_deg", "beta_b_deg", "m_t", "z_n1", "z_n2"})
 
 
+# Fields of the path of contact: computed unless only fields without them are asked for
+CONTACT_FIELDS = frozenset({"p_b", "g_alpha", "eps_alpha", "rho_p1", "rho_p2", "sliding1_root", "sliding2_root",
+                            "spec_pressure_pitch", "eps_gamma"})
+
+
 # --- formulas ---------------------------------------------------------------------------
 
 
@@ -270,23 +275,24 @@ _FLOAT_OPS = SimpleNamespace(
 BLOCK = 16_384
 
 
-def mesh_geometry(mesh: Mesh, m, x1, x2, full: bool = True, then=None) -> dict:
+def mesh_geometry(mesh: Mesh, m, x1, x2, full: bool = True, then=None, contact: bool = True) -> dict:
     """All geometry fields of ``mesh`` at module ``m`` (mm) and shifts x1, x2 as float arrays
     (broadcast with the mesh's tooth counts), no validation: designs that do not exist give NaN.
     Internal quantities the checks and gradients use carry a leading underscore. ``full=False``
-    leaves out the fields only reports use (:data:`REPORT_FIELDS`). Large inputs are evaluated
+    leaves out the fields only reports use (:data:`REPORT_FIELDS`), and with it ``contact=False`` those of
+    the path of contact (:data:`CONTACT_FIELDS`). Large inputs are evaluated
     in blocks of :data:`BLOCK` designs. ``then``: a function of the geometry dict (e.g. the
     checks' margins) applied block by block, whose dict of arrays (the designs along their last
     axis) is returned instead: only what it returns is stored at full size, not the ~50 fields."""
     m, z1, z2, x1, x2 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, mesh.z1, mesh.z2, x1, x2)))
     with np.errstate(invalid="ignore", divide="ignore"):
         if m.size <= BLOCK:
-            geo = _formulas(mesh, m, z1, z2, x1, x2, _ARRAY_OPS, full)
+            geo = _formulas(mesh, m, z1, z2, x1, x2, _ARRAY_OPS, full, contact)
             return geo if then is None else then(geo)
         shape, flat = m.shape, [v.reshape(-1) for v in (m, z1, z2, x1, x2)]
         out = {}
         for s in range(0, m.size, BLOCK):
-            part = _formulas(mesh, *(v[s:s + BLOCK] for v in flat), _ARRAY_OPS, full)
+            part = _formulas(mesh, *(v[s:s + BLOCK] for v in flat), _ARRAY_OPS, full, contact)
             if then is not None:
                 part = then(part)
             for k, v in part.items():
@@ -333,10 +339,11 @@ def _operating_angle(D, ta, inv_a, ops):
     return inv_aw, ta + dt, dt
 
 
-def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
+def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True, contact: bool = True) -> dict:
     """Every field of the pair; ``m`` is the normal module, x1/x2 normal shifts, and the circles,
     angles, thicknesses and the path of contact are transverse (ISO 21771:2007 §4–5). A spur
-    pair is a helical one with z/cos β = z and every factor cos β or cos β_b = 1.0.
+    pair is a helical one with z/cos β = z and every factor cos β or cos β_b = 1.0. The path of
+    contact is left out with ``contact=False`` unless ``full`` (the reports read it).
     The steps hand their values on as tuples (the float path of the optimisers runs this ~10⁴
     times a second, where dicts between the steps cost a sixth of its time)."""
     rack, internal = mesh.rack, mesh.internal
@@ -347,6 +354,27 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
         _gear(rack, c, m, z1, x1, k, cos_w, ops)
     zt2, d2, db2, rb2, rw2, h2, da2, df2, ra2, gap2, psi2, x_min2, rho_l2, rho_a2, t_a2, sa2, inv_a2 = \
         _gear(rack, c, m, z2, x2, k, cos_w, ops, ring=internal)
+
+    eps_beta = _overlap_ratio(mesh, m, ops)
+    out = {
+        "inv_alpha_w": inv_aw,
+        "a": a, "a_w": a_w, "y": y, "dy": dy,
+        "d1": d1, "d2": d2, "db1": db1, "db2": db2, "dw1": 2.0 * rw1, "dw2": 2.0 * rw2,
+        "da1": da1, "da2": da2, "df1": df1, "df2": df2, "sa1": sa1, "sa2": sa2,
+        "x_min1": x_min1, "x_min2": x_min2, "rho_l1": rho_l1, "rho_l2": rho_l2, "eps_beta": eps_beta,
+        "san1": _normal_tip_thickness(sa1, da1, d1, mesh), "san2": _normal_tip_thickness(sa2, da2, d2, mesh),
+        # internals used by checks and gradients (not reported)
+        "_ra1": ra1, "_ra2": ra2, "_rho_a1": rho_a1, "_rho_a2": rho_a2,
+        "_sin_w": sin_w, "_cos_w": cos_w, "_t_w": t_w, "_t_a1": t_a1, "_t_a2": t_a2, "_psi1": psi1, "_psi2": psi2,
+        "_gap1": gap1, "_gap2": gap2, "_k": k,
+        # ∂Δy/∂(x1 + x2) = 1 − sin α / sin α_w (∂y/∂x_Σ = sin α / sin α_w), 0 without shortening
+        "_dk": (1.0 - sa / sin_w) if mesh.tip_shortening and not internal else 0.0 * sin_w, "_sa": sa, "_ta": ta,
+        "_inv_a1": inv_a1, "_inv_a2": inv_a2, "_m": m, "_z1": z1, "_z2": z2, "_x1": x1, "_x2": x2,
+        # ∂x_Σ/∂x1 (−1 for an internal pair, where x_Σ = x2 − x1), tan α_n and tan β for the gradients
+        "_sgn": -1.0 if internal else 1.0, "_tn": tn, "_tan_beta": math.tan(math.radians(mesh.beta_deg)),
+    }
+    if not (contact or full):
+        return out
 
     p_b = math.pi * m * ca / cb
     n1, n2 = rb1 * t_w, rb2 * t_w              # N1N2 = n1 + n2 = a_w sin α_w (a ring pair: n2 − n1)
@@ -362,31 +390,14 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True) -> dict:
     rho_p2 = n2 + e1 if internal else n2 - e1
     u = z2 / z1
     rho_w1, rho_w2 = rw1 * sin_w, rw2 * sin_w
-    eps_beta = _overlap_ratio(mesh, m, ops)
-    out = {
-        "inv_alpha_w": inv_aw,
-        "a": a, "a_w": a_w, "y": y, "dy": dy,
-        "d1": d1, "d2": d2, "db1": db1, "db2": db2, "dw1": 2.0 * rw1, "dw2": 2.0 * rw2,
-        "da1": da1, "da2": da2, "df1": df1, "df2": df2,
-        "sa1": sa1, "sa2": sa2, "p_b": p_b, "g_alpha": g_alpha, "eps_alpha": eps_alpha,
-        "x_min1": x_min1, "x_min2": x_min2,
-        "rho_l1": rho_l1, "rho_l2": rho_l2, "rho_p1": rho_p1, "rho_p2": rho_p2,
+    out.update({
+        "p_b": p_b, "g_alpha": g_alpha, "eps_alpha": eps_alpha, "rho_p1": rho_p1, "rho_p2": rho_p2,
         # specific sliding ϑ1 = 1 − ρ2/(u ρ1), ϑ2 = 1 − u ρ1/ρ2 at both ends of the path of contact
         "sliding1_root": 1.0 - rho_a2 / (u * rho_p1), "sliding2_root": 1.0 - u * rho_a1 / rho_p2,
         # m/ρ_red in the normal section, where the radii of curvature are ρ_t/cos β_b; concave ring: 1/ρ1 − 1/ρ2
         "spec_pressure_pitch": m * ((rho_w2 - rho_w1) if internal else (rho_w1 + rho_w2)) / (rho_w1 * rho_w2) * cbb,
-        "eps_beta": eps_beta, "eps_gamma": eps_alpha + eps_beta,
-        "san1": _normal_tip_thickness(sa1, da1, d1, mesh), "san2": _normal_tip_thickness(sa2, da2, d2, mesh),
-        # internals used by checks and gradients (not reported)
-        "_ra1": ra1, "_ra2": ra2, "_rho_a1": rho_a1, "_rho_a2": rho_a2,
-        "_sin_w": sin_w, "_cos_w": cos_w, "_t_w": t_w, "_t_a1": t_a1, "_t_a2": t_a2, "_psi1": psi1, "_psi2": psi2,
-        "_gap1": gap1, "_gap2": gap2, "_k": k,
-        # ∂Δy/∂(x1 + x2) = 1 − sin α / sin α_w (∂y/∂x_Σ = sin α / sin α_w), 0 without shortening
-        "_dk": (1.0 - sa / sin_w) if mesh.tip_shortening and not internal else 0.0 * sin_w, "_sa": sa, "_ta": ta,
-        "_inv_a1": inv_a1, "_inv_a2": inv_a2, "_m": m, "_z1": z1, "_z2": z2, "_x1": x1, "_x2": x2,
-        # ∂x_Σ/∂x1 (−1 for an internal pair, where x_Σ = x2 − x1), tan α_n and tan β for the gradients
-        "_sgn": -1.0 if internal else 1.0, "_tn": tn, "_tan_beta": math.tan(math.radians(mesh.beta_deg)),
-    }
+        "eps_gamma": eps_alpha + eps_beta,
+    })
     if not full:
         return out
     # the fields no check or objective of the library needs: only for reports
@@ -541,9 +552,9 @@ def _first(mask: np.ndarray) -> tuple[str, tuple]:
     return where, idx if mask.ndim else ()
 
 
-# the fields :func:`validate_geometry` reads
+# the fields :func:`validate_geometry` reads (g_alpha and eps_alpha with ``contact``)
 _VALIDATION_FIELDS = frozenset({"_z1", "_z2", "_x1", "_x2", "inv_alpha_w", "_gap1", "_gap2", "_k", "da1", "da2",
-                                "db1", "db2", "df1", "df2", "g_alpha", "eps_alpha"})
+                                "db1", "db2", "df1", "df2"})
 
 
 def validate_geometry(geo: dict, mesh: Mesh, contact: bool = False) -> None:
@@ -585,7 +596,7 @@ def validate_geometry(geo: dict, mesh: Mesh, contact: bool = False) -> None:
             raise GearDesignError(
                 f"x{j} = {x:.6g}{where}: the root diameter of gear {j} is not positive; "
                 f"x{j} must be > {rack.ha + rack.c - z / cos_b / 2.0:.6g} for z{j} = {int(z)}")
-    bad = ~(geo["g_alpha"] > 0)
+    bad = ~(geo["g_alpha"] > 0) if contact else None
     if contact and bad.any():
         where, i = _first(bad)
         raise GearDesignError(
@@ -735,8 +746,9 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
 
     ``fields`` (names of :data:`GEOMETRY_FIELDS`) keeps only those in the result (the others are
     None) and computes only what they need: the report-only fields (:data:`REPORT_FIELDS`) are
-    skipped unless one of them is asked for, and only the fields asked for and those the
-    validation reads are stored at full size (10⁶ designs: ~7× faster than every field).
+    skipped unless one of them is asked for, the path of contact (:data:`CONTACT_FIELDS`) unless it
+    or a report field is, and only the fields asked for and those the validation reads are stored
+    at full size (10⁶ designs: ~7× faster than every field).
 
     Returns a :class:`Geometry` of arrays (of floats when all inputs are scalars). Raises
     :class:`~geardesign.errors.GearDesignError` naming the first design whose geometry
@@ -763,12 +775,13 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
         raise GearDesignError(f"pair_geometry takes at most {DESIGNS_MAX:,} designs in one call, got {n:,}")
     names = None if fields is None else _field_names(fields)
     full = names is None or not REPORT_FIELDS.isdisjoint(names)
+    contact = full or not CONTACT_FIELDS.isdisjoint(names)
     # with ``fields``, only those and what the validation reads are stored at full size
     keep = None if names is None else _VALIDATION_FIELDS.union(names, ("a",))
     with np.errstate(all="ignore"):   # designs that do not exist are refused by name just below
         mesh = Mesh(z1, z2, rack, require_bool("tip_shortening", tip_shortening), beta_deg, internal, face_width)
         geo = mesh_geometry(mesh, m, x1, x2, full, then=None if keep is None else (
-            lambda g: {k: v for k, v in g.items() if k in keep}))
+            lambda g: {k: v for k, v in g.items() if k in keep}), contact=contact)
     validate_geometry(geo, mesh)
     return Geometry._from_core(geo, scalar, names)
 

@@ -128,6 +128,30 @@ def test_fields_asked_for_equal_the_full_result_and_are_validated_alike():
     assert some.names == ["a_w", "sa1", "eps_alpha", "d_l1"] and some.da1 is None
     for k in some.names:
         np.testing.assert_array_equal(getattr(some, k), getattr(every, k))
+    no_contact = gd.pair_geometry(2.0, z1, z2, x1, x2, fields=["a_w", "sa2", "df1"])
+    for k in no_contact.names:
+        np.testing.assert_array_equal(getattr(no_contact, k), getattr(every, k))
     x1[-1] = -3.0
     with pytest.raises(gd.GearDesignError, match="index 17383"):
         gd.pair_geometry(2.0, z1, z2, x1, x2, fields=["a_w"])
+
+
+def test_path_of_contact_left_out_when_no_field_needs_it():
+    """mesh_geometry(contact=False) computes no field of the path of contact (CONTACT_FIELDS) and
+    every other field as with it; pair_geometry asks for it only when a field needs it."""
+    import numpy as np
+
+    from geardesign.gears.geometry import CONTACT_FIELDS
+    from geardesign.gears.mesh import Mesh
+
+    mesh = Mesh(np.array([17, 20]), np.array([26, 60]), None, True, 0.0, False)
+    lean = mesh_geometry(mesh, 2.0, np.array([0.3, 0.1]), np.array([0.2, 0.5]), full=False, contact=False)
+    with_path = mesh_geometry(mesh, 2.0, np.array([0.3, 0.1]), np.array([0.2, 0.5]), full=False)
+    assert CONTACT_FIELDS.isdisjoint(lean) and CONTACT_FIELDS <= set(with_path)
+    assert set(with_path) - set(lean) == CONTACT_FIELDS
+    for k in lean:
+        np.testing.assert_array_equal(lean[k], with_path[k])
+    # KHK 12/24 (x 0.6/0.36): a_w = 56.4999 mm without the path; the tips of x1 = x2 = 3 do not reach
+    # across the line of action, which only GearPair refuses
+    assert round(gd.pair_geometry(3, 12, 24, 0.6, 0.36, fields=["a_w"]).a_w, 4) == 56.4999
+    assert gd.pair_geometry(3, 12, 24, 3.0, 3.0, fields=["eps_alpha"]).eps_alpha <= 0
