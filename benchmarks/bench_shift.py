@@ -2,7 +2,9 @@
 
 Run: python benchmarks/bench_shift.py [n_pairs]
 For each method and tolerance: median time per pair (one call per pair) and the error
-against method="exact" (distance in x and objective gap) over a fixed set of pairs;
+against method="exact" (distance in x and objective gap) over a fixed set of pairs; exact also as a ratio
+to a plain numpy evaluation of the seven margins on its 31x31 start grid, timed beside each solve (the
+machine's load falls on both);
 then ``exact`` for helical (β = 15°) and internal pairs as a ratio of the spur time on the same
 tooth counts (issue 12 asks for 1.5x at most); then the batched atlas for z1 in 8..40, z2 in z1..120.
 Prints figures; asserts nothing.
@@ -13,7 +15,10 @@ import time
 import numpy as np
 
 import geardesign as gd
+from bench_geometry import plain_margins
+from geardesign.gears.geometry import exact_sum_nodes
 from geardesign.shifts.objectives import OBJECTIVES
+from geardesign.shifts.problem import DEFAULT_BOUNDS
 
 
 def pairs(n, seed=7):
@@ -29,16 +34,24 @@ def pairs(n, seed=7):
 def main(n=200):
     ps = pairs(n)
     exact = {}
-    t_exact = []
+    t_exact, t_plain = [], []
+    g = exact_sum_nodes(*DEFAULT_BOUNDS, 31)
+    X1, X2 = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
     for z1, z2 in ps:
         t0 = time.perf_counter()
         exact[(z1, z2)] = gd.optimize_shifts(z1, z2, method="exact")
         t_exact.append(time.perf_counter() - t0)
+        with np.errstate(all="ignore"):   # the plain reference, timed beside each solve
+            t0 = time.perf_counter()
+            plain_margins(float(z1), float(z2), X1, X2)
+            t_plain.append(time.perf_counter() - t0)
     feasible = [p for p in ps if exact[p].success]
     print(f"{len(ps)} pairs (z1 10..40, z2 z1..120), objective max_x_sum, default checks; "
           f"{len(feasible)} feasible")
     print(f"{'method':<8} {'tol':>8} {'median ms/pair':>15} {'max |dx|':>10} {'median |dx|':>12} {'max obj gap':>12}")
     print(f"{'exact':<8} {1e-9:>8.0e} {np.median(t_exact) * 1e3:>15.2f} {0:>10.1e} {0:>12.1e} {0:>12.1e}")
+    print(f"  (a plain numpy evaluation of the seven margins on the 31x31 start grid, timed beside each solve: "
+          f"{np.median(t_plain) * 1e3:.3f} ms median; exact takes {np.median(t_exact) / np.median(t_plain):.1f}x that)")
     gd.optimize_shifts(17, 26, method="convex")   # compile the cvxpy problem once
     for method, tols, subset in (("convex", (1e-4, 1e-7), feasible[:60]), ("grid", (0.05, 0.01, 0.002), feasible)):
         for tol in tols:
