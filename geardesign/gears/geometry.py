@@ -1,11 +1,13 @@
-"""External spur gear-pair geometry (ISO 21771:2007, GOST 16532-70), vectorised.
+"""Gear-pair geometry, spur and helical, external and internal (ISO 21771:2007, GOST 16532-70, GOST 19274-73),
+vectorised.
 
 One call evaluates any number of designs: every argument broadcasts (numpy rules) over
 m, z1, z2, x1, x2; the rack is one :class:`~geardesign.gears.rack.BasicRack`. Lengths are in mm
 (or in the unit of ``m``), angles in degrees at the interface and radians inside.
 
 Cancellation-free forms are used where the textbook form loses digits:
-y = (z1+z2)/2 · (cos α − cos α_w)/cos α_w with cos α − cos α_w = 2 sin((α_w+α)/2) sin((α_w−α)/2);
+y = z_Σ/2 · (cos α − cos α_w)/cos α_w from Δt = tan α_w − tan α, which is refined itself (no difference of
+near-equal cosines);
 r_a² − r_b² = (r_a − r_b)(r_a + r_b) with r_a − r_b = m(z sin²(α/2) + h_a* + x − Δy) [GOST tip];
 inv α_a − inv α as a step from tan α_a − tan α (no arccos near 1, no two involutes subtracted).
 """
@@ -487,12 +489,9 @@ def _gear(rack: BasicRack, c, m, z, x, k, cos_w, ops, ring: bool = False) -> tup
     # involutes agree to many digits, and α_t, a derived double, must not leak its rounding (z·ulp)
     # into s_a; the checks' gradients read inv α_a as inv α_t + step. A ring's tip lies below its
     # reference circle: Δt < 0.
-    if ring:
-        step = _inv_step(ta, -m * h * (ra + d / 2.0) / (rb * (rho_a + rb * ta)), ops)
-        s_a = da * (s_d + step)
-    else:
-        step = _inv_step(ta, m * h * (ra + d / 2.0) / (rb * (rho_a + rb * ta)), ops)
-        s_a = da * (s_d - step)
+    side = -1.0 if ring else 1.0
+    step = _inv_step(ta, side * m * h * (ra + d / 2.0) / (rb * (rho_a + rb * ta)), ops)
+    s_a = da * (s_d - side * step)
     return (zt, d, db, rb, rb / cos_w, h, da, df, ra, gap, psi, x_min, rho_l, rho_a, rho_a / rb, s_a,
             inv_a + step)
 

@@ -151,7 +151,9 @@ def test_path_of_contact_left_out_when_no_field_needs_it():
     assert set(with_path) - set(lean) == CONTACT_FIELDS
     for k in lean:
         np.testing.assert_array_equal(lean[k], with_path[k])
-    # KHK 12/24 (x 0.6/0.36): a_w = 56.4999 mm without the path; the tips of x1 = x2 = 3 do not reach
-    # across the line of action, which only GearPair refuses
+    # KHK 12/24 (x 0.6/0.36): a_w = 56.4999 mm without the path; 5/5 at x = 2 on a 15° rack, whose tips do
+    # not overlap along the line of action (shown in mpmath in tests/gears/test_pair.py), only GearPair refuses
     assert round(gd.pair_geometry(3, 12, 24, 0.6, 0.36, fields=["a_w"]).a_w, 4) == 56.4999
-    assert gd.pair_geometry(3, 12, 24, 3.0, 3.0, fields=["eps_alpha"]).eps_alpha <= 0
+    rack15 = gd.BasicRack(alpha_deg=15.0)
+    assert gd.pair_geometry(1, 5, 5, 2.0, 2.0, rack=rack15, fields=["a_w"]).names == ["a_w"]
+    assert gd.pair_geometry(1, 5, 5, 2.0, 2.0, rack=rack15, fields=["eps_alpha"]).eps_alpha < 0
