@@ -74,6 +74,9 @@ def _kkt_newton(ev: Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxit
             dw = solve_small(rows + [srow] if edge else rows, [-f for f in F])
         except np.linalg.LinAlgError:
             return None
+        small = max(map(abs, dw[:nv])) <= step_tol * max(1.0, max(map(abs, w[:nv])))
+        if small and not noisy and max(map(abs, F[:-1] if edge else F), default=0.0) <= 1e-12:
+            break   # x within a step below the tolerance, t too: stay where F is known (no confirming evaluation)
         w = [a + d for a, d in zip(w, dw)]
         if not all(map(math.isfinite, w)) or max(abs(a - b) for a, b in zip(w[:nv], w0)) > max_move:
             return None
@@ -85,7 +88,7 @@ def _kkt_newton(ev: Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxit
         if edge and dd > 0:   # Broyden: the row's directional derivative along the step matches the change
             r = (F[-1] - F_old[-1] - sum(a * d for a, d in zip(srow, dw))) / dd
             srow = [a + r * d for a, d in zip(srow, dw)]
-        if max(map(abs, dw[:nv])) <= step_tol * max(1.0, max(map(abs, w[:nv]))) or max(map(abs, F)) <= res_tol:
+        if small or max(map(abs, F)) <= res_tol:
             break
     ok = max(map(abs, F[:-1] if edge else F), default=0.0) <= 1e-10 and (not edge or abs(F[-1]) <= stat_tol)
     return (np.array(w), it) if ok else None

@@ -72,15 +72,17 @@ def grid_starts(prob: Problem, V: np.ndarray, n: int):
     far = ~ndimage.maximum_filter(feasible.reshape(shape), size=5, mode="constant", cval=False).ravel()
     cand = far & (fun > best)
     if M.size and cand.any():
-        Mg = np.where(np.isfinite(M), M, np.nan).reshape((-1,) + shape)
+        # only the margins some candidate misses decide whether it is near
+        missed = M[(M[:, cand] < 0).any(axis=1)]
+        Mg = np.where(np.isfinite(missed), missed, np.nan).reshape((-1,) + shape)
         step = np.zeros_like(Mg)   # the largest one-node change of each margin, along either axis
         for ax in range(1, prob.nvar + 1):
-            d = np.moveaxis(np.abs(np.diff(Mg, axis=ax)), ax, -1)
-            s = np.moveaxis(step, ax, -1)    # a view: the updates land in step
-            np.fmax(s[..., 1:], d, out=s[..., 1:])     # the change to the node before
-            np.fmax(s[..., :-1], d, out=s[..., :-1])   # and to the node after (NaN where one is missing)
-        with np.errstate(invalid="ignore"):
-            near = ((M >= 0) | (-M <= step.reshape(M.shape))).all(axis=0)
+            before = (slice(None),) * ax + (slice(1, None),)
+            after = (slice(None),) * ax + (slice(None, -1),)
+            d = np.abs(Mg[before] - Mg[after])
+            np.fmax(step[before], d, out=step[before])     # the change to the node before
+            np.fmax(step[after], d, out=step[after])       # and to the node after (NaN where one is missing)
+        near = (missed + step.reshape(missed.shape) >= 0).all(axis=0)   # step >= 0, never NaN
         near_score = np.where(cand & near, fun, -np.inf).reshape(shape)
         if np.isfinite(near_score).any():
             peak = np.isfinite(near_score) & (near_score >= ndimage.maximum_filter(near_score, footprint=box,
