@@ -3,6 +3,7 @@ that names the input, the value it got and the range it allows."""
 from __future__ import annotations
 
 import numbers
+import sys
 
 import numpy as np
 
@@ -47,8 +48,15 @@ def require_finite(name: str, value) -> np.ndarray:
     return arr
 
 
+# a plain Python number inside its range is the common case: checked without numpy (~1 µs a call instead of ~4)
+_PLAIN = (float, int)
+_FLOAT_MAX = sys.float_info.max
+
+
 def require_positive(name: str, value, unit: str = "") -> np.ndarray:
     """Finite and strictly positive."""
+    if type(value) in _PLAIN and 0 < value <= _FLOAT_MAX:
+        return np.asarray(float(value))
     arr = require_finite(name, value)
     bad = arr <= 0
     if bad.any():
@@ -60,6 +68,9 @@ def require_positive(name: str, value, unit: str = "") -> np.ndarray:
 def require_range(name: str, value, lo: float, hi: float, *, lo_open=False, hi_open=False,
                   unit: str = "") -> np.ndarray:
     """Finite and inside [lo, hi] (or the open ends asked for)."""
+    if type(value) in _PLAIN and (lo < value if lo_open else lo <= value) and (value < hi if hi_open else value <= hi) \
+            and -_FLOAT_MAX <= value <= _FLOAT_MAX:
+        return np.asarray(float(value))
     arr = require_finite(name, value)
     bad = (arr <= lo) if lo_open else (arr < lo)
     bad |= (arr >= hi) if hi_open else (arr > hi)

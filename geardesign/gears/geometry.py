@@ -222,8 +222,34 @@ def _float_tan_from_inv(v: float) -> float:
 
 _PROBE = 1024   # values looked at before deduplicating: a grid block repeats its x-sums within them
 # Below this many values the hashing costs more than it saves (a 31 × 31 start grid: 200 µs
-# against 70 µs for every value's own operating angle)
+# against 70 µs for every value's own operating angle); smaller grids are recognised by their shape
 _DEDUPE_MIN = 4096
+_SHAPED_MIN = 64
+
+
+@functools.lru_cache(maxsize=8)
+def _diagonal_codes(n: int) -> tuple:
+    """For an n × n grid flattened row by row: the index of each node's x-sum diagonal (i + j) and of its
+    x-difference diagonal (j − i + n − 1), with the node that carries each diagonal's value first."""
+    i, j = np.divmod(np.arange(n * n), n)
+    first_sum = np.concatenate((np.arange(n), np.arange(2, n + 1) * n - 1))      # row 0, then column n − 1
+    first_diff = np.concatenate((np.arange(n - 1, 0, -1) * n, np.arange(n)))   # column 0 upwards, then row 0
+    return (i + j, first_sum), (j - i + n - 1, first_diff)
+
+
+def _grid_codes(v):
+    """(codes, distinct) when v is constant or a flattened square grid constant along its diagonals or
+    anti-diagonals (the x-sums of :func:`exact_sum_nodes` grids, an external or an internal pair's), else None."""
+    flat = v.reshape(-1)
+    if flat[0] == flat[-1] and (flat == flat[0]).all():   # a fixed-x_Σ line
+        return np.zeros(flat.size, dtype=np.intp), flat[:1]
+    n = math.isqrt(flat.size)
+    if n * n == flat.size:
+        for codes, first in _diagonal_codes(n):
+            distinct = flat[first]
+            if (distinct[codes] == flat).all():
+                return codes, distinct
+    return None
 
 
 def _per_distinct(func, v):
@@ -231,7 +257,12 @@ def _per_distinct(func, v):
     grid of (x1, x2) the operating angle depends on x1 + x2 alone, which takes ~2n of n² values
     (bitwise equal only when the nodes' sums are exact: :func:`exact_sum_nodes`). Each value gets
     exactly what it would get alone, whatever its neighbours."""
-    if v.size >= _DEDUPE_MIN:
+    if _SHAPED_MIN <= v.size < _DEDUPE_MIN:
+        found = _grid_codes(v)
+        if found is not None:
+            codes, distinct = found
+            return tuple(r[codes].reshape(v.shape) for r in func(distinct))
+    elif v.size >= _DEDUPE_MIN:
         probe = v.reshape(-1)[:_PROBE]   # a grid repeats its x-sums at once; scattered designs do not,
         if 4 * np.unique(probe).size <= probe.size:   # and then the deduplication would be wasted
             import pandas as pd     # factorize hashes (O(n)); np.unique sorts, 4x slower here
@@ -285,16 +316,25 @@ def mesh_geometry(mesh: Mesh, m, x1, x2, full: bool = True, then=None, contact: 
     the path of contact (:data:`CONTACT_FIELDS`). Large inputs are evaluated
     in blocks of :data:`BLOCK` designs. ``then``: a function of the geometry dict (e.g. the
     checks' margins) applied block by block, whose dict of arrays (the designs along their last
-    axis) is returned instead: only what it returns is stored at full size, not the ~50 fields."""
-    m, z1, z2, x1, x2 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, mesh.z1, mesh.z2, x1, x2)))
+    axis) is returned instead: only what it returns is stored at full size, not the ~50 fields. For one
+    pair (m, z1 and z2 numbers) ``then`` sees the fields that depend on them alone as numbers: a grid of
+    one pair computes them once (its output must broadcast them, as :meth:`Problem.margins` does)."""
+    one_pair = then is not None and all(np.ndim(v) == 0 for v in (m, mesh.z1, mesh.z2))
+    if one_pair:
+        x1, x2 = np.broadcast_arrays(np.asarray(x1, dtype=float), np.asarray(x2, dtype=float))
+        m, z1, z2 = float(m), float(mesh.z1), float(mesh.z2)
+    else:
+        m, z1, z2, x1, x2 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, mesh.z1, mesh.z2, x1, x2)))
     with np.errstate(invalid="ignore", divide="ignore"):
-        if m.size <= BLOCK:
+        if x1.size <= BLOCK:
             geo = _formulas(mesh, m, z1, z2, x1, x2, _ARRAY_OPS, full, contact)
             return geo if then is None else then(geo)
-        shape, flat = m.shape, [v.reshape(-1) for v in (m, z1, z2, x1, x2)]
+        shape = x1.shape
+        flat = [v if one_pair else v.reshape(-1) for v in (m, z1, z2)] + [x1.reshape(-1), x2.reshape(-1)]
         out = {}
-        for s in range(0, m.size, BLOCK):
-            part = _formulas(mesh, *(v[s:s + BLOCK] for v in flat), _ARRAY_OPS, full, contact)
+        for s in range(0, x1.size, BLOCK):
+            part = _formulas(mesh, *(v if np.ndim(v) == 0 else v[s:s + BLOCK] for v in flat), _ARRAY_OPS, full,
+                             contact)
             if then is not None:
                 part = then(part)
             for k, v in part.items():
@@ -302,7 +342,7 @@ def mesh_geometry(mesh: Mesh, m, x1, x2, full: bool = True, then=None, contact: 
                     out[k] = v
                     continue
                 if k not in out:
-                    out[k] = np.empty(v.shape[:-1] + (m.size,), dtype=v.dtype)
+                    out[k] = np.empty(v.shape[:-1] + (x1.size,), dtype=v.dtype)
                 out[k][..., s:s + v.shape[-1]] = v
         return {k: (v.reshape(v.shape[:-1] + shape) if np.ndim(v) else v) for k, v in out.items()}
 
@@ -779,8 +819,10 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
     keep = None if names is None else _VALIDATION_FIELDS.union(names, ("a",))
     with np.errstate(all="ignore"):   # designs that do not exist are refused by name just below
         mesh = Mesh(z1, z2, rack, require_bool("tip_shortening", tip_shortening), beta_deg, internal, face_width)
+        shape = np.broadcast_shapes(*(np.shape(v) for v in (m, z1, z2, x1, x2)))
         geo = mesh_geometry(mesh, m, x1, x2, full, then=None if keep is None else (
-            lambda g: {k: v for k, v in g.items() if k in keep}), contact=contact)
+            lambda g: {k: np.broadcast_to(v, shape if np.ndim(v) == 0 else v.shape) for k, v in g.items()
+                       if k in keep}), contact=contact)
     validate_geometry(geo, mesh)
     return Geometry._from_core(geo, scalar, names)
 

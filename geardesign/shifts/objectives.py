@@ -104,7 +104,7 @@ class MaxMargin(Objective):
     description = "the point farthest (in x) from every check's boundary (robust design)"
 
     def pieces(self, geo):
-        return (0.0 * geo["a"],)
+        return (0.0 * geo["_x1"],)
 
     def piece_gradients(self, geo):
         return [(0.0, 0.0)]

@@ -102,14 +102,14 @@ class PlanetaryProblem(Problem):
     def _geo_like(self, geo):
         return lambda x1, x2: set_geometry(self.meshes, geo["_m"], x1, x2, full=self.full)
 
-    def evaluate_design(self, x1: float, x2: float, parts: bool = False):
+    def evaluate_design(self, x1: float, x2: float, parts: bool = False, grads: bool = True):
         try:
             geo = set_geometry(self.meshes, self.m, float(x1), float(x2), full=self.full)
-            return geo, self.evaluate_geo(geo, parts)
+            return geo, self.evaluate_geo(geo, parts, grads)
         except _FLOAT_FAULTS:
             with np.errstate(all="ignore"):
                 geo = self.geo(np.float64(x1), np.float64(x2))
-            return geo, self.evaluate_geo(geo, parts)
+            return geo, self.evaluate_geo(geo, parts, grads)
 
     def subproblem(self, indices) -> "PlanetaryProblem":
         return PlanetaryProblem(self.meshes, self.m, objective=self.objective, x_sum=self.x_sum,
@@ -254,7 +254,7 @@ def optimize_planetary_shifts(z_sun, z_planet, z_ring, n_planets, m, a_w=None, o
 def _result(prob: PlanetaryProblem, out, method, tol, a_w, arrangement, t0) -> PlanetaryShiftResult:
     ms = prob.meshes
     x_s, x_p = (float(c[0]) for c in prob.xy(np.asarray(out.v)[None, :]))
-    geo, (P, M, _, _) = prob.evaluate_design(x_s, x_p)
+    geo, (P, M, _, _) = prob.evaluate_design(x_s, x_p, grads=False)
     zero = tol if method != "grid" else 1e-12
     margins = {name: (0.0 if abs(v) <= zero else float(v)) for name, v in zip(prob.names, M)}
     fun = float(prob.objective.sense * P.min()) if prob.objective.kind != "margin" else float(P.min())

@@ -73,7 +73,7 @@ class Problem:
     def _geo_like(self, geo):
         """geo(x1, x2) -> dict at the same m, z1, z2 as ``geo`` (arrays or floats alike; an atlas
         evaluates many tooth pairs through one problem)."""
-        core = mesh_geometry_float if isinstance(geo["a"], float) else mesh_geometry
+        core = mesh_geometry_float if isinstance(geo["_x1"], float) else mesh_geometry
         mesh = self.mesh.unchecked(geo["_z1"], geo["_z2"])
         return lambda x1, x2: core(mesh, geo["_m"], x1, x2, self.full)
 
@@ -110,27 +110,27 @@ class Problem:
 
     def margins(self, geo) -> np.ndarray:
         """(K, ...) margins; designs whose geometry does not exist get −inf."""
-        return np.fmax(_stack(self._margin_values(geo), geo["a"]), -np.inf)   # fmax passes the number where one is NaN
+        return np.fmax(_stack(self._margin_values(geo), geo["_x1"]), -np.inf)   # fmax passes the number where one is NaN
 
     def margin_gradients(self, geo) -> np.ndarray:
         """(K, 2, ...) ∂margin/∂(x1, x2)."""
-        return _stack_pairs(self._margin_gradient_values(geo), geo["a"])
+        return _stack_pairs(self._margin_gradient_values(geo), geo["_x1"])
 
     def pieces(self, geo) -> np.ndarray:
         """(P, ...) pieces whose minimum is the maximised function F = sense·fun."""
-        return _stack(self._piece_values(geo), geo["a"])
+        return _stack(self._piece_values(geo), geo["_x1"])
 
     def piece_gradients(self, geo) -> np.ndarray:
         """(P, 2, ...) gradients of :meth:`pieces`."""
-        return _stack_pairs(self._piece_gradient_values(geo), geo["a"])
+        return _stack_pairs(self._piece_gradient_values(geo), geo["_x1"])
 
     def _normalised(self, geo) -> np.ndarray:
         """(K, ...) each check's first-order distance in x to its boundary: the smallest over its
         smooth parts of part/‖∇part‖, the pieces the single-design path maximises (a check of two
         parts, ρ_p >= ρ_l and ρ_p >= 0, has two boundaries; the margin's active part alone would
         miss the other's)."""
-        M = _stack(self._margin_values(geo, parts=True), geo["a"])
-        G = _stack_pairs(self._margin_gradient_values(geo, parts=True), geo["a"])
+        M = _stack(self._margin_values(geo, parts=True), geo["_x1"])
+        G = _stack_pairs(self._margin_gradient_values(geo, parts=True), geo["_x1"])
         with np.errstate(invalid="ignore", divide="ignore"):
             P = M / np.sqrt(G[:, 0] ** 2 + G[:, 1] ** 2)
         P = np.where(np.isfinite(P), P, -np.inf)
@@ -211,26 +211,29 @@ class Problem:
         self._last_point = (key, out, geo)
         return out
 
-    def evaluate_design(self, x1: float, x2: float, parts: bool = False):
+    def evaluate_design(self, x1: float, x2: float, parts: bool = False, grads: bool = True):
         """(geo, (P, M, GP, GM)) of one design on the float path; where Python floats fault (a
         division by zero exactly at a boundary, an overflow), the same formulas on 0-d numpy
         arrays, which give inf/NaN as the vectorised path does. The geometry of the point
-        :meth:`evaluate_point` saw last (a solver's final iterate, usually) is reused."""
+        :meth:`evaluate_point` saw last (a solver's final iterate, usually) is reused. Without
+        ``grads`` GP and GM are None (unless the objective is made of normalised margins)."""
         last = self._last_point
         try:
             geo = last[2] if last is not None and last[0] == (x1, x2, self.x_sum) else \
                 mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
-            return geo, self.evaluate_geo(geo, parts)
+            return geo, self.evaluate_geo(geo, parts, grads)
         except _FLOAT_FAULTS:
             with np.errstate(all="ignore"):
                 geo = self.geo(np.float64(x1), np.float64(x2))
-            return geo, self.evaluate_geo(geo, parts)
+            return geo, self.evaluate_geo(geo, parts, grads)
 
-    def evaluate_geo(self, geo, parts: bool = False):
+    def evaluate_geo(self, geo, parts: bool = False, grads: bool = True):
         """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict
         (margins per check, or per smooth part with ``parts``); a margin that does not exist is −inf."""
         # 0-d arrays (where floats faulted): boundaries of existence give inf/NaN quietly
-        with contextlib.nullcontext() if type(geo["a"]) is float else np.errstate(all="ignore"):
+        with contextlib.nullcontext() if type(geo["_x1"]) is float else np.errstate(all="ignore"):
+            if not grads and self.objective.kind != "margin":
+                return np.array(self._piece_values(geo), dtype=float), self._margins_only(geo, parts), None, None
             M, GM = self._margins_and_gradients(geo, parts)
             if self.objective.kind == "margin":
                 P = _normalise(M, GM)
@@ -240,11 +243,15 @@ class Problem:
                 GP = np.array(self._piece_gradient_values(geo), dtype=float).reshape(-1, 2)
         return P, M, GP, GM
 
-    def _margins_and_gradients(self, g, parts: bool):
+    def _margins_only(self, g, parts: bool) -> np.ndarray:
         M = self._margin_values(g, parts)
         if any(v != v for v in M):   # NaN: the margin does not exist here
             M = [v if v == v else -np.inf for v in M]
-        return np.array(M, dtype=float), np.array(self._margin_gradient_values(g, parts), dtype=float).reshape(-1, 2)
+        return np.array(M, dtype=float)
+
+    def _margins_and_gradients(self, g, parts: bool):
+        return self._margins_only(g, parts), \
+            np.array(self._margin_gradient_values(g, parts), dtype=float).reshape(-1, 2)
 
     def _free(self, G):
         """Gradients in (x1, x2) → in the free variables (d/dx1 along x2 = x_sum − sgn·x1)."""
@@ -252,15 +259,20 @@ class Problem:
 
 
 def _stack(values, like) -> np.ndarray:
-    shape = np.shape(like)
-    return np.stack([np.broadcast_to(np.asarray(v, dtype=float), shape) for v in values]) if values \
-        else np.zeros((0,) + shape)
+    """(len(values), *shape of like) floats; numbers and arrays alike broadcast into place."""
+    out = np.empty((len(values),) + np.shape(like))
+    for i, v in enumerate(values):
+        out[i] = v
+    return out
 
 
 def _stack_pairs(pairs, like) -> np.ndarray:
-    shape = np.shape(like)
-    return np.stack([np.stack([np.broadcast_to(np.asarray(g, dtype=float), shape) for g in p]) for p in pairs]) \
-        if pairs else np.zeros((0, 2) + shape)
+    """(len(pairs), 2, *shape of like): each check's (∂/∂x1, ∂/∂x2)."""
+    out = np.empty((len(pairs), 2) + np.shape(like))
+    for i, (g1, g2) in enumerate(pairs):
+        out[i, 0] = g1
+        out[i, 1] = g2
+    return out
 
 
 def _normalise(M, G) -> np.ndarray:
