@@ -22,6 +22,8 @@ def solve_small(A: list, b: list) -> list:
     """x with A x = b for a square system of a few rows: Gaussian elimination with partial
     pivoting. Raises LinAlgError when A is singular to working precision."""
     n = len(b)
+    if n == 3:
+        return _solve3(A, b)
     rows = [row[:n] + [bi] for row, bi in zip(A, b)]
     tiny = 1e-14 * max(max(map(abs, row[:n])) for row in rows) if n else 0.0
     for c in range(n):
@@ -46,6 +48,43 @@ def solve_small(A: list, b: list) -> list:
             acc -= row[k] * x[k]
         x[c] = acc / row[c]
     return x
+
+
+def _solve3(A: list, b: list) -> list:
+    """:func:`solve_small` for three rows, unrolled (the KKT systems of two shifts and t): the same
+    pivots and the same floating-point operations in the same order, ~4x faster."""
+    (a00, a01, a02), (a10, a11, a12), (a20, a21, a22) = (row[:3] for row in A)
+    r0, r1, r2 = (a00, a01, a02, b[0]), (a10, a11, a12, b[1]), (a20, a21, a22, b[2])
+    tiny = 1e-14 * max(abs(a00), abs(a01), abs(a02), abs(a10), abs(a11), abs(a12), abs(a20), abs(a21), abs(a22))
+    # column 0: the first row with the largest |a_r0| pivots
+    if abs(r1[0]) > abs(r0[0]):
+        if abs(r2[0]) > abs(r1[0]):
+            r0, r2 = r2, r0
+        else:
+            r0, r1 = r1, r0
+    elif abs(r2[0]) > abs(r0[0]):
+        r0, r2 = r2, r0
+    if abs(r0[0]) <= tiny:
+        raise np.linalg.LinAlgError("singular active-set system")
+    f = r1[0] / r0[0]
+    if f:
+        r1 = (r1[0] - f * r0[0], r1[1] - f * r0[1], r1[2] - f * r0[2], r1[3] - f * r0[3])
+    f = r2[0] / r0[0]
+    if f:
+        r2 = (r2[0] - f * r0[0], r2[1] - f * r0[1], r2[2] - f * r0[2], r2[3] - f * r0[3])
+    if abs(r2[1]) > abs(r1[1]):
+        r1, r2 = r2, r1
+    if abs(r1[1]) <= tiny:
+        raise np.linalg.LinAlgError("singular active-set system")
+    f = r2[1] / r1[1]
+    if f:
+        r2 = (r2[0] - f * r1[0], r2[1] - f * r1[1], r2[2] - f * r1[2], r2[3] - f * r1[3])
+    if abs(r2[2]) <= tiny:
+        raise np.linalg.LinAlgError("singular active-set system")
+    x2 = r2[3] / r2[2]
+    x1 = (r1[3] - r1[2] * x2) / r1[1]
+    acc = r0[3] - r0[1] * x1
+    return [(acc - r0[2] * x2) / r0[0], x1, x2]
 
 
 def multipliers(prob: Problem, w, act_p, act_m, ev):
