@@ -118,6 +118,8 @@ def one_number(name: str, arr) -> float:
 
 def require_count(name: str, value, lo: int, hi: int) -> int:
     """One whole number in [lo, hi]: a size (grid nodes, pairs, values) checked before any work."""
+    if type(value) is int and lo <= value <= hi:
+        return value
     if ndim(value) != 0:
         raise GearDesignError(f"{name} must be one whole number in [{lo}, {hi:.6g}], got {_show(value)}")
     return int(require_int(name, value, lo, hi))

@@ -32,6 +32,24 @@ def test_solve_small_leaves_its_arguments_alone_and_refuses_singular():
         solve_small([[1.0, 2.0], [2.0, 4.0]], [1.0, 2.0])
 
 
+@pytest.mark.parametrize("order", [(0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0)])
+def test_solve_small_three_rows_pivot_in_every_order(order):
+    # a permuted identity (each pivot search meets zeros first), scaled rows: x is exact
+    A = [[0.0, 0.0, 0.0] for _ in range(3)]
+    for row, col in enumerate(order):
+        A[row][col] = 2.0 ** (row + 1)
+    b = [2.0 ** (row + 1) * (col + 1) for row, col in enumerate(order)]
+    assert solve_small(A, b) == [1.0, 2.0, 3.0]
+
+
+@pytest.mark.parametrize("A", [[[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [0.0, 1.0, 1.0]],
+                               [[1.0, 2.0, 3.0], [0.0, 1.0, 1.0], [1.0, 3.0, 4.0]],
+                               [[0.0, 1.0, 2.0], [0.0, 3.0, 1.0], [0.0, 1.0, 5.0]]])
+def test_solve_small_refuses_singular_three_row_systems(A):
+    with pytest.raises(np.linalg.LinAlgError):
+        solve_small(A, [1.0, 2.0, 3.0])
+
+
 def test_active_rows_are_piece_minus_t_then_margins():
     GP = np.array([[1.0, 2.0], [3.0, 4.0]])
     GM = np.array([[5.0, 6.0], [7.0, 8.0], [9.0, 10.0]])
