@@ -52,10 +52,9 @@ def solve_small(A: list, b: list) -> list:
 
 def _solve3(A: list, b: list) -> list:
     """:func:`solve_small` for three rows, unrolled (the KKT systems of two shifts and t): the same
-    pivots and the same floating-point operations in the same order, ~4x faster."""
-    (a00, a01, a02), (a10, a11, a12), (a20, a21, a22) = (row[:3] for row in A)
-    r0, r1, r2 = (a00, a01, a02, b[0]), (a10, a11, a12, b[1]), (a20, a21, a22, b[2])
-    tiny = 1e-14 * max(abs(a00), abs(a01), abs(a02), abs(a10), abs(a11), abs(a12), abs(a20), abs(a21), abs(a22))
+    pivots and the same floating-point operations in the same order, ~2.5x faster."""
+    r0, r1, r2 = (*A[0][:3], b[0]), (*A[1][:3], b[1]), (*A[2][:3], b[2])
+    tiny = 1e-14 * max(map(abs, r0[:3] + r1[:3] + r2[:3]))
     # column 0: the first row with the largest |a_r0| pivots
     if abs(r1[0]) > abs(r0[0]):
         if abs(r2[0]) > abs(r1[0]):
@@ -64,27 +63,24 @@ def _solve3(A: list, b: list) -> list:
             r0, r1 = r1, r0
     elif abs(r2[0]) > abs(r0[0]):
         r0, r2 = r2, r0
-    if abs(r0[0]) <= tiny:
-        raise np.linalg.LinAlgError("singular active-set system")
-    f = r1[0] / r0[0]
-    if f:
-        r1 = (r1[0] - f * r0[0], r1[1] - f * r0[1], r1[2] - f * r0[2], r1[3] - f * r0[3])
-    f = r2[0] / r0[0]
-    if f:
-        r2 = (r2[0] - f * r0[0], r2[1] - f * r0[1], r2[2] - f * r0[2], r2[3] - f * r0[3])
+    r1, r2 = _cleared(r1, r0, 0, tiny), _cleared(r2, r0, 0, tiny)
     if abs(r2[1]) > abs(r1[1]):
         r1, r2 = r2, r1
-    if abs(r1[1]) <= tiny:
-        raise np.linalg.LinAlgError("singular active-set system")
-    f = r2[1] / r1[1]
-    if f:
-        r2 = (r2[0] - f * r1[0], r2[1] - f * r1[1], r2[2] - f * r1[2], r2[3] - f * r1[3])
+    r2 = _cleared(r2, r1, 1, tiny)
     if abs(r2[2]) <= tiny:
         raise np.linalg.LinAlgError("singular active-set system")
     x2 = r2[3] / r2[2]
     x1 = (r1[3] - r1[2] * x2) / r1[1]
     acc = r0[3] - r0[1] * x1
     return [(acc - r0[2] * x2) / r0[0], x1, x2]
+
+
+def _cleared(row: tuple, piv: tuple, c: int, tiny: float) -> tuple:
+    """``row`` less the multiple of the pivot row that clears its column c (itself when that is 0)."""
+    if abs(piv[c]) <= tiny:
+        raise np.linalg.LinAlgError("singular active-set system")
+    f = row[c] / piv[c]
+    return (row[0] - f * piv[0], row[1] - f * piv[1], row[2] - f * piv[2], row[3] - f * piv[3]) if f else row
 
 
 def multipliers(prob: Problem, w, act_p, act_m, ev):

@@ -71,3 +71,25 @@ def test_piece_gradients_match_central_differences(d):
             # conditioning of the difference: the pieces are O(|piece|), the step 1e-6
             tol = 1e-6 * scale + 1e-9 * np.abs(up) / h
             assert (np.abs(an[:, j] - fd) <= tol).all(), (objective, j, an[:, j], fd)
+
+
+def test_a_grid_of_one_pair_gives_each_designs_own_margins_and_pieces():
+    """Problem.evaluate without gradients on one pair's grid (its tooth-count fields then numbers, its
+    operating angle once per x-sum diagonal, or once on a fixed-a_w line) gives every node bit for bit
+    what the node gets evaluated alone, with the tooth counts as arrays (the general path)."""
+    from geardesign.gears.geometry import mesh_geometry
+    from geardesign.shifts.nodes import grid_points
+
+    for mesh, objective, x_sum in ((Mesh(17, 26, None, True), "max_x_sum", None),
+                                   (Mesh(20, 60, None, True, 0.0, True), "balanced_sliding", None),
+                                   (Mesh(14, 41, None, True, 15.0, False, 20.0), "min_specific_pressure", None),
+                                   (Mesh(17, 26, None, True), "balanced_sliding", 0.7)):
+        prob = Problem(mesh, None, objective, 2.0, x_sum=x_sum)
+        V = grid_points(prob, 31 if x_sum is None else 41, (-1.5, 3.0))
+        P, M = prob.evaluate(V, grads=False)
+        x1, x2 = prob.xy(V)
+        for i in range(0, V.shape[0], 29):
+            one = mesh.unchecked(np.array([mesh.z1]), np.array([mesh.z2]))
+            geo = mesh_geometry(one, np.array([2.0]), x1[i:i + 1], x2[i:i + 1], prob.full)
+            np.testing.assert_array_equal(M[:, i], prob.margins(geo)[:, 0])
+            np.testing.assert_array_equal(P[:, i], prob.pieces(geo)[:, 0])
