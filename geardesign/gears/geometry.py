@@ -823,8 +823,8 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
         mesh = Mesh(z1, z2, rack, require_bool("tip_shortening", tip_shortening), beta_deg, internal, face_width)
         shape = np.broadcast_shapes(*(np.shape(v) for v in (m, z1, z2, x1, x2)))
         geo = mesh_geometry(mesh, m, x1, x2, full, then=None if keep is None else (
-            lambda g: {k: np.broadcast_to(v, shape if np.ndim(v) == 0 else v.shape) for k, v in g.items()
-                       if k in keep}), contact=contact)
+            lambda g: {k: np.full(shape, v) if np.ndim(v) == 0 else v for k, v in g.items() if k in keep}),
+            contact=contact)
     validate_geometry(geo, mesh)
     return Geometry._from_core(geo, scalar, names)
 

@@ -157,3 +157,17 @@ def test_path_of_contact_left_out_when_no_field_needs_it():
     rack15 = gd.BasicRack(alpha_deg=15.0)
     assert gd.pair_geometry(1, 5, 5, 2.0, 2.0, rack=rack15, fields=["a_w"]).names == ["a_w"]
     assert gd.pair_geometry(1, 5, 5, 2.0, 2.0, rack=rack15, fields=["eps_alpha"]).eps_alpha < 0
+
+
+def test_fields_of_one_pair_are_full_arrays_like_the_full_result():
+    """One pair over an array of shifts (its tooth-count fields computed once, as numbers): the fields asked
+    for still come back as writeable arrays of the designs' shape, equal to the full call's bit for bit."""
+    import numpy as np
+
+    x1 = np.linspace(0.0, 0.6, 7)
+    some = gd.pair_geometry(2.0, 17, 26, x1, 0.3, fields=["d1", "db2", "a_w", "sa1"])
+    every = gd.pair_geometry(2.0, 17, 26, x1, 0.3)
+    for k in some.names:
+        v = getattr(some, k)
+        assert v.shape == x1.shape and v.flags.writeable
+        np.testing.assert_array_equal(v, getattr(every, k))
