@@ -43,19 +43,6 @@ def best_feasible(prob: Problem, V: np.ndarray):
     return int(np.argmax(score)), P, M
 
 
-def _dilated(mask: np.ndarray, reach: int) -> np.ndarray:
-    """True within ``reach`` nodes (along each axis, i.e. a square) of a True node."""
-    for ax in range(mask.ndim):
-        grown = mask.copy()
-        for k in range(1, reach + 1):
-            lo = (slice(None),) * ax + (slice(k, None),)
-            hi = (slice(None),) * ax + (slice(None, -k),)
-            grown[lo] |= mask[hi]
-            grown[hi] |= mask[lo]
-        mask = grown
-    return mask
-
-
 def grid_starts(prob: Problem, V: np.ndarray, n: int):
     """Start points for the local solvers on the grid V (n nodes per axis), best first, at most
     MAX_STARTS: the best node of every separate feasible piece of the grid, and the local
@@ -82,7 +69,8 @@ def grid_starts(prob: Problem, V: np.ndarray, n: int):
         idx = [int(np.ravel_multi_index(p, shape)) for p in best_of]
     best = score.max()
     # beyond two nodes of every feasible node, better than all of them
-    cand = ~_dilated(feasible.reshape(shape), 2).ravel() & (fun > best)
+    far = ~ndimage.maximum_filter(feasible.reshape(shape), size=5, mode="constant", cval=False).ravel()
+    cand = far & (fun > best)
     if M.size and cand.any():
         # only the margins some candidate misses decide whether it is near
         missed = M[((M < 0) & cand).any(axis=1)]

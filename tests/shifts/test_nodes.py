@@ -75,18 +75,3 @@ def test_grid_starts_one_per_separate_piece_best_first():
     for s in starts:
         assert np.min(((TwoDiscs.centres - s) ** 2).sum(axis=1)) <= 0.3 ** 2
 
-
-@pytest.mark.parametrize("shape", [(31, 31), (7, 9), (401,), (3,), (1, 1)])
-def test_dilation_marks_every_node_within_two_of_a_marked_one(shape):
-    """nodes._dilated against a brute-force scan: True where some True node lies within two nodes along
-    every axis (a 5 × 5 square; 5 nodes on a line)."""
-    from geardesign.shifts.nodes import _dilated
-
-    rng = np.random.default_rng(len(shape) * 10 + shape[0])
-    for p in (0.02, 0.2, 0.6):
-        mask = rng.random(shape) < p
-        marked = np.argwhere(mask)
-        expected = np.zeros(shape, bool)
-        for idx in np.ndindex(*shape):
-            expected[idx] = bool(marked.size) and bool((np.abs(marked - np.array(idx)).max(axis=1) <= 2).any())
-        np.testing.assert_array_equal(_dilated(mask, 2), expected)
