@@ -582,9 +582,7 @@ def validate_inputs(m, z1, z2, x1, x2):
 
 def require_module(m):
     """The module in mm, inside :data:`M_RANGE_MM`."""
-    if not (type(m) is float and m > 0.0):   # a positive float goes straight to the range check
-        m = require_positive("m (module)", m, unit="mm")
-    return require_range("m (module)", m, *M_RANGE_MM, unit="mm")
+    return require_range("m (module)", require_positive("m (module)", m, unit="mm"), *M_RANGE_MM, unit="mm")
 
 
 def _first(mask: np.ndarray) -> tuple[str, tuple]:
