@@ -9,7 +9,7 @@ from ..errors import GearDesignError
 from .options import add_output_file, add_solver_args
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
 from .pair import add_kind_args, add_rack_args, kind_from_args, rack_from_args
-from .shift import add_check_args, checks_from_args
+from .options import add_check_args, checks_from_args
 
 
 def parse_range(text: str, name: str) -> list[int]:

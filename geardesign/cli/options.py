@@ -1,8 +1,58 @@
-"""Options several subcommands share, defined once: the shift objective and method (choices from the
-library's registries), and an output file that is never silently replaced."""
+"""Options several subcommands share, defined once: the check options (from the check registry), the
+shift objective and method (choices from the library's registries), and an output file that is never
+silently replaced."""
 from __future__ import annotations
 
-__all__ = ["add_solver_args", "add_output_file"]
+import argparse
+
+from ..gears.checks import options as check_options
+
+__all__ = ["add_check_args", "checks_from_args", "add_solver_args", "add_output_file"]
+
+# the older spellings of --no-undercut and --no-interference, kept working
+_ALIASES = {"undercut": "--allow-undercut", "interference": "--allow-interference"}
+
+
+def _limit(text: str):
+    """A check limit on the command line: a number, or "none" to drop the check."""
+    if text.strip().lower() == "none":
+        return None
+    try:
+        return float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number or 'none', got {text!r}") from None
+
+
+def add_check_args(p, exclude=()) -> None:
+    """One option per registered check option (:func:`geardesign.gears.checks.options`): a limit as
+    ``--eps-alpha-min VALUE`` (``none`` drops the check), a flag as ``--undercut``/``--no-undercut``."""
+    g = p.add_argument_group("checks (limits and switches; see docs/extending.md for adding one)")
+    for opt in check_options().values():
+        if not opt.cli or opt.name in exclude:
+            continue
+        flag = "--" + opt.name.replace("_", "-")
+        if opt.kind == "limit":
+            lo, hi = opt.range
+            default = "none: off" if opt.default is None else f"{opt.default:g}"
+            g.add_argument(flag, type=_limit, default=opt.default, metavar="VALUE",
+                           help=f"{opt.help} ({default}; {lo:g} to {hi:g}, or none to drop the check)")
+        else:
+            g.add_argument(flag, action=argparse.BooleanOptionalAction, default=None,
+                           help=f"{opt.help} ({'on' if opt.default else 'off'} by default)")
+            if opt.name in _ALIASES:
+                g.add_argument(_ALIASES[opt.name], dest=opt.name, action="store_false",
+                               help=f"the same as --no-{opt.name}")
+
+
+def checks_from_args(args) -> dict:
+    """The check options the command line set, as :func:`~geardesign.gears.checks.make_checks`
+    keywords: every limit, and the switches given (the others keep the caller's defaults)."""
+    out = {}
+    for name, opt in check_options().items():
+        value = getattr(args, name, None)
+        if hasattr(args, name) and (opt.kind == "limit" or value is not None):
+            out[name] = value
+    return out
 
 
 def add_solver_args(p, default_objective: str | None = None, objective_help: str | None = None) -> None:

@@ -1,11 +1,11 @@
 """``geardesign pair``: geometry and checks of one spur pair."""
 from __future__ import annotations
 
-from ..gears.checks import DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN
 from ..errors import GearDesignError
 from ..gears.geometry import GEOMETRY_FIELDS
 from ..gears.pair import GearPair
 from ..gears.rack import BasicRack
+from .options import add_check_args, checks_from_args
 from .output import add_json_flag, frame_records, print_frame, print_json
 
 
@@ -19,16 +19,6 @@ def add_rack_args(p) -> None:
 
 def rack_from_args(args) -> BasicRack:
     return BasicRack(alpha_deg=args.alpha_deg, ha=args.ha, c=args.c, rho_f=args.rho_f)
-
-
-def add_limit_args(p) -> None:
-    g = p.add_argument_group("check limits")
-    g.add_argument("--eps-alpha-min", type=float, default=DEFAULT_EPS_ALPHA_MIN,
-                   help=f"minimum contact ratio ({DEFAULT_EPS_ALPHA_MIN:g})")
-    g.add_argument("--sa-min", type=float, default=DEFAULT_SA_MIN,
-                   help=f"minimum tip thickness / module ({DEFAULT_SA_MIN:g}; normal section for helical gears)")
-    g.add_argument("--eps-gamma-min", type=float, default=None,
-                   help="minimum total contact ratio eps_alpha + eps_beta (helical; needs --face-width)")
 
 
 def add_pair_args(p) -> None:
@@ -63,14 +53,6 @@ def kind_from_args(args) -> dict:
     return dict(beta_deg=args.beta, internal=args.internal, face_width=args.face_width)
 
 
-def limits_from_args(args) -> dict:
-    """The check limits of add_limit_args as make_checks options."""
-    out = {"eps_alpha_min": args.eps_alpha_min, "sa_min": args.sa_min}
-    if args.eps_gamma_min is not None:
-        out["eps_gamma_min"] = args.eps_gamma_min
-    return out
-
-
 def pair_from_args(args) -> tuple[GearPair, float | None]:
     """The pair the arguments describe, and the housing centre distance to check it against (or None)."""
     rack = rack_from_args(args)
@@ -91,7 +73,7 @@ def add_parser(sub):
                        description="Geometry (ISO 21771; GOST 16532-70 external, GOST 19274-73 internal) and checks "
                                    "of a spur or helical, external or internal pair.")
     add_pair_args(p)
-    add_limit_args(p)
+    add_check_args(p)
     add_json_flag(p)
     return p
 
@@ -100,8 +82,7 @@ def run(args) -> int:
     pair, housing = pair_from_args(args)
     rack, shorten = pair.rack, not args.no_tip_shortening
     geo = pair.geometry()
-    table = pair.checks(eps_alpha_min=args.eps_alpha_min, sa_min=args.sa_min, housing_a_w=housing,
-                        eps_gamma_min=args.eps_gamma_min)
+    table = pair.checks(**checks_from_args(args), housing_a_w=housing)
     if args.json:
         print_json({
             "input": {"m": pair.m, "z1": pair.z1, "z2": pair.z2, "x1": pair.x1, "x2": pair.x2,

@@ -5,7 +5,8 @@ from __future__ import annotations
 from ..errors import GearDesignError
 from .options import add_output_file, add_solver_args
 from .output import add_json_flag, print_frame, print_json
-from .pair import add_limit_args, add_rack_args, limits_from_args, rack_from_args
+from .options import add_check_args, checks_from_args
+from .pair import add_rack_args, rack_from_args
 
 
 def add_parser(sub):
@@ -42,13 +43,13 @@ def add_parser(sub):
     add_output_file(p, "--plot", "PNG", "the feasible (x_sun, x_planet) region")
     p.add_argument("--drawing", metavar="PNG", default=None, help="write the set's drawing (circles) to this PNG")
     add_rack_args(p)
-    add_limit_args(p)
+    add_check_args(p, exclude=("eps_gamma_min",))
     add_json_flag(p)
     return p
 
 
 def _checks(args) -> dict:
-    out = {k: v for k, v in limits_from_args(args).items() if k != "eps_gamma_min"}
+    out = checks_from_args(args)
     out["neighbour_clearance"] = args.neighbour_clearance
     return out
 

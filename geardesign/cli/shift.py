@@ -4,26 +4,15 @@ from __future__ import annotations
 from ..errors import GearDesignError
 from ..shifts.objectives import OBJECTIVES
 from ..shifts.optimize import DEFAULT_TOL, METHODS
-from .options import add_output_file
+from .options import add_check_args, add_output_file, checks_from_args
 from .output import add_json_flag, frame_records, print_frame, print_json
-from .pair import add_kind_args, add_limit_args, add_rack_args, kind_from_args, limits_from_args, rack_from_args
+from .pair import add_kind_args, add_rack_args, kind_from_args, rack_from_args
 
 _METHOD_HELP = {
     "exact": "active-set Newton, x to ~1e-12 (default)",
     "convex": "SQP in cvxpy/Clarabel, x to ~tol, slower",
     "grid": "best node of a grid, fastest, x within the node spacing",
 }
-
-
-def add_check_args(p) -> None:
-    add_limit_args(p)
-    p.add_argument("--allow-undercut", action="store_true", help="drop the undercut checks")
-    p.add_argument("--allow-interference", action="store_true", help="drop the interference checks")
-
-
-def checks_from_args(args) -> dict:
-    return {**limits_from_args(args), "undercut": not args.allow_undercut,
-            "interference": not args.allow_interference}
 
 
 def add_parser(sub):
@@ -75,8 +64,7 @@ def run(args) -> int:
     proposed = None
     if args.x1 is not None:
         pair = GearPair(m, args.z1, args.z2, args.x1, args.x2, rack, shorten, **kind)
-        proposed = pair.checks(**limits_from_args(args), undercut=not args.allow_undercut, interference=not args.allow_interference,
-                               jamming=False, housing_a_w=args.center_distance)
+        proposed = pair.checks(**{"jamming": False, **checks}, housing_a_w=args.center_distance)
     region = feasible_region(args.z1, args.z2, rack=rack, checks=checks, m=m, tip_shortening=shorten, **kind)
     if args.plot:
         _write_plot(region, res, proposed, args, write_file_atomic)

@@ -11,7 +11,8 @@ from ..shifts.teeth import select_teeth
 from ..files import check_output_path, write_file_atomic
 from .options import add_output_file, add_solver_args
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
-from .pair import add_kind_args, add_limit_args, add_rack_args, kind_from_args, limits_from_args, rack_from_args
+from .options import add_check_args, checks_from_args
+from .pair import add_kind_args, add_rack_args, kind_from_args, rack_from_args
 
 SHOW = ["rank", "z1", "z2", "ratio", "ratio_error", "module_mm", "a_mm", "a_w_mm", "x1", "x2", "eps_alpha",
         "objective", "feasible", "reason"]
@@ -49,7 +50,7 @@ def add_parser(subparsers):
     add_output_file(p, "--out", "CSV", "the whole ranked table")
     add_kind_args(p)
     add_rack_args(p)
-    add_limit_args(p)
+    add_check_args(p)
     add_json_flag(p)
     return p
 
@@ -68,7 +69,7 @@ def run(args) -> int:
     try:
         sel = select_teeth(args.ratio, ratio_tol=args.ratio_tol, m=m, a_w=a_w, z1_range=(args.z1_min, args.z1_max),
                            z_sum_max=args.z_sum_max, objective=args.objective,
-                           checks=limits_from_args(args), rack=rack_from_args(args), method=args.method,
+                           checks=checks_from_args(args), rack=rack_from_args(args), method=args.method,
                            m_range=m_range, progress=bar.to, **kind_from_args(args))
     finally:
         if bar.done:

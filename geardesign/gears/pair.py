@@ -16,9 +16,6 @@ from .rack import STANDARD_RACK, BasicRack
 
 __all__ = ["GearPair", "balanced_sliding_split"]
 
-_ZERO_MARGIN = 1e-12   # margins this close to 0 are rounding of an exact boundary: shown as 0
-
-
 def balanced_sliding_split(m, z1, z2, x_sum, rack: BasicRack = BasicRack(), tip_shortening: bool = True,
                            mesh: Mesh | None = None) -> float:
     """x1 of the split of ``x_sum`` that equalises the specific sliding at the roots of both gears.
@@ -156,17 +153,17 @@ class GearPair:
         """All geometry of the pair (mm, degrees); see :data:`geardesign.gears.geometry.GEOMETRY_FIELDS`."""
         return Geometry.from_float(self._geo)
 
-    def checks(self, eps_alpha_min: float | None = _checks.DEFAULT_EPS_ALPHA_MIN,
-               sa_min: float | None = _checks.DEFAULT_SA_MIN, undercut: bool = True,
-               interference: bool = True, jamming: bool = True, extra=(),
-               housing_a_w: float | None = None, housing_tol_mm: float | None = None,
-               eps_gamma_min: float | None = None):
+    def checks(self, *, housing_a_w: float | None = None, housing_tol_mm: float | None = None, extra=(),
+               cutter=None, **limits):
         """Table of checks: ``check, value, limit, margin, ok`` (and ``label``), one row per check.
 
+        ``limits``: the options of :func:`~geardesign.gears.checks.make_checks` (``eps_alpha_min``,
+        ``sa_min``, ``undercut``, ...; :func:`geardesign.gears.checks.options` lists them with their
+        defaults); a report shows seed 000's jamming rows too unless ``jamming=False``.
         Margins are dimensionless and >= 0 where the check holds (see :mod:`geardesign.gears.checks`);
-        a margin within 1e-12 of zero shows as 0. ``jamming`` adds seed 000's r_a2 < O2N1 rows
-        (implied by the interference rows). ``housing_a_w`` (mm) adds the ``center_distance``
-        check of the pair's own a_w against the housing's, labelled with the x-sum it needs.
+        a margin within :data:`~geardesign.gears.checks.FEASIBILITY_TOL` of zero holds and shows as 0.
+        ``housing_a_w`` (mm) adds the ``center_distance`` check of the pair's own a_w against the
+        housing's, labelled with the x-sum it needs.
 
         >>> t = GearPair(8, 17, 26, 0.898, 0.517).checks(housing_a_w=180)
         >>> row = t.set_index("check").loc["center_distance"]
@@ -175,24 +172,25 @@ class GearPair:
         """
         extra = tuple(extra) if not isinstance(extra, _checks.Check) else (extra,)
         if housing_a_w is not None:
-            kind = dict(beta_deg=self.beta_deg, internal=self.internal)
-            a_housing = one_number("housing_a_w", require_positive("housing_a_w", housing_a_w, unit="mm"))
-            need = (float(x_sum_from_center_distance(self.m, self.z1, self.z2, a_housing, self.rack, **kind))
-                    if a_housing > min_center_distance(self.m, self.z1, self.z2, self.rack, **kind) else math.nan)
-            xs_name = "x2 - x1" if self.internal else "x1 + x2"
-            here = self.x2 - self.x1 if self.internal else self.x1 + self.x2
-            label = (f"a_w of {xs_name} = housing a_w {float(housing_a_w):.10g} mm "
-                     + (f"(needs {xs_name} = {need:.6g}; here {here:.6g})" if math.isfinite(need)
-                        else "(unreachable: housing a_w <= a cos alpha)"))
-            extra += (_checks.CenterDistance(limit=float(housing_a_w), tol_mm=housing_tol_mm, label=label),)
-        cs = _checks.make_checks(eps_alpha_min=eps_alpha_min, sa_min=sa_min, undercut=undercut,
-                                 interference=interference, jamming=jamming, extra=extra,
-                                 eps_gamma_min=eps_gamma_min, internal=self.internal)
+            extra += (self._housing_check(housing_a_w, housing_tol_mm),)
+        cs = _checks.make_checks(**{"jamming": True, **limits}, extra=extra, cutter=cutter, internal=self.internal)
         # margin and ok first: a plain session shows the columns that fit its width, the label last
         table = _checks.evaluate(self._geo, cs)[["check", "margin", "ok", "value", "limit", "label"]]
-        table["margin"] = table["margin"].where(table["margin"].abs() > _ZERO_MARGIN, 0.0)
+        table["margin"] = table["margin"].where(table["margin"].abs() > _checks.FEASIBILITY_TOL, 0.0)
         return table
 
+    def _housing_check(self, housing_a_w, housing_tol_mm) -> _checks.CenterDistance:
+        """The ``center_distance`` check against the housing's a_w, labelled with the x-sum it needs."""
+        kind = dict(beta_deg=self.beta_deg, internal=self.internal)
+        a_housing = one_number("housing_a_w", require_positive("housing_a_w", housing_a_w, unit="mm"))
+        need = (float(x_sum_from_center_distance(self.m, self.z1, self.z2, a_housing, self.rack, **kind))
+                if a_housing > min_center_distance(self.m, self.z1, self.z2, self.rack, **kind) else math.nan)
+        xs_name = "x2 - x1" if self.internal else "x1 + x2"
+        here = self.x2 - self.x1 if self.internal else self.x1 + self.x2
+        label = (f"a_w of {xs_name} = housing a_w {float(housing_a_w):.10g} mm "
+                 + (f"(needs {xs_name} = {need:.6g}; here {here:.6g})" if math.isfinite(need)
+                    else "(unreachable: housing a_w <= a cos alpha)"))
+        return _checks.CenterDistance(limit=a_housing, tol_mm=housing_tol_mm, label=label)
 
     def ok(self, **limits) -> bool:
         """True when every check of :meth:`checks` holds."""

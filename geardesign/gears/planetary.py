@@ -240,6 +240,8 @@ class Neighbours(_checks.Check):
     """Adjacent planets' tip circles clear each other: 2 a_w sin(π/N) − d_a,p >= ``limit``·m
     (clearance in modules, 0.5 by default). Margin (2 a_w sin(π/N) − d_a,p)/m − limit."""
 
+    colour, kind_name = "teal", "neighbours"
+
     n_planets: int = 3
 
     def __post_init__(self):
@@ -445,7 +447,7 @@ class PlanetarySet:
         cs = set_checks(self.meshes, checks, self.cutter) + (Coaxiality(tol_mm=coaxiality_tol_mm), Assembly(meshes=self.meshes))
         table = _checks.evaluate(self._geo, cs)
         table.insert(1, "mesh", [c.split(":", 1)[0] for c in table["check"]])
-        table["margin"] = table["margin"].where(table["margin"].abs() > 1e-12, 0.0)
+        table["margin"] = table["margin"].where(table["margin"].abs() > _checks.FEASIBILITY_TOL, 0.0)
         return table[["check", "mesh", "margin", "ok", "value", "limit", "label"]]
 
     def ok(self, **kw) -> bool:

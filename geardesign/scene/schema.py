@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import functools
 import math
+import sys
 from dataclasses import dataclass
 
 from ..errors import GearDesignError
@@ -70,12 +71,11 @@ def _rack_schema() -> dict:
 
 
 def _checks_schema() -> dict:
-    from ..gears.checks import EPS_ALPHA_MIN_RANGE, EPS_GAMMA_MIN_RANGE, SA_MIN_RANGE
+    """One key per registered check option (:func:`geardesign.gears.checks.options`)."""
+    from ..gears.checks import options
 
-    return {"eps_alpha_min": _F(lo=EPS_ALPHA_MIN_RANGE[0], hi=EPS_ALPHA_MIN_RANGE[1]),
-            "eps_gamma_min": _F(lo=EPS_GAMMA_MIN_RANGE[0], hi=EPS_GAMMA_MIN_RANGE[1]),
-            "sa_min": _F(lo=SA_MIN_RANGE[0], hi=SA_MIN_RANGE[1]), "undercut": _Key("bool"),
-            "interference": _Key("bool"), "jamming": _Key("bool")}
+    return {name: (_F(lo=opt.range[0], hi=opt.range[1]) if opt.kind == "limit" else _Key("bool"))
+            for name, opt in options().items()}
 
 
 def _shift_keys() -> dict:
@@ -266,9 +266,16 @@ _BUILDERS = {"": lambda: {"title": _Key("str"), "description": _Key("str")}, "ge
              "study": _study_schema, "drive": _drive_schema}
 
 
-@functools.cache
 def section_schema(name: str) -> dict:
-    """The keys of one section (``""`` for the top level): name -> _Key, or a nested table."""
+    """The keys of one section (``""`` for the top level): name -> _Key, or a nested table. Built
+    once per state of the check registry (a registered check's option is a key of [gear.checks]);
+    a scene that models no gear does not import the checks for it."""
+    base = sys.modules.get("geardesign.gears.checks.base")
+    return _section_schema(name, base.registry_version() if base is not None else -1)
+
+
+@functools.cache
+def _section_schema(name: str, version: int) -> dict:
     return _BUILDERS[name]()
 
 

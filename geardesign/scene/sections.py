@@ -82,9 +82,7 @@ def _run_gear(rep: SceneReport, g: dict):
         pair = GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **pair_kw)
         lim = {k: v for k, v in (checks or {}).items()}
         # with a housing a_w as well, the given shifts are checked against it (center_distance)
-        chk = pair.checks(**{k: lim[k] for k in ("eps_alpha_min", "sa_min", "undercut", "interference",
-                                                 "eps_gamma_min") if k in lim},
-                          jamming=lim.get("jamming", True), housing_a_w=g.get("a_w"))
+        chk = pair.checks(**lim, housing_a_w=g.get("a_w"))
         geo = pair.geometry().to_frame()
         rep.tables["gear_given_geometry"] = geo
         rep.tables["gear_given_checks"] = chk

@@ -8,6 +8,7 @@ import pandas as pd
 
 from ..errors import GearDesignError
 from ..validate import ndim, require_bool, require_int
+from ..gears.checks import FEASIBILITY_TOL
 from ..gears.geometry import exact_sum_nodes, mesh_geometry, mesh_geometry_float
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from .problem import DEFAULT_BOUNDS, Problem
@@ -140,7 +141,7 @@ def _best_candidate(proto, geo, M, G, gp, X, a_idx, b_idx, is_v, pair, B):
     ga, gb = G[a_idx, :, rows], G[b_idx, :, rows]
     cross = gp[:, 0] * ga[:, 1] - gp[:, 1] * ga[:, 0]
     conv = (np.abs(ma) < 1e-11) & np.where(is_v, np.abs(mb) < 1e-11, np.abs(cross) < 1e-9)
-    feas = (M >= -1e-12).all(axis=0)
+    feas = (M >= -FEASIBILITY_TOL).all(axis=0)
     # multipliers: ∇f = −Σ λ ∇m  (λ >= 0 for a maximum)
     det = ga[:, 0] * gb[:, 1] - ga[:, 1] * gb[:, 0]
     sdet = np.where(np.abs(det) > 1e-14, det, 1.0)

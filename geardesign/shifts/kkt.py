@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 
+from ..gears.checks import FEASIBILITY_TOL
 from .active_set import active_rows, multipliers, solve_small
 from .local import Evaluator, slsqp, window_box
 from .problem import Problem
@@ -141,7 +142,7 @@ def _first_kkt_point(prob: Problem, ev: Evaluator, w0, near_p, near_m, max_move:
         w, it = out
         nit += it
         P, M, _, _ = ev(w[:nv])
-        if (M.size and M.min() < -1e-12) or P.min() < w[nv] - 1e-10 or w[nv] < t0 - 1e-9:
+        if (M.size and M.min() < -FEASIBILITY_TOL) or P.min() < w[nv] - 1e-10 or w[nv] < t0 - 1e-9:
             continue
         lp, lm = multipliers(prob, w, act_p, act_m, ev)
         if (lp.size and lp.min() < -1e-7) or (lm.size and lm.min() < -1e-7):
@@ -216,7 +217,7 @@ def solve(prob: Problem, starts: list, bounds, tol: float, h: float) -> Outcome:
         score = w[-1] if not (kind == "edge" or (Mw.size and Mw.min() < -tol)) else -math.inf
         # a point that holds every check ranks above one that misses a check by less than tol (SLSQP's
         # own points do, and gain ~multiplier × tol in the objective by it)
-        holds = score > -math.inf and not (Mw.size and Mw.min() < -1e-12)
+        holds = score > -math.inf and not (Mw.size and Mw.min() < -FEASIBILITY_TOL)
         if best is None or (holds, score) > (best[0], best[1] + 1e-12):
             best = (holds, score, w, msg, kind)
     _, score, w, msg, kind = best

@@ -6,6 +6,7 @@ import functools
 
 import numpy as np
 
+from ..gears.checks import FEASIBILITY_TOL
 from ..gears.geometry import exact_sum_nodes
 from .problem import Problem
 
@@ -36,7 +37,7 @@ def _square_grid(n: int, lo: float, hi: float) -> np.ndarray:
 
 def best_feasible(prob: Problem, V: np.ndarray):
     P, M = prob.evaluate(V, grads=False)
-    feasible = (M >= 0).all(axis=0) if M.size else np.ones(V.shape[0], bool)
+    feasible = (M >= -FEASIBILITY_TOL).all(axis=0) if M.size else np.ones(V.shape[0], bool)
     score = np.where(feasible, P.min(axis=0), -np.inf)
     if not np.isfinite(score).any():
         return None, P, M
@@ -53,7 +54,7 @@ def grid_starts(prob: Problem, V: np.ndarray, n: int):
     from scipy import ndimage
 
     P, M = prob.evaluate(V, grads=False)
-    feasible = (M >= 0).all(axis=0) if M.size else np.ones(V.shape[0], bool)
+    feasible = (M >= -FEASIBILITY_TOL).all(axis=0) if M.size else np.ones(V.shape[0], bool)
     fun = P.min(axis=0)
     fun = np.where(np.isnan(fun), -np.inf, fun)
     score = np.where(feasible, fun, -np.inf)

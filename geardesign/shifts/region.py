@@ -16,6 +16,7 @@ import pandas as pd
 
 from ..errors import GearDesignError
 from ..results import Result, plain
+from ..gears.checks import check_colour
 from ..gears.mesh import Mesh
 from ..validate import one_number, require_count, require_range
 from ..gears.geometry import center_distance_from_x_sum
@@ -24,7 +25,7 @@ from .conflict import smallest_conflict
 from .local import central_point
 from .nodes import grid_points
 
-__all__ = ["feasible_region", "Region", "CHECK_COLOURS", "check_style"]
+__all__ = ["feasible_region", "Region", "check_style"]
 
 WINDOW = "window"
 
@@ -91,7 +92,7 @@ class Region(Result):
     def plot(self, ax=None, isolines=("eps_alpha", "sa"), optimum=None, proposed=None, x_sum=None,
              n: int = 241):
         """Draw the blocking contour as a handbook does: every check's curve in its own fixed
-        colour (:data:`CHECK_COLOURS`; solid for gear 1, dashed for gear 2) with ticks on its
+        colour (the check registry's, :func:`geardesign.gears.checks.check_colour`; solid for gear 1, dashed for gear 2) with ticks on its
         forbidden side, the feasible region shaded, thin grey isolines of ε_α and s_a/m (levels
         that coincide with a check's limit are left to the check's curve).
 
@@ -187,13 +188,6 @@ class Region(Result):
                 plt.Line2D([], [], color="k", lw=3.2, label="its feasible part")]
 
 
-CHECK_COLOURS = {
-    "undercut": "tab:blue", "interference": "tab:red", "tip_thickness": "tab:orange",
-    "contact_ratio": "tab:purple", "jamming": "tab:brown", "center_distance": "tab:cyan",
-    "ring_tip": "darkgreen", "tip_interference": "magenta", "cutter_trimming": "saddlebrown",
-    "total_contact_ratio": "indigo", "radial_assembly": "slategray", "tooth_difference": "black",
-    "neighbours": "teal", "cutter_interference": "olive",
-}
 _CUSTOM_COLOURS = ("tab:olive", "tab:pink", "tab:gray", "darkgoldenrod", "teal")
 PLOT_N_MAX = 1201      # nodes per axis of a plot's curves: 1.4 M designs, ~1 s
 
@@ -210,15 +204,14 @@ def check_style(name: str) -> tuple[str, str]:
         mesh, kind = name.split(":", 1)
         gear = kind.rsplit("_", 1)[-1] if kind.rsplit("_", 1)[-1] in ("sun", "planet", "ring") else None
         kind = kind.rsplit("_", 1)[0] if gear else kind
-        colour = CHECK_COLOURS.get(kind, _CUSTOM_COLOURS[sum(map(ord, kind)) % len(_CUSTOM_COLOURS)])
+        colour = check_colour(kind) or _CUSTOM_COLOURS[sum(map(ord, kind)) % len(_CUSTOM_COLOURS)]
         if mesh == "planet-ring":
             colour = tuple(0.55 * c for c in to_rgb(colour))
         style = {"sun": "-", "planet": "--", "ring": "-."}.get(gear) or {"sun-planet": "-", "planet-ring": "--"}.get(mesh, ":")
         return colour, style
-    kind = name.rstrip("12")
-    gear2 = name.endswith("2") and kind in CHECK_COLOURS
-    if kind in CHECK_COLOURS:
-        return CHECK_COLOURS[kind], "--" if gear2 else "-"
+    colour = check_colour(name)
+    if colour is not None:
+        return colour, "--" if name.endswith("2") else "-"
     return _CUSTOM_COLOURS[sum(map(ord, name)) % len(_CUSTOM_COLOURS)], "-."
 
 

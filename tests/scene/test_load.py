@@ -15,7 +15,7 @@ from tests.scene_files import GOOD_GEAR, write
     # unknown key
     (GOOD_GEAR + "modul = 8\n", "modul", "unknown key; expected one of module"),
     # unknown key in a sub-table
-    (GOOD_GEAR + "[gear.checks]\neps_min = 1.2\n", "eps_min", "unknown key; expected one of eps_alpha_min"),
+    (GOOD_GEAR + "[gear.checks]\neps_min = 1.2\n", "eps_min", "unknown key; expected one of undercut, interference"),
     # wrong type
     (GOOD_GEAR.replace("z1 = 17", 'z1 = "seventeen"'), "z1", "expected a whole number in [3, 100000]"),   # gears.mesh Z_MIN, Z_MAX
     (GOOD_GEAR.replace("z1 = 17", "z1 = 17.5"), "z1", "expected a whole number"),
