@@ -13,7 +13,6 @@ inv α_a − inv α as a step from tan α_a − tan α (no arccos near 1, no two
 """
 from __future__ import annotations
 
-import functools
 import math
 import operator
 from dataclasses import dataclass, fields
@@ -23,8 +22,14 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..validate import broadcast_inputs, ndim, require_bool, require_int, require_positive, require_range
+from .center_distance import (center_distance_from_x_sum, inv_operating_angle, min_center_distance,  # noqa: F401
+                              undercut_x_min, x_sum_from_center_distance)
+from .distinct import per_distinct, exact_sum_nodes  # noqa: F401
+from .inputs import (_VALIDATION_FIELDS, DESIGNS_MAX, M_RANGE_MM, X_ABS_MAX, require_module,  # noqa: F401
+                     validate_geometry, validate_inputs)
+from .fields import CONTACT_FIELDS, GEOMETRY_FIELDS, INTERNAL_FIELDS, REPORT_FIELDS  # noqa: F401
 from .involute import _t_minus_atan, _tan_from_inv_float, inv, inv_from_tan, t_minus_atan, t_minus_atan_float, tan_from_inv
-from .mesh import Z_MAX, Z_MIN, Mesh, section_constants
+from .mesh import Z_MAX, Z_MIN, Mesh, section_constants, section_tuple as _section_constants
 from .rack import BasicRack
 
 __all__ = [
@@ -43,170 +48,8 @@ __all__ = [
     "X_ABS_MAX",
 ]
 
-M_RANGE_MM = (1e-4, 1e4)   # module: watch gears to mill gears with room to spare; outside, results overflow
-X_ABS_MAX = 10.0           # |x|: beyond a few units the tip or root crosses the base circle anyway
-DESIGNS_MAX = 20_000_000   # designs in one vectorised call: ~1.5 GB of fields per million, so ~30 GB
-
-# name -> (unit, description); the order is the order of reports.
-GEOMETRY_FIELDS: dict[str, tuple[str, str]] = {
-    "alpha_w_deg": ("deg", "transverse operating pressure angle α_w (α_wt)"),
-    "inv_alpha_w": ("-", "involute of α_w"),
-    "a": ("mm", "reference centre distance m_t(z1 + z2)/2 (internal: m_t(z2 − z1)/2)"),
-    "a_w": ("mm", "operating centre distance"),
-    "y": ("-", "centre distance modification coefficient (a_w − a)/m_n"),
-    "dy": ("-", "tip shortening coefficient Δy = x_Σ − y (x_Σ = x1 + x2; internal x2 − x1)"),
-    "d1": ("mm", "reference diameter, gear 1"),
-    "d2": ("mm", "reference diameter, gear 2"),
-    "db1": ("mm", "base diameter, gear 1"),
-    "db2": ("mm", "base diameter, gear 2"),
-    "dw1": ("mm", "operating pitch diameter, gear 1"),
-    "dw2": ("mm", "operating pitch diameter, gear 2"),
-    "da1": ("mm", "tip diameter, gear 1"),
-    "da2": ("mm", "tip diameter, gear 2"),
-    "df1": ("mm", "root diameter, gear 1"),
-    "df2": ("mm", "root diameter, gear 2"),
-    "s1": ("mm", "transverse tooth thickness on the reference circle, gear 1"),
-    "s2": ("mm", "transverse tooth thickness on the reference circle, gear 2"),
-    "sw1": ("mm", "tooth thickness on the operating pitch circle, gear 1"),
-    "sw2": ("mm", "tooth thickness on the operating pitch circle, gear 2"),
-    "sa1": ("mm", "tooth thickness on the tip circle, gear 1"),
-    "sa2": ("mm", "tooth thickness on the tip circle, gear 2"),
-    "p_b": ("mm", "transverse base pitch π m_t cos α_t"),
-    "p_w": ("mm", "circular pitch on the operating pitch circle"),
-    "g_alpha": ("mm", "length of the path of contact (active line of action)"),
-    "eps_alpha": ("-", "transverse contact ratio g_α/p_b"),
-    "alpha_a1_deg": ("deg", "pressure angle at the tip, gear 1"),
-    "alpha_a2_deg": ("deg", "pressure angle at the tip, gear 2"),
-    "clearance1": ("mm", "tip-to-root clearance at the tip of gear 1"),
-    "clearance2": ("mm", "tip-to-root clearance at the tip of gear 2"),
-    "x_min1": ("-", "smallest shift of gear 1 without undercut"),
-    "x_min2": ("-", "smallest shift of gear 2 without undercut (NaN for a ring gear)"),
-    "rho_l1": ("mm", "involute radius of curvature at the limit (form) point, gear 1; < 0 = undercut"),
-    "rho_l2": ("mm", "involute radius of curvature at the limit (form) point, gear 2; < 0 = undercut"),
-    "rho_p1": ("mm", "radius of curvature at the start of the active profile, gear 1"),
-    "rho_p2": ("mm", "radius of curvature at the start of the active profile, gear 2"),
-    "d_l1": ("mm", "limit (form) circle diameter d_Ff, gear 1 (base circle if undercut)"),
-    "d_l2": ("mm", "limit (form) circle diameter d_Ff, gear 2 (base circle if undercut)"),
-    "d_p1": ("mm", "start-of-active-profile diameter d_Nf, gear 1"),
-    "d_p2": ("mm", "start-of-active-profile diameter d_Nf, gear 2"),
-    "o2n1": ("mm", "distance O2N1 from gear 2's centre to gear 1's interference point"),
-    "o1n2": ("mm", "distance O1N2 from gear 1's centre to gear 2's interference point"),
-    "sliding1_root": ("-", "specific sliding of gear 1 at the start of its active profile"),
-    "sliding1_tip": ("-", "specific sliding of gear 1 at its tip"),
-    "sliding2_root": ("-", "specific sliding of gear 2 at the start of its active profile"),
-    "sliding2_tip": ("-", "specific sliding of gear 2 at its tip"),
-    "spec_pressure_pitch": ("-", "specific pressure coefficient m_n/ρ_red at the pitch point (normal section)"),
-    "eps_beta": ("-", "overlap ratio ε_β = b sin β/(π m_n); 0 for spur pairs, NaN without a face width"),
-    "eps_gamma": ("-", "total contact ratio ε_γ = ε_α + ε_β (NaN when ε_β is)"),
-    "san1": ("mm", "tooth thickness on the tip cylinder in the normal section, gear 1 (= sa1 for spur)"),
-    "san2": ("mm", "tooth thickness on the tip cylinder in the normal section, gear 2 (= sa2 for spur)"),
-    "alpha_t_deg": ("deg", "transverse pressure angle α_t = atan(tan α_n / cos β)"),
-    "beta_b_deg": ("deg", "base helix angle β_b"),
-    "m_t": ("mm", "transverse module m_n / cos β"),
-    "z_n1": ("-", "virtual tooth count z/(cos²β_b cos β), gear 1"),
-    "z_n2": ("-", "virtual tooth count z/(cos²β_b cos β), gear 2"),
-}
-
-
-# Fields that no check or objective of the library needs: computed only when asked for.
-REPORT_FIELDS = frozenset({"alpha_w_deg", "s1", "s2", "sw1", "sw2", "p_w", "alpha_a1_deg", "alpha_a2_deg", "clearance1",
-                           "clearance2", "d_l1", "d_l2", "d_p1", "d_p2", "o2n1", "o1n2", "sliding1_tip",
-                           "sliding2_tip", "alpha_t_deg", "beta_b_deg", "m_t", "z_n1", "z_n2"})
-
-
-# Fields of the path of contact: computed unless only fields without them are asked for
-CONTACT_FIELDS = frozenset({"p_b", "g_alpha", "eps_alpha", "rho_p1", "rho_p2", "sliding1_root", "sliding2_root",
-                            "spec_pressure_pitch", "eps_gamma"})
-
 
 # --- formulas ---------------------------------------------------------------------------
-
-
-def inv_operating_angle(z1, z2, x1, x2, alpha):
-    """inv α_w = inv α + 2 (x1 + x2) tan α / (z1 + z2)  (ISO 21771:2007 eq. (62); GOST 16532-70 Table 1).
-
-    >>> round(float(inv_operating_angle(12, 24, 0.6, 0.36, math.radians(20))), 6)   # KHK: 0.034316
-    0.034316
-    """
-    return inv(alpha) + 2.0 * (np.asarray(x1) + x2) * math.tan(alpha) / (np.asarray(z1) + z2)
-
-
-def undercut_x_min(z, rack: BasicRack = BasicRack(), beta_deg: float = 0.0):
-    """Smallest profile shift without undercut, x_min = h_l* − z sin²α_t / (2 cos β).
-
-    h_l* = h_a* + c* − ρ_f*(1 − sin α) is where the cutter's straight flank ends (see
-    :attr:`BasicRack.h_limit`); with ρ_f* = c*/(1 − sin α) it equals h_a*, the textbook form
-    x_min = h_a* − z sin²α/2 (KHK; Litvin & Fuentes §10.5). A helical gear is generated in its
-    transverse section by the rack's transverse profile (α_t, reference radius z m_t/2): the
-    exact form, not the virtual-gear approximation.
-
-    >>> r = BasicRack(rho_f=0.25 / (1 - math.sin(math.radians(20))))
-    >>> [round(float(undercut_x_min(z, r)), 5) for z in (12, 24)]   # KHK: 0.29813, -0.40373
-    [0.29813, -0.40373]
-    """
-    sc = section_constants(rack.alpha, math.radians(beta_deg))
-    return rack.h_limit - np.asarray(z, dtype=float) / sc.cos_beta * sc.sin_t ** 2 / 2.0
-
-
-def _sums(z1, z2, internal: bool):
-    """z_Σ = z1 + z2, or z2 − z1 for an internal pair (the ring's count positive)."""
-    return np.asarray(z2) - np.asarray(z1) if internal else np.asarray(z1) + np.asarray(z2)
-
-
-def x_sum_from_center_distance(m, z1, z2, a_w, rack: BasicRack = BasicRack(), beta_deg: float = 0.0,
-                               internal: bool = False):
-    """The shift sum x_Σ (x1 + x2; x2 − x1 for an internal pair) that gives the operating centre
-    distance a_w (zero backlash).
-
-    cos α_w = a cos α_t / a_w;  x_Σ = z_Σ (inv α_w − inv α_t) / (2 tan α_n)
-    (ISO 21771:2007 eq. (62) solved for x_Σ; GOST 19274-73 for internal pairs).
-
-    >>> round(x_sum_from_center_distance(3, 12, 24, 56.4999), 6)   # KHK: 0.960013
-    0.960013
-    >>> round(x_sum_from_center_distance(3, 16, 24, 13.1683, internal=True), 4)   # KHK internal: x2 − x1 = 0.5
-    0.5
-    """
-    sc = section_constants(rack.alpha, math.radians(beta_deg))
-    zs = _sums(z1, z2, internal)
-    a = np.asarray(m, dtype=float) / sc.cos_beta * zs / 2.0
-    cos_w = a * sc.cos_t / np.asarray(a_w, dtype=float)
-    # tan α_w = √((1 − c)(1 + c))/c keeps digits when a_w is close to a cos α
-    one_minus = (a_w - a * sc.cos_t) / a_w
-    tan_w = np.sqrt(one_minus * (1.0 + cos_w)) / cos_w
-    out = zs * (inv_from_tan(tan_w) - inv(sc.alpha_t)) / (2.0 * sc.tan_n)
-    return float(out) if np.ndim(out) == 0 else out
-
-
-def min_center_distance(m, z1, z2, rack: BasicRack = BasicRack(), beta_deg: float = 0.0, internal: bool = False):
-    """a·cos α_t (mm): the centre distance approached as inv α_w → 0; every a_w exceeds it
-    (cos α_w = a cos α_t / a_w < 1).
-
-    >>> round(float(min_center_distance(2.5, 12, 31)), 6)      # 53.75·cos 20°
-    50.508478
-    """
-    sc = section_constants(rack.alpha, math.radians(beta_deg))
-    return np.asarray(m, dtype=float) / sc.cos_beta * _sums(z1, z2, internal) / 2.0 * sc.cos_t
-
-
-def center_distance_from_x_sum(m, z1, z2, x_sum, rack: BasicRack = BasicRack(), beta_deg: float = 0.0,
-                               internal: bool = False):
-    """Operating centre distance a_w (mm) at zero backlash for the shift sum ``x_sum`` (x1 + x2;
-    x2 − x1 for an internal pair).
-
-    inv α_w = inv α_t + 2 x_Σ tan α_n / z_Σ;  a_w = a cos α_t / cos α_w
-    (ISO 21771:2007 eq. (62) and (63)). NaN where inv α_w <= 0 (no such pair).
-
-    >>> round(float(center_distance_from_x_sum(3, 12, 24, 0.960013)), 4)   # KHK: a_w = 56.4999 mm
-    56.4999
-    """
-    sc = section_constants(rack.alpha, math.radians(beta_deg))
-    zs = np.asarray(_sums(z1, z2, internal), dtype=float)
-    inv_w = inv(sc.alpha_t) + 2.0 * np.asarray(x_sum, dtype=float) * sc.tan_n / zs
-    ok = inv_w > 0
-    t_w = np.where(ok, tan_from_inv(np.where(ok, inv_w, 1.0)), np.nan)
-    # a cos α / cos α_w = a cos α · √(1 + tan²α_w)
-    out = np.asarray(m, dtype=float) / sc.cos_beta * zs / 2.0 * sc.cos_t * np.hypot(1.0, t_w)
-    return float(out) if np.ndim(out) == 0 else out
 
 
 # --- the core: one set of formulas, two backends ---------------------------------------
@@ -220,74 +63,6 @@ def _float_tan_from_inv(v: float) -> float:
     return _tan_from_inv_float(v, polish=False) if v > 0.0 else math.nan
 
 
-_PROBE = 1024   # values looked at before deduplicating: a grid block repeats its x-sums within them
-# Below this many values the hashing costs more than it saves (a 31 × 31 start grid: 200 µs
-# against 70 µs for every value's own operating angle); smaller grids are recognised by their shape
-_DEDUPE_MIN = 4096
-_SHAPED_MIN = 64
-
-
-@functools.lru_cache(maxsize=8)
-def _diagonal_codes(n: int) -> tuple:
-    """For an n × n grid flattened row by row: the index of each node's x-sum diagonal (i + j) and of its
-    x-difference diagonal (j − i + n − 1), with the node that carries each diagonal's value first."""
-    i, j = np.divmod(np.arange(n * n), n)
-    first_sum = np.concatenate((np.arange(n), np.arange(2, n + 1) * n - 1))      # row 0, then column n − 1
-    first_diff = np.concatenate((np.arange(n - 1, 0, -1) * n, np.arange(n)))   # column 0 upwards, then row 0
-    return (i + j, first_sum), (j - i + n - 1, first_diff)
-
-
-def _grid_codes(v):
-    """(codes, distinct) when v is constant or a flattened square grid constant along its diagonals or
-    anti-diagonals (the x-sums of :func:`exact_sum_nodes` grids, an external or an internal pair's), else None."""
-    flat = v.reshape(-1)
-    if flat[0] == flat[-1] and (flat == flat[0]).all():   # a fixed-x_Σ line
-        return np.zeros(flat.size, dtype=np.intp), flat[:1]
-    n = math.isqrt(flat.size)
-    if n * n == flat.size:
-        for codes, first in _diagonal_codes(n):
-            distinct = flat[first]
-            if (distinct[codes] == flat).all():
-                return codes, distinct
-    return None
-
-
-def _per_distinct(func, v):
-    """func(v) for an array v, evaluated once per distinct value when v repeats a lot: on a
-    grid of (x1, x2) the operating angle depends on x1 + x2 alone, which takes ~2n of n² values
-    (bitwise equal only when the nodes' sums are exact: :func:`exact_sum_nodes`). Each value gets
-    exactly what it would get alone, whatever its neighbours."""
-    if _SHAPED_MIN <= v.size < _DEDUPE_MIN:
-        found = _grid_codes(v)
-        if found is not None:
-            codes, distinct = found
-            return tuple(r[codes].reshape(v.shape) for r in func(distinct))
-    elif v.size >= _DEDUPE_MIN:
-        probe = v.reshape(-1)[:_PROBE]   # a grid repeats its x-sums at once; scattered designs do not,
-        if 4 * np.unique(probe).size <= probe.size:   # and then the deduplication would be wasted
-            import pandas as pd     # factorize hashes (O(n)); np.unique sorts, 4x slower here
-
-            codes, distinct = pd.factorize(v.reshape(-1), use_na_sentinel=False)   # NaN a value too
-            if 4 * distinct.size <= v.size:
-                return tuple(r[codes].reshape(v.shape) for r in func(np.asarray(distinct, dtype=float)))
-    return func(v)
-
-
-def exact_sum_nodes(lo: float, hi: float, n: int) -> np.ndarray:
-    """``n`` nodes in [lo, hi], the ends within n·2⁻⁴⁰ of lo and hi, on multiples of 2⁻⁴⁰, so that every sum and
-    difference of two nodes is exact: the x-sums of a grid's nodes are then bitwise equal along
-    each diagonal, and the operating angle is computed once per diagonal (:func:`_per_distinct`).
-
-    >>> g = exact_sum_nodes(-1.5, 3.0, 41)
-    >>> bool(g[1] + g[3] == g[2] + g[2]), bool(abs(g[-1] - 3.0) < 1e-10)
-    (True, True)
-    """
-    unit = 2.0 ** -40
-    first = math.ceil(lo / unit) * unit
-    step = math.floor((hi - first) / max(n - 1, 1) / unit) * unit
-    return first + step * np.arange(n)
-
-
 # Elementwise functions for arrays (numpy) and for one design in Python floats: the same
 # formulas run on either; floats skip numpy's per-call overhead (~1 µs a call), which is
 # what a single-pair optimiser pays ~200 times per evaluation.
@@ -295,7 +70,7 @@ _ARRAY_OPS = SimpleNamespace(
     sqrt=np.sqrt, atan=np.arctan, degrees=np.degrees,
     positive=lambda v: np.maximum(v, 0.0), t_minus_atan=t_minus_atan,
     tan_from_inv=lambda v: tan_from_inv(np.where(v > 0, v, np.nan), validate=False, polish=False),
-    per_distinct=_per_distinct)
+    per_distinct=per_distinct)
 _FLOAT_OPS = SimpleNamespace(
     sqrt=_float_sqrt, atan=math.atan, degrees=math.degrees,
     positive=lambda v: v if v > 0.0 else 0.0 * v, t_minus_atan=t_minus_atan_float,
@@ -354,16 +129,6 @@ def mesh_geometry_float(mesh: Mesh, m: float, x1: float, x2: float, full: bool =
         return _formulas(mesh, float(m), float(mesh.z1), float(mesh.z2), float(x1), float(x2), _FLOAT_OPS, full)
     except (ZeroDivisionError, OverflowError):
         return {k: float(v) for k, v in mesh_geometry(mesh, m, x1, x2, full).items()}
-
-
-@functools.lru_cache(maxsize=64)
-def _section_constants(rack: BasicRack, beta_deg: float) -> tuple:
-    """α_t, sin α_t, cos α_t, tan α_t, inv α_t, sin²(α_t/2), h_l*, tan α_n, cos β, cos β_b of a rack
-    and helix angle: the same floats on both backends, computed once (α_t = α for a spur pair)."""
-    sc = section_constants(rack.alpha, math.radians(beta_deg))
-    alpha = sc.alpha_t
-    return (alpha, sc.sin_t, sc.cos_t, sc.tan_t, _t_minus_atan(sc.tan_t, math.sqrt), math.sin(alpha / 2.0) ** 2,
-            rack.h_limit, sc.tan_n, sc.cos_beta, sc.cos_beta_b)
 
 
 def _operating_angle(D, ta, inv_a, ops):
@@ -565,84 +330,6 @@ def _normal_tip_thickness(sa, da, d, mesh: Mesh):
         return sa
     tb = math.tan(math.radians(mesh.beta_deg)) * da / d
     return sa / (1.0 + tb * tb) ** 0.5
-
-
-# --- validation -------------------------------------------------------------------------
-
-
-def validate_inputs(m, z1, z2, x1, x2):
-    """Check the raw inputs; return them as arrays (z as integers)."""
-    m = require_module(m)
-    z1 = require_int("z1", z1, Z_MIN, Z_MAX)
-    z2 = require_int("z2", z2, Z_MIN, Z_MAX)
-    x1 = require_range("x1", x1, -X_ABS_MAX, X_ABS_MAX)
-    x2 = require_range("x2", x2, -X_ABS_MAX, X_ABS_MAX)
-    return m, z1, z2, x1, x2
-
-
-def require_module(m):
-    """The module in mm, inside :data:`M_RANGE_MM`."""
-    return require_range("m (module)", require_positive("m (module)", m, unit="mm"), *M_RANGE_MM, unit="mm")
-
-
-def _first(mask: np.ndarray) -> tuple[str, tuple]:
-    idx = tuple(int(i) for i in np.argwhere(np.atleast_1d(mask))[0])
-    where = "" if mask.ndim == 0 else f" (design at index {idx if len(idx) > 1 else idx[0]})"
-    return where, idx if mask.ndim else ()
-
-
-# the fields :func:`validate_geometry` reads (g_alpha and eps_alpha with ``contact``)
-_VALIDATION_FIELDS = frozenset({"_z1", "_z2", "_x1", "_x2", "inv_alpha_w", "_gap1", "_gap2", "_k", "da1", "da2",
-                                "db1", "db2", "df1", "df2"})
-
-
-def validate_geometry(geo: dict, mesh: Mesh, contact: bool = False) -> None:
-    """Raise a GearDesignError for designs whose geometry does not exist and, with ``contact``,
-    for gears that do not mesh (path of contact <= 0: the tips do not reach across the line of
-    action). :class:`~geardesign.GearPair` asks for contact; the vectorised
-    :func:`pair_geometry` reports such designs with g_alpha <= 0 (and ε_α <= 0), as the
-    regions and atlases need every design of a grid."""
-    rack = mesh.rack
-    alpha_t, sin_t, _, _, inv_t, s2h, _, tan_n, cos_b, _ = _section_constants(rack, mesh.beta_deg)
-    internal = mesh.internal
-    zs = geo["_z2"] - geo["_z1"] if internal else geo["_z1"] + geo["_z2"]
-    xs_all = geo["_x2"] - geo["_x1"] if internal else geo["_x1"] + geo["_x2"]
-    xs_name, zs_name = ("x2 - x1", "z2 - z1") if internal else ("x1 + x2", "z1 + z2")
-    bad = ~(geo["inv_alpha_w"] > 0)
-    if bad.any():
-        where, i = _first(bad)
-        lo = -float(zs[i]) * inv_t / (2.0 * tan_n)
-        raise GearDesignError(
-            f"{xs_name} = {xs_all[i]:.6g}{where} is too negative: inv alpha_w must be > 0, "
-            f"so {xs_name} must be > {lo:.6g} for {zs_name} = {int(zs[i])}")
-    for j in (1, 2):
-        ring = internal and j == 2
-        bad = ~(geo[f"_gap{j}"] > 0)
-        if bad.any():
-            where, i = _first(bad)
-            z, x = geo[f"_z{j}"][i], geo[f"_x{j}"][i]
-            k = geo["_k"][i]
-            # gap = m(z sin²(α_t/2)/cos β ± (h_a* ± x − k)) > 0, solved for x
-            limit = (rack.ha - k - z * s2h / cos_b) if ring else (k - rack.ha - z * s2h / cos_b)
-            raise GearDesignError(
-                f"x{j} = {x:.6g}{where}: the tip circle of gear {j} (d_a{j} = {geo[f'da{j}'][i]:.6g}) "
-                f"is inside its base circle (d_b{j} = {geo[f'db{j}'][i]:.6g}); x{j} must be > "
-                f"{float(limit):.6g} for z{j} = {int(z)}")
-        bad = ~(geo[f"df{j}"] > 0)
-        if bad.any():
-            where, i = _first(bad)
-            z, x = geo[f"_z{j}"][i], geo[f"_x{j}"][i]
-            raise GearDesignError(
-                f"x{j} = {x:.6g}{where}: the root diameter of gear {j} is not positive; "
-                f"x{j} must be > {rack.ha + rack.c - z / cos_b / 2.0:.6g} for z{j} = {int(z)}")
-    bad = ~(geo["g_alpha"] > 0) if contact else None
-    if contact and bad.any():
-        where, i = _first(bad)
-        raise GearDesignError(
-            f"the gears do not mesh{where}: their tip circles do not overlap along the line of action "
-            f"(path of contact {float(np.asarray(geo['g_alpha'])[i]):.6g} mm, "
-            f"eps_alpha {float(np.asarray(geo['eps_alpha'])[i]):.4g}); "
-            f"{xs_name} = {float(xs_all[i]):.6g} is too large for these tips")
 
 
 # --- result object ----------------------------------------------------------------------

@@ -16,9 +16,10 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..validate import one_number, require_bool, require_int, require_range
+from .involute import _t_minus_atan
 from .rack import STANDARD_RACK, BasicRack
 
-__all__ = ["Mesh", "Z_MIN", "Z_MAX", "BETA_RANGE_DEG", "FACE_WIDTH_RANGE_MM", "SectionConstants"]
+__all__ = ["Mesh", "Z_MIN", "Z_MAX", "BETA_RANGE_DEG", "FACE_WIDTH_RANGE_MM", "SectionConstants", "section_tuple"]
 
 Z_MIN = 3        # smallest tooth count accepted
 Z_MAX = 100_000  # largest tooth count accepted (the accuracy tests reach 10 000)
@@ -171,3 +172,13 @@ class Mesh:
         mesh = object.__new__(Mesh)
         mesh.__dict__.update(self.__dict__, z1=z1, z2=z2)
         return mesh
+
+
+@functools.lru_cache(maxsize=64)
+def section_tuple(rack: BasicRack, beta_deg: float) -> tuple:
+    """α_t, sin α_t, cos α_t, tan α_t, inv α_t, sin²(α_t/2), h_l*, tan α_n, cos β, cos β_b of a rack
+    and helix angle: the same floats on both backends, computed once (α_t = α for a spur pair)."""
+    sc = section_constants(rack.alpha, math.radians(beta_deg))
+    alpha = sc.alpha_t
+    return (alpha, sc.sin_t, sc.cos_t, sc.tan_t, _t_minus_atan(sc.tan_t, math.sqrt), math.sin(alpha / 2.0) ** 2,
+            rack.h_limit, sc.tan_n, sc.cos_beta, sc.cos_beta_b)
