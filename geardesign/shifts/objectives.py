@@ -20,7 +20,8 @@ from ..errors import GearDesignError
 from ..gears.checks import ContactRatio, sliding_root_gradient
 from ..validate import _short
 
-__all__ = ["Objective", "CustomObjective", "OBJECTIVES", "resolve_objective", "default_objective"]
+__all__ = ["Objective", "CustomObjective", "OBJECTIVES", "register_objective", "unregister_objective",
+           "resolve_objective", "default_objective"]
 
 
 class Objective:
@@ -138,6 +139,22 @@ class CustomObjective(Objective):
 
 OBJECTIVES: dict[str, Objective] = {o.name: o for o in (MaxXSum(), MaxEpsAlpha(), BalancedSliding(),
                                                           MinSpecificPressure(), MaxMargin())}
+
+
+def register_objective(objective: Objective) -> Objective:
+    """Add an :class:`Objective` object to :data:`OBJECTIVES` under its name: every method, the CLI's
+    ``--objective`` and the scenes then offer it (docs/extending.md)."""
+    if not isinstance(objective, Objective) or not objective.name:
+        raise GearDesignError(f"register_objective takes a named geardesign Objective, got {_short(objective)}")
+    if objective.name in OBJECTIVES:
+        raise GearDesignError(f"an objective called {objective.name!r} exists already")
+    OBJECTIVES[objective.name] = objective
+    return objective
+
+
+def unregister_objective(name: str) -> None:
+    """Remove a registered objective (tests and examples clean up with it)."""
+    OBJECTIVES.pop(name, None)
 
 
 def resolve_objective(objective) -> Objective:

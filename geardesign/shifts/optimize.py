@@ -32,20 +32,17 @@ import numpy as np
 from ..errors import GearDesignError
 from ..gears.mesh import Mesh
 from ..validate import one_number, require_choice, require_count, require_range
-from . import grid, kkt, scp
 from .center_distance import reachable_center_distance, x_sum_for_housing
 from .conflict import smallest_conflict
 from .grid import GRID_N_MAX
 from .objectives import OBJECTIVES, default_objective
 from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
-from .result import ACCURACY, Outcome, ShiftResult
-from .starts import feasible_starts, start_nodes
+from .methods import ACCURACY, DEFAULT_TOL, METHOD_TABLE, METHODS
+from .result import Outcome, ShiftResult
 
 __all__ = ["optimize_shifts", "ShiftResult", "METHODS", "DEFAULT_TOL", "OBJECTIVES", "GRID_N_MAX",
            "smallest_conflict", "reachable_center_distance", "x_sum_for_housing"]
 
-DEFAULT_TOL = {"grid": 1e-2, "convex": 1e-7, "exact": 1e-9}
-METHODS = tuple(DEFAULT_TOL)
 
 
 def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
@@ -106,16 +103,9 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
 
 
 def solve_problem(prob: Problem, method: str, bounds, tol: float, grid_n=None, start=None) -> Outcome:
-    """Hand a built problem to its method (the table of methods); the Outcome at the method's point."""
-    if method == "grid":
-        return grid.solve(prob, bounds, tol, grid_n)
-    starts, infeasible = feasible_starts(prob, bounds, start)
-    if infeasible is not None:
-        return infeasible
-    if method == "convex":
-        return scp.solve(prob, starts, bounds, tol)
-    h = (bounds[1] - bounds[0]) / (start_nodes(prob) - 1)
-    return kkt.solve(prob, starts, bounds, tol, h)
+    """Hand a built problem to its method (:data:`~geardesign.shifts.methods.METHOD_TABLE`); the Outcome
+    at the method's point."""
+    return METHOD_TABLE[method].solve(prob, bounds, tol, grid_n, start)
 
 
 def _result(prob: Problem, out: Outcome, method: str, tol: float, a_w, t0: float) -> ShiftResult:

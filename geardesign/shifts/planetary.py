@@ -33,7 +33,7 @@ from .objectives import CustomObjective, Objective, default_objective
 from .optimize import DEFAULT_TOL, METHODS, solve_problem
 from .problem import _FLOAT_FAULTS, DEFAULT_BOUNDS, Problem, validate_bounds
 from .region import Region, region_of
-from .result import ACCURACY
+from .methods import ACCURACY
 
 __all__ = ["optimize_planetary_shifts", "planetary_region", "PlanetaryShiftResult", "PlanetaryProblem"]
 

@@ -10,14 +10,8 @@ import numpy as np
 from ..gears.mesh import kind_text
 from ..results import Result
 
-__all__ = ["ShiftResult", "Outcome", "ACCURACY"]
+__all__ = ["ShiftResult", "Outcome"]
 
-ACCURACY = {
-    "exact": "KKT point solved by Newton: x to ~1e-12, checks hold to {tol:g}",
-    "convex": "SQP stopped when its step fell below tol: x within ~{tol:g} of the optimum",
-    "grid": ("best grid node: fun within one node spacing's change of the optimum; x within "
-             "{tol:g} of it unless the optimum slides along a boundary nearly level with fun"),
-}
 
 
 @dataclass
