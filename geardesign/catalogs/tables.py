@@ -26,6 +26,9 @@ from ..errors import CatalogError, GearDesignError
 __all__ = [
     "catalog_dir",
     "catalog_names",
+    "register_catalog",
+    "Schema",
+    "Column",
     "load_catalog",
     "chain_catalog",
     "module_series",
@@ -160,6 +163,16 @@ BUNDLED: dict[str, tuple[str, str, str | None]] = {
     "motors_motive_delphi": ("motors_motive_delphi.csv", "motors", None),
 }
 CHAIN_CATALOGS = ("gost13568", "iso606", "iso606a", "iso606b", "ansi_b29")
+
+
+def register_catalog(name: str, file: str, schema: Schema, series: str | None = None) -> None:
+    """Make the bundled CSV ``file`` (in ``catalogs/``) loadable as ``name`` under ``schema`` (a new kind is
+    added to :data:`SCHEMAS`): the one step a new table needs besides its file (docs/extending.md)."""
+    if name in BUNDLED and BUNDLED[name] != (file, schema.kind, series):
+        raise GearDesignError(f"a catalog called {name!r} exists already")
+    if SCHEMAS.setdefault(schema.kind, schema) != schema:
+        raise GearDesignError(f"a catalog kind {schema.kind!r} with another schema exists already")
+    BUNDLED[name] = (file, schema.kind, series)
 
 
 def catalog_dir():
