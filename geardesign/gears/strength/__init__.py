@@ -1,0 +1,1 @@
+"""Load capacity of cylindrical gears after ISO 6336 (contact and tooth-root strength)."""
