@@ -1,1 +1,1 @@
-"""ISO 6336 load capacity of spur and helical gears (parts 1, 2, 3 and 5)."""
+"""Load capacity of cylindrical gears after ISO 6336 (contact and tooth-root strength)."""
