@@ -20,9 +20,10 @@ from . import factors as kf
 from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
+from .result import StrengthResult, from_chain
 from .root_chain import root_side
 
-__all__ = ["pair_strength", "GIVEN_FACTORS", "STRENGTH_FIELDS"]
+__all__ = ["pair_strength", "strength", "GIVEN_FACTORS", "STRENGTH_FIELDS"]
 
 # Factors a caller may give instead of their computation (measured values, as the standard allows).
 GIVEN_FACTORS = frozenset({
@@ -183,7 +184,7 @@ def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, out):
     K_Fa = np.clip(raw, 1.0, np.maximum(hi_F, 1.0))
     out.update(K_Halpha=np.asarray(G.pick("K_Halpha", lambda: K_Ha)),
                K_Falpha=np.asarray(G.pick("K_Falpha", lambda: K_Fa)),
-               K_Halpha_limited=(raw < 1.0) | (raw > hi_H), K_Falpha_limited=(raw < 1.0) | (raw > hi_F))
+               K_Halpha_limited=raw > np.maximum(hi_H, 1.0), K_Falpha_limited=raw > np.maximum(hi_F, 1.0))
 
 
 def _contact(G, g, mats, F_t, b, u, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_opts, internal, out):
@@ -241,7 +242,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
                   Rz_flank_um=dflt.RZ_FLANK_UM, Rz_root_um=dflt.RZ_ROOT_UM, root_method: str = "B", factors=None,
                   K_gamma: float = 1.0, tip_relief_um=None, bore_ratio=(0.0, 0.0), shaft=None,
                   pitting_permitted: bool = False, optimum_life: bool = False, S_Hmin: float = dflt.S_HMIN,
-                  S_Fmin: float = dflt.S_FMIN) -> dict:
+                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1)) -> dict:
     """ISO 6336 load capacity of gear pairs, vectorised: m (normal module, mm), z1, z2, x1, x2 and the face
     widths broadcast like :func:`~geardesign.gears.geometry.pair_geometry`, whose geometry (operating
     pressure angle, ε_α, diameters) is used as it is. Returns a dict of float arrays: the stresses and safety
@@ -259,7 +260,8 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``shaft``: keyword arguments of :func:`~geardesign.gears.strength.factors.shaft_misalignment`.
     ``pitting_permitted``, ``optimum_life``: choose the Z_NT curve (ISO 6336-2:2019 Table 2). ``S_Hmin``,
     ``S_Fmin``: the minimum safety factors for σ_HP = σ_HG/S_Hmin and σ_FP = σ_FG/S_Fmin (defaults and their
-    source: :mod:`~geardesign.gears.strength.defaults`).
+    source: :mod:`~geardesign.gears.strength.defaults`). ``cycles_per_rev``: load cycles of a tooth per revolution of
+    each gear (a sun among N planets: N).
     """
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
@@ -292,10 +294,11 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     out["Z_eps"] = np.asarray(G.pick("Z_eps", lambda: zc.contact_ratio_factor(g["eps_alpha"], out["eps_beta"])))
     out["Z_beta"] = np.asarray(G.pick("Z_beta", lambda: zc.helix_angle_factor(beta_deg)))
     _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], root_method, out)
-    _contact(G, g, mats, F_t, b, g["d2"] / g["d1"], K_A, K_gamma, v, (n1, n2), load.life_h, nu40, Rz,
+    cpr = tuple(one_number("cycles_per_rev", require_range("cycles_per_rev", c, 1, 1000)) for c in cycles_per_rev)
+    _contact(G, g, mats, F_t, b, g["d2"] / g["d1"], K_A, K_gamma, v, (n1 * cpr[0], n2 * cpr[1]), load.life_h, nu40, Rz,
              {"pitting_permitted": pitting_permitted, "optimum": optimum_life}, internal, out)
     root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root,
-              (n1, n2), load.life_h, root_method, out)
+              (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out)
     S_Hmin = one_number("S_Hmin", require_range("S_Hmin", S_Hmin, 0.5, 10.0))
     S_Fmin = one_number("S_Fmin", require_range("S_Fmin", S_Fmin, 0.5, 10.0))
     for i in (1, 2):
@@ -304,3 +307,27 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
     out["given"] = tuple(sorted(G.used))
     return out
+
+
+def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=None, **options) -> StrengthResult:
+    """ISO 6336 load capacity of one :class:`~geardesign.GearPair` as a :class:`StrengthResult`.
+
+    ``material`` (both gears, or gear 1 with ``material2`` for gear 2): a :class:`Material` or a catalog
+    name. ``face_width_mm``: defaults to the pair's ``face_width``. ``options``: the keyword arguments of
+    :func:`pair_strength` (accuracy grade, lubricant, roughness, given factors, root method, ...).
+
+    >>> from geardesign import GearPair
+    >>> pair = GearPair(m=4, z1=20, z2=60, x1=0.3, x2=0.1, face_width=40)
+    >>> r = strength(pair, Load(torque_nm=400, n_rpm=1000, life_h=20000), material="42CrMo4")
+    >>> round(r.S_H1, 3), r.governing[0], list(r.factors.columns)
+    (0.615, 'contact1', ['symbol', 'gear', 'value', 'clause'])
+    """
+    if material is None:
+        raise GearDesignError("material is needed (a geardesign Material or a name such as '42CrMo4')")
+    b = pair.face_width if face_width_mm is None else face_width_mm
+    if b is None:
+        raise GearDesignError("face_width_mm is needed: give it, or build the GearPair with face_width=")
+    out = pair_strength(pair.m, pair.z1, pair.z2, pair.x1, pair.x2, load=load, material1=material,
+                        material2=material2, face_width_mm=b, beta_deg=pair.beta_deg, internal=pair.internal,
+                        rack=pair.rack, tip_shortening=pair.tip_shortening, **options)
+    return from_chain(out, title=f"{pair.z1}/{pair.z2} m={pair.m:g}")
