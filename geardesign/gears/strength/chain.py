@@ -305,6 +305,12 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
         out[f"sigma_HP{i}"] = out[f"sigma_HG{i}"] / S_Hmin
         out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
     out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
+    shape = np.broadcast_shapes(np.shape(F_t), np.shape(b))
+    for k, val in out.items():   # every field the designs' shape (read-only views for the pair-wide ones)
+        if isinstance(val, np.ndarray) and val.shape != shape:
+            out[k] = np.broadcast_to(val, shape)
+        elif isinstance(val, float) and shape:
+            out[k] = np.broadcast_to(np.float64(val), shape)
     out["given"] = tuple(sorted(G.used))
     return out
 
