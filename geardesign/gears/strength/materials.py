@@ -141,6 +141,8 @@ def material(name: str, *, hardness: float | None = None, quality: str | None = 
     ...
     geardesign.errors.GearDesignError: material must be a name of the catalog or an ISO 6336-5 group (see material_names()), got 'unobtainium'
     """
+    if quality is not None and quality not in QUALITIES:
+        raise GearDesignError(f"quality must be one of {list(QUALITIES)}, got {quality!r}")
     named = named_materials()
     row = None
     if isinstance(name, str):
