@@ -98,5 +98,7 @@ INTERNAL_FIELDS: dict[str, str] = {
     "_psi2": "s/d + inv α_t of gear 2 (a ring: s/d − inv α_t)",
     "_gap1": "r_a1 − r_b1 (mm): > 0 where the tip lies outside the base circle",
     "_gap2": "r_a2 − r_b2 (mm)",
+    "_mesh": "the Mesh the geometry was computed for (rack, helix angle, kind, face width)",
+    "_strength": "memo of the strength checks' safety factors of this design by load case",
     "_cutting_meshes": "memo of the cutter–ring meshes of this design by cutter (the ring checks add it)",
 }

@@ -128,7 +128,7 @@ def mesh_geometry_float(mesh: Mesh, m: float, x1: float, x2: float, full: bool =
     try:
         return _formulas(mesh, float(m), float(mesh.z1), float(mesh.z2), float(x1), float(x2), _FLOAT_OPS, full)
     except (ZeroDivisionError, OverflowError):
-        return {k: float(v) for k, v in mesh_geometry(mesh, m, x1, x2, full).items()}
+        return {k: v if k == "_mesh" else float(v) for k, v in mesh_geometry(mesh, m, x1, x2, full).items()}
 
 
 def _operating_angle(D, ta, inv_a, ops):
@@ -179,6 +179,7 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True, contact: bo
         "_inv_a1": inv_a1, "_inv_a2": inv_a2, "_m": m, "_z1": z1, "_z2": z2, "_x1": x1, "_x2": x2,
         # ∂x_Σ/∂x1 (−1 for an internal pair, where x_Σ = x2 − x1), tan α_n and tan β for the gradients
         "_sgn": -1.0 if internal else 1.0, "_tn": tn, "_tan_beta": math.tan(math.radians(mesh.beta_deg)),
+        "_mesh": mesh,
     }
     if not (contact or full):
         return out

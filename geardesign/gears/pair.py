@@ -195,3 +195,11 @@ class GearPair:
     def ok(self, **limits) -> bool:
         """True when every check of :meth:`checks` holds."""
         return bool(self.checks(**limits)["ok"].all())
+
+    def strength(self, load, material=None, **options):
+        """ISO 6336 load capacity of this pair (:func:`geardesign.gears.strength.strength`): ``load`` a
+        :class:`~geardesign.gears.strength.Load`, ``material`` a :class:`~geardesign.gears.strength.Material` or
+        a catalog name; ``options`` as :func:`~geardesign.gears.strength.pair_strength` (``material2``,
+        ``face_width_mm``, accuracy grade, lubricant, roughness, given factors, root method)."""
+        from .strength import strength   # here: the chain loads the materials catalog (pandas)
+        return strength(self, load, material, **options)

@@ -5,8 +5,8 @@ piece for a smooth objective and two for balanced sliding (max |ϑ| is the large
 ``max_margin`` is the exception: its pieces are the checks' normalised margins, which the
 problem builds itself (``kind = "margin"``).
 
->>> sorted(OBJECTIVES)
-['balanced_sliding', 'max_eps_alpha', 'max_margin', 'max_x_sum', 'min_specific_pressure']
+>>> sorted(OBJECTIVES)[:5]
+['balanced_root_strength', 'balanced_sliding', 'max_eps_alpha', 'max_margin', 'max_min_safety']
 >>> OBJECTIVES["max_x_sum"].pieces({"_x1": 0.5, "_x2": 0.25})
 (0.75,)
 """
@@ -42,6 +42,11 @@ class Objective:
     def piece_gradients(self, geo) -> list | None:
         """[(∂piece/∂x1, ∂piece/∂x2)] per piece, or None for central differences."""
         return None
+
+    def bound(self, checks) -> "Objective":
+        """This objective for a problem with ``checks`` (an objective that reads a load case takes it from
+        the strength checks); most objectives need nothing and return themselves."""
+        return self
 
     def __repr__(self) -> str:
         return f"<objective {self.name}: {self.description}>"
@@ -111,6 +116,55 @@ class MaxMargin(Objective):
         return [(0.0, 0.0)]
 
 
+class _StrengthObjective(Objective):
+    """An objective over the safety factors of the problem's strength checks (ISO 6336): the load case
+    and the minimum safety factors are theirs, so a problem has them only with a load."""
+
+    kind = "minimax"
+    checks: tuple = ()
+
+    def bound(self, checks):
+        found = tuple(c for c in checks if c.name in ("contact_strength", "root_strength1", "root_strength2"))
+        if not found:
+            raise GearDesignError(f"objective {self.name!r} needs a load: give the checks load=, material= and "
+                                  f"face_width_mm= (e.g. checks={{'load': gd.Load(...), 'material': '42CrMo4'}})")
+        out = type(self)()
+        out.checks = found
+        return out
+
+    def _ratios(self, geo, names):
+        """(S/S_min, its gradient) of the bound checks called ``names``."""
+        out = []
+        for c in self.checks:
+            if c.name in names:
+                out.append((c.value(geo) / c.limit, tuple(g for g in c.gradient(geo))))
+        return out
+
+
+class BalancedRootStrength(_StrengthObjective):
+    name, sense = "balanced_root_strength", +1
+    description = "largest min(S_F1, S_F2): equal root safety of both gears where no check stops it"
+    _names = ("root_strength1", "root_strength2")
+
+    def pieces(self, geo):
+        return tuple(r for r, _ in self._ratios(geo, self._names))
+
+    def piece_gradients(self, geo):
+        return [g for _, g in self._ratios(geo, self._names)]
+
+
+class MaxMinSafety(_StrengthObjective):
+    name, sense = "max_min_safety", +1
+    description = "largest smallest safety factor, each relative to its minimum (S_H/S_Hmin, S_F/S_Fmin)"
+    _names = ("contact_strength", "root_strength1", "root_strength2")
+
+    def pieces(self, geo):
+        return tuple(r for r, _ in self._ratios(geo, self._names))
+
+    def piece_gradients(self, geo):
+        return [g for _, g in self._ratios(geo, self._names)]
+
+
 class CustomObjective(Objective):
     """A user's own goal: ``func(geo) -> value`` (geo holds the
     :data:`~geardesign.gears.geometry.GEOMETRY_FIELDS` names, floats or arrays), maximised with
@@ -138,7 +192,8 @@ class CustomObjective(Objective):
 
 
 OBJECTIVES: dict[str, Objective] = {o.name: o for o in (MaxXSum(), MaxEpsAlpha(), BalancedSliding(),
-                                                          MinSpecificPressure(), MaxMargin())}
+                                                          MinSpecificPressure(), MaxMargin(), BalancedRootStrength(),
+                                                          MaxMinSafety())}
 
 
 def register_objective(objective: Objective) -> Objective:

@@ -84,7 +84,7 @@ class PlanetaryProblem(Problem):
         inner = objective.inner
         self.fd_gradients = (objective.kind == "margin" or isinstance(inner, CustomObjective)
                              or type(inner).piece_gradients is Objective.piece_gradients
-                             or any(isinstance(getattr(c, "inner", c), _checks.CustomCheck) for c in self.checks))
+                             or any(getattr(getattr(c, "inner", c), "fd_gradient", False) for c in self.checks))
 
     axis_labels = ("x_sun (profile shift of the sun)", "x_planet (x_ring follows from coaxiality)")
 

@@ -42,7 +42,7 @@ class Problem:
         self.m = one_number("m (module)", require_module(m))
         self.checks = _checks.resolve_checks(checks, internal=mesh.internal)
         self.sgn = mesh.sign
-        self.objective = resolve_objective(objective)
+        self.objective = resolve_objective(objective).bound(self.checks)
         # the report-only geometry fields are computed only when a check or the objective reads them
         self.full = self.objective.needs_report_fields or any(c.needs_report_fields for c in self.checks)
         self.x_sum = None if x_sum is None else float(x_sum)
@@ -52,7 +52,7 @@ class Problem:
         # gradients that are central differences carry ~1e-10 noise, their derivatives more
         self.fd_gradients = (self.objective.kind == "margin"
                              or type(self.objective).piece_gradients is Objective.piece_gradients
-                             or any(isinstance(c, _checks.CustomCheck) for c in self.checks))
+                             or any(getattr(c, "fd_gradient", False) for c in self.checks))
 
     # --- evaluation ---------------------------------------------------------------------
     # The checks and pieces are written once, as formulas on a geometry dict; the dict holds

@@ -19,7 +19,7 @@ def _limit_factor(check) -> float:
         return -1.0
     if isinstance(check, _checks.CustomCheck):
         return (1.0 if check.sense == ">=" else -1.0) / check.scale
-    return 1.0
+    return getattr(check, "margin_per_limit", 1.0)   # a margin S/S_min − 1: 1/S_min
 
 
 def sensitivities_at(prob: Problem, ev: Evaluator, w, act_tol: float):

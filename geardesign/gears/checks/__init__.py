@@ -12,21 +12,23 @@ on the optimisers' single-design path, Python floats) to
 The modules: :mod:`.base` (the base class, the options and the registry every consumer reads:
 :func:`make_checks`, the CLI's limit options, the scene schema, the plots' colours, the sweeps),
 :mod:`.external` (an external pair and a ring pair's pinion), :mod:`.ring` (a ring pair's own
-checks). A problem models only the checks asked for: build the list with :func:`make_checks`.
+checks), :mod:`.strength` (ISO 6336 contact and root safety, built when a load is given). A problem models only the checks asked for: build the list with :func:`make_checks`.
 """
 from .base import (CONTEXT_KEYWORDS, FEASIBILITY_TOL, UNDEFINED, Check, Option, check_colour, evaluate, make_checks,
-                   margins, option, options, register, registered, registry_version, resolve_checks, unregister)
+                   margins, option, options, register, register_context, registered, registry_version, resolve_checks,
+                   unregister)
 from .external import (DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN, EPS_ALPHA_MIN_RANGE, EPS_GAMMA_MIN_RANGE, SA_MIN_RANGE,
                        CenterDistance, ContactRatio, CustomCheck, Interference, Jamming, TipThickness,
                        TotalContactRatio, Undercut)
 from .gradients import sliding_root_gradient
+from .strength import ContactStrength, RootStrength, StrengthSpec
 from .ring import (TOOTH_DIFFERENCE_RANGE, CutterInterference, CutterTrimming, RadialAssembly, RingInterference,
                    RingTip, TipInterference, ToothDifference)
 
 __all__ = [
     "Check", "Option", "Undercut", "Interference", "TipThickness", "ContactRatio", "TotalContactRatio", "Jamming",
     "RingInterference", "RingTip", "TipInterference", "RadialAssembly", "CutterTrimming", "CutterInterference",
-    "ToothDifference", "CenterDistance", "CustomCheck", "make_checks", "resolve_checks", "evaluate", "margins",
+    "ToothDifference", "CenterDistance", "CustomCheck", "ContactStrength", "RootStrength", "StrengthSpec", "make_checks", "resolve_checks", "evaluate", "margins",
     "register", "unregister", "registered", "registry_version", "options", "option", "check_colour", "sliding_root_gradient",
     "DEFAULT_EPS_ALPHA_MIN", "DEFAULT_SA_MIN", "EPS_ALPHA_MIN_RANGE", "SA_MIN_RANGE", "EPS_GAMMA_MIN_RANGE",
     "TOOTH_DIFFERENCE_RANGE", "FEASIBILITY_TOL", "UNDEFINED", "CONTEXT_KEYWORDS",

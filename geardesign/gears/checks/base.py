@@ -27,7 +27,7 @@ from ...errors import GearDesignError
 from ...validate import _show, one_number, require_bool, require_range
 
 __all__ = ["Check", "Option", "register", "registered", "options", "option", "make_checks", "resolve_checks",
-           "evaluate", "margins", "check_colour", "registry_version", "unregister", "FEASIBILITY_TOL", "UNDEFINED", "CONTEXT_KEYWORDS"]
+           "evaluate", "margins", "check_colour", "registry_version", "unregister", "register_context", "FEASIBILITY_TOL", "UNDEFINED", "CONTEXT_KEYWORDS"]
 
 # A margin >= −FEASIBILITY_TOL holds. The solvers land on a boundary to rounding (|margin| ~ 1e-15);
 # the result, the check table and ok() then agree on such a point (issue 29 §2): one tolerance, here.
@@ -79,6 +79,9 @@ class Check:
     # True for checks that read fields only reports need (geometry.REPORT_FIELDS): the solvers
     # then compute the full geometry
     needs_report_fields = False
+    # True for checks whose gradients are central differences (~1e-10 noise): the solvers then loosen
+    # the tolerances that would chase it
+    fd_gradient = False
 
     @classmethod
     def build(cls, value, context: dict) -> list:
@@ -196,12 +199,25 @@ def _check_names(cls: type) -> frozenset:
     return _names_cached(cls, _VERSION[0])
 
 
-# keywords of make_checks that are not options of one check: what the checks are built for
-CONTEXT_KEYWORDS = ("internal", "cutter", "extra")
+# keywords of make_checks that are not options of one check: what the checks are built for (a load
+# model adds its own with register_context)
+CONTEXT_KEYWORDS = ["internal", "cutter", "extra"]
+_CONTEXT_BUILDERS: list = []
+
+
+def register_context(keywords, builder) -> None:
+    """Let :func:`make_checks` take ``keywords`` (a load case, say) and hand them to the checks' ``build``:
+    ``builder(context) -> dict`` adds what the checks read (the strength checks' load case)."""
+    CONTEXT_KEYWORDS.extend(k for k in keywords if k not in CONTEXT_KEYWORDS)
+    if builder not in _CONTEXT_BUILDERS:
+        _CONTEXT_BUILDERS.append(builder)
 
 
 def _context(internal=False, cutter=None, **more) -> dict:
-    return {"internal": internal, "cutter": cutter, **more}
+    context = {"internal": internal, "cutter": cutter, **more}
+    for builder in _CONTEXT_BUILDERS:
+        context.update(builder(context))
+    return context
 
 
 def make_checks(*, internal: bool = False, cutter=None, extra=(), **opts) -> tuple[Check, ...]:
@@ -221,12 +237,13 @@ def make_checks(*, internal: bool = False, cutter=None, extra=(), **opts) -> tup
     """
     require_bool("internal", internal)
     known = options()
+    more = {k: opts.pop(k) for k in list(opts) if k in CONTEXT_KEYWORDS}
     unknown = sorted(set(opts) - set(known))
     if unknown:
         raise GearDesignError(f"checks: unknown option {', '.join(map(repr, unknown))}; allowed: "
                               f"{', '.join(list(known) + list(CONTEXT_KEYWORDS))}")
     values = {name: opt.value(opts.get(name, opt.default)) for name, opt in known.items()}
-    context = _context(internal=internal, cutter=cutter)
+    context = _context(internal=internal, cutter=cutter, **more)
     kind = "internal" if internal else "external"
     out: list[Check] = []
     for cls in _REGISTRY:

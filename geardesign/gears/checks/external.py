@@ -300,6 +300,7 @@ class CustomCheck(Check):
     """
 
     needs_report_fields = True   # a user's func may read any field
+    fd_gradient = True
 
     func: Callable | None = None
     sense: str = ">="

@@ -23,7 +23,7 @@ from .materials import Material, material as material_by_name
 from .result import StrengthResult, from_chain
 from .root_chain import root_side
 
-__all__ = ["pair_strength", "strength", "GIVEN_FACTORS", "STRENGTH_FIELDS"]
+__all__ = ["pair_strength", "strength", "chain_geometry", "GIVEN_FACTORS", "STRENGTH_FIELDS"]
 
 # Factors a caller may give instead of their computation (measured values, as the standard allows).
 GIVEN_FACTORS = frozenset({
@@ -75,18 +75,27 @@ def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening):
     """The geometry fields the chain needs, from pair_geometry (validated there), and the section constants."""
     geo = pair_geometry(m, z1, z2, x1, x2, rack=rack, tip_shortening=tip_shortening, fields=_GEOMETRY,
                         beta_deg=beta_deg, internal=internal)
-    g = {k: np.asarray(getattr(geo, k), dtype=float) for k in _GEOMETRY}
+    fields = {k: getattr(geo, k) for k in _GEOMETRY}
+    return chain_geometry({**fields, "_z1": np.asarray(z1, dtype=float), "_z2": np.asarray(z2, dtype=float)}, rack,
+                          beta_deg)
+
+
+def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float) -> dict:
+    """The fields the chain reads, from a geometry dict of :func:`~geardesign.gears.geometry.mesh_geometry`
+    (with its path of contact) instead of a validated :func:`pair_geometry`: the same derived fields as
+    :func:`_geometry`."""
+    g = {k: np.asarray(geo[k], dtype=float) for k in _GEOMETRY}
     sc = section_constants(rack.alpha, math.radians(beta_deg))
-    g["alpha_wt_deg"] = np.degrees(np.arccos(np.minimum(g["db1"] / g["dw1"], 1.0)))
+    with np.errstate(invalid="ignore"):
+        g["alpha_wt_deg"] = np.degrees(np.arccos(np.minimum(g["db1"] / g["dw1"], 1.0)))
     g["alpha_t_deg"] = math.degrees(sc.alpha_t)
     g["beta_b_deg"] = math.degrees(sc.beta_b)
     zn = 1.0 / (sc.cos_beta_b ** 2 * sc.cos_beta)
-    g["z_n1"] = np.asarray(z1, dtype=float) * zn
-    g["z_n2"] = np.asarray(z2, dtype=float) * zn
+    g["_z1"] = np.asarray(geo["_z1"], dtype=float)
+    g["_z2"] = np.asarray(geo["_z2"], dtype=float)
+    g["z_n1"], g["z_n2"] = g["_z1"] * zn, g["_z2"] * zn
     g["h1"] = (g["da1"] - g["df1"]) / 2.0
     g["h2"] = np.abs(g["da2"] - g["df2"]) / 2.0
-    g["_z1"] = np.asarray(z1, dtype=float)
-    g["_z2"] = np.asarray(z2, dtype=float)
     return g
 
 
@@ -242,7 +251,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
                   Rz_flank_um=dflt.RZ_FLANK_UM, Rz_root_um=dflt.RZ_ROOT_UM, root_method: str = "B", factors=None,
                   K_gamma: float = 1.0, tip_relief_um=None, bore_ratio=(0.0, 0.0), shaft=None,
                   pitting_permitted: bool = False, optimum_life: bool = False, S_Hmin: float = dflt.S_HMIN,
-                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1)) -> dict:
+                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), geometry: dict | None = None) -> dict:
     """ISO 6336 load capacity of gear pairs, vectorised: m (normal module, mm), z1, z2, x1, x2 and the face
     widths broadcast like :func:`~geardesign.gears.geometry.pair_geometry`, whose geometry (operating
     pressure angle, ε_α, diameters) is used as it is. Returns a dict of float arrays: the stresses and safety
@@ -261,7 +270,9 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``pitting_permitted``, ``optimum_life``: choose the Z_NT curve (ISO 6336-2:2019 Table 2). ``S_Hmin``,
     ``S_Fmin``: the minimum safety factors for σ_HP = σ_HG/S_Hmin and σ_FP = σ_FG/S_Fmin (defaults and their
     source: :mod:`~geardesign.gears.strength.defaults`). ``cycles_per_rev``: load cycles of a tooth per revolution of
-    each gear (a sun among N planets: N).
+    each gear (a sun among N planets: N). ``geometry``: the pair's geometry dict when the caller has it
+    (:func:`~geardesign.gears.geometry.mesh_geometry` of these designs: the strength checks of the shift
+    solvers); it is used unvalidated, so designs that do not exist give NaN rather than an error.
     """
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
@@ -270,7 +281,8 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     grade, nu40, Rz, Rz_root, K_gamma, root_method = _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um,
                                                                        K_gamma, root_method)
     G = _Given(factors)
-    g = _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening)
+    g = (_geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening) if geometry is None
+         else chain_geometry(geometry, rack, beta_deg))
     m_arr = np.asarray(m, dtype=float)
     b, b1, b2 = _widths(face_width_mm, face_width2_mm, m_arr)
     broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width=b)
