@@ -183,7 +183,8 @@ def exact_from(prob: Problem, ev: Evaluator, v0, bounds, tol, h):
     found = _first_kkt_point(prob, ev, w0, *_near(ev, nv, w0, reach=2.2 * h), max_move=3 * h)
     if found is not None:
         return found[0], found[3], "converged: KKT system of the active set solved by Newton from a grid node", "kkt"
-    w, nit, ev_s, ok = slsqp(prob, v0, bounds)
+    # with central-difference gradients (~1e-10 noise) SLSQP cannot meet 1e-15; it would run to maxiter
+    w, nit, ev_s, ok = slsqp(prob, v0, bounds, ftol=1e-10 if prob.fd_gradients else 1e-15)
     polished = _polish(prob, w, ev_s, tol)
     if polished is not None:
         return polished[0], nit, "converged: SLSQP, then Newton on the KKT system of its active set", "kkt"

@@ -65,9 +65,10 @@ class StrengthSpec:
         h = _FD_STEP
         X1 = np.stack([x1, x1 + h, x1 - h, x1, x1]).reshape(5, -1)
         X2 = np.stack([x2, x2, x2, x2 + h, x2 - h]).reshape(5, -1)
-        Z1, Z2 = (np.broadcast_to(np.asarray(geo[k], dtype=float), x1.shape).reshape(1, -1) for k in ("_z1", "_z2"))
+        M, Z1, Z2 = (np.broadcast_to(np.asarray(geo[k], dtype=float), x1.shape).reshape(1, -1)
+                     for k in ("_m", "_z1", "_z2"))
         with np.errstate(all="ignore"):
-            g5 = mesh_geometry(mesh.unchecked(Z1, Z2), geo["_m"], X1, X2, full=False)
+            g5 = mesh_geometry(mesh.unchecked(Z1, Z2), M, X1, X2, full=False)
             # the chain's formulas hold for gears that mesh with ε_α >= 1 (ISO 6336's own range) and for the
             # root form factors' |x| <= 3; elsewhere the design fails its geometry anyway, and its safety
             # factors are NaN (a failing margin)
@@ -77,7 +78,7 @@ class StrengthSpec:
             S = {k: np.full(X1.shape, np.nan) for k in ("S_H1", "S_H2", "S_F1", "S_F2")}
             if valid.any():
                 sub = {k: (np.broadcast_to(v, X1.shape)[valid] if np.ndim(v) == 2 else v) for k, v in g5.items()}
-                out = pair_strength(geo["_m"], np.broadcast_to(Z1, X1.shape)[valid],
+                out = pair_strength(np.broadcast_to(M, X1.shape)[valid], np.broadcast_to(Z1, X1.shape)[valid],
                                     np.broadcast_to(Z2, X1.shape)[valid], X1[valid], X2[valid], load=self.load,
                                     material1=self.material1, material2=self.material2, face_width_mm=width,
                                     beta_deg=mesh.beta_deg, internal=mesh.internal, rack=mesh.rack,
