@@ -154,7 +154,7 @@ class ContactStrength(Check):
     """Contact (pitting) safety S_H = min(S_H1, S_H2) >= S_Hmin (ISO 6336-2:2019); margin S_H/S_Hmin − 1.
     Built only with a load (see the module docstring)."""
 
-    option, colour, order, kind_name = CONTACT_SAFETY, "crimson", 80, "contact_strength"
+    option, colour, order, kind_name = CONTACT_SAFETY, "deeppink", 80, "contact_strength"
     fd_gradient = True
     margin_per_limit = property(lambda self: 1.0 / self.limit)   # −∂margin/∂limit at the boundary
     build = classmethod(_build_with_spec)
@@ -183,7 +183,7 @@ class RootStrength(Check):
     """Tooth-root (bending) safety of ``gear``, S_F >= S_Fmin (ISO 6336-3:2019); margin S_F/S_Fmin − 1.
     Built only with a load (see the module docstring)."""
 
-    option, colour, order, kind_name = ROOT_SAFETY, "darkviolet", 81, "root_strength"
+    option, colour, order, kind_name = ROOT_SAFETY, "teal", 81, "root_strength"
     per_gear = {"external": (1, 2), "internal": (1, 2)}
     fd_gradient = True
     margin_per_limit = property(lambda self: 1.0 / self.limit)
