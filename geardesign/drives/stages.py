@@ -237,7 +237,7 @@ class ChainStage:
     kind = "chain"
 
     def __post_init__(self):
-        from .chain.candidates import RATIO_RANGE, validate_inputs
+        from .chain.inputs import RATIO_RANGE, validate_inputs
 
         object.__setattr__(self, "efficiency", _efficiency(self.efficiency))
         object.__setattr__(self, "name", _name(self.name, "chain"))
@@ -249,7 +249,7 @@ class ChainStage:
                               self.center_distance_mm, self.objective, self.method, self.sag_factor, self.z2_max, 40.0)
         object.__setattr__(self, "_inputs", inp)
         if self.z2 is not None:
-            from .chain.candidates import Z1_RANGE
+            from .chain.inputs import Z1_RANGE
             require_count("z2", self.z2, Z1_RANGE[0], self.z2_max)
             if self.z1 is None:
                 raise GearDesignError("a fixed z2 needs a fixed z1 (the chain stage's ratio is z2/z1)")
@@ -261,7 +261,7 @@ class ChainStage:
     def table(self):
         """The validated chain catalog (read once per file version)."""
         from ..catalogs.tables import catalog_dir
-        from .chain.candidates import load_chains
+        from .chain.tables import load_chains
         return load_chains(self._inputs, catalog_dir())
 
     def rows(self) -> np.ndarray:
