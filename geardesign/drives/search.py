@@ -29,7 +29,7 @@ import pandas as pd
 
 from ..errors import GearDesignError
 from .drive_results import DriveOptimum
-from .limits import CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, MARGIN_TOL
+from .limits import CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX, MARGIN_TOL
 from .stage_kinds import StageFlow, kind_of
 from .stages import Shaft
 
@@ -219,9 +219,22 @@ class Search:
             return -self.batch_min
         bound = (self.batch_size if self.objective == "min_size" else self.batch_mass).copy()
         for k in self.solved_k:
-            s, m_ = self.kinds[k].bound(self.stages[k], self.options[k])
-            bound += (s if self.objective == "min_size" else m_)[self.idx[:, k]]
+            s, m_ = self._stage_bounds(k)
+            bound += s if self.objective == "min_size" else m_
         return bound
+
+    def _stage_bounds(self, k: int) -> tuple:
+        """Stage k's (size, mass) lower bound of every design: per option, or for a stage sized by
+        its load per (option, input flow) while there are at most LOAD_BOUNDS_MAX of them."""
+        kind, st = self.kinds[k], self.stages[k]
+        if k in self.flow_group:
+            pairs, first, inv = np.unique(np.column_stack([self.idx[:, k], self.flow_group[k]]), axis=0,
+                                          return_index=True, return_inverse=True)
+            if len(pairs) <= LOAD_BOUNDS_MAX:
+                b = np.array([kind.bound_at(st, self.option_at(k, c), self.flow_at(k, c)) for c in first])
+                return b[inv.ravel(), 0], b[inv.ravel(), 1]
+        s, m_ = kind.bound(st, self.options[k])
+        return s[self.idx[:, k]], m_[self.idx[:, k]]
 
     def _groups(self):
         """(order, starts, ends, bound per group) of the designs that pass every batch check,

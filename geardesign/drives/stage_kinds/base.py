@@ -114,6 +114,12 @@ class StageKind:
         zero = np.zeros(options["ratio"].shape)
         return zero, zero
 
+    def bound_at(self, stage, option: dict, flow) -> tuple:
+        """Lower bounds (size mm², mass kg) of one option at one input flow (a load-dependent kind;
+        by default its :meth:`bound`)."""
+        size, mass = self.bound(stage, {k: np.atleast_1d(v) for k, v in option.items()})
+        return float(size[0]), float(mass[0])
+
     def load_dependent(self, stage) -> bool:
         """True when a solved option depends on the flow into the stage (sized by its load)."""
         return False

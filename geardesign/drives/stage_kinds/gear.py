@@ -175,11 +175,21 @@ class GearKind(StageKind):
 
     def bound(self, stage, options: dict) -> tuple:
         z1, z2 = options["z1"].astype(float), options["z2"].astype(float)
-        if stage.m is None:     # sized by load: the smallest module of the series, no mass
+        if stage.m is None:     # sized by load, whatever the load: the series' smallest module, no mass
             size, _, _ = _base_circle_bounds(stage, float(_series().min()), z1, z2)
             return size, np.zeros(z1.shape)
         size, db1, db2 = _base_circle_bounds(stage, stage.m, z1, z2)
         return size, disc_mass_kg(db1, stage.width_mm) + disc_mass_kg(db2, stage.width_mm)
+
+    def bound_at(self, stage, option: dict, flow) -> tuple:
+        """A stage sized by load at one flow: base circles of the smallest module the sizing function
+        offers, blanks of its narrowest face width (the solve takes one of those candidates)."""
+        z1, z2 = int(option["z1"]), int(option["z2"])
+        cands = self.sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2)
+        m = min(c[0] for c in cands)
+        w = min(b if b is not None else FACE_WIDTH_PITCHES * math.pi * mc for mc, b in cands)
+        size, db1, db2 = _base_circle_bounds(stage, m, float(z1), float(z2))
+        return float(size), float(disc_mass_kg(db1, w) + disc_mass_kg(db2, w))
 
     def design_columns(self, stage, option: dict, info, c: int) -> dict:
         return {f"{stage.name}.z1": int(option["z1"]), f"{stage.name}.z2": int(option["z2"])}
