@@ -209,7 +209,8 @@ class Search:
         if key not in self._solved:
             kind = self.kinds[k]
             before = kind.solve_count()
-            self._solved[key] = kind.solve(self.stages[k], self.option_at(k, c), self.objective, self.flow_at(k, c))
+            flow = self.flow_at(k, c) if k in self.flow_group else None
+            self._solved[key] = kind.solve(self.stages[k], self.option_at(k, c), self.objective, flow)
             self.n_solves += kind.solve_count() - before
         return self._solved[key]
 

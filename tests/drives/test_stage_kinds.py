@@ -195,3 +195,33 @@ def test_the_kind_leaves_with_unregister():
     assert "belt" in kind_names()
     unregister("belt")
     assert kind_names() == ("given", "gear", "chain")
+
+
+def test_the_extending_guide_runs_this_files_kind():
+    """docs/extending.md's worked example is this file's kind, runs as written, and the figures it
+    quotes are the ones it prints."""
+    import contextlib
+    import inspect
+    import io
+    import re
+    from pathlib import Path
+
+    import matplotlib.pyplot as plt
+
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "extending.md").read_text(encoding="utf-8")
+    section = doc[doc.index("## Adding a drive stage kind"):]
+    block = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    for obj in (BeltStage, belt_speed_m_s, BeltKind):
+        assert inspect.getsource(obj) in block
+    out = io.StringIO()
+    try:
+        with contextlib.redirect_stdout(out):
+            ns = {}
+            exec(compile(block, "docs/extending.md", "exec"), ns)
+        plt.close(ns["ax"].figure)
+    finally:
+        unregister("belt")
+    message = out.getvalue().splitlines()[0]
+    assert message.split("; ")[0] in section
+    best = ns["r"].table.iloc[0]
+    assert (best["belt.d1_mm"], best["belt.d2_mm"]) == (90.0, 200.0)

@@ -98,7 +98,8 @@ class StageKind:
         return Batch(margins={})
 
     def solve(self, stage, option: dict, objective: str, flow=None) -> dict:
-        """One option solved (``solved`` kinds): dict(feasible, reason, margins, ...)."""
+        """One option solved (``solved`` kinds): dict(feasible, reason, margins, ...). ``flow``: the
+        :class:`StageFlow` into the stage when :meth:`load_dependent` says the solve needs it, else None."""
         raise NotImplementedError(f"stage kind {self.name!r} solves nothing one by one")
 
     def solve_count(self) -> int:
