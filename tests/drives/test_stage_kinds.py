@@ -225,3 +225,14 @@ def test_the_extending_guide_runs_this_files_kind():
     assert message.split("; ")[0] in section
     best = ns["r"].table.iloc[0]
     assert (best["belt.d1_mm"], best["belt.d2_mm"]) == (90.0, 200.0)
+
+
+def test_analyse_keeps_each_gear_stages_flow():
+    """What a load-based check of a gear stage reads: the speed and torque in and out of it, as the
+    hand-worked flow (4 kW at 1500 rpm, gear motor u = 12.5, η = 0.87, then the pair 20/50, η = 0.97)."""
+    a = gd.Drive(power_kw=4, n_in_rpm=1500, stages=[gd.GivenStage(12.5, 0.87, "gear motor"),
+                                                    gd.GearStage(2, z1=20, z2=50, efficiency=0.97)]).analyse()
+    t1 = 4000 / _omega(1500) * 12.5 * 0.87
+    flow = a.stages[1]["flow"]
+    assert (flow.n_in_rpm, flow.n_out_rpm) == pytest.approx((120, 48), rel=1e-15)
+    assert (flow.torque_in_nm, flow.torque_out_nm) == pytest.approx((t1, t1 * 2.5 * 0.97), rel=1e-14)
