@@ -226,7 +226,7 @@ def _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, ro
     grade = require_range("accuracy_grade", accuracy_grade, *acc.GRADE_RANGE)
     return (grade, require_range("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
             require_range("Rz_flank_um", Rz_flank_um, *dflt.RZ_RANGE_UM, unit="µm"),
-            require_range("Rz_root_um", Rz_root_um, *dflt.RZ_RANGE_UM, unit="µm"),
+            require_range("Rz_root_um", Rz_root_um, dflt.RZ_RANGE_UM[0], dflt.RZ_ROOT_MAX_UM, unit="µm"),
             one_number("K_gamma", require_range("K_gamma", K_gamma, *dflt.K_GAMMA_RANGE)),
             root_method if root_method in ("B", "C") else _bad_method(root_method))
 
@@ -242,7 +242,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
                   Rz_flank_um=dflt.RZ_FLANK_UM, Rz_root_um=dflt.RZ_ROOT_UM, root_method: str = "B", factors=None,
                   K_gamma: float = 1.0, tip_relief_um=None, bore_ratio=(0.0, 0.0), shaft=None,
                   pitting_permitted: bool = False, optimum_life: bool = False, S_Hmin: float = dflt.S_HMIN,
-                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1)) -> dict:
+                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), rim_mm=(None, None)) -> dict:
     """ISO 6336 load capacity of gear pairs, vectorised: m (normal module, mm), z1, z2, x1, x2 and the face
     widths broadcast like :func:`~geardesign.gears.geometry.pair_geometry`, whose geometry (operating
     pressure angle, ε_α, diameters) is used as it is. Returns a dict of float arrays: the stresses and safety
@@ -261,7 +261,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``pitting_permitted``, ``optimum_life``: choose the Z_NT curve (ISO 6336-2:2019 Table 2). ``S_Hmin``,
     ``S_Fmin``: the minimum safety factors for σ_HP = σ_HG/S_Hmin and σ_FP = σ_FG/S_Fmin (defaults and their
     source: :mod:`~geardesign.gears.strength.defaults`). ``cycles_per_rev``: load cycles of a tooth per revolution of
-    each gear (a sun among N planets: N).
+    each gear (a sun among N planets: N). ``rim_mm``: (s_R1, s_R2) rim thickness under the root for Y_B (None: solid).
     """
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
@@ -298,7 +298,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     _contact(G, g, mats, F_t, b, g["d2"] / g["d1"], K_A, K_gamma, v, (n1 * cpr[0], n2 * cpr[1]), load.life_h, nu40, Rz,
              {"pitting_permitted": pitting_permitted, "optimum": optimum_life}, internal, out)
     root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root,
-              (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out)
+              (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out, rim_mm)
     S_Hmin = one_number("S_Hmin", require_range("S_Hmin", S_Hmin, 0.5, 10.0))
     S_Fmin = one_number("S_Fmin", require_range("S_Fmin", S_Fmin, 0.5, 10.0))
     for i in (1, 2):

@@ -62,7 +62,7 @@ def interp_life(N, pts):
 
 
 def y_alpha(fpb, mat, v):
-    if mat.kind in ("Eh", "IF", "NT", "NV", "NV_nitrocar"):
+    if mat.kind in ("Eh", "IF", "NT", "NV(nitr)", "NV(nitrocar)"):
         return min(0.075 * fpb, 3.0)
     y = 160.0 / mat.sigma_Hlim_mpa * fpb
     if v > 10:
@@ -71,7 +71,7 @@ def y_alpha(fpb, mat, v):
 
 
 def y_beta(F, mat, v):
-    if mat.kind in ("Eh", "IF", "NT", "NV", "NV_nitrocar"):
+    if mat.kind in ("Eh", "IF", "NT", "NV(nitr)", "NV(nitrocar)"):
         return min(0.15 * F, 6.0)
     y = 320.0 / mat.sigma_Hlim_mpa * F
     if v > 10:
@@ -153,7 +153,7 @@ def reference(m, z1, z2, x1, x2, beta_deg, b, T1, n1, mat1, mat2, grade, nu40, R
     rred = rho[0] * rho[1] / (rho[0] + rho[1])
     out = dict(sigma_H0=s0, sigma_H1=ZB * s0 * kk, sigma_H2=ZD * s0 * kk, K_v=Kv, K_Hbeta=KHb, K_Fbeta=KFb,
                K_Halpha=KHa, K_Falpha=KFa, Z_H=ZH, Z_E=ZE, Z_eps=Zeps, Z_B=ZB, Z_D=ZD, c_prime=cp, eps_alpha=g["ea"])
-    hard = [mt.kind in ("Eh", "IF", "NT", "NV", "NV_nitrocar") for mt in mats]
+    hard = [mt.kind in ("Eh", "IF", "NT", "NV(nitr)", "NV(nitrocar)") for mt in mats]
     for i, (mt, n) in enumerate(zip(mats, (n1, n2)), start=1):
         s = mt.sigma_Hlim_mpa
         czl = 0.83 if s < 850 else (0.91 if s > 1200 else s / 4375 + 0.6357)
@@ -162,7 +162,7 @@ def reference(m, z1, z2, x1, x2, beta_deg, b, T1, n1, mat1, mat2, grade, nu40, R
         czr = 0.15 if s < 850 else (0.08 if s > 1200 else 0.32 - 0.0002 * s)
         ZR = (3 / (Rz * (10 / rred) ** (1 / 3))) ** czr
         ZW = 1.2 - (min(max(mt.hardness, 130), 470) - 130) / 1700 if (not hard[i - 1] and hard[2 - i]) else 1.0
-        curve = "GG_NT_NV" if mt.kind in ("NT", "NV", "GG") else "no_pitting"
+        curve = "GG_NT_NV" if mt.kind in ("NT", "NV(nitr)", "GG", "GGG(ferr)") else "no_pitting"
         ZNT = 1.0 if life_h is None else interp_life(60 * n * life_h, LIFE[curve])
         out[f"S_H{i}"] = s * ZNT * ZL * Zv * ZR * ZW / out[f"sigma_H{i}"]
     return out
