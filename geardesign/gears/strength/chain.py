@@ -52,7 +52,8 @@ class _Given:
         for name, value in factors.items():
             if name not in GIVEN_FACTORS:
                 raise GearDesignError(f"factors: unknown factor {name!r}; allowed: {', '.join(sorted(GIVEN_FACTORS))}")
-            lo, hi = (0.0, 1e4) if name[0] in "fFCc" else dflt.FACTOR_RANGE
+            # deviations and stiffness (µm, N/(mm·µm)) and Z_E (√MPa) are not dimensionless factors near 1
+            lo, hi = (0.0, 1e4) if name[0] in "fFCc" or name == "Z_E" else dflt.FACTOR_RANGE
             self.values[name] = require_range(f"factors[{name!r}]", value, lo, hi)
 
     def pick(self, name, compute):

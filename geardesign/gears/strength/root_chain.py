@@ -82,6 +82,7 @@ def _root_factors(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A,
         out.update({f"{names[0]}{i}": YF, f"{names[1]}{i}": YS, f"Y_B{i}": YB, f"Y_NT{i}": Y_NT,
                     f"Y_deltarelT{i}": Y_d, f"Y_RrelT{i}": Y_R, f"Y_X{i}": Y_X, f"q_s{i}": np.asarray(ff["q_s"]),
                     f"root_out_of_range{i}": ~np.asarray(ff.get("in_range", True), dtype=bool)})
+        out[f"sigma_F0{i}"] = root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra, 1.0, 1.0, 1.0, 1.0, 1.0)
         out[f"sigma_F{i}"] = root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra, *K)
         out[f"sigma_FG{i}"] = root_stress_limit(mat.sigma_Flim_mpa, Y_NT, Y_d, Y_R, Y_X, rf.Y_ST)
         out[f"S_F{i}"] = out[f"sigma_FG{i}"] / out[f"sigma_F{i}"]
