@@ -74,6 +74,10 @@ def _material(value, name):
 
 def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening):
     """The geometry fields the chain needs, from pair_geometry (validated there), and the section constants."""
+    if np.size(x1) > 1 or np.size(x2) > 1:
+        # pair_geometry(fields=...) of one pair (m, z1, z2 numbers) over more than one block of shifts fills the
+        # pair-wide fields at the full size in each block and fails: give it m at the designs' shape instead
+        m = np.broadcast_to(np.asarray(m, dtype=float), np.broadcast_shapes(np.shape(m), np.shape(x1), np.shape(x2)))
     geo = pair_geometry(m, z1, z2, x1, x2, rack=rack, tip_shortening=tip_shortening, fields=_GEOMETRY,
                         beta_deg=beta_deg, internal=internal)
     g = {k: np.asarray(getattr(geo, k), dtype=float) for k in _GEOMETRY}
