@@ -197,3 +197,8 @@ class GearPair:
     def ok(self, **limits) -> bool:
         """True when every check of :meth:`checks` holds."""
         return bool(self.checks(**limits)["ok"].all())
+
+    def strength(self, load, material=None, **options):
+        """ISO 6336 load capacity (:func:`geardesign.gears.strength.strength`): a StrengthResult."""
+        from .strength.chain import strength   # the strength package sits beside the geometry, imported on use
+        return strength(self, load, material, **options)

@@ -1,0 +1,344 @@
+"""The ISO 6336 factor chain of a gear pair, vectorised: geometry (from :func:`pair_geometry`), load, the
+part-1 factors, contact (part 2) and root (part 3) stresses and the safety factors, for any number of
+designs in one call; and the one-pair path that returns a :class:`StrengthResult`.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...errors import GearDesignError
+from ...validate import broadcast_inputs, one_number, require_range
+from ..geometry import pair_geometry
+from ..mesh import section_constants
+from ..rack import STANDARD_RACK, BasicRack
+from . import accuracy as acc
+from . import contact as zc
+from . import defaults as dflt
+from . import factors as kf
+from .life import contact_life_factor, load_cycles
+from .load import Load
+from .materials import Material, material as material_by_name
+from .result import StrengthResult, from_chain
+from .root_chain import root_side
+
+__all__ = ["pair_strength", "strength", "GIVEN_FACTORS", "STRENGTH_FIELDS"]
+
+# Factors a caller may give instead of their computation (measured values, as the standard allows).
+GIVEN_FACTORS = frozenset({
+    "K_v", "K_Hbeta", "K_Fbeta", "K_Halpha", "K_Falpha", "c_prime", "c_gamma_alpha", "c_gamma_beta",
+    "Z_H", "Z_E", "Z_eps", "Z_beta", "Z_B", "Z_D", "Z_NT1", "Z_NT2", "Z_L1", "Z_L2", "Z_v1", "Z_v2", "Z_R1",
+    "Z_R2", "Z_W1", "Z_W2", "Z_X", "Y_F1", "Y_F2", "Y_S1", "Y_S2", "Y_Fa1", "Y_Fa2", "Y_Sa1", "Y_Sa2", "Y_eps",
+    "Y_beta", "Y_B1", "Y_B2", "Y_DT", "Y_NT1", "Y_NT2", "Y_deltarelT1", "Y_deltarelT2", "Y_RrelT1", "Y_RrelT2",
+    "Y_X1", "Y_X2", "f_pb", "f_falpha", "F_beta", "f_Hbeta", "f_sh", "f_ma", "C_a",
+})
+# The stresses and safety factors every call returns (MPa; S dimensionless).
+STRENGTH_FIELDS = ("S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigma_H2", "sigma_F1", "sigma_F2",
+                   "sigma_HP1", "sigma_HP2", "sigma_FP1", "sigma_FP2")
+_GEOMETRY = ["a_w", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", "df1", "df2", "eps_alpha", "p_b"]
+
+
+class _Given:
+    """The factors given by the caller, and which of them were used."""
+
+    def __init__(self, factors):
+        self.values = {}
+        self.used = set()
+        if factors is None:
+            return
+        if not isinstance(factors, dict):
+            raise GearDesignError(f"factors must be a dict of factor names to values, got {type(factors).__name__}")
+        for name, value in factors.items():
+            if name not in GIVEN_FACTORS:
+                raise GearDesignError(f"factors: unknown factor {name!r}; allowed: {', '.join(sorted(GIVEN_FACTORS))}")
+            # deviations and stiffness (µm, N/(mm·µm)) and Z_E (√MPa) are not dimensionless factors near 1
+            lo, hi = (0.0, 1e4) if name[0] in "fFCc" or name == "Z_E" else dflt.FACTOR_RANGE
+            self.values[name] = require_range(f"factors[{name!r}]", value, lo, hi)
+
+    def pick(self, name, compute):
+        """The given value of ``name``, or ``compute()`` (a thunk: nothing is computed for a given factor)."""
+        if name in self.values:
+            self.used.add(name)
+            return self.values[name]
+        return compute()
+
+
+def _material(value, name):
+    if isinstance(value, Material):
+        return value
+    if isinstance(value, str):
+        return material_by_name(value)
+    raise GearDesignError(f"{name} must be a geardesign Material or a material name, got {type(value).__name__}")
+
+
+def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening):
+    """The geometry fields the chain needs, from pair_geometry (validated there), and the section constants."""
+    if np.size(x1) > 1 or np.size(x2) > 1:
+        # pair_geometry(fields=...) of one pair (m, z1, z2 numbers) over more than one block of shifts fills the
+        # pair-wide fields at the full size in each block and fails: give it m at the designs' shape instead
+        m = np.broadcast_to(np.asarray(m, dtype=float), np.broadcast_shapes(np.shape(m), np.shape(x1), np.shape(x2)))
+    geo = pair_geometry(m, z1, z2, x1, x2, rack=rack, tip_shortening=tip_shortening, fields=_GEOMETRY,
+                        beta_deg=beta_deg, internal=internal)
+    g = {k: np.asarray(getattr(geo, k), dtype=float) for k in _GEOMETRY}
+    sc = section_constants(rack.alpha, math.radians(beta_deg))
+    g["alpha_wt_deg"] = np.degrees(np.arccos(np.minimum(g["db1"] / g["dw1"], 1.0)))
+    g["alpha_t_deg"] = math.degrees(sc.alpha_t)
+    g["beta_b_deg"] = math.degrees(sc.beta_b)
+    zn = 1.0 / (sc.cos_beta_b ** 2 * sc.cos_beta)
+    g["z_n1"] = np.asarray(z1, dtype=float) * zn
+    g["z_n2"] = np.asarray(z2, dtype=float) * zn
+    g["h1"] = (g["da1"] - g["df1"]) / 2.0
+    g["h2"] = np.abs(g["da2"] - g["df2"]) / 2.0
+    g["_z1"] = np.asarray(z1, dtype=float)
+    g["_z2"] = np.asarray(z2, dtype=float)
+    return g
+
+
+def _widths(face_width_mm, face_width2_mm, m):
+    """(b, b1, b2): the common width for contact and each gear's width for its root stress, the wider gear
+    counted at most one module wider on each side (ISO 6336-3:2019 clause 5, b)."""
+    b1 = require_range("face_width_mm", face_width_mm, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
+    b2 = b1 if face_width2_mm is None else require_range("face_width2_mm", face_width2_mm,
+                                                         *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
+    b = np.minimum(b1, b2)
+    return b, np.minimum(b1, b + 2.0 * np.asarray(m)), np.minimum(b2, b + 2.0 * np.asarray(m))
+
+
+def _speeds(load: Load, z1, z2):
+    """(T1 in N·m, n1, n2 in rpm): the load carried over to the pinion (gear 1)."""
+    u = np.asarray(z2, dtype=float) / z1
+    if load.on_gear == 1:
+        return np.full_like(u, load.torque_nm), np.full_like(u, load.n_rpm), load.n_rpm / u
+    return load.torque_nm / u, load.n_rpm * u, np.full_like(u, load.n_rpm)
+
+
+def _deviations(G, m, g, b, grade):
+    """ISO 1328-1:1995 deviations of the pair (µm): f_pb, f_fα, F_β, f_Hβ — the larger gear's (the wheel's
+    larger diameter gives the larger tolerance); f_pb = f_pt·cos α_t, the single pitch deviation on the base
+    circle."""
+    d = np.maximum(g["d1"], g["d2"])
+    cos_t = math.cos(math.radians(float(np.asarray(g["alpha_t_deg"]))))
+    return {"f_pb": G.pick("f_pb", lambda: acc.single_pitch_deviation(m, d, grade) * cos_t),
+            "f_falpha": G.pick("f_falpha", lambda: acc.profile_form_deviation(m, d, grade)),
+            "F_beta": G.pick("F_beta", lambda: acc.helix_deviation_total(d, b, grade)),
+            "f_Hbeta": G.pick("f_Hbeta", lambda: acc.helix_slope_deviation(d, b, grade))}
+
+
+def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
+    """c′_th, c′, c_γα, c_γβ (ISO 6336-1:2019 clause 9) and the regression's range flag."""
+    c_th = kf.theoretical_single_stiffness(g["z_n1"], g["z_n2"], x1, x2, internal)
+    C_B = kf.basic_rack_factor(rack.ha + rack.c, rack.alpha_deg)
+    c_prime = G.pick("c_prime", lambda: kf.single_stiffness(c_th, C_B, beta_deg, w_A))
+    c_ga, c_gb = kf.mesh_stiffness(c_prime, g["eps_alpha"])
+    out.update(c_th=c_th, C_B=np.asarray(C_B), c_prime=np.asarray(c_prime),
+               c_gamma_alpha=np.asarray(G.pick("c_gamma_alpha", lambda: c_ga)),
+               c_gamma_beta=np.asarray(G.pick("c_gamma_beta", lambda: c_gb)))
+    xs = np.asarray(x1) + x2
+    lo, hi = kf.STIFFNESS_X_SUM_RANGE
+    out["stiffness_out_of_range"] = (xs < lo) | (xs > hi) | (np.asarray(x1) < x2)
+
+
+def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal, z1, v, out):
+    """K_v by method B with the running-in allowance y_α (ISO 6336-1:2019 6.5.9)."""
+    y_a = (kf.running_in_alpha(dev["f_pb"], mats[0].sigma_Hlim_mpa, mats[0].kind, v)
+           + kf.running_in_alpha(dev["f_pb"], mats[1].sigma_Hlim_mpa, mats[1].kind, v)) / 2.0
+    C_a = G.pick("C_a", lambda: tip_relief_um if tip_relief_um is not None else (
+        kf.tip_relief_running_in(mats[0].sigma_Hlim_mpa) + kf.tip_relief_running_in(mats[1].sigma_Hlim_mpa)) / 2.0)
+    d_m1 = (g["da1"] + g["df1"]) / 2.0
+    m_red = kf.reduced_mass(d_m1, g["db1"], g["d2"] / g["d1"], bore[0], bore[1], internal=internal)
+    n_E1 = kf.resonance_speed(z1, out["c_gamma_alpha"], m_red)
+    N = kf.resonance_ratio(n1, n_E1)
+    c = out["c_prime"]
+    B_p = c * np.maximum(dev["f_pb"] - y_a, 0.0) / w_A
+    B_f = c * np.maximum(dev["f_falpha"] - y_a, 0.0) / w_A
+    B_k = np.abs(1.0 - out["c_gamma_alpha"] * C_a / w_A)
+    K_v = G.pick("K_v", lambda: kf.dynamic_factor(N, eps_gamma, B_p, B_f, B_k, w_A))
+    N_S = kf.subcritical_limit(w_A)
+    out.update(y_alpha=np.asarray(y_a), C_a=np.asarray(C_a), m_red=m_red, n_E1=n_E1, N=N, K_v=np.asarray(K_v),
+               K_v_resonance=(N > N_S) & (N < 1.5))
+
+
+def _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft, out):
+    """K_Hβ by method C from F_βy (ISO 6336-1:2019 7.6; f_sh, F_βx, y_β per 2006/Cor.1:2008) and K_Fβ."""
+    w_m = F_t * K_A * out["K_v"] / b
+
+    def compute():
+        f_sh = G.pick("f_sh", lambda: kf.shaft_misalignment(w_m, b, g["d1"], **shaft))
+        f_ma = G.pick("f_ma", lambda: dev["f_Hbeta"])
+        F_bx = kf.helix_misalignment(f_sh, f_ma, w_m, dev["F_beta"])
+        y_b = (kf.running_in_beta(F_bx, mats[0].sigma_Hlim_mpa, mats[0].kind, v)
+               + kf.running_in_beta(F_bx, mats[1].sigma_Hlim_mpa, mats[1].kind, v)) / 2.0
+        out.update(f_sh=np.asarray(f_sh), f_ma=np.asarray(f_ma), F_betax=F_bx, y_beta=y_b, F_betay=F_bx - y_b)
+        return kf.face_load_factor_H(F_bx - y_b, out["c_gamma_beta"], w_m)
+
+    K_Hb = np.asarray(G.pick("K_Hbeta", compute))
+    b_over_h = np.minimum(b / g["h1"], b / g["h2"])
+    N_F = kf.face_load_exponent(b_over_h)
+    out.update(K_Hbeta=K_Hb, N_F=N_F, K_Fbeta=np.asarray(G.pick("K_Fbeta", lambda: kf.face_load_factor_F(K_Hb, N_F))))
+
+
+def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, out):
+    """K_Hα and K_Fα by method B, limited to their ranges (ISO 6336-1:2019 8.3.2-8.3.4)."""
+    w_H = F_t * K_A * out["K_v"] * out["K_Hbeta"] / b
+    raw = kf.transverse_load_factor(eps_gamma, out["c_gamma_alpha"], dev["f_pb"] - out["y_alpha"], w_H)
+    hi_H, hi_F = kf.transverse_load_limits(eps_gamma, g["eps_alpha"], Z_eps)
+    if root_method == "C":   # ISO 6336-1:2006 eq. (76): ε_γ/(ε_α Y_ε) with the tip-load method's Y_ε
+        hi_F = eps_gamma / (g["eps_alpha"] * (0.25 + 0.75 / out["eps_alpha_n"]))
+    K_Ha = np.clip(raw, 1.0, np.maximum(hi_H, 1.0))
+    K_Fa = np.clip(raw, 1.0, np.maximum(hi_F, 1.0))
+    out.update(K_Halpha=np.asarray(G.pick("K_Halpha", lambda: K_Ha)),
+               K_Falpha=np.asarray(G.pick("K_Falpha", lambda: K_Fa)),
+               K_Halpha_limited=raw > np.maximum(hi_H, 1.0), K_Falpha_limited=raw > np.maximum(hi_F, 1.0))
+
+
+def _contact(G, g, mats, F_t, b, u, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_opts, internal, out):
+    """σ_H0, σ_H1,2, σ_HG1,2 and S_H1,2 (ISO 6336-2:2019)."""
+    m1, m2 = mats
+    out["Z_H"] = np.asarray(G.pick("Z_H", lambda: zc.zone_factor(g["beta_b_deg"], g["alpha_t_deg"],
+                                                                  g["alpha_wt_deg"])))
+    out["Z_E"] = np.asarray(G.pick("Z_E", lambda: zc.elasticity_factor(m1.E_mpa, m1.nu, m2.E_mpa, m2.nu)))
+    ZB, ZD = zc.single_pair_factors(g["db1"], g["db2"], g["da1"], g["da2"], g["alpha_wt_deg"], g["a_w"],
+                                    g["eps_alpha"], out["eps_beta"], g["p_b"], internal)
+    out["Z_B"], out["Z_D"] = (np.asarray(G.pick("Z_B", lambda: ZB)), np.asarray(G.pick("Z_D", lambda: ZD)))
+    s0 = zc.nominal_contact_stress(F_t, g["d1"], b, u, out["Z_H"], out["Z_E"], out["Z_eps"], out["Z_beta"], internal)
+    K = (K_A, K_gamma, out["K_v"], out["K_Hbeta"], out["K_Halpha"])
+    out["sigma_H0"] = s0
+    out["sigma_H1"], out["sigma_H2"] = zc.contact_stress(s0, out["Z_B"], *K), zc.contact_stress(s0, out["Z_D"], *K)
+    rho1 = g["db1"] / 2.0 * np.tan(np.radians(g["alpha_wt_deg"]))
+    rho2 = g["db2"] / 2.0 * np.tan(np.radians(g["alpha_wt_deg"]))
+    rho_red = zc.relative_radius(rho1, rho2, internal)
+    hard = (m1.surface_hardened, m2.surface_hardened)
+    for i, (mat, n) in enumerate(zip(mats, n12), start=1):
+        s = mat.sigma_Hlim_mpa
+        N_L = None if life_h is None else load_cycles(n, life_h)
+        out[f"Z_NT{i}"] = np.asarray(G.pick(f"Z_NT{i}", lambda: np.ones_like(s0) if N_L is None else
+                                            contact_life_factor(N_L, mat.kind, **life_opts)))
+        out[f"Z_L{i}"] = np.asarray(G.pick(f"Z_L{i}", lambda: zc.lubricant_factor(nu40, s)))
+        out[f"Z_v{i}"] = np.asarray(G.pick(f"Z_v{i}", lambda: zc.velocity_factor(v, s)))
+        out[f"Z_R{i}"] = np.asarray(G.pick(f"Z_R{i}", lambda: zc.roughness_factor(Rz, Rz, rho_red, s)))
+        softer = (not hard[i - 1]) and hard[2 - i]
+        out[f"Z_W{i}"] = np.asarray(G.pick(f"Z_W{i}", lambda: zc.work_hardening_factor(mat.brinell, softer)))
+        out[f"N_L{i}"] = np.nan if N_L is None else N_L
+        Z_X = G.pick("Z_X", lambda: zc.SIZE_FACTOR_Z_X)
+        out["Z_X"] = np.asarray(Z_X)
+        out[f"sigma_HG{i}"] = zc.contact_stress_limit(s, out[f"Z_NT{i}"], out[f"Z_L{i}"], out[f"Z_v{i}"],
+                                                      out[f"Z_R{i}"], out[f"Z_W{i}"], Z_X)
+        out[f"S_H{i}"] = zc.contact_safety(out[f"sigma_HG{i}"], out[f"sigma_H{i}"])
+
+
+def _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method):
+    grade = require_range("accuracy_grade", accuracy_grade, *acc.GRADE_RANGE)
+    return (grade, require_range("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
+            require_range("Rz_flank_um", Rz_flank_um, *dflt.RZ_RANGE_UM, unit="µm"),
+            require_range("Rz_root_um", Rz_root_um, dflt.RZ_RANGE_UM[0], dflt.RZ_ROOT_MAX_UM, unit="µm"),
+            one_number("K_gamma", require_range("K_gamma", K_gamma, *dflt.K_GAMMA_RANGE)),
+            root_method if root_method in ("B", "C") else _bad_method(root_method))
+
+
+def _bad_method(root_method):
+    raise GearDesignError(f"root_method must be 'B' (ISO 6336-3:2019, load at the outer point of single pair "
+                          f"contact) or 'C' (tip load with Y_eps, ISO 6336-3:1996), got {root_method!r}")
+
+
+def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, face_width_mm, face_width2_mm=None,
+                  beta_deg: float = 0.0, internal: bool = False, rack: BasicRack | None = None,
+                  tip_shortening: bool = True, accuracy_grade=dflt.ACCURACY_GRADE, nu40=dflt.NU40_MM2_S,
+                  Rz_flank_um=dflt.RZ_FLANK_UM, Rz_root_um=dflt.RZ_ROOT_UM, root_method: str = "B", factors=None,
+                  K_gamma: float = 1.0, tip_relief_um=None, bore_ratio=(0.0, 0.0), shaft=None,
+                  pitting_permitted: bool = False, optimum_life: bool = False, S_Hmin: float = dflt.S_HMIN,
+                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), rim_mm=(None, None)) -> dict:
+    """ISO 6336 load capacity of gear pairs, vectorised: m (normal module, mm), z1, z2, x1, x2 and the face
+    widths broadcast like :func:`~geardesign.gears.geometry.pair_geometry`, whose geometry (operating
+    pressure angle, ε_α, diameters) is used as it is. Returns a dict of float arrays: the stresses and safety
+    factors of :data:`STRENGTH_FIELDS`, every factor by its ASCII symbol (per gear with a suffix 1 or 2),
+    flags of ranges left (``stiffness_out_of_range``, ``K_v_resonance``, ``K_Halpha_limited``, ...) and
+    ``given``, the names of the factors taken from ``factors`` instead of computed.
+
+    ``load``: a :class:`Load` (torque or power at the speed of the gear it is given on). ``material1``,
+    ``material2``: :class:`Material` or catalog names (``material2`` defaults to ``material1``).
+    ``face_width_mm`` (gear 1, both if ``face_width2_mm`` is None). ``accuracy_grade``: ISO 1328-1:1995
+    grade (0-12). ``nu40``: lubricant viscosity at 40 °C, mm²/s. ``Rz_flank_um``, ``Rz_root_um``: mean peak-to-
+    valley roughness. ``root_method``: "B" (ISO 6336-3:2019) or "C" (tip load, Y_ε). ``factors``: measured or
+    agreed values of any of :data:`GIVEN_FACTORS`. ``K_gamma``: mesh load factor (planetary sets).
+    ``tip_relief_um``: C_a (default C_ay of running-in). ``bore_ratio``: (q1, q2) for the reduced mass.
+    ``shaft``: keyword arguments of :func:`~geardesign.gears.strength.factors.shaft_misalignment`.
+    ``pitting_permitted``, ``optimum_life``: choose the Z_NT curve (ISO 6336-2:2019 Table 2). ``S_Hmin``,
+    ``S_Fmin``: the minimum safety factors for σ_HP = σ_HG/S_Hmin and σ_FP = σ_FG/S_Fmin (defaults and their
+    source: :mod:`~geardesign.gears.strength.defaults`). ``cycles_per_rev``: load cycles of a tooth per revolution of
+    each gear (a sun among N planets: N). ``rim_mm``: (s_R1, s_R2) rim thickness under the root for Y_B (None: solid).
+    """
+    rack = STANDARD_RACK if rack is None else rack
+    if not isinstance(load, Load):
+        raise GearDesignError(f"load must be a geardesign Load, got {type(load).__name__}")
+    mats = (_material(material1, "material1"), _material(material1 if material2 is None else material2, "material2"))
+    grade, nu40, Rz, Rz_root, K_gamma, root_method = _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um,
+                                                                       K_gamma, root_method)
+    G = _Given(factors)
+    g = _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening)
+    m_arr = np.asarray(m, dtype=float)
+    b, b1, b2 = _widths(face_width_mm, face_width2_mm, m_arr)
+    broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width=b)
+    T1, n1, n2 = _speeds(load, np.asarray(z1, dtype=float), np.asarray(z2, dtype=float))
+    K_A = load.application_factor
+    F_t = kf.tangential_load(T1, g["d1"])
+    v = kf.pitch_line_velocity(g["d1"], n1)
+    w_A = F_t * K_A / b
+    out = {"F_t": F_t, "v": v, "K_A": np.asarray(K_A), "K_gamma": np.asarray(K_gamma), "n1": n1, "n2": n2,
+           "alpha_wt_deg": g["alpha_wt_deg"], "eps_alpha": g["eps_alpha"], "z_n1": g["z_n1"], "z_n2": g["z_n2"]}
+    sin_b = math.sin(math.radians(beta_deg))
+    out["eps_beta"] = b * sin_b / (math.pi * m_arr)
+    eps_gamma = g["eps_alpha"] + out["eps_beta"]
+    out["eps_gamma"] = eps_gamma
+    out["eps_alpha_n"] = g["eps_alpha"] / math.cos(math.radians(g["beta_b_deg"])) ** 2
+    dev = _deviations(G, m_arr, g, b, grade)
+    out.update({k: np.asarray(val) for k, val in dev.items()})
+    _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out)
+    _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore_ratio, eps_gamma, internal, z1, v, out)
+    _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft or {}, out)
+    out["Z_eps"] = np.asarray(G.pick("Z_eps", lambda: zc.contact_ratio_factor(g["eps_alpha"], out["eps_beta"])))
+    out["Z_beta"] = np.asarray(G.pick("Z_beta", lambda: zc.helix_angle_factor(beta_deg)))
+    _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], root_method, out)
+    cpr = tuple(one_number("cycles_per_rev", require_range("cycles_per_rev", c, 1, 1000)) for c in cycles_per_rev)
+    _contact(G, g, mats, F_t, b, g["d2"] / g["d1"], K_A, K_gamma, v, (n1 * cpr[0], n2 * cpr[1]), load.life_h, nu40, Rz,
+             {"pitting_permitted": pitting_permitted, "optimum": optimum_life}, internal, out)
+    root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root,
+              (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out, rim_mm)
+    S_Hmin = one_number("S_Hmin", require_range("S_Hmin", S_Hmin, 0.5, 10.0))
+    S_Fmin = one_number("S_Fmin", require_range("S_Fmin", S_Fmin, 0.5, 10.0))
+    for i in (1, 2):
+        out[f"sigma_HP{i}"] = out[f"sigma_HG{i}"] / S_Hmin
+        out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
+    out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
+    shape = np.broadcast_shapes(np.shape(F_t), np.shape(b))
+    for k, val in out.items():   # every field the designs' shape (read-only views for the pair-wide ones)
+        if isinstance(val, np.ndarray) and val.shape != shape:
+            out[k] = np.broadcast_to(val, shape)
+        elif isinstance(val, float) and shape:
+            out[k] = np.broadcast_to(np.float64(val), shape)
+    out["given"] = tuple(sorted(G.used))
+    return out
+
+
+def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=None, **options) -> StrengthResult:
+    """ISO 6336 load capacity of one :class:`~geardesign.GearPair` as a :class:`StrengthResult`.
+
+    ``material`` (both gears, or gear 1 with ``material2`` for gear 2): a :class:`Material` or a catalog
+    name. ``face_width_mm``: defaults to the pair's ``face_width``. ``options``: the keyword arguments of
+    :func:`pair_strength` (accuracy grade, lubricant, roughness, given factors, root method, ...).
+
+    >>> from geardesign import GearPair
+    >>> pair = GearPair(m=4, z1=20, z2=60, x1=0.3, x2=0.1, face_width=40)
+    >>> r = strength(pair, Load(torque_nm=400, n_rpm=1000, life_h=20000), material="42CrMo4")
+    >>> round(r.S_H1, 3), r.governing[0], list(r.factors.columns)
+    (0.615, 'contact1', ['symbol', 'gear', 'value', 'clause'])
+    """
+    if material is None:
+        raise GearDesignError("material is needed (a geardesign Material or a name such as '42CrMo4')")
+    b = pair.face_width if face_width_mm is None else face_width_mm
+    if b is None:
+        raise GearDesignError("face_width_mm is needed: give it, or build the GearPair with face_width=")
+    out = pair_strength(pair.m, pair.z1, pair.z2, pair.x1, pair.x2, load=load, material1=material,
+                        material2=material2, face_width_mm=b, beta_deg=pair.beta_deg, internal=pair.internal,
+                        rack=pair.rack, tip_shortening=pair.tip_shortening, **options)
+    return from_chain(out, title=f"{pair.z1}/{pair.z2} m={pair.m:g}")

@@ -1,0 +1,324 @@
+"""ISO 6336-1 general influence factors: the tangential load, the mesh stiffness, the dynamic factor K_v
+(method B), the face load factors K_Hβ (method C) and K_Fβ, the transverse load factors K_Hα and K_Fα
+(method B) and the running-in allowances. Every function takes numbers or numpy arrays (broadcast).
+
+Edition: ISO 6336-1:2019 where not said otherwise; the running-in allowances y_α, y_β, the tip-relief
+allowance C_ay and the helix-misalignment estimate f_sh are the ISO 6336-1:2006 formulas with
+ISO 6336-1:2006/Cor.1:2008, which the 2019 edition keeps in substance. Units: N, mm, µm, rpm,
+N/(mm·µm) for stiffness, kg/mm for the reduced mass.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = [
+    "tangential_load", "pitch_line_velocity", "basic_rack_factor", "theoretical_single_stiffness",
+    "single_stiffness", "mesh_stiffness", "STIFFNESS_X_SUM_RANGE", "reduced_mass", "resonance_speed",
+    "resonance_ratio", "subcritical_limit", "dynamic_coefficients", "dynamic_factor", "running_in_alpha",
+    "running_in_beta", "tip_relief_running_in", "shaft_misalignment", "helix_misalignment",
+    "face_load_factor_H", "face_load_exponent", "face_load_factor_F", "transverse_load_factor",
+    "transverse_load_limits", "STEEL_DENSITY_KG_MM3", "C_M_SOLID",
+]
+
+STEEL_DENSITY_KG_MM3 = 7.83e-6    # ISO 6336-1:2019 6.5.9 (ρ of steel)
+C_M_SOLID = 0.8                  # ISO 6336-1:2019 9.3.3: correction of the theoretical to the measured c′
+# The stiffness regression holds for these shift sums (ISO 6336-1:2019 9.3.2: x1 ≥ x2, −0.5 ≤ x1 + x2 ≤ 2);
+# outside it the regression is used as it is and the result says so.
+STIFFNESS_X_SUM_RANGE = (-0.5, 2.0)
+# regression coefficients C1..C9 of q′ (ISO 6336-1:2019 9.3.2, Table 9)
+_SURFACE_HARDENED = frozenset({"Eh", "IF", "NT", "NV(nitr)", "NV(nitrocar)"})   # ISO 6336-1 y_α, y_β groups
+_GREY = frozenset({"GG", "GGG(ferr)"})
+_Q_COEFFS = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)
+
+
+def tangential_load(torque_nm, d_mm):
+    """F_t = 2000·T/d (N), the nominal tangential load on the reference circle (ISO 6336-1:2019 eq. (1)).
+
+    >>> round(float(tangential_load(9000, 141.3401)))     # ISO/TR 6336-30 ex. 1: 127 352 N
+    127352
+    """
+    return 2000.0 * np.asarray(torque_nm, dtype=float) / d_mm
+
+
+def pitch_line_velocity(d_mm, n_rpm):
+    """v = π·d·n/60 000 (m/s) on the reference circle (ISO 6336-1:2019 eq. (3)).
+
+    >>> round(float(pitch_line_velocity(141.3401, 360)), 3)     # ISO/TR 6336-30 ex. 1: 2.664 m/s
+    2.664
+    """
+    return math.pi * np.asarray(d_mm, dtype=float) * n_rpm / 60_000.0
+
+
+def basic_rack_factor(hfp_star, alpha_n_deg=20.0):
+    """C_B = [1 + 0.5(1.2 − h_fP/m_n)]·[1 − 0.02(20° − α_n)] (ISO 6336-1:2019 eq. (75)); for two different
+    racks use the mean of the two C_B.
+
+    >>> float(basic_rack_factor(1.4))        # ISO 53 profile D
+    0.9
+    """
+    return (1.0 + 0.5 * (1.2 - np.asarray(hfp_star, dtype=float))) * (1.0 - 0.02 * (20.0 - np.asarray(alpha_n_deg)))
+
+
+def theoretical_single_stiffness(z_n1, z_n2, x1, x2, internal=False):
+    """c′_th = 1/q′ (N/(mm·µm)), q′ = C1 + C2/z_n1 + C3/z_n2 + C4 x1 + C5 x1/z_n1 + C6 x2 + C7 x2/z_n2
+    + C8 x1² + C9 x2² (ISO 6336-1:2019 eq. (73), (74), Table 9). Internal pairs: z_n2 = ∞ (the
+    standard's approximation for internal gears).
+
+    >>> round(float(theoretical_single_stiffness(18.905, 114.543, 0.145, 0.0)), 3)   # ISO/TR 6336-30 ex. 1: 17.856
+    17.856
+    """
+    c1, c2, c3, c4, c5, c6, c7, c8, c9 = _Q_COEFFS
+    z_n1 = np.asarray(z_n1, dtype=float)
+    x1 = np.asarray(x1, dtype=float)
+    x2 = np.asarray(x2, dtype=float)
+    inv_zn2 = 0.0 if internal else 1.0 / np.asarray(z_n2, dtype=float)
+    q = (c1 + c2 / z_n1 + c3 * inv_zn2 + c4 * x1 + c5 * x1 / z_n1 + c6 * x2 + c7 * x2 * inv_zn2
+         + c8 * x1 * x1 + c9 * x2 * x2)
+    return 1.0 / q
+
+
+def single_stiffness(c_th, C_B, beta_deg, line_load_n_mm, C_R=1.0, C_M=C_M_SOLID):
+    """c′ = c′_th·C_M·C_R·C_B·cos β (N/(mm·µm)), times (K_A F_t/b / 100)^0.25 below 100 N/mm
+    (ISO 6336-1:2019 eq. (70), (71)). ``line_load_n_mm`` is K_A·F_t/b.
+
+    >>> round(float(single_stiffness(17.85584, 0.9, 15.8, 1273.5)), 3)   # ISO/TR 6336-30 ex. 1: 12.370
+    12.37
+    """
+    w = np.asarray(line_load_n_mm, dtype=float)
+    low = np.sqrt(np.sqrt(np.minimum(w, 100.0) / 100.0))
+    return np.asarray(c_th) * C_M * C_R * C_B * np.cos(np.radians(beta_deg)) * low
+
+
+def mesh_stiffness(c_prime, eps_alpha):
+    """(c_γα, c_γβ) = (c′(0.75 ε_α + 0.25), 0.85 c_γα) in N/(mm·µm) (ISO 6336-1:2019 eq. (76), (77)).
+
+    >>> [round(float(c), 3) for c in mesh_stiffness(12.37047, 1.54908)]   # ISO/TR 6336-30 ex. 1: 17.465, 14.845
+    [17.465, 14.845]
+    """
+    c_ga = np.asarray(c_prime) * (0.75 * np.asarray(eps_alpha) + 0.25)
+    return c_ga, 0.85 * c_ga
+
+
+def reduced_mass(d_m1, d_b1, u, q1=0.0, q2=0.0, rho1=STEEL_DENSITY_KG_MM3, rho2=STEEL_DENSITY_KG_MM3,
+                 internal=False):
+    """m_red = (π/8)(d_m1/d_b1)² d_m1² / [1/((1 − q1⁴)ρ1) + 1/((1 − q2⁴)ρ2 u²)] (kg/mm), the reduced
+    mass of the pair per face width on the line of action (ISO 6336-1:2019 eq. (30)); d_m = (d_a + d_f)/2,
+    q = bore/d_m. An internal gear's mass counts as infinite (ISO 6336-1:2019 6.5.9: m_red = m1*).
+
+    >>> round(float(reduced_mass(100.0, 93.97, 2.0)), 5)
+    0.02786
+    """
+    lead = math.pi / 8.0 * (np.asarray(d_m1) / d_b1) ** 2 * np.asarray(d_m1) ** 2
+    inv1 = 1.0 / ((1.0 - np.asarray(q1) ** 4) * rho1)
+    inv2 = 0.0 if internal else 1.0 / ((1.0 - np.asarray(q2) ** 4) * rho2 * np.asarray(u) ** 2)
+    return lead / (inv1 + inv2)
+
+
+def resonance_speed(z1, c_gamma_alpha, m_red):
+    """n_E1 = 30 000/(π z1)·√(c_γα/m_red) (rpm), the pinion speed of the main resonance
+    (ISO 6336-1:2019 eq. (29)).
+
+    >>> round(float(resonance_speed(20, 20.0, 0.02786)))
+    12793
+    """
+    return 30_000.0 / (math.pi * np.asarray(z1, dtype=float)) * np.sqrt(np.asarray(c_gamma_alpha) / m_red)
+
+
+def resonance_ratio(n1_rpm, n_E1_rpm):
+    """N = n1/n_E1 (ISO 6336-1:2019 eq. (28)).
+
+    >>> float(resonance_ratio(360, 7200))
+    0.05
+    """
+    return np.asarray(n1_rpm, dtype=float) / n_E1_rpm
+
+
+def subcritical_limit(line_load_n_mm):
+    """N_S = 0.5 + 0.35·√(K_A F_t/(100 b)) below 100 N/mm, else 0.85: the upper end of the subcritical range
+    (ISO 6336-1:2019 eq. (31), (32)).
+
+    >>> float(subcritical_limit(100)), float(subcritical_limit(25))
+    (0.85, 0.675)
+    """
+    w = np.asarray(line_load_n_mm, dtype=float)
+    return np.where(w < 100.0, 0.5 + 0.35 * np.sqrt(np.minimum(w, 100.0) / 100.0), 0.85)
+
+
+def dynamic_coefficients(eps_gamma):
+    """C_v1 … C_v7 of ISO 6336-1:2019 Table 7 (method B) as a tuple of arrays, for 1 < ε_γ ≤ 2 and ε_γ > 2.
+
+    >>> [round(float(c), 3) for c in dynamic_coefficients(1.5)]
+    [0.32, 0.34, 0.23, 0.9, 0.47, 0.47, 0.75]
+    """
+    e = np.asarray(eps_gamma, dtype=float)
+    hi = e > 2.0
+    eh = np.where(hi, e, 3.0)   # keeps the ε_γ > 2 branch finite where it is not used
+    cv1 = np.full_like(e, 0.32)
+    cv2 = np.where(hi, 0.57 / (eh - 0.3), 0.34)
+    cv3 = np.where(hi, 0.096 / (eh - 1.56), 0.23)
+    cv4 = np.where(hi, (0.57 - 0.05 * eh) / (eh - 1.44), 0.90)
+    cv5 = np.full_like(e, 0.47)
+    cv6 = np.where(hi, 0.12 / (eh - 1.74), 0.47)
+    cv7 = np.where(e <= 1.5, 0.75, np.where(e <= 2.5, 0.125 * np.sin(math.pi * (e - 2.0)) + 0.875, 1.0))
+    return cv1, cv2, cv3, cv4, cv5, cv6, cv7
+
+
+def dynamic_factor(N, eps_gamma, B_p, B_f, B_k, line_load_n_mm):
+    """K_v by method B (ISO 6336-1:2019 6.5.9): subcritical N ≤ N_S: K_v = N·K + 1, K = C_v1 B_p + C_v2 B_f
+    + C_v3 B_k (eq. (33)); main resonance N_S < N ≤ 1.15: K_v = C_v1 B_p + C_v2 B_f + C_v4 B_k + 1 (eq. (37));
+    supercritical N ≥ 1.5: K_v = C_v5 B_p + C_v6 B_f + C_v7 (eq. (39)); between 1.15 and 1.5 linear in N
+    between the two (eq. (38)). B_p = c′ f_pb,eff/(K_A F_t/b), B_f = c′ f_fα,eff/(K_A F_t/b),
+    B_k = |1 − c_γα C_a/(K_A F_t/b)|.
+
+    >>> round(float(dynamic_factor(0.05, 2.6, 0.0311, 0.0543, 0.04, 1273.5)), 4)
+    1.0014
+    """
+    cv1, cv2, cv3, cv4, cv5, cv6, cv7 = dynamic_coefficients(eps_gamma)
+    N = np.asarray(N, dtype=float)
+    sub = N * (cv1 * B_p + cv2 * B_f + cv3 * B_k) + 1.0
+    main = cv1 * B_p + cv2 * B_f + cv4 * B_k + 1.0
+    sup = cv5 * B_p + cv6 * B_f + cv7
+    inter = sup + (main - sup) / 0.35 * (1.5 - N)
+    N_S = subcritical_limit(line_load_n_mm)
+    return np.where(N <= N_S, sub, np.where(N <= 1.15, main, np.where(N < 1.5, inter, sup)))
+
+
+def _speed_capped(y, v, cap_5_10, cap_10):
+    """Caps of the running-in allowances by pitch-line speed: none up to 5 m/s, ``cap_5_10`` to 10 m/s, ``cap_10``
+    above (ISO 6336-1:2006 eq. (66)-(71) and (83)-(88))."""
+    v = np.asarray(v, dtype=float)
+    cap = np.where(v <= 5.0, np.inf, np.where(v <= 10.0, cap_5_10, cap_10))
+    return np.minimum(y, cap)
+
+
+def running_in_alpha(f_pb_um, sigma_Hlim_mpa, kind, v_m_s):
+    """y_α (µm), the running-in allowance for a base pitch deviation f_pb (ISO 6336-1:2006 8.3.5 with
+    Cor.1:2008): St, V, GGG(perl), GTS: y_α = (160/σ_Hlim)·f_pb, ≤ 12 800/σ_Hlim for 5 < v ≤ 10 m/s and ≤ 6 400/σ_Hlim
+    above; GG, GGG(ferr): y_α = 0.275 f_pb, ≤ 22 and ≤ 11 µm; Eh, IF, NT, NV: y_α = 0.075 f_pb ≤ 3 µm. For a pair of
+    different materials use the mean of the two gears' values.
+
+    >>> float(running_in_alpha(10.0, 800.0, "V", 3.0)), float(running_in_alpha(10.0, 1500.0, "Eh", 3.0))
+    (2.0, 0.75)
+    """
+    f = np.asarray(f_pb_um, dtype=float)
+    if kind in _SURFACE_HARDENED:
+        return np.minimum(0.075 * f, 3.0)
+    if kind in _GREY:
+        return _speed_capped(0.275 * f, v_m_s, 22.0, 11.0)
+    s = np.asarray(sigma_Hlim_mpa, dtype=float)
+    return _speed_capped(160.0 / s * f, v_m_s, 12_800.0 / s, 6_400.0 / s)
+
+
+def running_in_beta(F_betax_um, sigma_Hlim_mpa, kind, v_m_s):
+    """y_β (µm), the running-in allowance for the initial equivalent misalignment F_βx (ISO 6336-1:2006 7.6.3
+    with Cor.1:2008): St, V, GGG(perl), GTS: y_β = (320/σ_Hlim)·F_βx, ≤ 25 600/σ_Hlim for 5 < v ≤ 10 m/s and
+    ≤ 12 800/σ_Hlim above; GG, GGG(ferr): y_β = 0.55 F_βx, ≤ 45 and ≤ 22 µm; Eh, IF, NT, NV: y_β = 0.15 F_βx ≤ 6 µm.
+
+    >>> float(running_in_beta(20.0, 800.0, "V", 3.0)), float(running_in_beta(20.0, 1500.0, "Eh", 3.0))
+    (8.0, 3.0)
+    """
+    F = np.asarray(F_betax_um, dtype=float)
+    if kind in _SURFACE_HARDENED:
+        return np.minimum(0.15 * F, 6.0)
+    if kind in _GREY:
+        return _speed_capped(0.55 * F, v_m_s, 45.0, 22.0)
+    s = np.asarray(sigma_Hlim_mpa, dtype=float)
+    return _speed_capped(320.0 / s * F, v_m_s, 25_600.0 / s, 12_800.0 / s)
+
+
+def tip_relief_running_in(sigma_Hlim_mpa):
+    """C_ay = (1/18)(σ_Hlim/97 − 18.45)² + 1.5 (µm), the tip relief equivalent of running-in, used for C_a
+    when no tip relief is given (ISO 6336-1:2006 Annex B, eq. (B.1)); for two materials the mean.
+
+    >>> round(float(tip_relief_running_in(1500.0)), 3)
+    1.995
+    """
+    return (np.asarray(sigma_Hlim_mpa, dtype=float) / 97.0 - 18.45) ** 2 / 18.0 + 1.5
+
+
+def shaft_misalignment(line_load_n_mm, b_mm, d1_mm, K_prime=0.48, l_mm=None, s_mm=0.0, d_sh_mm=None):
+    """f_sh = (F_m/b)·0.023·[|1 + K′ l s/d1²·(d1/d_sh)⁴ − 0.3| + 0.3]·(b/d1)² (µm), the mesh misalignment
+    from the pinion shaft's bending and torsion (ISO 6336-1:2006 7.6.2.2, eq. (44), no helix modification).
+    ``line_load_n_mm`` is F_m/b = K_A K_v F_t/b. The defaults (s = 0: the pinion centred between its bearings)
+    give f_sh = 0.023 (F_m/b)(b/d1)².
+
+    >>> round(float(shaft_misalignment(1277.3, 100.0, 141.33)), 3)
+    14.708
+    """
+    w = np.asarray(line_load_n_mm, dtype=float)
+    d1 = np.asarray(d1_mm, dtype=float)
+    d_sh = d1 if d_sh_mm is None else d_sh_mm
+    l = 0.0 if l_mm is None else l_mm
+    gamma = np.abs(1.0 + K_prime * l * s_mm / d1 ** 2 * (d1 / d_sh) ** 4 - 0.3) + 0.3
+    return w * 0.023 * gamma * (np.asarray(b_mm) / d1) ** 2
+
+
+def helix_misalignment(f_sh_um, f_ma_um, line_load_n_mm, F_beta_um):
+    """F_βx = 1.33 f_sh + f_ma (µm), at least F_βx,min = max(0.005 F_m/b, 0.5 F_β) (ISO 6336-1:2006 7.6.2.1,
+    eq. (42), (43) with Cor.1:2008; no helix modification).
+
+    >>> float(helix_misalignment(10.0, 5.0, 1000.0, 10.0))
+    18.3
+    """
+    raw = 1.33 * np.asarray(f_sh_um, dtype=float) + f_ma_um
+    return np.maximum(raw, np.maximum(0.005 * np.asarray(line_load_n_mm), 0.5 * np.asarray(F_beta_um)))
+
+
+def face_load_factor_H(F_betay_um, c_gamma_beta, line_load_n_mm):
+    """K_Hβ = 1 + c_γβ F_βy/(2 F_m/b) when that is ≤ 2, else √(2 c_γβ F_βy/(F_m/b)) (ISO 6336-1:2019 eq. (40),
+    (41)); F_m/b = K_A K_v F_t/b.
+
+    >>> round(float(face_load_factor_H(15.0, 14.845, 1277.3)), 4)
+    1.0872
+    """
+    r = np.asarray(c_gamma_beta) * np.asarray(F_betay_um, dtype=float) / np.asarray(line_load_n_mm)
+    return np.where(r <= 2.0, 1.0 + r / 2.0, np.sqrt(2.0 * np.maximum(r, 2.0)))
+
+
+def face_load_exponent(b_over_h):
+    """N_F = (b/h)²/(1 + b/h + (b/h)²) with b/h not below 3 (ISO 6336-1:2019 eq. (56), (57)); b/h is the
+    smaller of the two gears' ratios.
+
+    >>> round(float(face_load_exponent(100 / 19.2)), 4)
+    0.8138
+    """
+    r = np.maximum(np.asarray(b_over_h, dtype=float), 3.0)
+    return r * r / (1.0 + r + r * r)
+
+
+def face_load_factor_F(K_Hbeta, N_F):
+    """K_Fβ = K_Hβ^N_F (ISO 6336-1:2019 eq. (55)).
+
+    >>> round(float(face_load_factor_F(1.16, face_load_exponent(5.148))), 4)   # ISO/TR 6336-30 ex. 1: 1.12803
+    1.128
+    """
+    return np.asarray(K_Hbeta, dtype=float) ** N_F
+
+
+def transverse_load_factor(eps_gamma, c_gamma_alpha, f_pb_eff_um, line_load_H_n_mm):
+    """K_Hα = K_Fα by method B (ISO 6336-1:2019 eq. (61), (62)): for ε_γ ≤ 2,
+    (ε_γ/2)(0.9 + 0.4 c_γα (f_pb − y_α)/(F_tH/b)); for ε_γ > 2,
+    0.9 + 0.4 √(2(ε_γ − 1)/ε_γ)·c_γα (f_pb − y_α)/(F_tH/b); F_tH/b = K_A K_v K_Hβ F_t/b. Not yet limited
+    (see :func:`transverse_load_limits`).
+
+    >>> round(float(transverse_load_factor(1.55, 17.46, 7.0, 1500.0)), 4)
+    0.7228
+    """
+    e = np.asarray(eps_gamma, dtype=float)
+    load = np.asarray(c_gamma_alpha) * np.maximum(np.asarray(f_pb_eff_um, dtype=float), 0.0) / line_load_H_n_mm
+    low = e / 2.0 * (0.9 + 0.4 * load)
+    high = 0.9 + 0.4 * np.sqrt(2.0 * (np.maximum(e, 1.0) - 1.0) / e) * load
+    return np.where(e <= 2.0, low, high)
+
+
+def transverse_load_limits(eps_gamma, eps_alpha, Z_eps):
+    """Upper limits of K_Hα = ε_γ/(ε_α Z_ε²) and of K_Fα = ε_γ/(0.25 ε_α + 0.75); both are at least 1
+    (ISO 6336-1:2019 eq. (63), (64), (65)).
+
+    >>> [round(float(v), 4) for v in transverse_load_limits(1.55, 1.55, 0.9)]
+    [1.2346, 1.3626]
+    """
+    e_g = np.asarray(eps_gamma, dtype=float)
+    return e_g / (np.asarray(eps_alpha) * np.asarray(Z_eps) ** 2), e_g / (0.25 * np.asarray(eps_alpha) + 0.75)

@@ -1,0 +1,264 @@
+"""Tooth-root form and stress-correction factors of ISO 6336-3 (methods B and C), vectorised.
+
+Method B (ISO 6336-3:2019, clause 6.2 form factor Y_F, clause 7.2 stress-correction factor Y_S; the same
+formulas as the 2006 edition) loads the tooth at the outer point of single pair tooth contact. Method C
+(ISO 6336-3:1996 method C, DIN 3990-3:1987 method C) loads it at the tip: Y_Fa, Y_Sa, to be used with the
+contact ratio factor Y_ε = 0.25 + 0.75/ε_αn and never with method B's Y_F, Y_S.
+
+Everything is dimensionless, in units of the normal module m_n, and computed for the virtual spur gear of
+the normal section (z_n = z/(cos²β_b cos β)).
+
+External gears: the critical section is where the 30° tangent touches the fillet that the basic rack's
+tip rounding (radius ρ_fP) generates; its position follows from the standard's equation for θ (radians),
+solved here by Newton's method from the standard's start θ = π/6. Internal gears: the standard does not
+feed a negative virtual tooth count into that iteration; it treats the internal gear's tooth as the tooth
+of its basic rack (z_n → ∞): the critical section is where the 60° tangent touches the fillet of the rack
+tooth, the fillet radius is the tool's ρ_fP, and the load acts at the basic rack's pressure angle
+(α_Fen = α_n). See :func:`root_form_factors` and docs/strength_root.md.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...errors import GearDesignError
+from ...validate import (broadcast_inputs, one_number, require_bool, require_choice, require_finite,
+                         require_int, require_positive, require_range)
+
+__all__ = ["root_form_factors", "stress_correction_factor", "METHODS", "Q_S_RANGE", "Z_RANGE",
+           "EPS_ALPHA_RANGE", "BETA_RANGE_DEG", "ALPHA_N_RANGE_DEG"]
+
+METHODS = ("B", "C")
+# ISO 6336-3:2019 clause 7.2: the Y_S formula is stated for 1 <= q_s < 8.
+Q_S_RANGE = (1.0, 8.0)
+Z_RANGE = (5, 100_000)                 # tooth counts accepted (a ring's count is positive here)
+EPS_ALPHA_RANGE = (1.0, 3.0)           # transverse contact ratio of the pair
+BETA_RANGE_DEG = (-45.0, 45.0)         # the hand does not matter: |β| is used
+ALPHA_N_RANGE_DEG = (10.0, 35.0)
+X_RANGE = (-3.0, 3.0)
+HFP_RANGE = (0.5, 2.5)                 # basic rack dedendum h_fP*/m_n
+RHOFP_RANGE = (0.0, 1.0)               # basic rack root radius ρ_fP*/m_n
+SPR_RANGE = (0.0, 0.5)                 # protuberance residual s_pr*/m_n
+_NEWTON_STEPS = 40
+
+
+def stress_correction_factor(s_Fn, h_Fe, rho_F):
+    """Y_S = (1.2 + 0.13 L) q_s^(1/(1.21 + 2.3/L)), L = s_Fn/h_Fe, q_s = s_Fn/(2 ρ_F).
+
+    ISO 6336-3:2019 clause 7.2 (method B; valid for 1 <= q_s < 8). With the bending arm h_Fa of the
+    tip load it gives method C's Y_Sa (ISO 6336-3:1996, DIN 3990-3 method C). No validation: the
+    caller passes checked lengths (any common unit).
+
+    >>> round(float(stress_correction_factor(2.0, 1.0, 0.5)), 4)    # L = 2, q_s = 2: 1.46·2^(1/2.36)
+    1.9584
+    """
+    L = np.asarray(s_Fn) / np.asarray(h_Fe)
+    q_s = np.asarray(s_Fn) / (2.0 * np.asarray(rho_F))
+    return (1.2 + 0.13 * L) * q_s ** (1.0 / (1.21 + 2.3 / L))
+
+
+def _inv(a):
+    return np.tan(a) - a
+
+
+def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star,
+                  internal, method):
+    """The validated inputs, broadcast: arrays of float."""
+    method = require_choice("method", method, METHODS)
+    internal = require_bool("internal", internal)
+    z = require_int("z", z, *Z_RANGE).astype(float)
+    x = require_range("x", x, *X_RANGE)
+    da = require_positive("da_over_mn", da_over_mn)
+    eps = require_range("eps_alpha", eps_alpha, *EPS_ALPHA_RANGE)
+    beta = require_range("beta_deg", beta_deg, *BETA_RANGE_DEG, unit="deg")
+    alpha_n = one_number("alpha_n_deg", require_range("alpha_n_deg", alpha_n_deg, *ALPHA_N_RANGE_DEG,
+                                                      unit="deg"))
+    hfp = one_number("hfp_star", require_range("hfp_star", hfp_star, *HFP_RANGE))
+    rho = one_number("rhofp_star", require_range("rhofp_star", rhofp_star, *RHOFP_RANGE))
+    spr = one_number("spr_star", require_range("spr_star", spr_star, *SPR_RANGE))
+    z, x, da, eps, beta = broadcast_inputs(z=z, x=x, da_over_mn=da, eps_alpha=eps, beta_deg=beta)
+    return z, x, da, eps, np.abs(beta), math.radians(alpha_n), hfp, rho, spr, internal, method
+
+
+def _rack_fillet_centre(alpha_n, hfp, rho, spr):
+    """E/m_n: distance of the rack's fillet centre ... as ISO 6336-3:2019 clause 6.2 defines it:
+    E = π m_n/4 − h_fP tan α_n + s_pr/cos α_n − (1 − sin α_n) ρ_fP/cos α_n."""
+    ca, sa = math.cos(alpha_n), math.sin(alpha_n)
+    E = math.pi / 4.0 - hfp * math.tan(alpha_n) + spr / ca - (1.0 - sa) * rho / ca
+    if E < -1e-12:
+        raise GearDesignError(
+            f"rhofp_star must be <= {(math.pi / 4 - hfp * math.tan(alpha_n) + spr / ca) * ca / (1 - sa):.4g} "
+            f"for hfp_star={hfp:g}, spr_star={spr:g}, alpha_n_deg={math.degrees(alpha_n):g} (the root "
+            f"rounding must fit on the basic rack's tip), got {rho!r}")
+    return max(E, 0.0)
+
+
+def _first(values, bad) -> str:
+    """The first value where ``bad`` holds, for an error message."""
+    values, bad = np.broadcast_arrays(np.asarray(values, dtype=float), np.asarray(bad))
+    return repr(values[tuple(np.argwhere(bad)[0])].item()) if values.ndim else repr(values.item())
+
+
+def _theta(G, H, z_n, z, x):
+    """Root of θ = (2G/z_n) tan θ − H (radians; ISO 6336-3:2019 clause 6.2), Newton from θ = π/6.
+
+    The standard's fixed-point iteration converges to the root where (2G/z_n)/cos²θ < 1, the root
+    Newton finds here; where there is none (a shift so large that G = ρ_fP* − h_fP* + x approaches
+    z_n cos²θ/2) the design is refused."""
+    k = 2.0 * G / z_n
+    th = np.full(np.shape(k), math.pi / 6.0)
+    for _ in range(_NEWTON_STEPS):
+        c = np.cos(th)
+        slope = np.maximum(1.0 - k / (c * c), 0.05)    # > 1 wherever G < 0, the usual case
+        step = (th - k * np.tan(th) + H) / slope
+        th = np.clip(th - step, -1.2, 1.2)
+        if np.all(np.abs(step) <= 1e-15):
+            break
+    c = np.cos(th)
+    bad = ~((np.abs(th - k * np.tan(th) + H) <= 1e-12) & (1.0 - k / (c * c) > 0.0))
+    if bad.any():
+        raise GearDesignError(
+            "x must leave the 30-degree tangent on the generated fillet (the theta equation of "
+            "ISO 6336-3 clause 6.2 needs rho_fP* - h_fP* + x < z_n cos^2(theta)/2), got "
+            f"x={_first(x, bad)} with z={_first(z, bad)}")
+    return th
+
+
+def _load_point(z_n, da_n, alpha_n, eps_n, internal, method):
+    """d_en/m_n (method B, outer point of single pair contact) or d_an/m_n (method C, the tip) of the
+    virtual gear; ISO 6336-3:2019 clause 6.2: d_en = 2 √{[√((d_an/2)² − (d_bn/2)²) ∓ π m_n cos α_n
+    (ε_αn − 1)]² + (d_bn/2)²} (− for an external gear; + for an internal one, whose point of single
+    pair contact lies outward of its tip)."""
+    d_bn = z_n * math.cos(alpha_n)
+    if method == "C":
+        return da_n
+    rho_a = np.sqrt((da_n - d_bn) * (da_n + d_bn)) / 2.0
+    p_bn = math.pi * math.cos(alpha_n)
+    rho_e = rho_a + p_bn * (eps_n - 1.0) if internal else rho_a - p_bn * (eps_n - 1.0)
+    bad = rho_e <= 0.0
+    if np.any(bad):
+        raise GearDesignError(
+            "eps_alpha must leave the outer point of single pair contact above the base circle "
+            f"(eps_alpha_n - 1 < tip roll length / p_bn), got eps_alpha_n={_first(eps_n, bad)}")
+    return 2.0 * np.sqrt(rho_e * rho_e + d_bn * d_bn / 4.0)
+
+
+def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho):
+    """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) of an external gear: ISO 6336-3:2019 clause 6.2,
+    G = ρ_fP/m_n − h_fP/m_n + x, H = 2/z_n (π/2 − E/m_n) − π/3, θ = (2G/z_n) tan θ − H,
+    s_Fn/m_n = z_n sin(π/3 − θ) + √3 (G/cos θ − ρ_fP/m_n),
+    ρ_F/m_n = ρ_fP/m_n + 2G²/(cos θ (z_n cos²θ − 2G)),
+    α_e = arccos(d_bn/d_e), γ_e = (π/2 + 2x tan α_n)/z_n + inv α_n − inv α_e, α_Fen = α_e − γ_e,
+    h_Fe/m_n = ½[(cos γ_e − sin γ_e tan α_Fen) d_e/m_n − z_n cos(π/3 − θ) − G/cos θ + ρ_fP/m_n]."""
+    G = rho - hfp + x
+    H = 2.0 / z_n * (math.pi / 2.0 - E) - math.pi / 3.0
+    th = _theta(G, H, z_n, z_n, x)
+    c = np.cos(th)
+    s_Fn = z_n * np.sin(math.pi / 3.0 - th) + math.sqrt(3.0) * (G / c - rho)
+    rho_F = rho + 2.0 * G * G / (c * (z_n * c * c - 2.0 * G))
+    alpha_e = np.arccos(z_n * math.cos(alpha_n) / d_e)
+    gamma_e = (math.pi / 2.0 + 2.0 * x * math.tan(alpha_n)) / z_n + _inv(alpha_n) - _inv(alpha_e)
+    alpha_F = alpha_e - gamma_e
+    h_Fe = 0.5 * ((np.cos(gamma_e) - np.sin(gamma_e) * np.tan(alpha_F)) * d_e
+                  - z_n * np.cos(math.pi / 3.0 - th) - G / c + rho)
+    return s_Fn, rho_F, h_Fe, alpha_F, th
+
+
+# The internal gear's critical section: the tangent at 60° to the tooth centre line (30° external).
+_TANGENT_INTERNAL = math.pi / 3.0
+
+
+def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho):
+    """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) of an internal gear treated, as ISO 6336-3:2019
+    clause 6.2 does, as its basic rack (z_n → ∞) with the 60° tangent.
+
+    The ring's tooth is the rack tooth between two cutter teeth; the cutter's fillet centre lies
+    E/m_n from the cutter tooth's centre line, so π/2 − E/m_n from the ring tooth's, and h_fP − ρ_fP
+    below the datum line (x m_n outward of the reference circle in this project's sign). Where the
+    60° tangent touches that circle: s_Fn = π − 2E/m_n − 2ρ_fP cos 60°, at depth h_fP − ρ_fP + ρ_fP sin 60°;
+    ρ_F = ρ_fP; the load acts along the rack's flank normal (α_Fen = α_n) at depth
+    h_e = d_e/2 − z_n/2 − x, where the half tooth is π/4 + h_e tan α_n, and meets the centre line
+    (π/4 + h_e tan α_n) tan α_n deeper: h_Fe is the rest of the way to the chord. θ is reported as
+    the limit of the external equation for z_n → ∞ with this tangent, π/2 − 60°."""
+    t = math.tan(alpha_n)
+    s_Fn = np.full(np.shape(z_n), math.pi - 2.0 * E - 2.0 * rho * math.cos(_TANGENT_INTERNAL))
+    depth_chord = hfp - rho + rho * math.sin(_TANGENT_INTERNAL)
+    h_e = (d_e - z_n) / 2.0 - x
+    h_Fe = depth_chord - h_e - (math.pi / 4.0 + h_e * t) * t
+    shape = np.shape(h_Fe)
+    return (np.broadcast_to(s_Fn, shape).copy(), np.full(shape, rho), h_Fe, np.full(shape, alpha_n),
+            np.full(shape, math.pi / 2.0 - _TANGENT_INTERNAL))
+
+
+def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=20.0, hfp_star=1.25,
+                      rhofp_star=0.38, spr_star=0.0, internal=False, method="B") -> dict:
+    """ISO 6336-3 tooth form factor and stress-correction factor of one gear, over arrays.
+
+    Parameters (broadcast together; lengths in units of the normal module m_n)
+    ----------
+    z : the gear's tooth count, a whole number in [5, 100000] (a ring's count positive).
+    x : its profile shift coefficient. For a ring (``internal=True``) this project's sign (GOST 19274):
+        positive x moves the ring's flanks outward (thinner teeth, larger tip and root diameters);
+        ISO 21771 writes the same ring with x_ISO = −x (and z_ISO = −z).
+    da_over_mn : actual tip diameter / m_n (after any tip shortening; a ring's inner tip diameter).
+    eps_alpha : the pair's transverse contact ratio ε_α in [1, 3]; ε_αn = ε_α/cos²β_b.
+    beta_deg : helix angle (|β| is used), alpha_n_deg : normal pressure angle of the basic rack.
+    hfp_star, rhofp_star, spr_star : the generating basic rack's dedendum h_fP/m_n (h_a* + c* of
+        :class:`~geardesign.gears.rack.BasicRack`), its root radius ρ_fP/m_n (``rho_f``) and the
+        protuberance residual s_pr/m_n (0 without protuberance).
+    internal : True for a ring gear (rack treatment with the 60° tangent, see the module docstring).
+    method : "B" (load at the outer point of single pair contact, ISO 6336-3:2019: Y_F, Y_S) or "C"
+        (load at the tip, ISO 6336-3:1996 / DIN 3990-3 method C: Y_Fa, Y_Sa, to be used with Y_ε).
+
+    Returns
+    -------
+    dict of float arrays: "Y_F", "Y_S" (method B) or "Y_Fa", "Y_Sa" (method C); "s_Fn" root chord,
+    "h_Fe" bending arm (h_Fa for method C), "rho_F" fillet radius at the critical section, "d_en" the
+    load point's diameter (d_an for method C), all /m_n of the virtual gear; "alpha_Fen_rad", "theta_rad",
+    "q_s" = s_Fn/(2ρ_F), "z_n", "eps_alpha_n", and "in_range": True where 1 <= q_s < 8, the range
+    ISO 6336-3 states for the Y_S formula. Outside it the formula's value is still returned (the
+    standard gives no other) and in_range is False: the caller decides.
+
+    Refused (GearDesignError naming the input): values outside the ranges above, a tip at or below the
+    base circle, a contact ratio that puts the load point below the base circle, a root radius that does
+    not fit on the rack tip, a shift with no 30° tangent on the fillet, and ρ_fP = 0 for a ring.
+
+    A standard 20-tooth spur gear, its tips uncut, in a pair with ε_α = 1.557:
+
+    >>> r = root_form_factors(20, 0.0, 22.0, eps_alpha=1.557)
+    >>> round(float(r["Y_F"]), 3), round(float(r["Y_S"]), 3), bool(r["in_range"])
+    (1.712, 1.776, True)
+    >>> c = root_form_factors(20, 0.0, 22.0, eps_alpha=1.557, method="C")
+    >>> round(float(c["Y_Fa"]), 2), round(float(c["Y_Sa"]), 2)
+    (2.8, 1.55)
+    """
+    (z, x, da, eps, beta, alpha_n, hfp, rho, spr, internal,
+     method) = _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star,
+                             spr_star, internal, method)
+    if internal and rho <= 0.0:
+        raise GearDesignError("rhofp_star must be > 0 for an internal gear (its fillet radius is "
+                              f"rho_fP itself), got {rho!r}")
+    E = _rack_fillet_centre(alpha_n, hfp, rho, spr)
+    cos_beta = np.cos(np.radians(beta))
+    cos_bb2 = 1.0 - (np.sin(np.radians(beta)) * math.cos(alpha_n)) ** 2   # cos²β_b
+    z_n = z / (cos_bb2 * cos_beta)
+    eps_n = eps / cos_bb2
+    da_n = z_n + da - z / cos_beta               # d_an = d_n + d_a − d
+    bad = da_n <= z_n * math.cos(alpha_n)
+    if np.any(bad):
+        raise GearDesignError(
+            "da_over_mn must put the tip above the base circle (d_an > d_bn of the virtual gear), "
+            f"got {_first(da, bad)}")
+    d_e = _load_point(z_n, da_n, alpha_n, eps_n, internal, method)
+    section = _internal_section if internal else _external_section
+    s_Fn, rho_F, h_Fe, alpha_F, th = section(z_n, x, d_e, alpha_n, E, hfp, rho)
+    if np.any(bad := (s_Fn <= 0.0) | (h_Fe <= 0.0)):
+        raise GearDesignError(f"x gives no root section (s_Fn or h_Fe <= 0), got x={_first(x, bad)}")
+    Y_F = 6.0 * h_Fe * np.cos(alpha_F) / (s_Fn * s_Fn * math.cos(alpha_n))
+    Y_S = stress_correction_factor(s_Fn, h_Fe, rho_F)
+    q_s = s_Fn / (2.0 * rho_F)
+    names = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")
+    return {names[0]: Y_F, names[1]: Y_S, "s_Fn": s_Fn, "h_Fe": h_Fe, "rho_F": rho_F,
+            "alpha_Fen_rad": alpha_F, "q_s": q_s, "theta_rad": th, "z_n": z_n, "d_en": d_e,
+            "eps_alpha_n": eps_n, "in_range": (q_s >= Q_S_RANGE[0]) & (q_s < Q_S_RANGE[1])}
