@@ -3,7 +3,7 @@ from __future__ import annotations
 
 __all__ = ["OBJECTIVES", "STAGES_MAX", "COMBINATIONS_MAX", "CANDIDATES_MAX", "TOP_MAX", "TOTAL_RATIO_RANGE",
            "RATIO_TOL_RANGE", "SPEED_RANGE_RPM", "POWER_RANGE_KW", "TORQUE_RANGE_NM", "MARGIN_TOL", "SHIFT_CACHE",
-           "INFEASIBLE_SHOWN", "LOAD_BOUNDS_MAX"]
+           "INFEASIBLE_SHOWN", "LOAD_BOUNDS_MAX", "SIZING_TRIES"]
 
 OBJECTIVES = ("min_size", "min_mass", "max_margin")
 STAGES_MAX = 6                    # stages in one drive
@@ -19,3 +19,4 @@ MARGIN_TOL = 1e-9                 # the exact shift solver holds its checks to 1
 SHIFT_CACHE = 4096                # solved tooth pairs kept between calls (each ~2-6 ms to solve)
 INFEASIBLE_SHOWN = 5              # closest failing designs listed after the feasible ones
 LOAD_BOUNDS_MAX = 20_000          # (option, input flow) bounds of a stage sized by load; beyond, its load-free bound
+SIZING_TRIES = 8                  # sized candidates re-solved for their own shifts before a tooth pair is given up

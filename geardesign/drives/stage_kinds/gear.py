@@ -2,15 +2,16 @@
 as options, each solved for its shifts in the branch and bound (kept in a cache between calls),
 base circles as the bound below its cost; drawn as two meshing circles.
 
-Load-based sizing: a stage whose module is None has its module (and face width) chosen per design
-by a sizing function at the torque and speed flowing into it, ``set_sizing(fn)``::
+By load: a stage with a ``material`` gets the ISO 6336 strength checks at the torque and speed
+flowing into it (:mod:`.gear_strength`: ``contact_strength``, ``root_strength1``, ``root_strength2``);
+a stage whose module is None has its module (and face width, when not given) chosen per design
+from the ISO 54 series so that they hold. Another sizing rule can be installed, ``set_sizing(fn)``::
 
     fn(torque_nm, speed_rpm, z1, z2, *, modules, stage) -> [(m_mm, face_width_mm or None), ...]
 
 ``modules`` is the ISO 54 series (``catalogs/modules_iso54.csv``, both series) the module must be
 taken from; the candidates come smallest (preferred) first, and the stage takes the first whose
-geometric checks hold. No sizing function is installed by default: the toolkit's tooth-strength
-model is a separate piece (issue 26), so a stage with ``m=None`` is refused until one is.
+checks hold. A stage with ``m=None`` needs a material or such a function.
 """
 from __future__ import annotations
 
@@ -22,9 +23,10 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import one_number, require_range
-from ..limits import MARGIN_TOL, SHIFT_CACHE
+from ..limits import MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2
 from .base import StageKind
+from .gear_strength import strength_margins, strength_sizes
 
 __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution"]
 
@@ -115,19 +117,19 @@ class GearKind(StageKind):
         z1, z2 = stage.pairs(ratio_lo, ratio_hi)
         return dict(z1=z1, z2=z2, ratio=z2 / z1)
 
-    # -- load-based sizing
+    # -- by load
     def load_dependent(self, stage) -> bool:
-        return stage.m is None
+        return stage.m is None or stage.material is not None
 
     def sizes(self, stage, torque_nm: float, speed_rpm: float, z1: int, z2: int) -> list:
-        """The sizing function's (m, face width) candidates for one tooth pair at its load, checked."""
+        """The installed sizing function's (m, face width) candidates for one tooth pair at its load, checked."""
+        from ...gears.geometry import require_module
+
         fn = _SIZING[0]
         if fn is None:
             raise GearDesignError(f"gear stage '{stage.name}' has no module (m=None): its module is chosen by its "
-                                  f"load, which needs a sizing function (geardesign.drives.stage_kinds.gear."
-                                  f"set_sizing); none is installed")
-        from ...gears.geometry import require_module
-
+                                  f"load, which needs a material (the ISO 6336 sizing) or a sizing function "
+                                  f"(geardesign.drives.stage_kinds.gear.set_sizing); none is installed")
         series = _series()
         out = []
         for m, b in fn(float(torque_nm), float(speed_rpm), int(z1), int(z2), modules=series, stage=stage):
@@ -143,20 +145,60 @@ class GearKind(StageKind):
                                   f"{z1}/{z2} at {torque_nm:.6g} N·m, {speed_rpm:.6g} rpm")
         return out
 
+    @staticmethod
+    def _with_strength(stage, sol: dict, z1: int, z2: int, flow) -> dict:
+        """``sol`` with the stage's strength checks at ``flow`` (a stage of known module with a material)."""
+        if stage.material is None or "x1" not in sol:
+            return sol
+        sm = strength_margins(stage, stage.m, stage.width_mm, z1, z2, sol["x1"], sol["x2"], flow.torque_in_nm,
+                              flow.n_in_rpm)
+        sm = {k: float(v) for k, v in sm.items()}
+        out = dict(sol, margins={**sol["margins"], **sm})
+        failing = [k for k, v in sm.items() if not v >= -MARGIN_TOL]
+        if failing:
+            why = "fails " + ", ".join(failing)
+            out.update(feasible=False, reason=f"{sol['reason']}; {why}" if sol["reason"] else why)
+        return out
+
+    def _candidate(self, stage, m, b, z1, z2, objective, flow) -> dict:
+        st = replace(stage, m=m, face_width_mm=b)
+        return dict(self._with_strength(st, gear_solution(st, z1, z2, objective), z1, z2, flow), m=m, face_width_mm=b)
+
     def _sized(self, stage, z1, z2, objective, flow) -> dict:
-        """The first of the sizing function's candidates whose geometric checks hold (else the last)."""
+        """The first sized candidate whose checks hold (else the last tried, or the closest)."""
+        if _SIZING[0] is None and stage.material is not None:
+            return self._strength_sized(stage, z1, z2, objective, flow)
         for m, b in self.sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2):
-            sol = dict(gear_solution(replace(stage, m=m, face_width_mm=b), z1, z2, objective), m=m, face_width_mm=b)
+            sol = self._candidate(stage, m, b, z1, z2, objective, flow)
             if sol["feasible"]:
                 break
         return sol
+
+    def _strength_sized(self, stage, z1, z2, objective, flow) -> dict:
+        """Module and width by the strength checks: shifts of the pair at m = 1 (the geometric checks of a
+        spur pair do not depend on the module), every series module × width checked at once, then the
+        smallest candidates re-solved at their own module until one holds every check."""
+        ref = gear_solution(replace(stage, m=1.0), z1, z2, objective)
+        if "x1" not in ref:
+            return dict(ref, m=math.nan, face_width_mm=None)
+        cands, closest = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
+                                        _series(), MARGIN_TOL)
+        for m, b in cands[:SIZING_TRIES]:
+            sol = self._candidate(stage, m, b, z1, z2, objective, flow)
+            if sol["feasible"]:
+                return sol
+        if cands:
+            return sol
+        sol = self._candidate(stage, closest[0], closest[1], z1, z2, objective, flow)
+        return dict(sol, reason=f"no module of the ISO 54 series carries the load (closest m = {closest[0]:g} mm, "
+                                f"b = {closest[1]:g} mm: {sol['reason']})")
 
     # -- the branch and bound
     def solve(self, stage, option: dict, objective: str, flow=None) -> dict:
         z1, z2 = int(option["z1"]), int(option["z2"])
         if stage.m is None:
             return self._sized(stage, z1, z2, objective, flow)
-        return gear_solution(stage, z1, z2, objective)
+        return self._with_strength(stage, gear_solution(stage, z1, z2, objective), z1, z2, flow)
 
     def solve_count(self) -> int:
         return shift_solution.cache_info().misses
@@ -184,6 +226,8 @@ class GearKind(StageKind):
     def bound_at(self, stage, option: dict, flow) -> tuple:
         """A stage sized by load at one flow: base circles of the smallest module the sizing function
         offers, blanks of its narrowest face width (the solve takes one of those candidates)."""
+        if stage.m is not None or _SIZING[0] is None:   # the strength sizing's candidates cost a solve
+            return super().bound_at(stage, option, flow)
         z1, z2 = int(option["z1"]), int(option["z2"])
         cands = self.sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2)
         m = min(c[0] for c in cands)
@@ -200,6 +244,7 @@ class GearKind(StageKind):
                f"{stage.name}.a_w_mm": sol["a_w"] if ok else np.nan}
         if stage.m is None:
             out[f"{stage.name}.m"] = sol["m"] if ok else np.nan
+            out[f"{stage.name}.face_width_mm"] = self._width(stage, sol) if ok else np.nan
         return out
 
     def fix(self, stage, option: dict, info, c: int, objective: str, flow=None):
@@ -211,13 +256,16 @@ class GearKind(StageKind):
 
     # -- analyse
     def analyse(self, stage, flow, objective: str) -> dict:
-        """A gear stage at its tooth counts (free shifts solved; a free module sized at the flow):
-        its checks, size and mass."""
+        """A gear stage at its tooth counts (free shifts solved; a free module sized at the flow): its
+        checks (with a material, its strength at the flow too), size and mass."""
         from ...gears.pair import GearPair
 
         st = stage
         if st.m is None:
             sol = self._sized(st, st.z1, st.z2, objective, flow)
+            if not math.isfinite(sol["m"]):
+                raise GearDesignError(f"stage '{st.name}': z1/z2 = {st.z1}/{st.z2} has no feasible shifts "
+                                      f"({sol['reason']})")
             st = replace(st, m=sol["m"], face_width_mm=sol["face_width_mm"])
         sol = gear_solution(st, st.z1, st.z2, objective)
         if not sol["feasible"] and "x1" not in sol:
@@ -225,12 +273,27 @@ class GearKind(StageKind):
         pair = GearPair(st.m, st.z1, st.z2, sol["x1"], sol["x2"], beta_deg=st.beta_deg, face_width=st.face_width_mm)
         table = pair.checks(**{"jamming": False, **(st.checks or {})})
         geo = pair.geometry()
-        return dict(stage=st, pair=pair, checks=table, margins=dict(zip(table["check"], table["margin"].astype(float))),
-                    size=float(stage_area_mm2(geo.a_w, geo.da1, geo.da2)),
-                    mass=float(disc_mass_kg(geo.da1, st.width_mm) + disc_mass_kg(geo.da2, st.width_mm)),
-                    summary=dict(name=st.name, kind="gear", m=st.m, z1=st.z1, z2=st.z2, x1=pair.x1, x2=pair.x2,
-                                 a_w_mm=geo.a_w, da1_mm=geo.da1, da2_mm=geo.da2, ratio=st.z2 / st.z1,
-                                 efficiency=st.efficiency))
+        out = dict(stage=st, pair=pair, checks=table, margins=dict(zip(table["check"], table["margin"].astype(float))),
+                   size=float(stage_area_mm2(geo.a_w, geo.da1, geo.da2)),
+                   mass=float(disc_mass_kg(geo.da1, st.width_mm) + disc_mass_kg(geo.da2, st.width_mm)),
+                   summary=dict(name=st.name, kind="gear", m=st.m, z1=st.z1, z2=st.z2, x1=pair.x1, x2=pair.x2,
+                                a_w_mm=geo.a_w, da1_mm=geo.da1, da2_mm=geo.da2, ratio=st.z2 / st.z1,
+                                efficiency=st.efficiency))
+        if st.material is not None:
+            self._analyse_strength(st, pair, flow, out)
+        return out
+
+    @staticmethod
+    def _analyse_strength(st, pair, flow, out: dict) -> None:
+        """The strength checks at the flow into ``out``'s margins, the StrengthResult (its factor table)
+        as ``out["strength"]`` and the face width in the summary."""
+        from ...gears.strength import Load, strength
+
+        sm = strength_margins(st, st.m, st.width_mm, st.z1, st.z2, pair.x1, pair.x2, flow.torque_in_nm, flow.n_in_rpm)
+        out["margins"].update({k: float(v) for k, v in sm.items()})
+        out["strength"] = strength(pair, Load(torque_nm=flow.torque_in_nm, n_rpm=flow.n_in_rpm), st.material,
+                                   face_width_mm=st.width_mm)
+        out["summary"]["face_width_mm"] = st.width_mm
 
     # -- scenes
     def scene_keys(self) -> dict:
