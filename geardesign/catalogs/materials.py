@@ -24,13 +24,13 @@ HARDNESS_SCALES = ("HBW", "HV")            # the scales the part-5 lines use
 _GROUP_FILE = "material_groups_iso6336.csv"
 _NAMED_FILE = "materials_iso6336.csv"
 _GROUP_FLOATS = ("A", "B", "hardness_min", "hardness_max")
-_NAMED_FLOATS = ("hardness", "E_mpa", "nu")
+_NAMED_FLOATS = ("hardness", "E_mpa", "nu", "yield_mpa")   # yield_mpa blank: not needed
 
 
 def _read(file: str, floats: tuple) -> pd.DataFrame:
     path = catalog_dir() / file
     try:
-        frame = pd.read_csv(path, dtype=str, keep_default_na=False)
+        frame = pd.read_csv(path, dtype=str, keep_default_na=False, na_values={"yield_mpa": [""]})
     except (OSError, pd.errors.ParserError) as exc:
         raise CatalogError(f"{file}: cannot read the bundled material table ({exc})") from None
     for col in floats:

@@ -16,7 +16,7 @@ def add_parser(subparsers):
         "drive", help="a drive from a scene's [drive] section: power flow, checks, keys, the optimal ratio split",
         description="Link the stages of a scene's [drive] section (motor, given units, gear pairs, chains, keyed "
                     "shafts): analyse the power flow, or with total_ratio optimise the ratio split and every free "
-                    "variable together (see docs/drive.md).")
+                    "variable together (see docs/drive_train.md).")
     p.add_argument("scene", help="a scene file (.toml) with a [drive] section")
     add_output_file(p, "--plot", "PNG", "the drive's diagram")
     add_json_flag(p)

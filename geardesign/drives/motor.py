@@ -1,6 +1,6 @@
 """Three-phase asynchronous motors from a catalog, and the choice of one for a drive.
 
-Three bundled tables (docs/drive.md says where each value comes from):
+Three bundled tables (docs/drive_train.md says where each value comes from):
 
 - ``motors_air`` (the default): the AIR series as the Russian course-design books tabulate it:
   rated power P (the IEC 60034 power steps 0.37 … 30 kW), synchronous speed n_s = 6000/poles rpm

@@ -113,11 +113,16 @@ class GearStage:
     :func:`~geardesign.shifts.optimize.optimize_shifts` for ``shift_objective``; None follows the
     drive's objective: ``max_margin`` for max_margin, else ``max_x_sum``, the contact-strength
     choice). ``checks`` are the pair's geometric checks as for optimize_shifts (a dict of limits).
-    The toolkit has no tooth-strength model yet, so the module is the designer's and the checks
-    are geometric. ``face_width_mm`` enters ε_β (helical) and the mass model (default 4πm).
+    ``face_width_mm`` enters ε_β (helical) and the mass model (default 4πm).
+
+    ``m=None`` leaves the module (and, with ``face_width_mm=None``, the face width) to be sized by
+    the load the stage carries: the search and ``Drive.analyse`` ask the sizing function installed
+    with :func:`geardesign.drives.stage_kinds.set_sizing` for modules of the ISO 54 series at each
+    design's torque and speed (``material`` is handed to it). None is installed by default (the
+    tooth-strength model is not part of this version), so such a stage is refused until one is.
     """
 
-    m: float
+    m: float | None = None
     z1: int | None = None
     z2: int | None = None
     x1: float | None = None
@@ -131,6 +136,7 @@ class GearStage:
     ratio_range: tuple = (1.0, 6.3)
     shift_objective: str | None = None
     name: str = "gear"
+    material: object = None
 
     kind = "gear"
 
@@ -138,7 +144,8 @@ class GearStage:
         from ..gears.geometry import require_module
         from ..gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
 
-        object.__setattr__(self, "m", one_number("m (module)", require_module(self.m)))
+        if self.m is not None:    # None: sized by the load (see the class docstring)
+            object.__setattr__(self, "m", one_number("m (module)", require_module(self.m)))
         object.__setattr__(self, "efficiency", _efficiency(self.efficiency))
         object.__setattr__(self, "name", _name(self.name, "gear"))
         object.__setattr__(self, "beta_deg", one_number("beta_deg", require_range("beta_deg", self.beta_deg,
@@ -162,7 +169,7 @@ class GearStage:
                                   f"eps_gamma_min), got {type(self.checks).__name__}")
         from ..gears.checks import resolve_checks
         resolve_checks(self.checks)    # unknown keys are refused here, not mid-search
-        if self.x1 is not None:
+        if self.x1 is not None and self.m is not None:
             self.fixed_pair()          # a fixed pair that cannot be built is refused here
         if self.shift_objective is not None:
             from ..shifts.objectives import OBJECTIVES
@@ -176,8 +183,13 @@ class GearStage:
 
     @property
     def width_mm(self) -> float:
-        """Face width of the mass model [mm]: the given one, else 4πm."""
-        return self.face_width_mm if self.face_width_mm is not None else FACE_WIDTH_PITCHES * math.pi * self.m
+        """Face width of the mass model [mm]: the given one, else 4πm (a stage sized by load has
+        none before it is sized)."""
+        if self.face_width_mm is not None:
+            return self.face_width_mm
+        if self.m is None:
+            raise GearDesignError(f"gear stage '{self.name}' has no module yet (m=None: sized by its load)")
+        return FACE_WIDTH_PITCHES * math.pi * self.m
 
     def checks_key(self) -> tuple:
         return tuple(sorted((self.checks or {}).items()))
@@ -237,7 +249,7 @@ class ChainStage:
     kind = "chain"
 
     def __post_init__(self):
-        from .chain.candidates import RATIO_RANGE, validate_inputs
+        from .chain.inputs import RATIO_RANGE, validate_inputs
 
         object.__setattr__(self, "efficiency", _efficiency(self.efficiency))
         object.__setattr__(self, "name", _name(self.name, "chain"))
@@ -249,7 +261,7 @@ class ChainStage:
                               self.center_distance_mm, self.objective, self.method, self.sag_factor, self.z2_max, 40.0)
         object.__setattr__(self, "_inputs", inp)
         if self.z2 is not None:
-            from .chain.candidates import Z1_RANGE
+            from .chain.inputs import Z1_RANGE
             require_count("z2", self.z2, Z1_RANGE[0], self.z2_max)
             if self.z1 is None:
                 raise GearDesignError("a fixed z2 needs a fixed z1 (the chain stage's ratio is z2/z1)")
@@ -261,7 +273,7 @@ class ChainStage:
     def table(self):
         """The validated chain catalog (read once per file version)."""
         from ..catalogs.tables import catalog_dir
-        from .chain.candidates import load_chains
+        from .chain.tables import load_chains
         return load_chains(self._inputs, catalog_dir())
 
     def rows(self) -> np.ndarray:

@@ -1,6 +1,7 @@
 """The scene's ``[drive]`` section: an input (``power_kw`` or ``output_torque_nm`` at ``n_in_rpm``, or a
-``[drive.motor]`` chosen from the catalog), ``[[drive.stage]]`` entries (``kind`` = "given", "gear" or
-"chain", with the keywords of gd.GivenStage / GearStage / ChainStage) and ``[[drive.shaft]]`` keyed hubs.
+``[drive.motor]`` chosen from the catalog), ``[[drive.stage]]`` entries (``kind`` = a registered stage
+kind: "given", "gear", "chain", with the keywords of gd.GivenStage / GearStage / ChainStage, or one
+added by :func:`geardesign.drives.stage_kinds.register`) and ``[[drive.shaft]]`` keyed hubs.
 With ``total_ratio`` the drive is optimised; without it, analysed as given::
 
     [drive]
@@ -23,7 +24,7 @@ With ``total_ratio`` the drive is optimised; without it, analysed as given::
 from __future__ import annotations
 
 from .markdown import md_table, pyplot
-from .schema import STAGE_KINDS, Where, drive_schema, type_name, validate_table
+from .schema import Where, drive_schema, stage_kinds, type_name, validate_table
 
 __all__ = ["load_drive", "build_drive", "run_drive"]
 
@@ -39,6 +40,7 @@ def load_drive(where: Where, scene_path, raw) -> dict:
     error of the library (a pair that cannot exist, an unknown chain) is reported before a run."""
     from pathlib import Path
 
+    from ..drives.stage_kinds import kind_named
     from ..errors import GearDesignError
 
     if not isinstance(raw, dict):
@@ -51,13 +53,10 @@ def load_drive(where: Where, scene_path, raw) -> dict:
     for i, t in enumerate(_tables(where, raw["stage"], "stage")):
         label = f"drive.stage #{i + 1}"
         kind = t.get("kind")
-        if kind not in STAGE_KINDS:
-            where.fail(label, "kind", f"expected one of {', '.join(repr(k) for k in STAGE_KINDS)}, got {kind!r}")
+        if kind not in stage_kinds():
+            where.fail(label, "kind", f"expected one of {', '.join(repr(k) for k in stage_kinds())}, got {kind!r}")
         spec = validate_table(where, label, t, drive_schema(kind))
-        if kind == "chain" and spec["catalog"].lower().endswith(".csv"):
-            csv = Path(scene_path).parent / spec["catalog"]
-            spec["catalog"] = str(csv)
-        stages.append(spec)
+        stages.append(kind_named(kind).scene_spec(spec, Path(scene_path).parent))
     shafts = [validate_table(where, f"drive.shaft #{i + 1}", t, drive_schema("shaft"))
               for i, t in enumerate(_tables(where, raw.get("shaft", []), "shaft"))] if "shaft" in raw else []
     section = dict(head, stages=stages, shafts=shafts)
@@ -69,24 +68,10 @@ def load_drive(where: Where, scene_path, raw) -> dict:
 
 
 def _stage(spec: dict):
-    from ..drives.stages import ChainStage, GearStage, GivenStage
+    """The stage of a validated [[drive.stage]] table, built by its kind."""
+    from ..drives.stage_kinds import kind_named
 
-    kw = {k: v for k, v in spec.items() if k != "kind"}
-    if spec["kind"] == "given":
-        return GivenStage(**kw)
-    if spec["kind"] == "gear":
-        kw["m"] = kw.pop("module")
-        kw["checks"] = dict(kw["checks"]) if kw.get("checks") else None
-        for k in ("z1_range", "ratio_range"):
-            if k in kw:
-                kw[k] = tuple(kw[k])
-        return GearStage(**kw)
-    if kw.get("conditions"):
-        kw["conditions"] = dict(kw["conditions"])
-    for k in ("strands", "ratio_range"):
-        if k in kw:
-            kw[k] = tuple(kw[k])
-    return ChainStage(**kw)
+    return kind_named(spec["kind"]).from_scene({k: v for k, v in spec.items() if k != "kind"})
 
 
 def build_drive(section: dict):

@@ -190,18 +190,28 @@ def _study_schema() -> dict:
             "tornado": _Key("bool", default=True), "step": _F(default=0.02, lo=0.0, hi=0.5, lo_open=True)}
 
 
-STAGE_KINDS = ("given", "gear", "chain")
+def stage_kinds() -> tuple:
+    """The stage kinds a ``[[drive.stage]]`` may name: every registered one."""
+    from ..drives.stage_kinds import kind_names
+    return kind_names()
+
+
+def _stage_key(spec):
+    """A scene key from a stage kind's neutral description (StageKind.scene_keys)."""
+    if "table" in spec:      # one of the scene's shared tables
+        shared = {"checks": _checks_schema}[spec["table"]]()
+        return {k: v for k, v in shared.items() if k not in spec.get("without", ())}
+    if isinstance(spec.get("kind"), str):
+        return _Key(**spec)
+    return {k: _stage_key(v) for k, v in spec.items()}
 
 
 def drive_schema(part: str = "") -> dict:
     """The keys of ``[drive]`` (part ""), ``[drive.motor]``, each stage kind and ``[[drive.shaft]]``
     (the [drive] section's tables nest stages and shafts; scene/drive.py loads and runs it)."""
-    from ..drives import chain as c
     from ..drives import drive as d
     from ..drives import motor as mo
-    from ..drives import stages as s
 
-    eff = dict(lo=s.EFFICIENCY_RANGE[0], hi=s.EFFICIENCY_RANGE[1], lo_open=True)
     if part == "":
         return {"power_kw": _F(lo=d.POWER_RANGE_KW[0], hi=d.POWER_RANGE_KW[1]),
                 "output_torque_nm": _F(lo=d.TORQUE_RANGE_NM[0], hi=d.TORQUE_RANGE_NM[1]),
@@ -214,41 +224,11 @@ def drive_schema(part: str = "") -> dict:
                           "speed_rpm": _F(required=True, lo=mo.SPEED_RANGE_RPM[0], hi=mo.SPEED_RANGE_RPM[1]),
                           "service_factor": _F(default=1.0, lo=mo.SERVICE_FACTOR_RANGE[0], hi=mo.SERVICE_FACTOR_RANGE[1]),
                           "catalog": _Key("choice", default=mo.MOTOR_CATALOGS[0], choices=mo.MOTOR_CATALOGS)}}
-    if part == "given":
-        return {"kind": _Key("choice", required=True, choices=STAGE_KINDS), "name": _Key("str"),
-                "ratio": _F(required=True, lo=s.GIVEN_RATIO_RANGE[0], hi=s.GIVEN_RATIO_RANGE[1]),
-                "efficiency": _F(required=True, **eff), "rated_output_torque_nm": _F(lo=0.0, lo_open=True)}
-    if part == "gear":
-        from ..gears.geometry import M_RANGE_MM, X_ABS_MAX
-        from ..gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
-        from ..shifts.objectives import OBJECTIVES
+    if part in stage_kinds():
+        from ..drives.stage_kinds import kind_named
 
-        return {"kind": _Key("choice", required=True, choices=STAGE_KINDS), "name": _Key("str"),
-                "module": _F(required=True, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
-                "z1": _I(lo=Z_MIN, hi=Z_MAX), "z2": _I(lo=Z_MIN, hi=Z_MAX),
-                "x1": _F(lo=-X_ABS_MAX, hi=X_ABS_MAX), "x2": _F(lo=-X_ABS_MAX, hi=X_ABS_MAX),
-                "efficiency": _F(default=0.98, **eff), "beta_deg": _F(default=0.0, lo=BETA_RANGE_DEG[0], hi=BETA_RANGE_DEG[1]),
-                "face_width_mm": _F(lo=FACE_WIDTH_RANGE_MM[0], hi=FACE_WIDTH_RANGE_MM[1], lo_open=True),
-                "z1_range": _Key("ints", lo=Z_MIN, hi=Z_MAX, length=2), "z2_max": _I(lo=Z_MIN, hi=Z_MAX),
-                "ratio_range": _Key("floats", lo=1.0, hi=100.0, length=2),
-                "shift_objective": _Key("choice", choices=tuple(OBJECTIVES)),
-                "checks": {key: v for key, v in _checks_schema().items() if key != "jamming"}}
-    if part == "chain":
-        return {"kind": _Key("choice", required=True, choices=STAGE_KINDS), "name": _Key("str"),
-                "catalog": _Key("str", default="gost13568"), "z1": _I(lo=c.Z1_RANGE[0], hi=c.Z1_RANGE[1]),
-                "z2": _I(lo=c.Z1_RANGE[0], hi=c.Z2_MAX_LIMIT), "designation": _Key("str"),
-                "strands": _Key("ints", lo=c.STRANDS_RANGE[0], hi=c.STRANDS_RANGE[1]),
-                "efficiency": _F(default=0.96, **eff), "k_e": _F(lo=c.K_E_RANGE[0], hi=c.K_E_RANGE[1]),
-                "allowable_pressure_mpa": _F(lo=0.0, lo_open=True),
-                "allowable_safety_factor": _F(lo=c.SAFETY_FACTOR_RANGE[0], hi=c.SAFETY_FACTOR_RANGE[1]),
-                "method": _Key("choice", default=c.METHODS[0], choices=c.METHODS),
-                "center_distance_mm": _F(lo=0.0, hi=c.CENTER_DISTANCE_MAX_MM, lo_open=True),
-                "sag_factor": _F(default=6.0, lo=c.SAG_FACTOR_RANGE[0], hi=c.SAG_FACTOR_RANGE[1]),
-                "z2_max": _I(default=120, lo=9, hi=c.Z2_MAX_LIMIT),
-                "ratio_range": _Key("floats", lo=c.RATIO_RANGE[0], hi=c.RATIO_RANGE[1], length=2),
-                "objective": _Key("choice", default=c.OBJECTIVES[0], choices=c.OBJECTIVES),
-                "conditions": {key: _Key("float_or_str", lo=c.FACTOR_RANGE[0], hi=c.FACTOR_RANGE[1], choices=())
-                               for key in c.FACTOR_NAMES}}
+        keys = {name: _stage_key(spec) for name, spec in kind_named(part).scene_keys().items()}
+        return {"kind": _Key("choice", required=True, choices=stage_kinds()), "name": _Key("str"), **keys}
     if part == "shaft":   # a [key] whose torque is the shaft's own, and the shaft it sits on
         keys = {name: spec for name, spec in section_schema("key").items() if name != "torque_nm"}
         return {"at": _I(required=True, lo=0, hi=d.STAGES_MAX), **keys}

@@ -14,9 +14,10 @@ working on numpy arrays. Every check is a signed dimensionless margin (>= 0 hold
 Units at the interface: torque N·m, power kW, speed rpm, lengths mm, forces N, pressure MPa.
 Inside, powers are in W and chain speeds in m/s.
 
-formulas (one function per formula) -> candidates (inputs, tables, candidates, margins) -> design.
+formulas (one function per formula) -> inputs (ranges, validation) -> tables (the catalogs as arrays)
+-> candidates (rows × teeth, their layout) -> checks (every margin) -> design.
 """
-from .candidates import (CENTER_DISTANCE_MAX_MM, CENTER_DISTANCE_PITCHES_MAX, FACTOR_NAMES, FACTOR_RANGE, K_E_RANGE,
+from .inputs import (CENTER_DISTANCE_MAX_MM, CENTER_DISTANCE_PITCHES_MAX, FACTOR_NAMES, FACTOR_RANGE, K_E_RANGE,
                          METHODS, N1_RANGE_RPM, OBJECTIVES, POWER_RANGE_KW, RATIO_RANGE, SAFETY_FACTOR_RANGE,
                          SAG_FACTOR_RANGE, STRANDS_RANGE, TORQUE_RANGE_NM, Z1_RANGE, Z2_MAX_LIMIT, Conditions)
 from .design import ChainDesign, design

@@ -8,7 +8,10 @@ import pandas as pd
 
 from ...catalogs.tables import catalog_dir
 from ...results import Result, plain
-from .candidates import FACTOR_NAMES, Candidates, Inputs, OBJECTIVE_KEYS, ReferenceTables, candidate_table, evaluate, load_chains, reference_tables, strand_index, validate_inputs
+from .candidates import Candidates, candidate_table
+from .checks import evaluate
+from .inputs import FACTOR_NAMES, OBJECTIVE_KEYS, Inputs, validate_inputs
+from .tables import ReferenceTables, load_chains, reference_tables, strand_index
 from .formulas import pitch_estimate_mm, recommended_z1
 
 

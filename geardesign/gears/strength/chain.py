@@ -52,7 +52,8 @@ class _Given:
         for name, value in factors.items():
             if name not in GIVEN_FACTORS:
                 raise GearDesignError(f"factors: unknown factor {name!r}; allowed: {', '.join(sorted(GIVEN_FACTORS))}")
-            lo, hi = (0.0, 1e4) if name[0] in "fFCc" else dflt.FACTOR_RANGE
+            # deviations and stiffness (µm, N/(mm·µm)) and Z_E (√MPa) are not dimensionless factors near 1
+            lo, hi = (0.0, 1e4) if name[0] in "fFCc" or name == "Z_E" else dflt.FACTOR_RANGE
             self.values[name] = require_range(f"factors[{name!r}]", value, lo, hi)
 
     def pick(self, name, compute):
@@ -73,6 +74,10 @@ def _material(value, name):
 
 def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening):
     """The geometry fields the chain needs, from pair_geometry (validated there), and the section constants."""
+    if np.size(x1) > 1 or np.size(x2) > 1:
+        # pair_geometry(fields=...) of one pair (m, z1, z2 numbers) over more than one block of shifts fills the
+        # pair-wide fields at the full size in each block and fails: give it m at the designs' shape instead
+        m = np.broadcast_to(np.asarray(m, dtype=float), np.broadcast_shapes(np.shape(m), np.shape(x1), np.shape(x2)))
     geo = pair_geometry(m, z1, z2, x1, x2, rack=rack, tip_shortening=tip_shortening, fields=_GEOMETRY,
                         beta_deg=beta_deg, internal=internal)
     fields = {k: getattr(geo, k) for k in _GEOMETRY}
@@ -235,7 +240,7 @@ def _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, ro
     grade = require_range("accuracy_grade", accuracy_grade, *acc.GRADE_RANGE)
     return (grade, require_range("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
             require_range("Rz_flank_um", Rz_flank_um, *dflt.RZ_RANGE_UM, unit="µm"),
-            require_range("Rz_root_um", Rz_root_um, *dflt.RZ_RANGE_UM, unit="µm"),
+            require_range("Rz_root_um", Rz_root_um, dflt.RZ_RANGE_UM[0], dflt.RZ_ROOT_MAX_UM, unit="µm"),
             one_number("K_gamma", require_range("K_gamma", K_gamma, *dflt.K_GAMMA_RANGE)),
             root_method if root_method in ("B", "C") else _bad_method(root_method))
 
@@ -251,7 +256,8 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
                   Rz_flank_um=dflt.RZ_FLANK_UM, Rz_root_um=dflt.RZ_ROOT_UM, root_method: str = "B", factors=None,
                   K_gamma: float = 1.0, tip_relief_um=None, bore_ratio=(0.0, 0.0), shaft=None,
                   pitting_permitted: bool = False, optimum_life: bool = False, S_Hmin: float = dflt.S_HMIN,
-                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), geometry: dict | None = None) -> dict:
+                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), rim_mm=(None, None),
+                  geometry: dict | None = None) -> dict:
     """ISO 6336 load capacity of gear pairs, vectorised: m (normal module, mm), z1, z2, x1, x2 and the face
     widths broadcast like :func:`~geardesign.gears.geometry.pair_geometry`, whose geometry (operating
     pressure angle, ε_α, diameters) is used as it is. Returns a dict of float arrays: the stresses and safety
@@ -270,9 +276,10 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``pitting_permitted``, ``optimum_life``: choose the Z_NT curve (ISO 6336-2:2019 Table 2). ``S_Hmin``,
     ``S_Fmin``: the minimum safety factors for σ_HP = σ_HG/S_Hmin and σ_FP = σ_FG/S_Fmin (defaults and their
     source: :mod:`~geardesign.gears.strength.defaults`). ``cycles_per_rev``: load cycles of a tooth per revolution of
-    each gear (a sun among N planets: N). ``geometry``: the pair's geometry dict when the caller has it
-    (:func:`~geardesign.gears.geometry.mesh_geometry` of these designs: the strength checks of the shift
-    solvers); it is used unvalidated, so designs that do not exist give NaN rather than an error.
+    each gear (a sun among N planets: N). ``rim_mm``: (s_R1, s_R2) rim thickness under the root for Y_B (None: solid).
+    ``geometry``: the pair's geometry dict when the caller has it (:func:`~geardesign.gears.geometry.mesh_geometry`
+    of these designs: the strength checks of the shift solvers); it is used unvalidated, so designs that do not
+    exist give NaN rather than an error.
     """
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
@@ -310,7 +317,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     _contact(G, g, mats, F_t, b, g["d2"] / g["d1"], K_A, K_gamma, v, (n1 * cpr[0], n2 * cpr[1]), load.life_h, nu40, Rz,
              {"pitting_permitted": pitting_permitted, "optimum": optimum_life}, internal, out)
     root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root,
-              (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out)
+              (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out, rim_mm)
     S_Hmin = one_number("S_Hmin", require_range("S_Hmin", S_Hmin, 0.5, 10.0))
     S_Fmin = one_number("S_Fmin", require_range("S_Fmin", S_Fmin, 0.5, 10.0))
     for i in (1, 2):

@@ -19,6 +19,7 @@ ACCURACY_GRADE = 7       # ISO 1328-1:1995 grade of ordinary industrial gearing
 
 NU40_RANGE = (1.0, 10_000.0)       # mm²/s: from thin spindle oils to the heaviest open-gear compounds
 RZ_RANGE_UM = (0.01, 100.0)
+RZ_ROOT_MAX_UM = 40.0              # the end of the Y_RrelT curves (ISO 6336-3:2019 clause 14)
 K_GAMMA_RANGE = (1.0, 3.0)         # mesh load factor of planetary sets (ISO 6336-1:2019 6.4: 1.0 to about 1.6)
 FACE_WIDTH_RANGE_MM = (0.0, 1e5)   # open below
 FACTOR_RANGE = (0.01, 100.0)       # a given factor outside this is a typo, not a measurement

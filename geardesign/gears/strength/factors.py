@@ -28,6 +28,8 @@ C_M_SOLID = 0.8                  # ISO 6336-1:2019 9.3.3: correction of the theo
 # outside it the regression is used as it is and the result says so.
 STIFFNESS_X_SUM_RANGE = (-0.5, 2.0)
 # regression coefficients C1..C9 of q′ (ISO 6336-1:2019 9.3.2, Table 9)
+_SURFACE_HARDENED = frozenset({"Eh", "IF", "NT", "NV(nitr)", "NV(nitrocar)"})   # ISO 6336-1 y_α, y_β groups
+_GREY = frozenset({"GG", "GGG(ferr)"})
 _Q_COEFFS = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)
 
 
@@ -193,17 +195,17 @@ def _speed_capped(y, v, cap_5_10, cap_10):
 
 def running_in_alpha(f_pb_um, sigma_Hlim_mpa, kind, v_m_s):
     """y_α (µm), the running-in allowance for a base pitch deviation f_pb (ISO 6336-1:2006 8.3.5 with
-    Cor.1:2008): St, V, GGG, GTS: y_α = (160/σ_Hlim)·f_pb, ≤ 12 800/σ_Hlim for 5 < v ≤ 10 m/s and ≤ 6 400/σ_Hlim
-    above; GG: y_α = 0.275 f_pb, ≤ 22 and ≤ 11 µm; Eh, IF, NT, NV: y_α = 0.075 f_pb ≤ 3 µm. For a pair of
+    Cor.1:2008): St, V, GGG(perl), GTS: y_α = (160/σ_Hlim)·f_pb, ≤ 12 800/σ_Hlim for 5 < v ≤ 10 m/s and ≤ 6 400/σ_Hlim
+    above; GG, GGG(ferr): y_α = 0.275 f_pb, ≤ 22 and ≤ 11 µm; Eh, IF, NT, NV: y_α = 0.075 f_pb ≤ 3 µm. For a pair of
     different materials use the mean of the two gears' values.
 
     >>> float(running_in_alpha(10.0, 800.0, "V", 3.0)), float(running_in_alpha(10.0, 1500.0, "Eh", 3.0))
     (2.0, 0.75)
     """
     f = np.asarray(f_pb_um, dtype=float)
-    if kind in ("Eh", "IF", "NT", "NV", "NV_nitrocar"):
+    if kind in _SURFACE_HARDENED:
         return np.minimum(0.075 * f, 3.0)
-    if kind == "GG":
+    if kind in _GREY:
         return _speed_capped(0.275 * f, v_m_s, 22.0, 11.0)
     s = np.asarray(sigma_Hlim_mpa, dtype=float)
     return _speed_capped(160.0 / s * f, v_m_s, 12_800.0 / s, 6_400.0 / s)
@@ -211,16 +213,16 @@ def running_in_alpha(f_pb_um, sigma_Hlim_mpa, kind, v_m_s):
 
 def running_in_beta(F_betax_um, sigma_Hlim_mpa, kind, v_m_s):
     """y_β (µm), the running-in allowance for the initial equivalent misalignment F_βx (ISO 6336-1:2006 7.6.3
-    with Cor.1:2008): St, V, GGG, GTS: y_β = (320/σ_Hlim)·F_βx, ≤ 25 600/σ_Hlim for 5 < v ≤ 10 m/s and
-    ≤ 12 800/σ_Hlim above; GG: y_β = 0.55 F_βx, ≤ 45 and ≤ 22 µm; Eh, IF, NT, NV: y_β = 0.15 F_βx ≤ 6 µm.
+    with Cor.1:2008): St, V, GGG(perl), GTS: y_β = (320/σ_Hlim)·F_βx, ≤ 25 600/σ_Hlim for 5 < v ≤ 10 m/s and
+    ≤ 12 800/σ_Hlim above; GG, GGG(ferr): y_β = 0.55 F_βx, ≤ 45 and ≤ 22 µm; Eh, IF, NT, NV: y_β = 0.15 F_βx ≤ 6 µm.
 
     >>> float(running_in_beta(20.0, 800.0, "V", 3.0)), float(running_in_beta(20.0, 1500.0, "Eh", 3.0))
     (8.0, 3.0)
     """
     F = np.asarray(F_betax_um, dtype=float)
-    if kind in ("Eh", "IF", "NT", "NV", "NV_nitrocar"):
+    if kind in _SURFACE_HARDENED:
         return np.minimum(0.15 * F, 6.0)
-    if kind == "GG":
+    if kind in _GREY:
         return _speed_capped(0.55 * F, v_m_s, 45.0, 22.0)
     s = np.asarray(sigma_Hlim_mpa, dtype=float)
     return _speed_capped(320.0 / s * F, v_m_s, 25_600.0 / s, 12_800.0 / s)

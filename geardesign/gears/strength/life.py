@@ -11,14 +11,14 @@ __all__ = ["contact_life_curve", "contact_life_factor", "load_cycles"]
 # (N_L, Z_NT) points of ISO 6336-2:2019 Table 2. The last point is 0.85 at 10^10 cycles, or 1.0 with
 # optimum lubrication, material, manufacturing and experience ("optimum").
 _CURVES = {
-    "pitting_permitted": ((6e5, 1.6), (1e7, 1.0), (1e9, 1.0), (1e10, 0.85)),   # St, V, GGG, GTS, Eh, IF
-    "no_pitting": ((1e5, 1.6), (5e7, 1.0), (1e10, 0.85)),                        # St, V, GGG, GTS, Eh, IF
+    "pitting_permitted": ((6e5, 1.6), (1e7, 1.0), (1e9, 1.0), (1e10, 0.85)),   # St, V, GGG(perl), GTS, Eh, IF
+    "no_pitting": ((1e5, 1.6), (5e7, 1.0), (1e10, 0.85)),                        # St, V, GGG(perl), GTS, Eh, IF
     "GG_NT_NV": ((1e5, 1.3), (2e6, 1.0), (1e10, 0.85)),                          # GG, GGG (ferr.), NT, NV
     "nitrocarburized": ((1e5, 1.1), (2e6, 1.0), (1e10, 0.85)),                   # NV (nitrocar.)
 }
-_KIND_CURVE = {"St": "no_pitting", "V": "no_pitting", "GGG": "no_pitting", "GTS": "no_pitting", "Eh": "no_pitting",
-               "IF": "no_pitting", "GG": "GG_NT_NV", "NT": "GG_NT_NV", "NV": "GG_NT_NV",
-               "NV_nitrocar": "nitrocarburized"}
+_KIND_CURVE = {"St": "no_pitting", "V": "no_pitting", "GGG(perl)": "no_pitting", "GTS": "no_pitting",
+               "Eh": "no_pitting", "IF": "no_pitting", "GG": "GG_NT_NV", "GGG(ferr)": "GG_NT_NV", "NT": "GG_NT_NV",
+               "NV(nitr)": "GG_NT_NV", "NV(nitrocar)": "nitrocarburized"}
 
 
 def load_cycles(n_rpm, life_h, contacts_per_revolution=1):

@@ -8,16 +8,17 @@ from dataclasses import dataclass
 from ...catalogs.materials import QUALITIES, material_group_lines, named_materials
 from ...errors import GearDesignError
 from ...validate import one_number, require_range
+from .root_factors import MATERIAL_KINDS as _ROOT_KINDS
 
 __all__ = ["Material", "material", "material_names", "allowable_stress_number", "MATERIAL_KINDS",
            "SURFACE_HARDENED_KINDS", "STEEL_E_MPA", "STEEL_NU"]
 
-# ISO 6336-1/-2/-5 abbreviations of the material kinds (what the life factors, y_α, y_β, C_ay and Z_W
-# depend on): St structural, V through-hardened, GG grey iron, GGG nodular iron, GTS malleable iron,
-# Eh case-hardened, IF flame/induction hardened, NT nitriding steel nitrided, NV through-hardening
-# steel nitrided, NV_nitrocar nitrocarburized.
-MATERIAL_KINDS = ("St", "V", "GG", "GGG", "GTS", "Eh", "IF", "NT", "NV", "NV_nitrocar")
-SURFACE_HARDENED_KINDS = frozenset({"Eh", "IF", "NT", "NV", "NV_nitrocar"})
+# The material kinds of ISO 6336-5 (what the life factors, y_α, y_β, C_ay, Z_W and the root factors depend on),
+# one list for the whole package: the root factors' (see root_factors.MATERIAL_KINDS for their meaning).
+MATERIAL_KINDS = tuple(_ROOT_KINDS)
+SURFACE_HARDENED_KINDS = frozenset({"Eh", "IF", "NT", "NV(nitr)", "NV(nitrocar)"})
+# kinds whose relative notch sensitivity (ISO 6336-3 clause 13) needs a strength (σ_0.2, σ_S or σ_B)
+STRENGTH_NEEDED_KINDS = frozenset({"St", "V", "GG", "GGG(perl)", "GGG(ferr)", "GTS"})
 STEEL_E_MPA = 206_000.0     # ISO 6336-2 (Z_E = 189.8 √MPa for steel on steel)
 STEEL_NU = 0.3
 _STEEL_GROUPS = frozenset({"St", "St_cast", "V_carbon", "V_alloy", "V_cast_carbon", "V_cast_alloy", "Eh", "IF", "NT",
@@ -32,7 +33,9 @@ class Material:
     """A gear material: its ISO 6336 ``kind`` (one of :data:`MATERIAL_KINDS`), Young's modulus ``E_mpa``,
     Poisson's ratio ``nu``, the surface ``hardness`` on ``hardness_scale`` (HBW, HV or HRC), the allowable
     stress numbers ``sigma_Hlim_mpa`` (contact) and ``sigma_Flim_mpa`` (bending, of the reference test gear,
-    used with Y_ST = 2), the ISO 6336-5 ``quality`` grade (ML, MQ, ME) and where the numbers come from.
+    used with Y_ST = 2), the ISO 6336-5 ``quality`` grade (ML, MQ, ME) and where the numbers come from;
+    ``yield_mpa`` the strength the root's notch sensitivity needs (ISO 6336-3 clause 13: σ_0.2 for V, GGG(perl),
+    GTS; σ_S for St; σ_B for GG, GGG(ferr); None for surface-hardened kinds).
 
     >>> m = Material("my steel", "V", 206000, 0.3, 300, "HV", 767.0, 314.5, "MQ", "my test")
     >>> m.sigma_Hlim_mpa
@@ -40,7 +43,7 @@ class Material:
     >>> Material("x", "steel", 206000, 0.3, 300, "HV", 700, 300, "MQ", "")
     Traceback (most recent call last):
     ...
-    geardesign.errors.GearDesignError: kind must be one of ['St', 'V', 'GG', 'GGG', 'GTS', 'Eh', 'IF', 'NT', 'NV', 'NV_nitrocar'], got 'steel'
+    geardesign.errors.GearDesignError: kind must be one of ['St', 'V', 'GG', 'GGG(perl)', 'GGG(ferr)', 'GTS', 'Eh', 'IF', 'NT', 'NV(nitr)', 'NV(nitrocar)'], got 'steel'
     """
 
     name: str
@@ -55,6 +58,7 @@ class Material:
     source: str = ""
     treatment: str = ""
     group: str = ""
+    yield_mpa: float | None = None
 
     def __post_init__(self):
         if self.kind not in MATERIAL_KINDS:
@@ -69,6 +73,9 @@ class Material:
             value = one_number(field, require_range(field, getattr(self, field), lo, hi, lo_open=open_,
                                                     hi_open=open_))
             object.__setattr__(self, field, value)
+        if self.yield_mpa is not None:
+            object.__setattr__(self, "yield_mpa", one_number("yield_mpa", require_range(
+                "yield_mpa", self.yield_mpa, 1.0, 5000.0, unit="MPa")))
 
     @property
     def surface_hardened(self) -> bool:
@@ -124,12 +131,13 @@ def material_names() -> tuple[str, ...]:
 
 
 def material(name: str, *, hardness: float | None = None, quality: str | None = None, E_mpa: float | None = None,
-             nu: float | None = None) -> Material:
+             nu: float | None = None, yield_mpa: float | None = None) -> Material:
     """A :class:`Material` by name: a named steel of ``catalogs/materials_iso6336.csv`` (``"42CrMo4"``,
     ``"18CrNiMo7-6"``, ``"40Х"``, ...) or an ISO 6336-5 group (``"V_alloy"``, ``"Eh"``, ``"GGG"``, ... with
     ``hardness`` in the group's scale). ``hardness`` and ``quality`` override the catalog's; σ_Hlim and
     σ_Flim come from the part-5 lines at that hardness (:func:`allowable_stress_number`). Cast irons need
-    ``E_mpa`` and ``nu`` (the catalog gives only steel's).
+    ``E_mpa`` and ``nu`` (the catalog gives only steel's); ``yield_mpa`` overrides the catalog's strength (see
+    :class:`Material`; an ISO 6336-5 group has none unless given).
 
     >>> m = material("42CrMo4")
     >>> m.kind, m.hardness, m.sigma_Hlim_mpa, m.sigma_Flim_mpa
@@ -170,4 +178,6 @@ def material(name: str, *, hardness: float | None = None, quality: str | None = 
                     sigma_Hlim_mpa=allowable_stress_number(group, q, "contact", h),
                     sigma_Flim_mpa=allowable_stress_number(group, q, "bending", h), quality=q,
                     source=(row.source if row is not None else contact.source), group=group,
-                    treatment=(row.treatment if row is not None else contact.description))
+                    treatment=(row.treatment if row is not None else contact.description),
+                    yield_mpa=yield_mpa if yield_mpa is not None else (
+                        float(row.yield_mpa) if row is not None and row.yield_mpa == row.yield_mpa else None))

@@ -63,6 +63,10 @@ _FLAG_NOTES = {
     "K_Falpha_limited": "K_Falpha capped at eps_gamma/(0.25 eps_alpha + 0.75) (ISO 6336-1:2019 eq. (65))",
     "root_out_of_range1": "gear 1: q_s outside [1, 8), the range of the Y_S formula (ISO 6336-3:2019 7.2)",
     "root_out_of_range2": "gear 2: q_s outside [1, 8), the range of the Y_S formula (ISO 6336-3:2019 7.2)",
+    "strength_clipped1": "gear 1: yield strength outside the slip-layer table of ISO 6336-3:2019 clause 13, "
+                         "clipped to its end for Y_deltarelT",
+    "strength_clipped2": "gear 2: yield strength outside the slip-layer table of ISO 6336-3:2019 clause 13, "
+                         "clipped to its end for Y_deltarelT",
     "root_unavailable": "root strength not computed: the ISO 6336-3 factor module is not installed",
 }
 _STRESSES = ("S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigma_H2", "sigma_F1", "sigma_F2",
@@ -166,7 +170,7 @@ def _scalar(v) -> float:
 def from_chain(out: dict, title: str = "") -> StrengthResult:
     """The :class:`StrengthResult` of a one-design dict of :func:`~geardesign.gears.strength.chain.pair_strength`."""
     rows = [(sym, gear, _scalar(out[key]), clause) for sym, key, gear, clause in FACTOR_TABLE if key in out]
-    rows.append(("Y_ST", 0, 2.0, "ISO 6336-3:2019 clause 9 (reference test gear)"))
+    rows.append(("Y_ST", 0, 2.0, "ISO 6336-3:2019 (reference test gear: sigma_FE = sigma_Flim Y_ST)"))
     frame = pd.DataFrame(rows, columns=["symbol", "gear", "value", "clause"])
     notes = []
     for flag, text in _FLAG_NOTES.items():

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...errors import GearDesignError
+
 __all__ = ["root_side", "root_stress", "root_stress_limit", "Y_ST"]
 
 Y_ST = 2.0   # stress correction factor of the reference test gears (ISO 6336-3:2019 clause 9)
@@ -39,7 +41,7 @@ def _root_modules():
 
 
 def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12, life_h,
-              method, out):
+              method, out, rim=(None, None)):
     """Fill ``out`` with the root factors, σ_F1,2, σ_FG1,2 and S_F1,2 of both gears."""
     mods = _root_modules()
     if mods is None:
@@ -49,11 +51,11 @@ def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_g
         return
     root, rf = mods
     _root_factors(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12,
-                  life_h, method, out, root, rf)
+                  life_h, method, out, root, rf, rim)
 
 
 def _root_factors(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12,
-                  life_h, method, out, root, rf):
+                  life_h, method, out, root, rf, rim):
     names = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")
     out["Y_beta"] = np.asarray(G.pick("Y_beta", lambda: rf.helix_factor_Y_beta(out["eps_beta"], beta_deg)))
     if method == "B":
@@ -70,21 +72,48 @@ def _root_factors(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A,
                                     internal=internal and i == 2, method=method)
         YF = np.asarray(G.pick(f"{names[0]}{i}", lambda: ff[names[0]]))
         YS = np.asarray(G.pick(f"{names[1]}{i}", lambda: ff[names[1]]))
-        YB = np.asarray(G.pick(f"Y_B{i}", lambda: np.ones_like(F_t)))
+        YB = np.asarray(G.pick(f"Y_B{i}", lambda: _rim(rf, rim[i - 1], g[f"h{i}"], m, internal and i == 2)))
         kind = _root_kind(mat.kind, rf)
         N_L = None if life_h is None else 60.0 * n * life_h
         Y_NT = np.asarray(G.pick(f"Y_NT{i}", lambda: np.ones_like(F_t) if N_L is None else rf.life_factor_Y_NT(N_L, kind)))
-        Y_d = np.asarray(G.pick(f"Y_deltarelT{i}", lambda: rf.relative_notch_sensitivity_Y_delta_relT(ff["q_s"], kind)))
+        Y_d = np.asarray(G.pick(f"Y_deltarelT{i}", lambda: _notch(rf, ff["q_s"], mat, out, i)))
         Y_R = np.asarray(G.pick(f"Y_RrelT{i}", lambda: rf.relative_surface_factor_Y_RrelT(Rz_root, kind)))
         Y_X = np.asarray(G.pick(f"Y_X{i}", lambda: rf.size_factor_Y_X(m, kind)))
         out.update({f"{names[0]}{i}": YF, f"{names[1]}{i}": YS, f"Y_B{i}": YB, f"Y_NT{i}": Y_NT,
                     f"Y_deltarelT{i}": Y_d, f"Y_RrelT{i}": Y_R, f"Y_X{i}": Y_X, f"q_s{i}": np.asarray(ff["q_s"]),
                     f"root_out_of_range{i}": ~np.asarray(ff.get("in_range", True), dtype=bool)})
+        out[f"sigma_F0{i}"] = root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra, 1.0, 1.0, 1.0, 1.0, 1.0)
         out[f"sigma_F{i}"] = root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra, *K)
         out[f"sigma_FG{i}"] = root_stress_limit(mat.sigma_Flim_mpa, Y_NT, Y_d, Y_R, Y_X, rf.Y_ST)
         out[f"S_F{i}"] = out[f"sigma_FG{i}"] / out[f"sigma_F{i}"]
 
 
 def _root_kind(kind, rf):
-    """The root module's name of a material kind (its MATERIAL_KINDS)."""
+    """The root module's name of a material kind (one list for the package: materials.MATERIAL_KINDS is it)."""
     return kind
+
+
+def _rim(rf, s_R_mm, h_t, m, internal):
+    """Y_B from the rim thickness s_R (mm) below the root; None: a solid gear (1)."""
+    if s_R_mm is None:
+        return 1.0
+    return rf.rim_factor_Y_B(s_R_mm / h_t) if not internal else rf.rim_factor_Y_B(internal=True, s_R_over_mn=s_R_mm / m)
+
+
+def _notch(rf, q_s, mat, out, i):
+    """Y_δrelT; the strength the slip-layer table needs is clipped to the table's range and the result says so."""
+    from .materials import STRENGTH_NEEDED_KINDS
+    if mat.kind not in STRENGTH_NEEDED_KINDS:
+        return rf.relative_notch_sensitivity_Y_delta_relT(q_s, mat.kind)
+    if mat.yield_mpa is None:
+        raise GearDesignError(f"material {mat.name!r} (kind {mat.kind}) needs yield_mpa for the relative notch "
+                              "sensitivity Y_deltarelT (ISO 6336-3:2019 clause 13): give it to material() or Material()")
+    lo, hi = _SLIP_RANGE[mat.kind]
+    limit = min(max(mat.yield_mpa, lo), hi)
+    out[f"strength_clipped{i}"] = limit != mat.yield_mpa
+    return rf.relative_notch_sensitivity_Y_delta_relT(q_s, mat.kind, limit_mpa=limit)
+
+
+# the strength range of the slip-layer table of ISO 6336-3:2019 clause 13 per kind (MPa)
+_SLIP_RANGE = {"V": (500.0, 1000.0), "GGG(perl)": (500.0, 1000.0), "GTS": (500.0, 1000.0), "St": (300.0, 400.0),
+               "GG": (150.0, 300.0), "GGG(ferr)": (150.0, 300.0)}

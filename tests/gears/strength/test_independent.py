@@ -1,6 +1,8 @@
 """pair_strength against a second implementation of the chain written here in plain Python floats, straight from
-the equations of ISO 6336-1/-2 (and ISO 21771 for the geometry of external pairs), to 1e-9 on random designs —
-one design at a time (hypothesis) and many at once (the vectorised path)."""
+the equations of ISO 6336-1/-2/-3 (and ISO 21771 for the geometry of external pairs), to 1e-9 on random designs —
+one design at a time (hypothesis) and many at once (the vectorised path). The root form factors and the part-3
+factor curves come from their own module (tested there against the standard and an mpmath construction); their
+assembly into σ_F, σ_FG and S_F is written out here."""
 import math
 
 import numpy as np
@@ -10,6 +12,8 @@ from hypothesis import strategies as st
 
 from geardesign.gears.rack import BasicRack
 from geardesign.gears.strength import Load, material, pair_strength
+from geardesign.gears.strength import root_factors as rf
+from geardesign.gears.strength.root import root_form_factors
 
 NAMES = ("42CrMo4", "18CrNiMo7-6", "C45", "31CrMoV9", "42CrMo4-IF")
 Q = (0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182)
@@ -62,7 +66,7 @@ def interp_life(N, pts):
 
 
 def y_alpha(fpb, mat, v):
-    if mat.kind in ("Eh", "IF", "NT", "NV", "NV_nitrocar"):
+    if mat.kind in ("Eh", "IF", "NT", "NV(nitr)", "NV(nitrocar)"):
         return min(0.075 * fpb, 3.0)
     y = 160.0 / mat.sigma_Hlim_mpa * fpb
     if v > 10:
@@ -71,7 +75,7 @@ def y_alpha(fpb, mat, v):
 
 
 def y_beta(F, mat, v):
-    if mat.kind in ("Eh", "IF", "NT", "NV", "NV_nitrocar"):
+    if mat.kind in ("Eh", "IF", "NT", "NV(nitr)", "NV(nitrocar)"):
         return min(0.15 * F, 6.0)
     y = 320.0 / mat.sigma_Hlim_mpa * F
     if v > 10:
@@ -95,7 +99,7 @@ def k_v(N, eg, Bp, Bf, Bk, w):
     return sup + (main - sup) / 0.35 * (1.5 - N) if N < 1.5 else sup
 
 
-def reference(m, z1, z2, x1, x2, beta_deg, b, T1, n1, mat1, mat2, grade, nu40, Rz, life_h, rack):
+def reference(m, z1, z2, x1, x2, beta_deg, b, T1, n1, mat1, mat2, grade, nu40, Rz, life_h, rack, Rz_root=10.0):
     """The chain of ISO 6336-1/-2 for an external pair, the load on the pinion; returns the main quantities."""
     g = geometry(m, z1, z2, x1, x2, beta_deg, rack)
     mats = (mat1, mat2)
@@ -153,7 +157,7 @@ def reference(m, z1, z2, x1, x2, beta_deg, b, T1, n1, mat1, mat2, grade, nu40, R
     rred = rho[0] * rho[1] / (rho[0] + rho[1])
     out = dict(sigma_H0=s0, sigma_H1=ZB * s0 * kk, sigma_H2=ZD * s0 * kk, K_v=Kv, K_Hbeta=KHb, K_Fbeta=KFb,
                K_Halpha=KHa, K_Falpha=KFa, Z_H=ZH, Z_E=ZE, Z_eps=Zeps, Z_B=ZB, Z_D=ZD, c_prime=cp, eps_alpha=g["ea"])
-    hard = [mt.kind in ("Eh", "IF", "NT", "NV", "NV_nitrocar") for mt in mats]
+    hard = [mt.kind in ("Eh", "IF", "NT", "NV(nitr)", "NV(nitrocar)") for mt in mats]
     for i, (mt, n) in enumerate(zip(mats, (n1, n2)), start=1):
         s = mt.sigma_Hlim_mpa
         czl = 0.83 if s < 850 else (0.91 if s > 1200 else s / 4375 + 0.6357)
@@ -162,13 +166,29 @@ def reference(m, z1, z2, x1, x2, beta_deg, b, T1, n1, mat1, mat2, grade, nu40, R
         czr = 0.15 if s < 850 else (0.08 if s > 1200 else 0.32 - 0.0002 * s)
         ZR = (3 / (Rz * (10 / rred) ** (1 / 3))) ** czr
         ZW = 1.2 - (min(max(mt.hardness, 130), 470) - 130) / 1700 if (not hard[i - 1] and hard[2 - i]) else 1.0
-        curve = "GG_NT_NV" if mt.kind in ("NT", "NV", "GG") else "no_pitting"
+        curve = "GG_NT_NV" if mt.kind in ("NT", "NV(nitr)", "GG", "GGG(ferr)") else "no_pitting"
         ZNT = 1.0 if life_h is None else interp_life(60 * n * life_h, LIFE[curve])
         out[f"S_H{i}"] = s * ZNT * ZL * Zv * ZR * ZW / out[f"sigma_H{i}"]
+    # root (ISO 6336-3:2019 method B): the form factors and the part-3 factor curves from their module (tested
+    # there against the standard and mpmath); the chain's assembly of them written out here
+    ean = g["ea"] / math.cos(g["bb"]) ** 2
+    Ybeta = (1 - min(eb, 1.0) * min(beta_deg, 30.0) / 120.0) / math.cos(math.radians(beta_deg)) ** 3
+    YDT = float(rf.deep_tooth_factor_Y_DT(ean, grade))
+    for i, (mt, n, z, x) in enumerate(zip(mats, (n1, n2), (z1, z2), (x1, x2)), start=1):
+        ff = root_form_factors(z, x, g["da"][i - 1] / m, eps_alpha=g["ea"], beta_deg=beta_deg,
+                               alpha_n_deg=rack.alpha_deg, hfp_star=rack.ha + rack.c, rhofp_star=rack.rho_f)
+        YF, YS, qs = float(ff["Y_F"]), float(ff["Y_S"]), float(ff["q_s"])
+        sF = Ft / (b * m) * YF * YS * Ybeta * YDT * Kv * KFb * KFa
+        lim = None if mt.yield_mpa is None else min(max(mt.yield_mpa, 500.0), 1000.0)
+        Yd = float(rf.relative_notch_sensitivity_Y_delta_relT(qs, mt.kind, limit_mpa=lim))
+        YNT = 1.0 if life_h is None else float(rf.life_factor_Y_NT(60 * n * life_h, mt.kind))
+        sFG = mt.sigma_Flim_mpa * 2.0 * YNT * Yd * float(rf.relative_surface_factor_Y_RrelT(Rz_root, mt.kind)) \
+            * float(rf.size_factor_Y_X(m, mt.kind))
+        out[f"sigma_F{i}"], out[f"S_F{i}"], out[f"Y_F{i}"] = sF, sFG / sF, YF
     return out
 
 
-KEYS = ("sigma_H0", "sigma_H1", "sigma_H2", "S_H1", "S_H2", "K_v", "K_Hbeta", "K_Fbeta", "K_Halpha", "K_Falpha",
+KEYS = ("sigma_H0", "sigma_H1", "sigma_H2", "S_H1", "S_H2", "sigma_F1", "sigma_F2", "S_F1", "S_F2", "Y_F1", "Y_F2", "K_v", "K_Hbeta", "K_Fbeta", "K_Halpha", "K_Falpha",
         "Z_H", "Z_E", "Z_eps", "Z_B", "Z_D", "c_prime", "eps_alpha")
 
 design = st.fixed_dictionaries(dict(

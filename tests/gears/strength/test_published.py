@@ -68,3 +68,22 @@ def test_formula_level_values():
 def test_edition_of_Z_beta_is_2019():
     # ISO 6336-2:2006 had Z_beta = sqrt(cos beta) = 0.98093 here; the example prints 1.01944
     assert zc.helix_angle_factor(15.8) != pytest.approx(math.sqrt(math.cos(math.radians(15.8))), rel=1e-3)
+
+
+CROSS = pd.read_csv(Path(__file__).parents[2] / "data" / "iso6336_din3990_crosscheck.csv")
+
+
+@pytest.fixture(scope="module")
+def din3990():
+    from geardesign.gears.strength import Material
+    steel = Material("case-hardened", "Eh", 206000, 0.3, 700, "HV", 1500, 430)
+    return pair_strength(4, 19, 104, 0.5, 0.15, load=Load(power_kw=55, n_rpm=980, application_factor=1.75),
+                         material1=steel, face_width_mm=48.64, rack=BasicRack(ha=1.0, c=0.25, rho_f=0.25),
+                         tip_shortening=False, root_method="C", Rz_flank_um=5.0,
+                         factors={"K_v": 1.0278576187783273, "K_Hbeta": 1.1064272863295082,
+                                  "K_Fbeta": 1.0864854433487987, "K_Halpha": 1.0, "K_Falpha": 1.0, "Z_E": 189.8})
+
+
+@pytest.mark.parametrize("row", list(CROSS.itertuples()), ids=lambda r: r.quantity)
+def test_din3990_program_crosscheck(row, din3990):
+    assert float(din3990[row.quantity]) == pytest.approx(row.value, rel=row.rel_tol)

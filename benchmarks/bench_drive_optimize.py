@@ -7,7 +7,7 @@ by one with the standalone functions (optimize_shifts, chain.design, key.select 
 timed on a sample and scaled), i.e. what a loop over the split would cost. One core; the machine is
 noisy (±50 %), so read the ratio.
 
-    python benchmarks/bench_drive.py
+    python benchmarks/bench_drive_optimize.py
 """
 import time
 
@@ -15,7 +15,7 @@ import numpy as np
 
 import geardesign as gd
 from geardesign import chain, key
-from geardesign.drives.drive import _shift_solution
+from geardesign.drives.stage_kinds.gear import shift_solution
 from geardesign.shifts.optimize import optimize_shifts
 
 
@@ -57,7 +57,7 @@ def main():
     print(f"{'objective':12} {'first call':>16} {'repeat':>16} {'combinations':>12} {'designs':>9} "
           f"{'shift solves':>12} {'plain loop':>10} {'speed-up':>9}")
     for objective in ("min_size", "min_mass", "max_margin"):
-        _shift_solution.cache_clear()
+        shift_solution.cache_clear()
         t0, c0 = time.perf_counter(), time.process_time()
         r = drive.optimize(10, objective=objective)
         first, first_cpu = time.perf_counter() - t0, time.process_time() - c0

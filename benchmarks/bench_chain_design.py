@@ -1,6 +1,6 @@
 """Time to evaluate every candidate of the full GOST and ISO chain catalogs for one drive.
 
-Run from the repository root:  python benchmarks/bench_drives.py
+Run from the repository root:  python benchmarks/bench_chain_design.py
 Goal: under 50 ms per design call (all rows x strands x z1 candidates, all checks, ranking).
 """
 from __future__ import annotations

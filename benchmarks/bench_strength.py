@@ -1,0 +1,95 @@
+"""ISO 6336 strength speed, as ratios against plain references written here (this machine drifts ±50 %):
+
+* one pair's full strength (``strength(pair, load, material=...)``: every factor of parts 1, 2, 3, the result
+  object with its factor table) and the bare dict of ``pair_strength`` on numbers, against a plain-Python float
+  evaluation of the contact side (geometry, Z_H, Z_E, Z_ε, σ_H0, σ_H with fixed K factors);
+* the vectorised chain over N designs (every factor, both gears, both methods' work for method B), in designs/s,
+  against a straight-line numpy evaluation of the same contact side over the same designs.
+
+The issue's goals: ≤ 100 µs for one pair, ≥ 1 M designs/s vectorised.
+
+Run: python benchmarks/bench_strength.py [N]
+Prints figures; asserts nothing (speed is measured, not tested).
+"""
+import math
+import sys
+import time
+
+import numpy as np
+
+from geardesign import GearPair
+from geardesign.gears.strength import Load, material, pair_strength, strength
+
+
+def best(fn, repeat=5, number=20):
+    times = []
+    for _ in range(repeat):
+        t = time.perf_counter()
+        for _ in range(number):
+            fn()
+        times.append((time.perf_counter() - t) / number)
+    return min(times)
+
+
+def plain_contact(m, z1, z2, x1, x2, T1, b, sigma_Hlim=767.0, K=1.3):
+    """σ_H and S_H of a spur pair, straight from the formulas (plain floats, 20° rack, fixed K and Z_NT = 1)."""
+    a = math.radians(20.0)
+    inv_w = math.tan(a) - a + 2 * (x1 + x2) * math.tan(a) / (z1 + z2)
+    w = math.atan(math.cbrt(3 * inv_w))
+    for _ in range(6):
+        w -= (math.tan(w) - w - inv_w) / math.tan(w) ** 2
+    d1 = m * z1
+    ZH = math.sqrt(2 * math.cos(w) / (math.cos(a) ** 2 * math.sin(w)))
+    ea = 1.6
+    Ze = math.sqrt((4 - ea) / 3)
+    u = z2 / z1
+    sH = ZH * 189.8 * Ze * math.sqrt(2000 * T1 / (d1 * b) * (u + 1) / u) * math.sqrt(K)
+    return sH, sigma_Hlim / sH
+
+
+def plain_contact_numpy(m, z1, z2, x1, x2, T1, b, sigma_Hlim=767.0, K=1.3):
+    a = math.radians(20.0)
+    inv_w = math.tan(a) - a + 2 * (x1 + x2) * math.tan(a) / (z1 + z2)
+    w = np.arctan(np.cbrt(3 * inv_w))
+    for _ in range(6):
+        w -= (np.tan(w) - w - inv_w) / np.tan(w) ** 2
+    d1 = m * z1
+    ZH = np.sqrt(2 * np.cos(w) / (math.cos(a) ** 2 * np.sin(w)))
+    Ze = math.sqrt((4 - 1.6) / 3)
+    u = z2 / z1
+    sH = ZH * 189.8 * Ze * np.sqrt(2000 * T1 / (d1 * b) * (u + 1) / u) * math.sqrt(K)
+    return sH, sigma_Hlim / sH
+
+
+def main(n=200_000):
+    mat = material("42CrMo4")
+    load = Load(torque_nm=200, n_rpm=1000, life_h=20_000)
+    pair = GearPair(m=4, z1=20, z2=60, x1=0.3, x2=0.1, face_width=40)
+    t_result = best(lambda: strength(pair, load, material=mat))
+    t_dict = best(lambda: pair_strength(4, 20, 60, 0.3, 0.1, load=load, material1=mat, face_width_mm=40))
+    t_plain = best(lambda: plain_contact(4, 20, 60, 0.3, 0.1, 200.0, 40.0), number=2000)
+    print("one pair (42CrMo4, 20/60, m = 4, every factor of ISO 6336-1/-2/-3):")
+    print(f"  strength(pair, ...) -> StrengthResult   {t_result * 1e6:9.0f} µs   ({t_result / t_plain:6.0f}x the plain "
+          f"contact side, {t_plain * 1e6:.1f} µs)")
+    print(f"  pair_strength(numbers) -> dict          {t_dict * 1e6:9.0f} µs   ({t_dict / t_plain:6.0f}x)")
+    print(f"  goal: 100 µs -> {'met' if t_result <= 1e-4 else f'{t_result / 1e-4:.0f}x over'}")
+    rng = np.random.default_rng(0)
+    for size in (n, 5 * n):
+        z1 = rng.integers(14, 40, size)
+        z2 = z1 + rng.integers(5, 80, size)
+        x1 = rng.uniform(0.0, 0.6, size)
+        x2 = rng.uniform(0.0, 0.6, size)
+        m = rng.choice([2.0, 3.0, 4.0, 5.0], size)
+        t = time.perf_counter()
+        pair_strength(m, z1, z2, x1, x2, load=load, material1=mat, face_width_mm=10 * m)
+        t_vec = time.perf_counter() - t
+        t = time.perf_counter()
+        plain_contact_numpy(m, z1, z2, x1, x2, 200.0, 10 * m)
+        t_np = time.perf_counter() - t
+        print(f"vectorised, {size:,} designs: {size / t_vec / 1e6:6.3f} M designs/s with every factor "
+              f"({t_vec / t_np:5.1f}x the plain numpy contact side, {size / t_np / 1e6:.2f} M designs/s); "
+              f"goal 1 M/s -> {'met' if size / t_vec >= 1e6 else 'not met'}")
+
+
+if __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 200_000)

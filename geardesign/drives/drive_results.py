@@ -1,0 +1,98 @@
+"""The results of a drive: :class:`DriveAnalysis` (the power flow of a fully given drive, every check)
+and :class:`DriveOptimum` (the ranked alternatives of :meth:`~geardesign.drives.drive.Drive.optimize`)."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import pandas as pd
+
+from ..results import Result, plain
+
+__all__ = ["DriveAnalysis", "DriveOptimum"]
+
+
+@dataclass(frozen=True, eq=False)
+class DriveAnalysis(Result):
+    """The power flow of a fully specified drive, every stage's checks and every key.
+
+    ``flow``: one row per shaft (n_rpm, torque_nm, power_kw); ``checks``: one row per check of the
+    whole drive (item, check, margin, ok); ``keys``: one row per keyed hub; ``stages``: per stage
+    its result (GearPair and its checks, ChainDesign and the chosen row, or the given unit) and
+    ``flow``, the :class:`~geardesign.drives.stage_kinds.StageFlow` through it (speed and torque in
+    and out: what a load-based check of the stage reads);
+    ``min_margin`` and ``limiting``: the smallest margin of the drive and its item and check.
+    """
+
+    success: bool
+    message: str
+    flow: pd.DataFrame
+    checks: pd.DataFrame
+    keys: pd.DataFrame
+    stages: tuple
+    min_margin: float
+    limiting: str
+    total_ratio: float
+    size_mm2: float
+    mass_kg: float
+    drive: object = field(repr=False, default=None)
+    key_results: tuple = field(repr=False, default=())
+
+    _table_fields = ("flow", "checks", "keys")
+
+    def to_dict(self) -> dict:
+        return plain({"status": self.status, "success": self.success, "message": self.message,
+                      "total_ratio": self.total_ratio, "min_margin": self.min_margin, "limiting": self.limiting,
+                      "size_mm2": self.size_mm2, "mass_kg": self.mass_kg, "flow": self.flow, "checks": self.checks,
+                      "keys": self.keys, "stages": [s["summary"] for s in self.stages]})
+
+    def __repr__(self) -> str:
+        with pd.option_context("display.width", 160, "display.max_columns", 20):
+            flow = self.flow.to_string(index=False, float_format=lambda v: f"{v:.5g}")
+        return f"DriveAnalysis: {self.message}\n{flow}"
+
+    def plot(self, ax=None):
+        """The drive's diagram (input, stages, shafts with n and T, keys): a matplotlib Axes."""
+        from .diagram import plot_drive
+        return plot_drive(self, ax=ax)
+
+
+@dataclass(frozen=True, eq=False)
+class DriveOptimum(Result):
+    """Result of :meth:`Drive.optimize`: the ranked alternatives and the best design analysed.
+
+    ``table``: feasible designs best first (``reason`` says why each loses to the one above it),
+    then the closest failing ones (``reason`` names the stage and checks that fail); ``best``: the
+    :class:`DriveAnalysis` of rank 1, re-evaluated by the standalone functions; ``conflict``: when
+    nothing passes, the stage checks that fail in the closest design.
+    """
+
+    success: bool
+    message: str
+    objective: str
+    total_ratio: float
+    ratio_tol: float
+    table: pd.DataFrame
+    best: DriveAnalysis | None
+    conflict: tuple
+    n_combinations: int
+    n_candidates: int
+    n_shift_solves: int
+    time_s: float
+
+    _table_fields = ("table",)
+
+    def to_dict(self) -> dict:
+        out = {f: getattr(self, f) for f in ("success", "message", "objective", "total_ratio", "ratio_tol",
+                                             "conflict", "n_combinations", "n_candidates", "n_shift_solves",
+                                             "time_s")}
+        records = [{k: (None if v is pd.NA else v) for k, v in r.items()} for r in self.table.to_dict("records")]
+        out.update(status=self.status, table=records, best=None if self.best is None else self.best.to_dict())
+        return plain(out)
+
+    def __repr__(self) -> str:
+        cols = [c for c in self.table.columns if c not in ("reason",)][:14]
+        with pd.option_context("display.width", 180, "display.max_columns", 20):
+            body = self.table[cols].head(8).to_string(index=False, float_format=lambda v: f"{v:.5g}")
+        return (f"DriveOptimum({self.objective}, u = {self.total_ratio:g} ± {100 * self.ratio_tol:g} %): {self.message}\n"
+                f"  {self.n_combinations} ratio combinations, {self.n_candidates} designs, {self.n_shift_solves} shift "
+                f"solves, {self.time_s:.3f} s\n{body}")

@@ -1,0 +1,22 @@
+"""The drive's objectives and every limit on its inputs and on the work of its search (one place each)."""
+from __future__ import annotations
+
+__all__ = ["OBJECTIVES", "STAGES_MAX", "COMBINATIONS_MAX", "CANDIDATES_MAX", "TOP_MAX", "TOTAL_RATIO_RANGE",
+           "RATIO_TOL_RANGE", "SPEED_RANGE_RPM", "POWER_RANGE_KW", "TORQUE_RANGE_NM", "MARGIN_TOL", "SHIFT_CACHE",
+           "INFEASIBLE_SHOWN", "LOAD_BOUNDS_MAX", "SIZING_TRIES"]
+
+OBJECTIVES = ("min_size", "min_mass", "max_margin")
+STAGES_MAX = 6                    # stages in one drive
+COMBINATIONS_MAX = 200_000        # ratio combinations (one tooth pair per stage) inside the ratio window
+CANDIDATES_MAX = 2_000_000        # designs evaluated at once: combinations × chain catalog rows
+TOP_MAX = 1000                    # alternatives listed
+TOTAL_RATIO_RANGE = (1e-3, 1e5)
+RATIO_TOL_RANGE = (0.0, 0.5)
+SPEED_RANGE_RPM = (0.1, 100_000.0)
+POWER_RANGE_KW = (1e-6, 1e5)
+TORQUE_RANGE_NM = (1e-3, 1e9)
+MARGIN_TOL = 1e-9                 # the exact shift solver holds its checks to 1e-9: such margins hold
+SHIFT_CACHE = 4096                # solved tooth pairs kept between calls (each ~2-6 ms to solve)
+INFEASIBLE_SHOWN = 5              # closest failing designs listed after the feasible ones
+LOAD_BOUNDS_MAX = 20_000          # (option, input flow) bounds of a stage sized by load; beyond, its load-free bound
+SIZING_TRIES = 8                  # sized candidates re-solved for their own shifts before a tooth pair is given up

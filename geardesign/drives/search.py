@@ -1,0 +1,434 @@
+"""The search behind :meth:`~geardesign.drives.drive.Drive.optimize`, as named steps over index arrays.
+
+1. **options**: each stage's alternatives inside the ratio window its neighbours leave it
+   (:meth:`StageKind.options`);
+2. **combinations**: one option per stage whose product meets the total ratio, built stage by
+   stage with the remaining stages' range as a bound;
+3. **rows**: the combinations times the alternatives of equal ratio (:meth:`StageKind.rows`, e.g.
+   chain catalog rows); then the flow of every design (vectorised);
+4. **batch checks**: every margin that a stage kind computes in a batch (:meth:`StageKind.batch`),
+   the motor's and every key's by its capacity;
+5. **branch and bound**: the designs grouped by the options of the kinds solved one at a time
+   (``solved``: gear pairs and their shifts), solved best bound first while a bound
+   (:meth:`StageKind.bound`) can still enter the ``top`` list;
+6. **result**: the ranked table, the closest failing designs, the best design fixed and analysed.
+
+Every stage is reached through its :class:`~geardesign.drives.stage_kinds.StageKind`; nothing here
+knows a kind by name.
+"""
+from __future__ import annotations
+
+import heapq
+import math
+import time
+from dataclasses import dataclass, replace
+from functools import lru_cache
+
+import numpy as np
+import pandas as pd
+
+from ..errors import GearDesignError
+from .drive_results import DriveOptimum
+from .limits import CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX, MARGIN_TOL
+from .stage_kinds import StageFlow, kind_of
+from .stages import Shaft
+
+__all__ = ["Search", "Designs", "min_margin"]
+
+
+@dataclass(frozen=True)
+class Designs:
+    """One stage's view of N designs, handed to :meth:`StageKind.batch`: ``option`` its option
+    columns at each design ({column: array (N,)}), ``rows`` its row per design (or None), and the
+    flow into and out of it (arrays (N,), rpm and N·m)."""
+
+    option: dict
+    rows: object
+    n_in_rpm: np.ndarray
+    torque_in_nm: np.ndarray
+    n_out_rpm: np.ndarray
+    torque_out_nm: np.ndarray
+
+
+def min_margin(margins: dict):
+    """(smallest margin, its check) of a {check: margin} dict; margins within MARGIN_TOL of 0 are 0."""
+    if not margins:
+        return math.inf, ""
+    name = min(margins, key=lambda k: (margins[k] if np.isfinite(margins[k]) else -math.inf))
+    v = float(margins[name])
+    return (0.0 if abs(v) <= MARGIN_TOL else v), name
+
+
+class Search:
+    """One :meth:`Drive.optimize` call: the designs (one option per stage × rows) as index arrays,
+    their flow and batch margins, and what the branch and bound has evaluated (``ex``)."""
+
+    def __init__(self, drive, U: float, tol: float, objective: str, top: int, t0: float):
+        self.drive, self.stages, self.U, self.tol = drive, drive.stages, U, tol
+        self.kinds = [kind_of(st) for st in self.stages]
+        self.objective, self.top, self.t0 = objective, top, t0
+        self.u_lo, self.u_hi = U * (1 - tol), U * (1 + tol)
+        self.solved_k = [k for k, kind in enumerate(self.kinds) if kind.solved]
+        self.n_solves = 0
+
+    def run(self, progress=None) -> DriveOptimum:
+        why = self.enumerate()               # 1-3: options per stage, ratio combinations, rows
+        if why:
+            return self.no_split(why)
+        self.batch_checks()                  # 4: every batch margin, key and motor check at once
+        self.branch_and_bound(progress)      # 5: the solved stages, best bound first
+        return self.result()                 # 6: ranked table, the closest failing designs, the best
+
+    # -- 1-3: the designs
+    def enumerate(self) -> str:
+        """Options, combinations and rows; the reason when there is no design, else ''."""
+        why = self._stage_options() or self._combinations()
+        if why:
+            return why
+        self._expand_rows()
+        self.ratios = np.column_stack([self.options[k]["ratio"][self.idx[:, k]] for k in range(len(self.stages))])
+        self.n, self.T, self.P = self.drive._flow(self.ratios)
+        self.err = np.abs(np.prod(self.ratios, axis=1) - self.U) / self.U
+        return ""
+
+    def _stage_options(self) -> str:
+        """Each stage's options inside the window its neighbours leave it."""
+        stages, N = self.stages, len(self.stages)
+        span = [kind.ratio_span(s) for kind, s in zip(self.kinds, stages)]
+        self.options = []
+        for k, st in enumerate(stages):
+            lo_rest = math.prod(span[j][0] for j in range(N) if j != k)
+            hi_rest = math.prod(span[j][1] for j in range(N) if j != k)
+            w_lo, w_hi = self.u_lo / hi_rest, self.u_hi / lo_rest
+            opts = self.kinds[k].options(st, w_lo, w_hi)
+            if opts["ratio"].size == 0:
+                reach = (math.prod(a for a, _ in span), math.prod(b for _, b in span))
+                return (f"stage '{st.name}' has no option with a ratio in [{w_lo:.4g}, {w_hi:.4g}], the window "
+                        f"the other stages leave it for u = {self.U:g} ± {100 * self.tol:g} % (the stages' ratio "
+                        f"ranges reach u in [{reach[0]:.4g}, {reach[1]:.4g}])")
+            self.options.append(opts)
+        return ""
+
+    def _combinations(self) -> str:
+        """One option per stage, the product inside the ratio window (the remaining stages' range
+        bounds each partial product)."""
+        options, N = self.options, len(self.options)
+        idx = np.zeros((1, 0), dtype=np.int64)
+        prod = np.ones(1)
+        for k, o in enumerate(options):
+            rest_lo = math.prod(float(options[j]["ratio"].min()) for j in range(k + 1, N))
+            rest_hi = math.prod(float(options[j]["ratio"].max()) for j in range(k + 1, N))
+            new = prod[:, None] * o["ratio"][None, :]
+            keep = (new * rest_hi >= self.u_lo * (1 - 1e-12)) & (new * rest_lo <= self.u_hi * (1 + 1e-12))
+            i, j = np.nonzero(keep)
+            if i.size > COMBINATIONS_MAX:
+                raise GearDesignError(f"the ratio split has {i.size} combinations of tooth pairs, more than "
+                                      f"{COMBINATIONS_MAX}: narrow the stages' z1_range, z2_max or ratio_range")
+            idx = np.column_stack([idx[i], j])
+            prod = new[i, j]
+        if prod.size == 0:
+            return f"no combination of the stages' tooth pairs gives u = {self.U:g} ± {100 * self.tol:g} %"
+        self.idx, self.n_comb = idx, prod.size
+        return ""
+
+    def _expand_rows(self) -> None:
+        """The combinations times the rows of every stage that has rows (e.g. chain catalog rows)."""
+        idx, rows = self.idx, {}
+        for k, (kind, st) in enumerate(zip(self.kinds, self.stages)):
+            r = kind.rows(st)
+            if r is None:
+                continue
+            total = idx.shape[0] * r.size
+            if total > CANDIDATES_MAX:
+                raise GearDesignError(f"{total} designs (ratio combinations x chain rows) exceed {CANDIDATES_MAX}: "
+                                      f"narrow the stages' ranges, strands or catalog")
+            idx = np.repeat(idx, r.size, axis=0)
+            for kk in rows:
+                rows[kk] = np.repeat(rows[kk], r.size)
+            rows[k] = np.tile(r, idx.shape[0] // r.size)
+        self.idx, self.rows, self.n_cand = idx, rows, idx.shape[0]
+
+    def option_at(self, k: int, c) -> dict:
+        """Stage k's option columns at design(s) ``c``."""
+        return {name: col[self.idx[c, k]] for name, col in self.options[k].items()}
+
+    def flow_at(self, k: int, c: int) -> StageFlow:
+        return StageFlow(float(self.n[c, k]), float(self.T[c, k]), float(self.n[c, k + 1]), float(self.T[c, k + 1]))
+
+    # -- 4: every margin computed in a batch
+    def batch_checks(self) -> None:
+        n_cand, T = self.n_cand, self.T
+        margins: dict = {("motor", name): v for name, v in self.drive._motor_margins(self.P[:, 0]).items()}
+        self.batch_size, self.batch_mass, self.info = np.zeros(n_cand), np.zeros(n_cand), {}
+        for k, (kind, st) in enumerate(zip(self.kinds, self.stages)):
+            view = Designs(self.option_at(k, slice(None)), self.rows.get(k), self.n[:, k], T[:, k], self.n[:, k + 1],
+                           T[:, k + 1])
+            b = kind.batch(st, view)
+            margins.update({(st.name, name): v for name, v in b.margins.items()})
+            self.batch_size += b.size_mm2
+            self.batch_mass += b.mass_kg
+            self.info[k] = b.info
+        margins.update(self._key_margins())
+        self.names = list(margins)
+        M = (np.column_stack([np.asarray(margins[k], dtype=float) for k in self.names]) if self.names
+             else np.zeros((n_cand, 0)))
+        self.M = np.where(np.abs(M) <= MARGIN_TOL, 0.0, M)
+        Mf = np.where(np.isnan(self.M), -np.inf, self.M)
+        self.batch_min = Mf.min(axis=1) if self.names else np.full(n_cand, np.inf)
+        self.batch_arg = Mf.argmin(axis=1) if self.names else np.zeros(n_cand, dtype=np.int64)
+        self.batch_ok = self.batch_min >= 0
+
+    def _key_margins(self) -> dict:
+        """Every hub's key by its capacity: one key where it holds, else two (as key.select picks)."""
+        margins, self.key_n = {}, {}
+        for sh in self.drive.shafts:
+            _, caps = key_caps(sh)
+            Ts = self.T[:, sh.at]
+            one = (Ts <= min(caps[1])) | (sh.max_keys < 2)
+            crush = np.where(one, caps[1][0], caps[2][0])
+            shear = np.where(one, caps[1][1], caps[2][1])
+            margins[(f"key '{sh.name}'", "crushing")] = 1.0 - Ts / crush
+            margins[(f"key '{sh.name}'", "shear")] = 1.0 - Ts / shear
+            self.key_n[sh.name] = np.where(one, 1, 2)
+        return margins
+
+    # -- 5: the solved stages, branch and bound
+    def _flow_groups(self) -> dict:
+        """For each load-dependent solved stage, each design's group of equal input flow."""
+        groups = {}
+        for k in self.solved_k:
+            if self.kinds[k].load_dependent(self.stages[k]):
+                _, inv = np.unique(np.column_stack([self.n[:, k], self.T[:, k]]), axis=0, return_inverse=True)
+                groups[k] = inv.ravel()
+        return groups
+
+    def _solution(self, k: int, c: int) -> dict:
+        """Stage k's option at design c solved (kept per option, and per input flow when it depends on it)."""
+        j = int(self.idx[c, k])
+        key = (k, j, int(self.flow_group[k][c])) if k in self.flow_group else (k, j)
+        if key not in self._solved:
+            kind = self.kinds[k]
+            before = kind.solve_count()
+            flow = self.flow_at(k, c) if k in self.flow_group else None
+            self._solved[key] = kind.solve(self.stages[k], self.option_at(k, c), self.objective, flow)
+            self.n_solves += kind.solve_count() - before
+        return self._solved[key]
+
+    def _lower_bounds(self) -> np.ndarray:
+        """Each design's cost whatever its solved stages give (their bounds; margins unknown)."""
+        if self.objective == "max_margin":
+            return -self.batch_min
+        bound = (self.batch_size if self.objective == "min_size" else self.batch_mass).copy()
+        for k in self.solved_k:
+            s, m_ = self._stage_bounds(k)
+            bound += s if self.objective == "min_size" else m_
+        return bound
+
+    def _stage_bounds(self, k: int) -> tuple:
+        """Stage k's (size, mass) lower bound of every design: per option, or for a stage sized by
+        its load per (option, input flow) while there are at most LOAD_BOUNDS_MAX of them."""
+        kind, st = self.kinds[k], self.stages[k]
+        if k in self.flow_group:
+            pairs, first, inv = np.unique(np.column_stack([self.idx[:, k], self.flow_group[k]]), axis=0,
+                                          return_index=True, return_inverse=True)
+            if len(pairs) <= LOAD_BOUNDS_MAX:
+                b = np.array([kind.bound_at(st, self.option_at(k, c), self.flow_at(k, c)) for c in first])
+                return b[inv.ravel(), 0], b[inv.ravel(), 1]
+        s, m_ = kind.bound(st, self.options[k])
+        return s[self.idx[:, k]], m_[self.idx[:, k]]
+
+    def _groups(self):
+        """(order, starts, ends, bound per group) of the designs that pass every batch check,
+        grouped by their solved stages' options (and input flows where the solve depends on it)."""
+        self.flow_group = self._flow_groups()
+        group_key = np.zeros(self.n_cand, dtype=np.int64)
+        for k in self.solved_k:
+            group_key = group_key * self.options[k]["ratio"].size + self.idx[:, k]
+            if k in self.flow_group:
+                group_key = group_key * (int(self.flow_group[k].max()) + 1) + self.flow_group[k]
+        cand = np.flatnonzero(self.batch_ok)
+        order = cand[np.argsort(group_key[cand], kind="stable")]
+        gk = group_key[order]
+        starts = np.flatnonzero(np.r_[True, gk[1:] != gk[:-1]]) if order.size else np.zeros(0, dtype=np.int64)
+        glb = np.minimum.reduceat(self._lower_bounds()[order], starts) if order.size else np.zeros(0)
+        return order, starts, np.r_[starts[1:], order.size], glb
+
+    def branch_and_bound(self, progress) -> None:
+        """Groups of designs sharing their solved options, solved best bound first while a bound can
+        still enter the ``top`` list; what each evaluated design costs is kept in ``self.ex``."""
+        n_cand, top = self.n_cand, self.top
+        self._solved = {}
+        # limiting checks and reasons as codes into lists (object arrays of ~10⁶ strings are slow)
+        labels = [f"{a}: {b}" for a, b in self.names] or [""]
+        self.ex = ex = dict(cost=np.full(n_cand, np.nan), mm=np.full(n_cand, np.nan), size=np.full(n_cand, np.nan),
+                            mass=np.full(n_cand, np.nan), feas=np.zeros(n_cand, dtype=bool),
+                            done=np.zeros(n_cand, dtype=bool), lim=self.batch_arg.astype(np.int64),
+                            why=np.full(n_cand, -1, dtype=np.int64), labels=labels, reasons=[])
+        order, starts, ends, glb = self._groups()
+        heap: list = []          # the `top` best costs so far, as a max-heap of −cost
+        for g in np.argsort(glb, kind="stable"):
+            if len(heap) >= top and glb[g] > -heap[0] + 1e-12 * abs(heap[0]):
+                break      # no design of this or any later group can enter the list
+            members = order[starts[g]:ends[g]]
+            sols = [self._solution(k, members[0]) for k in self.solved_k]
+            if progress is not None:
+                progress(int(np.count_nonzero(glb <= glb[g])), starts.size)
+            self._exact(members, sols)
+            for v in np.sort(ex["cost"][members][ex["feas"][members]])[:top]:
+                if len(heap) < top:
+                    heapq.heappush(heap, -float(v))
+                elif -v > heap[0]:
+                    heapq.heapreplace(heap, -float(v))
+
+    def _exact(self, members, sols) -> None:
+        """Cost, smallest margin, size, mass and feasibility of the designs ``members``, which share
+        their solved options (solutions ``sols``), written into ``ex``."""
+        ex = self.ex
+        gsize = gmass = 0.0
+        gmm, glim, gfeas, why = math.inf, "", True, ""
+        for k, sol in zip(self.solved_k, sols):
+            st, kind = self.stages[k], self.kinds[k]
+            m, name = min_margin(sol["margins"]) if sol["margins"] else (-math.inf, kind.unsolved_label)
+            if m < gmm:
+                gmm, glim = m, f"{st.name}: {name}"
+            if not sol["feasible"]:
+                gfeas, why = False, f"stage '{st.name}': {sol['reason']}"
+                continue
+            s, w = kind.solved_cost(st, sol)
+            gsize += s
+            gmass += w
+        ng = self.batch_min[members]
+        mm = np.minimum(ng, gmm)
+        size, mass = self.batch_size[members] + gsize, self.batch_mass[members] + gmass
+        ex["size"][members], ex["mass"][members], ex["mm"][members] = size, mass, mm
+        if glim:
+            ex["labels"].append(glim)
+            ex["lim"][members] = np.where(gmm < ng, len(ex["labels"]) - 1, ex["lim"][members])
+        ex["feas"][members] = gfeas & (mm >= 0)
+        if why:
+            ex["reasons"].append(why)
+            ex["why"][members] = len(ex["reasons"]) - 1
+        ex["done"][members] = True
+        ex["cost"][members] = {"min_size": size, "min_mass": mass, "max_margin": -mm}[self.objective]
+
+    # -- 6: the result
+    def no_split(self, why: str) -> DriveOptimum:
+        return DriveOptimum(success=False, message=f"no design: {why}", objective=self.objective, total_ratio=self.U,
+                            ratio_tol=self.tol, table=pd.DataFrame(), best=None, conflict=(f"ratio: {why}",),
+                            n_combinations=0, n_candidates=0, n_shift_solves=0, time_s=time.perf_counter() - self.t0)
+
+    def _row(self, c) -> dict:
+        row = {"total_ratio": float(np.prod(self.ratios[c])), "ratio_error": float(self.err[c])}
+        for k, (kind, st) in enumerate(zip(self.kinds, self.stages)):
+            row[f"{st.name}.ratio"] = float(self.ratios[c, k])
+            row.update(kind.design_columns(st, self.option_at(k, c), self.info[k], c))
+        for name, nk in self.key_n.items():
+            row[f"key '{name}'.n_keys"] = int(nk[c])
+        return row
+
+    def _solved_cols(self, c, solve=True) -> dict:
+        out = {}
+        for k in self.solved_k:
+            kind, st = self.kinds[k], self.stages[k]
+            sol = kind.solve(st, self.option_at(k, c), self.objective, self.flow_at(k, c)) if solve else None
+            out.update(kind.solved_columns(st, sol))
+        return out
+
+    def _ranked_rows(self, feas) -> list:
+        ex = self.ex
+        what = {"min_size": "size", "min_mass": "mass", "max_margin": "smallest margin"}[self.objective]
+        rows = []
+        for rank, c in enumerate(feas[:self.top]):
+            row = {"rank": rank + 1, "feasible": True, "size_mm2": ex["size"][c], "mass_kg": ex["mass"][c],
+                   "min_margin": ex["mm"][c], "limiting": ex["labels"][ex["lim"][c]], **self._row(c),
+                   **self._solved_cols(c)}
+            if rank == 0:
+                row["reason"] = "best"
+            else:
+                c0, d = ex["cost"][feas[0]], ex["cost"][c] - ex["cost"][feas[0]]
+                row["reason"] = (f"{what} {100 * abs(d) / max(abs(c0), 1e-300):.3g} % worse than rank 1"
+                                 if d > 1e-9 * max(abs(c0), 1e-300) else
+                                 "ties rank 1 on the objective; loses on ratio error or size")
+            rows.append(row)
+        return rows
+
+    def _fails(self, c) -> list:
+        """The checks design c fails (batch margins, then a solved stage's reason or margin)."""
+        ex, names, M = self.ex, self.names, self.M
+        fails = [f"{names[j][0]}: {names[j][1]} ({M[c, j]:+.3g})" for j in range(len(names)) if not M[c, j] >= 0]
+        if ex["why"][c] >= 0:
+            fails.append(ex["reasons"][ex["why"][c]])
+        elif ex["done"][c] and ex["mm"][c] < 0 and not fails:
+            fails.append(f"{ex['labels'][ex['lim'][c]]} ({ex['mm'][c]:+.3g})")
+        return fails
+
+    def _failing_rows(self) -> tuple[list, tuple]:
+        """The closest failing designs (largest smallest margin), each with the stage checks that fail;
+        and the first one's failing checks."""
+        ex = self.ex
+        bad = np.flatnonzero((ex["done"] & ~ex["feas"]) | ~self.batch_ok)
+        mm = np.where(ex["done"], ex["mm"], self.batch_min)[bad]
+        bad = bad[np.argsort(-np.where(np.isnan(mm), -np.inf, mm), kind="stable")][:INFEASIBLE_SHOWN]
+        rows, first = [], ()
+        for c in bad:
+            fails = self._fails(c)
+            known = bool(ex["done"][c]) or not self.solved_k
+            rows.append({"rank": None, "feasible": False,
+                         "size_mm2": ex["size"][c] if ex["done"][c] else (self.batch_size[c] if known else np.nan),
+                         "mass_kg": ex["mass"][c] if ex["done"][c] else (self.batch_mass[c] if known else np.nan),
+                         "min_margin": ex["mm"][c] if ex["done"][c] else self.batch_min[c],
+                         "limiting": ex["labels"][ex["lim"][c]], **self._row(c),
+                         **self._solved_cols(c, solve=bool(ex["done"][c])), "reason": "fails " + "; ".join(fails)})
+            first = first or tuple(fails)
+        return rows, first
+
+    def result(self) -> DriveOptimum:
+        ex, err = self.ex, self.err
+        feas = np.flatnonzero(ex["feas"])
+        feas = feas[np.lexsort((ex["size"][feas], np.round(err[feas], 12), np.round(ex["cost"][feas], 9)))]
+        failing, conflict = self._failing_rows()
+        table = pd.DataFrame(self._ranked_rows(feas) + failing)
+        if len(table):
+            table["rank"] = table["rank"].astype("Int64")     # failing designs have no rank
+        if feas.size:
+            c = feas[0]
+            best = self._fixed(c).analyse(self.objective)
+            msg = (f"u = {float(np.prod(self.ratios[c])):.6g} ({100 * float(err[c]):.3g} % off): size "
+                   f"{ex['size'][c]:.6g} mm², mass {ex['mass'][c]:.4g} kg, smallest margin {ex['mm'][c]:+.4f} "
+                   f"({ex['labels'][ex['lim'][c]]}); {int(ex['done'].sum())} of {self.n_cand} designs evaluated in full")
+            conflict = ()
+        else:
+            best = None
+            msg = ("no design passes every check; the closest fails " + "; ".join(conflict)) if conflict else \
+                "no design passes every check"
+        return DriveOptimum(success=bool(feas.size), message=msg, objective=self.objective, total_ratio=self.U,
+                            ratio_tol=self.tol, table=table, best=best, conflict=conflict,
+                            n_combinations=int(self.n_comb), n_candidates=int(self.n_cand),
+                            n_shift_solves=int(self.n_solves), time_s=time.perf_counter() - self.t0)
+
+    def _fixed(self, c):
+        """The drive with every free variable fixed at design c (shifts, teeth, chain row, ...)."""
+        new = [kind.fix(st, self.option_at(k, c), self.info[k], c, self.objective, self.flow_at(k, c))
+               for k, (kind, st) in enumerate(zip(self.kinds, self.stages))]
+        fixed = replace(self.drive, stages=tuple(new))
+        object.__setattr__(fixed, "_load_from_motor", self.drive._load_from_motor)
+        return fixed
+
+
+@lru_cache(maxsize=256)
+def _key_caps_cached(d, hub, crush, shear, end, max_keys):
+    from . import key
+
+    sh = Shaft(d, hub, 0, allowable_crush_mpa=crush, allowable_shear_mpa=shear, end=end, max_keys=max_keys)
+    sel = sh.select(1e-6)
+    caps = {}
+    for n_keys in (1, 2):
+        cap = key.capacity(d, sel.length_mm, crush, shear, end=end, n_keys=min(n_keys, max_keys))
+        caps[n_keys] = (cap.torque_crush_nm, cap.torque_shear_nm)
+    return sel.length_mm, caps
+
+
+def key_caps(sh: Shaft):
+    """(key length, {n_keys: (torque at the crushing limit, at the shear limit)}) of a hub [mm, N·m]."""
+    return _key_caps_cached(sh.d_mm, sh.hub_length_mm, sh.allowable_crush_mpa, sh.allowable_shear_mpa, sh.end,
+                            sh.max_keys)

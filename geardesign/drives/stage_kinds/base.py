@@ -1,0 +1,216 @@
+"""The stage protocol: what a kind of drive stage (a bought unit, a gear pair, a chain, ...) tells the
+drive, the search, the scenes and the diagram, and the registry that maps stage classes and kind
+names to their :class:`StageKind`.
+
+A stage kind is one object with these parts (defaults here fit a stage with nothing to choose):
+
+- **ratio**: :meth:`~StageKind.ratio_span` (the ratios the stage can take) and
+  :meth:`~StageKind.fixed_ratio` (the one it has when fully given);
+- **search options**: :meth:`~StageKind.options` (the alternatives inside a ratio window, as
+  arrays with a ``ratio`` column), :meth:`~StageKind.rows` (alternatives of equal ratio that
+  multiply the designs, e.g. catalog rows);
+- **margins in a batch**: :meth:`~StageKind.batch` (every margin, size and mass of many designs at
+  once), or, for a kind whose options are costly (``solved = True``), :meth:`~StageKind.solve` one
+  option at a time inside the branch and bound with :meth:`~StageKind.bound` below its cost;
+- **analyse**: :meth:`~StageKind.analyse` receives the flow into and out of the stage
+  (:class:`StageFlow`: speed rpm, torque N·m) and returns its checks, size, mass and summary;
+- **scenes**: :meth:`~StageKind.scene_keys` and :meth:`~StageKind.from_scene`;
+- **diagram**: :meth:`~StageKind.draw` and :attr:`~StageKind.color`.
+
+``register(kind)`` adds a kind (``unregister(name)`` removes one); the drive, the search, the scenes
+and the diagram find it by :func:`kind_of` (a stage object) or :func:`kind_named` (a scene's or a
+summary's ``kind``).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import GearDesignError
+
+__all__ = ["StageKind", "StageFlow", "Batch", "register", "unregister", "kind_of", "kind_named", "kind_names",
+           "kinds"]
+
+
+@dataclass(frozen=True)
+class StageFlow:
+    """The flow through one stage: its input shaft's speed [rpm] and torque [N·m] and its output
+    shaft's (n_out = n_in/u, T_out = T_in·u·η; the drive's power flow computes them)."""
+
+    n_in_rpm: float
+    torque_in_nm: float
+    n_out_rpm: float
+    torque_out_nm: float
+
+
+@dataclass
+class Batch:
+    """What :meth:`StageKind.batch` returns for N designs: ``margins`` {check: array (N,)},
+    ``size_mm2`` and ``mass_kg`` (arrays (N,) or 0.0), ``info`` (the kind's own arrays, read back
+    by its :meth:`~StageKind.design_columns` and :meth:`~StageKind.fix`)."""
+
+    margins: dict
+    size_mm2: object = 0.0
+    mass_kg: object = 0.0
+    info: object = None
+
+
+class StageKind:
+    """One kind of drive stage; subclass it and :func:`register` an instance.
+
+    ``name``: the kind's name (scenes' ``kind = ...``, summaries' ``kind``); ``stage_class``: the
+    dataclass of its stages (it must have ``name`` and ``efficiency``); ``color``: its fill in the
+    diagram; ``solved``: its options are solved one at a time in the branch and bound.
+    """
+
+    name: str = ""
+    stage_class: type = object
+    color: str = "#d9d9d9"
+    solved: bool = False
+    unsolved_label: str = "margins"   # what a solved option lacks when it has no margins
+
+    # -- ratio
+    def ratio_span(self, stage) -> tuple:
+        """(lowest, highest) ratio the stage can take."""
+        r = self.fixed_ratio(stage)
+        return (r, r)
+
+    def fixed_ratio(self, stage) -> float:
+        """The ratio of a fully given stage (``Drive.analyse`` needs it)."""
+        return float(stage.ratio)
+
+    # -- the search
+    def options(self, stage, ratio_lo: float, ratio_hi: float) -> dict:
+        """The stage's alternatives with a ratio in [ratio_lo, ratio_hi]: a dict of equal-length
+        arrays with at least ``ratio``."""
+        r = self.fixed_ratio(stage)
+        ratio = np.array([r])
+        return dict(ratio=ratio if ratio_lo * (1 - 1e-12) <= r <= ratio_hi * (1 + 1e-12) else ratio[:0])
+
+    def rows(self, stage):
+        """Alternatives of the same ratio that multiply every design (an int array), or None."""
+        return None
+
+    def batch(self, stage, designs) -> Batch:
+        """Margins, size and mass of many designs at once (``designs``: a
+        :class:`~geardesign.drives.search.Designs` view of this stage)."""
+        return Batch(margins={})
+
+    def solve(self, stage, option: dict, objective: str, flow=None) -> dict:
+        """One option solved (``solved`` kinds): dict(feasible, reason, margins, ...). ``flow``: the
+        :class:`StageFlow` into the stage when :meth:`load_dependent` says the solve needs it, else None."""
+        raise NotImplementedError(f"stage kind {self.name!r} solves nothing one by one")
+
+    def solve_count(self) -> int:
+        """How many costly solves the kind has done so far (for the optimum's count)."""
+        return 0
+
+    def solved_cost(self, stage, sol: dict) -> tuple:
+        """(size mm², mass kg) of a feasible solved option."""
+        return 0.0, 0.0
+
+    def bound(self, stage, options: dict) -> tuple:
+        """Lower bounds (size mm², mass kg) of each option whatever the solve gives (arrays)."""
+        zero = np.zeros(options["ratio"].shape)
+        return zero, zero
+
+    def bound_at(self, stage, option: dict, flow) -> tuple:
+        """Lower bounds (size mm², mass kg) of one option at one input flow (a load-dependent kind;
+        by default its :meth:`bound`)."""
+        size, mass = self.bound(stage, {k: np.atleast_1d(v) for k, v in option.items()})
+        return float(size[0]), float(mass[0])
+
+    def load_dependent(self, stage) -> bool:
+        """True when a solved option depends on the flow into the stage (sized by its load)."""
+        return False
+
+    def design_columns(self, stage, option: dict, info, c: int) -> dict:
+        """The columns of design ``c`` in the optimum's table (besides ``<name>.ratio``)."""
+        return {}
+
+    def solved_columns(self, stage, sol) -> dict:
+        """The columns a solved option adds to the table (``sol`` None: not solved, NaN)."""
+        return {}
+
+    def fix(self, stage, option: dict, info, c: int, objective: str, flow=None):
+        """The stage with every free variable fixed at design ``c``."""
+        return stage
+
+    # -- analyse
+    def analyse(self, stage, flow: StageFlow, objective: str) -> dict:
+        """dict(stage, margins {check: float}, size, mass, summary {name, kind, ratio, efficiency, ...})."""
+        raise NotImplementedError
+
+    # -- scenes
+    def scene_keys(self) -> dict:
+        """The keys of a ``[[drive.stage]]`` table of this kind besides ``kind`` and ``name``:
+        name -> dict(kind=..., required=, default=, lo=, hi=, lo_open=, choices=, length=) (the
+        scene schema's key kinds), or name -> dict(table=<a shared scene table>, without=(...))."""
+        return {}
+
+    def scene_spec(self, spec: dict, folder) -> dict:
+        """The validated table with paths made relative to the scene's ``folder``."""
+        return spec
+
+    def from_scene(self, spec: dict):
+        """The stage of a validated ``[[drive.stage]]`` table (``kind`` removed)."""
+        return self.stage_class(**spec)
+
+    # -- diagram
+    def first_offset(self, summary: dict) -> float:
+        """How far right of the input block the first shaft sits when this stage comes first."""
+        return 0.0
+
+    def draw(self, canvas, x: float, summary: dict) -> tuple:
+        """Draw the stage from shaft x (``canvas``: :class:`~geardesign.drives.diagram.Canvas`);
+        (x of its output shaft, the label above it or '')."""
+        canvas.box(x + 0.15, 1.3, 0.9, self.color, f"{summary['name']}\nu = {summary['ratio']:g}")
+        return x + 1.6, ""
+
+
+_BY_NAME: dict = {}
+_BY_CLASS: dict = {}
+
+
+def register(kind: StageKind) -> StageKind:
+    """Add ``kind`` (replacing a kind of the same name); returns it."""
+    if not isinstance(kind, StageKind) or not kind.name or not isinstance(kind.stage_class, type):
+        raise GearDesignError(f"a stage kind must be a StageKind with a name and a stage_class, got {kind!r}")
+    unregister(kind.name)
+    _BY_NAME[kind.name] = kind
+    _BY_CLASS[kind.stage_class] = kind
+    return kind
+
+
+def unregister(name: str) -> None:
+    """Remove the kind ``name`` (nothing when there is none)."""
+    kind = _BY_NAME.pop(name, None)
+    if kind is not None:
+        _BY_CLASS.pop(kind.stage_class, None)
+
+
+def kinds() -> tuple:
+    """Every registered kind, in the order registered."""
+    return tuple(_BY_NAME.values())
+
+
+def kind_names() -> tuple:
+    return tuple(_BY_NAME)
+
+
+def kind_of(stage) -> StageKind:
+    """The kind of a stage object; a GearDesignError naming the stage classes when it has none."""
+    for cls in type(stage).__mro__:
+        if cls in _BY_CLASS:
+            return _BY_CLASS[cls]
+    names = [k.stage_class.__name__ for k in _BY_NAME.values()]
+    allowed = ", ".join(names[:-1]) + " or " + names[-1] if len(names) > 1 else "".join(names)
+    raise GearDesignError(f"stages must be {allowed}, got {type(stage).__name__}")
+
+
+def kind_named(name: str) -> StageKind:
+    """The kind called ``name``."""
+    if name not in _BY_NAME:
+        raise GearDesignError(f"stage kind must be one of {', '.join(repr(k) for k in _BY_NAME)}, got {name!r}")
+    return _BY_NAME[name]

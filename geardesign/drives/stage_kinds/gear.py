@@ -1,0 +1,340 @@
+"""The external gear pair (:class:`~geardesign.drives.stages.GearStage`) as a stage kind: tooth pairs
+as options, each solved for its shifts in the branch and bound (kept in a cache between calls),
+base circles as the bound below its cost; drawn as two meshing circles.
+
+By load: a stage with a ``material`` gets the ISO 6336 strength checks at the torque and speed
+flowing into it (:mod:`.gear_strength`: ``contact_strength``, ``root_strength1``, ``root_strength2``);
+a stage whose module is None has its module (and face width, when not given) chosen per design
+from the ISO 54 series so that they hold. Another sizing rule can be installed, ``set_sizing(fn)``::
+
+    fn(torque_nm, speed_rpm, z1, z2, *, modules, stage) -> [(m_mm, face_width_mm or None), ...]
+
+``modules`` is the ISO 54 series (``catalogs/modules_iso54.csv``, both series) the module must be
+taken from; the candidates come smallest (preferred) first, and the stage takes the first whose
+checks hold. A stage with ``m=None`` needs a material or such a function.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from functools import lru_cache
+
+import numpy as np
+
+from ...errors import GearDesignError
+from ...validate import one_number, require_range
+from ..limits import MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
+from ..stages import FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2
+from .base import StageKind
+from .gear_strength import strength_margins, strength_sizes
+
+__all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution"]
+
+
+@lru_cache(maxsize=SHIFT_CACHE)
+def shift_solution(m, z1, z2, checks_key, beta_deg, face_width_mm, objective) -> dict:
+    """The shifts of one tooth pair by optimize_shifts (exact), with the pair's geometry and margins."""
+    from ...gears.pair import GearPair
+    from ...shifts.optimize import optimize_shifts
+
+    checks = dict(checks_key) or None
+    try:
+        r = optimize_shifts(int(z1), int(z2), objective, checks, "exact", m=m, beta_deg=beta_deg, face_width=face_width_mm)
+    except GearDesignError as exc:
+        return dict(feasible=False, reason=str(exc), margins={})
+    if not (r.success and not r.conflict):
+        why = "conflict: " + ", ".join(r.conflict) if r.conflict else r.message
+        return dict(feasible=False, reason=why, margins=dict(r.margins))
+    geo = GearPair(m, int(z1), int(z2), r.x1, r.x2, beta_deg=beta_deg, face_width=face_width_mm).geometry()
+    return dict(feasible=True, reason="", x1=r.x1, x2=r.x2, margins=dict(r.margins), a_w=geo.a_w, da1=geo.da1,
+                da2=geo.da2)
+
+
+def gear_solution(stage: GearStage, z1: int, z2: int, objective: str) -> dict:
+    """Shifts, geometry and margins of one tooth pair of a gear stage of known module (fixed or
+    solved shifts)."""
+    if not stage.free_shifts:
+        pair = stage.fixed_pair()
+        table = pair.checks(**{"jamming": False, **(stage.checks or {})})
+        geo = pair.geometry()
+        margins = dict(zip(table["check"], table["margin"].astype(float)))
+        failing = [k for k, v in margins.items() if v < -MARGIN_TOL]
+        return dict(feasible=not failing, reason=("fails " + ", ".join(failing)) if failing else "", x1=pair.x1,
+                    x2=pair.x2, margins=margins, a_w=geo.a_w, da1=geo.da1, da2=geo.da2)
+    shift_objective = stage.shift_objective or ("max_margin" if objective == "max_margin" else "max_x_sum")
+    return shift_solution(stage.m, int(z1), int(z2), stage.checks_key(), stage.beta_deg, stage.face_width_mm,
+                          shift_objective)
+
+
+def _base_circle_bounds(stage: GearStage, m: float, z1, z2):
+    """Lower bounds of a gear stage's size [mm²] whatever its shifts: base circles (below every tip
+    circle) at the centre distance a·cos α_t (below every operating one); and the blank discs'
+    mass on those circles at the stage's face width [kg]."""
+    alpha_t = math.atan(math.tan(math.radians(20.0)) / math.cos(math.radians(stage.beta_deg)))
+    scale = m / math.cos(math.radians(stage.beta_deg))
+    db1, db2 = scale * z1 * math.cos(alpha_t), scale * z2 * math.cos(alpha_t)
+    a_cos = 0.5 * scale * (z1 + z2) * math.cos(alpha_t)
+    return stage_area_mm2(a_cos, db1, db2), db1, db2
+
+
+_SIZING = [None]
+
+
+def set_sizing(fn):
+    """Install the function that sizes gear stages given without a module (None removes it);
+    returns the one installed before."""
+    if fn is not None and not callable(fn):
+        raise GearDesignError(f"the gear sizing function must be callable, got {type(fn).__name__}")
+    before, _SIZING[0] = _SIZING[0], fn
+    return before
+
+
+def _series() -> np.ndarray:
+    from ...catalogs.tables import module_series
+    return module_series()
+
+
+class GearKind(StageKind):
+    name = "gear"
+    stage_class = GearStage
+    color = "#9ecae1"
+    solved = True
+    unsolved_label = "shifts"
+
+    # -- ratio and options
+    def ratio_span(self, stage) -> tuple:
+        if stage.z1 is not None and stage.z2 is not None:
+            return (stage.z2 / stage.z1, stage.z2 / stage.z1)
+        return stage.ratio_range
+
+    def fixed_ratio(self, stage) -> float:
+        if stage.z1 is None or stage.z2 is None:
+            raise GearDesignError(f"analyse() needs every ratio: stage '{stage.name}' has free tooth counts "
+                                  f"(give z1 and z2, or use optimize())")
+        return stage.z2 / stage.z1
+
+    def options(self, stage, ratio_lo: float, ratio_hi: float) -> dict:
+        z1, z2 = stage.pairs(ratio_lo, ratio_hi)
+        return dict(z1=z1, z2=z2, ratio=z2 / z1)
+
+    # -- by load
+    def load_dependent(self, stage) -> bool:
+        return stage.m is None or stage.material is not None
+
+    def sizes(self, stage, torque_nm: float, speed_rpm: float, z1: int, z2: int) -> list:
+        """The installed sizing function's (m, face width) candidates for one tooth pair at its load, checked."""
+        from ...gears.geometry import require_module
+
+        fn = _SIZING[0]
+        if fn is None:
+            raise GearDesignError(f"gear stage '{stage.name}' has no module (m=None): its module is chosen by its "
+                                  f"load, which needs a material (the ISO 6336 sizing) or a sizing function "
+                                  f"(geardesign.drives.stage_kinds.gear.set_sizing); none is installed")
+        series = _series()
+        out = []
+        for m, b in fn(float(torque_nm), float(speed_rpm), int(z1), int(z2), modules=series, stage=stage):
+            m = one_number("m (module)", require_module(m))
+            if not np.any(np.isclose(series, m, rtol=1e-12, atol=0)):
+                raise GearDesignError(f"gear stage '{stage.name}': the sizing function gave m = {m:g} mm, not a "
+                                      f"module of the ISO 54 series")
+            if b is not None:
+                b = one_number("face_width_mm", require_range("face_width_mm", b, 0.0, 1e4, lo_open=True, unit="mm"))
+            out.append((m, b))
+        if not out:
+            raise GearDesignError(f"gear stage '{stage.name}': the sizing function gave no module for z1/z2 = "
+                                  f"{z1}/{z2} at {torque_nm:.6g} N·m, {speed_rpm:.6g} rpm")
+        return out
+
+    @staticmethod
+    def _with_strength(stage, sol: dict, z1: int, z2: int, flow) -> dict:
+        """``sol`` with the stage's strength checks at ``flow`` (a stage of known module with a material)."""
+        if stage.material is None or "x1" not in sol:
+            return sol
+        sm = strength_margins(stage, stage.m, stage.width_mm, z1, z2, sol["x1"], sol["x2"], flow.torque_in_nm,
+                              flow.n_in_rpm)
+        sm = {k: float(v) for k, v in sm.items()}
+        out = dict(sol, margins={**sol["margins"], **sm})
+        failing = [k for k, v in sm.items() if not v >= -MARGIN_TOL]
+        if failing:
+            why = "fails " + ", ".join(failing)
+            out.update(feasible=False, reason=f"{sol['reason']}; {why}" if sol["reason"] else why)
+        return out
+
+    def _candidate(self, stage, m, b, z1, z2, objective, flow) -> dict:
+        st = replace(stage, m=m, face_width_mm=b)
+        return dict(self._with_strength(st, gear_solution(st, z1, z2, objective), z1, z2, flow), m=m, face_width_mm=b)
+
+    def _sized(self, stage, z1, z2, objective, flow) -> dict:
+        """The first sized candidate whose checks hold (else the last tried, or the closest)."""
+        if _SIZING[0] is None and stage.material is not None:
+            return self._strength_sized(stage, z1, z2, objective, flow)
+        for m, b in self.sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2):
+            sol = self._candidate(stage, m, b, z1, z2, objective, flow)
+            if sol["feasible"]:
+                break
+        return sol
+
+    def _strength_sized(self, stage, z1, z2, objective, flow) -> dict:
+        """Module and width by the strength checks: shifts of the pair at m = 1 (the geometric checks of a
+        spur pair do not depend on the module), every series module × width checked at once, then the
+        smallest candidates re-solved at their own module until one holds every check."""
+        ref = gear_solution(replace(stage, m=1.0), z1, z2, objective)
+        if "x1" not in ref:
+            return dict(ref, m=math.nan, face_width_mm=None)
+        cands, closest = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
+                                        _series(), MARGIN_TOL)
+        for m, b in cands[:SIZING_TRIES]:
+            sol = self._candidate(stage, m, b, z1, z2, objective, flow)
+            if sol["feasible"]:
+                return sol
+        if cands:
+            return sol
+        sol = self._candidate(stage, closest[0], closest[1], z1, z2, objective, flow)
+        return dict(sol, reason=f"no module of the ISO 54 series carries the load (closest m = {closest[0]:g} mm, "
+                                f"b = {closest[1]:g} mm: {sol['reason']})")
+
+    # -- the branch and bound
+    def solve(self, stage, option: dict, objective: str, flow=None) -> dict:
+        z1, z2 = int(option["z1"]), int(option["z2"])
+        if stage.m is None:
+            return self._sized(stage, z1, z2, objective, flow)
+        return self._with_strength(stage, gear_solution(stage, z1, z2, objective), z1, z2, flow)
+
+    def solve_count(self) -> int:
+        return shift_solution.cache_info().misses
+
+    @staticmethod
+    def _width(stage, sol) -> float:
+        if stage.m is not None:
+            return stage.width_mm
+        b = sol.get("face_width_mm")
+        return b if b is not None else FACE_WIDTH_PITCHES * math.pi * sol["m"]
+
+    def solved_cost(self, stage, sol: dict) -> tuple:
+        w = self._width(stage, sol)
+        return (float(stage_area_mm2(sol["a_w"], sol["da1"], sol["da2"])),
+                float(disc_mass_kg(sol["da1"], w) + disc_mass_kg(sol["da2"], w)))
+
+    def bound(self, stage, options: dict) -> tuple:
+        z1, z2 = options["z1"].astype(float), options["z2"].astype(float)
+        if stage.m is None:     # sized by load, whatever the load: the series' smallest module, no mass
+            size, _, _ = _base_circle_bounds(stage, float(_series().min()), z1, z2)
+            return size, np.zeros(z1.shape)
+        size, db1, db2 = _base_circle_bounds(stage, stage.m, z1, z2)
+        return size, disc_mass_kg(db1, stage.width_mm) + disc_mass_kg(db2, stage.width_mm)
+
+    def bound_at(self, stage, option: dict, flow) -> tuple:
+        """A stage sized by load at one flow: base circles of the smallest module the sizing function
+        offers, blanks of its narrowest face width (the solve takes one of those candidates)."""
+        if stage.m is not None or _SIZING[0] is None:   # the strength sizing's candidates cost a solve
+            return super().bound_at(stage, option, flow)
+        z1, z2 = int(option["z1"]), int(option["z2"])
+        cands = self.sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2)
+        m = min(c[0] for c in cands)
+        w = min(b if b is not None else FACE_WIDTH_PITCHES * math.pi * mc for mc, b in cands)
+        size, db1, db2 = _base_circle_bounds(stage, m, float(z1), float(z2))
+        return float(size), float(disc_mass_kg(db1, w) + disc_mass_kg(db2, w))
+
+    def design_columns(self, stage, option: dict, info, c: int) -> dict:
+        return {f"{stage.name}.z1": int(option["z1"]), f"{stage.name}.z2": int(option["z2"])}
+
+    def solved_columns(self, stage, sol) -> dict:
+        ok = sol is not None and sol["feasible"]
+        out = {f"{stage.name}.x1": sol["x1"] if ok else np.nan, f"{stage.name}.x2": sol["x2"] if ok else np.nan,
+               f"{stage.name}.a_w_mm": sol["a_w"] if ok else np.nan}
+        if stage.m is None:
+            out[f"{stage.name}.m"] = sol["m"] if ok else np.nan
+            out[f"{stage.name}.face_width_mm"] = self._width(stage, sol) if ok else np.nan
+        return out
+
+    def fix(self, stage, option: dict, info, c: int, objective: str, flow=None):
+        z1, z2 = int(option["z1"]), int(option["z2"])
+        sol = self.solve(stage, option, objective, flow)
+        if stage.m is None:
+            stage = replace(stage, m=sol["m"], face_width_mm=sol["face_width_mm"])
+        return replace(stage, z1=z1, z2=z2, x1=sol["x1"], x2=sol["x2"])
+
+    # -- analyse
+    def analyse(self, stage, flow, objective: str) -> dict:
+        """A gear stage at its tooth counts (free shifts solved; a free module sized at the flow): its
+        checks (with a material, its strength at the flow too), size and mass."""
+        from ...gears.pair import GearPair
+
+        st = stage
+        if st.m is None:
+            sol = self._sized(st, st.z1, st.z2, objective, flow)
+            if not math.isfinite(sol["m"]):
+                raise GearDesignError(f"stage '{st.name}': z1/z2 = {st.z1}/{st.z2} has no feasible shifts "
+                                      f"({sol['reason']})")
+            st = replace(st, m=sol["m"], face_width_mm=sol["face_width_mm"])
+        sol = gear_solution(st, st.z1, st.z2, objective)
+        if not sol["feasible"] and "x1" not in sol:
+            raise GearDesignError(f"stage '{st.name}': z1/z2 = {st.z1}/{st.z2} has no feasible shifts ({sol['reason']})")
+        pair = GearPair(st.m, st.z1, st.z2, sol["x1"], sol["x2"], beta_deg=st.beta_deg, face_width=st.face_width_mm)
+        table = pair.checks(**{"jamming": False, **(st.checks or {})})
+        geo = pair.geometry()
+        out = dict(stage=st, pair=pair, checks=table, margins=dict(zip(table["check"], table["margin"].astype(float))),
+                   size=float(stage_area_mm2(geo.a_w, geo.da1, geo.da2)),
+                   mass=float(disc_mass_kg(geo.da1, st.width_mm) + disc_mass_kg(geo.da2, st.width_mm)),
+                   summary=dict(name=st.name, kind="gear", m=st.m, z1=st.z1, z2=st.z2, x1=pair.x1, x2=pair.x2,
+                                a_w_mm=geo.a_w, da1_mm=geo.da1, da2_mm=geo.da2, ratio=st.z2 / st.z1,
+                                efficiency=st.efficiency))
+        if st.material is not None:
+            self._analyse_strength(st, pair, flow, out)
+        return out
+
+    @staticmethod
+    def _analyse_strength(st, pair, flow, out: dict) -> None:
+        """The strength checks at the flow into ``out``'s margins, the StrengthResult (its factor table)
+        as ``out["strength"]`` and the face width in the summary."""
+        from ...gears.strength import Load, strength
+
+        sm = strength_margins(st, st.m, st.width_mm, st.z1, st.z2, pair.x1, pair.x2, flow.torque_in_nm, flow.n_in_rpm)
+        out["margins"].update({k: float(v) for k, v in sm.items()})
+        out["strength"] = strength(pair, Load(torque_nm=flow.torque_in_nm, n_rpm=flow.n_in_rpm), st.material,
+                                   face_width_mm=st.width_mm)
+        out["summary"]["face_width_mm"] = st.width_mm
+
+    # -- scenes
+    def scene_keys(self) -> dict:
+        from ...gears.geometry import M_RANGE_MM, X_ABS_MAX
+        from ...gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
+        from ...shifts.objectives import OBJECTIVES
+        from ..stages import EFFICIENCY_RANGE
+
+        f, i = "float", "int"
+        return {"module": dict(kind=f, required=True, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
+                "z1": dict(kind=i, lo=Z_MIN, hi=Z_MAX), "z2": dict(kind=i, lo=Z_MIN, hi=Z_MAX),
+                "x1": dict(kind=f, lo=-X_ABS_MAX, hi=X_ABS_MAX), "x2": dict(kind=f, lo=-X_ABS_MAX, hi=X_ABS_MAX),
+                "efficiency": dict(kind=f, default=0.98, lo=EFFICIENCY_RANGE[0], hi=EFFICIENCY_RANGE[1], lo_open=True),
+                "beta_deg": dict(kind=f, default=0.0, lo=BETA_RANGE_DEG[0], hi=BETA_RANGE_DEG[1]),
+                "face_width_mm": dict(kind=f, lo=FACE_WIDTH_RANGE_MM[0], hi=FACE_WIDTH_RANGE_MM[1], lo_open=True),
+                "z1_range": dict(kind="ints", lo=Z_MIN, hi=Z_MAX, length=2), "z2_max": dict(kind=i, lo=Z_MIN, hi=Z_MAX),
+                "ratio_range": dict(kind="floats", lo=1.0, hi=100.0, length=2),
+                "shift_objective": dict(kind="choice", choices=tuple(OBJECTIVES)),
+                "checks": dict(table="checks", without=("jamming",))}
+
+    def from_scene(self, spec: dict):
+        kw = dict(spec)
+        kw["m"] = kw.pop("module")
+        kw["checks"] = dict(kw["checks"]) if kw.get("checks") else None
+        for k in ("z1_range", "ratio_range"):
+            if k in kw:
+                kw[k] = tuple(kw[k])
+        return GearStage(**kw)
+
+    # -- diagram
+    def first_offset(self, summary: dict) -> float:
+        return 0.9 / max(1.0, summary.get("ratio", 1.0))
+
+    def draw(self, canvas, x: float, summary: dict) -> tuple:
+        """Two meshing circles, radii in the ratio of the teeth."""
+        s = summary
+        r1 = 0.9 / max(1.0, s["ratio"])
+        r2 = r1 * s["ratio"]
+        r1, r2 = (0.9 * r1 / max(r1, r2), 0.9 * r2 / max(r1, r2))
+        for xc, r in ((x, r1), (x + r1 + r2, r2)):
+            canvas.circle(xc, r, self.color, alpha=0.9)
+        text = (f"{s['name']}: z {s['z1']}/{s['z2']}, m {s['m']:g}\n"
+                f"x {s['x1']:.3f}/{s['x2']:.3f}, a_w {s['a_w_mm']:.1f} mm")
+        return x + r1 + r2, text

@@ -1,0 +1,118 @@
+"""A gear stage sized by its load (GearStage(m=None)): the plumbing for load-based sizing, exercised with
+a stand-in sizing function written here (not a strength model: the ISO 6336 model plugs into the same
+hook). The stand-in takes the smallest ISO 54 module whose tangential load per face width stays
+under an allowed line load w: F_t = 2000·T/(m·z1) [N] over b = 10·m [mm], so m ≥ √(200·T/(z1·w)).
+The drive must hand each gear stage its own flow (T = P/ω·∏u·η upstream, worked by hand here), size
+it per design in the search, and find the optimum an exhaustive enumeration written here finds."""
+import math
+
+import pytest
+
+import geardesign as gd
+from geardesign.drives.stage_kinds import set_sizing
+from geardesign.errors import GearDesignError
+from geardesign.shifts.optimize import optimize_shifts
+
+# ISO 54:1996 modules 1 … 8 mm, series I and II (the standard's table; the bundled series holds them)
+ISO54 = (1, 1.125, 1.25, 1.375, 1.5, 1.75, 2, 2.25, 2.5, 2.75, 3, 3.5, 4, 4.5, 5, 5.5, 6, 7, 8)
+W_N_PER_MM = 60.0
+SEEN = []
+
+
+def rule_module(torque_nm, z1):
+    need = math.sqrt(200 * torque_nm / (z1 * W_N_PER_MM))
+    return min(m for m in ISO54 if m >= need)
+
+
+def stand_in(torque_nm, speed_rpm, z1, z2, *, modules, stage):
+    SEEN.append((torque_nm, speed_rpm, z1, z2, stage.material))
+    assert set(ISO54) <= set(modules.tolist())
+    need = math.sqrt(200 * torque_nm / (z1 * W_N_PER_MM))
+    return [(m, 10 * m) for m in modules if m >= need][:3]
+
+
+@pytest.fixture
+def sizing():
+    before = set_sizing(stand_in)
+    SEEN.clear()
+    yield
+    set_sizing(before)
+
+
+def _omega(n_rpm):
+    return 2 * math.pi * n_rpm / 60
+
+
+def test_a_stage_without_module_is_accepted_and_refused_without_a_sizing_function():
+    st = gd.GearStage(m=None, face_width_mm=None, z1=20, z2=60)
+    assert st.m is None and st.material is None
+    d = gd.Drive(power_kw=4, n_in_rpm=1500, stages=[st])
+    with pytest.raises(GearDesignError, match="no module .m=None.*needs a material .*set_sizing.*none is installed"):
+        d.analyse()
+    with pytest.raises(GearDesignError, match="m=None"):
+        st.width_mm
+
+
+def test_analyse_sizes_the_stage_at_the_torque_it_carries(sizing):
+    st = gd.GearStage(z1=20, z2=60, name="C45 pair")
+    a = gd.Drive(power_kw=4, n_in_rpm=1500, stages=[gd.GivenStage(2, 0.95), st]).analyse()
+    t_in = 4000 / _omega(1500) * 2 * 0.95                  # 48.38 N·m into the gear at 750 rpm
+    assert SEEN[0][:4] == pytest.approx((t_in, 750, 20, 60), rel=1e-14)
+    assert SEEN[0][4] is None
+    m = rule_module(t_in, 20)                              # √(200·48.38/(20·60)) = 2.84 -> 3
+    s = a.stages[1]["summary"]
+    assert s["m"] == m == 3
+    assert a.stages[1]["flow"].torque_in_nm == pytest.approx(t_in, rel=1e-14)
+    # the mass model takes the sized face width b = 10·m: steel discs of the tip circles
+    mass = 7850e-9 * math.pi / 4 * (s["da1_mm"] ** 2 + s["da2_mm"] ** 2) * 10 * m
+    assert a.mass_kg == pytest.approx(mass, rel=1e-13)
+
+
+def test_a_module_outside_the_series_is_refused(sizing):
+    set_sizing(lambda *a, modules, stage: [(2.7, None)])
+    with pytest.raises(GearDesignError, match="m = 2.7 mm, not a module of the ISO 54 series"):
+        gd.Drive(power_kw=4, n_in_rpm=1500, stages=[gd.GearStage(z1=20, z2=60)]).analyse()
+
+
+def _exhaustive(objective):
+    """Every tooth pair of both stages inside the window, the second sized by the rule at its own
+    torque, shifts by optimize_shifts (max_x_sum), sizes and masses by the drive's models."""
+    best = None
+    for z2a in range(51, 77):
+        for z2b in range(43, 69):
+            ua, ub = z2a / 17, z2b / 17
+            if not (3 <= ua <= 4.5 and 2.5 <= ub <= 4) or abs(ua * ub - 12) / 12 > 0.03:
+                continue
+            t_in = 3000 / _omega(1450) * ua * 0.98
+            cost = 0.0
+            for m, z2, b in ((2, z2a, 4 * math.pi * 2), (rule_module(t_in, 17), z2b, None)):
+                r = optimize_shifts(17, z2, "max_x_sum", None, "exact", m=m)
+                geo = gd.GearPair(m, 17, z2, r.x1, r.x2).geometry()
+                width = b if b is not None else 10 * m
+                size = (geo.a_w + (geo.da1 + geo.da2) / 2) * max(geo.da1, geo.da2)
+                mass = 7850e-9 * math.pi / 4 * (geo.da1 ** 2 + geo.da2 ** 2) * width
+                cost += size if objective == "min_size" else mass
+            key = (round(cost, 9), round(abs(ua * ub - 12) / 12, 12))
+            if best is None or key < best[0]:
+                best = (key, z2a, z2b, rule_module(t_in, 17))
+    return best
+
+
+@pytest.mark.parametrize("objective", ["min_size", "min_mass"])
+def test_the_search_sizes_each_design_at_its_own_load(sizing, objective):
+    stages = [gd.GearStage(2, z1_range=(17, 17), ratio_range=(3, 4.5), name="g1"),
+              gd.GearStage(None, z1_range=(17, 17), ratio_range=(2.5, 4), name="g2")]
+    r = gd.Drive(power_kw=3, n_in_rpm=1450, stages=stages).optimize(12, 0.03, objective, top=10)
+    ok = r.table[r.table["feasible"]]
+    for _, row in ok.iterrows():       # every listed design sized at the torque of its own split
+        t_in = 3000 / _omega(1450) * row["g1.ratio"] * 0.98
+        assert row["g2.m"] == rule_module(t_in, 17)
+    # the second stage's input torque spans 3/(ω)·u1·0.98 over u1 in [3, 4.5]: the rule's bound
+    # √(200·T/(17·60)) runs 3.37 … 4.13 mm, so the listed designs carry different modules
+    assert len(set(ok["g2.m"])) >= 2
+    want = _exhaustive(objective)
+    best = r.table.iloc[0]
+    assert (best["g1.z2"], best["g2.z2"], best["g2.m"]) == (want[1], want[2], want[3])
+    assert r.best.stages[1]["summary"]["m"] == want[3]
+    cost = r.best.size_mm2 if objective == "min_size" else r.best.mass_kg
+    assert cost == pytest.approx(want[0][0], rel=1e-9)

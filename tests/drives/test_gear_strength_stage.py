@@ -1,0 +1,94 @@
+"""Gear stages by the load they carry, with the ISO 6336 model (geardesign.gears.strength): a stage with a
+material gets contact and root strength checks at the torque and speed the drive's flow brings it (worked
+by hand here: T = P/ω·∏u·η upstream), each equal to the pair's own StrengthResult (GearPair.strength) at
+that load; a given module too small fails naming the check; a stage without a module takes the smallest
+ISO 54 module, and at it the narrowest face width b = ⌈ψ_d·d1⌉ (ψ_d = 0.2 … 1.0 by 0.05, the documented
+range), that holds every check — the next smaller module at every width and the next narrower width are
+shown to fail, by the pair's own StrengthResult."""
+import math
+
+import numpy as np
+import pytest
+
+import geardesign as gd
+from geardesign.gears.strength import Load
+
+# ISO 54:1996 modules 1 … 8 mm, series I and II
+ISO54 = (1, 1.125, 1.25, 1.375, 1.5, 1.75, 2, 2.25, 2.5, 2.75, 3, 3.5, 4, 4.5, 5, 5.5, 6, 7, 8)
+PSI = np.round(np.arange(0.2, 1.0 + 1e-9, 0.05), 10)
+
+
+def _omega(n_rpm):
+    return 2 * math.pi * n_rpm / 60
+
+
+def _margins(res):
+    return {"contact_strength": min(res.S_H1, res.S_H2) / res.S_Hmin - 1, "root_strength1": res.S_F1 / res.S_Fmin - 1,
+            "root_strength2": res.S_F2 / res.S_Fmin - 1}
+
+
+def _pair_margins(m, b, x1, x2, torque_nm, n_rpm, z1=20, z2=60, material="42CrMo4"):
+    pair = gd.GearPair(m, z1, z2, x1, x2, face_width=b)
+    return _margins(pair.strength(Load(torque_nm=torque_nm, n_rpm=n_rpm), material))
+
+
+def test_the_checks_table_gains_the_strength_checks_at_the_stages_own_load():
+    d = gd.Drive(power_kw=7.5, n_in_rpm=1450, stages=[gd.GivenStage(2, 0.95, "belt"),
+                                                      gd.GearStage(4, z1=20, z2=60, face_width_mm=40, material="42CrMo4")])
+    a = d.analyse()
+    t_in = 7500 / _omega(1450) * 2 * 0.95                 # 93.82 N·m into the pair at 725 rpm
+    s = a.stages[1]["summary"]
+    want = _pair_margins(4, 40, s["x1"], s["x2"], t_in, 725)
+    got = a.checks[a.checks["item"] == "gear"].set_index("check")["margin"]
+    for name, v in want.items():
+        assert got[name] == pytest.approx(v, rel=1e-12)
+    kept = _margins(a.stages[1]["strength"])         # the StrengthResult (factor table) kept in the analysis
+    assert kept == pytest.approx(want, rel=1e-12)
+
+
+def test_a_given_module_that_cannot_carry_the_load_fails_naming_the_check():
+    stage = gd.GearStage(1.5, z1=20, z2=60, material="42CrMo4")
+    a = gd.Drive(power_kw=7.5, n_in_rpm=1450, stages=[stage]).analyse()
+    t_in = 7500 / _omega(1450)                             # 49.39 N·m on the pinion
+    s = a.stages[0]["summary"]
+    want = _pair_margins(1.5, 4 * math.pi * 1.5, s["x1"], s["x2"], t_in, 1450)   # the mass model's b = 4πm
+    assert want["contact_strength"] < 0
+    assert not a.success
+    assert f"gear: contact_strength ({want['contact_strength']:+.3f})" in a.message
+    r = gd.Drive(power_kw=7.5, n_in_rpm=1450, stages=[gd.GearStage(1.5, z1_range=(20, 20), ratio_range=(3, 3),
+                                                                    material="42CrMo4")]).optimize(3, 0.0)
+    assert not r.success
+    assert "fails contact_strength" in r.conflict[0]
+
+
+def test_a_stage_without_module_takes_the_smallest_module_and_width_that_carry_the_load():
+    t_in = 7500 / _omega(1450)
+    a = gd.Drive(power_kw=7.5, n_in_rpm=1450, stages=[gd.GearStage(z1=20, z2=60, material="42CrMo4")]).analyse()
+    s = a.stages[0]["summary"]
+    m, b = s["m"], s["face_width_mm"]
+    assert a.success and m in ISO54
+    assert b in np.ceil(PSI * m * 20 - 1e-9)
+    assert min(_pair_margins(m, b, s["x1"], s["x2"], t_in, 1450).values()) >= -1e-9
+    narrower = [w for w in np.ceil(PSI * m * 20 - 1e-9) if w < b]
+    if narrower:     # the next narrower width of the range fails
+        assert min(_pair_margins(m, max(narrower), s["x1"], s["x2"], t_in, 1450).values()) < 0
+    assert m > ISO54[0]
+    smaller = ISO54[ISO54.index(m) - 1]           # no width of the range holds at the next smaller module
+    for w in np.ceil(PSI * smaller * 20 - 1e-9):
+        assert min(_pair_margins(smaller, w, s["x1"], s["x2"], t_in, 1450).values()) < 0
+
+
+def test_the_search_sizes_every_design_at_its_own_load():
+    stages = [gd.GearStage(3, z1_range=(17, 17), ratio_range=(2, 3), name="g1"),
+              gd.GearStage(None, z1_range=(17, 17), ratio_range=(2, 3), material="42CrMo4", name="g2")]
+    r = gd.Drive(power_kw=7.5, n_in_rpm=1450, stages=stages).optimize(6.25, 0.03, "min_mass", top=4)
+    assert r.success
+    ok = r.table[r.table["feasible"]]
+    for _, row in ok.iterrows():
+        t_in = 7500 / _omega(1450) * row["g1.ratio"] * 0.98
+        n_in = 1450 / row["g1.ratio"]
+        got = _pair_margins(row["g2.m"], row["g2.face_width_mm"], row["g2.x1"], row["g2.x2"], t_in, n_in, 17,
+                            int(row["g2.z2"]))
+        assert min(got.values()) >= -1e-9
+    best = r.best.checks.set_index(["item", "check"])["margin"]
+    assert {"contact_strength", "root_strength1", "root_strength2"} <= set(best["g2"].index)
