@@ -1,4 +1,4 @@
-"""Sensitivity studies: how the optimum and the margins move when an input moves.
+"""Sweeps and local sensitivities: how the optimum and the margins move when an input moves.
 
 * :func:`sweep` varies one or two inputs (a check limit, a tooth count, a rack parameter, a
   centre distance; or for a chain a load, a speed, the service factor K_e, [p]) over given
