@@ -153,7 +153,7 @@ def _local_cluster(n: int):
     scratch = tempfile.mkdtemp(prefix="geardesign-dask-")
     local = client = None
     try:
-        local = distributed.LocalCluster(n_workers=n, processes=True, threads_per_worker=1, dashboard_address=None,
+        local = distributed.LocalCluster(n_workers=n, processes=True, threads_per_worker=1, dashboard_address=":0",
                                          local_directory=scratch, silence_logs=logging.ERROR)
         client = distributed.Client(local, set_as_default=False)
         yield client

@@ -9,7 +9,7 @@ from __future__ import annotations
 from ..errors import GearDesignError
 from ..shifts.teeth import select_teeth
 from ..files import check_output_path, write_file_atomic
-from .options import add_output_file, add_solver_args
+from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
 from .pair import add_kind_args, add_limit_args, add_rack_args, kind_from_args, limits_from_args, rack_from_args
 
@@ -51,6 +51,7 @@ def add_parser(subparsers):
     add_rack_args(p)
     add_limit_args(p)
     add_json_flag(p)
+    add_cluster_args(p)
     return p
 
 
@@ -66,10 +67,11 @@ def run(args) -> int:
         check_output_path(args.out, overwrite=args.overwrite, suffixes=(".csv",), what="--out")
     bar = Progress(0, "solving shifts")
     try:
-        sel = select_teeth(args.ratio, ratio_tol=args.ratio_tol, m=m, a_w=a_w, z1_range=(args.z1_min, args.z1_max),
-                           z_sum_max=args.z_sum_max, objective=args.objective,
-                           checks=limits_from_args(args), rack=rack_from_args(args), method=args.method,
-                           m_range=m_range, progress=bar.to, **kind_from_args(args))
+        with cluster_from_args(args) as client:
+            sel = select_teeth(args.ratio, ratio_tol=args.ratio_tol, m=m, a_w=a_w,
+                               z1_range=(args.z1_min, args.z1_max), z_sum_max=args.z_sum_max, objective=args.objective,
+                               checks=limits_from_args(args), rack=rack_from_args(args), method=args.method,
+                               m_range=m_range, progress=bar.to, **kind_from_args(args), client=client)
     finally:
         if bar.done:
             bar.close()

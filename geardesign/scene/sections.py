@@ -128,7 +128,7 @@ def _run_teeth(rep: SceneReport, t: dict):
     kw = dict(ratio=t["ratio"], ratio_tol=t["ratio_tol"], m=t.get("module"), a_w=t.get("a_w"),
               z1_range=tuple(t["z1_range"]), z_sum_max=t.get("z_sum_max"), objective=t.get("objective"),
               checks=_checks_dict(t.get("checks")), rack=t["_rack"], method=t["method"], **scene_kind(t))
-    sel = select_teeth(**kw)
+    sel = select_teeth(**kw, client=t.get("_client"))
     rep.results["teeth"] = sel
     rep.tables["teeth"] = sel.table
     cols = [c for c in ("rank", "z1", "z2", "ratio", "ratio_error", "module_mm", "a_w_mm", "x1", "x2", "eps_alpha",
@@ -153,7 +153,7 @@ def _run_planetary(rep: SceneReport, p: dict):
         sel = select_planetary_teeth(p["ratio"], p["n_planets"], p["module"], ratio_tol=p["ratio_tol"],
                                      z_sun_range=tuple(p["z_sun_range"]), nonstandard_max=p["nonstandard_max"],
                                      arrangement=p["arrangement"], objective=p.get("objective") or DEFAULT_OBJECTIVE,
-                                     checks=checks, method=p["method"], **kw)
+                                     checks=checks, method=p["method"], client=p.get("_client"), **kw)
         rep.results["planetary"] = sel
         rep.tables["planetary_teeth"] = sel.table
         rep.markdown += [f"## Planetary tooth counts for ratio {p['ratio']:g} (± {100 * p['ratio_tol']:g} %), "
@@ -270,7 +270,8 @@ def run_study(rep: SceneReport, st: dict, sections: dict):
     target = st["target"]
     base = base_from_scene(target, sections[target])
     frame = sweeps.sweep(st["parameter"], list(st["values"]), st.get("parameter2"),
-                         None if "values2" not in st else list(st["values2"]), target=target, **base)
+                         None if "values2" not in st else list(st["values2"]), target=target,
+                         client=st.get("_client"), **base)
     rep.tables["study_sweep"] = frame
     rep.results["study"] = {"sweep": frame}
     md = rep.markdown
