@@ -28,7 +28,9 @@ import logging
 import math
 import os
 import shutil
+import signal
 import tempfile
+import threading
 
 from .errors import GearDesignError
 from .validate import require_count
@@ -153,16 +155,39 @@ def _local_cluster(n: int):
     scratch = tempfile.mkdtemp(prefix="geardesign-dask-")
     local = client = None
     try:
-        local = distributed.LocalCluster(n_workers=n, processes=True, threads_per_worker=1, dashboard_address=":0",
-                                         local_directory=scratch, silence_logs=logging.ERROR)
+        with _ctrl_c_ignored():
+            local = distributed.LocalCluster(n_workers=n, processes=True, threads_per_worker=1,
+                                             dashboard_address=":0", local_directory=scratch,
+                                             silence_logs=logging.CRITICAL)
         client = distributed.Client(local, set_as_default=False)
         yield client
     finally:
-        if client is not None:
-            client.close()
-        if local is not None:
-            local.close()
-        shutil.rmtree(scratch, ignore_errors=True)
+        with _ctrl_c_ignored():
+            if client is not None:
+                client.close()
+            if local is not None:
+                local.close()
+            shutil.rmtree(scratch, ignore_errors=True)
+
+
+@contextlib.contextmanager
+def _ctrl_c_ignored():
+    """SIGINT ignored for the block (in the main thread; elsewhere Python delivers no signals).
+
+    Around the start of a local cluster: Ctrl-C goes to the terminal's whole process group, and
+    workers killed by it mid-import or mid-task print tracebacks while their nannies restart them.
+    An ignored signal stays ignored in a spawned child (and Python leaves it so), so the workers
+    never see Ctrl-C; this process alone handles it, by cancelling and closing. A Ctrl-C in the
+    second or so the workers take to start is lost. Around the clean-up: a second Ctrl-C must not
+    cut the closing of the cluster short."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    old = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, old)
 
 
 def map_chunks(fn, chunks, *, client=None, workers=None, progress=None) -> list:
