@@ -33,7 +33,7 @@ _NAMES = {
     "optimize_shifts": "shifts.optimize", "ShiftResult": "shifts.result", "OBJECTIVES": "shifts.objectives",
     "Objective": "shifts.objectives", "feasible_region": "shifts.region", "Region": "shifts.region",
     "shift_atlas": "shifts.atlas", "select_teeth": "shifts.teeth", "TeethSelection": "shifts.teeth",
-    "sweep": "sensitivity.studies", "load_scene": "scene", "run_scene": "scene",
+    "sweep": "sensitivity.sweeps", "load_scene": "scene", "run_scene": "scene",
     "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth", "plot_mesh": "profiles.drawing",
     "plot_diagrams": "profiles.drawing", "export_profiles": "profiles.mesh",
     "pair_profiles": "profiles.mesh", "ring_profile": "profiles.ring", "RingProfile": "profiles.ring",
@@ -45,7 +45,8 @@ _NAMES = {
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {
     "catalogs": "catalogs", "involute": "gears.involute", "checks": "gears.checks", "chain": "drives.chain",
-    "key": "drives.key", "sprocket": "drives.sprocket", "studies": "sensitivity.studies", "scene": "scene",
+    "key": "drives.key", "sprocket": "drives.sprocket", "sweeps": "sensitivity.sweeps", "scene": "scene",
+    "studies": "sensitivity.sweeps",    # the module's name before it was sweeps.py; kept for old scripts
     "gears": "gears", "shifts": "shifts", "drives": "drives", "sensitivity": "sensitivity", "profiles": "profiles",
     "motor": "drives.motor",
 }

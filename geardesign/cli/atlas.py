@@ -6,7 +6,7 @@ import re
 from ..shifts.atlas import ATLAS_PAIRS_MAX, atlas_size, shift_atlas
 from ..files import check_output_path, write_file_atomic
 from ..errors import GearDesignError
-from .options import add_output_file, add_solver_args
+from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args, local_workers
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
 from .pair import add_kind_args, add_rack_args, kind_from_args, rack_from_args
 from .options import add_check_args, checks_from_args
@@ -37,6 +37,7 @@ def add_parser(sub):
     add_rack_args(p)
     add_check_args(p)
     add_json_flag(p)
+    add_cluster_args(p)
     return p
 
 
@@ -44,14 +45,17 @@ def run(args) -> int:
     z1 = parse_range(args.z1, "--z1")
     z2 = parse_range(args.z2, "--z2")
     n = atlas_size(z1, z2, internal=args.internal)
-    if n > ATLAS_PAIRS_MAX:
+    limit = ATLAS_PAIRS_MAX * local_workers(args)   # a --scheduler's workers are counted by shift_atlas
+    if n > limit and args.scheduler is None:
         raise GearDesignError(f"--z1 {args.z1} --z2 {args.z2} make {n:,} pairs; an atlas takes at most "
-                              f"{ATLAS_PAIRS_MAX:,}")
+                              f"{limit:,}" + (f" ({ATLAS_PAIRS_MAX:,} per worker)" if limit > ATLAS_PAIRS_MAX else ""))
     if args.out:
         check_output_path(args.out, overwrite=args.overwrite, suffixes=(".csv",), what="--out")
     bar = Progress(n, "atlas")
-    df = shift_atlas(z1, z2, objective=args.objective, checks=checks_from_args(args), method=args.method,
-                     rack=rack_from_args(args), progress=lambda k: bar.update(1), **kind_from_args(args))
+    with cluster_from_args(args) as client:
+        df = shift_atlas(z1, z2, objective=args.objective, checks=checks_from_args(args), method=args.method,
+                         rack=rack_from_args(args), progress=lambda k: bar.to(k, n), **kind_from_args(args),
+                         client=client)
     bar.close()
     if args.out:
         write_file_atomic(args.out, lambda tmp: df.to_csv(tmp, index=False))

@@ -1,13 +1,15 @@
 """Options several subcommands share, defined once: the check options (from the check registry), the
-shift objective and method (choices from the library's registries), and an output file that is never
-silently replaced."""
+shift objective and method (choices from the library's registries), an output file that is never
+silently replaced, and the Dask cluster a batch runs on."""
 from __future__ import annotations
 
 import argparse
+import contextlib
 
 from ..gears.checks import options as check_options
 
-__all__ = ["add_check_args", "checks_from_args", "add_solver_args", "add_output_file"]
+__all__ = ["add_check_args", "checks_from_args", "add_solver_args", "add_output_file", "add_cluster_args",
+           "cluster_from_args", "local_workers"]
 
 # the older spellings of --no-undercut and --no-interference, kept working
 _ALIASES = {"undercut": "--allow-undercut", "interference": "--allow-interference"}
@@ -69,3 +71,41 @@ def add_output_file(p, flag: str, metavar: str, what: str) -> None:
     """``flag`` FILE writes ``what`` there; --overwrite allows replacing an existing file."""
     p.add_argument(flag, metavar=metavar, default=None, help=f"write {what} to this {metavar}")
     p.add_argument("--overwrite", action="store_true", help=f"replace an existing {flag} file")
+
+
+def add_cluster_args(p) -> None:
+    """--workers N (a local Dask cluster of N processes) and --scheduler ADDRESS (a running one)."""
+    g = p.add_argument_group("cluster (needs Dask: pip install \"geardesign[dask]\")")
+    g.add_argument("--workers", default=None, metavar="N",
+                   help="solve on a local Dask cluster of N processes, started and closed for this command")
+    g.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                   help="solve on the Dask cluster whose scheduler is at ADDRESS (e.g. tcp://host:8786)")
+
+
+def local_workers(args) -> int:
+    """--workers as a count, checked (1 when not given); the size limits scale with it."""
+    from ..errors import GearDesignError
+    from ..parallel import LOCAL_WORKERS_MAX
+    from ..validate import require_count
+
+    if args.workers is None:
+        return 1
+    try:
+        n = int(args.workers)
+    except ValueError:
+        raise GearDesignError(f"--workers must be a whole number in [1, {LOCAL_WORKERS_MAX}], "
+                              f"got {args.workers!r}") from None
+    return require_count("--workers", n, 1, LOCAL_WORKERS_MAX)
+
+
+@contextlib.contextmanager
+def cluster_from_args(args):
+    """The Client that --workers / --scheduler ask for (None: solve here), open for the block."""
+    from ..errors import GearDesignError
+    from ..parallel import cluster
+
+    if args.workers is not None and args.scheduler is not None:
+        raise GearDesignError("give --workers or --scheduler, not both")
+    n = local_workers(args)
+    with cluster(workers=n if args.workers is not None else None, address=args.scheduler) as client:
+        yield client

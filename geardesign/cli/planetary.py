@@ -3,7 +3,7 @@ counts for a ratio."""
 from __future__ import annotations
 
 from ..errors import GearDesignError
-from .options import add_output_file, add_solver_args
+from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args
 from .output import add_json_flag, print_frame, print_json
 from .options import add_check_args, checks_from_args
 from .pair import add_rack_args, rack_from_args
@@ -45,6 +45,7 @@ def add_parser(sub):
     add_rack_args(p)
     add_check_args(p, exclude=("eps_gamma_min",))
     add_json_flag(p)
+    add_cluster_args(p)   # used with --ratio (the tooth-count search)
     return p
 
 
@@ -156,11 +157,12 @@ def _optimize(args) -> int:
 def _teeth(args) -> int:
     from ..shifts.planetary_teeth import DEFAULT_OBJECTIVE, select_planetary_teeth
 
-    sel = select_planetary_teeth(args.ratio, args.planets, args.module, ratio_tol=args.ratio_tol,
-                                 z_sun_range=_range(args.z_sun_range), nonstandard_max=args.nonstandard_max,
-                                 arrangement=args.arrangement, objective=args.objective or DEFAULT_OBJECTIVE,
-                                 checks=_checks(args), method=args.method, rack=rack_from_args(args),
-                                 beta_deg=args.beta)
+    with cluster_from_args(args) as client:
+        sel = select_planetary_teeth(args.ratio, args.planets, args.module, ratio_tol=args.ratio_tol,
+                                     z_sun_range=_range(args.z_sun_range), nonstandard_max=args.nonstandard_max,
+                                     arrangement=args.arrangement, objective=args.objective or DEFAULT_OBJECTIVE,
+                                     checks=_checks(args), method=args.method, rack=rack_from_args(args),
+                                     beta_deg=args.beta, client=client)
     if args.json:
         print_json(sel.to_dict() | {"message": sel.message})
         return 0 if sel.found else 1

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from .options import add_cluster_args, cluster_from_args
 from .output import Progress, add_json_flag, print_json
 
 
@@ -21,6 +22,7 @@ def add_parser(subparsers):
                    help="folder for report.md, CSV and PNG files: new, or empty (written whole or not at all)")
     p.add_argument("--overwrite", action="store_true", help="replace the contents of a non-empty --out folder")
     add_json_flag(p)
+    add_cluster_args(p)
     return p
 
 
@@ -29,8 +31,9 @@ def run(args) -> int:
 
     bar = Progress(1, "scene")
     try:
-        rep = run_scene(args.scene, args.out, overwrite=args.overwrite,
-                        progress=lambda done, total, section: bar.to(done, total, f"scene [{section}]"))
+        with cluster_from_args(args) as client:
+            rep = run_scene(args.scene, args.out, overwrite=args.overwrite, client=client,
+                            progress=lambda done, total, section: bar.to(done, total, f"scene [{section}]"))
     finally:
         if bar.done:
             bar.close()

@@ -9,9 +9,9 @@ from __future__ import annotations
 from ..errors import GearDesignError
 from ..shifts.teeth import select_teeth
 from ..files import check_output_path, write_file_atomic
-from .options import add_output_file, add_solver_args
+from .options import (add_check_args, add_cluster_args, add_output_file, add_solver_args, checks_from_args,
+                      cluster_from_args)
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
-from .options import add_check_args, checks_from_args
 from .pair import add_kind_args, add_rack_args, kind_from_args, rack_from_args
 
 SHOW = ["rank", "z1", "z2", "ratio", "ratio_error", "module_mm", "a_mm", "a_w_mm", "x1", "x2", "eps_alpha",
@@ -52,6 +52,7 @@ def add_parser(subparsers):
     add_rack_args(p)
     add_check_args(p)
     add_json_flag(p)
+    add_cluster_args(p)
     return p
 
 
@@ -67,10 +68,11 @@ def run(args) -> int:
         check_output_path(args.out, overwrite=args.overwrite, suffixes=(".csv",), what="--out")
     bar = Progress(0, "solving shifts")
     try:
-        sel = select_teeth(args.ratio, ratio_tol=args.ratio_tol, m=m, a_w=a_w, z1_range=(args.z1_min, args.z1_max),
-                           z_sum_max=args.z_sum_max, objective=args.objective,
-                           checks=checks_from_args(args), rack=rack_from_args(args), method=args.method,
-                           m_range=m_range, progress=bar.to, **kind_from_args(args))
+        with cluster_from_args(args) as client:
+            sel = select_teeth(args.ratio, ratio_tol=args.ratio_tol, m=m, a_w=a_w,
+                               z1_range=(args.z1_min, args.z1_max), z_sum_max=args.z_sum_max, objective=args.objective,
+                               checks=checks_from_args(args), rack=rack_from_args(args), method=args.method,
+                               m_range=m_range, progress=bar.to, **kind_from_args(args), client=client)
     finally:
         if bar.done:
             bar.close()

@@ -148,7 +148,7 @@ def _cross_study(where: Where, st: dict, s: dict):
     if ("parameter2" in st) != ("values2" in st):
         where.fail("study", "values2" if "parameter2" in st else "parameter2",
                    "missing; give parameter2 and values2 together")
-    from ..sensitivity.studies import sweep_parameters
+    from ..sensitivity.sweeps import sweep_parameters
     allowed = sweep_parameters(target)
     for key in ("parameter", "parameter2"):
         if key in st and st[key] not in allowed:

@@ -4,6 +4,7 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+from .. import parallel
 from ..errors import GearDesignError
 from ..files import check_output_dir, write_dir_atomic
 from .load import Scene, load_scene
@@ -11,11 +12,16 @@ from .sections import RUNNERS, SceneReport, run_study
 
 __all__ = ["compute_scene", "write_report", "run_scene"]
 
+_BATCH_SECTIONS = ("teeth", "planetary", "study", "drive")   # sections whose searches can go to a cluster
 
-def compute_scene(scene: Scene, progress=None) -> SceneReport:
+
+def compute_scene(scene: Scene, progress=None, *, client=None, workers=None) -> SceneReport:
     """Run every section of a validated scene in memory (nothing is written).
 
-    ``progress(done, total, section)`` is called before each section and at the end."""
+    ``progress(done, total, section)`` is called before each section and at the end. ``client`` /
+    ``workers``: the batch sections ([teeth] and [planetary] searches, [study] sweeps, [drive]
+    searches) run on that Dask cluster; a local one of ``workers`` processes serves every section
+    and is closed at the end (see :mod:`geardesign.parallel`)."""
     t0 = time.perf_counter()
     rep = SceneReport(scene)
     rep.markdown += [f"# {scene.title}", ""]
@@ -28,13 +34,16 @@ def compute_scene(scene: Scene, progress=None) -> SceneReport:
     todo = [name for name, _ in runners if name in s] + (["study"] if "study" in s else [])
     step = progress or (lambda done, total, section: None)
     try:
-        for name, fn in runners:
-            if name in s:
-                step(todo.index(name), len(todo), name)
-                fn(rep, s[name])
-        if "study" in s:
-            step(len(todo) - 1, len(todo), "study")
-            run_study(rep, s["study"], s)
+        with parallel.cluster(client, workers) as c:
+            # the batch sections find the cluster under "_client" (None: solve here)
+            s = {k: ({**v, "_client": c} if k in _BATCH_SECTIONS else v) for k, v in s.items()}
+            for name, fn in runners:
+                if name in s:
+                    step(todo.index(name), len(todo), name)
+                    fn(rep, s[name])
+            if "study" in s:
+                step(len(todo) - 1, len(todo), "study")
+                run_study(rep, s["study"], s)
         step(len(todo), len(todo), "done")
     except GearDesignError as exc:
         _close(rep.figures)
@@ -61,14 +70,14 @@ def write_report(rep: SceneReport, out_dir, overwrite: bool = False) -> Path:
     return write_dir_atomic(out, write)
 
 
-def run_scene(path, out_dir, overwrite: bool = False, progress=None) -> SceneReport:
+def run_scene(path, out_dir, overwrite: bool = False, progress=None, *, client=None, workers=None) -> SceneReport:
     """Load, validate and run a scene file, then write its report into ``out_dir``.
 
     The output folder is checked first; nothing is written when the scene is wrong or a
-    section fails.
+    section fails. ``client`` / ``workers`` as for :func:`compute_scene`.
     """
     check_output_dir(out_dir, overwrite=overwrite)
-    rep = compute_scene(load_scene(path), progress)
+    rep = compute_scene(load_scene(path), progress, client=client, workers=workers)
     write_report(rep, out_dir, overwrite=overwrite)
     return rep
 

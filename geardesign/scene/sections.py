@@ -126,7 +126,7 @@ def _run_teeth(rep: SceneReport, t: dict):
     kw = dict(ratio=t["ratio"], ratio_tol=t["ratio_tol"], m=t.get("module"), a_w=t.get("a_w"),
               z1_range=tuple(t["z1_range"]), z_sum_max=t.get("z_sum_max"), objective=t.get("objective"),
               checks=_checks_dict(t.get("checks")), rack=t["_rack"], method=t["method"], **scene_kind(t))
-    sel = select_teeth(**kw)
+    sel = select_teeth(**kw, client=t.get("_client"))
     rep.results["teeth"] = sel
     rep.tables["teeth"] = sel.table
     cols = [c for c in ("rank", "z1", "z2", "ratio", "ratio_error", "module_mm", "a_w_mm", "x1", "x2", "eps_alpha",
@@ -151,7 +151,7 @@ def _run_planetary(rep: SceneReport, p: dict):
         sel = select_planetary_teeth(p["ratio"], p["n_planets"], p["module"], ratio_tol=p["ratio_tol"],
                                      z_sun_range=tuple(p["z_sun_range"]), nonstandard_max=p["nonstandard_max"],
                                      arrangement=p["arrangement"], objective=p.get("objective") or DEFAULT_OBJECTIVE,
-                                     checks=checks, method=p["method"], **kw)
+                                     checks=checks, method=p["method"], client=p.get("_client"), **kw)
         rep.results["planetary"] = sel
         rep.tables["planetary_teeth"] = sel.table
         rep.markdown += [f"## Planetary tooth counts for ratio {p['ratio']:g} (± {100 * p['ratio_tol']:g} %), "
@@ -263,12 +263,13 @@ def _run_keys(rep: SceneReport, keys: list):
 
 def run_study(rep: SceneReport, st: dict, sections: dict):
     plt = pyplot()
-    from ..sensitivity import studies
+    from ..sensitivity import sweeps
 
     target = st["target"]
     base = base_from_scene(target, sections[target])
-    frame = studies.sweep(st["parameter"], list(st["values"]), st.get("parameter2"),
-                          None if "values2" not in st else list(st["values2"]), target=target, **base)
+    frame = sweeps.sweep(st["parameter"], list(st["values"]), st.get("parameter2"),
+                         None if "values2" not in st else list(st["values2"]), target=target,
+                         client=st.get("_client"), **base)
     rep.tables["study_sweep"] = frame
     rep.results["study"] = {"sweep": frame}
     md = rep.markdown
@@ -276,20 +277,20 @@ def run_study(rep: SceneReport, st: dict, sections: dict):
     md += [f"## Study: {target} sweep over {what}", "", md_table(frame.drop(columns=[c for c in frame.columns
                                                                                    if c.startswith("sens_")])), ""]
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    studies.plot_margins(frame, st["parameter"], ax=ax, by=st.get("parameter2"))
+    sweeps.plot_margins(frame, st["parameter"], ax=ax, by=st.get("parameter2"))
     rep.figures["study_margins"] = fig
     md += ["![margins along the sweep](study_margins.png)", ""]
-    if target == "gear" and st["parameter"] in studies.LIMIT_PARAMETERS and "parameter2" not in st:
+    if target == "gear" and st["parameter"] in sweeps.LIMIT_PARAMETERS and "parameter2" not in st:
         fig, ax = plt.subplots(figsize=(7, 6))
-        studies.plot_region_motion(st["parameter"], list(st["values"]), ax=ax, **base)
+        sweeps.plot_region_motion(st["parameter"], list(st["values"]), ax=ax, **base)
         rep.figures["study_region_motion"] = fig
         md += ["![the region moving with the limit](study_region_motion.png)", ""]
     if target == "gear" and st["tornado"]:
-        tor = studies.local_sensitivities(step=st["step"], **base)
+        tor = sweeps.local_sensitivities(step=st["step"], **base)
         rep.tables["study_sensitivities"] = tor
         rep.results["study"]["sensitivities"] = tor
         fig, ax = plt.subplots(figsize=(7, 4.5))
-        studies.plot_tornado(tor, ax=ax)
+        sweeps.plot_tornado(tor, ax=ax)
         rep.figures["study_tornado"] = fig
         md += ["### Local sensitivities of the optimum", "",
                f"Each input moved by ±{100 * st['step']:g} % (limits: the convex method's duals give the slope "
@@ -299,7 +300,7 @@ def run_study(rep: SceneReport, st: dict, sections: dict):
 
 
 def base_from_scene(target: str, section: dict) -> dict:
-    """The keyword arguments of :func:`geardesign.sensitivity.studies.sweep` for a validated section."""
+    """The keyword arguments of :func:`geardesign.sensitivity.sweeps.sweep` for a validated section."""
     if target == "gear":
         out = {k: section[k] for k in ("z1", "z2", "objective", "method", "tip_shortening") if k in section}
         out.update(scene_kind(section))

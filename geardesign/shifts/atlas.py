@@ -1,11 +1,13 @@
 """Many tooth pairs at once: the optimal shifts and the region size for a table of z1 × z2."""
 from __future__ import annotations
 
+import functools
 import time
 
 import numpy as np
 import pandas as pd
 
+from .. import parallel
 from ..errors import GearDesignError
 from ..validate import ndim, require_bool, require_int
 from ..gears.checks import FEASIBILITY_TOL
@@ -22,7 +24,10 @@ _ATLAS_N = 41   # grid nodes per axis of the batched first pass (area estimate a
 # :func:`geardesign.feasible_region` for one pair's exact area.
 
 
-ATLAS_PAIRS_MAX = 100_000   # ~3 min at ~2 ms a pair; more is a batch job, split it
+ATLAS_PAIRS_MAX = 100_000   # ~3 min at ~2 ms a pair on one machine; times the workers on a cluster
+# pairs per chunk sent to a worker: at ~0.5-2 ms a pair, 200 pairs outweigh a task's ~2 ms of
+# scheduling and transfer 50 times over (benchmarks/bench_parallel.py); 5000 keep progress moving
+ATLAS_CHUNK_MIN, ATLAS_CHUNK_MAX = 200, 5000
 
 
 def _values(name, values) -> np.ndarray:
@@ -48,10 +53,11 @@ def atlas_size(z1_values, z2_values, upper_only: bool = True, internal: bool = F
     return int(np.searchsorted(z1, z2, side="right").sum())
 
 
-def _pairs(z1_values, z2_values, upper_only, internal):
+def _pairs(z1_values, z2_values, upper_only, internal, limit=ATLAS_PAIRS_MAX):
     n = atlas_size(z1_values, z2_values, upper_only, internal)
-    if n > ATLAS_PAIRS_MAX:
-        raise GearDesignError(f"an atlas takes at most {ATLAS_PAIRS_MAX:,} pairs, these tooth counts make {n:,}")
+    if n > limit:
+        per = "" if limit == ATLAS_PAIRS_MAX else f" ({ATLAS_PAIRS_MAX:,} per worker)"
+        raise GearDesignError(f"an atlas takes at most {limit:,} pairs{per}, these tooth counts make {n:,}")
     z1, z2 = _values("z1_values", z1_values), _values("z2_values", z2_values)
     Z1, Z2 = np.meshgrid(z1, z2, indexing="ij")
     Z1, Z2 = Z1.ravel(), Z2.ravel()
@@ -271,7 +277,7 @@ def _row_solved(z1: int, z2: int, start, solve_kw: dict) -> dict:
 def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None, method: str = "exact",
                 tol: float | None = None, rack=None, tip_shortening: bool = True, bounds=DEFAULT_BOUNDS,
                 upper_only: bool = True, progress=None, beta_deg: float = 0.0, internal: bool = False,
-                face_width: float | None = None) -> pd.DataFrame:
+                face_width: float | None = None, *, client=None, workers=None) -> pd.DataFrame:
     """One row per tooth pair: feasible, x1, x2, objective, all margins, active checks, region area.
 
     The first pass is batched: every pair's margins on a 41×41 grid of (x1, x2) in one
@@ -286,27 +292,63 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     :class:`~geardesign.gears.mesh.Mesh`; lengths are per unit module (m = 1), so ``face_width``
     is b/m here.
 
+    ``client`` (a ``dask.distributed.Client``) or ``workers`` (a local cluster of that many
+    processes, made for the call): the pairs go out in chunks of at least ATLAS_CHUNK_MIN, the
+    table is the serial one bit for bit, and the limit of ATLAS_PAIRS_MAX pairs is multiplied by
+    the number of workers (see :mod:`geardesign.parallel`).
+
     >>> df = shift_atlas([17], [26, 40])
     >>> list(df.columns[:6]), bool(df.feasible.all())
     (['z1', 'z2', 'feasible', 'x1', 'x2', 'objective'], True)
     """
     t0 = time.perf_counter()
     internal = require_bool("internal", internal)
-    Z1, Z2 = _pairs(z1_values, z2_values, upper_only, internal)
+    n_workers = parallel.slots(client, workers)
+    Z1, Z2 = _pairs(z1_values, z2_values, upper_only, internal, ATLAS_PAIRS_MAX * n_workers)
     if Z1.size == 0:
         raise GearDesignError("shift_atlas: no (z1, z2) pair to solve (with upper_only, z2 must be >= z1; "
                               "internal pairs need z2 > z1)")
-    proto = Problem(Mesh(int(Z1[0]), int(Z2[0]), rack, tip_shortening, beta_deg, internal, face_width), checks,
-                    objective, 1.0)
+    setup = dict(first=(int(Z1[0]), int(Z2[0])), objective=objective, checks=checks, method=method, tol=tol,
+                 rack=rack, tip_shortening=tip_shortening, bounds=bounds, beta_deg=beta_deg, internal=internal,
+                 face_width=face_width)
+    proto = _proto(setup)          # validates the inputs here, before any chunk goes out
+    if not parallel.requested(client, workers):
+        df = _atlas_rows(proto, Z1, Z2, setup, progress)
+    else:
+        parts = parallel.map_chunks(
+            functools.partial(_atlas_chunk, setup),
+            [(Z1[s], Z2[s]) for s in parallel.chunk_slices(Z1.size, n_workers, ATLAS_CHUNK_MIN, ATLAS_CHUNK_MAX)],
+            client=client, workers=workers, progress=None if progress is None else lambda done, total: progress(done))
+        df = pd.concat(parts, ignore_index=True)
+    df.attrs.update(objective=proto.objective.name, method=method, time_s=time.perf_counter() - t0)
+    return df
+
+
+def _proto(setup: dict) -> Problem:
+    """The problem of the atlas's first pair: its checks, objective and kind serve every pair."""
+    mesh = Mesh(*setup["first"], setup["rack"], setup["tip_shortening"], setup["beta_deg"], setup["internal"],
+                setup["face_width"])
+    return Problem(mesh, setup["checks"], setup["objective"], 1.0)
+
+
+def _atlas_chunk(setup: dict, pairs) -> pd.DataFrame:
+    """The rows of one chunk of pairs, on a worker: the serial computation on these pairs."""
+    return _atlas_rows(_proto(setup), *pairs, setup, None)
+
+
+def _atlas_rows(proto: Problem, Z1, Z2, setup: dict, progress) -> pd.DataFrame:
+    """The atlas's table for the pairs Z1, Z2 (each row depends on its own pair only)."""
+    method, bounds = setup["method"], setup["bounds"]
     area, area_error, start, least = _first_pass(proto, Z1, Z2, bounds)
     fast = np.full((Z1.size, 2), np.nan)
     if method == "exact" and proto.objective.kind == "smooth":
         # pairs with no feasible node (a sliver thinner than the grid) start from their least infeasible node
         fast = _polish(proto, Z1, Z2, np.where(np.isnan(start), least, start),
                        (bounds[1] - bounds[0]) / (_ATLAS_N - 1))
-    solve_kw = dict(objective=objective, checks=checks, method=method, tol=tol, rack=proto.rack,
-                    tip_shortening=tip_shortening, bounds=bounds, beta_deg=beta_deg, internal=internal,
-                    face_width=face_width, grid_n=_ATLAS_N if method == "grid" else None)
+    solve_kw = dict(objective=setup["objective"], checks=setup["checks"], method=method, tol=setup["tol"],
+                    rack=proto.rack, tip_shortening=setup["tip_shortening"], bounds=bounds,
+                    beta_deg=setup["beta_deg"], internal=setup["internal"], face_width=setup["face_width"],
+                    grid_n=_ATLAS_N if method == "grid" else None)
     rows = []
     for k, (z1, z2) in enumerate(zip(Z1.tolist(), Z2.tolist())):
         if np.isnan(fast[k, 0]):    # not settled in the batch: one by one, with the conflict search
@@ -316,6 +358,4 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
         rows[-1].update(area=area[k], area_error=area_error[k])
         if progress is not None:
             progress(k + 1)
-    df = pd.DataFrame(rows)
-    df.attrs.update(objective=proto.objective.name, method=method, time_s=time.perf_counter() - t0)
-    return df
+    return pd.DataFrame(rows)

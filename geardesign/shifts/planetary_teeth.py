@@ -14,6 +14,7 @@ smaller ring (a smaller set).
 """
 from __future__ import annotations
 
+import functools
 import math
 import time
 from dataclasses import dataclass
@@ -21,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from .. import parallel
 from ..errors import GearDesignError
 from ..gears.planetary import ARRANGEMENTS, N_PLANETS_RANGE, planetary_ratio
 from ..results import RankedTable
@@ -31,7 +33,9 @@ from .planetary import optimize_planetary_shifts
 
 __all__ = ["select_planetary_teeth", "PlanetaryTeethSelection", "PLANETARY_SOLVES_MAX", "NONSTANDARD_MAX_RANGE"]
 
-PLANETARY_SOLVES_MAX = 2000        # candidates solved at most in one search (~50 ms each)
+PLANETARY_SOLVES_MAX = 2000        # candidates solved at most in one search (~50 ms each), per worker
+# candidates per chunk sent to a worker: at ~50 ms a solve, 4 outweigh a task's ~2 ms of scheduling 100 times
+PLANETARY_CHUNK_MIN, PLANETARY_CHUNK_MAX = 4, 100
 NONSTANDARD_MAX_RANGE = (0, 6)     # teeth: beyond a few, no shift within the window makes a set coaxial
 Z_SUN_RANGE_LIMIT = (3, 1000)
 DEFAULT_OBJECTIVE = "max_eps_alpha"
@@ -95,10 +99,15 @@ def _candidates(ratio, ratio_tol, n_planets, z_sun_range, nonstandard_max, arran
 def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_range=(12, 40),
                            nonstandard_max: int = 2, arrangement: str = "ring_fixed", objective=DEFAULT_OBJECTIVE,
                            checks=None, method: str = "exact", rack=None, beta_deg: float = 0.0,
-                           cutter=None) -> PlanetaryTeethSelection:
+                           cutter=None, *, client=None, workers=None, progress=None) -> PlanetaryTeethSelection:
     """Every (z_sun, z_planet, z_ring) for ``ratio`` (n_in/n_out of ``arrangement``; for
     "carrier_fixed" the ring turns the other way and ±ratio are the same), standard and
     non-standard, with the shifts that make each fit, ranked (see the module docstring).
+
+    ``client`` (a ``dask.distributed.Client``) or ``workers`` (a local cluster of that many
+    processes, made for the call) solve the candidates in chunks of at least PLANETARY_CHUNK_MIN;
+    the table is the serial one bit for bit and PLANETARY_SOLVES_MAX is multiplied by the number of
+    workers (see :mod:`geardesign.parallel`). ``progress(done, total)`` counts solved candidates.
 
     >>> sel = select_planetary_teeth(5.0, 3, 2.0, ratio_tol=0.0, z_sun_range=(18, 18), nonstandard_max=0)
     >>> b = sel.best                       # 1 + 72/18 = 5, (18 + 72)/3 = 30: the standard set
@@ -114,12 +123,27 @@ def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_r
     table = _screen(_candidates(ratio, ratio_tol, n_planets, z_range, nonstandard_max, arrangement),
                     ratio, n_planets, arrangement)
     todo = table.index[table["reason"] == ""]
-    if todo.size > PLANETARY_SOLVES_MAX:
-        raise GearDesignError(f"{todo.size} tooth-count candidates to solve, more than {PLANETARY_SOLVES_MAX}: "
-                              f"narrow z_sun_range, ratio_tol or nonstandard_max")
-    for i in todo:
-        _solve_row(table, i, n_planets, m, dict(objective=obj, checks=checks, method=method, rack=rack,
-                                                 beta_deg=beta_deg, arrangement=arrangement, cutter=cutter))
+    n_workers = parallel.slots(client, workers)
+    if todo.size > PLANETARY_SOLVES_MAX * n_workers:
+        per = "" if n_workers == 1 else f" ({PLANETARY_SOLVES_MAX} per worker x {n_workers})"
+        raise GearDesignError(f"{todo.size} tooth-count candidates to solve, more than "
+                              f"{PLANETARY_SOLVES_MAX * n_workers}{per}: narrow z_sun_range, ratio_tol or "
+                              f"nonstandard_max")
+    kw = dict(objective=obj, checks=checks, method=method, rack=rack, beta_deg=beta_deg, arrangement=arrangement,
+              cutter=cutter)
+    if not parallel.requested(client, workers):
+        for k, i in enumerate(todo):
+            _solve_row(table, i, n_planets, m, kw)
+            if progress is not None:
+                progress(k + 1, todo.size)
+    else:
+        teeth = table.loc[todo, ["z_sun", "z_planet", "z_ring"]].to_numpy(np.int64)
+        parts = parallel.map_chunks(
+            functools.partial(_solve_chunk, n_planets, m, kw),
+            [teeth[s] for s in parallel.chunk_slices(todo.size, n_workers, PLANETARY_CHUNK_MIN, PLANETARY_CHUNK_MAX)],
+            client=client, workers=workers, progress=progress)
+        for i, outcome in zip(todo, [o for part in parts for o in part]):
+            _put_row(table, i, outcome)
     return PlanetaryTeethSelection(_rank(table, obj.sense), ratio, ratio_tol, n_planets, m, arrangement, obj.name,
                                    method, n_solved=int(todo.size), time_s=time.perf_counter() - t0)
 
@@ -168,10 +192,26 @@ def _screen(cand, ratio, n_planets, arrangement) -> pd.DataFrame:
 
 def _solve_row(table, i, n_planets, m, kw) -> None:
     row = table.loc[i]
+    _put_row(table, i, _solve_set(int(row["z_sun"]), int(row["z_planet"]), int(row["z_ring"]), n_planets, m, kw))
+
+
+def _solve_set(z_s, z_p, z_r, n_planets, m, kw):
+    """The optimum of one set, or the GearDesignError it raised."""
     try:
-        r = optimize_planetary_shifts(int(row["z_sun"]), int(row["z_planet"]), int(row["z_ring"]), n_planets, m, **kw)
+        return optimize_planetary_shifts(z_s, z_p, z_r, n_planets, m, **kw)
     except GearDesignError as exc:
-        table.loc[i, "reason"] = str(exc)
+        return exc
+
+
+def _solve_chunk(n_planets, m, kw, teeth) -> list:
+    """A chunk of (z_sun, z_planet, z_ring) rows solved on a worker."""
+    return [_solve_set(int(a), int(b), int(c), n_planets, m, kw) for a, b, c in teeth]
+
+
+def _put_row(table, i, r) -> None:
+    """Row ``i`` of the table from its optimum (or the error it raised)."""
+    if isinstance(r, GearDesignError):
+        table.loc[i, "reason"] = str(r)
         return
     table.loc[i, ["feasible", "x_sun", "x_planet", "x_ring", "a_w", "eps_alpha_sun_planet", "eps_alpha_planet_ring",
                   "fun", "reason"]] = [bool(r.success), r.x_sun, r.x_planet, r.x_ring, r.a_w, r.eps_alpha_sun_planet,

@@ -81,7 +81,7 @@ def solve_convex(prob: Problem, v0, bounds, tol, maxit=100):
             Mp.value, GMp.value = M, GM
         lo.value = np.maximum(-radius, box_lo - v)
         hi.value = np.minimum(radius, box_hi - v)
-        problem.solve(solver=cp.CLARABEL, tol_gap_abs=1e-12, tol_gap_rel=1e-12, tol_feas=1e-12)
+        problem.solve(solver=cp.CLARABEL, warm_start=False, tol_gap_abs=1e-12, tol_gap_rel=1e-12, tol_feas=1e-12)
         if d.value is None:
             radius /= 4
             if radius < tol:

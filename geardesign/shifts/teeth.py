@@ -21,6 +21,7 @@ stronger module); finally the smaller module.
 """
 from __future__ import annotations
 
+import functools
 import math
 import time
 from dataclasses import dataclass, field
@@ -28,7 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from .. import catalogs
+from .. import catalogs, parallel
 from ..results import RankedTable, plain
 from ..gears.checks import resolve_checks
 from ..errors import GearDesignError
@@ -45,7 +46,9 @@ __all__ = ["select_teeth", "ratio_pairs", "TeethSelection", "X_SUM_WINDOW", "MAX
 # x1 + x2 outside this window is not solved: it is the shift window of one gear in
 # optimize_shifts (DEFAULT_BOUNDS); a pair that needs more than that in total is absurd.
 X_SUM_WINDOW = DEFAULT_BOUNDS
-MAX_SOLVES = 3000        # refuse searches that would call the optimiser more often than this
+MAX_SOLVES = 3000        # refuse searches that would call the optimiser more often than this (per worker)
+# solves per chunk sent to a worker: at ~2-10 ms a solve, 40 outweigh a task's ~2 ms of scheduling
+TEETH_CHUNK_MIN, TEETH_CHUNK_MAX = 40, 500
 _RATIO_EPS = 1e-12       # relative slack on ratio_tol and for grouping equal ratio errors
 
 
@@ -199,7 +202,8 @@ def _standard_center_distance(a):
 def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_sum_max=None,
                  objective=None, checks=None, rack=None, method="exact", *, m_range=None,
                  x_sum_window=X_SUM_WINDOW, tip_shortening=True, progress=None, beta_deg: float = 0.0,
-                 internal: bool = False, face_width: float | None = None) -> TeethSelection:
+                 internal: bool = False, face_width: float | None = None, client=None,
+                 workers=None) -> TeethSelection:
     """Tooth counts z1/z2 for a gear ratio u = z2/z1, with the best profile shifts for each, ranked.
 
     Parameters
@@ -232,6 +236,10 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
         u = z2/z1, x_Σ = x2 − x1, a = m (z2 − z1)/2) and the face width in mm for ε_β, as for
         :class:`~geardesign.gears.mesh.Mesh`. With a face width each (pair, module) is solved
         on its own: ε_β = b sin β/(π m) depends on the module.
+    client, workers : run the shift solves on a ``dask.distributed.Client`` or on a local cluster
+        of ``workers`` processes made for the call, in chunks of at least TEETH_CHUNK_MIN solves;
+        the table is the serial one bit for bit and MAX_SOLVES is multiplied by the number of
+        workers (see :mod:`geardesign.parallel`).
 
     Returns
     -------
@@ -264,7 +272,8 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
 
     cands = _candidates(z1, z2, ratio, *_modules(m_used, m_range), kind)
     cands, skipped = _within_reach(cands, a_w, rack, tuple(float(v) for v in x_sum_window), kind)
-    keys, solved = _solve(cands, a_w, objective, checks, method, rack, tip_shortening, progress, kind)
+    keys, solved = _solve(cands, a_w, objective, checks, method, rack, tip_shortening, progress, kind,
+                          dict(client=client, workers=workers))
     table = _rank(_table(cands, keys, solved, a_w, check_names), objective.sense)
     return TeethSelection(table=table, skipped=skipped, ratio=ratio, ratio_tol=float(ratio_tol),
                           objective=objective.name, objective_sense=objective.sense, m=m_used, a_w=a_w,
@@ -332,29 +341,51 @@ def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window, kind):
     return c[keep].reset_index(drop=True), skipped
 
 
-def _solve(c: pd.DataFrame, a_w, objective, checks, method, rack, tip_shortening, progress, kind):
+def _solve(c: pd.DataFrame, a_w, objective, checks, method, rack, tip_shortening, progress, kind, where):
     """One shift solve per distinct problem (without a_w and face width the module only scales
-    lengths): (each candidate's key, {key: ShiftResult or the GearDesignError it raised})."""
+    lengths): (each candidate's key, {key: ShiftResult or the GearDesignError it raised}).
+    ``where``: client= / workers= of :func:`geardesign.parallel.map_chunks` (empty: here)."""
     if a_w is None:
         keys = list(zip(c["z1"], c["z2"], *([c["module_mm"]] if kind["face_width"] is not None else [])))
     else:
         keys = list(zip(c["z1"], c["z2"], c["module_mm"], c["a_w_target_mm"]))
     unique = list(dict.fromkeys(keys))
-    if len(unique) > MAX_SOLVES:
+    n_workers = parallel.slots(**where)
+    if len(unique) > MAX_SOLVES * n_workers:
+        per = "" if n_workers == 1 else f" ({MAX_SOLVES} per worker x {n_workers})"
         raise GearDesignError(
-            f"the search needs {len(unique)} shift solves, more than the limit {MAX_SOLVES}: narrow z1_range, "
-            f"ratio_tol, z_sum_max or m_range")
-    solved = {}
-    for k, key in enumerate(unique):
-        housing = {"a_w": key[3] if len(key) == 4 else None, "m": key[2] if len(key) > 2 else 1.0}
-        try:
-            solved[key] = optimize_shifts(key[0], key[1], objective, checks, method, rack=rack,
-                                          tip_shortening=tip_shortening, **housing, **kind)
-        except GearDesignError as exc:
-            solved[key] = exc
-        if progress is not None:
-            progress(k + 1, len(unique))
-    return keys, solved
+            f"the search needs {len(unique)} shift solves, more than the limit {MAX_SOLVES * n_workers}{per}: narrow "
+            f"z1_range, ratio_tol, z_sum_max or m_range")
+    setup = dict(objective=objective, checks=checks, method=method, rack=rack, tip_shortening=tip_shortening,
+                 kind=kind)
+    if not parallel.requested(**where):
+        solved = {}
+        for k, key in enumerate(unique):
+            solved[key] = _solve_one(key, setup)
+            if progress is not None:
+                progress(k + 1, len(unique))
+        return keys, solved
+    parts = parallel.map_chunks(functools.partial(_solve_chunk, setup),
+                                [unique[s] for s in parallel.chunk_slices(len(unique), n_workers, TEETH_CHUNK_MIN,
+                                                                          TEETH_CHUNK_MAX)],
+                                progress=progress, **where)
+    return keys, dict(zip(unique, [r for part in parts for r in part]))
+
+
+def _solve_one(key, setup):
+    """The ShiftResult of one candidate key (z1, z2[, m[, a_w]]), or the GearDesignError it raised."""
+    housing = {"a_w": key[3] if len(key) == 4 else None, "m": key[2] if len(key) > 2 else 1.0}
+    try:
+        return optimize_shifts(key[0], key[1], setup["objective"], setup["checks"], setup["method"],
+                               rack=setup["rack"], tip_shortening=setup["tip_shortening"], **housing,
+                               **setup["kind"])
+    except GearDesignError as exc:
+        return exc
+
+
+def _solve_chunk(setup, keys) -> list:
+    """A chunk of candidate keys solved on a worker."""
+    return [_solve_one(key, setup) for key in keys]
 
 
 def _table(c: pd.DataFrame, keys, solved, a_w, check_names) -> pd.DataFrame:

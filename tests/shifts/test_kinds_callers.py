@@ -11,7 +11,7 @@ import sys
 import pytest
 
 import geardesign as gd
-from geardesign.sensitivity import studies
+from geardesign.sensitivity import sweeps
 from geardesign.cli import main
 from tests.reference_mp import pair_reference
 from tests.scene_files import write
@@ -81,7 +81,7 @@ def test_atlas_of_rings_keeps_only_rings_larger_than_the_pinion():
 
 
 def test_sensitivities_of_an_internal_pair_match_the_kkt_multipliers():
-    t = studies.local_sensitivities(20, 60, internal=True, step=0.01)
+    t = sweeps.local_sensitivities(20, 60, internal=True, step=0.01)
     row = t.set_index("input").loc["eps_alpha_min"]
     assert row["slope_kkt"] < 0
     assert row["slope_dual"] == pytest.approx(row["slope_kkt"], rel=1e-5)

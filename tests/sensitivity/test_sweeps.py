@@ -7,7 +7,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import geardesign as gd  # noqa: E402
-from geardesign import studies  # noqa: E402
+from geardesign import sweeps  # noqa: E402
 from geardesign.errors import GearDesignError  # noqa: E402
 
 
@@ -36,7 +36,7 @@ def test_duals_and_kkt_match_finite_differences(z1, z2, checks, limit, check):
 
 def test_limit_sweep_invariants_and_direct_solves():
     vals = [1.1, 1.2, 1.3]
-    df = studies.sweep("eps_alpha_min", vals, z1=17, z2=26, m=8)
+    df = sweeps.sweep("eps_alpha_min", vals, z1=17, z2=26, m=8)
     assert list(df["eps_alpha_min"]) == vals and df["success"].all()
     assert np.allclose(df["eps_alpha"], vals, atol=1e-8)            # the active limit holds with equality
     assert (np.diff(df["x_sum"]) < 0).all()                          # a stricter limit leaves less x-sum
@@ -49,7 +49,7 @@ def test_limit_sweep_invariants_and_direct_solves():
 
 
 def test_tooth_count_sweep_is_batched_and_matches_direct_solves():
-    df = studies.sweep("z1", [14, 17, 20], "z2", [26, 40], objective="max_x_sum", m=2)
+    df = sweeps.sweep("z1", [14, 17, 20], "z2", [26, 40], objective="max_x_sum", m=2)
     assert df.attrs["batched"] == "shift_atlas" and len(df) == 6
     for row in df.itertuples():
         r = gd.optimize_shifts(row.z1, row.z2)
@@ -58,11 +58,11 @@ def test_tooth_count_sweep_is_batched_and_matches_direct_solves():
 
 
 def test_rack_sweep_and_chain_service_factor_sweep():
-    df = studies.sweep("ha", [0.9, 1.0, 1.1], z1=17, z2=26)
+    df = sweeps.sweep("ha", [0.9, 1.0, 1.1], z1=17, z2=26)
     assert df["success"].all()
     # a taller tooth gives more contact ratio at the same shifts, so the ε_α limit allows more x-sum
     assert (np.diff(df["x_sum"]) > 0).all()
-    ch = studies.sweep("k_e", [1.5, 2.0, 2.148], target="chain", torque_nm=380, n1_rpm=120, ratio=1, z1=13,
+    ch = sweeps.sweep("k_e", [1.5, 2.0, 2.148], target="chain", torque_nm=380, n1_rpm=120, ratio=1, z1=13,
                        allowable_pressure_mpa=29, strands=(1, 2), objective="min_sprocket_diameter",
                        center_distance_mm=180)
     same = ch[ch["designation"] == ch["designation"].iloc[-1]]
@@ -73,11 +73,11 @@ def test_rack_sweep_and_chain_service_factor_sweep():
 
 def test_sweep_errors():
     with pytest.raises(GearDesignError, match="parameter must be one of"):
-        studies.sweep("colour", [1], z1=17, z2=26)
+        sweeps.sweep("colour", [1], z1=17, z2=26)
     with pytest.raises(GearDesignError, match="needs z2"):
-        studies.sweep("eps_alpha_min", [1.2], z1=17)
+        sweeps.sweep("eps_alpha_min", [1.2], z1=17)
     with pytest.raises(GearDesignError, match="together"):
-        studies.sweep("eps_alpha_min", [1.2], "sa_min", None, z1=17, z2=26)
+        sweeps.sweep("eps_alpha_min", [1.2], "sa_min", None, z1=17, z2=26)
 
 
 def test_study_sizes_are_refused_before_any_work():
@@ -88,19 +88,19 @@ def test_study_sizes_are_refused_before_any_work():
 
 
 def test_local_sensitivities_and_plots():
-    tor = studies.local_sensitivities(17, 26, step=0.01)
+    tor = sweeps.local_sensitivities(17, 26, step=0.01)
     row = tor.set_index("input").loc["eps_alpha_min"]
     assert row["slope_dual"] == pytest.approx(row["slope_kkt"], rel=1e-6)
     assert row["slope_dual"] == pytest.approx(row["slope_fd"], rel=1e-3)
     # sa is not active at this optimum: no dual, and moving the limit does not move the optimum
     assert tor.set_index("input").loc["sa_min", "slope_fd"] == pytest.approx(0, abs=1e-9)
     fig, axes = plt.subplots(1, 3)
-    studies.plot_tornado(tor, ax=axes[0])
+    sweeps.plot_tornado(tor, ax=axes[0])
     assert len(axes[0].patches) == 2 * len(tor)
-    sw = studies.sweep("eps_alpha_min", [1.1, 1.3], z1=17, z2=26)
-    studies.plot_margins(sw, "eps_alpha_min", ax=axes[1])
+    sw = sweeps.sweep("eps_alpha_min", [1.1, 1.3], z1=17, z2=26)
+    sweeps.plot_margins(sw, "eps_alpha_min", ax=axes[1])
     assert len(axes[1].lines) == sum(c.startswith("margin_") for c in sw.columns) + 1
-    studies.plot_region_motion("eps_alpha_min", [1.1, 1.3], 17, 26, ax=axes[2])
+    sweeps.plot_region_motion("eps_alpha_min", [1.1, 1.3], 17, 26, ax=axes[2])
     assert len(axes[2].lines) >= 2
     plt.close(fig)
 

@@ -1,4 +1,4 @@
-"""Sensitivity studies: how the optimum and the margins move when an input moves.
+"""Sweeps and local sensitivities: how the optimum and the margins move when an input moves.
 
 * :func:`sweep` varies one or two inputs (a check limit, a tooth count, a rack parameter, a
   centre distance; or for a chain a load, a speed, the service factor K_e, [p]) over given
@@ -13,11 +13,13 @@
 """
 from __future__ import annotations
 
+import functools
 import itertools
 
 import numpy as np
 import pandas as pd
 
+from .. import parallel
 from ..errors import GearDesignError
 from ..validate import require_finite
 
@@ -34,8 +36,13 @@ _DEFAULT_LIMITS = {"eps_alpha_min": 1.2, "sa_min": 0.25}
 _RACK_DEFAULTS = {"alpha_deg": 20.0, "ha": 1.0, "c": 0.25, "rho_f": 0.38}
 
 
-STUDY_VALUES_MAX = 2000      # values of one parameter (~10 s of optimisation at ~5 ms each)
-STUDY_POINTS_MAX = 10_000    # points of a two-parameter study, e.g. 100 x 100 (~1 min)
+STUDY_VALUES_MAX = 2000      # values of one parameter (~10 s of optimisation at ~5 ms each), per worker
+STUDY_POINTS_MAX = 10_000    # points of a two-parameter study, e.g. 100 x 100 (~1 min), per worker
+# Points solved one after another, each from the last optimum; every run starts cold, so that runs
+# can go to different workers and the sweep is the same wherever it ran. ~25 x 5 ms = 0.1 s a run,
+# well above a task's ~2 ms of scheduling; SWEEP_CHUNK_MAX runs at most go in one task.
+WARM_START_RUN = 25
+SWEEP_CHUNK_MAX = 20
 
 
 def sweep_parameters(target: str = "gear") -> tuple:
@@ -89,7 +96,7 @@ def _gear_solve(point: dict, base: dict, start=None):
     return optimize_shifts(checks=checks, rack=rack, start=start, **kw)
 
 
-def _gear_sweep(points: list[dict], base: dict) -> pd.DataFrame:
+def _gear_sweep(points: list[dict], base: dict, where: dict) -> pd.DataFrame:
     names = list(points[0])
     only_teeth = all(n in TOOTH_PARAMETERS for n in names) and base.get("a_w") is None
     if only_teeth:
@@ -101,7 +108,7 @@ def _gear_sweep(points: list[dict], base: dict) -> pd.DataFrame:
         m = float(base.get("m", 1.0))
         # the atlas works per unit module: its face width is b/m
         fw = None if kind.get("face_width") is None else kind["face_width"] / m
-        at = shift_atlas(z1s, z2s, upper_only=False, **kw, **{**kind, "face_width": fw})
+        at = shift_atlas(z1s, z2s, upper_only=False, **kw, **{**kind, "face_width": fw}, **where)
         sgn = -1.0 if kind.get("internal") else 1.0
         at = at.rename(columns={"objective": "fun"}).assign(x_sum=lambda d: d["x2"] + sgn * d["x1"])
         at["success"] = at.pop("feasible")
@@ -118,52 +125,81 @@ def _gear_sweep(points: list[dict], base: dict) -> pd.DataFrame:
         out = out[lead + rest + ["area"]].rename(columns={"area": "region_area"})
         out.attrs.update(target="gear", batched="shift_atlas")
         return out
-    rows, start = [], None
-    for p in points:
-        res = _gear_solve(p, base, start)
-        rows.append(_gear_row(res, p))
-        # the last optimum seeds the next solve (optimize_shifts falls back to its grid when it is infeasible)
-        start = (res.x1, res.x2) if res.success else None
+    runs = [points[s:s + WARM_START_RUN] for s in range(0, len(points), WARM_START_RUN)]
+    rows = [row for part in _map_points(_gear_runs, runs, base, where) for run in part for row in run]
     out = pd.DataFrame(rows)
     out.attrs.update(target="gear", batched="warm start")
     return out
 
 
+def _gear_runs(base: dict, runs: list) -> list:
+    """The rows of each run of points, each run solved from a cold start and then warm-started."""
+    out = []
+    for run in runs:
+        rows, start = [], None
+        for p in run:
+            res = _gear_solve(p, base, start)
+            rows.append(_gear_row(res, p))
+            # the last optimum seeds the next solve (optimize_shifts falls back to its grid when it is infeasible)
+            start = (res.x1, res.x2) if res.success else None
+        out.append(rows)
+    return out
+
+
+def _map_points(fn, items: list, base: dict, where: dict) -> list:
+    """[fn(base, chunk) for each chunk of items], here or on the cluster ``where`` names."""
+    n_workers = parallel.slots(**where)
+    if not parallel.requested(**where):
+        return [fn(base, items)]
+    return parallel.map_chunks(functools.partial(fn, base),
+                               [items[s] for s in parallel.chunk_slices(len(items), n_workers, 1, SWEEP_CHUNK_MAX)],
+                               **where)
+
+
 # --- chain ---------------------------------------------------------------------------------------
 
 
-def _chain_sweep(points: list[dict], base: dict) -> pd.DataFrame:
-    from ..drives.chain import design
-    rows = []
-    for p in points:
-        kw = dict(base)
-        for k, v in p.items():
-            if k == "torque_nm":
-                kw.pop("power_kw", None)
-            if k == "power_kw":
-                kw.pop("torque_nm", None)
-            kw[k] = int(v) if k == "z1" else float(v)
-        res = design(**kw)
-        row = dict(p)
-        b = res.best
-        if b is None:
-            closest = res.candidates.iloc[0]
-            row.update(success=False, designation=None, limiting_check=closest["limiting_check"],
-                       min_margin=float(closest["min_margin"]))
-        else:
-            row.update(success=True, designation=b["designation"], pitch_mm=float(b["pitch_mm"]),
-                       strands=int(b["strands"]), z1_teeth=int(b["z1"]), links=int(b["links"]),
-                       pressure_mpa=float(b["pressure_mpa"]), limiting_check=b["limiting_check"],
-                       min_margin=float(b["min_margin"]))
-            row.update({c: float(b[c]) for c in b.index if c.startswith("margin_") and np.isfinite(b[c])})
-        rows.append(row)
+def _chain_sweep(points: list[dict], base: dict, where: dict) -> pd.DataFrame:
+    groups = [points[s:s + WARM_START_RUN] for s in range(0, len(points), WARM_START_RUN)]
+    rows = [row for part in _map_points(_chain_rows, groups, base, where) for group in part for row in group]
     out = pd.DataFrame(rows)
     out.attrs.update(target="chain")
     return out
 
 
+def _chain_rows(base: dict, groups: list) -> list:
+    """The rows of each group of points (each point designed on its own)."""
+    return [[_chain_row(p, base) for p in group] for group in groups]
+
+
+def _chain_row(p: dict, base: dict) -> dict:
+    """One point of a chain sweep: the best chain (or the closest) and its margins."""
+    from ..drives.chain import design
+    kw = dict(base)
+    for k, v in p.items():
+        if k == "torque_nm":
+            kw.pop("power_kw", None)
+        if k == "power_kw":
+            kw.pop("torque_nm", None)
+        kw[k] = int(v) if k == "z1" else float(v)
+    res = design(**kw)
+    row = dict(p)
+    b = res.best
+    if b is None:
+        closest = res.candidates.iloc[0]
+        row.update(success=False, designation=None, limiting_check=closest["limiting_check"],
+                   min_margin=float(closest["min_margin"]))
+    else:
+        row.update(success=True, designation=b["designation"], pitch_mm=float(b["pitch_mm"]),
+                   strands=int(b["strands"]), z1_teeth=int(b["z1"]), links=int(b["links"]),
+                   pressure_mpa=float(b["pressure_mpa"]), limiting_check=b["limiting_check"],
+                   min_margin=float(b["min_margin"]))
+        row.update({c: float(b[c]) for c in b.index if c.startswith("margin_") and np.isfinite(b[c])})
+    return row
+
+
 def sweep(parameter: str, values, parameter2: str | None = None, values2=None, *, target: str = "gear",
-          **base) -> pd.DataFrame:
+          client=None, workers=None, **base) -> pd.DataFrame:
     """Vary one or two inputs and return the optimum and the margins at every point.
 
     Parameters
@@ -178,6 +214,12 @@ def sweep(parameter: str, values, parameter2: str | None = None, values2=None, *
     **base : the fixed inputs, as for :func:`geardesign.shifts.optimize.optimize_shifts` (``z1``, ``z2``,
         ``objective``, ``checks`` as a dict of limits, ``rack``, ``method``, ``m``, ``a_w``) or
         :func:`geardesign.drives.chain.design`.
+    client, workers : solve the points on a ``dask.distributed.Client`` or on a local cluster of
+        ``workers`` processes made for the call; the table is the serial one bit for bit and
+        STUDY_VALUES_MAX, STUDY_POINTS_MAX are multiplied by the number of workers (see
+        :mod:`geardesign.parallel`). Limit, rack and centre-distance points are solved in runs of
+        WARM_START_RUN, each run's first point from a cold start and the next from the last optimum,
+        here and on a cluster alike (so the result does not depend on where it ran).
 
     Returns a DataFrame, one row per point: the input(s), then for gears ``x1, x2, x_sum, fun,
     eps_alpha, a_w_mm, success, active``, one ``margin_<check>`` and one ``sens_<check>``
@@ -196,17 +238,20 @@ def sweep(parameter: str, values, parameter2: str | None = None, values2=None, *
         raise GearDesignError("give parameter2 and values2 together")
     if parameter2 == parameter:
         raise GearDesignError(f"parameter2 must differ from parameter, got {parameter2!r} twice")
+    where = dict(client=client, workers=workers)
+    scale = parallel.slots(**where)
+    values_max, points_max = STUDY_VALUES_MAX * scale, STUDY_POINTS_MAX * scale
     v1 = list(np.atleast_1d(require_finite("values", values)).ravel())
-    if not 1 <= len(v1) <= STUDY_VALUES_MAX:
-        raise GearDesignError(f"values must hold 1 to {STUDY_VALUES_MAX} values, got {len(v1)}")
+    if not 1 <= len(v1) <= values_max:
+        raise GearDesignError(f"values must hold 1 to {values_max} values, got {len(v1)}")
     if parameter2 is None:
         points = [{parameter: v} for v in v1]
     else:
         v2 = list(np.atleast_1d(require_finite("values2", values2)).ravel())
-        if not 1 <= len(v2) <= STUDY_VALUES_MAX:
-            raise GearDesignError(f"values2 must hold 1 to {STUDY_VALUES_MAX} values, got {len(v2)}")
-        if len(v1) * len(v2) > STUDY_POINTS_MAX:
-            raise GearDesignError(f"a two-parameter study takes at most {STUDY_POINTS_MAX:,} points, "
+        if not 1 <= len(v2) <= values_max:
+            raise GearDesignError(f"values2 must hold 1 to {values_max} values, got {len(v2)}")
+        if len(v1) * len(v2) > points_max:
+            raise GearDesignError(f"a two-parameter study takes at most {points_max:,} points, "
                                   f"got {len(v1)} x {len(v2)} = {len(v1) * len(v2):,}")
         points = [{parameter: a, parameter2: b} for a, b in itertools.product(v1, v2)]
     if target == "gear":
@@ -218,8 +263,8 @@ def sweep(parameter: str, values, parameter2: str | None = None, values2=None, *
                 if k in p:
                     p[k] = int(round(p[k]))
         base = {k: v for k, v in base.items() if v is not None or k in ("checks", "rack")}
-        return _gear_sweep(points, base)
-    return _chain_sweep(points, base)
+        return _gear_sweep(points, base, where)
+    return _chain_sweep(points, base, where)
 
 
 def local_sensitivities(z1, z2, objective=None, checks=None, rack=None, step=0.02, m=1.0, a_w=None,
