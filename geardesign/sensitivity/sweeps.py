@@ -21,19 +21,25 @@ import pandas as pd
 
 from .. import parallel
 from ..errors import GearDesignError
+from ..gears.checks import make_checks, option, options as check_options
+from ..gears.rack import BasicRack
 from ..validate import require_finite
 
 __all__ = ["sweep", "sweep_parameters", "local_sensitivities", "plot_tornado", "plot_margins",
            "plot_region_motion", "LIMIT_PARAMETERS", "RACK_PARAMETERS", "CHAIN_PARAMETERS"]
 
-LIMIT_PARAMETERS = ("eps_alpha_min", "sa_min")
+def limit_parameters() -> tuple:
+    """The check limits a sweep may vary: the check registry's options marked sweepable."""
+    return tuple(name for name, opt in check_options().items() if opt.sweep)
+
+
+LIMIT_PARAMETERS = limit_parameters()
 RACK_PARAMETERS = ("alpha_deg", "ha", "c", "rho_f")
 TOOTH_PARAMETERS = ("z1", "z2")
 GEAR_PARAMETERS = LIMIT_PARAMETERS + RACK_PARAMETERS + TOOTH_PARAMETERS + ("a_w",)
 CHAIN_PARAMETERS = ("torque_nm", "power_kw", "n1_rpm", "ratio", "k_e", "allowable_pressure_mpa",
                     "allowable_safety_factor", "z1", "center_distance_mm", "sag_factor")
-_DEFAULT_LIMITS = {"eps_alpha_min": 1.2, "sa_min": 0.25}
-_RACK_DEFAULTS = {"alpha_deg": 20.0, "ha": 1.0, "c": 0.25, "rho_f": 0.38}
+_RACK_DEFAULTS = {k: getattr(BasicRack(), k) for k in RACK_PARAMETERS}
 
 
 STUDY_VALUES_MAX = 2000      # values of one parameter (~10 s of optimisation at ~5 ms each), per worker
@@ -58,7 +64,6 @@ def sweep_parameters(target: str = "gear") -> tuple:
 
 
 def _rack_with(rack, **changes):
-    from ..gears.rack import BasicRack
     base = {k: getattr(rack, k) for k in RACK_PARAMETERS} if rack is not None else dict(_RACK_DEFAULTS)
     base.update(changes)
     return BasicRack(**base)
@@ -77,7 +82,7 @@ def _gear_solve(point: dict, base: dict, start=None):
     from ..shifts.optimize import optimize_shifts
     kw = dict(base)
     checks = kw.pop("checks", None)
-    checks = dict(_DEFAULT_LIMITS if checks is None else checks)
+    checks = dict(checks or {})
     rack = kw.pop("rack", None)
     rack_changes = {}
     for k, v in point.items():
@@ -283,14 +288,19 @@ def local_sensitivities(z1, z2, objective=None, checks=None, rack=None, step=0.0
               internal=internal, face_width=face_width)
     if bounds is not None:
         kw["bounds"] = tuple(bounds)
-    limits = dict(_DEFAULT_LIMITS if checks is None else checks)
+    limits = dict(checks or {})
     exact = optimize_shifts(z1, z2, checks=limits, rack=rack, method="exact", **kw)
     convex = optimize_shifts(z1, z2, checks=limits, rack=rack, method="convex", **kw)
-    name_of = {"eps_alpha_min": ["contact_ratio"], "sa_min": ["tip_thickness1", "tip_thickness2"]}
+    # each sweepable limit of the checks this case builds, and the names of the checks it sets
+    name_of = {}
+    for c in make_checks(**{"internal": internal, **limits}):
+        if c.option is not None and c.option.sweep:
+            name_of.setdefault(c.option.name, []).append(c.name)
     rows = []
-    inputs = [k for k in LIMIT_PARAMETERS if limits.get(k) is not None] + list(RACK_PARAMETERS)
+    inputs = list(name_of) + list(RACK_PARAMETERS)
     for k in inputs:
-        v0 = float(limits[k]) if k in LIMIT_PARAMETERS else float(getattr(rack, k) if rack else _RACK_DEFAULTS[k])
+        v0 = (float(limits.get(k, option(k).default)) if k in LIMIT_PARAMETERS
+              else float(getattr(rack, k) if rack else _RACK_DEFAULTS[k]))
         h = step * abs(v0) if v0 != 0 else step
         funs = []
         for v in (v0 - h, v0 + h):
@@ -373,7 +383,7 @@ def plot_region_motion(parameter: str, values, z1, z2, checks=None, rack=None, a
     cmap = plt.get_cmap("viridis")
     vals = list(values)
     for i, v in enumerate(vals):
-        lim = dict(_DEFAULT_LIMITS if checks is None else checks)
+        lim = dict(checks or {})
         rk = rack
         if parameter in LIMIT_PARAMETERS:
             lim[parameter] = float(v)

@@ -30,7 +30,7 @@ from tests.scene_files import GOOD_GEAR, write
     (GOOD_GEAR + "[gear.rack]\nalpha_deg = 50\n", "alpha_deg", "expected a number in [1, 44]"),   # gears.rack ALPHA_RANGE_DEG
     ("[chain]\ntorque_nm = 380\nn1_rpm = 120\nratio = 0.5\n", "ratio", "expected a number in [1, 10]"),
     ("[key]\nd_mm = 60\ntorque_nm = 380\nhub_length_mm = 50\nmax_keys = 3\n", "max_keys", "[1, 2]"),
-    (GOOD_GEAR + "[study]\nparameter = \"colour\"\nvalues = [1, 2]\n", "parameter", "expected one of eps_alpha_min"),
+    (GOOD_GEAR + "[study]\nparameter = \"colour\"\nvalues = [1, 2]\n", "parameter", "expected one of sa_min, eps_alpha_min"),
     (GOOD_GEAR + "[study]\ntarget = \"chain\"\nparameter = \"k_e\"\nvalues = [1, 2]\n", "target", "[chain] is missing"),
 ])
 def test_scene_errors_name_file_key_and_expectation(tmp_path, text, key, expected):
