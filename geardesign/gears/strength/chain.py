@@ -10,8 +10,8 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import broadcast_inputs, one_number, require_range
-from ..geometry import pair_geometry
-from ..mesh import section_constants
+from ..geometry import mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry, validate_inputs
+from ..mesh import Mesh, section_constants
 from ..rack import STANDARD_RACK, BasicRack
 from . import accuracy as acc
 from . import contact as zc
@@ -74,13 +74,26 @@ def _material(value, name):
 
 def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening):
     """The geometry fields the chain needs, from pair_geometry (validated there), and the section constants."""
+    if all(type(v) in (int, float) for v in (m, z1, z2, x1, x2)) and isinstance(rack, BasicRack):
+        # one design in plain numbers: the float path of the geometry (validated as pair_geometry does)
+        validate_inputs(m, z1, z2, x1, x2)
+        mesh = Mesh(z1, z2, rack, tip_shortening, float(beta_deg), internal)
+        geo = mesh_geometry_float(mesh, m, x1, x2, full=False)
+        if not (geo["inv_alpha_w"] > 0 and geo["_gap1"] > 0 and geo["_gap2"] > 0 and geo["df1"] > 0
+                and geo["df2"] > 0):
+            validate_geometry(mesh_geometry(mesh, m, x1, x2, full=False), mesh)
+        return _derived({k: np.float64(geo[k]) for k in _GEOMETRY}, z1, z2, rack, beta_deg)
     if np.size(x1) > 1 or np.size(x2) > 1:
         # pair_geometry(fields=...) of one pair (m, z1, z2 numbers) over more than one block of shifts fills the
         # pair-wide fields at the full size in each block and fails: give it m at the designs' shape instead
         m = np.broadcast_to(np.asarray(m, dtype=float), np.broadcast_shapes(np.shape(m), np.shape(x1), np.shape(x2)))
     geo = pair_geometry(m, z1, z2, x1, x2, rack=rack, tip_shortening=tip_shortening, fields=_GEOMETRY,
                         beta_deg=beta_deg, internal=internal)
-    g = {k: np.asarray(getattr(geo, k), dtype=float) for k in _GEOMETRY}
+    return _derived({k: np.asarray(getattr(geo, k), dtype=float) for k in _GEOMETRY}, z1, z2, rack, beta_deg)
+
+
+def _derived(g, z1, z2, rack, beta_deg):
+    """α_wt (from d_b1/d_w1), α_t, β_b, z_n, tooth depths: what the chain reads besides pair_geometry's fields."""
     sc = section_constants(rack.alpha, math.radians(beta_deg))
     g["alpha_wt_deg"] = np.degrees(np.arccos(np.minimum(g["db1"] / g["dw1"], 1.0)))
     g["alpha_t_deg"] = math.degrees(sc.alpha_t)
@@ -199,7 +212,7 @@ def _contact(G, g, mats, F_t, b, u, K_A, K_gamma, v, n12, life_h, nu40, Rz, life
                                                                   g["alpha_wt_deg"])))
     out["Z_E"] = np.asarray(G.pick("Z_E", lambda: zc.elasticity_factor(m1.E_mpa, m1.nu, m2.E_mpa, m2.nu)))
     ZB, ZD = zc.single_pair_factors(g["db1"], g["db2"], g["da1"], g["da2"], g["alpha_wt_deg"], g["a_w"],
-                                    g["eps_alpha"], out["eps_beta"], g["p_b"], internal)
+                                    g["eps_alpha"], out["eps_beta"], g["p_b"], internal, g["_z2"] / g["_z1"])
     out["Z_B"], out["Z_D"] = (np.asarray(G.pick("Z_B", lambda: ZB)), np.asarray(G.pick("Z_D", lambda: ZD)))
     s0 = zc.nominal_contact_stress(F_t, g["d1"], b, u, out["Z_H"], out["Z_E"], out["Z_eps"], out["Z_beta"], internal)
     K = (K_A, K_gamma, out["K_v"], out["K_Hbeta"], out["K_Halpha"])
