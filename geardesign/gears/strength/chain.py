@@ -139,7 +139,9 @@ def _deviations(G, m, g, b, grade):
 
 
 def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
-    """c′_th, c′, c_γα, c_γβ (ISO 6336-1:2019 clause 9) and the regression's range flag."""
+    """c′_th, c′, c_γα, c_γβ (ISO 6336-1:2019 clause 9) and the regression's range flag. A ring's shift enters
+    with ISO 21771's sign (x_ISO = −x of this project's GOST 19274 convention, as its tooth count is −z there)."""
+    x2 = -np.asarray(x2, dtype=float) if internal else x2
     c_th = kf.theoretical_single_stiffness(g["z_n1"], g["z_n2"], x1, x2, internal)
     C_B = kf.basic_rack_factor(rack.ha + rack.c, rack.alpha_deg)
     c_prime = G.pick("c_prime", lambda: kf.single_stiffness(c_th, C_B, beta_deg, w_A))
