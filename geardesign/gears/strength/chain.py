@@ -289,23 +289,18 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     mats = (_material(material1, "material1"), _material(material1 if material2 is None else material2, "material2"))
     grade, nu40, Rz, Rz_root, K_gamma, root_method = _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um,
                                                                        K_gamma, root_method)
+    S_Hmin = one_number("S_Hmin", require_range("S_Hmin", S_Hmin, 0.5, 10.0))
+    S_Fmin = one_number("S_Fmin", require_range("S_Fmin", S_Fmin, 0.5, 10.0))
+    cpr = tuple(one_number("cycles_per_rev", require_range("cycles_per_rev", c, 1, 1000)) for c in cycles_per_rev)
     G = _Given(factors)
     g = _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening)
     m_arr = np.asarray(m, dtype=float)
     b, b1, b2 = _widths(face_width_mm, face_width2_mm, m_arr)
     broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width=b)
-    T1, n1, n2 = _speeds(load, np.asarray(z1, dtype=float), np.asarray(z2, dtype=float))
+    out = _kinematics(load, g, b, m_arr, beta_deg, K_gamma)
+    F_t, v, n1, n2, eps_gamma = out["F_t"], out["v"], out["n1"], out["n2"], out["eps_gamma"]
     K_A = load.application_factor
-    F_t = kf.tangential_load(T1, g["d1"])
-    v = kf.pitch_line_velocity(g["d1"], n1)
     w_A = F_t * K_A / b
-    out = {"F_t": F_t, "v": v, "K_A": np.asarray(K_A), "K_gamma": np.asarray(K_gamma), "n1": n1, "n2": n2,
-           "alpha_wt_deg": g["alpha_wt_deg"], "eps_alpha": g["eps_alpha"], "z_n1": g["z_n1"], "z_n2": g["z_n2"]}
-    sin_b = math.sin(math.radians(beta_deg))
-    out["eps_beta"] = b * sin_b / (math.pi * m_arr)
-    eps_gamma = g["eps_alpha"] + out["eps_beta"]
-    out["eps_gamma"] = eps_gamma
-    out["eps_alpha_n"] = g["eps_alpha"] / math.cos(math.radians(g["beta_b_deg"])) ** 2
     dev = _deviations(G, m_arr, g, b, grade)
     out.update({k: np.asarray(val) for k, val in dev.items()})
     _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out)
@@ -314,19 +309,32 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     out["Z_eps"] = np.asarray(G.pick("Z_eps", lambda: zc.contact_ratio_factor(g["eps_alpha"], out["eps_beta"])))
     out["Z_beta"] = np.asarray(G.pick("Z_beta", lambda: zc.helix_angle_factor(beta_deg)))
     _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], root_method, out)
-    cpr = tuple(one_number("cycles_per_rev", require_range("cycles_per_rev", c, 1, 1000)) for c in cycles_per_rev)
     _contact(G, g, mats, F_t, b, g["d2"] / g["d1"], K_A, K_gamma, v, (n1 * cpr[0], n2 * cpr[1]), load.life_h, nu40, Rz,
              {"pitting_permitted": pitting_permitted, "optimum": optimum_life}, internal, out)
     root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root,
               (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out, rim_mm)
-    S_Hmin = one_number("S_Hmin", require_range("S_Hmin", S_Hmin, 0.5, 10.0))
-    S_Fmin = one_number("S_Fmin", require_range("S_Fmin", S_Fmin, 0.5, 10.0))
+    return _finish(out, S_Hmin, S_Fmin, np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
+
+
+def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
+    """F_t, v, the speeds and the contact ratios: the first fields of the chain's dict."""
+    T1, n1, n2 = _speeds(load, g["_z1"], g["_z2"])
+    F_t = kf.tangential_load(T1, g["d1"])
+    eps_beta = b * math.sin(math.radians(beta_deg)) / (math.pi * m)
+    return {"F_t": F_t, "v": kf.pitch_line_velocity(g["d1"], n1), "K_A": np.asarray(load.application_factor),
+            "K_gamma": np.asarray(K_gamma), "n1": n1, "n2": n2, "alpha_wt_deg": g["alpha_wt_deg"],
+            "eps_alpha": g["eps_alpha"], "z_n1": g["z_n1"], "z_n2": g["z_n2"], "eps_beta": eps_beta,
+            "eps_gamma": g["eps_alpha"] + eps_beta,
+            "eps_alpha_n": g["eps_alpha"] / math.cos(math.radians(g["beta_b_deg"])) ** 2}
+
+
+def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
+    """The permissible stresses, every field at the designs' shape, and the names of the given factors."""
     for i in (1, 2):
         out[f"sigma_HP{i}"] = out[f"sigma_HG{i}"] / S_Hmin
         out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
     out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
-    shape = np.broadcast_shapes(np.shape(F_t), np.shape(b))
-    for k, val in out.items():   # every field the designs' shape (read-only views for the pair-wide ones)
+    for k, val in out.items():   # read-only views for the pair-wide fields
         if isinstance(val, np.ndarray) and val.shape != shape:
             out[k] = np.broadcast_to(val, shape)
         elif isinstance(val, float) and shape:
