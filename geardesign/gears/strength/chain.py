@@ -9,7 +9,7 @@ import math
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import broadcast_inputs, one_number, require_range
+from ...validate import broadcast_inputs, one_number, require_bool, require_range
 from ..geometry import mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry, validate_inputs
 from ..mesh import Mesh, section_constants
 from ..rack import STANDARD_RACK, BasicRack
@@ -262,7 +262,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
                   Rz_flank_um=dflt.RZ_FLANK_UM, Rz_root_um=dflt.RZ_ROOT_UM, root_method: str = "B", factors=None,
                   K_gamma: float = 1.0, tip_relief_um=None, bore_ratio=(0.0, 0.0), shaft=None,
                   pitting_permitted: bool = False, optimum_life: bool = False, S_Hmin: float = dflt.S_HMIN,
-                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), rim_mm=(None, None)) -> dict:
+                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), rim_mm=(None, None), root: bool = True) -> dict:
     """ISO 6336 load capacity of gear pairs, vectorised: m (normal module, mm), z1, z2, x1, x2 and the face
     widths broadcast like :func:`~geardesign.gears.geometry.pair_geometry`, whose geometry (operating
     pressure angle, ε_α, diameters) is used as it is. Returns a dict of float arrays: the stresses and safety
@@ -282,6 +282,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``S_Fmin``: the minimum safety factors for σ_HP = σ_HG/S_Hmin and σ_FP = σ_FG/S_Fmin (defaults and their
     source: :mod:`~geardesign.gears.strength.defaults`). ``cycles_per_rev``: load cycles of a tooth per revolution of
     each gear (a sun among N planets: N). ``rim_mm``: (s_R1, s_R2) rim thickness under the root for Y_B (None: solid).
+    ``root=False`` leaves the root side out (no S_F, σ_F, Y fields): half the work where only contact is asked.
     """
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
@@ -311,8 +312,9 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], root_method, out)
     _contact(G, g, mats, F_t, b, g["d2"] / g["d1"], K_A, K_gamma, v, (n1 * cpr[0], n2 * cpr[1]), load.life_h, nu40, Rz,
              {"pitting_permitted": pitting_permitted, "optimum": optimum_life}, internal, out)
-    root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root,
-              (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out, rim_mm)
+    if require_bool("root", root):
+        root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root,
+                  (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out, rim_mm)
     return _finish(out, S_Hmin, S_Fmin, np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
 
 
@@ -332,7 +334,8 @@ def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
     """The permissible stresses, every field at the designs' shape, and the names of the given factors."""
     for i in (1, 2):
         out[f"sigma_HP{i}"] = out[f"sigma_HG{i}"] / S_Hmin
-        out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
+        if f"sigma_FG{i}" in out:
+            out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
     out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
     for k, val in out.items():   # read-only views for the pair-wide fields
         if isinstance(val, np.ndarray) and val.shape != shape:

@@ -214,3 +214,11 @@ def test_planetary_refusals_and_sun_cycles():
     z_nt = r["sun-planet"].factors.query("symbol == 'Z_NT' and gear == 1").value.iloc[0]
     from geardesign.gears.strength.life import contact_life_factor
     assert z_nt == pytest.approx(float(contact_life_factor(60 * n_rel * 1000 * 3, "Eh")), rel=1e-12)
+
+
+def test_contact_only():
+    full = _pair(100.0, factors=None)
+    contact = _pair(100.0, factors=None, root=False)
+    assert "S_F1" not in contact and "Y_F1" not in contact
+    for k in ("S_H1", "S_H2", "K_v", "K_Hbeta", "K_Halpha"):
+        assert float(contact[k]) == float(full[k])
