@@ -6,7 +6,7 @@ import math
 import pytest
 
 from geardesign.gears.geometry import pair_geometry
-from geardesign.gears.strength import Load, material, pair_strength
+from geardesign.gears.strength import Load, pair_strength
 
 
 @pytest.mark.parametrize("beta", [0.0, 12.0])
