@@ -343,6 +343,7 @@ def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
         elif isinstance(val, float) and shape:
             out[k] = np.broadcast_to(np.float64(val), shape)
     out["given"] = tuple(sorted(G.used))
+    out["given_unused"] = tuple(sorted(set(G.values) - G.used))   # e.g. f_sh with K_Hbeta given, Y_eps with method B
     return out
 
 

@@ -186,6 +186,8 @@ def from_chain(out: dict, title: str = "") -> StrengthResult:
             notes.append(text)
     for name in out.get("given", ()):
         notes.append(f"{name} given, not computed")
+    for name in out.get("given_unused", ()):
+        notes.append(f"{name} given but not used (another given factor or the root method makes it unneeded)")
     return StrengthResult(**{k: _scalar(out[k]) for k in _STRESSES}, S_Hmin=float(out["S_Hmin"]),
                           S_Fmin=float(out["S_Fmin"]), _factor_rows=tuple(rows), given=tuple(out.get("given", ())),
                           notes=tuple(notes), title=title)

@@ -222,3 +222,8 @@ def test_contact_only():
     assert "S_F1" not in contact and "Y_F1" not in contact
     for k in ("S_H1", "S_H2", "K_v", "K_Hbeta", "K_Halpha"):
         assert float(contact[k]) == float(full[k])
+
+
+def test_a_given_factor_that_is_not_needed_is_reported():
+    out = _pair(100.0, factors={"K_Hbeta": 1.2, "f_sh": 10.0, "Y_eps": 0.7})
+    assert out["given"] == ("K_Hbeta",) and out["given_unused"] == ("Y_eps", "f_sh")
