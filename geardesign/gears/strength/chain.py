@@ -9,9 +9,9 @@ import math
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import broadcast_inputs, one_number, require_range
-from ..geometry import pair_geometry
-from ..mesh import section_constants
+from ...validate import broadcast_inputs, one_number, require_bool, require_range
+from ..geometry import mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry, validate_inputs
+from ..mesh import Mesh, section_constants
 from ..rack import STANDARD_RACK, BasicRack
 from . import accuracy as acc
 from . import contact as zc
@@ -74,22 +74,26 @@ def _material(value, name):
 
 def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening):
     """The geometry fields the chain needs, from pair_geometry (validated there), and the section constants."""
+    if all(type(v) in (int, float) for v in (m, z1, z2, x1, x2)) and isinstance(rack, BasicRack):
+        # one design in plain numbers: the float path of the geometry (validated as pair_geometry does)
+        validate_inputs(m, z1, z2, x1, x2)
+        mesh = Mesh(z1, z2, rack, tip_shortening, float(beta_deg), internal)
+        geo = mesh_geometry_float(mesh, m, x1, x2, full=False)
+        if not (geo["inv_alpha_w"] > 0 and geo["_gap1"] > 0 and geo["_gap2"] > 0 and geo["df1"] > 0
+                and geo["df2"] > 0):
+            validate_geometry(mesh_geometry(mesh, m, x1, x2, full=False), mesh)
+        return _derived({k: np.float64(geo[k]) for k in _GEOMETRY}, z1, z2, rack, beta_deg)
     if np.size(x1) > 1 or np.size(x2) > 1:
         # pair_geometry(fields=...) of one pair (m, z1, z2 numbers) over more than one block of shifts fills the
         # pair-wide fields at the full size in each block and fails: give it m at the designs' shape instead
         m = np.broadcast_to(np.asarray(m, dtype=float), np.broadcast_shapes(np.shape(m), np.shape(x1), np.shape(x2)))
     geo = pair_geometry(m, z1, z2, x1, x2, rack=rack, tip_shortening=tip_shortening, fields=_GEOMETRY,
                         beta_deg=beta_deg, internal=internal)
-    fields = {k: getattr(geo, k) for k in _GEOMETRY}
-    return chain_geometry({**fields, "_z1": np.asarray(z1, dtype=float), "_z2": np.asarray(z2, dtype=float)}, rack,
-                          beta_deg)
+    return _derived({k: np.asarray(getattr(geo, k), dtype=float) for k in _GEOMETRY}, z1, z2, rack, beta_deg)
 
 
-def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float) -> dict:
-    """The fields the chain reads, from a geometry dict of :func:`~geardesign.gears.geometry.mesh_geometry`
-    (with its path of contact) instead of a validated :func:`pair_geometry`: the same derived fields as
-    :func:`_geometry`."""
-    g = {k: np.asarray(geo[k], dtype=float) for k in _GEOMETRY}
+def _derived(g, z1, z2, rack, beta_deg):
+    """α_wt (from d_b1/d_w1), α_t, β_b, z_n, tooth depths: what the chain reads besides pair_geometry's fields."""
     sc = section_constants(rack.alpha, math.radians(beta_deg))
     with np.errstate(invalid="ignore"):
         g["alpha_wt_deg"] = np.degrees(np.arccos(np.minimum(g["db1"] / g["dw1"], 1.0)))
@@ -102,6 +106,15 @@ def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float) -> dict:
     g["h1"] = (g["da1"] - g["df1"]) / 2.0
     g["h2"] = np.abs(g["da2"] - g["df2"]) / 2.0
     return g
+
+
+def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float) -> dict:
+    """The fields the chain reads, from a geometry dict of :func:`~geardesign.gears.geometry.mesh_geometry`
+    (with its path of contact) instead of a validated :func:`pair_geometry`: designs that do not exist give
+    NaN (the strength checks of the shift solvers mask them)."""
+    with np.errstate(invalid="ignore"):
+        return _derived({k: np.asarray(geo[k], dtype=float) for k in _GEOMETRY}, geo["_z1"], geo["_z2"], rack,
+                        beta_deg)
 
 
 def _widths(face_width_mm, face_width2_mm, m):
@@ -135,7 +148,9 @@ def _deviations(G, m, g, b, grade):
 
 
 def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
-    """c′_th, c′, c_γα, c_γβ (ISO 6336-1:2019 clause 9) and the regression's range flag."""
+    """c′_th, c′, c_γα, c_γβ (ISO 6336-1:2019 clause 9) and the regression's range flag. A ring's shift enters
+    with ISO 21771's sign (x_ISO = −x of this project's GOST 19274 convention, as its tooth count is −z there)."""
+    x2 = -np.asarray(x2, dtype=float) if internal else x2
     c_th = kf.theoretical_single_stiffness(g["z_n1"], g["z_n2"], x1, x2, internal)
     C_B = kf.basic_rack_factor(rack.ha + rack.c, rack.alpha_deg)
     c_prime = G.pick("c_prime", lambda: kf.single_stiffness(c_th, C_B, beta_deg, w_A))
@@ -208,7 +223,7 @@ def _contact(G, g, mats, F_t, b, u, K_A, K_gamma, v, n12, life_h, nu40, Rz, life
                                                                   g["alpha_wt_deg"])))
     out["Z_E"] = np.asarray(G.pick("Z_E", lambda: zc.elasticity_factor(m1.E_mpa, m1.nu, m2.E_mpa, m2.nu)))
     ZB, ZD = zc.single_pair_factors(g["db1"], g["db2"], g["da1"], g["da2"], g["alpha_wt_deg"], g["a_w"],
-                                    g["eps_alpha"], out["eps_beta"], g["p_b"], internal)
+                                    g["eps_alpha"], out["eps_beta"], g["p_b"], internal, g["_z2"] / g["_z1"])
     out["Z_B"], out["Z_D"] = (np.asarray(G.pick("Z_B", lambda: ZB)), np.asarray(G.pick("Z_D", lambda: ZD)))
     s0 = zc.nominal_contact_stress(F_t, g["d1"], b, u, out["Z_H"], out["Z_E"], out["Z_eps"], out["Z_beta"], internal)
     K = (K_A, K_gamma, out["K_v"], out["K_Hbeta"], out["K_Halpha"])
@@ -256,7 +271,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
                   Rz_flank_um=dflt.RZ_FLANK_UM, Rz_root_um=dflt.RZ_ROOT_UM, root_method: str = "B", factors=None,
                   K_gamma: float = 1.0, tip_relief_um=None, bore_ratio=(0.0, 0.0), shaft=None,
                   pitting_permitted: bool = False, optimum_life: bool = False, S_Hmin: float = dflt.S_HMIN,
-                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), rim_mm=(None, None),
+                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), rim_mm=(None, None), root: bool = True,
                   geometry: dict | None = None) -> dict:
     """ISO 6336 load capacity of gear pairs, vectorised: m (normal module, mm), z1, z2, x1, x2 and the face
     widths broadcast like :func:`~geardesign.gears.geometry.pair_geometry`, whose geometry (operating
@@ -277,6 +292,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``S_Fmin``: the minimum safety factors for σ_HP = σ_HG/S_Hmin and σ_FP = σ_FG/S_Fmin (defaults and their
     source: :mod:`~geardesign.gears.strength.defaults`). ``cycles_per_rev``: load cycles of a tooth per revolution of
     each gear (a sun among N planets: N). ``rim_mm``: (s_R1, s_R2) rim thickness under the root for Y_B (None: solid).
+    ``root=False`` leaves the root side out (no S_F, σ_F, Y fields): half the work where only contact is asked.
     ``geometry``: the pair's geometry dict when the caller has it (:func:`~geardesign.gears.geometry.mesh_geometry`
     of these designs: the strength checks of the shift solvers); it is used unvalidated, so designs that do not
     exist give NaN rather than an error.
@@ -287,24 +303,19 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     mats = (_material(material1, "material1"), _material(material1 if material2 is None else material2, "material2"))
     grade, nu40, Rz, Rz_root, K_gamma, root_method = _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um,
                                                                        K_gamma, root_method)
+    S_Hmin = one_number("S_Hmin", require_range("S_Hmin", S_Hmin, 0.5, 10.0))
+    S_Fmin = one_number("S_Fmin", require_range("S_Fmin", S_Fmin, 0.5, 10.0))
+    cpr = tuple(one_number("cycles_per_rev", require_range("cycles_per_rev", c, 1, 1000)) for c in cycles_per_rev)
     G = _Given(factors)
     g = (_geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening) if geometry is None
          else chain_geometry(geometry, rack, beta_deg))
     m_arr = np.asarray(m, dtype=float)
     b, b1, b2 = _widths(face_width_mm, face_width2_mm, m_arr)
     broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width=b)
-    T1, n1, n2 = _speeds(load, np.asarray(z1, dtype=float), np.asarray(z2, dtype=float))
+    out = _kinematics(load, g, b, m_arr, beta_deg, K_gamma)
+    F_t, v, n1, n2, eps_gamma = out["F_t"], out["v"], out["n1"], out["n2"], out["eps_gamma"]
     K_A = load.application_factor
-    F_t = kf.tangential_load(T1, g["d1"])
-    v = kf.pitch_line_velocity(g["d1"], n1)
     w_A = F_t * K_A / b
-    out = {"F_t": F_t, "v": v, "K_A": np.asarray(K_A), "K_gamma": np.asarray(K_gamma), "n1": n1, "n2": n2,
-           "alpha_wt_deg": g["alpha_wt_deg"], "eps_alpha": g["eps_alpha"], "z_n1": g["z_n1"], "z_n2": g["z_n2"]}
-    sin_b = math.sin(math.radians(beta_deg))
-    out["eps_beta"] = b * sin_b / (math.pi * m_arr)
-    eps_gamma = g["eps_alpha"] + out["eps_beta"]
-    out["eps_gamma"] = eps_gamma
-    out["eps_alpha_n"] = g["eps_alpha"] / math.cos(math.radians(g["beta_b_deg"])) ** 2
     dev = _deviations(G, m_arr, g, b, grade)
     out.update({k: np.asarray(val) for k, val in dev.items()})
     _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out)
@@ -313,24 +324,40 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     out["Z_eps"] = np.asarray(G.pick("Z_eps", lambda: zc.contact_ratio_factor(g["eps_alpha"], out["eps_beta"])))
     out["Z_beta"] = np.asarray(G.pick("Z_beta", lambda: zc.helix_angle_factor(beta_deg)))
     _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], root_method, out)
-    cpr = tuple(one_number("cycles_per_rev", require_range("cycles_per_rev", c, 1, 1000)) for c in cycles_per_rev)
     _contact(G, g, mats, F_t, b, g["d2"] / g["d1"], K_A, K_gamma, v, (n1 * cpr[0], n2 * cpr[1]), load.life_h, nu40, Rz,
              {"pitting_permitted": pitting_permitted, "optimum": optimum_life}, internal, out)
-    root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root,
-              (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out, rim_mm)
-    S_Hmin = one_number("S_Hmin", require_range("S_Hmin", S_Hmin, 0.5, 10.0))
-    S_Fmin = one_number("S_Fmin", require_range("S_Fmin", S_Fmin, 0.5, 10.0))
+    if require_bool("root", root):
+        root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root,
+                  (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out, rim_mm)
+    return _finish(out, S_Hmin, S_Fmin, np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
+
+
+def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
+    """F_t, v, the speeds and the contact ratios: the first fields of the chain's dict."""
+    T1, n1, n2 = _speeds(load, g["_z1"], g["_z2"])
+    F_t = kf.tangential_load(T1, g["d1"])
+    eps_beta = b * math.sin(math.radians(beta_deg)) / (math.pi * m)
+    return {"F_t": F_t, "v": kf.pitch_line_velocity(g["d1"], n1), "K_A": np.asarray(load.application_factor),
+            "K_gamma": np.asarray(K_gamma), "n1": n1, "n2": n2, "alpha_wt_deg": g["alpha_wt_deg"],
+            "eps_alpha": g["eps_alpha"], "z_n1": g["z_n1"], "z_n2": g["z_n2"], "eps_beta": eps_beta,
+            "eps_gamma": g["eps_alpha"] + eps_beta,
+            "eps_alpha_n": g["eps_alpha"] / math.cos(math.radians(g["beta_b_deg"])) ** 2}
+
+
+def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
+    """The permissible stresses, every field at the designs' shape, and the names of the given factors."""
     for i in (1, 2):
         out[f"sigma_HP{i}"] = out[f"sigma_HG{i}"] / S_Hmin
-        out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
+        if f"sigma_FG{i}" in out:
+            out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
     out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
-    shape = np.broadcast_shapes(np.shape(F_t), np.shape(b))
-    for k, val in out.items():   # every field the designs' shape (read-only views for the pair-wide ones)
+    for k, val in out.items():   # read-only views for the pair-wide fields
         if isinstance(val, np.ndarray) and val.shape != shape:
             out[k] = np.broadcast_to(val, shape)
         elif isinstance(val, float) and shape:
             out[k] = np.broadcast_to(np.float64(val), shape)
     out["given"] = tuple(sorted(G.used))
+    out["given_unused"] = tuple(sorted(set(G.values) - G.used))   # e.g. f_sh with K_Hbeta given, Y_eps with method B
     return out
 
 

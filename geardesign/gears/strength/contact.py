@@ -63,7 +63,7 @@ def relative_radius(rho1, rho2, internal=False):
     return rho1 * rho2 / (rho2 - rho1 if internal else rho2 + rho1)
 
 
-def single_pair_factors(db1, db2, da1, da2, alpha_wt_deg, a_w, eps_alpha, eps_beta, p_bt, internal=False):
+def single_pair_factors(db1, db2, da1, da2, alpha_wt_deg, a_w, eps_alpha, eps_beta, p_bt, internal=False, u=None):
     """(Z_B, Z_D): the single pair tooth contact factors that carry σ_H from the pitch point C to the inner
     points of single pair contact B (pinion) and D (wheel) (ISO 6336-2:2019 clause 6, eq. (9), (10)):
     M1 = √(ρ_C1 ρ_C2/(ρ_B1 ρ_B2)), M2 = √(ρ_C1 ρ_C2/(ρ_D1 ρ_D2)) with the radii of curvature on the line of
@@ -89,7 +89,7 @@ def single_pair_factors(db1, db2, da1, da2, alpha_wt_deg, a_w, eps_alpha, eps_be
     eb = np.minimum(np.asarray(eps_beta, dtype=float), 1.0)
     Z_B = np.maximum(M1 - eb * (M1 - 1.0), 1.0)
     Z_D = np.maximum(M2 - eb * (M2 - 1.0), 1.0)
-    u = np.asarray(db2) / db1
+    u = np.asarray(db2) / db1 if u is None else np.asarray(u)   # give u = z2/z1: exact at the rule's 1.5
     Z_D = np.where(u > 1.5, 1.0, Z_D) if not internal else np.ones_like(Z_D)
     return Z_B, Z_D
 

@@ -2,6 +2,7 @@
 from the surface hardness by the part-5 lines) and named steels from the bundled catalog."""
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -149,6 +150,19 @@ def material(name: str, *, hardness: float | None = None, quality: str | None = 
     ...
     geardesign.errors.GearDesignError: material must be a name of the catalog or an ISO 6336-5 group (see material_names()), got 'unobtainium'
     """
+    try:
+        return _material_cached(name, hardness, quality, E_mpa, nu, yield_mpa)
+    except TypeError:            # an unhashable argument (a list, an array): refused by name below
+        return _material(name, hardness, quality, E_mpa, nu, yield_mpa)
+
+
+@functools.lru_cache(maxsize=256)
+def _material_cached(name, hardness, quality, E_mpa, nu, yield_mpa) -> Material:
+    return _material(name, hardness, quality, E_mpa, nu, yield_mpa)
+
+
+def _material(name, hardness, quality, E_mpa, nu, yield_mpa) -> Material:
+    """:func:`material` without the cache (a Material is frozen: one per set of arguments is enough)."""
     if quality is not None and quality not in QUALITIES:
         raise GearDesignError(f"quality must be one of {list(QUALITIES)}, got {quality!r}")
     named = named_materials()

@@ -96,12 +96,21 @@ class StrengthResult(Result):
     sigma_FP2: float
     S_Hmin: float
     S_Fmin: float
-    factors: pd.DataFrame = field(repr=False, compare=False)
+    _factor_rows: tuple = field(repr=False, compare=False)
     given: tuple = ()
     notes: tuple = ()
     title: str = ""
     _success_field = "ok"
     _table_fields = ("factors",)
+
+    @property
+    def factors(self) -> pd.DataFrame:
+        """The factor table: columns ``symbol, gear, value, clause`` (built on first use, then kept)."""
+        frame = self.__dict__.get("_frame")
+        if frame is None:
+            frame = pd.DataFrame(list(self._factor_rows), columns=["symbol", "gear", "value", "clause"])
+            object.__setattr__(self, "_frame", frame)
+        return frame
 
     @property
     def margins(self) -> dict:
@@ -124,7 +133,7 @@ class StrengthResult(Result):
 
     def to_dict(self) -> dict:
         out = super().to_dict()
-        out.update(ok=self.ok, margins=plain(self.margins), governing=self.governing[0],
+        out.update(factors=plain(self.factors), ok=self.ok, margins=plain(self.margins), governing=self.governing[0],
                    min_safety_source=MIN_SAFETY_SOURCE)
         return out
 
@@ -171,13 +180,14 @@ def from_chain(out: dict, title: str = "") -> StrengthResult:
     """The :class:`StrengthResult` of a one-design dict of :func:`~geardesign.gears.strength.chain.pair_strength`."""
     rows = [(sym, gear, _scalar(out[key]), clause) for sym, key, gear, clause in FACTOR_TABLE if key in out]
     rows.append(("Y_ST", 0, 2.0, "ISO 6336-3:2019 (reference test gear: sigma_FE = sigma_Flim Y_ST)"))
-    frame = pd.DataFrame(rows, columns=["symbol", "gear", "value", "clause"])
     notes = []
     for flag, text in _FLAG_NOTES.items():
         if flag in out and bool(np.any(out[flag])):
             notes.append(text)
     for name in out.get("given", ()):
         notes.append(f"{name} given, not computed")
+    for name in out.get("given_unused", ()):
+        notes.append(f"{name} given but not used (another given factor or the root method makes it unneeded)")
     return StrengthResult(**{k: _scalar(out[k]) for k in _STRESSES}, S_Hmin=float(out["S_Hmin"]),
-                          S_Fmin=float(out["S_Fmin"]), factors=frame, given=tuple(out.get("given", ())),
+                          S_Fmin=float(out["S_Fmin"]), _factor_rows=tuple(rows), given=tuple(out.get("given", ())),
                           notes=tuple(notes), title=title)

@@ -198,3 +198,32 @@ def test_every_given_factor_name_is_a_field():
     out = _pair(100.0, factors=None)
     missing = {k for k in GIVEN_FACTORS if k not in out and k not in ("Y_Fa1", "Y_Fa2", "Y_Sa1", "Y_Sa2", "Y_eps")}
     assert not missing, missing
+
+
+def test_planetary_refusals_and_sun_cycles():
+    s = PlanetarySet.coaxial(2, 20, 31, 82, 3)
+    with pytest.raises(GearDesignError, match="load must be a geardesign Load given on the sun"):
+        planetary_strength(s, Load(torque_nm=90, n_rpm=1500, on_gear=2), "18CrNiMo7-6", face_width_mm=25)
+    with pytest.raises(GearDesignError, match="material is needed"):
+        planetary_strength(s, Load(torque_nm=90, n_rpm=1500), face_width_mm=25)
+    sun_fixed = PlanetarySet.coaxial(2, 20, 31, 82, 3, arrangement="sun_fixed")
+    with pytest.raises(GearDesignError, match="arrangement must be 'ring_fixed' or 'carrier_fixed'"):
+        planetary_strength(sun_fixed, Load(torque_nm=90, n_rpm=1500), "18CrNiMo7-6", face_width_mm=25)
+    r = planetary_strength(s, Load(torque_nm=90, n_rpm=1500, life_h=1000), "18CrNiMo7-6", face_width_mm=25)
+    n_rel = 1500 * (1 - 20 / 102)
+    z_nt = r["sun-planet"].factors.query("symbol == 'Z_NT' and gear == 1").value.iloc[0]
+    from geardesign.gears.strength.life import contact_life_factor
+    assert z_nt == pytest.approx(float(contact_life_factor(60 * n_rel * 1000 * 3, "Eh")), rel=1e-12)
+
+
+def test_contact_only():
+    full = _pair(100.0, factors=None)
+    contact = _pair(100.0, factors=None, root=False)
+    assert "S_F1" not in contact and "Y_F1" not in contact
+    for k in ("S_H1", "S_H2", "K_v", "K_Hbeta", "K_Halpha"):
+        assert float(contact[k]) == float(full[k])
+
+
+def test_a_given_factor_that_is_not_needed_is_reported():
+    out = _pair(100.0, factors={"K_Hbeta": 1.2, "f_sh": 10.0, "Y_eps": 0.7})
+    assert out["given"] == ("K_Hbeta",) and out["given_unused"] == ("Y_eps", "f_sh")
