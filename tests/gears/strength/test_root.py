@@ -124,17 +124,18 @@ def _random_design(rng, internal):
 
 def _compare(d, internal, method):
     ref = (_mp_internal if internal else _mp_external)(**d, method=method)
-    got = root_form_factors(d["z"], d["x"], d["da"], eps_alpha=d["eps"], beta_deg=d["beta_deg"],
-                            alpha_n_deg=d["alpha_deg"], hfp_star=d["hfp"], rhofp_star=d["rho"],
-                            spr_star=d["spr"], internal=internal, method=method)
     yf, ys = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")
     pairs = [(yf, "Y"), (ys, "YS")] + [(k, k) for k in ("s_Fn", "h_Fe", "rho_F", "alpha_Fen_rad", "q_s",
                                                         "z_n", "d_en")]
     if not internal:
         pairs.append(("theta_rad", "theta_rad"))
-    for mine, theirs in pairs:
-        want = float(ref[theirs])
-        assert float(got[mine]) == pytest.approx(want, rel=1e-9, abs=1e-12), (mine, d)
+    for wrap in (lambda v: v, lambda v: np.array([v])):      # one design in floats, and the array path
+        got = root_form_factors(wrap(d["z"]), wrap(d["x"]), wrap(d["da"]), eps_alpha=wrap(d["eps"]),
+                                beta_deg=wrap(d["beta_deg"]), alpha_n_deg=d["alpha_deg"], hfp_star=d["hfp"],
+                                rhofp_star=d["rho"], spr_star=d["spr"], internal=internal, method=method)
+        for mine, theirs in pairs:
+            want = float(ref[theirs])
+            assert float(np.squeeze(got[mine])) == pytest.approx(want, rel=1e-9, abs=1e-12), (mine, d)
 
 
 def _valid(d, internal):
