@@ -1,7 +1,7 @@
 """Tooth-root form and stress-correction factors of ISO 6336-3 (methods B and C), vectorised.
 
-Method B (ISO 6336-3:2019, clause 6.2 form factor Y_F, clause 7.2 stress-correction factor Y_S; the same
-formulas as the 2006 edition) loads the tooth at the outer point of single pair tooth contact. Method C
+Method B (ISO 6336-3:2019 and 2006, clause 6.2 form factor Y_F, clause 7.2 stress-correction factor Y_S;
+external gears with the 2006 edition's equations) loads the tooth at the outer point of single pair tooth contact. Method C
 (ISO 6336-3:1996 method C, DIN 3990-3:1987 method C) loads it at the tip: Y_Fa, Y_Sa, to be used with the
 contact ratio factor Y_ε = 0.25 + 0.75/ε_αn and never with method B's Y_F, Y_S.
 
@@ -10,11 +10,15 @@ the normal section (z_n = z/(cos²β_b cos β)).
 
 External gears: the critical section is where the 30° tangent touches the fillet that the basic rack's
 tip rounding (radius ρ_fP) generates; its position follows from the standard's equation for θ (radians),
-solved here by Newton's method from the standard's start θ = π/6. Internal gears: the standard does not
-feed a negative virtual tooth count into that iteration; it treats the internal gear's tooth as the tooth
-of its basic rack (z_n → ∞): the critical section is where the 60° tangent touches the fillet of the rack
-tooth, the fillet radius is the tool's ρ_fP, and the load acts at the basic rack's pressure angle
-(α_Fen = α_n). See :func:`root_form_factors` and docs/strength_root.md.
+solved by Newton's method from the standard's start θ = π/6.
+
+Internal gears: no negative virtual tooth count goes into that iteration. The internal gear's tooth is
+treated as the tooth of its basic rack (z_n → ∞), as ISO 6336-3:2006 does: the critical section is where
+the 60° tangent touches the fillet of the rack tooth, the fillet radius is the tool's ρ_fP, and the load
+acts at the basic rack's pressure angle (α_Fen = α_n). ISO 6336-3:2019 instead derives an internal gear's
+root from its actual generation by the pinion-type shaper cutter (after VDI 2737:2016); that needs the
+cutter's data (teeth, shift, tip radius) and is not implemented here. See :func:`root_form_factors` and
+docs/strength_root.md.
 """
 from __future__ import annotations
 
@@ -211,8 +215,8 @@ _TANGENT_INTERNAL = math.pi / 3.0
 
 
 def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops):
-    """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) of an internal gear treated, as ISO 6336-3:2019
-    clause 6.2 does, as its basic rack (z_n → ∞) with the 60° tangent.
+    """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) of an internal gear treated, as ISO 6336-3:2006
+    does, as its basic rack (z_n → ∞) with the 60° tangent.
 
     The ring's tooth is the rack tooth between two cutter teeth; the cutter's fillet centre lies
     E/m_n from the cutter tooth's centre line, so π/2 − E/m_n from the ring tooth's, and h_fP − ρ_fP
@@ -247,7 +251,8 @@ def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=
     hfp_star, rhofp_star, spr_star : the generating basic rack's dedendum h_fP/m_n (h_a* + c* of
         :class:`~geardesign.gears.rack.BasicRack`), its root radius ρ_fP/m_n (``rho_f``) and the
         protuberance residual s_pr/m_n (0 without protuberance).
-    internal : True for a ring gear (rack treatment with the 60° tangent, see the module docstring).
+    internal : True for a ring gear: ISO 6336-3:2006's rack treatment with the 60° tangent (the 2019
+        edition's shaper-cutter treatment is not implemented; see the module docstring).
     method : "B" (load at the outer point of single pair contact, ISO 6336-3:2019: Y_F, Y_S) or "C"
         (load at the tip, ISO 6336-3:1996 / DIN 3990-3 method C: Y_Fa, Y_Sa, to be used with Y_ε).
 
