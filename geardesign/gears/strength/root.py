@@ -45,6 +45,8 @@ HFP_RANGE = (0.5, 2.5)                 # basic rack dedendum h_fP*/m_n
 RHOFP_RANGE = (0.0, 1.0)               # basic rack root radius ρ_fP*/m_n
 SPR_RANGE = (0.0, 0.5)                 # protuberance residual s_pr*/m_n
 _NEWTON_STEPS = 40
+BLOCK = 16_384                         # designs per block of a large array call (cache-sized temporaries)
+DESIGNS_MAX = 50_000_000               # designs in one call: ~20 output fields of 8 bytes each (~8 GB)
 
 
 def stress_correction_factor(s_Fn, h_Fe, rho_F):
@@ -122,6 +124,9 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
     rho = one_number("rhofp_star", require_range("rhofp_star", rhofp_star, *RHOFP_RANGE))
     spr = one_number("spr_star", require_range("spr_star", spr_star, *SPR_RANGE))
     z, x, da, eps, beta = broadcast_inputs(z=z, x=x, da_over_mn=da, eps_alpha=eps, beta_deg=beta)
+    if z.size > DESIGNS_MAX:
+        raise GearDesignError(f"z, x, da_over_mn, eps_alpha, beta_deg broadcast to {z.size} designs; at most "
+                              f"{DESIGNS_MAX} in one call (split the batch)")
     return z, x, da, eps, np.abs(beta), math.radians(alpha_n), hfp, rho, spr, internal, method, _ArrayOps
 
 
@@ -285,6 +290,21 @@ def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=
         raise GearDesignError("rhofp_star must be > 0 for an internal gear (its fillet radius is "
                               f"rho_fP itself), got {rho!r}")
     E = _rack_fillet_centre(alpha_n, hfp, rho, spr)
+    rack = (alpha_n, hfp, rho, E, internal, method)
+    if ops is _FloatOps:                              # numpy scalars: the same interface as arrays
+        out = _factors(z, x, da, eps, beta, rack, ops)
+        return {k: (np.bool_(v) if k == "in_range" else np.float64(v)) for k, v in out.items()}
+    if z.size <= BLOCK:
+        return _factors(z, x, da, eps, beta, rack, ops)
+    # block by block: ~60 temporaries of BLOCK doubles stay in the caches (as geometry.mesh_geometry does)
+    flat = [v.reshape(-1) for v in (z, x, da, eps, beta)]
+    parts = [_factors(*(v[i:i + BLOCK] for v in flat), rack, ops) for i in range(0, z.size, BLOCK)]
+    return {k: np.concatenate([p[k] for p in parts]).reshape(z.shape) for k in parts[0]}
+
+
+def _factors(z, x, da, eps, beta, rack, ops) -> dict:
+    """Every field of :func:`root_form_factors` for validated inputs (arrays of one shape, or floats)."""
+    alpha_n, hfp, rho, E, internal, method = rack
     cos_beta = ops.cos(beta * (math.pi / 180.0))
     sin_bb = ops.sin(beta * (math.pi / 180.0)) * math.cos(alpha_n)
     cos_bb2 = 1.0 - sin_bb * sin_bb                   # cos²β_b
@@ -304,9 +324,6 @@ def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=
     Y_S = stress_correction_factor(s_Fn, h_Fe, rho_F)
     q_s = s_Fn / (2.0 * rho_F)
     names = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")
-    out = {names[0]: Y_F, names[1]: Y_S, "s_Fn": s_Fn, "h_Fe": h_Fe, "rho_F": rho_F, "alpha_Fen_rad": alpha_F,
-           "q_s": q_s, "theta_rad": th, "z_n": z_n, "d_en": d_e, "eps_alpha_n": eps_n,
-           "in_range": (q_s >= Q_S_RANGE[0]) & (q_s < Q_S_RANGE[1])}
-    if ops is _FloatOps:                              # numpy scalars: the same interface as arrays
-        return {k: (np.bool_(v) if k == "in_range" else np.float64(v)) for k, v in out.items()}
-    return out
+    return {names[0]: Y_F, names[1]: Y_S, "s_Fn": s_Fn, "h_Fe": h_Fe, "rho_F": rho_F, "alpha_Fen_rad": alpha_F,
+            "q_s": q_s, "theta_rad": th, "z_n": z_n, "d_en": d_e, "eps_alpha_n": eps_n,
+            "in_range": (q_s >= Q_S_RANGE[0]) & (q_s < Q_S_RANGE[1])}

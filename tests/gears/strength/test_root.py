@@ -349,3 +349,32 @@ def test_published_examples():
                                 alpha_n_deg=float(row["alpha_n_deg"]), method=row["method"])
         digits = int(row["decimals"])
         assert round(float(got[row["quantity"]]), digits) == round(float(row["value"]), digits), row
+
+
+def test_large_calls_run_in_blocks_with_the_same_values():
+    """A call over more designs than one block gives every design the value of a small call (blocks keep the
+    temporaries in the caches; the values must not depend on them)."""
+    from geardesign.gears.strength.root import BLOCK
+
+    rng = np.random.default_rng(11)
+    n = 2 * BLOCK + 123
+    z = rng.integers(12, 150, n)
+    x = rng.uniform(-0.2, 0.7, n)
+    beta = rng.uniform(0.0, 30.0, n)
+    da = z / np.cos(np.radians(beta)) + 2.0 * (1.0 + x)
+    big = root_form_factors(z, x, da, eps_alpha=1.45, beta_deg=beta, method="C")
+    for lo in (0, BLOCK - 5, n - 500):
+        part = root_form_factors(z[lo:lo + 500], x[lo:lo + 500], da[lo:lo + 500], eps_alpha=1.45,
+                                 beta_deg=beta[lo:lo + 500], method="C")
+        for k, v in part.items():
+            np.testing.assert_allclose(big[k][lo:lo + 500], v, rtol=1e-14, atol=0, err_msg=k)
+    assert big["Y_Fa"].shape == (n,)
+
+
+def test_refuses_too_many_designs_before_any_work():
+    from geardesign.gears.strength.root import DESIGNS_MAX
+
+    z = np.full((10_001, 1), 20)                   # broadcasting views: no memory is taken
+    x = np.zeros((1, DESIGNS_MAX // 10_001 + 1))
+    with pytest.raises(GearDesignError, match="at most 50000000 in one call"):
+        root_form_factors(z, x, 22.0, eps_alpha=1.5)
