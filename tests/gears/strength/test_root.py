@@ -213,9 +213,11 @@ def _measure_generated(m, z, x, rack, eps, points):
 ])
 def test_critical_section_on_generated_tooth(z, x, rack):
     """Tolerances: with 2000 points per segment the splines' error in position and slope is ~1e-11 m (seen:
-    s_Fn, h_Fe within 1e-11 of the formulas, 1e-8 on the undercut z = 17 whose fillet the generator finds by
-    bisection); the radius of curvature needs second derivatives, good to ~1e-6 relative (2e-5 on z = 17)."""
-    measured, r = _measure_generated(5.0, z, x, rack, eps=1.55, points=2000)
+    s_Fn, h_Fe within 1e-11 of the formulas; 2e-9 on the undercut z = 17, 500 points, whose fillet the generator
+    finds by bisection); the radius of curvature needs second derivatives, good to ~1e-6 relative (4e-7 on
+    z = 17)."""
+    # the undercut tooth's fillet comes from a material search per point: fewer points keep it to ~1 s
+    measured, r = _measure_generated(5.0, z, x, rack, eps=1.55, points=500 if z == 17 else 2000)
     assert measured["s_Fn"] == pytest.approx(float(r["s_Fn"]), abs=1e-7)
     assert measured["h_Fe"] == pytest.approx(float(r["h_Fe"]), abs=1e-7)
     assert measured["alpha_Fen_rad"] == pytest.approx(float(r["alpha_Fen_rad"]), abs=1e-9)
