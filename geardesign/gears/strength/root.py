@@ -1,9 +1,9 @@
 """Tooth-root form and stress-correction factors of ISO 6336-3 (methods B and C), vectorised.
 
 Method B (ISO 6336-3:2019 and 2006, clause 6.2 form factor Y_F, clause 7.2 stress-correction factor Y_S;
-external gears with the 2006 edition's equations) loads the tooth at the outer point of single pair tooth contact. Method C
-(ISO 6336-3:1996 method C, DIN 3990-3:1987 method C) loads it at the tip: Y_Fa, Y_Sa, to be used with the
-contact ratio factor Y_ε = 0.25 + 0.75/ε_αn and never with method B's Y_F, Y_S.
+external gears with the 2006 edition's equations) loads the tooth at the outer point of single pair tooth
+contact. Method C (ISO 6336-3:1996 method C, DIN 3990-3:1987 method C) loads it at the tip: Y_Fa, Y_Sa, to be
+used with the contact ratio factor Y_ε = 0.25 + 0.75/ε_αn and never with method B's Y_F, Y_S.
 
 Everything is dimensionless, in units of the normal module m_n, and computed for the virtual spur gear of
 the normal section (z_n = z/(cos²β_b cos β)).
@@ -27,8 +27,8 @@ import math
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import (broadcast_inputs, one_number, require_bool, require_choice, require_finite,
-                         require_int, require_positive, require_range)
+from ...validate import (broadcast_inputs, one_number, require_bool, require_choice, require_int,
+                         require_positive, require_range)
 
 __all__ = ["root_form_factors", "stress_correction_factor", "METHODS", "Q_S_RANGE", "Z_RANGE",
            "EPS_ALPHA_RANGE", "BETA_RANGE_DEG", "ALPHA_N_RANGE_DEG"]
@@ -68,7 +68,7 @@ def stress_correction_factor(s_Fn, h_Fe, rho_F):
 
 class _ArrayOps:
     """numpy functions for arrays of designs."""
-    sin, cos, tan, sqrt, arccos, log = np.sin, np.cos, np.tan, np.sqrt, np.arccos, np.log
+    sin, cos, tan, sqrt, arccos = np.sin, np.cos, np.tan, np.sqrt, np.arccos
     any, all, abs, maximum, clip = staticmethod(np.any), staticmethod(np.all), np.abs, np.maximum, np.clip
 
     @staticmethod
@@ -78,7 +78,7 @@ class _ArrayOps:
 
 class _FloatOps:
     """math functions for one design in Python floats: the same formulas ~10x faster than 0-d arrays."""
-    sin, cos, tan, sqrt, arccos, log = math.sin, math.cos, math.tan, math.sqrt, math.acos, math.log
+    sin, cos, tan, sqrt, arccos = math.sin, math.cos, math.tan, math.sqrt, math.acos
     any = all = staticmethod(bool)
     abs, maximum = abs, max
 
@@ -106,8 +106,8 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
     broadcast float arrays; and the ops that go with them."""
     method = require_choice("method", method, METHODS)
     internal = require_bool("internal", internal)
-    if (type(z) is int and Z_RANGE[0] <= z <= Z_RANGE[1] and _plain(x, *X_RANGE) and _plain(da_over_mn, 1e-300, 1e300)
-            and _plain(eps_alpha, *EPS_ALPHA_RANGE) and _plain(beta_deg, *BETA_RANGE_DEG)
+    if (type(z) is int and Z_RANGE[0] <= z <= Z_RANGE[1] and _plain(x, *X_RANGE)
+            and _plain(da_over_mn, 1e-300, 1e300) and _plain(eps_alpha, *EPS_ALPHA_RANGE) and _plain(beta_deg, *BETA_RANGE_DEG)
             and _plain(alpha_n_deg, *ALPHA_N_RANGE_DEG) and _plain(hfp_star, *HFP_RANGE)
             and _plain(rhofp_star, *RHOFP_RANGE) and _plain(spr_star, *SPR_RANGE)):
         return (float(z), float(x), float(da_over_mn), float(eps_alpha), abs(float(beta_deg)),

@@ -15,7 +15,7 @@ import math
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import require_bool, require_choice, require_finite, require_int, require_positive, require_range
+from ...validate import require_bool, require_choice, require_int, require_positive, require_range
 
 __all__ = ["MATERIAL_KINDS", "Y_ST", "helix_factor_Y_beta", "contact_ratio_factor_Y_eps", "deep_tooth_factor_Y_DT",
            "rim_factor_Y_B", "relative_notch_sensitivity_Y_delta_relT", "relative_surface_factor_Y_RrelT",
