@@ -188,9 +188,10 @@ def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops):
     rho_e = rho_a + p_bn * (eps_n - 1.0) if internal else rho_a - p_bn * (eps_n - 1.0)
     if ops.any(rho_e <= 0.0):
         bad = np.asarray(rho_e) <= 0.0
+        most = eps_n - rho_e / p_bn * (-1.0 if internal else 1.0)     # ε_αn that puts the point on the base circle
         raise GearDesignError(
-            "eps_alpha must leave the outer point of single pair contact above the base circle "
-            f"(eps_alpha_n - 1 < tip roll length / p_bn), got eps_alpha_n={_first(eps_n, bad)}")
+            f"eps_alpha must give eps_alpha_n < {float(_first(most, bad)):.6g} (the outer point of single pair "
+            f"contact above the base circle), got eps_alpha_n={_first(eps_n, bad)}")
     return 2.0 * ops.sqrt(rho_e * rho_e + d_bn * d_bn / 4.0)
 
 
@@ -312,9 +313,10 @@ def _factors(z, x, da, eps, beta, rack, ops) -> dict:
     eps_n = eps / cos_bb2
     da_n = z_n + da - z / cos_beta                    # d_an = d_n + d_a − d
     if ops.any(bad := da_n <= z_n * math.cos(alpha_n)):
+        least = z / cos_beta - z_n * (1.0 - math.cos(alpha_n))      # d_an = d_bn
         raise GearDesignError(
-            "da_over_mn must put the tip above the base circle (d_an > d_bn of the virtual gear), "
-            f"got {_first(da, bad)}")
+            f"da_over_mn must be > {float(_first(least, bad)):.6g} (the tip above the base circle: d_an > d_bn of "
+            f"the virtual gear), got {_first(da, bad)}")
     d_e = _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops)
     section = _internal_section if internal else _external_section
     s_Fn, rho_F, h_Fe, alpha_F, th = section(z_n, x, d_e, alpha_n, E, hfp, rho, ops)
