@@ -188,7 +188,8 @@ def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops):
     rho_e = rho_a + p_bn * (eps_n - 1.0) if internal else rho_a - p_bn * (eps_n - 1.0)
     if ops.any(rho_e <= 0.0):
         bad = np.asarray(rho_e) <= 0.0
-        most = eps_n - rho_e / p_bn * (-1.0 if internal else 1.0)     # ε_αn that puts the point on the base circle
+        most = eps_n + rho_e / p_bn       # ε_αn = 1 + ρ_a/p_bn puts the point on the base circle (external only:
+        #                                   a ring's point lies outward of its tip)
         raise GearDesignError(
             f"eps_alpha must give eps_alpha_n < {float(_first(most, bad)):.6g} (the outer point of single pair "
             f"contact above the base circle), got eps_alpha_n={_first(eps_n, bad)}")
