@@ -427,3 +427,39 @@ def test_ring_section_on_generated_rack_tooth(rack):
     assert limit[0] == pytest.approx(float(r["s_Fn"]), abs=1e-7)
     assert limit[2] == pytest.approx(float(r["h_Fe"]), abs=1e-7)
     assert s5[1] == pytest.approx(float(r["rho_F"]), abs=3e-4)
+
+
+def test_against_a_second_program_din3990_method_c():
+    """A second program's printed intermediate values (tests/data/iso6336_root_din3990_program.csv and
+    iso6336_root_sources.md): DIN 3990 method C of a spur pair 19/104, x = 0.5/0.15, m = 4 mm, rack 1.25/0.25.
+    Not a published example: it checks the arithmetic, and the tolerances say why they are not 1e-12."""
+    import csv
+    from pathlib import Path
+
+    rows = list(csv.DictReader(open(Path(__file__).parents[2] / "data" / "iso6336_root_din3990_program.csv")))
+    gears = {1: (19, 0.5), 2: (104, 0.15)}
+    got = {g: root_form_factors(z, x, z + 2.0 * (1.0 + x), eps_alpha=1.5363235945832296, hfp_star=1.25,
+                                rhofp_star=0.25, method="C") for g, (z, x) in gears.items()}
+    for row in rows:
+        value = float(row["value"])
+        value = math.radians(value) if row["unit"] == "deg" else value / 4.0 if row["unit"] == "mm" else value
+        assert float(got[int(row["gear"])][row["quantity"]]) == pytest.approx(value, rel=float(row["rel_tol"])), row
+    # its theta is the less converged one: the residual of the standard's equation at each (gear 1)
+    a = math.radians(20.0)
+    E = math.pi / 4 - 1.25 * math.tan(a) - (1 - math.sin(a)) * 0.25 / math.cos(a)
+    G, H = 0.25 - 1.25 + 0.5, 2.0 / 19 * (math.pi / 2 - E) - math.pi / 3
+
+    def residual(t):
+        return 2 * G / 19 * math.tan(t) - H - t
+
+    assert abs(residual(float(got[1]["theta_rad"]))) < 1e-14
+    assert abs(residual(math.radians(48.10260415904784))) > 1e-6
+
+
+def test_static_notch_sensitivity_matches_the_second_program():
+    """The same program prints Y_delta_relT,stat = 1.1432162177717213 / 1.1934787612074609 for its case-hardened
+    gears with Y_S = 2.3254914040266397 / 2.439724457289684 (tests/data/iso6336_root_sources.md)."""
+    from geardesign.gears.strength.root_factors import relative_notch_sensitivity_Y_delta_relT as yd
+
+    for ys, want in ((2.3254914040266397, 1.1432162177717213), (2.439724457289684, 1.1934787612074609)):
+        assert float(yd(None, "Eh", static=True, Y_S=ys)) == pytest.approx(want, rel=1e-14)
