@@ -149,9 +149,10 @@ def _slip_layer(kind: str, limit_mpa):
 # Static relative notch sensitivity (ISO 6336-3:2019, clause 13, method B, N_L <= the static limit): linear in Y_S
 # where the kind has no strength term: (a, b) of a Y_S + b.
 _STATIC_LINEAR = {"Eh": (0.44, 0.12), "IF": (0.44, 0.12), "NT": (0.20, 0.60), "NV(nitr)": (0.20, 0.60),
-                  "NV(nitrocar)": (0.20, 0.60), "GTS": (0.075, 0.85), "GG": (0.0, 1.0), "GGG(ferr)": (0.0, 1.0)}
-# with a strength term: Y = (1 + c (Y_S − 1)(s0/σ)^(1/4)) / (1 + c (s0/σ)^(1/4)): (c, s0)
-_STATIC_STRENGTH = {"St": (0.93, 200.0), "V": (0.82, 300.0), "GGG(perl)": (0.82, 300.0)}
+                  "NV(nitrocar)": (0.20, 0.60), "GG": (0.0, 1.0), "GGG(ferr)": (0.0, 1.0)}
+# with a strength term: Y = (1 + c (Y_S − 1)(s0/σ)^(1/4)) / (1 + c (s0/σ)^(1/4)): (c, s0). GTS goes with V and
+# GGG(perl) as in the slip-layer table (DIN 3990-11's list, which has these rows, does not name GTS).
+_STATIC_STRENGTH = {"St": (0.93, 200.0), "V": (0.82, 300.0), "GGG(perl)": (0.82, 300.0), "GTS": (0.82, 300.0)}
 
 
 def relative_notch_sensitivity_Y_delta_relT(q_s, material_kind, *, limit_mpa=None, static: bool = False,
@@ -164,10 +165,10 @@ def relative_notch_sensitivity_Y_delta_relT(q_s, material_kind, *, limit_mpa=Non
     ``limit_mpa`` is σ_B for GG/GGG(ferr) in [150, 300], σ_0.2 for V/GGG(perl)/GTS in [500, 1000], σ_S for St in
     [300, 400]; not needed for Eh, IF, NT, NV).
 
-    Static (``static=True``, from the stress correction factor ``Y_S``): Eh, IF 0.44 Y_S + 0.12; NT, NV
-    0.20 Y_S + 0.60; GTS 0.075 Y_S + 0.85; GG, GGG(ferr) 1.0; St (1 + 0.93 (Y_S − 1)(200/σ_S)^¼) /
-    (1 + 0.93 (200/σ_S)^¼); V, GGG(perl) (1 + 0.82 (Y_S − 1)(300/σ_0.2)^¼) / (1 + 0.82 (300/σ_0.2)^¼).
-    All give 1 at the test gear (q_s = 2.5, Y_S = Y_ST = 2).
+    Static (``static=True``, from the stress correction factor ``Y_S``; these rows are also DIN 3990-11's):
+    Eh, IF 0.44 Y_S + 0.12; NT, NV 0.20 Y_S + 0.60; GG, GGG(ferr) 1.0; St (1 + 0.93 (Y_S − 1)(200/σ_S)^¼) /
+    (1 + 0.93 (200/σ_S)^¼); V, GGG(perl), GTS (1 + 0.82 (Y_S − 1)(300/σ_0.2)^¼) / (1 + 0.82 (300/σ_0.2)^¼), with
+    ``limit_mpa`` = σ_S or σ_0.2. All give 1 at the test gear (q_s = 2.5, Y_S = Y_ST = 2).
 
     >>> round(float(relative_notch_sensitivity_Y_delta_relT(2.5, "St", limit_mpa=400)), 12)
     1.0

@@ -100,7 +100,9 @@ def test_notch_sensitivity_static_forms():
     assert float(relative_notch_sensitivity_Y_delta_relT(None, "St", static=True, Y_S=ys, limit_mpa=355.0)) \
         == pytest.approx((1 + k * (ys - 1)) / (1 + k), rel=1e-15)
     assert float(relative_notch_sensitivity_Y_delta_relT(None, "NT", static=True, Y_S=ys)) == pytest.approx(0.2 * ys + 0.6)
-    assert float(relative_notch_sensitivity_Y_delta_relT(None, "GTS", static=True, Y_S=ys)) == pytest.approx(0.075 * ys + 0.85)
+    k = 0.82 * (300 / 650.0) ** 0.25
+    assert float(relative_notch_sensitivity_Y_delta_relT(None, "GTS", static=True, Y_S=ys, limit_mpa=650.0)) \
+        == pytest.approx((1 + k * (ys - 1)) / (1 + k), rel=1e-15)
     assert float(relative_notch_sensitivity_Y_delta_relT(None, "GG", static=True, Y_S=ys)) == 1.0
 
 
