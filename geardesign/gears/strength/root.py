@@ -1,20 +1,24 @@
 """Tooth-root form and stress-correction factors of ISO 6336-3 (methods B and C), vectorised.
 
-Method B (ISO 6336-3:2019, clause 6.2 form factor Y_F, clause 7.2 stress-correction factor Y_S; the same
-formulas as the 2006 edition) loads the tooth at the outer point of single pair tooth contact. Method C
-(ISO 6336-3:1996 method C, DIN 3990-3:1987 method C) loads it at the tip: Y_Fa, Y_Sa, to be used with the
-contact ratio factor Y_ε = 0.25 + 0.75/ε_αn and never with method B's Y_F, Y_S.
+Method B (ISO 6336-3:2019 and 2006, clause 6.2 form factor Y_F, clause 7.2 stress-correction factor Y_S;
+external gears with the 2006 edition's equations) loads the tooth at the outer point of single pair tooth
+contact. Method C (ISO 6336-3:1996 method C, DIN 3990-3:1987 method C) loads it at the tip: Y_Fa, Y_Sa, to be
+used with the contact ratio factor Y_ε = 0.25 + 0.75/ε_αn and never with method B's Y_F, Y_S.
 
 Everything is dimensionless, in units of the normal module m_n, and computed for the virtual spur gear of
 the normal section (z_n = z/(cos²β_b cos β)).
 
 External gears: the critical section is where the 30° tangent touches the fillet that the basic rack's
 tip rounding (radius ρ_fP) generates; its position follows from the standard's equation for θ (radians),
-solved here by Newton's method from the standard's start θ = π/6. Internal gears: the standard does not
-feed a negative virtual tooth count into that iteration; it treats the internal gear's tooth as the tooth
-of its basic rack (z_n → ∞): the critical section is where the 60° tangent touches the fillet of the rack
-tooth, the fillet radius is the tool's ρ_fP, and the load acts at the basic rack's pressure angle
-(α_Fen = α_n). See :func:`root_form_factors` and docs/strength_root.md.
+solved by Newton's method from the standard's start θ = π/6.
+
+Internal gears: no negative virtual tooth count goes into that iteration. The internal gear's tooth is
+treated as the tooth of its basic rack (z_n → ∞), as ISO 6336-3:2006 does: the critical section is where
+the 60° tangent touches the fillet of the rack tooth, the fillet radius is the tool's ρ_fP, and the load
+acts at the basic rack's pressure angle (α_Fen = α_n). ISO 6336-3:2019 instead derives an internal gear's
+root from its actual generation by the pinion-type shaper cutter (after VDI 2737:2016); that needs the
+cutter's data (teeth, shift, tip radius) and is not implemented here. See :func:`root_form_factors` and
+docs/strength_root.md.
 """
 from __future__ import annotations
 
@@ -23,8 +27,8 @@ import math
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import (broadcast_inputs, one_number, require_bool, require_choice, require_finite,
-                         require_int, require_positive, require_range)
+from ...validate import (broadcast_inputs, one_number, require_bool, require_choice, require_int,
+                         require_positive, require_range)
 
 __all__ = ["root_form_factors", "stress_correction_factor", "METHODS", "Q_S_RANGE", "Z_RANGE",
            "EPS_ALPHA_RANGE", "BETA_RANGE_DEG", "ALPHA_N_RANGE_DEG"]
@@ -41,6 +45,8 @@ HFP_RANGE = (0.5, 2.5)                 # basic rack dedendum h_fP*/m_n
 RHOFP_RANGE = (0.0, 1.0)               # basic rack root radius ρ_fP*/m_n
 SPR_RANGE = (0.0, 0.5)                 # protuberance residual s_pr*/m_n
 _NEWTON_STEPS = 40
+BLOCK = 16_384                         # designs per block of a large array call (cache-sized temporaries)
+DESIGNS_MAX = 50_000_000               # designs in one call: ~20 output fields of 8 bytes each (~8 GB)
 
 
 def stress_correction_factor(s_Fn, h_Fe, rho_F):
@@ -53,20 +59,60 @@ def stress_correction_factor(s_Fn, h_Fe, rho_F):
     >>> round(float(stress_correction_factor(2.0, 1.0, 0.5)), 4)    # L = 2, q_s = 2: 1.46·2^(1/2.36)
     1.9584
     """
-    L = np.asarray(s_Fn) / np.asarray(h_Fe)
-    q_s = np.asarray(s_Fn) / (2.0 * np.asarray(rho_F))
+    if not all(type(v) is float for v in (s_Fn, h_Fe, rho_F)):
+        s_Fn, h_Fe, rho_F = (np.asarray(v, dtype=float) for v in (s_Fn, h_Fe, rho_F))
+    L = s_Fn / h_Fe
+    q_s = s_Fn / (2.0 * rho_F)
     return (1.2 + 0.13 * L) * q_s ** (1.0 / (1.21 + 2.3 / L))
 
 
-def _inv(a):
-    return np.tan(a) - a
+class _ArrayOps:
+    """numpy functions for arrays of designs."""
+    sin, cos, tan, sqrt, arccos = np.sin, np.cos, np.tan, np.sqrt, np.arccos
+    any, all, abs, maximum, clip = staticmethod(np.any), staticmethod(np.all), np.abs, np.maximum, np.clip
+
+    @staticmethod
+    def like(a, v):
+        return np.full(np.shape(a), v)
+
+
+class _FloatOps:
+    """math functions for one design in Python floats: the same formulas ~10x faster than 0-d arrays."""
+    sin, cos, tan, sqrt, arccos = math.sin, math.cos, math.tan, math.sqrt, math.acos
+    any = all = staticmethod(bool)
+    abs, maximum = abs, max
+
+    @staticmethod
+    def clip(v, lo, hi):
+        return min(max(v, lo), hi)
+
+    @staticmethod
+    def like(a, v):
+        return v
+
+
+def _inv(a, ops):
+    return ops.tan(a) - a
+
+
+def _plain(v, lo, hi) -> bool:
+    """True for one Python int or float inside [lo, hi]: the common case, checked without numpy."""
+    return (type(v) is float or type(v) is int) and lo <= v <= hi
 
 
 def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star,
                   internal, method):
-    """The validated inputs, broadcast: arrays of float."""
+    """The validated inputs: Python floats for one design given as plain numbers (the fast path), else
+    broadcast float arrays; and the ops that go with them."""
     method = require_choice("method", method, METHODS)
     internal = require_bool("internal", internal)
+    if (type(z) is int and Z_RANGE[0] <= z <= Z_RANGE[1] and _plain(x, *X_RANGE)
+            and _plain(da_over_mn, 1e-300, 1e300) and _plain(eps_alpha, *EPS_ALPHA_RANGE) and _plain(beta_deg, *BETA_RANGE_DEG)
+            and _plain(alpha_n_deg, *ALPHA_N_RANGE_DEG) and _plain(hfp_star, *HFP_RANGE)
+            and _plain(rhofp_star, *RHOFP_RANGE) and _plain(spr_star, *SPR_RANGE)):
+        return (float(z), float(x), float(da_over_mn), float(eps_alpha), abs(float(beta_deg)),
+                math.radians(alpha_n_deg), float(hfp_star), float(rhofp_star), float(spr_star), internal, method,
+                _FloatOps)
     z = require_int("z", z, *Z_RANGE).astype(float)
     x = require_range("x", x, *X_RANGE)
     da = require_positive("da_over_mn", da_over_mn)
@@ -78,12 +124,15 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
     rho = one_number("rhofp_star", require_range("rhofp_star", rhofp_star, *RHOFP_RANGE))
     spr = one_number("spr_star", require_range("spr_star", spr_star, *SPR_RANGE))
     z, x, da, eps, beta = broadcast_inputs(z=z, x=x, da_over_mn=da, eps_alpha=eps, beta_deg=beta)
-    return z, x, da, eps, np.abs(beta), math.radians(alpha_n), hfp, rho, spr, internal, method
+    if z.size > DESIGNS_MAX:
+        raise GearDesignError(f"z, x, da_over_mn, eps_alpha, beta_deg broadcast to {z.size} designs; at most "
+                              f"{DESIGNS_MAX} in one call (split the batch)")
+    return z, x, da, eps, np.abs(beta), math.radians(alpha_n), hfp, rho, spr, internal, method, _ArrayOps
 
 
 def _rack_fillet_centre(alpha_n, hfp, rho, spr):
-    """E/m_n: distance of the rack's fillet centre ... as ISO 6336-3:2019 clause 6.2 defines it:
-    E = π m_n/4 − h_fP tan α_n + s_pr/cos α_n − (1 − sin α_n) ρ_fP/cos α_n."""
+    """E/m_n, the distance of the generating rack's fillet centre from its tooth's centre line (ISO 6336-3:2019
+    clause 6.2): E = π m_n/4 − h_fP tan α_n + s_pr/cos α_n − (1 − sin α_n) ρ_fP/cos α_n."""
     ca, sa = math.cos(alpha_n), math.sin(alpha_n)
     E = math.pi / 4.0 - hfp * math.tan(alpha_n) + spr / ca - (1.0 - sa) * rho / ca
     if E < -1e-12:
@@ -100,32 +149,33 @@ def _first(values, bad) -> str:
     return repr(values[tuple(np.argwhere(bad)[0])].item()) if values.ndim else repr(values.item())
 
 
-def _theta(G, H, z_n, z, x):
+def _theta(G, H, z_n, x, ops):
     """Root of θ = (2G/z_n) tan θ − H (radians; ISO 6336-3:2019 clause 6.2), Newton from θ = π/6.
 
     The standard's fixed-point iteration converges to the root where (2G/z_n)/cos²θ < 1, the root
     Newton finds here; where there is none (a shift so large that G = ρ_fP* − h_fP* + x approaches
     z_n cos²θ/2) the design is refused."""
     k = 2.0 * G / z_n
-    th = np.full(np.shape(k), math.pi / 6.0)
+    th = ops.like(k, math.pi / 6.0)
     for _ in range(_NEWTON_STEPS):
-        c = np.cos(th)
-        slope = np.maximum(1.0 - k / (c * c), 0.05)    # > 1 wherever G < 0, the usual case
-        step = (th - k * np.tan(th) + H) / slope
-        th = np.clip(th - step, -1.2, 1.2)
-        if np.all(np.abs(step) <= 1e-15):
+        c = ops.cos(th)
+        slope = ops.maximum(1.0 - k / (c * c), 0.05)    # > 1 wherever G < 0, the usual case
+        step = (th - k * ops.tan(th) + H) / slope
+        th = ops.clip(th - step, -1.2, 1.2)
+        if ops.all(ops.abs(step) <= 1e-15):
             break
-    c = np.cos(th)
-    bad = ~((np.abs(th - k * np.tan(th) + H) <= 1e-12) & (1.0 - k / (c * c) > 0.0))
-    if bad.any():
+    c = ops.cos(th)
+    ok = (ops.abs(th - k * ops.tan(th) + H) <= 1e-12) & (1.0 - k / (c * c) > 0.0)
+    if not ops.all(ok):
+        bad = ~np.asarray(ok)
         raise GearDesignError(
             "x must leave the 30-degree tangent on the generated fillet (the theta equation of "
             "ISO 6336-3 clause 6.2 needs rho_fP* - h_fP* + x < z_n cos^2(theta)/2), got "
-            f"x={_first(x, bad)} with z={_first(z, bad)}")
+            f"x={_first(x, bad)} with z_n={_first(z_n, bad)}")
     return th
 
 
-def _load_point(z_n, da_n, alpha_n, eps_n, internal, method):
+def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops):
     """d_en/m_n (method B, outer point of single pair contact) or d_an/m_n (method C, the tip) of the
     virtual gear; ISO 6336-3:2019 clause 6.2: d_en = 2 √{[√((d_an/2)² − (d_bn/2)²) ∓ π m_n cos α_n
     (ε_αn − 1)]² + (d_bn/2)²} (− for an external gear; + for an internal one, whose point of single
@@ -133,18 +183,20 @@ def _load_point(z_n, da_n, alpha_n, eps_n, internal, method):
     d_bn = z_n * math.cos(alpha_n)
     if method == "C":
         return da_n
-    rho_a = np.sqrt((da_n - d_bn) * (da_n + d_bn)) / 2.0
+    rho_a = ops.sqrt((da_n - d_bn) * (da_n + d_bn)) / 2.0
     p_bn = math.pi * math.cos(alpha_n)
     rho_e = rho_a + p_bn * (eps_n - 1.0) if internal else rho_a - p_bn * (eps_n - 1.0)
-    bad = rho_e <= 0.0
-    if np.any(bad):
+    if ops.any(rho_e <= 0.0):
+        bad = np.asarray(rho_e) <= 0.0
+        most = eps_n + rho_e / p_bn       # ε_αn = 1 + ρ_a/p_bn puts the point on the base circle (external only:
+        #                                   a ring's point lies outward of its tip)
         raise GearDesignError(
-            "eps_alpha must leave the outer point of single pair contact above the base circle "
-            f"(eps_alpha_n - 1 < tip roll length / p_bn), got eps_alpha_n={_first(eps_n, bad)}")
-    return 2.0 * np.sqrt(rho_e * rho_e + d_bn * d_bn / 4.0)
+            f"eps_alpha must give eps_alpha_n < {float(_first(most, bad)):.6g} (the outer point of single pair "
+            f"contact above the base circle), got eps_alpha_n={_first(eps_n, bad)}")
+    return 2.0 * ops.sqrt(rho_e * rho_e + d_bn * d_bn / 4.0)
 
 
-def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho):
+def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops):
     """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) of an external gear: ISO 6336-3:2019 clause 6.2,
     G = ρ_fP/m_n − h_fP/m_n + x, H = 2/z_n (π/2 − E/m_n) − π/3, θ = (2G/z_n) tan θ − H,
     s_Fn/m_n = z_n sin(π/3 − θ) + √3 (G/cos θ − ρ_fP/m_n),
@@ -153,15 +205,15 @@ def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho):
     h_Fe/m_n = ½[(cos γ_e − sin γ_e tan α_Fen) d_e/m_n − z_n cos(π/3 − θ) − G/cos θ + ρ_fP/m_n]."""
     G = rho - hfp + x
     H = 2.0 / z_n * (math.pi / 2.0 - E) - math.pi / 3.0
-    th = _theta(G, H, z_n, z_n, x)
-    c = np.cos(th)
-    s_Fn = z_n * np.sin(math.pi / 3.0 - th) + math.sqrt(3.0) * (G / c - rho)
+    th = _theta(G, H, z_n, x, ops)
+    c = ops.cos(th)
+    s_Fn = z_n * ops.sin(math.pi / 3.0 - th) + math.sqrt(3.0) * (G / c - rho)
     rho_F = rho + 2.0 * G * G / (c * (z_n * c * c - 2.0 * G))
-    alpha_e = np.arccos(z_n * math.cos(alpha_n) / d_e)
-    gamma_e = (math.pi / 2.0 + 2.0 * x * math.tan(alpha_n)) / z_n + _inv(alpha_n) - _inv(alpha_e)
+    alpha_e = ops.arccos(z_n * math.cos(alpha_n) / d_e)
+    gamma_e = (math.pi / 2.0 + 2.0 * x * math.tan(alpha_n)) / z_n + _inv(alpha_n, math) - _inv(alpha_e, ops)
     alpha_F = alpha_e - gamma_e
-    h_Fe = 0.5 * ((np.cos(gamma_e) - np.sin(gamma_e) * np.tan(alpha_F)) * d_e
-                  - z_n * np.cos(math.pi / 3.0 - th) - G / c + rho)
+    h_Fe = 0.5 * ((ops.cos(gamma_e) - ops.sin(gamma_e) * ops.tan(alpha_F)) * d_e
+                  - z_n * ops.cos(math.pi / 3.0 - th) - G / c + rho)
     return s_Fn, rho_F, h_Fe, alpha_F, th
 
 
@@ -169,9 +221,9 @@ def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho):
 _TANGENT_INTERNAL = math.pi / 3.0
 
 
-def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho):
-    """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) of an internal gear treated, as ISO 6336-3:2019
-    clause 6.2 does, as its basic rack (z_n → ∞) with the 60° tangent.
+def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops):
+    """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) of an internal gear treated, as ISO 6336-3:2006
+    does, as its basic rack (z_n → ∞) with the 60° tangent.
 
     The ring's tooth is the rack tooth between two cutter teeth; the cutter's fillet centre lies
     E/m_n from the cutter tooth's centre line, so π/2 − E/m_n from the ring tooth's, and h_fP − ρ_fP
@@ -182,13 +234,12 @@ def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho):
     (π/4 + h_e tan α_n) tan α_n deeper: h_Fe is the rest of the way to the chord. θ is reported as
     the limit of the external equation for z_n → ∞ with this tangent, π/2 − 60°."""
     t = math.tan(alpha_n)
-    s_Fn = np.full(np.shape(z_n), math.pi - 2.0 * E - 2.0 * rho * math.cos(_TANGENT_INTERNAL))
     depth_chord = hfp - rho + rho * math.sin(_TANGENT_INTERNAL)
     h_e = (d_e - z_n) / 2.0 - x
     h_Fe = depth_chord - h_e - (math.pi / 4.0 + h_e * t) * t
-    shape = np.shape(h_Fe)
-    return (np.broadcast_to(s_Fn, shape).copy(), np.full(shape, rho), h_Fe, np.full(shape, alpha_n),
-            np.full(shape, math.pi / 2.0 - _TANGENT_INTERNAL))
+    s_Fn = math.pi - 2.0 * E - 2.0 * rho * math.cos(_TANGENT_INTERNAL)
+    return (ops.like(h_Fe, s_Fn), ops.like(h_Fe, rho), h_Fe, ops.like(h_Fe, alpha_n),
+            ops.like(h_Fe, math.pi / 2.0 - _TANGENT_INTERNAL))
 
 
 def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=20.0, hfp_star=1.25,
@@ -207,7 +258,8 @@ def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=
     hfp_star, rhofp_star, spr_star : the generating basic rack's dedendum h_fP/m_n (h_a* + c* of
         :class:`~geardesign.gears.rack.BasicRack`), its root radius ρ_fP/m_n (``rho_f``) and the
         protuberance residual s_pr/m_n (0 without protuberance).
-    internal : True for a ring gear (rack treatment with the 60° tangent, see the module docstring).
+    internal : True for a ring gear: ISO 6336-3:2006's rack treatment with the 60° tangent (the 2019
+        edition's shaper-cutter treatment is not implemented; see the module docstring).
     method : "B" (load at the outer point of single pair contact, ISO 6336-3:2019: Y_F, Y_S) or "C"
         (load at the tip, ISO 6336-3:1996 / DIN 3990-3 method C: Y_Fa, Y_Sa, to be used with Y_ε).
 
@@ -233,32 +285,48 @@ def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=
     >>> round(float(c["Y_Fa"]), 2), round(float(c["Y_Sa"]), 2)
     (2.8, 1.55)
     """
-    (z, x, da, eps, beta, alpha_n, hfp, rho, spr, internal,
-     method) = _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star,
-                             spr_star, internal, method)
+    (z, x, da, eps, beta, alpha_n, hfp, rho, spr, internal, method,
+     ops) = _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star,
+                          internal, method)
     if internal and rho <= 0.0:
         raise GearDesignError("rhofp_star must be > 0 for an internal gear (its fillet radius is "
                               f"rho_fP itself), got {rho!r}")
     E = _rack_fillet_centre(alpha_n, hfp, rho, spr)
-    cos_beta = np.cos(np.radians(beta))
-    cos_bb2 = 1.0 - (np.sin(np.radians(beta)) * math.cos(alpha_n)) ** 2   # cos²β_b
+    rack = (alpha_n, hfp, rho, E, internal, method)
+    if ops is _FloatOps:                              # numpy scalars: the same interface as arrays
+        out = _factors(z, x, da, eps, beta, rack, ops)
+        return {k: (np.bool_(v) if k == "in_range" else np.float64(v)) for k, v in out.items()}
+    if z.size <= BLOCK:
+        return _factors(z, x, da, eps, beta, rack, ops)
+    # block by block: ~60 temporaries of BLOCK doubles stay in the caches (as geometry.mesh_geometry does)
+    flat = [v.reshape(-1) for v in (z, x, da, eps, beta)]
+    parts = [_factors(*(v[i:i + BLOCK] for v in flat), rack, ops) for i in range(0, z.size, BLOCK)]
+    return {k: np.concatenate([p[k] for p in parts]).reshape(z.shape) for k in parts[0]}
+
+
+def _factors(z, x, da, eps, beta, rack, ops) -> dict:
+    """Every field of :func:`root_form_factors` for validated inputs (arrays of one shape, or floats)."""
+    alpha_n, hfp, rho, E, internal, method = rack
+    cos_beta = ops.cos(beta * (math.pi / 180.0))
+    sin_bb = ops.sin(beta * (math.pi / 180.0)) * math.cos(alpha_n)
+    cos_bb2 = 1.0 - sin_bb * sin_bb                   # cos²β_b
     z_n = z / (cos_bb2 * cos_beta)
     eps_n = eps / cos_bb2
-    da_n = z_n + da - z / cos_beta               # d_an = d_n + d_a − d
-    bad = da_n <= z_n * math.cos(alpha_n)
-    if np.any(bad):
+    da_n = z_n + da - z / cos_beta                    # d_an = d_n + d_a − d
+    if ops.any(bad := da_n <= z_n * math.cos(alpha_n)):
+        least = z / cos_beta - z_n * (1.0 - math.cos(alpha_n))      # d_an = d_bn
         raise GearDesignError(
-            "da_over_mn must put the tip above the base circle (d_an > d_bn of the virtual gear), "
-            f"got {_first(da, bad)}")
-    d_e = _load_point(z_n, da_n, alpha_n, eps_n, internal, method)
+            f"da_over_mn must be > {float(_first(least, bad)):.6g} (the tip above the base circle: d_an > d_bn of "
+            f"the virtual gear), got {_first(da, bad)}")
+    d_e = _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops)
     section = _internal_section if internal else _external_section
-    s_Fn, rho_F, h_Fe, alpha_F, th = section(z_n, x, d_e, alpha_n, E, hfp, rho)
-    if np.any(bad := (s_Fn <= 0.0) | (h_Fe <= 0.0)):
+    s_Fn, rho_F, h_Fe, alpha_F, th = section(z_n, x, d_e, alpha_n, E, hfp, rho, ops)
+    if ops.any(bad := (s_Fn <= 0.0) | (h_Fe <= 0.0)):
         raise GearDesignError(f"x gives no root section (s_Fn or h_Fe <= 0), got x={_first(x, bad)}")
-    Y_F = 6.0 * h_Fe * np.cos(alpha_F) / (s_Fn * s_Fn * math.cos(alpha_n))
+    Y_F = 6.0 * h_Fe * ops.cos(alpha_F) / (s_Fn * s_Fn * math.cos(alpha_n))
     Y_S = stress_correction_factor(s_Fn, h_Fe, rho_F)
     q_s = s_Fn / (2.0 * rho_F)
     names = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")
-    return {names[0]: Y_F, names[1]: Y_S, "s_Fn": s_Fn, "h_Fe": h_Fe, "rho_F": rho_F,
-            "alpha_Fen_rad": alpha_F, "q_s": q_s, "theta_rad": th, "z_n": z_n, "d_en": d_e,
-            "eps_alpha_n": eps_n, "in_range": (q_s >= Q_S_RANGE[0]) & (q_s < Q_S_RANGE[1])}
+    return {names[0]: Y_F, names[1]: Y_S, "s_Fn": s_Fn, "h_Fe": h_Fe, "rho_F": rho_F, "alpha_Fen_rad": alpha_F,
+            "q_s": q_s, "theta_rad": th, "z_n": z_n, "d_en": d_e, "eps_alpha_n": eps_n,
+            "in_range": (q_s >= Q_S_RANGE[0]) & (q_s < Q_S_RANGE[1])}

@@ -1,6 +1,8 @@
 """The tooth-root factors of ISO 6336-3 besides Y_F and Y_S: one function per formula, vectorised.
 
-Editions: ISO 6336-3:2019 (method B) unless a docstring says otherwise; the contact ratio factor Y_ε belongs
+Editions: ISO 6336-3:2019 (method B) unless a docstring says otherwise, the formulas as IACS UR M56 Rev.4
+(2021, Corr.3 2025; "Marine gears - load capacity of involute parallel axis spur and helical gears", which takes
+ISO 6336:2019 as its reference standard) prints them where it prints them (Y_β, Y_B, Y_DT, Y_δrelT, Y_RrelT, Y_X); the contact ratio factor Y_ε belongs
 to method C only (ISO 6336-3:1996, DIN 3990-3), the tip-load form factors Y_Fa, Y_Sa. Material kinds are the
 abbreviations of ISO 6336-5 / ISO 6336-3 (:data:`MATERIAL_KINDS`); each table below says which kinds share a
 curve. Clause numbers are those of ISO 6336-3; the tables of the standard are quoted as the values they
@@ -13,7 +15,7 @@ import math
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import require_bool, require_choice, require_finite, require_int, require_positive, require_range
+from ...validate import require_bool, require_choice, require_int, require_positive, require_range
 
 __all__ = ["MATERIAL_KINDS", "Y_ST", "helix_factor_Y_beta", "contact_ratio_factor_Y_eps", "deep_tooth_factor_Y_DT",
            "rim_factor_Y_B", "relative_notch_sensitivity_Y_delta_relT", "relative_surface_factor_Y_RrelT",
@@ -43,24 +45,25 @@ def _kind(material_kind) -> str:
     return require_choice("material_kind", material_kind, MATERIAL_KINDS)
 
 
-def helix_factor_Y_beta(eps_beta, beta_deg, *, edition: int = 2019):
-    """Helix angle factor Y_β (ISO 6336-3:2019, clause 8; ISO 6336-3:2006, clause 8).
+def helix_factor_Y_beta(eps_beta, beta_deg, *, edition: int = 2006):
+    """Helix angle factor Y_β: Y_β = 1 − ε_β β/120°, with ε_β taken as 1 where it exceeds 1 and β as 30° where it
+    exceeds 30° (so Y_β >= 0.75, the standard's Y_βmin); |β| is used.
 
-    2019: Y_β = (1 − ε_β β/120°) / cos³β; 2006: Y_β = 1 − ε_β β/120°. In both ε_β is taken as 1 where it
-    exceeds 1 and β as 30° where it exceeds 30° (so the 2006 factor stays >= 0.75, the standard's Y_βmin);
-    |β| is used. The 2019 edition's 1/cos³β accounts for the form factor of the virtual spur gear in the
-    normal section (see docs/strength_root.md on the edition).
+    This is ISO 6336-3:2006 clause 8, and the formula IACS UR M56 Rev.4 (2021, Corr.3 2025) §M56.3.5 prints
+    while citing ISO 6336-3:2019 as its reference standard. ``edition=2019`` divides it by cos³β, the form we
+    understand the 2019 edition to give; that term is not confirmed by any text we could read (UR M56 omits it),
+    so it is opt-in and stated as unconfirmed in docs/strength_root.md.
 
-    >>> round(float(helix_factor_Y_beta(1.2, 15.0, edition=2006)), 4)
+    >>> round(float(helix_factor_Y_beta(1.2, 15.0)), 4)
     0.875
-    >>> round(float(helix_factor_Y_beta(0.5, 10.0)), 4)
+    >>> round(float(helix_factor_Y_beta(0.5, 10.0, edition=2019)), 4)
     1.0034
     """
     edition = int(require_choice("edition", str(edition), ["2006", "2019"]))
     eb = np.minimum(require_range("eps_beta", eps_beta, 0.0, 50.0), 1.0)
-    b = np.abs(require_range("beta_deg", beta_deg, -45.0, 45.0, unit="deg"))
-    y = 1.0 - eb * np.minimum(b, 30.0) / 120.0
-    return y / np.cos(np.radians(np.minimum(b, 30.0))) ** 3 if edition == 2019 else y
+    b = np.minimum(np.abs(require_range("beta_deg", beta_deg, -45.0, 45.0, unit="deg")), 30.0)
+    y = 1.0 - eb * b / 120.0
+    return y / np.cos(np.radians(b)) ** 3 if edition == 2019 else y
 
 
 def contact_ratio_factor_Y_eps(eps_alpha_n):
@@ -76,7 +79,7 @@ def contact_ratio_factor_Y_eps(eps_alpha_n):
 
 
 def deep_tooth_factor_Y_DT(eps_alpha_n, accuracy_grade):
-    """Deep tooth factor Y_DT (ISO 6336-3:2019, clause 10): 1.0 where ε_αn <= 2.05 or the accuracy grade
+    """Deep tooth factor Y_DT (ISO 6336-3:2019, clause 10; UR M56 Rev.4 §M56.3.7): 1.0 where ε_αn <= 2.05 or the accuracy grade
     (ISO 1328-1) is coarser than 4; for grade <= 4: −0.666 ε_αn + 2.366 for 2.05 < ε_αn <= 2.5, and 0.7 above
     (the line's value at 2.5 is 0.701).
 
@@ -93,7 +96,7 @@ def deep_tooth_factor_Y_DT(eps_alpha_n, accuracy_grade):
 
 
 def rim_factor_Y_B(s_R_over_h_t=None, *, internal: bool = False, s_R_over_mn=None):
-    """Rim thickness factor Y_B (ISO 6336-3:2019, clause 9). Solid gears (``None``): 1.
+    """Rim thickness factor Y_B (ISO 6336-3:2019, clause 9; UR M56 Rev.4 §M56.3.6). Solid gears (``None``): 1.
 
     External gears, by s_R/h_t (rim thickness below the root over tooth depth): 1 for >= 1.2,
     1.6 ln(2.242 h_t/s_R) for 0.5 < s_R/h_t < 1.2. Internal gears, by s_R/m_n: 1 for >= 3.5,
@@ -146,24 +149,26 @@ def _slip_layer(kind: str, limit_mpa):
 # Static relative notch sensitivity (ISO 6336-3:2019, clause 13, method B, N_L <= the static limit): linear in Y_S
 # where the kind has no strength term: (a, b) of a Y_S + b.
 _STATIC_LINEAR = {"Eh": (0.44, 0.12), "IF": (0.44, 0.12), "NT": (0.20, 0.60), "NV(nitr)": (0.20, 0.60),
-                  "NV(nitrocar)": (0.20, 0.60), "GTS": (0.075, 0.85), "GG": (0.0, 1.0), "GGG(ferr)": (0.0, 1.0)}
-# with a strength term: Y = (1 + c (Y_S − 1)(s0/σ)^(1/4)) / (1 + c (s0/σ)^(1/4)): (c, s0)
-_STATIC_STRENGTH = {"St": (0.93, 200.0), "V": (0.82, 300.0), "GGG(perl)": (0.82, 300.0)}
+                  "NV(nitrocar)": (0.20, 0.60), "GG": (0.0, 1.0), "GGG(ferr)": (0.0, 1.0)}
+# with a strength term: Y = (1 + c (Y_S − 1)(s0/σ)^(1/4)) / (1 + c (s0/σ)^(1/4)): (c, s0). GTS goes with V and
+# GGG(perl) as in the slip-layer table (DIN 3990-11's list, which has these rows, does not name GTS).
+_STATIC_STRENGTH = {"St": (0.93, 200.0), "V": (0.82, 300.0), "GGG(perl)": (0.82, 300.0), "GTS": (0.82, 300.0)}
 
 
 def relative_notch_sensitivity_Y_delta_relT(q_s, material_kind, *, limit_mpa=None, static: bool = False,
                                             Y_S=None):
-    """Relative notch sensitivity factor Y_δrelT (ISO 6336-3:2019, clause 13, method B).
+    """Relative notch sensitivity factor Y_δrelT (ISO 6336-3:2019, clause 13, method B; the fatigue form and the
+    steels' slip layers as UR M56 Rev.4 §M56.3.11 prints them).
 
     Fatigue (``static=False``): Y_δrelT = (1 + √(ρ′ χ*)) / (1 + √(ρ′ χ*_T)), χ* = (1 + 2 q_s)/5 (mm⁻¹),
     χ*_T = 1.2 (q_sT = 2.5); ρ′ the slip-layer thickness of the kind (the standard's table, linear in between:
     ``limit_mpa`` is σ_B for GG/GGG(ferr) in [150, 300], σ_0.2 for V/GGG(perl)/GTS in [500, 1000], σ_S for St in
     [300, 400]; not needed for Eh, IF, NT, NV).
 
-    Static (``static=True``, from the stress correction factor ``Y_S``): Eh, IF 0.44 Y_S + 0.12; NT, NV
-    0.20 Y_S + 0.60; GTS 0.075 Y_S + 0.85; GG, GGG(ferr) 1.0; St (1 + 0.93 (Y_S − 1)(200/σ_S)^¼) /
-    (1 + 0.93 (200/σ_S)^¼); V, GGG(perl) (1 + 0.82 (Y_S − 1)(300/σ_0.2)^¼) / (1 + 0.82 (300/σ_0.2)^¼).
-    All give 1 at the test gear (q_s = 2.5, Y_S = Y_ST = 2).
+    Static (``static=True``, from the stress correction factor ``Y_S``; these rows are also DIN 3990-11's):
+    Eh, IF 0.44 Y_S + 0.12; NT, NV 0.20 Y_S + 0.60; GG, GGG(ferr) 1.0; St (1 + 0.93 (Y_S − 1)(200/σ_S)^¼) /
+    (1 + 0.93 (200/σ_S)^¼); V, GGG(perl), GTS (1 + 0.82 (Y_S − 1)(300/σ_0.2)^¼) / (1 + 0.82 (300/σ_0.2)^¼), with
+    ``limit_mpa`` = σ_S or σ_0.2. All give 1 at the test gear (q_s = 2.5, Y_S = Y_ST = 2).
 
     >>> round(float(relative_notch_sensitivity_Y_delta_relT(2.5, "St", limit_mpa=400)), 12)
     1.0
@@ -200,7 +205,7 @@ RZ_MAX_UM = 40.0
 
 
 def relative_surface_factor_Y_RrelT(Rz_um, material_kind, *, static: bool = False):
-    """Relative surface factor Y_RrelT (ISO 6336-3:2019, clause 14, method B), from the root's mean roughness
+    """Relative surface factor Y_RrelT (ISO 6336-3:2019, clause 14, method B; UR M56 Rev.4 §M56.3.12), from the root's mean roughness
     Rz (µm, 0 <= Rz <= 40): V, GGG(perl), GTS, Eh, IF: 1.674 − 0.529 (Rz + 1)^0.1 (1.120 below 1 µm);
     St: 5.306 − 4.203 (Rz + 1)^0.01 (1.070); GG, GGG(ferr), NT, NV: 4.299 − 3.259 (Rz + 1)^0.0058 (1.025).
     Static stress: 1.0. (At Rz = 1 the first curve gives 1.107, not its constant 1.120: as printed.)
@@ -225,9 +230,10 @@ _SIZE = {("St", "V", "GGG(perl)", "GTS"): (1.03, 0.006, 0.85),
 
 
 def size_factor_Y_X(m_n_mm, material_kind, *, static: bool = False):
-    """Size factor Y_X (ISO 6336-3:2019, clause 15, method B) from the normal module m_n (mm): 1.0 for
-    m_n <= 5; St, V, GGG(perl), GTS: 1.03 − 0.006 m_n, 0.85 from 30 mm; Eh, IF, NT, NV: 1.05 − 0.01 m_n, 0.8 from
-    25 mm; GG, GGG(ferr): 1.075 − 0.015 m_n, 0.7 from 25 mm (each line meets 1.0 at 5 mm and its floor).
+    """Size factor Y_X (ISO 6336-3:2019, clause 15, method B; UR M56 Rev.4 §M56.3.13 for the steels) from the
+    normal module m_n (mm): 1.0 for m_n <= 5; St, V, GGG(perl), GTS: 1.03 − 0.006 m_n, 0.85 from 30 mm; Eh, IF,
+    NT, NV: 1.05 − 0.01 m_n, 0.8 from 25 mm; GG, GGG(ferr): 1.075 − 0.015 m_n, 0.7 from 25 mm (each line meets
+    1.0 at 5 mm and its floor; UR M56 prints "1.03 − 0.06 m_n", a slip: it would give 0.73 at 5 mm).
     Static stress: 1.0.
 
     >>> [round(float(size_factor_Y_X(m, "Eh")), 3) for m in (3, 8, 30)]
