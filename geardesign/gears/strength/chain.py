@@ -100,8 +100,8 @@ def _derived(g, z1, z2, rack, beta_deg):
     g["alpha_t_deg"] = math.degrees(sc.alpha_t)
     g["beta_b_deg"] = math.degrees(sc.beta_b)
     zn = 1.0 / (sc.cos_beta_b ** 2 * sc.cos_beta)
-    g["_z1"] = np.asarray(geo["_z1"], dtype=float)
-    g["_z2"] = np.asarray(geo["_z2"], dtype=float)
+    g["_z1"] = np.asarray(z1, dtype=float)
+    g["_z2"] = np.asarray(z2, dtype=float)
     g["z_n1"], g["z_n2"] = g["_z1"] * zn, g["_z2"] * zn
     g["h1"] = (g["da1"] - g["df1"]) / 2.0
     g["h2"] = np.abs(g["da2"] - g["df2"]) / 2.0

@@ -172,7 +172,8 @@ def reference(m, z1, z2, x1, x2, beta_deg, b, T1, n1, mat1, mat2, grade, nu40, R
     # root (ISO 6336-3:2019 method B): the form factors and the part-3 factor curves from their module (tested
     # there against the standard and mpmath); the chain's assembly of them written out here
     ean = g["ea"] / math.cos(g["bb"]) ** 2
-    Ybeta = (1 - min(eb, 1.0) * min(beta_deg, 30.0) / 120.0) / math.cos(math.radians(beta_deg)) ** 3
+    # ISO 6336-3:2006 eq. (39) (the default edition of root_factors.helix_factor_Y_beta; see its docstring)
+    Ybeta = 1 - min(eb, 1.0) * min(beta_deg, 30.0) / 120.0
     YDT = float(rf.deep_tooth_factor_Y_DT(ean, grade))
     for i, (mt, n, z, x) in enumerate(zip(mats, (n1, n2), (z1, z2), (x1, x2)), start=1):
         ff = root_form_factors(z, x, g["da"][i - 1] / m, eps_alpha=g["ea"], beta_deg=beta_deg,
