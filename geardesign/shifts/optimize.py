@@ -95,7 +95,7 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
     prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width), checks, objective,
                    1.0 if m is None else m)
-    if prob.objective.kind == "margin" and not prob.checks:
+    if prob.objective.kind == "margin" and not prob.asked:
         raise GearDesignError("objective 'max_margin' (the point farthest from every check's boundary) needs at "
                               "least one check, got checks=[]")
     if a_w is not None:
@@ -131,13 +131,16 @@ def _result(prob: Problem, out: Outcome, method: str, tol: float, a_w, t0: float
             f"no finite result for z1/z2 = {prob.z1}/{prob.z2} ({prob.objective.name}, {method}): the pair's "
             f"geometry or a check is undefined at the point the solver reached ({x1:.6g}, {x2:.6g}); "
             f"check the rack and the window")
-    message = out.message
+    message, success = out.message, out.success
+    if success and not float(geo["eps_alpha"]) > 0:   # a tolerance asked too coarse to hold the meshing
+        message, success = (f"the gears do not mesh at the point reached (eps_alpha {float(geo['eps_alpha']):.4g}): "
+                            f"no design; a finer tol finds one"), False
     if prob.x_sum is not None:
         xs_name = "x2 - x1" if prob.mesh.internal else "x1 + x2"
         message += f"; {xs_name} = {prob.x_sum:.10g} fixed by a_w = {a_w:.10g} mm, objective {prob.objective.name}"
     active = [k for k, v in mg.items() if abs(v) <= max(tol, 1e-9) * 10]
     return ShiftResult(
-        x1=x1, x2=x2, fun=fun, objective=prob.objective.name, success=out.success, message=message,
+        x1=x1, x2=x2, fun=fun, objective=prob.objective.name, success=success, message=message,
         method=method, tol=tol, nit=out.nit, time_s=time.perf_counter() - t0, margins=mg, active=active,
         sensitivity=out.sensitivity, conflict=out.conflict, z1=prob.z1, z2=prob.z2, m=prob.m,
         x_sum_fixed=prob.x_sum, a_w=float(geo["a_w"]), eps_alpha=float(geo["eps_alpha"]),

@@ -33,7 +33,7 @@ from ..results import RankedTable, plain
 from ..gears.checks import resolve_checks
 from ..errors import GearDesignError
 from ..validate import one_number, require_count, require_positive, require_range
-from ..gears.geometry import min_center_distance, x_sum_from_center_distance
+from ..gears.geometry import min_center_distance, require_module, x_sum_from_center_distance
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from .objectives import default_objective
 from .problem import DEFAULT_BOUNDS
@@ -183,7 +183,7 @@ def _modules(m, m_range):
         if frame.empty:
             raise GearDesignError(f"m_range must hold at least one standard module, got {m_range!r}")
         return frame["module_mm"].to_numpy(float), frame["series"].to_numpy(int)
-    mm = one_number("m (module)", require_positive("m (module)", m, unit="mm"))
+    mm = one_number("m (module)", require_module(m))
     std = catalogs.load_catalog("modules")
     hit = std.loc[np.isclose(std["module_mm"], mm, rtol=1e-12), "series"]
     return np.array([mm]), np.array([int(hit.iloc[0]) if len(hit) else 0])
@@ -336,7 +336,10 @@ def _solve(c: pd.DataFrame, a_w, objective, checks, method, rack, tip_shortening
     """One shift solve per distinct problem (without a_w and face width the module only scales
     lengths): (each candidate's key, {key: ShiftResult or the GearDesignError it raised})."""
     if a_w is None:
-        keys = list(zip(c["z1"], c["z2"], *([c["module_mm"]] if kind["face_width"] is not None else [])))
+        # the module changes the problem when ε_β (face width) or the ring's shaper cutter (its standard
+        # size depends on the module) enters the checks: then each (pair, module) is solved on its own
+        per_module = kind["face_width"] is not None or kind["internal"]
+        keys = list(zip(c["z1"], c["z2"], *([c["module_mm"]] if per_module else [])))
     else:
         keys = list(zip(c["z1"], c["z2"], c["module_mm"], c["a_w_target_mm"]))
     unique = list(dict.fromkeys(keys))
