@@ -117,9 +117,20 @@ class Problem:
         """(∂func/∂x1, ∂func/∂x2) by central differences around the design(s) of ``geo``."""
         h, at = _FD_STEP, self._geo_like(geo)
         x1, x2 = geo["_x1"], geo["_x2"]
+        out = []
         with np.errstate(invalid="ignore"):
-            return ((func(at(x1 + h, x2)) - func(at(x1 - h, x2))) / (2 * h),
-                    (func(at(x1, x2 + h)) - func(at(x1, x2 - h))) / (2 * h))
+            for up, down in ((at(x1 + h, x2), at(x1 - h, x2)), (at(x1, x2 + h), at(x1, x2 - h))):
+                f_up, f_down = func(up), func(down)
+                g = (f_up - f_down) / (2 * h)
+                if not np.all(np.isfinite(g)):
+                    # a domain edge within h of the design (an arcsine's argument reaching 1): the
+                    # one-sided difference on the side where the function exists
+                    f0 = func(geo)
+                    one = np.where(np.isfinite(f_up - f0), (f_up - f0) / h, (f0 - f_down) / h)
+                    g = np.where(np.isfinite(g), g, one)
+                    g = float(g) if np.ndim(g) == 0 else g
+                out.append(g)
+        return tuple(out)
 
     def _margin_values(self, geo, parts: bool = False) -> list:
         if parts:

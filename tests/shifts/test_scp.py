@@ -27,3 +27,14 @@ def test_window_edge_bounds_the_optimum():
     # window's corner (3, 3) is the optimum
     v, _, _, _ = solve_convex(Triangle(0.0, 10.0), np.array([0.5, 0.5]), (-1.5, 3.0), tol=1e-8)
     np.testing.assert_allclose(v, [3.0, 3.0], atol=1e-7)
+
+
+def test_convex_solves_with_the_radial_assembly_check():
+    """Issue 29 §3.4: the radial-assembly gradient (central differences) stepped over the domain edge
+    of its arcsines and handed NaN to cvxpy ("Parameter value must be real"); exact solved it."""
+    import geardesign as gd
+    kw = dict(internal=True, checks={"radial_assembly": True})
+    ref = gd.optimize_shifts(30, 90, method="exact", **kw)
+    r = gd.optimize_shifts(30, 90, method="convex", **kw)
+    assert r.success and ref.success
+    assert (r.x1, r.x2) == pytest.approx((ref.x1, ref.x2), abs=1e-6)
