@@ -378,6 +378,9 @@ def _off_curve_area(prob: Problem, L: np.ndarray, names: np.ndarray) -> float:
     return float(np.nansum(np.where(np.isfinite(dist), dist, 0.0) * half[on]))
 
 
+_ON_CURVE = 1e-6    # a projected point's margin this close to zero is on its curve
+
+
 def _halved(prob: Problem, L: np.ndarray, names: np.ndarray) -> np.ndarray:
     """The polygon with the midpoint of every check edge moved onto that check's curve."""
     nxt = np.roll(np.arange(len(L)), -1)
@@ -387,7 +390,13 @@ def _halved(prob: Problem, L: np.ndarray, names: np.ndarray) -> np.ndarray:
     if on_check.any():
         k = np.flatnonzero(on_check)
         moved = _project(prob, mids[k], np.array([index[nm] for nm in names[k]]))
+        # a point of the boundary holds every other check: a midpoint that lands where one fails has
+        # left the arc between the edge's ends (across a thin sliver): the chord's midpoint stays
         good = np.isfinite(moved).all(axis=1)
+        if good.any():
+            with np.errstate(all="ignore"):
+                worst = prob.margins(prob.geo(moved[good, 0], moved[good, 1])).min(axis=0)
+            good[good] = worst >= -_ON_CURVE
         mids[k[good]] = moved[good]
     out = np.empty((2 * len(L), 2))
     out[0::2], out[1::2] = L, mids

@@ -133,4 +133,12 @@ def test_region_sizes_are_bounded_up_front():
     with pytest.raises(gd.GearDesignError, match=r"n must be .* \[11, 2001\]"):
         gd.feasible_region(17, 26, n=10**5)
     reg = gd.feasible_region(17, 26, checks=[])
-    assert reg.feasible and reg.area == pytest.approx(4.5 ** 2, rel=1e-9)
+    # with every check dropped the region is where the pair exists and meshes (issue 29 §3.1): the
+    # window less its corner of large shifts whose tips no longer overlap on the line of action
+    g = np.linspace(-1.5, 3.0, 601)
+    X1, X2 = np.meshgrid(g, g, indexing="ij")
+    with np.errstate(all="ignore"):
+        eps = mesh_geometry(Mesh(17, 26, gd.BasicRack(), True), 1.0, X1, X2)["eps_alpha"]
+    counted = float(np.mean(np.nan_to_num(eps, nan=-1.0) >= 1e-3)) * 4.5 ** 2
+    assert reg.feasible and 15.0 < reg.area < 4.5 ** 2
+    assert reg.area == pytest.approx(counted, abs=reg.area_error + 4 * 4.5 * (g[1] - g[0]))
