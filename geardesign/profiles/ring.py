@@ -244,6 +244,10 @@ def _cutter_in_place(m, z, x, r_a, cutter: ShaperCutter, rack: BasicRack, alpha,
     r_b0 = r0 * math.cos(alpha)
     # s0/(2 r0) + inv α_t, the cutter's transverse thickness s0 = m_t π/2 + 2 x0 m tan α_n
     psi_b0 = (math.pi / 2.0 + 2.0 * cutter.x0 * math.tan(rack.alpha)) / z0 + (math.tan(alpha) - alpha)
+    if not r_a0 > r_b0:
+        raise GearDesignError(f"the shaper cutter z0 = {z0}, x0 = {cutter.x0:g}, h_a0* = {cutter.ha0:g} has its tip "
+                              f"circle (d_a0 = {2 * r_a0:.6g} mm) inside its base circle (d_b0 = {2 * r_b0:.6g} mm): "
+                              "no involute to cut with; choose more teeth, a larger x0 or h_a0*")
     t_a0 = math.sqrt((r_a0 - r_b0) * (r_a0 + r_b0)) / r_b0
     psi_a0 = psi_b0 - (t_a0 - math.atan(t_a0))
     if not psi_a0 > 0.0:
