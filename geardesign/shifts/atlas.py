@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 
 from ..errors import GearDesignError
-from ..validate import ndim, require_bool, require_int
+from ..validate import ndim, require_bool, require_callable, require_int
 from ..gears.geometry import exact_sum_nodes, mesh_geometry, mesh_geometry_float
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
@@ -296,6 +296,7 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     t0 = time.perf_counter()
     internal = require_bool("internal", internal)
     bounds = validate_bounds(bounds)
+    require_callable("progress", progress)
     Z1, Z2 = _pairs(z1_values, z2_values, upper_only, internal)
     if Z1.size == 0:
         raise GearDesignError("shift_atlas: no (z1, z2) pair to solve (with upper_only, z2 must be >= z1; "

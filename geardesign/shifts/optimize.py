@@ -31,7 +31,7 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..gears.mesh import Mesh
-from ..validate import one_number, require_choice, require_count, require_range
+from ..validate import _show, one_number, require_choice, require_count, require_finite, require_range
 from . import grid, kkt, scp
 from .center_distance import reachable_center_distance, x_sum_for_housing
 from .conflict import smallest_conflict
@@ -93,6 +93,8 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
     bounds = validate_bounds(bounds)
     if grid_n is not None:
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
+    if start is not None and np.shape(require_finite("start", start)) != (2,):
+        raise GearDesignError(f"start must be a point (x1, x2), got {_show(start)}")
     prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width), checks, objective,
                    1.0 if m is None else m)
     if prob.objective.kind == "margin" and not prob.asked:

@@ -197,7 +197,7 @@ def _problem(z_sun, z_planet, z_ring, n_planets, m, objective, checks, rack, bet
 
     m = one_number("m (module)", require_module(m))
     meshes = PlanetaryMeshes(z_sun, z_planet, z_ring, n_planets, rack, beta_deg,
-                             None if planet_angles_deg is None else tuple(planet_angles_deg))
+                             planet_angles_deg)
     prob = PlanetaryProblem(meshes, m, checks, default_objective(objective, x_sum_fixed=a_w is not None),
                             cutter=cutter)
     if a_w is not None:

@@ -17,7 +17,7 @@ import pandas as pd
 from ..errors import GearDesignError
 from ..results import Result, plain
 from ..gears.mesh import Mesh
-from ..validate import one_number, require_count, require_range
+from ..validate import one_number, require_axes, require_count, require_range
 from ..gears.geometry import center_distance_from_x_sum
 from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
 from .conflict import smallest_conflict
@@ -106,6 +106,7 @@ class Region(Result):
         n = require_count("n", n, 11, PLOT_N_MAX)
         if ax is None:
             _, ax = plt.subplots(figsize=(8.6, 6.2))
+        require_axes("ax", ax)
         lo, hi = self.bounds
         g = np.linspace(lo, hi, n)
         X1, X2 = np.meshgrid(g, g, indexing="ij")

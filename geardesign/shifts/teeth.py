@@ -32,12 +32,12 @@ from .. import catalogs
 from ..results import RankedTable, plain
 from ..gears.checks import resolve_checks
 from ..errors import GearDesignError
-from ..validate import one_number, require_count, require_positive, require_range
+from ..validate import _show, one_number, require_callable, require_count, require_finite, require_positive, require_range
 from ..gears.geometry import min_center_distance, require_module, x_sum_from_center_distance
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from .objectives import default_objective
 from .problem import DEFAULT_BOUNDS
-from ..gears.rack import BasicRack
+from ..gears.rack import BasicRack, require_rack
 from .optimize import METHODS, optimize_shifts
 
 __all__ = ["select_teeth", "ratio_pairs", "TeethSelection", "X_SUM_WINDOW", "MAX_SOLVES"]
@@ -175,9 +175,12 @@ def _modules(m, m_range):
     if isinstance(m, str):
         if m != "series":
             raise GearDesignError(f"m must be a module in mm, 'series' or None, got {m!r}")
-        lo, hi = (1.0, 50.0) if m_range is None else (float(v) for v in m_range)
-        require_positive("m_range min", lo, unit="mm")
-        require_positive("m_range max", hi, unit="mm")
+        try:
+            lo, hi = (1.0, 50.0) if m_range is None else m_range
+        except (TypeError, ValueError):
+            raise GearDesignError(f"m_range must be (min, max) in mm, got {_show(m_range)}") from None
+        lo = one_number("m_range min", require_positive("m_range min", lo, unit="mm"))
+        hi = one_number("m_range max", require_positive("m_range max", hi, unit="mm"))
         frame = catalogs.load_catalog("modules")
         frame = frame[(frame["module_mm"] >= lo) & (frame["module_mm"] <= hi)]
         if frame.empty:
@@ -250,9 +253,9 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     objective = default_objective(objective, x_sum_fixed=a_w is not None)
     if method not in METHODS:
         raise GearDesignError(f"method must be one of {list(METHODS)}, got {method!r}")
-    rack = rack or BasicRack()
-    if not isinstance(rack, BasicRack):
-        raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
+    rack = require_rack(rack)
+    require_callable("progress", progress)
+    x_sum_window = _x_sum_window(x_sum_window)
     # the kind is validated once, on a proto mesh; every candidate shares it
     kind = Mesh(20, 60, rack, tip_shortening, beta_deg, internal, face_width)
     kind = dict(beta_deg=kind.beta_deg, internal=kind.internal, face_width=kind.face_width_mm)
@@ -263,12 +266,25 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     m_used = m if m is not None else ("series" if a_w is not None else 1.0)
 
     cands = _candidates(z1, z2, ratio, *_modules(m_used, m_range), kind)
-    cands, skipped = _within_reach(cands, a_w, rack, tuple(float(v) for v in x_sum_window), kind)
+    cands, skipped = _within_reach(cands, a_w, rack, x_sum_window, kind)
     keys, solved = _solve(cands, a_w, objective, checks, method, rack, tip_shortening, progress, kind)
     table = _rank(_table(cands, keys, solved, a_w, check_names), objective.sense)
     return TeethSelection(table=table, skipped=skipped, ratio=ratio, ratio_tol=float(ratio_tol),
                           objective=objective.name, objective_sense=objective.sense, m=m_used, a_w=a_w,
                           method=method, checks=check_names, n_solved=len(solved), time_s=time.perf_counter() - t0)
+
+
+def _x_sum_window(window) -> tuple[float, float]:
+    """(lo, hi) of the x-sums worth solving: two finite numbers, lo < hi."""
+    try:
+        lo, hi = window
+    except (TypeError, ValueError):
+        raise GearDesignError(f"x_sum_window must be (lo, hi), got {_show(window)}") from None
+    lo = one_number("x_sum_window lo", require_finite("x_sum_window lo", lo))
+    hi = one_number("x_sum_window hi", require_finite("x_sum_window hi", hi))
+    if not lo < hi:
+        raise GearDesignError(f"x_sum_window must be (lo, hi) with lo < hi, got {_show(window)}")
+    return lo, hi
 
 
 def _housing(a_w):
