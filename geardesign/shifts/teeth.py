@@ -320,6 +320,8 @@ def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window, kind):
     section = dict(beta_deg=kind["beta_deg"], internal=kind["internal"])
     xs_lo, xs_hi = x_sum_window
     reason = np.full(len(c), "", dtype=object)
+    # a ratio tolerance reaching below 1 brings z2 <= z1, which no ring pair has (a = 0 or less)
+    no_ring = (c["z2"] <= c["z1"]).to_numpy() if kind["internal"] else np.zeros(len(c), bool)
     if a_w is None:
         c["a_w_target_mm"] = np.nan
     else:
@@ -332,7 +334,7 @@ def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window, kind):
         small = ~above & (target <= a_cos)
         for i in np.flatnonzero(small):
             reason[i] = f"a_w = {target[i]:g} mm <= a·cos(alpha) = {a_cos[i]:.6g} mm"
-        okw = ~above & ~small
+        okw = ~above & ~small & ~no_ring
         xs = np.full(len(c), np.nan)
         xs[okw] = x_sum_from_center_distance(c["module_mm"].to_numpy()[okw], c["z1"].to_numpy()[okw],
                                              c["z2"].to_numpy()[okw], target[okw], rack, **section)
@@ -341,6 +343,7 @@ def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window, kind):
         name = "x2 − x1" if kind["internal"] else "x1 + x2"
         for i in np.flatnonzero(out):
             reason[i] = f"{name} = {xs[i]:.4g} outside [{xs_lo:g}, {xs_hi:g}]"
+    reason[no_ring] = "an internal pair needs more teeth on the ring: z2 <= z1"
     keep = reason == ""
     skipped = c.loc[~keep, ["z1", "z2", "ratio", "ratio_error", "module_mm", "a_mm", "a_w_target_mm"]].copy()
     skipped["reason"] = reason[~keep]

@@ -142,3 +142,17 @@ def test_region_sizes_are_bounded_up_front():
     counted = float(np.mean(np.nan_to_num(eps, nan=-1.0) >= 1e-3)) * 4.5 ** 2
     assert reg.feasible and 15.0 < reg.area < 4.5 ** 2
     assert reg.area == pytest.approx(counted, abs=reg.area_error + 4 * 4.5 * (g[1] - g[0]))
+
+
+def test_contains_on_a_helical_ring_pair_is_quiet():
+    """Issue 29 §3.13: contains(0.5, 0.5) of a helical internal region warned 'invalid value in sqrt':
+    the cutter–ring mesh took its one-design float path with cos β a 0-d array (numpy scalars)."""
+    import warnings
+    reg = gd.feasible_region(7, 11, beta_deg=15.0, internal=True)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        inside = reg.contains(0.5, 0.5)
+    # the ring's tip is inside its base circle there (a failing margin), so the point is outside
+    assert not inside
+    with pytest.raises(gd.GearDesignError, match="inside its base circle"):
+        gd.GearPair(1, 7, 11, 0.5, 0.5, beta_deg=15.0, internal=True)

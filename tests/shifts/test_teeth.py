@@ -236,3 +236,15 @@ def test_the_module_is_range_checked_with_the_center_distance_free(m):
     with pytest.raises(gd.GearDesignError, match=r"m \(module\) must be in \[0\.0001, 10000\] mm") as info:
         select_teeth(1.925, m=m, z1_range=(8, 10))
     assert M_RANGE_MM == (1e-4, 1e4) and len(str(info.value).splitlines()) == 1
+
+
+def test_internal_search_skips_pairs_without_a_ring_quietly():
+    """Issue 29 §3.13: a ratio tolerance reaching below 1 brought z2 = z1 ring pairs (a = 0) into the
+    x-sum formula: 'divide by zero'. They are skipped with a reason now."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        sel = select_teeth(1.442, ratio_tol=0.5, z1_range=(17, 18), a_w=222.1, internal=True)
+    assert (sel.table["z2"] > sel.table["z1"]).all()
+    no_ring = sel.skipped[sel.skipped["z2"] <= sel.skipped["z1"]]
+    assert len(no_ring) > 0 and no_ring["reason"].str.contains("z2 <= z1").all()
