@@ -22,6 +22,7 @@ With ``total_ratio`` the drive is optimised; without it, analysed as given::
 """
 from __future__ import annotations
 
+from ..validate import _short
 from .markdown import md_table, pyplot
 from .schema import STAGE_KINDS, Where, drive_schema, type_name, validate_table
 
@@ -30,7 +31,7 @@ __all__ = ["load_drive", "build_drive", "run_drive"]
 def _tables(where: Where, v, what: str) -> list:
     tables = v if isinstance(v, list) else [v]
     if not tables or not all(isinstance(t, dict) for t in tables):
-        where.fail(f"drive.{what}", None, f"expected tables [[drive.{what}]], got {v!r} ({type_name(v)})")
+        where.fail(f"drive.{what}", None, f"expected tables [[drive.{what}]], got {_short(v)} ({type_name(v)})")
     return tables
 
 
@@ -42,7 +43,7 @@ def load_drive(where: Where, scene_path, raw) -> dict:
     from ..errors import GearDesignError
 
     if not isinstance(raw, dict):
-        where.fail("drive", None, f"expected a table [drive], got {raw!r} ({type_name(raw)})")
+        where.fail("drive", None, f"expected a table [drive], got {_short(raw)} ({type_name(raw)})")
     head = validate_table(where, "drive", {k: v for k, v in raw.items() if k not in ("stage", "shaft")},
                           drive_schema(""))
     if "stage" not in raw:
@@ -52,7 +53,7 @@ def load_drive(where: Where, scene_path, raw) -> dict:
         label = f"drive.stage #{i + 1}"
         kind = t.get("kind")
         if kind not in STAGE_KINDS:
-            where.fail(label, "kind", f"expected one of {', '.join(repr(k) for k in STAGE_KINDS)}, got {kind!r}")
+            where.fail(label, "kind", f"expected one of {', '.join(repr(k) for k in STAGE_KINDS)}, got {_short(kind)}")
         spec = validate_table(where, label, t, drive_schema(kind))
         if kind == "chain" and spec["catalog"].lower().endswith(".csv"):
             csv = Path(scene_path).parent / spec["catalog"]
