@@ -24,7 +24,7 @@ import pandas as pd
 from ..catalogs.tables import key_lengths_mm, load_catalog
 from ..errors import GearDesignError
 from ..results import Result
-from ..validate import one_number, require_count, require_int, require_positive, require_range
+from ..validate import one_number, require_count, require_positive, require_range
 
 __all__ = ["KeySelection", "select", "capacity", "section", "crushing_stress_mpa", "shear_stress_mpa",
            "working_length_mm", "DEFAULT_CRUSH_MPA", "DEFAULT_SHEAR_MPA", "TWO_KEY_FACTOR"]
