@@ -64,7 +64,9 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
         alone, ``max_x_sum`` and ``min_specific_pressure``, are refused then: they are constant).
     checks : None (no undercut, no interference, s_a >= 0.25 m, ε_α >= 1.2), a dict of
         :func:`geardesign.gears.checks.make_checks` options (``{"sa_min": 0.4, "undercut": False}``),
-        or a list of :class:`geardesign.gears.checks.Check`.
+        or a list of :class:`geardesign.gears.checks.Check`. Whatever is dropped, the gears must mesh
+        (ε_α >= :data:`~geardesign.shifts.problem.MESHING_EPS_ALPHA_MIN`, the ``meshing`` check, added
+        when no contact-ratio check implies it): a pair that does not mesh is no design.
     method : "grid" (fastest, x within half a node spacing), "convex" (SQP in cvxpy/Clarabel,
         ~1e-7 in x, dual sensitivities) or "exact" (active-set Newton, ~1e-12 in x; default).
     tol : tolerance in x (defaults: grid 0.01, convex 1e-7, exact 1e-9); every returned point
