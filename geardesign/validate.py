@@ -11,7 +11,8 @@ from .errors import GearDesignError
 
 __all__ = [
     "require_finite", "require_positive", "require_range", "require_int", "require_count", "one_number",
-    "ndim", "require_choice", "require_bool", "broadcast_inputs",
+    "ndim", "require_choice", "require_bool", "broadcast_inputs", "require_axes",
+    "require_callable",
 ]
 
 
@@ -149,6 +150,28 @@ def require_bool(name: str, value) -> bool:
     if not isinstance(value, (bool, np.bool_)):
         raise GearDesignError(f"{name} must be True or False, got {_short(value)}")
     return bool(value)
+
+
+def require_axes(name: str, value, count: int = 1):
+    """A matplotlib Axes (``count`` 1) or a sequence of ``count`` of them, as given; anything else
+    refused by name (matplotlib is imported only here, when a caller hands axes in)."""
+    from matplotlib.axes import Axes
+    items = [value] if count == 1 else value
+    try:
+        ok = len(items) == count and all(isinstance(a, Axes) for a in items)
+    except TypeError:
+        ok = False
+    if not ok:
+        want = "a matplotlib Axes" if count == 1 else f"{count} matplotlib Axes"
+        raise GearDesignError(f"{name} must be {want} or None, got {_short(value)}")
+    return value
+
+
+def require_callable(name: str, value, allow_none: bool = True):
+    """A function (or None where ``allow_none``); anything else refused by name."""
+    if (value is None and allow_none) or callable(value):
+        return value
+    raise GearDesignError(f"{name} must be a function{' or None' if allow_none else ''}, got {_short(value)}")
 
 
 def broadcast_inputs(**arrays) -> list[np.ndarray]:

@@ -1,7 +1,7 @@
 """Generated bad and extreme input for every public entry point, and the one rule it must obey.
 
 Shared by ``tests/test_fuzz.py`` (a small, reproducible sample in CI) and
-``benchmarks/fuzz.py`` (a long run that counts outcomes). A case is a target name and a call;
+``tools/fuzz.py`` (a long run that counts outcomes). A case is a target name and a call;
 :func:`run_case` classifies what the call did:
 
 * ``ok`` — a result, every number in it finite;
@@ -9,7 +9,17 @@ Shared by ``tests/test_fuzz.py`` (a small, reproducible sample in CI) and
   stderr; exit 1 is an infeasible design, a result);
 * ``traceback`` — any other exception;  ``nan_result`` — a NaN or inf passed off as a result;
 * ``hang`` — longer than the case's time limit;  ``half_written`` — files left behind by a
-  failed command.
+  failed command, or one of a command's files written without the others;
+* ``fails_checks`` — an optimum (or a row marked feasible) that its own checks refuse when
+  re-checked with ``GearPair(...).checks()`` / ``PlanetarySet(...).checks()`` by more than 1e-9,
+  or whose gears do not exist or mesh;
+* ``feasibility_tol`` — the same re-check failing by at most 1e-9 (issue 29 §2, the tolerance
+  the solver and ``checks()`` do not yet share; counted apart);
+* ``warning`` — a Python warning escaping a call that returned or refused cleanly;
+* ``link_replaced`` — an output path that was a symlink is no longer one.
+
+Every file a case writes goes into its own temporary folder. The targets reaching files, links,
+Ctrl-C at start-up are in tests/fuzzsurfaces.py.
 """
 from __future__ import annotations
 
@@ -29,8 +39,10 @@ import pandas as pd
 
 import geardesign as gd
 from geardesign.cli import main as cli_main
+from tests.fuzzrecheck import FailsChecks, FeasibilityTol, recheck_pair, recheck_set, recheck_shift_result
 
-OUTCOMES = ("ok", "clean_error", "traceback", "nan_result", "hang", "half_written")
+OUTCOMES = ("ok", "clean_error", "traceback", "nan_result", "hang", "half_written", "fails_checks",
+            "feasibility_tol", "warning", "link_replaced")
 
 # extremes every numeric input meets now and then
 EXTREMES = [0, -0.0, -1, 5e-324, 1e-300, 1e308, -1e308, float("inf"), float("nan"), 10**400, 2**63,
@@ -53,7 +65,15 @@ def _x(rng):
 
 
 def _m(rng):
-    return rng.choice([1, 2, 2.5, 8, round(rng.uniform(0.1, 30), 3), 1e-4, 1e4])
+    return rng.choice([1, 2, 2.5, 8, round(rng.uniform(0.1, 30), 3), 1e-4, 1e4] + _M_ENDS)
+
+
+# the module range's ends and just beyond (geometry.M_RANGE_MM): inside answers, outside is refused
+_M_ENDS = [1e-4, 1e4, 1e-4 * (1 - 1e-12), 1e4 * (1 + 1e-12), 9.999e3, 1.0001e-4, 1e300, 2.0 ** 63]
+# checks dropped: meshing must hold whatever is left (issue 29 §3.1)
+_DROPPED = [{"eps_alpha_min": None}, {"eps_alpha_min": None, "sa_min": None}, {"undercut": False},
+            {"interference": False}, {"eps_alpha_min": None, "undercut": False, "interference": False},
+            {"eps_alpha_min": 0.0}, []]
 
 
 def _rack(rng):
@@ -129,13 +149,20 @@ def _optimize(rng):
         kw["bounds"] = _pick(rng, [(-0.5, 1.0), (-1, 2), (0, 0), (3, -1)])
     if rng.random() < 0.1:
         kw["grid_n"] = _pick(rng, [5, 101, 5000])
-    if rng.random() < 0.3:
+    if rng.random() < 0.4:
         kw["checks"] = _pick(rng, [{}, {"undercut": False}, {"interference": False}, {"sa_min": 0.4},
-                                   {"eps_alpha_min": None}, [], {"bogus": 1}])
+                                   {"eps_alpha_min": None}, [], {"bogus": 1}, {"radial_assembly": True}] + _DROPPED)
     kw.update(_kind(rng))
+    if rng.random() < 0.25 and isinstance(z1, int) and isinstance(z2, int):   # ring pairs with checks dropped
+        kw["internal"], z2 = True, z1 + rng.randint(1, 120)
     rack = _rack(rng)
-    return (f"optimize_shifts({z1}, {z2}, rack={rack}, **{kw})",
-            lambda: gd.optimize_shifts(z1, z2, rack=_make_rack(rack), **kw))
+    kind = {k: kw[k] for k in ("beta_deg", "internal", "face_width") if k in kw}
+
+    def call():
+        r = gd.optimize_shifts(z1, z2, rack=_make_rack(rack), **kw)
+        recheck_shift_result(r, kw.get("m"), kw.get("checks"), _make_rack(rack), kind)
+        return r
+    return f"optimize_shifts({z1}, {z2}, rack={rack}, **{kw})", call
 
 
 def _region(rng):
@@ -154,17 +181,40 @@ def _atlas(rng):
     z2 = _pick(rng, [range(20, 23), [26, 40], 26], 0.1)
     obj = rng.choice(["max_x_sum", "balanced_sliding"])
     kind = _kind(rng)
-    return f"shift_atlas({z1}, {z2}, {obj}, **{kind})", lambda: gd.shift_atlas(z1, z2, objective=obj, **kind)
+    checks = rng.choice(_DROPPED) if rng.random() < 0.3 else None
+
+    def call():
+        df = gd.shift_atlas(z1, z2, objective=obj, checks=checks, **kind)
+        names = [c[len("margin_"):] for c in df.columns if c.startswith("margin_")]
+        for row in df[df["feasible"]].head(4).itertuples():
+            recheck_pair(1.0, row.z1, row.z2, row.x1, row.x2, checks, None, "atlas row", names, **kind)
+        return df
+    return f"shift_atlas({z1}, {z2}, {obj}, checks={checks}, **{kind})", call
 
 
 def _teeth(rng):
-    kw = dict(ratio=_pick(rng, lambda r: round(r.uniform(1, 8), 3)), m=_pick(rng, [2, 3, 8, None], 0.1))
+    kw = dict(ratio=_pick(rng, lambda r: round(r.uniform(1, 8), 3)),
+              m=_pick(rng, [2, 3, 8, None, 0.2, 32.5] + _M_ENDS, 0.1))
     if rng.random() < 0.3:
         kw["ratio_tol"] = _pick(rng, [0.01, 0.05, 0.0, 2.0])
     if rng.random() < 0.3:
         kw["z1_range"] = _pick(rng, [(12, 20), (8, 40), (40, 8), (3, 100000)])
+    elif rng.random() < 0.5:
+        lo = rng.randint(8, 40)
+        kw["z1_range"] = (lo, lo + rng.randint(0, 3))
+    if rng.random() < 0.3:
+        kw["checks"] = rng.choice(_DROPPED)
     kw.update(_kind(rng))
-    return f"select_teeth(**{kw})", lambda: gd.select_teeth(**kw)
+
+    def call():
+        sel = gd.select_teeth(**kw)
+        kind = {k: kw[k] for k in ("beta_deg", "internal", "face_width") if k in kw}
+        for _, row in sel.feasible.head(4).iterrows():     # rows marked feasible re-check as feasible
+            names = [c[len("margin_"):] for c in sel.table.columns if c.startswith("margin_")]
+            recheck_pair(float(row["module_mm"]), row["z1"], row["z2"], row["x1"], row["x2"], kw.get("checks"),
+                         None, "row marked feasible", names, **kind)
+        return sel
+    return f"select_teeth(**{kw})", call
 
 
 def _planetary_sizes(rng):
@@ -201,10 +251,16 @@ def _optimize_planetary(rng):
         plain = all(type(v) in (int, float) and abs(v) < 1e4 for v in (kw["m"], sizes[0], sizes[1]))
         half = (sizes[0] + sizes[1]) * kw["m"] / 2 if plain else 20.0
         kw["a_w"] = _pick(rng, lambda r: half * r.uniform(0.95, 1.1))
-    if rng.random() < 0.2:
+    if rng.random() < 0.35:
         kw["checks"] = _pick(rng, [{}, {"neighbour_clearance": 0.0}, {"neighbour_clearance": None},
-                                   {"undercut": False}, {"bogus": 1}, [1]])
-    return f"optimize_planetary_shifts(*{sizes}, **{kw})", lambda: gd.optimize_planetary_shifts(*sizes, **kw)
+                                   {"undercut": False}, {"bogus": 1}, [1]] + [d for d in _DROPPED if d != []])
+
+    def call():
+        r = gd.optimize_planetary_shifts(*sizes, **kw)
+        if r.success:
+            recheck_set(kw["m"], *sizes, r.x_sun, r.x_planet, r.x_ring, kw.get("checks"))
+        return r
+    return f"optimize_planetary_shifts(*{sizes}, **{kw})", call
 
 
 def _planetary_teeth(rng):
@@ -216,7 +272,17 @@ def _planetary_teeth(rng):
         kw["ratio_tol"] = _pick(rng, [0.0, 0.01, 0.6])
     if rng.random() < 0.2:
         kw["arrangement"] = _pick(rng, ["carrier_fixed", "sun_fixed"])
-    return f"select_planetary_teeth(**{kw})", lambda: gd.select_planetary_teeth(**kw)
+    if rng.random() < 0.3:
+        kw["checks"] = rng.choice([d for d in _DROPPED if d != []] + [{"neighbour_clearance": None}])
+
+    def call():
+        sel = gd.select_planetary_teeth(**kw)
+        for _, row in sel.table[sel.table["feasible"]].head(3).iterrows():
+            recheck_set(kw["m"], row["z_sun"], row["z_planet"], row["z_ring"], kw["n_planets"], row["x_sun"],
+                        row["x_planet"], row["x_ring"], kw.get("checks"), what="row marked feasible",
+                        arrangement=kw.get("arrangement", "ring_fixed"))
+        return sel
+    return f"select_planetary_teeth(**{kw})", call
 
 
 def _drive(rng):
@@ -379,6 +445,13 @@ TARGETS = {
 }
 
 
+def _surfaces():
+    """The targets of tests/fuzzsurfaces.py (files, links, a command's outputs, Ctrl-C), added here
+    so that one TARGETS lists every surface; imported late, as they use this module's helpers."""
+    from tests.fuzzsurfaces import SURFACES
+    TARGETS.update(SURFACES)
+
+
 # --- judging a result -----------------------------------------------------------------------
 
 # Geometry fields whose description says when they are NaN by design ("not applicable": a ring's
@@ -446,6 +519,18 @@ class _Timeout(Exception):
     pass
 
 
+class LinkReplaced(Exception):
+    """An output path that was a symlink is a symlink no more."""
+
+
+def _warned(caught, desc):
+    """("warning", ...) when a warning escaped the call, else None."""
+    if caught:
+        w = caught[0]
+        return "warning", desc, f"{w.category.__name__}: {str(w.message)[:120]} ({len(caught)} in all)"
+    return None
+
+
 def _alarm(signum, frame):
     raise _Timeout()
 
@@ -457,27 +542,37 @@ def run_case(target: str, seed: int, time_limit_s: float = 30.0):
     old = signal.signal(signal.SIGALRM, _alarm)
     signal.setitimer(signal.ITIMER_REAL, time_limit_s)
     t0 = time.perf_counter()
+    import warnings
+    caught = []
     try:
-        import warnings
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
             result = call()
         problem = _result_problem(result)
         if problem:
             return "nan_result", desc, problem
-        return "ok", desc, ""
+        return _warned(caught, desc) or ("ok", desc, "")
     except _Timeout:
         return "hang", desc, f"> {time_limit_s:g} s"
     except HalfWritten as exc:
         return "half_written", desc, str(exc)
+    except LinkReplaced as exc:
+        return "link_replaced", desc, str(exc)
+    except FailsChecks as exc:
+        return "fails_checks", desc, str(exc)
+    except FeasibilityTol as exc:
+        return "feasibility_tol", desc, str(exc)
     except gd.GearDesignError as exc:
         text = str(exc)
         if "\n" in text.strip():
             return "traceback", desc, f"multi-line error: {text[:200]!r}"
-        return "clean_error", desc, text[:200]
+        return _warned(caught, desc) or ("clean_error", desc, text[:200])
     except Exception as exc:   # noqa: BLE001 - every other exception is what we count
         return "traceback", desc, f"{type(exc).__name__}: {str(exc)[:200]}"
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, old)
         _ = time.perf_counter() - t0
+
+
+_surfaces()

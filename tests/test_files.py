@@ -71,3 +71,85 @@ def test_written_files_have_the_permissions_of_a_plain_create(tmp_path):
     assert stat.S_IMODE(f.stat().st_mode) == 0o644
     assert stat.S_IMODE(d.stat().st_mode) == 0o755
     assert stat.S_IMODE((d / "r.md").stat().st_mode) == 0o644
+
+
+# --- issue 29 §3.8, §3.9 -------------------------------------------------------------------
+
+def test_a_valid_250_character_name_is_written_and_its_temporary_name_fits(tmp_path):
+    """§3.8: the temporary name '.<stem>.XXXXXXXX.tmp<suffix>' of a 250-character name passed 255 bytes."""
+    from geardesign.files import NAME_MAX_BYTES
+    target = tmp_path / ("g" * 246 + ".csv")
+    seen = []
+
+    def write(tmp):
+        seen.append(os.path.basename(tmp))
+        with open(tmp, "w") as fh:
+            fh.write("x\n")
+    check_output_path(target, suffixes=(".csv",))
+    write_file_atomic(target, write)
+    assert target.read_text() == "x\n" and sorted(os.listdir(tmp_path)) == [target.name]
+    assert len(os.fsencode(seen[0])) <= NAME_MAX_BYTES and seen[0].startswith(".g")
+    multibyte = tmp_path / ("é" * 125 + ".csv")          # 254 bytes
+    write_file_atomic(multibyte, write)
+    assert multibyte.read_text() == "x\n"
+
+
+def test_a_name_longer_than_the_file_system_takes_is_refused_before_work(tmp_path):
+    with pytest.raises(GearDesignError, match="256 bytes long; at most 255"):
+        check_output_path(tmp_path / ("g" * 252 + ".csv"), suffixes=(".csv",))
+    with pytest.raises(GearDesignError, match="bytes long"):
+        check_output_dir(tmp_path / ("d" * 300))
+
+
+def test_one_commands_outputs_are_all_or_nothing(tmp_path):
+    from geardesign.files import all_or_nothing
+    a, b = tmp_path / "a.png", tmp_path / "b.csv"
+    a.write_text("old a")
+
+    def ok(tmp):
+        with open(tmp, "w") as fh:
+            fh.write("new")
+
+    def fails(tmp):
+        raise RuntimeError("disk full")
+    with pytest.raises(RuntimeError):
+        with all_or_nothing():
+            write_file_atomic(a, ok)
+            assert a.read_text() == "old a"          # not moved yet
+            write_file_atomic(b, fails)
+    assert sorted(os.listdir(tmp_path)) == ["a.png"] and a.read_text() == "old a"
+    with all_or_nothing():
+        write_file_atomic(a, ok)
+        write_file_atomic(b, ok)
+    assert sorted(os.listdir(tmp_path)) == ["a.png", "b.csv"] and a.read_text() == b.read_text() == "new"
+
+
+def test_a_link_to_a_folder_stays_a_link(tmp_path):
+    """§3.9: the link was replaced by a real folder and '.link.XXXX.old -> real' was left behind."""
+    real = tmp_path / "real"
+    real.mkdir()
+    (real / "old.txt").write_text("old")
+    link = tmp_path / "link"
+    link.symlink_to(real, target_is_directory=True)
+
+    def write(tmp):
+        (tmp / "report.md").write_text("new")
+    check_output_dir(link, overwrite=True)
+    write_dir_atomic(link, write)
+    assert link.is_symlink() and os.path.realpath(link) == str(real)
+    assert sorted(p.name for p in real.iterdir()) == ["report.md"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["link", "real"]
+
+
+def test_a_link_to_a_file_stays_a_link(tmp_path):
+    real = tmp_path / "real.csv"
+    real.write_text("old")
+    link = tmp_path / "link.csv"
+    link.symlink_to(real)
+
+    def write(tmp):
+        with open(tmp, "w") as fh:
+            fh.write("new")
+    write_file_atomic(link, write)
+    assert link.is_symlink() and real.read_text() == "new"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["link.csv", "real.csv"]

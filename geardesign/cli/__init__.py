@@ -6,20 +6,20 @@ and exit with status 2; nothing prints a traceback for bad input.
 """
 from __future__ import annotations
 
-import argparse
-import importlib
 import sys
-import warnings
 
-import numpy as np
-
-from ..errors import GearDesignError
+# Nothing heavy is imported at module level: the console script imports this module before it
+# calls main(), and a Ctrl-C during those imports (numpy, pandas, matplotlib take ~0.5 s) would
+# print a traceback. main() imports them inside its own Ctrl-C handler instead.
 
 # Subcommand modules, in the order ``geardesign --help`` lists them.
 SUBCOMMANDS = ("pair", "mesh", "shift", "atlas", "teeth", "planetary", "chain", "key", "drive", "run")
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser():
+    import argparse
+    import importlib
+
     parser = argparse.ArgumentParser(
         prog="geardesign",
         description="Gear-pair geometry and profile-shift optimisation, roller chains and keys.")
@@ -33,6 +33,22 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
+    """Run one command; exit status 0 (done), 1 (no feasible design), 2 (bad input, one line on
+    stderr) or 130 (Ctrl-C, one line on stderr, no traceback, nothing written)."""
+    try:
+        return _main(argv)
+    except KeyboardInterrupt:   # during start-up: the imports and the parser
+        print("geardesign: interrupted", file=sys.stderr)
+        return 130
+
+
+def _main(argv) -> int:
+    import warnings
+
+    import numpy as np
+
+    from ..errors import GearDesignError
+
     parser = build_parser()
     args = parser.parse_args(argv)
     try:

@@ -88,13 +88,15 @@ def run(args) -> int:
     if "--plot" in targets or "--diagrams" in targets:
         import matplotlib
         matplotlib.use("Agg")
-    if "--plot" in targets:
-        _save_figure(plot_mesh(pair, roll_deg=args.roll_deg, cutter=cutter), targets["--plot"])
-    if "--diagrams" in targets:
-        _save_figure(plot_diagrams(pair)[0], targets["--diagrams"])
-    for flag in ("--svg", "--dxf", "--csv"):
-        if flag in targets:
-            export_profiles(pair, targets[flag], overwrite=args.overwrite, roll_deg=args.roll_deg, cutter=cutter)
+    from ..files import all_or_nothing
+    with all_or_nothing():      # every file of the command, or none
+        if "--plot" in targets:
+            _save_figure(plot_mesh(pair, roll_deg=args.roll_deg, cutter=cutter), targets["--plot"])
+        if "--diagrams" in targets:
+            _save_figure(plot_diagrams(pair)[0], targets["--diagrams"])
+        for flag in ("--svg", "--dxf", "--csv"):
+            if flag in targets:
+                export_profiles(pair, targets[flag], overwrite=args.overwrite, roll_deg=args.roll_deg, cutter=cutter)
 
     c = contact_points(geo)
     d = line_of_action_diagrams(geo, n=2, s_mm=[0.5 * c["g"]])

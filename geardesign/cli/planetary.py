@@ -77,6 +77,9 @@ def _save(path, ax, overwrite):
 def run(args) -> int:
     from ..files import check_output_path
 
+    if args.ratio is not None and (args.plot or args.drawing):
+        raise GearDesignError("--plot and --drawing draw one set: give its tooth counts (--z-sun, --z-planet, "
+                              "--z-ring) instead of --ratio, e.g. those of the row --ratio chooses")
     for flag in ("plot", "drawing"):
         if getattr(args, flag):
             check_output_path(getattr(args, flag), overwrite=args.overwrite, suffixes=(".png",), what=f"--{flag}")
@@ -107,9 +110,16 @@ def _check(args) -> int:
          else PlanetarySet(*sizes, args.x_sun, args.x_planet, args.x_ring, **_set_kwargs(args)))
     table = s.checks(_checks(args))
     ok = bool(table["ok"].all())
-    if args.drawing:
-        from ..profiles.planetary import plot_planetary
-        _save(args.drawing, plot_planetary(s), args.overwrite)
+    from ..files import all_or_nothing
+    with all_or_nothing():      # every file of the command, or none
+        if args.plot:           # the region, the given shifts marked on it
+            from ..shifts.planetary import planetary_region
+            reg = planetary_region(*sizes[1:], sizes[0], checks=_checks(args), rack=rack_from_args(args),
+                                   beta_deg=args.beta)
+            _save(args.plot, reg.plot(proposed=(s.x_sun, s.x_planet)), args.overwrite)
+        if args.drawing:
+            from ..profiles.planetary import plot_planetary
+            _save(args.drawing, plot_planetary(s), args.overwrite)
     if args.json:
         print_json({"x_sun": s.x_sun, "x_planet": s.x_planet, "x_ring": s.x_ring, "a_w": s.a_w,
                     "a_w_planet_ring": s.a_w_planet_ring, "ratio": s.ratio, "ok": ok,
@@ -131,17 +141,21 @@ def _optimize(args) -> int:
     r = optimize_planetary_shifts(args.z_sun, args.z_planet, args.z_ring, args.planets, args.module,
                                   a_w=args.center_distance, objective=args.objective, checks=_checks(args),
                                   method=args.method, arrangement=args.arrangement, **kw)
-    if args.plot:
-        reg = planetary_region(args.z_sun, args.z_planet, args.z_ring, args.planets, args.module,
-                               checks=_checks(args), **kw)
-        ax = reg.plot(optimum=(r.x_sun, r.x_planet) if r.success else None, x_sum=(
-            r.x_sun + r.x_planet) if args.center_distance is not None else None)
-        _save(args.plot, ax, args.overwrite)
-    if args.drawing and r.success:
-        from ..profiles.planetary import plot_planetary
-        s = PlanetarySet(args.module, args.z_sun, args.z_planet, args.z_ring, args.planets, r.x_sun, r.x_planet,
-                         r.x_ring, arrangement=args.arrangement, **kw)
-        _save(args.drawing, plot_planetary(s), args.overwrite)
+    # every file of the command, or none: the drawing needs a feasible set, so without one nothing is written
+    write = (args.plot or args.drawing) and (r.success or not args.drawing)
+    from ..files import all_or_nothing
+    with all_or_nothing():
+        if args.plot and write:
+            reg = planetary_region(args.z_sun, args.z_planet, args.z_ring, args.planets, args.module,
+                                   checks=_checks(args), **kw)
+            ax = reg.plot(optimum=(r.x_sun, r.x_planet) if r.success else None, x_sum=(
+                r.x_sun + r.x_planet) if args.center_distance is not None else None)
+            _save(args.plot, ax, args.overwrite)
+        if args.drawing and write:
+            from ..profiles.planetary import plot_planetary
+            s = PlanetarySet(args.module, args.z_sun, args.z_planet, args.z_ring, args.planets, r.x_sun, r.x_planet,
+                             r.x_ring, arrangement=args.arrangement, **kw)
+            _save(args.drawing, plot_planetary(s), args.overwrite)
     if args.json:
         print_json(r.to_dict())
         return 0 if r.success else 1
@@ -149,8 +163,10 @@ def _optimize(args) -> int:
     if r.success:
         print_frame(r.to_frame(), "\nChecks at the optimum (margin >= 0 holds; sensitivity = d fun / d limit)")
     for flag, what in (("plot", "region"), ("drawing", "drawing")):
-        if getattr(args, flag) and (flag == "plot" or r.success):
+        if getattr(args, flag) and write:
             print(f"{what} written to {getattr(args, flag)}")
+    if (args.plot or args.drawing) and not write:
+        print("no feasible set to draw: nothing written")
     return 0 if r.success else 1
 
 

@@ -24,7 +24,7 @@ import pandas as pd
 from ..catalogs.tables import key_lengths_mm, load_catalog
 from ..errors import GearDesignError
 from ..results import Result
-from ..validate import one_number, require_int, require_positive, require_range
+from ..validate import one_number, require_count, require_positive, require_range
 
 __all__ = ["KeySelection", "select", "capacity", "section", "crushing_stress_mpa", "shear_stress_mpa",
            "working_length_mm", "DEFAULT_CRUSH_MPA", "DEFAULT_SHEAR_MPA", "TWO_KEY_FACTOR"]
@@ -165,7 +165,7 @@ def select(d_mm, torque_nm, hub_length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA
     s_sh = one_number("allowable_shear_mpa", require_range("allowable_shear_mpa", allowable_shear_mpa, 0.0, ALLOWABLE_MPA_MAX, lo_open=True, unit="MPa"))
     if end not in ENDS:
         raise GearDesignError(f"end must be one of {', '.join(ENDS)}, got {end!r}")
-    max_keys = int(require_range("max_keys", require_int("max_keys", max_keys, 1), 1, MAX_KEYS))
+    max_keys = require_count("max_keys", max_keys, 1, MAX_KEYS)
     b, h, t1, t2 = (float(sec[c]) for c in ("b_mm", "h_mm", "t1_mm", "t2_mm"))
     cand, longest = _candidates(sec, d, torque, hub - allowance, s_cr, s_sh, end, max_keys)
     common = dict(d_mm=d, torque_nm=torque, hub_length_mm=hub, b_mm=b, h_mm=h, t1_mm=t1, t2_mm=t2,
@@ -276,7 +276,7 @@ def capacity(d_mm, length_mm, allowable_crush_mpa=DEFAULT_CRUSH_MPA, allowable_s
     h = one_number("h_mm", require_positive("h_mm", h_mm, "mm"))
     t1 = one_number("t1_mm", require_range("t1_mm", t1_mm, 0.0, h, lo_open=True, hi_open=True, unit="mm"))
     length = one_number("length_mm", require_range("length_mm", length_mm, 0.0, LENGTH_MAX_MM, lo_open=True, unit="mm"))
-    n = int(require_range("n_keys", require_int("n_keys", n_keys, 1), 1, 2))
+    n = require_count("n_keys", n_keys, 1, 2)
     lp = float(working_length_mm(length, b, end))
     if lp <= 0:
         raise GearDesignError(f"length_mm must exceed the rounded ends ({length:g} mm leaves l_p = {lp:g} mm)")

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import one_number, require_count, require_range
+from ..validate import _show, ndim, one_number, require_count, require_range
 
 __all__ = ["GivenStage", "GearStage", "ChainStage", "Shaft", "EFFICIENCY_RANGE", "GIVEN_RATIO_RANGE",
            "GEAR_PAIRS_MAX", "STEEL_DENSITY_KG_M3", "FACE_WIDTH_PITCHES", "stage_area_mm2", "disc_mass_kg"]
@@ -253,6 +253,8 @@ class ChainStage:
 
         object.__setattr__(self, "efficiency", _efficiency(self.efficiency))
         object.__setattr__(self, "name", _name(self.name, "chain"))
+        if self.strands is not None and ndim(self.strands) not in (0, 1):
+            raise GearDesignError(f"strands must be strand counts (1, 2, 3), got {_show(self.strands)}")
         object.__setattr__(self, "strands", (1, 2, 3) if self.strands is None else tuple(np.atleast_1d(self.strands).tolist()))
         object.__setattr__(self, "ratio_range", _range("ratio_range", self.ratio_range, *RATIO_RANGE))
         # chain.design's own validation, once, at a placeholder load (the load comes from the drive)
@@ -266,6 +268,8 @@ class ChainStage:
             if self.z1 is None:
                 raise GearDesignError("a fixed z2 needs a fixed z1 (the chain stage's ratio is z2/z1)")
         if self.designation is not None:
+            if not isinstance(self.designation, str):
+                raise GearDesignError(f"designation must be a chain designation (text), got {_show(self.designation)}")
             rows = self.table().values["designation"]
             if self.designation not in set(np.asarray(rows, dtype=object).tolist()):
                 raise GearDesignError(f"designation {self.designation!r} is not in catalog {self.catalog!r}")

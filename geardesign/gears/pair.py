@@ -9,8 +9,9 @@ import numpy as np
 from . import checks as _checks
 from ..errors import GearDesignError
 from ..validate import ndim, one_number, require_positive, require_range
-from .geometry import (M_RANGE_MM, X_ABS_MAX, Geometry, mesh_geometry, mesh_geometry_float, min_center_distance,
-                       validate_geometry, validate_inputs, x_sum_from_center_distance)
+from .geometry import (M_RANGE_MM, X_ABS_MAX, Geometry, center_distance_from_x_sum, mesh_geometry,
+                       mesh_geometry_float, min_center_distance, validate_geometry, validate_inputs,
+                       x_sum_from_center_distance)
 from .mesh import Mesh
 from .rack import STANDARD_RACK, BasicRack
 
@@ -142,6 +143,12 @@ class GearPair:
             raise GearDesignError(
                 f"a_w = {a_w:g} mm is too small: it must be > a·cos(alpha) = {a_min:.6g} mm "
                 f"for m = {m:g}, " + (f"z2 - z1 = {z2 - z1}" if mesh.internal else f"z1 + z2 = {z1 + z2}"))
+        # beyond the a_w of x_Σ = 2·X_ABS_MAX no pair of gears exists; refused before inv α_w overflows
+        a_max = float(center_distance_from_x_sum(m, z1, z2, 2 * X_ABS_MAX, mesh.rack, mesh.beta_deg, mesh.internal))
+        if not a_w < a_max:
+            raise GearDesignError(
+                f"a_w = {a_w:g} mm is too large: it must be < {a_max:.6g} mm (the a_w of a shift sum "
+                f"{2 * X_ABS_MAX:g}, each |x| <= {X_ABS_MAX:g}) for m = {m:g}, z1/z2 = {z1}/{z2}")
         xs = float(x_sum_from_center_distance(m, z1, z2, a_w, rack, mesh.beta_deg, mesh.internal))
         if x1 is None:
             x1 = balanced_sliding_split(m, z1, z2, xs, mesh=mesh)

@@ -36,7 +36,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import one_number, require_choice, require_count, require_positive, require_range
+from ..validate import _show, ndim, one_number, require_choice, require_count, require_positive, require_range
 from . import checks as _checks
 from .geometry import (X_ABS_MAX, Geometry, mesh_geometry, mesh_geometry_float, min_center_distance, require_module,
                        validate_geometry)
@@ -117,6 +117,9 @@ class PlanetaryMeshes:
             raise GearDesignError(f"z_ring must exceed z_planet (the ring is internal): z_ring = {self.z_ring} "
                                   f"<= z_planet = {self.z_planet}")
         if self.planet_angles_deg is not None:
+            if ndim(self.planet_angles_deg) != 1 or isinstance(self.planet_angles_deg, (str, bytes)):
+                raise GearDesignError(f"planet_angles_deg must be a list of {self.n_planets} carrier angles in deg, "
+                                      f"got {_show(self.planet_angles_deg)}")
             angles = tuple(float(one_number("planet_angles_deg", require_range("planet_angles_deg", t, 0.0, 360.0,
                                                                                   hi_open=True, unit="deg")))
                            for t in self.planet_angles_deg)

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from ..errors import GearDesignError
 from ..validate import _show, ndim, one_number, require_finite, require_range
 
-__all__ = ["BasicRack", "STANDARD_RACK", "ALPHA_RANGE_DEG", "HA_RANGE", "C_RANGE"]
+__all__ = ["BasicRack", "STANDARD_RACK", "ALPHA_RANGE_DEG", "HA_RANGE", "C_RANGE", "require_rack"]
 
 # Pressure angles accepted: 1°–44° (standards use 14.5°–25°; the accuracy tests cover 10°–35°).
 # At 0° the involute degenerates, at 45° the rack tooth has no tip land.
@@ -101,3 +101,12 @@ class BasicRack:
 
 # The standard rack, shared as the default of every mesh and pair (a frozen value: sharing is safe).
 STANDARD_RACK = BasicRack()
+
+
+def require_rack(rack) -> BasicRack:
+    """``rack``, or the standard rack for None; anything else is refused by name."""
+    if rack is None:
+        return STANDARD_RACK
+    if not isinstance(rack, BasicRack):
+        raise GearDesignError(f"rack must be a geardesign.BasicRack or None, got {_show(rack)}")
+    return rack

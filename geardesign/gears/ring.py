@@ -216,7 +216,8 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
     scalar = all(type(v) is float for v in (m_n, z2, x2, r_a2)) or \
         all(type(v) in (float, int) or np.ndim(v) == 0 for v in (m_n, z2, x2, r_a2))
     if scalar:
-        z0, m_n, z2, x2, r_a2 = (float(v) for v in (z0, m_n, z2, x2, r_a2))
+        # all Python floats (a 0-d array's cos β would make numpy scalars, whose √ of a negative warns)
+        z0, m_n, z2, x2, r_a2, cos_beta, tan_n = (float(v) for v in (z0, m_n, z2, x2, r_a2, cos_beta, tan_n))
         z0 = z0 if z2 > z0 else math.nan
     else:
         z0 = np.where(np.asarray(z2) > z0, z0, np.nan)

@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from ..validate import one_number, require_range
+from ..validate import one_number, require_axes, require_range
 from .mesh import ROLL_RANGE_DEG, pair_profiles, placed, require_pair
 
 __all__ = ["plot_mesh", "plot_diagrams", "contact_points", "line_of_action_diagrams"]
@@ -62,6 +62,7 @@ def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60, cutter=Non
     p1, p2 = pair_profiles(pair, points, cutter)
     if ax is None:
         _, ax = plt.subplots(figsize=(8.6, 7.4))
+    require_axes("ax", ax)
     a_w = float(geo["a_w"])
     centre2 = -a_w if internal else a_w
     shapes = {name: (x, y) for name, x, y in placed(pair, p1, p2, roll)}
@@ -158,6 +159,7 @@ def plot_diagrams(pair, axes=None):
     d = line_of_action_diagrams(require_pair(pair)._geo)
     if axes is None:
         _, axes = plt.subplots(2, 1, figsize=(8.6, 6.4), sharex=True)
+    require_axes("axes", axes, 2)
     ax1, ax2 = axes
     s = d["s_mm"]
     # break the curves at N1 (ρ1 = 0), where ϑ1 and γ have their pole

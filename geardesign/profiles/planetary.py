@@ -5,7 +5,9 @@ import math
 
 import numpy as np
 
+from ..errors import GearDesignError
 from ..gears.planetary import PlanetarySet
+from ..validate import _show, require_axes
 
 __all__ = ["plot_planetary"]
 
@@ -29,8 +31,11 @@ def plot_planetary(s: PlanetarySet, ax=None):
     """
     import matplotlib.pyplot as plt
 
+    if not isinstance(s, PlanetarySet):
+        raise GearDesignError(f"plot_planetary needs a geardesign.PlanetarySet, got {_show(s)}")
     if ax is None:
         _, ax = plt.subplots(figsize=(7.4, 7.4))
+    require_axes("ax", ax)
     geo = s.geometry()
     sp, pr = geo["sun-planet"], geo["planet-ring"]
     a_w = s.a_w

@@ -47,9 +47,9 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..gears.mesh import BETA_RANGE_DEG
-from ..gears.rack import STANDARD_RACK, BasicRack
+from ..gears.rack import BasicRack, require_rack
 from ..gears.ring import ShaperCutter, cutting_mesh
-from ..validate import one_number, require_count, require_int, require_range
+from ..validate import one_number, require_count, require_range
 from .tooth import POINTS_MAX, ToothProfile, material_angle, transverse_rack
 
 __all__ = ["RingProfile", "ring_profile", "RIM_MODULES", "rim_circle"]
@@ -193,12 +193,12 @@ def ring_profile(m, z, x=0.0, cutter: ShaperCutter | None = None, rack: BasicRac
     >>> p.z0, abs(p.tip_thickness_mm - g.sa2) < 1e-9, round(2 * p.r_root_mm, 4), round(g.df2, 4)
     (42, True, 127.0326, 127.4)
     """
-    rack = STANDARD_RACK if rack is None else rack
+    rack = require_rack(rack)
     cutter = ShaperCutter() if cutter is None else cutter
     if not isinstance(cutter, ShaperCutter):
         raise GearDesignError(f"cutter must be a geardesign.ShaperCutter, got {type(cutter).__name__}")
     m = one_number("m (module)", require_range("m (module)", m, 1e-4, 1e4, unit="mm"))
-    z = int(require_int("z", z, 3, 100_000))
+    z = require_count("z", z, 3, 100_000)
     x = one_number("x", require_range("x", x, -10.0, 10.0))
     n = require_count("points", points, 8, POINTS_MAX)
     beta = one_number("beta_deg", require_range("beta_deg", beta_deg, *BETA_RANGE_DEG, unit="deg"))
@@ -244,6 +244,10 @@ def _cutter_in_place(m, z, x, r_a, cutter: ShaperCutter, rack: BasicRack, alpha,
     r_b0 = r0 * math.cos(alpha)
     # s0/(2 r0) + inv α_t, the cutter's transverse thickness s0 = m_t π/2 + 2 x0 m tan α_n
     psi_b0 = (math.pi / 2.0 + 2.0 * cutter.x0 * math.tan(rack.alpha)) / z0 + (math.tan(alpha) - alpha)
+    if not r_a0 > r_b0:
+        raise GearDesignError(f"the shaper cutter z0 = {z0}, x0 = {cutter.x0:g}, h_a0* = {cutter.ha0:g} has its tip "
+                              f"circle (d_a0 = {2 * r_a0:.6g} mm) inside its base circle (d_b0 = {2 * r_b0:.6g} mm): "
+                              "no involute to cut with; choose more teeth, a larger x0 or h_a0*")
     t_a0 = math.sqrt((r_a0 - r_b0) * (r_a0 + r_b0)) / r_b0
     psi_a0 = psi_b0 - (t_a0 - math.atan(t_a0))
     if not psi_a0 > 0.0:

@@ -21,9 +21,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import GearDesignError
-from ..gears.rack import STANDARD_RACK, BasicRack
+from ..gears.rack import BasicRack, require_rack
 from ..results import Result
-from ..validate import one_number, require_count, require_int, require_range
+from ..validate import one_number, require_count, require_range
 
 __all__ = ["ToothProfile", "tooth_profile", "transverse_rack", "POINTS_MAX"]
 
@@ -199,9 +199,9 @@ def tooth_profile(m, z, x=0.0, rack: BasicRack | None = None, tip_diameter_mm=No
     >>> round(2 * p.r_form_mm, 3)                # the form circle d_Ff
     134.443
     """
-    rack = STANDARD_RACK if rack is None else rack
+    rack = require_rack(rack)
     m = one_number("m (module)", require_range("m (module)", m, 1e-4, 1e4, unit="mm"))
-    z = int(require_int("z", z, 3, 100_000))
+    z = require_count("z", z, 3, 100_000)
     x = one_number("x", require_range("x", x, -10.0, 10.0))
     n = require_count("points", points, 8, POINTS_MAX)
     cut = _Cutter.of(m, z, x, rack)

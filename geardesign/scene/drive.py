@@ -23,6 +23,7 @@ With ``total_ratio`` the drive is optimised; without it, analysed as given::
 """
 from __future__ import annotations
 
+from ..validate import _short
 from .markdown import md_table, pyplot
 from .schema import Where, drive_schema, stage_kinds, type_name, validate_table
 
@@ -31,7 +32,7 @@ __all__ = ["load_drive", "build_drive", "run_drive"]
 def _tables(where: Where, v, what: str) -> list:
     tables = v if isinstance(v, list) else [v]
     if not tables or not all(isinstance(t, dict) for t in tables):
-        where.fail(f"drive.{what}", None, f"expected tables [[drive.{what}]], got {v!r} ({type_name(v)})")
+        where.fail(f"drive.{what}", None, f"expected tables [[drive.{what}]], got {_short(v)} ({type_name(v)})")
     return tables
 
 
@@ -44,7 +45,7 @@ def load_drive(where: Where, scene_path, raw) -> dict:
     from ..errors import GearDesignError
 
     if not isinstance(raw, dict):
-        where.fail("drive", None, f"expected a table [drive], got {raw!r} ({type_name(raw)})")
+        where.fail("drive", None, f"expected a table [drive], got {_short(raw)} ({type_name(raw)})")
     head = validate_table(where, "drive", {k: v for k, v in raw.items() if k not in ("stage", "shaft")},
                           drive_schema(""))
     if "stage" not in raw:
@@ -54,7 +55,7 @@ def load_drive(where: Where, scene_path, raw) -> dict:
         label = f"drive.stage #{i + 1}"
         kind = t.get("kind")
         if kind not in stage_kinds():
-            where.fail(label, "kind", f"expected one of {', '.join(repr(k) for k in stage_kinds())}, got {kind!r}")
+            where.fail(label, "kind", f"expected one of {', '.join(repr(k) for k in stage_kinds())}, got {_short(kind)}")
         spec = validate_table(where, label, t, drive_schema(kind))
         stages.append(kind_named(kind).scene_spec(spec, Path(scene_path).parent))
     shafts = [validate_table(where, f"drive.shaft #{i + 1}", t, drive_schema("shaft"))

@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import GearDesignError
+from ..validate import _short
 from .schema import SECTIONS, Where, section_schema, type_name, validate_table
 
 __all__ = ["Scene", "load_scene", "SCENE_BYTES_MAX", "SCENE_DEPTH_MAX", "SCENE_INT_MAX"]
@@ -78,12 +79,12 @@ def _cross_gear(where: Where, g: dict, s: dict):
         where.fail("gear", "x2" if "x1" in g else "x1", "missing; give both x1 and x2 or neither")
     lo, hi = g["bounds"]
     if not lo < hi:
-        where.fail("gear", "bounds", f"expected [lo, hi] with lo < hi, got {list(g['bounds'])}")
+        where.fail("gear", "bounds", f"expected [lo, hi] with lo < hi, got {_short(list(g['bounds']))}")
     g["_rack"] = _rack(where, "gear", g.get("rack"))
     kind = scene_kind(g)
     if kind["internal"] and not g["z2"] > g["z1"]:
         where.fail("gear", "z2", f"expected a ring with more teeth than the pinion (z2 > z1 = {g['z1']}), "
-                                 f"got {g['z2']!r}")
+                                 f"got {_short(g['z2'])}")
     if "a_w" in g:
         from ..gears.geometry import min_center_distance
         from ..gears.rack import BasicRack
@@ -91,7 +92,7 @@ def _cross_gear(where: Where, g: dict, s: dict):
                                           kind["beta_deg"], kind["internal"]))
         if g["a_w"] <= a_cos:
             where.fail("gear", "a_w", f"expected a centre distance > a·cos(alpha_t) = {a_cos:.6g} mm, "
-                                      f"got {g['a_w']!r}")
+                                      f"got {_short(g['a_w'])}")
     if "x1" in g:
         from ..gears.pair import GearPair
         try:
@@ -104,7 +105,7 @@ def _cross_gear(where: Where, g: dict, s: dict):
 def _cross_teeth(where: Where, t: dict, s: dict):
     lo, hi = t["z1_range"]
     if lo > hi:
-        where.fail("teeth", "z1_range", f"expected [min, max] with min <= max, got {list(t['z1_range'])}")
+        where.fail("teeth", "z1_range", f"expected [min, max] with min <= max, got {_short(list(t['z1_range']))}")
     t["_rack"] = _rack(where, "teeth", t.get("rack"))
 
 
@@ -152,11 +153,11 @@ def _cross_study(where: Where, st: dict, s: dict):
     allowed = sweep_parameters(target)
     for key in ("parameter", "parameter2"):
         if key in st and st[key] not in allowed:
-            where.fail("study", key, f"expected one of {', '.join(allowed)} for target {target!r}, got {st[key]!r}")
+            where.fail("study", key, f"expected one of {', '.join(allowed)} for target {_short(target)}, got {_short(st[key])}")
     ints = ("z1", "z2", "strands")
     for key, vals in (("values", "parameter"), ("values2", "parameter2")):
         if key in st and st.get(vals) in ints and any(not float(v).is_integer() for v in st[key]):
-            where.fail("study", key, f"expected whole numbers for {st[vals]}, got {list(st[key])}")
+            where.fail("study", key, f"expected whole numbers for {_short(st[vals])}, got {_short(list(st[key]))}")
     if st.get("parameter") == st.get("parameter2"):
         where.fail("study", "parameter2", "expected a parameter other than parameter")
 
@@ -175,10 +176,10 @@ def _chain_catalog(where, path: Path, name: str) -> str:
     if name.lower().endswith(".csv"):
         csv = (path.parent / name) if not Path(name).is_absolute() else Path(name)
         if not csv.is_file():
-            where.fail("chain", "catalog", f"the chain catalog {str(csv)!r} does not exist")
+            where.fail("chain", "catalog", f"the chain catalog {_short(str(csv))} does not exist")
         return str(csv)
     where.fail("chain", "catalog", f"expected one of {', '.join(CHAIN_CATALOGS)} or a .csv file of chains "
-                                   f"(relative to the scene file), got {name!r}")
+                                   f"(relative to the scene file), got {_short(name)}")
 
 SCENE_BYTES_MAX = 1 << 20    # 1 MiB: a scene is a page of settings, not data
 
@@ -249,12 +250,12 @@ def load_scene(path) -> Scene:
         if name == "key":
             tables = v if isinstance(v, list) else [v]
             if not tables or not all(isinstance(t, dict) for t in tables):
-                where.fail("key", None, f"expected a table [key] or tables [[key]], got {v!r}")
+                where.fail("key", None, f"expected a table [key] or tables [[key]], got {_short(v)}")
             sections["key"] = [validate_table(where, "key" if len(tables) == 1 else f"key #{i + 1}", t, section_schema("key"))
                                for i, t in enumerate(tables)]
             continue
         if not isinstance(v, dict):
-            where.fail(name, None, f"expected a table [{name}], got {v!r} ({type_name(v)})")
+            where.fail(name, None, f"expected a table [{name}], got {_short(v)} ({type_name(v)})")
         sections[name] = validate_table(where, name, v, section_schema(name))
     if not sections:
         where.fail("", None, f"expected at least one of the sections {', '.join(f'[{s}]' for s in SECTIONS)}")

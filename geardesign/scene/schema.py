@@ -9,6 +9,7 @@ import sys
 from dataclasses import dataclass
 
 from ..errors import GearDesignError
+from ..validate import _short
 
 __all__ = ["SECTIONS", "section_schema", "validate_table", "Where", "type_name"]
 
@@ -264,10 +265,16 @@ class Where:
         self.path = str(path)
 
     def fail(self, section: str, key: str | None, text: str):
-        where = f"[{section}]" if section else "top level"
+        # a section or key name comes from the user's file: cut like a value (validate._short)
+        where = f"[{_cut(section)}]" if section else "top level"
         if key is not None:
-            where += f" {key}"
+            where += f" {_cut(key)}"
         raise GearDesignError(f"{self.path}: {where}: {text}")
+
+
+def _cut(name) -> str:
+    text = str(name)
+    return text if len(text) <= 60 else text[:40] + f"... ({len(text)} characters)"
 
 
 def type_name(v) -> str:
@@ -277,7 +284,7 @@ def type_name(v) -> str:
 
 def _check_value(where: Where, section: str, key: str, spec: _Key, v):
     def bad(extra=""):
-        where.fail(section, key, f"expected {spec.expected()}, got {v!r} ({type_name(v)}){extra}")
+        where.fail(section, key, f"expected {spec.expected()}, got {_short(v)} ({type_name(v)}){extra}")
 
     def in_range(x):
         if spec.lo is not None and (x <= spec.lo if spec.lo_open else x < spec.lo):
@@ -324,7 +331,7 @@ def _check_value(where: Where, section: str, key: str, spec: _Key, v):
     for item in v:
         x = number(item, k == "ints")
         if x is None or not in_range(x):
-            bad(f"; the element {item!r} is not")
+            bad(f"; the element {_short(item)} is not")
         out.append(x)
     return tuple(out)
 
@@ -338,7 +345,7 @@ def validate_table(where: Where, section: str, table: dict, schema: dict) -> dic
         spec = schema[key]
         if isinstance(spec, dict):
             if not isinstance(v, dict):
-                where.fail(section, key, f"expected a table [{section}.{key}], got {v!r} ({type_name(v)})")
+                where.fail(section, key, f"expected a table [{section}.{key}], got {_short(v)} ({type_name(v)})")
             out[key] = validate_table(where, f"{section}.{key}", v, spec)
         else:
             out[key] = _check_value(where, section, key, spec, v)

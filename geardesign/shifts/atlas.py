@@ -9,11 +9,11 @@ import pandas as pd
 
 from .. import parallel
 from ..errors import GearDesignError
-from ..validate import ndim, require_bool, require_int
+from ..validate import ndim, require_bool, require_callable, require_int
 from ..gears.checks import FEASIBILITY_TOL
 from ..gears.geometry import exact_sum_nodes, mesh_geometry, mesh_geometry_float
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
-from .problem import DEFAULT_BOUNDS, Problem
+from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
 from .optimize import optimize_shifts
 
 __all__ = ["shift_atlas"]
@@ -69,7 +69,7 @@ _REACH = 6.0   # node spacings: checks whose boundary lies farther from a pair's
 
 
 @np.errstate(all="ignore")   # diverging candidates give NaN and inf: they are discarded at the end
-def _batched_kkt(proto: Problem, Z1, Z2, start, h_node: float, iters: int = 10):
+def _batched_kkt(proto: Problem, Z1, Z2, start, h_node: float, iters: int = 10, bounds=None):
     """Every KKT candidate of every pair at once, for one-piece (smooth) objectives.
 
     Candidates: each pair of checks active (a vertex: m_a = m_b = 0) and each single check
@@ -77,7 +77,9 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, h_node: float, iters: int = 10):
     whose boundary lies (to first order) within ``_REACH`` node spacings ``h_node`` of the pair's
     start node. Newton runs on all (pair, candidate) systems in lockstep from the start node; a
     system leaves the loop once its step is below 1e-13 or it breaks down. A candidate counts
-    when it converged, holds every check, and has multipliers >= 0. The best valid candidate
+    when it converged, holds every check, lies in the window ``bounds``, and has multipliers >= 0
+    (the window's edges are not candidates here: a pair whose optimum lies on one goes to the
+    one-by-one solver, which has them). The best valid candidate
     per pair is returned (NaN where none is valid; those pairs go to the one-by-one solver).
     """
     K = len(proto.checks)
@@ -136,10 +138,10 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, h_node: float, iters: int = 10):
         live = live[ok & (np.abs(step).max(axis=1) > 1e-13)]
     geo = mesh_geometry(proto.mesh.unchecked(z1, z2), 1.0, X[:, 0], X[:, 1], proto.full)
     M, G = proto.margins(geo), proto.margin_gradients(geo)
-    return _best_candidate(proto, geo, M, G, pgrad(geo).T, X, a_idx, b_idx, is_v, pair, Z1.size)
+    return _best_candidate(proto, geo, M, G, pgrad(geo).T, X, a_idx, b_idx, is_v, pair, Z1.size, bounds)
 
 
-def _best_candidate(proto, geo, M, G, gp, X, a_idx, b_idx, is_v, pair, B):
+def _best_candidate(proto, geo, M, G, gp, X, a_idx, b_idx, is_v, pair, B, bounds=None):
     """Each pair's best converged, feasible KKT candidate (NaN where none)."""
     rows = np.arange(X.shape[0])
     x1, x2 = X[:, 0], X[:, 1]
@@ -148,6 +150,8 @@ def _best_candidate(proto, geo, M, G, gp, X, a_idx, b_idx, is_v, pair, B):
     cross = gp[:, 0] * ga[:, 1] - gp[:, 1] * ga[:, 0]
     conv = (np.abs(ma) < 1e-11) & np.where(is_v, np.abs(mb) < 1e-11, np.abs(cross) < 1e-9)
     feas = (M >= -FEASIBILITY_TOL).all(axis=0)
+    if bounds is not None:
+        feas &= (X >= bounds[0] - 1e-12).all(axis=1) & (X <= bounds[1] + 1e-12).all(axis=1)
     # multipliers: ∇f = −Σ λ ∇m  (λ >= 0 for a maximum)
     det = ga[:, 0] * gb[:, 1] - ga[:, 1] * gb[:, 0]
     sdet = np.where(np.abs(det) > 1e-14, det, 1.0)
@@ -254,13 +258,13 @@ def _first_pass(proto: Problem, Z1, Z2, bounds):
     return area, area_error, start, least
 
 
-def _polish(proto: Problem, Z1, Z2, start, h_node: float, batch: int = 400):
+def _polish(proto: Problem, Z1, Z2, start, h_node: float, batch: int = 400, bounds=None):
     """The batched KKT Newton (:func:`_batched_kkt`) for every pair with a start node; NaN elsewhere."""
     fast = np.full((Z1.size, 2), np.nan)
     has = np.flatnonzero(~np.isnan(start[:, 0]))
     for s in range(0, has.size, batch):
         sel = has[s:s + batch]
-        fast[sel] = _batched_kkt(proto, Z1[sel], Z2[sel], start[sel], h_node)
+        fast[sel] = _batched_kkt(proto, Z1[sel], Z2[sel], start[sel], h_node, bounds=bounds)
     return fast
 
 
@@ -303,6 +307,8 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     """
     t0 = time.perf_counter()
     internal = require_bool("internal", internal)
+    bounds = validate_bounds(bounds)
+    require_callable("progress", progress)
     n_workers = parallel.slots(client, workers)
     Z1, Z2 = _pairs(z1_values, z2_values, upper_only, internal, ATLAS_PAIRS_MAX * n_workers)
     if Z1.size == 0:
@@ -344,7 +350,7 @@ def _atlas_rows(proto: Problem, Z1, Z2, setup: dict, progress) -> pd.DataFrame:
     if method == "exact" and proto.objective.kind == "smooth":
         # pairs with no feasible node (a sliver thinner than the grid) start from their least infeasible node
         fast = _polish(proto, Z1, Z2, np.where(np.isnan(start), least, start),
-                       (bounds[1] - bounds[0]) / (_ATLAS_N - 1))
+                       (bounds[1] - bounds[0]) / (_ATLAS_N - 1), bounds=bounds)
     solve_kw = dict(objective=setup["objective"], checks=setup["checks"], method=method, tol=setup["tol"],
                     rack=proto.rack, tip_shortening=setup["tip_shortening"], bounds=bounds,
                     beta_deg=setup["beta_deg"], internal=setup["internal"], face_width=setup["face_width"],

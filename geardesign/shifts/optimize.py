@@ -31,7 +31,7 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..gears.mesh import Mesh
-from ..validate import one_number, require_choice, require_count, require_range
+from ..validate import _show, one_number, require_choice, require_count, require_finite, require_range
 from .center_distance import reachable_center_distance, x_sum_for_housing
 from .conflict import smallest_conflict
 from .grid import GRID_N_MAX
@@ -61,7 +61,9 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
         alone, ``max_x_sum`` and ``min_specific_pressure``, are refused then: they are constant).
     checks : None (no undercut, no interference, s_a >= 0.25 m, ε_α >= 1.2), a dict of
         :func:`geardesign.gears.checks.make_checks` options (``{"sa_min": 0.4, "undercut": False}``),
-        or a list of :class:`geardesign.gears.checks.Check`.
+        or a list of :class:`geardesign.gears.checks.Check`. Whatever is dropped, the gears must mesh
+        (ε_α >= :data:`~geardesign.shifts.problem.MESHING_EPS_ALPHA_MIN`, the ``meshing`` check, added
+        when no contact-ratio check implies it): a pair that does not mesh is no design.
     method : "grid" (fastest, x within half a node spacing), "convex" (SQP in cvxpy/Clarabel,
         ~1e-7 in x, dual sensitivities) or "exact" (active-set Newton, ~1e-12 in x; default).
     tol : tolerance in x (defaults: grid 0.01, convex 1e-7, exact 1e-9); every returned point
@@ -90,9 +92,11 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
     bounds = validate_bounds(bounds)
     if grid_n is not None:
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
+    if start is not None and np.shape(require_finite("start", start)) != (2,):
+        raise GearDesignError(f"start must be a point (x1, x2), got {_show(start)}")
     prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width), checks, objective,
                    1.0 if m is None else m)
-    if prob.objective.kind == "margin" and not prob.checks:
+    if prob.objective.kind == "margin" and not prob.asked:
         raise GearDesignError("objective 'max_margin' (the point farthest from every check's boundary) needs at "
                               "least one check, got checks=[]")
     if a_w is not None:
@@ -121,13 +125,16 @@ def _result(prob: Problem, out: Outcome, method: str, tol: float, a_w, t0: float
             f"no finite result for z1/z2 = {prob.z1}/{prob.z2} ({prob.objective.name}, {method}): the pair's "
             f"geometry or a check is undefined at the point the solver reached ({x1:.6g}, {x2:.6g}); "
             f"check the rack and the window")
-    message = out.message
+    message, success = out.message, out.success
+    if success and not float(geo["eps_alpha"]) > 0:   # a tolerance asked too coarse to hold the meshing
+        message, success = (f"the gears do not mesh at the point reached (eps_alpha {float(geo['eps_alpha']):.4g}): "
+                            f"no design; a finer tol finds one"), False
     if prob.x_sum is not None:
         xs_name = "x2 - x1" if prob.mesh.internal else "x1 + x2"
         message += f"; {xs_name} = {prob.x_sum:.10g} fixed by a_w = {a_w:.10g} mm, objective {prob.objective.name}"
     active = [k for k, v in mg.items() if abs(v) <= max(tol, 1e-9) * 10]
     return ShiftResult(
-        x1=x1, x2=x2, fun=fun, objective=prob.objective.name, success=out.success, message=message,
+        x1=x1, x2=x2, fun=fun, objective=prob.objective.name, success=success, message=message,
         method=method, tol=tol, nit=out.nit, time_s=time.perf_counter() - t0, margins=mg, active=active,
         sensitivity=out.sensitivity, conflict=out.conflict, z1=prob.z1, z2=prob.z2, m=prob.m,
         x_sum_fixed=prob.x_sum, a_w=float(geo["a_w"]), eps_alpha=float(geo["eps_alpha"]),

@@ -23,15 +23,15 @@ import numpy as np
 from ..errors import GearDesignError
 from ..gears import checks as _checks
 from ..gears.geometry import min_center_distance
-from ..gears.planetary import (ARRANGEMENTS, MESH_NAMES, Assembly, PlanetaryMeshes, planetary_ratio, set_checks,
-                               set_geometry)
+from ..gears.planetary import (ARRANGEMENTS, MESH_NAMES, Assembly, MeshCheck, PlanetaryMeshes, planetary_ratio,
+                               set_checks, set_geometry)
 from ..results import Result
 from ..validate import one_number, require_choice, require_count, require_range
 from .center_distance import x_sum_for_housing
 from .grid import GRID_N_MAX
 from .objectives import CustomObjective, Objective, default_objective
 from .optimize import DEFAULT_TOL, METHODS, solve_problem
-from .problem import _FLOAT_FAULTS, DEFAULT_BOUNDS, Problem, validate_bounds
+from .problem import _FLOAT_FAULTS, DEFAULT_BOUNDS, Problem, _holds_meshing, validate_bounds, with_meshing
 from .region import Region, region_of
 from .methods import ACCURACY
 
@@ -73,6 +73,12 @@ class PlanetaryProblem(Problem):
         self.mesh = meshes.sun_planet
         self.m = float(m)
         self.checks = set_checks(meshes, checks, cutter) if check_list is None else tuple(check_list)
+        self.asked = self.checks
+        if check_list is None:   # both meshes must mesh, whatever checks are dropped (see with_meshing)
+            for tag in MESH_NAMES:
+                self.checks = with_meshing(
+                    self.checks, wrap=lambda c, tag=tag: MeshCheck(inner=c, mesh=tag),
+                    holds=lambda c, tag=tag: isinstance(c, MeshCheck) and c.mesh == tag and _holds_meshing(c.inner))
         self.sgn = 1
         objective = objective if isinstance(objective, _SetObjective) else _SetObjective(
             default_objective(objective, x_sum_fixed=False))
@@ -191,7 +197,7 @@ def _problem(z_sun, z_planet, z_ring, n_planets, m, objective, checks, rack, bet
 
     m = one_number("m (module)", require_module(m))
     meshes = PlanetaryMeshes(z_sun, z_planet, z_ring, n_planets, rack, beta_deg,
-                             None if planet_angles_deg is None else tuple(planet_angles_deg))
+                             planet_angles_deg)
     prob = PlanetaryProblem(meshes, m, checks, default_objective(objective, x_sum_fixed=a_w is not None),
                             cutter=cutter)
     if a_w is not None:
@@ -245,7 +251,7 @@ def optimize_planetary_shifts(z_sun, z_planet, z_ring, n_planets, m, a_w=None, o
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
     prob = _problem(z_sun, z_planet, z_ring, n_planets, m, objective, checks, rack, beta_deg, planet_angles_deg,
                     a_w, bounds, cutter)
-    if prob.objective.kind == "margin" and not prob.checks:
+    if prob.objective.kind == "margin" and not prob.asked:
         raise GearDesignError("objective 'max_margin' needs at least one check, got none")
     out = solve_problem(prob, method, bounds, tol, grid_n)
     return _result(prob, out, method, out.tol or tol, a_w, arrangement, t0)

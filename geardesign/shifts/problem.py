@@ -7,6 +7,7 @@ Objectives (:mod:`geardesign.shifts.objectives`) are maximised internally as F =
 from __future__ import annotations
 
 import contextlib
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -17,11 +18,42 @@ from .objectives import Objective, resolve_objective
 from ..gears.geometry import X_ABS_MAX, mesh_geometry, mesh_geometry_float, require_module
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 
-__all__ = ["Problem", "validate_bounds", "DEFAULT_BOUNDS"]
+__all__ = ["Problem", "validate_bounds", "DEFAULT_BOUNDS", "Meshing", "with_meshing", "MESHING_EPS_ALPHA_MIN"]
 
 
 _FD_STEP = 1e-6
 _FLOAT_FAULTS = (ZeroDivisionError, OverflowError, ValueError)
+
+
+# The gears mesh when their tips overlap along the line of action (g_α > 0, ε_α > 0): a condition
+# of existence (GearPair refuses a pair that does not mesh), not an optional check. The solvers hold
+# it as ε_α >= this small positive limit, so that a point within a solver's tolerance of the
+# boundary still meshes; a thousandth of a base pitch of contact is far below any working gear.
+MESHING_EPS_ALPHA_MIN = 1e-3
+
+
+@dataclass(frozen=True)
+class Meshing(_checks.ContactRatio):
+    """The gears mesh: ε_α >= :data:`MESHING_EPS_ALPHA_MIN` (path of contact g_α > 0, ISO 21771:2007
+    eq. (141)); the margin and gradient are the contact ratio's. Added by :func:`with_meshing`
+    wherever the checks asked for do not already hold the contact ratio at least this high."""
+
+    limit: float = MESHING_EPS_ALPHA_MIN
+    name: str = "meshing"
+    label: str = "the gears mesh: eps_alpha > 0 (a condition of existence, kept when checks are dropped)"
+
+
+def _holds_meshing(c) -> bool:
+    return isinstance(c, _checks.ContactRatio) and c.limit >= MESHING_EPS_ALPHA_MIN
+
+
+def with_meshing(checks: tuple, wrap=None, holds=_holds_meshing) -> tuple:
+    """``checks`` with :class:`Meshing` appended unless a contact-ratio check already implies it;
+    ``wrap(check) -> check`` puts it into a set's mesh (the planetary problem calls this per mesh
+    with ``holds`` reading its own mesh's checks)."""
+    if any(holds(c) for c in checks):
+        return tuple(checks)
+    return tuple(checks) + ((Meshing() if wrap is None else wrap(Meshing())),)
 
 
 class Problem:
@@ -33,7 +65,7 @@ class Problem:
 
     _last_point = None   # (key, evaluate_point's value, its geometry) of the last point evaluated
 
-    def __init__(self, mesh: Mesh, checks=None, objective="max_x_sum", m=1.0, x_sum=None):
+    def __init__(self, mesh: Mesh, checks=None, objective="max_x_sum", m=1.0, x_sum=None, meshing: bool = True):
         if not isinstance(mesh, Mesh):
             raise GearDesignError(f"mesh must be a geardesign.Mesh, got {type(mesh).__name__}")
         for name in ("z1", "z2"):
@@ -41,6 +73,10 @@ class Problem:
         self.mesh = mesh
         self.m = one_number("m (module)", require_module(m))
         self.checks = _checks.resolve_checks(checks, internal=mesh.internal)
+        # the checks the caller asked for; ``checks`` adds the condition of existence (meshing)
+        self.asked = self.checks
+        if meshing:
+            self.checks = with_meshing(self.checks)
         self.sgn = mesh.sign
         self.objective = resolve_objective(objective).bound(self.checks)
         # the report-only geometry fields are computed only when a check or the objective reads them
@@ -81,9 +117,20 @@ class Problem:
         """(∂func/∂x1, ∂func/∂x2) by central differences around the design(s) of ``geo``."""
         h, at = _FD_STEP, self._geo_like(geo)
         x1, x2 = geo["_x1"], geo["_x2"]
+        out = []
         with np.errstate(invalid="ignore"):
-            return ((func(at(x1 + h, x2)) - func(at(x1 - h, x2))) / (2 * h),
-                    (func(at(x1, x2 + h)) - func(at(x1, x2 - h))) / (2 * h))
+            for up, down in ((at(x1 + h, x2), at(x1 - h, x2)), (at(x1, x2 + h), at(x1, x2 - h))):
+                f_up, f_down = func(up), func(down)
+                g = (f_up - f_down) / (2 * h)
+                if not np.all(np.isfinite(g)):
+                    # a domain edge within h of the design (an arcsine's argument reaching 1): the
+                    # one-sided difference on the side where the function exists
+                    f0 = func(geo)
+                    one = np.where(np.isfinite(f_up - f0), (f_up - f0) / h, (f0 - f_down) / h)
+                    g = np.where(np.isfinite(g), g, one)
+                    g = float(g) if np.ndim(g) == 0 else g
+                out.append(g)
+        return tuple(out)
 
     def _margin_values(self, geo, parts: bool = False) -> list:
         if parts:
@@ -147,7 +194,7 @@ class Problem:
 
     def subproblem(self, indices) -> "Problem":
         """The same design space with only the checks at ``indices`` (the conflict search)."""
-        return Problem(self.mesh, [self.checks[j] for j in indices], "max_x_sum", self.m, self.x_sum)
+        return Problem(self.mesh, [self.checks[j] for j in indices], "max_x_sum", self.m, self.x_sum, meshing=False)
 
     @property
     def title(self) -> str:

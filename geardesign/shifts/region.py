@@ -18,7 +18,7 @@ from ..errors import GearDesignError
 from ..results import Result, plain
 from ..gears.checks import check_colour
 from ..gears.mesh import Mesh
-from ..validate import one_number, require_count, require_range
+from ..validate import one_number, require_axes, require_count, require_range
 from ..gears.geometry import center_distance_from_x_sum
 from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
 from .conflict import smallest_conflict
@@ -107,6 +107,7 @@ class Region(Result):
         n = require_count("n", n, 11, PLOT_N_MAX)
         if ax is None:
             _, ax = plt.subplots(figsize=(8.6, 6.2))
+        require_axes("ax", ax)
         lo, hi = self.bounds
         g = np.linspace(lo, hi, n)
         X1, X2 = np.meshgrid(g, g, indexing="ij")
@@ -371,6 +372,9 @@ def _off_curve_area(prob: Problem, L: np.ndarray, names: np.ndarray) -> float:
     return float(np.nansum(np.where(np.isfinite(dist), dist, 0.0) * half[on]))
 
 
+_ON_CURVE = 1e-6    # a projected point's margin this close to zero is on its curve
+
+
 def _halved(prob: Problem, L: np.ndarray, names: np.ndarray) -> np.ndarray:
     """The polygon with the midpoint of every check edge moved onto that check's curve."""
     nxt = np.roll(np.arange(len(L)), -1)
@@ -380,7 +384,13 @@ def _halved(prob: Problem, L: np.ndarray, names: np.ndarray) -> np.ndarray:
     if on_check.any():
         k = np.flatnonzero(on_check)
         moved = _project(prob, mids[k], np.array([index[nm] for nm in names[k]]))
+        # a point of the boundary holds every other check: a midpoint that lands where one fails has
+        # left the arc between the edge's ends (across a thin sliver): the chord's midpoint stays
         good = np.isfinite(moved).all(axis=1)
+        if good.any():
+            with np.errstate(all="ignore"):
+                worst = prob.margins(prob.geo(moved[good, 0], moved[good, 1])).min(axis=0)
+            good[good] = worst >= -_ON_CURVE
         mids[k[good]] = moved[good]
     out = np.empty((2 * len(L), 2))
     out[0::2], out[1::2] = L, mids

@@ -33,12 +33,12 @@ from .. import catalogs, parallel
 from ..results import RankedTable, plain
 from ..gears.checks import resolve_checks
 from ..errors import GearDesignError
-from ..validate import one_number, require_count, require_positive, require_range
-from ..gears.geometry import min_center_distance, x_sum_from_center_distance
+from ..validate import _show, one_number, require_callable, require_count, require_finite, require_positive, require_range
+from ..gears.geometry import min_center_distance, require_module, x_sum_from_center_distance
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from .objectives import default_objective
 from .problem import DEFAULT_BOUNDS
-from ..gears.rack import BasicRack
+from ..gears.rack import BasicRack, require_rack
 from .optimize import METHODS, optimize_shifts
 
 __all__ = ["select_teeth", "ratio_pairs", "TeethSelection", "X_SUM_WINDOW", "MAX_SOLVES"]
@@ -178,15 +178,18 @@ def _modules(m, m_range):
     if isinstance(m, str):
         if m != "series":
             raise GearDesignError(f"m must be a module in mm, 'series' or None, got {m!r}")
-        lo, hi = (1.0, 50.0) if m_range is None else (float(v) for v in m_range)
-        require_positive("m_range min", lo, unit="mm")
-        require_positive("m_range max", hi, unit="mm")
+        try:
+            lo, hi = (1.0, 50.0) if m_range is None else m_range
+        except (TypeError, ValueError):
+            raise GearDesignError(f"m_range must be (min, max) in mm, got {_show(m_range)}") from None
+        lo = one_number("m_range min", require_positive("m_range min", lo, unit="mm"))
+        hi = one_number("m_range max", require_positive("m_range max", hi, unit="mm"))
         frame = catalogs.load_catalog("modules")
         frame = frame[(frame["module_mm"] >= lo) & (frame["module_mm"] <= hi)]
         if frame.empty:
             raise GearDesignError(f"m_range must hold at least one standard module, got {m_range!r}")
         return frame["module_mm"].to_numpy(float), frame["series"].to_numpy(int)
-    mm = one_number("m (module)", require_positive("m (module)", m, unit="mm"))
+    mm = one_number("m (module)", require_module(m))
     std = catalogs.load_catalog("modules")
     hit = std.loc[np.isclose(std["module_mm"], mm, rtol=1e-12), "series"]
     return np.array([mm]), np.array([int(hit.iloc[0]) if len(hit) else 0])
@@ -258,9 +261,9 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     objective = default_objective(objective, x_sum_fixed=a_w is not None)
     if method not in METHODS:
         raise GearDesignError(f"method must be one of {list(METHODS)}, got {method!r}")
-    rack = rack or BasicRack()
-    if not isinstance(rack, BasicRack):
-        raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
+    rack = require_rack(rack)
+    require_callable("progress", progress)
+    x_sum_window = _x_sum_window(x_sum_window)
     # the kind is validated once, on a proto mesh; every candidate shares it
     kind = Mesh(20, 60, rack, tip_shortening, beta_deg, internal, face_width)
     kind = dict(beta_deg=kind.beta_deg, internal=kind.internal, face_width=kind.face_width_mm)
@@ -271,13 +274,26 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     m_used = m if m is not None else ("series" if a_w is not None else 1.0)
 
     cands = _candidates(z1, z2, ratio, *_modules(m_used, m_range), kind)
-    cands, skipped = _within_reach(cands, a_w, rack, tuple(float(v) for v in x_sum_window), kind)
+    cands, skipped = _within_reach(cands, a_w, rack, x_sum_window, kind)
     keys, solved = _solve(cands, a_w, objective, checks, method, rack, tip_shortening, progress, kind,
                           dict(client=client, workers=workers))
     table = _rank(_table(cands, keys, solved, a_w, check_names), objective.sense)
     return TeethSelection(table=table, skipped=skipped, ratio=ratio, ratio_tol=float(ratio_tol),
                           objective=objective.name, objective_sense=objective.sense, m=m_used, a_w=a_w,
                           method=method, checks=check_names, n_solved=len(solved), time_s=time.perf_counter() - t0)
+
+
+def _x_sum_window(window) -> tuple[float, float]:
+    """(lo, hi) of the x-sums worth solving: two finite numbers, lo < hi."""
+    try:
+        lo, hi = window
+    except (TypeError, ValueError):
+        raise GearDesignError(f"x_sum_window must be (lo, hi), got {_show(window)}") from None
+    lo = one_number("x_sum_window lo", require_finite("x_sum_window lo", lo))
+    hi = one_number("x_sum_window hi", require_finite("x_sum_window hi", hi))
+    if not lo < hi:
+        raise GearDesignError(f"x_sum_window must be (lo, hi) with lo < hi, got {_show(window)}")
+    return lo, hi
 
 
 def _housing(a_w):
@@ -313,6 +329,8 @@ def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window, kind):
     section = dict(beta_deg=kind["beta_deg"], internal=kind["internal"])
     xs_lo, xs_hi = x_sum_window
     reason = np.full(len(c), "", dtype=object)
+    # a ratio tolerance reaching below 1 brings z2 <= z1, which no ring pair has (a = 0 or less)
+    no_ring = (c["z2"] <= c["z1"]).to_numpy() if kind["internal"] else np.zeros(len(c), bool)
     if a_w is None:
         c["a_w_target_mm"] = np.nan
     else:
@@ -325,7 +343,7 @@ def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window, kind):
         small = ~above & (target <= a_cos)
         for i in np.flatnonzero(small):
             reason[i] = f"a_w = {target[i]:g} mm <= a·cos(alpha) = {a_cos[i]:.6g} mm"
-        okw = ~above & ~small
+        okw = ~above & ~small & ~no_ring
         xs = np.full(len(c), np.nan)
         xs[okw] = x_sum_from_center_distance(c["module_mm"].to_numpy()[okw], c["z1"].to_numpy()[okw],
                                              c["z2"].to_numpy()[okw], target[okw], rack, **section)
@@ -334,6 +352,7 @@ def _within_reach(c: pd.DataFrame, a_w, rack: BasicRack, x_sum_window, kind):
         name = "x2 − x1" if kind["internal"] else "x1 + x2"
         for i in np.flatnonzero(out):
             reason[i] = f"{name} = {xs[i]:.4g} outside [{xs_lo:g}, {xs_hi:g}]"
+    reason[no_ring] = "an internal pair needs more teeth on the ring: z2 <= z1"
     keep = reason == ""
     skipped = c.loc[~keep, ["z1", "z2", "ratio", "ratio_error", "module_mm", "a_mm", "a_w_target_mm"]].copy()
     skipped["reason"] = reason[~keep]
@@ -346,7 +365,10 @@ def _solve(c: pd.DataFrame, a_w, objective, checks, method, rack, tip_shortening
     lengths): (each candidate's key, {key: ShiftResult or the GearDesignError it raised}).
     ``where``: client= / workers= of :func:`geardesign.parallel.map_chunks` (empty: here)."""
     if a_w is None:
-        keys = list(zip(c["z1"], c["z2"], *([c["module_mm"]] if kind["face_width"] is not None else [])))
+        # the module changes the problem when ε_β (face width) or the ring's shaper cutter (its standard
+        # size depends on the module) enters the checks: then each (pair, module) is solved on its own
+        per_module = kind["face_width"] is not None or kind["internal"]
+        keys = list(zip(c["z1"], c["z2"], *([c["module_mm"]] if per_module else [])))
     else:
         keys = list(zip(c["z1"], c["z2"], c["module_mm"], c["a_w_target_mm"]))
     unique = list(dict.fromkeys(keys))

@@ -75,3 +75,25 @@ def test_mesh_draws_and_exports_an_internal_pair(tmp_path, capsys):
                  "--svg", str(tmp_path / "x.svg")]) == 2
     assert "give --internal" in capsys.readouterr().err
     assert not (tmp_path / "x.svg").exists()
+
+
+def test_a_250_character_output_name_is_written(tmp_path, capsys):
+    """Issue 29 §3.8: --csv <250-character name> printed a traceback, exited 1 and left a.png written."""
+    csv = tmp_path / ("c" * 246 + ".csv")
+    rc = main(["mesh", "--module", "2", "--z1", "17", "--z2", "26", "--plot", str(tmp_path / "a.png"),
+               "--csv", str(csv)])
+    assert rc == 0 and csv.read_text().startswith("outline")
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(["a.png", csv.name])
+
+
+def test_a_late_failure_leaves_none_of_the_commands_files(tmp_path, capsys, monkeypatch):
+    """One command's outputs are all or nothing: the plot is not left behind when an export fails."""
+    import geardesign.profiles.mesh as pm
+
+    def broken(*a, **k):
+        raise gd.GearDesignError("--dxf: cannot write (No space left on device)")
+    monkeypatch.setattr(pm, "export_profiles", broken)
+    rc = main(["mesh", "--module", "2", "--z1", "17", "--z2", "26", "--plot", str(tmp_path / "a.png"),
+               "--diagrams", str(tmp_path / "d.png"), "--dxf", str(tmp_path / "g.dxf")])
+    assert rc == 2 and "No space left" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []

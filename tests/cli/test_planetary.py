@@ -47,3 +47,21 @@ def test_bad_input_is_one_line(argv, words, capsys):
     assert main(["planetary", "--module", "2", "--planets", "3", *argv]) == 2
     err = capsys.readouterr().err.strip()
     assert words in err and len(err.splitlines()) == 1
+
+
+def test_plot_and_drawing_with_ratio_are_refused_and_nothing_written(tmp_path, capsys):
+    """Issue 29 §3.10: --ratio with --plot/--drawing exited 0 and wrote neither file."""
+    rc = main(["planetary", "--ratio", "5", "--module", "2", "--planets", "3", "--plot", str(tmp_path / "r.png"),
+               "--drawing", str(tmp_path / "s.png")])
+    err = capsys.readouterr().err
+    assert rc == 2 and err.count("\n") == 1 and "--z-sun" in err and "--ratio" in err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_given_shifts_write_both_plot_and_drawing(tmp_path, capsys):
+    rc = main(["planetary", "--module", "1.75", "--planets", "3", "--z-sun", "21", "--z-planet", "43", "--z-ring",
+               "108", "--x-sun", "0.438", "--x-planet", "0.0426", "--plot", str(tmp_path / "r.png"),
+               "--drawing", str(tmp_path / "s.png")])
+    assert rc in (0, 1)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["r.png", "s.png"]
+    assert all((tmp_path / n).read_bytes()[:4] == b"\x89PNG" for n in ("r.png", "s.png"))

@@ -151,3 +151,17 @@ def test_teeth_scene(tmp_path, capsys):
     report = (out / "report.md").read_text(encoding="utf-8")
     assert "Tooth counts for u = 1.5" in report
     assert f"{int(best.z1)}/{int(best.z2)}" in capsys.readouterr().out
+
+
+def test_out_as_a_link_to_a_folder_keeps_the_link(tmp_path, capsys):
+    """Issue 29 §3.9: `run --out link` replaced the link with a real folder and left
+    '.link.XXXX.old -> real' behind."""
+    real = tmp_path / "real"
+    real.mkdir()
+    (real / "stale.txt").write_text("old")
+    link = tmp_path / "link"
+    link.symlink_to(real, target_is_directory=True)
+    rc = main(["run", str(SCENES / "seed002_chain.toml"), "--out", str(link), "--overwrite"])
+    assert rc == 0, capsys.readouterr().err
+    assert link.is_symlink() and (real / "report.md").is_file() and not (real / "stale.txt").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["link", "real"]

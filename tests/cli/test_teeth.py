@@ -43,3 +43,17 @@ def test_cli_errors(capsys, argv, words):
 def test_cli_no_feasible_exit_1(capsys):
     rc = main(["teeth", "--ratio", "1", "--ratio-tol", "0", "--module", "1", "--z1-min", "5", "--z1-max", "6"])
     assert rc == 1 and "no feasible" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("argv", [
+    ["--ratio", "9.99", "--module", "1e+308"],                              # issue 29 §3: printed NaN
+    ["--ratio", "1.9", "--module", "1e300", "--z1-min", "8", "--z1-max", "9"],   # §3.3: exited 0
+    ["--ratio", "1.9", "--module", "1e-5", "--z1-min", "8", "--z1-max", "9"],
+])
+def test_cli_module_out_of_range_is_refused_like_shift(capsys, argv):
+    rc = main(["teeth"] + argv)
+    captured = capsys.readouterr()
+    assert rc == 2 and captured.out == "" and captured.err.count("\n") == 1
+    assert "m (module) must be in [0.0001, 10000] mm" in captured.err
+    rc = main(["shift", "--z1", "17", "--z2", "26", "--module", argv[3], "--center-distance", "30"])
+    assert rc == 2 and "m (module) must be in [0.0001, 10000] mm" in capsys.readouterr().err

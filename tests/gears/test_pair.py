@@ -58,3 +58,21 @@ def test_a_pair_whose_tips_do_not_overlap_is_refused_by_name():
     assert 2 * rho_a < a_w * mp.sin(aw)
     with pytest.raises(gd.GearDesignError, match="do not mesh.*tip circles do not overlap.*x1 \\+ x2 = 4"):
         gd.GearPair(1, 5, 5, 2.0, 2.0, rack=gd.BasicRack(alpha_deg=15.0))
+
+
+@pytest.mark.parametrize("a_w", [1e308, 1e9])
+def test_from_center_distance_refuses_an_a_w_no_shifts_reach_without_a_warning(a_w):
+    """Found by the fuzzing (tests/fuzzcases.py): a_w = 1e308 overflowed inv α_w ('overflow encountered in
+    multiply') before the x-sum was refused. The largest a_w is that of x1 + x2 = 20 (|x| <= 10):
+    ISO 21771 eq. (62), cos α_w = a cos α / a_w with inv α_w = inv α + 2 x_Σ tan α / z_Σ."""
+    import math
+    import warnings
+    from scipy.optimize import brentq
+    inv = lambda t: math.tan(t) - t
+    target = inv(math.radians(20)) + 2 * 20 * math.tan(math.radians(20)) / 43
+    alpha_w = brentq(lambda t: inv(t) - target, 0.1, 1.5)
+    a_max = 43 / 2 * math.cos(math.radians(20)) / math.cos(alpha_w)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(gd.GearDesignError, match=rf"too large: it must be < {a_max:.6g} mm"):
+            gd.GearPair.from_center_distance(1.0, 17, 26, a_w, x1=0.5)

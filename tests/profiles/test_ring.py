@@ -208,3 +208,15 @@ def test_ring_refusals_name_the_input():
         ring_profile(2.0, 60, 0.0, cutter=12)
     with pytest.raises(gd.GearDesignError, match="beta_deg"):
         ring_profile(2.0, 60, 0.0, beta_deg=60.0)
+
+
+def test_a_cutter_whose_tip_is_inside_its_base_circle_is_refused_by_name():
+    """Issue 29 §3.6: 'math domain error'. z0 = 8, x0 = −0.9, h_a0* = 0.5 at m = 2: d_a0 = m (z0 + 2(h_a0* + x0))
+    = 14.4 mm, d_b0 = m z0 cos 20° = 15.035 mm; no involute at the cutter's tip."""
+    import math
+    d_a0, d_b0 = 2 * (8 + 2 * (0.5 - 0.9)), 2 * 8 * math.cos(math.radians(20))
+    assert d_a0 < d_b0
+    with pytest.raises(gd.GearDesignError) as info:
+        gd.ring_profile(2, 16, 0.06, cutter=gd.ShaperCutter(z0=8, x0=-0.9, ha0=0.5))
+    text = str(info.value)
+    assert "z0 = 8" in text and f"{d_a0:.6g}" in text and f"{d_b0:.6g}" in text and "\n" not in text

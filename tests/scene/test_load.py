@@ -66,3 +66,19 @@ def test_scene_takes_a_users_chain_catalog_beside_it(tmp_path):
     bad.write_text('[chain]\ntorque_nm = 380\nn1_rpm = 120\nratio = 1\ncatalog = "keys"\n')
     with pytest.raises(gd.GearDesignError, match="or a .csv file of chains"):
         gd.load_scene(bad)
+
+
+@pytest.mark.parametrize("text", [
+    '[chain]\ntorque_nm = 100\nn1_rpm = 720\nratio = 2.5\ncatalog = "' + "x" * 100_000 + '"\n',   # issue 29 §3.14
+    '[chain]\ntorque_nm = 100\nn1_rpm = 720\nratio = 2.5\n' + "k" * 100_000 + ' = 1\n',
+    '[' + "s" * 100_000 + ']\nq = 1\n',
+    '[gear]\nmodule = 2\nz1 = 17\nz2 = 26\nx1 = [' + ", ".join(["1"] * 30_000) + ']\n',
+    '[study]\nparameter = "' + "p" * 100_000 + '"\nvalues = [1]\n' + GOOD_GEAR,
+])
+def test_scene_errors_cut_the_bad_value_like_the_validators(tmp_path, text):
+    """A 100 000-character value or name gave one 100 kB stderr line; values are cut at 60 characters
+    (validate._short) with their length said."""
+    with pytest.raises(GearDesignError) as info:
+        load_scene(write(tmp_path, text))
+    msg = str(info.value)
+    assert "\n" not in msg and len(msg) < 400 + len(str(tmp_path)) and "characters)" in msg, msg[:500]

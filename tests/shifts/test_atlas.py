@@ -52,3 +52,16 @@ def test_grid_areas_of_a_disc_an_annulus_and_two_pieces():
     exact = np.array([np.pi * 0.8 ** 2, np.pi * (0.9 ** 2 - 0.4 ** 2), 0.6 ** 2 + 0.4 ** 2])
     assert np.allclose(grid_areas(F, h), exact, rtol=0, atol=5 * h * h)
     assert grid_areas(-np.ones((3, 3)), 1.0) == 0.0 and grid_areas(np.ones((3, 3)), 1.0) == 4.0
+
+
+@pytest.mark.parametrize("checks", [[], {"eps_alpha_min": None, "sa_min": None}])
+def test_atlas_with_checks_dropped_agrees_with_optimize_shifts(checks):
+    """Issue 29 §3.11: checks=[] raised IndexError (no check to pair); once meshing (a condition of
+    existence, always held) gave the batch a check, its Newton left the window (x2 = 3.53 > 3)."""
+    df = gd.shift_atlas([17, 18], [26, 40], checks=checks)
+    for row in df.itertuples():
+        r = gd.optimize_shifts(row.z1, row.z2, checks=checks)
+        assert row.feasible and r.success
+        assert -1.5 <= row.x1 <= 3.0 and -1.5 <= row.x2 <= 3.0
+        assert row.objective == pytest.approx(r.fun, abs=1e-8)
+        gd.GearPair(1, row.z1, row.z2, row.x1, row.x2)     # meshes

@@ -191,3 +191,30 @@ def test_no_feasible_neighbour_is_better(z1, dz, objective, method):
             f = -np.maximum(abs(geo["sliding1_root"]), abs(geo["sliding2_root"]))
         fun = r.fun if objective != "balanced_sliding" else -r.fun
         assert (f[ok] <= fun + 1e-9).all()
+
+
+# --- issue 29 §3: defects found by generated input ------------------------------------------
+
+@pytest.mark.parametrize("method", ["exact", "convex", "grid"])
+@pytest.mark.parametrize("z1, z2, kind, checks", [
+    (25, 26, dict(internal=True), {"eps_alpha_min": None}),      # issue 29 §3.1: returned eps_alpha -0.419
+    (17, 26, {}, []),                                             # every check dropped
+    (30, 90, dict(internal=True), {"eps_alpha_min": None, "sa_min": None}),
+    (12, 14, dict(beta_deg=20.0), {"eps_alpha_min": None, "undercut": False}),
+])
+def test_a_solution_always_meshes_whatever_checks_are_dropped(z1, z2, kind, checks, method):
+    """Meshing is a condition of existence: GearPair (which refuses gears whose tips do not overlap
+    along the line of action) must accept every design a solver calls a success."""
+    r = gd.optimize_shifts(z1, z2, checks=checks, method=method, **kind)
+    assert r.success, r.message
+    pair = gd.GearPair(1, z1, z2, r.x1, r.x2, **kind)      # raises "the gears do not mesh" otherwise
+    assert pair.geometry().g_alpha > 0 and r.eps_alpha > 0
+
+
+def test_a_solution_that_does_not_mesh_is_no_success():
+    """A tolerance too coarse to hold the meshing gives success False, never a non-meshing 'optimum'."""
+    r = gd.optimize_shifts(25, 26, internal=True, checks={"eps_alpha_min": None}, method="grid", tol=1.0)
+    if r.eps_alpha <= 0:
+        assert not r.success and "do not mesh" in r.message
+    else:
+        gd.GearPair(1, 25, 26, r.x1, r.x2, internal=True)

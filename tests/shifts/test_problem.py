@@ -93,3 +93,24 @@ def test_a_grid_of_one_pair_gives_each_designs_own_margins_and_pieces():
             geo = mesh_geometry(one, np.array([2.0]), x1[i:i + 1], x2[i:i + 1], prob.full)
             np.testing.assert_array_equal(M[:, i], prob.margins(geo)[:, 0])
             np.testing.assert_array_equal(P[:, i], prob.pieces(geo)[:, 0])
+
+
+def test_central_differences_turn_one_sided_at_a_domain_edge():
+    """A check that exists only on one side of a line (an arcsine's argument reaching 1, as the
+    radial-assembly margin): within the difference step of the edge the gradient comes from the side
+    where it exists, never NaN (issue 29 §3.4). Here margin = 2 x1 + 3 x2 for x1 >= 0.3, else NaN."""
+    import numpy as np
+    import pytest
+    from geardesign.gears.checks import CustomCheck
+    from geardesign.gears.mesh import Mesh
+    from geardesign.shifts.problem import Problem
+
+    def func(geo):
+        x1, x2 = np.asarray(geo["_x1"], float), np.asarray(geo["_x2"], float)
+        return np.where(x1 >= 0.3, 2.0 * x1 + 3.0 * x2, np.nan)
+
+    prob = Problem(Mesh(17, 26), [CustomCheck(name="edge", func=func, limit=0.0)], "max_x_sum")
+    for x1 in (0.3 + 2e-7, 0.3 + 5e-7, 0.5):
+        _, (_, _, _, GM) = prob.evaluate_design(x1, 0.2)
+        k = prob.names.index("edge")
+        assert GM[k] == pytest.approx([2.0, 3.0], rel=1e-6)

@@ -133,4 +133,26 @@ def test_region_sizes_are_bounded_up_front():
     with pytest.raises(gd.GearDesignError, match=r"n must be .* \[11, 2001\]"):
         gd.feasible_region(17, 26, n=10**5)
     reg = gd.feasible_region(17, 26, checks=[])
-    assert reg.feasible and reg.area == pytest.approx(4.5 ** 2, rel=1e-9)
+    # with every check dropped the region is where the pair exists and meshes (issue 29 §3.1): the
+    # window less its corner of large shifts whose tips no longer overlap on the line of action
+    g = np.linspace(-1.5, 3.0, 601)
+    X1, X2 = np.meshgrid(g, g, indexing="ij")
+    with np.errstate(all="ignore"):
+        eps = mesh_geometry(Mesh(17, 26, gd.BasicRack(), True), 1.0, X1, X2)["eps_alpha"]
+    counted = float(np.mean(np.nan_to_num(eps, nan=-1.0) >= 1e-3)) * 4.5 ** 2
+    assert reg.feasible and 15.0 < reg.area < 4.5 ** 2
+    assert reg.area == pytest.approx(counted, abs=reg.area_error + 4 * 4.5 * (g[1] - g[0]))
+
+
+def test_contains_on_a_helical_ring_pair_is_quiet():
+    """Issue 29 §3.13: contains(0.5, 0.5) of a helical internal region warned 'invalid value in sqrt':
+    the cutter–ring mesh took its one-design float path with cos β a 0-d array (numpy scalars)."""
+    import warnings
+    reg = gd.feasible_region(7, 11, beta_deg=15.0, internal=True)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        inside = reg.contains(0.5, 0.5)
+    # the ring's tip is inside its base circle there (a failing margin), so the point is outside
+    assert not inside
+    with pytest.raises(gd.GearDesignError, match="inside its base circle"):
+        gd.GearPair(1, 7, 11, 0.5, 0.5, beta_deg=15.0, internal=True)

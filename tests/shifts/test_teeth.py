@@ -202,3 +202,49 @@ def test_bad_input(kwargs, words):
         select_teeth(**kwargs)
     for w in words:
         assert w in str(info.value), (w, str(info.value))
+
+
+# --- issue 29 §3: defects found by generated input ------------------------------------------
+
+def test_internal_rows_marked_feasible_mesh_when_contact_ratio_is_dropped():
+    """§3.1: the 25/26 ring pair with ε_α dropped was marked feasible at ε_α = −0.42."""
+    sel = select_teeth(1.0, ratio_tol=0.05, z1_range=(21, 25), m=5, internal=True, checks={"eps_alpha_min": None})
+    assert len(sel.feasible) > 0
+    for _, r in sel.feasible.iterrows():
+        pair = gd.GearPair(5, int(r.z1), int(r.z2), r.x1, r.x2, internal=True)   # refuses gears that do not mesh
+        assert pair.geometry().eps_alpha > 0
+
+
+@pytest.mark.parametrize("m, beta_deg", [(0.2, 30.0), (32.5, 0.0), (8.0, 15.0)])
+def test_internal_rows_are_solved_with_the_cutter_of_their_module(m, beta_deg):
+    """§3.2: the ring's shaper cutter has a standard size per module; the rows were solved with m = 1's
+    and failed interference2 / cutter_interference at the module designed. Every feasible row must
+    hold GearPair(m, ...).checks() (to ~1e-9: the feasibility tolerance is issue 29 §2)."""
+    sel = select_teeth(5.5, m=m, internal=True, z1_range=(20, 24), ratio_tol=0.05, beta_deg=beta_deg)
+    assert len(sel.feasible) > 0
+    for _, r in sel.feasible.iterrows():
+        table = gd.GearPair(m, int(r.z1), int(r.z2), r.x1, r.x2, beta_deg=beta_deg, internal=True).checks()
+        assert table["margin"].min() >= -1e-9, table[table["margin"] < -1e-9]
+        assert r.a_w_mm == pytest.approx(gd.GearPair(m, int(r.z1), int(r.z2), r.x1, r.x2, beta_deg=beta_deg,
+                                                     internal=True).geometry().a_w, rel=1e-9)
+
+
+@pytest.mark.parametrize("m", [1e300, 2**63, 1e5, 1e-5, 1e-300])
+def test_the_module_is_range_checked_with_the_center_distance_free(m):
+    """§3.3: m = 1e300 gave a 'feasible' row with a_w 1.5e301 mm; the range is geometry.M_RANGE_MM."""
+    from geardesign.gears.geometry import M_RANGE_MM
+    with pytest.raises(gd.GearDesignError, match=r"m \(module\) must be in \[0\.0001, 10000\] mm") as info:
+        select_teeth(1.925, m=m, z1_range=(8, 10))
+    assert M_RANGE_MM == (1e-4, 1e4) and len(str(info.value).splitlines()) == 1
+
+
+def test_internal_search_skips_pairs_without_a_ring_quietly():
+    """Issue 29 §3.13: a ratio tolerance reaching below 1 brought z2 = z1 ring pairs (a = 0) into the
+    x-sum formula: 'divide by zero'. They are skipped with a reason now."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        sel = select_teeth(1.442, ratio_tol=0.5, z1_range=(17, 18), a_w=222.1, internal=True)
+    assert (sel.table["z2"] > sel.table["z1"]).all()
+    no_ring = sel.skipped[sel.skipped["z2"] <= sel.skipped["z1"]]
+    assert len(no_ring) > 0 and no_ring["reason"].str.contains("z2 <= z1").all()

@@ -188,8 +188,8 @@ def _pitch_estimates(c: Candidates, inp: Inputs, tables: ReferenceTables) -> dic
     for s in inp.strands:
         p_ref = inp.allowable_pressure_mpa
         if p_ref is None:
-            mine = strands == s
-            p_ref = np.nanmax(p_allow[mine], initial=np.nan) if mine.any() else np.nan
+            mine = p_allow[(strands == s) & np.isfinite(p_allow)]   # no [p] at this speed: no estimate
+            p_ref = float(mine.max()) if mine.size else np.nan
         z_ref = float(inp.z1_values[0]) if inp.z1_given else float(recommended_z1(inp.u))
         factor = float(tables.hinge_strand_factor[strand_index(tables, np.array([s]))[0]])
         t_est = float(pitch_estimate_mm(inp.torque, z_ref, p_ref, inp.k_e, factor))

@@ -284,7 +284,11 @@ def resolve_checks(checks, internal: bool = False) -> tuple[Check, ...]:
     if isinstance(checks, (str, bytes, Check)) or not hasattr(checks, "__iter__"):
         raise GearDesignError(f"checks must be None, a dict of make_checks options or a list of Check objects, "
                               f"got {_show(checks)}")
-    checks = tuple(checks)
+    try:
+        checks = tuple(checks)
+    except TypeError:    # a 0-d array has __iter__ but does not iterate
+        raise GearDesignError(f"checks must be None, a dict of make_checks options or a list of Check objects, "
+                              f"got {_show(checks)}") from None
     for c in checks:
         if not isinstance(c, Check):
             raise GearDesignError(f"checks must be Check objects, got {_show(c)}")

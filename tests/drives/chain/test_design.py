@@ -66,3 +66,14 @@ def test_result_object():
     c = r.candidates
     assert (c["links"] % 2 == 0).all()
     np.testing.assert_allclose(sprocket.link_count(c["center_distance_mm"], c["pitch_mm"], c["z1"], c["z2"]), c["links"])
+
+
+def test_no_warning_escapes_when_a_strand_count_has_no_allowable_pressure_at_the_speed():
+    """Issue 29 §3.13: 'All-NaN slice encountered' from the pitch estimate at 2850.8 rpm, where the
+    hinge-pressure table gives no [p] for these pitches."""
+    import warnings
+    import geardesign as gd
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        d = gd.chain.design(power_kw=80.152, n1_rpm=2850.8, ratio=3.673)
+    assert len(d.candidates) > 0

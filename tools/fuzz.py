@@ -1,22 +1,29 @@
 """A long self-fuzz run: generated bad and extreme input at every public entry point.
 
-    python benchmarks/fuzz.py --cases 10000 --seed 1
+    python tools/fuzz.py --cases 10000 --seed 1
 
-prints the count of each outcome (ok, clean_error, traceback, nan_result, hang, half_written)
-per target and overall, and the first reproducers of every failure. The generator and the rule
-are in tests/fuzzcases.py (the CI sample is tests/test_fuzz.py). Files go to temporary folders.
+prints the count of each outcome (ok, clean_error, traceback, nan_result, hang, half_written,
+fails_checks, feasibility_tol, warning, link_replaced; see tests/fuzzcases.py) per target and
+overall, and the first reproducers of every failure. The generator and the rule are in
+tests/fuzzcases.py and tests/fuzzsurfaces.py (the CI sample is tests/test_fuzz.py).
+
+Every file a case writes goes into a temporary folder: the run makes a private one, points the
+temporary directory of this process and its children (TMPDIR) at it, and counts a case that
+leaves anything in it as half_written. Not a benchmark: it times nothing but its own run.
 """
 from __future__ import annotations
 
 import argparse
 import collections
 import os
+import shutil
 import sys
+import tempfile
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
-from fuzzcases import OUTCOMES, TARGETS, run_case  # noqa: E402
+from tests.fuzzcases import OUTCOMES, TARGETS, run_case  # noqa: E402
 
 
 def main() -> int:
@@ -28,6 +35,30 @@ def main() -> int:
     ap.add_argument("--case-limit", type=float, default=30.0, help="seconds before a case counts as a hang")
     args = ap.parse_args()
     targets = [t for t in args.targets.split(",") if t]
+    unknown = [t for t in targets if t not in TARGETS]
+    if unknown:
+        ap.error(f"unknown targets {unknown}")
+    private = tempfile.mkdtemp(prefix="geardesign-fuzz-")
+    os.environ["TMPDIR"] = tempfile.tempdir = private
+    try:
+        return _run(args, targets, private)
+    finally:
+        shutil.rmtree(private, ignore_errors=True)
+
+
+def _left_behind(private: str) -> list:
+    """What a case left in the private temporary folder (then removed for the next case)."""
+    left = os.listdir(private)
+    for name in left:
+        path = os.path.join(private, name)
+        if os.path.isdir(path) and not os.path.islink(path):
+            shutil.rmtree(path, ignore_errors=True)
+        else:
+            os.unlink(path)
+    return left
+
+
+def _run(args, targets, private) -> int:
     counts = collections.Counter()
     per = collections.defaultdict(collections.Counter)
     bad = collections.defaultdict(list)
@@ -38,6 +69,9 @@ def main() -> int:
             break
         target = targets[i % len(targets)]
         outcome, desc, detail = run_case(target, args.seed * 1_000_003 + i, args.case_limit)
+        left = _left_behind(private)
+        if left and outcome in ("ok", "clean_error"):
+            outcome, detail = "half_written", f"left in the temporary folder: {[n[:40] for n in left[:5]]}"
         counts[outcome] += 1
         per[target][outcome] += 1
         if outcome not in ("ok", "clean_error") and len(bad[outcome]) < 12:

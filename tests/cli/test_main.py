@@ -1,0 +1,55 @@
+"""The command's entry point (geardesign.cli.main): Ctrl-C at any moment of start-up — while numpy,
+pandas and the subcommands are imported, ~0.5 s — prints one line and exits 130, no traceback
+(issue 29 §3.15: a 42-line KeyboardInterrupt traceback).
+
+Deterministic: the child process puts a finder first on sys.meta_path so that the Ctrl-C (a real SIGINT
+to itself) arrives exactly when the named module starts importing, on the path ``python -m geardesign`` takes
+(runpy runs geardesign/__main__.py) and on the console script's (``from geardesign.cli import main``).
+"""
+import os
+import subprocess
+import sys
+
+import pytest
+
+_CHILD = """
+import os, signal, sys
+target, how, argv = sys.argv[1], sys.argv[2], sys.argv[3:]
+
+class CtrlC:        # a finder that sends the Ctrl-C when ``target`` starts importing, then steps aside
+    def find_spec(self, name, path=None, module=None):
+        if name == target:
+            sys.meta_path.remove(self)
+            os.kill(os.getpid(), signal.SIGINT)
+        return None
+sys.meta_path.insert(0, CtrlC())
+if how == "module":
+    import runpy
+    sys.argv = ["geardesign"] + argv
+    runpy.run_module("geardesign", run_name="__main__", alter_sys=True)
+else:
+    from geardesign.cli import main
+    sys.exit(main(argv))
+"""
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+@pytest.mark.parametrize("how", ["module", "script"])
+@pytest.mark.parametrize("during", ["numpy", "pandas", "geardesign.cli.pair", "geardesign.errors", "argparse"])
+def test_ctrl_c_during_start_up_prints_one_line_and_exits_130(how, during, tmp_path):
+    env = {**os.environ, "PYTHONPATH": ROOT + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    proc = subprocess.run([sys.executable, "-c", _CHILD, during, how, "pair", "--module", "2", "--z1", "17",
+                           "--z2", "26"], capture_output=True, text=True, cwd=tmp_path, env=env, timeout=120)
+    assert proc.returncode == 130, (proc.returncode, proc.stderr[-2000:])
+    assert "Traceback" not in proc.stderr and proc.stderr.strip().splitlines() == ["geardesign: interrupted"]
+    assert proc.stdout == "" and list(tmp_path.iterdir()) == []
+
+
+def test_without_ctrl_c_the_same_child_runs_the_command(tmp_path):
+    """The hook itself changes nothing: with a module never imported the command runs (exit 0)."""
+    env = {**os.environ, "PYTHONPATH": ROOT + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    proc = subprocess.run([sys.executable, "-c", _CHILD, "no_such_module", "module", "pair", "--module", "2",
+                           "--z1", "17", "--z2", "26"], capture_output=True, text=True, cwd=tmp_path, env=env,
+                          timeout=120)
+    assert proc.returncode == 0 and "eps_alpha" in proc.stdout, proc.stderr
