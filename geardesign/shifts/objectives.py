@@ -34,6 +34,7 @@ class Objective:
     description = ""
     x_sum_only = False
     needs_report_fields = False   # see Check.needs_report_fields
+    needs_load = False            # True: reads the safety factors of the strength checks (a load case)
 
     def pieces(self, geo) -> tuple:
         """Values whose minimum is sense · fun (floats or arrays, as ``geo`` holds)."""
@@ -120,7 +121,7 @@ class _StrengthObjective(Objective):
     """An objective over the safety factors of the problem's strength checks (ISO 6336): the load case
     and the minimum safety factors are theirs, so a problem has them only with a load."""
 
-    kind = "minimax"
+    kind, needs_load = "minimax", True
     checks: tuple = ()
 
     def bound(self, checks):

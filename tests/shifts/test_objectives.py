@@ -37,7 +37,8 @@ def test_custom_objective_beats_every_feasible_grid_node():
     assert r.fun <= geo["da1"][ok].min() + 1e-9
 
 def test_objective_registry_and_refusals():
-    assert set(OBJECTIVES) == {"max_x_sum", "max_eps_alpha", "balanced_sliding", "min_specific_pressure", "max_margin"}
+    assert set(OBJECTIVES) == {"max_x_sum", "max_eps_alpha", "balanced_sliding", "min_specific_pressure", "max_margin",
+                               "balanced_root_strength", "max_min_safety"}
     with pytest.raises(GearDesignError, match="objective must be one of"):
         gd.optimize_shifts(17, 26, objective="fastest")
     with pytest.raises(GearDesignError, match="sense must be 'max' or 'min'"):

@@ -257,8 +257,10 @@ def test_equal_gears_equal_values_and_broadcasting(z, x, beta, method):
     da = z / math.cos(math.radians(beta)) + 2.0 * (1.0 + x)
     one = root_form_factors(z, x, da, eps_alpha=1.4, beta_deg=beta, method=method)
     two = root_form_factors([z, z], [x, x], [da, da], eps_alpha=1.4, beta_deg=-beta, method=method)
-    for k, v in one.items():   # numpy's vector and scalar powers may differ in the last bit
-        np.testing.assert_allclose(two[k], np.array([v, v]), rtol=1e-14, atol=0, err_msg=k)
+    # the float path (math) and numpy's vector functions may differ in the last bits; the θ iteration and
+    # the powers after it carry that to ~20 ulp (1.5e-14 seen at z 10..300)
+    for k, v in one.items():
+        np.testing.assert_allclose(two[k], np.array([v, v]), rtol=1e-13, atol=0, err_msg=k)
 
 
 def test_helical_uses_virtual_gear():
