@@ -169,6 +169,9 @@ class GearStage:
                                   f"eps_gamma_min), got {type(self.checks).__name__}")
         from ..gears.checks import resolve_checks
         resolve_checks(self.checks)    # unknown keys are refused here, not mid-search
+        if self.material is not None:   # an unknown material is refused here, not mid-search
+            from .stage_kinds.gear_strength import stage_material
+            stage_material(self.material)
         if self.x1 is not None and self.m is not None:
             self.fixed_pair()          # a fixed pair that cannot be built is refused here
         if self.shift_objective is not None:

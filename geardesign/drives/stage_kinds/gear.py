@@ -26,7 +26,7 @@ from ...validate import one_number, require_range
 from ..limits import MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2
 from .base import StageKind
-from .gear_strength import strength_margins, strength_sizes
+from .gear_strength import stage_material, strength_margins, strength_sizes
 
 __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution"]
 
@@ -291,8 +291,8 @@ class GearKind(StageKind):
 
         sm = strength_margins(st, st.m, st.width_mm, st.z1, st.z2, pair.x1, pair.x2, flow.torque_in_nm, flow.n_in_rpm)
         out["margins"].update({k: float(v) for k, v in sm.items()})
-        out["strength"] = strength(pair, Load(torque_nm=flow.torque_in_nm, n_rpm=flow.n_in_rpm), st.material,
-                                   face_width_mm=st.width_mm)
+        out["strength"] = strength(pair, Load(torque_nm=flow.torque_in_nm, n_rpm=flow.n_in_rpm),
+                                   stage_material(st.material), face_width_mm=st.width_mm)
         out["summary"]["face_width_mm"] = st.width_mm
 
     # -- scenes

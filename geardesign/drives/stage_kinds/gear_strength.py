@@ -23,15 +23,27 @@ http://www.gearcalc.com/downloads/manual/manualse47.html).
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 import numpy as np
 
 __all__ = ["STRENGTH_CHECKS", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
-           "strength_sizes"]
+           "strength_sizes", "stage_material"]
 
 STRENGTH_CHECKS = ("contact_strength", "root_strength1", "root_strength2")
 WIDTH_TO_DIAMETER_RANGE = (0.2, 1.0)
 WIDTH_TO_DIAMETER_STEP = 0.05
+
+
+@lru_cache(maxsize=64)
+def _named(name: str):
+    from ...gears.strength import material
+    return material(name)
+
+
+def stage_material(value):
+    """The stage's material as a Material (a catalog name is looked up once; the lookup is ~20 ms)."""
+    return _named(value) if isinstance(value, str) else value
 
 
 def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, speed_rpm: float) -> dict:
@@ -40,7 +52,7 @@ def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, 
     from ...gears.strength import Load, pair_strength
 
     out = pair_strength(m, z1, z2, x1, x2, load=Load(torque_nm=float(torque_nm), n_rpm=float(speed_rpm)),
-                        material1=stage.material, face_width_mm=face_width_mm, beta_deg=stage.beta_deg)
+                        material1=stage_material(stage.material), face_width_mm=face_width_mm, beta_deg=stage.beta_deg)
     return {"contact_strength": np.minimum(out["S_H1"], out["S_H2"]) / out["S_Hmin"] - 1.0,
             "root_strength1": out["S_F1"] / out["S_Fmin"] - 1.0,
             "root_strength2": out["S_F2"] / out["S_Fmin"] - 1.0}
