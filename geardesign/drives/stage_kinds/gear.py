@@ -24,9 +24,9 @@ import numpy as np
 from ...errors import GearDesignError
 from ...validate import one_number, require_range
 from ..limits import MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
-from ..stages import FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2
+from ..stages import FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
 from .base import StageKind
-from .gear_strength import stage_material, strength_margins, strength_sizes
+from .gear_strength import strength_margins, strength_sizes
 
 __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution"]
 

@@ -23,27 +23,17 @@ http://www.gearcalc.com/downloads/manual/manualse47.html).
 from __future__ import annotations
 
 import math
-from functools import lru_cache
 
 import numpy as np
 
+from ..stages import stage_material
+
 __all__ = ["STRENGTH_CHECKS", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
-           "strength_sizes", "stage_material"]
+           "strength_sizes"]
 
 STRENGTH_CHECKS = ("contact_strength", "root_strength1", "root_strength2")
 WIDTH_TO_DIAMETER_RANGE = (0.2, 1.0)
 WIDTH_TO_DIAMETER_STEP = 0.05
-
-
-@lru_cache(maxsize=64)
-def _named(name: str):
-    from ...gears.strength import material
-    return material(name)
-
-
-def stage_material(value):
-    """The stage's material as a Material (a catalog name is looked up once; the lookup is ~20 ms)."""
-    return _named(value) if isinstance(value, str) else value
 
 
 def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, speed_rpm: float) -> dict:
