@@ -401,10 +401,25 @@ class Search:
             best = None
             msg = ("no design passes every check; the closest fails " + "; ".join(conflict)) if conflict else \
                 "no design passes every check"
+            msg += self._closest_solved()
         return DriveOptimum(success=bool(feas.size), message=msg, objective=self.objective, total_ratio=self.U,
                             ratio_tol=self.tol, table=table, best=best, conflict=conflict,
                             n_combinations=int(self.n_comb), n_candidates=int(self.n_cand),
                             n_shift_solves=int(self.n_solves), time_s=time.perf_counter() - self.t0)
+
+    def _closest_solved(self) -> str:
+        """When the closest failing design was stopped by its batch checks (its solved stages never
+        solved) but others were solved and failed: what the closest of those fails, else ''."""
+        ex = self.ex
+        bad = np.flatnonzero(ex["done"] & ~ex["feas"])
+        if not bad.size or not self.solved_k:
+            return ""
+        closest = np.flatnonzero(~self.batch_ok)
+        if not closest.size or np.nanmax(self.batch_min[closest]) <= np.nanmax(np.where(np.isnan(ex["mm"][bad]), -np.inf,
+                                                                                    ex["mm"][bad])):
+            return ""
+        c = bad[np.argmax(np.where(np.isnan(ex["mm"][bad]), -np.inf, ex["mm"][bad]))]
+        return "; of the designs evaluated in full, the closest fails " + "; ".join(self._fails(c))
 
     def _fixed(self, c):
         """The drive with every free variable fixed at design c (shifts, teeth, chain row, ...)."""

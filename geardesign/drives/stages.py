@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
@@ -19,7 +20,8 @@ from ..errors import GearDesignError
 from ..validate import _show, ndim, one_number, require_count, require_range
 
 __all__ = ["GivenStage", "GearStage", "ChainStage", "Shaft", "EFFICIENCY_RANGE", "GIVEN_RATIO_RANGE",
-           "GEAR_PAIRS_MAX", "STEEL_DENSITY_KG_M3", "FACE_WIDTH_PITCHES", "stage_area_mm2", "disc_mass_kg"]
+           "GEAR_PAIRS_MAX", "STEEL_DENSITY_KG_M3", "FACE_WIDTH_PITCHES", "stage_area_mm2", "disc_mass_kg",
+           "stage_material"]
 
 EFFICIENCY_RANGE = (0.3, 1.0)     # a stage that loses more than 70 % is a brake, not a transmission
 GIVEN_RATIO_RANGE = (1e-3, 1e4)   # a bought unit may step up (u < 1) or be a worm gear (u to ~100s)
@@ -49,6 +51,17 @@ def disc_mass_kg(d_mm, width_mm):
     """
     d, b = np.asarray(d_mm, dtype=float), np.asarray(width_mm, dtype=float)
     return STEEL_DENSITY_KG_M3 * math.pi / 4.0 * d * d * b * 1e-9
+
+
+@lru_cache(maxsize=64)
+def _named_material(name: str):
+    from ..gears.strength import material
+    return material(name)
+
+
+def stage_material(value):
+    """A gear stage's material as a geardesign Material (a catalog name is looked up once: ~20 ms each)."""
+    return _named_material(value) if isinstance(value, str) else value
 
 
 def _efficiency(eta):
@@ -169,6 +182,8 @@ class GearStage:
                                   f"eps_gamma_min), got {type(self.checks).__name__}")
         from ..gears.checks import resolve_checks
         resolve_checks(self.checks)    # unknown keys are refused here, not mid-search
+        if self.material is not None:   # an unknown material is refused here, not mid-search
+            stage_material(self.material)
         if self.x1 is not None and self.m is not None:
             self.fixed_pair()          # a fixed pair that cannot be built is refused here
         if self.shift_objective is not None:

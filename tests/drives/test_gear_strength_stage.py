@@ -12,6 +12,7 @@ import pytest
 
 import geardesign as gd
 from geardesign.gears.strength import Load
+from geardesign.shifts.optimize import optimize_shifts
 
 # ISO 54:1996 modules 1 … 8 mm, series I and II
 ISO54 = (1, 1.125, 1.25, 1.375, 1.5, 1.75, 2, 2.25, 2.5, 2.75, 3, 3.5, 4, 4.5, 5, 5.5, 6, 7, 8)
@@ -92,3 +93,30 @@ def test_the_search_sizes_every_design_at_its_own_load():
         assert min(got.values()) >= -1e-9
     best = r.best.checks.set_index(["item", "check"])["margin"]
     assert {"contact_strength", "root_strength1", "root_strength2"} <= set(best["g2"].index)
+
+
+def test_an_unknown_material_is_refused_when_the_stage_is_built():
+    from geardesign.errors import GearDesignError
+
+    with pytest.raises(GearDesignError, match="material must be a name of the catalog.*'unobtainium'"):
+        gd.GearStage(3, material="unobtainium")
+
+
+def test_a_drive_whose_gear_cannot_carry_the_load_names_the_strength_checks():
+    """The closest failing design may be one stopped by a chain check before its gears were solved; the
+    message then also names what the closest design evaluated in full fails: here the m = 1.5 mm pair's
+    strength (its contact safety at 20 kW is far below S_Hmin, by the pair's own StrengthResult)."""
+    stages = [gd.GearStage(1.5, z1_range=(17, 18), ratio_range=(2, 3), material="42CrMo4"),
+              gd.ChainStage(catalog="gost13568", strands=(1,), ratio_range=(2, 3))]
+    r = gd.Drive(power_kw=20, n_in_rpm=1480, stages=stages).optimize(total_ratio=6)
+    assert not r.success
+    assert r.message.endswith("of the designs evaluated in full, the closest fails stage 'gear': fails "
+                              "contact_strength, root_strength1, root_strength2")
+    # every tooth pair of the window is far from carrying 20 kW at 1480 rpm with m = 1.5 mm (z2 from 34 to 54
+    # spans its ratios 2 ... 3): both safety factors stay below their minimums with the shifts the stage takes
+    t_in = 20_000 / _omega(1480)
+    for z2 in (34, 54):
+        o = optimize_shifts(17, z2, "max_x_sum", None, "exact", m=1.5)
+        res = gd.GearPair(1.5, 17, z2, o.x1, o.x2, face_width=4 * math.pi * 1.5).strength(
+            Load(torque_nm=t_in, n_rpm=1480), "42CrMo4")
+        assert max(res.S_H1, res.S_H2) < res.S_Hmin and max(res.S_F1, res.S_F2) < res.S_Fmin

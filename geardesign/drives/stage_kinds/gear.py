@@ -24,7 +24,7 @@ import numpy as np
 from ...errors import GearDesignError
 from ...validate import one_number, require_range
 from ..limits import MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
-from ..stages import FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2
+from ..stages import FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
 from .base import StageKind
 from .gear_strength import strength_margins, strength_sizes
 
@@ -291,8 +291,8 @@ class GearKind(StageKind):
 
         sm = strength_margins(st, st.m, st.width_mm, st.z1, st.z2, pair.x1, pair.x2, flow.torque_in_nm, flow.n_in_rpm)
         out["margins"].update({k: float(v) for k, v in sm.items()})
-        out["strength"] = strength(pair, Load(torque_nm=flow.torque_in_nm, n_rpm=flow.n_in_rpm), st.material,
-                                   face_width_mm=st.width_mm)
+        out["strength"] = strength(pair, Load(torque_nm=flow.torque_in_nm, n_rpm=flow.n_in_rpm),
+                                   stage_material(st.material), face_width_mm=st.width_mm)
         out["summary"]["face_width_mm"] = st.width_mm
 
     # -- scenes

@@ -26,6 +26,8 @@ import math
 
 import numpy as np
 
+from ..stages import stage_material
+
 __all__ = ["STRENGTH_CHECKS", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
            "strength_sizes"]
 
@@ -40,7 +42,7 @@ def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, 
     from ...gears.strength import Load, pair_strength
 
     out = pair_strength(m, z1, z2, x1, x2, load=Load(torque_nm=float(torque_nm), n_rpm=float(speed_rpm)),
-                        material1=stage.material, face_width_mm=face_width_mm, beta_deg=stage.beta_deg)
+                        material1=stage_material(stage.material), face_width_mm=face_width_mm, beta_deg=stage.beta_deg)
     return {"contact_strength": np.minimum(out["S_H1"], out["S_H2"]) / out["S_Hmin"] - 1.0,
             "root_strength1": out["S_F1"] / out["S_Fmin"] - 1.0,
             "root_strength2": out["S_F2"] / out["S_Fmin"] - 1.0}
