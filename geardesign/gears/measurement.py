@@ -1,0 +1,350 @@
+"""The sizes a shop measures on one gear: span W_k over k teeth, the dimension over balls or pins M_d, the
+normal and chordal tooth thickness, each with the sizes its tooth-thickness allowances give.
+
+:func:`tooth_measurements` broadcasts m, z, x (and k, the ball and pin sizes, the allowances) like
+:func:`~geardesign.gears.geometry.pair_geometry`; the formulas are in
+:mod:`geardesign.gears.measurement_formulas`. How k and the ball are chosen: both aim at the circle
+d_y = d + 2 x m_n, where the generating rack's datum line rolls (about mid-height of the working flank); k is
+the nearest whole number whose anvils touch inside the involute (between the form circle d_Ff and the tip
+d_a; for a ring between its bore d_a and its form circle near the root), and the ball is the one that touches
+on d_y exactly. A span whose contact falls outside the involute, a ball that does not, or a helical gear
+narrower than W_k sin β_b plus a margin, is flagged (``span_ok``, ``ball_ok``), not hidden.
+
+Internal gears (the project's GOST 19274-73 sign, see :mod:`~geardesign.gears.measurement_formulas`): M_d is
+the dimension between balls, d_M − D_M; W_k is the span over k spaces, which needs an inside span gauge whose
+anvils fit the spaces and is rarely measured: it is given, with ``span_ok`` False and the reason in
+``notes`` (use M_d).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from ..errors import GearDesignError
+from ..results import Result, plain
+from ..validate import broadcast_inputs, require_bool, require_int, require_positive, require_range
+from . import measurement_formulas as f
+from .geometry import DESIGNS_MAX, X_ABS_MAX, require_module
+from .mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN, section_constants
+from .rack import STANDARD_RACK, BasicRack
+
+__all__ = ["ToothMeasurements", "tooth_measurements", "pair_measurements", "SPAN_FACE_MARGIN_MODULES", "ALLOWANCE_MAX_MODULES"]
+
+# b must exceed W_k sin β_b by this many normal modules for the anvils' contact patches (a judgement: the
+# standards ask only for b > W_k sin β_b; override with span_face_margin_mm)
+SPAN_FACE_MARGIN_MODULES = 2.0
+# |A_sn| larger than this many modules is no allowance but another gear
+ALLOWANCE_MAX_MODULES = 1.0
+
+
+@dataclass(frozen=True, eq=False)
+class ToothMeasurements(Result):
+    """The measuring sizes of one gear (floats) or of many (arrays), mm.
+
+    ``k`` teeth spanned (spaces for a ring), ``w_k`` the span and ``w_k_max``/``w_k_min`` the sizes the
+    allowances give, ``d_wk`` the diameter the anvils touch on, ``span_ok`` (inside the involute, and for a
+    helical gear b >= ``face_width_min_mm``); ``ball_mm`` the ball (or pin) diameter, ``d_m`` the circle through
+    the ball centres, ``m_d`` the dimension over (ring: between) balls, ``m_d_max``/``m_d_min``, ``d_ball`` where
+    the ball touches, ``ball_ok``; ``pin_mm``, ``m_d_pin`` (``m_d_pin_max``/``_min``) over pins, exact for a spur
+    gear, approximate on a helical one (``pin_exact``); ``s_n`` the normal tooth thickness, ``s_chord`` the
+    chordal thickness and ``h_chord`` the chordal height (``_max``/``_min``); ``x_e_sne``/``x_e_sni`` the
+    generating shifts of the allowances ``a_sne``/``a_sni``; ``d_ff``, ``d_a`` the ends of the involute used
+    for the flags, ``d_y`` the aim circle; ``notes`` what the flags mean here.
+    """
+
+    m_n: object
+    z: object
+    x: object
+    beta_deg: float
+    internal: bool
+    k: object
+    w_k: object
+    w_k_max: object
+    w_k_min: object
+    d_wk: object
+    span_ok: object
+    face_width_min_mm: object
+    ball_mm: object
+    d_m: object
+    m_d: object
+    m_d_max: object
+    m_d_min: object
+    d_ball: object
+    ball_ok: object
+    pin_mm: object
+    m_d_pin: object
+    m_d_pin_max: object
+    m_d_pin_min: object
+    pin_exact: bool
+    s_n: object
+    s_n_max: object
+    s_n_min: object
+    s_chord: object
+    s_chord_max: object
+    s_chord_min: object
+    h_chord: object
+    x_e_sne: object
+    x_e_sni: object
+    a_sne: object
+    a_sni: object
+    d_ff: object
+    d_a: object
+    d_y: object
+    notes: tuple = ()
+
+    _success_field = "ok"
+
+    @property
+    def ok(self) -> bool:
+        """True when every span and ball of the object touches inside the involute (and fits the face)."""
+        return bool(np.all(self.span_ok) and np.all(self.ball_ok))
+
+    @property
+    def is_scalar(self) -> bool:
+        return np.ndim(self.w_k) == 0
+
+    def _columns(self) -> list:
+        return [fl.name for fl in fields(self) if fl.name not in ("notes", "beta_deg", "internal", "pin_exact")]
+
+    def to_frame(self):
+        """One row per gear, one column per size (mm)."""
+        import pandas as pd
+
+        cols = {c: np.ravel(np.broadcast_to(getattr(self, c), np.shape(self.w_k))) for c in self._columns()}
+        frame = pd.DataFrame(cols)
+        frame.insert(3, "beta_deg", self.beta_deg)
+        frame.insert(4, "internal", self.internal)
+        return frame
+
+    def to_dict(self) -> dict:
+        out = {c: plain(getattr(self, c)) for c in self._columns()}
+        out.update(beta_deg=self.beta_deg, internal=self.internal, pin_exact=self.pin_exact,
+                   notes=list(self.notes), status=self.status)
+        return out
+
+    def __repr__(self) -> str:
+        if not self.is_scalar:
+            return f"ToothMeasurements(<{np.size(self.w_k)} gears; to_frame() for the table>)"
+        kind = ("ring, " if self.internal else "") + (f"beta {self.beta_deg:g} deg, " if self.beta_deg else "")
+        over = "between" if self.internal else "over"
+        return "\n".join([
+            f"ToothMeasurements({kind}m_n {self.m_n:g} mm, z {int(self.z)}, x {self.x:.6g}",
+            f"  span      k = {int(self.k)}  W_k = {self.w_k:.4f} mm  ({self.w_k_min:.4f} .. {self.w_k_max:.4f}),"
+            f" touches on d {self.d_wk:.4f}  ok {bool(self.span_ok)}",
+            f"  balls     D_M = {self.ball_mm:.4f} mm  M_d {over} = {self.m_d:.4f} mm  ({self.m_d_min:.4f} .. "
+            f"{self.m_d_max:.4f}), touches on d {self.d_ball:.4f}  ok {bool(self.ball_ok)}",
+            f"  pins      D = {self.pin_mm:.4f} mm  M_d = {self.m_d_pin:.4f} mm"
+            + ("" if self.pin_exact else " (approximate: helical)"),
+            f"  thickness s_n = {self.s_n:.4f} mm  chordal {self.s_chord:.4f} mm at height {self.h_chord:.4f} mm",
+            f"  allowances A_sne {self.a_sne:.4g} / A_sni {self.a_sni:.4g} mm: x_E {self.x_e_sne:.5f} / {self.x_e_sni:.5f})",
+        ])
+
+
+def _allowances(thickness_allowance_mm):
+    """(A_sne, A_sni) from one number (both) or a pair (upper, lower)."""
+    value = thickness_allowance_mm
+    if isinstance(value, (tuple, list)) and len(value) == 2:
+        upper, lower = value
+    elif isinstance(value, (tuple, list)):
+        raise GearDesignError(f"thickness_allowance_mm must be one number or a pair (A_sne, A_sni), got {len(value)} values")
+    else:
+        upper = lower = value
+    upper = require_range("thickness_allowance_mm (A_sne)", upper, -1e4, 1e4, unit="mm")
+    lower = require_range("thickness_allowance_mm (A_sni)", lower, -1e4, 1e4, unit="mm")
+    bad = np.asarray(lower > upper)
+    if bad.any():
+        raise GearDesignError(f"thickness_allowance_mm: the lower allowance A_sni must not exceed the upper A_sne, got "
+                              f"A_sne = {float(np.max(upper)):g} mm, A_sni = {float(np.min(lower)):g} mm")
+    return upper, lower
+
+
+def _validated(m, z, x, beta_deg, internal, rack, k, ball_mm, pin_mm, face_width_mm, tip_diameter_mm):
+    m = require_module(m)
+    z = require_int("z", z, Z_MIN, Z_MAX)
+    x = require_range("x", x, -X_ABS_MAX, X_ABS_MAX)
+    beta = float(require_range("beta_deg", beta_deg, *BETA_RANGE_DEG, unit="deg")) if np.ndim(beta_deg) == 0 else None
+    if beta is None:
+        raise GearDesignError("beta_deg must be one number for tooth_measurements (one helix angle a call)")
+    internal = require_bool("internal", internal)
+    rack = STANDARD_RACK if rack is None else rack
+    if not isinstance(rack, BasicRack):
+        raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
+    k = None if k is None else require_int("k (teeth spanned)", k, 1, Z_MAX)
+    ball = None if ball_mm is None else require_positive("ball_mm", ball_mm, unit="mm")
+    pin = None if pin_mm is None else require_positive("pin_mm", pin_mm, unit="mm")
+    b = None if face_width_mm is None else require_range("face_width_mm", face_width_mm, *FACE_WIDTH_RANGE_MM,
+                                                         lo_open=True, unit="mm")
+    d_a = None if tip_diameter_mm is None else require_positive("tip_diameter_mm", tip_diameter_mm, unit="mm")
+    return m, z, x, beta, internal, rack, k, ball, pin, b, d_a
+
+
+def _size_guard(*arrays) -> None:
+    try:
+        n = int(np.prod(np.broadcast_shapes(*(np.shape(a) for a in arrays if a is not None))))
+    except ValueError:
+        raise GearDesignError("input shapes do not broadcast together: "
+                              + ", ".join(str(np.shape(a)) for a in arrays if a is not None)) from None
+    if n > DESIGNS_MAX:
+        raise GearDesignError(f"tooth_measurements: {n} gears in one call; at most {DESIGNS_MAX}")
+
+
+def tooth_measurements(m, z, x=0.0, *, beta_deg=0.0, internal=False, rack: BasicRack | None = None, k=None,
+                       ball_mm=None, pin_mm=None, thickness_allowance_mm=0.0, face_width_mm=None,
+                       tip_diameter_mm=None, span_face_margin_mm=None) -> ToothMeasurements:
+    """The measuring sizes of a gear (see the module docstring); m (normal module, mm), z, x broadcast.
+
+    ``thickness_allowance_mm``: the normal tooth-thickness allowance A_sn (mm, negative thins the tooth), one
+    number or the pair (A_sne, A_sni) (upper, lower; ISO 21771:2007 §5.4, DIN 3967). ``k``, ``ball_mm``,
+    ``pin_mm`` override the choices; ``tip_diameter_mm`` the tip (default d ± 2(h_a* ± x)m_n, no tip shortening;
+    :meth:`GearPair.measurements` passes the pair's); ``face_width_mm`` b checks a helical span.
+
+    >>> t = tooth_measurements(2, 20)                # MachineCalcs: k = 3, W = 15.321 mm, contact on d 40.59 mm
+    >>> int(t.k), round(t.w_k, 3), round(t.d_wk, 2)
+    (3, 15.321, 40.59)
+    """
+    m, z, x, beta, internal, rack, k, ball, pin, b, d_a_in = _validated(
+        m, z, x, beta_deg, internal, rack, k, ball_mm, pin_mm, face_width_mm, tip_diameter_mm)
+    a_sne, a_sni = _allowances(thickness_allowance_mm)
+    _size_guard(m, z, x, k, ball, pin, a_sne, a_sni, d_a_in)
+    m, z, x, a_sne, a_sni = broadcast_inputs(m=m, z=z, x=x, a_sne=a_sne, a_sni=a_sni)
+    if np.any(np.abs(a_sne) > ALLOWANCE_MAX_MODULES * m) or np.any(np.abs(a_sni) > ALLOWANCE_MAX_MODULES * m):
+        raise GearDesignError(f"thickness_allowance_mm must be within ±{ALLOWANCE_MAX_MODULES:g}·m_n, got "
+                              f"A_sne = {float(np.max(np.abs(a_sne))):g}, A_sni = {float(np.max(np.abs(a_sni))):g} mm")
+    sc = section_constants(rack.alpha, math.radians(beta))
+    an, at, cb, cbb = rack.alpha, sc.alpha_t, sc.cos_beta, sc.cos_beta_b
+    zf = z.astype(float)
+    d = m * zf / cb
+    d_b = d * sc.cos_t
+    sgn = -1.0 if internal else 1.0
+    d_a = (d + sgn * 2.0 * (rack.ha + sgn * x) * m) if d_a_in is None else np.broadcast_to(d_a_in, d.shape)
+    d_ff = _form_diameter(m, zf, x, rack, sc, d_b, internal)
+    lo, hi = (d_a, d_ff) if internal else (d_ff, d_a)
+    d_y = d + 2.0 * x * m
+    notes = []
+
+    # span
+    if k is None:
+        k = _choose_k(m, zf, x, d_y, d_b, an, at, cbb, lo, hi)
+    k = np.broadcast_to(k, d.shape)
+    if np.any(k >= z):
+        raise GearDesignError(f"k (teeth spanned) must be below z, got k = {int(np.max(k))} for z = {int(z.flat[np.argmax(k)])}")
+    w = f.base_tangent_length(m, zf, x, k, an, at)
+    d_wk = f.span_contact_diameter(w, d_b, cbb)
+    span_ok = (d_wk > lo) & (d_wk < hi)
+    face_min = np.zeros_like(w)
+    if beta > 0.0:
+        margin = SPAN_FACE_MARGIN_MODULES * m if span_face_margin_mm is None else float(
+            require_range("span_face_margin_mm", span_face_margin_mm, 0.0, 1e4, unit="mm"))
+        face_min = w * math.sin(sc.beta_b) + margin
+        if b is None:
+            notes.append("helical span: give face_width_mm to check b > W_k sin beta_b + margin")
+        else:
+            span_ok = span_ok & (b > face_min)
+    if internal:
+        span_ok = span_ok & False
+        notes.append("ring: W_k is over k spaces (an inside span gauge); rarely measurable, use M_d between balls")
+    # thickness, allowances and generating shifts
+    x_e = f.generating_shift(x, a_sne, m, an, internal), f.generating_shift(x, a_sni, m, an, internal)
+    w_e = [f.base_tangent_length(m, zf, xe, k, an, at) for xe in x_e]
+    # balls and pins
+    ball = f.ball_for_contact(m, zf, x, d_y, d_b, an, at, cbb, internal) if ball is None else np.broadcast_to(ball, d.shape)
+    pin = ball if pin is None else np.broadcast_to(pin, d.shape)
+    inv_m = f.ball_center_inv(m, zf, x, ball, an, at, internal)
+    d_m = f.ball_center_diameter(d_b, inv_m)
+    m_d = f.dimension_over_balls(d_m, ball, z, internal)
+    d_ball = f.ball_contact_diameter(d_b, inv_m, ball, cbb, internal)
+    ball_ok = (d_ball > lo) & (d_ball < hi) & (d_m + sgn * ball > d_a if not internal else d_m - ball < d_a)
+    m_d_e = [f.dimension_over_balls(f.ball_center_diameter(d_b, f.ball_center_inv(m, zf, xe, ball, an, at, internal)),
+                                    ball, z, internal) for xe in x_e]
+    pin_sizes, pin_exact = _pins(m, z, zf, x, x_e, pin, d_b, an, at, beta, b, internal, notes)
+    s_n = f.normal_tooth_thickness(m, x, an, internal)
+    d_n = f.virtual_diameter(m, zf, cb, cbb)
+    h_a = sgn * (d_a - d) / 2.0
+    s_e = [s_n + a for a in (a_sne, a_sni)]
+    chords = [f.chordal_thickness(d_n, s) for s in [s_n] + s_e]
+
+    def pair(values):
+        return np.maximum(*values), np.minimum(*values)
+
+    fl = _floats if z.ndim == 0 else (lambda v: v)
+    return ToothMeasurements(
+        m_n=fl(m), z=fl(z), x=fl(x), beta_deg=beta, internal=internal, k=fl(k), w_k=fl(w),
+        w_k_max=fl(pair(w_e)[0]), w_k_min=fl(pair(w_e)[1]), d_wk=fl(d_wk), span_ok=fl(span_ok), face_width_min_mm=fl(face_min),
+        ball_mm=fl(ball), d_m=fl(d_m), m_d=fl(m_d), m_d_max=fl(pair(m_d_e)[0]), m_d_min=fl(pair(m_d_e)[1]),
+        d_ball=fl(d_ball), ball_ok=fl(ball_ok), pin_mm=fl(pin), m_d_pin=fl(pin_sizes[0]),
+        m_d_pin_max=fl(pair(pin_sizes[1:])[0]), m_d_pin_min=fl(pair(pin_sizes[1:])[1]), pin_exact=pin_exact,
+        s_n=fl(s_n), s_n_max=fl(pair(s_e)[0]), s_n_min=fl(pair(s_e)[1]), s_chord=fl(chords[0]),
+        s_chord_max=fl(pair(chords[1:])[0]), s_chord_min=fl(pair(chords[1:])[1]),
+        h_chord=fl(f.chordal_height(d_n, s_n, h_a, internal)), x_e_sne=fl(x_e[0]), x_e_sni=fl(x_e[1]),
+        a_sne=fl(a_sne), a_sni=fl(a_sni), d_ff=fl(d_ff), d_a=fl(d_a), d_y=fl(d_y), notes=tuple(notes))
+
+
+def _floats(v):
+    v = np.asarray(v)
+    if v.dtype == bool:
+        return bool(v)
+    if v.dtype.kind in "iu":
+        return int(v)
+    return float(v)
+
+
+def _form_diameter(m, zf, x, rack: BasicRack, sc, d_b, internal: bool):
+    """The involute's inner end for an external gear (the form circle d_Ff, where the rack's straight flank ends:
+    ρ_Ff = m_n (x − x_min)/sin α_t, x_min = h_l* − z sin² α_t/(2 cos β)); for a ring its outer end near the root
+    (ρ = m_n (z sin² α_t/(2 cos β) + h_l* + x)/sin α_t, the counter-rack's flank end; the shaper cutter the ring
+    is really cut with reaches about as deep). Undercut: the base circle."""
+    half = zf / sc.cos_beta * sc.sin_t ** 2 / 2.0
+    rho = m * ((half + rack.h_limit + x) if internal else (x - (rack.h_limit - half))) / sc.sin_t
+    return np.hypot(d_b, 2.0 * np.maximum(rho, 0.0))
+
+
+def _choose_k(m, zf, x, d_y, d_b, an, at, cbb, lo, hi):
+    """The whole k nearest the aim circle whose contact lies inside the involute (of k* − 1, k*, k* + 1 rounded),
+    else the rounded one (then flagged)."""
+    k_star = f.span_teeth_for_diameter(m, zf, x, d_y, d_b, an, at, cbb)
+    k0 = np.clip(np.rint(k_star), 1, np.maximum(zf - 1, 1))
+    cand = np.stack([k0, np.clip(k0 - 1, 1, None), np.minimum(k0 + 1, np.maximum(zf - 1, 1))])
+    d_c = f.span_contact_diameter(f.base_tangent_length(m, zf, x, cand, an, at), d_b, cbb)
+    inside = (d_c > lo) & (d_c < hi)
+    score = np.where(inside, np.abs(d_c - d_y), np.inf)
+    best = np.take_along_axis(cand, np.argmin(score, axis=0)[None], axis=0)[0]
+    return np.where(inside.any(axis=0), best, k0).astype(np.int64)
+
+
+def _pins(m, z, zf, x, x_e, pin, d_b, an, at, beta: float, b, internal: bool, notes: list):
+    """M_d over pins (nominal, from A_sne, from A_sni) and whether it is exact. A spur gear's pin is its ball.
+    On a helical gear the ball formula stands in for the pin (approximate: a cylinder parallel to the axis does
+    not touch the helicoid as a ball does); for an odd z the pins sit diametrically opposite when the face is
+    at least half an axial pitch wide, p_x/2 = π m_n/(2 sin β) (the helix correction), else cos(π/(2z))."""
+    exact = beta == 0.0
+    z_eff = z
+    if not exact:
+        notes.append("helical: M_d over pins is approximate (the ball formula); balls are exact")
+        if b is not None:
+            half_axial = math.pi * m / (2.0 * math.sin(math.radians(beta)))
+            z_eff = np.where((z % 2 == 1) & (b >= half_axial), z + 1, z)   # diametral: the even formula
+    out = []
+    for xx in (x,) + tuple(x_e):
+        d_mp = f.ball_center_diameter(d_b, f.ball_center_inv(m, zf, xx, pin, an, at, internal))
+        out.append(f.dimension_over_balls(d_mp, pin, z_eff, internal))
+    return out, exact
+
+
+def pair_measurements(pair, gear: int | None = None, **options):
+    """:meth:`GearPair.measurements`: the sizes of gear 1, 2 or both (a tuple), with the pair's tips."""
+    if gear is not None and gear not in (1, 2):
+        raise GearDesignError(f"gear must be 1, 2 or None (both), got {gear!r}")
+    for name in ("beta_deg", "internal", "rack", "tip_diameter_mm"):
+        if name in options:
+            raise GearDesignError(f"{name} comes from the pair; it is not an option of GearPair.measurements")
+    geo = pair._geo
+    if pair.face_width is not None:
+        options.setdefault("face_width_mm", pair.face_width)
+
+    def one(i):
+        return tooth_measurements(pair.m, pair.z1 if i == 1 else pair.z2, pair.x1 if i == 1 else pair.x2,
+                                  beta_deg=pair.beta_deg, internal=pair.internal and i == 2, rack=pair.rack,
+                                  tip_diameter_mm=float(geo[f"da{i}"]), **options)
+    return one(gear) if gear is not None else (one(1), one(2))
