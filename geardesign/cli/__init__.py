@@ -16,7 +16,7 @@ import numpy as np
 from ..errors import GearDesignError
 
 # Subcommand modules, in the order ``geardesign --help`` lists them.
-SUBCOMMANDS = ("pair", "mesh", "shift", "atlas", "teeth", "planetary", "chain", "key", "drive", "run")
+SUBCOMMANDS = ("pair", "measure", "mesh", "shift", "atlas", "teeth", "planetary", "chain", "key", "drive", "run")
 
 
 def build_parser() -> argparse.ArgumentParser:

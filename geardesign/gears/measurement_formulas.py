@@ -91,7 +91,7 @@ def generating_shift(x, thickness_allowance_mm, m_n, alpha_n, internal: bool = F
     thins its teeth) x_E = x − A_sn / (2 m_n tan α_n).
 
     >>> round(generating_shift(0.0, -0.1, 2.5, math.radians(20)), 6)   # thinner teeth: a smaller shift
-    -0.054946
+    -0.05495
     """
     sign = -1.0 if internal else 1.0
     return _out(np.asarray(x) + sign * np.asarray(thickness_allowance_mm) / (2.0 * m_n * math.tan(alpha_n)))
