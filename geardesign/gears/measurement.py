@@ -222,7 +222,9 @@ def tooth_measurements(m, z, x=0.0, *, beta_deg=0.0, internal=False, rack: Basic
     d_a = (d + sgn * 2.0 * (rack.ha + sgn * x) * m) if d_a_in is None else np.broadcast_to(d_a_in, d.shape)
     d_ff = _form_diameter(m, zf, x, rack, sc, d_b, internal)
     lo, hi = (d_a, d_ff) if internal else (d_ff, d_a)
-    d_y = d + 2.0 * x * m
+    # aim: the rack's datum circle, kept within the middle half of the involute (a short or undercut flank)
+    quarter = np.maximum(hi - lo, 0.0) / 4.0
+    d_y = np.minimum(np.maximum(d + 2.0 * x * m, lo + quarter), hi - quarter)
     notes = []
 
     # span
@@ -256,7 +258,10 @@ def tooth_measurements(m, z, x=0.0, *, beta_deg=0.0, internal=False, rack: Basic
     d_m = f.ball_center_diameter(d_b, inv_m)
     m_d = f.dimension_over_balls(d_m, ball, z, internal)
     d_ball = f.ball_contact_diameter(d_b, inv_m, ball, cbb, internal)
-    ball_ok = (d_ball > lo) & (d_ball < hi) & (d_m + sgn * ball > d_a if not internal else d_m - ball < d_a)
+    # the contact must lie on the involute (tan α_c > 0: past the base circle) between its ends, and an external
+    # gear's ball must stand out of the tips (a ring's inside its bore) to be measured
+    t_c = f.tan_from_inv(inv_m, validate=False) - sgn * ball / (d_b * cbb)
+    ball_ok = (t_c > 0) & (d_ball > lo) & (d_ball < hi) & (d_m + ball > d_a if not internal else d_m - ball < d_a)
     m_d_e = [f.dimension_over_balls(f.ball_center_diameter(d_b, f.ball_center_inv(m, zf, xe, ball, an, at, internal)),
                                     ball, z, internal) for xe in x_e]
     pin_sizes, pin_exact = _pins(m, z, zf, x, x_e, pin, d_b, an, at, beta, b, internal, notes)

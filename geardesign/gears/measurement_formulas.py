@@ -21,7 +21,7 @@ import numpy as np
 from .involute import inv, tan_from_inv
 
 __all__ = [
-    "base_tangent_length", "span_teeth_for_diameter", "span_contact_diameter", "normal_tooth_thickness",
+    "tan_from_inv", "base_tangent_length", "span_teeth_for_diameter", "span_contact_diameter", "normal_tooth_thickness",
     "ball_center_inv", "ball_center_diameter", "dimension_over_balls", "ball_contact_diameter",
     "ball_for_contact", "chordal_thickness", "chordal_height", "generating_shift", "virtual_diameter",
 ]
