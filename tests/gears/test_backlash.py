@@ -185,3 +185,55 @@ def test_gost1643_least_backlash_is_the_it_grade_of_the_centre_distance(kind):
 def test_bad_input_is_one_clear_error(call, word):
     with pytest.raises(GearDesignError, match=word):
         call()
+
+
+def ring_free_turn(pair, x1e, x2e, a_mm):
+    """free_turn for an internal pair: the ring (ring_profile's shaper-cutter envelope) about (0, −a), a space on
+    +y (as geardesign.profiles.mesh.placed puts it); gear 1's right flank meets the left flank of the ring tooth
+    at π/z2. The ring flank's polar angle at a radius is found on the envelope by its cutter roll."""
+    from geardesign.gears.ring import ShaperCutter
+    from geardesign.profiles import ring as ring_mod
+
+    rack = pair.rack
+    geo = pair.geometry()
+    c1, b1 = _flank(pair.m, pair.z1, x1e, rack, geo.da1)
+    cut, t_a0, *_ = ring_mod._cutter_in_place(pair.m, pair.z2, x2e, geo.da2 / 2, ShaperCutter(), rack, rack.alpha,
+                                              pair.m, 1.0)
+
+    def ring_point(u):
+        return np.ravel(ring_mod._mirror(pair.z2, *cut.envelope(*cut.flank(np.array([u])))))
+
+    r_tip2, r_root2 = float(np.hypot(*ring_point(t_a0 * (1 - 1e-12)))), float(np.hypot(*ring_point(1e-9)))
+    lo_r, hi_r = sorted((r_tip2, r_root2))
+
+    def eta(r):
+        u = brentq(lambda u: math.hypot(*ring_point(u)) - r, 1e-9, t_a0 * (1 - 1e-12), xtol=1e-15, rtol=1e-15)
+        px, py = ring_point(u)
+        return math.atan2(px, py)
+
+    centre = math.pi / pair.z2
+
+    def depth(theta):
+        c, s = math.cos(theta), math.sin(theta)
+
+        def inside(u):
+            px, py = np.ravel(c1.flank(np.array([u])))
+            qx, qy = c * px + s * py, -s * px + c * py + a_mm
+            r2 = math.hypot(qx, qy)
+            if not lo_r < r2 < hi_r:
+                return -1.0
+            return r2 * (eta(r2) - abs(math.atan2(qx, qy) - centre))
+        r = minimize_scalar(lambda u: -inside(u), bounds=b1, method="bounded", options={"xatol": 1e-13})
+        return -r.fun
+
+    return brentq(depth, 0.0, 0.05, xtol=1e-16, rtol=1e-15)
+
+
+def test_ring_pair_backlash_equals_the_free_turn_of_the_generated_gears():
+    pair = gd.GearPair(2, 20, 60, 0.3, 0.6, internal=True)
+    x1e = generating_shift(pair.x1, -0.04, pair.m, pair.rack.alpha)
+    x2e = generating_shift(pair.x2, -0.05, pair.m, pair.rack.alpha, internal=True)
+    a = float(pair.geometry().a_w) - 0.01
+    theta = ring_free_turn(pair, x1e, x2e, a)
+    j = backlash_from_shifts(pair.m, 20, 60, x1e, x2e, a, pair.rack, internal=True)
+    assert abs(2 * theta * float(pair.geometry().db1) / 2 - j["jbt"]) < 1e-9 * pair.m
