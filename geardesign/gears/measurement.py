@@ -27,6 +27,7 @@ from ..results import Result, plain
 from ..validate import broadcast_inputs, require_bool, require_int, require_positive, require_range
 from . import measurement_formulas as f
 from .geometry import DESIGNS_MAX, X_ABS_MAX, require_module
+from .involute import inv, inv_from_tan
 from .mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN, section_constants
 from .rack import STANDARD_RACK, BasicRack
 
@@ -220,6 +221,7 @@ def tooth_measurements(m, z, x=0.0, *, beta_deg=0.0, internal=False, rack: Basic
     d_b = d * sc.cos_t
     sgn = -1.0 if internal else 1.0
     d_a = (d + sgn * 2.0 * (rack.ha + sgn * x) * m) if d_a_in is None else np.broadcast_to(d_a_in, d.shape)
+    _require_tooth(m, zf, x, d, d_b, d_a, sc, internal)
     d_ff = _form_diameter(m, zf, x, rack, sc, d_b, internal)
     lo, hi = (d_a, d_ff) if internal else (d_ff, d_a)
     # aim: the rack's datum circle, kept within the middle half of the involute (a short or undercut flank)
@@ -285,6 +287,30 @@ def tooth_measurements(m, z, x=0.0, *, beta_deg=0.0, internal=False, rack: Basic
         s_chord_max=fl(pair(chords[1:])[0]), s_chord_min=fl(pair(chords[1:])[1]),
         h_chord=fl(f.chordal_height(d_n, s_n, h_a, internal)), x_e_sne=fl(x_e[0]), x_e_sni=fl(x_e[1]),
         a_sne=fl(a_sne), a_sni=fl(a_sni), d_ff=fl(d_ff), d_a=fl(d_a), d_y=fl(d_y), notes=tuple(notes))
+
+
+def _require_tooth(m, zf, x, d, d_b, d_a, sc, internal: bool) -> None:
+    """Refuse, by the first gear at fault, a tip circle inside the base circle (a ring's bore too) and a tooth
+    pointed before its tip: s_a = d_a (s_t/d ± inv α_t ∓ inv α_a) <= 0 (external +, −; a ring's tooth −, +)."""
+    def first(mask):
+        i = int(np.flatnonzero(np.ravel(mask))[0])
+        where = f" (gear at index {i})" if np.size(mask) > 1 else ""
+        vals = [float(np.ravel(np.broadcast_to(v, np.shape(mask)))[i]) for v in (zf, x, d_a, d_b)]
+        return where, vals
+    low = ~(d_a > d_b)
+    if np.any(low):
+        where, (z, xx, da, db) = first(low)
+        raise GearDesignError(f"the tip circle d_a = {da:.6g} mm lies inside the base circle d_b = {db:.6g} mm "
+                              f"(z = {z:g}, x = {xx:g}){where}: no involute to measure; raise x or give tip_diameter_mm")
+    inv_t = float(inv(sc.alpha_t))
+    t_a = np.sqrt((d_a - d_b) * (d_a + d_b)) / d_b
+    s_d = (math.pi / 2.0 + (-2.0 if internal else 2.0) * x * sc.tan_n) / zf      # s_t / d
+    half = s_d - inv_t + inv_from_tan(t_a) if internal else s_d + inv_t - inv_from_tan(t_a)
+    pointed = ~(half > 0.0)
+    if np.any(pointed):
+        where, (z, xx, da, _) = first(pointed)
+        raise GearDesignError(f"the tooth is pointed before its tip circle d_a = {da:.6g} mm (z = {z:g}, x = {xx:g})"
+                              f"{where}: lower x (a ring: raise it) or give a smaller tip_diameter_mm")
 
 
 def _floats(v):
