@@ -209,8 +209,9 @@ def tooth_measurements(m, z, x=0.0, *, beta_deg=0.0, internal=False, rack: Basic
     m, z, x, beta, internal, rack, k, ball, pin, b, d_a_in = _validated(
         m, z, x, beta_deg, internal, rack, k, ball_mm, pin_mm, face_width_mm, tip_diameter_mm)
     a_sne, a_sni = _allowances(thickness_allowance_mm)
-    _size_guard(m, z, x, k, ball, pin, a_sne, a_sni, d_a_in)
-    m, z, x, a_sne, a_sni = broadcast_inputs(m=m, z=z, x=x, a_sne=a_sne, a_sni=a_sni)
+    _size_guard(m, z, x, k, ball, pin, a_sne, a_sni, d_a_in, b)
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (m, z, x, k, ball, pin, a_sne, a_sni, d_a_in, b) if v is not None))
+    m, z, x, a_sne, a_sni = broadcast_inputs(m=m, z=z, x=x, a_sne=a_sne, a_sni=a_sni, shape=np.zeros(shape))[:5]
     if np.any(np.abs(a_sne) > ALLOWANCE_MAX_MODULES * m) or np.any(np.abs(a_sni) > ALLOWANCE_MAX_MODULES * m):
         raise GearDesignError(f"thickness_allowance_mm must be within ±{ALLOWANCE_MAX_MODULES:g}·m_n, got "
                               f"A_sne = {float(np.max(np.abs(a_sne))):g}, A_sni = {float(np.max(np.abs(a_sni))):g} mm")

@@ -241,6 +241,15 @@ def test_arrays_broadcast_like_the_scalars():
     assert t.w_k[1, 1] == one.w_k and t.m_d[1, 1] == one.m_d and t.k[1, 1] == one.k
 
 
+def test_every_array_option_broadcasts():
+    t = tooth_measurements(2, 40, 0.2, k=[3, 4, 5, 6])
+    assert np.allclose(np.diff(t.w_k), math.pi * 2 * math.cos(math.radians(20)), rtol=0, atol=1e-12)
+    assert np.shape(tooth_measurements(2, 40, 0.2, ball_mm=[3, 3.5]).m_d) == (2,)
+    assert list(tooth_measurements(2, 40, 0.2, beta_deg=20, face_width_mm=[5, 50]).span_ok) == [False, True]
+    with pytest.raises(GearDesignError, match="broadcast"):
+        tooth_measurements(2, [40, 41], 0.2, k=[3, 4, 5])
+
+
 def test_pair_measurements_use_the_pair_tips_and_ring():
     p = gd.GearPair(2, 20, 60, 0.3, 0.6, internal=True)
     g1, g2 = p.measurements()
