@@ -181,6 +181,24 @@ def test_undercut_stub_flags_its_ball():
     assert thin.ball_ok and thin.m_d_max < t.m_d
 
 
+@pytest.mark.parametrize("m, z, x", [(2, 60, 0.3), (1, 48, 0.0), (3, 71, 0.5)])
+def test_ring_span_over_spaces_equals_the_anvil_planes_in_the_shaper_generated_ring(m, z, x):
+    """k spaces symmetric about +y: the anvil in the outermost space touches the facing flank (the left flank of
+    the ring tooth at kπ/z, ring_profile's right flank mirrored) where it reaches farthest out."""
+    rack = BasicRack()
+    t = tooth_measurements(m, z, x, internal=True)
+    k = int(t.k)
+    cut, t_a0, *_ = ring_mod._cutter_in_place(m, z, x, t.d_a / 2, ShaperCutter(), rack, rack.alpha, m, 1.0)
+    g = k * math.pi / z
+
+    def reach(u):
+        px, py = np.ravel(ring_mod._mirror(z, *cut.envelope(*cut.flank(np.array([u])))))
+        return -px * math.cos(g) + py * math.sin(g)
+
+    half = _maximise(reach, (1e-9, t_a0 * (1 - 1e-12)))
+    assert abs(2.0 * half - t.w_k) < TOL * m
+
+
 def test_default_ball_touches_the_aim_circle():
     for internal, z in ((False, 31), (True, 64)):
         t = tooth_measurements(2.5, z, 0.25, internal=internal, beta_deg=15)
