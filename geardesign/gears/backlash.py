@@ -54,13 +54,20 @@ def backlash_from_shifts(m_n, z1, z2, x1, x2, a_mm, rack: BasicRack = STANDARD_R
     >>> abs(j["jt"]) < 1e-5
     True
     """
-    sc = section_constants(rack.alpha, math.radians(beta_deg))
-    z1, z2 = np.asarray(z1, dtype=float), np.asarray(z2, dtype=float)
+    from .geometry import require_module
+    from .mesh import Mesh
+
+    mesh = Mesh(z1, z2, rack, True, beta_deg, internal)
+    m_n = require_module(m_n)
+    x1, x2 = (require_range(n, v, -10.0, 10.0) for n, v in (("x1", x1), ("x2", x2)))
+    a_mm = require_range("a_mm (center distance)", a_mm, 0.0, 1e9, lo_open=True, unit="mm")
+    sc = section_constants(rack.alpha, math.radians(mesh.beta_deg))
+    z1, z2 = np.asarray(mesh.z1, dtype=float), np.asarray(mesh.z2, dtype=float)
     a_ref = np.asarray(m_n, dtype=float) / sc.cos_beta * ((z2 - z1) if internal else (z1 + z2)) / 2.0
+    if np.any(~(np.asarray(a_mm) > a_ref * sc.cos_t)):
+        raise GearDesignError(f"a_mm must exceed a cos(alpha_t) = {float(np.min(a_ref * sc.cos_t)):.6g} mm (the base "
+                              f"circles' distance), got {float(np.min(a_mm)):g} mm")
     cos_w = a_ref * sc.cos_t / np.asarray(a_mm, dtype=float)
-    if np.any(~(cos_w < 1.0)):
-        raise GearDesignError("a_mm must exceed a cos(alpha_t) (the base circles' distance), got "
-                              f"{float(np.min(a_mm)):g} mm")
     tan_w = np.sqrt((1.0 - cos_w) * (1.0 + cos_w)) / cos_w
     inv_w, inv_t = inv_from_tan(tan_w), inv_from_tan(sc.tan_t)
     tn = sc.tan_n
@@ -204,6 +211,7 @@ def x_sum_for_backlash(m, z1, z2, a_w, backlash_mm, kind: str = "jbn", rack: Bas
     0.252245
     """
     kind = require_choice("kind", kind, BACKLASH_KINDS)
+    m, z1, z2, a_w, backlash_mm = _checked(m, z1, z2, a_w, backlash_mm, rack, beta_deg, internal)
     sc = section_constants(rack.alpha, math.radians(beta_deg))
     xs0 = np.asarray(x_sum_from_center_distance(m, z1, z2, a_w, rack, beta_deg, internal))
     zs = (np.asarray(z2) - np.asarray(z1)) if internal else (np.asarray(z1) + np.asarray(z2))
@@ -213,6 +221,26 @@ def x_sum_for_backlash(m, z1, z2, a_w, backlash_mm, kind: str = "jbn", rack: Bas
     delta = jbn / (2.0 * np.asarray(m, dtype=float) * math.sin(rack.alpha))
     out = xs0 + delta if internal else xs0 - delta
     return float(out) if np.ndim(out) == 0 else out
+
+
+def _checked(m, z1, z2, a_w, backlash_mm, rack, beta_deg, internal):
+    """The inputs of :func:`x_sum_for_backlash`, each refused by name when out of range."""
+    from .geometry import min_center_distance, require_module
+    from .mesh import Mesh
+
+    if not isinstance(rack, BasicRack):
+        raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
+    mesh = Mesh(z1, z2, rack, True, beta_deg, internal)
+    m = require_module(m)
+    a_w = require_range("a_w (center distance)", a_w, 0.0, 1e9, lo_open=True, unit="mm")
+    j = require_range("backlash_mm", backlash_mm, 0.0, 1e4, unit="mm")
+    a_min = min_center_distance(m, mesh.z1, mesh.z2, rack, mesh.beta_deg, mesh.internal)
+    if np.any(~(a_w > a_min)):
+        raise GearDesignError(f"a_w must exceed a cos(alpha_t) = {float(np.min(a_min)):.6g} mm, got "
+                              f"{float(np.min(a_w)):g} mm")
+    if np.any(j > np.asarray(m)):
+        raise GearDesignError(f"backlash_mm must be at most one module ({float(np.min(m)):g} mm), got {float(np.max(j)):g}")
+    return m, mesh.z1, mesh.z2, a_w, j
 
 
 def allowances_for_backlash(pair, jbn_min_mm: float, center_distance_allowance_mm=0.0, share1: float = 0.5,

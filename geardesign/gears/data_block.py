@@ -10,7 +10,7 @@ distance, the reference diameter). Values are the drawing's text (mm to 4 decima
 from __future__ import annotations
 
 from ..errors import GearDesignError
-from ..validate import require_choice
+from ..validate import ndim, one_number, require_choice, require_int, require_range
 
 __all__ = ["data_block", "data_block_lines", "HANDS"]
 
@@ -47,8 +47,20 @@ def data_block(pair, gear: int = 1, accuracy_class=None, *, helix_hand: str | No
     from .measurement import pair_measurements
     from .tolerances import flank_tolerances
 
-    if gear not in (1, 2):
+    if not (type(gear) is int and gear in (1, 2)):
         raise GearDesignError(f"gear must be 1 or 2, got {gear!r}")
+    if accuracy_class is not None:
+        accuracy_class = int(one_number("accuracy_class", require_int(
+            "accuracy_class (ISO 1328-1:2013 flank tolerance class)", accuracy_class, 1, 11)))
+    for name, v in (("ball_mm", ball_mm), ("k", k)):
+        if v is not None and ndim(v) != 0:
+            raise GearDesignError(f"{name} must be one number for a data block, got {v!r}")
+    if center_distance_allowance_mm is not None:
+        if not (isinstance(center_distance_allowance_mm, (tuple, list)) and len(center_distance_allowance_mm) == 2):
+            raise GearDesignError("center_distance_allowance_mm must be the pair (A_ai, A_ae) in mm, got "
+                                  f"{center_distance_allowance_mm!r}")
+        center_distance_allowance_mm = tuple(one_number("center_distance_allowance_mm", require_range(
+            "center_distance_allowance_mm", v, -pair.m, pair.m, unit="mm")) for v in center_distance_allowance_mm)
     if pair.beta_deg > 0 and helix_hand is not None:
         helix_hand = require_choice("helix_hand", helix_hand, HANDS)
     elif helix_hand is not None:

@@ -24,7 +24,7 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..results import Result, plain
-from ..validate import broadcast_inputs, require_bool, require_int, require_positive, require_range
+from ..validate import broadcast_inputs, require_bool, require_int, require_range
 from . import measurement_formulas as f
 from .geometry import DESIGNS_MAX, X_ABS_MAX, require_module
 from .involute import inv, inv_from_tan
@@ -38,6 +38,8 @@ __all__ = ["ToothMeasurements", "tooth_measurements", "pair_measurements", "SPAN
 SPAN_FACE_MARGIN_MODULES = 2.0
 # |A_sn| larger than this many modules is no allowance but another gear
 ALLOWANCE_MAX_MODULES = 1.0
+# a ball or pin beyond this many modules cannot rest in a tooth space (the default is ~1.7 m)
+BALL_MAX_MODULES = 10.0
 
 
 @dataclass(frozen=True, eq=False)
@@ -174,11 +176,16 @@ def _validated(m, z, x, beta_deg, internal, rack, k, ball_mm, pin_mm, face_width
     if not isinstance(rack, BasicRack):
         raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
     k = None if k is None else require_int("k (teeth spanned)", k, 1, Z_MAX)
-    ball = None if ball_mm is None else require_positive("ball_mm", ball_mm, unit="mm")
-    pin = None if pin_mm is None else require_positive("pin_mm", pin_mm, unit="mm")
+    ball = None if ball_mm is None else require_range("ball_mm", ball_mm, 0.0, 1e9, lo_open=True, unit="mm")
+    pin = None if pin_mm is None else require_range("pin_mm", pin_mm, 0.0, 1e9, lo_open=True, unit="mm")
+    for name, v in (("ball_mm", ball), ("pin_mm", pin)):
+        if v is not None and np.any(v > BALL_MAX_MODULES * m):
+            raise GearDesignError(f"{name} must be at most {BALL_MAX_MODULES:g} modules ({float(np.min(BALL_MAX_MODULES * m)):g} mm "
+                                  f"here), got {float(np.max(v)):g} mm")
     b = None if face_width_mm is None else require_range("face_width_mm", face_width_mm, *FACE_WIDTH_RANGE_MM,
                                                          lo_open=True, unit="mm")
-    d_a = None if tip_diameter_mm is None else require_positive("tip_diameter_mm", tip_diameter_mm, unit="mm")
+    d_a = None if tip_diameter_mm is None else require_range("tip_diameter_mm", tip_diameter_mm, 0.0, 1e9, lo_open=True,
+                                                             unit="mm")
     return m, z, x, beta, internal, rack, k, ball, pin, b, d_a
 
 
@@ -367,7 +374,7 @@ def _pins(m, z, zf, x, x_e, pin, d_b, an, at, beta: float, b, internal: bool, no
 
 def pair_measurements(pair, gear: int | None = None, **options):
     """:meth:`GearPair.measurements`: the sizes of gear 1, 2 or both (a tuple), with the pair's tips."""
-    if gear is not None and gear not in (1, 2):
+    if gear is not None and not (type(gear) is int and gear in (1, 2)):
         raise GearDesignError(f"gear must be 1, 2 or None (both), got {gear!r}")
     for name in ("beta_deg", "internal", "rack", "tip_diameter_mm"):
         if name in options:

@@ -170,7 +170,7 @@ def flank_tolerances(m_n, z, accuracy_class, *, beta_deg=0.0, face_width_mm=None
     if np.ndim(beta_deg) != 0:
         raise GearDesignError("beta_deg must be one number for flank_tolerances")
     beta = float(_check_range("beta_deg", beta_deg, *ISO1328_RANGES["beta_deg"], unit="deg"))
-    d = (m_n * z / math.cos(math.radians(beta))) if d_mm is None else np.asarray(d_mm, dtype=float)
+    d = (m_n * z / math.cos(math.radians(beta))) if d_mm is None else d_mm
     d = _check_range("d_mm (reference diameter)", d, *ISO1328_RANGES["d_mm"], unit="mm")
     b = None if face_width_mm is None else _check_range("face_width_mm", face_width_mm, *ISO1328_RANGES["face_width_mm"],
                                                         unit="mm")

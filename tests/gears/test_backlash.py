@@ -181,6 +181,10 @@ def test_gost1643_least_backlash_is_the_it_grade_of_the_centre_distance(kind):
     (lambda: pair_backlash(gd.GearPair(2, 20, 30), "x"), "thickness_allowance1_mm"),
     (lambda: allowances_for_backlash(gd.GearPair(2, 20, 30), -0.1), "jbn_min_mm"),
     (lambda: backlash_from_shifts(2, 20, 30, 0, 0, 40.0), "a_mm"),
+    (lambda: backlash_from_shifts(2, 20, 30, 0, 0, 5e-324), "a_mm"),
+    (lambda: x_sum_for_backlash(2, 20, 30, 40.0, 0.1), "a_w"), (lambda: x_sum_for_backlash(2, 20, 30, 51, -0.1), "backlash_mm"),
+    (lambda: x_sum_for_backlash(2, 2, 30, 51, 0.1), "z1"),
+    (lambda: gd.GearPair(3, 12, 24).measurements(gear=True), "gear"),
 ])
 def test_bad_input_is_one_clear_error(call, word):
     with pytest.raises(GearDesignError, match=word):

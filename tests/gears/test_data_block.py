@@ -32,7 +32,9 @@ def test_helical_ring_states_hand_and_the_ring_convention():
 
 @pytest.mark.parametrize("kwargs, word", [
     (dict(gear=3), "gear"), (dict(gear=1, helix_hand="right"), "helix_hand"),
-    (dict(gear=1, accuracy_class=12), "accuracy_class"),
+    (dict(gear=1, accuracy_class=12), "accuracy_class"), (dict(gear=1, accuracy_class=[1, 2]), "accuracy_class"),
+    (dict(gear=True), "gear"), (dict(gear=1, ball_mm=(1,)), "ball_mm"),
+    (dict(gear=1, center_distance_allowance_mm=0.02), "center_distance_allowance_mm"),
 ])
 def test_errors(kwargs, word):
     with pytest.raises(GearDesignError, match=word):

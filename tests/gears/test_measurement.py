@@ -296,7 +296,8 @@ def test_span_flags():
     (dict(m=2, z=20, beta_deg=50), "beta_deg"), (dict(m=2, z=20, internal=1), "internal"),
     (dict(m=2, z=20, rack="x"), "rack"), (dict(m=[1, 2], z=[10, 20, 30]), "broadcast"),
     (dict(m=1, z=3, x=-10), "base circle"), (dict(m=1, z=17, x=3), "pointed"),
-    (dict(m=1, z=[17, 40], x=[0.0, 3.0]), "index 1"),
+    (dict(m=1, z=[17, 40], x=[0.0, 3.0]), "index 1"), (dict(m=2, z=20, ball_mm=1e308), "ball_mm"),
+    (dict(m=2, z=20, ball_mm=25.0), "modules"), (dict(m=2, z=20, tip_diameter_mm=1e308), "tip_diameter_mm"),
 ])
 def test_bad_input_is_one_clear_error(kwargs, word):
     with pytest.raises(GearDesignError, match=word):
