@@ -45,7 +45,6 @@ def data_block(pair, gear: int = 1, accuracy_class=None, *, helix_hand: str | No
     import pandas as pd
 
     from .measurement import pair_measurements
-    from .tolerances import flank_tolerances
 
     if not (type(gear) is int and gear in (1, 2)):
         raise GearDesignError(f"gear must be 1 or 2, got {gear!r}")
@@ -66,45 +65,60 @@ def data_block(pair, gear: int = 1, accuracy_class=None, *, helix_hand: str | No
     elif helix_hand is not None:
         raise GearDesignError("helix_hand is for a helical gear: this pair is spur (beta_deg = 0)")
     t = pair_measurements(pair, gear, thickness_allowance_mm=thickness_allowance_mm, ball_mm=ball_mm, k=k)
-    geo = pair.geometry()
-    z, mate = (pair.z1, pair.z2) if gear == 1 else (pair.z2, pair.z1)
-    ring = t.internal
+    rows = (_gear_rows(pair, t, gear, accuracy_class, helix_hand) + _control_rows(t)
+            + _tolerance_rows(pair, gear, accuracy_class) + _reference_rows(pair, gear, center_distance_allowance_mm))
+    return pd.DataFrame(rows, columns=["parameter", "symbol", "value", "unit"])
+
+
+def _gear_rows(pair, t, gear: int, accuracy_class, helix_hand) -> list:
+    """Part 1: the gear itself."""
     rack = pair.rack
-    rows = [("Module", "m_n", f"{pair.m:g}", "mm"), ("Number of teeth", "z", f"{z}", "")]
+    rows = [("Module", "m_n", f"{pair.m:g}", "mm"), ("Number of teeth", "z", f"{pair.z1 if gear == 1 else pair.z2}", "")]
+    rows.append(("Helix angle", "β", f"{pair.beta_deg:g}", "deg"))
     if pair.beta_deg:
-        hand = helix_hand or "(state the hand)"
-        rows.append(("Helix angle", "β", f"{pair.beta_deg:g}", "deg"))
-        rows.append(("Hand of helix", "", hand, ""))
-    else:
-        rows.append(("Helix angle", "β", "0", "deg"))
-    rows += [
+        rows.append(("Hand of helix", "", helix_hand or "(state the hand)", ""))
+    return rows + [
         ("Basic rack profile", "", f"ISO 53 / GOST 13755 (h_a* {rack.ha:g}, c* {rack.c:g}, ρ_f* {rack.rho_f:g})", ""),
         ("Normal pressure angle", "α_n", f"{rack.alpha_deg:g}", "deg"),
-        ("Profile shift coefficient", "x", f"{t.x:.4f}" + (" (ring, GOST 19274 sign)" if ring else ""), ""),
-        ("Accuracy", "", "—" if accuracy_class is None else f"ISO 1328-1:2013 class {int(accuracy_class)}", ""),
+        ("Profile shift coefficient", "x", f"{t.x:.4f}" + (" (ring, GOST 19274 sign)" if t.internal else ""), ""),
+        ("Accuracy", "", "—" if accuracy_class is None else f"ISO 1328-1:2013 class {accuracy_class}", "")]
+
+
+def _control_rows(t) -> list:
+    """Part 2: the control sizes with their deviations."""
+    ring = t.internal
+    return [
         ("Number of teeth spanned" + (" (spaces)" if ring else ""), "k", f"{int(t.k)}", ""),
         ("Base tangent length" + (" (not measurable: use M_d)" if ring else ""), "W_k", _dev(t.w_k, *_order(t, "w_k")), "mm"),
         ("Ball diameter", "D_M", _mm(t.ball_mm), "mm"),
         ("Dimension " + ("between" if ring else "over") + " balls", "M_d", _dev(t.m_d, *_order(t, "m_d")), "mm"),
         ("Chordal tooth thickness", "s̄_c", _dev(t.s_chord, *_order(t, "s_chord")), "mm"),
-        ("Chordal height", "h̄_c", _mm(t.h_chord), "mm"),
-    ]
-    if accuracy_class is not None:
-        b = pair.face_width if pair.face_width is not None and pair.face_width >= 4.0 else None
-        tol = flank_tolerances(pair.m, z, accuracy_class, beta_deg=pair.beta_deg, face_width_mm=b,
-                               d_mm=float(geo.d1 if gear == 1 else geo.d2))
-        for sym, name in (("f_pT", "Single pitch tolerance"), ("F_pT", "Cumulative pitch tolerance"),
-                          ("F_alphaT", "Total profile tolerance"), ("F_betaT", "Total helix tolerance")):
-            value = getattr(tol, sym)
-            if value is not None:
-                rows.append((name, sym, f"{value:g}", "µm"))
+        ("Chordal height", "h̄_c", _mm(t.h_chord), "mm")]
+
+
+def _tolerance_rows(pair, gear: int, accuracy_class) -> list:
+    """Part 2 (cont.): the class's ISO 1328-1:2013 tolerances (the helix one with a face width of 4 mm or more)."""
+    from .tolerances import flank_tolerances
+
+    if accuracy_class is None:
+        return []
+    geo = pair.geometry()
+    b = pair.face_width if pair.face_width is not None and pair.face_width >= 4.0 else None
+    tol = flank_tolerances(pair.m, pair.z1 if gear == 1 else pair.z2, accuracy_class, beta_deg=pair.beta_deg,
+                           face_width_mm=b, d_mm=float(geo.d1 if gear == 1 else geo.d2))
+    names = (("f_pT", "Single pitch tolerance"), ("F_pT", "Cumulative pitch tolerance"),
+             ("F_alphaT", "Total profile tolerance"), ("F_betaT", "Total helix tolerance"))
+    return [(name, sym, f"{getattr(tol, sym):g}", "µm") for sym, name in names if getattr(tol, sym) is not None]
+
+
+def _reference_rows(pair, gear: int, allowance) -> list:
+    """Part 3: the mating gear and the reference data."""
+    geo = pair.geometry()
     a_w = float(geo.a_w)
-    a_text = _mm(a_w) if center_distance_allowance_mm is None else (
-        f"{a_w:.4f} ({center_distance_allowance_mm[1]:+.4f} / {center_distance_allowance_mm[0]:+.4f})")
-    rows += [("Mating gear: number of teeth", "z_mate", f"{mate}", ""),
-             ("Centre distance", "a_w", a_text, "mm"),
-             ("Reference diameter", "d", _mm(geo.d1 if gear == 1 else geo.d2), "mm")]
-    return pd.DataFrame(rows, columns=["parameter", "symbol", "value", "unit"])
+    a_text = _mm(a_w) if allowance is None else f"{a_w:.4f} ({allowance[1]:+.4f} / {allowance[0]:+.4f})"
+    return [("Mating gear: number of teeth", "z_mate", f"{pair.z2 if gear == 1 else pair.z1}", ""),
+            ("Centre distance", "a_w", a_text, "mm"),
+            ("Reference diameter", "d", _mm(geo.d1 if gear == 1 else geo.d2), "mm")]
 
 
 def _order(t, name):

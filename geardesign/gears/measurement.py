@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, fields
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -222,79 +223,101 @@ def tooth_measurements(m, z, x=0.0, *, beta_deg=0.0, internal=False, rack: Basic
     if np.any(np.abs(a_sne) > ALLOWANCE_MAX_MODULES * m) or np.any(np.abs(a_sni) > ALLOWANCE_MAX_MODULES * m):
         raise GearDesignError(f"thickness_allowance_mm must be within ±{ALLOWANCE_MAX_MODULES:g}·m_n, got "
                               f"A_sne = {float(np.max(np.abs(a_sne))):g}, A_sni = {float(np.max(np.abs(a_sni))):g} mm")
+    g = _gear(m, z, x, beta, internal, rack, d_a_in)
+    g.x_e = (f.generating_shift(x, a_sne, m, g.an, internal), f.generating_shift(x, a_sni, m, g.an, internal))
+    notes = []
+    out = dict(m_n=m, z=z, x=x, **_span(g, k, b, span_face_margin_mm, notes), **_balls(g, ball, pin, b, notes),
+               **_thickness(g, a_sne, a_sni), x_e_sne=g.x_e[0], x_e_sni=g.x_e[1], a_sne=a_sne, a_sni=a_sni,
+               d_ff=g.d_ff, d_a=g.d_a, d_y=g.d_y)
+    fl = _floats if z.ndim == 0 else (lambda v: v)
+    return ToothMeasurements(beta_deg=beta, internal=internal, pin_exact=beta == 0.0, notes=tuple(notes),
+                             **{key: fl(v) for key, v in out.items()})
+
+
+def _largest_smallest(values):
+    return np.maximum(*values), np.minimum(*values)
+
+
+def _gear(m, z, x, beta: float, internal: bool, rack: BasicRack, d_a_in) -> SimpleNamespace:
+    """The gear's circles and angles (mm, rad), its involute's ends (lo, hi) and the aim circle d_y: the rack's
+    datum circle, kept within the middle half of the involute (a short or undercut flank)."""
     sc = section_constants(rack.alpha, math.radians(beta))
-    an, at, cb, cbb = rack.alpha, sc.alpha_t, sc.cos_beta, sc.cos_beta_b
     zf = z.astype(float)
-    d = m * zf / cb
+    d = m * zf / sc.cos_beta
     d_b = d * sc.cos_t
     sgn = -1.0 if internal else 1.0
     d_a = (d + sgn * 2.0 * (rack.ha + sgn * x) * m) if d_a_in is None else np.broadcast_to(d_a_in, d.shape)
     _require_tooth(m, zf, x, d, d_b, d_a, sc, internal)
     d_ff = _form_diameter(m, zf, x, rack, sc, d_b, internal)
     lo, hi = (d_a, d_ff) if internal else (d_ff, d_a)
-    # aim: the rack's datum circle, kept within the middle half of the involute (a short or undercut flank)
     quarter = np.maximum(hi - lo, 0.0) / 4.0
     d_y = np.minimum(np.maximum(d + 2.0 * x * m, lo + quarter), hi - quarter)
-    notes = []
+    return SimpleNamespace(m=m, z=z, zf=zf, x=x, beta=beta, internal=internal, sc=sc, an=rack.alpha, at=sc.alpha_t,
+                           cbb=sc.cos_beta_b, d=d, d_b=d_b, d_a=d_a, d_ff=d_ff, lo=lo, hi=hi, d_y=d_y, sgn=sgn)
 
-    # span
+
+def _span(g, k, b, span_face_margin_mm, notes: list) -> dict:
+    """k, W_k and its sizes from the allowances, where the anvils touch, and whether the span is usable."""
     if k is None:
-        k = _choose_k(m, zf, x, d_y, d_b, an, at, cbb, lo, hi)
-    k = np.broadcast_to(k, d.shape)
-    if np.any(k >= z):
-        raise GearDesignError(f"k (teeth spanned) must be below z, got k = {int(np.max(k))} for z = {int(z.flat[np.argmax(k)])}")
-    w = f.base_tangent_length(m, zf, x, k, an, at)
-    d_wk = f.span_contact_diameter(w, d_b, cbb)
-    span_ok = (d_wk > lo) & (d_wk < hi)
+        k = _choose_k(g.m, g.zf, g.x, g.d_y, g.d_b, g.an, g.at, g.cbb, g.lo, g.hi)
+    k = np.broadcast_to(k, g.d.shape)
+    if np.any(k >= g.z):
+        raise GearDesignError(f"k (teeth spanned) must be below z, got k = {int(np.max(k))} for "
+                              f"z = {int(g.z.flat[np.argmax(k)])}")
+    w = f.base_tangent_length(g.m, g.zf, g.x, k, g.an, g.at)
+    d_wk = f.span_contact_diameter(w, g.d_b, g.cbb)
+    span_ok = (d_wk > g.lo) & (d_wk < g.hi)
     face_min = np.zeros_like(w)
-    if beta > 0.0:
-        margin = SPAN_FACE_MARGIN_MODULES * m if span_face_margin_mm is None else float(
+    if g.beta > 0.0:
+        margin = SPAN_FACE_MARGIN_MODULES * g.m if span_face_margin_mm is None else float(
             require_range("span_face_margin_mm", span_face_margin_mm, 0.0, 1e4, unit="mm"))
-        face_min = w * math.sin(sc.beta_b) + margin
+        face_min = w * math.sin(g.sc.beta_b) + margin
         if b is None:
             notes.append("helical span: give face_width_mm to check b > W_k sin beta_b + margin")
         else:
             span_ok = span_ok & (b > face_min)
-    if internal:
+    if g.internal:
         span_ok = span_ok & False
         notes.append("ring: W_k is over k spaces (an inside span gauge); rarely measurable, use M_d between balls")
-    # thickness, allowances and generating shifts
-    x_e = f.generating_shift(x, a_sne, m, an, internal), f.generating_shift(x, a_sni, m, an, internal)
-    w_e = [f.base_tangent_length(m, zf, xe, k, an, at) for xe in x_e]
-    # balls and pins
-    ball = f.ball_for_contact(m, zf, x, d_y, d_b, an, at, cbb, internal) if ball is None else np.broadcast_to(ball, d.shape)
-    pin = ball if pin is None else np.broadcast_to(pin, d.shape)
-    inv_m = f.ball_center_inv(m, zf, x, ball, an, at, internal)
-    d_m = f.ball_center_diameter(d_b, inv_m)
-    m_d = f.dimension_over_balls(d_m, ball, z, internal)
-    d_ball = f.ball_contact_diameter(d_b, inv_m, ball, cbb, internal)
+    w_max, w_min = _largest_smallest([f.base_tangent_length(g.m, g.zf, xe, k, g.an, g.at) for xe in g.x_e])
+    return dict(k=k, w_k=w, w_k_max=w_max, w_k_min=w_min, d_wk=d_wk, span_ok=span_ok, face_width_min_mm=face_min)
+
+
+def _balls(g, ball, pin, b, notes: list) -> dict:
+    """The ball (default: touching on d_y), M_d and its sizes from the allowances, where it touches, whether it is
+    usable; the pins."""
+    if ball is None:
+        ball = f.ball_for_contact(g.m, g.zf, g.x, g.d_y, g.d_b, g.an, g.at, g.cbb, g.internal)
+    ball = np.broadcast_to(ball, g.d.shape)
+    pin = ball if pin is None else np.broadcast_to(pin, g.d.shape)
+    inv_m = f.ball_center_inv(g.m, g.zf, g.x, ball, g.an, g.at, g.internal)
+    d_m = f.ball_center_diameter(g.d_b, inv_m)
+    d_ball = f.ball_contact_diameter(g.d_b, inv_m, ball, g.cbb, g.internal)
     # the contact must lie on the involute (tan α_c > 0: past the base circle) between its ends, and an external
     # gear's ball must stand out of the tips (a ring's inside its bore) to be measured
-    t_c = f.tan_from_inv(inv_m, validate=False) - sgn * ball / (d_b * cbb)
-    ball_ok = (t_c > 0) & (d_ball > lo) & (d_ball < hi) & (d_m + ball > d_a if not internal else d_m - ball < d_a)
-    m_d_e = [f.dimension_over_balls(f.ball_center_diameter(d_b, f.ball_center_inv(m, zf, xe, ball, an, at, internal)),
-                                    ball, z, internal) for xe in x_e]
-    pin_sizes, pin_exact = _pins(m, z, zf, x, x_e, pin, d_b, an, at, beta, b, internal, notes)
-    s_n = f.normal_tooth_thickness(m, x, an, internal)
-    d_n = f.virtual_diameter(m, zf, cb, cbb)
-    h_a = sgn * (d_a - d) / 2.0
+    t_c = f.tan_from_inv(inv_m, validate=False) - g.sgn * ball / (g.d_b * g.cbb)
+    stands_out = (d_m - ball < g.d_a) if g.internal else (d_m + ball > g.d_a)
+    ball_ok = (t_c > 0) & (d_ball > g.lo) & (d_ball < g.hi) & stands_out
+    sizes = [f.dimension_over_balls(f.ball_center_diameter(g.d_b, f.ball_center_inv(
+        g.m, g.zf, xe, ball, g.an, g.at, g.internal)), ball, g.z, g.internal) for xe in g.x_e]
+    pins = _pins(g.m, g.z, g.zf, g.x, g.x_e, pin, g.d_b, g.an, g.at, g.beta, b, g.internal, notes)
+    return dict(ball_mm=ball, d_m=d_m, m_d=f.dimension_over_balls(d_m, ball, g.z, g.internal),
+                m_d_max=_largest_smallest(sizes)[0], m_d_min=_largest_smallest(sizes)[1], d_ball=d_ball,
+                ball_ok=ball_ok, pin_mm=pin, m_d_pin=pins[0], m_d_pin_max=_largest_smallest(pins[1:])[0],
+                m_d_pin_min=_largest_smallest(pins[1:])[1])
+
+
+def _thickness(g, a_sne, a_sni) -> dict:
+    """Normal and chordal tooth thickness (on the virtual gear) with their sizes from the allowances, and the
+    chordal height."""
+    s_n = f.normal_tooth_thickness(g.m, g.x, g.an, g.internal)
+    d_n = f.virtual_diameter(g.m, g.zf, g.sc.cos_beta, g.cbb)
     s_e = [s_n + a for a in (a_sne, a_sni)]
-    chords = [f.chordal_thickness(d_n, s) for s in [s_n] + s_e]
-
-    def pair(values):
-        return np.maximum(*values), np.minimum(*values)
-
-    fl = _floats if z.ndim == 0 else (lambda v: v)
-    return ToothMeasurements(
-        m_n=fl(m), z=fl(z), x=fl(x), beta_deg=beta, internal=internal, k=fl(k), w_k=fl(w),
-        w_k_max=fl(pair(w_e)[0]), w_k_min=fl(pair(w_e)[1]), d_wk=fl(d_wk), span_ok=fl(span_ok), face_width_min_mm=fl(face_min),
-        ball_mm=fl(ball), d_m=fl(d_m), m_d=fl(m_d), m_d_max=fl(pair(m_d_e)[0]), m_d_min=fl(pair(m_d_e)[1]),
-        d_ball=fl(d_ball), ball_ok=fl(ball_ok), pin_mm=fl(pin), m_d_pin=fl(pin_sizes[0]),
-        m_d_pin_max=fl(pair(pin_sizes[1:])[0]), m_d_pin_min=fl(pair(pin_sizes[1:])[1]), pin_exact=pin_exact,
-        s_n=fl(s_n), s_n_max=fl(pair(s_e)[0]), s_n_min=fl(pair(s_e)[1]), s_chord=fl(chords[0]),
-        s_chord_max=fl(pair(chords[1:])[0]), s_chord_min=fl(pair(chords[1:])[1]),
-        h_chord=fl(f.chordal_height(d_n, s_n, h_a, internal)), x_e_sne=fl(x_e[0]), x_e_sni=fl(x_e[1]),
-        a_sne=fl(a_sne), a_sni=fl(a_sni), d_ff=fl(d_ff), d_a=fl(d_a), d_y=fl(d_y), notes=tuple(notes))
+    chords = [f.chordal_thickness(d_n, s) for s in s_e]
+    return dict(s_n=s_n, s_n_max=_largest_smallest(s_e)[0], s_n_min=_largest_smallest(s_e)[1],
+                s_chord=f.chordal_thickness(d_n, s_n), s_chord_max=_largest_smallest(chords)[0],
+                s_chord_min=_largest_smallest(chords)[1],
+                h_chord=f.chordal_height(d_n, s_n, g.sgn * (g.d_a - g.d) / 2.0, g.internal))
 
 
 def _require_tooth(m, zf, x, d, d_b, d_a, sc, internal: bool) -> None:
@@ -354,7 +377,7 @@ def _choose_k(m, zf, x, d_y, d_b, an, at, cbb, lo, hi):
 
 
 def _pins(m, z, zf, x, x_e, pin, d_b, an, at, beta: float, b, internal: bool, notes: list):
-    """M_d over pins (nominal, from A_sne, from A_sni) and whether it is exact. A spur gear's pin is its ball.
+    """M_d over pins (nominal, from A_sne, from A_sni). A spur gear's pin is its ball (exact).
     On a helical gear the ball formula stands in for the pin (approximate: a cylinder parallel to the axis does
     not touch the helicoid as a ball does); for an odd z the pins sit diametrically opposite when the face is
     at least half an axial pitch wide, p_x/2 = π m_n/(2 sin β) (the helix correction), else cos(π/(2z))."""
@@ -369,7 +392,7 @@ def _pins(m, z, zf, x, x_e, pin, d_b, an, at, beta: float, b, internal: bool, no
     for xx in (x,) + tuple(x_e):
         d_mp = f.ball_center_diameter(d_b, f.ball_center_inv(m, zf, xx, pin, an, at, internal))
         out.append(f.dimension_over_balls(d_mp, pin, z_eff, internal))
-    return out, exact
+    return out
 
 
 def pair_measurements(pair, gear: int | None = None, **options):
