@@ -276,6 +276,15 @@ def test_pair_measurements_use_the_pair_tips_and_ring():
     assert p.measurements(gear=1).w_k == g1.w_k
 
 
+def test_span_does_not_depend_on_the_centre_distance_or_tip_shortening():
+    """Trap 10: W_k has no Δy term; shortened and full tips, any mate, the same span and balls."""
+    short = gd.GearPair(3, 12, 24, 0.6, 0.36).measurements(gear=1)
+    full = gd.GearPair(3, 12, 24, 0.6, 0.36, tip_shortening=False).measurements(gear=1)
+    other = gd.GearPair(3, 12, 40, 0.6, 1.0).measurements(gear=1)
+    assert short.w_k == full.w_k == other.w_k and short.m_d == full.m_d == other.m_d
+    assert short.h_chord < full.h_chord                      # only the tip-referenced chordal height moves
+
+
 def test_span_flags():
     ring = tooth_measurements(2, 60, 0.3, internal=True)
     assert not ring.span_ok and ring.notes
