@@ -295,7 +295,7 @@ def _balls(g, ball, pin, b, notes: list) -> dict:
     d_ball = f.ball_contact_diameter(g.d_b, inv_m, ball, g.cbb, g.internal)
     # the contact must lie on the involute (tan α_c > 0: past the base circle) between its ends, and an external
     # gear's ball must stand out of the tips (a ring's inside its bore) to be measured
-    t_c = f.tan_from_inv(inv_m, validate=False) - g.sgn * ball / (g.d_b * g.cbb)
+    t_c = f.tan_from_inv(inv_m, validate=False) - g.sgn * ball * g.cbb / g.d_b
     stands_out = (d_m - ball < g.d_a) if g.internal else (d_m + ball > g.d_a)
     ball_ok = (t_c > 0) & (d_ball > g.lo) & (d_ball < g.hi) & stands_out
     sizes = [f.dimension_over_balls(f.ball_center_diameter(g.d_b, f.ball_center_inv(

@@ -128,28 +128,41 @@ def dimension_over_balls(d_m, ball_mm, z, internal: bool = False):
 
 
 def ball_contact_diameter(d_b, inv_alpha_m, ball_mm, cos_beta_b, internal: bool = False):
-    """Diameter where the ball touches the flanks, mm: the flank normal through the ball centre is tangent to the
-    base circle, so in the transverse section tan α_c = tan α_Mt ∓ D_M/(d_b cos β_b) (− external, + internal) and
-    d_c = d_b √(1 + tan² α_c)."""
+    """Diameter where the ball touches the flanks, mm. The flank's normal through the ball centre lies in a plane
+    tangent to the base cylinder, inclined β_b to the transverse plane, so its transverse projection is tangent to
+    the base circle and D_M/2 along it projects to (D_M/2) cos β_b: tan α_c = tan α_Mt ∓ D_M cos β_b / d_b
+    (− external, + internal) and d_c = d_b √(1 + tan² α_c) (checked against the sphere tangent to the helicoid in
+    the tests; the ball sits off the contact's transverse plane)."""
     t_m = tan_from_inv(inv_alpha_m, validate=False)
     sign = 1.0 if internal else -1.0
-    t_c = t_m + sign * np.asarray(ball_mm) / (np.asarray(d_b) * cos_beta_b)
+    t_c = t_m + sign * np.asarray(ball_mm) * cos_beta_b / np.asarray(d_b)
     return _out(np.asarray(d_b) * np.hypot(1.0, t_c))
 
 
 def ball_for_contact(m_n, z, x, d_y, d_b, alpha_n, alpha_t, cos_beta_b, internal: bool = False):
     """The ball (or pin) diameter D_M that touches the flanks on the circle d_y, mm.
 
-    With u = D_M/(d_b cos β_b), t_c = tan α_y and A = inv α_Mt ∓ u the ball-free part of :func:`ball_center_inv`,
-    the two conditions tan α_Mt = t_c ± u and inv α_Mt = A ± u give atan(tan α_Mt) = t_c − A, so
-    u = ±(tan(t_c − A) − t_c) (+ external, − internal): closed form, no iteration.
+    With u = D_M/(d_b cos β_b), t_c = tan α_y, A the ball-free part of :func:`ball_center_inv` and s = +1
+    external, −1 internal: inv α_Mt = A + s u and tan α_Mt = t_c + s u cos² β_b (:func:`ball_contact_diameter`),
+    so atan(tan α_Mt) = t_c − A − s u sin² β_b and u solves tan(t_c − A − s u sin² β_b) = t_c + s u cos² β_b.
+    Spur (β_b = 0): u = s (tan(t_c − A) − t_c) in closed form (KHK Table 10-13's ideal pin); helical: Newton from
+    it (the residual is monotone in u).
     """
     z = np.asarray(z, dtype=float)
     sign = -1.0 if internal else 1.0
     a_free = inv(alpha_t) - sign * math.pi / (2.0 * z) + 2.0 * np.asarray(x) * math.tan(alpha_n) / z
     d_y = np.asarray(d_y, dtype=float)
     t_c = np.sqrt(np.maximum((d_y - d_b) * (d_y + d_b), 0.0)) / d_b
+    c2 = cos_beta_b * cos_beta_b
+    s2 = 1.0 - c2
     u = sign * (np.tan(t_c - a_free) - t_c)
+    for _ in range(50 if s2 > 0.0 else 0):
+        ang = t_c - a_free - sign * u * s2
+        res = np.tan(ang) - t_c - sign * u * c2
+        step = res / (sign * (s2 / np.cos(ang) ** 2 + c2))
+        u = u + step
+        if np.all(np.abs(step) <= 1e-16 * np.maximum(np.abs(u), 1e-300)):
+            break
     return _out(u * np.asarray(d_b) * cos_beta_b)
 
 

@@ -153,6 +153,23 @@ def test_ball_on_helical_gear_is_exact(m, z, x, beta):
 
     rc = brentq(gap, t.d_m / 2 - 0.3 * m, t.d_m / 2 + 0.3 * m, xtol=1e-14, rtol=1e-15)
     assert abs(2.0 * rc - t.d_m) < TOL * m
+    # where it touches: the closest point of the helicoid (an argmin, so only ~√ε·m sharp: 1e-6·m)
+    cx, cy = rc * axis[0], rc * axis[1]
+    best = {}
+
+    def section(zeta):
+        c, s = math.cos(zeta * twist), math.sin(zeta * twist)
+
+        def dist(u):
+            px, py = cut.flank(np.array([u]))
+            return math.sqrt((c * px[0] - s * py[0] - cx) ** 2 + (s * px[0] + c * py[0] - cy) ** 2 + zeta ** 2)
+        r = minimize_scalar(dist, bounds=bounds, method="bounded", options={"xatol": 1e-13})
+        best[zeta] = math.hypot(*np.ravel(cut.flank(np.array([r.x]))))
+        return r.fun
+    zeta = minimize_scalar(section, bounds=(-3 * m, 3 * m), method="bounded", options={"xatol": 1e-13}).x
+    section(zeta)
+    assert abs(2.0 * best[zeta] - t.d_ball) < 1e-6 * m
+    assert abs(t.d_ball - t.d_y) < 1e-9 * m                 # the default ball touches the aim circle
 
 
 @pytest.mark.parametrize("m, z, x", [(2, 60, 0.3), (1, 48, 0.0), (3, 71, 0.5)])
