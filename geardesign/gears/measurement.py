@@ -317,7 +317,20 @@ def _thickness(g, a_sne, a_sni) -> dict:
     return dict(s_n=s_n, s_n_max=_largest_smallest(s_e)[0], s_n_min=_largest_smallest(s_e)[1],
                 s_chord=f.chordal_thickness(d_n, s_n), s_chord_max=_largest_smallest(chords)[0],
                 s_chord_min=_largest_smallest(chords)[1],
-                h_chord=f.chordal_height(d_n, s_n, g.sgn * (g.d_a - g.d) / 2.0, g.internal))
+                h_chord=f.chordal_height(d_n, s_n, g.sgn * (g.d_a - g.d) / 2.0, g.internal, g.d_a, _tip_half_angle(g)))
+
+
+def _tip_half_angle(g):
+    """Half the tooth's angle on its tip circle (transverse), for the ring's chordal height."""
+    return _tip_half(g.zf, g.x, g.d_b, g.d_a, g.sc, g.internal)
+
+
+def _tip_half(zf, x, d_b, d_a, sc, internal: bool):
+    """s_a/d_a: s_t/d + inv α_t − inv α_a for an external tooth, s_t/d − inv α_t + inv α_a for a ring's."""
+    t_a = np.sqrt((d_a - d_b) * (d_a + d_b)) / d_b
+    s_d = (math.pi / 2.0 + (-2.0 if internal else 2.0) * x * sc.tan_n) / zf      # s_t / d
+    inv_t = float(inv(sc.alpha_t))
+    return s_d - inv_t + inv_from_tan(t_a) if internal else s_d + inv_t - inv_from_tan(t_a)
 
 
 def _require_tooth(m, zf, x, d, d_b, d_a, sc, internal: bool) -> None:
@@ -333,11 +346,7 @@ def _require_tooth(m, zf, x, d, d_b, d_a, sc, internal: bool) -> None:
         where, (z, xx, da, db) = first(low)
         raise GearDesignError(f"the tip circle d_a = {da:.6g} mm lies inside the base circle d_b = {db:.6g} mm "
                               f"(z = {z:g}, x = {xx:g}){where}: no involute to measure; raise x or give tip_diameter_mm")
-    inv_t = float(inv(sc.alpha_t))
-    t_a = np.sqrt((d_a - d_b) * (d_a + d_b)) / d_b
-    s_d = (math.pi / 2.0 + (-2.0 if internal else 2.0) * x * sc.tan_n) / zf      # s_t / d
-    half = s_d - inv_t + inv_from_tan(t_a) if internal else s_d + inv_t - inv_from_tan(t_a)
-    pointed = ~(half > 0.0)
+    pointed = ~(_tip_half(zf, x, d_b, d_a, sc, internal) > 0.0)
     if np.any(pointed):
         where, (z, xx, da, _) = first(pointed)
         raise GearDesignError(f"the tooth is pointed before its tip circle d_a = {da:.6g} mm (z = {z:g}, x = {xx:g})"

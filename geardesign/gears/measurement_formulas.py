@@ -183,15 +183,20 @@ def chordal_thickness(d_n, s_n):
     return _out(d_n * np.sin(np.asarray(s_n) / d_n))
 
 
-def chordal_height(d_n, s_n, h_a, internal: bool = False):
+def chordal_height(d_n, s_n, h_a, internal: bool = False, d_a=None, tip_half_angle=None):
     """Chordal height from the tip to the chord, mm: h̄ = h_a + (d_n/2)(1 − cos(s_n/d_n)) for an external gear
-    (h_a = (d_a − d)/2), h̄ = h_a − (d_n/2)(1 − cos(s_n/d_n)) for a ring (h_a = (d − d_a)/2: the chord lies
-    nearer its axis than the arc) (KHK/SDP-SI Table 10-1; ISO 21771:2007 §5.5). 1 − cos is taken as 2 sin²(·/2)
-    (no cancellation for large z).
+    (h_a = (d_a − d)/2; KHK/SDP-SI Table 10-1, ISO 21771:2007 §5.5). A ring's (h_a = (d − d_a)/2): the chord lies
+    nearer its axis than the arc, and the caliper's flat tongue rests on the two corners of the concave tip, which
+    lie (d_a/2)(1 − cos η_a) nearer the axis than the tip's middle (η_a the tooth's half-angle on the tip circle):
+    h̄ = h_a − (d_n/2)(1 − cos(s_n/d_n)) + (d_a/2)(1 − cos η_a). 1 − cos is taken as 2 sin²(·/2) (no cancellation
+    for large z).
 
     >>> round(chordal_height(120.0, 17.8918, 13.0), 4)     # SDP/SI T-81 Table 10-1: 13.6657
     13.6657
     """
     d_n = np.asarray(d_n, dtype=float)
     sag = d_n * np.sin(np.asarray(s_n) / (2.0 * d_n)) ** 2      # (d_n/2)(1 − cos ψ) = d_n sin²(ψ/2)
-    return _out(np.asarray(h_a) - sag if internal else np.asarray(h_a) + sag)
+    if not internal:
+        return _out(np.asarray(h_a) + sag)
+    corners = 0.0 if d_a is None else np.asarray(d_a) * np.sin(np.asarray(tip_half_angle) / 2.0) ** 2
+    return _out(np.asarray(h_a) - sag + corners)

@@ -216,6 +216,31 @@ def test_ring_span_over_spaces_equals_the_anvil_planes_in_the_shaper_generated_r
     assert abs(2.0 * half - t.w_k) < TOL * m
 
 
+@pytest.mark.parametrize("m, z, x, internal", [(10, 12, 0.3, False), (2, 31, -0.2, False), (2, 60, 0.3, True),
+                                              (3, 71, 0.5, True)])
+def test_chordal_thickness_and_height_on_the_generated_tooth(m, z, x, internal):
+    """The chord between the generated flanks on the reference circle, and its height over the caliper's tongue:
+    on the tip's middle for an external tooth, on the two tip corners of a ring's concave tip."""
+    t = tooth_measurements(m, z, x, internal=internal)
+    r = m * z / 2.0
+    if internal:
+        rack = BasicRack()
+        cut, t_a0, *_ = ring_mod._cutter_in_place(m, z, x, t.d_a / 2, ShaperCutter(), rack, rack.alpha, m, 1.0)
+
+        def point(u):
+            return np.ravel(ring_mod._mirror(z, *cut.envelope(*cut.flank(np.array([u])))))
+        u_r = brentq(lambda u: math.hypot(*point(u)) - r, 1e-9, t_a0 * (1 - 1e-12), xtol=1e-15, rtol=1e-15)
+        u_a = brentq(lambda u: math.hypot(*point(u)) - t.d_a / 2, 1e-9, t_a0 * (1 - 1e-12), xtol=1e-15, rtol=1e-15)
+        psi, eta_a = (math.atan2(*point(u)) for u in (u_r, u_a))
+        height = r * math.cos(psi) - t.d_a / 2 * math.cos(eta_a)
+    else:
+        cut = _Cutter.of(m, z, x, BasicRack())
+        psi = math.atan2(*np.ravel(cut.flank(cut.s_at_radius(np.array([r])))))
+        height = t.d_a / 2 - r * math.cos(psi)
+    assert abs(2 * r * math.sin(psi) - t.s_chord) < TOL * m
+    assert abs(height - t.h_chord) < TOL * m
+
+
 def test_default_ball_touches_the_aim_circle():
     for internal, z in ((False, 31), (True, 64)):
         t = tooth_measurements(2.5, z, 0.25, internal=internal, beta_deg=15)
