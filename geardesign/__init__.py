@@ -41,6 +41,10 @@ _NAMES = {
     "planetary_region": "shifts.planetary", "select_planetary_teeth": "shifts.planetary_teeth",
     "Drive": "drives.drive", "GearStage": "drives.stages", "ChainStage": "drives.stages",
     "GivenStage": "drives.stages", "Shaft": "drives.stages",
+    "tooth_measurements": "gears.measurement", "ToothMeasurements": "gears.measurement",
+    "pair_backlash": "gears.backlash", "Backlash": "gears.backlash", "x_sum_for_backlash": "gears.backlash",
+    "gost1643_jn_min": "gears.backlash", "flank_tolerances": "gears.tolerances", "FlankTolerances": "gears.tolerances",
+    "data_block": "gears.data_block",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {

@@ -74,8 +74,29 @@ def add_parser(sub):
                                    "of a spur or helical, external or internal pair.")
     add_pair_args(p)
     add_check_args(p)
+    p.add_argument("--measurements", action="store_true",
+                   help="also the measuring sizes of both gears (span, over balls, chordal; see geardesign measure)")
     add_json_flag(p)
     return p
+
+
+def _measurements(pair, as_json: bool):
+    """Both gears' measuring sizes: records for JSON, else a printed table (``--measurements``)."""
+    import pandas as pd
+
+    from .measure import ROWS
+
+    gears = pair.measurements()
+    if as_json:
+        return [g.to_dict() for g in gears]
+    frame = pd.DataFrame([(label, *(getattr(g, name) for g in gears), unit) for name, label, unit in ROWS],
+                         columns=["quantity", "gear 1", "gear 2", "unit"])
+    print_frame(frame, "\nMeasuring sizes (no allowances; geardesign measure gives them with allowances)",
+                float_format="{:.5f}")
+    for i, g in enumerate(gears, 1):
+        for note in g.notes:
+            print(f"note (gear {i}): {note}")
+    return None
 
 
 def run(args) -> int:
@@ -91,6 +112,7 @@ def run(args) -> int:
                       "face_width_mm": pair.face_width},
             "geometry": geo.to_dict(),
             "checks": frame_records(table[["check", "value", "limit", "margin", "ok"]]),
+            **({"measurements": _measurements(pair, True)} if args.measurements else {}),
         })
         return 0
     kind = (("internal " if pair.internal else "") + (f"helical (beta = {pair.beta_deg:g} deg) " if pair.beta_deg
@@ -102,6 +124,8 @@ def run(args) -> int:
     frame["unit"] = [GEOMETRY_FIELDS[k][0] for k in frame["quantity"]]
     print_frame(frame[["quantity", "value", "unit", "description"]], "\nGeometry", float_format="{:.8g}")
     print_frame(table[["check", "value", "limit", "margin", "ok", "label"]], "\nChecks (margin >= 0 holds)")
+    if args.measurements:
+        _measurements(pair, False)
     failed = table.loc[~table["ok"], "check"].tolist()
     print("\nAll checks hold." if not failed else f"\nFailing checks: {', '.join(failed)}")
     return 0

@@ -210,3 +210,15 @@ class GearPair:
         ``face_width_mm``, accuracy grade, lubricant, roughness, given factors, root method)."""
         from .strength import strength   # here: the chain loads the materials catalog (pandas)
         return strength(self, load, material, **options)
+
+    def measurements(self, gear: int | None = None, **options):
+        """The measuring sizes of gear 1, gear 2 or (``gear=None``) both as a tuple
+        (:func:`~geardesign.gears.measurement.tooth_measurements`, with this pair's module, shifts, rack, helix,
+        tip circles, face width and ring); ``options`` go to it (k, ball_mm, pin_mm, thickness_allowance_mm, ...)."""
+        from .measurement import pair_measurements
+        return pair_measurements(self, gear, **options)
+
+    def backlash(self, thickness_allowance1_mm=0.0, thickness_allowance2_mm=0.0, center_distance_allowance_mm=0.0):
+        """Least and most backlash from the allowances (:func:`~geardesign.gears.backlash.pair_backlash`)."""
+        from .backlash import pair_backlash
+        return pair_backlash(self, thickness_allowance1_mm, thickness_allowance2_mm, center_distance_allowance_mm)

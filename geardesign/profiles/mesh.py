@@ -75,15 +75,17 @@ def placed(pair, p1, p2, roll: float) -> list:
     return out
 
 
-def export_profiles(pair, path, overwrite: bool = False, roll_deg: float = 0.0, points: int = 200, cutter=None):
+def export_profiles(pair, path, overwrite: bool = False, roll_deg: float = 0.0, points: int = 200, cutter=None,
+                    data_block=None):
     """Both gears of a pair in mesh into one SVG, DXF or CSV file (by the suffix), in mm: closed
     outlines named gear1 and gear2 (SVG path ids, DXF layers, the CSV's ``outline`` column), and for
     a ring gear2_rim, its outer circle (the ring is the annulus between gear2_rim and gear2).
 
-    Returns the path written; an existing file is replaced only with ``overwrite``.
+    Returns the path written; an existing file is replaced only with ``overwrite``. ``data_block`` (DXF only): the
+    table of :func:`geardesign.gears.data_block.data_block`, or text lines, written beside the gears.
     """
     outlines = pair_outlines(pair, roll_deg, points, cutter)
     centre = "(0, -a_w)" if pair.mesh.internal else "(0, a_w)"
     title = (f"m = {pair.m:g} mm{pair.mesh.kind_text}, z1/z2 = {pair.z1}/{pair.z2}, x1/x2 = {pair.x1:.6g}/{pair.x2:.6g}, "
              f"a_w = {float(pair._geo['a_w']):.6g} mm (gear 1 about the origin, gear 2 about {centre})")
-    return write_outlines(outlines, path, overwrite, title, pair.m / 50)
+    return write_outlines(outlines, path, overwrite, title, pair.m / 50, data_block=data_block)

@@ -161,11 +161,11 @@ class ToothProfile(Result):
         from .export import gear_outline
         return [(name, *gear_outline(self))]
 
-    def _write(self, path, overwrite: bool, suffix: str):
+    def _write(self, path, overwrite: bool, suffix: str, data_block=None):
         from .export import write_outlines
         return write_outlines(self.outlines(), path, overwrite,
                               f"{self._kind} m = {self.m:g} mm, z = {self.z}, x = {self.x:g}", self.m / 50,
-                              suffixes=(suffix,))
+                              suffixes=(suffix,), data_block=data_block)
 
     def to_csv(self, path, overwrite: bool = False):
         """The whole gear's closed outline as ``outline,x_mm,y_mm`` rows (:mod:`geardesign.profiles.export`)."""
@@ -175,9 +175,10 @@ class ToothProfile(Result):
         """The whole gear's closed outline(s) as SVG paths in mm."""
         return self._write(path, overwrite, ".svg")
 
-    def to_dxf(self, path, overwrite: bool = False):
-        """The whole gear's closed outline(s) as DXF polylines in mm (ezdxf), one layer each."""
-        return self._write(path, overwrite, ".dxf")
+    def to_dxf(self, path, overwrite: bool = False, data_block=None):
+        """The whole gear's closed outline(s) as DXF polylines in mm (ezdxf), one layer each; ``data_block`` (the
+        table of :func:`geardesign.gears.data_block.data_block`, or text lines) as text beside them."""
+        return self._write(path, overwrite, ".dxf", data_block)
 
     def outline(self) -> tuple[np.ndarray, np.ndarray]:
         """The whole tooth from the left space middle to the right one (the left flank mirrored)."""

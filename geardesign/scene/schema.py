@@ -105,7 +105,8 @@ def _gear_schema() -> dict:
             "x1": _F(lo=-X_ABS_MAX, hi=X_ABS_MAX), "x2": _F(lo=-X_ABS_MAX, hi=X_ABS_MAX),
             "a_w": _F(lo=0.0, lo_open=True), "tip_shortening": _Key("bool", default=True),
             "bounds": _Key("floats", default=DEFAULT_BOUNDS, lo=-X_WINDOW_LIMIT, hi=X_WINDOW_LIMIT, length=2),
-            "mesh_drawing": _Key("bool", default=False), **_shift_keys()}
+            "mesh_drawing": _Key("bool", default=False), "data_block": _Key("bool", default=False),
+            "accuracy_class": _I(lo=1, hi=11), **_shift_keys()}
 
 
 def _teeth_schema() -> dict:

@@ -106,6 +106,21 @@ def _run_gear(rep: SceneReport, g: dict):
         drawn += [("given", *given)] if given else []
         for tag, x1, x2 in drawn:
             _add_mesh_drawing(rep, GearPair(g["module"], g["z1"], g["z2"], x1, x2, **pair_kw), tag)
+    if g["data_block"]:
+        pairs = ([("optimum", res.x1, res.x2)] if res.success else []) + ([("given", *given)] if given else [])
+        for tag, x1, x2 in pairs:
+            _add_data_blocks(rep, GearPair(g["module"], g["z1"], g["z2"], x1, x2, **pair_kw), tag, g.get("accuracy_class"))
+
+
+def _add_data_blocks(rep: SceneReport, pair, tag: str, accuracy_class):
+    """The drawing's data block of both gears of one pair (geardesign.gears.data_block), as tables."""
+    from ..gears.data_block import data_block
+
+    rep.markdown += [f"### Data blocks of the {tag} pair (x1/x2 = {pair.x1:.4f}/{pair.x2:.4f})", ""]
+    for gear in (1, 2):
+        table = data_block(pair, gear, accuracy_class)
+        rep.tables[f"gear_data_block_{tag}_{gear}"] = table
+        rep.markdown += [f"Gear {gear}:", "", md_table(table), ""]
 
 
 def _add_mesh_drawing(rep: SceneReport, pair, tag: str):

@@ -80,3 +80,72 @@ def test_write_outlines_keeps_names_and_points(tmp_path):
     with pytest.raises(GearDesignError, match="overwrite"):
         write_outlines([a], path)
     assert path.read_text().splitlines() == lines
+
+
+# --- issue 27 (the data block) and issue 29 item 3.7 (DXF linear in the points; a size bound) ---------------------
+
+
+def test_dxf_holds_every_point_once_in_one_polyline_per_outline(tmp_path):
+    """The DXF is written from one array per outline (ezdxf's point-at-a-time append was quadratic); the points
+    read back are the outline's, bit for bit."""
+    import ezdxf
+
+    from geardesign.profiles.export import gear_outline
+
+    p = tooth_profile(2, 25, 0.3)
+    x, y = gear_outline(p)
+    p.to_dxf(tmp_path / "g.dxf")
+    polys = list(ezdxf.readfile(tmp_path / "g.dxf").modelspace().query("LWPOLYLINE"))
+    assert len(polys) == 1 and polys[0].closed
+    pts = np.array([(v[0], v[1]) for v in polys[0].get_points("xy")])
+    assert pts.shape == (x.size - 1, 2)
+    assert np.array_equal(pts[:, 0], x[:-1]) and np.array_equal(pts[:, 1], y[:-1])
+
+
+def test_gear_outline_is_the_tooth_turned_by_the_angular_pitch():
+    from geardesign.profiles.export import gear_outline
+
+    p = tooth_profile(3, 7, 0.2, points=20)
+    xs, ys = p.outline()
+    x, y = gear_outline(p)
+    n = xs.size - 1
+    for k in range(7):
+        tx, ty = turned(xs[:-1], ys[:-1], -2 * math.pi * k / 7)
+        assert np.allclose(x[k * n:(k + 1) * n], tx, rtol=0, atol=1e-12) and np.allclose(y[k * n:(k + 1) * n], ty, atol=1e-12)
+
+
+@pytest.mark.parametrize("suffix", [".svg", ".csv", ".dxf"])
+def test_exports_beyond_the_point_bound_are_refused_before_writing(tmp_path, suffix):
+    from geardesign.profiles.export import EXPORT_POINTS_MAX
+    from geardesign.profiles.ring import ring_profile
+
+    ring = ring_profile(10, 100000, -0.4, points=8)      # issue 29: 6.4 million points
+    with pytest.raises(GearDesignError, match=f"at most {EXPORT_POINTS_MAX:,}"):
+        getattr(ring, "to_" + suffix[1:])(tmp_path / ("r" + suffix))
+    assert list(tmp_path.iterdir()) == []
+    too_many = [("a", np.zeros(EXPORT_POINTS_MAX + 1), np.zeros(EXPORT_POINTS_MAX + 1))]
+    with pytest.raises(GearDesignError, match="outline points"):
+        write_outlines(too_many, tmp_path / ("w" + suffix))
+
+
+def test_data_block_is_written_beside_the_gear_in_the_dxf(tmp_path):
+    import ezdxf
+
+    import geardesign as gd
+    from geardesign.gears.data_block import data_block, data_block_lines
+
+    pair = gd.GearPair(3, 12, 24, 0.6, 0.36)
+    table = data_block(pair, 1, 7, thickness_allowance_mm=(-0.05, -0.1))
+    p1 = gd.pair_profiles(pair)[0]
+    p1.to_dxf(tmp_path / "g.dxf", data_block=table)
+    msp = ezdxf.readfile(tmp_path / "g.dxf").modelspace()
+    texts = [e for e in msp.query("TEXT") if e.dxf.layer == "data_block"]
+    assert [e.dxf.text for e in texts] == data_block_lines(table)
+    right = max(v[0] for v in list(msp.query("LWPOLYLINE"))[0].get_points("xy"))
+    assert all(e.dxf.insert[0] > right for e in texts)
+    gd.export_profiles(pair, tmp_path / "pair.dxf", data_block=["line one", "line two"])
+    assert [e.dxf.text for e in ezdxf.readfile(tmp_path / "pair.dxf").modelspace().query("TEXT")] == ["line one", "line two"]
+    with pytest.raises(GearDesignError, match="DXF"):
+        gd.export_profiles(pair, tmp_path / "pair.svg", data_block=["x"])
+    with pytest.raises(GearDesignError, match="data_block"):
+        p1.to_dxf(tmp_path / "h.dxf", data_block=42)
