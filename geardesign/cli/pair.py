@@ -3,10 +3,9 @@ from __future__ import annotations
 
 from ..gears.checks import DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN
 from ..errors import GearDesignError
-from ..gears.geometry import GEOMETRY_FIELDS
 from ..gears.pair import GearPair
 from ..gears.rack import BasicRack
-from .output import add_json_flag, frame_records, print_frame, print_json
+from .output import add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict
 
 
 def add_rack_args(p) -> None:
@@ -34,8 +33,9 @@ def add_limit_args(p) -> None:
 def add_pair_args(p) -> None:
     """The pair: module, tooth counts, shifts or a housing centre distance, tip shortening, rack."""
     p.add_argument("--module", "-m", type=float, required=True, help="module, mm")
-    p.add_argument("--z1", type=float, required=True, help="teeth of gear 1")
-    p.add_argument("--z2", type=float, required=True, help="teeth of gear 2")
+    p.add_argument("--z1", type=float, required=True, help="number of teeth of gear 1 (the pinion), a whole number >= 3")
+    p.add_argument("--z2", type=float, required=True,
+                   help="number of teeth of gear 2 (the wheel; with --internal the ring, z2 > z1)")
     p.add_argument("--x1", type=float, default=None, help="profile shift of gear 1 (0)")
     p.add_argument("--x2", type=float, default=None, help="profile shift of gear 2 (0)")
     p.add_argument("--center-distance", type=float, default=None, metavar="A",
@@ -89,11 +89,24 @@ def pair_from_args(args) -> tuple[GearPair, float | None]:
 def add_parser(sub):
     p = sub.add_parser("pair", help="geometry and checks of one gear pair",
                        description="Geometry (ISO 21771; GOST 16532-70 external, GOST 19274-73 internal) and checks "
-                                   "of a spur or helical, external or internal pair.")
+                                   "of a spur or helical, external or internal pair: the verdict first, then the "
+                                   "checks, then the geometry in the handbook's layout (gear 1 | gear 2). "
+                                   "Exit status 0 when every check holds, 1 when one fails (the first line names "
+                                   "it), 2 on bad input.")
     add_pair_args(p)
     add_limit_args(p)
     add_json_flag(p)
     return p
+
+
+def describe(pair, shorten: bool) -> str:
+    """The pair in one line: kind, module, tooth counts, shifts, rack."""
+    rack = pair.rack
+    kind = (("internal " if pair.internal else "") + (f"helical (beta = {pair.beta_deg:g} deg) " if pair.beta_deg
+                                                      else "spur ")).capitalize()
+    return (f"{kind}pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1 = {pair.x1:.6g}, x2 = {pair.x2:.6g}, "
+            f"rack {rack.alpha_deg:g} deg / {rack.ha:g} / {rack.c:g} / {rack.rho_f:g}"
+            f"{'' if shorten else ', no tip shortening'}")
 
 
 def run(args) -> int:
@@ -102,8 +115,10 @@ def run(args) -> int:
     geo = pair.geometry()
     table = pair.checks(eps_alpha_min=args.eps_alpha_min, sa_min=args.sa_min, housing_a_w=housing,
                         eps_gamma_min=args.eps_gamma_min)
+    failed = table.loc[~table["ok"], "check"].tolist()
     if args.json:
         print_json({
+            "ok": not failed, "failing_checks": failed,
             "input": {"m": pair.m, "z1": pair.z1, "z2": pair.z2, "x1": pair.x1, "x2": pair.x2,
                       "alpha_deg": rack.alpha_deg, "ha": rack.ha, "c": rack.c, "rho_f": rack.rho_f,
                       "tip_shortening": shorten, "beta_deg": pair.beta_deg, "internal": pair.internal,
@@ -111,16 +126,9 @@ def run(args) -> int:
             "geometry": geo.to_dict(),
             "checks": frame_records(table[["check", "value", "limit", "margin", "ok"]]),
         })
-        return 0
-    kind = (("internal " if pair.internal else "") + (f"helical (beta = {pair.beta_deg:g} deg) " if pair.beta_deg
-                                                      else "spur ")).capitalize()
-    print(f"{kind}pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1 = {pair.x1:.6g}, x2 = {pair.x2:.6g}, "
-          f"rack {rack.alpha_deg:g} deg / {rack.ha:g} / {rack.c:g} / {rack.rho_f:g}"
-          f"{'' if shorten else ', no tip shortening'}")
-    frame = geo.to_frame()
-    frame["unit"] = [GEOMETRY_FIELDS[k][0] for k in frame["quantity"]]
-    print_frame(frame[["quantity", "value", "unit", "description"]], "\nGeometry", float_format="{:.8g}")
+        return 1 if failed else 0
+    print(describe(pair, shorten))
+    print_verdict(failed, check_details(table))
     print_frame(table[["check", "value", "limit", "margin", "ok", "label"]], "\nChecks (margin >= 0 holds)")
-    failed = table.loc[~table["ok"], "check"].tolist()
-    print("\nAll checks hold." if not failed else f"\nFailing checks: {', '.join(failed)}")
-    return 0
+    print_frame(geo.to_table(helical=bool(pair.beta_deg)), "\nGeometry", float_format="{:.8g}")
+    return 1 if failed else 0

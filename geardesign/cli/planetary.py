@@ -14,7 +14,9 @@ def add_parser(sub):
     p = sub.add_parser("planetary", help="planetary set: coaxial shifts of sun, planets and ring; tooth counts",
                        description="A simple planetary set (sun, N planets, ring). With --x-sun/--x-planet: "
                                    "check those shifts (the ring's from coaxiality unless --x-ring). Without: the "
-                                   "best coaxial shifts. With --ratio: tooth counts for the ratio, each solved.")
+                                   "best coaxial shifts. With --ratio: tooth counts for the ratio, each solved. "
+                                   "Exit status 0 when the set passes every check (an optimum or a feasible row "
+                                   "exists), 1 when a check fails or nothing is feasible, 2 on bad input.")
     p.add_argument("--module", "-m", type=float, required=True, help="module, mm")
     p.add_argument("--planets", type=int, required=True, help="number of planets N")
     p.add_argument("--z-sun", type=int, default=None)
@@ -117,7 +119,7 @@ def _check(args) -> int:
           f"a_w = {s.a_w:.8g} mm (planet-ring {s.a_w_planet_ring:.8g} mm), ratio {s.ratio:.6g} ({s.arrangement})")
     print_frame(table[["check", "margin", "ok", "value", "limit"]])
     failed = table.loc[~table["ok"], "check"].tolist()
-    print("All checks hold." if ok else f"Failing checks: {', '.join(failed)}")
+    print("OK: all checks hold." if ok else f"FAILS: {', '.join(failed)}")
     return 0 if ok else 1
 
 
@@ -141,7 +143,7 @@ def _optimize(args) -> int:
                          r.x_ring, arrangement=args.arrangement, **kw)
         _save(args.drawing, plot_planetary(s), args.overwrite)
     if args.json:
-        print_json(r.to_dict())
+        print_json({"ok": bool(r.success), **r.to_dict()})
         return 0 if r.success else 1
     print(repr(r))
     if r.success:
@@ -161,7 +163,7 @@ def _teeth(args) -> int:
                                  checks=_checks(args), method=args.method, rack=rack_from_args(args),
                                  beta_deg=args.beta)
     if args.json:
-        print_json(sel.to_dict() | {"message": sel.message})
+        print_json({"ok": bool(sel.found)} | sel.to_dict() | {"message": sel.message})
         return 0 if sel.found else 1
     print(sel.message)
     cols = ["z_sun", "z_planet", "z_ring", "standard", "ratio", "feasible", "x_sun", "x_planet", "x_ring", "a_w",

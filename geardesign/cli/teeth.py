@@ -31,7 +31,8 @@ def add_parser(subparsers):
         "teeth", help="tooth counts for a ratio, with the best profile shifts for each, ranked",
         description="Enumerate every z1/z2 within the ratio tolerance, solve the profile shifts of each for the "
                     "objective (with the centre distance fixed, the x-sum follows from it), and rank: feasible "
-                    "first, then ratio error, first-series module, objective, smaller tooth sum.")
+                    "first, then ratio error, first-series module, objective, smaller tooth sum. Exit status 0 "
+                    "when a feasible pair exists, 1 when no row is feasible, 2 on bad input.")
     p.add_argument("--ratio", type=float, required=True, help="gear ratio u = z2/z1 (>= 1)")
     p.add_argument("--module", "-m", default=None, metavar="MM",
                    help="module in mm, or 'series' for the ISO 54 / GOST 9563 modules (m = 1 when omitted "
@@ -80,7 +81,7 @@ def run(args) -> int:
             raise GearDesignError(f"--out {args.out!r}: cannot write ({exc.strerror})") from None
     top = sel.table if args.top == 0 else sel.table.head(args.top)
     if args.json:
-        out = sel.to_dict()
+        out = {"ok": sel.best is not None, **sel.to_dict()}
         out["table"] = frame_records(top)
         out["skipped"] = frame_records(sel.skipped)
         print_json(out)
