@@ -49,7 +49,8 @@ def add_parser(sub):
                         "the objective picks the split")
     p.add_argument("--x1", type=float, default=None, help="a proposed x1 to check and mark (with --x2)")
     p.add_argument("--x2", type=float, default=None, help="a proposed x2 to check and mark (with --x1)")
-    p.add_argument("--no-tip-shortening", action="store_true")
+    p.add_argument("--no-tip-shortening", action="store_true",
+                   help="keep d_a = d + 2(h_a* + x)m instead of shortening tips by dy*m")
     add_kind_args(p)
     add_output_file(p, "--plot", "PNG", "the blocking contour")
     add_rack_args(p)

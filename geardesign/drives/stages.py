@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import GearDesignError
+from ..results import compact_repr
 from ..validate import one_number, require_count, require_range
 
 __all__ = ["GivenStage", "GearStage", "ChainStage", "Shaft", "EFFICIENCY_RANGE", "GIVEN_RATIO_RANGE",
@@ -89,6 +90,8 @@ class GivenStage:
 
     kind = "given"
 
+    __repr__ = compact_repr     # only what differs from the defaults
+
     def __post_init__(self):
         object.__setattr__(self, "ratio", one_number("ratio", require_range("ratio", self.ratio, *GIVEN_RATIO_RANGE)))
         object.__setattr__(self, "efficiency", _efficiency(self.efficiency))
@@ -133,6 +136,8 @@ class GearStage:
     name: str = "gear"
 
     kind = "gear"
+
+    __repr__ = compact_repr     # only what differs from the defaults
 
     def __post_init__(self):
         from ..gears.geometry import require_module
@@ -236,6 +241,8 @@ class ChainStage:
 
     kind = "chain"
 
+    __repr__ = compact_repr     # only what differs from the defaults
+
     def __post_init__(self):
         from .chain.candidates import RATIO_RANGE, validate_inputs
 
@@ -313,6 +320,8 @@ class Shaft:
     allowable_shear_mpa: float | None = None
     end: str = "rounded"
     max_keys: int = 2
+
+    __repr__ = compact_repr     # only what differs from the defaults
 
     def __post_init__(self):
         from . import key

@@ -54,6 +54,13 @@ class SceneReport(Result):
                 out.append("drive: fails")
         return out
 
+    def __repr__(self) -> str:
+        lines = [f"SceneReport({self.scene.title!r}: {len(self.tables)} table(s), {len(self.figures)} figure(s), "
+                 f"{self.time_s:.2f} s; {'every design passes' if not self.failures else 'FAILS'})"]
+        lines += [f"  {line}" for line in self.summary[:10]]
+        lines += [f"  fails: {f}" for f in self.failures[:3]]
+        return "\n".join(lines)
+
     def to_dict(self) -> dict:
         return {"ok": not self.failures, "failures": self.failures, "status": self.status, "scene": self.scene.path, "title": self.scene.title, "summary": list(self.summary),
                 "tables": sorted(f"{k}.csv" for k in self.tables), "figures": sorted(f"{k}.png" for k in self.figures),

@@ -134,7 +134,13 @@ class TeethSelection(RankedTable):
         ties = same_err[np.isclose(same_err["objective"], b["objective"], rtol=1e-9, atol=1e-12)]
         if len(ties) > 1:
             text += f" (tied with {len(ties) - 1} other(s); the smaller tooth sum wins)"
-        return text + "."
+        text += "."
+        zsum = same_err["z1"] + same_err["z2"]
+        if self.a_w is None and self.objective == "max_x_sum" and len(same_err) > 1 and b["z1"] + b["z2"] == zsum.max():
+            # with a free centre distance the x-sum the checks allow grows with the tooth counts
+            text += (" With a_w free, max_x_sum grows with the tooth count, so the largest pair in the range wins; "
+                     "for a compact pair fix the housing (a_w=...), cap z1 + z2 (z_sum_max=...) or narrow z1_range.")
+        return text
 
     def best_per_module(self) -> pd.DataFrame:
         """The best feasible row of each module, in ranking order (read with ``m="series"``)."""
