@@ -156,7 +156,16 @@ def checkout(tmp_path_factory):
     package_root = str(Path(geardesign.__file__).resolve().parents[1])
     env = dict(os.environ, PATH=f"{bin_dir}{os.pathsep}{os.environ.get('PATH', '')}", MPLBACKEND="Agg",
                PYTHONPATH=package_root + os.pathsep + os.environ.get("PYTHONPATH", ""), COLUMNS="100")
-    return dest, env
+    copies = {}
+
+    def for_doc(path: Path) -> tuple[Path, dict]:
+        """The doc's own copy of the checkout (its blocks share it; other docs' outputs never collide)."""
+        if path not in copies:
+            copies[path] = tmp_path_factory.mktemp("doc") / "checkout"
+            shutil.copytree(dest, copies[path], symlinks=True)
+        return copies[path], env
+
+    return for_doc
 
 
 def _commands(block: str):
@@ -189,7 +198,7 @@ def _shell_blocks():
 def test_shell_block_runs(path, content, skip, checkout):
     if skip:
         pytest.skip(f"marked in the doc: {skip}")
-    cwd, env = checkout
+    cwd, env = checkout(path)
     for command, expected in _commands(content):
         proc = subprocess.run(["bash", "-c", command], cwd=cwd, env=env, capture_output=True, text=True,
                               timeout=COMMAND_TIMEOUT_S)
@@ -210,7 +219,7 @@ def test_python_blocks_run(path, checkout, monkeypatch):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    cwd, _ = checkout
+    cwd, _ = checkout(path)
     monkeypatch.chdir(cwd)
     globs = {"__name__": "__doctest__"}
     parser = doctest.DocTestParser()
@@ -224,6 +233,7 @@ def test_python_blocks_run(path, checkout, monkeypatch):
                 runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
                 out = []
                 runner.run(test, out=out.append, clear_globs=False)
+                globs.update(test.globs)          # the next block sees this one's names (DocTest copies)
                 assert runner.failures == 0, f"{name}:\n" + "".join(out)
             else:
                 exec(compile(content, name, "exec"), globs)
@@ -258,7 +268,7 @@ def _steps(content: str):
 def test_transcript_matches_the_program(path, content, skip, checkout):
     if skip:
         pytest.skip(f"marked in the doc: {skip}")
-    cwd, env = checkout
+    cwd, env = checkout(path)
     for command, shown in _steps(content):
         proc = subprocess.run(["bash", "-c", command], cwd=cwd, env=env, capture_output=True, text=True,
                               timeout=COMMAND_TIMEOUT_S)

@@ -70,7 +70,7 @@ def check_details(table: pd.DataFrame) -> dict:
     out = {}
     for _, row in table.loc[~table["ok"]].iterrows():
         try:
-            out[row["check"]] = f"value {float(row['value']):.4g}, limit {float(row['limit']):.4g}"
+            out[row["check"]] = f"value {float(row['value']) + 0.0:.4g}, limit {float(row['limit']) + 0.0:.4g}"
         except (TypeError, ValueError):
             out[row["check"]] = ""
     return out
