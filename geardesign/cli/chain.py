@@ -9,7 +9,7 @@ from __future__ import annotations
 from ..drives import chain
 from ..catalogs.tables import CHAIN_CATALOGS
 from ..errors import GearDesignError
-from .output import add_json_flag, frame_records, print_frame, print_json
+from .output import add_json_flag, frame_records, print_frame, print_json, print_wrapped
 
 SHOW = ["rank", "designation", "pitch_mm", "strands", "z1", "z2", "links", "center_distance_mm", "speed_m_s",
         "force_n", "pressure_mpa", "allowable_pressure_mpa", "safety_factor", "allowable_safety_factor",
@@ -91,13 +91,13 @@ def run(args) -> int:
         out["candidates"] = frame_records(top.drop(columns=[c for c in ("edition", "source", "note") if c in top]))
         print_json(out)
     else:
-        print(result.message)
+        print_wrapped(result.message)
         if result.pitch_estimate_mm:
-            print("pitch estimate (starting point): " + ", ".join(
+            print_wrapped("pitch estimate (starting point): " + ", ".join(
                 f"{k} strand{'s' if k > 1 else ''} t >= {v:.2f} mm" for k, v in result.pitch_estimate_mm.items()))
         if result.best is not None:
             b = result.best
-            print(f"sprockets: pitch diameters {b['sprocket1_pitch_diameter_mm']:.2f} / "
+            print_wrapped(f"sprockets: pitch diameters {b['sprocket1_pitch_diameter_mm']:.2f} / "
                   f"{b['sprocket2_pitch_diameter_mm']:.2f} mm, tip {b['sprocket1_tip_diameter_mm']:.2f} / "
                   f"{b['sprocket2_tip_diameter_mm']:.2f} mm, root {b['sprocket1_root_diameter_mm']:.2f} / "
                   f"{b['sprocket2_root_diameter_mm']:.2f} mm")
@@ -108,5 +108,5 @@ def run(args) -> int:
             print()
             print_frame(result.blocking, title="what stops each chain family (best candidate of each):")
         for note in result.notes:
-            print(f"note: {note}")
+            print_wrapped(f"note: {note}")
     return 0 if result.success else 1

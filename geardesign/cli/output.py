@@ -61,7 +61,7 @@ def print_verdict(failed: list, details: dict | None = None, what: str = "checks
         print(f"OK: all {what} hold.")
         return
     details = details or {}
-    print("FAILS: " + "; ".join(f"{name}{' (' + details[name] + ')' if details.get(name) else ''}"
+    print_wrapped("FAILS: " + "; ".join(f"{name}{' (' + details[name] + ')' if details.get(name) else ''}"
                                 for name in failed))
 
 

@@ -779,7 +779,9 @@ class Geometry:
 
     def __repr__(self) -> str:
         if not self.is_scalar:
-            return f"Geometry(<{np.size(self.a)} designs; fields: {', '.join(self.names)}>)"
+            names = self.names
+            return (f"Geometry(<{np.size(self.a)} designs, {len(names)} fields: {', '.join(names[:8])}"
+                    f"{', ...' if len(names) > 8 else ''}>; g.to_frame() a row per design, g['a_w'] one field)")
         from .quantities import summary_lines
 
         return "\n".join([f"Geometry of one pair ({len(self.names)} fields: g.to_table() lays them out, "

@@ -21,6 +21,8 @@ stronger module); finally the smaller module.
 """
 from __future__ import annotations
 
+import textwrap
+
 import math
 import time
 from dataclasses import dataclass, field
@@ -163,7 +165,7 @@ class TeethSelection(RankedTable):
 
     def __repr__(self) -> str:
         cols = ["z1", "z2", "ratio", "module_mm", "a_w_mm", "x1", "x2", "eps_alpha", "objective", "feasible"]
-        head = self.table[cols].head(8)
+        head = self.table[cols].head(5)
         with pd.option_context("display.width", 160, "display.max_columns", 20):
             body = head.to_string(index=False, float_format=lambda v: f"{v:.5g}")
         return "\n".join([
@@ -171,7 +173,7 @@ class TeethSelection(RankedTable):
             f"m = {self.m}, a_w = {self.a_w}, method {self.method})",
             f"  {len(self.table)} candidates solved ({int(self.table['feasible'].sum()) if len(self.table) else 0} "
             f"feasible), {len(self.skipped)} skipped, {self.time_s:.2f} s",
-            f"  choice: {self.choice}",
+            textwrap.fill(f"choice: {self.choice}", 110, initial_indent="  ", subsequent_indent="    "),
             body,
         ])
 
