@@ -278,3 +278,108 @@ def test_transcript_matches_the_program(path, content, skip, checkout):
             pattern = ".*".join(re.escape(part) for part in " ".join(want.split()).split("..."))
             assert any(re.fullmatch(pattern, got) for got in printed), (
                 f"{_rel(path)}: `{command}` does not print {want!r}; it prints:\n{proc.stdout[:3000]}")
+
+
+# --- (c) figures quoted in prose and in code comments, against the program ------------------------
+#
+# Each entry: the page, the text it quotes, and how the program produces that text. A figure that drifts
+# fails here; a page that stops quoting it fails here too (then drop the entry). Figures in doctests and
+# transcripts are checked above; times live in docs/performance.md only.
+
+
+def _engine():
+    import geardesign as gd
+
+    return gd.GearPair(8, 17, 26, 0.898, 0.517)
+
+
+def _atlas():
+    import geardesign as gd
+
+    if not hasattr(_atlas, "df"):
+        _atlas.df = gd.shift_atlas(range(8, 41), range(8, 121), objective="max_x_sum")
+    return _atlas.df
+
+
+def _atlas_active(text):
+    df = _atlas()
+    return str(int(df.loc[df["feasible"], "active"].value_counts()[text]))
+
+
+def _chain_seed002(field, fmt):
+    import geardesign as gd
+
+    r = gd.chain.design(torque_nm=380, n1_rpm=120, ratio=1, z1=13, k_e=2.148, allowable_pressure_mpa=29,
+                        strands=(1, 2), objective="min_sprocket_diameter")
+    return format(float(r.best[field]), fmt)
+
+
+def _key_seed002():
+    import geardesign as gd
+
+    k = gd.key.select(d_mm=60, torque_nm=503.129, hub_length_mm=50, allowable_crush_mpa=300,
+                      allowable_shear_mpa=120)
+    return (f"one key {k.b_mm:g}x{k.h_mm:g}x{k.length_mm:g}", f"t1 = {k.t1_mm:g} mm in the shaft, t2 = {k.t2_mm:g} mm",
+            f"crush {k.crush_mpa:.1f}/300 MPa, shear {k.shear_mpa:.1f}/120 MPa")
+
+
+FIGURES = [
+    ("docs/internal_helical.md", "# 13.1683 mm",
+     lambda: f"# {__import__('geardesign').GearPair(3, 16, 24, 0.0, 0.5, internal=True).geometry().a_w:.6g} mm"),
+    ("docs/planetary.md", "# 56.79992, 56.80008 mm (printed a = 56.8), 6.14286", lambda: (lambda s: (
+        f"# {s.a_w:.7g}, {s.a_w_planet_ring:.7g} mm (printed a = 56.8), {s.ratio:.6g}"))(
+        __import__("geardesign").PlanetarySet(1.75, 21, 43, 108, 3, x_sun=0.438, x_planet=0.0426, x_ring=0.0))),
+    ("docs/planetary.md", "# -0.2283, 0.8262, 0.8894, 56.9847 mm", lambda: (lambda r: (
+        f"# {r.x_sun:.4f}, {r.x_planet:.4f}, {r.x_ring:.4f}, {r.a_w:.4f} mm"))(
+        __import__("geardesign").optimize_planetary_shifts(21, 43, 108, 3, m=1.75, objective="max_eps_alpha"))),
+    ("docs/drives.md", "one key 18x11x45", lambda: _key_seed002()[0]),
+    ("docs/drives.md", "t1 = 7 mm in the shaft, t2 = 4.4 mm", lambda: _key_seed002()[1]),
+    ("docs/drives.md", "crush 155.3/300 MPa, shear 34.5/120 MPa", lambda: _key_seed002()[2]),
+    ("docs/drives.md", "# 504.0 N·m",
+     lambda: f"# {__import__('geardesign').key.capacity(60, 32, 300, 120)['torque_nm']:.1f} N·m"),
+    ("docs/drives.md", "p = 28.1 MPa against [p] = 29 MPa (margin +0.031)",
+     lambda: f"p = {_chain_seed002('pressure_mpa', '.1f')} MPa against [p] = 29 MPa "
+             f"(margin {_chain_seed002('margin_pressure', '+.3f')})"),
+    ("docs/drives.md", "d = 132.67 mm, D_e = 144.69 mm",
+     lambda: f"d = {_chain_seed002('sprocket1_pitch_diameter_mm', '.2f')} mm, "
+             f"D_e = {_chain_seed002('sprocket1_tip_diameter_mm', '.2f')} mm"),
+    ("docs/studies.md", "p = 28.11 MPa against [p] = 29 (margin +0.031)",
+     lambda: f"p = {_chain_seed002('pressure_mpa', '.2f')} MPa against [p] = 29 "
+             f"(margin {_chain_seed002('margin_pressure', '+.3f')})"),
+    ("docs/studies.md", "| 0.038859 (decimal slip)", lambda: f"| {_engine().geometry().inv_alpha_w:.5g} (decimal slip)"),
+    ("docs/studies.md", "| 27.126° |", lambda: f"| {_engine().geometry().alpha_w_deg:.3f}° |"),
+    ("docs/studies.md", "**1.1532 < 1.2:", lambda: f"**{_engine().geometry().eps_alpha:.4f} < 1.2:"),
+    ("docs/studies.md", "0.3603 / 0.9768 (on ε_α = 1.2; a_w = 181.13 mm)", lambda: (lambda r: (
+        f"{r.x1:.4f} / {r.x2:.4f} (on ε_α = {r.eps_alpha:.1f}; a_w = {r.a_w:.2f} mm)"))(
+        __import__("geardesign").optimize_shifts(17, 26, m=8))),
+    ("docs/studies.md", "d(x1 + x2)/d(ε_α,min) = −3.8685", lambda: (
+        f"d(x1 + x2)/d(ε_α,min) = {__import__('geardesign').optimize_shifts(17, 26).sensitivity['contact_ratio']:.4f}"
+        .replace("-", "−"))),
+    ("docs/studies.md", "It covers 3201 pairs, and 3157 of them are feasible",
+     lambda: f"It covers {len(_atlas())} pairs, and {int(_atlas()['feasible'].sum())} of them are feasible"),
+    ("docs/studies.md", "(z = 8/8 is infeasible) to 5.29", lambda: (
+        f"(z = 8/8 is {'in' if not bool(_atlas().iloc[0]['feasible']) else ''}feasible) to {_atlas()['area'].max():.2f}")),
+    ("docs/studies.md", "The optimal x1 + x2 ranges from 0.58 to 3.47", lambda: (lambda f: (
+        f"The optimal x1 + x2 ranges from {(f.x1 + f.x2).min():.2f} to {(f.x1 + f.x2).max():.2f}"))(
+        _atlas()[_atlas()["feasible"]])),
+    ("docs/studies.md", "| interference of gear 2 + ε_α | 1944 |",
+     lambda: f"| interference of gear 2 + ε_α | {_atlas_active('interference2,contact_ratio')} |"),
+    ("docs/studies.md", "| ε_α alone | 642 |", lambda: f"| ε_α alone | {_atlas_active('contact_ratio')} |"),
+    ("docs/studies.md", "| undercut of gear 1 + ε_α | 571 |",
+     lambda: f"| undercut of gear 1 + ε_α | {_atlas_active('undercut1,contact_ratio')} |"),
+]
+
+
+@pytest.mark.parametrize("page, quoted, compute", FIGURES, ids=[f"{p}: {q[:40]}" for p, q, _ in FIGURES])
+def test_quoted_figure_comes_from_the_program(page, quoted, compute):
+    text = " ".join((ROOT / page).read_text(encoding="utf-8").split())
+    assert " ".join(quoted.split()) in text, f"{page} no longer quotes {quoted!r}: drop the entry"
+    assert compute() == quoted
+
+
+def test_readme_is_a_front_page():
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert len(text.splitlines()) <= 150
+    assert "minutes on 2 cores" in text and "python -m pytest tests" in text
+    assert "pip install \".[dev]\"" in text and "geardesign shift --z1 17 --z2 26 --module 8 --plot contour.png" in text
+    assert len(re.findall(r"!\[[^]]*\]\(docs/[^)]+\.png\)", text)) >= 5
