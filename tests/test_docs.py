@@ -323,7 +323,19 @@ def _key_seed002():
             f"crush {k.crush_mpa:.1f}/300 MPa, shear {k.shear_mpa:.1f}/120 MPa")
 
 
+def _teeth_row(rank):
+    import geardesign as gd
+
+    if not hasattr(_teeth_row, "sel"):
+        _teeth_row.sel = gd.select_teeth(1.5, m=8, z_sum_max=45)
+    r = _teeth_row.sel.table.iloc[rank - 1]
+    return (f"| {rank} | {int(r.z1)}/{int(r.z2)} | {r.ratio:.4g} | {r.a_w_mm:.2f} | {r.x1:.3f} | {r.x2:.3f} | "
+            f"{r.eps_alpha:.3f} | {r.objective:.3f} | {'yes' if r.feasible else 'no'} |")
+
+
 FIGURES = [
+    ("docs/teeth.md", "| 1 | 18/27 | 1.5 | 189.55 | 0.400 | 0.998 | 1.200 | 1.398 | yes |", lambda: _teeth_row(1)),
+    ("docs/teeth.md", "| 6 | 17/26 | 1.529 | 181.13 | 0.360 | 0.977 | 1.200 | 1.337 | yes |", lambda: _teeth_row(6)),
     ("docs/internal_helical.md", "# 13.1683 mm",
      lambda: f"# {__import__('geardesign').GearPair(3, 16, 24, 0.0, 0.5, internal=True).geometry().a_w:.6g} mm"),
     ("docs/planetary.md", "# 56.79992, 56.80008 mm (printed a = 56.8), 6.14286", lambda: (lambda s: (

@@ -5,7 +5,8 @@ from ..errors import GearDesignError
 from ..shifts.objectives import OBJECTIVES
 from ..shifts.optimize import DEFAULT_TOL, METHODS
 from .options import add_output_file
-from .output import add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict
+from .output import (add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict,
+                     print_wrapped)
 from .pair import add_kind_args, add_limit_args, add_rack_args, kind_from_args, limits_from_args, rack_from_args
 
 _METHOD_HELP = {
@@ -97,9 +98,10 @@ def run(args) -> int:
                              "checks": frame_records(proposed[["check", "value", "limit", "margin", "ok"]])}
         print_json(d)
         return 0 if ok else 1
-    print(repr(res))
+    for line in repr(res).splitlines():
+        print_wrapped(line, indent=" " * 14)
     print()
-    print(repr(region))
+    print_wrapped(repr(region))
     if res.success:
         print_frame(res.to_frame(), "\nChecks at the optimum (margin >= 0 holds; sensitivity = d fun / d limit)")
     if proposed is not None:

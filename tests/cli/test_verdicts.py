@@ -125,6 +125,7 @@ def test_pair_output_verdict_first_and_two_columns(capsys):
 
 
 @pytest.mark.parametrize("argv", [["pair", *SEED], ["drive", str(SCENES / "seed002_drive.toml")],
+                                  ["shift", "--z1", "17", "--z2", "26", "--module", "8", "--x1", "0.898", "--x2", "0.517"],
                                   ["chain", "--torque", "380", "--n1", "120", "--ratio", "1"]])
 def test_output_fits_100_columns(argv):
     env = dict(__import__("os").environ, COLUMNS="100")

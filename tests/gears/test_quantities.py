@@ -14,7 +14,7 @@ def test_every_field_is_laid_out_once():
     laid = [f for *_, f in PAIR_ROWS] + [f for *_, f1, f2 in GEAR_ROWS for f in (f1, f2)]
     assert len(laid) == len(set(laid))
     assert set(laid) <= set(GEOMETRY_FIELDS)
-    # the two fields left out are intermediate values of no use on a calculation sheet
+    # the one field left out is an intermediate value of no use on a calculation sheet
     assert set(GEOMETRY_FIELDS) - set(laid) == {"inv_alpha_w"}
 
 
