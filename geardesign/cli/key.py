@@ -6,7 +6,7 @@ given key does not carry the torque), 2 on bad input.
 from __future__ import annotations
 
 from ..drives import key
-from .output import add_json_flag, print_json
+from .output import add_json_flag, print_json, print_wrapped
 
 
 def add_parser(subparsers):
@@ -42,7 +42,7 @@ def run(args) -> int:
         if args.json:
             print_json({"ok": ok, **cap.to_dict()})
         else:
-            print(f"key {cap['b_mm']:g}x{cap['h_mm']:g}x{args.length:g} on d = {args.d:g} mm "
+            print_wrapped(f"key {cap['b_mm']:g}x{cap['h_mm']:g}x{args.length:g} on d = {args.d:g} mm "
                   f"({cap['n_keys']} key{'s' if cap['n_keys'] > 1 else ''}, l_p = {cap['working_length_mm']:g} mm): "
                   f"carries {cap['torque_nm']:.1f} N·m, limited by {cap['governing']} "
                   f"(crushing {cap['torque_crush_nm']:.1f} N·m, shear {cap['torque_shear_nm']:.1f} N·m)")
@@ -57,5 +57,6 @@ def run(args) -> int:
     if args.json:
         print_json({"ok": bool(sel.feasible), **sel.to_dict()})
     else:
-        print(repr(sel))
+        for line in repr(sel).splitlines():
+            print_wrapped(line, indent="    ")
     return 0 if sel.feasible else 1

@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 
 from ..errors import GearDesignError
-from .output import add_json_flag, check_details, print_json, print_verdict
+from .output import add_json_flag, check_details, print_json, print_verdict, print_wrapped
 from .pair import add_pair_args, pair_from_args
 
 # flag -> (suffix, what is written)
@@ -121,10 +121,10 @@ def run(args) -> int:
         return 1 if failed else 0
     lo = summary["line_of_action_mm"]
     kind = ("Internal " if pair.internal else "") + (f"helical (beta = {pair.beta_deg:g} deg) " if pair.beta_deg else "spur ")
-    print(f"{kind[0].upper() + kind[1:]}pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1/x2 = {pair.x1:.6g}/{pair.x2:.6g}: "
+    print_wrapped(f"{kind[0].upper() + kind[1:]}pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1/x2 = {pair.x1:.6g}/{pair.x2:.6g}: "
           f"a_w = {summary['a_w_mm']:.6g} mm, alpha_w = {summary['alpha_w_deg']:.6g} deg, "
           f"eps_alpha = {summary['eps_alpha']:.4g}")
-    print(f"Line of action N1N2 = {lo['N1N2']:.6g} mm; from N1: A {lo['N1A']:.6g}, P {lo['N1P']:.6g}, "
+    print_wrapped(f"Line of action N1N2 = {lo['N1N2']:.6g} mm; from N1: A {lo['N1A']:.6g}, P {lo['N1P']:.6g}, "
           f"E {lo['N1E']:.6g} mm; active A-E {lo['active_A_to_E']:.6g} mm = "
           f"{lo['double_contact_each_end']:.6g} double + {lo['single_contact']:.6g} single + "
           f"{lo['double_contact_each_end']:.6g} double (p_b = {lo['base_pitch']:.6g} mm)")

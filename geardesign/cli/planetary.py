@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from ..errors import GearDesignError
 from .options import add_output_file, add_solver_args
-from .output import add_json_flag, print_frame, print_json
+from .output import add_json_flag, print_frame, print_json, print_wrapped
 from .pair import add_limit_args, add_rack_args, limits_from_args, rack_from_args
 
 
@@ -115,7 +115,7 @@ def _check(args) -> int:
                     "a_w_planet_ring": s.a_w_planet_ring, "ratio": s.ratio, "ok": ok,
                     "checks": table[["check", "mesh", "margin", "ok", "value", "limit"]]})
         return 0 if ok else 1
-    print(f"Planetary set {s.meshes.title}, m = {s.m:g} mm: x = {s.x_sun:.6g}/{s.x_planet:.6g}/{s.x_ring:.6g}, "
+    print_wrapped(f"Planetary set {s.meshes.title}, m = {s.m:g} mm: x = {s.x_sun:.6g}/{s.x_planet:.6g}/{s.x_ring:.6g}, "
           f"a_w = {s.a_w:.8g} mm (planet-ring {s.a_w_planet_ring:.8g} mm), ratio {s.ratio:.6g} ({s.arrangement})")
     print_frame(table[["check", "margin", "ok", "value", "limit"]])
     failed = table.loc[~table["ok"], "check"].tolist()
@@ -145,7 +145,8 @@ def _optimize(args) -> int:
     if args.json:
         print_json({"ok": bool(r.success), **r.to_dict()})
         return 0 if r.success else 1
-    print(repr(r))
+    for line in repr(r).splitlines():
+        print_wrapped(line, indent=" " * 14)
     if r.success:
         print_frame(r.to_frame(), "\nChecks at the optimum (margin >= 0 holds; sensitivity = d fun / d limit)")
     for flag, what in (("plot", "region"), ("drawing", "drawing")):
@@ -165,7 +166,7 @@ def _teeth(args) -> int:
     if args.json:
         print_json({"ok": bool(sel.found)} | sel.to_dict() | {"message": sel.message})
         return 0 if sel.found else 1
-    print(sel.message)
+    print_wrapped(sel.message)
     cols = ["z_sun", "z_planet", "z_ring", "standard", "ratio", "feasible", "x_sun", "x_planet", "x_ring", "a_w",
             "fun", "reason"]
     print_frame(sel.table[cols].head(25), f"\n{len(sel.table)} candidates ({sel.n_solved} solved), best first:")

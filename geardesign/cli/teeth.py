@@ -10,7 +10,7 @@ from ..errors import GearDesignError
 from ..shifts.teeth import select_teeth
 from ..files import check_output_path, write_file_atomic
 from .options import add_output_file, add_solver_args
-from .output import Progress, add_json_flag, frame_records, print_frame, print_json
+from .output import Progress, add_json_flag, frame_records, print_frame, print_json, print_wrapped
 from .pair import add_kind_args, add_limit_args, add_rack_args, kind_from_args, limits_from_args, rack_from_args
 
 SHOW = ["rank", "z1", "z2", "ratio", "ratio_error", "module_mm", "a_mm", "a_w_mm", "x1", "x2", "eps_alpha",
@@ -86,10 +86,10 @@ def run(args) -> int:
         out["skipped"] = frame_records(sel.skipped)
         print_json(out)
     else:
-        print(f"Ratio {sel.ratio:g} ± {100 * sel.ratio_tol:g} %, objective {sel.objective}, "
+        print_wrapped(f"Ratio {sel.ratio:g} ± {100 * sel.ratio_tol:g} %, objective {sel.objective}, "
               f"m = {sel.m}, a_w = {sel.a_w if sel.a_w is not None else 'free'}, method {sel.method}: "
               f"{len(sel.table)} candidates solved, {len(sel.skipped)} skipped, {sel.time_s:.2f} s")
-        print(f"choice: {sel.choice}")
+        print_wrapped(f"choice: {sel.choice}")
         print()
         print_frame(top[SHOW], title=f"candidates ({len(top)} of {len(sel.table)}, best first):")
         if len(sel.skipped):

@@ -126,7 +126,10 @@ def test_pair_output_verdict_first_and_two_columns(capsys):
 
 @pytest.mark.parametrize("argv", [["pair", *SEED], ["drive", str(SCENES / "seed002_drive.toml")],
                                   ["shift", "--z1", "17", "--z2", "26", "--module", "8", "--x1", "0.898", "--x2", "0.517"],
-                                  ["chain", "--torque", "380", "--n1", "120", "--ratio", "1"]])
+                                  ["chain", "--torque", "380", "--n1", "120", "--ratio", "1"],
+                                  ["teeth", "--ratio", "1.5", "--module", "8", "--z1-max", "20"],
+                                  ["key", "--d", "60", "--torque", "503", "--hub-length", "50"], ["mesh", *SEED],
+                                  LECAD])
 def test_output_fits_100_columns(argv):
     env = dict(__import__("os").environ, COLUMNS="100")
     proc = subprocess.run([sys.executable, "-m", "geardesign", *argv], capture_output=True, text=True, env=env)
