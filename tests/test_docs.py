@@ -333,7 +333,48 @@ def _teeth_row(rank):
             f"{r.eps_alpha:.3f} | {r.objective:.3f} | {'yes' if r.feasible else 'no'} |")
 
 
+def _teeth_fixed():
+    import geardesign as gd
+
+    b = gd.select_teeth(1.5, m=8, a_w=180).best
+    return f"split x1 = {b.x1:.3f}, x2 = {b.x2:.3f} for equal specific sliding (ε_α = {b.eps_alpha:.3f})".replace("-", "−")
+
+
+def _khk_ring():
+    import geardesign as gd
+
+    pair = gd.GearPair(3, 16, 24, 0.0, 0.5, internal=True)
+    ring = gd.pair_profiles(pair)[1]
+    g = pair.geometry()
+    return (f"{ring.tip_thickness_mm:.3f} mm thick on the generated profile against KHK's involute "
+            f"s_a2 = {g.sa2:.3f} mm. The pair's own checks fail too (the pinion is undercut, x1 = 0 < x_min = "
+            f"{g.x_min1:.3f}, and interference1 by {pair.checks().set_index('check').loc['interference1', 'margin']:.4f}"
+            ).replace("-0.", "−0.")
+
+
+def _ring_root():
+    import geardesign as gd
+
+    pair = gd.GearPair(2, 20, 60, 0.3, 0.6, internal=True)
+    return (f"(20/60, x2 = 0.6: {2 * gd.pair_profiles(pair)[1].r_root_mm:.3f} mm generated, "
+            f"{pair.geometry().df2:.4g} mm rack-equivalent)")
+
+
+def _chain_free_z1():
+    import geardesign as gd
+
+    b = gd.chain.design(torque_nm=380, n1_rpm=120, ratio=1, k_e=2.148, allowable_pressure_mpa=29, strands=(1, 2)).best
+    return (f"(F_t = {b.force_n:.0f} N), so a single 31.75 mm strand carries the load at p = {b.pressure_mpa:.1f} MPa "
+            f"(margin {b.margin_pressure:+.2f}). The sprockets grow to d = {b.sprocket1_pitch_diameter_mm:.1f} mm")
+
+
 FIGURES = [
+    ("docs/teeth.md", "split x1 = 0.181, x2 = −0.181 for equal specific sliding (ε_α = 1.563)", _teeth_fixed),
+    ("docs/mesh.md", "2.340 mm thick on the generated profile against KHK's involute s_a2 = 2.621 mm. The pair's own "
+     "checks fail too (the pinion is undercut, x1 = 0 < x_min = 0.064, and interference1 by −0.0097", _khk_ring),
+    ("docs/mesh.md", "(20/60, x2 = 0.6: 127.033 mm generated, 127.4 mm rack-equivalent)", _ring_root),
+    ("docs/drives.md", "(F_t = 2785 N), so a single 31.75 mm strand carries the load at p = 23.0 MPa (margin +0.21). "
+     "The sprockets grow to d = 273.5 mm", _chain_free_z1),
     ("docs/teeth.md", "| 1 | 18/27 | 1.5 | 189.55 | 0.400 | 0.998 | 1.200 | 1.398 | yes |", lambda: _teeth_row(1)),
     ("docs/teeth.md", "| 6 | 17/26 | 1.529 | 181.13 | 0.360 | 0.977 | 1.200 | 1.337 | yes |", lambda: _teeth_row(6)),
     ("docs/internal_helical.md", "# 13.1683 mm",
