@@ -9,7 +9,6 @@ fillet, tests/gears/test_planetary_golden.py).
 from __future__ import annotations
 
 import json
-import math
 import subprocess
 import sys
 
