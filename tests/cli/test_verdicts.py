@@ -9,8 +9,10 @@ fillet, tests/gears/test_planetary_golden.py).
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -19,7 +21,7 @@ from geardesign.cli import build_parser, main
 ENGINE = ["--module", "8", "--z1", "17", "--z2", "26"]
 SEED = ENGINE + ["--x1", "0.898", "--x2", "0.517"]
 LECAD = ["planetary", "--module", "1.75", "--planets", "3", "--z-sun", "21", "--z-planet", "43", "--z-ring", "108"]
-SCENES = __import__("pathlib").Path(__file__).resolve().parents[2] / "studies" / "scenes"
+SCENES = Path(__file__).resolve().parents[2] / "studies" / "scenes"
 
 
 def _run(argv, capsys):
@@ -130,7 +132,7 @@ def test_pair_output_verdict_first_and_two_columns(capsys):
                                   ["key", "--d", "60", "--torque", "503", "--hub-length", "50"], ["mesh", *SEED],
                                   LECAD])
 def test_output_fits_100_columns(argv):
-    env = dict(__import__("os").environ, COLUMNS="100")
+    env = dict(os.environ, COLUMNS="100")
     proc = subprocess.run([sys.executable, "-m", "geardesign", *argv], capture_output=True, text=True, env=env)
     assert proc.returncode in (0, 1), proc.stderr
     widths = [len(line) for line in proc.stdout.splitlines()]
