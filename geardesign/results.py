@@ -24,7 +24,56 @@ from dataclasses import fields
 
 import numpy as np
 
-__all__ = ["Result", "RankedTable", "plain"]
+__all__ = ["Result", "RankedTable", "plain", "compact_repr", "frame_html"]
+
+REPR_TABLE_ROWS = 5        # rows of a table a repr shows (a repr stays within ~15 lines)
+HTML_TABLE_ROWS = 20       # rows of a table an HTML view shows
+
+
+def compact_repr(obj) -> str:
+    """``Name(field=value, ...)`` with only the fields that differ from their defaults, arrays and
+    tables as their shape: a dataclass's one-line repr that never dumps data."""
+    from dataclasses import MISSING
+
+    parts = []
+    for f in fields(obj):
+        if not f.repr or f.name.startswith("_"):
+            continue
+        v = getattr(obj, f.name)
+        default = f.default if f.default is not MISSING else (
+            f.default_factory() if f.default_factory is not MISSING else MISSING)
+        try:
+            same = default is not MISSING and bool(v == default)
+        except (TypeError, ValueError):
+            same = False
+        if not same:
+            parts.append(f"{f.name}={short_value(v)}")
+    return f"{type(obj).__name__}({', '.join(parts)})"
+
+
+def short_value(v) -> str:
+    """A value in a few characters: arrays and tables by their shape, floats to 6 digits."""
+    if isinstance(v, np.ndarray):
+        return f"<array {'x'.join(map(str, v.shape))}>"
+    if hasattr(v, "columns") and hasattr(v, "shape"):
+        return f"<table {v.shape[0]} rows>"
+    if hasattr(v, "index") and hasattr(v, "to_dict"):       # a Series: a catalog row, named by its first value
+        return repr(str(v.iloc[0])) if len(v) else "<row>"
+    if isinstance(v, float):
+        return f"{v:.6g}"
+    text = repr(v)
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
+def frame_html(frame, title: str = "", rows: int = HTML_TABLE_ROWS) -> str:
+    """An HTML view: a title line and the first ``rows`` rows of a table."""
+    import html
+
+    head = f"<p><b>{html.escape(title)}</b></p>" if title else ""
+    if frame is None:
+        return head
+    more = f"<p>… {len(frame) - rows} more rows</p>" if len(frame) > rows else ""
+    return head + frame.head(rows).to_html(index=False, na_rep="", float_format="{:.6g}".format) + more
 
 
 def plain(value):
@@ -70,6 +119,16 @@ class Result:
 
     def to_json(self, indent: int | None = 2) -> str:
         return json.dumps(self.to_dict(), indent=indent, ensure_ascii=False)
+
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the repr's first lines as the title and the main table (when there is one)."""
+        try:
+            table = self.to_frame()
+        except NotImplementedError:
+            table = None
+        import html
+
+        return f"<pre>{html.escape(repr(self))}</pre>" + frame_html(table)
 
     def to_frame(self):
         """The result's main table (a copy)."""

@@ -394,9 +394,11 @@ def load_catalog(name_or_path, kind: str | None = None) -> pd.DataFrame:
             isinstance(name_or_path, Path) or name_or_path.lower().endswith(".csv") or "/" in name_or_path
             or "\\" in name_or_path):
         path = Path(name_or_path)
-    else:
+    else:   # offer only the tables of the kind asked for (a chain catalog is never a key table)
+        names = [n for n, (_, k, _) in BUNDLED.items() if kind is None or k == kind]
+        what = "catalog" if kind is None else f"{kind} catalog"
         raise CatalogError(
-            f"catalog must be one of {', '.join(BUNDLED)} or the path of a .csv file, got {name_or_path!r}")
+            f"{what} must be one of {', '.join(names)} or the path of a .csv file, got {name_or_path!r}")
     try:
         with importlib.resources.as_file(path) as real:
             real = Path(real)

@@ -22,7 +22,11 @@ def build_parser():
 
     parser = argparse.ArgumentParser(
         prog="geardesign",
-        description="Gear-pair geometry and profile-shift optimisation, roller chains and keys.")
+        description="Gear-pair geometry and profile-shift optimisation, roller chains and keys. Every command "
+                    "exits 0 when the design passes, 1 when it fails a check (the output names it), 2 on bad input.")
+    from .. import __version__
+
+    parser.add_argument("--version", action="version", version=f"geardesign {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     sub.required = True
     for name in SUBCOMMANDS:

@@ -28,7 +28,9 @@ def parse_range(text: str, name: str) -> list[int]:
 
 def add_parser(sub):
     p = sub.add_parser("atlas", help="optimal shifts for a table of z1 x z2",
-                       description="Optimal shifts, margins and region area for every z1/z2 (z2 >= z1).")
+                       description="Optimal shifts, margins and region area for every z1/z2 (z2 >= z1). A table: "
+                                   "a pair without feasible shifts is a row (feasible False), not a failure; exit "
+                                   "status 0 when the table is written, 2 on bad input.")
     p.add_argument("--z1", required=True, help="LO:HI or a comma list, e.g. 8:40")
     p.add_argument("--z2", required=True, help="LO:HI or a comma list, e.g. 10:120")
     add_solver_args(p, "max_x_sum")
@@ -60,7 +62,7 @@ def run(args) -> int:
     if args.out:
         write_file_atomic(args.out, lambda tmp: df.to_csv(tmp, index=False))
     if args.json:
-        print_json({"time_s": df.attrs.get("time_s"), "rows": frame_records(df)})
+        print_json({"ok": True, "time_s": df.attrs.get("time_s"), "rows": frame_records(df)})
         return 0
     cols = ["z1", "z2", "feasible", "x1", "x2", "objective", "eps_alpha", "area", "active", "conflict"]
     print_frame(df[cols].head(40), f"{len(df)} pairs in {df.attrs.get('time_s', 0):.2f} s "

@@ -1,14 +1,15 @@
 """``geardesign chain``: size a roller-chain drive from a catalog.
 
 Exit status 0 when a candidate passes every check, 1 when none does (the output says which
-check stops each chain family), 2 on bad input.
+check stops each chain family), 2 on bad input. ``--top N`` lists the feasible candidates in the
+objective's order, then the failing ones nearest to passing (largest worst margin first).
 """
 from __future__ import annotations
 
 from ..drives import chain
 from ..catalogs.tables import CHAIN_CATALOGS
 from ..errors import GearDesignError
-from .output import add_json_flag, frame_records, print_frame, print_json
+from .output import add_json_flag, frame_records, print_frame, print_json, print_wrapped
 
 SHOW = ["rank", "designation", "pitch_mm", "strands", "z1", "z2", "links", "center_distance_mm", "speed_m_s",
         "force_n", "pressure_mpa", "allowable_pressure_mpa", "safety_factor", "allowable_safety_factor",
@@ -28,11 +29,26 @@ def _strands(text: str):
     return values
 
 
+def feasible_then_nearest(candidates):
+    """The feasible candidates in their ranked order, then the failing ones by their worst margin, the
+    nearest to passing first (a chain far over its allowed pressure is of no help as a second choice)."""
+    feasible = candidates[candidates["feasible"].astype(bool)]
+    failing = candidates[~candidates["feasible"].astype(bool)]
+    failing = failing.sort_values("min_margin", ascending=False, kind="stable")
+    import pandas as pd
+
+    out = pd.concat([feasible, failing])
+    if "rank" in out:
+        out = out.assign(rank=range(1, len(out) + 1))
+    return out
+
+
 def add_parser(subparsers):
     p = subparsers.add_parser(
         "chain", help="size a roller-chain drive from a catalog (GOST 13568, ISO 606, ANSI B29.1)",
         description="Evaluate every catalog chain x strands x z1 for a drive and rank the feasible ones. "
-                    "Every check is a margin (>= 0 holds).")
+                    "Every check is a margin (>= 0 holds). Exit status 0 when a candidate passes every check, "
+                    "1 when none does, 2 on bad input.")
     load = p.add_mutually_exclusive_group(required=True)
     load.add_argument("--torque", type=float, metavar="N_M", help="torque on the small sprocket [N·m]")
     load.add_argument("--power", type=float, metavar="KW", help="power transmitted [kW]")
@@ -48,9 +64,13 @@ def add_parser(subparsers):
     p.add_argument("--s-allow", type=float, dest="s_allow", help="allowable safety factor [s] (default: table)")
     p.add_argument("--center-distance", type=float, dest="center_distance", metavar="MM",
                    help="target centre distance [mm] (default 40 pitches)")
-    p.add_argument("--objective", default="min_mass", choices=chain.OBJECTIVES)
-    p.add_argument("--method", default="hinge_pressure", choices=chain.METHODS)
-    p.add_argument("--top", type=int, default=10, help="candidates to list (default 10; 0 = all)")
+    p.add_argument("--objective", default="min_mass", choices=chain.OBJECTIVES,
+                   help="how feasible candidates are ranked (default min_mass)")
+    p.add_argument("--method", default="hinge_pressure", choices=chain.METHODS,
+                   help="the check of the chain's load (default hinge_pressure)")
+    p.add_argument("--top", type=int, default=10,
+                   help="candidates to list: the feasible ones first, then the failing ones nearest to passing "
+                        "(default 10; 0 = all)")
     add_json_flag(p)
     return p
 
@@ -63,20 +83,21 @@ def run(args) -> int:
         center_distance_mm=args.center_distance, objective=args.objective, method=args.method)
     if args.top < 0:
         raise GearDesignError(f"--top must be >= 0, got {args.top}")
-    top = result.candidates if args.top == 0 else result.candidates.head(args.top)
+    ranked = feasible_then_nearest(result.candidates)
+    top = ranked if args.top == 0 else ranked.head(args.top)
     cols = SHOW if args.method == "hinge_pressure" else SHOW_POWER
     if args.json:
-        out = result.to_dict()
+        out = {"ok": bool(result.success), **result.to_dict()}
         out["candidates"] = frame_records(top.drop(columns=[c for c in ("edition", "source", "note") if c in top]))
         print_json(out)
     else:
-        print(result.message)
+        print_wrapped(result.message)
         if result.pitch_estimate_mm:
-            print("pitch estimate (starting point): " + ", ".join(
+            print_wrapped("pitch estimate (starting point): " + ", ".join(
                 f"{k} strand{'s' if k > 1 else ''} t >= {v:.2f} mm" for k, v in result.pitch_estimate_mm.items()))
         if result.best is not None:
             b = result.best
-            print(f"sprockets: pitch diameters {b['sprocket1_pitch_diameter_mm']:.2f} / "
+            print_wrapped(f"sprockets: pitch diameters {b['sprocket1_pitch_diameter_mm']:.2f} / "
                   f"{b['sprocket2_pitch_diameter_mm']:.2f} mm, tip {b['sprocket1_tip_diameter_mm']:.2f} / "
                   f"{b['sprocket2_tip_diameter_mm']:.2f} mm, root {b['sprocket1_root_diameter_mm']:.2f} / "
                   f"{b['sprocket2_root_diameter_mm']:.2f} mm")
@@ -87,5 +108,5 @@ def run(args) -> int:
             print()
             print_frame(result.blocking, title="what stops each chain family (best candidate of each):")
         for note in result.notes:
-            print(f"note: {note}")
+            print_wrapped(f"note: {note}")
     return 0 if result.success else 1

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..errors import GearDesignError
 from .options import add_output_file
-from .output import Progress, add_json_flag, print_frame, print_json
+from .output import Progress, add_json_flag, print_frame, print_json, print_wrapped
 
 
 def add_parser(subparsers):
@@ -16,7 +16,8 @@ def add_parser(subparsers):
         "drive", help="a drive from a scene's [drive] section: power flow, checks, keys, the optimal ratio split",
         description="Link the stages of a scene's [drive] section (motor, given units, gear pairs, chains, keyed "
                     "shafts): analyse the power flow, or with total_ratio optimise the ratio split and every free "
-                    "variable together (see docs/drive_train.md).")
+                    "variable together (see docs/drive_train.md). Exit status 0 when every check of the drive holds, 1 "
+                    "when one fails (the output names the stage and check), 2 on bad input.")
     p.add_argument("scene", help="a scene file (.toml) with a [drive] section")
     add_output_file(p, "--plot", "PNG", "the drive's diagram")
     add_json_flag(p)
@@ -50,14 +51,14 @@ def run(args) -> int:
             plt.close(ax.figure)
     ok = (opt.success if opt is not None else an.success)
     if args.json:
-        out = {"scene": str(args.scene), "motor": None if motor is None else motor.to_dict(),
+        out = {"ok": bool(ok), "scene": str(args.scene), "motor": None if motor is None else motor.to_dict(),
                "optimum": None if opt is None else opt.to_dict(), "analysis": None if an is None else an.to_dict()}
         print_json(out)
         return 0 if ok else 1
     if motor is not None:
-        print(f"motor: {motor.message}")
+        print_wrapped(f"motor: {motor.message}")
     if opt is not None:
-        print(f"optimum ({opt.objective}, u = {opt.total_ratio:g} ± {100 * opt.ratio_tol:g} %): {opt.message}")
+        print_wrapped(f"optimum ({opt.objective}, u = {opt.total_ratio:g} ± {100 * opt.ratio_tol:g} %): {opt.message}")
         print(f"  {opt.n_combinations} ratio combinations, {opt.n_candidates} designs, {opt.n_shift_solves} shift "
               f"solves, {opt.time_s:.3f} s")
         if len(opt.table):
@@ -65,7 +66,7 @@ def run(args) -> int:
             print_frame(opt.table, title="alternatives (best first; reason: why each loses):")
     if an is not None:
         print()
-        print(f"analysis: {an.message}")
+        print_wrapped(f"analysis: {an.message}")
         print_frame(an.flow, title="power flow:")
         print()
         print_frame(an.checks, title="checks:")

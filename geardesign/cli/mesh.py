@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 
 from ..errors import GearDesignError
-from .output import add_json_flag, print_json
+from .output import add_json_flag, check_details, print_json, print_verdict, print_wrapped
 from .pair import add_pair_args, pair_from_args
 
 # flag -> (suffix, what is written)
@@ -24,7 +24,10 @@ def add_parser(sub):
                                    "cutter), in mesh at a_w: the drawing (circles, line of action N1N2 with its "
                                    "active part and contact zones), the diagrams of specific sliding and pressure "
                                    "along N1N2, and the outlines as SVG/DXF/CSV (gear 1 about the origin, gear 2 "
-                                   "about (0, a_w), a ring about (0, -a_w) with its rim as gear2_rim; mm).")
+                                   "about (0, a_w), a ring about (0, -a_w) with its rim as gear2_rim; mm). "
+                                   "Exit status 0 when the pair passes every check (default limits, as `pair`), "
+                                   "1 when one fails (the text and the drawing's title name it; the files are "
+                                   "written either way), 2 on bad input.")
     add_pair_args(p)
     g = p.add_argument_group("the ring's shaper cutter (--internal)")
     g.add_argument("--cutter-teeth", type=float, default=None, metavar="Z0",
@@ -102,7 +105,10 @@ def run(args) -> int:
     d = line_of_action_diagrams(geo, n=2, s_mm=[0.5 * c["g"]])
     g_alpha = d["s_E"] - d["s_A"]
     double = max(g_alpha - d["p_b"], 0.0)
+    table = pair.checks()
+    failed = table.loc[~table["ok"], "check"].tolist()
     summary = {
+        "ok": not failed, "failing_checks": failed,
         "m": pair.m, "z1": pair.z1, "z2": pair.z2, "x1": pair.x1, "x2": pair.x2,
         "a_w_mm": float(geo["a_w"]), "alpha_w_deg": float(geo["alpha_w_deg"]), "eps_alpha": float(geo["eps_alpha"]),
         "line_of_action_mm": {"N1N2": d["g"], "N1A": d["s_A"], "N1P": d["s_P"], "N1E": d["s_E"],
@@ -114,16 +120,17 @@ def run(args) -> int:
     }
     if args.json:
         print_json(summary)
-        return 0
+        return 1 if failed else 0
     lo = summary["line_of_action_mm"]
     kind = ("Internal " if pair.internal else "") + (f"helical (beta = {pair.beta_deg:g} deg) " if pair.beta_deg else "spur ")
-    print(f"{kind[0].upper() + kind[1:]}pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1/x2 = {pair.x1:.6g}/{pair.x2:.6g}: "
+    print_wrapped(f"{kind[0].upper() + kind[1:]}pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1/x2 = {pair.x1:.6g}/{pair.x2:.6g}: "
           f"a_w = {summary['a_w_mm']:.6g} mm, alpha_w = {summary['alpha_w_deg']:.6g} deg, "
           f"eps_alpha = {summary['eps_alpha']:.4g}")
-    print(f"Line of action N1N2 = {lo['N1N2']:.6g} mm; from N1: A {lo['N1A']:.6g}, P {lo['N1P']:.6g}, "
+    print_wrapped(f"Line of action N1N2 = {lo['N1N2']:.6g} mm; from N1: A {lo['N1A']:.6g}, P {lo['N1P']:.6g}, "
           f"E {lo['N1E']:.6g} mm; active A-E {lo['active_A_to_E']:.6g} mm = "
           f"{lo['double_contact_each_end']:.6g} double + {lo['single_contact']:.6g} single + "
           f"{lo['double_contact_each_end']:.6g} double (p_b = {lo['base_pitch']:.6g} mm)")
+    print_verdict(failed, check_details(table))
     for flag, path in targets.items():
         print(f"wrote {path} ({OUTPUTS[flag][1]})")
-    return 0
+    return 1 if failed else 0

@@ -62,7 +62,9 @@ def add_solver_args(p, default_objective: str | None = None, objective_help: str
     from ..shifts.objectives import OBJECTIVES
     from ..shifts.optimize import METHODS
 
-    p.add_argument("--objective", choices=sorted(OBJECTIVES), default=default_objective, help=objective_help)
+    p.add_argument("--objective", choices=sorted(OBJECTIVES), default=default_objective,
+                   help=objective_help or "what the optimal shifts maximise or minimise (default max_x_sum): "
+                   + "; ".join(f"{k}: {o.description}" for k, o in OBJECTIVES.items()))
     p.add_argument("--method", choices=METHODS, default="exact", help="shift solver: " + ", ".join(METHODS)
                    + " (exact)")
 

@@ -2,11 +2,10 @@
 from __future__ import annotations
 
 from ..errors import GearDesignError
-from ..gears.geometry import GEOMETRY_FIELDS
 from ..gears.pair import GearPair
 from ..gears.rack import BasicRack
 from .options import add_check_args, checks_from_args
-from .output import add_json_flag, frame_records, print_frame, print_json
+from .output import add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict
 
 
 def add_rack_args(p) -> None:
@@ -24,8 +23,9 @@ def rack_from_args(args) -> BasicRack:
 def add_pair_args(p) -> None:
     """The pair: module, tooth counts, shifts or a housing centre distance, tip shortening, rack."""
     p.add_argument("--module", "-m", type=float, required=True, help="module, mm")
-    p.add_argument("--z1", type=float, required=True, help="teeth of gear 1")
-    p.add_argument("--z2", type=float, required=True, help="teeth of gear 2")
+    p.add_argument("--z1", type=float, required=True, help="number of teeth of gear 1 (the pinion), a whole number >= 3")
+    p.add_argument("--z2", type=float, required=True,
+                   help="number of teeth of gear 2 (the wheel; with --internal the ring, z2 > z1)")
     p.add_argument("--x1", type=float, default=None, help="profile shift of gear 1 (0)")
     p.add_argument("--x2", type=float, default=None, help="profile shift of gear 2 (0)")
     p.add_argument("--center-distance", type=float, default=None, metavar="A",
@@ -71,7 +71,10 @@ def pair_from_args(args) -> tuple[GearPair, float | None]:
 def add_parser(sub):
     p = sub.add_parser("pair", help="geometry and checks of one gear pair",
                        description="Geometry (ISO 21771; GOST 16532-70 external, GOST 19274-73 internal) and checks "
-                                   "of a spur or helical, external or internal pair.")
+                                   "of a spur or helical, external or internal pair: the verdict first, then the "
+                                   "checks, then the geometry in the handbook's layout (gear 1 | gear 2). "
+                                   "Exit status 0 when every check holds, 1 when one fails (the first line names "
+                                   "it), 2 on bad input.")
     add_pair_args(p)
     add_check_args(p)
     p.add_argument("--measurements", action="store_true",
@@ -99,13 +102,25 @@ def _measurements(pair, as_json: bool):
     return None
 
 
+def describe(pair, shorten: bool) -> str:
+    """The pair in one line: kind, module, tooth counts, shifts, rack."""
+    rack = pair.rack
+    kind = (("internal " if pair.internal else "") + (f"helical (beta = {pair.beta_deg:g} deg) " if pair.beta_deg
+                                                      else "spur ")).capitalize()
+    return (f"{kind}pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1 = {pair.x1:.6g}, x2 = {pair.x2:.6g}, "
+            f"rack {rack.alpha_deg:g} deg / {rack.ha:g} / {rack.c:g} / {rack.rho_f:g}"
+            f"{'' if shorten else ', no tip shortening'}")
+
+
 def run(args) -> int:
     pair, housing = pair_from_args(args)
     rack, shorten = pair.rack, not args.no_tip_shortening
     geo = pair.geometry()
     table = pair.checks(**checks_from_args(args), housing_a_w=housing)
+    failed = table.loc[~table["ok"], "check"].tolist()
     if args.json:
         print_json({
+            "ok": not failed, "failing_checks": failed,
             "input": {"m": pair.m, "z1": pair.z1, "z2": pair.z2, "x1": pair.x1, "x2": pair.x2,
                       "alpha_deg": rack.alpha_deg, "ha": rack.ha, "c": rack.c, "rho_f": rack.rho_f,
                       "tip_shortening": shorten, "beta_deg": pair.beta_deg, "internal": pair.internal,
@@ -114,18 +129,11 @@ def run(args) -> int:
             "checks": frame_records(table[["check", "value", "limit", "margin", "ok"]]),
             **({"measurements": _measurements(pair, True)} if args.measurements else {}),
         })
-        return 0
-    kind = (("internal " if pair.internal else "") + (f"helical (beta = {pair.beta_deg:g} deg) " if pair.beta_deg
-                                                      else "spur ")).capitalize()
-    print(f"{kind}pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1 = {pair.x1:.6g}, x2 = {pair.x2:.6g}, "
-          f"rack {rack.alpha_deg:g} deg / {rack.ha:g} / {rack.c:g} / {rack.rho_f:g}"
-          f"{'' if shorten else ', no tip shortening'}")
-    frame = geo.to_frame()
-    frame["unit"] = [GEOMETRY_FIELDS[k][0] for k in frame["quantity"]]
-    print_frame(frame[["quantity", "value", "unit", "description"]], "\nGeometry", float_format="{:.8g}")
+        return 1 if failed else 0
+    print(describe(pair, shorten))
+    print_verdict(failed, check_details(table))
     print_frame(table[["check", "value", "limit", "margin", "ok", "label"]], "\nChecks (margin >= 0 holds)")
+    print_frame(geo.to_table(helical=bool(pair.beta_deg)), "\nGeometry", float_format="{:.8g}")
     if args.measurements:
         _measurements(pair, False)
-    failed = table.loc[~table["ok"], "check"].tolist()
-    print("\nAll checks hold." if not failed else f"\nFailing checks: {', '.join(failed)}")
-    return 0
+    return 1 if failed else 0

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from ..errors import GearDesignError
 from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args
-from .output import add_json_flag, print_frame, print_json
+from .output import add_json_flag, print_frame, print_json, print_wrapped
 from .options import add_check_args, checks_from_args
 from .pair import add_rack_args, rack_from_args
 
@@ -15,14 +15,16 @@ def add_parser(sub):
     p = sub.add_parser("planetary", help="planetary set: coaxial shifts of sun, planets and ring; tooth counts",
                        description="A simple planetary set (sun, N planets, ring). With --x-sun/--x-planet: "
                                    "check those shifts (the ring's from coaxiality unless --x-ring). Without: the "
-                                   "best coaxial shifts. With --ratio: tooth counts for the ratio, each solved.")
+                                   "best coaxial shifts. With --ratio: tooth counts for the ratio, each solved. "
+                                   "Exit status 0 when the set passes every check (an optimum or a feasible row "
+                                   "exists), 1 when a check fails or nothing is feasible, 2 on bad input.")
     p.add_argument("--module", "-m", type=float, required=True, help="module, mm")
     p.add_argument("--planets", type=int, required=True, help="number of planets N")
-    p.add_argument("--z-sun", type=int, default=None)
-    p.add_argument("--z-planet", type=int, default=None)
-    p.add_argument("--z-ring", type=int, default=None)
+    p.add_argument("--z-sun", type=int, default=None, help="number of teeth of the sun (not with --ratio)")
+    p.add_argument("--z-planet", type=int, default=None, help="number of teeth of each planet")
+    p.add_argument("--z-ring", type=int, default=None, help="number of teeth of the ring gear")
     p.add_argument("--x-sun", type=float, default=None, help="given shift of the sun (with --x-planet)")
-    p.add_argument("--x-planet", type=float, default=None)
+    p.add_argument("--x-planet", type=float, default=None, help="given shift of the planets (with --x-sun)")
     p.add_argument("--x-ring", type=float, default=None, help="given shift of the ring (default: coaxial)")
     p.add_argument("--center-distance", type=float, default=None, metavar="A",
                    help="fixed carrier arm a_w, mm: fixes x_sun + x_planet, the objective picks the split")
@@ -125,11 +127,11 @@ def _check(args) -> int:
                     "a_w_planet_ring": s.a_w_planet_ring, "ratio": s.ratio, "ok": ok,
                     "checks": table[["check", "mesh", "margin", "ok", "value", "limit"]]})
         return 0 if ok else 1
-    print(f"Planetary set {s.meshes.title}, m = {s.m:g} mm: x = {s.x_sun:.6g}/{s.x_planet:.6g}/{s.x_ring:.6g}, "
+    print_wrapped(f"Planetary set {s.meshes.title}, m = {s.m:g} mm: x = {s.x_sun:.6g}/{s.x_planet:.6g}/{s.x_ring:.6g}, "
           f"a_w = {s.a_w:.8g} mm (planet-ring {s.a_w_planet_ring:.8g} mm), ratio {s.ratio:.6g} ({s.arrangement})")
     print_frame(table[["check", "margin", "ok", "value", "limit"]])
     failed = table.loc[~table["ok"], "check"].tolist()
-    print("All checks hold." if ok else f"Failing checks: {', '.join(failed)}")
+    print("OK: all checks hold." if ok else f"FAILS: {', '.join(failed)}")
     return 0 if ok else 1
 
 
@@ -157,9 +159,10 @@ def _optimize(args) -> int:
                              r.x_ring, arrangement=args.arrangement, **kw)
             _save(args.drawing, plot_planetary(s), args.overwrite)
     if args.json:
-        print_json(r.to_dict())
+        print_json({"ok": bool(r.success), **r.to_dict()})
         return 0 if r.success else 1
-    print(repr(r))
+    for line in repr(r).splitlines():
+        print_wrapped(line, indent=" " * 14)
     if r.success:
         print_frame(r.to_frame(), "\nChecks at the optimum (margin >= 0 holds; sensitivity = d fun / d limit)")
     for flag, what in (("plot", "region"), ("drawing", "drawing")):
@@ -180,9 +183,9 @@ def _teeth(args) -> int:
                                      checks=_checks(args), method=args.method, rack=rack_from_args(args),
                                      beta_deg=args.beta, client=client)
     if args.json:
-        print_json(sel.to_dict() | {"message": sel.message})
+        print_json({"ok": bool(sel.found)} | sel.to_dict() | {"message": sel.message})
         return 0 if sel.found else 1
-    print(sel.message)
+    print_wrapped(sel.message)
     cols = ["z_sun", "z_planet", "z_ring", "standard", "ratio", "feasible", "x_sun", "x_planet", "x_ring", "a_w",
             "fun", "reason"]
     print_frame(sel.table[cols].head(25), f"\n{len(sel.table)} candidates ({sel.n_solved} solved), best first:")

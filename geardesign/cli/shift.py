@@ -5,7 +5,8 @@ from ..errors import GearDesignError
 from ..shifts.objectives import OBJECTIVES
 from ..shifts.optimize import DEFAULT_TOL, METHODS
 from .options import add_check_args, add_output_file, checks_from_args
-from .output import add_json_flag, frame_records, print_frame, print_json
+from .output import (add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict,
+                     print_wrapped)
 from .pair import add_kind_args, add_rack_args, kind_from_args, rack_from_args
 
 _METHOD_HELP = {
@@ -17,9 +18,13 @@ _METHOD_HELP = {
 
 def add_parser(sub):
     p = sub.add_parser("shift", help="feasible x1/x2 region and optimal shifts of one tooth pair",
-                       description="The blocking contour of z1/z2 and the best x1/x2 in it.")
-    p.add_argument("--z1", type=float, required=True)
-    p.add_argument("--z2", type=float, required=True)
+                       description="The blocking contour of z1/z2 and the best x1/x2 in it. Exit status 0 when "
+                                   "an optimum exists (and a proposed --x1/--x2 passes every check), 1 when the "
+                                   "region is empty or the proposed pair fails a check (the output names them), "
+                                   "2 on bad input.")
+    p.add_argument("--z1", type=float, required=True, help="number of teeth of gear 1 (the pinion), a whole number >= 3")
+    p.add_argument("--z2", type=float, required=True,
+                   help="number of teeth of gear 2 (the wheel; with --internal the ring, z2 > z1)")
     p.add_argument("--module", "-m", type=float, default=None,
                    help="module, mm: needed with --center-distance; otherwise it only scales a_w (default 1)")
     p.add_argument("--objective", choices=sorted(OBJECTIVES), default=None,
@@ -34,7 +39,8 @@ def add_parser(sub):
                         "the objective picks the split")
     p.add_argument("--x1", type=float, default=None, help="a proposed x1 to check and mark (with --x2)")
     p.add_argument("--x2", type=float, default=None, help="a proposed x2 to check and mark (with --x1)")
-    p.add_argument("--no-tip-shortening", action="store_true")
+    p.add_argument("--no-tip-shortening", action="store_true",
+                   help="keep d_a = d + 2(h_a* + x)m instead of shortening tips by dy*m")
     add_kind_args(p)
     add_output_file(p, "--plot", "PNG", "the blocking contour")
     add_rack_args(p)
@@ -68,29 +74,31 @@ def run(args) -> int:
     region = feasible_region(args.z1, args.z2, rack=rack, checks=checks, m=m, tip_shortening=shorten, **kind)
     if args.plot:
         _write_plot(region, res, proposed, args, write_file_atomic)
+    failed = [] if proposed is None else proposed.loc[~proposed["ok"], "check"].tolist()
+    ok = bool(res.success) and not failed
     if args.json:
-        d = res.to_dict()
+        d = {"ok": ok, **res.to_dict()}
         d["region"] = {"feasible": region.feasible, "area": region.area, "conflict": region.conflict,
                        "limiting_checks": region.limiting_checks() if region.feasible else [],
                        "boundary": frame_records(region.boundary)}
         if proposed is not None:
-            d["proposed"] = {"x1": args.x1, "x2": args.x2,
+            d["proposed"] = {"x1": args.x1, "x2": args.x2, "ok": not failed, "failing_checks": failed,
                              "checks": frame_records(proposed[["check", "value", "limit", "margin", "ok"]])}
         print_json(d)
-        return 0 if res.success else 1
-    print(repr(res))
+        return 0 if ok else 1
+    for line in repr(res).splitlines():
+        print_wrapped(line, indent=" " * 14)
     print()
-    print(repr(region))
+    print_wrapped(repr(region))
     if res.success:
         print_frame(res.to_frame(), "\nChecks at the optimum (margin >= 0 holds; sensitivity = d fun / d limit)")
     if proposed is not None:
         print_frame(proposed[["check", "value", "limit", "margin", "ok"]],
                     f"\nThe proposed pair x1 = {args.x1:g}, x2 = {args.x2:g}")
-        failed = proposed.loc[~proposed["ok"], "check"].tolist()
-        print("All checks hold." if not failed else f"Failing checks: {', '.join(failed)}")
+        print_verdict(failed, check_details(proposed))
     if args.plot:
         print(f"\nblocking contour written to {args.plot}")
-    return 0 if res.success else 1
+    return 0 if ok else 1
 
 
 def _write_plot(region, res, proposed, args, write_file_atomic) -> None:

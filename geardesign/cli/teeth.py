@@ -11,7 +11,7 @@ from ..shifts.teeth import select_teeth
 from ..files import check_output_path, write_file_atomic
 from .options import (add_check_args, add_cluster_args, add_output_file, add_solver_args, checks_from_args,
                       cluster_from_args)
-from .output import Progress, add_json_flag, frame_records, print_frame, print_json
+from .output import Progress, add_json_flag, frame_records, print_frame, print_json, print_wrapped
 from .pair import add_kind_args, add_rack_args, kind_from_args, rack_from_args
 
 SHOW = ["rank", "z1", "z2", "ratio", "ratio_error", "module_mm", "a_mm", "a_w_mm", "x1", "x2", "eps_alpha",
@@ -32,7 +32,8 @@ def add_parser(subparsers):
         "teeth", help="tooth counts for a ratio, with the best profile shifts for each, ranked",
         description="Enumerate every z1/z2 within the ratio tolerance, solve the profile shifts of each for the "
                     "objective (with the centre distance fixed, the x-sum follows from it), and rank: feasible "
-                    "first, then ratio error, first-series module, objective, smaller tooth sum.")
+                    "first, then ratio error, first-series module, objective, smaller tooth sum. Exit status 0 "
+                    "when a feasible pair exists, 1 when no row is feasible, 2 on bad input.")
     p.add_argument("--ratio", type=float, required=True, help="gear ratio u = z2/z1 (>= 1)")
     p.add_argument("--module", "-m", default=None, metavar="MM",
                    help="module in mm, or 'series' for the ISO 54 / GOST 9563 modules (m = 1 when omitted "
@@ -83,15 +84,15 @@ def run(args) -> int:
             raise GearDesignError(f"--out {args.out!r}: cannot write ({exc.strerror})") from None
     top = sel.table if args.top == 0 else sel.table.head(args.top)
     if args.json:
-        out = sel.to_dict()
+        out = {"ok": sel.best is not None, **sel.to_dict()}
         out["table"] = frame_records(top)
         out["skipped"] = frame_records(sel.skipped)
         print_json(out)
     else:
-        print(f"Ratio {sel.ratio:g} ± {100 * sel.ratio_tol:g} %, objective {sel.objective}, "
+        print_wrapped(f"Ratio {sel.ratio:g} ± {100 * sel.ratio_tol:g} %, objective {sel.objective}, "
               f"m = {sel.m}, a_w = {sel.a_w if sel.a_w is not None else 'free'}, method {sel.method}: "
               f"{len(sel.table)} candidates solved, {len(sel.skipped)} skipped, {sel.time_s:.2f} s")
-        print(f"choice: {sel.choice}")
+        print_wrapped(f"choice: {sel.choice}")
         print()
         print_frame(top[SHOW], title=f"candidates ({len(top)} of {len(sel.table)}, best first):")
         if len(sel.skipped):

@@ -77,6 +77,17 @@ class Drive:
     motor: object = None
     _load_from_motor: bool = field(default=False, init=False, repr=False, compare=False)
 
+    def __repr__(self) -> str:
+        motor = None if self.motor is None else str(getattr(self.motor, "get", lambda k, d=None: d)("designation", "motor"))
+        load = (f"{self.power_kw:g} kW in" if self.power_kw is not None else
+                f"{self.output_torque_nm:g} N·m out" if self.output_torque_nm is not None else "no load given")
+        speed = "" if self.n_in_rpm is None else f"{self.n_in_rpm:g} rpm, "
+        lines = [f"Drive({speed}{load}{', motor ' + motor if motor else ''}; {len(self.stages)} stage(s), "
+                 f"{len(self.shafts)} keyed shaft(s); .analyse() or .optimize(total_ratio=...))"]
+        lines += [f"  {i}. {s!r}" for i, s in enumerate(self.stages[:8], 1)]
+        lines += [f"  {s!r}" for s in self.shafts[:4]]
+        return "\n".join(lines)
+
     def __post_init__(self):
         stages = tuple(self.stages) if isinstance(self.stages, (list, tuple)) else None
         if not stages or len(stages) > STAGES_MAX:

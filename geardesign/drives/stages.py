@@ -17,6 +17,7 @@ from functools import lru_cache
 import numpy as np
 
 from ..errors import GearDesignError
+from ..results import compact_repr
 from ..validate import _show, ndim, one_number, require_count, require_range
 
 __all__ = ["GivenStage", "GearStage", "ChainStage", "Shaft", "EFFICIENCY_RANGE", "GIVEN_RATIO_RANGE",
@@ -102,6 +103,8 @@ class GivenStage:
 
     kind = "given"
 
+    __repr__ = compact_repr     # only what differs from the defaults
+
     def __post_init__(self):
         object.__setattr__(self, "ratio", one_number("ratio", require_range("ratio", self.ratio, *GIVEN_RATIO_RANGE)))
         object.__setattr__(self, "efficiency", _efficiency(self.efficiency))
@@ -152,6 +155,8 @@ class GearStage:
     material: object = None
 
     kind = "gear"
+
+    __repr__ = compact_repr     # only what differs from the defaults
 
     def __post_init__(self):
         from ..gears.geometry import require_module
@@ -263,6 +268,8 @@ class ChainStage:
 
     kind = "chain"
 
+    __repr__ = compact_repr     # only what differs from the defaults
+
     def __post_init__(self):
         from .chain.inputs import RATIO_RANGE, validate_inputs
 
@@ -344,6 +351,8 @@ class Shaft:
     allowable_shear_mpa: float | None = None
     end: str = "rounded"
     max_keys: int = 2
+
+    __repr__ = compact_repr     # only what differs from the defaults
 
     def __post_init__(self):
         from . import key

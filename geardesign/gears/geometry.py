@@ -447,15 +447,38 @@ class Geometry:
                 columns=["quantity", "value", "unit", "description"])
         return pd.DataFrame({k: np.ravel(getattr(self, k)) for k in self.names})
 
+    def __getitem__(self, name: str):
+        """``geo["eps_alpha"]``: the same as ``geo.eps_alpha`` (a field of :data:`GEOMETRY_FIELDS`)."""
+        if name not in GEOMETRY_FIELDS or getattr(self, name) is None:
+            raise KeyError(f"{name!r} is not a field of this Geometry; fields: {', '.join(self.names)}")
+        return getattr(self, name)
+
+    def keys(self) -> list:
+        return self.names
+
+    def to_table(self, helical: bool | None = None):
+        """One pair's geometry in the handbook's layout: ``quantity, symbol, unit, gear 1, gear 2``
+        (:func:`geardesign.gears.quantities.geometry_table`)."""
+        from .quantities import geometry_table
+
+        if not self.is_scalar:
+            raise NotImplementedError("to_table() lays out one pair; for arrays use to_frame()")
+        return geometry_table(self, helical)
+
     def __repr__(self) -> str:
         if not self.is_scalar:
-            return f"Geometry(<{np.size(self.a)} designs; fields: {', '.join(self.names)}>)"
-        lines = ["Geometry("]
-        for k in self.names:
-            u = GEOMETRY_FIELDS[k][0]
-            lines.append(f"  {k:<20} = {getattr(self, k):.10g} {u if u != '-' else ''}".rstrip())
-        lines.append(")")
-        return "\n".join(lines)
+            names = self.names
+            return (f"Geometry(<{np.size(self.a)} designs, {len(names)} fields: {', '.join(names[:8])}"
+                    f"{', ...' if len(names) > 8 else ''}>; g.to_frame() a row per design, g['a_w'] one field)")
+        from .quantities import summary_lines
+
+        return "\n".join([f"Geometry of one pair ({len(self.names)} fields: g.to_table() lays them out, "
+                          "g['eps_alpha'] or g.eps_alpha reads one)", *summary_lines(self)])
+
+    def _repr_html_(self) -> str:
+        if not self.is_scalar:
+            return f"<p>{repr(self)}</p>"
+        return self.to_table().to_html(index=False, na_rep="", float_format="{:.7g}".format)
 
 
 _FIELD_NAMES = tuple(GEOMETRY_FIELDS)

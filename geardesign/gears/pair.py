@@ -1,6 +1,8 @@
 """One gear pair as an object: inputs, geometry, checks."""
 from __future__ import annotations
 
+import functools
+
 import math
 from dataclasses import dataclass
 
@@ -222,3 +224,36 @@ class GearPair:
         """Least and most backlash from the allowances (:func:`~geardesign.gears.backlash.pair_backlash`)."""
         from .backlash import pair_backlash
         return pair_backlash(self, thickness_allowance1_mm, thickness_allowance2_mm, center_distance_allowance_mm)
+
+# Names a user may reach for that belong elsewhere: the hint the error gives.
+_ARGUMENT_HINTS = {
+    "alpha": "the pressure angle belongs to the basic rack: rack=BasicRack(alpha_deg={value!r})",
+    "alpha_deg": "the pressure angle belongs to the basic rack: rack=BasicRack(alpha_deg={value!r})",
+    "ha": "the addendum belongs to the basic rack: rack=BasicRack(ha={value!r})",
+    "c": "the clearance belongs to the basic rack: rack=BasicRack(c={value!r})",
+    "rho_f": "the fillet radius belongs to the basic rack: rack=BasicRack(rho_f={value!r})",
+    "beta": "the helix angle is beta_deg={value!r}",
+    "module": "the module is m={value!r}",
+    "a_w": "for a centre distance use GearPair.from_center_distance(m, z1, z2, a_w)",
+    "b": "the face width is face_width={value!r} (mm)",
+}
+_dataclass_init = GearPair.__init__
+
+
+@functools.wraps(_dataclass_init)
+def _init_with_hints(self, *args, **kwargs):
+    """The dataclass's __init__, with an unknown argument refused by name (and a hint where it belongs)."""
+    import dataclasses
+
+    known = {f.name for f in dataclasses.fields(GearPair) if f.init}
+    for name in kwargs:
+        if name not in known:
+            hint = _ARGUMENT_HINTS.get(name, "").format(value=kwargs[name])
+            raise GearDesignError(f"GearPair has no argument {name!r}"
+                                  + (f": {hint}" if hint else "") + f"; its arguments are {', '.join(sorted(known))}")
+    if len(args) > len(known):
+        raise GearDesignError(f"GearPair takes at most {len(known)} arguments ({', '.join(known)}), got {len(args)}")
+    _dataclass_init(self, *args, **kwargs)
+
+
+GearPair.__init__ = _init_with_hints

@@ -117,10 +117,21 @@ def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60, cutter=Non
     ax.set_title(f"m = {m:g} mm{pair.mesh.kind_text}{section}, z1/z2 = {z1}/{z2}, x1/x2 = {pair.x1:.4g}/{pair.x2:.4g}"
                  + ("\n" if long else ": ")
                  + f"α_w = {float(geo['alpha_w_deg']):.4g}°, a_w = {a_w:.6g} mm, ε_α = {float(geo['eps_alpha']):.4g}"
-                 + (f", ring cut by a z0 = {p2.z0} shaper at a_w0 = {p2.a_w0_mm:.5g} mm" if internal else ""),
+                 + (f", ring cut by a z0 = {p2.z0} shaper at a_w0 = {p2.a_w0_mm:.5g} mm" if internal else "")
+                 + "\n" + verdict_text(pair),
                  fontsize=10)
     ax.legend(loc="upper left", fontsize=7, framealpha=0.9)
     return ax
+
+
+def verdict_text(pair) -> str:
+    """"every check holds" or "FAILS contact_ratio (1.153 < 1.2), ..." under the default limits."""
+    table = pair.checks()
+    bad = table.loc[~table["ok"]]
+    if bad.empty:
+        return "every check holds (default limits)"
+    return "FAILS " + ", ".join(f"{r['check']} ({float(r['value']):.4g} vs limit {float(r['limit']):.4g})"
+                                for _, r in bad.iterrows())
 
 
 def line_of_action_diagrams(geo: dict, n: int = 400, s_mm=None) -> dict:

@@ -33,6 +33,18 @@ def require_pair(pair):
     return pair
 
 
+class PairProfiles(tuple):
+    """The two generated profiles of a pair, ``(gear 1, gear 2)``: a tuple with a short repr."""
+
+    def __repr__(self) -> str:
+        return "PairProfiles (gear 1, gear 2), each cut at the pair's tip circle:\n" + "\n".join(
+            "\n".join("  " + line for line in repr(p).splitlines()[:-1]) for p in self)
+
+    def _repr_html_(self) -> str:
+        import html
+        return f"<pre>{html.escape(repr(self))}</pre>"
+
+
 def pair_profiles(pair, points: int = 200, cutter=None) -> tuple:
     """The generated tooth profiles of both gears of a :class:`~geardesign.gears.pair.GearPair`, each
     cut at the pair's tip circle (so with the pair's tip shortening) and with the pair's rack; a
@@ -49,7 +61,7 @@ def pair_profiles(pair, points: int = 200, cutter=None) -> tuple:
     else:
         p2 = tooth_profile(pair.m / cb, pair.z2, pair.x2 * cb, rack=rack, tip_diameter_mm=float(geo["da2"]),
                            points=points)
-    return p1, p2
+    return PairProfiles((p1, p2))
 
 
 def pair_outlines(pair, roll_deg: float = 0.0, points: int = 200, cutter=None) -> list:

@@ -58,7 +58,7 @@ RIM_MODULES = 3.5           # rim below the root, in modules (ISO 6336-3:2006 §
 RIM_CHORD_MODULES = 1e-4    # the rim polygon departs from its circle by at most this, in modules
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, repr=False)    # ToothProfile's short repr
 class RingProfile(ToothProfile):
     """One tooth of a ring gear as its shaper cutter generates it (the fields of
     :class:`~geardesign.profiles.tooth.ToothProfile`, ``m``, ``x`` and ``x0`` transverse for a helical ring;
@@ -77,6 +77,11 @@ class RingProfile(ToothProfile):
     r_root_mm: float = 0.0
     rim_diameter_mm: float = 0.0
     cutting_interference: bool = False
+
+    def _repr_extra(self) -> list:
+        return [f"  cut by a z0 = {self.z0} shaper (x0 = {self.x0:.4g}) at a_w0 = {self.a_w0_mm:.6g} mm; root "
+                f"d_f = {2 * self.r_root_mm:.6g} mm, rim {self.rim_diameter_mm:.6g} mm; "
+                f"{'CUTTING INTERFERENCE' if self.cutting_interference else 'no cutting interference'}"]
 
     def outlines(self, name: str = "ring") -> list:
         """The annulus as two closed outlines: ``name`` (the toothed bore) and ``name + "_rim"``."""
@@ -224,7 +229,7 @@ def ring_profile(m, z, x=0.0, cutter: ShaperCutter | None = None, rack: BasicRac
                        segment=labels, r_form_mm=float(np.hypot(ix[0], iy[0])), undercut=False,
                        cutting_interference=t_cross is not None,
                        tip_thickness_mm=2.0 * r_a * eta_tip, z0=cut.z0, x0=cutter.x0 * cb, a_w0_mm=cut.a_w0, r_root_mm=r_f,
-                       rim_diameter_mm=2.0 * (r_f + rim))
+                       rim_diameter_mm=2.0 * (r_f + rim), tip_diameter_mm=2.0 * r_a)
 
 
 def _cutter_in_place(m, z, x, r_a, cutter: ShaperCutter, rack: BasicRack, alpha, m_t, cb):

@@ -143,6 +143,8 @@ class ToothProfile(Result):
     r_form_mm: float
     undercut: bool
     tip_thickness_mm: float
+    tip_diameter_mm: float = math.nan      # the circle the tooth is cut at
+    tip_unshortened: bool = False          # cut at d + 2(h_a* + x)m, not at a pair's (shortened) tip circle
 
     _success_field = "exists"
     _kind = "gear"     # the files' title
@@ -155,6 +157,23 @@ class ToothProfile(Result):
         import pandas as pd
 
         return pd.DataFrame({"x_mm": self.x_mm, "y_mm": self.y_mm, "segment": self.segment})
+
+    def __repr__(self) -> str:
+        counts = ", ".join(f"{name} {int(np.sum(self.segment == name))}" for name in dict.fromkeys(self.segment.tolist()))
+        lines = [f"{type(self).__name__}({self._kind} m = {self.m:g} mm, z = {self.z}, x = {self.x:.6g}): "
+                 f"{self.x_mm.size} points ({counts})",
+                 f"  tip d_a = {self.tip_diameter_mm:.6g} mm, s_a = {self.tip_thickness_mm:.6g} mm "
+                 f"({self.tip_thickness_mm / self.m:.4g} m); form circle d_Ff = {2 * self.r_form_mm:.6g} mm; "
+                 f"{'UNDERCUT' if self.undercut else 'no undercut'}"]
+        lines += self._repr_extra()
+        if self.tip_unshortened:
+            lines.append("  NOTE: the tip is NOT shortened (d_a = d + 2(h_a* + x)m): in a pair the tip is cut at the "
+                         "pair's tip circle; use gd.pair_profiles(pair) or tip_diameter_mm=pair.geometry().da1")
+        lines.append("  .to_frame() points, .outline(), .to_dxf/.to_svg/.to_csv(path)")
+        return "\n".join(lines)
+
+    def _repr_extra(self) -> list:
+        return []
 
     def outlines(self, name: str = "gear") -> list:
         """The whole gear as closed outlines ``[(name, x_mm, y_mm)]`` (a ring adds its rim)."""
@@ -237,7 +256,8 @@ def tooth_profile(m, z, x=0.0, rack: BasicRack | None = None, tip_diameter_mm=No
     labels = np.array(["root"] * rx.size + ["fillet"] * fx.size + ["involute"] * ix.size + ["tip"] * tx.size)
     return ToothProfile(m=m, z=z, x=x, x_mm=np.concatenate([rx, fx, ix, tx]),
                         y_mm=np.concatenate([ry, fy, iy, ty]), segment=labels, r_form_mm=r_form,
-                        undercut=r_cross is not None, tip_thickness_mm=2.0 * r_a * eta_tip)
+                        undercut=r_cross is not None, tip_thickness_mm=2.0 * r_a * eta_tip,
+                        tip_diameter_mm=2.0 * r_a, tip_unshortened=tip_diameter_mm is None)
 
 
 def _polar(radius, eta):

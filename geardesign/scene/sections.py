@@ -25,8 +25,44 @@ class SceneReport(Result):
 
     success = True   # a section that fails raises; a report exists only when all ran
 
+    @property
+    def failures(self) -> list:
+        """What the scene's designs fail, one phrase each (empty when every design passes): an empty
+        shift region, a given pair or planetary set failing a check, no tooth counts, no chain, a key
+        that does not fit, a failing drive. The ``run`` command exits 1 when there is one."""
+        out = []
+        gear = self.results.get("gear")
+        if gear is not None and not gear["optimum"].success:
+            out.append("gear: no feasible shifts")
+        given = self.tables.get("gear_given_checks")
+        if given is not None and not given["ok"].all():
+            out.append("gear: the given shifts fail " + ", ".join(given.loc[~given["ok"], "check"]))
+        for name in ("teeth", "chain", "planetary"):
+            r = self.results.get(name)
+            if r is not None and hasattr(r, "status") and r.status != "success":
+                out.append(f"{name}: nothing feasible")
+        planetary = self.tables.get("planetary_checks")
+        if planetary is not None and not planetary["ok"].all():
+            out.append("planetary: the set fails " + ", ".join(planetary.loc[~planetary["ok"], "check"]))
+        for sel in self.results.get("key", []):
+            if not sel.feasible:
+                out.append(f"key d = {sel.d_mm:g} mm: no key fits")
+        drive = self.results.get("drive")
+        if drive is not None:
+            r = drive["optimum"] if drive["optimum"] is not None else drive["analysis"]
+            if r is not None and not r.success:
+                out.append("drive: fails")
+        return out
+
+    def __repr__(self) -> str:
+        lines = [f"SceneReport({self.scene.title!r}: {len(self.tables)} table(s), {len(self.figures)} figure(s), "
+                 f"{self.time_s:.2f} s; {'every design passes' if not self.failures else 'FAILS'})"]
+        lines += [f"  {line}" for line in self.summary[:10]]
+        lines += [f"  fails: {f}" for f in self.failures[:3]]
+        return "\n".join(lines)
+
     def to_dict(self) -> dict:
-        return {"status": self.status, "scene": self.scene.path, "title": self.scene.title, "summary": list(self.summary),
+        return {"ok": not self.failures, "failures": self.failures, "status": self.status, "scene": self.scene.path, "title": self.scene.title, "summary": list(self.summary),
                 "tables": sorted(f"{k}.csv" for k in self.tables), "figures": sorted(f"{k}.png" for k in self.figures),
                 "time_s": self.time_s}
 

@@ -29,9 +29,12 @@ def solve(prob: Problem, bounds, tol: float, grid_n: int | None = None) -> Outco
     V = grid_points(prob, n, bounds)
     i, P, M = best_feasible(prob, V)
     h = (V[-1, 0] - V[0, 0]) / (n - 1) if n > 1 else 0.0
+    asked = tol
     tol = max(h / 2, tol) if h > 0 else tol
+    capped = (f"; tol {asked:g} asked, but the grid is capped at {n} nodes per axis: the spacing achieved is "
+              f"{h:.3g} (x within {tol:.3g}); method='exact' gives x to ~1e-12" if tol > asked * (1 + 1e-9) else "")
     if i is not None:
-        return Outcome(V[i], 1, True, f"best of {V.shape[0]} grid nodes (spacing {h:.3g})", tol=tol)
+        return Outcome(V[i], 1, True, f"best of {V.shape[0]} grid nodes (spacing {h:.3g}){capped}", tol=tol)
     w = central_point(prob, V, M, bounds)
     if w[-1] >= 0:
         return Outcome(w[:-1], 1, True, f"no feasible node among {V.shape[0]} (spacing {h:.3g}): the region is "

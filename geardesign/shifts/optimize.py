@@ -112,6 +112,25 @@ def solve_problem(prob: Problem, method: str, bounds, tol: float, grid_n=None, s
     return METHOD_TABLE[method].solve(prob, bounds, tol, grid_n, start)
 
 
+SLIDING_IMBALANCE = 2.0   # the larger root sliding over the smaller one above which the message names balanced_sliding
+
+
+def _sliding_hint(prob: Problem, geo, success: bool) -> str:
+    """A pointer to ``balanced_sliding`` when the optimum's specific sliding at the two roots is badly
+    unbalanced (wear concentrates on one gear's root), unless that is the objective already."""
+    if not success or prob.objective.name == "balanced_sliding":
+        return ""
+    try:
+        s1, s2 = float(geo["sliding1_root"]), float(geo["sliding2_root"])
+    except (KeyError, TypeError):
+        return ""
+    lo, hi = sorted((abs(s1), abs(s2)))
+    if not (math.isfinite(lo) and math.isfinite(hi)) or hi <= SLIDING_IMBALANCE * lo:
+        return ""
+    return (f"; root sliding is unbalanced (ϑ1 = {s1:.3g}, ϑ2 = {s2:.3g}): objective='balanced_sliding' "
+            "equalises it" + (" on this a_w" if prob.x_sum is not None else ""))
+
+
 def _result(prob: Problem, out: Outcome, method: str, tol: float, a_w, t0: float) -> ShiftResult:
     """The design at the method's point, evaluated once more on the float path, as a ShiftResult."""
     x1, x2 = (float(c[0]) for c in prob.xy(np.asarray(out.v)[None, :]))
@@ -132,6 +151,7 @@ def _result(prob: Problem, out: Outcome, method: str, tol: float, a_w, t0: float
     if prob.x_sum is not None:
         xs_name = "x2 - x1" if prob.mesh.internal else "x1 + x2"
         message += f"; {xs_name} = {prob.x_sum:.10g} fixed by a_w = {a_w:.10g} mm, objective {prob.objective.name}"
+    message += _sliding_hint(prob, geo, out.success)
     active = [k for k, v in mg.items() if abs(v) <= max(tol, 1e-9) * 10]
     return ShiftResult(
         x1=x1, x2=x2, fun=fun, objective=prob.objective.name, success=success, message=message,

@@ -122,6 +122,13 @@ class PlanetaryProblem(Problem):
                                 check_list=[self.checks[j] for j in indices])
 
 
+def _smallest(margins: dict, shown: int = 6) -> str:
+    """The ``shown`` smallest margins, smallest first (a set has two meshes' checks: ~20), and how many more."""
+    items = sorted(margins.items(), key=lambda kv: kv[1])
+    text = ", ".join(f"{k} {v:+.4g}" for k, v in items[:shown])
+    return text + (f" (+{len(items) - shown} larger; .to_frame() has all)" if len(items) > shown else "")
+
+
 @dataclass
 class PlanetaryShiftResult(Result):
     """The optimum of :func:`optimize_planetary_shifts`: the three shifts, the common centre
@@ -182,7 +189,7 @@ class PlanetaryShiftResult(Result):
             f"   eps_alpha: sun-planet {self.eps_alpha_sun_planet:.6g}, planet-ring {self.eps_alpha_planet_ring:.6g}",
             f"      active: {', '.join(self.active) if self.active else '-'}",
             " sensitivity: " + (", ".join(f"{k} {v:+.4g}" for k, v in self.sensitivity.items()) or "-"),
-            "     margins: " + ", ".join(f"{k} {v:+.4g}" for k, v in self.margins.items()),
+            "     margins: " + _smallest(self.margins),
             f"      method: {self.method}, tol {self.tol:g}, nit {self.nit}, {self.time_s * 1e3:.2f} ms",
         ]
         if self.conflict:

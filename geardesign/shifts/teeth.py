@@ -22,6 +22,7 @@ stronger module); finally the smaller module.
 from __future__ import annotations
 
 import functools
+import textwrap
 import math
 import time
 from dataclasses import dataclass, field
@@ -137,7 +138,13 @@ class TeethSelection(RankedTable):
         ties = same_err[np.isclose(same_err["objective"], b["objective"], rtol=1e-9, atol=1e-12)]
         if len(ties) > 1:
             text += f" (tied with {len(ties) - 1} other(s); the smaller tooth sum wins)"
-        return text + "."
+        text += "."
+        zsum = same_err["z1"] + same_err["z2"]
+        if self.a_w is None and self.objective == "max_x_sum" and len(same_err) > 1 and b["z1"] + b["z2"] == zsum.max():
+            # with a free centre distance the x-sum the checks allow grows with the tooth counts
+            text += (" With a_w free, max_x_sum grows with the tooth count, so the largest pair in the range wins; "
+                     "for a compact pair fix the housing (a_w=...), cap z1 + z2 (z_sum_max=...) or narrow z1_range.")
+        return text
 
     def best_per_module(self) -> pd.DataFrame:
         """The best feasible row of each module, in ranking order (read with ``m="series"``)."""
@@ -160,7 +167,7 @@ class TeethSelection(RankedTable):
 
     def __repr__(self) -> str:
         cols = ["z1", "z2", "ratio", "module_mm", "a_w_mm", "x1", "x2", "eps_alpha", "objective", "feasible"]
-        head = self.table[cols].head(8)
+        head = self.table[cols].head(5)
         with pd.option_context("display.width", 160, "display.max_columns", 20):
             body = head.to_string(index=False, float_format=lambda v: f"{v:.5g}")
         return "\n".join([
@@ -168,7 +175,7 @@ class TeethSelection(RankedTable):
             f"m = {self.m}, a_w = {self.a_w}, method {self.method})",
             f"  {len(self.table)} candidates solved ({int(self.table['feasible'].sum()) if len(self.table) else 0} "
             f"feasible), {len(self.skipped)} skipped, {self.time_s:.2f} s",
-            f"  choice: {self.choice}",
+            textwrap.fill(f"choice: {self.choice}", 110, initial_indent="  ", subsequent_indent="    "),
             body,
         ])
 

@@ -13,7 +13,7 @@ from geardesign.cli import main
 
 def test_pair_cli_with_both_shifts_and_a_housing(capsys):
     assert main(["pair", "--module", "8", "--z1", "17", "--z2", "26", "--x1", "0.898", "--x2", "0.517",
-                 "--center-distance", "180"]) == 0
+                 "--center-distance", "180"]) == 1
     out = capsys.readouterr().out
     assert "center_distance" in out and "x1 = 0.898, x2 = 0.517" in out
 
@@ -33,9 +33,10 @@ def test_cli_refusals_name_the_input_and_its_range():
 
 
 def test_cli_table(capsys):
-    assert main(["pair", "--module", "8", "--z1", "17", "--z2", "26", "--x1", "0.898", "--x2", "0.517"]) == 0
+    assert main(["pair", "--module", "8", "--z1", "17", "--z2", "26", "--x1", "0.898", "--x2", "0.517"]) == 1
     out = capsys.readouterr().out
-    assert "alpha_w_deg" in out and "contact_ratio" in out and "Failing checks: contact_ratio" in out
+    assert "operating pressure angle" in out and "α_w" in out and "contact_ratio" in out
+    assert out.splitlines()[1].startswith("FAILS: contact_ratio")      # the verdict first
 
 
 def test_cli_json(capsys):

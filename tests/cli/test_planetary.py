@@ -19,7 +19,7 @@ def test_given_shifts_name_the_failing_check(capsys):
     code = main(["planetary", "--module", "1.75", "--planets", "3", "--z-sun", "21", "--z-planet", "43",
                  "--z-ring", "108", "--x-sun", "0.438", "--x-planet", "0.0426", "--x-ring", "0"])
     out = capsys.readouterr().out
-    assert code == 1 and "Failing checks: planet-ring:interference_planet" in out
+    assert code == 1 and "FAILS: planet-ring:interference_planet" in out
 
 
 def test_teeth_search_and_files(tmp_path, capsys):
