@@ -8,7 +8,7 @@ import contextlib
 
 from ..gears.checks import options as check_options
 
-__all__ = ["add_check_args", "checks_from_args", "add_solver_args", "add_output_file", "add_cluster_args",
+__all__ = ["add_check_args", "checks_from_args", "add_load_args", "load_from_args", "add_solver_args", "add_output_file", "add_cluster_args",
            "cluster_from_args", "local_workers"]
 
 # the older spellings of --no-undercut and --no-interference, kept working
@@ -25,9 +25,10 @@ def _limit(text: str):
         raise argparse.ArgumentTypeError(f"expected a number or 'none', got {text!r}") from None
 
 
-def add_check_args(p, exclude=()) -> None:
+def add_check_args(p, exclude=(), load: bool = True) -> None:
     """One option per registered check option (:func:`geardesign.gears.checks.options`): a limit as
-    ``--eps-alpha-min VALUE`` (``none`` drops the check), a flag as ``--undercut``/``--no-undercut``."""
+    ``--eps-alpha-min VALUE`` (``none`` drops the check), a flag as ``--undercut``/``--no-undercut``; with
+    ``load``, the load case of the strength checks (:func:`add_load_args`)."""
     g = p.add_argument_group("checks (limits and switches; see docs/extending.md for adding one)")
     for opt in check_options().values():
         if not opt.cli or opt.name in exclude:
@@ -44,6 +45,8 @@ def add_check_args(p, exclude=()) -> None:
             if opt.name in _ALIASES:
                 g.add_argument(_ALIASES[opt.name], dest=opt.name, action="store_false",
                                help=f"the same as --no-{opt.name}")
+    if load:
+        add_load_args(p)
 
 
 def checks_from_args(args) -> dict:
@@ -54,6 +57,8 @@ def checks_from_args(args) -> dict:
         value = getattr(args, name, None)
         if hasattr(args, name) and (opt.kind == "limit" or value is not None):
             out[name] = value
+    if hasattr(args, "torque"):
+        out.update(load_from_args(args))
     return out
 
 
@@ -111,3 +116,36 @@ def cluster_from_args(args):
     n = local_workers(args)
     with cluster(workers=n if args.workers is not None else None, address=args.scheduler) as client:
         yield client
+
+
+def add_load_args(p) -> None:
+    """The load case of the strength checks (ISO 6336): a torque or a power at a speed, the material(s),
+    the life and the application factor; given, the strength checks join the others."""
+    g = p.add_argument_group("load capacity (ISO 6336; any of these switches the strength checks on)")
+    g.add_argument("--torque", type=float, default=None, metavar="NM", help="torque on gear 1 (--on-gear), N·m")
+    g.add_argument("--power", type=float, default=None, metavar="KW", help="power, kW (instead of --torque)")
+    g.add_argument("--speed", type=float, default=None, metavar="RPM", help="speed of the gear the load is on, rpm")
+    g.add_argument("--on-gear", type=int, default=1, choices=(1, 2), help="the gear --torque and --speed are of (1)")
+    g.add_argument("--material", default=None, metavar="NAME",
+                   help="material of both gears (or of gear 1 with --material2), a name of the ISO 6336-5 catalog, "
+                        "e.g. 42CrMo4, 18CrNiMo7-6, C45")
+    g.add_argument("--material2", default=None, metavar="NAME", help="material of gear 2 (default: --material)")
+    g.add_argument("--life-h", type=float, default=None, metavar="H",
+                   help="required life, hours (default: endurance, Z_NT = Y_NT = 1)")
+    g.add_argument("--application-factor", type=float, default=1.0, metavar="K_A",
+                   help="application factor K_A (ISO 6336-1 6.3; 1.0 uniform)")
+    g.add_argument("--strength-width", type=float, default=None, metavar="MM",
+                   help="face width for the strength checks, mm (default: --face-width)")
+
+
+def load_from_args(args) -> dict:
+    """The load case as :func:`~geardesign.gears.checks.make_checks` context keywords (empty without one)."""
+    given = [args.torque, args.power, args.speed, args.material, args.material2, args.life_h]
+    if all(v is None for v in given):
+        return {}
+    from ..gears.strength import Load   # here: only a command with a load reads the strength model
+
+    load = Load(torque_nm=args.torque, power_kw=args.power, n_rpm=args.speed, on_gear=args.on_gear,
+                application_factor=args.application_factor, life_h=args.life_h)
+    width = args.strength_width if args.strength_width is not None else getattr(args, "face_width", None)
+    return {"load": load, "material": args.material, "material2": args.material2, "face_width_mm": width}

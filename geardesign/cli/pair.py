@@ -116,8 +116,10 @@ def run(args) -> int:
     pair, housing = pair_from_args(args)
     rack, shorten = pair.rack, not args.no_tip_shortening
     geo = pair.geometry()
-    table = pair.checks(**checks_from_args(args), housing_a_w=housing)
+    checks = checks_from_args(args)
+    table = pair.checks(**checks, housing_a_w=housing)
     failed = table.loc[~table["ok"], "check"].tolist()
+    strength = _strength(pair, checks)
     if args.json:
         print_json({
             "ok": not failed, "failing_checks": failed,
@@ -128,6 +130,7 @@ def run(args) -> int:
             "geometry": geo.to_dict(),
             "checks": frame_records(table[["check", "value", "limit", "margin", "ok"]]),
             **({"measurements": _measurements(pair, True)} if args.measurements else {}),
+            **({"strength": strength.to_dict()} if strength is not None else {}),
         })
         return 1 if failed else 0
     print(describe(pair, shorten))
@@ -136,4 +139,15 @@ def run(args) -> int:
     print_frame(geo.to_table(helical=bool(pair.beta_deg)), "\nGeometry", float_format="{:.8g}")
     if args.measurements:
         _measurements(pair, False)
+    if strength is not None:
+        print(f"\n{strength!r}")
+        print_frame(strength.factors, "\nISO 6336 factors (gear 0: the pair)", float_format="{:.6g}")
     return 1 if failed else 0
+
+
+def _strength(pair, checks: dict):
+    """The pair's ISO 6336 result for the command line's load case, or None without one."""
+    if "load" not in checks:
+        return None
+    return pair.strength(checks["load"], checks["material"], material2=checks["material2"],
+                         face_width_mm=checks["face_width_mm"])

@@ -45,7 +45,7 @@ def add_parser(sub):
     add_output_file(p, "--plot", "PNG", "the feasible (x_sun, x_planet) region")
     p.add_argument("--drawing", metavar="PNG", default=None, help="write the set's drawing (circles) to this PNG")
     add_rack_args(p)
-    add_check_args(p, exclude=("eps_gamma_min",))
+    add_check_args(p, exclude=("eps_gamma_min",), load=False)
     add_json_flag(p)
     add_cluster_args(p)   # used with --ratio (the tooth-count search)
     return p
