@@ -92,7 +92,22 @@ def _shift_keys() -> dict:
             "face_width_mm": _F(lo=FACE_WIDTH_RANGE_MM[0], hi=FACE_WIDTH_RANGE_MM[1], lo_open=True),
             "objective": _Key("choice", choices=tuple(OBJECTIVES)),   # default: max_x_sum, or balanced_sliding with a_w
             "method": _Key("choice", default="exact", choices=METHODS),
-            "checks": _checks_schema(), "rack": _rack_schema()}
+            "checks": _checks_schema(), "rack": _rack_schema(), "load": _load_schema()}
+
+
+def _load_schema() -> dict:
+    """[gear.load]: the load case of the strength checks (ISO 6336), as :class:`geardesign.gears.strength.Load`
+    and the materials of the catalog; the face width is the section's ``face_width_mm``."""
+    from ..gears.strength.load import (APPLICATION_FACTOR_RANGE, LIFE_RANGE_H, POWER_RANGE_KW, SPEED_RANGE_RPM,
+                                       TORQUE_RANGE_NM)
+
+    return {"torque_nm": _F(lo=TORQUE_RANGE_NM[0], hi=TORQUE_RANGE_NM[1], lo_open=True),
+            "power_kw": _F(lo=POWER_RANGE_KW[0], hi=POWER_RANGE_KW[1], lo_open=True),
+            "n_rpm": _F(required=True, lo=SPEED_RANGE_RPM[0], hi=SPEED_RANGE_RPM[1], lo_open=True),
+            "on_gear": _I(default=1, lo=1, hi=2),
+            "application_factor": _F(default=1.0, lo=APPLICATION_FACTOR_RANGE[0], hi=APPLICATION_FACTOR_RANGE[1]),
+            "life_h": _F(lo=LIFE_RANGE_H[0], hi=LIFE_RANGE_H[1], lo_open=True),
+            "material": _Key("str", required=True), "material2": _Key("str")}
 
 
 def _gear_schema() -> dict:

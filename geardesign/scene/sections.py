@@ -67,8 +67,18 @@ class SceneReport(Result):
                 "time_s": self.time_s}
 
 
-def _checks_dict(spec: dict | None) -> dict | None:
-    return dict(spec) if spec else None
+def _checks_dict(spec: dict | None, section: dict | None = None) -> dict | None:
+    """The section's [checks] as make_checks options, with its [load] (the strength checks' load case)."""
+    out = dict(spec or {})
+    load = (section or {}).get("load")
+    if load:
+        from ..gears.strength import Load
+
+        out.update(load=Load(**{k: load.get(k) for k in ("torque_nm", "power_kw", "n_rpm", "on_gear",
+                                                        "application_factor", "life_h")}),
+                   material=load["material"], material2=load.get("material2"),
+                   face_width_mm=section.get("face_width_mm"))
+    return out or None
 
 
 def _run_gear(rep: SceneReport, g: dict):
@@ -79,7 +89,7 @@ def _run_gear(rep: SceneReport, g: dict):
     from ..shifts.optimize import optimize_shifts
 
     rack = g["_rack"]
-    checks = _checks_dict(g.get("checks"))
+    checks = _checks_dict(g.get("checks"), g)
     kind = scene_kind(g)
     kw = dict(checks=checks, rack=rack, tip_shortening=g["tip_shortening"], bounds=tuple(g["bounds"]), **kind)
     res = optimize_shifts(g["z1"], g["z2"], objective=g.get("objective"), method=g["method"], m=g["module"],
@@ -142,10 +152,27 @@ def _run_gear(rep: SceneReport, g: dict):
         drawn += [("given", *given)] if given else []
         for tag, x1, x2 in drawn:
             _add_mesh_drawing(rep, GearPair(g["module"], g["z1"], g["z2"], x1, x2, **pair_kw), tag)
+    if checks and "load" in checks:
+        _add_strength(rep, g, checks, res, given, pair_kw)
     if g["data_block"]:
         pairs = ([("optimum", res.x1, res.x2)] if res.success else []) + ([("given", *given)] if given else [])
         for tag, x1, x2 in pairs:
             _add_data_blocks(rep, GearPair(g["module"], g["z1"], g["z2"], x1, x2, **pair_kw), tag, g.get("accuracy_class"))
+
+
+def _add_strength(rep: SceneReport, g: dict, checks: dict, res, given, pair_kw: dict):
+    """ISO 6336 at the optimum and at the given shifts: the safety factors and the factor table."""
+    from ..gears.pair import GearPair
+
+    pairs = ([("optimum", res.x1, res.x2)] if res.success else []) + ([("given", *given)] if given else [])
+    for tag, x1, x2 in pairs:
+        r = GearPair(g["module"], g["z1"], g["z2"], x1, x2, **pair_kw).strength(
+            checks["load"], checks["material"], material2=checks["material2"], face_width_mm=checks["face_width_mm"])
+        rep.tables[f"gear_strength_{tag}"] = r.factors
+        rep.markdown += [f"### Load capacity (ISO 6336) of the {tag} pair", "", "```", repr(r), "```", "",
+                         md_table(r.factors), ""]
+        rep.summary.append(f"{tag} pair: S_H = {min(r.S_H1, r.S_H2):.3f}, S_F = {r.S_F1:.3f} / {r.S_F2:.3f}"
+                           f" ({'holds' if r.ok else 'FAILS'} S_Hmin {r.S_Hmin:g}, S_Fmin {r.S_Fmin:g})")
 
 
 def _add_data_blocks(rep: SceneReport, pair, tag: str, accuracy_class):
@@ -176,7 +203,7 @@ def _run_teeth(rep: SceneReport, t: dict):
 
     kw = dict(ratio=t["ratio"], ratio_tol=t["ratio_tol"], m=t.get("module"), a_w=t.get("a_w"),
               z1_range=tuple(t["z1_range"]), z_sum_max=t.get("z_sum_max"), objective=t.get("objective"),
-              checks=_checks_dict(t.get("checks")), rack=t["_rack"], method=t["method"], **scene_kind(t))
+              checks=_checks_dict(t.get("checks"), t), rack=t["_rack"], method=t["method"], **scene_kind(t))
     sel = select_teeth(**kw, client=t.get("_client"))
     rep.results["teeth"] = sel
     rep.tables["teeth"] = sel.table
