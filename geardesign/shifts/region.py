@@ -24,7 +24,7 @@ from .conflict import smallest_conflict
 from .local import central_point
 from .nodes import grid_points
 
-__all__ = ["feasible_region", "Region", "CHECK_COLOURS", "check_style"]
+__all__ = ["feasible_region", "Region", "CHECK_COLOURS", "CHECK_LEGENDS", "check_style", "check_legend"]
 
 WINDOW = "window"
 
@@ -124,10 +124,9 @@ class Region(Result):
             # ticks on the side where the margin is negative (contour lines keep higher values
             # on their left, the ticks go right)
             cs.set(path_effects=[patheffects.withTickedStroke(angle=-60, spacing=7, length=0.6)])
-            handles.append(plt.Line2D([], [], color=colour, ls=style, lw=1.6, label=c.name))
-        limits = {c.name: c.limit for c in self.problem.checks}
+            handles.append(plt.Line2D([], [], color=colour, ls=style, lw=1.6, label=check_legend(c)))
         if isolines:
-            _isolines(ax, X1, X2, geo, isolines, limits)
+            _isolines(ax, X1, X2, geo, isolines, self.problem.checks)
         if self.feasible:
             for _, comp in self.boundary.groupby("component"):
                 ax.fill(comp["x1"], comp["x2"], color="tab:green", alpha=0.22, lw=0)
@@ -156,37 +155,47 @@ class Region(Result):
         ax.set_ylim(lo, hi)
         ax.set_xlabel(self.problem.axis_labels[0], fontsize=10)
         ax.set_ylabel(self.problem.axis_labels[1], fontsize=10)
-        ax.set_title(f"Blocking contour {self.problem.title} "
+        ax.set_title(f"Blocking contour {self.problem.title}, m = {self.problem.m:g} mm "
                      "(ticks: forbidden side)", fontsize=11)
         ax.grid(True, lw=0.3, alpha=0.6)
         ax.set_aspect("equal")
         ax.legend(handles=handles, fontsize=8.5, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)
         return ax
 
-    def _plot_x_sum(self, ax, x_sum: float) -> list:
-        """The line x_Σ = x_sum (x1 + x2, or x2 − x1 for a ring pair) across the window, its
-        feasible part thick."""
-        import matplotlib.pyplot as plt
-
+    def x_sum_line(self, x_sum: float, points: int = 2001):
+        """The line x_Σ = x_sum (x1 + x2, or x2 − x1 for a ring pair) across the window: (x1, x2,
+        inside, a_w in mm, legend text), or None where it misses the window. What both the PNG
+        and the HTML contour draw."""
         prob = self.problem
         prob_line = prob.subproblem(range(len(prob.checks)))
         prob_line.x_sum = x_sum
-        t = np.linspace(*prob_line.x1_on_line(*self.bounds), 2001)
+        t = np.linspace(*prob_line.x1_on_line(*self.bounds), points)
         if t.size == 0 or t[0] > t[-1]:
-            return []
+            return None
         x2 = x_sum - prob.sgn * t
-        inside = self.contains(t, x2)
         a_w = float(center_distance_from_x_sum(prob.m, prob.z1, prob.z2, x_sum, prob.rack,
                                                beta_deg=prob.mesh.beta_deg, internal=prob.mesh.internal))
+        xs_name = "x2 − x1" if prob.mesh.internal else "x1 + x2"
+        return t, x2, np.asarray(self.contains(t, x2)), a_w, f"a_w = {a_w:.6g} mm ({xs_name} = {x_sum:.4g})"
+
+    def _plot_x_sum(self, ax, x_sum: float) -> list:
+        """The line x_Σ = x_sum across the window, its feasible part thick."""
+        import matplotlib.pyplot as plt
+
+        line = self.x_sum_line(x_sum)
+        if line is None:
+            return []
+        t, x2, inside, _, label = line
         ax.plot(t, x2, color="k", lw=0.9, ls="--", zorder=3)
         seg = np.where(inside, x2, np.nan)
         ax.plot(t, seg, color="k", lw=3.2, solid_capstyle="butt", zorder=4)
-        xs_name = "x2 − x1" if prob.mesh.internal else "x1 + x2"
-        return [plt.Line2D([], [], color="k", lw=0.9, ls="--",
-                           label=f"a_w = {a_w:.6g} mm ({xs_name} = {x_sum:.4g})"),
+        return [plt.Line2D([], [], color="k", lw=0.9, ls="--", label=label),
                 plt.Line2D([], [], color="k", lw=3.2, label="its feasible part")]
 
 
+# How each kind of check looks, in one place (a check registry can carry these): its colour,
+# and what a legend says it asks, with its limit ({g}: the gear's mark in a symbol, "1" or
+# ",sun"; {gear}: the gear in words; {limit}: the check's limit).
 CHECK_COLOURS = {
     "undercut": "tab:blue", "interference": "tab:red", "tip_thickness": "tab:orange",
     "contact_ratio": "tab:purple", "jamming": "tab:brown", "center_distance": "tab:cyan",
@@ -194,38 +203,77 @@ CHECK_COLOURS = {
     "total_contact_ratio": "indigo", "radial_assembly": "slategray", "tooth_difference": "black",
     "neighbours": "teal", "cutter_interference": "olive",
 }
+# a planetary set's planet-ring mesh: colours of their own, apart from each other and from the
+# sun-planet mesh's (darkening the sun-planet colours made three of them one dark red)
+PLANET_RING_COLOURS = {
+    "interference": "#e377c2", "tip_thickness": "chocolate", "contact_ratio": "navy",
+    "ring_tip": "darkgreen", "tip_interference": "darkgoldenrod", "cutter_trimming": "#8c564b",
+    "cutter_interference": "#bcbd22",
+}
+CHECK_LEGENDS = {
+    "undercut": "no undercut, {gear}", "interference": "no root interference, {gear}",
+    "tip_thickness": "s_a{g}/m ≥ {limit:g}", "contact_ratio": "ε_α ≥ {limit:g}",
+    "total_contact_ratio": "ε_γ ≥ {limit:g}", "jamming": "the mating tip short of N{g}",
+    "center_distance": "a_w = housing's {limit:g} mm", "ring_tip": "ring tip circle outside its base circle",
+    "tip_interference": "tips clear each other (trochoid)", "cutter_trimming": "no trimming of the ring by its cutter",
+    "cutter_interference": "no interference of the cutter with the ring",
+    "radial_assembly": "planets assemble radially", "tooth_difference": "z_ring − z_planet large enough",
+    "neighbours": "planet tips clear by ≥ {limit:g}·m",
+}
 _CUSTOM_COLOURS = ("tab:olive", "tab:pink", "tab:gray", "darkgoldenrod", "teal")
 PLOT_N_MAX = 1201      # nodes per axis of a plot's curves: 1.4 M designs, ~1 s
+_GEARS = ("sun", "planet", "ring")
+
+
+def _parts(name: str) -> tuple:
+    """(mesh or None, kind, gear or None) of a check's name: "tip_thickness1" -> (None,
+    "tip_thickness", "1"); "planet-ring:interference_ring" -> ("planet-ring", "interference", "ring")."""
+    if ":" in name:
+        mesh, kind = name.split(":", 1)
+        gear = kind.rsplit("_", 1)[-1] if kind.rsplit("_", 1)[-1] in _GEARS else None
+        return mesh, (kind.rsplit("_", 1)[0] if gear else kind), gear
+    kind = name.rstrip("12")
+    return None, kind, (name[len(kind):] or None) if kind in CHECK_COLOURS else None
 
 
 def check_style(name: str) -> tuple[str, str]:
     """(colour, line style) of a check, the same in every plot: the colour by its kind, solid
     for gear 1 and dashed for gear 2; a custom check gets a colour from its name. A planetary
-    set's checks ("planet-ring:interference_planet") take their kind's colour, darker in the
-    planet-ring mesh, and their gear's style: solid sun, dashed planet, dash-dot ring; a check of
-    the whole mesh solid in sun-planet, dashed in planet-ring; the set's own dotted."""
-    if ":" in name:
-        from matplotlib.colors import to_rgb
-
-        mesh, kind = name.split(":", 1)
-        gear = kind.rsplit("_", 1)[-1] if kind.rsplit("_", 1)[-1] in ("sun", "planet", "ring") else None
-        kind = kind.rsplit("_", 1)[0] if gear else kind
-        colour = CHECK_COLOURS.get(kind, _CUSTOM_COLOURS[sum(map(ord, kind)) % len(_CUSTOM_COLOURS)])
-        if mesh == "planet-ring":
-            colour = tuple(0.55 * c for c in to_rgb(colour))
+    set's checks ("planet-ring:interference_planet") take their kind's colour (the planet-ring
+    mesh's from :data:`PLANET_RING_COLOURS`) and their gear's style: solid sun, dashed planet,
+    dash-dot ring; a check of the whole mesh solid in sun-planet, dashed in planet-ring; the set's
+    own dotted."""
+    mesh, kind, gear = _parts(name)
+    custom = _CUSTOM_COLOURS[sum(map(ord, kind if mesh else name)) % len(_CUSTOM_COLOURS)]
+    if mesh is not None:
+        table = PLANET_RING_COLOURS if mesh == "planet-ring" and kind in PLANET_RING_COLOURS else CHECK_COLOURS
         style = {"sun": "-", "planet": "--", "ring": "-."}.get(gear) or {"sun-planet": "-", "planet-ring": "--"}.get(mesh, ":")
-        return colour, style
-    kind = name.rstrip("12")
-    gear2 = name.endswith("2") and kind in CHECK_COLOURS
+        return table.get(kind, custom), style
     if kind in CHECK_COLOURS:
-        return CHECK_COLOURS[kind], "--" if gear2 else "-"
-    return _CUSTOM_COLOURS[sum(map(ord, name)) % len(_CUSTOM_COLOURS)], "-."
+        return CHECK_COLOURS[kind], "--" if gear == "2" else "-"
+    return custom, "-."
 
 
-def _isolines(ax, X1, X2, geo, isolines, limits) -> None:
+def check_legend(check) -> str:
+    """A legend's entry for a check: its name and what it asks, with its limit
+    ("contact_ratio: ε_α ≥ 1.2"); a check of unknown kind by its name and label."""
+    _, kind, gear = _parts(check.name)
+    text = CHECK_LEGENDS.get(kind)
+    if text is None:
+        return f"{check.name}: {check.label}" if check.label else check.name
+    g = "" if gear is None else (gear if gear.isdigit() else f",{gear}")
+    words = "" if gear is None else (f"gear {gear}" if gear.isdigit() else f"the {gear}")
+    return f"{check.name}: " + text.format(g=g, gear=words, limit=check.limit)
+
+
+def _isolines(ax, X1, X2, geo, isolines, checks) -> None:
     """Thin grey labelled isolines; a level equal to a check's limit is that check's curve."""
-    eps_limit = limits.get("contact_ratio")
-    sa_limit = {j: limits.get(f"tip_thickness{j}") for j in (1, 2)}
+    parts = [(_parts(c.name), c.limit) for c in checks]
+    eps_limit = next((lim for (_, kind, _), lim in parts if kind == "contact_ratio"), None)
+    # geo's sa1, sa2: gear 1 and 2 of a pair, the sun and the planet of a planetary set
+    marks = ("1", "2") if "sun-planet" not in geo else (",sun", ",planet")
+    sa_limit = {j: next((lim for (_, kind, gear), lim in parts if kind == "tip_thickness"
+                         and gear in (str(j), ("sun", "planet")[j - 1])), None) for j in (1, 2)}
     style = dict(colors="0.35", linewidths=0.6, linestyles=[(0, (3, 2))])
     with np.errstate(invalid="ignore"):
         if "eps_alpha" in isolines:
@@ -239,7 +287,7 @@ def _isolines(ax, X1, X2, geo, isolines, limits) -> None:
                 if not levels:
                     continue
                 cs = ax.contour(X1, X2, np.ma.masked_invalid(geo[f"sa{j}"] / geo["_m"]), levels=levels, **style)
-                ax.clabel(cs, fmt=f"s_a{j}/m=%.2f", fontsize=7.5, inline_spacing=2)
+                ax.clabel(cs, fmt=f"s_a{marks[j - 1]}/m=%.2f", fontsize=7.5, inline_spacing=2)
 
 
 def _project(prob: Problem, P: np.ndarray, idx: np.ndarray, iters: int = 10) -> np.ndarray:
