@@ -1,11 +1,14 @@
 """``geardesign pair``: geometry and checks of one spur pair."""
 from __future__ import annotations
 
+import sys
+
 from ..gears.checks import DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN
 from ..errors import GearDesignError
 from ..gears.geometry import GEOMETRY_FIELDS
 from ..gears.pair import GearPair
 from ..gears.rack import BasicRack
+from .options import add_output_file
 from .output import add_json_flag, frame_records, print_frame, print_json
 
 
@@ -93,11 +96,20 @@ def add_parser(sub):
     add_pair_args(p)
     add_limit_args(p)
     add_json_flag(p)
+    add_output_file(p, "--report", "HTML", "a one-page calculation report (inputs, geometry, checks, contour, mesh)")
     return p
 
 
 def run(args) -> int:
+    if args.report:
+        from ..files import check_output_path
+        check_output_path(args.report, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--report")
     pair, housing = pair_from_args(args)
+    if args.report:
+        from ..scene.html import pair_report
+        pair_report(pair, args.report, overwrite=args.overwrite, eps_alpha_min=args.eps_alpha_min,
+                    sa_min=args.sa_min, housing_a_w=housing, eps_gamma_min=args.eps_gamma_min)
+        print(f"report written to {args.report}", file=sys.stderr)   # stderr: --json keeps stdout pure
     rack, shorten = pair.rack, not args.no_tip_shortening
     geo = pair.geometry()
     table = pair.checks(eps_alpha_min=args.eps_alpha_min, sa_min=args.sa_min, housing_a_w=housing,

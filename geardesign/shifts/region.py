@@ -162,6 +162,15 @@ class Region(Result):
         ax.legend(handles=handles, fontsize=8.5, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)
         return ax
 
+    def to_html(self, path, optimum=None, proposed=None, x_sum=None, n: int = 121, overwrite: bool = False):
+        """Write the blocking contour as an interactive page (plotly, works offline): hover shows
+        every check's margin and ε_α, s_a/m, a_w at the nearest of n × n nodes, a legend click
+        hides or shows a check; marks as in :meth:`plot`. Returns the path. See
+        :mod:`geardesign.shifts.contour_html`."""
+        from .contour_html import write_contour_html   # here: that module imports this one
+
+        return write_contour_html(self, path, optimum, proposed, x_sum, n, overwrite)
+
     def x_sum_line(self, x_sum: float, points: int = 2001):
         """The line x_Σ = x_sum (x1 + x2, or x2 − x1 for a ring pair) across the window: (x1, x2,
         inside, a_w in mm, legend text), or None where it misses the window. What both the PNG

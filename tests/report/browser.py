@@ -1,0 +1,68 @@
+"""Headless Chromium for the page tests: find the binary, dump a page's rendered DOM, parse tables.
+
+CI installs Debian's ``chromium`` package; on a machine without any Chromium the browser tests
+skip and say why (the page-building tests that need no browser still run)."""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from html.parser import HTMLParser
+
+import pytest
+
+NAMES = ("chromium", "chromium-browser", "google-chrome", "google-chrome-stable")
+FLAGS = ["--headless", "--disable-gpu", "--no-sandbox", "--hide-scrollbars", "--run-all-compositor-stages-before-draw",
+         "--virtual-time-budget=15000"]
+
+
+def browser() -> str:
+    for name in NAMES:
+        path = shutil.which(name)
+        if path:
+            return path
+    pytest.skip("no Chromium binary on PATH (CI installs Debian's chromium package)")
+
+
+def dump_dom(path) -> str:
+    """The DOM of file ``path`` after the page's scripts ran (plotly draws its SVG then)."""
+    out = subprocess.run([browser(), *FLAGS, "--dump-dom", path.resolve().as_uri()], capture_output=True,
+                         text=True, timeout=180)
+    assert out.returncode == 0, out.stderr[-2000:]
+    return out.stdout
+
+
+def screenshot(path, png, size=(1280, 1600)) -> None:
+    subprocess.run([browser(), *FLAGS, f"--screenshot={png}", f"--window-size={size[0]},{size[1]}",
+                    path.resolve().as_uri()], capture_output=True, timeout=180, check=True)
+
+
+class Tables(HTMLParser):
+    """Every <table> of a page as a list of rows of cell texts (colspan cells repeated)."""
+
+    def __init__(self):
+        super().__init__()
+        self.tables, self._cell, self._span = [], None, 1
+
+    def handle_starttag(self, tag, attrs):
+        if tag == "table":
+            self.tables.append([])
+        elif tag == "tr" and self.tables:
+            self.tables[-1].append([])
+        elif tag in ("td", "th"):
+            self._cell, self._span = [], int(dict(attrs).get("colspan", 1))
+
+    def handle_endtag(self, tag):
+        if tag in ("td", "th") and self._cell is not None:
+            self.tables[-1][-1] += [re.sub(r"\s+", " ", "".join(self._cell)).strip()] * self._span
+            self._cell = None
+
+    def handle_data(self, data):
+        if self._cell is not None:
+            self._cell.append(data)
+
+
+def tables(dom: str) -> list:
+    p = Tables()
+    p.feed(dom)
+    return p.tables

@@ -1,0 +1,172 @@
+"""The calculation report and the interactive contour, opened in a real (headless) Chromium.
+
+The report's geometry table is read back from the rendered page and compared with KHK's published
+example (12/24 teeth, m 3, x 0.6/0.36; tests/data/gear_examples.csv, E1_KHK_ext_12_24, from KHK's
+"Calculation of Gears" as quoted in bolsover/UtilitiesForAlibre's unit tests)."""
+import csv
+import json
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import geardesign as gd
+from geardesign.cli import main
+from geardesign.errors import GearDesignError
+from geardesign.shifts.contour_html import contour_figure
+
+from .browser import dump_dom, tables
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "gear_examples.csv"
+
+
+def _khk():
+    rows = [r for r in csv.DictReader(DATA.open()) if r["example_id"] == "E1_KHK_ext_12_24" and r["published_value"]]
+    return {(r["parameter"], r["member"]): float(r["published_value"]) for r in rows}
+
+
+@pytest.fixture(scope="module")
+def khk_report(tmp_path_factory):
+    path = tmp_path_factory.mktemp("report") / "khk.html"
+    gd.GearPair(3, 12, 24, 0.6, 0.36).report(path)
+    return path
+
+
+def test_report_is_self_contained_and_printable(khk_report):
+    page = khk_report.read_text(encoding="utf-8")
+    # nothing fetched from outside: no script, stylesheet or picture by URL
+    assert not re.search(r'(src|href)="(https?:)?//', page)
+    assert "@media print" in page and "@page" in page
+    assert page.count('src="data:image/png;base64,') == 2      # the contour and the mesh drawing
+
+
+def test_report_in_browser_matches_khk(khk_report):
+    dom = dump_dom(khk_report)
+    # the verdict comes before every table
+    assert dom.index('class="verdict') < dom.index("<table")
+    assert "Every check holds" in dom               # KHK's pair: ε_α 1.202 >= 1.2, tips 0.42 m, 0.74 m
+    checks, inputs, geometry = tables(dom)
+    assert checks[0][:3] == ["verdict", "check", "what it asks"]
+    assert {r[1] for r in checks[1:]} >= {"contact_ratio", "undercut1", "tip_thickness2"}
+    assert geometry[0] == ["quantity", "symbol", "unit", "gear 1", "gear 2"]
+    by_symbol = {r[1]: r for r in geometry[1:]}
+    pub = _khk()
+    # symbol on the page -> (published parameter, tolerance: the page's rounding + the source's)
+    for sym, name, tol in (("db", "d_b", 1e-3), ("dw", "d_w", 1e-3), ("da", "d_a", 1e-3), ("df", "d_f", 1e-3),
+                           ("d", "d", 1e-3)):
+        row = by_symbol[sym]
+        assert abs(float(row[3]) - pub[(name, "1")]) <= tol, (sym, row)
+        assert abs(float(row[4]) - pub[(name, "2")]) <= tol, (sym, row)
+    for sym, name, tol in (("aw", "a_w", 1e-4), ("αw", "alpha_w_deg", 1e-4), ("y", "y_centre_distance_mod_coeff", 1e-4),
+                           ("εα", "eps_alpha", 1e-3)):
+        row = by_symbol[sym]
+        assert row[3] == row[4], row            # one value across both gear columns
+        assert abs(float(row[3]) - pub[(name, "pair")]) <= tol, (sym, row)
+    # both pictures are in the rendered page
+    assert len(re.findall(r'<img alt="[^"]+" src="data:image/png;base64,', dom)) == 2
+
+
+def test_failing_pair_report_says_so_first(tmp_path):
+    path = gd.GearPair(8, 17, 26, 0.898, 0.517).report(tmp_path / "engine.html", housing_a_w=180)
+    page = path.read_text(encoding="utf-8")
+    verdict = re.search(r'<div class="verdict fail">(.*?)</div>', page).group(1)
+    # seed 000's engine pair: ε_α 1.153 < 1.2, and its a_w 181.60 mm is not the housing's 180 mm
+    assert "contact_ratio (value 1.1532, limit 1.2)" in verdict and "center_distance" in verdict
+    first_rows = re.findall(r"<tr class=\"failrow\"><td class=\"mark\">FAILS</td><td>(\w+)</td>", page)
+    assert set(first_rows) == {"contact_ratio", "center_distance"}
+    with pytest.raises(GearDesignError, match="exists: give --overwrite"):
+        gd.GearPair(8, 17, 26, 0.898, 0.517).report(tmp_path / "engine.html")
+    with pytest.raises(GearDesignError, match=r"must end in \.html"):
+        gd.pair_report(gd.GearPair(8, 17, 26), tmp_path / "engine.pdf")
+
+
+@pytest.fixture(scope="module")
+def engine_contour(tmp_path_factory):
+    path = tmp_path_factory.mktemp("contour") / "c.html"
+    reg = gd.feasible_region(17, 26, m=8)
+    opt = gd.optimize_shifts(17, 26, m=8, a_w=180)
+    reg.to_html(path, optimum=opt, proposed=(0.898, 0.517), x_sum=opt.x_sum_fixed)
+    return reg, opt, path
+
+
+def test_contour_page_in_browser(engine_contour):
+    reg, opt, path = engine_contour
+    page = path.read_text(encoding="utf-8")
+    assert not re.search(r'<script[^>]+src="', page)          # plotly.js inside: works offline
+    dom = dump_dom(path)
+    assert dom.count('class="main-svg"') >= 2                 # plotly drew its SVG layers
+    legend = [html_unescape(t) for t in re.findall(r'class="legendtext"[^>]*>(.*?)</text>', dom)]
+    curves = set(reg.limiting_checks()) | {"contact_ratio", "tip_thickness1", "interference1"}
+    for name in curves & set(reg.checks):
+        assert any(t.startswith(f"{name}: ") for t in legend), (name, legend)
+    assert "contact_ratio: ε_α ≥ 1.2" in legend and "tip_thickness2: s_a2/m ≥ 0.25" in legend
+    assert any(t.startswith("a_w = 180 mm") for t in legend)
+    assert any(t.startswith("proposed (0.898, 0.517): fails") for t in legend)
+    assert any(t.startswith("optimum (") for t in legend)
+    assert "m = 8 mm" in html_unescape(re.search(r'class="gtitle"[^>]*>(.*?)</text>', dom).group(1))
+
+
+def html_unescape(s: str) -> str:
+    import html
+    return html.unescape(re.sub(r"<[^>]+>", "", s))
+
+
+def test_contour_hover_is_every_margin_at_the_node(engine_contour):
+    # the hover grid's numbers against GearPair's own checks at the same (x1, x2): the float path of
+    # one pair, not the grid's array path
+    reg, _, _ = engine_contour
+    fig = contour_figure(reg, n=41)
+    hover = fig.data[0]
+    g = np.asarray(hover.x)
+    names = reg.checks
+    assert all(f"{n}: " in hover.hovertemplate for n in names)
+    assert "ε_α = " in hover.hovertemplate and "a_w, mm = " in hover.hovertemplate
+    for i, j in ((20, 25), (30, 18), (24, 30)):
+        x1, x2 = float(g[j]), float(g[i])          # row i is x2, column j is x1
+        table = gd.GearPair(8, 17, 26, x1, x2).checks(jamming=False).set_index("check")
+        cell = hover.customdata[i][j]
+        for k, n in enumerate(names):
+            assert cell[k] == pytest.approx(round(float(table.loc[n, "margin"]), 4), abs=1.5e-4), (n, x1, x2)
+        geo = gd.GearPair(8, 17, 26, x1, x2).geometry()
+        eps, sa1, sa2, a_w = cell[len(names):]
+        assert eps == pytest.approx(geo.eps_alpha, abs=1e-4) and a_w == pytest.approx(geo.a_w, abs=1e-4)
+        assert sa1 == pytest.approx(geo.sa1 / 8, abs=1e-4) and sa2 == pytest.approx(geo.sa2 / 8, abs=1e-4)
+        ok = all(table.loc[n, "ok"] for n in names)
+        assert hover.text[i][j] == ("every check holds" if ok else "fails")
+    # one legend entry per check curve, each in its own group (a click hides the curve and its ticks)
+    groups = [t.legendgroup for t in fig.data if t.showlegend is not False and t.legendgroup in names]
+    assert len(groups) == len(set(groups)) >= 4
+
+
+def test_planetary_contour_names_sun_and_planet(tmp_path):
+    reg = gd.planetary_region(21, 43, 108, 3, 1.75, n=81, method="grid")
+    fig = contour_figure(reg, n=31)
+    assert "ε_α sun-planet" in fig.data[0].hovertemplate and "x_ring" in fig.data[0].hovertemplate
+    assert "m = 1.75 mm" in fig.layout.title.text
+
+
+def test_cli_report_and_html(tmp_path, capsys):
+    rep, page = tmp_path / "pair.html", tmp_path / "contour.html"
+    assert main(["pair", "-m", "8", "--z1", "17", "--z2", "26", "--x1", "0.898", "--x2", "0.517", "--report",
+                 str(rep), "--json"]) in (0, 1)
+    out = capsys.readouterr()
+    json.loads(out.out)                       # the JSON stays pure; the note goes to stderr
+    assert "report written" in out.err and "FAILS" in rep.read_text(encoding="utf-8")
+    assert main(["shift", "--z1", "17", "--z2", "26", "-m", "8", "--center-distance", "180", "--html", str(page)]) == 0
+    assert page.stat().st_size > 1_000_000 and "plotly" in page.read_text(encoding="utf-8")[:5_000_000]
+    assert main(["shift", "--z1", "17", "--z2", "26", "--html", str(page)]) == 2
+    assert "exists" in capsys.readouterr().err
+
+
+def test_bad_inputs_name_themselves(tmp_path):
+    reg = gd.feasible_region(17, 26, method="grid", n=41)
+    with pytest.raises(GearDesignError, match="n must be"):
+        reg.to_html(tmp_path / "x.html", n=5)
+    with pytest.raises(GearDesignError, match="must end in .html"):
+        reg.to_html(tmp_path / "x.png")
+    with pytest.raises(GearDesignError, match="GearPair"):
+        gd.pair_report("17/26", tmp_path / "x.html")
+    assert not list(tmp_path.iterdir())
+    assert math.isfinite(reg.area)
