@@ -87,7 +87,9 @@ def _hover_trace(region: Region, g, M, geo):
     lines = ["<b>x1 = %{x:.4f}, x2 = %{y:.4f}</b> (nearest grid node): %{text}"]
     lines += [f"{check_legend(c)}: margin %{{customdata[{k}]:+.4f}}" for k, c in enumerate(prob.checks)]
     lines += [f"{label} = %{{customdata[{len(prob.names) + j}]:.4g}}" for j, (label, _) in enumerate(quantities)]
-    text = np.where(ok, "every check holds", "fails")
+    exists = np.isfinite(M).all(axis=0) if M.size else np.ones(M.shape[1:], bool)
+    text = np.where(ok, "every check holds", np.where(exists, "fails", "no gear pair here (a tip or root past "
+                                                                       "its base circle, or no contact)"))
     return go.Heatmap(x=g, y=g, z=np.where(ok, 1.0, 0.0), customdata=custom, text=text,
                       colorscale=[[0, "rgba(0,0,0,0)"], [1, "rgba(0,0,0,0)"]], showscale=False,
                       hovertemplate="<br>".join(lines) + "<extra></extra>", name="margins (hover)",

@@ -4,9 +4,12 @@ CI installs Debian's ``chromium`` package; on a machine without any Chromium the
 skip and say why (the page-building tests that need no browser still run)."""
 from __future__ import annotations
 
+import os
 import re
 import shutil
+import signal
 import subprocess
+import tempfile
 from html.parser import HTMLParser
 
 import pytest
@@ -24,17 +27,30 @@ def browser() -> str:
     pytest.skip("no Chromium binary on PATH (CI installs Debian's chromium package)")
 
 
+def _run(args, timeout: float = 180) -> str:
+    """Run the browser with its output in a file (its helper processes may keep a pipe open after
+    it exits) in a session of its own, killed whole if it overruns."""
+    with tempfile.TemporaryFile("w+", encoding="utf-8") as out:
+        proc = subprocess.Popen([browser(), *FLAGS, *args], stdout=out, stderr=subprocess.DEVNULL,
+                                start_new_session=True)
+        try:
+            code = proc.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+            raise AssertionError(f"chromium took over {timeout} s on {args[-1]}") from None
+        assert code == 0, f"chromium exited {code} on {args[-1]}"
+        out.seek(0)
+        return out.read()
+
+
 def dump_dom(path) -> str:
     """The DOM of file ``path`` after the page's scripts ran (plotly draws its SVG then)."""
-    out = subprocess.run([browser(), *FLAGS, "--dump-dom", path.resolve().as_uri()], capture_output=True,
-                         text=True, timeout=180)
-    assert out.returncode == 0, out.stderr[-2000:]
-    return out.stdout
+    return _run(["--dump-dom", path.resolve().as_uri()])
 
 
 def screenshot(path, png, size=(1280, 1600)) -> None:
-    subprocess.run([browser(), *FLAGS, f"--screenshot={png}", f"--window-size={size[0]},{size[1]}",
-                    path.resolve().as_uri()], capture_output=True, timeout=180, check=True)
+    _run([f"--screenshot={png}", f"--window-size={size[0]},{size[1]}", path.resolve().as_uri()])
 
 
 class Tables(HTMLParser):

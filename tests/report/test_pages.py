@@ -170,3 +170,23 @@ def test_bad_inputs_name_themselves(tmp_path):
         gd.pair_report("17/26", tmp_path / "x.html")
     assert not list(tmp_path.iterdir())
     assert math.isfinite(reg.area)
+
+
+def test_contour_hover_in_browser(tmp_path):
+    # plotly's own hover call at (0.5, 0.5), as a pointer there would; the label is read from the DOM
+    reg = gd.feasible_region(17, 26, m=8)
+    path = reg.to_html(tmp_path / "c.html", n=61)
+    hovered = tmp_path / "hovered.html"
+    hovered.write_text(path.read_text(encoding="utf-8").replace("</body>", (
+        "<script>Plotly.Fx.hover(document.querySelector('.plotly-graph-div'), {xval: 0.5, yval: 0.5}, 'xy');"
+        "</script></body>")), encoding="utf-8")
+    dom = dump_dom(hovered)
+    start = dom.index('<g class="hovertext"')
+    label = html_unescape(dom[start:dom.index("</g>", dom.index("</text>", start))])
+    assert "x1 = 0.5250, x2 = 0.5250" in label and "every check holds" in label   # the node nearest 0.5
+    table = gd.GearPair(8, 17, 26, 0.525, 0.525).checks(jamming=False).set_index("check")
+    for name in reg.checks:
+        assert f"{name}: " in label
+        assert f"margin {float(table.loc[name, 'margin']):+.4f}" in label, name
+    geo = gd.GearPair(8, 17, 26, 0.525, 0.525).geometry()
+    assert f"ε_α = {geo.eps_alpha:.4g}" in label and f"a_w, mm = {geo.a_w:.4g}" in label
