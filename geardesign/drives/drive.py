@@ -194,6 +194,12 @@ class DriveAnalysis(Result):
             flow = self.flow.to_string(index=False, float_format=lambda v: f"{v:.5g}")
         return f"DriveAnalysis: {self.message}\n{flow}"
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the text, and the drive's diagram inline."""
+        from ..inline import html_view
+        return html_view(repr(self), lambda ax: self.plot(ax=ax), figsize=(2.2 + 2.4 * len(self.stages), 4.0),
+                         alt="drive diagram")
+
     def plot(self, ax=None):
         """The drive's diagram (input, stages, shafts with n and T, keys): a matplotlib Axes."""
         from .diagram import plot_drive

@@ -162,6 +162,11 @@ class Region(Result):
         ax.legend(handles=handles, fontsize=8.5, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)
         return ax
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the text, and the blocking contour inline."""
+        from ..inline import html_view
+        return html_view(repr(self), lambda ax: self.plot(ax=ax, n=161), figsize=(7.0, 5.2), alt="blocking contour")
+
     def to_html(self, path, optimum=None, proposed=None, x_sum=None, n: int = 121, overwrite: bool = False):
         """Write the blocking contour as an interactive page (plotly, works offline): hover shows
         every check's margin and ε_α, s_a/m, a_w at the nearest of n × n nodes, a legend click
