@@ -35,7 +35,7 @@ def plot_drive(analysis, ax=None):
     first = stages[0]["summary"] if stages else {"kind": "given"}
     r_first = {"gear": 0.9 / max(1.0, first.get("ratio", 1.0)), "chain": 0.35}.get(first["kind"], 0.0)
     xs = [1.35 + r_first]            # shaft k at xs[k], seen end-on: the wheels turn about them
-    for st in stages:
+    for k_st, st in enumerate(stages):
         s = st["summary"]
         x = xs[-1]
         if s["kind"] == "gear":
@@ -63,7 +63,8 @@ def plot_drive(analysis, ax=None):
             text = ""
         mid = 0.5 * (x + xs[-1])
         if text:
-            ax.text(mid, y0 + 1.0, text, ha="center", va="bottom", fontsize=7.5)
+            # every other stage's label higher: neighbours' labels met over a shared shaft
+            ax.text(mid, y0 + 1.0 + 0.5 * (k_st % 2), text, ha="center", va="bottom", fontsize=7.5)
         ax.text(mid, y0 - 1.0, f"u {s['ratio']:.4g}, η {s['efficiency']:g}", ha="center", va="top", fontsize=7)
     for k, x in enumerate(xs):
         ax.plot([x], [y0], "o", color="k", ms=4, zorder=5)
@@ -73,10 +74,11 @@ def plot_drive(analysis, ax=None):
         x = xs[int(row["at"])]
         size = f"{row['b_mm']:g}x{row['h_mm']:g}x{row['length_mm']:g}" if row["length_mm"] == row["length_mm"] else "none"
         ax.plot([x], [y0], "s", color="red" if not row["feasible"] else "k", ms=7, zorder=6)
-        ax.annotate(f"key {size}" + (" (2)" if row["n_keys"] == 2 else ""), (x, y0), (x + 0.08, y0 + 0.12 + 0.2 * (i % 2)),
-                    fontsize=6.5, color="k" if row["feasible"] else "red", zorder=7)
+        # under the shaft's own label, not on the wheels (where it crossed their rims)
+        ax.text(x, y0 - 2.2 - 0.25 * (i % 2), f"key {size}" + (" (2)" if row["n_keys"] == 2 else ""), ha="center",
+                va="top", fontsize=7, color="k" if row["feasible"] else "red", zorder=7)
     ax.set_xlim(-0.2, xs[-1] + 1.1)
-    ax.set_ylim(y0 - 2.3, y0 + 1.6)
+    ax.set_ylim(y0 - 2.9, y0 + 2.1)
     ax.set_aspect("equal")
     ax.axis("off")
     verdict = "every check holds" if analysis.success else "FAILS"
