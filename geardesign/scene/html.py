@@ -77,9 +77,11 @@ td.span { text-align: center; } tr.failrow td { background: #fbeaea; } td.mark {
 figure { margin: 8px 0; } figure img { width: 100%; border: 1px solid #ccc; }
 figcaption { font-size: 12px; color: #333; } .small { font-size: 11px; color: #555; }
 @media print {
-  body { margin: 0; max-width: none; font-size: 10.5px; } h2 { break-after: avoid; }
-  table, figure, .verdict { break-inside: avoid; } figure img { max-height: 120mm; }
-  @page { size: A4; margin: 12mm; }
+  body { margin: 0; max-width: none; font-size: 10px; line-height: 1.25; } h2 { break-after: avoid; margin: 8px 0 3px; }
+  th, td { padding: 0.5px 5px; } h1 { font-size: 15px; } .verdict { padding: 3px 8px; margin: 3px 0 5px; }
+  table, figure, .verdict { break-inside: avoid; } .pictures { break-before: page; }
+  .figs { grid-template-columns: 1fr; } figure img { max-height: 112mm; width: auto; max-width: 100%; }
+  @page { size: A4; margin: 11mm; }
 }
 """
 
@@ -219,21 +221,21 @@ def pair_report_html(pair: GearPair, eps_alpha_min: float = DEFAULT_EPS_ALPHA_MI
     verdict, checks, _ = _checks(table)
     title = (f"Gear pair m = {pair.m:g} mm, z<sub>1</sub>/z<sub>2</sub> = {pair.z1}/{pair.z2}, "
              f"x<sub>1</sub> = {pair.x1:.4g}, x<sub>2</sub> = {pair.x2:.4g}")
+    from .. import __version__
     parts = [f"<h1>{title}</h1>", verdict, "<h2>Checks</h2>", checks, "<h2>Inputs</h2>", _inputs(pair, lim),
-             "<h2>Geometry</h2>", _geometry(pair)]
+             "<h2>Geometry</h2>", _geometry(pair),
+             f'<p class="small">geardesign {__version__}. Geometry: ISO 21771:2007; GOST 16532-70 (external), '
+             "GOST 19274-73 (internal). Margins are dimensionless, ≥ 0 where a check holds.</p>"]
     if pictures:
         contour, mesh, opt = _pictures(pair, lim)
         best = (f"the optimum of {opt.objective} x<sub>1</sub> = {opt.x1:.4f}, x<sub>2</sub> = {opt.x2:.4f} (star)"
                 if opt.success else "no feasible optimum")
-        parts += ['<h2>Pictures</h2><div class="figs">',
+        parts += ['<h2 class="pictures">Pictures</h2><div class="figs">',
                   f'<figure id="contour"><img alt="blocking contour" src="{contour}"><figcaption>Blocking contour of '
                   f"z<sub>1</sub>/z<sub>2</sub> = {pair.z1}/{pair.z2}: every check's curve, ticks on its forbidden "
                   f"side; this pair (cross) and {best}.</figcaption></figure>",
                   f'<figure id="mesh"><img alt="the pair in mesh" src="{mesh}"><figcaption>The pair in mesh: both '
                   "gears' generated teeth, their circles and the line of action.</figcaption></figure></div>"]
-    from .. import __version__
-    parts.append(f'<p class="small">geardesign {__version__}. Geometry: ISO 21771:2007; GOST 16532-70 '
-                 "(external), GOST 19274-73 (internal). Margins are dimensionless, ≥ 0 where a check holds.</p>")
     head = (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>Gear pair {pair.z1}/{pair.z2}, '
             f"m = {pair.m:g} mm</title><style>{_CSS}</style></head><body>")
     return head + "\n".join(parts) + "</body></html>\n"

@@ -10,6 +10,7 @@ import shutil
 import signal
 import subprocess
 import tempfile
+from pathlib import Path
 from html.parser import HTMLParser
 
 import pytest
@@ -82,3 +83,10 @@ def tables(dom: str) -> list:
     p = Tables()
     p.feed(dom)
     return p.tables
+
+
+def print_pages(path, pdf) -> int:
+    """Print file ``path`` to ``pdf`` as Chromium prints it (A4 from the page's @page rule) and
+    count the PDF's pages."""
+    _run(["--no-pdf-header-footer", f"--print-to-pdf={pdf}", path.resolve().as_uri()])
+    return len(re.findall(rb"/Type\s*/Page[^s]", Path(pdf).read_bytes()))

@@ -17,7 +17,7 @@ from geardesign.cli import main
 from geardesign.errors import GearDesignError
 from geardesign.shifts.contour_html import contour_figure
 
-from .browser import dump_dom, tables
+from .browser import dump_dom, print_pages, tables
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "gear_examples.csv"
 
@@ -66,6 +66,11 @@ def test_report_in_browser_matches_khk(khk_report):
         assert abs(float(row[3]) - pub[(name, "pair")]) <= tol, (sym, row)
     # both pictures are in the rendered page
     assert len(re.findall(r'<img alt="[^"]+" src="data:image/png;base64,', dom)) == 2
+
+
+def test_report_prints_on_two_pages(khk_report, tmp_path):
+    # A4: the calculation (verdict, checks, inputs, geometry) on one page, the pictures on the next
+    assert print_pages(khk_report, tmp_path / "khk.pdf") == 2
 
 
 def test_failing_pair_report_says_so_first(tmp_path):
