@@ -33,7 +33,7 @@ _NAMES = {
     "optimize_shifts": "shifts.optimize", "ShiftResult": "shifts.result", "OBJECTIVES": "shifts.objectives",
     "Objective": "shifts.objectives", "feasible_region": "shifts.region", "Region": "shifts.region",
     "shift_atlas": "shifts.atlas", "select_teeth": "shifts.teeth", "TeethSelection": "shifts.teeth",
-    "sweep": "sensitivity.studies", "load_scene": "scene", "run_scene": "scene", "pair_report": "scene.html",
+    "sweep": "sensitivity.studies", "load_scene": "scene", "run_scene": "scene", "pair_report": "scene.html", "drive_report": "scene.html",
     "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth", "plot_mesh": "profiles.drawing",
     "plot_diagrams": "profiles.drawing", "export_profiles": "profiles.mesh",
     "pair_profiles": "profiles.mesh", "ring_profile": "profiles.ring", "RingProfile": "profiles.ring",

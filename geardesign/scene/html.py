@@ -20,7 +20,8 @@ from ..files import check_output_path, write_file_atomic
 from ..gears.checks import DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN
 from ..gears.pair import GearPair
 
-__all__ = ["pair_report", "pair_report_html", "GEAR_ROWS", "PAIR_ROWS", "handbook_rows"]
+__all__ = ["pair_report", "pair_report_html", "drive_report", "drive_report_html", "GEAR_ROWS", "PAIR_ROWS",
+           "handbook_rows"]
 
 
 # (quantity, symbol in HTML, unit, field of gear 1, field of gear 2, format); "·m" fields are
@@ -181,6 +182,21 @@ def _inputs(pair: GearPair, lim: _Limits) -> str:
                   [[_td(a), _td(b), _td(c), _td(d, "num")] for a, b, c, d in rows])
 
 
+def _page(title: str, parts: list) -> str:
+    head = (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>'
+            f"<style>{_CSS}</style></head><body>")
+    return head + "\n".join(parts) + "</body></html>\n"
+
+
+def _frame(frame, formats: dict) -> str:
+    """A DataFrame as a table, numbers right-aligned in the given formats (others as text)."""
+    rows = []
+    for _, r in frame.iterrows():
+        rows.append([_td(_fmt(formats[c], r[c]), "num") if c in formats else _td(html.escape(str(r[c])))
+                     for c in frame.columns])
+    return _table([html.escape(str(c)) for c in frame.columns], rows)
+
+
 def _geometry(pair: GearPair) -> str:
     rows = []
     for name, sym, unit, v1, v2 in handbook_rows(pair):
@@ -236,9 +252,7 @@ def pair_report_html(pair: GearPair, eps_alpha_min: float = DEFAULT_EPS_ALPHA_MI
                   f"side; this pair (cross) and {best}.</figcaption></figure>",
                   f'<figure id="mesh"><img alt="the pair in mesh" src="{mesh}"><figcaption>The pair in mesh: both '
                   "gears' generated teeth, their circles and the line of action.</figcaption></figure></div>"]
-    head = (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>Gear pair {pair.z1}/{pair.z2}, '
-            f"m = {pair.m:g} mm</title><style>{_CSS}</style></head><body>")
-    return head + "\n".join(parts) + "</body></html>\n"
+    return _page(f"Gear pair {pair.z1}/{pair.z2}, m = {pair.m:g} mm", parts)
 
 
 def pair_report(pair: GearPair, path, overwrite: bool = False, **limits):
@@ -249,4 +263,72 @@ def pair_report(pair: GearPair, path, overwrite: bool = False, **limits):
     at all; an existing one is replaced only with ``overwrite``. Returns the path."""
     p = check_output_path(path, overwrite=overwrite, suffixes=(".html", ".htm"), what="report")
     page = pair_report_html(pair, **limits)
+    return write_file_atomic(p, lambda tmp: Path(tmp).write_text(page, encoding="utf-8"))
+
+
+def _analysis(result):
+    """The DriveAnalysis of a Drive (analysed), a DriveOptimum (its best) or an analysis itself."""
+    from ..drives.drive import Drive, DriveAnalysis, DriveOptimum
+
+    if isinstance(result, Drive):
+        return result.analyse()
+    if isinstance(result, DriveOptimum):
+        if result.best is None:
+            raise GearDesignError(f"the drive optimum has no design to report: {result.message}")
+        return result.best
+    if isinstance(result, DriveAnalysis):
+        return result
+    raise GearDesignError(f"a drive report needs a Drive, DriveAnalysis or DriveOptimum, got {type(result).__name__}")
+
+
+def drive_report_html(result, pictures: bool = True) -> str:
+    """The report of a drive as one HTML page: the verdict, every check (the smallest margins
+    first), the power flow, the stages, each gear pair's geometry (gear 1 | gear 2), the keys and
+    the diagram. ``result``: a Drive (analysed here), a DriveAnalysis or a DriveOptimum (its best)."""
+    an = _analysis(result)
+    t = an.checks.sort_values("margin", kind="stable")
+    rows = [[_td("holds" if r["ok"] else "FAILS", "mark"), _td(html.escape(str(r["item"]))),
+             _td(html.escape(str(r["check"]))), _td(_fmt("{:+.4f}", r["margin"]), "num")] for _, r in t.iterrows()]
+    failed = [f"{html.escape(str(r['item']))}: {html.escape(str(r['check']))} ({_fmt('{:+.4f}', r['margin'])})"
+              for _, r in t.loc[~t["ok"]].iterrows()]
+    verdict = (f'<div class="verdict ok">Every check holds ({len(t)} checks); smallest margin '
+               f"{an.min_margin:+.4f} ({html.escape(an.limiting)}).</div>" if not failed and an.success else
+               f'<div class="verdict fail">FAILS: {"; ".join(failed) or html.escape(an.message)}</div>')
+    stages = []
+    for st in an.stages:
+        s = st["summary"]
+        rest = ", ".join(f"{k} {_fmt('{:.5g}', v) if isinstance(v, float) else html.escape(str(v))}"
+                         for k, v in s.items() if k not in ("name", "kind", "ratio", "efficiency"))
+        stages.append([_td(html.escape(str(s["name"]))), _td(s["kind"]), _td(_fmt("{:.5g}", s["ratio"]), "num"),
+                       _td(_fmt("{:.3g}", s["efficiency"]), "num"), _td(rest)])
+    parts = [f"<h1>Drive u = {an.total_ratio:.5g}</h1>", verdict,
+             "<h2>Checks (smallest margin first; ≥ 0 holds)</h2>",
+             _table(["verdict", "item", "check", "margin"], rows, ["" if r["ok"] else "failrow" for _, r in t.iterrows()]),
+             "<h2>Power flow</h2>", _frame(an.flow, {"n_rpm": "{:.5g}", "torque_nm": "{:.5g}", "power_kw": "{:.4g}"}),
+             "<h2>Stages</h2>", _table(["stage", "kind", "u", "η", "design"], stages)]
+    for st in an.stages:
+        if st["summary"]["kind"] == "gear" and isinstance(st.get("pair"), GearPair):
+            parts += [f"<h2>Gear stage {html.escape(str(st['summary']['name']))}: geometry</h2>", _geometry(st["pair"])]
+    if len(an.keys):
+        k = an.keys
+        keys = k[["name", "at", "d_mm", "hub_length_mm", "torque_nm"]].assign(
+            key_mm=[f"{b:g}×{h:g}×{n:g}" if n == n else "none fits" for b, h, n in zip(k["b_mm"], k["h_mm"], k["length_mm"])],
+            n_keys=k["n_keys"], crush_mpa=k["crush_mpa"], shear_mpa=k["shear_mpa"], margin_crush=k["margin_crush"],
+            margin_shear=k["margin_shear"])
+        parts += ["<h2>Keys</h2>", _frame(keys, {"d_mm": "{:.4g}", "hub_length_mm": "{:.4g}", "torque_nm": "{:.4g}",
+                                                 "crush_mpa": "{:.4g}", "shear_mpa": "{:.4g}",
+                                                 "margin_crush": "{:+.4f}", "margin_shear": "{:+.4f}"})]
+    if pictures:
+        diagram = _png(an.plot().figure)
+        parts += ['<h2 class="pictures">Diagram</h2>',
+                  f'<figure id="diagram"><img alt="drive diagram" src="{diagram}" style="width:auto"><figcaption>The drive seen end-on: '
+                  "each dot a shaft with its speed and torque, black squares keyed hubs.</figcaption></figure>"]
+    return _page(f"Drive u = {an.total_ratio:.5g}", parts)
+
+
+def drive_report(result, path, overwrite: bool = False):
+    """Write :func:`drive_report_html` to ``path`` (.html), whole or not at all; an existing file
+    is replaced only with ``overwrite``. Returns the path."""
+    p = check_output_path(path, overwrite=overwrite, suffixes=(".html", ".htm"), what="report")
+    page = drive_report_html(result)
     return write_file_atomic(p, lambda tmp: Path(tmp).write_text(page, encoding="utf-8"))

@@ -195,3 +195,28 @@ def test_contour_hover_in_browser(tmp_path):
         assert f"margin {float(table.loc[name, 'margin']):+.4f}" in label, name
     geo = gd.GearPair(8, 17, 26, 0.525, 0.525).geometry()
     assert f"ε_α = {geo.eps_alpha:.4g}" in label and f"a_w, mm = {geo.a_w:.4g}" in label
+
+
+def test_drive_report_in_browser(tmp_path, capsys):
+    # seed 002's brake stand: 4 kW at 1500 rpm, a gear motor u = 12.5, η = 0.87, then a chain u = 1, η 0.96
+    scene = Path(__file__).resolve().parents[2] / "studies" / "scenes" / "seed002_drive.toml"
+    path = tmp_path / "drive.html"
+    assert main(["drive", str(scene), "--report", str(path)]) == 0
+    assert "report written" in capsys.readouterr().err
+    dom = dump_dom(path)
+    assert dom.index('class="verdict ok"') < dom.index("<table")
+    checks, flow, stages, keys = tables(dom)
+    assert checks[0] == ["verdict", "item", "check", "margin"]
+    margins = [float(r[3]) for r in checks[1:]]
+    assert margins == sorted(margins) and all(r[0] == "holds" for r in checks[1:])
+    # the power flow against T = P/ω through the stages (independent of the library)
+    t0 = 4000 / (2 * math.pi * 1500 / 60)
+    by_shaft = {r[0]: r for r in flow[1:]}
+    assert float(by_shaft["0"][3]) == pytest.approx(t0, rel=1e-4)
+    assert float(by_shaft["1"][2]) == pytest.approx(120) and float(by_shaft["1"][3]) == pytest.approx(t0 * 12.5 * 0.87, rel=1e-4)
+    assert float(by_shaft["2"][3]) == pytest.approx(t0 * 12.5 * 0.87 * 0.96, rel=1e-4)
+    assert [r[0] for r in stages[1:]] == ["gear motor", "chain"]
+    assert keys[0][:2] == ["name", "at"] and len(keys) == 3
+    assert re.search(r'<img alt="drive diagram" src="data:image/png;base64,', dom)
+    with pytest.raises(GearDesignError, match="Drive, DriveAnalysis or DriveOptimum"):
+        gd.drive_report(gd.GearPair(8, 17, 26), tmp_path / "x.html")
