@@ -239,6 +239,13 @@ class DriveOptimum(Result):
         out.update(status=self.status, table=records, best=None if self.best is None else self.best.to_dict())
         return plain(out)
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the text, and the best design's diagram inline (when there is one)."""
+        from ..inline import html_view
+        draw = None if self.best is None else (lambda ax: self.best.plot(ax=ax))
+        return html_view(repr(self), draw, figsize=(2.2 + 2.4 * len(self.best.stages if self.best else ()), 4.0),
+                         alt="drive diagram")
+
     def __repr__(self) -> str:
         cols = [c for c in self.table.columns if c not in ("reason",)][:14]
         with pd.option_context("display.width", 180, "display.max_columns", 20):

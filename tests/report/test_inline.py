@@ -55,6 +55,14 @@ def test_drive_analysis_shows_its_diagram():
     assert _picture(view)[1] > 300 and "DriveAnalysis" in view
 
 
+def test_drive_optimum_shows_the_best_diagram():
+    drive = gd.Drive(n_in_rpm=1450, power_kw=4.0, stages=[gd.GearStage(3), gd.GivenStage(2.0, 0.95)])
+    opt = drive.optimize(total_ratio=6, ratio_tol=0.03)
+    assert opt.best is not None
+    view = opt._repr_html_()
+    assert _picture(view)[1] > 300 and "DriveOptimum" in view
+
+
 def test_a_failing_picture_leaves_the_text():
     def broken(ax):
         raise ValueError("no geometry")
