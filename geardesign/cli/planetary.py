@@ -41,6 +41,8 @@ def add_parser(sub):
                                       "for --ratio)")
     add_output_file(p, "--plot", "PNG", "the feasible (x_sun, x_planet) region")
     p.add_argument("--drawing", metavar="PNG", default=None, help="write the set's drawing (circles) to this PNG")
+    p.add_argument("--html", metavar="HTML", default=None,
+                   help="write the region as an interactive page (hover: every check's margin; works offline)")
     add_rack_args(p)
     add_limit_args(p)
     add_json_flag(p)
@@ -78,6 +80,10 @@ def run(args) -> int:
     for flag in ("plot", "drawing"):
         if getattr(args, flag):
             check_output_path(getattr(args, flag), overwrite=args.overwrite, suffixes=(".png",), what=f"--{flag}")
+    if args.html:
+        if args.ratio is not None or args.x_sun is not None:
+            raise GearDesignError("--html draws the region of an optimisation: not with --ratio or --x-sun/--x-planet")
+        check_output_path(args.html, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--html")
     if args.plot or args.drawing:
         import matplotlib
         matplotlib.use("Agg")
@@ -129,12 +135,15 @@ def _optimize(args) -> int:
     r = optimize_planetary_shifts(args.z_sun, args.z_planet, args.z_ring, args.planets, args.module,
                                   a_w=args.center_distance, objective=args.objective, checks=_checks(args),
                                   method=args.method, arrangement=args.arrangement, **kw)
-    if args.plot:
+    if args.plot or args.html:
         reg = planetary_region(args.z_sun, args.z_planet, args.z_ring, args.planets, args.module,
                                checks=_checks(args), **kw)
-        ax = reg.plot(optimum=(r.x_sun, r.x_planet) if r.success else None, x_sum=(
-            r.x_sun + r.x_planet) if args.center_distance is not None else None)
-        _save(args.plot, ax, args.overwrite)
+        marks = dict(optimum=(r.x_sun, r.x_planet) if r.success else None,
+                     x_sum=(r.x_sun + r.x_planet) if args.center_distance is not None else None)
+        if args.plot:
+            _save(args.plot, reg.plot(**marks), args.overwrite)
+        if args.html:
+            reg.to_html(args.html, overwrite=args.overwrite, **marks)
     if args.drawing and r.success:
         from ..profiles.planetary import plot_planetary
         s = PlanetarySet(args.module, args.z_sun, args.z_planet, args.z_ring, args.planets, r.x_sun, r.x_planet,
@@ -146,8 +155,8 @@ def _optimize(args) -> int:
     print(repr(r))
     if r.success:
         print_frame(r.to_frame(), "\nChecks at the optimum (margin >= 0 holds; sensitivity = d fun / d limit)")
-    for flag, what in (("plot", "region"), ("drawing", "drawing")):
-        if getattr(args, flag) and (flag == "plot" or r.success):
+    for flag, what in (("plot", "region"), ("drawing", "drawing"), ("html", "interactive region")):
+        if getattr(args, flag, None) and (flag != "drawing" or r.success):
             print(f"{what} written to {getattr(args, flag)}")
     return 0 if r.success else 1
 

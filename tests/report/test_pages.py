@@ -220,3 +220,16 @@ def test_drive_report_in_browser(tmp_path, capsys):
     assert re.search(r'<img alt="drive diagram" src="data:image/png;base64,', dom)
     with pytest.raises(GearDesignError, match="Drive, DriveAnalysis or DriveOptimum"):
         gd.drive_report(gd.GearPair(8, 17, 26), tmp_path / "x.html")
+
+
+def test_cli_planetary_html(tmp_path, capsys):
+    page = tmp_path / "set.html"
+    args = ["planetary", "--module", "1.75", "--planets", "3", "--z-sun", "21", "--z-planet", "43", "--z-ring", "108"]
+    assert main(args + ["--objective", "max_eps_alpha", "--html", str(page)]) == 0
+    assert "interactive region written" in capsys.readouterr().out
+    dom = dump_dom(page)
+    legend = [html_unescape(t) for t in re.findall(r'class="legendtext"[^>]*>(.*?)</text>', dom)]
+    assert "planet-ring:contact_ratio: ε_α ≥ 1.2" in legend and "sun-planet:tip_thickness_sun: s_a,sun/m ≥ 0.25" in legend
+    assert any(t.startswith("optimum (-0.228, 0.826)") for t in legend)    # the optimum the CLI prints
+    assert main(args + ["--x-sun", "0", "--x-planet", "0.5", "--html", str(tmp_path / "x.html")]) == 2
+    assert "--html draws the region of an optimisation" in capsys.readouterr().err
