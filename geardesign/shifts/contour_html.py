@@ -14,7 +14,8 @@ import numpy as np
 
 from ..files import check_output_path, write_file_atomic
 from ..validate import require_count
-from .region import Region, check_legend, check_style
+from .looks import check_legend, check_style
+from .region import Region
 
 __all__ = ["contour_figure", "write_contour_html", "HOVER_N_MAX"]
 

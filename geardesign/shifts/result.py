@@ -95,7 +95,7 @@ class ShiftResult(Result):
         """Bars of every check's margin at the optimum (≥ 0 holds; active checks outlined, their
         curves pass through the optimum). Returns the Axes."""
         import matplotlib.pyplot as plt
-        from .region import check_style   # here: region imports the solvers that import this module
+        from .looks import check_style
 
         if ax is None:
             _, ax = plt.subplots(figsize=(6.4, 1.3 + 0.3 * len(self.margins)))
