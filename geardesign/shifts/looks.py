@@ -4,7 +4,7 @@ asks with its limit. One table per fact, so a check registry can carry them; the
 (:mod:`geardesign.shifts.contour_html`) and the optimum's margins all read them here."""
 from __future__ import annotations
 
-__all__ = ["CHECK_COLOURS", "PLANET_RING_COLOURS", "CHECK_LEGENDS", "check_style", "check_legend"]
+__all__ = ["CHECK_COLOURS", "PLANET_RING_COLOURS", "CHECK_LEGENDS", "check_style", "check_legend", "margin_bars"]
 
 # How each kind of check looks, in one place (a check registry can carry these): its colour,
 # and what a legend says it asks, with its limit ({g}: the gear's mark in a symbol, "1" or
@@ -76,3 +76,18 @@ def check_legend(check) -> str:
     g = "" if gear is None else (gear if gear.isdigit() else f",{gear}")
     words = "" if gear is None else (f"gear {gear}" if gear.isdigit() else f"the {gear}")
     return f"{check.name}: " + text.format(g=g, gear=words, limit=check.limit)
+
+
+def margin_bars(ax, margins: dict, active, title: str):
+    """Every check's margin as a bar in its colour (≥ 0 holds), the active ones outlined and
+    marked "(active)": the picture of an optimum. Returns the Axes."""
+    names = list(margins)
+    ax.barh(range(len(names)), [margins[k] for k in names], color=[check_style(k)[0] for k in names], alpha=0.75,
+            edgecolor=["black" if k in active else "none" for k in names], linewidth=1.6)
+    ax.set_yticks(range(len(names)), [f"{k} (active)" if k in active else k for k in names])
+    ax.axvline(0.0, color="black", lw=0.8)
+    ax.invert_yaxis()
+    ax.set_xlabel("margin (≥ 0 holds; outlined: active at the optimum)")
+    ax.set_title(title, fontsize=10)
+    ax.grid(True, axis="x", lw=0.3)
+    return ax

@@ -95,21 +95,13 @@ class ShiftResult(Result):
         """Bars of every check's margin at the optimum (≥ 0 holds; active checks outlined, their
         curves pass through the optimum). Returns the Axes."""
         import matplotlib.pyplot as plt
-        from .looks import check_style
+        from .looks import margin_bars
 
         if ax is None:
             _, ax = plt.subplots(figsize=(6.4, 1.3 + 0.3 * len(self.margins)))
-        names = list(self.margins)
-        ax.barh(names, [self.margins[k] for k in names], color=[check_style(k)[0] for k in names], alpha=0.75,
-                edgecolor=["black" if k in self.active else "none" for k in names], linewidth=1.6)
-        ax.axvline(0.0, color="black", lw=0.8)
-        ax.set_yticks(range(len(names)), [f"{k} (active)" if k in self.active else k for k in names])
-        ax.invert_yaxis()
-        ax.set_xlabel("margin (≥ 0 holds; outlined: active at the optimum)")
-        ax.set_title(f"z1/z2 = {self.z1}/{self.z2}, m = {self.m:g} mm: x1 = {self.x1:.4f}, x2 = {self.x2:.4f} "
-                     f"({self.objective}{'' if self.success else ', FAILED'})", fontsize=10)
-        ax.grid(True, axis="x", lw=0.3)
-        return ax
+        return margin_bars(ax, self.margins, self.active,
+                           f"z1/z2 = {self.z1}/{self.z2}, m = {self.m:g} mm: x1 = {self.x1:.4f}, x2 = {self.x2:.4f} "
+                           f"({self.objective}{'' if self.success else ', FAILED'})")
 
     def __repr__(self) -> str:
         lines = [

@@ -23,9 +23,10 @@ def _picture(view: str):
 @pytest.mark.parametrize("make", [
     lambda: gd.feasible_region(17, 26, m=8, method="grid", n=61),
     lambda: gd.optimize_shifts(17, 26, m=8),
+    lambda: gd.optimize_planetary_shifts(21, 43, 108, 3, 1.75),
     lambda: gd.tooth_profile(8, 17, 0.898, points=40),
     lambda: gd.ring_profile(2, 60, 0.2, points=40),
-], ids=["region", "optimum", "profile", "ring"])
+], ids=["region", "optimum", "planetary optimum", "profile", "ring"])
 def test_results_show_a_picture(make):
     obj = make()
     view = obj._repr_html_()
