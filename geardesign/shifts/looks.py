@@ -81,10 +81,20 @@ def check_legend(check) -> str:
 def margin_bars(ax, margins: dict, active, title: str):
     """Every check's margin as a bar in its colour (≥ 0 holds), the active ones outlined and
     marked "(active)": the picture of an optimum. Returns the Axes."""
+    from matplotlib.colors import to_rgba
+
     names = list(margins)
-    ax.barh(range(len(names)), [margins[k] for k in names], color=[check_style(k)[0] for k in names], alpha=0.75,
-            edgecolor=["black" if k in active else "none" for k in names], linewidth=1.6)
+    # the transparency in the fill colours: an ``alpha=`` would also make the absent edges black
+    ax.barh(range(len(names)), [margins[k] for k in names], color=[to_rgba(check_style(k)[0], 0.75) for k in names],
+            edgecolor=[(0, 0, 0, 1.0 if k in active else 0.0) for k in names], linewidth=1.6)
     ax.set_yticks(range(len(names)), [f"{k} (active)" if k in active else k for k in names])
+    span = max([abs(v) for v in margins.values() if v == v] + [1e-300])
+    for i, k in enumerate(names):      # the value at each bar's end: a margin of 0.007 has no visible bar
+        v = margins[k]
+        ax.text(v + (0.01 if v >= 0 else -0.01) * span, i, f"{v:+.3g}", va="center", ha="left" if v >= 0 else "right",
+                fontsize=8, color="black" if v >= 0 else "darkred")
+    lo = min([v for v in margins.values() if v == v] + [0.0])
+    ax.set_xlim(lo - (0.15 * span if lo < 0 else 0.0), 1.12 * span)
     ax.axvline(0.0, color="black", lw=0.8)
     ax.invert_yaxis()
     ax.set_xlabel("margin (≥ 0 holds; outlined: active at the optimum)")

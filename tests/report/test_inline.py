@@ -42,6 +42,9 @@ def test_optimum_picture_marks_the_active_check():
     ax = r.plot_margins()
     labels = [t.get_text() for t in ax.get_yticklabels()]
     assert "contact_ratio (active)" in labels and sum("(active)" in t for t in labels) == len(r.active) == 1
+    # only the active check's bar is outlined
+    edges = [p.get_edgecolor()[3] for p in ax.patches]
+    assert edges == [1.0 if n in r.active else 0.0 for n in r.margins]
 
 
 def test_drive_analysis_shows_its_diagram():
