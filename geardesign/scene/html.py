@@ -105,7 +105,12 @@ def handbook_rows(pair: GearPair) -> list[tuple]:
 def _fmt(fmt: str, value) -> str:
     if value is None or (isinstance(value, float) and not math.isfinite(value)):
         return "–"
-    return fmt.format(int(value)) if fmt == "{:d}" else fmt.format(float(value))
+    if fmt == "{:d}":
+        return fmt.format(int(value))
+    text = fmt.format(float(value))
+    if text.startswith("-") and float(text) == 0.0:     # a rounding's "-0.0000" is zero
+        text = ("+" if "+" in fmt else "") + text[1:]
+    return text
 
 
 @dataclass(frozen=True)

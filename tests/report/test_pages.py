@@ -234,3 +234,14 @@ def test_cli_planetary_html(tmp_path, capsys):
     assert any(t.startswith(f"optimum ({r.x_sun:.3f}, {r.x_planet:.3f})") for t in legend)   # the same optimum
     assert main(args + ["--x-sun", "0", "--x-planet", "0.5", "--html", str(tmp_path / "x.html")]) == 2
     assert "--html draws the region of an optimisation" in capsys.readouterr().err
+
+
+def test_report_of_a_pair_with_no_feasible_shifts(tmp_path):
+    # 6/6 unshifted: both gears undercut. x_min = h − z sin²α/2 with h the height of the rack's straight
+    # flank above the reference line, h_a* + c* − ρ_f*(1 − sin α) (GOST 16532-70; the standard rack
+    # 1 / 0.25 / 0.38 of GOST 13755): 0.64903
+    page = gd.GearPair(1, 6, 6).report(tmp_path / "six.html").read_text(encoding="utf-8")
+    alpha = math.radians(20)
+    x_min = (1 + 0.25 - 0.38 * (1 - math.sin(alpha))) - 6 * math.sin(alpha) ** 2 / 2
+    assert f"undercut1 (value 0, limit {x_min:.5g})" in page
+    assert "no feasible optimum" in page and "-0.0" not in page and "-0<" not in page
