@@ -7,14 +7,15 @@
 
 The package is layered; each layer imports only the ones before it:
 
-- :mod:`geardesign.errors`, :mod:`geardesign.validate`, :mod:`geardesign.results`, :mod:`geardesign.files`
+- :mod:`geardesign.errors`, :mod:`geardesign.validate`, :mod:`geardesign.results`, :mod:`geardesign.files`,
+  :mod:`geardesign.inline` (a result's picture in a notebook)
 - :mod:`geardesign.catalogs` — CSV tables and standard series
 - :mod:`geardesign.gears` — involute, rack, mesh, geometry, checks, :class:`GearPair`
 - :mod:`geardesign.shifts` — the shift problem, its methods, region, atlas, tooth counts
 - :mod:`geardesign.profiles` — tooth profiles as the cutter generates them
 - :mod:`geardesign.drives` — sprockets, chains, keys, motors; stages and the linked drive
 - :mod:`geardesign.sensitivity` — sweeps and local sensitivities
-- :mod:`geardesign.scene` — TOML scenes and their reports
+- :mod:`geardesign.scene` — TOML scenes and their reports; one-page HTML reports of a pair and a drive
 - :mod:`geardesign.cli` — the ``geardesign`` command
 
 Names are loaded on first use (PEP 562), so ``import geardesign`` costs little more than numpy and
@@ -33,7 +34,8 @@ _NAMES = {
     "optimize_shifts": "shifts.optimize", "ShiftResult": "shifts.result", "OBJECTIVES": "shifts.objectives",
     "Objective": "shifts.objectives", "feasible_region": "shifts.region", "Region": "shifts.region",
     "shift_atlas": "shifts.atlas", "select_teeth": "shifts.teeth", "TeethSelection": "shifts.teeth",
-    "sweep": "sensitivity.sweeps", "load_scene": "scene", "run_scene": "scene",
+    "sweep": "sensitivity.sweeps", "load_scene": "scene", "run_scene": "scene", "pair_report": "scene.html",
+    "drive_report": "scene.html",
     "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth", "plot_mesh": "profiles.drawing",
     "plot_diagrams": "profiles.drawing", "export_profiles": "profiles.mesh",
     "pair_profiles": "profiles.mesh", "ring_profile": "profiles.ring", "RingProfile": "profiles.ring",

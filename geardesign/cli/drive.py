@@ -20,6 +20,8 @@ def add_parser(subparsers):
                     "when one fails (the output names the stage and check), 2 on bad input.")
     p.add_argument("scene", help="a scene file (.toml) with a [drive] section")
     add_output_file(p, "--plot", "PNG", "the drive's diagram")
+    p.add_argument("--report", metavar="HTML", default=None,
+                   help="write a one-page report (checks, power flow, stages, gear geometry, keys, diagram) to this HTML file")
     add_json_flag(p)
     return p
 
@@ -33,6 +35,8 @@ def run(args) -> int:
     if "drive" not in scene:
         raise GearDesignError(f"{args.scene}: no [drive] section (this command runs only that section)")
     target = check_output_path(args.plot, overwrite=args.overwrite) if args.plot else None
+    if args.report:
+        check_output_path(args.report, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--report")
     bar = Progress(1, "drive: gear pairs")
     try:
         drive, motor, opt, an = compute_drive(scene.sections["drive"], bar.to)
@@ -49,6 +53,12 @@ def run(args) -> int:
             write_file_atomic(target, lambda tmp: ax.figure.savefig(tmp, dpi=110, bbox_inches="tight", format="png"))
         finally:
             plt.close(ax.figure)
+    if args.report and an is not None:
+        import sys
+
+        from ..scene.html import drive_report
+        drive_report(an, args.report, overwrite=args.overwrite)
+        print(f"report written to {args.report}", file=sys.stderr)
     ok = (opt.success if opt is not None else an.success)
     if args.json:
         out = {"ok": bool(ok), "scene": str(args.scene), "motor": None if motor is None else motor.to_dict(),

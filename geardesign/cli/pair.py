@@ -1,10 +1,12 @@
 """``geardesign pair``: geometry and checks of one spur pair."""
 from __future__ import annotations
 
+import sys
+
 from ..errors import GearDesignError
 from ..gears.pair import GearPair
 from ..gears.rack import BasicRack
-from .options import add_check_args, checks_from_args
+from .options import add_check_args, add_output_file, checks_from_args
 from .output import add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict
 
 
@@ -80,6 +82,7 @@ def add_parser(sub):
     p.add_argument("--measurements", action="store_true",
                    help="also the measuring sizes of both gears (span, over balls, chordal; see geardesign measure)")
     add_json_flag(p)
+    add_output_file(p, "--report", "HTML", "a one-page calculation report (inputs, geometry, checks, contour, mesh)")
     return p
 
 
@@ -113,7 +116,15 @@ def describe(pair, shorten: bool) -> str:
 
 
 def run(args) -> int:
+    if args.report:
+        from ..files import check_output_path
+        check_output_path(args.report, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--report")
     pair, housing = pair_from_args(args)
+    if args.report:
+        from ..scene.html import pair_report
+        pair_report(pair, args.report, overwrite=args.overwrite, eps_alpha_min=args.eps_alpha_min,
+                    sa_min=args.sa_min, housing_a_w=housing, eps_gamma_min=args.eps_gamma_min)
+        print(f"report written to {args.report}", file=sys.stderr)   # stderr: --json keeps stdout pure
     rack, shorten = pair.rack, not args.no_tip_shortening
     geo = pair.geometry()
     checks = checks_from_args(args)

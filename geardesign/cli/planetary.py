@@ -44,6 +44,8 @@ def add_parser(sub):
                                       "for --ratio)")
     add_output_file(p, "--plot", "PNG", "the feasible (x_sun, x_planet) region")
     p.add_argument("--drawing", metavar="PNG", default=None, help="write the set's drawing (circles) to this PNG")
+    p.add_argument("--html", metavar="HTML", default=None,
+                   help="write the region as an interactive page (hover: every check's margin; works offline)")
     add_rack_args(p)
     add_check_args(p, exclude=("eps_gamma_min",), load=False)
     add_json_flag(p)
@@ -85,6 +87,10 @@ def run(args) -> int:
     for flag in ("plot", "drawing"):
         if getattr(args, flag):
             check_output_path(getattr(args, flag), overwrite=args.overwrite, suffixes=(".png",), what=f"--{flag}")
+    if args.html:
+        if args.ratio is not None or args.x_sun is not None:
+            raise GearDesignError("--html draws the region of an optimisation: not with --ratio or --x-sun/--x-planet")
+        check_output_path(args.html, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--html")
     if args.plot or args.drawing:
         import matplotlib
         matplotlib.use("Agg")
@@ -144,15 +150,18 @@ def _optimize(args) -> int:
                                   a_w=args.center_distance, objective=args.objective, checks=_checks(args),
                                   method=args.method, arrangement=args.arrangement, **kw)
     # every file of the command, or none: the drawing needs a feasible set, so without one nothing is written
-    write = (args.plot or args.drawing) and (r.success or not args.drawing)
+    write = (args.plot or args.drawing or args.html) and (r.success or not args.drawing)
     from ..files import all_or_nothing
     with all_or_nothing():
-        if args.plot and write:
+        if (args.plot or args.html) and write:
             reg = planetary_region(args.z_sun, args.z_planet, args.z_ring, args.planets, args.module,
                                    checks=_checks(args), **kw)
-            ax = reg.plot(optimum=(r.x_sun, r.x_planet) if r.success else None, x_sum=(
-                r.x_sun + r.x_planet) if args.center_distance is not None else None)
-            _save(args.plot, ax, args.overwrite)
+            marks = dict(optimum=(r.x_sun, r.x_planet) if r.success else None,
+                         x_sum=(r.x_sun + r.x_planet) if args.center_distance is not None else None)
+            if args.plot:
+                _save(args.plot, reg.plot(**marks), args.overwrite)
+            if args.html:
+                reg.to_html(args.html, overwrite=args.overwrite, **marks)
         if args.drawing and write:
             from ..profiles.planetary import plot_planetary
             s = PlanetarySet(args.module, args.z_sun, args.z_planet, args.z_ring, args.planets, r.x_sun, r.x_planet,
@@ -165,8 +174,8 @@ def _optimize(args) -> int:
         print_wrapped(line, indent=" " * 14)
     if r.success:
         print_frame(r.to_frame(), "\nChecks at the optimum (margin >= 0 holds; sensitivity = d fun / d limit)")
-    for flag, what in (("plot", "region"), ("drawing", "drawing")):
-        if getattr(args, flag) and write:
+    for flag, what in (("plot", "region"), ("drawing", "drawing"), ("html", "interactive region")):
+        if getattr(args, flag, None) and write:
             print(f"{what} written to {getattr(args, flag)}")
     if (args.plot or args.drawing) and not write:
         print("no feasible set to draw: nothing written")

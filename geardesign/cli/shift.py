@@ -43,6 +43,9 @@ def add_parser(sub):
                    help="keep d_a = d + 2(h_a* + x)m instead of shortening tips by dy*m")
     add_kind_args(p)
     add_output_file(p, "--plot", "PNG", "the blocking contour")
+    p.add_argument("--html", metavar="HTML", default=None,
+                   help="write the blocking contour as an interactive page (hover: every check's margin; "
+                        "works offline) to this HTML file")
     add_rack_args(p)
     add_check_args(p)
     add_json_flag(p)
@@ -59,6 +62,8 @@ def run(args) -> int:
         raise GearDesignError("--x1 and --x2 go together: give both to check a proposed pair")
     if args.plot:
         check_output_path(args.plot, overwrite=args.overwrite, suffixes=(".png",), what="--plot")
+    if args.html:
+        check_output_path(args.html, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--html")
     rack = rack_from_args(args)
     checks = checks_from_args(args)
     shorten = not args.no_tip_shortening
@@ -74,6 +79,10 @@ def run(args) -> int:
     region = feasible_region(args.z1, args.z2, rack=rack, checks=checks, m=m, tip_shortening=shorten, **kind)
     if args.plot:
         _write_plot(region, res, proposed, args, write_file_atomic)
+    if args.html:
+        region.to_html(args.html, optimum=res if res.success else None,
+                       proposed=None if proposed is None else (args.x1, args.x2), x_sum=res.x_sum_fixed,
+                       overwrite=args.overwrite)
     failed = [] if proposed is None else proposed.loc[~proposed["ok"], "check"].tolist()
     ok = bool(res.success) and not failed
     if args.json:
@@ -98,6 +107,8 @@ def run(args) -> int:
         print_verdict(failed, check_details(proposed))
     if args.plot:
         print(f"\nblocking contour written to {args.plot}")
+    if args.html:
+        print(f"interactive blocking contour written to {args.html}")
     return 0 if ok else 1
 
 

@@ -40,14 +40,15 @@ def _stages(canvas, analysis, x0: float) -> list:
 
     ax, y0 = canvas.ax, canvas.y0
     xs = [x0]
-    for st in analysis.stages:
+    for k_st, st in enumerate(analysis.stages):
         s = st["summary"]
         x = xs[-1]
         x_out, text = kind_named(s["kind"]).draw(canvas, x, s)
         xs.append(x_out)
         mid = 0.5 * (x + xs[-1])
         if text:
-            ax.text(mid, y0 + 1.0, text, ha="center", va="bottom", fontsize=7.5)
+            # every other stage's label higher: neighbours' labels met over a shared shaft
+            ax.text(mid, y0 + 1.0 + 0.5 * (k_st % 2), text, ha="center", va="bottom", fontsize=7.5)
         ax.text(mid, y0 - 1.0, f"u {s['ratio']:.4g}, η {s['efficiency']:g}", ha="center", va="top", fontsize=7)
     return xs
 
@@ -62,8 +63,9 @@ def _shafts_and_keys(ax, analysis, xs, y0: float) -> None:
         x = xs[int(row["at"])]
         size = f"{row['b_mm']:g}x{row['h_mm']:g}x{row['length_mm']:g}" if row["length_mm"] == row["length_mm"] else "none"
         ax.plot([x], [y0], "s", color="red" if not row["feasible"] else "k", ms=7, zorder=6)
-        ax.annotate(f"key {size}" + (" (2)" if row["n_keys"] == 2 else ""), (x, y0), (x + 0.08, y0 + 0.12 + 0.2 * (i % 2)),
-                    fontsize=6.5, color="k" if row["feasible"] else "red", zorder=7)
+        # under the shaft's own label, not on the wheels (where it crossed their rims)
+        ax.text(x, y0 - 2.2 - 0.25 * (i % 2), f"key {size}" + (" (2)" if row["n_keys"] == 2 else ""), ha="center",
+                va="top", fontsize=7, color="k" if row["feasible"] else "red", zorder=7)
 
 
 def plot_drive(analysis, ax=None):
@@ -91,7 +93,7 @@ def plot_drive(analysis, ax=None):
     xs = _stages(canvas, analysis, 1.35 + r_first)   # shaft k at xs[k], seen end-on: the wheels turn about them
     _shafts_and_keys(ax, analysis, xs, y0)
     ax.set_xlim(-0.2, xs[-1] + 1.1)
-    ax.set_ylim(y0 - 2.3, y0 + 1.6)
+    ax.set_ylim(y0 - 2.9, y0 + 2.1)
     ax.set_aspect("equal")
     ax.axis("off")
     verdict = "every check holds" if analysis.success else "FAILS"

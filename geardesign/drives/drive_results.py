@@ -50,6 +50,12 @@ class DriveAnalysis(Result):
             flow = self.flow.to_string(index=False, float_format=lambda v: f"{v:.5g}")
         return f"DriveAnalysis: {self.message}\n{flow}"
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the text, and the drive's diagram inline."""
+        from ..inline import html_view
+        return html_view(repr(self), lambda ax: self.plot(ax=ax), figsize=(2.2 + 2.4 * len(self.stages), 4.0),
+                         alt="drive diagram")
+
     def plot(self, ax=None):
         """The drive's diagram (input, stages, shafts with n and T, keys): a matplotlib Axes."""
         from .diagram import plot_drive
@@ -88,6 +94,13 @@ class DriveOptimum(Result):
         records = [{k: (None if v is pd.NA else v) for k, v in r.items()} for r in self.table.to_dict("records")]
         out.update(status=self.status, table=records, best=None if self.best is None else self.best.to_dict())
         return plain(out)
+
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the text, and the best design's diagram inline (when there is one)."""
+        from ..inline import html_view
+        draw = None if self.best is None else (lambda ax: self.best.plot(ax=ax))
+        return html_view(repr(self), draw, figsize=(2.2 + 2.4 * len(self.best.stages if self.best else ()), 4.0),
+                         alt="drive diagram")
 
     def __repr__(self) -> str:
         cols = [c for c in self.table.columns if c not in ("reason",)][:14]

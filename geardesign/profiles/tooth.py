@@ -199,6 +199,36 @@ class ToothProfile(Result):
         table of :func:`geardesign.gears.data_block.data_block`, or text lines) as text beside them."""
         return self._write(path, overwrite, ".dxf", data_block)
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the text, and the tooth drawn by segment inline."""
+        from ..inline import html_view
+        return html_view(repr(self), self.plot, figsize=(4.6, 4.6), alt="tooth profile")
+
+    def plot(self, ax=None):
+        """The whole tooth, its segments (root, fillet, involute, tip) in their own colours and
+        the form circle dashed. Returns the matplotlib Axes."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(4.6, 4.6))
+        colours = {"root": "0.45", "fillet": "tab:orange", "involute": "tab:blue", "tip": "tab:green"}
+        for seg, colour in colours.items():
+            on = self.segment == seg
+            if on.any():
+                for sign in (1, -1):
+                    ax.plot(sign * self.x_mm[on], self.y_mm[on], "-", lw=1.6, color=colour,
+                            label=seg if sign > 0 else None)
+        half = np.abs(self.x_mm).max() / max(self.r_form_mm, 1e-300) if self.exists else 0.1   # the drawing's width
+        t = np.linspace(-half, half, 200)
+        ax.plot(self.r_form_mm * np.sin(t), self.r_form_mm * np.cos(t), "--", color="0.3", lw=0.8,
+                label=f"form circle d_Ff = {2 * self.r_form_mm:.4g} mm")
+        ax.set_aspect("equal")
+        ax.set_xlabel("mm")
+        ax.set_title(f"{self._kind} m = {self.m:g} mm, z = {self.z}, x = {self.x:g}"
+                     + (" (undercut)" if self.undercut else ""), fontsize=10)
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)
+        return ax
+
     def outline(self) -> tuple[np.ndarray, np.ndarray]:
         """The whole tooth from the left space middle to the right one (the left flank mirrored)."""
         return (np.concatenate([-self.x_mm, self.x_mm[-2::-1]]),

@@ -175,6 +175,24 @@ class PlanetaryShiftResult(Result):
                              "margin": list(self.margins.values()), "active": [n in self.active for n in names],
                              "sensitivity": [self.sensitivity.get(n, 0.0) for n in names]})
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the text, and both meshes' margins at the optimum as bars."""
+        from ..inline import html_view
+        return html_view(repr(self), self.plot_margins, figsize=(7.0, 1.3 + 0.3 * len(self.margins)),
+                         alt="margins at the optimum")
+
+    def plot_margins(self, ax=None):
+        """Bars of every check's margin at the optimum, both meshes and the set (active outlined)."""
+        import matplotlib.pyplot as plt
+        from .looks import margin_bars
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(7.0, 1.3 + 0.3 * len(self.margins)))
+        return margin_bars(ax, self.margins, self.active,
+                           f"z_s/z_p/z_r = {self.z_sun}/{self.z_planet}/{self.z_ring}, m = {self.m:g} mm: x_s/x_p/x_r "
+                           f"= {self.x_sun:.3f}/{self.x_planet:.3f}/{self.x_ring:.3f} ({self.objective}"
+                           f"{'' if self.success else ', FAILED'})")
+
     def __repr__(self) -> str:
         lines = [
             f"     message: {self.message}",

@@ -16,7 +16,6 @@ import pandas as pd
 
 from ..errors import GearDesignError
 from ..results import Result, plain
-from ..gears.checks import check_colour
 from ..gears.mesh import Mesh
 from ..validate import one_number, require_axes, require_count, require_range
 from ..gears.geometry import center_distance_from_x_sum
@@ -24,8 +23,9 @@ from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
 from .conflict import smallest_conflict
 from .local import central_point
 from .nodes import grid_points
+from .looks import CHECK_LEGENDS, _parts, check_legend, check_style  # noqa: F401  (re-exported)
 
-__all__ = ["feasible_region", "Region", "check_style"]
+__all__ = ["feasible_region", "Region", "CHECK_LEGENDS", "check_style", "check_legend"]   # the looks re-exported
 
 WINDOW = "window"
 
@@ -126,10 +126,9 @@ class Region(Result):
             # ticks on the side where the margin is negative (contour lines keep higher values
             # on their left, the ticks go right)
             cs.set(path_effects=[patheffects.withTickedStroke(angle=-60, spacing=7, length=0.6)])
-            handles.append(plt.Line2D([], [], color=colour, ls=style, lw=1.6, label=c.name))
-        limits = {c.name: c.limit for c in self.problem.checks}
+            handles.append(plt.Line2D([], [], color=colour, ls=style, lw=1.6, label=check_legend(c)))
         if isolines:
-            _isolines(ax, X1, X2, geo, isolines, limits)
+            _isolines(ax, X1, X2, geo, isolines, self.problem.checks)
         if self.feasible:
             for _, comp in self.boundary.groupby("component"):
                 ax.fill(comp["x1"], comp["x2"], color="tab:green", alpha=0.22, lw=0)
@@ -158,68 +157,69 @@ class Region(Result):
         ax.set_ylim(lo, hi)
         ax.set_xlabel(self.problem.axis_labels[0], fontsize=10)
         ax.set_ylabel(self.problem.axis_labels[1], fontsize=10)
-        ax.set_title(f"Blocking contour {self.problem.title} "
+        ax.set_title(f"Blocking contour {self.problem.title}, m = {self.problem.m:g} mm "
                      "(ticks: forbidden side)", fontsize=11)
         ax.grid(True, lw=0.3, alpha=0.6)
         ax.set_aspect("equal")
         ax.legend(handles=handles, fontsize=8.5, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)
         return ax
 
-    def _plot_x_sum(self, ax, x_sum: float) -> list:
-        """The line x_Σ = x_sum (x1 + x2, or x2 − x1 for a ring pair) across the window, its
-        feasible part thick."""
-        import matplotlib.pyplot as plt
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the text, and the blocking contour inline."""
+        from ..inline import html_view
+        return html_view(repr(self), lambda ax: self.plot(ax=ax, n=161), figsize=(7.0, 5.2), alt="blocking contour")
 
+    def to_html(self, path, optimum=None, proposed=None, x_sum=None, n: int = 121, overwrite: bool = False):
+        """Write the blocking contour as an interactive page (plotly, works offline): hover shows
+        every check's margin and ε_α, s_a/m, a_w at the nearest of n × n nodes, a legend click
+        hides or shows a check; marks as in :meth:`plot`. Returns the path. See
+        :mod:`geardesign.shifts.contour_html`."""
+        from .contour_html import write_contour_html   # here: that module imports this one
+
+        return write_contour_html(self, path, optimum, proposed, x_sum, n, overwrite)
+
+    def x_sum_line(self, x_sum: float, points: int = 2001):
+        """The line x_Σ = x_sum (x1 + x2, or x2 − x1 for a ring pair) across the window: (x1, x2,
+        inside, a_w in mm, legend text), or None where it misses the window. What both the PNG
+        and the HTML contour draw."""
         prob = self.problem
         prob_line = prob.subproblem(range(len(prob.checks)))
         prob_line.x_sum = x_sum
-        t = np.linspace(*prob_line.x1_on_line(*self.bounds), 2001)
+        t = np.linspace(*prob_line.x1_on_line(*self.bounds), points)
         if t.size == 0 or t[0] > t[-1]:
-            return []
+            return None
         x2 = x_sum - prob.sgn * t
-        inside = self.contains(t, x2)
         a_w = float(center_distance_from_x_sum(prob.m, prob.z1, prob.z2, x_sum, prob.rack,
                                                beta_deg=prob.mesh.beta_deg, internal=prob.mesh.internal))
+        xs_name = "x2 − x1" if prob.mesh.internal else "x1 + x2"
+        return t, x2, np.asarray(self.contains(t, x2)), a_w, f"a_w = {a_w:.6g} mm ({xs_name} = {x_sum:.4g})"
+
+    def _plot_x_sum(self, ax, x_sum: float) -> list:
+        """The line x_Σ = x_sum across the window, its feasible part thick."""
+        import matplotlib.pyplot as plt
+
+        line = self.x_sum_line(x_sum)
+        if line is None:
+            return []
+        t, x2, inside, _, label = line
         ax.plot(t, x2, color="k", lw=0.9, ls="--", zorder=3)
         seg = np.where(inside, x2, np.nan)
         ax.plot(t, seg, color="k", lw=3.2, solid_capstyle="butt", zorder=4)
-        xs_name = "x2 − x1" if prob.mesh.internal else "x1 + x2"
-        return [plt.Line2D([], [], color="k", lw=0.9, ls="--",
-                           label=f"a_w = {a_w:.6g} mm ({xs_name} = {x_sum:.4g})"),
+        return [plt.Line2D([], [], color="k", lw=0.9, ls="--", label=label),
                 plt.Line2D([], [], color="k", lw=3.2, label="its feasible part")]
 
 
-_CUSTOM_COLOURS = ("tab:olive", "tab:pink", "tab:gray", "darkgoldenrod", "teal")
 PLOT_N_MAX = 1201      # nodes per axis of a plot's curves: 1.4 M designs, ~1 s
 
 
-def check_style(name: str) -> tuple[str, str]:
-    """(colour, line style) of a check, the same in every plot: the colour by its kind, solid
-    for gear 1 and dashed for gear 2; a custom check gets a colour from its name. A planetary
-    set's checks ("planet-ring:interference_planet") take their kind's colour, darker in the
-    planet-ring mesh, and their gear's style: solid sun, dashed planet, dash-dot ring; a check of
-    the whole mesh solid in sun-planet, dashed in planet-ring; the set's own dotted."""
-    if ":" in name:
-        from matplotlib.colors import to_rgb
-
-        mesh, kind = name.split(":", 1)
-        gear = kind.rsplit("_", 1)[-1] if kind.rsplit("_", 1)[-1] in ("sun", "planet", "ring") else None
-        kind = kind.rsplit("_", 1)[0] if gear else kind
-        colour = check_colour(kind) or _CUSTOM_COLOURS[sum(map(ord, kind)) % len(_CUSTOM_COLOURS)]
-        if mesh == "planet-ring":
-            colour = tuple(0.55 * c for c in to_rgb(colour))
-        style = {"sun": "-", "planet": "--", "ring": "-."}.get(gear) or {"sun-planet": "-", "planet-ring": "--"}.get(mesh, ":")
-        return colour, style
-    colour = check_colour(name)
-    if colour is not None:
-        return colour, "--" if name.endswith("2") else "-"
-    return _CUSTOM_COLOURS[sum(map(ord, name)) % len(_CUSTOM_COLOURS)], "-."
-
-
-def _isolines(ax, X1, X2, geo, isolines, limits) -> None:
+def _isolines(ax, X1, X2, geo, isolines, checks) -> None:
     """Thin grey labelled isolines; a level equal to a check's limit is that check's curve."""
-    eps_limit = limits.get("contact_ratio")
-    sa_limit = {j: limits.get(f"tip_thickness{j}") for j in (1, 2)}
+    parts = [(_parts(c.name), c.limit) for c in checks]
+    eps_limit = next((lim for (_, kind, _), lim in parts if kind == "contact_ratio"), None)
+    # geo's sa1, sa2: gear 1 and 2 of a pair, the sun and the planet of a planetary set
+    marks = ("1", "2") if "sun-planet" not in geo else (",sun", ",planet")
+    sa_limit = {j: next((lim for (_, kind, gear), lim in parts if kind == "tip_thickness"
+                         and gear in (str(j), ("sun", "planet")[j - 1])), None) for j in (1, 2)}
     style = dict(colors="0.35", linewidths=0.6, linestyles=[(0, (3, 2))])
     with np.errstate(invalid="ignore"):
         if "eps_alpha" in isolines:
@@ -233,7 +233,7 @@ def _isolines(ax, X1, X2, geo, isolines, limits) -> None:
                 if not levels:
                     continue
                 cs = ax.contour(X1, X2, np.ma.masked_invalid(geo[f"sa{j}"] / geo["_m"]), levels=levels, **style)
-                ax.clabel(cs, fmt=f"s_a{j}/m=%.2f", fontsize=7.5, inline_spacing=2)
+                ax.clabel(cs, fmt=f"s_a{marks[j - 1]}/m=%.2f", fontsize=7.5, inline_spacing=2)
 
 
 def _project(prob: Problem, P: np.ndarray, idx: np.ndarray, iters: int = 10) -> np.ndarray:

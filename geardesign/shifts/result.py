@@ -78,6 +78,25 @@ class ShiftResult(Result):
             return f"{name} {sides['raised']:+.4g} if raised / {sides['lowered']:+.4g} if lowered (corner)"
         return f"{name} {value:+.4g}"
 
+    def _repr_html_(self) -> str:
+        """Jupyter's view: the text, and every check's margin at the optimum as a bar (active ones
+        outlined), in the checks' colours."""
+        from ..inline import html_view
+        return html_view(repr(self), self.plot_margins, figsize=(6.4, 1.3 + 0.3 * len(self.margins)),
+                         alt="margins at the optimum")
+
+    def plot_margins(self, ax=None):
+        """Bars of every check's margin at the optimum (≥ 0 holds; active checks outlined, their
+        curves pass through the optimum). Returns the Axes."""
+        import matplotlib.pyplot as plt
+        from .looks import margin_bars
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(6.4, 1.3 + 0.3 * len(self.margins)))
+        return margin_bars(ax, self.margins, self.active,
+                           f"z1/z2 = {self.z1}/{self.z2}, m = {self.m:g} mm: x1 = {self.x1:.4f}, x2 = {self.x2:.4f} "
+                           f"({self.objective}{'' if self.success else ', FAILED'})")
+
     def __repr__(self) -> str:
         lines = [
             f"     message: {self.message}",

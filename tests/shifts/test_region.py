@@ -73,17 +73,21 @@ def test_region_plot(tmp_path):
     ax = reg.plot(optimum=gd.optimize_shifts(17, 26), proposed=(0.898, 0.517), x_sum=1.0)
     leg = ax.get_legend()
     labels = [t.get_text() for t in leg.get_texts()]
-    assert "contact_ratio" in labels and "feasible" in labels
+    # each check by its name and what it asks, with the limit (issue 28, item 9)
+    assert "contact_ratio: ε_α ≥ 1.2" in labels and "tip_thickness2: s_a2/m ≥ 0.25" in labels
+    assert "feasible" in labels and "m = 1 mm" in ax.get_title()
     assert any(t.startswith("optimum (0.360, 0.977)") for t in labels)
     assert any(t.startswith("proposed (0.898, 0.517): fails") for t in labels)   # ε_α 1.153 < 1.2
     assert any(t.startswith("a_w = ") and "x1 + x2 = 1" in t for t in labels)
     # one colour per check, the same in every plot
-    colours = {t.get_text(): to_hex(h.get_color()) for t, h in zip(leg.get_texts(), leg.legend_handles)
-               if t.get_text() in reg.problem.names}
+    name = lambda t: t.get_text().split(":")[0]   # noqa: E731
+    colours = {name(t): to_hex(h.get_color()) for t, h in zip(leg.get_texts(), leg.legend_handles)
+               if name(t) in reg.problem.names}
+    assert len(colours) >= 4
     other = gd.feasible_region(12, 31).plot().get_legend()
     for t, h in zip(other.get_texts(), other.legend_handles):
-        if t.get_text() in colours:
-            assert to_hex(h.get_color()) == colours[t.get_text()]
+        if name(t) in colours:
+            assert to_hex(h.get_color()) == colours[name(t)]
     ax.figure.savefig(tmp_path / "c.png")
     assert (tmp_path / "c.png").stat().st_size > 10_000
 
@@ -156,3 +160,14 @@ def test_contains_on_a_helical_ring_pair_is_quiet():
     assert not inside
     with pytest.raises(gd.GearDesignError, match="inside its base circle"):
         gd.GearPair(1, 7, 11, 0.5, 0.5, beta_deg=15.0, internal=True)
+
+
+def test_planetary_checks_look_apart():
+    # issue 28 item 9: three planet-ring checks were one dark red, dashed; now no two checks of a
+    # set share both colour and line style
+    from matplotlib.colors import to_hex
+    from geardesign.shifts.region import check_style
+
+    reg = gd.planetary_region(21, 43, 108, 3, 1.75, n=61, method="grid")
+    looks = [(to_hex(check_style(n)[0]), check_style(n)[1]) for n in reg.problem.names]
+    assert len(set(looks)) == len(looks)

@@ -1,0 +1,339 @@
+"""One-page calculation reports as self-contained HTML: a gear pair's inputs, its geometry in the
+handbook's two-column layout (quantity | symbol | unit | gear 1 | gear 2), its checks with the
+verdict first, the blocking contour and the meshing drawing inline (PNG in the page), printable.
+
+The page has no outside reference (no script, font or picture fetched), so it opens, prints and
+archives as one file. It sits in the scene layer because it draws on every layer below it: the
+pair (gears), its region and optimum (shifts) and its drawing (profiles).
+"""
+from __future__ import annotations
+
+import base64
+import html
+import io
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..errors import GearDesignError
+from ..files import check_output_path, write_file_atomic
+from ..gears.checks import DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN
+from ..gears.pair import GearPair
+
+__all__ = ["pair_report", "pair_report_html", "drive_report", "drive_report_html", "GEAR_ROWS", "PAIR_ROWS",
+           "handbook_rows"]
+
+
+# (quantity, symbol in HTML, unit, field of gear 1, field of gear 2, format); "·m" fields are
+# divided by the module. The order is a handbook's (GOST 16532-70 Table 1; ISO 21771 clause 5).
+GEAR_ROWS = (
+    ("number of teeth", "z", "–", "z1", "z2", "{:d}"),
+    ("profile shift coefficient", "x", "–", "x1", "x2", "{:.4f}"),
+    ("reference diameter", "d", "mm", "d1", "d2", "{:.3f}"),
+    ("base diameter", "d<sub>b</sub>", "mm", "db1", "db2", "{:.3f}"),
+    ("operating pitch diameter", "d<sub>w</sub>", "mm", "dw1", "dw2", "{:.3f}"),
+    ("tip diameter", "d<sub>a</sub>", "mm", "da1", "da2", "{:.3f}"),
+    ("root diameter", "d<sub>f</sub>", "mm", "df1", "df2", "{:.3f}"),
+    ("tooth thickness, reference circle", "s", "mm", "s1", "s2", "{:.3f}"),
+    ("tooth thickness, operating pitch circle", "s<sub>w</sub>", "mm", "sw1", "sw2", "{:.3f}"),
+    ("tooth thickness at the tip", "s<sub>a</sub>", "mm", "sa1", "sa2", "{:.3f}"),
+    ("tip thickness in modules", "s<sub>a</sub>/m", "–", "sa1·m", "sa2·m", "{:.3f}"),
+    ("pressure angle at the tip", "α<sub>a</sub>", "°", "alpha_a1_deg", "alpha_a2_deg", "{:.3f}"),
+    ("tip clearance", "c", "mm", "clearance1", "clearance2", "{:.3f}"),
+    ("smallest shift without undercut", "x<sub>min</sub>", "–", "x_min1", "x_min2", "{:.4f}"),
+    ("form circle diameter", "d<sub>Ff</sub>", "mm", "d_l1", "d_l2", "{:.3f}"),
+    ("start of active profile", "d<sub>Nf</sub>", "mm", "d_p1", "d_p2", "{:.3f}"),
+    ("specific sliding at the root", "ϑ<sub>f</sub>", "–", "sliding1_root", "sliding2_root", "{:.3f}"),
+    ("specific sliding at the tip", "ϑ<sub>a</sub>", "–", "sliding1_tip", "sliding2_tip", "{:.3f}"),
+)
+# (quantity, symbol, unit, field, format): one value for the pair
+PAIR_ROWS = (
+    ("operating centre distance", "a<sub>w</sub>", "mm", "a_w", "{:.4f}"),
+    ("reference centre distance", "a", "mm", "a", "{:.4f}"),
+    ("operating pressure angle", "α<sub>w</sub>", "°", "alpha_w_deg", "{:.4f}"),
+    ("centre distance modification coefficient", "y", "–", "y", "{:.4f}"),
+    ("tip shortening coefficient", "Δy", "–", "dy", "{:.4f}"),
+    ("transverse base pitch", "p<sub>b</sub>", "mm", "p_b", "{:.4f}"),
+    ("length of the path of contact", "g<sub>α</sub>", "mm", "g_alpha", "{:.4f}"),
+    ("transverse contact ratio", "ε<sub>α</sub>", "–", "eps_alpha", "{:.4f}"),
+    ("specific pressure coefficient at the pitch point", "m/ρ<sub>red</sub>", "–", "spec_pressure_pitch", "{:.4f}"),
+)
+HELICAL_ROWS = (
+    ("transverse module", "m<sub>t</sub>", "mm", "m_t", "{:.4f}"),
+    ("base helix angle", "β<sub>b</sub>", "°", "beta_b_deg", "{:.4f}"),
+    ("overlap ratio", "ε<sub>β</sub>", "–", "eps_beta", "{:.4f}"),
+    ("total contact ratio", "ε<sub>γ</sub>", "–", "eps_gamma", "{:.4f}"),
+)
+
+_CSS = """
+body { font: 13px/1.35 "DejaVu Sans", Arial, sans-serif; color: #111; margin: 18px auto; max-width: 1060px; }
+h1 { font-size: 19px; margin: 0 0 4px; } h2 { font-size: 15px; margin: 16px 0 6px; border-bottom: 1px solid #999; }
+.verdict { padding: 6px 10px; border-radius: 4px; font-weight: bold; margin: 6px 0 10px; }
+.verdict.ok { background: #dff0d8; border: 1px solid #3c763d; color: #2b542c; }
+.verdict.fail { background: #f2dede; border: 1px solid #a94442; color: #843534; }
+table { border-collapse: collapse; margin: 4px 0; } th, td { border: 1px solid #bbb; padding: 2px 7px; }
+th { background: #eee; text-align: left; } td.num { text-align: right; font-variant-numeric: tabular-nums; }
+td.span { text-align: center; } tr.failrow td { background: #fbeaea; } td.mark { font-weight: bold; }
+.figs { display: grid; grid-template-columns: 1.15fr 0.85fr; gap: 12px; align-items: start; }
+figure { margin: 8px 0; } figure img { width: 100%; border: 1px solid #ccc; }
+figcaption { font-size: 12px; color: #333; } .small { font-size: 11px; color: #555; }
+@media print {
+  body { margin: 0; max-width: none; font-size: 10px; line-height: 1.25; } h2 { break-after: avoid; margin: 8px 0 3px; }
+  th, td { padding: 0.5px 5px; } h1 { font-size: 15px; } .verdict { padding: 3px 8px; margin: 3px 0 5px; }
+  table, figure, .verdict { break-inside: avoid; } .pictures { break-before: page; }
+  .figs { grid-template-columns: 1fr; } figure img { max-height: 112mm; width: auto; max-width: 100%; }
+  @page { size: A4; margin: 11mm; }
+}
+"""
+
+
+def handbook_rows(pair: GearPair) -> list[tuple]:
+    """The geometry table's rows: (quantity, symbol, unit, gear 1, gear 2) as text, a pair
+    quantity with one value (gear 2 None) shown across both gear columns."""
+    geo = pair.geometry().to_dict()
+    geo.update(z1=pair.z1, z2=pair.z2, x1=pair.x1, x2=pair.x2)
+    rows = []
+    for name, sym, unit, k1, k2, fmt in GEAR_ROWS:
+        v = [geo[k.split("·")[0]] / (pair.m if "·m" in k else 1) for k in (k1, k2)]
+        rows.append((name, sym, unit, *(_fmt(fmt, x) for x in v)))
+    extra = HELICAL_ROWS if pair.beta_deg else ()
+    for name, sym, unit, k, fmt in PAIR_ROWS + extra:
+        rows.append((name, sym, unit, _fmt(fmt, geo[k]), None))
+    return rows
+
+
+def _fmt(fmt: str, value) -> str:
+    if value is None or (isinstance(value, float) and not math.isfinite(value)):
+        return "–"
+    if fmt == "{:d}":
+        return fmt.format(int(value))
+    text = fmt.format(float(value))
+    if text.startswith("-") and float(text) == 0.0:     # a rounding's "-0.0000" is zero
+        text = ("+" if "+" in fmt else "") + text[1:]
+    return text
+
+
+@dataclass(frozen=True)
+class _Limits:
+    eps_alpha_min: float = DEFAULT_EPS_ALPHA_MIN
+    sa_min: float = DEFAULT_SA_MIN
+    housing_a_w: float | None = None
+    eps_gamma_min: float | None = None
+
+
+def _png(fig) -> str:
+    """A matplotlib figure as a data: URL (closed afterwards)."""
+    import matplotlib.pyplot as plt
+
+    buf = io.BytesIO()
+    try:
+        fig.savefig(buf, format="png", dpi=110, bbox_inches="tight")
+    finally:
+        plt.close(fig)
+    return "data:image/png;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
+
+
+def _pictures(pair: GearPair, lim: _Limits) -> tuple[str, str, object]:
+    """(contour PNG, mesh PNG, the optimum) of the pair: its region with the pair and the optimum
+    marked (on the housing's a_w line when one is given), and its meshing drawing."""
+    from ..profiles.drawing import plot_mesh
+    from ..shifts.optimize import optimize_shifts
+    from ..shifts.region import feasible_region
+
+    checks = {"eps_alpha_min": lim.eps_alpha_min, "sa_min": lim.sa_min}
+    if lim.eps_gamma_min is not None:
+        checks["eps_gamma_min"] = lim.eps_gamma_min
+    kind = dict(rack=pair.rack, tip_shortening=pair.tip_shortening, beta_deg=pair.beta_deg,
+                internal=pair.internal, face_width=pair.face_width)
+    region = feasible_region(pair.z1, pair.z2, checks=checks, m=pair.m, **kind)
+    opt = optimize_shifts(pair.z1, pair.z2, checks=checks, m=pair.m, a_w=lim.housing_a_w, **kind)
+    ax = region.plot(optimum=opt if opt.success else None, proposed=(pair.x1, pair.x2), x_sum=opt.x_sum_fixed)
+    contour = _png(ax.figure)
+    mesh = _png(plot_mesh(pair).figure)
+    return contour, mesh, opt
+
+
+def _table(head, rows, classes=None) -> str:
+    th = "".join(f"<th>{h}</th>" for h in head)
+    body = []
+    for i, r in enumerate(rows):
+        cls = f' class="{classes[i]}"' if classes and classes[i] else ""
+        body.append(f"<tr{cls}>" + "".join(r) + "</tr>")
+    return f"<table><thead><tr>{th}</tr></thead><tbody>{''.join(body)}</tbody></table>"
+
+
+def _td(text, cls="") -> str:
+    return f'<td class="{cls}">{text}</td>' if cls else f"<td>{text}</td>"
+
+
+def _inputs(pair: GearPair, lim: _Limits) -> str:
+    r = pair.rack
+    rows = [("module", "m" + (" (normal)" if pair.beta_deg else ""), "mm", f"{pair.m:g}"),
+            ("numbers of teeth", "z<sub>1</sub>, z<sub>2</sub>", "–", f"{pair.z1}, {pair.z2}"),
+            ("profile shift coefficients", "x<sub>1</sub>, x<sub>2</sub>", "–", f"{pair.x1:.4g}, {pair.x2:.4g}"),
+            ("kind", "", "", ("internal" if pair.internal else "external") + (" helical" if pair.beta_deg else " spur")),
+            ("basic rack: pressure angle, addendum, clearance, root fillet", "α, h<sub>a</sub>*, c*, ρ<sub>f</sub>*",
+             "°, –, –, –", f"{r.alpha_deg:g}, {r.ha:g}, {r.c:g}, {r.rho_f:g}"),
+            ("tip shortening by Δy·m", "", "", "yes" if pair.tip_shortening else "no")]
+    if pair.beta_deg:
+        rows.append(("reference helix angle", "β", "°", f"{pair.beta_deg:g}"))
+    if pair.face_width is not None:
+        rows.append(("face width", "b", "mm", f"{pair.face_width:g}"))
+    rows += [("smallest contact ratio", "ε<sub>α,min</sub>", "–", f"{lim.eps_alpha_min:g}"),
+             ("smallest tip thickness", "s<sub>a,min</sub>/m", "–", f"{lim.sa_min:g}")]
+    if lim.housing_a_w is not None:
+        rows.append(("housing centre distance", "a<sub>w</sub>", "mm", f"{lim.housing_a_w:g}"))
+    return _table(["input", "symbol", "unit", "value"],
+                  [[_td(a), _td(b), _td(c), _td(d, "num")] for a, b, c, d in rows])
+
+
+def _page(title: str, parts: list) -> str:
+    head = (f'<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>{html.escape(title)}</title>'
+            f"<style>{_CSS}</style></head><body>")
+    return head + "\n".join(parts) + "</body></html>\n"
+
+
+def _frame(frame, formats: dict) -> str:
+    """A DataFrame as a table, numbers right-aligned in the given formats (others as text)."""
+    rows = []
+    for _, r in frame.iterrows():
+        rows.append([_td(_fmt(formats[c], r[c]), "num") if c in formats else _td(html.escape(str(r[c])))
+                     for c in frame.columns])
+    return _table([html.escape(str(c)) for c in frame.columns], rows)
+
+
+def _geometry(pair: GearPair) -> str:
+    rows = []
+    for name, sym, unit, v1, v2 in handbook_rows(pair):
+        cells = [_td(name), _td(sym), _td(unit)]
+        cells += [_td(v1, "num"), _td(v2, "num")] if v2 is not None else ['<td class="num span" colspan="2">'
+                                                                          f"{v1}</td>"]
+        rows.append(cells)
+    return _table(["quantity", "symbol", "unit", "gear 1", "gear 2" + (" (ring)" if pair.internal else "")], rows)
+
+
+def _checks(table) -> tuple[str, str, bool]:
+    """(verdict HTML, checks table HTML, all hold) with the failing checks first."""
+    t = table.assign(_order=~table["ok"]).sort_values("_order", ascending=False, kind="stable")
+    rows, classes = [], []
+    for _, r in t.iterrows():
+        ok = bool(r["ok"])
+        rows.append([_td("holds" if ok else "FAILS", "mark"), _td(html.escape(str(r["check"]))),
+                     _td(html.escape(str(r["label"]))), _td(_fmt("{:.5g}", r["value"]), "num"),
+                     _td(_fmt("{:.5g}", r["limit"]), "num"), _td(_fmt("{:+.4f}", r["margin"]), "num")])
+        classes.append("" if ok else "failrow")
+    failed = [f"{html.escape(str(r['check']))} (value {_fmt('{:.5g}', r['value'])}, limit {_fmt('{:.5g}', r['limit'])})"
+              for _, r in table.loc[~table["ok"]].iterrows()]
+    verdict = ('<div class="verdict ok">Every check holds ({} checks).</div>'.format(len(table)) if not failed else
+               '<div class="verdict fail">FAILS: {}</div>'.format("; ".join(failed)))
+    return verdict, _table(["verdict", "check", "what it asks", "value", "limit", "margin (≥ 0 holds)"], rows,
+                           classes), not failed
+
+
+def pair_report_html(pair: GearPair, eps_alpha_min: float = DEFAULT_EPS_ALPHA_MIN, sa_min: float = DEFAULT_SA_MIN,
+                     housing_a_w: float | None = None, eps_gamma_min: float | None = None,
+                     pictures: bool = True) -> str:
+    """The report of ``pair`` as one HTML page (a string); limits as :meth:`GearPair.checks`."""
+    if not isinstance(pair, GearPair):
+        raise GearDesignError(f"pair must be a geardesign.GearPair, got {type(pair).__name__}")
+    lim = _Limits(eps_alpha_min, sa_min, housing_a_w, eps_gamma_min)
+    table = pair.checks(eps_alpha_min=eps_alpha_min, sa_min=sa_min, housing_a_w=housing_a_w,
+                        eps_gamma_min=eps_gamma_min)
+    verdict, checks, _ = _checks(table)
+    title = (f"Gear pair m = {pair.m:g} mm, z<sub>1</sub>/z<sub>2</sub> = {pair.z1}/{pair.z2}, "
+             f"x<sub>1</sub> = {pair.x1:.4g}, x<sub>2</sub> = {pair.x2:.4g}")
+    from .. import __version__
+    parts = [f"<h1>{title}</h1>", verdict, "<h2>Checks</h2>", checks, "<h2>Inputs</h2>", _inputs(pair, lim),
+             "<h2>Geometry</h2>", _geometry(pair),
+             f'<p class="small">geardesign {__version__}. Geometry: ISO 21771:2007; GOST 16532-70 (external), '
+             "GOST 19274-73 (internal). Margins are dimensionless, ≥ 0 where a check holds.</p>"]
+    if pictures:
+        contour, mesh, opt = _pictures(pair, lim)
+        best = (f"the optimum of {opt.objective} x<sub>1</sub> = {opt.x1:.4f}, x<sub>2</sub> = {opt.x2:.4f} (star)"
+                if opt.success else "no feasible optimum")
+        parts += ['<h2 class="pictures">Pictures</h2><div class="figs">',
+                  f'<figure id="contour"><img alt="blocking contour" src="{contour}"><figcaption>Blocking contour of '
+                  f"z<sub>1</sub>/z<sub>2</sub> = {pair.z1}/{pair.z2}: every check's curve, ticks on its forbidden "
+                  f"side; this pair (cross) and {best}.</figcaption></figure>",
+                  f'<figure id="mesh"><img alt="the pair in mesh" src="{mesh}"><figcaption>The pair in mesh: both '
+                  "gears' generated teeth, their circles and the line of action.</figcaption></figure></div>"]
+    return _page(f"Gear pair {pair.z1}/{pair.z2}, m = {pair.m:g} mm", parts)
+
+
+def pair_report(pair: GearPair, path, overwrite: bool = False, **limits):
+    """Write the one-page calculation report of ``pair`` to ``path`` (.html): inputs, geometry
+    (gear 1 | gear 2), checks with the verdict first, the blocking contour and the meshing
+    drawing, self-contained and printable. ``limits``: ``eps_alpha_min``, ``sa_min``,
+    ``housing_a_w``, ``eps_gamma_min`` as :meth:`GearPair.checks`. The file appears whole or not
+    at all; an existing one is replaced only with ``overwrite``. Returns the path."""
+    p = check_output_path(path, overwrite=overwrite, suffixes=(".html", ".htm"), what="report")
+    page = pair_report_html(pair, **limits)
+    return write_file_atomic(p, lambda tmp: Path(tmp).write_text(page, encoding="utf-8"))
+
+
+def _analysis(result):
+    """The DriveAnalysis of a Drive (analysed), a DriveOptimum (its best) or an analysis itself."""
+    from ..drives.drive import Drive, DriveAnalysis, DriveOptimum
+
+    if isinstance(result, Drive):
+        return result.analyse()
+    if isinstance(result, DriveOptimum):
+        if result.best is None:
+            raise GearDesignError(f"the drive optimum has no design to report: {result.message}")
+        return result.best
+    if isinstance(result, DriveAnalysis):
+        return result
+    raise GearDesignError(f"a drive report needs a Drive, DriveAnalysis or DriveOptimum, got {type(result).__name__}")
+
+
+def drive_report_html(result, pictures: bool = True) -> str:
+    """The report of a drive as one HTML page: the verdict, every check (the smallest margins
+    first), the power flow, the stages, each gear pair's geometry (gear 1 | gear 2), the keys and
+    the diagram. ``result``: a Drive (analysed here), a DriveAnalysis or a DriveOptimum (its best)."""
+    an = _analysis(result)
+    t = an.checks.sort_values("margin", kind="stable")
+    rows = [[_td("holds" if r["ok"] else "FAILS", "mark"), _td(html.escape(str(r["item"]))),
+             _td(html.escape(str(r["check"]))), _td(_fmt("{:+.4f}", r["margin"]), "num")] for _, r in t.iterrows()]
+    failed = [f"{html.escape(str(r['item']))}: {html.escape(str(r['check']))} ({_fmt('{:+.4f}', r['margin'])})"
+              for _, r in t.loc[~t["ok"]].iterrows()]
+    verdict = (f'<div class="verdict ok">Every check holds ({len(t)} checks); smallest margin '
+               f"{an.min_margin:+.4f} ({html.escape(an.limiting)}).</div>" if not failed and an.success else
+               f'<div class="verdict fail">FAILS: {"; ".join(failed) or html.escape(an.message)}</div>')
+    stages = []
+    for st in an.stages:
+        s = st["summary"]
+        rest = ", ".join(f"{k} {_fmt('{:.5g}', v) if isinstance(v, float) else html.escape(str(v))}"
+                         for k, v in s.items() if k not in ("name", "kind", "ratio", "efficiency"))
+        stages.append([_td(html.escape(str(s["name"]))), _td(s["kind"]), _td(_fmt("{:.5g}", s["ratio"]), "num"),
+                       _td(_fmt("{:.3g}", s["efficiency"]), "num"), _td(rest)])
+    parts = [f"<h1>Drive u = {an.total_ratio:.5g}</h1>", verdict,
+             "<h2>Checks (smallest margin first; ≥ 0 holds)</h2>",
+             _table(["verdict", "item", "check", "margin"], rows, ["" if r["ok"] else "failrow" for _, r in t.iterrows()]),
+             "<h2>Power flow</h2>", _frame(an.flow, {"n_rpm": "{:.5g}", "torque_nm": "{:.5g}", "power_kw": "{:.4g}"}),
+             "<h2>Stages</h2>", _table(["stage", "kind", "u", "η", "design"], stages)]
+    for st in an.stages:
+        if st["summary"]["kind"] == "gear" and isinstance(st.get("pair"), GearPair):
+            parts += [f"<h2>Gear stage {html.escape(str(st['summary']['name']))}: geometry</h2>", _geometry(st["pair"])]
+    if len(an.keys):
+        k = an.keys
+        keys = k[["name", "at", "d_mm", "hub_length_mm", "torque_nm"]].assign(
+            key_mm=[f"{b:g}×{h:g}×{n:g}" if n == n else "none fits" for b, h, n in zip(k["b_mm"], k["h_mm"], k["length_mm"])],
+            n_keys=k["n_keys"], crush_mpa=k["crush_mpa"], shear_mpa=k["shear_mpa"], margin_crush=k["margin_crush"],
+            margin_shear=k["margin_shear"])
+        parts += ["<h2>Keys</h2>", _frame(keys, {"d_mm": "{:.4g}", "hub_length_mm": "{:.4g}", "torque_nm": "{:.4g}",
+                                                 "crush_mpa": "{:.4g}", "shear_mpa": "{:.4g}",
+                                                 "margin_crush": "{:+.4f}", "margin_shear": "{:+.4f}"})]
+    if pictures:
+        diagram = _png(an.plot().figure)
+        parts += ['<h2 class="pictures">Diagram</h2>',
+                  f'<figure id="diagram"><img alt="drive diagram" src="{diagram}" style="width:auto"><figcaption>The drive seen end-on: '
+                  "each dot a shaft with its speed and torque, black squares keyed hubs.</figcaption></figure>"]
+    return _page(f"Drive u = {an.total_ratio:.5g}", parts)
+
+
+def drive_report(result, path, overwrite: bool = False):
+    """Write :func:`drive_report_html` to ``path`` (.html), whole or not at all; an existing file
+    is replaced only with ``overwrite``. Returns the path."""
+    p = check_output_path(path, overwrite=overwrite, suffixes=(".html", ".htm"), what="report")
+    page = drive_report_html(result)
+    return write_file_atomic(p, lambda tmp: Path(tmp).write_text(page, encoding="utf-8"))
