@@ -8,7 +8,8 @@ from ..files import check_output_path, write_file_atomic
 from ..errors import GearDesignError
 from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args, local_workers
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json
-from .pair import add_kind_args, add_rack_args, kind_from_args, rack_from_args
+from .options import add_rack_args, rack_from_args
+from .pair import add_kind_args, kind_from_args
 from .options import add_check_args, checks_from_args
 
 

@@ -8,7 +8,7 @@ flagged, 2 on bad input.
 from __future__ import annotations
 
 from .output import add_json_flag, print_frame, print_json
-from .pair import add_rack_args, rack_from_args
+from .options import add_rack_args, rack_from_args
 
 # (field, label, unit) of the human table, in order
 ROWS = (

@@ -8,7 +8,7 @@ import contextlib
 
 from ..gears.checks import options as check_options
 
-__all__ = ["add_check_args", "checks_from_args", "add_load_args", "load_from_args", "add_solver_args", "add_output_file", "add_cluster_args",
+__all__ = ["add_check_args", "checks_from_args", "add_load_args", "load_from_args", "add_rack_args", "rack_from_args", "add_solver_args", "add_output_file", "add_cluster_args",
            "cluster_from_args", "local_workers"]
 
 # the older spellings of --no-undercut and --no-interference, kept working
@@ -149,3 +149,22 @@ def load_from_args(args) -> dict:
                 application_factor=args.application_factor, life_h=args.life_h)
     width = args.strength_width if args.strength_width is not None else getattr(args, "face_width", None)
     return {"load": load, "material": args.material, "material2": args.material2, "face_width_mm": width}
+
+
+def add_rack_args(p) -> None:
+    """--alpha-deg, --ha, --c, --rho-f: the basic rack, defaults the standard one's (BasicRack)."""
+    from ..gears.rack import BasicRack
+
+    std = BasicRack()
+    g = p.add_argument_group("basic rack (ISO 53 / GOST 13755 defaults)")
+    g.add_argument("--alpha-deg", type=float, default=std.alpha_deg, help=f"pressure angle, degrees ({std.alpha_deg:g})")
+    g.add_argument("--ha", type=float, default=std.ha, help=f"addendum coefficient h_a* ({std.ha:g})")
+    g.add_argument("--c", type=float, default=std.c, help=f"clearance coefficient c* ({std.c:g})")
+    g.add_argument("--rho-f", type=float, default=std.rho_f, help=f"root fillet coefficient rho_f* ({std.rho_f:g})")
+
+
+def rack_from_args(args):
+    """The BasicRack of :func:`add_rack_args`' options."""
+    from ..gears.rack import BasicRack
+
+    return BasicRack(alpha_deg=args.alpha_deg, ha=args.ha, c=args.c, rho_f=args.rho_f)

@@ -5,21 +5,8 @@ import sys
 
 from ..errors import GearDesignError
 from ..gears.pair import GearPair
-from ..gears.rack import BasicRack
-from .options import add_check_args, add_output_file, checks_from_args
+from .options import add_check_args, add_output_file, add_rack_args, checks_from_args, rack_from_args
 from .output import add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict
-
-
-def add_rack_args(p) -> None:
-    g = p.add_argument_group("basic rack (ISO 53 / GOST 13755 defaults)")
-    g.add_argument("--alpha-deg", type=float, default=20.0, help="pressure angle, degrees (20)")
-    g.add_argument("--ha", type=float, default=1.0, help="addendum coefficient h_a* (1.0)")
-    g.add_argument("--c", type=float, default=0.25, help="clearance coefficient c* (0.25)")
-    g.add_argument("--rho-f", type=float, default=0.38, help="root fillet coefficient rho_f* (0.38)")
-
-
-def rack_from_args(args) -> BasicRack:
-    return BasicRack(alpha_deg=args.alpha_deg, ha=args.ha, c=args.c, rho_f=args.rho_f)
 
 
 def add_pair_args(p) -> None:

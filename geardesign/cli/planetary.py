@@ -6,7 +6,7 @@ from ..errors import GearDesignError
 from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args
 from .output import add_json_flag, print_frame, print_json, print_wrapped
 from .options import add_check_args, checks_from_args
-from .pair import add_rack_args, rack_from_args
+from .options import add_rack_args, rack_from_args
 
 
 def add_parser(sub):

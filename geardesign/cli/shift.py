@@ -7,7 +7,8 @@ from ..shifts.optimize import DEFAULT_TOL, METHODS
 from .options import add_check_args, add_output_file, checks_from_args
 from .output import (add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict,
                      print_wrapped)
-from .pair import add_kind_args, add_rack_args, kind_from_args, rack_from_args
+from .options import add_rack_args, rack_from_args
+from .pair import add_kind_args, kind_from_args
 
 _METHOD_HELP = {
     "exact": "active-set Newton, x to ~1e-12 (default)",

@@ -12,7 +12,8 @@ from ..files import check_output_path, write_file_atomic
 from .options import (add_check_args, add_cluster_args, add_output_file, add_solver_args, checks_from_args,
                       cluster_from_args)
 from .output import Progress, add_json_flag, frame_records, print_frame, print_json, print_wrapped
-from .pair import add_kind_args, add_rack_args, kind_from_args, rack_from_args
+from .options import add_rack_args, rack_from_args
+from .pair import add_kind_args, kind_from_args
 
 SHOW = ["rank", "z1", "z2", "ratio", "ratio_error", "module_mm", "a_mm", "a_w_mm", "x1", "x2", "eps_alpha",
         "objective", "feasible", "reason"]

@@ -201,16 +201,6 @@ class GearPair:
                     else "(unreachable: housing a_w <= a cos alpha)"))
         return _checks.CenterDistance(limit=a_housing, tol_mm=housing_tol_mm, label=label)
 
-    def report(self, path, overwrite: bool = False, **limits):
-        """Write the pair's one-page calculation report (self-contained, printable HTML: inputs,
-        geometry gear 1 | gear 2, checks verdict first, blocking contour, meshing drawing) to
-        ``path``; see :func:`geardesign.scene.html.pair_report`. Imported here, on call, from the
-        scene layer above: the report draws on shifts and profiles, which this layer must not
-        import at load time."""
-        from ..scene.html import pair_report
-
-        return pair_report(self, path, overwrite=overwrite, **limits)
-
     def ok(self, **limits) -> bool:
         """True when every check of :meth:`checks` holds."""
         return bool(self.checks(**limits)["ok"].all())

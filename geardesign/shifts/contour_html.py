@@ -15,7 +15,6 @@ import numpy as np
 from ..files import check_output_path, write_file_atomic
 from ..validate import require_count
 from .looks import check_legend, check_style
-from .region import Region
 
 __all__ = ["contour_figure", "write_contour_html", "HOVER_N_MAX"]
 
@@ -74,7 +73,7 @@ def _quantities(geo: dict) -> list:
             ("a_w, mm", geo["a_w"])]
 
 
-def _hover_trace(region: Region, g, M, geo):
+def _hover_trace(region, g, M, geo):
     """A transparent heatmap over the window; its hover box lists every margin and quantity."""
     import plotly.graph_objects as go
 
@@ -97,7 +96,7 @@ def _hover_trace(region: Region, g, M, geo):
                       showlegend=False, hoverongaps=True)
 
 
-def _check_traces(region: Region, g, M, tick_len: float) -> list:
+def _check_traces(region, g, M, tick_len: float) -> list:
     import plotly.graph_objects as go
 
     out = []
@@ -146,7 +145,7 @@ def _isoline_traces(g, geo, checks) -> list:
                        **group)]
 
 
-def _marks(region: Region, optimum, proposed, x_sum) -> list:
+def _marks(region, optimum, proposed, x_sum) -> list:
     import plotly.graph_objects as go
 
     out = []
@@ -172,13 +171,13 @@ def _marks(region: Region, optimum, proposed, x_sum) -> list:
     return out
 
 
-def contour_figure(region: Region, optimum=None, proposed=None, x_sum=None, n: int = 121):
+def contour_figure(region, optimum=None, proposed=None, x_sum=None, n: int = 121):
     """The plotly Figure of a region's blocking contour (see the module docstring). ``n`` nodes
     per axis for the hover grid and the curves (11..HOVER_N_MAX); the marks as in
     :meth:`Region.plot <geardesign.shifts.region.Region.plot>`."""
     import plotly.graph_objects as go
 
-    if not isinstance(region, Region):
+    if not (hasattr(region, "problem") and hasattr(region, "bounds")):   # a Region (this module is below it)
         from ..errors import GearDesignError
         raise GearDesignError(f"region must be a geardesign Region, got {type(region).__name__}")
     n = require_count("n", n, 11, HOVER_N_MAX)
@@ -216,7 +215,7 @@ def contour_figure(region: Region, optimum=None, proposed=None, x_sum=None, n: i
     return fig
 
 
-def write_contour_html(region: Region, path, optimum=None, proposed=None, x_sum=None, n: int = 121,
+def write_contour_html(region, path, optimum=None, proposed=None, x_sum=None, n: int = 121,
                        overwrite: bool = False):
     """Write the interactive contour to ``path`` (.html), plotly.js inside (works offline); the
     file appears whole or not at all, an existing one is replaced only with ``overwrite``."""

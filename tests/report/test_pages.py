@@ -30,7 +30,7 @@ def _khk():
 @pytest.fixture(scope="module")
 def khk_report(tmp_path_factory):
     path = tmp_path_factory.mktemp("report") / "khk.html"
-    gd.GearPair(3, 12, 24, 0.6, 0.36).report(path)
+    gd.pair_report(gd.GearPair(3, 12, 24, 0.6, 0.36), path)
     return path
 
 
@@ -74,7 +74,7 @@ def test_report_prints_on_two_pages(khk_report, tmp_path):
 
 
 def test_failing_pair_report_says_so_first(tmp_path):
-    path = gd.GearPair(8, 17, 26, 0.898, 0.517).report(tmp_path / "engine.html", housing_a_w=180)
+    path = gd.pair_report(gd.GearPair(8, 17, 26, 0.898, 0.517), tmp_path / "engine.html", housing_a_w=180)
     page = path.read_text(encoding="utf-8")
     verdict = re.search(r'<div class="verdict fail">(.*?)</div>', page).group(1)
     # seed 000's engine pair: ε_α 1.153 < 1.2, and its a_w 181.60 mm is not the housing's 180 mm
@@ -82,7 +82,7 @@ def test_failing_pair_report_says_so_first(tmp_path):
     first_rows = re.findall(r"<tr class=\"failrow\"><td class=\"mark\">FAILS</td><td>(\w+)</td>", page)
     assert set(first_rows) == {"contact_ratio", "center_distance"}
     with pytest.raises(GearDesignError, match="exists: give --overwrite"):
-        gd.GearPair(8, 17, 26, 0.898, 0.517).report(tmp_path / "engine.html")
+        gd.pair_report(gd.GearPair(8, 17, 26, 0.898, 0.517), tmp_path / "engine.html")
     with pytest.raises(GearDesignError, match=r"must end in \.html"):
         gd.pair_report(gd.GearPair(8, 17, 26), tmp_path / "engine.pdf")
 
@@ -240,7 +240,7 @@ def test_report_of_a_pair_with_no_feasible_shifts(tmp_path):
     # 6/6 unshifted: both gears undercut. x_min = h − z sin²α/2 with h the height of the rack's straight
     # flank above the reference line, h_a* + c* − ρ_f*(1 − sin α) (GOST 16532-70; the standard rack
     # 1 / 0.25 / 0.38 of GOST 13755): 0.64903
-    page = gd.GearPair(1, 6, 6).report(tmp_path / "six.html").read_text(encoding="utf-8")
+    page = gd.pair_report(gd.GearPair(1, 6, 6), tmp_path / "six.html").read_text(encoding="utf-8")
     alpha = math.radians(20)
     x_min = (1 + 0.25 - 0.38 * (1 - math.sin(alpha))) - 6 * math.sin(alpha) ** 2 / 2
     assert f"undercut1 (value 0, limit {x_min:.5g})" in page
