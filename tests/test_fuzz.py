@@ -90,3 +90,17 @@ def test_fuzz_findings_of_the_10000_case_run():
         gd.BasicRack(alpha_deg=34.93, ha=1e-300, c=0.109, rho_f=0.096)
     with pytest.raises(gd.GearDesignError, match=r"n1_rpm must be in \[0.1, 20000\] rpm"):
         gd.chain.design(torque_nm=907.91, n1_rpm=5e-324, ratio=7.077, catalog="ansi_b29", method="power_rating", z1=7)
+
+
+def test_the_fuzz_runner_runs_from_tools():
+    """The runner lives in tools/ (issue 25 item 6: it is not a benchmark) and writes only inside its
+    private temporary folder, removed at the end."""
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    with tempfile.TemporaryDirectory() as tmp:
+        env = {**os.environ, "TMPDIR": tmp}
+        proc = subprocess.run([sys.executable, os.path.join(root, "tools", "fuzz.py"), "--cases", "6", "--targets",
+                               "pair,key,profile_files"], capture_output=True, text=True, cwd=tmp, env=env,
+                              timeout=300)
+        assert proc.returncode == 0, proc.stderr[-2000:]
+        assert "6 cases" in proc.stdout and "outcome counts: ok" in proc.stdout
+        assert os.listdir(tmp) == []
