@@ -43,18 +43,23 @@ class StrengthSpec:
     face_width_mm: float | None = None
     options: tuple = ()
 
-    def safety(self, geo: dict) -> dict:
-        """S_H (the smaller of both gears'), S_F1, S_F2 at the designs of ``geo`` and their gradients
-        (``d<name>``: (∂/∂x1, ∂/∂x2)), kept in ``geo`` so that the three checks share one evaluation."""
+    def safety(self, geo: dict, gradients: bool = False) -> dict:
+        """S_H (the smaller of both gears'), S_F1, S_F2 at the designs of ``geo`` and, with ``gradients``,
+        their gradients (``d<name>``: (∂/∂x1, ∂/∂x2)), kept in ``geo`` so that the three checks share one
+        evaluation. One design (the local solvers' float path) gets its gradients in the same call: five
+        designs cost about what one does there; a grid gets them only when asked (five times the work)."""
         memo = geo.setdefault("_strength", {})
-        if self not in memo:
-            memo[self] = self._evaluate(geo)
-        return memo[self]
+        stencil = gradients or isinstance(geo["_x1"], float)
+        if (self, True) in memo:
+            return memo[(self, True)]
+        if (self, stencil) not in memo:
+            memo[(self, stencil)] = self._evaluate(geo, stencil)
+        return memo[(self, stencil)]
 
-    def _evaluate(self, geo: dict) -> dict:
+    def _evaluate(self, geo: dict, stencil: bool) -> dict:
         # here: the chain loads the materials catalog (pandas), which a pair without a load never needs
         from ..geometry import mesh_geometry
-        from ..strength.chain import pair_strength
+        from ..strength.chain import CHAIN_GEOMETRY_FIELDS, pair_strength
         from ..strength.root import X_RANGE
 
         mesh = geo["_mesh"]
@@ -63,8 +68,9 @@ class StrengthSpec:
             raise GearDesignError("the strength checks need a face width: give face_width_mm with the load")
         x1, x2 = np.asarray(geo["_x1"], dtype=float), np.asarray(geo["_x2"], dtype=float)
         h = _FD_STEP
-        X1 = np.stack([x1, x1 + h, x1 - h, x1, x1]).reshape(5, -1)
-        X2 = np.stack([x2, x2, x2, x2 + h, x2 - h]).reshape(5, -1)
+        n_pts = 5 if stencil else 1
+        X1 = np.stack([x1, x1 + h, x1 - h, x1, x1][:n_pts]).reshape(n_pts, -1)
+        X2 = np.stack([x2, x2, x2, x2 + h, x2 - h][:n_pts]).reshape(n_pts, -1)
         M, Z1, Z2 = (np.broadcast_to(np.asarray(geo[k], dtype=float), x1.shape).reshape(1, -1)
                      for k in ("_m", "_z1", "_z2"))
         with np.errstate(all="ignore"):
@@ -77,7 +83,7 @@ class StrengthSpec:
             valid = np.broadcast_to(valid, X1.shape)
             S = {k: np.full(X1.shape, np.nan) for k in ("S_H1", "S_H2", "S_F1", "S_F2")}
             if valid.any():
-                sub = {k: (np.broadcast_to(v, X1.shape)[valid] if np.ndim(v) == 2 else v) for k, v in g5.items()}
+                sub = {k: np.broadcast_to(g5[k], X1.shape)[valid] for k in CHAIN_GEOMETRY_FIELDS + ("_z1", "_z2")}
                 out = pair_strength(np.broadcast_to(M, X1.shape)[valid], np.broadcast_to(Z1, X1.shape)[valid],
                                     np.broadcast_to(Z2, X1.shape)[valid], X1[valid], X2[valid], load=self.load,
                                     material1=self.material1, material2=self.material2, face_width_mm=width,
@@ -87,14 +93,15 @@ class StrengthSpec:
                     S[k][valid] = out[k]
         shape = x1.shape
         res = {"S_H": np.minimum(S["S_H1"], S["S_H2"]), "S_F1": S["S_F1"], "S_F2": S["S_F2"]}
-        res = {k: v.reshape((5,) + shape) for k, v in res.items()}
+        res = {name: v.reshape((n_pts,) + shape) for name, v in res.items()}
         scalar = isinstance(geo["_x1"], float)
         result = {}
         for name, v in res.items():
             v = np.asarray(v, dtype=float)
-            grad = (_difference(v[0], v[1], v[2], h), _difference(v[0], v[3], v[4], h))
             result[name] = float(v[0]) if scalar else v[0]
-            result["d" + name] = tuple(float(g) for g in grad) if scalar else grad
+            if stencil:
+                grad = (_difference(v[0], v[1], v[2], h), _difference(v[0], v[3], v[4], h))
+                result["d" + name] = tuple(float(g) for g in grad) if scalar else grad
         return result
 
 
@@ -173,7 +180,7 @@ class ContactStrength(Check):
         return self.value(geo) / self.limit - 1.0
 
     def gradient(self, geo):
-        d1, d2 = self.spec.safety(geo)["dS_H"]
+        d1, d2 = self.spec.safety(geo, gradients=True)["dS_H"]
         return d1 / self.limit, d2 / self.limit
 
 
@@ -204,7 +211,7 @@ class RootStrength(Check):
         return self.value(geo) / self.limit - 1.0
 
     def gradient(self, geo):
-        d1, d2 = self.spec.safety(geo)[f"dS_F{self.gear}"]
+        d1, d2 = self.spec.safety(geo, gradients=True)[f"dS_F{self.gear}"]
         return d1 / self.limit, d2 / self.limit
 
 

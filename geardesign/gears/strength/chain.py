@@ -23,7 +23,7 @@ from .materials import Material, material as material_by_name
 from .result import StrengthResult, from_chain
 from .root_chain import root_side
 
-__all__ = ["pair_strength", "strength", "chain_geometry", "GIVEN_FACTORS", "STRENGTH_FIELDS"]
+__all__ = ["pair_strength", "strength", "chain_geometry", "GIVEN_FACTORS", "STRENGTH_FIELDS", "CHAIN_GEOMETRY_FIELDS"]
 
 # Factors a caller may give instead of their computation (measured values, as the standard allows).
 GIVEN_FACTORS = frozenset({
@@ -36,7 +36,9 @@ GIVEN_FACTORS = frozenset({
 # The stresses and safety factors every call returns (MPa; S dimensionless).
 STRENGTH_FIELDS = ("S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigma_H2", "sigma_F1", "sigma_F2",
                    "sigma_HP1", "sigma_HP2", "sigma_FP1", "sigma_FP2")
-_GEOMETRY = ["a_w", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", "df1", "df2", "eps_alpha", "p_b"]
+# the geometry fields the chain reads (of pair_geometry, or of the caller's mesh_geometry dict)
+CHAIN_GEOMETRY_FIELDS = ("a_w", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", "df1", "df2", "eps_alpha", "p_b")
+_GEOMETRY = list(CHAIN_GEOMETRY_FIELDS)
 
 
 class _Given:
