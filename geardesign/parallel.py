@@ -46,6 +46,13 @@ CONNECT_TIMEOUT_S = 10        # seconds to reach a scheduler before the address 
 # by one) does not leave the other workers idle at the end, and progress moves in steps.
 CHUNKS_PER_WORKER = 4
 
+# Dask starts its workers with MALLOC_TRIM_THRESHOLD_=65536, which switches off glibc's adaptive
+# mmap threshold: every temporary array of the atlas's first pass (~1.6 MB) is then mapped and
+# unmapped afresh, and a worker spent twice the serial CPU time per pair here. A cluster made here
+# starts its workers with this process's environment (the BLAS threads are set per chunk anyway)
+# and without the stack sampler of Dask's dashboard; a user's cluster keeps its own settings.
+_LOCAL_CONFIG = {"distributed.nanny.pre-spawn-environ": {}, "distributed.worker.profile.enabled": False}
+
 _INSTALL = 'install Dask with: pip install "geardesign[dask]"'
 
 
@@ -152,10 +159,11 @@ def _connected(address):
 @contextlib.contextmanager
 def _local_cluster(n: int):
     distributed = _distributed()
+    import dask
     scratch = tempfile.mkdtemp(prefix="geardesign-dask-")
     local = client = None
     try:
-        with _ctrl_c_ignored():
+        with _ctrl_c_ignored(), dask.config.set(_LOCAL_CONFIG):
             local = distributed.LocalCluster(n_workers=n, processes=True, threads_per_worker=1,
                                              dashboard_address=":0", local_directory=scratch,
                                              silence_logs=logging.CRITICAL)
