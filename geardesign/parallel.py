@@ -46,11 +46,11 @@ CONNECT_TIMEOUT_S = 10        # seconds to reach a scheduler before the address 
 # by one) does not leave the other workers idle at the end, and progress moves in steps.
 CHUNKS_PER_WORKER = 4
 
-# Dask starts its workers with MALLOC_TRIM_THRESHOLD_=65536, which switches off glibc's adaptive
-# mmap threshold: every temporary array of the atlas's first pass (~1.6 MB) is then mapped and
-# unmapped afresh, and a worker spent twice the serial CPU time per pair here. A cluster made here
-# starts its workers with this process's environment (the BLAS threads are set per chunk anyway)
-# and without the stack sampler of Dask's dashboard; a user's cluster keeps its own settings.
+# A cluster made here starts its workers with this process's environment, not Dask's worker
+# environment (which pins BLAS to one thread and sets MALLOC_TRIM_THRESHOLD_), so that the solves run
+# there as they do here (the BLAS threads are set per chunk as well), and without the stack sampler
+# of Dask's dashboard, which interrupts these Python-heavy solves every 10 ms. A user's cluster
+# keeps its own settings.
 _LOCAL_CONFIG = {"distributed.nanny.pre-spawn-environ": {}, "distributed.worker.profile.enabled": False}
 
 _INSTALL = 'install Dask with: pip install "geardesign[dask]"'
@@ -203,7 +203,11 @@ def map_chunks(fn, chunks, *, client=None, workers=None, progress=None) -> list:
     ``workers`` processes (see the module docstring). ``chunks`` are sized sequences (a list, an
     array, a tuple of arrays counts as its first member's length for progress); ``fn`` must be
     picklable (a module-level function or a functools.partial of one) to go to a cluster.
-    ``progress(done, total)`` counts items, called as each chunk finishes."""
+    ``progress(done, total)`` counts items, called as each chunk finishes.
+
+    >>> map_chunks(sum, [[1, 2], [3], [4, 5, 6]])           # serially: no Dask needed
+    [3, 3, 15]
+    """
     chunks = list(chunks)
     sizes = [_size(c) for c in chunks]
     total = sum(sizes)
