@@ -118,7 +118,8 @@ def main():
     eff = cbest["serial"] / cbest["2 workers"] / 2
     compute = BIG_PAIRS * per_pair / BIG_WORKERS
     print(f"per pair (serial CPU, best): {1e3 * per_pair:.3f} ms; one task's scheduling and transfer: "
-          f"{1e3 * overhead:.2f} ms; local cluster start and close: 1 worker {start_1:.1f} s, 2 workers {start_2:.1f} s")
+          f"{1e3 * overhead:.2f} ms; local cluster start and close: 1 worker {start_1:.1f} s, "
+          f"2 workers {start_2:.1f} s")
     print(f"\nestimate, {BIG_PAIRS:.0e} pairs on {BIG_WORKERS} workers: chunks of {chunk} pairs, {tasks} tasks; "
           f"compute {compute:.0f} s ({compute / 60:.1f} min) at this per-pair cost and perfect scaling; "
           f"scheduling {tasks * overhead:.1f} s in all; at the 2-worker efficiency measured here ({eff:.2f}) "

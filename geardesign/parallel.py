@@ -16,7 +16,9 @@ with one thread than with several, and Dask starts its workers with one; each ch
 with the BLAS thread counts of the calling process (threadpoolctl, part of the extra). The workers
 must run the same versions of numpy, scipy and geardesign, as Dask itself requires.
 ``progress(done, total)`` is called as chunks finish. Ctrl-C (KeyboardInterrupt), or an error in
-one chunk, cancels every future; a cluster started here is closed and its scratch folder removed.
+one chunk, cancels every future; a cluster started here is closed and its scratch folder removed
+(its workers start with Ctrl-C ignored, so that this process alone handles it: see
+:func:`_ctrl_c_ignored`).
 
 Dask is an optional extra (``pip install "geardesign[dask]"``); it is imported only when a batch
 goes to a cluster, never by ``import geardesign``.
@@ -35,8 +37,8 @@ import threading
 from .errors import GearDesignError
 from .validate import require_count
 
-__all__ = ["map_chunks", "cluster", "chunk_slices", "slots", "scaled_limit", "require_workers", "requested", "LOCAL_WORKERS_MAX",
-           "CONNECT_TIMEOUT_S", "CHUNKS_PER_WORKER"]
+__all__ = ["map_chunks", "cluster", "chunk_slices", "slots", "scaled_limit", "require_workers", "requested",
+           "LOCAL_WORKERS_MAX", "CONNECT_TIMEOUT_S", "CHUNKS_PER_WORKER"]
 
 # A local cluster gets at most one process per core (two at least, so a laptop can try it): more
 # processes only share the same cores and memory. A bigger cluster is the scheduler's (client=).
