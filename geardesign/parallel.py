@@ -94,7 +94,7 @@ def slots(client=None, workers=None) -> int:
     if client is not None and workers is not None:
         raise GearDesignError(f"give client= or workers=, not both (got workers={workers!r} and a client)")
     if client is not None:
-        n = len(_require_client(client).scheduler_info()["workers"])
+        n = len(_require_client(client).nthreads())      # {worker address: threads}, every worker
         if n < 1:
             raise GearDesignError("client: its cluster has no workers (nothing would run): start workers first")
         return n
