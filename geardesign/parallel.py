@@ -13,7 +13,8 @@ chunk is computed by the same code as a serial run, so the table is the serial o
 One more thing must match for that: the number of BLAS threads. OpenBLAS rounds a few of the small
 vector operations scipy's SLSQP makes (the least infeasible point of an infeasible pair) differently
 with one thread than with several, and Dask starts its workers with one; each chunk therefore runs
-with the BLAS thread counts of the calling process (threadpoolctl, part of the extra). The workers
+with the BLAS thread counts of the calling process (threadpoolctl, part of the extra), which stay
+set on the worker after it. The workers
 must run the same versions of numpy, scipy and geardesign, as Dask itself requires.
 ``progress(done, total)`` is called as chunks finish. Ctrl-C (KeyboardInterrupt), or an error in
 one chunk, cancels every future; a cluster started here is closed and its scratch folder removed
@@ -226,7 +227,9 @@ def map_chunks(fn, chunks, *, client=None, workers=None, progress=None) -> list:
 
 
 class _SameBlas:
-    """``fn`` run with the BLAS thread counts ``limits`` ({library prefix: threads}) of the caller."""
+    """``fn`` run with the BLAS thread counts ``limits`` ({library prefix: threads}) of the caller.
+    The counts are set on the worker and left so, not restored after the chunk: chunks that run side
+    by side in the threads of one worker must not undo each other's setting half-way."""
 
     def __init__(self, fn, limits: dict):
         self.fn, self.limits = fn, limits
@@ -234,8 +237,8 @@ class _SameBlas:
     def __call__(self, chunk):
         from threadpoolctl import threadpool_limits
 
-        with threadpool_limits(limits=self.limits):
-            return self.fn(chunk)
+        threadpool_limits(limits=self.limits)
+        return self.fn(chunk)
 
 
 def _blas_threads() -> dict:
