@@ -268,8 +268,13 @@ def _gather_in_order(client, fn, chunks, sizes, total, progress) -> list:
             done += sizes[i]
             if progress is not None:
                 progress(done, total)
-    except BaseException:
-        client.cancel(futures, force=True)
+    except BaseException as exc:
+        with contextlib.suppress(Exception):     # the cluster may be gone already
+            client.cancel(futures, force=True)
+        if isinstance(exc, (distributed.KilledWorker, distributed.comm.CommClosedError)):
+            # the cluster failed, not the input: still one line, not a traceback
+            raise GearDesignError(f"the Dask cluster lost the batch: {type(exc).__name__}: "
+                                  f"{' '.join(str(exc).split())[:200]}") from None
         raise
     finally:
         del futures
