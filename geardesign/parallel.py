@@ -174,10 +174,11 @@ def _local_cluster(n: int):
         yield client
     finally:
         with _ctrl_c_ignored():
-            if client is not None:
-                client.close()
-            if local is not None:
-                local.close()
+            # each step on its own: a client that fails to close must not keep the workers alive
+            for part in (client, local):
+                if part is not None:
+                    with contextlib.suppress(Exception):
+                        part.close()
             shutil.rmtree(scratch, ignore_errors=True)
 
 
