@@ -13,10 +13,13 @@ chunk is computed by the same code as a serial run, so the table is the serial o
 One more thing must match for that: the number of BLAS threads. OpenBLAS rounds a few of the small
 vector operations scipy's SLSQP makes (the least infeasible point of an infeasible pair) differently
 with one thread than with several, and Dask starts its workers with one; each chunk therefore runs
-with the BLAS thread counts of the calling process (threadpoolctl, part of the extra). The workers
+with the BLAS thread counts of the calling process (threadpoolctl, part of the extra), which stay
+set on the worker after it. The workers
 must run the same versions of numpy, scipy and geardesign, as Dask itself requires.
 ``progress(done, total)`` is called as chunks finish. Ctrl-C (KeyboardInterrupt), or an error in
-one chunk, cancels every future; a cluster started here is closed and its scratch folder removed.
+one chunk, cancels every future; a cluster started here is closed and its scratch folder removed
+(its workers start with Ctrl-C ignored, so that this process alone handles it: see
+:func:`_ctrl_c_ignored`).
 
 Dask is an optional extra (``pip install "geardesign[dask]"``); it is imported only when a batch
 goes to a cluster, never by ``import geardesign``.
@@ -35,8 +38,8 @@ import threading
 from .errors import GearDesignError
 from .validate import require_count
 
-__all__ = ["map_chunks", "cluster", "chunk_slices", "slots", "scaled_limit", "require_workers", "requested", "LOCAL_WORKERS_MAX",
-           "CONNECT_TIMEOUT_S", "CHUNKS_PER_WORKER"]
+__all__ = ["map_chunks", "cluster", "chunk_slices", "slots", "scaled_limit", "require_workers", "requested",
+           "LOCAL_WORKERS_MAX", "CONNECT_TIMEOUT_S", "CHUNKS_PER_WORKER"]
 
 # A local cluster gets at most one process per core (two at least, so a laptop can try it): more
 # processes only share the same cores and memory. A bigger cluster is the scheduler's (client=).
@@ -45,6 +48,13 @@ CONNECT_TIMEOUT_S = 10        # seconds to reach a scheduler before the address 
 # Chunks per worker: several, so that a slow chunk (pairs near the limits of existence solve one
 # by one) does not leave the other workers idle at the end, and progress moves in steps.
 CHUNKS_PER_WORKER = 4
+
+# A cluster made here starts its workers with this process's environment, not Dask's worker
+# environment (which pins BLAS to one thread and sets MALLOC_TRIM_THRESHOLD_), so that the solves run
+# there as they do here (the BLAS threads are set per chunk as well), and without the stack sampler
+# of Dask's dashboard, which interrupts these Python-heavy solves every 10 ms. A user's cluster
+# keeps its own settings.
+_LOCAL_CONFIG = {"distributed.nanny.pre-spawn-environ": {}, "distributed.worker.profile.enabled": False}
 
 _INSTALL = 'install Dask with: pip install "geardesign[dask]"'
 
@@ -85,7 +95,7 @@ def slots(client=None, workers=None) -> int:
     if client is not None and workers is not None:
         raise GearDesignError(f"give client= or workers=, not both (got workers={workers!r} and a client)")
     if client is not None:
-        n = len(_require_client(client).scheduler_info()["workers"])
+        n = len(_require_client(client).nthreads())      # {worker address: threads}, every worker
         if n < 1:
             raise GearDesignError("client: its cluster has no workers (nothing would run): start workers first")
         return n
@@ -152,10 +162,11 @@ def _connected(address):
 @contextlib.contextmanager
 def _local_cluster(n: int):
     distributed = _distributed()
+    import dask
     scratch = tempfile.mkdtemp(prefix="geardesign-dask-")
     local = client = None
     try:
-        with _ctrl_c_ignored():
+        with _ctrl_c_ignored(), dask.config.set(_LOCAL_CONFIG):
             local = distributed.LocalCluster(n_workers=n, processes=True, threads_per_worker=1,
                                              dashboard_address=":0", local_directory=scratch,
                                              silence_logs=logging.CRITICAL)
@@ -163,10 +174,11 @@ def _local_cluster(n: int):
         yield client
     finally:
         with _ctrl_c_ignored():
-            if client is not None:
-                client.close()
-            if local is not None:
-                local.close()
+            # each step on its own: a client that fails to close must not keep the workers alive
+            for part in (client, local):
+                if part is not None:
+                    with contextlib.suppress(Exception):
+                        part.close()
             shutil.rmtree(scratch, ignore_errors=True)
 
 
@@ -195,7 +207,11 @@ def map_chunks(fn, chunks, *, client=None, workers=None, progress=None) -> list:
     ``workers`` processes (see the module docstring). ``chunks`` are sized sequences (a list, an
     array, a tuple of arrays counts as its first member's length for progress); ``fn`` must be
     picklable (a module-level function or a functools.partial of one) to go to a cluster.
-    ``progress(done, total)`` counts items, called as each chunk finishes."""
+    ``progress(done, total)`` counts items, called as each chunk finishes.
+
+    >>> map_chunks(sum, [[1, 2], [3], [4, 5, 6]])           # serially: no Dask needed
+    [3, 3, 15]
+    """
     chunks = list(chunks)
     sizes = [_size(c) for c in chunks]
     total = sum(sizes)
@@ -212,7 +228,9 @@ def map_chunks(fn, chunks, *, client=None, workers=None, progress=None) -> list:
 
 
 class _SameBlas:
-    """``fn`` run with the BLAS thread counts ``limits`` ({library prefix: threads}) of the caller."""
+    """``fn`` run with the BLAS thread counts ``limits`` ({library prefix: threads}) of the caller.
+    The counts are set on the worker and left so, not restored after the chunk: chunks that run side
+    by side in the threads of one worker must not undo each other's setting half-way."""
 
     def __init__(self, fn, limits: dict):
         self.fn, self.limits = fn, limits
@@ -220,8 +238,8 @@ class _SameBlas:
     def __call__(self, chunk):
         from threadpoolctl import threadpool_limits
 
-        with threadpool_limits(limits=self.limits):
-            return self.fn(chunk)
+        threadpool_limits(limits=self.limits)
+        return self.fn(chunk)
 
 
 def _blas_threads() -> dict:
@@ -251,8 +269,13 @@ def _gather_in_order(client, fn, chunks, sizes, total, progress) -> list:
             done += sizes[i]
             if progress is not None:
                 progress(done, total)
-    except BaseException:
-        client.cancel(futures, force=True)
+    except BaseException as exc:
+        with contextlib.suppress(Exception):     # the cluster may be gone already
+            client.cancel(futures, force=True)
+        if isinstance(exc, (distributed.KilledWorker, distributed.comm.CommClosedError)):
+            # the cluster failed, not the input: still one line, not a traceback
+            raise GearDesignError(f"the Dask cluster lost the batch: {type(exc).__name__}: "
+                                  f"{' '.join(str(exc).split())[:200]}") from None
         raise
     finally:
         del futures

@@ -33,9 +33,8 @@ def fail_on_seven(chunk):
     return list(chunk)
 
 
-def sleep_long(chunk):
-    time.sleep(30)
-    return list(chunk)
+def die(chunk):
+    os._exit(3)         # a worker process that dies (out of memory, killed): its nanny restarts it
 
 
 def _scheduler_tasks(c) -> int:
@@ -56,7 +55,16 @@ def _scratch_dirs() -> set:
 
 
 def _children() -> set:
-    return {p.pid for p in psutil.Process().children(recursive=True) if p.status() != psutil.STATUS_ZOMBIE}
+    """Live child processes, but multiprocessing's resource tracker: one per Python process, started
+    by the first spawned child and leaving with this process."""
+    out = set()
+    for p in psutil.Process().children(recursive=True):
+        try:
+            if p.status() != psutil.STATUS_ZOMBIE and "resource_tracker" not in " ".join(p.cmdline()):
+                out.add(p.pid)
+        except psutil.NoSuchProcess:
+            pass
+    return out
 
 
 def test_chunk_slices_cover_the_batch_in_order_within_the_sizes():
@@ -119,6 +127,16 @@ def test_ctrl_c_closes_a_cluster_made_for_the_call_and_leaves_nothing(client):  
 def test_a_cluster_made_for_the_call_is_closed_after_it(client):  # noqa: F811
     before, scratch = _children(), _scratch_dirs()
     assert parallel.map_chunks(square_all, [[1], [2], [3]], workers=2) == [[1], [4], [9]]
+    assert _wait_until(lambda: _children() <= before), _children() - before
+    assert _scratch_dirs() <= scratch
+
+
+def test_a_worker_that_keeps_dying_is_one_error(monkeypatch):
+    import dask
+    before, scratch = _children(), _scratch_dirs()
+    with dask.config.set({"distributed.scheduler.allowed-failures": 1}):
+        with pytest.raises(GearDesignError, match="the Dask cluster lost the batch: KilledWorker"):
+            parallel.map_chunks(die, [[1]], workers=1)
     assert _wait_until(lambda: _children() <= before), _children() - before
     assert _scratch_dirs() <= scratch
 

@@ -96,6 +96,8 @@ def run(args) -> int:
         matplotlib.use("Agg")
     if args.ratio is not None:
         return _teeth(args)
+    if args.workers is not None or args.scheduler is not None:
+        raise GearDesignError("--workers and --scheduler go with --ratio (the tooth-count search)")
     missing = [f"--{n.replace('_', '-')}" for n in ("z_sun", "z_planet", "z_ring") if getattr(args, n) is None]
     if missing:
         raise GearDesignError(f"{', '.join(missing)} needed (or --ratio to search tooth counts)")

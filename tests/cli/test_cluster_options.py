@@ -35,6 +35,11 @@ def test_workers_and_scheduler_together_are_refused(capsys):
     _error_line(capsys, ["teeth", "--ratio", "2", "--workers", "2", "--scheduler", "tcp://127.0.0.1:9"], "not both")
 
 
+def test_planetary_takes_a_cluster_only_for_the_tooth_count_search(capsys):
+    _error_line(capsys, ["planetary", "--module", "2", "--planets", "3", "--z-sun", "21", "--z-planet", "43",
+                         "--z-ring", "108", "--workers", "2"], "go with --ratio")
+
+
 def test_an_unreachable_scheduler_is_one_error_line(capsys, monkeypatch):
     monkeypatch.setattr(parallel, "CONNECT_TIMEOUT_S", 1)
     _error_line(capsys, ["atlas", "--z1", "17", "--z2", "26", "--scheduler", "tcp://127.0.0.1:9"],

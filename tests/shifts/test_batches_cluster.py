@@ -72,3 +72,14 @@ def test_select_planetary_teeth_on_a_cluster_is_the_serial_search(client):  # no
     par = gd.select_planetary_teeth(**kw, client=client)
     assert par.n_solved == serial.n_solved > 3
     assert_same_bits(par.table, serial.table)
+
+
+def test_a_users_cluster_with_dasks_own_settings_gives_the_serial_atlas(tmp_path):
+    """A cluster started by Dask's defaults runs its workers' BLAS on one thread; each chunk is run
+    with the caller's BLAS threads, so the infeasible pairs' SLSQP points still agree bit for bit."""
+    from dask.distributed import Client, LocalCluster
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=":0",
+                      local_directory=str(tmp_path)) as cluster, Client(cluster) as user:
+        assert set(user.run(lambda: __import__("os").environ.get("OPENBLAS_NUM_THREADS")).values()) == {"1"}
+        kw = dict(z1_values=range(8, 12), z2_values=range(8, 20))
+        assert_same_bits(gd.shift_atlas(**kw, client=user), gd.shift_atlas(**kw))
