@@ -176,3 +176,13 @@ def test_missing_dask_is_one_error_naming_the_extra(monkeypatch):
         with pytest.raises(GearDesignError, match=r'pip install "geardesign\[dask\]"'):
             call()
     assert gd.shift_atlas([17], [26]).feasible.all()      # serial runs without it
+
+
+def test_drive_optimize_on_two_workers_is_the_serial_optimum():
+    """Drive.optimize(workers=2) presolves the tooth pairs on a local cluster: the same table, bit for bit."""
+    import geardesign as gd
+
+    drive = gd.Drive(power_kw=4, n_in_rpm=1450, stages=[gd.GearStage(3), gd.ChainStage()])
+    serial = drive.optimize(total_ratio=10, top=3)
+    spread = drive.optimize(total_ratio=10, top=3, workers=2)
+    assert serial.table.equals(spread.table)

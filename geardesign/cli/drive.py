@@ -7,7 +7,7 @@ check holds, 1 when the drive fails (the output names the stage and checks), 2 o
 from __future__ import annotations
 
 from ..errors import GearDesignError
-from .options import add_output_file
+from .options import add_cluster_args, add_output_file, cluster_from_args
 from .output import Progress, add_json_flag, print_frame, print_json, print_wrapped
 
 
@@ -23,6 +23,7 @@ def add_parser(subparsers):
     p.add_argument("--report", metavar="HTML", default=None,
                    help="write a one-page report (checks, power flow, stages, gear geometry, keys, diagram) to this HTML file")
     add_json_flag(p)
+    add_cluster_args(p)
     return p
 
 
@@ -39,7 +40,8 @@ def run(args) -> int:
         check_output_path(args.report, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--report")
     bar = Progress(1, "drive: gear pairs")
     try:
-        drive, motor, opt, an = compute_drive(scene.sections["drive"], bar.to)
+        with cluster_from_args(args) as client:
+            drive, motor, opt, an = compute_drive({**scene.sections["drive"], "_client": client}, bar.to)
     finally:
         if bar.done:
             bar.close()

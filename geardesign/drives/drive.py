@@ -198,7 +198,8 @@ class Drive:
                              mass_kg=mass, drive=self, key_results=tuple(key_results))
 
     # -- optimize
-    def optimize(self, total_ratio, ratio_tol=0.03, objective="min_size", top=10, progress=None) -> DriveOptimum:
+    def optimize(self, total_ratio, ratio_tol=0.03, objective="min_size", top=10, progress=None, *, client=None,
+                 workers=None) -> DriveOptimum:
         """The ratio split and every free variable chosen together for ``objective``.
 
         ``min_size``: smallest sum of the stages' side-view envelopes (a + (D1 + D2)/2)·max(D1, D2)
@@ -209,7 +210,9 @@ class Drive:
         every check of the drive. Ties go to the smaller ratio error, then the smaller size.
         The total ratio must hold within ``ratio_tol`` (relative). ``top`` alternatives are listed.
         ``progress(done, total)`` is called after each group of designs sharing their gear tooth pairs
-        (the walk may stop well before ``total``).
+        (the walk may stop well before ``total``). ``client=`` (a ``dask.distributed.Client``) or
+        ``workers=N`` solve every group's tooth pairs on a cluster first, in chunks (the walk then finds them
+        solved: the same optimum as here, bit for bit; docs/scale.md).
         """
         t0 = time.perf_counter()
         U = one_number("total_ratio", require_range("total_ratio", total_ratio, *TOTAL_RATIO_RANGE))
@@ -217,7 +220,7 @@ class Drive:
         if objective not in OBJECTIVES:
             raise GearDesignError(f"objective must be one of {', '.join(OBJECTIVES)}, got {objective!r}")
         top = int(require_range("top", top, 1, TOP_MAX))
-        return Search(self, U, tol, objective, top, t0).run(progress)
+        return Search(self, U, tol, objective, top, t0).run(progress, dict(client=client, workers=workers))
 
 
 def _checks_table(rows) -> pd.DataFrame:

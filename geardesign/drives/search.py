@@ -18,6 +18,7 @@ knows a kind by name.
 """
 from __future__ import annotations
 
+import functools
 import heapq
 import math
 import time
@@ -27,6 +28,7 @@ from functools import lru_cache
 import numpy as np
 import pandas as pd
 
+from .. import parallel
 from ..errors import GearDesignError
 from .drive_results import DriveOptimum
 from .limits import CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX, MARGIN_TOL
@@ -59,6 +61,11 @@ def min_margin(margins: dict):
     return (0.0 if abs(v) <= MARGIN_TOL else v), name
 
 
+def _solve_options(kinds, stages, objective, items) -> list:
+    """The solves of one chunk of (stage index, option, flow): what a worker runs."""
+    return [kinds[k].solve(stages[k], opt, objective, flow) for k, opt, flow in items]
+
+
 class Search:
     """One :meth:`Drive.optimize` call: the designs (one option per stage × rows) as index arrays,
     their flow and batch margins, and what the branch and bound has evaluated (``ex``)."""
@@ -71,12 +78,14 @@ class Search:
         self.solved_k = [k for k, kind in enumerate(self.kinds) if kind.solved]
         self.n_solves = 0
 
-    def run(self, progress=None) -> DriveOptimum:
+    def run(self, progress=None, where=None) -> DriveOptimum:
+        """The search; ``where``: client= / workers= of :func:`geardesign.parallel.map_chunks` for the
+        solved stages' solves (empty: here, one by one as the walk needs them)."""
         why = self.enumerate()               # 1-3: options per stage, ratio combinations, rows
         if why:
             return self.no_split(why)
         self.batch_checks()                  # 4: every batch margin, key and motor check at once
-        self.branch_and_bound(progress)      # 5: the solved stages, best bound first
+        self.branch_and_bound(progress, where or {})   # 5: the solved stages, best bound first
         return self.result()                 # 6: ranked table, the closest failing designs, the best
 
     # -- 1-3: the designs
@@ -253,7 +262,27 @@ class Search:
         glb = np.minimum.reduceat(self._lower_bounds()[order], starts) if order.size else np.zeros(0)
         return order, starts, np.r_[starts[1:], order.size], glb
 
-    def branch_and_bound(self, progress) -> None:
+    def _presolve(self, firsts, where: dict) -> None:
+        """Every group's solved options at once on the cluster ``where`` names, in bound order: the walk
+        then finds them solved (the same solves a serial walk makes, bit for bit, and the ones it skips)."""
+        items, keys = [], []
+        for c in firsts:
+            for k in self.solved_k:
+                j = int(self.idx[c, k])
+                key = (k, j, int(self.flow_group[k][c])) if k in self.flow_group else (k, j)
+                if key not in self._solved and key not in keys:
+                    keys.append(key)
+                    items.append((k, self.option_at(k, c), self.flow_at(k, c) if k in self.flow_group else None))
+        if not items:
+            return
+        chunks = [items[s] for s in parallel.chunk_slices(len(items), parallel.slots(**where), 20, 200)]
+        solved = parallel.map_chunks(functools.partial(_solve_options, self.kinds, self.stages, self.objective),
+                                     chunks, **where)
+        for key, sol in zip(keys, (sol for chunk in solved for sol in chunk)):
+            self._solved[key] = sol
+        self.n_solves += len(keys)
+
+    def branch_and_bound(self, progress, where=None) -> None:
         """Groups of designs sharing their solved options, solved best bound first while a bound can
         still enter the ``top`` list; what each evaluated design costs is kept in ``self.ex``."""
         n_cand, top = self.n_cand, self.top
@@ -265,6 +294,8 @@ class Search:
                             done=np.zeros(n_cand, dtype=bool), lim=self.batch_arg.astype(np.int64),
                             why=np.full(n_cand, -1, dtype=np.int64), labels=labels, reasons=[])
         order, starts, ends, glb = self._groups()
+        if where and parallel.requested(**where):
+            self._presolve(order[starts[np.argsort(glb, kind="stable")]], where)
         heap: list = []          # the `top` best costs so far, as a max-heap of −cost
         for g in np.argsort(glb, kind="stable"):
             if len(heap) >= top and glb[g] > -heap[0] + 1e-12 * abs(heap[0]):

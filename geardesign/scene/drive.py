@@ -101,7 +101,7 @@ def compute_drive(section: dict, progress=None):
     drive, motor = build_drive(section)
     if "total_ratio" in section:
         opt = drive.optimize(section["total_ratio"], section["ratio_tol"], section["objective"], section["top"],
-                             progress=progress)
+                             progress=progress, client=section.get("_client"))
         return drive, motor, opt, opt.best
     return drive, motor, None, drive.analyse(section["objective"])
 
