@@ -18,6 +18,16 @@ modules of the first (preferred) series of ISO 54 / GOST 9563 before the second;
 better objective (larger for ``max_*``, smaller for ``min_*`` and ``balanced_sliding``);
 then the smaller tooth sum (a smaller, lighter pair — or, for a fixed a_w, the larger,
 stronger module); finally the smaller module.
+
+
+Modules and centre distances. Without ``a_w`` the module does not change the shifts or any geometric
+check, only the size: ``m="series"`` then lists every (pair, module) with its a and a_w in mm, so the
+module can be picked by size or strength from one table (each pair solved once; with a face width, a ring
+pair or a load each (pair, module) is solved on its own). With ``a_w`` given, ``m="series"`` keeps the
+modules for which some tooth sum fits that centre distance with an x-sum inside ``x_sum_window``;
+``a_w="series"`` takes for each pair and module the smallest standard centre distance of GOST 2185-66
+(series 1 and 2) >= a = m(z1 + z2)/2, the nearest standard value that needs a non-negative x-sum. The
+x-sum follows from a_w; the objective picks the split.
 """
 from __future__ import annotations
 
@@ -209,6 +219,19 @@ def _standard_center_distance(a):
     return np.where(i < values.size, values[np.minimum(i, values.size - 1)], np.nan)
 
 
+def _validated(method, rack, progress, x_sum_window, tip_shortening, beta_deg, internal, face_width, checks):
+    """The search's inputs checked once: (rack, x-sum window, the kind of pair, the checks' names)."""
+    if method not in METHODS:
+        raise GearDesignError(f"method must be one of {list(METHODS)}, got {method!r}")
+    rack = require_rack(rack)
+    require_callable("progress", progress)
+    # the kind is validated once, on a proto mesh; every candidate shares it
+    proto = Mesh(20, 60, rack, tip_shortening, beta_deg, internal, face_width)
+    kind = dict(beta_deg=proto.beta_deg, internal=proto.internal, face_width=proto.face_width_mm)
+    check_names = [c.name for c in resolve_checks(checks, internal=kind["internal"])]
+    return rack, _x_sum_window(x_sum_window), kind, check_names
+
+
 def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_sum_max=None,
                  objective=None, checks=None, rack=None, method="exact", *, m_range=None,
                  x_sum_window=X_SUM_WINDOW, tip_shortening=True, progress=None, beta_deg: float = 0.0,
@@ -220,18 +243,9 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     ----------
     ratio : the wanted ratio u = z2/z1 >= 1 (z1 the pinion).
     ratio_tol : the relative ratio error allowed, |z2/z1 − u|/u <= ratio_tol (0.02 = 2 %).
-    m : module in mm; ``"series"`` searches the standard modules of ISO 54 / GOST 9563
-        within ``m_range`` (default 1..50 mm); ``None`` means "no module given": with ``a_w``
-        it searches the series, without ``a_w`` lengths are per unit module (m = 1).
-        Without ``a_w`` the module does not change the shifts or any check, only the size:
-        ``m="series"`` then lists every (pair, module) with its a and a_w in mm, so the
-        module can be picked by size or strength from one table (each pair solved once).
-        With ``a_w`` given, ``m="series"`` keeps the modules for which some tooth sum fits
-        that centre distance with an x-sum inside ``x_sum_window``.
-    a_w : operating centre distance in mm, or ``"series"``: for each pair and module the
-        smallest standard centre distance of GOST 2185-66 (series 1 and 2) >= a = m(z1 + z2)/2,
-        i.e. the nearest standard value that needs a non-negative x-sum. The x-sum follows
-        from a_w; the objective picks the split.
+    m : module in mm, ``"series"`` (ISO 54 / GOST 9563 within ``m_range``, default 1..50 mm) or
+        ``None`` (the series with ``a_w``, else m = 1); see "Modules and centre distances" above.
+    a_w : operating centre distance in mm, or ``"series"`` (GOST 2185-66, the nearest >= a).
     z1_range : (min, max) teeth of the pinion, inclusive.  z_sum_max : largest z1 + z2.
     objective : a name in :data:`geardesign.shifts.objectives.OBJECTIVES` or an Objective; default ``"max_x_sum"`` with the
         centre distance free, ``"balanced_sliding"`` with ``a_w`` given (the x-sum is then
@@ -240,16 +254,13 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
         :func:`geardesign.shifts.optimize.optimize_shifts` (None: no undercut, no interference,
         s_a >= 0.25 m, ε_α >= 1.2).  rack : :class:`BasicRack` (standard by default).
     method : "grid", "convex" or "exact" (see :mod:`geardesign.shifts.optimize`).
-    x_sum_window : (lo, hi) of x1 + x2 worth solving when a_w fixes it.
-    progress : optional callable(done, total) called after each solve.
+    x_sum_window : (lo, hi) of x1 + x2 worth solving when a_w fixes it.  progress : callable(done, total).
     beta_deg, internal, face_width : helical (``m`` the normal module), internal (z2 the ring,
         u = z2/z1, x_Σ = x2 − x1, a = m (z2 − z1)/2) and the face width in mm for ε_β, as for
         :class:`~geardesign.gears.mesh.Mesh`. With a face width each (pair, module) is solved
         on its own: ε_β = b sin β/(π m) depends on the module.
-    client, workers : run the shift solves on a ``dask.distributed.Client`` or on a local cluster
-        of ``workers`` processes made for the call, in chunks of at least TEETH_CHUNK_MIN solves;
-        the table is the serial one bit for bit and MAX_SOLVES is multiplied by the number of
-        workers (see :mod:`geardesign.parallel`).
+    client, workers : the solves on a ``dask.distributed.Client`` or a local cluster of ``workers``
+        processes (:mod:`geardesign.parallel`): the serial table bit for bit, MAX_SOLVES × workers.
 
     Returns
     -------
@@ -266,15 +277,8 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     """
     t0 = time.perf_counter()
     objective = default_objective(objective, x_sum_fixed=a_w is not None)
-    if method not in METHODS:
-        raise GearDesignError(f"method must be one of {list(METHODS)}, got {method!r}")
-    rack = require_rack(rack)
-    require_callable("progress", progress)
-    x_sum_window = _x_sum_window(x_sum_window)
-    # the kind is validated once, on a proto mesh; every candidate shares it
-    kind = Mesh(20, 60, rack, tip_shortening, beta_deg, internal, face_width)
-    kind = dict(beta_deg=kind.beta_deg, internal=kind.internal, face_width=kind.face_width_mm)
-    check_names = [c.name for c in resolve_checks(checks, internal=kind["internal"])]
+    rack, x_sum_window, kind, check_names = _validated(method, rack, progress, x_sum_window, tip_shortening,
+                                                       beta_deg, internal, face_width, checks)
     z1, z2 = ratio_pairs(ratio, ratio_tol, z1_range, z_sum_max)
     ratio = float(ratio)
     a_w = _housing(a_w)
