@@ -102,7 +102,6 @@ class Region(Result):
         region says so in the axes, with the checks that conflict. Returns the matplotlib Axes.
         """
         import matplotlib.pyplot as plt
-        from matplotlib import patheffects
 
         n = require_count("n", n, 11, PLOT_N_MAX)
         if ax is None:
@@ -114,6 +113,21 @@ class Region(Result):
         with np.errstate(all="ignore"):
             geo = self.problem.geo(X1, X2)
             M = self.problem.margins(geo)
+        handles = self._plot_checks(ax, X1, X2, M)
+        if isolines:
+            _isolines(ax, X1, X2, geo, isolines, self.problem.checks)
+        handles += self._plot_region(ax)
+        if x_sum is not None:
+            handles += self._plot_x_sum(ax, float(x_sum))
+        handles += self._plot_marks(ax, optimum, proposed)
+        self._frame(ax, handles)
+        return ax
+
+    def _plot_checks(self, ax, X1, X2, M) -> list:
+        """Every check's zero curve in its colour and style, ticked on its forbidden side; legend handles."""
+        import matplotlib.pyplot as plt
+        from matplotlib import patheffects
+
         handles = []
         for k, c in enumerate(self.problem.checks):
             # no geometry is no curve: masked, so a curve ends where the pair stops existing
@@ -127,19 +141,27 @@ class Region(Result):
             # on their left, the ticks go right)
             cs.set(path_effects=[patheffects.withTickedStroke(angle=-60, spacing=7, length=0.6)])
             handles.append(plt.Line2D([], [], color=colour, ls=style, lw=1.6, label=check_legend(c)))
-        if isolines:
-            _isolines(ax, X1, X2, geo, isolines, self.problem.checks)
-        if self.feasible:
-            for _, comp in self.boundary.groupby("component"):
-                ax.fill(comp["x1"], comp["x2"], color="tab:green", alpha=0.22, lw=0)
-            handles.append(plt.Rectangle((0, 0), 1, 1, color="tab:green", alpha=0.22, label="feasible"))
-        else:
+        return handles
+
+    def _plot_region(self, ax) -> list:
+        """The feasible region shaded, or the conflict said in the axes; legend handles."""
+        import matplotlib.pyplot as plt
+
+        if not self.feasible:
             why = (f"checks {', '.join(self.conflict)} conflict" if self.conflict
                    else "no point holds every check")
             ax.text(0.5, 0.5, f"no feasible x1, x2:\n{why}", transform=ax.transAxes, ha="center", va="center",
                     fontsize=12, color="darkred", bbox=dict(boxstyle="round", fc="white", ec="darkred", alpha=0.9))
-        if x_sum is not None:
-            handles += self._plot_x_sum(ax, float(x_sum))
+            return []
+        for _, comp in self.boundary.groupby("component"):
+            ax.fill(comp["x1"], comp["x2"], color="tab:green", alpha=0.22, lw=0)
+        return [plt.Rectangle((0, 0), 1, 1, color="tab:green", alpha=0.22, label="feasible")]
+
+    def _plot_marks(self, ax, optimum, proposed) -> list:
+        """The optimum (a star) and a proposed pair (a cross, red where it fails); legend handles."""
+        import matplotlib.pyplot as plt
+
+        handles = []
         if optimum is not None:
             ox, oy = (optimum.x1, optimum.x2) if hasattr(optimum, "x1") else optimum
             ax.plot([ox], [oy], marker="*", color="k", ms=15, ls="", zorder=5)
@@ -152,6 +174,13 @@ class Region(Result):
                     mec="white", zorder=5)
             handles.append(plt.Line2D([], [], color="tab:red" if not ok else "tab:blue", marker="X", ls="", ms=9,
                                       label=f"proposed ({px:.3f}, {py:.3f}){'' if ok else ': fails'}"))
+        return handles
+
+    def _frame(self, ax, handles) -> None:
+        """The window, axis labels, title (the pair and its module), grid and the legend beside the axes."""
+        import matplotlib.pyplot as plt
+
+        lo, hi = self.bounds
         handles.append(plt.Line2D([], [], color="0.25", lw=0.7, ls=(0, (3, 2)), label="isolines ε_α, s_a/m"))
         ax.set_xlim(lo, hi)
         ax.set_ylim(lo, hi)
@@ -162,7 +191,6 @@ class Region(Result):
         ax.grid(True, lw=0.3, alpha=0.6)
         ax.set_aspect("equal")
         ax.legend(handles=handles, fontsize=8.5, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)
-        return ax
 
     def _repr_html_(self) -> str:
         """Jupyter's view: the text, and the blocking contour inline."""
