@@ -51,8 +51,6 @@ def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60, cutter=Non
     """Draw the meshing picture of a :class:`~geardesign.gears.pair.GearPair` (returns the axes); a
     ring (internal pair) as the shaper ``cutter`` generates it (default: the checks' cutter)."""
     import matplotlib.pyplot as plt
-    from matplotlib.patches import PathPatch
-    from matplotlib.path import Path
 
     pair = require_pair(pair)
     geo = pair._geo
@@ -67,46 +65,9 @@ def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60, cutter=Non
     centre2 = -a_w if internal else a_w
     shapes = {name: (x, y) for name, x, y in placed(pair, p1, p2, roll)}
     view = (TEETH_SHOWN + 0.5) * math.pi * float(geo["d1"]) / z1   # (π m_t) half-width of the window around the pitch point
-    ax.fill(*shapes["gear1"], color="#c9d9ee", ec="#1f4e89", lw=1.0, label=f"gear 1 (z = {z1}, x = {pair.x1:.4g})")
-    if internal:   # the annulus: rim and toothed bore as one path, wound oppositely (a hole)
-        rim, bore = np.column_stack(shapes["gear2_rim"]), np.column_stack(shapes["gear2"])
-        codes = lambda k: [Path.MOVETO] + [Path.LINETO] * (k - 2) + [Path.CLOSEPOLY]   # noqa: E731
-        ax.add_patch(PathPatch(Path(np.vstack([rim, bore]), codes(len(rim)) + codes(len(bore))),
-                               facecolor="#f3d9c4", edgecolor="#8a3b12", lw=1.0,
-                               label=f"gear 2, ring (z = {z2}, x = {pair.x2:.4g}; shaper z0 = {p2.z0})"))
-    else:
-        ax.fill(*shapes["gear2"], color="#f3d9c4", ec="#8a3b12", lw=1.0, label=f"gear 2 (z = {z2}, x = {pair.x2:.4g})")
-
-    # the root circle as generated: a ring's is the shaper's, 2(a_w0 + r_a0), not the rack-equivalent d_f2
-    radii = {1: {"db": geo["db1"] / 2, "d": geo["d1"] / 2, "dw": geo["dw1"] / 2, "da": geo["da1"] / 2,
-                 "df": geo["df1"] / 2},
-             2: {"db": geo["db2"] / 2, "d": geo["d2"] / 2, "dw": geo["dw2"] / 2, "da": geo["da2"] / 2,
-                 "df": p2.r_root_mm if internal else geo["df2"] / 2}}
-    circles = (("db", ":", 0.7, "base"), ("d", "-.", 0.7, "reference"), ("dw", "--", 0.7, "operating pitch"),
-               ("da", "-", 0.4, "tip and root"), ("df", "-", 0.4, None))
-    t = np.linspace(-math.pi, math.pi, 1441)
-    for key, ls, lw, what in circles:
-        for gear, centre, col in ((1, 0.0, "#1f4e89"), (2, centre2, "#8a3b12")):
-            r = float(radii[gear][key])
-            ax.plot(r * np.sin(t), centre + r * np.cos(t), ls, lw=lw, color=col,
-                    label=f"{what} circles" if gear == 1 and what else None)
-    c = contact_points(geo)
-    # the line of action: N1N2, and for an internal pair on beyond N1 to where the contact ends
-    ends = [c["s_N2"], 0.0] + ([c["s_A"], c["s_E"], c["s_P"]] if internal else [])
-    line = np.array([c["N1"] + min(ends) * c["u"], c["N1"] + max(ends) * c["u"]])
-    ax.plot(*line.T, "-", color="0.35", lw=0.9, label="line of action (through N1, N2)")
-    ax.plot(*np.array([c["A"], c["E"]]).T, "-", color="k", lw=2.4, label="active part (A to E)")
-    # double contact over p_b·(ε_α − 1) at each end of the active part, single contact in the middle
-    d = (c["s_E"] - c["s_A"]) - c["p_b"]
-    if d > 0:
-        for start in (c["A"], c["E"] - d * c["u"]):
-            seg = np.array([start, start + d * c["u"]])
-            ax.plot(*seg.T, "-", color="#d62728", lw=4.5, alpha=0.55,
-                    label="double contact" if start is c["A"] else None)
-    for name, offset in (("N1", (-16, -12)), ("N2", (-16, -12)), ("A", (5, 4)), ("E", (5, 4)), ("P", (-13, 5))):
-        pt = c[name]
-        ax.plot(*pt, "o", ms=4 if name != "P" else 6, color="k")
-        ax.annotate(name, pt, textcoords="offset points", xytext=offset, fontsize=9)
+    _draw_gears(ax, pair, shapes, p2, internal)
+    _draw_circles(ax, geo, p2, internal, centre2)
+    _draw_line_of_action(ax, contact_points(geo), internal)
     ax.set_xlim(-view, view)
     centre_y = float(geo["dw1"]) / 2
     ax.set_ylim(centre_y - 0.8 * view, centre_y + 0.8 * view)
@@ -122,6 +83,61 @@ def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60, cutter=Non
                  fontsize=10)
     ax.legend(loc="upper left", fontsize=7, framealpha=0.9)
     return ax
+
+
+def _draw_gears(ax, pair, shapes, p2, internal: bool) -> None:
+    """Both gears filled: the pinion, and the wheel or (internal) the ring as an annulus."""
+    from matplotlib.patches import PathPatch
+    from matplotlib.path import Path
+
+    ax.fill(*shapes["gear1"], color="#c9d9ee", ec="#1f4e89", lw=1.0, label=f"gear 1 (z = {pair.z1}, x = {pair.x1:.4g})")
+    if not internal:
+        ax.fill(*shapes["gear2"], color="#f3d9c4", ec="#8a3b12", lw=1.0,
+                label=f"gear 2 (z = {pair.z2}, x = {pair.x2:.4g})")
+        return
+    # the annulus: rim and toothed bore as one path, wound oppositely (a hole)
+    rim, bore = np.column_stack(shapes["gear2_rim"]), np.column_stack(shapes["gear2"])
+    codes = lambda k: [Path.MOVETO] + [Path.LINETO] * (k - 2) + [Path.CLOSEPOLY]   # noqa: E731
+    ax.add_patch(PathPatch(Path(np.vstack([rim, bore]), codes(len(rim)) + codes(len(bore))),
+                           facecolor="#f3d9c4", edgecolor="#8a3b12", lw=1.0,
+                           label=f"gear 2, ring (z = {pair.z2}, x = {pair.x2:.4g}; shaper z0 = {p2.z0})"))
+
+
+def _draw_circles(ax, geo, p2, internal: bool, centre2: float) -> None:
+    """Base, reference, operating pitch, tip and root circles of both gears."""
+    # the root circle as generated: a ring's is the shaper's, 2(a_w0 + r_a0), not the rack-equivalent d_f2
+    radii = {1: {"db": geo["db1"] / 2, "d": geo["d1"] / 2, "dw": geo["dw1"] / 2, "da": geo["da1"] / 2,
+                 "df": geo["df1"] / 2},
+             2: {"db": geo["db2"] / 2, "d": geo["d2"] / 2, "dw": geo["dw2"] / 2, "da": geo["da2"] / 2,
+                 "df": p2.r_root_mm if internal else geo["df2"] / 2}}
+    circles = (("db", ":", 0.7, "base"), ("d", "-.", 0.7, "reference"), ("dw", "--", 0.7, "operating pitch"),
+               ("da", "-", 0.4, "tip and root"), ("df", "-", 0.4, None))
+    t = np.linspace(-math.pi, math.pi, 1441)
+    for key, ls, lw, what in circles:
+        for gear, centre, col in ((1, 0.0, "#1f4e89"), (2, centre2, "#8a3b12")):
+            r = float(radii[gear][key])
+            ax.plot(r * np.sin(t), centre + r * np.cos(t), ls, lw=lw, color=col,
+                    label=f"{what} circles" if gear == 1 and what else None)
+
+
+def _draw_line_of_action(ax, c: dict, internal: bool) -> None:
+    """The line of action through N1, N2, its active part A–E, the double-contact stretches, the points."""
+    # for an internal pair the line goes on beyond N1 to where the contact ends
+    ends = [c["s_N2"], 0.0] + ([c["s_A"], c["s_E"], c["s_P"]] if internal else [])
+    line = np.array([c["N1"] + min(ends) * c["u"], c["N1"] + max(ends) * c["u"]])
+    ax.plot(*line.T, "-", color="0.35", lw=0.9, label="line of action (through N1, N2)")
+    ax.plot(*np.array([c["A"], c["E"]]).T, "-", color="k", lw=2.4, label="active part (A to E)")
+    # double contact over p_b·(ε_α − 1) at each end of the active part, single contact in the middle
+    d = (c["s_E"] - c["s_A"]) - c["p_b"]
+    if d > 0:
+        for start in (c["A"], c["E"] - d * c["u"]):
+            seg = np.array([start, start + d * c["u"]])
+            ax.plot(*seg.T, "-", color="#d62728", lw=4.5, alpha=0.55,
+                    label="double contact" if start is c["A"] else None)
+    for name, offset in (("N1", (-16, -12)), ("N2", (-16, -12)), ("A", (5, 4)), ("E", (5, 4)), ("P", (-13, 5))):
+        pt = c[name]
+        ax.plot(*pt, "o", ms=4 if name != "P" else 6, color="k")
+        ax.annotate(name, pt, textcoords="offset points", xytext=offset, fontsize=9)
 
 
 def verdict_text(pair) -> str:
