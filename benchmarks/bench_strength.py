@@ -64,7 +64,7 @@ def plain_contact_numpy(m, z1, z2, x1, x2, T1, b, sigma_Hlim=767.0, K=1.3):
 def main(n=200_000):
     mat = material("42CrMo4")
     load = Load(torque_nm=200, n_rpm=1000, life_h=20_000)
-    pair = GearPair(m=4, z1=20, z2=60, x1=0.3, x2=0.1, face_width=40)
+    pair = GearPair(m=4, z1=20, z2=60, x1=0.3, x2=0.1, face_width_mm=40)
     t_result = best(lambda: strength(pair, load, material=mat))
     t_dict = best(lambda: pair_strength(4, 20, 60, 0.3, 0.1, load=load, material1=mat, face_width_mm=40))
     t_plain = best(lambda: plain_contact(4, 20, 60, 0.3, 0.1, 200.0, 40.0), number=2000)

@@ -28,7 +28,7 @@ def figure_data_uri(fig, dpi: int = INLINE_DPI) -> str:
     return "data:image/png;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
 
 
-def html_view(text: str, draw=None, figsize=(7.5, 5.2), tables=(), alt: str = "picture") -> str:
+def html_view(text: str, draw=None, figsize=(7.5, 5.2), tables=(), alt: str = "picture", dpi: int = INLINE_DPI) -> str:
     """``text`` (preformatted), then each (caption, DataFrame) of ``tables``, then the picture that
     ``draw(ax)`` makes on a new Axes of ``figsize`` inches."""
     lines = text.splitlines()
@@ -47,7 +47,7 @@ def html_view(text: str, draw=None, figsize=(7.5, 5.2), tables=(), alt: str = "p
             except BaseException:
                 plt.close(fig)
                 raise
-            parts.append(f"<img alt='{html.escape(alt)}' src='{figure_data_uri(fig)}' style='max-width:100%'>")
+            parts.append(f"<img alt='{html.escape(alt)}' src='{figure_data_uri(fig, dpi)}' style='max-width:100%'>")
         except Exception as exc:     # the text view stands without the picture
             parts.append(f"<p><i>(no picture: {html.escape(str(exc))})</i></p>")
     return "<div>" + "".join(parts) + "</div>"

@@ -93,7 +93,7 @@ def _kind(rng) -> dict:
     if rng.random() < 0.6:
         out["internal"] = _pick(rng, [True, True, False, 1, "yes"], 0.05)
     if rng.random() < 0.3:
-        out["face_width"] = _pick(rng, [20.0, 60.0, 0.0, -5.0], 0.2)
+        out["face_width_mm"] = _pick(rng, [20.0, 60.0, 0.0, -5.0], 0.2)
     return out
 
 
@@ -156,7 +156,7 @@ def _optimize(rng):
     if rng.random() < 0.25 and isinstance(z1, int) and isinstance(z2, int):   # ring pairs with checks dropped
         kw["internal"], z2 = True, z1 + rng.randint(1, 120)
     rack = _rack(rng)
-    kind = {k: kw[k] for k in ("beta_deg", "internal", "face_width") if k in kw}
+    kind = {k: kw[k] for k in ("beta_deg", "internal", "face_width_mm") if k in kw}
 
     def call():
         r = gd.optimize_shifts(z1, z2, rack=_make_rack(rack), **kw)
@@ -208,7 +208,7 @@ def _teeth(rng):
 
     def call():
         sel = gd.select_teeth(**kw)
-        kind = {k: kw[k] for k in ("beta_deg", "internal", "face_width") if k in kw}
+        kind = {k: kw[k] for k in ("beta_deg", "internal", "face_width_mm") if k in kw}
         for _, row in sel.feasible.head(4).iterrows():     # rows marked feasible re-check as feasible
             names = [c[len("margin_"):] for c in sel.table.columns if c.startswith("margin_")]
             recheck_pair(float(row["module_mm"]), row["z1"], row["z2"], row["x1"], row["x2"], kw.get("checks"),

@@ -56,7 +56,7 @@ def _tip_thickness(d_y, d_b, psi):
 
 
 def pair_reference(m, z1, z2, x1, x2, alpha_deg=20.0, ha=1.0, c=0.25, rho_f=0.38, tip_shortening=True,
-                   beta_deg=0.0, face_width=None, internal=False):
+                   beta_deg=0.0, face_width_mm=None, internal=False):
     """All geometry fields of one pair as mpmath numbers, or None if the geometry does not exist.
 
     Returns ``(fields, reason)``: ``fields`` is a dict keyed like
@@ -75,7 +75,7 @@ def pair_reference(m, z1, z2, x1, x2, alpha_deg=20.0, ha=1.0, c=0.25, rho_f=0.38
     g_α = ρ_a1 − ρ_a2 + a_w sin α_w; no tip shortening.
     """
     if internal:
-        return _internal_reference(m, z1, z2, x1, x2, alpha_deg, ha, c, rho_f, beta_deg, face_width)
+        return _internal_reference(m, z1, z2, x1, x2, alpha_deg, ha, c, rho_f, beta_deg, face_width_mm)
     m, z1, z2, x1, x2 = (mp.mpf(float(v)) for v in (m, z1, z2, x1, x2))
     ha, c, rho_f = mp.mpf(float(ha)), mp.mpf(float(c)), mp.mpf(float(rho_f))
     alpha = mp.mpf(math.radians(float(alpha_deg)))   # the same double the library uses
@@ -149,10 +149,10 @@ def pair_reference(m, z1, z2, x1, x2, alpha_deg=20.0, ha=1.0, c=0.25, rho_f=0.38
     eps_alpha = g_alpha / p_b
     # ε_β = b sin β / (π m_n) (ISO 21771 (83)); without a face width it is unknown, except for spur
     # pairs, where it is 0 whatever b is
-    if face_width is None:
+    if face_width_mm is None:
         eps_beta = mp.mpf(0) if beta == 0 else mp.nan
     else:
-        eps_beta = mp.mpf(float(face_width)) * mp.sin(beta) / (mp.pi * m)
+        eps_beta = mp.mpf(float(face_width_mm)) * mp.sin(beta) / (mp.pi * m)
 
     out = {
         "alpha_w_deg": mp.degrees(alpha_w),
@@ -191,7 +191,7 @@ def pair_reference(m, z1, z2, x1, x2, alpha_deg=20.0, ha=1.0, c=0.25, rho_f=0.38
     return out, ""
 
 
-def _internal_reference(m, z1, z2, x1, x2, alpha_deg, ha, c, rho_f, beta_deg, face_width):
+def _internal_reference(m, z1, z2, x1, x2, alpha_deg, ha, c, rho_f, beta_deg, face_width_mm):
     """The internal pair, written out on its own (see :func:`pair_reference`)."""
     m, z1, z2, x1, x2 = (mp.mpf(float(v)) for v in (m, z1, z2, x1, x2))
     ha, c, rho_f = mp.mpf(float(ha)), mp.mpf(float(c)), mp.mpf(float(rho_f))
@@ -242,10 +242,10 @@ def _internal_reference(m, z1, z2, x1, x2, alpha_deg, ha, c, rho_f, beta_deg, fa
     u = z2 / z1
     rho_w1, rho_w2 = dw1 / 2 * sin_w, dw2 / 2 * sin_w
     eps_alpha = g_alpha / p_b
-    if face_width is None:
+    if face_width_mm is None:
         eps_beta = mp.mpf(0) if beta == 0 else mp.nan
     else:
-        eps_beta = mp.mpf(float(face_width)) * mp.sin(beta) / (mp.pi * m)
+        eps_beta = mp.mpf(float(face_width_mm)) * mp.sin(beta) / (mp.pi * m)
     sa1 = da1 * (psi1 - inv(alpha_a1))
     sa2 = da2 * (psi2 + inv(alpha_a2))
     out = {

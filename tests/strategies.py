@@ -62,7 +62,7 @@ def kinds(draw):
     try:
         d["geo"] = gd.pair_geometry(d["m"], d["z1"], d["z2"], d["x1"], d["x2"], rack=d["rack"],
                                     tip_shortening=d["ts"], beta_deg=d["beta"], internal=internal,
-                                    face_width=d["face"])
+                                    face_width_mm=d["face"])
     except gd.GearDesignError:
         assume(False)
     return d

@@ -33,7 +33,7 @@ def test_helical_reference_reproduces_the_iso_21771_example(parameter, published
 
 def test_beta_zero_is_the_spur_reference():
     spur, _ = pair_reference(8, 17, 26, 0.898, 0.517)
-    helix0, _ = pair_reference(8, 17, 26, 0.898, 0.517, beta_deg=0.0, face_width=60)
+    helix0, _ = pair_reference(8, 17, 26, 0.898, 0.517, beta_deg=0.0, face_width_mm=60)
     for name, v in spur.items():
         assert abs(helix0[name] - v) <= mp.mpf(10) ** -45 * max(1, abs(v)), name
     assert helix0["eps_beta"] == 0 and helix0["z_n1"] == 17 and helix0["san1"] == spur["sa1"]

@@ -29,13 +29,15 @@ def add_parser(sub):
                                        "of one gear",
                        description="The measuring sizes of one spur or helical, external or internal gear "
                                    "(ISO 21771; a ring with the GOST 19274 sign of x) with its tooth-thickness "
-                                   "allowances, and the ISO 1328-1:2013 flank tolerances of a class.")
+                                   "allowances, and the ISO 1328-1:2013 flank tolerances of a class. Exit status 0 "
+                                   "when every size can be measured, 1 when one is flagged (a span or ball outside "
+                                   "the involute, a gear too narrow for the span), 2 on bad input.")
     p.add_argument("--module", "-m", type=float, required=True, help="module, mm (normal module of a helical gear)")
     p.add_argument("--z", type=float, required=True, help="number of teeth")
     p.add_argument("--x", type=float, default=0.0, help="profile shift coefficient (0)")
     p.add_argument("--beta", type=float, default=0.0, metavar="DEG", help="helix angle, degrees (0: spur)")
     p.add_argument("--internal", action="store_true", help="a ring gear (a positive x moves its flanks outward)")
-    p.add_argument("--face-width", type=float, default=None, metavar="MM", help="face width b, mm")
+    p.add_argument("--face-width", dest="face_width_mm", type=float, default=None, metavar="MM", help="face width b, mm")
     p.add_argument("--tip-diameter", type=float, default=None, metavar="MM",
                    help="tip diameter d_a, mm (default d +- 2(h_a* +- x)m, no tip shortening)")
     p.add_argument("--k", type=float, default=None, help="teeth spanned (default: chosen to touch mid-flank)")
@@ -64,11 +66,11 @@ def run(args) -> int:
 
     t = tooth_measurements(args.module, args.z, args.x, beta_deg=args.beta, internal=args.internal,
                            rack=rack_from_args(args), k=args.k, ball_mm=args.ball, pin_mm=args.pin,
-                           thickness_allowance_mm=_allowance(args.allowance), face_width_mm=args.face_width,
+                           thickness_allowance_mm=_allowance(args.allowance), face_width_mm=args.face_width_mm,
                            tip_diameter_mm=args.tip_diameter)
     tol = None
     if args.accuracy_class is not None:
-        b = args.face_width if args.face_width is not None and args.face_width >= 4.0 else None
+        b = args.face_width_mm if args.face_width_mm is not None and args.face_width_mm >= 4.0 else None
         tol = flank_tolerances(args.module, args.z, args.accuracy_class, beta_deg=args.beta, face_width_mm=b)
     if args.json:
         print_json({"measurements": t.to_dict(), "tolerances": None if tol is None else tol.to_dict()})

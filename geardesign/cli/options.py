@@ -147,7 +147,7 @@ def load_from_args(args) -> dict:
 
     load = Load(torque_nm=args.torque, power_kw=args.power, n_rpm=args.speed, on_gear=args.on_gear,
                 application_factor=args.application_factor, life_h=args.life_h)
-    width = args.strength_width if args.strength_width is not None else getattr(args, "face_width", None)
+    width = args.strength_width if args.strength_width is not None else getattr(args, "face_width_mm", None)
     return {"load": load, "material": args.material, "material2": args.material2, "face_width_mm": width}
 
 

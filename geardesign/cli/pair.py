@@ -34,12 +34,12 @@ def add_kind_args(p) -> None:
                    help="reference helix angle, degrees (0: spur); --module is then the normal module")
     g.add_argument("--internal", action="store_true",
                    help="gear 2 is a ring gear with z2 > z1 teeth (a positive x2 moves its flanks outward)")
-    g.add_argument("--face-width", type=float, default=None, metavar="MM",
+    g.add_argument("--face-width", dest="face_width_mm", type=float, default=None, metavar="MM",
                    help="face width b, mm, for the overlap ratio eps_beta")
 
 
 def kind_from_args(args) -> dict:
-    return dict(beta_deg=args.beta, internal=args.internal, face_width=args.face_width)
+    return dict(beta_deg=args.beta, internal=args.internal, face_width_mm=args.face_width_mm)
 
 
 def pair_from_args(args) -> tuple[GearPair, float | None]:
@@ -124,7 +124,7 @@ def run(args) -> int:
             "input": {"m": pair.m, "z1": pair.z1, "z2": pair.z2, "x1": pair.x1, "x2": pair.x2,
                       "alpha_deg": rack.alpha_deg, "ha": rack.ha, "c": rack.c, "rho_f": rack.rho_f,
                       "tip_shortening": shorten, "beta_deg": pair.beta_deg, "internal": pair.internal,
-                      "face_width_mm": pair.face_width},
+                      "face_width_mm": pair.face_width_mm},
             "geometry": geo.to_dict(),
             "checks": frame_records(table[["check", "value", "limit", "margin", "ok"]]),
             **({"measurements": _measurements(pair, True)} if args.measurements else {}),

@@ -53,7 +53,8 @@ class DriveAnalysis(Result):
     def _repr_html_(self) -> str:
         """Jupyter's view: the text, and the drive's diagram inline."""
         from ..inline import html_view
-        return html_view(repr(self), lambda ax: self.plot(ax=ax), figsize=(2.2 + 2.4 * len(self.stages), 4.0),
+        return html_view(repr(self), lambda ax: self.plot(ax=ax), tables=(("checks", self.to_frame()),),
+                         figsize=(2.2 + 2.4 * len(self.stages), 4.0),
                          alt="drive diagram")
 
     def plot(self, ax=None):

@@ -233,7 +233,7 @@ class GearStage:
         """The GearPair of fixed tooth counts and shifts."""
         from ..gears.pair import GearPair
         return GearPair(self.m, self.z1, self.z2, self.x1, self.x2, beta_deg=self.beta_deg,
-                        face_width=self.face_width_mm)
+                        face_width_mm=self.face_width_mm)
 
 
 @dataclass(frozen=True)

@@ -103,7 +103,7 @@ def _tolerance_rows(pair, gear: int, accuracy_class) -> list:
     if accuracy_class is None:
         return []
     geo = pair.geometry()
-    b = pair.face_width if pair.face_width is not None and pair.face_width >= 4.0 else None
+    b = pair.face_width_mm if pair.face_width_mm is not None and pair.face_width_mm >= 4.0 else None
     tol = flank_tolerances(pair.m, pair.z1 if gear == 1 else pair.z2, accuracy_class, beta_deg=pair.beta_deg,
                            face_width_mm=b, d_mm=float(geo.d1 if gear == 1 else geo.d2))
     names = (("f_pT", "Single pitch tolerance"), ("F_pT", "Cumulative pitch tolerance"),

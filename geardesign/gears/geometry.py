@@ -486,13 +486,13 @@ _GET_FIELDS = operator.itemgetter(*_FIELD_NAMES)
 
 
 def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shortening: bool = True,
-                  fields=None, beta_deg: float = 0.0, internal: bool = False, face_width=None) -> Geometry:
+                  fields=None, beta_deg: float = 0.0, internal: bool = False, face_width_mm=None) -> Geometry:
     """Geometry of spur and helical, external and internal pairs; m, z1, z2, x1, x2 broadcast.
 
     ``beta_deg``: reference helix angle (``m`` is then the normal module, x1/x2 normal shifts; the
     circles, angles, thicknesses and path of contact are transverse). ``internal``: gear 2 is a
     ring with z2 > z1 teeth (GOST 19274-73 sign convention, see :class:`~geardesign.gears.mesh.Mesh`).
-    ``face_width`` (mm): for the overlap ratio ε_β.
+    ``face_width_mm`` (mm): for the overlap ratio ε_β.
 
     ``fields`` (names of :data:`GEOMETRY_FIELDS`) keeps only those in the result (the others are
     None) and computes only what they need: the report-only fields (:data:`REPORT_FIELDS`) are
@@ -529,7 +529,7 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
     # with ``fields``, only those and what the validation reads are stored at full size
     keep = None if names is None else _VALIDATION_FIELDS.union(names, ("a",))
     with np.errstate(all="ignore"):   # designs that do not exist are refused by name just below
-        mesh = Mesh(z1, z2, rack, require_bool("tip_shortening", tip_shortening), beta_deg, internal, face_width)
+        mesh = Mesh(z1, z2, rack, require_bool("tip_shortening", tip_shortening), beta_deg, internal, face_width_mm)
         shape = np.broadcast_shapes(*(np.shape(v) for v in (m, z1, z2, x1, x2)))
         geo = mesh_geometry(mesh, m, x1, x2, full, then=None if keep is None else (
             lambda g: {k: np.full(shape, v) if np.ndim(v) == 0 else v for k, v in g.items() if k in keep}),

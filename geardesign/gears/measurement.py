@@ -412,8 +412,8 @@ def pair_measurements(pair, gear: int | None = None, **options):
         if name in options:
             raise GearDesignError(f"{name} comes from the pair; it is not an option of GearPair.measurements")
     geo = pair._geo
-    if pair.face_width is not None:
-        options.setdefault("face_width_mm", pair.face_width)
+    if pair.face_width_mm is not None:
+        options.setdefault("face_width_mm", pair.face_width_mm)
 
     def one(i):
         return tooth_measurements(pair.m, pair.z1 if i == 1 else pair.z2, pair.x1 if i == 1 else pair.x2,

@@ -75,7 +75,7 @@ class GearPair:
         ``False`` keeps d_a = d + 2(h_a* + x)m. Internal pairs keep their tips either way.
     beta_deg : reference helix angle, 0..45° (0: spur).  internal : gear 2 is a ring with z2 > z1
         teeth (GOST 19274-73 sign convention: a positive x2 moves the ring's flanks outward).
-    face_width : face width b, mm, for the overlap ratio ε_β (None: ε_β unknown for a helical pair).
+    face_width_mm : face width b, mm, for the overlap ratio ε_β (None: ε_β unknown for a helical pair).
 
     >>> p = GearPair(8, 17, 26, 0.898, 0.517)          # seed 000's engine pair
     >>> round(p.geometry().alpha_w_deg, 2)             # the seed prints 26°08'; inv α_w gives 27.13°
@@ -93,7 +93,7 @@ class GearPair:
     tip_shortening: bool = True
     beta_deg: float = 0.0
     internal: bool = False
-    face_width: float | None = None
+    face_width_mm: float | None = None
 
     def __post_init__(self):
         if not _plain_inputs(self.m, self.x1, self.x2):   # anything but plain numbers in range: by name
@@ -104,12 +104,12 @@ class GearPair:
             object.__setattr__(self, "m", float(m))
             object.__setattr__(self, "x1", float(x1))
             object.__setattr__(self, "x2", float(x2))
-        mesh = Mesh(self.z1, self.z2, self.rack, self.tip_shortening, self.beta_deg, self.internal, self.face_width)
+        mesh = Mesh(self.z1, self.z2, self.rack, self.tip_shortening, self.beta_deg, self.internal, self.face_width_mm)
         if mesh.is_batch:
             raise GearDesignError("z1 and z2 must be single numbers for GearPair (use pair_geometry for arrays)")
         for name in ("z1", "z2", "rack", "tip_shortening", "beta_deg", "internal"):
             object.__setattr__(self, name, getattr(mesh, name))
-        object.__setattr__(self, "face_width", mesh.face_width_mm)
+        object.__setattr__(self, "face_width_mm", mesh.face_width_mm)
         geo = mesh_geometry_float(mesh, self.m, self.x1, self.x2)
         if not _exists(geo):   # the array path names what is wrong, and where
             validate_geometry(mesh_geometry(mesh, self.m, self.x1, self.x2), mesh, contact=True)
@@ -119,7 +119,7 @@ class GearPair:
     @classmethod
     def from_center_distance(cls, m, z1, z2, a_w, x1=None, rack: BasicRack | None = None,
                              tip_shortening: bool = True, beta_deg: float = 0.0, internal: bool = False,
-                             face_width: float | None = None) -> "GearPair":
+                             face_width_mm: float | None = None) -> "GearPair":
         """The pair whose x-sum gives the operating centre distance ``a_w`` (mm) at zero backlash.
 
         ``x1`` fixes the split (x2 = x_Σ − x1; for an internal pair x2 = x_Σ + x1, x_Σ = x2 − x1);
@@ -139,7 +139,7 @@ class GearPair:
         m_arr, z1_arr, z2_arr, _, _ = validate_inputs(m, z1, z2, 0.0, 0.0)
         a_w = one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))
         m, z1, z2 = float(m_arr), int(z1_arr), int(z2_arr)
-        mesh = Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width)
+        mesh = Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width_mm)
         a_min = float(min_center_distance(m, z1, z2, rack, mesh.beta_deg, mesh.internal))
         if a_w <= a_min:
             raise GearDesignError(
@@ -235,7 +235,8 @@ _ARGUMENT_HINTS = {
     "beta": "the helix angle is beta_deg={value!r}",
     "module": "the module is m={value!r}",
     "a_w": "for a centre distance use GearPair.from_center_distance(m, z1, z2, a_w)",
-    "b": "the face width is face_width={value!r} (mm)",
+    "b": "the face width is face_width_mm={value!r} (mm)",
+    "face_width": "the face width is face_width_mm={value!r} (mm)",
 }
 _dataclass_init = GearPair.__init__
 

@@ -144,7 +144,7 @@ def _pictures(pair: GearPair, lim: _Limits) -> tuple[str, str, object]:
     if lim.eps_gamma_min is not None:
         checks["eps_gamma_min"] = lim.eps_gamma_min
     kind = dict(rack=pair.rack, tip_shortening=pair.tip_shortening, beta_deg=pair.beta_deg,
-                internal=pair.internal, face_width=pair.face_width)
+                internal=pair.internal, face_width_mm=pair.face_width_mm)
     region = feasible_region(pair.z1, pair.z2, checks=checks, m=pair.m, **kind)
     opt = optimize_shifts(pair.z1, pair.z2, checks=checks, m=pair.m, a_w=lim.housing_a_w, **kind)
     ax = region.plot(optimum=opt if opt.success else None, proposed=(pair.x1, pair.x2), x_sum=opt.x_sum_fixed)
@@ -177,8 +177,8 @@ def _inputs(pair: GearPair, lim: _Limits) -> str:
             ("tip shortening by Δy·m", "", "", "yes" if pair.tip_shortening else "no")]
     if pair.beta_deg:
         rows.append(("reference helix angle", "β", "°", f"{pair.beta_deg:g}"))
-    if pair.face_width is not None:
-        rows.append(("face width", "b", "mm", f"{pair.face_width:g}"))
+    if pair.face_width_mm is not None:
+        rows.append(("face width", "b", "mm", f"{pair.face_width_mm:g}"))
     rows += [("smallest contact ratio", "ε<sub>α,min</sub>", "–", f"{lim.eps_alpha_min:g}"),
              ("smallest tip thickness", "s<sub>a,min</sub>/m", "–", f"{lim.sa_min:g}")]
     if lim.housing_a_w is not None:

@@ -62,8 +62,8 @@ def _rack(where, section, spec):
 
 def scene_kind(section: dict) -> dict:
     """The kind of pair of a validated [gear] or [teeth] section, as keyword arguments of the
-    library (beta_deg, internal, face_width)."""
-    return dict(beta_deg=section["beta_deg"], internal=section["internal"], face_width=section.get("face_width_mm"))
+    library (beta_deg, internal, face_width_mm)."""
+    return dict(beta_deg=section["beta_deg"], internal=section["internal"], face_width_mm=section.get("face_width_mm"))
 
 
 def _cross_checks(where: Where, s: dict):

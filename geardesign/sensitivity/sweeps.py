@@ -108,12 +108,12 @@ def _gear_sweep(points: list[dict], base: dict, where: dict) -> pd.DataFrame:
         from ..shifts.atlas import shift_atlas
         z1s = sorted({int(p["z1"] if "z1" in p else base["z1"]) for p in points})
         z2s = sorted({int(p["z2"] if "z2" in p else base["z2"]) for p in points})
-        kind = {k: base[k] for k in ("beta_deg", "internal", "face_width") if k in base}
+        kind = {k: base[k] for k in ("beta_deg", "internal", "face_width_mm") if k in base}
         kw = {k: base[k] for k in ("objective", "checks", "method", "rack", "tip_shortening", "bounds") if k in base}
         m = float(base.get("m", 1.0))
         # the atlas works per unit module: its face width is b/m
-        fw = None if kind.get("face_width") is None else kind["face_width"] / m
-        at = shift_atlas(z1s, z2s, upper_only=False, **kw, **{**kind, "face_width": fw}, **where)
+        fw = None if kind.get("face_width_mm") is None else kind["face_width_mm"] / m
+        at = shift_atlas(z1s, z2s, upper_only=False, **kw, **{**kind, "face_width_mm": fw}, **where)
         sgn = -1.0 if kind.get("internal") else 1.0
         at = at.rename(columns={"objective": "fun"}).assign(x_sum=lambda d: d["x2"] + sgn * d["x1"])
         at["success"] = at.pop("feasible")
@@ -274,7 +274,7 @@ def sweep(parameter: str, values, parameter2: str | None = None, values2=None, *
 
 def local_sensitivities(z1, z2, objective=None, checks=None, rack=None, step=0.02, m=1.0, a_w=None,
                         method=None, tip_shortening=True, bounds=None, beta_deg: float = 0.0,
-                        internal: bool = False, face_width: float | None = None) -> pd.DataFrame:
+                        internal: bool = False, face_width_mm: float | None = None) -> pd.DataFrame:
     """d(fun)/d(input) at the optimum of one pair, for every limit and rack parameter.
 
     For each input the optimum is re-solved (method "exact") with the input moved by
@@ -285,7 +285,7 @@ def local_sensitivities(z1, z2, objective=None, checks=None, rack=None, step=0.0
     """
     from ..shifts.optimize import optimize_shifts
     kw = dict(objective=objective, m=m, a_w=a_w, tip_shortening=tip_shortening, beta_deg=beta_deg,
-              internal=internal, face_width=face_width)
+              internal=internal, face_width_mm=face_width_mm)
     if bounds is not None:
         kw["bounds"] = tuple(bounds)
     limits = dict(checks or {})

@@ -281,7 +281,7 @@ def _row_solved(z1: int, z2: int, start, solve_kw: dict) -> dict:
 def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None, method: str = "exact",
                 tol: float | None = None, rack=None, tip_shortening: bool = True, bounds=DEFAULT_BOUNDS,
                 upper_only: bool = True, progress=None, beta_deg: float = 0.0, internal: bool = False,
-                face_width: float | None = None, *, client=None, workers=None) -> pd.DataFrame:
+                face_width_mm: float | None = None, *, client=None, workers=None) -> pd.DataFrame:
     """One row per tooth pair: feasible, x1, x2, objective, all margins, active checks, region area.
 
     The first pass is batched: every pair's margins on a 41×41 grid of (x1, x2) in one
@@ -292,8 +292,8 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
     Newton cannot settle (no valid KKT point: infeasible pairs, whose conflict is then searched) are
     solved one by one. ``upper_only`` keeps z2 >= z1 (an internal pair
     always needs z2 > z1). ``progress`` is called with the number of pairs done.
-    ``beta_deg``, ``internal``, ``face_width``: the kind of every pair, as for
-    :class:`~geardesign.gears.mesh.Mesh`; lengths are per unit module (m = 1), so ``face_width``
+    ``beta_deg``, ``internal``, ``face_width_mm``: the kind of every pair, as for
+    :class:`~geardesign.gears.mesh.Mesh`; lengths are per unit module (m = 1), so ``face_width_mm``
     is b/m here.
 
     ``client`` (a ``dask.distributed.Client``) or ``workers`` (a local cluster of that many
@@ -316,7 +316,7 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
                               "internal pairs need z2 > z1)")
     setup = dict(first=(int(Z1[0]), int(Z2[0])), objective=objective, checks=checks, method=method, tol=tol,
                  rack=rack, tip_shortening=tip_shortening, bounds=bounds, beta_deg=beta_deg, internal=internal,
-                 face_width=face_width)
+                 face_width_mm=face_width_mm)
     proto = _proto(setup)          # validates the inputs here, before any chunk goes out
     if not parallel.requested(client, workers):
         df = _atlas_rows(proto, Z1, Z2, setup, progress)
@@ -333,7 +333,7 @@ def shift_atlas(z1_values, z2_values, objective: str = "max_x_sum", checks=None,
 def _proto(setup: dict) -> Problem:
     """The problem of the atlas's first pair: its checks, objective and kind serve every pair."""
     mesh = Mesh(*setup["first"], setup["rack"], setup["tip_shortening"], setup["beta_deg"], setup["internal"],
-                setup["face_width"])
+                setup["face_width_mm"])
     return Problem(mesh, setup["checks"], setup["objective"], 1.0)
 
 
@@ -353,7 +353,7 @@ def _atlas_rows(proto: Problem, Z1, Z2, setup: dict, progress) -> pd.DataFrame:
                        (bounds[1] - bounds[0]) / (_ATLAS_N - 1), bounds=bounds)
     solve_kw = dict(objective=setup["objective"], checks=setup["checks"], method=method, tol=setup["tol"],
                     rack=proto.rack, tip_shortening=setup["tip_shortening"], bounds=bounds,
-                    beta_deg=setup["beta_deg"], internal=setup["internal"], face_width=setup["face_width"],
+                    beta_deg=setup["beta_deg"], internal=setup["internal"], face_width_mm=setup["face_width_mm"],
                     grid_n=_ATLAS_N if method == "grid" else None)
     rows = []
     for k, (z1, z2) in enumerate(zip(Z1.tolist(), Z2.tolist())):

@@ -49,7 +49,7 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
                     tol: float | None = None, a_w: float | None = None, m: float | None = None, rack=None,
                     tip_shortening: bool = True, bounds=DEFAULT_BOUNDS, grid_n: int | None = None,
                     start=None, beta_deg: float = 0.0, internal: bool = False,
-                    face_width: float | None = None) -> ShiftResult:
+                    face_width_mm: float | None = None) -> ShiftResult:
     """The best profile shifts x1, x2 for tooth counts z1, z2 under the chosen checks.
 
     Parameters
@@ -75,7 +75,7 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
     grid_n : nodes per axis of the grid method (default from ``tol``; at most GRID_N_MAX).
     start : a feasible (x1, x2) to start convex/exact from instead of their own coarse grid
         (the atlas passes the best node of its batched grid).
-    beta_deg, internal, face_width : a helical pair (normal module and shifts), an internal pair
+    beta_deg, internal, face_width_mm : a helical pair (normal module and shifts), an internal pair
         (gear 2 a ring; its x_Σ, which a_w fixes and ``max_x_sum`` maximises, is x2 − x1), and the
         face width for ε_β (see :class:`~geardesign.gears.mesh.Mesh`).
 
@@ -94,7 +94,7 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
     if start is not None and np.shape(require_finite("start", start)) != (2,):
         raise GearDesignError(f"start must be a point (x1, x2), got {_show(start)}")
-    prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width), checks, objective,
+    prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width_mm), checks, objective,
                    1.0 if m is None else m)
     if prob.objective.kind == "margin" and not prob.asked:
         raise GearDesignError("objective 'max_margin' (the point farthest from every check's boundary) needs at "

@@ -178,7 +178,8 @@ class PlanetaryShiftResult(Result):
     def _repr_html_(self) -> str:
         """Jupyter's view: the text, and both meshes' margins at the optimum as bars."""
         from ..inline import html_view
-        return html_view(repr(self), self.plot_margins, figsize=(7.0, 1.3 + 0.3 * len(self.margins)),
+        return html_view(repr(self), self.plot_margins, tables=(("margins", self.to_frame()),), dpi=60,
+                         figsize=(7.0, 1.3 + 0.3 * len(self.margins)),
                          alt="margins at the optimum")
 
     def plot_margins(self, ax=None):

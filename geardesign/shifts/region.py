@@ -308,7 +308,7 @@ NO_GEOMETRY = "no_geometry"   # edge where the pair stops existing (α_w -> 0, a
 def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: float | None = None,
                     m: float = 1.0, tip_shortening: bool = True, bounds=DEFAULT_BOUNDS,
                     n: int | None = None, beta_deg: float = 0.0, internal: bool = False,
-                    face_width: float | None = None) -> Region:
+                    face_width_mm: float | None = None) -> Region:
     """The region of (x1, x2) where every chosen check holds, with its labelled boundary.
 
     Parameters as :func:`geardesign.shifts.optimize.optimize_shifts`; ``method`` "grid" keeps the
@@ -331,7 +331,7 @@ def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: 
     if n is None:
         n = int(min(max(math.ceil((hi - lo) / tol) + 1, 41), 801)) if method == "grid" else 321
     n = require_count("n", n, 11, REGION_N_MAX)
-    prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width), checks, "max_x_sum", m)
+    prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width_mm), checks, "max_x_sum", m)
     return region_of(prob, method, tol, (lo, hi), n)
 
 

@@ -82,7 +82,8 @@ class ShiftResult(Result):
         """Jupyter's view: the text, and every check's margin at the optimum as a bar (active ones
         outlined), in the checks' colours."""
         from ..inline import html_view
-        return html_view(repr(self), self.plot_margins, figsize=(6.4, 1.3 + 0.3 * len(self.margins)),
+        return html_view(repr(self), self.plot_margins, tables=(("margins", self.to_frame()),), dpi=60,
+                         figsize=(6.4, 1.3 + 0.3 * len(self.margins)),
                          alt="margins at the optimum")
 
     def plot_margins(self, ax=None):

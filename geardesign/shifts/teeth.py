@@ -219,15 +219,15 @@ def _standard_center_distance(a):
     return np.where(i < values.size, values[np.minimum(i, values.size - 1)], np.nan)
 
 
-def _validated(method, rack, progress, x_sum_window, tip_shortening, beta_deg, internal, face_width, checks):
+def _validated(method, rack, progress, x_sum_window, tip_shortening, beta_deg, internal, face_width_mm, checks):
     """The search's inputs checked once: (rack, x-sum window, the kind of pair, the checks' names)."""
     if method not in METHODS:
         raise GearDesignError(f"method must be one of {list(METHODS)}, got {method!r}")
     rack = require_rack(rack)
     require_callable("progress", progress)
     # the kind is validated once, on a proto mesh; every candidate shares it
-    proto = Mesh(20, 60, rack, tip_shortening, beta_deg, internal, face_width)
-    kind = dict(beta_deg=proto.beta_deg, internal=proto.internal, face_width=proto.face_width_mm)
+    proto = Mesh(20, 60, rack, tip_shortening, beta_deg, internal, face_width_mm)
+    kind = dict(beta_deg=proto.beta_deg, internal=proto.internal, face_width_mm=proto.face_width_mm)
     check_names = [c.name for c in resolve_checks(checks, internal=kind["internal"])]
     return rack, _x_sum_window(x_sum_window), kind, check_names
 
@@ -235,7 +235,7 @@ def _validated(method, rack, progress, x_sum_window, tip_shortening, beta_deg, i
 def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_sum_max=None,
                  objective=None, checks=None, rack=None, method="exact", *, m_range=None,
                  x_sum_window=X_SUM_WINDOW, tip_shortening=True, progress=None, beta_deg: float = 0.0,
-                 internal: bool = False, face_width: float | None = None, client=None,
+                 internal: bool = False, face_width_mm: float | None = None, client=None,
                  workers=None) -> TeethSelection:
     """Tooth counts z1/z2 for a gear ratio u = z2/z1, with the best profile shifts for each, ranked.
 
@@ -255,7 +255,7 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
         s_a >= 0.25 m, ε_α >= 1.2).  rack : :class:`BasicRack` (standard by default).
     method : "grid", "convex" or "exact" (see :mod:`geardesign.shifts.optimize`).
     x_sum_window : (lo, hi) of x1 + x2 worth solving when a_w fixes it.  progress : callable(done, total).
-    beta_deg, internal, face_width : helical (``m`` the normal module), internal (z2 the ring,
+    beta_deg, internal, face_width_mm : helical (``m`` the normal module), internal (z2 the ring,
         u = z2/z1, x_Σ = x2 − x1, a = m (z2 − z1)/2) and the face width in mm for ε_β, as for
         :class:`~geardesign.gears.mesh.Mesh`. With a face width each (pair, module) is solved
         on its own: ε_β = b sin β/(π m) depends on the module.
@@ -278,7 +278,7 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     t0 = time.perf_counter()
     objective = default_objective(objective, x_sum_fixed=a_w is not None)
     rack, x_sum_window, kind, check_names = _validated(method, rack, progress, x_sum_window, tip_shortening,
-                                                       beta_deg, internal, face_width, checks)
+                                                       beta_deg, internal, face_width_mm, checks)
     z1, z2 = ratio_pairs(ratio, ratio_tol, z1_range, z_sum_max)
     ratio = float(ratio)
     a_w = _housing(a_w)
@@ -378,7 +378,7 @@ def _solve(c: pd.DataFrame, a_w, objective, checks, method, rack, tip_shortening
     if a_w is None:
         # the module changes the problem when ε_β (face width) or the ring's shaper cutter (its standard
         # size depends on the module) enters the checks: then each (pair, module) is solved on its own
-        per_module = (kind["face_width"] is not None or kind["internal"]
+        per_module = (kind["face_width_mm"] is not None or kind["internal"]
                       or (isinstance(checks, dict) and checks.get("load") is not None))   # strength scales with m
         keys = list(zip(c["z1"], c["z2"], *([c["module_mm"]] if per_module else [])))
     else:

@@ -15,7 +15,7 @@ LOAD = ["--torque", "600", "--speed", "1000", "--material", "18CrNiMo7-6", "--li
 def test_pair_with_a_load_prints_the_strength_and_its_checks(capsys):
     assert main(PAIR + LOAD + ["--json"]) == 0
     out = json.loads(capsys.readouterr().out)
-    ref = gd.GearPair(4, 20, 60, 0.3, 0.2, face_width=40).strength(
+    ref = gd.GearPair(4, 20, 60, 0.3, 0.2, face_width_mm=40).strength(
         Load(torque_nm=600, n_rpm=1000, life_h=20000), "18CrNiMo7-6")
     assert out["strength"]["S_H1"] == pytest.approx(ref.S_H1, rel=1e-12)
     checks = {c["check"]: c for c in out["checks"]}

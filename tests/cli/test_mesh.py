@@ -81,7 +81,7 @@ def test_mesh_draws_and_exports_an_internal_pair(tmp_path, capsys):
 def test_a_250_character_output_name_is_written(tmp_path, capsys):
     """Issue 29 §3.8: --csv <250-character name> printed a traceback, exited 1 and left a.png written."""
     csv = tmp_path / ("c" * 246 + ".csv")
-    rc = main(["mesh", "--module", "2", "--z1", "17", "--z2", "26", "--plot", str(tmp_path / "a.png"),
+    rc = main(["mesh", "--module", "2", "--z1", "20", "--z2", "40", "--plot", str(tmp_path / "a.png"),
                "--csv", str(csv)])
     assert rc == 0 and csv.read_text().startswith("outline")
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(["a.png", csv.name])

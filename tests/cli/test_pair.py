@@ -79,8 +79,9 @@ def test_installed_command_from_another_directory(tmp_path):
         env["PYTHONPATH"] = os.path.dirname(os.path.dirname(gd.__file__))
         r = subprocess.run([sys.executable, "-m", "geardesign", "pair", "--module", "2", "--z1", "17",
                             "--z2", "34", "--json"], cwd=tmp_path, capture_output=True, text=True, env=env)
-    assert r.returncode == 0, r.stderr
-    assert json.loads(r.stdout)["geometry"]["a_w"] == pytest.approx(51.0)   # seed 001 task 2
+    assert r.returncode == 1, r.stderr          # x1 = 0 on 17 teeth undercuts (x_min = 0.0057): a failing design
+    out = json.loads(r.stdout)
+    assert out["geometry"]["a_w"] == pytest.approx(51.0) and out["ok"] is False   # seed 001 task 2
     bad = subprocess.run([sys.executable, "-m", "geardesign", "pair", "--module", "2", "--z1", "1",
                           "--z2", "34"], cwd=tmp_path, capture_output=True, text=True, env=env)
     assert bad.returncode == 2 and "Traceback" not in bad.stderr and "z1" in bad.stderr

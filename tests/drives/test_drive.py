@@ -107,13 +107,13 @@ def test_motor_sets_the_input_and_is_checked():
 
 # ------------------------------------------------------------------------------ exhaustive enumeration
 
-def _size_and_mass(m, geo, row, face_width):
+def _size_and_mass(m, geo, row, face_width_mm):
     """The documented models, written out: envelope (a + (D1+D2)/2)·max(D1, D2), discs ρπ/4·D²·b."""
     rho = 7850e-9
     gear_size = (geo.a_w + (geo.da1 + geo.da2) / 2) * max(geo.da1, geo.da2)
     de1, de2 = row["sprocket1_tip_diameter_mm"], row["sprocket2_tip_diameter_mm"]
     chain_size = (row["center_distance_mm"] + (de1 + de2) / 2) * max(de1, de2)
-    gear_mass = rho * math.pi / 4 * (geo.da1 ** 2 + geo.da2 ** 2) * face_width
+    gear_mass = rho * math.pi / 4 * (geo.da1 ** 2 + geo.da2 ** 2) * face_width_mm
     chain_mass = rho * math.pi / 4 * (de1 ** 2 + de2 ** 2) * row["width_mm"] + row["chain_mass_kg"]
     return gear_size + chain_size, gear_mass + chain_mass
 

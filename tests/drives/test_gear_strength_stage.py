@@ -29,7 +29,7 @@ def _margins(res):
 
 
 def _pair_margins(m, b, x1, x2, torque_nm, n_rpm, z1=20, z2=60, material="42CrMo4"):
-    pair = gd.GearPair(m, z1, z2, x1, x2, face_width=b)
+    pair = gd.GearPair(m, z1, z2, x1, x2, face_width_mm=b)
     return _margins(pair.strength(Load(torque_nm=torque_nm, n_rpm=n_rpm), material))
 
 
@@ -117,6 +117,6 @@ def test_a_drive_whose_gear_cannot_carry_the_load_names_the_strength_checks():
     t_in = 20_000 / _omega(1480)
     for z2 in (34, 54):
         o = optimize_shifts(17, z2, "max_x_sum", None, "exact", m=1.5)
-        res = gd.GearPair(1.5, 17, z2, o.x1, o.x2, face_width=4 * math.pi * 1.5).strength(
+        res = gd.GearPair(1.5, 17, z2, o.x1, o.x2, face_width_mm=4 * math.pi * 1.5).strength(
             Load(torque_nm=t_in, n_rpm=1480), "42CrMo4")
         assert max(res.S_H1, res.S_H2) < res.S_Hmin and max(res.S_F1, res.S_F2) < res.S_Fmin

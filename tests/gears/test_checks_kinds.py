@@ -134,7 +134,7 @@ def test_ring_pair_check_list_and_what_each_restates():
 
 def test_helical_tip_thickness_is_normal_and_eps_gamma_adds_eps_beta():
     """s_an = s_at cos β_a with tan β_a = tan β d_a/d (ISO 21771 (54)-(55)), ε_γ = ε_α + b sin β/(π m_n)."""
-    g = gd.pair_geometry(3.5, 31, 30, 0.3, 0.35, beta_deg=21.0, face_width=50.0)
+    g = gd.pair_geometry(3.5, 31, 30, 0.3, 0.35, beta_deg=21.0, face_width_mm=50.0)
     beta_a = math.atan(math.tan(math.radians(21.0)) * g.da1 / g.d1)
     assert g.san1 == pytest.approx(g.sa1 * math.cos(beta_a), rel=1e-14)
     assert g.eps_gamma == pytest.approx(g.eps_alpha + 50.0 * math.sin(math.radians(21.0)) / (math.pi * 3.5), rel=1e-14)
@@ -166,7 +166,7 @@ def test_center_distance_round_trip(d):
     assume(g.g_alpha > 0)
     p = gd.GearPair.from_center_distance(d["m"], d["z1"], d["z2"], g.a_w, x1=d["x1"], rack=d["rack"],
                                          tip_shortening=d["ts"], beta_deg=d["beta"], internal=d["internal"],
-                                         face_width=d["face"])
+                                         face_width_mm=d["face"])
     zs = d["z2"] - d["z1"] if d["internal"] else d["z1"] + d["z2"]
     assert abs(p.x2 - d["x2"]) <= 1e-11 * max(1.0, zs / 50), (p.x2, d["x2"])
     assert abs(p.geometry().a_w - g.a_w) <= 1e-12 * g.a_w
@@ -176,8 +176,9 @@ def test_pair_cli_takes_helical_and_internal(capsys):
     import json
 
     from geardesign.cli import main
+    # KHK's 16/24 ring pair with x1 = 0 undercuts its pinion: a failing design, exit 1
     assert main(["pair", "--module", "3", "--z1", "16", "--z2", "24", "--x2", "0.5", "--internal",
-                 "--no-tip-shortening", "--json"]) == 0
+                 "--no-tip-shortening", "--json"]) == 1
     out = json.loads(capsys.readouterr().out)
     assert out["input"]["internal"] is True and round(out["geometry"]["a_w"], 4) == 13.1683
     assert [c["check"] for c in out["checks"]][:4] == ["undercut1", "interference1", "interference2", "ring_tip"]

@@ -23,7 +23,7 @@ def test_rows_carry_the_sizes_of_the_gear_and_its_mate():
 
 
 def test_helical_ring_states_hand_and_the_ring_convention():
-    pair = gd.GearPair(2, 20, 60, 0.3, 0.6, internal=True, beta_deg=10, face_width=20)
+    pair = gd.GearPair(2, 20, 60, 0.3, 0.6, internal=True, beta_deg=10, face_width_mm=20)
     t = data_block(pair, 2, 6, helix_hand="left")
     text = "\n".join(data_block_lines(t))
     assert "left" in text and "between balls" in text and "GOST 19274" in text and "F_betaT" in text

@@ -55,7 +55,7 @@ def grid():
     valid, invalid = [], []
     for d in _random(500, False, 12) + _random(700, True, 13):
         fields, reason = ref.pair_reference(d["m"], d["z1"], d["z2"], d["x1"], d["x2"], d["alpha_deg"], d["ha"],
-                                            d["c"], d["rho_f"], d["ts"], beta_deg=d["beta"], face_width=d["face"],
+                                            d["c"], d["rho_f"], d["ts"], beta_deg=d["beta"], face_width_mm=d["face"],
                                             internal=d["internal"])
         (valid if fields is not None else invalid).append(dict(d, ref=fields, reason=reason))
     return valid, invalid
@@ -93,7 +93,7 @@ def test_every_field_to_1e_12_on_the_vectorised_path():
         cols = {k: np.array([d[k] for d in ds]) for k in ("m", "z1", "z2", "x1", "x2")}
         geo = gd.pair_geometry(cols["m"], cols["z1"], cols["z2"], cols["x1"], cols["x2"],
                                rack=gd.BasicRack(alpha_deg, 1.0, 0.25, ds[0]["rho_f"]), tip_shortening=ts,
-                               beta_deg=beta, internal=internal, face_width=face)
+                               beta_deg=beta, internal=internal, face_width_mm=face)
         for name in gd.GEOMETRY_FIELDS:
             ours = np.asarray(getattr(geo, name))
             for i, d in enumerate(ds):
@@ -118,7 +118,7 @@ def test_designs_that_do_not_exist_are_refused_by_name():
         with pytest.raises(gd.GearDesignError, match=r"x1|x2|z1|z2"):
             gd.pair_geometry(d["m"], d["z1"], d["z2"], d["x1"], d["x2"],
                              rack=gd.BasicRack(d["alpha_deg"], 1.0, 0.25, d["rho_f"]), tip_shortening=d["ts"],
-                             beta_deg=d["beta"], internal=d["internal"], face_width=d["face"])
+                             beta_deg=d["beta"], internal=d["internal"], face_width_mm=d["face"])
 
 
 def test_beta_zero_is_the_spur_pair_bit_for_bit():
@@ -126,7 +126,7 @@ def test_beta_zero_is_the_spur_pair_bit_for_bit():
     z1, z2 = rng.integers(5, 400, 4000), rng.integers(5, 400, 4000)
     x1, x2 = rng.uniform(-0.5, 1.5, 4000), rng.uniform(-0.5, 1.5, 4000)
     spur = gd.pair_geometry(3.0, z1, z2, x1, x2)
-    helix0 = gd.pair_geometry(3.0, z1, z2, x1, x2, beta_deg=0.0, face_width=50.0)
+    helix0 = gd.pair_geometry(3.0, z1, z2, x1, x2, beta_deg=0.0, face_width_mm=50.0)
     for name in gd.GEOMETRY_FIELDS:
         assert np.array_equal(getattr(spur, name), getattr(helix0, name)), name
     assert np.array_equal(spur.san1, spur.sa1) and np.all(spur.eps_beta == 0) and np.array_equal(spur.z_n2, z2)

@@ -34,7 +34,7 @@ def test_table_by_hand_for_the_khk_pair():
     assert t.loc["d_w", ["gear 1", "gear 2"]].tolist() == pytest.approx([37.667, 75.333], abs=1e-3)
     assert t.loc["d_f", ["gear 1", "gear 2"]].tolist() == pytest.approx([32.100, 66.660], abs=1e-3)
     assert "ε_β" not in t.index                     # spur: no helical rows
-    assert "ε_β" in gd.GearPair(3, 12, 24, beta_deg=15, face_width=20).geometry().to_table()["symbol"].tolist()
+    assert "ε_β" in gd.GearPair(3, 12, 24, beta_deg=15, face_width_mm=20).geometry().to_table()["symbol"].tolist()
 
 
 @pytest.mark.parametrize("name, value, hint", [

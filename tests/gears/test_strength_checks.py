@@ -22,7 +22,7 @@ CASE = {"load": LOAD, "material": MATERIAL, "face_width_mm": 40.0}
 
 
 def _reference(x1, x2, load=LOAD, m=4.0, z1=20, z2=60):
-    return gd.GearPair(m, z1, z2, x1, x2, face_width=40.0).strength(load, material=MATERIAL)
+    return gd.GearPair(m, z1, z2, x1, x2, face_width_mm=40.0).strength(load, material=MATERIAL)
 
 
 def test_strength_checks_are_built_only_with_a_load():
@@ -46,7 +46,7 @@ def test_strength_checks_refuse_incomplete_load_cases(kw, match):
 @settings(max_examples=15, deadline=None)
 @given(x1=st.floats(0.0, 0.8), x2=st.floats(0.0, 0.8))
 def test_margins_equal_the_one_pair_chain(x1, x2):
-    pair = gd.GearPair(4.0, 20, 60, x1, x2, face_width=40.0)
+    pair = gd.GearPair(4.0, 20, 60, x1, x2, face_width_mm=40.0)
     table = pair.checks(**CASE).set_index("check")
     ref = _reference(x1, x2)
     assert math.isclose(table.loc["contact_strength", "value"], min(ref.S_H1, ref.S_H2), rel_tol=1e-9)

@@ -27,7 +27,7 @@ def test_scene_load_reaches_the_checks_and_the_report(tmp_path):
     path.write_text(SCENE)
     rep = gd.run_scene(path, tmp_path / "out")
     assert "contact_strength" in rep.tables["gear_optimum_checks"]["check"].tolist()
-    ref = gd.GearPair(4, 20, 60, 0.3, 0.2, face_width=40).strength(Load(torque_nm=600, n_rpm=1000, life_h=20000),
+    ref = gd.GearPair(4, 20, 60, 0.3, 0.2, face_width_mm=40).strength(Load(torque_nm=600, n_rpm=1000, life_h=20000),
                                                                     "18CrNiMo7-6")
     table = rep.tables["gear_strength_given"].set_index(["symbol", "gear"])
     assert table.loc[("K_Hbeta", 0), "value"] == pytest.approx(ref.factors.set_index(["symbol", "gear"])

@@ -50,13 +50,13 @@ def test_select_teeth_internal_in_a_housing_hits_its_centre_distance():
 
 
 def test_select_teeth_helical_with_face_width_solves_each_module():
-    sel = gd.select_teeth(2.5, m="series", m_range=(2, 3), z1_range=(18, 22), beta_deg=15, face_width=30,
+    sel = gd.select_teeth(2.5, m="series", m_range=(2, 3), z1_range=(18, 22), beta_deg=15, face_width_mm=30,
                           checks={"eps_gamma_min": 2.2})
     t = sel.table
     assert set(t["module_mm"]) == {2.0, 2.25, 2.5, 2.75, 3.0}       # ISO 54 series 1 and 2
     for r in t.head(6).itertuples():
         assert r.a_mm == pytest.approx(r.module_mm * (r.z1 + r.z2) / (2 * math.cos(math.radians(15))), rel=1e-14)
-        ref = _reference(r.module_mm, r.z1, r.z2, r.x1, r.x2, beta_deg=15.0, face_width=30.0)
+        ref = _reference(r.module_mm, r.z1, r.z2, r.x1, r.x2, beta_deg=15.0, face_width_mm=30.0)
         assert r.a_w_mm == pytest.approx(float(ref["a_w"]), rel=1e-12)
         if r.feasible:   # ε_γ = ε_α + b sin β/(π m_n) >= 2.2 holds at every feasible row
             assert float(ref["eps_gamma"]) >= 2.2 - 1e-9

@@ -39,13 +39,13 @@ def shift_solution(m, z1, z2, checks_key, beta_deg, face_width_mm, objective) ->
 
     checks = dict(checks_key) or None
     try:
-        r = optimize_shifts(int(z1), int(z2), objective, checks, "exact", m=m, beta_deg=beta_deg, face_width=face_width_mm)
+        r = optimize_shifts(int(z1), int(z2), objective, checks, "exact", m=m, beta_deg=beta_deg, face_width_mm=face_width_mm)
     except GearDesignError as exc:
         return dict(feasible=False, reason=str(exc), margins={})
     if not (r.success and not r.conflict):
         why = "conflict: " + ", ".join(r.conflict) if r.conflict else r.message
         return dict(feasible=False, reason=why, margins=dict(r.margins))
-    geo = GearPair(m, int(z1), int(z2), r.x1, r.x2, beta_deg=beta_deg, face_width=face_width_mm).geometry()
+    geo = GearPair(m, int(z1), int(z2), r.x1, r.x2, beta_deg=beta_deg, face_width_mm=face_width_mm).geometry()
     return dict(feasible=True, reason="", x1=r.x1, x2=r.x2, margins=dict(r.margins), a_w=geo.a_w, da1=geo.da1,
                 da2=geo.da2)
 
@@ -270,7 +270,7 @@ class GearKind(StageKind):
         sol = gear_solution(st, st.z1, st.z2, objective)
         if not sol["feasible"] and "x1" not in sol:
             raise GearDesignError(f"stage '{st.name}': z1/z2 = {st.z1}/{st.z2} has no feasible shifts ({sol['reason']})")
-        pair = GearPair(st.m, st.z1, st.z2, sol["x1"], sol["x2"], beta_deg=st.beta_deg, face_width=st.face_width_mm)
+        pair = GearPair(st.m, st.z1, st.z2, sol["x1"], sol["x2"], beta_deg=st.beta_deg, face_width_mm=st.face_width_mm)
         table = pair.checks(**{"jamming": False, **(st.checks or {})})
         geo = pair.geometry()
         out = dict(stage=st, pair=pair, checks=table, margins=dict(zip(table["check"], table["margin"].astype(float))),

@@ -313,7 +313,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
          else chain_geometry(geometry, rack, beta_deg))
     m_arr = np.asarray(m, dtype=float)
     b, b1, b2 = _widths(face_width_mm, face_width2_mm, m_arr)
-    broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width=b)
+    broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=b)
     out = _kinematics(load, g, b, m_arr, beta_deg, K_gamma)
     F_t, v, n1, n2, eps_gamma = out["F_t"], out["v"], out["n1"], out["n2"], out["eps_gamma"]
     K_A = load.application_factor
@@ -367,20 +367,20 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
     """ISO 6336 load capacity of one :class:`~geardesign.GearPair` as a :class:`StrengthResult`.
 
     ``material`` (both gears, or gear 1 with ``material2`` for gear 2): a :class:`Material` or a catalog
-    name. ``face_width_mm``: defaults to the pair's ``face_width``. ``options``: the keyword arguments of
+    name. ``face_width_mm``: defaults to the pair's ``face_width_mm``. ``options``: the keyword arguments of
     :func:`pair_strength` (accuracy grade, lubricant, roughness, given factors, root method, ...).
 
     >>> from geardesign import GearPair
-    >>> pair = GearPair(m=4, z1=20, z2=60, x1=0.3, x2=0.1, face_width=40)
+    >>> pair = GearPair(m=4, z1=20, z2=60, x1=0.3, x2=0.1, face_width_mm=40)
     >>> r = strength(pair, Load(torque_nm=400, n_rpm=1000, life_h=20000), material="42CrMo4")
     >>> round(r.S_H1, 3), r.governing[0], list(r.factors.columns)
     (0.615, 'contact1', ['symbol', 'gear', 'value', 'clause'])
     """
     if material is None:
         raise GearDesignError("material is needed (a geardesign Material or a name such as '42CrMo4')")
-    b = pair.face_width if face_width_mm is None else face_width_mm
+    b = pair.face_width_mm if face_width_mm is None else face_width_mm
     if b is None:
-        raise GearDesignError("face_width_mm is needed: give it, or build the GearPair with face_width=")
+        raise GearDesignError("face_width_mm is needed: give it, or build the GearPair with face_width_mm=")
     out = pair_strength(pair.m, pair.z1, pair.z2, pair.x1, pair.x2, load=load, material1=material,
                         material2=material2, face_width_mm=b, beta_deg=pair.beta_deg, internal=pair.internal,
                         rack=pair.rack, tip_shortening=pair.tip_shortening, **options)

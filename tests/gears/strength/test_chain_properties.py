@@ -81,7 +81,7 @@ def test_a_given_factor_is_used_and_reported():
     out = _pair(100.0, factors={"K_Hbeta": 1.16})
     assert float(out["K_Hbeta"]) == 1.16 and out["given"] == ("K_Hbeta",)
     assert float(out["K_Fbeta"]) == pytest.approx(1.16 ** float(out["N_F"]), rel=1e-14)
-    r = strength(GearPair(m=3, z1=19, z2=47, x1=0.3, x2=0.1, face_width=30), Load(torque_nm=100, n_rpm=900),
+    r = strength(GearPair(m=3, z1=19, z2=47, x1=0.3, x2=0.1, face_width_mm=30), Load(torque_nm=100, n_rpm=900),
                  material="42CrMo4", factors={"K_Hbeta": 1.16})
     assert r.given == ("K_Hbeta",) and "K_Hbeta given, not computed" in r.notes
     assert r.factors.query("symbol == 'K_Hbeta'").value.iloc[0] == 1.16
@@ -110,7 +110,7 @@ def test_stiffness_range_flag():
 
 
 def test_result_object():
-    r = strength(GearPair(m=3, z1=19, z2=47, x1=0.3, x2=0.1, face_width=30), Load(torque_nm=50, n_rpm=900),
+    r = strength(GearPair(m=3, z1=19, z2=47, x1=0.3, x2=0.1, face_width_mm=30), Load(torque_nm=50, n_rpm=900),
                  material="18CrNiMo7-6")
     assert isinstance(r, StrengthResult)
     text = repr(r)
