@@ -207,6 +207,23 @@ def _validate(frame: pd.DataFrame, schema: Schema, path, bundled: bool) -> pd.Da
     Row numbers in messages are line numbers of the CSV file (the header is line 1).
     """
     frame = frame.copy()
+    _check_columns(frame, schema, path, bundled)
+    for col in schema.columns:
+        if col.name not in frame.columns:     # an optional column left out: all blank
+            frame[col.name] = np.nan
+    lines = np.arange(len(frame)) + 2
+    for col in schema.columns:
+        if col.kind == "str":
+            frame[col.name] = _text_column(frame[col.name], col, path, lines)
+        else:
+            frame[col.name] = _number_column(frame[col.name], col, path, lines)
+    _check_order(frame, schema, path, lines)
+    _row_rules(frame, schema, path, lines)
+    return frame
+
+
+def _check_columns(frame: pd.DataFrame, schema: Schema, path, bundled: bool) -> None:
+    """That the table has rows and every column its schema requires (provenance too when bundled)."""
     if frame.empty:
         raise CatalogError(f"{path}: no rows (a {schema.kind} table needs at least one)")
     needed = tuple(c.name for c in schema.columns if c.required) + (schema.bundled_only if bundled else ())
@@ -215,42 +232,48 @@ def _validate(frame: pd.DataFrame, schema: Schema, path, bundled: bool) -> pd.Da
         raise CatalogError(
             f"{path}: missing column(s) {', '.join(repr(m) for m in missing)} "
             f"(a {schema.kind} table needs {', '.join(needed)})")
-    for col in schema.columns:
-        if col.name not in frame.columns:     # an optional column left out: all blank
-            frame[col.name] = np.nan
-    lines = np.arange(len(frame)) + 2
-    for col in schema.columns:
-        raw = frame[col.name]
-        if col.kind == "str":
-            blank = raw.isna() | (raw.astype(str).str.strip() == "")
-            if col.required and blank.any():
-                i = int(np.argmax(blank.to_numpy()))
-                raise CatalogError(f"{_where(path, lines[i], col.name)}: empty, a text value is required")
-            frame[col.name] = raw.astype(str).str.strip()
-            continue
-        values = pd.to_numeric(raw, errors="coerce")
-        bad_type = values.isna() & raw.notna() & (raw.astype(str).str.strip() != "")
-        if bad_type.any():
-            i = int(np.argmax(bad_type.to_numpy()))
-            raise CatalogError(f"{_where(path, lines[i], col.name)}: not a number, got {raw.iloc[i]!r}")
-        arr = values.to_numpy(dtype=float)
-        if col.required and np.isnan(arr).any():
-            i = int(np.argmax(np.isnan(arr)))
-            raise CatalogError(f"{_where(path, lines[i], col.name)}: empty, a number is required")
-        if np.isinf(arr).any():
-            i = int(np.argmax(np.isinf(arr)))
-            raise CatalogError(f"{_where(path, lines[i], col.name)}: must be finite, got {arr[i]!r}")
-        if col.positive and (arr <= 0).any():
-            i = int(np.argmax(arr <= 0))
-            raise CatalogError(f"{_where(path, lines[i], col.name)}: must be > 0, got {arr[i]!r}")
-        if col.kind == "int":
-            frac = ~np.isnan(arr) & (arr != np.round(arr))
-            if frac.any():
-                i = int(np.argmax(frac))
-                raise CatalogError(f"{_where(path, lines[i], col.name)}: must be a whole number, got {arr[i]!r}")
-            frame[col.name] = arr.astype(np.int64) if not np.isnan(arr).any() else arr
-        else:
-            frame[col.name] = arr
+
+
+def _text_column(raw: pd.Series, col: Column, path, lines) -> pd.Series:
+    """A text column, stripped; a required one must have no blank cell."""
+    blank = raw.isna() | (raw.astype(str).str.strip() == "")
+    if col.required and blank.any():
+        i = int(np.argmax(blank.to_numpy()))
+        raise CatalogError(f"{_where(path, lines[i], col.name)}: empty, a text value is required")
+    return raw.astype(str).str.strip()
+
+
+def _number_column(raw: pd.Series, col: Column, path, lines) -> np.ndarray:
+    """A number column as floats (int64 for a whole-number column without blanks), each cell checked:
+    a number, present if required, finite, > 0 if positive, whole if an int."""
+    values = pd.to_numeric(raw, errors="coerce")
+    bad_type = values.isna() & raw.notna() & (raw.astype(str).str.strip() != "")
+    if bad_type.any():
+        i = int(np.argmax(bad_type.to_numpy()))
+        raise CatalogError(f"{_where(path, lines[i], col.name)}: not a number, got {raw.iloc[i]!r}")
+    arr = values.to_numpy(dtype=float)
+    if col.required and np.isnan(arr).any():
+        i = int(np.argmax(np.isnan(arr)))
+        raise CatalogError(f"{_where(path, lines[i], col.name)}: empty, a number is required")
+    if np.isinf(arr).any():
+        i = int(np.argmax(np.isinf(arr)))
+        raise CatalogError(f"{_where(path, lines[i], col.name)}: must be finite, got {arr[i]!r}")
+    if col.positive and (arr <= 0).any():
+        i = int(np.argmax(arr <= 0))
+        raise CatalogError(f"{_where(path, lines[i], col.name)}: must be > 0, got {arr[i]!r}")
+    if col.kind != "int":
+        return arr
+    frac = ~np.isnan(arr) & (arr != np.round(arr))
+    if frac.any():
+        i = int(np.argmax(frac))
+        raise CatalogError(f"{_where(path, lines[i], col.name)}: must be a whole number, got {arr[i]!r}")
+    # a blank in an optional whole-number column keeps it float (NaN has no int64)
+    return arr.astype(np.int64) if not np.isnan(arr).any() else arr
+
+
+def _check_order(frame: pd.DataFrame, schema: Schema, path, lines) -> None:
+    """The ``increasing`` columns rise and the ``trend`` columns keep their sense down the table,
+    within each group of equal ``increasing_within`` values."""
     if schema.increasing_within:
         codes = frame.groupby(list(schema.increasing_within), sort=False).ngroup().to_numpy()
         groups = [frame.index.to_numpy()[codes == g] for g in np.unique(codes)]
@@ -275,8 +298,6 @@ def _validate(frame: pd.DataFrame, schema: Schema, path, bundled: bool) -> pd.Da
                 raise CatalogError(
                     f"{_where(path, lines[frame.index.get_loc(i)], col)}: must not {word} down the table, "
                     f"got {v[bad[0] + 1]!r} after {v[bad[0]]!r}")
-    _row_rules(frame, schema, path, lines)
-    return frame
 
 
 def _row_rules(frame: pd.DataFrame, schema: Schema, path, lines) -> None:

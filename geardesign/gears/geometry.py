@@ -155,12 +155,13 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True, contact: bo
     times a second, where dicts between the steps cost a sixth of its time)."""
     rack, internal = mesh.rack, mesh.internal
     c = _section_constants(rack, mesh.beta_deg)
-    alpha, sa, ca, ta, inv_a, s2h, h_limit, tn, cb, cbb = c
-    zs, inv_aw, t_w, dt_w, cos_w, sin_w, a, y, a_w, dy, k = _operating_mesh(mesh, c, m, z1, z2, x1, x2, ops)
-    zt1, d1, db1, rb1, rw1, h1, da1, df1, ra1, gap1, psi1, x_min1, rho_l1, rho_a1, t_a1, sa1, inv_a1 = \
-        _gear(rack, c, m, z1, x1, k, cos_w, ops)
-    zt2, d2, db2, rb2, rw2, h2, da2, df2, ra2, gap2, psi2, x_min2, rho_l2, rho_a2, t_a2, sa2, inv_a2 = \
-        _gear(rack, c, m, z2, x2, k, cos_w, ops, ring=internal)
+    sa, ta, tn = c[1], c[3], c[7]
+    om = _operating_mesh(mesh, c, m, z1, z2, x1, x2, ops)
+    _, inv_aw, t_w, _, cos_w, sin_w, a, y, a_w, dy, k = om
+    g1 = _gear(rack, c, m, z1, x1, k, cos_w, ops)
+    g2 = _gear(rack, c, m, z2, x2, k, cos_w, ops, ring=internal)
+    _, d1, db1, _, rw1, _, da1, df1, ra1, gap1, psi1, x_min1, rho_l1, rho_a1, t_a1, sa1, inv_a1 = g1
+    _, d2, db2, _, rw2, _, da2, df2, ra2, gap2, psi2, x_min2, rho_l2, rho_a2, t_a2, sa2, inv_a2 = g2
 
     eps_beta = _overlap_ratio(mesh, m, ops)
     out = {
@@ -183,7 +184,21 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True, contact: bo
     }
     if not (contact or full):
         return out
+    out.update(_contact_fields(internal, c, m, z1, z2, om, g1, g2, eps_beta))
+    if not full:
+        return out
+    # the fields no check or objective of the library needs: only for reports
+    out.update(_report_fields(mesh, c, m, z1, z2, om, g1, g2, out, ops))
+    return out
 
+
+def _contact_fields(internal: bool, c, m, z1, z2, om, g1, g2, eps_beta) -> dict:
+    """The path of contact: p_b, g_α, ε_α, ε_γ, the radii of curvature at its ends ρ_p, specific
+    sliding at the roots and m/ρ_red at the pitch point (ISO 21771:2007 §5.4)."""
+    ca, cb, cbb = c[2], c[8], c[9]
+    zs, t_w, sin_w, y = om[0], om[2], om[5], om[7]
+    rb1, rw1, h1, ra1, rho_a1 = g1[3], g1[4], g1[5], g1[8], g1[13]
+    rb2, rw2, h2, ra2, rho_a2 = g2[3], g2[4], g2[5], g2[8], g2[13]
     p_b = math.pi * m * ca / cb
     n1, n2 = rb1 * t_w, rb2 * t_w              # N1N2 = n1 + n2 = a_w sin α_w (a ring pair: n2 − n1)
     # e1 = ρ_a1 − r_b1 tan α_w = (r_a1² − r_w1²)/(ρ_a1 + r_b1 tan α_w) with r_a1 − r_w1 =
@@ -198,22 +213,31 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True, contact: bo
     rho_p2 = n2 + e1 if internal else n2 - e1
     u = z2 / z1
     rho_w1, rho_w2 = rw1 * sin_w, rw2 * sin_w
-    out.update({
+    return {
         "p_b": p_b, "g_alpha": g_alpha, "eps_alpha": eps_alpha, "rho_p1": rho_p1, "rho_p2": rho_p2,
         # specific sliding ϑ1 = 1 − ρ2/(u ρ1), ϑ2 = 1 − u ρ1/ρ2 at both ends of the path of contact
         "sliding1_root": 1.0 - rho_a2 / (u * rho_p1), "sliding2_root": 1.0 - u * rho_a1 / rho_p2,
         # m/ρ_red in the normal section, where the radii of curvature are ρ_t/cos β_b; concave ring: 1/ρ1 − 1/ρ2
         "spec_pressure_pitch": m * ((rho_w2 - rho_w1) if internal else (rho_w1 + rho_w2)) / (rho_w1 * rho_w2) * cbb,
         "eps_gamma": eps_alpha + eps_beta,
-    })
-    if not full:
-        return out
-    # the fields no check or objective of the library needs: only for reports
-    dw1, dw2 = out["dw1"], out["dw2"]
+    }
+
+
+def _report_fields(mesh: Mesh, c, m, z1, z2, om, g1, g2, out: dict, ops) -> dict:
+    """The fields only reports read: α_w, the thicknesses s and s_w, α_a, the diameters d_l and d_p,
+    O2N1, O1N2, the sliding at the tips, the transverse and virtual sizes and the clearances."""
+    rack, internal = mesh.rack, mesh.internal
+    alpha, _, _, ta, inv_a, _, _, _, cb, cbb = c
+    _, inv_aw, t_w, dt_w, _, _, _, _, _, dy, k = om
+    zt1, d1, _, rb1, _, _, _, _, _, _, psi1, _, rho_l1, rho_a1, t_a1, _, _ = g1
+    zt2, d2, _, rb2, _, _, _, _, _, _, psi2, _, rho_l2, rho_a2, t_a2, _, _ = g2
+    dw1, dw2, rho_p1, rho_p2 = out["dw1"], out["dw2"], out["rho_p1"], out["rho_p2"]
+    n1, n2 = rb1 * t_w, rb2 * t_w              # as in _contact_fields
+    u = z2 / z1
     g = n2 - n1 if internal else n1 + n2
     # external: a_w − r_a1 − r_f2 = m(c* + k − Δy); internal: r_f2 − a_w − r_a1 = m(c* + k + Δy); both gears
     clearance = m * (rack.c + k + dy) if internal else m * (rack.c + k - dy)
-    out.update({
+    return {
         "alpha_w_deg": ops.degrees(alpha + ops.atan(dt_w / (1.0 + ta * t_w))),   # α_w = α + atan Δt/(1 + t t_w)
         "s1": d1 * (psi1 - inv_a), "s2": d2 * (psi2 + inv_a) if internal else d2 * (psi2 - inv_a),
         "sw1": dw1 * (psi1 - inv_aw), "sw2": dw2 * (psi2 + inv_aw) if internal else dw2 * (psi2 - inv_aw),
@@ -228,8 +252,7 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True, contact: bo
         "alpha_t_deg": ops.degrees(alpha + 0.0 * m), "beta_b_deg": ops.degrees(mesh.section.beta_b + 0.0 * m),
         "m_t": m / cb, "z_n1": zt1 / (cbb * cbb), "z_n2": zt2 / (cbb * cbb),
         "clearance1": clearance, "clearance2": clearance,
-    })
-    return out
+    }
 
 
 def _operating_mesh(mesh: Mesh, c, m, z1, z2, x1, x2, ops) -> tuple:

@@ -82,20 +82,41 @@ def _checks_dict(spec: dict | None, section: dict | None = None) -> dict | None:
 
 
 def _run_gear(rep: SceneReport, g: dict):
-    plt = pyplot()
-    from ..gears.mesh import kind_text
+    """The gear section: the best shifts, the feasible region, the given shifts if any, and their pictures."""
     from ..gears.pair import GearPair
-    from ..shifts.region import feasible_region
-    from ..shifts.optimize import optimize_shifts
 
-    rack = g["_rack"]
     checks = _checks_dict(g.get("checks"), g)
     kind = scene_kind(g)
-    kw = dict(checks=checks, rack=rack, tip_shortening=g["tip_shortening"], bounds=tuple(g["bounds"]), **kind)
+    res, reg = _gear_solve(g, checks, kind)
+    rep.results["gear"] = {"optimum": res, "region": reg}
+    _gear_heading(rep, g, checks, kind, reg)
+    _gear_optimum(rep, g, res, reg)
+    pair_kw = dict(**({"rack": g["_rack"]} if g["_rack"] else {}), tip_shortening=g["tip_shortening"], **kind)
+    geo_opt = GearPair(g["module"], g["z1"], g["z2"], res.x1, res.x2, **pair_kw).geometry().to_frame()
+    rep.tables["gear_optimum_geometry"] = geo_opt
+    given = _gear_given(rep, g, checks, pair_kw) if "x1" in g else None
+    rep.markdown += ["Geometry at the optimum (mm, degrees):", "", md_table(geo_opt[["quantity", "value", "unit"]]),
+                     ""]
+    _gear_pictures(rep, g, res, reg, given, pair_kw)
+    if checks and "load" in checks:
+        _add_strength(rep, g, checks, res, given, pair_kw)
+
+
+def _gear_solve(g: dict, checks, kind: dict):
+    """The optimum (optimize_shifts) and the feasible region (feasible_region) of the section's pair."""
+    from ..shifts.optimize import optimize_shifts
+    from ..shifts.region import feasible_region
+
+    kw = dict(checks=checks, rack=g["_rack"], tip_shortening=g["tip_shortening"], bounds=tuple(g["bounds"]), **kind)
     res = optimize_shifts(g["z1"], g["z2"], objective=g.get("objective"), method=g["method"], m=g["module"],
                           a_w=g.get("a_w"), **kw)
-    reg = feasible_region(g["z1"], g["z2"], m=g["module"], **kw)
-    rep.results["gear"] = {"optimum": res, "region": reg}
+    return res, feasible_region(g["z1"], g["z2"], m=g["module"], **kw)
+
+
+def _gear_heading(rep: SceneReport, g: dict, checks, kind: dict, reg) -> None:
+    """The section's title, its checks and limits, and the region's area or conflict, in Markdown."""
+    from ..gears.mesh import kind_text
+
     md = rep.markdown
     md += [f"## Gear pair z1/z2 = {g['z1']}/{g['z2']}{kind_text(kind['beta_deg'], kind['internal'])}, m = {g['module']:g} mm", ""]
     limits = {k: v for k, v in (checks or {}).items()}
@@ -105,6 +126,10 @@ def _run_gear(rep: SceneReport, g: dict):
         md += [f"Feasible region of (x1, x2): area {reg.area:.4f}, bounded by {', '.join(reg.limiting_checks())}.", ""]
     else:
         md += [f"The feasible region is **empty**: checks {', '.join(reg.conflict)} conflict.", ""]
+
+
+def _gear_optimum(rep: SceneReport, g: dict, res, reg) -> None:
+    """The optimum's table, its margins and sensitivities, the region's boundary and the summary line."""
     import pandas as pd
 
     opt = pd.DataFrame([{"objective": res.objective, "method": res.method, "x1": res.x1, "x2": res.x2,
@@ -113,50 +138,55 @@ def _run_gear(rep: SceneReport, g: dict):
     rep.tables["gear_optimum"] = opt
     rep.tables["gear_optimum_checks"] = res.to_frame()
     rep.tables["gear_region_boundary"] = reg.boundary
-    md += ["### Optimum", "", f"{res.message}.", "", md_table(opt), "",
-           "Margins of every check at the optimum, and d(fun)/d(limit) of the active ones:", "",
-           md_table(res.to_frame()), ""]
+    rep.markdown += ["### Optimum", "", f"{res.message}.", "", md_table(opt), "",
+                     "Margins of every check at the optimum, and d(fun)/d(limit) of the active ones:", "",
+                     md_table(res.to_frame()), ""]
     sm = (f"gear {g['z1']}/{g['z2']} m={g['module']:g}: optimum ({res.objective}) x1 = {res.x1:.4f}, "
           f"x2 = {res.x2:.4f}, eps_alpha = {res.eps_alpha:.4f}, a_w = {res.a_w:.4f} mm, "
           f"active {', '.join(res.active) or '-'}; region area {reg.area:.4f}")
     rep.summary.append(sm if res.success else f"gear {g['z1']}/{g['z2']}: no feasible shifts: {res.message}")
-    pair_kw = dict(**({"rack": rack} if rack else {}), tip_shortening=g["tip_shortening"], **kind)
-    geo_opt = GearPair(g["module"], g["z1"], g["z2"], res.x1, res.x2, **pair_kw).geometry().to_frame()
-    rep.tables["gear_optimum_geometry"] = geo_opt
-    given = None
-    if "x1" in g:
-        pair = GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **pair_kw)
-        lim = {k: v for k, v in (checks or {}).items()}
-        # with a housing a_w as well, the given shifts are checked against it (center_distance)
-        chk = pair.checks(**lim, housing_a_w=g.get("a_w"))
-        geo = pair.geometry().to_frame()
-        rep.tables["gear_given_geometry"] = geo
-        rep.tables["gear_given_checks"] = chk
-        failed = chk.loc[~chk["ok"], "check"].tolist()
-        verdict = ("passes every check" if not failed else f"**fails** {', '.join(failed)}")
-        ga = pair.geometry()
-        md += [f"### Given shifts x1 = {g['x1']:g}, x2 = {g['x2']:g}", "",
-               f"This pair {verdict}: α_w = {ga.alpha_w_deg:.4f}°, a_w = {ga.a_w:.4f} mm, "
-               f"ε_α = {ga.eps_alpha:.4f}.", "", md_table(chk.drop(columns=["label"])), "",
-               "Geometry of the given pair (mm, degrees):", "", md_table(geo[["quantity", "value", "unit"]]), ""]
-        rep.summary.append(f"given x1/x2 = {g['x1']:g}/{g['x2']:g}: eps_alpha = {ga.eps_alpha:.4f}, "
-                           + ("all checks pass" if not failed else f"FAILS {', '.join(failed)}"))
-        given = (g["x1"], g["x2"])
-    md += ["Geometry at the optimum (mm, degrees):", "", md_table(geo_opt[["quantity", "value", "unit"]]), ""]
+
+
+def _gear_given(rep: SceneReport, g: dict, checks, pair_kw: dict) -> tuple:
+    """The given shifts' checks and geometry (tables, Markdown, summary line); returns (x1, x2)."""
+    from ..gears.pair import GearPair
+
+    pair = GearPair(g["module"], g["z1"], g["z2"], g["x1"], g["x2"], **pair_kw)
+    lim = {k: v for k, v in (checks or {}).items()}
+    # with a housing a_w as well, the given shifts are checked against it (center_distance)
+    chk = pair.checks(**lim, housing_a_w=g.get("a_w"))
+    geo = pair.geometry().to_frame()
+    rep.tables["gear_given_geometry"] = geo
+    rep.tables["gear_given_checks"] = chk
+    failed = chk.loc[~chk["ok"], "check"].tolist()
+    verdict = ("passes every check" if not failed else f"**fails** {', '.join(failed)}")
+    ga = pair.geometry()
+    rep.markdown += [f"### Given shifts x1 = {g['x1']:g}, x2 = {g['x2']:g}", "",
+                     f"This pair {verdict}: α_w = {ga.alpha_w_deg:.4f}°, a_w = {ga.a_w:.4f} mm, "
+                     f"ε_α = {ga.eps_alpha:.4f}.", "", md_table(chk.drop(columns=["label"])), "",
+                     "Geometry of the given pair (mm, degrees):", "", md_table(geo[["quantity", "value", "unit"]]), ""]
+    rep.summary.append(f"given x1/x2 = {g['x1']:g}/{g['x2']:g}: eps_alpha = {ga.eps_alpha:.4f}, "
+                       + ("all checks pass" if not failed else f"FAILS {', '.join(failed)}"))
+    return g["x1"], g["x2"]
+
+
+def _gear_pictures(rep: SceneReport, g: dict, res, reg, given, pair_kw: dict) -> None:
+    """The blocking contour with the optimum and the given point, and on request the meshing drawings
+    and the drawings' data blocks of both pairs."""
+    from ..gears.pair import GearPair
+
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(8.6, 6.2))
     reg.plot(ax=ax, optimum=res if res.success else None, proposed=given, x_sum=res.x_sum_fixed)
     rep.figures["gear_region"] = fig
-    md += ["![blocking contour](gear_region.png)", ""]
+    rep.markdown += ["![blocking contour](gear_region.png)", ""]
+    # the optimum is drawn only where one was found, the given pair only where the scene gives one
+    drawn = ([("optimum", res.x1, res.x2)] if res.success else []) + ([("given", *given)] if given else [])
     if g["mesh_drawing"]:
-        drawn = [("optimum", res.x1, res.x2)] if res.success else []
-        drawn += [("given", *given)] if given else []
         for tag, x1, x2 in drawn:
             _add_mesh_drawing(rep, GearPair(g["module"], g["z1"], g["z2"], x1, x2, **pair_kw), tag)
-    if checks and "load" in checks:
-        _add_strength(rep, g, checks, res, given, pair_kw)
     if g["data_block"]:
-        pairs = ([("optimum", res.x1, res.x2)] if res.success else []) + ([("given", *given)] if given else [])
-        for tag, x1, x2 in pairs:
+        for tag, x1, x2 in drawn:
             _add_data_blocks(rep, GearPair(g["module"], g["z1"], g["z2"], x1, x2, **pair_kw), tag, g.get("accuracy_class"))
 
 

@@ -82,6 +82,39 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, h_node: float, iters: int = 10, 
     one-by-one solver, which has them). The best valid candidate
     per pair is returned (NaN where none is valid; those pairs go to the one-by-one solver).
     """
+    a_idx, b_idx, is_v, pair = _kkt_candidates(proto, Z1, Z2, start, h_node)
+    z1, z2 = Z1[pair].astype(float), Z2[pair].astype(float)
+    X = start[pair].copy()
+    live = np.arange(pair.size)
+    for _ in range(iters):
+        if not live.size:
+            break
+        x1, x2, r = X[live, 0], X[live, 1], np.arange(live.size)
+        geo = mesh_geometry(proto.mesh.unchecked(z1[live], z2[live]), 1.0, x1, x2, proto.full)
+        M, G = proto.margins(geo), proto.margin_gradients(geo)
+        ma, ga = M[a_idx[live], r], G[a_idx[live], :, r]
+        mb, gb = M[b_idx[live], r], G[b_idx[live], :, r]
+        # the second equation: m_b = 0 at a vertex, the stationarity residual ∇f × ∇m_a = 0 on an edge
+        cross = _cross(_piece_gradient(proto, geo).T, ga)
+        dcross = np.zeros((live.size, 2))
+        edge = np.flatnonzero(~is_v[live])
+        if edge.size:
+            dcross[edge] = _cross_slope(proto, z1[live[edge]], z2[live[edge]], x1[edge], x2[edge], a_idx[live[edge]])
+        v = is_v[live]
+        ok, step = _newton_step(ma, ga, np.where(v, mb, cross), np.where(v[:, None], gb, dcross))
+        X[live] -= step
+        # converged (a step below 1e-13) or broken down (no finite Newton step): leave the loop
+        live = live[ok & (np.abs(step).max(axis=1) > 1e-13)]
+    geo = mesh_geometry(proto.mesh.unchecked(z1, z2), 1.0, X[:, 0], X[:, 1], proto.full)
+    M, G = proto.margins(geo), proto.margin_gradients(geo)
+    return _best_candidate(proto, geo, M, G, _piece_gradient(proto, geo).T, X, a_idx, b_idx, is_v, pair, Z1.size,
+                           bounds)
+
+
+def _kkt_candidates(proto: Problem, Z1, Z2, start, h_node: float):
+    """The (candidate, pair) systems: every pair of checks a < b (a vertex) and every single check a (an
+    edge) among those whose boundary lies within _REACH node spacings of the pair's start node; returns
+    a, b (0 for an edge), whether each is a vertex, and its pair."""
     K = len(proto.checks)
     geo0 = mesh_geometry(proto.mesh.unchecked(Z1.astype(float), Z2.astype(float)), 1.0, start[:, 0], start[:, 1],
                          proto.full)
@@ -91,54 +124,42 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, h_node: float, iters: int = 10, 
     take = near[combos[:, 0]] & np.where(combos[:, 1:2] >= 0, near[np.maximum(combos[:, 1], 0)], True)
     cand, pair = np.nonzero(take)                   # rows: (candidate, pair)
     a_idx, b_idx = combos[cand, 0], combos[cand, 1]
-    is_v = b_idx >= 0
-    b_idx = np.maximum(b_idx, 0)
-    z1, z2 = Z1[pair].astype(float), Z2[pair].astype(float)
-    X = start[pair].copy()
-    live = np.arange(pair.size)
-    h = 1e-6
+    return a_idx, np.maximum(b_idx, 0), b_idx >= 0, pair
 
-    def pgrad(geo):
-        return proto.piece_gradients(geo)[0]
 
-    for _ in range(iters):
-        if not live.size:
-            break
-        x1, x2, r = X[live, 0], X[live, 1], np.arange(live.size)
-        geo = mesh_geometry(proto.mesh.unchecked(z1[live], z2[live]), 1.0, x1, x2, proto.full)
-        M, G = proto.margins(geo), proto.margin_gradients(geo)
-        ma, ga = M[a_idx[live], r], G[a_idx[live], :, r]
-        mb, gb = M[b_idx[live], r], G[b_idx[live], :, r]
-        gp = pgrad(geo).T                               # (n, 2)
-        # the stationarity residual of edge candidates and its derivative by central differences
-        cross = gp[:, 0] * ga[:, 1] - gp[:, 1] * ga[:, 0]
-        dcross = np.zeros((live.size, 2))
-        edge = np.flatnonzero(~is_v[live])
-        if edge.size:
-            e_mesh, e_rows = proto.mesh.unchecked(z1[live[edge]], z2[live[edge]]), np.arange(edge.size)
-            for j, (dx1, dx2) in enumerate(((h, 0.0), (0.0, h))):
-                side = []
-                for sgn in (1.0, -1.0):
-                    geo_s = mesh_geometry(e_mesh, 1.0, x1[edge] + sgn * dx1, x2[edge] + sgn * dx2, proto.full)
-                    G_s = proto.margin_gradients(geo_s)[a_idx[live[edge]], :, e_rows]
-                    P_s = pgrad(geo_s).T
-                    side.append(P_s[:, 0] * G_s[:, 1] - P_s[:, 1] * G_s[:, 0])
-                dcross[edge, j] = (side[0] - side[1]) / (2 * h)
-        v = is_v[live]
-        r2 = np.where(v, mb, cross)
-        j2 = np.where(v[:, None], gb, dcross)
-        det = ga[:, 0] * j2[:, 1] - ga[:, 1] * j2[:, 0]
-        ok = np.isfinite(det) & (np.abs(det) > 1e-14) & np.isfinite(ma) & np.isfinite(r2)
-        sdet = np.where(ok, det, 1.0)
-        d1 = np.where(ok, (ma * j2[:, 1] - r2 * ga[:, 1]) / sdet, 0.0)
-        d2 = np.where(ok, (r2 * ga[:, 0] - ma * j2[:, 0]) / sdet, 0.0)
-        step = np.clip(np.column_stack([d1, d2]), -0.2, 0.2)
-        X[live] -= step
-        # converged (a step below 1e-13) or broken down (no finite Newton step): leave the loop
-        live = live[ok & (np.abs(step).max(axis=1) > 1e-13)]
-    geo = mesh_geometry(proto.mesh.unchecked(z1, z2), 1.0, X[:, 0], X[:, 1], proto.full)
-    M, G = proto.margins(geo), proto.margin_gradients(geo)
-    return _best_candidate(proto, geo, M, G, pgrad(geo).T, X, a_idx, b_idx, is_v, pair, Z1.size, bounds)
+def _piece_gradient(proto: Problem, geo):
+    """∇f of the (one-piece) objective, shape (2, n)."""
+    return proto.piece_gradients(geo)[0]
+
+
+def _cross(gp, ga):
+    """∇f × ∇m_a, rows of (n, 2) gradients: zero where ∇f is normal to the check's boundary."""
+    return gp[:, 0] * ga[:, 1] - gp[:, 1] * ga[:, 0]
+
+
+def _cross_slope(proto: Problem, z1, z2, x1, x2, a_rows, h: float = 1e-6):
+    """∂(∇f × ∇m_a)/∂(x1, x2) of edge candidates, (n, 2), by central differences of the analytic gradients."""
+    e_mesh, e_rows = proto.mesh.unchecked(z1, z2), np.arange(z1.size)
+    out = np.empty((z1.size, 2))
+    for j, (dx1, dx2) in enumerate(((h, 0.0), (0.0, h))):
+        side = []
+        for sgn in (1.0, -1.0):
+            geo_s = mesh_geometry(e_mesh, 1.0, x1 + sgn * dx1, x2 + sgn * dx2, proto.full)
+            G_s = proto.margin_gradients(geo_s)[a_rows, :, e_rows]
+            side.append(_cross(_piece_gradient(proto, geo_s).T, G_s))
+        out[:, j] = (side[0] - side[1]) / (2 * h)
+    return out
+
+
+def _newton_step(ma, ga, r2, j2):
+    """Whether each 2×2 Newton system (m_a, r2) with rows ∇m_a, j2 has a finite solution, and the step
+    by Cramer's rule, each component clipped to ±0.2 (0 where it has none)."""
+    det = ga[:, 0] * j2[:, 1] - ga[:, 1] * j2[:, 0]
+    ok = np.isfinite(det) & (np.abs(det) > 1e-14) & np.isfinite(ma) & np.isfinite(r2)
+    sdet = np.where(ok, det, 1.0)
+    d1 = np.where(ok, (ma * j2[:, 1] - r2 * ga[:, 1]) / sdet, 0.0)
+    d2 = np.where(ok, (r2 * ga[:, 0] - ma * j2[:, 0]) / sdet, 0.0)
+    return ok, np.clip(np.column_stack([d1, d2]), -0.2, 0.2)
 
 
 def _best_candidate(proto, geo, M, G, gp, X, a_idx, b_idx, is_v, pair, B, bounds=None):

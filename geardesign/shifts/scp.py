@@ -18,6 +18,8 @@ _SCP_CACHE: dict = {}
 # on the normalised-margin subproblems (cvxpy then warned "Solution may be inaccurate" on ~1 in 20 of
 # them); 1e-10 is reached and is still far below the method's tolerance in x (1e-7)
 _SUBPROBLEM_TOL = 1e-10
+# weight of the checks' violation against the objective in the merit that accepts or refuses a step
+_PENALTY = 10.0
 
 
 def _scp_problem(P: int, K: int, nv: int):
@@ -59,58 +61,34 @@ def _curvature(ev: Evaluator, v, lam_p, lam_m, h=1e-5):
 
 
 def solve_convex(prob: Problem, v0, bounds, tol, maxit=100):
-    import cvxpy as cp
-
+    """SQP in a trust region from ``v0``: each step solves the convex subproblem (:func:`_scp_problem`),
+    is kept when the merit (:func:`_merit`) gains at least a tenth of the predicted gain, and then sets
+    the curvature from the subproblem's duals. Returns the point, the iterations, the checks'
+    multipliers and the evaluator (with the count of inaccurately solved subproblems)."""
     nv = prob.nvar
     ev = Evaluator(prob)
     P, M, GP, GM = ev(v0)
-    problem, d, t, Pp, GPp, Mp, GMp, lo, hi, Lp, cons = _scp_problem(P.size, M.size, nv)
-    blo, bhi = bounds
-    if nv == 1:
-        box_lo, box_hi = (np.array([v]) for v in prob.x1_on_line(blo, bhi))
-    else:
-        box_lo, box_hi = np.array([blo, blo]), np.array([bhi, bhi])
+    sub = _scp_problem(P.size, M.size, nv)
+    cons = sub[-1]
+    box_lo, box_hi = _window(prob, bounds)
     v = np.asarray(v0, dtype=float)
     radius = 0.25
-    penalty = 10.0
-
-    def merit(P, M):
-        return P.min() - penalty * np.clip(-M, 0, None).sum()
-
     lam_p = np.full(P.size, 1.0 / P.size)
     lam_m = np.zeros(M.size)
     L = np.eye(nv) * 1e-4
     nit = inaccurate = 0
     for nit in range(1, maxit + 1):
-        Pp.value, GPp.value, Lp.value = P, GP, L
-        if M.size:
-            Mp.value, GMp.value = M, GM
-        lo.value = np.maximum(-radius, box_lo - v)
-        hi.value = np.minimum(radius, box_hi - v)
-        with warnings.catch_warnings():
-            # read from problem.status below and reported in the result's message, not on stderr
-            warnings.filterwarnings("ignore", message="Solution may be inaccurate")
-            problem.solve(solver=cp.CLARABEL, warm_start=False, tol_gap_abs=_SUBPROBLEM_TOL, tol_gap_rel=_SUBPROBLEM_TOL,
-                          tol_feas=_SUBPROBLEM_TOL)
-        inaccurate += problem.status == "optimal_inaccurate"
-        if d.value is None:
+        step, value, rough = _subproblem_step(sub, P, M, GP, GM, L, np.maximum(-radius, box_lo - v),
+                                              np.minimum(radius, box_hi - v))
+        inaccurate += rough
+        if step is None:
             radius /= 4
             if radius < tol:
                 break
             continue
-        step = np.asarray(d.value, dtype=float)
-        predicted = float(problem.value) - merit(P, M)
-        P1, M1, GP1, GM1 = ev(v + step)
-        actual = merit(P1, M1) - merit(P, M)
-        if actual < 0.1 * predicted and M.size and (M1 < 0).any():
-            # second-order correction (Maratos effect): pull the violated checks back to zero
-            bad = M1 < 0
-            corr = -np.linalg.pinv(GM[bad]) @ M1[bad]
-            P2, M2, GP2, GM2 = ev(v + step + corr)
-            if merit(P2, M2) - merit(P, M) >= 0.1 * predicted:
-                step = step + corr
-                P1, M1, GP1, GM1 = P2, M2, GP2, GM2
-                actual = merit(P1, M1) - merit(P, M)
+        now = _merit(P, M)
+        predicted = value - now
+        step, (P1, M1, GP1, GM1), actual = _corrected(ev, v, step, M, GM, now, predicted, ev(v + step))
         if predicted <= 1e-15 or actual >= 0.1 * predicted:
             v, P, M, GP, GM = v + step, P1, M1, GP1, GM1
             lam_p = np.asarray(cons[0].dual_value, dtype=float)
@@ -127,6 +105,57 @@ def solve_convex(prob: Problem, v0, bounds, tol, maxit=100):
                 break
     ev.inaccurate = inaccurate
     return v, nit, lam_m, ev
+
+
+def _merit(P, M):
+    """The merit of a point: its smallest objective piece less _PENALTY times the checks' violation."""
+    return P.min() - _PENALTY * np.clip(-M, 0, None).sum()
+
+
+def _window(prob: Problem, bounds):
+    """The window (lo, hi) in the solver's variables: x1 along the line of fixed x_Σ, or the (x1, x2) box."""
+    blo, bhi = bounds
+    if prob.nvar == 1:
+        box_lo, box_hi = (np.array([v]) for v in prob.x1_on_line(blo, bhi))
+        return box_lo, box_hi
+    return np.array([blo, blo]), np.array([bhi, bhi])
+
+
+def _subproblem_step(sub, P, M, GP, GM, L, lo_d, hi_d):
+    """The subproblem's step d within lo_d <= d <= hi_d (None where the solver found none), its optimal
+    value, and whether the solver called its solution inaccurate."""
+    import cvxpy as cp
+
+    problem, d, _, Pp, GPp, Mp, GMp, lo, hi, Lp, _ = sub
+    Pp.value, GPp.value, Lp.value = P, GP, L
+    if M.size:
+        Mp.value, GMp.value = M, GM
+    lo.value = lo_d
+    hi.value = hi_d
+    with warnings.catch_warnings():
+        # read from problem.status below and reported in the result's message, not on stderr
+        warnings.filterwarnings("ignore", message="Solution may be inaccurate")
+        problem.solve(solver=cp.CLARABEL, warm_start=False, tol_gap_abs=_SUBPROBLEM_TOL, tol_gap_rel=_SUBPROBLEM_TOL,
+                      tol_feas=_SUBPROBLEM_TOL)
+    rough = problem.status == "optimal_inaccurate"
+    if d.value is None:
+        return None, None, rough
+    return np.asarray(d.value, dtype=float), float(problem.value), rough
+
+
+def _corrected(ev: Evaluator, v, step, M, GM, now, predicted, trial):
+    """The step, the evaluation at its end and the merit's gain, with a second-order correction where the
+    plain step gains less than a tenth of the prediction and leaves checks violated."""
+    P1, M1, GP1, GM1 = trial
+    actual = _merit(P1, M1) - now
+    if actual < 0.1 * predicted and M.size and (M1 < 0).any():
+        # second-order correction (Maratos effect): pull the violated checks back to zero
+        bad = M1 < 0
+        corr = -np.linalg.pinv(GM[bad]) @ M1[bad]
+        P2, M2, GP2, GM2 = ev(v + step + corr)
+        if _merit(P2, M2) - now >= 0.1 * predicted:
+            return step + corr, (P2, M2, GP2, GM2), _merit(P2, M2) - now
+    return step, trial, actual
 
 
 def solve(prob: Problem, starts: list, bounds, tol: float) -> Outcome:
