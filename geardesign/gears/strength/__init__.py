@@ -5,13 +5,25 @@ One function per formula in :mod:`.factors` (ISO 6336-1), :mod:`.contact` and :m
 vectorised, in :func:`pair_strength`; one pair as a :class:`StrengthResult` with :func:`strength`; each mesh of
 a planetary set with :func:`planetary_strength`.
 """
-from .chain import GIVEN_FACTORS, STRENGTH_FIELDS, pair_strength, strength
-from .defaults import MIN_SAFETY_SOURCE, S_FMIN, S_HMIN
-from .load import Load
-from .materials import MATERIAL_KINDS, Material, material, material_names
-from .planetary_strength import planetary_strength
-from .result import StrengthResult
+import importlib
 
-__all__ = ["Load", "Material", "material", "material_names", "MATERIAL_KINDS", "pair_strength", "strength",
-           "planetary_strength", "StrengthResult", "GIVEN_FACTORS", "STRENGTH_FIELDS", "S_HMIN", "S_FMIN",
-           "MIN_SAFETY_SOURCE"]
+# public name -> module; loaded on first use (PEP 562), so that the checks' defaults
+# (geardesign.gears.strength.defaults) load without the chain and its materials catalog (pandas)
+_NAMES = {"GIVEN_FACTORS": "chain", "STRENGTH_FIELDS": "chain", "pair_strength": "chain", "strength": "chain",
+          "MIN_SAFETY_SOURCE": "defaults", "S_FMIN": "defaults", "S_HMIN": "defaults", "Load": "load",
+          "MATERIAL_KINDS": "materials", "Material": "materials", "material": "materials",
+          "material_names": "materials", "planetary_strength": "planetary_strength", "StrengthResult": "result"}
+
+__all__ = sorted(_NAMES)
+
+
+def __getattr__(name):
+    if name not in _NAMES:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{_NAMES[name]}", __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))
