@@ -221,7 +221,11 @@ def test_python_blocks_run(path, checkout, monkeypatch):
 
     cwd, _ = checkout(path)
     monkeypatch.chdir(cwd)
-    globs = {"__name__": "__doctest__"}
+    # a module object in sys.modules: a documented dataclass looks its module up there
+    import types
+    module = types.ModuleType("__doctest__")
+    monkeypatch.setitem(sys.modules, "__doctest__", module)
+    globs = module.__dict__
     parser = doctest.DocTestParser()
     try:
         for info, content, line, skip in _fences(path):
