@@ -201,6 +201,15 @@ class GearPair:
                     else "(unreachable: housing a_w <= a cos alpha)"))
         return _checks.CenterDistance(limit=a_housing, tol_mm=housing_tol_mm, label=label)
 
+    def report(self, path, overwrite: bool = False, **limits):
+        """Write the pair's one-page calculation report (self-contained, printable HTML: inputs, geometry
+        gear 1 | gear 2, checks verdict first, blocking contour, meshing drawing) to ``path``: the same as
+        :func:`geardesign.pair_report`. The one call of this layer into a higher one (the report draws the
+        contour and the mesh), made on call so that importing the gears never loads the scene layer."""
+        from ..scene.html import pair_report
+
+        return pair_report(self, path, overwrite=overwrite, **limits)
+
     def ok(self, **limits) -> bool:
         """True when every check of :meth:`checks` holds."""
         return bool(self.checks(**limits)["ok"].all())

@@ -30,7 +30,7 @@ def _khk():
 @pytest.fixture(scope="module")
 def khk_report(tmp_path_factory):
     path = tmp_path_factory.mktemp("report") / "khk.html"
-    gd.pair_report(gd.GearPair(3, 12, 24, 0.6, 0.36), path)
+    gd.GearPair(3, 12, 24, 0.6, 0.36).report(path)      # the method the issue names; gd.pair_report alike
     return path
 
 
