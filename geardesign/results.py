@@ -18,9 +18,10 @@ None), so ``json.dumps(result.to_dict())`` always works; ``to_json`` does just t
 """
 from __future__ import annotations
 
+import html
 import json
 import math
-from dataclasses import fields
+from dataclasses import MISSING, fields
 
 import numpy as np
 
@@ -33,8 +34,6 @@ HTML_TABLE_ROWS = 20       # rows of a table an HTML view shows
 def compact_repr(obj) -> str:
     """``Name(field=value, ...)`` with only the fields that differ from their defaults, arrays and
     tables as their shape: a dataclass's one-line repr that never dumps data."""
-    from dataclasses import MISSING
-
     parts = []
     for f in fields(obj):
         if not f.repr or f.name.startswith("_"):
@@ -67,8 +66,6 @@ def short_value(v) -> str:
 
 def frame_html(frame, title: str = "", rows: int = HTML_TABLE_ROWS) -> str:
     """An HTML view: a title line and the first ``rows`` rows of a table."""
-    import html
-
     head = f"<p><b>{html.escape(title)}</b></p>" if title else ""
     if frame is None:
         return head
@@ -126,8 +123,6 @@ class Result:
             table = self.to_frame()
         except NotImplementedError:
             table = None
-        import html
-
         return f"<pre>{html.escape(repr(self))}</pre>" + frame_html(table)
 
     def to_frame(self):

@@ -17,7 +17,7 @@ SUBCOMMANDS = ("pair", "measure", "mesh", "shift", "atlas", "teeth", "planetary"
 
 
 def build_parser():
-    import argparse
+    import argparse   # here and in _main: inside main's Ctrl-C handler (see the note above)
     import importlib
 
     parser = argparse.ArgumentParser(
@@ -47,7 +47,7 @@ def main(argv=None) -> int:
 
 
 def _main(argv) -> int:
-    import warnings
+    import warnings   # here: inside main's Ctrl-C handler (see the note above)
 
     import numpy as np
 

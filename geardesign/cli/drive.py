@@ -6,7 +6,13 @@ check holds, 1 when the drive fails (the output names the stage and checks), 2 o
 """
 from __future__ import annotations
 
+import sys
+
 from ..errors import GearDesignError
+from ..files import check_output_path, write_file_atomic
+from ..scene.drive import compute_drive
+from ..scene.html import drive_report
+from ..scene.load import load_scene
 from .options import add_cluster_args, add_output_file, cluster_from_args
 from .output import Progress, add_json_flag, print_frame, print_json, print_wrapped
 
@@ -28,10 +34,6 @@ def add_parser(subparsers):
 
 
 def run(args) -> int:
-    from ..files import check_output_path, write_file_atomic
-    from ..scene.drive import compute_drive
-    from ..scene.load import load_scene
-
     scene = load_scene(args.scene)
     if "drive" not in scene:
         raise GearDesignError(f"{args.scene}: no [drive] section (this command runs only that section)")
@@ -56,9 +58,6 @@ def run(args) -> int:
         finally:
             plt.close(ax.figure)
     if args.report and an is not None:
-        import sys
-
-        from ..scene.html import drive_report
         drive_report(an, args.report, overwrite=args.overwrite)
         print(f"report written to {args.report}", file=sys.stderr)
     ok = (opt.success if opt is not None else an.success)

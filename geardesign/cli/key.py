@@ -6,6 +6,7 @@ given key does not carry the torque), 2 on bad input.
 from __future__ import annotations
 
 from ..drives import key
+from ..errors import GearDesignError
 from .output import add_json_flag, print_json, print_wrapped
 
 
@@ -34,8 +35,6 @@ def add_parser(subparsers):
 
 
 def run(args) -> int:
-    from ..errors import GearDesignError
-
     if args.length is not None:
         cap = key.capacity(args.d, args.length, args.crush, args.shear, end=args.end, n_keys=args.keys or 1)
         ok = args.torque is None or cap["torque_nm"] >= args.torque

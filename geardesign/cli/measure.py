@@ -7,6 +7,9 @@ flagged, 2 on bad input.
 """
 from __future__ import annotations
 
+from ..errors import GearDesignError
+from ..gears.measurement import tooth_measurements
+from ..gears.tolerances import flank_tolerances
 from .output import add_json_flag, print_frame, print_json
 from .options import add_rack_args, rack_from_args
 
@@ -53,17 +56,12 @@ def add_parser(sub):
 
 
 def _allowance(values):
-    from ..errors import GearDesignError
-
     if len(values) > 2:
         raise GearDesignError(f"--allowance takes A_sne and optionally A_sni, got {len(values)} values")
     return values[0] if len(values) == 1 else (values[0], values[1])
 
 
 def run(args) -> int:
-    from ..gears.measurement import tooth_measurements
-    from ..gears.tolerances import flank_tolerances
-
     t = tooth_measurements(args.module, args.z, args.x, beta_deg=args.beta, internal=args.internal,
                            rack=rack_from_args(args), k=args.k, ball_mm=args.ball, pin_mm=args.pin,
                            thickness_allowance_mm=_allowance(args.allowance), face_width_mm=args.face_width_mm,

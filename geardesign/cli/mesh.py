@@ -5,6 +5,10 @@ from __future__ import annotations
 import os
 
 from ..errors import GearDesignError
+from ..files import all_or_nothing, check_output_path, write_file_atomic
+from ..gears.ring import ShaperCutter
+from ..profiles import mesh as profiles_mesh
+from ..profiles.drawing import contact_points, line_of_action_diagrams, plot_diagrams, plot_mesh
 from .output import add_json_flag, check_details, print_json, print_verdict, print_wrapped
 from .pair import add_pair_args, pair_from_args
 
@@ -44,8 +48,6 @@ def add_parser(sub):
 
 def _targets(args) -> dict:
     """Every requested output file, checked before any work (suffix, folder, overwrite, no repeats)."""
-    from ..files import check_output_path
-
     targets = {}
     for flag, (suffix, _) in OUTPUTS.items():
         value = getattr(args, flag[2:])
@@ -63,7 +65,6 @@ def _targets(args) -> dict:
 def _save_figure(ax, path) -> None:
     import matplotlib.pyplot as plt
 
-    from ..files import write_file_atomic
     try:
         write_file_atomic(path, lambda tmp: ax.figure.savefig(tmp, dpi=120, bbox_inches="tight", format="png"))
     finally:
@@ -71,8 +72,6 @@ def _save_figure(ax, path) -> None:
 
 
 def _cutter(args, pair):
-    from ..gears.ring import ShaperCutter
-
     if not pair.internal:
         if args.cutter_teeth is not None or args.cutter_shift != 0.0:
             raise GearDesignError("--cutter-teeth and --cutter-shift describe a ring's shaper cutter: give --internal")
@@ -84,14 +83,11 @@ def run(args) -> int:
     targets = _targets(args)
     pair, _ = pair_from_args(args)
     cutter = _cutter(args, pair)
-    from ..profiles.drawing import contact_points, line_of_action_diagrams, plot_diagrams, plot_mesh
-    from ..profiles.mesh import export_profiles
 
     geo = pair._geo
     if "--plot" in targets or "--diagrams" in targets:
         import matplotlib
         matplotlib.use("Agg")
-    from ..files import all_or_nothing
     with all_or_nothing():      # every file of the command, or none
         if "--plot" in targets:
             _save_figure(plot_mesh(pair, roll_deg=args.roll_deg, cutter=cutter), targets["--plot"])
@@ -99,7 +95,8 @@ def run(args) -> int:
             _save_figure(plot_diagrams(pair)[0], targets["--diagrams"])
         for flag in ("--svg", "--dxf", "--csv"):
             if flag in targets:
-                export_profiles(pair, targets[flag], overwrite=args.overwrite, roll_deg=args.roll_deg, cutter=cutter)
+                profiles_mesh.export_profiles(pair, targets[flag], overwrite=args.overwrite, roll_deg=args.roll_deg,
+                                              cutter=cutter)
 
     c = contact_points(geo)
     d = line_of_action_diagrams(geo, n=2, s_mm=[0.5 * c["g"]])

@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 import shutil
 import sys
+import textwrap
 
 import pandas as pd
 
@@ -49,8 +50,6 @@ def print_frame(frame: pd.DataFrame, title: str | None = None, float_format="{:.
 
 def print_wrapped(text: str, indent: str = "  ") -> None:
     """A long line wrapped to the terminal's width, continuation lines indented."""
-    import textwrap
-
     print(textwrap.fill(text, width=max(terminal_width(), 40), subsequent_indent=indent,
                         break_on_hyphens=False))
 

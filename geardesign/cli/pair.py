@@ -4,7 +4,10 @@ from __future__ import annotations
 import sys
 
 from ..errors import GearDesignError
+from ..files import check_output_path
 from ..gears.pair import GearPair
+from ..scene.html import pair_report
+from .measure import ROWS
 from .options import add_check_args, add_output_file, add_rack_args, checks_from_args, rack_from_args
 from .output import add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict
 
@@ -77,8 +80,6 @@ def _measurements(pair, as_json: bool):
     """Both gears' measuring sizes: records for JSON, else a printed table (``--measurements``)."""
     import pandas as pd
 
-    from .measure import ROWS
-
     gears = pair.measurements()
     if as_json:
         return [g.to_dict() for g in gears]
@@ -104,11 +105,9 @@ def describe(pair, shorten: bool) -> str:
 
 def run(args) -> int:
     if args.report:
-        from ..files import check_output_path
         check_output_path(args.report, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--report")
     pair, housing = pair_from_args(args)
     if args.report:
-        from ..scene.html import pair_report
         pair_report(pair, args.report, overwrite=args.overwrite, eps_alpha_min=args.eps_alpha_min,
                     sa_min=args.sa_min, housing_a_w=housing, eps_gamma_min=args.eps_gamma_min)
         print(f"report written to {args.report}", file=sys.stderr)   # stderr: --json keeps stdout pure

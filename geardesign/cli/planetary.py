@@ -3,6 +3,9 @@ counts for a ratio."""
 from __future__ import annotations
 
 from ..errors import GearDesignError
+from ..files import all_or_nothing, check_output_path, write_file_atomic
+from ..gears.planetary import ARRANGEMENTS, DEFAULT_NEIGHBOUR_CLEARANCE, PlanetarySet
+from ..profiles.planetary import plot_planetary
 from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args
 from .output import add_json_flag, print_frame, print_json, print_wrapped
 from .options import add_check_args, checks_from_args
@@ -10,8 +13,6 @@ from .options import add_rack_args, rack_from_args
 
 
 def add_parser(sub):
-    from ..gears.planetary import ARRANGEMENTS, DEFAULT_NEIGHBOUR_CLEARANCE
-
     p = sub.add_parser("planetary", help="planetary set: coaxial shifts of sun, planets and ring; tooth counts",
                        description="A simple planetary set (sun, N planets, ring). With --x-sun/--x-planet: "
                                    "check those shifts (the ring's from coaxiality unless --x-ring). Without: the "
@@ -70,7 +71,6 @@ def _range(text: str) -> tuple[int, int]:
 def _save(path, ax, overwrite):
     import matplotlib.pyplot as plt
 
-    from ..files import write_file_atomic
 
     try:
         write_file_atomic(path, lambda tmp: ax.figure.savefig(tmp, dpi=120, bbox_inches="tight", format="png"))
@@ -79,8 +79,6 @@ def _save(path, ax, overwrite):
 
 
 def run(args) -> int:
-    from ..files import check_output_path
-
     if args.ratio is not None and (args.plot or args.drawing):
         raise GearDesignError("--plot and --drawing draw one set: give its tooth counts (--z-sun, --z-planet, "
                               "--z-ring) instead of --ratio, e.g. those of the row --ratio chooses")
@@ -113,22 +111,19 @@ def _set_kwargs(args) -> dict:
 
 
 def _check(args) -> int:
-    from ..gears.planetary import PlanetarySet
 
     sizes = (args.module, args.z_sun, args.z_planet, args.z_ring, args.planets)
     s = (PlanetarySet.coaxial(*sizes, args.x_sun, args.x_planet, **_set_kwargs(args)) if args.x_ring is None
          else PlanetarySet(*sizes, args.x_sun, args.x_planet, args.x_ring, **_set_kwargs(args)))
     table = s.checks(_checks(args))
     ok = bool(table["ok"].all())
-    from ..files import all_or_nothing
     with all_or_nothing():      # every file of the command, or none
         if args.plot:           # the region, the given shifts marked on it
-            from ..shifts.planetary import planetary_region
+            from ..shifts.planetary import planetary_region   # here: the solvers load scipy
             reg = planetary_region(*sizes[1:], sizes[0], checks=_checks(args), rack=rack_from_args(args),
                                    beta_deg=args.beta)
             _save(args.plot, reg.plot(proposed=(s.x_sun, s.x_planet)), args.overwrite)
         if args.drawing:
-            from ..profiles.planetary import plot_planetary
             _save(args.drawing, plot_planetary(s), args.overwrite)
     if args.json:
         print_json({"x_sun": s.x_sun, "x_planet": s.x_planet, "x_ring": s.x_ring, "a_w": s.a_w,
@@ -144,8 +139,7 @@ def _check(args) -> int:
 
 
 def _optimize(args) -> int:
-    from ..gears.planetary import PlanetarySet
-    from ..shifts.planetary import optimize_planetary_shifts, planetary_region
+    from ..shifts.planetary import optimize_planetary_shifts, planetary_region   # here: the solvers load scipy
 
     kw = dict(rack=rack_from_args(args), beta_deg=args.beta)
     r = optimize_planetary_shifts(args.z_sun, args.z_planet, args.z_ring, args.planets, args.module,
@@ -153,7 +147,6 @@ def _optimize(args) -> int:
                                   method=args.method, arrangement=args.arrangement, **kw)
     # every file of the command, or none: the drawing needs a feasible set, so without one nothing is written
     write = (args.plot or args.drawing or args.html) and (r.success or not args.drawing)
-    from ..files import all_or_nothing
     with all_or_nothing():
         if (args.plot or args.html) and write:
             reg = planetary_region(args.z_sun, args.z_planet, args.z_ring, args.planets, args.module,
@@ -165,7 +158,6 @@ def _optimize(args) -> int:
             if args.html:
                 reg.to_html(args.html, overwrite=args.overwrite, **marks)
         if args.drawing and write:
-            from ..profiles.planetary import plot_planetary
             s = PlanetarySet(args.module, args.z_sun, args.z_planet, args.z_ring, args.planets, r.x_sun, r.x_planet,
                              r.x_ring, arrangement=args.arrangement, **kw)
             _save(args.drawing, plot_planetary(s), args.overwrite)
@@ -185,7 +177,7 @@ def _optimize(args) -> int:
 
 
 def _teeth(args) -> int:
-    from ..shifts.planetary_teeth import DEFAULT_OBJECTIVE, select_planetary_teeth
+    from ..shifts.planetary_teeth import DEFAULT_OBJECTIVE, select_planetary_teeth   # here: it loads scipy
 
     with cluster_from_args(args) as client:
         sel = select_planetary_teeth(args.ratio, args.planets, args.module, ratio_tol=args.ratio_tol,

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..scene import run_scene
 from .options import add_cluster_args, cluster_from_args
 from .output import Progress, add_json_flag, print_json
 
@@ -34,8 +35,6 @@ def add_parser(subparsers):
 
 
 def run(args) -> int:
-    from ..scene import run_scene
-
     Path(args.out).parent.mkdir(parents=True, exist_ok=True)
     bar = Progress(1, "scene")
     try:

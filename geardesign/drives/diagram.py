@@ -5,6 +5,8 @@ Each stage is drawn by its kind (:meth:`~geardesign.drives.stage_kinds.StageKind
 :class:`Canvas`; this module draws the rest: the input block, the shafts, the keys and the title."""
 from __future__ import annotations
 
+from .stage_kinds import kind_named
+
 __all__ = ["plot_drive", "Canvas"]
 
 _INPUT_COLOR = "#c7e9c0"
@@ -36,8 +38,6 @@ class Canvas:
 
 def _stages(canvas, analysis, x0: float) -> list:
     """Each stage by its kind, its label above and its ratio below; the x of every shaft."""
-    from .stage_kinds import kind_named
-
     ax, y0 = canvas.ax, canvas.y0
     xs = [x0]
     for k_st, st in enumerate(analysis.stages):
@@ -77,8 +77,6 @@ def plot_drive(analysis, ax=None):
     vertical shaft labelled with its n [rpm] and T [N·m]; a keyed hub shows as a black bar with its key.
     """
     import matplotlib.pyplot as plt
-
-    from .stage_kinds import kind_named
 
     stages = analysis.stages
     if ax is None:

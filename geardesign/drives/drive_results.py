@@ -6,7 +6,9 @@ from dataclasses import dataclass, field
 
 import pandas as pd
 
+from ..inline import html_view
 from ..results import Result, plain
+from .diagram import plot_drive
 
 __all__ = ["DriveAnalysis", "DriveOptimum"]
 
@@ -52,14 +54,12 @@ class DriveAnalysis(Result):
 
     def _repr_html_(self) -> str:
         """Jupyter's view: the text, and the drive's diagram inline."""
-        from ..inline import html_view
         return html_view(repr(self), lambda ax: self.plot(ax=ax), tables=(("checks", self.to_frame()),),
                          figsize=(2.2 + 2.4 * len(self.stages), 4.0),
                          alt="drive diagram")
 
     def plot(self, ax=None):
         """The drive's diagram (input, stages, shafts with n and T, keys): a matplotlib Axes."""
-        from .diagram import plot_drive
         return plot_drive(self, ax=ax)
 
 
@@ -98,7 +98,6 @@ class DriveOptimum(Result):
 
     def _repr_html_(self) -> str:
         """Jupyter's view: the text, and the best design's diagram inline (when there is one)."""
-        from ..inline import html_view
         draw = None if self.best is None else (lambda ax: self.best.plot(ax=ax))
         return html_view(repr(self), draw, figsize=(2.2 + 2.4 * len(self.best.stages if self.best else ()), 4.0),
                          alt="drive diagram")

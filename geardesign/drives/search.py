@@ -30,6 +30,7 @@ import pandas as pd
 
 from .. import parallel
 from ..errors import GearDesignError
+from . import key
 from .drive_results import DriveOptimum
 from .limits import CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX, MARGIN_TOL
 from .stage_kinds import StageFlow, kind_of
@@ -463,8 +464,6 @@ class Search:
 
 @lru_cache(maxsize=256)
 def _key_caps_cached(d, hub, crush, shear, end, max_keys):
-    from . import key
-
     sh = Shaft(d, hub, 0, allowable_crush_mpa=crush, allowable_shear_mpa=shear, end=end, max_keys=max_keys)
     sel = sh.select(1e-6)
     caps = {}

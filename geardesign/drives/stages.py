@@ -17,6 +17,8 @@ from functools import lru_cache
 import numpy as np
 
 from ..errors import GearDesignError
+from ..gears.geometry import require_module
+from ..gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
 from ..results import compact_repr
 from ..validate import _show, ndim, one_number, require_count, require_range
 
@@ -56,7 +58,7 @@ def disc_mass_kg(d_mm, width_mm):
 
 @lru_cache(maxsize=64)
 def _named_material(name: str):
-    from ..gears.strength import material
+    from ..gears.strength import material   # here: the materials catalog loads pandas
     return material(name)
 
 
@@ -159,9 +161,6 @@ class GearStage:
     __repr__ = compact_repr     # only what differs from the defaults
 
     def __post_init__(self):
-        from ..gears.geometry import require_module
-        from ..gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
-
         if self.m is not None:    # None: sized by the load (see the class docstring)
             object.__setattr__(self, "m", one_number("m (module)", require_module(self.m)))
         object.__setattr__(self, "efficiency", _efficiency(self.efficiency))
@@ -185,14 +184,14 @@ class GearStage:
         if self.checks is not None and not isinstance(self.checks, dict):
             raise GearDesignError(f"checks must be a dict of limits (eps_alpha_min, sa_min, undercut, interference, "
                                   f"eps_gamma_min), got {type(self.checks).__name__}")
-        from ..gears.checks import resolve_checks
+        from ..gears.checks import resolve_checks   # here: the check registry loads pandas
         resolve_checks(self.checks)    # unknown keys are refused here, not mid-search
         if self.material is not None:   # an unknown material is refused here, not mid-search
             stage_material(self.material)
         if self.x1 is not None and self.m is not None:
             self.fixed_pair()          # a fixed pair that cannot be built is refused here
         if self.shift_objective is not None:
-            from ..shifts.objectives import OBJECTIVES
+            from ..shifts.objectives import OBJECTIVES   # here: the shifts layer loads pandas
             if self.shift_objective not in OBJECTIVES:
                 raise GearDesignError(f"shift_objective must be one of {', '.join(OBJECTIVES)}, "
                                       f"got {self.shift_objective!r}")
@@ -231,7 +230,7 @@ class GearStage:
 
     def fixed_pair(self):
         """The GearPair of fixed tooth counts and shifts."""
-        from ..gears.pair import GearPair
+        from ..gears.pair import GearPair   # here: the pair's checks load pandas
         return GearPair(self.m, self.z1, self.z2, self.x1, self.x2, beta_deg=self.beta_deg,
                         face_width_mm=self.face_width_mm)
 
@@ -271,7 +270,7 @@ class ChainStage:
     __repr__ = compact_repr     # only what differs from the defaults
 
     def __post_init__(self):
-        from .chain.inputs import RATIO_RANGE, validate_inputs
+        from .chain.inputs import RATIO_RANGE, validate_inputs   # here: the chain package loads pandas
 
         object.__setattr__(self, "efficiency", _efficiency(self.efficiency))
         object.__setattr__(self, "name", _name(self.name, "chain"))
@@ -285,7 +284,7 @@ class ChainStage:
                               self.center_distance_mm, self.objective, self.method, self.sag_factor, self.z2_max, 40.0)
         object.__setattr__(self, "_inputs", inp)
         if self.z2 is not None:
-            from .chain.inputs import Z1_RANGE
+            from .chain.inputs import Z1_RANGE   # here: the chain package loads pandas
             require_count("z2", self.z2, Z1_RANGE[0], self.z2_max)
             if self.z1 is None:
                 raise GearDesignError("a fixed z2 needs a fixed z1 (the chain stage's ratio is z2/z1)")
@@ -298,7 +297,7 @@ class ChainStage:
 
     def table(self):
         """The validated chain catalog (read once per file version)."""
-        from ..catalogs.tables import catalog_dir
+        from ..catalogs.tables import catalog_dir   # here: catalogs and the chain package load pandas
         from .chain.tables import load_chains
         return load_chains(self._inputs, catalog_dir())
 
@@ -313,7 +312,7 @@ class ChainStage:
     def pairs(self, ratio_lo: float, ratio_hi: float):
         """(z1, z2) sprocket teeth with z2/z1 in [ratio_lo, ratio_hi] ∩ ``ratio_range``; without a
         given z1, the odd counts 13 … max(29 − 2u, 13) of chain.design's rule for that u."""
-        from .chain.formulas import recommended_z1
+        from .chain.formulas import recommended_z1   # here: the chain package loads pandas
 
         lo, hi = max(ratio_lo, self.ratio_range[0]), min(ratio_hi, self.ratio_range[1])
         z1 = np.arange(13, 28, 2) if self.z1 is None else np.array([int(self.z1)])
@@ -355,7 +354,7 @@ class Shaft:
     __repr__ = compact_repr     # only what differs from the defaults
 
     def __post_init__(self):
-        from . import key
+        from . import key   # here: the key tables load pandas
 
         object.__setattr__(self, "at", require_count("at (shaft number)", self.at, 0, 64))
         object.__setattr__(self, "name", _name(self.name, f"shaft {self.at}"))
@@ -369,6 +368,6 @@ class Shaft:
 
     def select(self, torque_nm):
         """key.select for this hub at ``torque_nm`` [N·m]."""
-        from . import key
+        from . import key   # here: the key tables load pandas
         return key.select(self.d_mm, torque_nm, self.hub_length_mm, self.allowable_crush_mpa,
                           self.allowable_shear_mpa, self.end, self.max_keys)

@@ -31,10 +31,10 @@ import numpy as np
 from ..errors import GearDesignError
 from ..results import Result
 from ..validate import one_number, require_choice, require_range
-from .geometry import x_sum_from_center_distance
+from .geometry import min_center_distance, require_module, x_sum_from_center_distance
 from .involute import inv_from_tan
 from .measurement_formulas import generating_shift
-from .mesh import section_constants
+from .mesh import Mesh, section_constants
 from .rack import STANDARD_RACK, BasicRack
 
 __all__ = ["Backlash", "pair_backlash", "backlash_from_shifts", "x_sum_for_backlash", "allowances_for_backlash",
@@ -54,9 +54,6 @@ def backlash_from_shifts(m_n, z1, z2, x1, x2, a_mm, rack: BasicRack = STANDARD_R
     >>> abs(j["jt"]) < 1e-5
     True
     """
-    from .geometry import require_module
-    from .mesh import Mesh
-
     mesh = Mesh(z1, z2, rack, True, beta_deg, internal)
     m_n = require_module(m_n)
     x1, x2 = (require_range(n, v, -10.0, 10.0) for n, v in (("x1", x1), ("x2", x2)))
@@ -225,9 +222,6 @@ def x_sum_for_backlash(m, z1, z2, a_w, backlash_mm, kind: str = "jbn", rack: Bas
 
 def _checked(m, z1, z2, a_w, backlash_mm, rack, beta_deg, internal):
     """The inputs of :func:`x_sum_for_backlash`, each refused by name when out of range."""
-    from .geometry import min_center_distance, require_module
-    from .mesh import Mesh
-
     if not isinstance(rack, BasicRack):
         raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
     mesh = Mesh(z1, z2, rack, True, beta_deg, internal)
@@ -273,7 +267,7 @@ def allowances_for_backlash(pair, jbn_min_mm: float, center_distance_allowance_m
 def _gost_table():
     import pandas as pd
 
-    from ..catalogs.tables import catalog_dir
+    from ..catalogs.tables import catalog_dir   # here: the catalogs layer loads pandas
 
     with (catalog_dir() / "gost1643_backlash.csv").open("r", encoding="utf-8") as fh:
         return pd.read_csv(fh)

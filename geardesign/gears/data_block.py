@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from ..errors import GearDesignError
 from ..validate import ndim, one_number, require_choice, require_int, require_range
+from .measurement import pair_measurements
+from .tolerances import flank_tolerances
 
 __all__ = ["data_block", "data_block_lines", "HANDS"]
 
@@ -43,8 +45,6 @@ def data_block(pair, gear: int = 1, accuracy_class=None, *, helix_hand: str | No
     '23.8765 (-0.0470 / -0.0940)'
     """
     import pandas as pd
-
-    from .measurement import pair_measurements
 
     if not (type(gear) is int and gear in (1, 2)):
         raise GearDesignError(f"gear must be 1 or 2, got {gear!r}")
@@ -98,8 +98,6 @@ def _control_rows(t) -> list:
 
 def _tolerance_rows(pair, gear: int, accuracy_class) -> list:
     """Part 2 (cont.): the class's ISO 1328-1:2013 tolerances (the helix one with a face width of 4 mm or more)."""
-    from .tolerances import flank_tolerances
-
     if accuracy_class is None:
         return []
     geo = pair.geometry()

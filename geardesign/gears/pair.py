@@ -4,7 +4,7 @@ from __future__ import annotations
 import functools
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -226,12 +226,12 @@ class GearPair:
         """The measuring sizes of gear 1, gear 2 or (``gear=None``) both as a tuple
         (:func:`~geardesign.gears.measurement.tooth_measurements`, with this pair's module, shifts, rack, helix,
         tip circles, face width and ring); ``options`` go to it (k, ball_mm, pin_mm, thickness_allowance_mm, ...)."""
-        from .measurement import pair_measurements
+        from .measurement import pair_measurements   # here: loaded on first use, a pair is built without it
         return pair_measurements(self, gear, **options)
 
     def backlash(self, thickness_allowance1_mm=0.0, thickness_allowance2_mm=0.0, center_distance_allowance_mm=0.0):
         """Least and most backlash from the allowances (:func:`~geardesign.gears.backlash.pair_backlash`)."""
-        from .backlash import pair_backlash
+        from .backlash import pair_backlash   # here: loaded on first use, a pair is built without it
         return pair_backlash(self, thickness_allowance1_mm, thickness_allowance2_mm, center_distance_allowance_mm)
 
 # Names a user may reach for that belong elsewhere: the hint the error gives.
@@ -253,9 +253,7 @@ _dataclass_init = GearPair.__init__
 @functools.wraps(_dataclass_init)
 def _init_with_hints(self, *args, **kwargs):
     """The dataclass's __init__, with an unknown argument refused by name (and a hint where it belongs)."""
-    import dataclasses
-
-    known = {f.name for f in dataclasses.fields(GearPair) if f.init}
+    known = {f.name for f in fields(GearPair) if f.init}
     for name in kwargs:
         if name not in known:
             hint = _ARGUMENT_HINTS.get(name, "").format(value=kwargs[name])

@@ -137,7 +137,7 @@ def write_outlines(outlines, path, overwrite: bool = False, title: str = "", str
 
 def _block_lines(data_block) -> list:
     if hasattr(data_block, "itertuples"):
-        from ..gears.data_block import data_block_lines
+        from ..gears.data_block import data_block_lines   # here: the measuring chain loads only for a data block
         return data_block_lines(data_block)
     if not isinstance(data_block, (list, tuple)) or not all(isinstance(v, str) for v in data_block):
         raise GearDesignError("data_block must be the DataFrame of geardesign.gears.data_block.data_block or a "

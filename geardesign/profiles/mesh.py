@@ -15,11 +15,13 @@ toothed bore (``gear2``) inside its rim circle (``gear2_rim``).
 """
 from __future__ import annotations
 
+import html
 import math
 
 from ..errors import GearDesignError
 from ..validate import one_number, require_range
 from .export import turned, write_outlines
+from .ring import ring_profile
 from .tooth import tooth_profile, transverse_rack
 
 __all__ = ["pair_profiles", "pair_outlines", "export_profiles", "transverse_rack"]
@@ -41,7 +43,6 @@ class PairProfiles(tuple):
             "\n".join("  " + line for line in repr(p).splitlines()[:-1]) for p in self)
 
     def _repr_html_(self) -> str:
-        import html
         return f"<pre>{html.escape(repr(self))}</pre>"
 
 
@@ -55,7 +56,6 @@ def pair_profiles(pair, points: int = 200, cutter=None) -> tuple:
     rack, cb = transverse_rack(pair.rack, pair.mesh.beta_deg)
     p1 = tooth_profile(pair.m / cb, pair.z1, pair.x1 * cb, rack=rack, tip_diameter_mm=float(geo["da1"]), points=points)
     if pair.mesh.internal:
-        from .ring import ring_profile
         p2 = ring_profile(pair.m, pair.z2, pair.x2, cutter, pair.rack, tip_diameter_mm=float(geo["da2"]),
                           points=points, beta_deg=pair.mesh.beta_deg)
     else:

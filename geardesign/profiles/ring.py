@@ -50,6 +50,7 @@ from ..gears.mesh import BETA_RANGE_DEG
 from ..gears.rack import BasicRack, require_rack
 from ..gears.ring import ShaperCutter, cutting_mesh
 from ..validate import one_number, require_count, require_range
+from .export import gear_outline
 from .tooth import POINTS_MAX, ToothProfile, material_angle, transverse_rack
 
 __all__ = ["RingProfile", "ring_profile", "RIM_MODULES", "rim_circle"]
@@ -85,7 +86,6 @@ class RingProfile(ToothProfile):
 
     def outlines(self, name: str = "ring") -> list:
         """The annulus as two closed outlines: ``name`` (the toothed bore) and ``name + "_rim"``."""
-        from .export import gear_outline
         return [(name, *gear_outline(self)), (f"{name}_rim", *rim_circle(self.rim_diameter_mm / 2.0, self.m))]
 
 

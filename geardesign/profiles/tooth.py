@@ -22,8 +22,10 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..gears.rack import BasicRack, require_rack
+from ..inline import html_view
 from ..results import Result
 from ..validate import one_number, require_count, require_range
+from .export import gear_outline, write_outlines
 
 __all__ = ["ToothProfile", "tooth_profile", "transverse_rack", "POINTS_MAX"]
 
@@ -177,11 +179,9 @@ class ToothProfile(Result):
 
     def outlines(self, name: str = "gear") -> list:
         """The whole gear as closed outlines ``[(name, x_mm, y_mm)]`` (a ring adds its rim)."""
-        from .export import gear_outline
         return [(name, *gear_outline(self))]
 
     def _write(self, path, overwrite: bool, suffix: str, data_block=None):
-        from .export import write_outlines
         return write_outlines(self.outlines(), path, overwrite,
                               f"{self._kind} m = {self.m:g} mm, z = {self.z}, x = {self.x:g}", self.m / 50,
                               suffixes=(suffix,), data_block=data_block)
@@ -201,7 +201,6 @@ class ToothProfile(Result):
 
     def _repr_html_(self) -> str:
         """Jupyter's view: the text, and the tooth drawn by segment inline."""
-        from ..inline import html_view
         return html_view(repr(self), self.plot, figsize=(4.6, 4.6), alt="tooth profile")
 
     def plot(self, ax=None):

@@ -23,6 +23,9 @@ With ``total_ratio`` the drive is optimised; without it, analysed as given::
 """
 from __future__ import annotations
 
+from pathlib import Path
+
+from ..errors import GearDesignError
 from ..validate import _short
 from .markdown import md_table, pyplot
 from .schema import Where, drive_schema, stage_kinds, type_name, validate_table
@@ -39,10 +42,7 @@ def _tables(where: Where, v, what: str) -> list:
 def load_drive(where: Where, scene_path, raw) -> dict:
     """The validated [drive] section; the stages and shafts are built once here, so that every
     error of the library (a pair that cannot exist, an unknown chain) is reported before a run."""
-    from pathlib import Path
-
     from ..drives.stage_kinds import kind_named
-    from ..errors import GearDesignError
 
     if not isinstance(raw, dict):
         where.fail("drive", None, f"expected a table [drive], got {_short(raw)} ({type_name(raw)})")
@@ -79,7 +79,6 @@ def build_drive(section: dict):
     """(Drive, motor selection or None) of a validated [drive] section."""
     from ..drives.drive import Drive
     from ..drives.stages import Shaft
-    from ..errors import GearDesignError
 
     motor = None
     if "motor" in section:

@@ -179,7 +179,7 @@ def _chain_schema() -> dict:
             "allowable_safety_factor": _F(lo=c.SAFETY_FACTOR_RANGE[0], hi=c.SAFETY_FACTOR_RANGE[1]),
             "strands": _Key("ints", default=(1, 2, 3), lo=c.STRANDS_RANGE[0], hi=c.STRANDS_RANGE[1]),
             "z1": _I(lo=c.Z1_RANGE[0], hi=c.Z1_RANGE[1]),
-            "center_distance_mm": _F(lo=0.0, hi=c.CENTER_DISTANCE_MAX_MM, lo_open=True),
+            "center_distance_mm": _F(lo=c.CENTER_DISTANCE_MIN_MM, hi=c.CENTER_DISTANCE_MAX_MM),
             "objective": _Key("choice", default=c.OBJECTIVES[0], choices=c.OBJECTIVES),
             "method": _Key("choice", default=c.METHODS[0], choices=c.METHODS),
             "sag_factor": _F(default=6.0, lo=c.SAG_FACTOR_RANGE[0], hi=c.SAG_FACTOR_RANGE[1]),

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import GearDesignError
 from ..files import check_output_path, write_file_atomic
 from ..validate import require_count
 from .looks import check_legend, check_style
@@ -178,7 +179,6 @@ def contour_figure(region, optimum=None, proposed=None, x_sum=None, n: int = 121
     import plotly.graph_objects as go
 
     if not (hasattr(region, "problem") and hasattr(region, "bounds")):   # a Region (this module is below it)
-        from ..errors import GearDesignError
         raise GearDesignError(f"region must be a geardesign Region, got {type(region).__name__}")
     n = require_count("n", n, 11, HOVER_N_MAX)
     prob = region.problem

@@ -22,9 +22,10 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..gears import checks as _checks
-from ..gears.geometry import min_center_distance
+from ..gears.geometry import min_center_distance, require_module
 from ..gears.planetary import (ARRANGEMENTS, MESH_NAMES, Assembly, MeshCheck, PlanetaryMeshes, planetary_ratio,
                                set_checks, set_geometry)
+from ..inline import html_view
 from ..results import Result
 from ..validate import one_number, require_choice, require_count, require_range
 from .center_distance import x_sum_for_housing
@@ -32,7 +33,8 @@ from .grid import GRID_N_MAX
 from .objectives import CustomObjective, Objective, default_objective
 from .optimize import DEFAULT_TOL, METHODS, solve_problem
 from .problem import _FLOAT_FAULTS, DEFAULT_BOUNDS, Problem, _holds_meshing, validate_bounds, with_meshing
-from .region import Region, region_of
+from .looks import margin_bars
+from .region import REGION_N_MAX, Region, region_of
 from .methods import ACCURACY
 
 __all__ = ["optimize_planetary_shifts", "planetary_region", "PlanetaryShiftResult", "PlanetaryProblem"]
@@ -177,7 +179,6 @@ class PlanetaryShiftResult(Result):
 
     def _repr_html_(self) -> str:
         """Jupyter's view: the text, and both meshes' margins at the optimum as bars."""
-        from ..inline import html_view
         return html_view(repr(self), self.plot_margins, tables=(("margins", self.to_frame()),), dpi=60,
                          figsize=(7.0, 1.3 + 0.3 * len(self.margins)),
                          alt="margins at the optimum")
@@ -185,7 +186,6 @@ class PlanetaryShiftResult(Result):
     def plot_margins(self, ax=None):
         """Bars of every check's margin at the optimum, both meshes and the set (active outlined)."""
         import matplotlib.pyplot as plt
-        from .looks import margin_bars
 
         if ax is None:
             _, ax = plt.subplots(figsize=(7.0, 1.3 + 0.3 * len(self.margins)))
@@ -219,8 +219,6 @@ class PlanetaryShiftResult(Result):
 def _problem(z_sun, z_planet, z_ring, n_planets, m, objective, checks, rack, beta_deg, planet_angles_deg, a_w,
              bounds, cutter=None) -> PlanetaryProblem:
     """Validated inputs as a problem; a fixed ``a_w`` fixes x_s + x_p (one free shift)."""
-    from ..gears.geometry import require_module
-
     m = one_number("m (module)", require_module(m))
     meshes = PlanetaryMeshes(z_sun, z_planet, z_ring, n_planets, rack, beta_deg,
                              planet_angles_deg)
@@ -329,8 +327,6 @@ def planetary_region(z_sun, z_planet, z_ring, n_planets, m, checks=None, method:
     >>> reg.feasible
     True
     """
-    from .region import REGION_N_MAX
-
     if method not in ("grid", "exact"):
         raise GearDesignError(f"method must be 'grid' or 'exact' for a region, got {method!r}")
     tol = (0.01 if method == "grid" else 1e-9) if tol is None else one_number("tol", require_range("tol", tol, 1e-14, 1.0))

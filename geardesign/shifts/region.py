@@ -19,8 +19,10 @@ from ..results import Result, plain
 from ..gears.mesh import Mesh
 from ..validate import one_number, require_axes, require_count, require_range
 from ..gears.geometry import center_distance_from_x_sum
+from ..inline import html_view
 from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
 from .conflict import smallest_conflict
+from .contour_html import write_contour_html
 from .local import central_point
 from .nodes import grid_points
 from .looks import CHECK_LEGENDS, _parts, check_legend, check_style  # noqa: F401  (re-exported)
@@ -194,7 +196,6 @@ class Region(Result):
 
     def _repr_html_(self) -> str:
         """Jupyter's view: the text, and the blocking contour inline."""
-        from ..inline import html_view
         return html_view(repr(self), lambda ax: self.plot(ax=ax, n=161), figsize=(7.0, 5.2), alt="blocking contour")
 
     def to_html(self, path, optimum=None, proposed=None, x_sum=None, n: int = 121, overwrite: bool = False):
@@ -202,8 +203,6 @@ class Region(Result):
         every check's margin and ε_α, s_a/m, a_w at the nearest of n × n nodes, a legend click
         hides or shows a check; marks as in :meth:`plot`. Returns the path. See
         :mod:`geardesign.shifts.contour_html`."""
-        from .contour_html import write_contour_html   # here: that module imports this one
-
         return write_contour_html(self, path, optimum, proposed, x_sum, n, overwrite)
 
     def x_sum_line(self, x_sum: float, points: int = 2001):

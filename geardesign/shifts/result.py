@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..gears.mesh import kind_text
+from ..inline import html_view
 from ..results import Result
 
 __all__ = ["ShiftResult", "Outcome"]
@@ -81,7 +82,6 @@ class ShiftResult(Result):
     def _repr_html_(self) -> str:
         """Jupyter's view: the text, and every check's margin at the optimum as a bar (active ones
         outlined), in the checks' colours."""
-        from ..inline import html_view
         return html_view(repr(self), self.plot_margins, tables=(("margins", self.to_frame()),), dpi=60,
                          figsize=(6.4, 1.3 + 0.3 * len(self.margins)),
                          alt="margins at the optimum")
@@ -90,7 +90,7 @@ class ShiftResult(Result):
         """Bars of every check's margin at the optimum (≥ 0 holds; active checks outlined, their
         curves pass through the optimum). Returns the Axes."""
         import matplotlib.pyplot as plt
-        from .looks import margin_bars
+        from .looks import margin_bars   # here: looks reads the check registry, which loads pandas
 
         if ax is None:
             _, ax = plt.subplots(figsize=(6.4, 1.3 + 0.3 * len(self.margins)))

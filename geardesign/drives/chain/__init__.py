@@ -17,7 +17,7 @@ Inside, powers are in W and chain speeds in m/s.
 formulas (one function per formula) -> inputs (ranges, validation) -> tables (the catalogs as arrays)
 -> candidates (rows × teeth, their layout) -> checks (every margin) -> design.
 """
-from .inputs import (CENTER_DISTANCE_MAX_MM, CENTER_DISTANCE_PITCHES_MAX, FACTOR_NAMES, FACTOR_RANGE, K_E_RANGE,
+from .inputs import (CENTER_DISTANCE_MAX_MM, CENTER_DISTANCE_MIN_MM, CENTER_DISTANCE_PITCHES_MAX, FACTOR_NAMES, FACTOR_RANGE, K_E_RANGE,
                          METHODS, N1_RANGE_RPM, OBJECTIVES, POWER_RANGE_KW, RATIO_RANGE, SAFETY_FACTOR_RANGE,
                          SAG_FACTOR_RANGE, STRANDS_RANGE, TORQUE_RANGE_NM, Z1_RANGE, Z2_MAX_LIMIT, Conditions)
 from .design import ChainDesign, design
@@ -28,4 +28,4 @@ __all__ = ["Conditions", "ChainDesign", "design", "recommended_z1", "pitch_estim
            "safety_factor", "rated_power_link_plate_kw", "rated_power_roller_bushing_kw", "allowable_pressure_mpa",
            "OBJECTIVES", "METHODS", "FACTOR_NAMES", "TORQUE_RANGE_NM", "POWER_RANGE_KW", "N1_RANGE_RPM", "RATIO_RANGE",
            "K_E_RANGE", "FACTOR_RANGE", "SAFETY_FACTOR_RANGE", "SAG_FACTOR_RANGE", "Z1_RANGE", "STRANDS_RANGE",
-           "CENTER_DISTANCE_MAX_MM", "CENTER_DISTANCE_PITCHES_MAX", "Z2_MAX_LIMIT", "HP_TO_KW", "IN_MM", "G"]
+           "CENTER_DISTANCE_MAX_MM", "CENTER_DISTANCE_MIN_MM", "CENTER_DISTANCE_PITCHES_MAX", "Z2_MAX_LIMIT", "HP_TO_KW", "IN_MM", "G"]

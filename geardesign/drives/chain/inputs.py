@@ -38,6 +38,7 @@ Z1_RANGE = (7, 200)                 # small sprocket teeth a catalog row may be 
 
 STRANDS_RANGE = (1, 4)
 
+CENTER_DISTANCE_MIN_MM = 1.0        # a given centre distance below a millimetre fits no chain (pitches start at 6.35 mm)
 CENTER_DISTANCE_MAX_MM = 1e5        # 100 m: past any roller-chain drive
 
 CENTER_DISTANCE_PITCHES_MAX = 80.0  # longest span a roller chain is laid out for (a <= 80 p; ISO 10823 notes)
@@ -194,7 +195,7 @@ def validate_inputs(torque_nm, power_kw, n1_rpm, ratio, conditions, k_e, allowab
     z1_values = _z1_values(z1, u, z2_max)
     if center_distance_mm is not None:
         center_distance_mm = one_number("center_distance_mm", require_range(
-            "center_distance_mm", center_distance_mm, 0.0, CENTER_DISTANCE_MAX_MM, lo_open=True, unit="mm"))
+            "center_distance_mm", center_distance_mm, CENTER_DISTANCE_MIN_MM, CENTER_DISTANCE_MAX_MM, unit="mm"))
     cpitches = one_number("center_distance_pitches", require_range(
         "center_distance_pitches", center_distance_pitches, 10.0, 100.0))
     return Inputs(torque=torque, power_w=power_w, n1=n1, u=u, conditions=cond, k_e=k_e_val, k_d=k_d,

@@ -3,10 +3,12 @@ options times the catalog rows, every margin in one vectorised pass of chain.des
 evaluation with one load per design; drawn as two sprockets and the strands."""
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 
+from ...errors import GearDesignError
 from ..stages import EFFICIENCY_RANGE, ChainStage, disc_mass_kg, stage_area_mm2
 from .base import Batch, StageKind
 
@@ -23,7 +25,7 @@ def _check_names(stage: ChainStage) -> list:
 
 def _batch(stage: ChainStage, rows, z1, z2, n1_rpm, torque_nm) -> dict:
     """Every margin, size and mass of chain candidates that each carry their own load."""
-    from ...catalogs.tables import catalog_dir
+    from ...catalogs.tables import catalog_dir   # here: catalogs and the chain package load pandas
     from ..chain.candidates import Candidates
     from ..chain.checks import evaluate
     from ..chain.inputs import with_loads
@@ -53,8 +55,6 @@ class ChainKind(StageKind):
         return stage.ratio_range
 
     def fixed_ratio(self, stage) -> float:
-        from ...errors import GearDesignError
-
         if stage.z1 is None or stage.z2 is None:
             raise GearDesignError(f"analyse() needs every ratio: stage '{stage.name}' has free tooth counts "
                                   f"(give z1 and z2, or use optimize())")
@@ -80,14 +80,12 @@ class ChainKind(StageKind):
                 f"{p}.center_distance_mm": float(info["a"][c])}
 
     def fix(self, stage, option: dict, info, c: int, objective: str, flow=None):
-        from dataclasses import replace
-
         return replace(stage, z1=int(info["z1"][c]), z2=int(info["z2"][c]), designation=str(info["designation"][c]),
                        strands=(int(info["strands"][c]),))
 
     def analyse(self, stage, flow, objective: str) -> dict:
         """A chain stage by chain.design with the flow's load (its designation, when fixed, picks the row)."""
-        from ..chain import design as chain_design
+        from ..chain import design as chain_design   # here: the chain package loads pandas
 
         st = stage
         res = chain_design(torque_nm=float(flow.torque_in_nm), n1_rpm=float(flow.n_in_rpm), ratio=st.z2 / st.z1,
@@ -107,7 +105,7 @@ class ChainKind(StageKind):
 
     # -- scenes
     def scene_keys(self) -> dict:
-        from .. import chain as c
+        from .. import chain as c   # here: the chain package loads pandas
 
         f = "float"
         return {"catalog": dict(kind="str", default="gost13568"), "z1": dict(kind="int", lo=c.Z1_RANGE[0], hi=c.Z1_RANGE[1]),
@@ -118,7 +116,7 @@ class ChainKind(StageKind):
                 "allowable_pressure_mpa": dict(kind=f, lo=0.0, lo_open=True),
                 "allowable_safety_factor": dict(kind=f, lo=c.SAFETY_FACTOR_RANGE[0], hi=c.SAFETY_FACTOR_RANGE[1]),
                 "method": dict(kind="choice", default=c.METHODS[0], choices=c.METHODS),
-                "center_distance_mm": dict(kind=f, lo=0.0, hi=c.CENTER_DISTANCE_MAX_MM, lo_open=True),
+                "center_distance_mm": dict(kind=f, lo=c.CENTER_DISTANCE_MIN_MM, hi=c.CENTER_DISTANCE_MAX_MM),
                 "sag_factor": dict(kind=f, default=6.0, lo=c.SAG_FACTOR_RANGE[0], hi=c.SAG_FACTOR_RANGE[1]),
                 "z2_max": dict(kind="int", default=120, lo=9, hi=c.Z2_MAX_LIMIT),
                 "ratio_range": dict(kind="floats", lo=c.RATIO_RANGE[0], hi=c.RATIO_RANGE[1], length=2),

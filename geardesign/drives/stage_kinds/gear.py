@@ -22,9 +22,11 @@ from functools import lru_cache
 import numpy as np
 
 from ...errors import GearDesignError
+from ...gears.geometry import M_RANGE_MM, X_ABS_MAX, require_module
+from ...gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
 from ...validate import one_number, require_range
 from ..limits import MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
-from ..stages import FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
+from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
 from .base import StageKind
 from .gear_strength import strength_margins, strength_sizes
 
@@ -34,7 +36,7 @@ __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution"]
 @lru_cache(maxsize=SHIFT_CACHE)
 def shift_solution(m, z1, z2, checks_key, beta_deg, face_width_mm, objective) -> dict:
     """The shifts of one tooth pair by optimize_shifts (exact), with the pair's geometry and margins."""
-    from ...gears.pair import GearPair
+    from ...gears.pair import GearPair   # here: the pair's checks and the solvers load pandas and scipy
     from ...shifts.optimize import optimize_shifts
 
     checks = dict(checks_key) or None
@@ -90,7 +92,7 @@ def set_sizing(fn):
 
 
 def _series() -> np.ndarray:
-    from ...catalogs.tables import module_series
+    from ...catalogs.tables import module_series   # here: catalogs load pandas
     return module_series()
 
 
@@ -123,8 +125,6 @@ class GearKind(StageKind):
 
     def sizes(self, stage, torque_nm: float, speed_rpm: float, z1: int, z2: int) -> list:
         """The installed sizing function's (m, face width) candidates for one tooth pair at its load, checked."""
-        from ...gears.geometry import require_module
-
         fn = _SIZING[0]
         if fn is None:
             raise GearDesignError(f"gear stage '{stage.name}' has no module (m=None): its module is chosen by its "
@@ -258,7 +258,7 @@ class GearKind(StageKind):
     def analyse(self, stage, flow, objective: str) -> dict:
         """A gear stage at its tooth counts (free shifts solved; a free module sized at the flow): its
         checks (with a material, its strength at the flow too), size and mass."""
-        from ...gears.pair import GearPair
+        from ...gears.pair import GearPair   # here: the pair's checks load pandas
 
         st = stage
         if st.m is None:
@@ -287,7 +287,7 @@ class GearKind(StageKind):
     def _analyse_strength(st, pair, flow, out: dict) -> None:
         """The strength checks at the flow into ``out``'s margins, the StrengthResult (its factor table)
         as ``out["strength"]`` and the face width in the summary."""
-        from ...gears.strength import Load, strength
+        from ...gears.strength import Load, strength   # here: the materials catalog loads pandas
 
         sm = strength_margins(st, st.m, st.width_mm, st.z1, st.z2, pair.x1, pair.x2, flow.torque_in_nm, flow.n_in_rpm)
         out["margins"].update({k: float(v) for k, v in sm.items()})
@@ -297,10 +297,7 @@ class GearKind(StageKind):
 
     # -- scenes
     def scene_keys(self) -> dict:
-        from ...gears.geometry import M_RANGE_MM, X_ABS_MAX
-        from ...gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
-        from ...shifts.objectives import OBJECTIVES
-        from ..stages import EFFICIENCY_RANGE
+        from ...shifts.objectives import OBJECTIVES   # here: the shifts layer loads pandas
 
         f, i = "float", "int"
         return {"module": dict(kind=f, required=True, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),

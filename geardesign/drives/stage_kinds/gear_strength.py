@@ -39,7 +39,7 @@ WIDTH_TO_DIAMETER_STEP = 0.05
 def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, speed_rpm: float) -> dict:
     """{check: margin array} of :data:`STRENGTH_CHECKS` for the stage's pairs (m, b broadcast) carrying
     ``torque_nm`` on the pinion at ``speed_rpm``."""
-    from ...gears.strength import Load, pair_strength
+    from ...gears.strength import Load, pair_strength   # here: the materials catalog loads pandas
 
     out = pair_strength(m, z1, z2, x1, x2, load=Load(torque_nm=float(torque_nm), n_rpm=float(speed_rpm)),
                         material1=stage_material(stage.material), face_width_mm=face_width_mm, beta_deg=stage.beta_deg)

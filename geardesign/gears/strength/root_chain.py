@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...errors import GearDesignError
+from .materials import STRENGTH_NEEDED_KINDS
 
 __all__ = ["root_side", "root_stress", "root_stress_limit", "Y_ST"]
 
@@ -102,7 +103,6 @@ def _rim(rf, s_R_mm, h_t, m, internal):
 
 def _notch(rf, q_s, mat, out, i):
     """Y_δrelT; the strength the slip-layer table needs is clipped to the table's range and the result says so."""
-    from .materials import STRENGTH_NEEDED_KINDS
     if mat.kind not in STRENGTH_NEEDED_KINDS:
         return rf.relative_notch_sensitivity_Y_delta_relT(q_s, mat.kind)
     if mat.yield_mpa is None:

@@ -77,3 +77,16 @@ def test_no_warning_escapes_when_a_strand_count_has_no_allowable_pressure_at_the
         warnings.simplefilter("error")
         d = gd.chain.design(power_kw=80.152, n1_rpm=2850.8, ratio=3.673)
     assert len(d.candidates) > 0
+
+
+def test_a_vanishing_centre_distance_is_refused_without_a_warning():
+    """Found by the project's fuzzing: center_distance_mm = 5e-324 overflowed a division (a warning) before
+    it was refused; the range starts at 1 mm (CENTER_DISTANCE_MIN_MM) and is checked first."""
+    import warnings
+
+    import geardesign as gd
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(gd.GearDesignError, match=r"center_distance_mm must be in \[1, 100000\] mm, got 5e-324"):
+            gd.chain.design(torque_nm=598.23, n1_rpm=1353.8, ratio=2.98, catalog="gost13568",
+                            method="hinge_pressure", center_distance_mm=5e-324)
