@@ -33,3 +33,5 @@ def test_extending_guide_leaves_the_registries_as_it_found_them():
     from geardesign.shifts.methods import METHODS
     assert "alpha_w_min_deg" not in options() and "line_load_max_n_mm" not in options() and "grid101" not in METHODS
     assert "min_tip_diameter" not in gd.OBJECTIVES
+    from geardesign.catalogs.tables import catalog_names
+    assert "oils" not in catalog_names()

@@ -27,6 +27,7 @@ __all__ = [
     "catalog_dir",
     "catalog_names",
     "register_catalog",
+    "unregister_catalog",
     "Schema",
     "Column",
     "load_catalog",
@@ -173,6 +174,11 @@ def register_catalog(name: str, file: str, schema: Schema, series: str | None = 
     if SCHEMAS.setdefault(schema.kind, schema) != schema:
         raise GearDesignError(f"a catalog kind {schema.kind!r} with another schema exists already")
     BUNDLED[name] = (file, schema.kind, series)
+
+
+def unregister_catalog(name: str) -> None:
+    """Forget a catalog name :func:`register_catalog` added (its kind stays known)."""
+    BUNDLED.pop(name, None)
 
 
 def catalog_dir():
