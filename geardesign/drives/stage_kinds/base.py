@@ -29,7 +29,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 
-__all__ = ["StageKind", "StageFlow", "Batch", "register", "unregister", "kind_of", "kind_named", "kind_names",
+__all__ = ["StageKind", "ToothedKind", "StageFlow", "Batch", "register", "unregister", "kind_of", "kind_named", "kind_names",
            "kinds"]
 
 
@@ -171,6 +171,26 @@ class StageKind:
 
 _BY_NAME: dict = {}
 _BY_CLASS: dict = {}
+
+
+class ToothedKind(StageKind):
+    """A kind whose stage has tooth counts z1, z2 (given, or chosen from its ``pairs``): the gear pair's and the
+    chain's ratio span, fixed ratio and options."""
+
+    def ratio_span(self, stage) -> tuple:
+        if stage.z1 is not None and stage.z2 is not None:
+            return (stage.z2 / stage.z1, stage.z2 / stage.z1)
+        return stage.ratio_range
+
+    def fixed_ratio(self, stage) -> float:
+        if stage.z1 is None or stage.z2 is None:
+            raise GearDesignError(f"analyse() needs every ratio: stage '{stage.name}' has free tooth counts "
+                                  f"(give z1 and z2, or use optimize())")
+        return stage.z2 / stage.z1
+
+    def options(self, stage, ratio_lo: float, ratio_hi: float) -> dict:
+        z1, z2 = stage.pairs(ratio_lo, ratio_hi)
+        return dict(z1=z1, z2=z2, ratio=z2 / z1)
 
 
 def register(kind: StageKind) -> StageKind:

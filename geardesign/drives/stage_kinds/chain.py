@@ -10,7 +10,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ..stages import EFFICIENCY_RANGE, ChainStage, disc_mass_kg, stage_area_mm2
-from .base import Batch, StageKind
+from .base import Batch, StageKind, ToothedKind
 
 __all__ = ["ChainKind"]
 
@@ -44,25 +44,11 @@ def _batch(stage: ChainStage, rows, z1, z2, n1_rpm, torque_nm) -> dict:
                 a=np.asarray(c["center_distance_mm"]))
 
 
-class ChainKind(StageKind):
+class ChainKind(ToothedKind):
     name = "chain"
     stage_class = ChainStage
     color = "#fdd0a2"
 
-    def ratio_span(self, stage) -> tuple:
-        if stage.z1 is not None and stage.z2 is not None:
-            return (stage.z2 / stage.z1, stage.z2 / stage.z1)
-        return stage.ratio_range
-
-    def fixed_ratio(self, stage) -> float:
-        if stage.z1 is None or stage.z2 is None:
-            raise GearDesignError(f"analyse() needs every ratio: stage '{stage.name}' has free tooth counts "
-                                  f"(give z1 and z2, or use optimize())")
-        return stage.z2 / stage.z1
-
-    def options(self, stage, ratio_lo: float, ratio_hi: float) -> dict:
-        z1, z2 = stage.pairs(ratio_lo, ratio_hi)
-        return dict(z1=z1, z2=z2, ratio=z2 / z1)
 
     def rows(self, stage):
         return stage.rows()

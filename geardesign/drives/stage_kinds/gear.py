@@ -27,7 +27,7 @@ from ...gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
 from ...validate import one_number, require_range
 from ..limits import MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
-from .base import StageKind
+from .base import StageKind, ToothedKind
 from .gear_strength import strength_margins, strength_sizes
 
 __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution"]
@@ -96,28 +96,12 @@ def _series() -> np.ndarray:
     return module_series()
 
 
-class GearKind(StageKind):
+class GearKind(ToothedKind):
     name = "gear"
     stage_class = GearStage
     color = "#9ecae1"
     solved = True
     unsolved_label = "shifts"
-
-    # -- ratio and options
-    def ratio_span(self, stage) -> tuple:
-        if stage.z1 is not None and stage.z2 is not None:
-            return (stage.z2 / stage.z1, stage.z2 / stage.z1)
-        return stage.ratio_range
-
-    def fixed_ratio(self, stage) -> float:
-        if stage.z1 is None or stage.z2 is None:
-            raise GearDesignError(f"analyse() needs every ratio: stage '{stage.name}' has free tooth counts "
-                                  f"(give z1 and z2, or use optimize())")
-        return stage.z2 / stage.z1
-
-    def options(self, stage, ratio_lo: float, ratio_hi: float) -> dict:
-        z1, z2 = stage.pairs(ratio_lo, ratio_hi)
-        return dict(z1=z1, z2=z2, ratio=z2 / z1)
 
     # -- by load
     def load_dependent(self, stage) -> bool:
