@@ -8,9 +8,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ...errors import GearDesignError
 from ..stages import EFFICIENCY_RANGE, ChainStage, disc_mass_kg, stage_area_mm2
-from .base import Batch, StageKind, ToothedKind
+from .base import Batch, ToothedKind
 
 __all__ = ["ChainKind"]
 
