@@ -27,7 +27,7 @@ from ...gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
 from ...validate import one_number, require_range
 from ..limits import MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
-from .base import StageKind, ToothedKind
+from .base import ToothedKind
 from .gear_strength import strength_margins, strength_sizes
 
 __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution"]
