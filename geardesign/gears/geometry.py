@@ -21,15 +21,15 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import broadcast_inputs, ndim, require_bool, require_int, require_positive, require_range
+from ..validate import broadcast_inputs, ndim, require_bool
 from .center_distance import (center_distance_from_x_sum, inv_operating_angle, min_center_distance,  # noqa: F401
                               undercut_x_min, x_sum_from_center_distance)
 from .distinct import per_distinct, exact_sum_nodes  # noqa: F401
 from .inputs import (_VALIDATION_FIELDS, DESIGNS_MAX, M_RANGE_MM, X_ABS_MAX, require_module,  # noqa: F401
                      validate_geometry, validate_inputs)
 from .fields import CONTACT_FIELDS, GEOMETRY_FIELDS, INTERNAL_FIELDS, REPORT_FIELDS  # noqa: F401
-from .involute import _t_minus_atan, _tan_from_inv_float, inv, inv_from_tan, t_minus_atan, t_minus_atan_float, tan_from_inv
-from .mesh import Z_MAX, Z_MIN, Mesh, section_constants, section_tuple as _section_constants
+from .involute import _tan_from_inv_float, t_minus_atan, t_minus_atan_float, tan_from_inv
+from .mesh import Z_MAX, Z_MIN, Mesh, section_tuple as _section_constants
 from .rack import BasicRack
 
 __all__ = [
