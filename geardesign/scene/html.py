@@ -12,6 +12,7 @@ import base64
 import html
 import io
 import math
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -19,51 +20,11 @@ from ..errors import GearDesignError
 from ..files import check_output_path, write_file_atomic
 from ..gears.checks import DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN
 from ..gears.pair import GearPair
+from ..gears.quantities import geometry_table
 
-__all__ = ["pair_report", "pair_report_html", "drive_report", "drive_report_html", "GEAR_ROWS", "PAIR_ROWS",
+__all__ = ["pair_report", "pair_report_html", "drive_report", "drive_report_html",
            "handbook_rows"]
 
-
-# (quantity, symbol in HTML, unit, field of gear 1, field of gear 2, format); "·m" fields are
-# divided by the module. The order is a handbook's (GOST 16532-70 Table 1; ISO 21771 clause 5).
-GEAR_ROWS = (
-    ("number of teeth", "z", "–", "z1", "z2", "{:d}"),
-    ("profile shift coefficient", "x", "–", "x1", "x2", "{:.4f}"),
-    ("reference diameter", "d", "mm", "d1", "d2", "{:.3f}"),
-    ("base diameter", "d<sub>b</sub>", "mm", "db1", "db2", "{:.3f}"),
-    ("operating pitch diameter", "d<sub>w</sub>", "mm", "dw1", "dw2", "{:.3f}"),
-    ("tip diameter", "d<sub>a</sub>", "mm", "da1", "da2", "{:.3f}"),
-    ("root diameter", "d<sub>f</sub>", "mm", "df1", "df2", "{:.3f}"),
-    ("tooth thickness, reference circle", "s", "mm", "s1", "s2", "{:.3f}"),
-    ("tooth thickness, operating pitch circle", "s<sub>w</sub>", "mm", "sw1", "sw2", "{:.3f}"),
-    ("tooth thickness at the tip", "s<sub>a</sub>", "mm", "sa1", "sa2", "{:.3f}"),
-    ("tip thickness in modules", "s<sub>a</sub>/m", "–", "sa1·m", "sa2·m", "{:.3f}"),
-    ("pressure angle at the tip", "α<sub>a</sub>", "°", "alpha_a1_deg", "alpha_a2_deg", "{:.3f}"),
-    ("tip clearance", "c", "mm", "clearance1", "clearance2", "{:.3f}"),
-    ("smallest shift without undercut", "x<sub>min</sub>", "–", "x_min1", "x_min2", "{:.4f}"),
-    ("form circle diameter", "d<sub>Ff</sub>", "mm", "d_l1", "d_l2", "{:.3f}"),
-    ("start of active profile", "d<sub>Nf</sub>", "mm", "d_p1", "d_p2", "{:.3f}"),
-    ("specific sliding at the root", "ϑ<sub>f</sub>", "–", "sliding1_root", "sliding2_root", "{:.3f}"),
-    ("specific sliding at the tip", "ϑ<sub>a</sub>", "–", "sliding1_tip", "sliding2_tip", "{:.3f}"),
-)
-# (quantity, symbol, unit, field, format): one value for the pair
-PAIR_ROWS = (
-    ("operating centre distance", "a<sub>w</sub>", "mm", "a_w", "{:.4f}"),
-    ("reference centre distance", "a", "mm", "a", "{:.4f}"),
-    ("operating pressure angle", "α<sub>w</sub>", "°", "alpha_w_deg", "{:.4f}"),
-    ("centre distance modification coefficient", "y", "–", "y", "{:.4f}"),
-    ("tip shortening coefficient", "Δy", "–", "dy", "{:.4f}"),
-    ("transverse base pitch", "p<sub>b</sub>", "mm", "p_b", "{:.4f}"),
-    ("length of the path of contact", "g<sub>α</sub>", "mm", "g_alpha", "{:.4f}"),
-    ("transverse contact ratio", "ε<sub>α</sub>", "–", "eps_alpha", "{:.4f}"),
-    ("specific pressure coefficient at the pitch point", "m/ρ<sub>red</sub>", "–", "spec_pressure_pitch", "{:.4f}"),
-)
-HELICAL_ROWS = (
-    ("transverse module", "m<sub>t</sub>", "mm", "m_t", "{:.4f}"),
-    ("base helix angle", "β<sub>b</sub>", "°", "beta_b_deg", "{:.4f}"),
-    ("overlap ratio", "ε<sub>β</sub>", "–", "eps_beta", "{:.4f}"),
-    ("total contact ratio", "ε<sub>γ</sub>", "–", "eps_gamma", "{:.4f}"),
-)
 
 _CSS = """
 body { font: 13px/1.35 "DejaVu Sans", Arial, sans-serif; color: #111; margin: 18px auto; max-width: 1060px; }
@@ -88,18 +49,23 @@ figcaption { font-size: 12px; color: #333; } .small { font-size: 11px; color: #5
 
 
 def handbook_rows(pair: GearPair) -> list[tuple]:
-    """The geometry table's rows: (quantity, symbol, unit, gear 1, gear 2) as text, a pair
-    quantity with one value (gear 2 None) shown across both gear columns."""
-    geo = pair.geometry().to_dict()
-    geo.update(z1=pair.z1, z2=pair.z2, x1=pair.x1, x2=pair.x2)
-    rows = []
-    for name, sym, unit, k1, k2, fmt in GEAR_ROWS:
-        v = [geo[k.split("·")[0]] / (pair.m if "·m" in k else 1) for k in (k1, k2)]
-        rows.append((name, sym, unit, *(_fmt(fmt, x) for x in v)))
-    extra = HELICAL_ROWS if pair.beta_deg else ()
-    for name, sym, unit, k, fmt in PAIR_ROWS + extra:
-        rows.append((name, sym, unit, _fmt(fmt, geo[k]), None))
+    """The geometry table's rows: (quantity, symbol in HTML, unit, gear 1, gear 2) as text, from the handbook
+    layout of :func:`geardesign.gears.quantities.geometry_table` (one table of rows for the terminal and the
+    page); a pair quantity has one value (gear 2 None), shown across both gear columns."""
+    table = geometry_table(pair.geometry(), helical=bool(pair.beta_deg))
+    rows = [("number of teeth", "z", "–", f"{pair.z1:d}", f"{pair.z2:d}"),
+            ("profile shift coefficient", "x", "–", f"{pair.x1:.4f}", f"{pair.x2:.4f}")]
+    for quantity, symbol, unit, v1, v2 in table.itertuples(index=False, name=None):
+        pair_wide = v2 is None or (isinstance(v2, float) and math.isnan(v2) and not math.isnan(v1))
+        fmt = "{:.4f}" if pair_wide else "{:.3f}"
+        rows.append((quantity, _html_symbol(symbol), unit.replace("-", "–"), _fmt(fmt, v1),
+                     None if pair_wide else _fmt(fmt, v2)))
     return rows
+
+
+def _html_symbol(symbol: str) -> str:
+    """``d_w`` -> d<sub>w</sub>, ``m/ρ_red`` -> m/ρ<sub>red</sub>: the text layout's subscripts for a page."""
+    return re.sub(r"_([^\s/]+)", r"<sub>\1</sub>", html.escape(symbol))
 
 
 def _fmt(fmt: str, value) -> str:
