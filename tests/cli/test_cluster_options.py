@@ -96,7 +96,7 @@ def test_ctrl_c_on_a_local_cluster_exits_130_and_leaves_nothing():
     scratch = {n for n in os.listdir(tempfile.gettempdir()) if n.startswith("geardesign-dask-")}
     p = subprocess.Popen([sys.executable, "-m", "geardesign", "atlas", "--z1", "8:120", "--z2", "8:300", "--workers",
                           "2"], cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                         start_new_session=True)
+                         start_new_session=True, preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     proc, seen, t0 = psutil.Process(p.pid), set(), time.monotonic()
     try:
         while time.monotonic() - t0 < 60 and len(seen) < 2:      # the two workers are starting

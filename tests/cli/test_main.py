@@ -7,6 +7,7 @@ to itself) arrives exactly when the named module starts importing, on the path `
 (runpy runs geardesign/__main__.py) and on the console script's (``from geardesign.cli import main``).
 """
 import os
+import signal
 import subprocess
 import sys
 
@@ -35,12 +36,19 @@ else:
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
+def _interruptible():
+    """The child starts with Ctrl-C's default, as from a terminal, whatever this test process's own state
+    (a SIGINT ignored here, e.g. left by a cluster test, stays ignored in every child, and Python keeps it so)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 @pytest.mark.parametrize("how", ["module", "script"])
 @pytest.mark.parametrize("during", ["numpy", "pandas", "geardesign.cli.pair", "geardesign.errors", "argparse"])
 def test_ctrl_c_during_start_up_prints_one_line_and_exits_130(how, during, tmp_path):
     env = {**os.environ, "PYTHONPATH": ROOT + os.pathsep + os.environ.get("PYTHONPATH", "")}
     proc = subprocess.run([sys.executable, "-c", _CHILD, during, how, "pair", "--module", "2", "--z1", "17",
-                           "--z2", "26"], capture_output=True, text=True, cwd=tmp_path, env=env, timeout=120)
+                           "--z2", "26"], capture_output=True, text=True, cwd=tmp_path, env=env, timeout=120,
+                          preexec_fn=_interruptible)
     assert proc.returncode == 130, (proc.returncode, proc.stderr[-2000:])
     assert "Traceback" not in proc.stderr and proc.stderr.strip().splitlines() == ["geardesign: interrupted"]
     assert proc.stdout == "" and list(tmp_path.iterdir()) == []
