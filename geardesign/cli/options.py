@@ -118,37 +118,61 @@ def cluster_from_args(args):
         yield client
 
 
-def add_load_args(p) -> None:
+def add_load_args(p, planetary: bool = False) -> None:
     """The load case of the strength checks (ISO 6336): a torque or a power at a speed, the material(s),
-    the life and the application factor; given, the strength checks join the others."""
+    the life and the application factor; given, the strength checks join the others. ``planetary``: the
+    sun's load of a planetary set, with the planet's and the ring's materials, K_γ and the face width."""
     g = p.add_argument_group("load capacity (ISO 6336; any of these switches the strength checks on)")
-    g.add_argument("--torque", type=float, default=None, metavar="NM", help="torque on gear 1 (--on-gear), N·m")
+    on = "the sun" if planetary else "gear 1 (--on-gear)"
+    g.add_argument("--torque", type=float, default=None, metavar="NM", help=f"torque on {on}, N·m")
     g.add_argument("--power", type=float, default=None, metavar="KW", help="power, kW (instead of --torque)")
-    g.add_argument("--speed", type=float, default=None, metavar="RPM", help="speed of the gear the load is on, rpm")
-    g.add_argument("--on-gear", type=int, default=1, choices=(1, 2), help="the gear --torque and --speed are of (1)")
+    g.add_argument("--speed", type=float, default=None, metavar="RPM",
+                   help="speed of the sun, rpm" if planetary else "speed of the gear the load is on, rpm")
     g.add_argument("--material", default=None, metavar="NAME",
-                   help="material of both gears (or of gear 1 with --material2), a name of the ISO 6336-5 catalog, "
-                        "e.g. 42CrMo4, 18CrNiMo7-6, C45")
-    g.add_argument("--material2", default=None, metavar="NAME", help="material of gear 2 (default: --material)")
+                   help=("material of every gear (unless --planet-material, --ring-material)" if planetary else
+                         "material of both gears (or of gear 1 with --material2)")
+                   + ", a name of the ISO 6336-5 catalog, e.g. 42CrMo4, 18CrNiMo7-6, C45")
+    if planetary:
+        g.add_argument("--planet-material", default=None, metavar="NAME", help="material of the planets")
+        g.add_argument("--ring-material", default=None, metavar="NAME", help="material of the ring")
+        g.add_argument("--k-gamma", type=float, default=1.0, metavar="K",
+                       help="mesh load factor K_gamma of the planets' load sharing (ISO 6336-1 6.4; 1.0 even)")
+        g.add_argument("--face-width", dest="strength_width", type=float, default=None, metavar="MM",
+                       help="face width of the meshes, mm (needed with a load)")
+    else:
+        g.add_argument("--on-gear", type=int, default=1, choices=(1, 2), help="the gear --torque and --speed are of (1)")
+        g.add_argument("--material2", default=None, metavar="NAME", help="material of gear 2 (default: --material)")
     g.add_argument("--life-h", type=float, default=None, metavar="H",
                    help="required life, hours (default: endurance, Z_NT = Y_NT = 1)")
     g.add_argument("--application-factor", type=float, default=1.0, metavar="K_A",
                    help="application factor K_A (ISO 6336-1 6.3; 1.0 uniform)")
-    g.add_argument("--strength-width", type=float, default=None, metavar="MM",
-                   help="face width for the strength checks, mm (default: --face-width)")
+    if not planetary:
+        g.add_argument("--strength-width", type=float, default=None, metavar="MM",
+                       help="face width for the strength checks, mm (default: --face-width)")
+
+
+# the load options of a pair and of a planetary set: the set's extra ones go to its checks dict as they are
+_SET_LOAD = ("planet_material", "ring_material")
 
 
 def load_from_args(args) -> dict:
     """The load case as :func:`~geardesign.gears.checks.make_checks` context keywords (empty without one)."""
-    given = [args.torque, args.power, args.speed, args.material, args.material2, args.life_h]
+    extra = {k: getattr(args, k) for k in _SET_LOAD if getattr(args, k, None) is not None}
+    given = [args.torque, args.power, args.speed, args.material, getattr(args, "material2", None), args.life_h,
+             *extra.values()]
     if all(v is None for v in given):
         return {}
     from ..gears.strength import Load   # here: only a command with a load reads the strength model
 
-    load = Load(torque_nm=args.torque, power_kw=args.power, n_rpm=args.speed, on_gear=args.on_gear,
+    load = Load(torque_nm=args.torque, power_kw=args.power, n_rpm=args.speed, on_gear=getattr(args, "on_gear", 1),
                 application_factor=args.application_factor, life_h=args.life_h)
     width = args.strength_width if args.strength_width is not None else getattr(args, "face_width_mm", None)
-    return {"load": load, "material": args.material, "material2": args.material2, "face_width_mm": width}
+    out = {"load": load, "material": args.material, "face_width_mm": width, **extra}
+    if hasattr(args, "k_gamma"):
+        out["strength"] = {"K_gamma": args.k_gamma}
+    else:
+        out["material2"] = args.material2
+    return out
 
 
 def add_rack_args(p) -> None:

@@ -8,7 +8,7 @@ from ..gears.planetary import ARRANGEMENTS, DEFAULT_NEIGHBOUR_CLEARANCE, Planeta
 from ..profiles.planetary import plot_planetary
 from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args
 from .output import add_json_flag, print_frame, print_json, print_wrapped
-from .options import add_check_args, checks_from_args
+from .options import add_check_args, add_load_args, checks_from_args
 from .options import add_rack_args, rack_from_args
 
 
@@ -49,13 +49,14 @@ def add_parser(sub):
                    help="write the region as an interactive page (hover: every check's margin; works offline)")
     add_rack_args(p)
     add_check_args(p, exclude=("eps_gamma_min",), load=False)
+    add_load_args(p, planetary=True)
     add_json_flag(p)
     add_cluster_args(p)   # used with --ratio (the tooth-count search)
     return p
 
 
 def _checks(args) -> dict:
-    out = checks_from_args(args)
+    out = checks_from_args(args)      # with the sun's load when one is given
     out["neighbour_clearance"] = args.neighbour_clearance
     return out
 

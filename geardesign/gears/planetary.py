@@ -323,18 +323,26 @@ class Assembly(_checks.Check):
         return 0.0, 0.0
 
 
-def set_checks(meshes: PlanetaryMeshes, checks=None, cutter=None) -> tuple:
+def set_checks(meshes: PlanetaryMeshes, checks=None, cutter=None, arrangement: str = "ring_fixed") -> tuple:
     """The checks of a set, each named by its mesh ("sun-planet:undercut_sun",
     "planet-ring:ring_tip", "set:neighbours"): ``checks`` None (the defaults of both meshes and
     ``neighbours`` at 0.5 m), or a dict of :func:`~geardesign.gears.checks.make_checks` options
     for both meshes plus ``neighbour_clearance`` (in modules; None drops the check); ``cutter``: the
-    :class:`~geardesign.gears.ring.ShaperCutter` of the ring (None: the standard one for the module)."""
+    :class:`~geardesign.gears.ring.ShaperCutter` of the ring (None: the standard one for the module).
+
+    With ``load`` (the sun's, a :class:`~geardesign.gears.strength.Load`) the strength checks of both meshes
+    come in, each mesh loaded as :func:`~geardesign.gears.strength.planetary_strength` loads it (the torque
+    shared over the planets, speeds relative to the carrier of ``arrangement``; ``strength={"K_gamma": ...}``
+    the mesh load factor); ``material`` is all three gears' unless ``planet_material`` or ``ring_material``
+    is given."""
     opts = {} if checks is None else dict(checks) if isinstance(checks, dict) else None
     if opts is None:
         raise GearDesignError(f"checks of a planetary set must be None or a dict of options, got {checks!r}")
     clearance = opts.pop("neighbour_clearance", DEFAULT_NEIGHBOUR_CLEARANCE)
-    sp = _checks.resolve_checks(opts or None, internal=False)
-    pr = _checks.resolve_checks({**opts, "cutter": cutter} if cutter is not None else opts or None, internal=True)
+    sp_opts, pr_opts = _mesh_options(opts, meshes, arrangement)
+    sp = _checks.resolve_checks(sp_opts or None, internal=False)
+    pr = _checks.resolve_checks({**pr_opts, "cutter": cutter} if cutter is not None else pr_opts or None,
+                                internal=True)
     # the planet's undercut and tip thickness are one condition in both meshes: kept once
     out = [MeshCheck(inner=c, mesh="sun-planet") for c in sp]
     out += [MeshCheck(inner=c, mesh="planet-ring") for c in pr if c.name not in ("undercut1", "tip_thickness1")]
@@ -343,6 +351,36 @@ def set_checks(meshes: PlanetaryMeshes, checks=None, cutter=None) -> tuple:
                                                                     *NEIGHBOUR_CLEARANCE_RANGE, unit="m"))
         out.append(Neighbours(limit=clearance, n_planets=meshes.n_planets))
     return tuple(out)
+
+
+# the materials of a set's gears besides ``material`` (the sun's, and every gear's not given)
+SET_MATERIALS = ("planet_material", "ring_material")
+
+
+def _mesh_options(opts: dict, meshes: PlanetaryMeshes, arrangement: str) -> tuple[dict, dict]:
+    """The checks options of the sun-planet and the planet-ring mesh: with a load, each mesh's own load
+    case (its torque, speed, load cycles and materials); without one, the same options for both."""
+    if "material2" in opts:
+        raise GearDesignError("material2 is a pair's; a planetary set takes material (every gear) and "
+                              "planet_material, ring_material")
+    own = {k: opts.pop(k) for k in SET_MATERIALS if k in opts}
+    if opts.get("load") is None:
+        if any(v is not None for v in own.values()):
+            raise GearDesignError(f"{', '.join(k for k, v in own.items() if v is not None)} given without a load: "
+                                  f"the strength checks need load= (a geardesign Load on the sun)")
+        return opts, opts
+    # here: the strength package loads pandas and the materials catalog, which a set without a load never needs
+    from .strength.planetary_strength import mesh_loads
+
+    cases = mesh_loads(meshes.z_sun, meshes.z_planet, meshes.z_ring, meshes.n_planets, arrangement, opts["load"])
+    sun = opts.get("material")
+    planet = own.get("planet_material") or sun
+    materials = {"sun-planet": (sun, planet), "planet-ring": (planet, own.get("ring_material") or sun)}
+    strength = opts.get("strength") or {}
+    if not isinstance(strength, dict):
+        raise GearDesignError(f"strength must be a dict of pair_strength options, got {type(strength).__name__}")
+    return tuple({**opts, "load": cases[tag][0], "material": materials[tag][0], "material2": materials[tag][1],
+                  "strength": {**strength, "cycles_per_rev": cases[tag][1]}} for tag in MESH_NAMES)
 
 
 @dataclass(frozen=True)
@@ -447,7 +485,7 @@ class PlanetarySet:
         if coaxiality_tol_mm is not None:
             coaxiality_tol_mm = one_number("coaxiality_tol_mm", require_positive("coaxiality_tol_mm",
                                                                                  coaxiality_tol_mm, unit="mm"))
-        cs = set_checks(self.meshes, checks, self.cutter) + (Coaxiality(tol_mm=coaxiality_tol_mm), Assembly(meshes=self.meshes))
+        cs = set_checks(self.meshes, checks, self.cutter, self.arrangement) + (Coaxiality(tol_mm=coaxiality_tol_mm), Assembly(meshes=self.meshes))
         table = _checks.evaluate(self._geo, cs)
         table.insert(1, "mesh", [c.split(":", 1)[0] for c in table["check"]])
         table["margin"] = table["margin"].where(table["margin"].abs() > _checks.FEASIBILITY_TOL, 0.0)

@@ -69,11 +69,12 @@ class PlanetaryProblem(Problem):
     """The shift problem of a planetary set (see the module docstring)."""
 
     def __init__(self, meshes: PlanetaryMeshes, m, checks=None, objective="max_x_sum", x_sum=None,
-                 check_list=None, cutter=None):
+                 check_list=None, cutter=None, arrangement="ring_fixed"):
         self.meshes = meshes
         self.mesh = meshes.sun_planet
         self.m = float(m)
-        self.checks = set_checks(meshes, checks, cutter) if check_list is None else tuple(check_list)
+        self.checks = (set_checks(meshes, checks, cutter, arrangement) if check_list is None
+                       else tuple(check_list))
         self.asked = self.checks
         if check_list is None:   # both meshes must mesh, whatever checks are dropped (see with_meshing)
             for tag in MESH_NAMES:
@@ -216,13 +217,13 @@ class PlanetaryShiftResult(Result):
 
 
 def _problem(z_sun, z_planet, z_ring, n_planets, m, objective, checks, rack, beta_deg, planet_angles_deg, a_w,
-             bounds, cutter=None) -> PlanetaryProblem:
+             bounds, cutter=None, arrangement="ring_fixed") -> PlanetaryProblem:
     """Validated inputs as a problem; a fixed ``a_w`` fixes x_s + x_p (one free shift)."""
     m = one_number("m (module)", require_module(m))
     meshes = PlanetaryMeshes(z_sun, z_planet, z_ring, n_planets, rack, beta_deg,
                              planet_angles_deg)
     prob = PlanetaryProblem(meshes, m, checks, default_objective(objective, x_sum_fixed=a_w is not None),
-                            cutter=cutter)
+                            cutter=cutter, arrangement=arrangement)
     if a_w is not None:
         prob.x_sum = x_sum_for_housing(prob, a_w, bounds)
         a_min = float(min_center_distance(m, meshes.z_planet, meshes.z_ring, meshes.rack, meshes.beta_deg,
@@ -273,7 +274,7 @@ def optimize_planetary_shifts(z_sun, z_planet, z_ring, n_planets, m, a_w=None, o
     if grid_n is not None:
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
     prob = _problem(z_sun, z_planet, z_ring, n_planets, m, objective, checks, rack, beta_deg, planet_angles_deg,
-                    a_w, bounds, cutter)
+                    a_w, bounds, cutter, arrangement)
     if prob.objective.kind == "margin" and not prob.asked:
         raise GearDesignError("objective 'max_margin' needs at least one check, got none")
     out = solve_problem(prob, method, bounds, tol, grid_n)
@@ -316,7 +317,7 @@ def _result(prob: PlanetaryProblem, out, method, tol, a_w, arrangement, t0) -> P
 
 def planetary_region(z_sun, z_planet, z_ring, n_planets, m, checks=None, method: str = "exact",
                      tol: float | None = None, rack=None, beta_deg: float = 0.0, bounds=DEFAULT_BOUNDS,
-                     n: int | None = None, cutter=None) -> Region:
+                     n: int | None = None, cutter=None, arrangement: str = "ring_fixed") -> Region:
     """The region of (x_sun, x_planet) where every check of both meshes and ``neighbours`` holds,
     x_ring following from coaxiality; its boundary labelled with each check and its mesh. Like
     :func:`~geardesign.shifts.region.feasible_region` (``.plot()`` draws it, sun–planet checks
@@ -331,6 +332,7 @@ def planetary_region(z_sun, z_planet, z_ring, n_planets, m, checks=None, method:
     tol = (0.01 if method == "grid" else 1e-9) if tol is None else one_number("tol", require_range("tol", tol, 1e-14, 1.0))
     lo, hi = validate_bounds(bounds)
     n = 321 if n is None else require_count("n", n, 11, REGION_N_MAX)
+    require_choice("arrangement", arrangement, tuple(ARRANGEMENTS))
     prob = _problem(z_sun, z_planet, z_ring, n_planets, m, "max_x_sum", checks, rack, beta_deg, None, None,
-                    (lo, hi), cutter)
+                    (lo, hi), cutter, arrangement)
     return region_of(prob, method, tol, (lo, hi), n)

@@ -84,11 +84,16 @@ class StrengthSpec:
             S = {k: np.full(X1.shape, np.nan) for k in ("S_H1", "S_H2", "S_F1", "S_F2")}
             if valid.any():
                 sub = {k: np.broadcast_to(g5[k], X1.shape)[valid] for k in CHAIN_GEOMETRY_FIELDS + ("_z1", "_z2")}
-                out = pair_strength(np.broadcast_to(M, X1.shape)[valid], np.broadcast_to(Z1, X1.shape)[valid],
-                                    np.broadcast_to(Z2, X1.shape)[valid], X1[valid], X2[valid], load=self.load,
-                                    material1=self.material1, material2=self.material2, face_width_mm=width,
-                                    beta_deg=mesh.beta_deg, internal=mesh.internal, rack=mesh.rack,
-                                    tip_shortening=mesh.tip_shortening, geometry=sub, **dict(self.options))
+                args = (np.broadcast_to(M, X1.shape)[valid], np.broadcast_to(Z1, X1.shape)[valid],
+                        np.broadcast_to(Z2, X1.shape)[valid], X1[valid], X2[valid])
+
+                def chain(index):
+                    return pair_strength(*(a[index] for a in args), load=self.load, material1=self.material1,
+                                         material2=self.material2, face_width_mm=width, beta_deg=mesh.beta_deg,
+                                         internal=mesh.internal, rack=mesh.rack, tip_shortening=mesh.tip_shortening,
+                                         geometry={k: v[index] for k, v in sub.items()}, **dict(self.options))
+
+                out = _where_defined(chain, args[0].size, tuple(S))
                 for k in S:
                     S[k][valid] = out[k]
         shape = x1.shape
@@ -103,6 +108,21 @@ class StrengthSpec:
                 grad = (_difference(v[0], v[1], v[2], h), _difference(v[0], v[3], v[4], h))
                 result["d" + name] = tuple(float(g) for g in grad) if scalar else grad
         return result
+
+
+def _where_defined(chain, n: int, names: tuple) -> dict:
+    """``chain(index)`` over the designs 0..n-1, NaN where the chain refuses a design (a shift past the root
+    section's range of ISO 6336-3, say, that the geometry's own checks would fail anyway): the refused
+    designs are found by halving, so a few of them cost a few more calls, not one call per design."""
+    try:
+        return chain(slice(0, n))
+    except GearDesignError:
+        if n == 1:
+            return {k: np.full(1, np.nan) for k in names}
+    index = np.arange(n)
+    halves = (index[: n // 2], index[n // 2:])
+    parts = [_where_defined(lambda sub, h=h: chain(h[sub]), h.size, names) for h in halves]
+    return {k: np.concatenate([np.broadcast_to(p[k], (h.size,)) for p, h in zip(parts, halves)]) for k in names}
 
 
 def _difference(v0, up, down, h):

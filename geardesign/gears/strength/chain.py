@@ -297,7 +297,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``root=False`` leaves the root side out (no S_F, σ_F, Y fields): half the work where only contact is asked.
     ``geometry``: the pair's geometry dict when the caller has it (:func:`~geardesign.gears.geometry.mesh_geometry`
     of these designs: the strength checks of the shift solvers); it is used unvalidated, so designs that do not
-    exist give NaN rather than an error.
+    exist, or have no root section, give NaN rather than an error.
     """
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
@@ -330,7 +330,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
              {"pitting_permitted": pitting_permitted, "optimum": optimum_life}, internal, out)
     if require_bool("root", root):
         root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root,
-                  (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out, rim_mm)
+                  (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out, rim_mm, refuse=geometry is None)
     return _finish(out, S_Hmin, S_Fmin, np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
 
 

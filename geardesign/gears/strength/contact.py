@@ -82,16 +82,17 @@ def single_pair_factors(db1, db2, da1, da2, alpha_wt_deg, a_w, eps_alpha, eps_be
     rb1 = ra1 - p_bt                                                                 # point B: one base pitch inside
     rb2 = T1T2 + rb1 if internal else T1T2 - rb1
     M1 = np.sqrt(rc1 * rc2 / (rb1 * rb2))
+    eb = np.minimum(np.asarray(eps_beta, dtype=float), 1.0)
+    Z_B = np.maximum(M1 - eb * (M1 - 1.0), 1.0)
+    if internal:          # Z_D = 1 (ISO 6336-2:2019 6.1): the ring's point D is not needed
+        return Z_B, np.ones_like(Z_B)
     ra2 = np.sqrt((np.asarray(da2) / 2.0) ** 2 - (np.asarray(db2) / 2.0) ** 2)
     rd2 = ra2 - p_bt
     rd1 = T1T2 - rd2
     M2 = np.sqrt(rc1 * rc2 / (rd1 * rd2))
-    eb = np.minimum(np.asarray(eps_beta, dtype=float), 1.0)
-    Z_B = np.maximum(M1 - eb * (M1 - 1.0), 1.0)
     Z_D = np.maximum(M2 - eb * (M2 - 1.0), 1.0)
     u = np.asarray(db2) / db1 if u is None else np.asarray(u)   # give u = z2/z1: exact at the rule's 1.5
-    Z_D = np.where(u > 1.5, 1.0, Z_D) if not internal else np.ones_like(Z_D)
-    return Z_B, Z_D
+    return Z_B, np.where(u > 1.5, 1.0, Z_D)
 
 
 def nominal_contact_stress(F_t, d1, b, u, Z_H, Z_E, Z_eps, Z_beta, internal=False):

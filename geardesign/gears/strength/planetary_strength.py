@@ -7,17 +7,40 @@ from .chain import pair_strength
 from .load import Load
 from .result import StrengthResult, from_chain
 
-__all__ = ["planetary_strength"]
+__all__ = ["planetary_strength", "mesh_loads"]
 
 
-def _carrier_speed(pset, n_sun: float) -> float:
+def _carrier_speed(arrangement: str, z_sun: int, z_ring: int, n_sun: float) -> float:
     """Carrier speed (rpm) with the sun at ``n_sun``: ring fixed n_c = n_s z_s/(z_s + z_r); carrier fixed 0."""
-    if pset.arrangement == "ring_fixed":
-        return n_sun * pset.z_sun / (pset.z_sun + pset.z_ring)
-    if pset.arrangement == "carrier_fixed":
+    if arrangement == "ring_fixed":
+        return n_sun * z_sun / (z_sun + z_ring)
+    if arrangement == "carrier_fixed":
         return 0.0
-    raise GearDesignError(f"planetary_strength takes the load on the sun, so the sun must turn: arrangement must be "
-                          f"'ring_fixed' or 'carrier_fixed', got {pset.arrangement!r}")
+    raise GearDesignError(f"the strength of a planetary set takes the load on the sun, so the sun must turn: "
+                          f"arrangement must be 'ring_fixed' or 'carrier_fixed', got {arrangement!r}")
+
+
+def mesh_loads(z_sun: int, z_planet: int, z_ring: int, n_planets: int, arrangement: str, load: Load) -> dict:
+    """The load of each mesh of a planetary set whose sun carries ``load``: {"sun-planet": (Load on the sun,
+    cycles_per_rev), "planet-ring": (Load on the planet, cycles_per_rev)}. Each mesh carries T_sun/N (the
+    planets share the torque; K_γ of ISO 6336-1:2019 6.4 is the caller's), at the speeds relative to the
+    carrier, n_s − n_c on the sun and (n_s − n_c) z_s/z_p on the planet; a sun tooth meets N planets per
+    relative revolution, a ring tooth N, a planet tooth one of each.
+
+    >>> sp, pr = mesh_loads(20, 31, 82, 3, "ring_fixed", Load(torque_nm=300, n_rpm=1020)).values()
+    >>> sp[0].torque_nm, round(sp[0].n_rpm, 6), sp[1], round(pr[0].torque_nm, 6), pr[1]
+    (100.0, 820.0, (3, 1), 155.0, (1, 3))
+    """
+    if not isinstance(load, Load) or load.on_gear != 1:
+        raise GearDesignError("load must be a geardesign Load given on the sun (on_gear=1)")
+    n_sun_rel = abs(load.n_rpm - _carrier_speed(arrangement, z_sun, z_ring, load.n_rpm))
+    if n_sun_rel == 0.0:
+        raise GearDesignError("the sun turns with the carrier: no mesh is loaded cyclically")
+    t_mesh = load.torque_nm / n_planets
+    kept = dict(on_gear=1, application_factor=load.application_factor, life_h=load.life_h)
+    return {"sun-planet": (Load(torque_nm=t_mesh, n_rpm=n_sun_rel, **kept), (n_planets, 1)),
+            "planet-ring": (Load(torque_nm=t_mesh * z_planet / z_sun, n_rpm=n_sun_rel * z_sun / z_planet, **kept),
+                            (1, n_planets))}
 
 
 def planetary_strength(pset, load: Load, material=None, *, face_width_mm: float, K_gamma: float = 1.0,
@@ -37,28 +60,17 @@ def planetary_strength(pset, load: Load, material=None, *, face_width_mm: float,
     >>> sorted(r), r["sun-planet"].S_H1 > 1.0
     (['planet-ring', 'sun-planet'], True)
     """
-    if not isinstance(load, Load) or load.on_gear != 1:
-        raise GearDesignError("load must be a geardesign Load given on the sun (on_gear=1)")
     if material is None:
         raise GearDesignError("material is needed (a geardesign Material or a name such as '18CrNiMo7-6')")
-    n_p = pset.n_planets
-    n_c = _carrier_speed(pset, load.n_rpm)
-    n_sun_rel = abs(load.n_rpm - n_c)
-    if n_sun_rel == 0.0:
-        raise GearDesignError("the sun turns with the carrier: no mesh is loaded cyclically")
-    t_mesh = load.torque_nm / n_p
+    (sp_load, sp_cycles), (pr_load, pr_cycles) = mesh_loads(pset.z_sun, pset.z_planet, pset.z_ring, pset.n_planets,
+                                                             pset.arrangement, load).values()
     common = dict(beta_deg=pset.beta_deg, rack=pset.rack, tip_shortening=False, face_width_mm=face_width_mm,
                   K_gamma=K_gamma, **options)
     planet = planet_material or material
-    sp_load = Load(torque_nm=t_mesh, n_rpm=n_sun_rel, on_gear=1, application_factor=load.application_factor,
-                   life_h=load.life_h)
     sp = pair_strength(pset.m, pset.z_sun, pset.z_planet, pset.x_sun, pset.x_planet, load=sp_load,
-                       material1=material, material2=planet, cycles_per_rev=(n_p, 1), **common)
-    n_planet_rel = n_sun_rel * pset.z_sun / pset.z_planet
-    pr_load = Load(torque_nm=t_mesh * pset.z_planet / pset.z_sun, n_rpm=n_planet_rel, on_gear=1,
-                   application_factor=load.application_factor, life_h=load.life_h)
+                       material1=material, material2=planet, cycles_per_rev=sp_cycles, **common)
     pr = pair_strength(pset.m, pset.z_planet, pset.z_ring, pset.x_planet, pset.x_ring, load=pr_load,
                        material1=planet, material2=ring_material or material, internal=True,
-                       cycles_per_rev=(1, n_p), **common)
+                       cycles_per_rev=pr_cycles, **common)
     return {"sun-planet": from_chain(sp, title=f"sun-planet {pset.z_sun}/{pset.z_planet}"),
             "planet-ring": from_chain(pr, title=f"planet-ring {pset.z_planet}/{pset.z_ring}")}

@@ -149,7 +149,7 @@ def _first(values, bad) -> str:
     return repr(values[tuple(np.argwhere(bad)[0])].item()) if values.ndim else repr(values.item())
 
 
-def _theta(G, H, z_n, x, ops):
+def _theta(G, H, z_n, x, ops, refuse=True):
     """Root of θ = (2G/z_n) tan θ − H (radians; ISO 6336-3:2019 clause 6.2), Newton from θ = π/6.
 
     The standard's fixed-point iteration converges to the root where (2G/z_n)/cos²θ < 1, the root
@@ -167,6 +167,8 @@ def _theta(G, H, z_n, x, ops):
     c = ops.cos(th)
     ok = (ops.abs(th - k * ops.tan(th) + H) <= 1e-12) & (1.0 - k / (c * c) > 0.0)
     if not ops.all(ok):
+        if not refuse:
+            return np.where(ok, th, np.nan)
         bad = ~np.asarray(ok)
         raise GearDesignError(
             "x must leave the 30-degree tangent on the generated fillet (the theta equation of "
@@ -175,7 +177,7 @@ def _theta(G, H, z_n, x, ops):
     return th
 
 
-def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops):
+def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops, refuse=True):
     """d_en/m_n (method B, outer point of single pair contact) or d_an/m_n (method C, the tip) of the
     virtual gear; ISO 6336-3:2019 clause 6.2: d_en = 2 √{[√((d_an/2)² − (d_bn/2)²) ∓ π m_n cos α_n
     (ε_αn − 1)]² + (d_bn/2)²} (− for an external gear; + for an internal one, whose point of single
@@ -186,7 +188,9 @@ def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops):
     rho_a = ops.sqrt((da_n - d_bn) * (da_n + d_bn)) / 2.0
     p_bn = math.pi * math.cos(alpha_n)
     rho_e = rho_a + p_bn * (eps_n - 1.0) if internal else rho_a - p_bn * (eps_n - 1.0)
-    if ops.any(rho_e <= 0.0):
+    if ops.any(rho_e <= 0.0) and not refuse:
+        rho_e = np.where(rho_e > 0.0, rho_e, np.nan)
+    elif ops.any(rho_e <= 0.0):
         bad = np.asarray(rho_e) <= 0.0
         most = eps_n + rho_e / p_bn       # ε_αn = 1 + ρ_a/p_bn puts the point on the base circle (external only:
         #                                   a ring's point lies outward of its tip)
@@ -196,7 +200,7 @@ def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops):
     return 2.0 * ops.sqrt(rho_e * rho_e + d_bn * d_bn / 4.0)
 
 
-def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops):
+def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
     """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) of an external gear: ISO 6336-3:2019 clause 6.2,
     G = ρ_fP/m_n − h_fP/m_n + x, H = 2/z_n (π/2 − E/m_n) − π/3, θ = (2G/z_n) tan θ − H,
     s_Fn/m_n = z_n sin(π/3 − θ) + √3 (G/cos θ − ρ_fP/m_n),
@@ -205,7 +209,7 @@ def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops):
     h_Fe/m_n = ½[(cos γ_e − sin γ_e tan α_Fen) d_e/m_n − z_n cos(π/3 − θ) − G/cos θ + ρ_fP/m_n]."""
     G = rho - hfp + x
     H = 2.0 / z_n * (math.pi / 2.0 - E) - math.pi / 3.0
-    th = _theta(G, H, z_n, x, ops)
+    th = _theta(G, H, z_n, x, ops, refuse)
     c = ops.cos(th)
     s_Fn = z_n * ops.sin(math.pi / 3.0 - th) + math.sqrt(3.0) * (G / c - rho)
     rho_F = rho + 2.0 * G * G / (c * (z_n * c * c - 2.0 * G))
@@ -221,7 +225,7 @@ def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops):
 _TANGENT_INTERNAL = math.pi / 3.0
 
 
-def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops):
+def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
     """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) of an internal gear treated, as ISO 6336-3:2006
     does, as its basic rack (z_n → ∞) with the 60° tangent.
 
@@ -243,7 +247,7 @@ def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops):
 
 
 def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=20.0, hfp_star=1.25,
-                      rhofp_star=0.38, spr_star=0.0, internal=False, method="B") -> dict:
+                      rhofp_star=0.38, spr_star=0.0, internal=False, method="B", refuse=True) -> dict:
     """ISO 6336-3 tooth form factor and stress-correction factor of one gear, over arrays.
 
     Parameters (broadcast together; lengths in units of the normal module m_n)
@@ -262,6 +266,8 @@ def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=
         edition's shaper-cutter treatment is not implemented; see the module docstring).
     method : "B" (load at the outer point of single pair contact, ISO 6336-3:2019: Y_F, Y_S) or "C"
         (load at the tip, ISO 6336-3:1996 / DIN 3990-3 method C: Y_Fa, Y_Sa, to be used with Y_ε).
+    refuse : False gives NaN, instead of an error, for designs of valid inputs that have no root section
+        (the shift solvers' strength checks, whose designs the geometry's own checks judge).
 
     Returns
     -------
@@ -294,17 +300,18 @@ def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=
     E = _rack_fillet_centre(alpha_n, hfp, rho, spr)
     rack = (alpha_n, hfp, rho, E, internal, method)
     if ops is _FloatOps:                              # numpy scalars: the same interface as arrays
-        out = _factors(z, x, da, eps, beta, rack, ops)
+        out = _factors(z, x, da, eps, beta, rack, ops, True)
         return {k: (np.bool_(v) if k == "in_range" else np.float64(v)) for k, v in out.items()}
+    refuse = require_bool("refuse", refuse)
     if z.size <= BLOCK:
-        return _factors(z, x, da, eps, beta, rack, ops)
+        return _factors(z, x, da, eps, beta, rack, ops, refuse)
     # block by block: ~60 temporaries of BLOCK doubles stay in the caches (as geometry.mesh_geometry does)
     flat = [v.reshape(-1) for v in (z, x, da, eps, beta)]
-    parts = [_factors(*(v[i:i + BLOCK] for v in flat), rack, ops) for i in range(0, z.size, BLOCK)]
+    parts = [_factors(*(v[i:i + BLOCK] for v in flat), rack, ops, refuse) for i in range(0, z.size, BLOCK)]
     return {k: np.concatenate([p[k] for p in parts]).reshape(z.shape) for k in parts[0]}
 
 
-def _factors(z, x, da, eps, beta, rack, ops) -> dict:
+def _factors(z, x, da, eps, beta, rack, ops, refuse) -> dict:
     """Every field of :func:`root_form_factors` for validated inputs (arrays of one shape, or floats)."""
     alpha_n, hfp, rho, E, internal, method = rack
     cos_beta = ops.cos(beta * (math.pi / 180.0))
@@ -313,15 +320,19 @@ def _factors(z, x, da, eps, beta, rack, ops) -> dict:
     z_n = z / (cos_bb2 * cos_beta)
     eps_n = eps / cos_bb2
     da_n = z_n + da - z / cos_beta                    # d_an = d_n + d_a − d
-    if ops.any(bad := da_n <= z_n * math.cos(alpha_n)):
+    if ops.any(bad := da_n <= z_n * math.cos(alpha_n)) and not refuse:
+        da_n = np.where(bad, np.nan, da_n)
+    elif ops.any(bad):
         least = z / cos_beta - z_n * (1.0 - math.cos(alpha_n))      # d_an = d_bn
         raise GearDesignError(
             f"da_over_mn must be > {float(_first(least, bad)):.6g} (the tip above the base circle: d_an > d_bn of "
             f"the virtual gear), got {_first(da, bad)}")
-    d_e = _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops)
+    d_e = _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops, refuse)
     section = _internal_section if internal else _external_section
-    s_Fn, rho_F, h_Fe, alpha_F, th = section(z_n, x, d_e, alpha_n, E, hfp, rho, ops)
-    if ops.any(bad := (s_Fn <= 0.0) | (h_Fe <= 0.0)):
+    s_Fn, rho_F, h_Fe, alpha_F, th = section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse)
+    if ops.any(bad := (s_Fn <= 0.0) | (h_Fe <= 0.0)) and not refuse:
+        s_Fn = np.where(bad, np.nan, s_Fn)
+    elif ops.any(bad):
         raise GearDesignError(f"x gives no root section (s_Fn or h_Fe <= 0), got x={_first(x, bad)}")
     Y_F = 6.0 * h_Fe * ops.cos(alpha_F) / (s_Fn * s_Fn * math.cos(alpha_n))
     Y_S = stress_correction_factor(s_Fn, h_Fe, rho_F)

@@ -42,8 +42,9 @@ def _root_modules():
 
 
 def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12, life_h,
-              method, out, rim=(None, None)):
-    """Fill ``out`` with the root factors, σ_F1,2, σ_FG1,2 and S_F1,2 of both gears."""
+              method, out, rim=(None, None), refuse=True):
+    """Fill ``out`` with the root factors, σ_F1,2, σ_FG1,2 and S_F1,2 of both gears (``refuse`` False: NaN
+    for a design without a root section, see :func:`~.root.root_form_factors`)."""
     mods = _root_modules()
     if mods is None:
         for i in (1, 2):
@@ -52,11 +53,11 @@ def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_g
         return
     root, rf = mods
     _root_factors(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12,
-                  life_h, method, out, root, rf, rim)
+                  life_h, method, out, root, rf, rim, refuse)
 
 
 def _root_factors(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12,
-                  life_h, method, out, root, rf, rim):
+                  life_h, method, out, root, rf, rim, refuse):
     names = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")
     out["Y_beta"] = np.asarray(G.pick("Y_beta", lambda: rf.helix_factor_Y_beta(out["eps_beta"], beta_deg)))
     if method == "B":
@@ -70,14 +71,14 @@ def _root_factors(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A,
         da = g[f"da{i}"]
         ff = root.root_form_factors(g[f"_{z_key}"], x, da / m, eps_alpha=g["eps_alpha"], beta_deg=beta_deg,
                                     alpha_n_deg=rack.alpha_deg, hfp_star=rack.ha + rack.c, rhofp_star=rack.rho_f,
-                                    internal=internal and i == 2, method=method)
+                                    internal=internal and i == 2, method=method, refuse=refuse)
         YF = np.asarray(G.pick(f"{names[0]}{i}", lambda: ff[names[0]]))
         YS = np.asarray(G.pick(f"{names[1]}{i}", lambda: ff[names[1]]))
         YB = np.asarray(G.pick(f"Y_B{i}", lambda: _rim(rf, rim[i - 1], g[f"h{i}"], m, internal and i == 2)))
         kind = _root_kind(mat.kind, rf)
         N_L = None if life_h is None else 60.0 * n * life_h
         Y_NT = np.asarray(G.pick(f"Y_NT{i}", lambda: np.ones_like(F_t) if N_L is None else rf.life_factor_Y_NT(N_L, kind)))
-        Y_d = np.asarray(G.pick(f"Y_deltarelT{i}", lambda: _notch(rf, ff["q_s"], mat, out, i)))
+        Y_d = np.asarray(G.pick(f"Y_deltarelT{i}", lambda: _notch(rf, ff["q_s"], mat, out, i, refuse)))
         Y_R = np.asarray(G.pick(f"Y_RrelT{i}", lambda: rf.relative_surface_factor_Y_RrelT(Rz_root, kind)))
         Y_X = np.asarray(G.pick(f"Y_X{i}", lambda: rf.size_factor_Y_X(m, kind)))
         out.update({f"{names[0]}{i}": YF, f"{names[1]}{i}": YS, f"Y_B{i}": YB, f"Y_NT{i}": Y_NT,
@@ -101,8 +102,14 @@ def _rim(rf, s_R_mm, h_t, m, internal):
     return rf.rim_factor_Y_B(s_R_mm / h_t) if not internal else rf.rim_factor_Y_B(internal=True, s_R_over_mn=s_R_mm / m)
 
 
-def _notch(rf, q_s, mat, out, i):
-    """Y_δrelT; the strength the slip-layer table needs is clipped to the table's range and the result says so."""
+def _notch(rf, q_s, mat, out, i, refuse=True):
+    """Y_δrelT; the strength the slip-layer table needs is clipped to the table's range and the result says so.
+    ``refuse`` False: NaN where q_s is undefined or outside the form's range (designs without a root section)."""
+    if not refuse:
+        lo, hi = rf.NOTCH_Q_S_RANGE
+        bad = ~((q_s >= lo) & (q_s <= hi))
+        if np.any(bad):
+            return np.where(bad, np.nan, _notch(rf, np.where(bad, lo, q_s), mat, out, i))
     if mat.kind not in STRENGTH_NEEDED_KINDS:
         return rf.relative_notch_sensitivity_Y_delta_relT(q_s, mat.kind)
     if mat.yield_mpa is None:

@@ -155,6 +155,9 @@ _STATIC_LINEAR = {"Eh": (0.44, 0.12), "IF": (0.44, 0.12), "NT": (0.20, 0.60), "N
 _STATIC_STRENGTH = {"St": (0.93, 200.0), "V": (0.82, 300.0), "GGG(perl)": (0.82, 300.0), "GTS": (0.82, 300.0)}
 
 
+NOTCH_Q_S_RANGE = (0.1, 50.0)   # the notch parameters the fatigue form is taken over (far beyond the standard's 1..8)
+
+
 def relative_notch_sensitivity_Y_delta_relT(q_s, material_kind, *, limit_mpa=None, static: bool = False,
                                             Y_S=None):
     """Relative notch sensitivity factor Y_δrelT (ISO 6336-3:2019, clause 13, method B; the fatigue form and the
@@ -191,7 +194,7 @@ def relative_notch_sensitivity_Y_delta_relT(q_s, material_kind, *, limit_mpa=Non
                                   "relative notch sensitivity, > 0 MPa, got None")
         k = c * (s0 / require_positive("limit_mpa", limit_mpa, "MPa")) ** 0.25
         return (1.0 + k * (ys - 1.0)) / (1.0 + k)
-    qs = require_range("q_s", q_s, 0.1, 50.0)
+    qs = require_range("q_s", q_s, *NOTCH_Q_S_RANGE)
     rho = _slip_layer(kind, limit_mpa)
     return (1.0 + np.sqrt(rho * (1.0 + 2.0 * qs) / 5.0)) / (1.0 + np.sqrt(rho * _CHI_T))
 

@@ -1,5 +1,6 @@
 """Every python block of docs/strength.md runs as written, in order, and the figures it quotes are the program's."""
 import contextlib
+import doctest
 import io
 import re
 from pathlib import Path
@@ -14,7 +15,13 @@ def test_code_blocks_run_and_quoted_output_matches():
     env, printed = {}, io.StringIO()
     with contextlib.redirect_stdout(printed):
         for block in blocks:
-            exec(compile(block, str(DOC), "exec"), env)
+            if block.lstrip().startswith(">>>"):      # a session: its printed figures are compared as a doctest
+                test = doctest.DocTestParser().get_doctest(block, env, "strength.md", str(DOC), 0)
+                runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+                runner.run(test, out=printed.write, clear_globs=False)
+                assert runner.failures == 0, printed.getvalue()[-2000:]
+            else:
+                exec(compile(block, str(DOC), "exec"), env)
     out = printed.getvalue()
     quoted = re.search(r"```text\n(.*?)```", text, flags=re.S).group(1)
     assert quoted.strip() in out

@@ -171,6 +171,8 @@ def reference(m, z1, z2, x1, x2, beta_deg, b, T1, n1, mat1, mat2, grade, nu40, R
         curve = "GG_NT_NV" if mt.kind in ("NT", "NV(nitr)", "GG", "GGG(ferr)") else "no_pitting"
         ZNT = 1.0 if life_h is None else interp_life(60 * n * life_h, LIFE[curve])
         out[f"S_H{i}"] = s * ZNT * ZL * Zv * ZR * ZW / out[f"sigma_H{i}"]
+    if not g["ea"] > 1.0:           # the root form factors' range starts at eps_alpha = 1: the caller expects a refusal
+        return out
     # root (ISO 6336-3:2019 method B): the form factors and the part-3 factor curves from their module (tested
     # there against the standard and mpmath); the chain's assembly of them written out here
     ean = g["ea"] / math.cos(g["bb"]) ** 2
