@@ -17,6 +17,8 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
+import geardesign as gd
+
 from geardesign.gears.rack import BasicRack
 from geardesign.gears.strength import Load, Material, pair_strength
 from geardesign.gears.strength import root_factors as rf
@@ -27,6 +29,12 @@ CASES = pd.read_csv(DATA / "iso6336_root_kisssoft_cases.csv").set_index("case")
 PRINTED = pd.read_csv(DATA / "iso6336_root_kisssoft_printed.csv", dtype={"value": str})
 FACTORS = pd.read_csv(DATA / "iso6336_root_kisssoft_factors.csv", dtype={"value": str})
 ALPHA_N = math.radians(20.0)
+RACK_A = BasicRack(ha=1.0, c=0.25, rho_f=0.38)              # ISO 53 profile A, as the reports' gears 1 and 2
+STEEL = Material("18CrNiMo7-6 (the reports')", "Eh", 206000, 0.3, 61, "HRC", 1500, 430)   # σ_Flim 430 MPa
+HELICAL_LOAD = Load(torque_nm=40953.0, n_rpm=1165.9, application_factor=1.25, life_h=175200)
+# stage_03's grade, root roughness, required safety S_Fmin = 1.56 and its K factors (given, not tested)
+HELICAL_OPTIONS = dict(accuracy_grade=6, Rz_root_um=20, S_Fmin=1.56,
+                       factors={"K_v": 1.092, "K_Fbeta": 1.136, "K_Falpha": 1.069, "K_Hbeta": 1.15, "K_Halpha": 1.069})
 # the report prints x to 4 decimals and the diameters to 0.001 mm: half a unit of each is the inputs' own rounding
 INPUT_ROUNDING = {"x": 0.5e-4, "da_mm": 0.5e-3, "da_mate_mm": 0.5e-3}
 
@@ -103,8 +111,8 @@ def test_printed_digit(row):
 
 
 def _kisssoft_gamma_e(c, f) -> dict:
-    """h_Fe, α_Fen, Y_F, Y_S, σ_F0 with KISSsoft's γ_e: (π/2 + 2x tan α_n)/(z/cos³β) + inv α_n − inv α_en, the rest
-    (d_en, θ, s_Fn, ρ_F) ours (ISO 6336-3:2006 clause 6.2 with z_n there in place of z/cos³β)."""
+    """h_Fe, α_Fen, Y_F, Y_S, σ_F0 with KISSsoft's γ_e = (π/2 + 2x tan α_n)/(z/cos³β) + inv α_n − inv α_en,
+    the rest (d_en, θ, s_Fn, ρ_F) ours (ISO 6336-3:2006 clause 6.2 with z_n there in place of z/cos³β)."""
     z_n, d_en, th = float(f["z_n"]), float(f["d_en"]), float(f["theta_rad"])
     s, rho = float(f["s_Fn"]), float(f["rho_F"])
     G = c.rhofp_star - c.hfp_star + c.x
@@ -121,7 +129,7 @@ def _kisssoft_gamma_e(c, f) -> dict:
             "sigma_F0": c.F_t_N / (c.b_mm * c.m_n) * Y_F * Y_S * _y_beta(c)}
 
 
-# how far ours may lie from KISSsoft's where only its γ_e differs (β = 10°): measured 0.15 % in h_F, 0.016° in α_Fen
+# how far ours may lie from KISSsoft's where only its γ_e differs (β = 10°): 0.15 % in h_F, 0.016° in α_Fen
 KISSSOFT_GAMMA_BOUND = {"h_F": 2.5e-3, "h_F_star": 2.5e-3, "alpha_Fen": 0.02, "Y_S": 1e-3, "sigma_F0": 1e-3}
 
 
@@ -145,9 +153,9 @@ def test_spur_gears_are_unaffected_by_the_gamma_e_variant():
 
 @_rows("internal_method")
 def test_ring_rack_treatment_is_conservative(row):
-    """KISSsoft generates the ring with a shaper cutter (z0 = 36 and 30, its root from ISO 6336-3:2006/2007's
-    internal-gear text); our rack treatment (z_n → ∞, 60° tangent, ρ_F = ρ_fP) must give the larger Y_F·Y_S and σ_F0,
-    and the same load point d_en (tested with the rows that agree)."""
+    """KISSsoft generates the ring with a shaper cutter (z0 = 36 and 30; "roF and sFn according to ISO
+    6336-3:2007"); our rack treatment (z_n → ∞, 60° tangent, ρ_F = ρ_fP) must give the larger Y_F·Y_S and
+    σ_F0, and the same load point d_en (tested with the rows that agree)."""
     c, f = _form(row.case)
     ours = _quantities(c, f)
     kiss = PRINTED[(PRINTED.case == row.case)].set_index("quantity").value.astype(float)
@@ -188,22 +196,33 @@ def test_printed_factor(row):
 
 @pytest.fixture(scope="module")
 def helical_pair():
-    """stage_03 through pair_strength: the report's load, widths, material limits and its K factors given."""
-    steel = Material("18CrNiMo7-6 (the report's)", "Eh", 206000, 0.3, 61, "HRC", 1500, 430)
-    return pair_strength(14, 24, 95, 0.48, 0.6691, load=Load(torque_nm=40953.0, n_rpm=1165.9, application_factor=1.25,
-                                                               life_h=175200),
-                         material1=steel, face_width_mm=360, beta_deg=10, rack=BasicRack(ha=1.0, c=0.25, rho_f=0.38),
-                         accuracy_grade=6, Rz_root_um=20,
-                         factors={"K_v": 1.092, "K_Fbeta": 1.136, "K_Falpha": 1.069, "K_Hbeta": 1.15, "K_Halpha": 1.069})
+    """stage_03 through pair_strength: the report's load, width, material limits and K factors."""
+    return pair_strength(14, 24, 95, 0.48, 0.6691, load=HELICAL_LOAD, material1=STEEL, face_width_mm=360, beta_deg=10,
+                         rack=RACK_A, **HELICAL_OPTIONS)
 
 
 def test_chain_helical_pair(helical_pair):
     out = helical_pair
     printed = FACTORS[FACTORS.quantity == "sigma_FG"].value.astype(float).tolist()
     assert [float(out["sigma_FG1"]), float(out["sigma_FG2"])] == [pytest.approx(v, abs=0.005) for v in printed]
+    # σ_FP = σ_FG/S_Fmin: 408.43/419.69 MPa printed
+    assert [float(out["sigma_FP1"]), float(out["sigma_FP2"])] == [pytest.approx(408.43, abs=0.005),
+                                                                  pytest.approx(419.69, abs=0.005)]
     assert float(out["Y_beta"]) == pytest.approx(0.917, abs=5e-4) and float(out["Y_DT"]) == 1.0
     for i, case in ((1, "s3_gear1"), (2, "s3_gear2")):
         _, f = _form(case)
         # the chain's own geometry (its tips from x and the tip shortening, 0.001 mm from the printed ones)
         assert float(out[f"Y_F{i}"]) == pytest.approx(float(f["Y_F"]), rel=1e-4)
         assert float(out[f"sigma_F0{i}"]) == pytest.approx(_quantities(CASES.loc[case], f)["sigma_F0"], rel=1e-4)
+
+
+def test_gear_pair_strength_prints_the_reports_factors():
+    """The same pair through GearPair.strength: its factor table carries the printed digits."""
+    pair = gd.GearPair(m=14, z1=24, z2=95, x1=0.48, x2=0.6691, beta_deg=10, rack=RACK_A, face_width_mm=360)
+    r = pair.strength(HELICAL_LOAD, material=STEEL, **HELICAL_OPTIONS)
+    table = r.factors.set_index(["symbol", "gear"]).value
+    printed = {("Y_F", 1): 1.18, ("Y_F", 2): 1.24, ("Y_S", 2): 2.35, ("Y_NT", 1): 0.850, ("Y_NT", 2): 0.870,
+               ("Y_X", 1): 0.910, ("Y_RrelT", 1): 0.957, ("Y_deltarelT", 1): 1.001, ("Y_deltarelT", 2): 1.005}
+    for (symbol, gear), value in printed.items():
+        decimals = 2 if symbol in ("Y_F", "Y_S") else 3
+        assert abs(table[(symbol, gear)] - value) <= 0.5 * 10.0 ** -decimals, (symbol, gear)
