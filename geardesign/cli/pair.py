@@ -5,6 +5,7 @@ import sys
 
 from ..errors import GearDesignError
 from ..files import check_output_path
+from ..gears.checks.strength import STRENGTH_CONTEXT
 from ..gears.pair import GearPair
 from ..scene.html import pair_report
 from .measure import ROWS
@@ -107,13 +108,14 @@ def run(args) -> int:
     if args.report:
         check_output_path(args.report, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--report")
     pair, housing = pair_from_args(args)
+    checks = checks_from_args(args)
     if args.report:
         pair_report(pair, args.report, overwrite=args.overwrite, eps_alpha_min=args.eps_alpha_min,
-                    sa_min=args.sa_min, housing_a_w=housing, eps_gamma_min=args.eps_gamma_min)
+                    sa_min=args.sa_min, housing_a_w=housing, eps_gamma_min=args.eps_gamma_min,
+                    **{k: v for k, v in checks.items() if k in STRENGTH_CONTEXT})
         print(f"report written to {args.report}", file=sys.stderr)   # stderr: --json keeps stdout pure
     rack, shorten = pair.rack, not args.no_tip_shortening
     geo = pair.geometry()
-    checks = checks_from_args(args)
     table = pair.checks(**checks, housing_a_w=housing)
     failed = table.loc[~table["ok"], "check"].tolist()
     strength = _strength(pair, checks)

@@ -85,6 +85,15 @@ class _Limits:
     sa_min: float = DEFAULT_SA_MIN
     housing_a_w: float | None = None
     eps_gamma_min: float | None = None
+    load_case: tuple = ()     # the strength checks' context (load, material, ...) as items
+
+    @property
+    def checks(self) -> dict:
+        """The limits and the load case as make_checks options."""
+        out = {"eps_alpha_min": self.eps_alpha_min, "sa_min": self.sa_min, **dict(self.load_case)}
+        if self.eps_gamma_min is not None:
+            out["eps_gamma_min"] = self.eps_gamma_min
+        return out
 
 
 def _png(fig) -> str:
@@ -106,9 +115,7 @@ def _pictures(pair: GearPair, lim: _Limits) -> tuple[str, str, object]:
     from ..shifts.optimize import optimize_shifts
     from ..shifts.region import feasible_region
 
-    checks = {"eps_alpha_min": lim.eps_alpha_min, "sa_min": lim.sa_min}
-    if lim.eps_gamma_min is not None:
-        checks["eps_gamma_min"] = lim.eps_gamma_min
+    checks = lim.checks
     kind = dict(rack=pair.rack, tip_shortening=pair.tip_shortening, beta_deg=pair.beta_deg,
                 internal=pair.internal, face_width_mm=pair.face_width_mm)
     region = feasible_region(pair.z1, pair.z2, checks=checks, m=pair.m, **kind)
@@ -198,19 +205,20 @@ def _checks(table) -> tuple[str, str, bool]:
 
 def pair_report_html(pair: GearPair, eps_alpha_min: float = DEFAULT_EPS_ALPHA_MIN, sa_min: float = DEFAULT_SA_MIN,
                      housing_a_w: float | None = None, eps_gamma_min: float | None = None,
-                     pictures: bool = True) -> str:
-    """The report of ``pair`` as one HTML page (a string); limits as :meth:`GearPair.checks`."""
+                     pictures: bool = True, **load_case) -> str:
+    """The report of ``pair`` as one HTML page (a string); limits as :meth:`GearPair.checks`; ``load_case``
+    (``load``, ``material``, ``material2``, ``face_width_mm``, ``strength``, as a ``checks`` dict takes them)
+    adds the strength checks and the ISO 6336 result with its factor table."""
     if not isinstance(pair, GearPair):
         raise GearDesignError(f"pair must be a geardesign.GearPair, got {type(pair).__name__}")
-    lim = _Limits(eps_alpha_min, sa_min, housing_a_w, eps_gamma_min)
-    table = pair.checks(eps_alpha_min=eps_alpha_min, sa_min=sa_min, housing_a_w=housing_a_w,
-                        eps_gamma_min=eps_gamma_min)
+    lim = _Limits(eps_alpha_min, sa_min, housing_a_w, eps_gamma_min, tuple(load_case.items()))
+    table = pair.checks(**lim.checks, housing_a_w=housing_a_w)
     verdict, checks, _ = _checks(table)
     title = (f"Gear pair m = {pair.m:g} mm, z<sub>1</sub>/z<sub>2</sub> = {pair.z1}/{pair.z2}, "
              f"x<sub>1</sub> = {pair.x1:.4g}, x<sub>2</sub> = {pair.x2:.4g}")
     from .. import __version__
     parts = [f"<h1>{title}</h1>", verdict, "<h2>Checks</h2>", checks, "<h2>Inputs</h2>", _inputs(pair, lim),
-             "<h2>Geometry</h2>", _geometry(pair),
+             "<h2>Geometry</h2>", _geometry(pair), *_strength_part(pair, load_case),
              f'<p class="small">geardesign {__version__}. Geometry: ISO 21771:2007; GOST 16532-70 (external), '
              "GOST 19274-73 (internal). Margins are dimensionless, ≥ 0 where a check holds.</p>"]
     if pictures:
@@ -226,11 +234,34 @@ def pair_report_html(pair: GearPair, eps_alpha_min: float = DEFAULT_EPS_ALPHA_MI
     return _page(f"Gear pair {pair.z1}/{pair.z2}, m = {pair.m:g} mm", parts)
 
 
+def _strength_part(pair: GearPair, load_case: dict) -> list:
+    """The load capacity section: the ISO 6336 result per gear and every factor with its clause."""
+    if load_case.get("load") is None:
+        return []
+    r = pair.strength(load_case["load"], load_case.get("material"), material2=load_case.get("material2"),
+                      face_width_mm=load_case.get("face_width_mm"), **(load_case.get("strength") or {}))
+    load = load_case["load"]
+    rows = [[_td(name), _td(_fmt("{:.4g}", a), "num"), _td(_fmt("{:.4g}", b), "num"), _td(_fmt("{:.4g}", lo), "num")]
+            for name, a, b, lo in (("safety S<sub>H</sub> (contact)", r.S_H1, r.S_H2, r.S_Hmin),
+                                   ("safety S<sub>F</sub> (root)", r.S_F1, r.S_F2, r.S_Fmin),
+                                   ("σ<sub>H</sub>, MPa", r.sigma_H1, r.sigma_H2, None),
+                                   ("σ<sub>HP</sub>, MPa", r.sigma_HP1, r.sigma_HP2, None),
+                                   ("σ<sub>F</sub>, MPa", r.sigma_F1, r.sigma_F2, None),
+                                   ("σ<sub>FP</sub>, MPa", r.sigma_FP1, r.sigma_FP2, None))]
+    notes = "".join(f"<li>{html.escape(n)}</li>" for n in r.notes)
+    return [f"<h2>Load capacity (ISO 6336:2019)</h2><p>{load.torque_nm:.6g} N·m at {load.n_rpm:.6g} rpm on gear "
+            f"{load.on_gear} ({load.power_kw:.4g} kW), K<sub>A</sub> = {load.application_factor:g}, life "
+            + (f"{load.life_h:g} h" if load.life_h else "endurance") + ".</p>",
+            _table(["", "gear 1", "gear 2", "minimum"], rows), f"<ul>{notes}</ul>" if notes else "",
+            "<h3>Factors (gear 0: the pair)</h3>", _frame(r.factors, {"value": "{:.6g}"})]
+
+
 def pair_report(pair: GearPair, path, overwrite: bool = False, **limits):
     """Write the one-page calculation report of ``pair`` to ``path`` (.html): inputs, geometry
     (gear 1 | gear 2), checks with the verdict first, the blocking contour and the meshing
     drawing, self-contained and printable. ``limits``: ``eps_alpha_min``, ``sa_min``,
-    ``housing_a_w``, ``eps_gamma_min`` as :meth:`GearPair.checks`. The file appears whole or not
+    ``housing_a_w``, ``eps_gamma_min`` as :meth:`GearPair.checks`, and a load case (``load``,
+    ``material``, ``material2``, ``face_width_mm``, ``strength``) for the ISO 6336 section. The file appears whole or not
     at all; an existing one is replaced only with ``overwrite``. Returns the path."""
     p = check_output_path(path, overwrite=overwrite, suffixes=(".html", ".htm"), what="report")
     page = pair_report_html(pair, **limits)

@@ -245,3 +245,27 @@ def test_report_of_a_pair_with_no_feasible_shifts(tmp_path):
     x_min = (1 + 0.25 - 0.38 * (1 - math.sin(alpha))) - 6 * math.sin(alpha) ** 2 / 2
     assert f"undercut1 (value 0, limit {x_min:.5g})" in page
     assert "no feasible optimum" in page and "-0.0" not in page and "-0<" not in page
+
+
+def test_report_with_a_load_shows_the_strength_and_its_factors(tmp_path):
+    # issue 26 §4: the report of a loaded pair carries the strength checks, the ISO 6336 result per gear and the
+    # factor table; the page's figures are the StrengthResult's (and 20/60 at 400 N·m fails contact first)
+    pair = gd.GearPair(4, 20, 60, 0.3, 0.1, face_width_mm=40)
+    case = {"load": gd.Load(torque_nm=400, n_rpm=1000, life_h=20000), "material": "42CrMo4"}
+    path = pair.report(tmp_path / "loaded.html", **case)
+    res = pair.strength(case["load"], "42CrMo4")
+    dom = dump_dom(path)
+    verdict = re.search(r'<div class="verdict fail">(.*?)</div>', dom).group(1)
+    assert "contact_strength" in verdict
+    found = tables(dom)
+    checks, summary, factors = found[0], found[3], found[4]
+    assert {"contact_strength", "root_strength1", "root_strength2"} <= {r[1] for r in checks[1:]}
+    assert summary[0] == ["", "gear 1", "gear 2", "minimum"]
+    rows = {r[0]: r for r in summary[1:]}
+    assert float(rows["safety SH (contact)"][1]) == pytest.approx(res.S_H1, abs=5e-4)
+    assert float(rows["safety SF (root)"][2]) == pytest.approx(res.S_F2, abs=5e-4)
+    assert factors[0] == ["symbol", "gear", "value", "clause"]
+    by_symbol = {(r[0], r[1]): r for r in factors[1:]}
+    assert float(by_symbol[("Z_H", "0")][2]) == pytest.approx(float(res.factors.query("symbol == 'Z_H'")["value"].iloc[0]),
+                                                              rel=1e-5)
+    assert len(factors) - 1 == len(res.factors)
