@@ -173,7 +173,7 @@ class StrengthResult(Result):
 
 
 def _scalar(v) -> float:
-    return float(np.asarray(v).reshape(-1)[0])
+    return v if type(v) is float else float(np.asarray(v).reshape(-1)[0])
 
 
 def from_chain(out: dict, title: str = "") -> StrengthResult:
@@ -182,7 +182,7 @@ def from_chain(out: dict, title: str = "") -> StrengthResult:
     rows.append(("Y_ST", 0, 2.0, "ISO 6336-3:2019 (reference test gear: sigma_FE = sigma_Flim Y_ST)"))
     notes = []
     for flag, text in _FLAG_NOTES.items():
-        if flag in out and bool(np.any(out[flag])):
+        if flag in out and (out[flag] if type(out[flag]) is bool else bool(np.any(out[flag]))):
             notes.append(text)
     for name in out.get("given", ()):
         notes.append(f"{name} given, not computed")

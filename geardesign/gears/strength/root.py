@@ -29,6 +29,7 @@ import numpy as np
 from ...errors import GearDesignError
 from ...validate import (broadcast_inputs, one_number, require_bool, require_choice, require_int,
                          require_positive, require_range)
+from .ops import ArrayOps as _ArrayOps, FloatOps as _FloatOps
 
 __all__ = ["root_form_factors", "stress_correction_factor", "METHODS", "Q_S_RANGE", "Z_RANGE",
            "EPS_ALPHA_RANGE", "BETA_RANGE_DEG", "ALPHA_N_RANGE_DEG"]
@@ -66,31 +67,6 @@ def stress_correction_factor(s_Fn, h_Fe, rho_F):
     return (1.2 + 0.13 * L) * q_s ** (1.0 / (1.21 + 2.3 / L))
 
 
-class _ArrayOps:
-    """numpy functions for arrays of designs."""
-    sin, cos, tan, sqrt, arccos = np.sin, np.cos, np.tan, np.sqrt, np.arccos
-    any, all, abs, maximum, clip = staticmethod(np.any), staticmethod(np.all), np.abs, np.maximum, np.clip
-
-    @staticmethod
-    def like(a, v):
-        return np.full(np.shape(a), v)
-
-
-class _FloatOps:
-    """math functions for one design in Python floats: the same formulas ~10x faster than 0-d arrays."""
-    sin, cos, tan, sqrt, arccos = math.sin, math.cos, math.tan, math.sqrt, math.acos
-    any = all = staticmethod(bool)
-    abs, maximum = abs, max
-
-    @staticmethod
-    def clip(v, lo, hi):
-        return min(max(v, lo), hi)
-
-    @staticmethod
-    def like(a, v):
-        return v
-
-
 def _inv(a, ops):
     return ops.tan(a) - a
 
@@ -106,7 +82,7 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
     broadcast float arrays; and the ops that go with them."""
     method = require_choice("method", method, METHODS)
     internal = require_bool("internal", internal)
-    if (type(z) is int and Z_RANGE[0] <= z <= Z_RANGE[1] and _plain(x, *X_RANGE)
+    if ((type(z) is int or type(z) is float and z.is_integer()) and Z_RANGE[0] <= z <= Z_RANGE[1] and _plain(x, *X_RANGE)
             and _plain(da_over_mn, 1e-300, 1e300) and _plain(eps_alpha, *EPS_ALPHA_RANGE) and _plain(beta_deg, *BETA_RANGE_DEG)
             and _plain(alpha_n_deg, *ALPHA_N_RANGE_DEG) and _plain(hfp_star, *HFP_RANGE)
             and _plain(rhofp_star, *RHOFP_RANGE) and _plain(spr_star, *SPR_RANGE)):
@@ -157,12 +133,13 @@ def _theta(G, H, z_n, x, ops):
     z_n cos²θ/2) the design is refused."""
     k = 2.0 * G / z_n
     th = ops.like(k, math.pi / 6.0)
-    for _ in range(_NEWTON_STEPS):
+    for i in range(_NEWTON_STEPS):
         c = ops.cos(th)
         slope = ops.maximum(1.0 - k / (c * c), 0.05)    # > 1 wherever G < 0, the usual case
         step = (th - k * ops.tan(th) + H) / slope
         th = ops.clip(th - step, -1.2, 1.2)
-        if ops.all(ops.abs(step) <= 1e-15):
+        # from π/6 it takes 4 steps to converge (z_n 8 to 2000, x -0.5 to 1): no check before the 4th
+        if i >= 3 and ops.all(ops.abs(step) <= 1e-15):
             break
     c = ops.cos(th)
     ok = (ops.abs(th - k * ops.tan(th) + H) <= 1e-12) & (1.0 - k / (c * c) > 0.0)
@@ -285,23 +262,37 @@ def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=
     >>> round(float(c["Y_Fa"]), 2), round(float(c["Y_Sa"]), 2)
     (2.8, 1.55)
     """
+    out = form_factors(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star, internal,
+                       method)
+    if type(out["z_n"]) is float:                     # numpy scalars: the same interface as arrays
+        return {k: (np.bool_(v) if k == "in_range" else np.float64(v)) for k, v in out.items()}
+    return out
+
+
+def form_factors(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star, internal, method,
+                 keys=None) -> dict:
+    """:func:`root_form_factors` (positional, the same checks) with Python floats for one design given in plain
+    numbers; ``keys``: only these fields are kept of an array call (the factor chain's)."""
     (z, x, da, eps, beta, alpha_n, hfp, rho, spr, internal, method,
      ops) = _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star,
                           internal, method)
     if internal and rho <= 0.0:
         raise GearDesignError("rhofp_star must be > 0 for an internal gear (its fillet radius is "
                               f"rho_fP itself), got {rho!r}")
-    E = _rack_fillet_centre(alpha_n, hfp, rho, spr)
-    rack = (alpha_n, hfp, rho, E, internal, method)
-    if ops is _FloatOps:                              # numpy scalars: the same interface as arrays
-        out = _factors(z, x, da, eps, beta, rack, ops)
-        return {k: (np.bool_(v) if k == "in_range" else np.float64(v)) for k, v in out.items()}
-    if z.size <= BLOCK:
+    rack = (alpha_n, hfp, rho, _rack_fillet_centre(alpha_n, hfp, rho, spr), internal, method)
+    if ops is _FloatOps or z.size <= BLOCK:
         return _factors(z, x, da, eps, beta, rack, ops)
-    # block by block: ~60 temporaries of BLOCK doubles stay in the caches (as geometry.mesh_geometry does)
+    # block by block: ~60 temporaries of BLOCK doubles stay in the caches (as geometry.mesh_geometry does),
+    # each block's fields written into the full-size outputs
     flat = [v.reshape(-1) for v in (z, x, da, eps, beta)]
-    parts = [_factors(*(v[i:i + BLOCK] for v in flat), rack, ops) for i in range(0, z.size, BLOCK)]
-    return {k: np.concatenate([p[k] for p in parts]).reshape(z.shape) for k in parts[0]}
+    out = {}
+    for i in range(0, z.size, BLOCK):
+        part = _factors(*(v[i:i + BLOCK] for v in flat), rack, ops)
+        for k in (part if keys is None else keys):
+            if k not in out:
+                out[k] = np.empty(z.size, dtype=part[k].dtype)
+            out[k][i:i + BLOCK] = part[k]
+    return {k: v.reshape(z.shape) for k, v in out.items()}
 
 
 def _factors(z, x, da, eps, beta, rack, ops) -> dict:
