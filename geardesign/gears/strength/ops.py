@@ -78,13 +78,15 @@ def ops_of(*values):
 
 
 def checked(name, value, lo, hi, *, lo_open=False, hi_open=False, unit=""):
-    """``value`` unchanged when it is a Python float inside [lo, hi] (or the open ends asked for: the one-design
-    path, no numpy), else :func:`~geardesign.validate.require_range` of it (the same refusal by name, and a float
+    """``value`` as a Python float when it is a Python float or int inside [lo, hi] (or the open ends asked for: the
+    one-design path, no numpy), else :func:`~geardesign.validate.require_range` of it (the same refusal by name, and a float
     array).
 
     >>> checked("q_s", 2.5, 0.1, 50.0), checked("b", 40.0, 0.0, 1e5, lo_open=True)
     (2.5, 40.0)
     """
-    if type(value) is float and (lo < value if lo_open else lo <= value) and (value < hi if hi_open else value <= hi):
-        return value
+    t = type(value)
+    if (t is float or t is int) and (lo < value if lo_open else lo <= value) and (
+            value < hi if hi_open else value <= hi):
+        return float(value)
     return require_range(name, value, lo, hi, lo_open=lo_open, hi_open=hi_open, unit=unit)

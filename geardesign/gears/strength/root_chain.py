@@ -35,12 +35,19 @@ def root_stress_limit(sigma_Flim, Y_NT, Y_deltarelT, Y_RrelT, Y_X, Y_ST=Y_ST):
     return ops_of(sigma_Flim).asarray(sigma_Flim) * Y_ST * Y_NT * Y_deltarelT * Y_RrelT * Y_X
 
 
-def _root_modules():
+def _import_root_modules():
     try:
         from . import root, root_factors
     except ImportError:          # the form factors live in their own module; without it the root side is absent
         return None
     return root, root_factors
+
+
+_ROOT_MODULES = _import_root_modules()
+
+
+def _root_modules():
+    return _ROOT_MODULES
 
 
 def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12, life_h,

@@ -148,16 +148,25 @@ _SLIP_LAYER_MM = {
 _CHI_T = 1.2      # relative stress gradient chi*_T = (1 + 2 q_sT)/5 of the reference test gear, q_sT = 2.5
 
 
+def _by_kind(table: dict) -> dict:
+    """{kind: row} of a table whose keys are tuples of the kinds that share a row."""
+    return {kind: row for kinds, row in table.items() for kind in kinds}
+
+
+_SLIP_BY_KIND = _by_kind({k: v if isinstance(v, float) else (tuple(t[0] for t in v), tuple(t[1] for t in v))
+                          for k, v in _SLIP_LAYER_MM.items()})
+
+
 def _slip_layer(kind: str, limit_mpa):
-    table = next(v for k, v in _SLIP_LAYER_MM.items() if kind in k)
+    table = _SLIP_BY_KIND[kind]
     if isinstance(table, float):
         return table
-    lo, hi = table[0][0], table[-1][0]
+    lo, hi = table[0][0], table[0][-1]
     if limit_mpa is None:
         raise GearDesignError(f"limit_mpa (the material's strength for kind {kind!r}) must be given, in "
                               f"[{lo:g}, {hi:g}] MPa, got None")
     s = checked("limit_mpa", limit_mpa, lo, hi, unit="MPa")
-    return ops_of(s).interp(s, [t[0] for t in table], [t[1] for t in table])
+    return ops_of(s).interp(s, *table)
 
 
 # Static relative notch sensitivity (ISO 6336-3:2019, clause 13, method B, N_L <= the static limit): linear in Y_S
@@ -192,7 +201,7 @@ def relative_notch_sensitivity_Y_delta_relT(q_s, material_kind, *, limit_mpa=Non
     0.956
     """
     kind = _kind(material_kind)
-    if require_bool("static", static):
+    if static is not False and require_bool("static", static):
         if Y_S is None:
             raise GearDesignError("Y_S must be given for the static relative notch sensitivity, got None")
         ys = require_range("Y_S", Y_S, 1.0, 5.0)
@@ -217,6 +226,7 @@ _SURFACE = {("V", "GGG(perl)", "GTS", "Eh", "IF"): (1.674, 0.529, 0.1, 1.120),
             ("St",): (5.306, 4.203, 0.01, 1.070),
             ("GG", "GGG(ferr)", "NT", "NV(nitr)", "NV(nitrocar)"): (4.299, 3.259, 0.0058, 1.025)}
 RZ_MAX_UM = 40.0
+_SURFACE_BY_KIND = _by_kind(_SURFACE)
 
 
 def relative_surface_factor_Y_RrelT(Rz_um, material_kind, *, static: bool = False):
@@ -233,9 +243,9 @@ def relative_surface_factor_Y_RrelT(Rz_um, material_kind, *, static: bool = Fals
     kind = _kind(material_kind)
     rz = checked("Rz_um", Rz_um, 0.0, RZ_MAX_UM, unit="um")
     xp = ops_of(rz)
-    if require_bool("static", static):
+    if static is not False and require_bool("static", static):
         return xp.like(rz, 1.0)
-    a, b, c, low = next(v for k, v in _SURFACE.items() if kind in k)
+    a, b, c, low = _SURFACE_BY_KIND[kind]
     return xp.where(rz < 1.0, low, a - b * (rz + 1.0) ** c)
 
 
@@ -243,6 +253,7 @@ def relative_surface_factor_Y_RrelT(Rz_um, material_kind, *, static: bool = Fals
 _SIZE = {("St", "V", "GGG(perl)", "GTS"): (1.03, 0.006, 0.85),
          ("Eh", "IF", "NT", "NV(nitr)", "NV(nitrocar)"): (1.05, 0.01, 0.80),
          ("GG", "GGG(ferr)"): (1.075, 0.015, 0.70)}
+_SIZE_BY_KIND = _by_kind(_SIZE)
 
 
 def size_factor_Y_X(m_n_mm, material_kind, *, static: bool = False):
@@ -259,9 +270,9 @@ def size_factor_Y_X(m_n_mm, material_kind, *, static: bool = False):
     m = m_n_mm if type(m_n_mm) is float and 0.0 < m_n_mm <= 1000.0 else require_range(
         "m_n_mm", m_n_mm, 0.0, 1000.0, lo_open=True, unit="mm")
     xp = ops_of(m)
-    if require_bool("static", static):
+    if static is not False and require_bool("static", static):
         return xp.like(m, 1.0)
-    a, b, floor = next(v for k, v in _SIZE.items() if kind in k)
+    a, b, floor = _SIZE_BY_KIND[kind]
     return xp.where(m <= 5.0, 1.0, xp.maximum(a - b * m, floor))
 
 
@@ -274,6 +285,8 @@ _LIFE = {("St", "V", "GGG(perl)", "GTS"): (1e4, 2.5),
          ("NV(nitrocar)",): (1e3, 1.1)}
 N_ENDURANCE = 3e6
 N_LONG = 1e10
+_LN_ENDURANCE, _LN_LONG = math.log(N_ENDURANCE), math.log(N_LONG)
+_LIFE_BY_KIND = _by_kind(_LIFE)
 
 
 def life_factor_Y_NT(N_L, material_kind, *, optimum: bool = False):
@@ -291,10 +304,10 @@ def life_factor_Y_NT(N_L, material_kind, *, optimum: bool = False):
     """
     kind = _kind(material_kind)
     n = checked("N_L", N_L, 1.0, 1e30)
-    n_static, y_static = next(v for k, v in _LIFE.items() if kind in k)
-    y_long = 1.0 if require_bool("optimum", optimum) else 0.85
+    n_static, y_static = _LIFE_BY_KIND[kind]
+    y_long = 1.0 if optimum is not False and require_bool("optimum", optimum) else 0.85
     xp = ops_of(n)
     ln = xp.log(xp.clip(n, n_static, N_LONG))
-    upper = math.log(y_static) * (math.log(N_ENDURANCE) - ln) / (math.log(N_ENDURANCE) - math.log(n_static))
-    lower = math.log(y_long) * (ln - math.log(N_ENDURANCE)) / (math.log(N_LONG) - math.log(N_ENDURANCE))
-    return xp.exp(xp.where(ln <= math.log(N_ENDURANCE), upper, lower))
+    upper = math.log(y_static) * (_LN_ENDURANCE - ln) / (_LN_ENDURANCE - math.log(n_static))
+    lower = math.log(y_long) * (ln - _LN_ENDURANCE) / (_LN_LONG - _LN_ENDURANCE)
+    return xp.exp(xp.where(ln <= _LN_ENDURANCE, upper, lower))
