@@ -162,6 +162,9 @@ def dynamic_coefficients(eps_gamma):
     xp = ops_of(eps_gamma)
     e = xp.asarray(eps_gamma)
     hi = e > 2.0
+    if not xp.any(hi):         # every ε_γ ≤ 2 (spur pairs): the first column's constants
+        return (0.32, 0.34, 0.23, 0.90, 0.47, 0.47,
+                xp.where(e <= 1.5, 0.75, xp.where(e <= 2.5, 0.125 * xp.sin(math.pi * (e - 2.0)) + 0.875, 1.0)))
     eh = xp.where(hi, e, 3.0)   # keeps the ε_γ > 2 branch finite where it is not used
     cv2 = xp.where(hi, 0.57 / (eh - 0.3), 0.34)
     cv3 = xp.where(hi, 0.096 / (eh - 1.56), 0.23)
@@ -197,6 +200,8 @@ def _speed_capped(y, v, cap_5_10, cap_10):
     above (ISO 6336-1:2006 eq. (66)-(71) and (83)-(88))."""
     xp = ops_of(y, v, cap_5_10)
     v = xp.asarray(v)
+    if xp.all(v <= 5.0):
+        return y
     cap = xp.where(v <= 5.0, math.inf, xp.where(v <= 10.0, cap_5_10, cap_10))
     return xp.minimum(y, cap)
 

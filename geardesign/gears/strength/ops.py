@@ -89,4 +89,8 @@ def checked(name, value, lo, hi, *, lo_open=False, hi_open=False, unit=""):
     if (t is float or t is int) and (lo < value if lo_open else lo <= value) and (
             value < hi if hi_open else value <= hi):
         return float(value)
+    if t is np.ndarray and value.dtype == np.float64 and value.size:   # two reductions instead of four passes
+        lo_v, hi_v = value.min(), value.max()                          # (NaN propagates: refused below)
+        if (lo < lo_v if lo_open else lo <= lo_v) and (hi_v < hi if hi_open else hi_v <= hi):
+            return value
     return require_range(name, value, lo, hi, lo_open=lo_open, hi_open=hi_open, unit=unit)
