@@ -41,6 +41,7 @@ STRENGTH_FIELDS = ("S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigm
 # the geometry fields the chain reads (of pair_geometry, or of the caller's mesh_geometry dict)
 CHAIN_GEOMETRY_FIELDS = ("a_w", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", "df1", "df2", "eps_alpha", "p_b")
 _GEOMETRY = list(CHAIN_GEOMETRY_FIELDS)
+_SMALL = 64   # designs: up to this many, the pair-wide fields are filled arrays instead of broadcast views
 
 
 class _Given:
@@ -392,11 +393,14 @@ def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
             out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
     out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
     if shape:
-        for k, val in out.items():   # read-only views for the pair-wide fields
+        # the pair-wide fields at the designs' shape: read-only views of a large batch, copies of a small one
+        # (np.full costs a quarter of np.broadcast_to there)
+        small = math.prod(shape) <= _SMALL
+        for k, val in out.items():
             if isinstance(val, np.ndarray) and val.shape != shape:
                 out[k] = np.broadcast_to(val, shape)
             elif isinstance(val, float):
-                out[k] = np.broadcast_to(np.float64(val), shape)
+                out[k] = np.full(shape, val) if small else np.broadcast_to(np.float64(val), shape)
     out["given"] = tuple(sorted(G.used))
     out["given_unused"] = tuple(sorted(set(G.values) - G.used))   # e.g. f_sh with K_Hbeta given, Y_eps with method B
     return out

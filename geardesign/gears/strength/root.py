@@ -29,7 +29,7 @@ import numpy as np
 from ...errors import GearDesignError
 from ...validate import (broadcast_inputs, one_number, require_bool, require_choice, require_int,
                          require_positive, require_range)
-from .ops import ArrayOps as _ArrayOps, FloatOps as _FloatOps
+from .ops import ArrayOps as _ArrayOps, FloatOps as _FloatOps, checked
 
 __all__ = ["root_form_factors", "stress_correction_factor", "METHODS", "Q_S_RANGE", "Z_RANGE",
            "EPS_ALPHA_RANGE", "BETA_RANGE_DEG", "ALPHA_N_RANGE_DEG"]
@@ -90,10 +90,10 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
                 math.radians(alpha_n_deg), float(hfp_star), float(rhofp_star), float(spr_star), internal, method,
                 _FloatOps)
     z = require_int("z", z, *Z_RANGE).astype(float)
-    x = require_range("x", x, *X_RANGE)
+    x = checked("x", x, *X_RANGE)
     da = require_positive("da_over_mn", da_over_mn)
-    eps = require_range("eps_alpha", eps_alpha, *EPS_ALPHA_RANGE)
-    beta = require_range("beta_deg", beta_deg, *BETA_RANGE_DEG, unit="deg")
+    eps = checked("eps_alpha", eps_alpha, *EPS_ALPHA_RANGE)
+    beta = checked("beta_deg", beta_deg, *BETA_RANGE_DEG, unit="deg")
     alpha_n = one_number("alpha_n_deg", require_range("alpha_n_deg", alpha_n_deg, *ALPHA_N_RANGE_DEG,
                                                       unit="deg"))
     hfp = one_number("hfp_star", require_range("hfp_star", hfp_star, *HFP_RANGE))
