@@ -21,7 +21,7 @@ from . import factors as kf
 from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
-from .ops import ArrayOps, FloatOps, checked
+from .ops import ArrayOps, FloatOps, checked, once
 from .result import StrengthResult, from_chain
 from .root_chain import root_side
 
@@ -169,10 +169,9 @@ def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
 
 def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal, v, xp, out):
     """K_v by method B with the running-in allowance y_α (ISO 6336-1:2019 6.5.9)."""
-    y_a = (kf.running_in_alpha(dev["f_pb"], mats[0].sigma_Hlim_mpa, mats[0].kind, v)
-           + kf.running_in_alpha(dev["f_pb"], mats[1].sigma_Hlim_mpa, mats[1].kind, v)) / 2.0
-    C_a = G.pick("C_a", lambda: tip_relief_um if tip_relief_um is not None else (
-        kf.tip_relief_running_in(mats[0].sigma_Hlim_mpa) + kf.tip_relief_running_in(mats[1].sigma_Hlim_mpa)) / 2.0)
+    y_a = _pair_mean(mats, lambda mat: kf.running_in_alpha(dev["f_pb"], mat.sigma_Hlim_mpa, mat.kind, v))
+    C_a = G.pick("C_a", lambda: tip_relief_um if tip_relief_um is not None else _pair_mean(
+        mats, lambda mat: kf.tip_relief_running_in(mat.sigma_Hlim_mpa)))
     d_m1 = (g["da1"] + g["df1"]) / 2.0
     m_red = kf.reduced_mass(d_m1, g["db1"], g["d2"] / g["d1"], bore[0], bore[1], internal=internal)
     n_E1 = kf.resonance_speed(g["_z1"], out["c_gamma_alpha"], m_red)
@@ -181,9 +180,16 @@ def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal,
     B_p = c * xp.maximum(dev["f_pb"] - y_a, 0.0) / w_A
     B_f = c * xp.maximum(dev["f_falpha"] - y_a, 0.0) / w_A
     B_k = xp.abs(1.0 - out["c_gamma_alpha"] * C_a / w_A)
-    K_v = G.pick("K_v", lambda: kf.dynamic_factor(N, eps_gamma, B_p, B_f, B_k, w_A))
     N_S = kf.subcritical_limit(w_A)
+    K_v = G.pick("K_v", lambda: kf.dynamic_factor(N, eps_gamma, B_p, B_f, B_k, w_A, N_S=N_S))
     out.update(y_alpha=y_a, C_a=C_a, m_red=m_red, n_E1=n_E1, N=N, K_v=K_v, K_v_resonance=(N > N_S) & (N < 1.5))
+
+
+def _pair_mean(mats, f):
+    """(f(material1) + f(material2))/2, the pair's value of a per-material allowance (ISO 6336-1: the mean of the two
+    gears'); one evaluation for one material on both gears ((a + a)/2 is a, exactly)."""
+    a = f(mats[0])
+    return a if mats[1] is mats[0] else (a + f(mats[1])) / 2.0
 
 
 def _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft, xp, out):
@@ -194,8 +200,7 @@ def _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft, xp, out):
         f_sh = G.pick("f_sh", lambda: kf.shaft_misalignment(w_m, b, g["d1"], **shaft))
         f_ma = G.pick("f_ma", lambda: dev["f_Hbeta"])
         F_bx = kf.helix_misalignment(f_sh, f_ma, w_m, dev["F_beta"])
-        y_b = (kf.running_in_beta(F_bx, mats[0].sigma_Hlim_mpa, mats[0].kind, v)
-               + kf.running_in_beta(F_bx, mats[1].sigma_Hlim_mpa, mats[1].kind, v)) / 2.0
+        y_b = _pair_mean(mats, lambda mat: kf.running_in_beta(F_bx, mat.sigma_Hlim_mpa, mat.kind, v))
         out.update(f_sh=f_sh, f_ma=f_ma, F_betax=F_bx, y_beta=y_b, F_betay=F_bx - y_b)
         return kf.face_load_factor_H(F_bx - y_b, out["c_gamma_beta"], w_m)
 
@@ -235,20 +240,22 @@ def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_op
     rho_red = zc.relative_radius(g["db1"] / 2.0 * t_w, g["db2"] / 2.0 * t_w, internal)
     out["Z_X"] = G.pick("Z_X", lambda: zc.SIZE_FACTOR_Z_X)
     hard = (m1.surface_hardened, m2.surface_hardened)
+    memo = {}
     for i, (mat, n) in enumerate(zip(mats, n12), start=1):
         softer = (not hard[i - 1]) and hard[2 - i]
-        _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, xp, out)
+        _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, xp, out, memo)
 
 
-def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, xp, out):
-    """Z_NT, Z_L, Z_v, Z_R, Z_W, σ_HG and S_H of gear ``i`` (ISO 6336-2:2019 clauses 10-14)."""
+def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, xp, out, memo):
+    """Z_NT, Z_L, Z_v, Z_R, Z_W, σ_HG and S_H of gear ``i`` (ISO 6336-2:2019 clauses 10-14); Z_L, Z_v, Z_R depend
+    on the gear through σ_Hlim alone (``memo``: computed once for two gears of one σ_Hlim)."""
     s = mat.sigma_Hlim_mpa
     N_L = None if life_h is None else load_cycles(n, life_h)
     out[f"Z_NT{i}"] = G.pick(f"Z_NT{i}", lambda: xp.like(s0, 1.0) if N_L is None else
                              contact_life_factor(N_L, mat.kind, **life_opts))
-    out[f"Z_L{i}"] = G.pick(f"Z_L{i}", lambda: zc.lubricant_factor(nu40, s))
-    out[f"Z_v{i}"] = G.pick(f"Z_v{i}", lambda: zc.velocity_factor(v, s))
-    out[f"Z_R{i}"] = G.pick(f"Z_R{i}", lambda: zc.roughness_factor(Rz, Rz, rho_red, s))
+    out[f"Z_L{i}"] = G.pick(f"Z_L{i}", lambda: once(memo, ("Z_L", s), lambda: zc.lubricant_factor(nu40, s)))
+    out[f"Z_v{i}"] = G.pick(f"Z_v{i}", lambda: once(memo, ("Z_v", s), lambda: zc.velocity_factor(v, s)))
+    out[f"Z_R{i}"] = G.pick(f"Z_R{i}", lambda: once(memo, ("Z_R", s), lambda: zc.roughness_factor(Rz, Rz, rho_red, s)))
     out[f"Z_W{i}"] = G.pick(f"Z_W{i}", lambda: zc.work_hardening_factor(mat.brinell, softer))
     out[f"N_L{i}"] = math.nan if N_L is None else N_L
     out[f"sigma_HG{i}"] = zc.contact_stress_limit(s, out[f"Z_NT{i}"], out[f"Z_L{i}"], out[f"Z_v{i}"],

@@ -174,12 +174,12 @@ def dynamic_coefficients(eps_gamma):
     return xp.like(e, 0.32), cv2, cv3, cv4, xp.like(e, 0.47), cv6, cv7
 
 
-def dynamic_factor(N, eps_gamma, B_p, B_f, B_k, line_load_n_mm):
+def dynamic_factor(N, eps_gamma, B_p, B_f, B_k, line_load_n_mm, N_S=None):
     """K_v by method B (ISO 6336-1:2019 6.5.9): subcritical N ≤ N_S: K_v = N·K + 1, K = C_v1 B_p + C_v2 B_f
     + C_v3 B_k (eq. (33)); main resonance N_S < N ≤ 1.15: K_v = C_v1 B_p + C_v2 B_f + C_v4 B_k + 1 (eq. (37));
     supercritical N ≥ 1.5: K_v = C_v5 B_p + C_v6 B_f + C_v7 (eq. (39)); between 1.15 and 1.5 linear in N
     between the two (eq. (38)). B_p = c′ f_pb,eff/(K_A F_t/b), B_f = c′ f_fα,eff/(K_A F_t/b),
-    B_k = |1 − c_γα C_a/(K_A F_t/b)|.
+    B_k = |1 − c_γα C_a/(K_A F_t/b)|. ``N_S``: :func:`subcritical_limit` of the line load, when the caller has it.
 
     >>> round(float(dynamic_factor(0.05, 2.6, 0.0311, 0.0543, 0.04, 1273.5)), 4)
     1.0014
@@ -191,7 +191,7 @@ def dynamic_factor(N, eps_gamma, B_p, B_f, B_k, line_load_n_mm):
     main = cv1 * B_p + cv2 * B_f + cv4 * B_k + 1.0
     sup = cv5 * B_p + cv6 * B_f + cv7
     inter = sup + (main - sup) / 0.35 * (1.5 - N)
-    N_S = subcritical_limit(line_load_n_mm)
+    N_S = subcritical_limit(line_load_n_mm) if N_S is None else N_S
     return xp.where(N <= N_S, sub, xp.where(N <= 1.15, main, xp.where(N < 1.5, inter, sup)))
 
 

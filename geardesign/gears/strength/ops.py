@@ -10,7 +10,7 @@ import numpy as np
 
 from ...validate import require_range
 
-__all__ = ["FloatOps", "ArrayOps", "ops_of", "checked"]
+__all__ = ["FloatOps", "ArrayOps", "ops_of", "checked", "once"]
 
 
 class ArrayOps:
@@ -92,3 +92,16 @@ def checked(name, value, lo, hi, *, lo_open=False, hi_open=False, unit=""):
         if (lo < lo_v if lo_open else lo <= lo_v) and (hi_v < hi if hi_open else hi_v <= hi):
             return value
     return require_range(name, value, lo, hi, lo_open=lo_open, hi_open=hi_open, unit=unit)
+
+
+def once(memo: dict, key, compute):
+    """``compute()`` the first time ``key`` is asked for, the stored value after: a factor both gears of a pair
+    share (one material on both: Z_L, Z_v, Z_R by σ_Hlim, Y_RrelT, Y_X by kind).
+
+    >>> memo = {}
+    >>> once(memo, "Z_L", lambda: 1.05), once(memo, "Z_L", lambda: 2.0)
+    (1.05, 1.05)
+    """
+    if key not in memo:
+        memo[key] = compute()
+    return memo[key]

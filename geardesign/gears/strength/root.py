@@ -99,7 +99,10 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
     hfp = one_number("hfp_star", require_range("hfp_star", hfp_star, *HFP_RANGE))
     rho = one_number("rhofp_star", require_range("rhofp_star", rhofp_star, *RHOFP_RANGE))
     spr = one_number("spr_star", require_range("spr_star", spr_star, *SPR_RANGE))
+    beta_0 = beta
     z, x, da, eps, beta = broadcast_inputs(z=z, x=x, da_over_mn=da, eps_alpha=eps, beta_deg=beta)
+    if np.ndim(beta_0) == 0:     # one helix angle for all: its trigonometry once, not per design
+        beta = np.asarray(beta_0, dtype=float)
     if z.size > DESIGNS_MAX:
         raise GearDesignError(f"z, x, da_over_mn, eps_alpha, beta_deg broadcast to {z.size} designs; at most "
                               f"{DESIGNS_MAX} in one call (split the batch)")
@@ -295,10 +298,10 @@ def form_factors(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, r
         return _factors(z, x, da, eps, beta, rack, ops)
     # block by block: ~60 temporaries of BLOCK doubles stay in the caches (as geometry.mesh_geometry does),
     # each block's fields written into the full-size outputs
-    flat = [v.reshape(-1) for v in (z, x, da, eps, beta)]
+    flat = [v.reshape(-1) if v.ndim else v for v in (z, x, da, eps, beta)]
     out = {}
     for i in range(0, z.size, BLOCK):
-        part = _factors(*(v[i:i + BLOCK] for v in flat), rack, ops)
+        part = _factors(*(v[i:i + BLOCK] if v.ndim else v for v in flat), rack, ops)
         for k in (part if keys is None else keys):
             if k not in out:
                 out[k] = np.empty(z.size, dtype=part[k].dtype)

@@ -7,7 +7,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 from .materials import STRENGTH_NEEDED_KINDS
-from .ops import ops_of
+from .ops import once, ops_of
 
 __all__ = ["root_side", "root_stress", "root_stress_limit", "Y_ST"]
 
@@ -68,7 +68,7 @@ def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_g
     else:
         out["Y_eps"] = G.pick("Y_eps", lambda: rf.contact_ratio_factor_Y_eps(out["eps_alpha_n"]))
         extra = out["Y_eps"]
-    gear = (G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp or ops_of(F_t))
+    gear = (G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp or ops_of(F_t), {})
     for i, (mat, x, b, n, s_R) in enumerate(zip(mats, xs, widths, n12, rim), start=1):
         _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h)
         YF, YS, YB = out[f"{names[0]}{i}"], out[f"{names[1]}{i}"], out[f"Y_B{i}"]
@@ -82,7 +82,7 @@ def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_g
 
 def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
     """Y_F, Y_S (or Y_Fa, Y_Sa), Y_B, Y_NT, Y_δrelT, Y_RrelT, Y_X and q_s of gear ``i`` into the chain's dict."""
-    G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp = gear
+    G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp, memo = gear
     ring = internal and i == 2
     ff = root.form_factors(g[f"_z{i}"], x, g[f"da{i}"] / m, g["eps_alpha"], beta_deg, rack.alpha_deg, rack.ha + rack.c,
                            rack.rho_f, 0.0, ring, method, keys=(names[0], names[1], "q_s", "in_range"))
@@ -95,8 +95,10 @@ def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
                 f"Y_NT{i}": G.pick(f"Y_NT{i}", lambda: xp.like(F_t, 1.0) if N_L is None else
                                    rf.life_factor_Y_NT(N_L, kind)),
                 f"Y_deltarelT{i}": G.pick(f"Y_deltarelT{i}", lambda: _notch(rf, ff["q_s"], mat, out, i)),
-                f"Y_RrelT{i}": G.pick(f"Y_RrelT{i}", lambda: rf.relative_surface_factor_Y_RrelT(Rz_root, kind)),
-                f"Y_X{i}": G.pick(f"Y_X{i}", lambda: rf.size_factor_Y_X(m, kind)), f"q_s{i}": ff["q_s"],
+                f"Y_RrelT{i}": G.pick(f"Y_RrelT{i}", lambda: once(memo, ("Y_RrelT", kind), lambda:
+                                      rf.relative_surface_factor_Y_RrelT(Rz_root, kind))),
+                f"Y_X{i}": G.pick(f"Y_X{i}", lambda: once(memo, ("Y_X", kind), lambda: rf.size_factor_Y_X(m, kind))),
+                f"q_s{i}": ff["q_s"],
                 f"root_out_of_range{i}": (not in_range) if type(in_range) is bool else ~np.asarray(in_range, dtype=bool)})
 
 
