@@ -161,17 +161,25 @@ def dynamic_coefficients(eps_gamma):
     """
     xp = ops_of(eps_gamma)
     e = xp.asarray(eps_gamma)
+    return _coefficients_1_6(e, xp) + (_coefficient_7(e, xp),)
+
+
+def _coefficients_1_6(e, xp) -> tuple:
+    """C_v1 … C_v6 of ISO 6336-1:2019 Table 7 (see :func:`dynamic_coefficients`)."""
     hi = e > 2.0
     if not xp.any(hi):         # every ε_γ ≤ 2 (spur pairs): the first column's constants
-        return (0.32, 0.34, 0.23, 0.90, 0.47, 0.47,
-                xp.where(e <= 1.5, 0.75, xp.where(e <= 2.5, 0.125 * xp.sin(math.pi * (e - 2.0)) + 0.875, 1.0)))
+        return 0.32, 0.34, 0.23, 0.90, 0.47, 0.47
     eh = xp.where(hi, e, 3.0)   # keeps the ε_γ > 2 branch finite where it is not used
     cv2 = xp.where(hi, 0.57 / (eh - 0.3), 0.34)
     cv3 = xp.where(hi, 0.096 / (eh - 1.56), 0.23)
     cv4 = xp.where(hi, (0.57 - 0.05 * eh) / (eh - 1.44), 0.90)
     cv6 = xp.where(hi, 0.12 / (eh - 1.74), 0.47)
-    cv7 = xp.where(e <= 1.5, 0.75, xp.where(e <= 2.5, 0.125 * xp.sin(math.pi * (e - 2.0)) + 0.875, 1.0))
-    return xp.like(e, 0.32), cv2, cv3, cv4, xp.like(e, 0.47), cv6, cv7
+    return xp.like(e, 0.32), cv2, cv3, cv4, xp.like(e, 0.47), cv6
+
+
+def _coefficient_7(e, xp):
+    """C_v7 of ISO 6336-1:2019 Table 7 (see :func:`dynamic_coefficients`)."""
+    return xp.where(e <= 1.5, 0.75, xp.where(e <= 2.5, 0.125 * xp.sin(math.pi * (e - 2.0)) + 0.875, 1.0))
 
 
 def dynamic_factor(N, eps_gamma, B_p, B_f, B_k, line_load_n_mm, N_S=None):
@@ -184,15 +192,18 @@ def dynamic_factor(N, eps_gamma, B_p, B_f, B_k, line_load_n_mm, N_S=None):
     >>> round(float(dynamic_factor(0.05, 2.6, 0.0311, 0.0543, 0.04, 1273.5)), 4)
     1.0014
     """
-    cv1, cv2, cv3, cv4, cv5, cv6, cv7 = dynamic_coefficients(eps_gamma)
     xp = ops_of(N, eps_gamma, B_p, B_f, B_k, line_load_n_mm)
-    N = xp.asarray(N)
+    N, e = xp.asarray(N), xp.asarray(eps_gamma)
+    cv1, cv2, cv3, cv4, cv5, cv6 = _coefficients_1_6(e, xp)
     sub = N * (cv1 * B_p + cv2 * B_f + cv3 * B_k) + 1.0
-    main = cv1 * B_p + cv2 * B_f + cv4 * B_k + 1.0
-    sup = cv5 * B_p + cv6 * B_f + cv7
-    inter = sup + (main - sup) / 0.35 * (1.5 - N)
     N_S = subcritical_limit(line_load_n_mm) if N_S is None else N_S
-    return xp.where(N <= N_S, sub, xp.where(N <= 1.15, main, xp.where(N < 1.5, inter, sup)))
+    below = N <= N_S
+    if xp.all(below):          # every design subcritical (the usual case): the other ranges are not needed
+        return sub
+    main = cv1 * B_p + cv2 * B_f + cv4 * B_k + 1.0
+    sup = cv5 * B_p + cv6 * B_f + _coefficient_7(e, xp)
+    inter = sup + (main - sup) / 0.35 * (1.5 - N)
+    return xp.where(below, sub, xp.where(N <= 1.15, main, xp.where(N < 1.5, inter, sup)))
 
 
 def _speed_capped(y, v, cap_5_10, cap_10):
