@@ -132,12 +132,13 @@ def _widths(face_width_mm, face_width2_mm, m, xp):
     return b, xp.minimum(b1, b + 2.0 * m), xp.minimum(b2, b + 2.0 * m)
 
 
-def _speeds(load: Load, z1, z2, xp):
-    """(T1 in N·m, n1, n2 in rpm): the load carried over to the pinion (gear 1)."""
+def _speeds(load: Load, z1, z2):
+    """(T1 in N·m, n1, n2 in rpm): the load carried over to the pinion (gear 1); the given gear's as numbers (its
+    life factors then are numbers too, one for all designs)."""
     u = z2 / z1
     if load.on_gear == 1:
-        return xp.like(u, load.torque_nm), xp.like(u, load.n_rpm), load.n_rpm / u
-    return load.torque_nm / u, load.n_rpm * u, xp.like(u, load.n_rpm)
+        return load.torque_nm, load.n_rpm, load.n_rpm / u
+    return load.torque_nm / u, load.n_rpm * u, load.n_rpm
 
 
 def _deviations(G, m, g, b, grade, xp):
@@ -251,7 +252,7 @@ def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, 
     on the gear through σ_Hlim alone (``memo``: computed once for two gears of one σ_Hlim)."""
     s = mat.sigma_Hlim_mpa
     N_L = None if life_h is None else load_cycles(n, life_h)
-    out[f"Z_NT{i}"] = G.pick(f"Z_NT{i}", lambda: xp.like(s0, 1.0) if N_L is None else
+    out[f"Z_NT{i}"] = G.pick(f"Z_NT{i}", lambda: 1.0 if N_L is None else
                              contact_life_factor(N_L, mat.kind, **life_opts))
     out[f"Z_L{i}"] = G.pick(f"Z_L{i}", lambda: once(memo, ("Z_L", s), lambda: zc.lubricant_factor(nu40, s)))
     out[f"Z_v{i}"] = G.pick(f"Z_v{i}", lambda: once(memo, ("Z_v", s), lambda: zc.velocity_factor(v, s)))
@@ -361,7 +362,7 @@ def _evaluate(designs, G, o, xp) -> dict:
     if not plain:
         x1, x2 = np.asarray(x1, dtype=float), np.asarray(x2, dtype=float)
         broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=b)
-    out = _kinematics(o.load, g, b, m_arr, beta_deg, o.K_gamma, xp)
+    out = _kinematics(o.load, g, b, m_arr, beta_deg, o.K_gamma)
     F_t, v, n1, n2, eps_gamma = out["F_t"], out["v"], out["n1"], out["n2"], out["eps_gamma"]
     K_A, mats, n12 = o.load.application_factor, o.mats, (out["n1"] * o.cpr[0], out["n2"] * o.cpr[1])
     w_A = F_t * K_A / b
@@ -380,11 +381,11 @@ def _evaluate(designs, G, o, xp) -> dict:
     return _finish(out, *o.S_min, () if plain else np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
 
 
-def _kinematics(load, g, b, m, beta_deg, K_gamma, xp) -> dict:
+def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
     """F_t, v, the speeds and the contact ratios: the first fields of the chain's dict."""
-    T1, n1, n2 = _speeds(load, g["_z1"], g["_z2"], xp)
+    T1, n1, n2 = _speeds(load, g["_z1"], g["_z2"])
     F_t = kf.tangential_load(T1, g["d1"])
-    eps_beta = b * math.sin(math.radians(beta_deg)) / (math.pi * m)
+    eps_beta = b * math.sin(math.radians(beta_deg)) / (math.pi * m) if beta_deg else 0.0   # spur: one number
     return {"F_t": F_t, "v": kf.pitch_line_velocity(g["d1"], n1), "K_A": load.application_factor,
             "K_gamma": K_gamma, "n1": n1, "n2": n2, "alpha_wt_deg": g["alpha_wt_deg"],
             "eps_alpha": g["eps_alpha"], "z_n1": g["z_n1"], "z_n2": g["z_n2"], "eps_beta": eps_beta,

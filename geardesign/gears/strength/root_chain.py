@@ -92,7 +92,7 @@ def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
     out.update({f"{names[0]}{i}": G.pick(f"{names[0]}{i}", lambda: ff[names[0]]),
                 f"{names[1]}{i}": G.pick(f"{names[1]}{i}", lambda: ff[names[1]]),
                 f"Y_B{i}": G.pick(f"Y_B{i}", lambda: _rim(rf, s_R, g[f"h{i}"], m, ring)),
-                f"Y_NT{i}": G.pick(f"Y_NT{i}", lambda: xp.like(F_t, 1.0) if N_L is None else
+                f"Y_NT{i}": G.pick(f"Y_NT{i}", lambda: 1.0 if N_L is None else
                                    rf.life_factor_Y_NT(N_L, kind)),
                 f"Y_deltarelT{i}": G.pick(f"Y_deltarelT{i}", lambda: _notch(rf, ff["q_s"], mat, out, i)),
                 f"Y_RrelT{i}": G.pick(f"Y_RrelT{i}", lambda: once(memo, ("Y_RrelT", kind), lambda:
