@@ -113,13 +113,14 @@ def _derived(g, z1, z2, rack, beta_deg, xp):
     return g
 
 
-def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float) -> dict:
+def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float, xp=ArrayOps) -> dict:
     """The fields the chain reads, from a geometry dict of :func:`~geardesign.gears.geometry.mesh_geometry`
     (with its path of contact) instead of a validated :func:`pair_geometry`: designs that do not exist give
-    NaN (the strength checks of the shift solvers mask them)."""
+    NaN (the strength checks of the shift solvers mask them). ``xp`` :class:`FloatOps`: one design's dict of
+    :func:`~geardesign.gears.geometry.mesh_geometry_float` (a :class:`~geardesign.GearPair`'s)."""
     with np.errstate(invalid="ignore"):
-        return _derived({k: np.asarray(geo[k], dtype=float) for k in _GEOMETRY}, np.asarray(geo["_z1"], dtype=float),
-                        np.asarray(geo["_z2"], dtype=float), rack, beta_deg, ArrayOps)
+        return _derived({k: xp.asarray(geo[k]) for k in _GEOMETRY}, xp.asarray(geo["_z1"]), xp.asarray(geo["_z2"]),
+                        rack, beta_deg, xp)
 
 
 def _widths(face_width_mm, face_width2_mm, m, xp):
@@ -331,8 +332,9 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
                         internal=internal, tip_shortening=tip_shortening, geometry=geometry)
     G = _Given(factors)
     designs = (m, z1, z2, x1, x2, face_width_mm, face_width2_mm)
-    if geometry is None and all(type(v) in (int, float) for v in designs[:6]) and (
-            face_width2_mm is None or type(face_width2_mm) in (int, float)):
+    if all(type(v) in (int, float) for v in designs[:6]) and (
+            face_width2_mm is None or type(face_width2_mm) in (int, float)) and (
+            geometry is None or all(type(geometry[k]) is float for k in _GEOMETRY)):
         # one design in Python floats: the formulas on math, not numpy (see .ops)
         try:
             return _evaluate(_floats(designs), G, o, FloatOps)
@@ -356,7 +358,7 @@ def _evaluate(designs, G, o, xp) -> dict:
     plain = xp is FloatOps
     beta_deg = float(o.beta_deg) if plain and type(o.beta_deg) is int else o.beta_deg
     g = (_geometry(m, z1, z2, x1, x2, o.rack, beta_deg, o.internal, o.tip_shortening, plain) if o.geometry is None
-         else chain_geometry(o.geometry, o.rack, beta_deg))
+         else chain_geometry(o.geometry, o.rack, beta_deg, xp))
     m_arr = xp.asarray(m)
     b, b1, b2 = _widths(face_width_mm, face_width2_mm, m_arr, xp)
     if not plain:
@@ -432,6 +434,8 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
     b = pair.face_width_mm if face_width_mm is None else face_width_mm
     if b is None:
         raise GearDesignError("face_width_mm is needed: give it, or build the GearPair with face_width_mm=")
+    # the pair's own geometry (validated when it was built): the chain need not compute it again
+    options.setdefault("geometry", getattr(pair, "_geo", None))
     out = pair_strength(pair.m, pair.z1, pair.z2, pair.x1, pair.x2, load=load, material1=material,
                         material2=material2, face_width_mm=b, beta_deg=pair.beta_deg, internal=pair.internal,
                         rack=pair.rack, tip_shortening=pair.tip_shortening, **options)
