@@ -101,7 +101,7 @@ def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening, plain
 def _derived(g, z1, z2, rack, beta_deg, xp):
     """α_wt (from d_b1/d_w1), α_t, β_b, z_n, tooth depths: what the chain reads besides pair_geometry's fields."""
     sc = section_constants(rack.alpha, math.radians(beta_deg))
-    with np.errstate(invalid="ignore"):
+    with xp.errstate(invalid="ignore"):
         g["alpha_wt_deg"] = xp.degrees(xp.arccos(xp.minimum(g["db1"] / g["dw1"], 1.0)))
     g["alpha_t_deg"] = math.degrees(sc.alpha_t)
     g["beta_b_deg"] = math.degrees(sc.beta_b)
@@ -118,7 +118,7 @@ def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float, xp=ArrayOps) -> 
     (with its path of contact) instead of a validated :func:`pair_geometry`: designs that do not exist give
     NaN (the strength checks of the shift solvers mask them). ``xp`` :class:`FloatOps`: one design's dict of
     :func:`~geardesign.gears.geometry.mesh_geometry_float` (a :class:`~geardesign.GearPair`'s)."""
-    with np.errstate(invalid="ignore"):
+    with xp.errstate(invalid="ignore"):
         return _derived({k: xp.asarray(geo[k]) for k in _GEOMETRY}, xp.asarray(geo["_z1"]), xp.asarray(geo["_z2"]),
                         rack, beta_deg, xp)
 
@@ -267,7 +267,7 @@ def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, 
 
 def _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method):
     grade = checked("accuracy_grade", accuracy_grade, *acc.GRADE_RANGE)
-    return (float(grade) if np.ndim(grade) == 0 else grade, _number("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
+    return (grade if type(grade) is float else float(grade) if np.ndim(grade) == 0 else grade, _number("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
             _number("Rz_flank_um", Rz_flank_um, *dflt.RZ_RANGE_UM, unit="µm"),
             _number("Rz_root_um", Rz_root_um, dflt.RZ_RANGE_UM[0], dflt.RZ_ROOT_MAX_UM, unit="µm"),
             _number("K_gamma", K_gamma, *dflt.K_GAMMA_RANGE),
@@ -363,7 +363,8 @@ def _evaluate(designs, G, o, xp) -> dict:
     b, b1, b2 = _widths(face_width_mm, face_width2_mm, m_arr, xp)
     if not plain:
         x1, x2 = np.asarray(x1, dtype=float), np.asarray(x2, dtype=float)
-        broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=b)
+        if len({np.shape(v) for v in (m, z1, z2, x1, b)} | {x2.shape}) > 1:    # one shape: nothing to check
+            broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=b)
     out = _kinematics(o.load, g, b, m_arr, beta_deg, o.K_gamma)
     F_t, v, n1, n2, eps_gamma = out["F_t"], out["v"], out["n1"], out["n2"], out["eps_gamma"]
     K_A, mats, n12 = o.load.application_factor, o.mats, (out["n1"] * o.cpr[0], out["n2"] * o.cpr[1])
@@ -408,7 +409,7 @@ def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
         small = math.prod(shape) <= _SMALL
         for k, val in out.items():
             if isinstance(val, np.ndarray) and val.shape != shape:
-                out[k] = np.broadcast_to(val, shape)
+                out[k] = np.full(shape, val) if small and val.ndim == 0 else np.broadcast_to(val, shape)
             elif isinstance(val, float):
                 out[k] = np.full(shape, val) if small else np.broadcast_to(np.float64(val), shape)
     out["given"] = tuple(sorted(G.used))

@@ -4,6 +4,7 @@ Each formula picks its operations with :func:`ops_of` from its inputs, so the ch
 vectorised chain evaluate the same expressions."""
 from __future__ import annotations
 
+import contextlib
 import math
 
 import numpy as np
@@ -13,13 +14,25 @@ from ...validate import require_range
 __all__ = ["FloatOps", "ArrayOps", "ops_of", "checked", "once"]
 
 
+def _any(a):
+    return a.any() if type(a) is np.ndarray else np.any(a)
+
+
+def _all(a):
+    return a.all() if type(a) is np.ndarray else np.all(a)
+
+
+def _clip(a, lo, hi):
+    return np.minimum(np.maximum(a, lo), hi)     # np.clip's values, without its Python wrapper (small batches)
+
+
 class ArrayOps:
     """numpy functions for arrays of designs (any input numpy accepts: lists, ints, 0-d arrays)."""
     sin, cos, tan, sqrt, cbrt, arccos, exp, exp2, log = np.sin, np.cos, np.tan, np.sqrt, np.cbrt, np.arccos, \
         np.exp, np.exp2, np.log
-    radians, degrees, abs, maximum, minimum, clip, where = np.radians, np.degrees, np.abs, np.maximum, np.minimum, \
-        np.clip, np.where
-    any, all, interp = staticmethod(np.any), staticmethod(np.all), staticmethod(np.interp)
+    radians, degrees, abs, maximum, minimum, where = np.radians, np.degrees, np.abs, np.maximum, np.minimum, np.where
+    any, all, clip, interp = staticmethod(_any), staticmethod(_all), staticmethod(_clip), staticmethod(np.interp)
+    errstate = np.errstate
 
     @staticmethod
     def asarray(v):
@@ -51,6 +64,7 @@ class FloatOps:
     radians, degrees, abs, maximum, minimum = math.radians, math.degrees, abs, max, min
     where, interp = staticmethod(_where), staticmethod(_interp)
     any = all = staticmethod(bool)
+    errstate = staticmethod(lambda **kw: contextlib.nullcontext())    # math raises instead of warning
 
     @staticmethod
     def clip(v, lo, hi):

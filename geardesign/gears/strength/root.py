@@ -22,6 +22,7 @@ docs/strength_root.md.
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -80,8 +81,10 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
                   internal, method):
     """The validated inputs: Python floats for one design given as plain numbers (the fast path), else
     broadcast float arrays; and the ops that go with them."""
-    method = require_choice("method", method, METHODS)
-    internal = require_bool("internal", internal)
+    if not (type(method) is str and method in METHODS):
+        method = require_choice("method", method, METHODS)
+    if type(internal) is not bool:
+        internal = require_bool("internal", internal)
     if ((type(z) is int or type(z) is float and z.is_integer()) and Z_RANGE[0] <= z <= Z_RANGE[1] and _plain(x, *X_RANGE)
             and _plain(da_over_mn, 1e-300, 1e300) and _plain(eps_alpha, *EPS_ALPHA_RANGE) and _plain(beta_deg, *BETA_RANGE_DEG)
             and _plain(alpha_n_deg, *ALPHA_N_RANGE_DEG) and _plain(hfp_star, *HFP_RANGE)
@@ -100,7 +103,8 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
     rho = one_number("rhofp_star", require_range("rhofp_star", rhofp_star, *RHOFP_RANGE))
     spr = one_number("spr_star", require_range("spr_star", spr_star, *SPR_RANGE))
     beta_0 = beta
-    z, x, da, eps, beta = broadcast_inputs(z=z, x=x, da_over_mn=da, eps_alpha=eps, beta_deg=beta)
+    if not (z.shape == np.shape(x) == np.shape(da) == np.shape(eps) and np.ndim(beta) == 0):   # else: the chain's
+        z, x, da, eps, beta = broadcast_inputs(z=z, x=x, da_over_mn=da, eps_alpha=eps, beta_deg=beta)
     if np.ndim(beta_0) == 0:     # one helix angle for all: its trigonometry once, not per design
         beta = np.asarray(beta_0, dtype=float)
     if z.size > DESIGNS_MAX:
@@ -109,6 +113,7 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
     return z, x, da, eps, np.abs(beta), math.radians(alpha_n), hfp, rho, spr, internal, method, _ArrayOps
 
 
+@functools.lru_cache(maxsize=64)
 def _rack_fillet_centre(alpha_n, hfp, rho, spr):
     """E/m_n, the distance of the generating rack's fillet centre from its tooth's centre line (ISO 6336-3:2019
     clause 6.2): E = π m_n/4 − h_fP tan α_n + s_pr/cos α_n − (1 − sin α_n) ρ_fP/cos α_n."""
