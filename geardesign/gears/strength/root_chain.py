@@ -9,7 +9,7 @@ from ...errors import GearDesignError
 from .materials import STRENGTH_NEEDED_KINDS
 from .ops import once, ops_of
 
-__all__ = ["root_side", "root_stress", "root_stress_limit", "Y_ST"]
+__all__ = ["root_side", "root_stress", "nominal_root_stress", "loaded_root_stress", "root_stress_limit", "Y_ST"]
 
 Y_ST = 2.0   # stress correction factor of the reference test gears (ISO 6336-3:2019 clause 9)
 
@@ -21,8 +21,27 @@ def root_stress(F_t, b, m_n, form, K_A, K_gamma, K_v, K_Fbeta, K_Falpha):
     >>> round(float(root_stress(10000.0, 50.0, 4.0, 2.2 * 1.9, 1.0, 1.0, 1.1, 1.2, 1.0)), 2)
     275.88
     """
+    return loaded_root_stress(nominal_root_stress(F_t, b, m_n, form), K_A, K_gamma, K_v, K_Fbeta, K_Falpha)
+
+
+def nominal_root_stress(F_t, b, m_n, form):
+    """σ_F0 = F_t/(b m_n)·(product of the form, stress-correction, helix, rim and deep-tooth factors) in MPa
+    (ISO 6336-3:2019 eq. (3)).
+
+    >>> round(float(nominal_root_stress(10000.0, 50.0, 4.0, 2.2 * 1.9)), 2)
+    209.0
+    """
     xp = ops_of(F_t, b)
-    return xp.asarray(F_t) / (xp.asarray(b) * m_n) * form * K_A * K_gamma * K_v * K_Fbeta * K_Falpha
+    return xp.asarray(F_t) / (xp.asarray(b) * m_n) * form
+
+
+def loaded_root_stress(sigma_F0, K_A, K_gamma, K_v, K_Fbeta, K_Falpha):
+    """σ_F = σ_F0·K_A K_γ K_v K_Fβ K_Fα in MPa (ISO 6336-3:2019 eq. (2)).
+
+    >>> round(float(loaded_root_stress(209.0, 1.0, 1.0, 1.1, 1.2, 1.0)), 2)
+    275.88
+    """
+    return sigma_F0 * K_A * K_gamma * K_v * K_Fbeta * K_Falpha
 
 
 def root_stress_limit(sigma_Flim, Y_NT, Y_deltarelT, Y_RrelT, Y_X, Y_ST=Y_ST):
@@ -72,9 +91,8 @@ def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_g
     for i, (mat, x, b, n, s_R) in enumerate(zip(mats, xs, widths, n12, rim), start=1):
         _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h)
         YF, YS, YB = out[f"{names[0]}{i}"], out[f"{names[1]}{i}"], out[f"Y_B{i}"]
-        out[f"sigma_F0{i}"] = root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra, 1.0, 1.0, 1.0, 1.0, 1.0)
-        out[f"sigma_F{i}"] = root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra, K_A, K_gamma, out["K_v"],
-                                         out["K_Fbeta"], out["K_Falpha"])
+        s0 = out[f"sigma_F0{i}"] = nominal_root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra)
+        out[f"sigma_F{i}"] = loaded_root_stress(s0, K_A, K_gamma, out["K_v"], out["K_Fbeta"], out["K_Falpha"])
         out[f"sigma_FG{i}"] = root_stress_limit(mat.sigma_Flim_mpa, out[f"Y_NT{i}"], out[f"Y_deltarelT{i}"],
                                                 out[f"Y_RrelT{i}"], out[f"Y_X{i}"], rf.Y_ST)
         out[f"S_F{i}"] = out[f"sigma_FG{i}"] / out[f"sigma_F{i}"]
