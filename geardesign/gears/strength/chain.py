@@ -267,7 +267,8 @@ def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, 
 
 def _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method):
     grade = checked("accuracy_grade", accuracy_grade, *acc.GRADE_RANGE)
-    return (grade if type(grade) is float else float(grade) if np.ndim(grade) == 0 else grade, _number("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
+    grade = grade if type(grade) is float else float(grade) if np.ndim(grade) == 0 else grade
+    return (grade, _number("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
             _number("Rz_flank_um", Rz_flank_um, *dflt.RZ_RANGE_UM, unit="µm"),
             _number("Rz_root_um", Rz_root_um, dflt.RZ_RANGE_UM[0], dflt.RZ_ROOT_MAX_UM, unit="µm"),
             _number("K_gamma", K_gamma, *dflt.K_GAMMA_RANGE),
@@ -326,7 +327,8 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     S_Hmin, S_Fmin = _number("S_Hmin", S_Hmin, 0.5, 10.0), _number("S_Fmin", S_Fmin, 0.5, 10.0)
     cpr = tuple(_number("cycles_per_rev", c, 1, 1000) for c in cycles_per_rev)
     o = SimpleNamespace(load=load, mats=mats, grade=grade, nu40=nu40, Rz=Rz, Rz_root=Rz_root, K_gamma=K_gamma,
-                        root_method=root_method, cpr=cpr, tip_relief_um=tip_relief_um, bore=bore_ratio, shaft=shaft or {},
+                        root_method=root_method, cpr=cpr, tip_relief_um=tip_relief_um, bore=bore_ratio,
+                        shaft=shaft or {},
                         life={"pitting_permitted": pitting_permitted, "optimum": optimum_life}, rim=rim_mm,
                         root=require_bool("root", root), S_min=(S_Hmin, S_Fmin), rack=rack, beta_deg=beta_deg,
                         internal=internal, tip_shortening=tip_shortening, geometry=geometry)
@@ -366,8 +368,8 @@ def _evaluate(designs, G, o, xp) -> dict:
         if len({np.shape(v) for v in (m, z1, z2, x1, b)} | {x2.shape}) > 1:    # one shape: nothing to check
             broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=b)
     out = _kinematics(o.load, g, b, m_arr, beta_deg, o.K_gamma)
-    F_t, v, n1, n2, eps_gamma = out["F_t"], out["v"], out["n1"], out["n2"], out["eps_gamma"]
-    K_A, mats, n12 = o.load.application_factor, o.mats, (out["n1"] * o.cpr[0], out["n2"] * o.cpr[1])
+    F_t, v, n1, eps_gamma = out["F_t"], out["v"], out["n1"], out["eps_gamma"]
+    K_A, mats, n12 = o.load.application_factor, o.mats, (n1 * o.cpr[0], out["n2"] * o.cpr[1])
     w_A = F_t * K_A / b
     dev = _deviations(G, m_arr, g, b, o.grade, xp)
     out.update(dev)

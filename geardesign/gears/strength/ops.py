@@ -90,9 +90,9 @@ def ops_of(*values):
 
 
 def checked(name, value, lo, hi, *, lo_open=False, hi_open=False, unit=""):
-    """``value`` as a Python float when it is a Python float or int inside [lo, hi] (or the open ends asked for: the
-    one-design path, no numpy), else :func:`~geardesign.validate.require_range` of it (the same refusal by name, and a float
-    array).
+    """``value`` as a Python float when it is a Python float or int inside [lo, hi] (or the open ends asked for:
+    the one-design path, no numpy), else :func:`~geardesign.validate.require_range` of it (the same refusal by
+    name, and a float array).
 
     >>> checked("q_s", 2.5, 0.1, 50.0), checked("b", 40.0, 0.0, 1e5, lo_open=True)
     (2.5, 40.0)

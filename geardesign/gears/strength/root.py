@@ -85,8 +85,9 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
         method = require_choice("method", method, METHODS)
     if type(internal) is not bool:
         internal = require_bool("internal", internal)
-    if ((type(z) is int or type(z) is float and z.is_integer()) and Z_RANGE[0] <= z <= Z_RANGE[1] and _plain(x, *X_RANGE)
-            and _plain(da_over_mn, 1e-300, 1e300) and _plain(eps_alpha, *EPS_ALPHA_RANGE) and _plain(beta_deg, *BETA_RANGE_DEG)
+    if ((type(z) is int or type(z) is float and z.is_integer()) and Z_RANGE[0] <= z <= Z_RANGE[1]
+            and _plain(x, *X_RANGE) and _plain(da_over_mn, 1e-300, 1e300) and _plain(eps_alpha, *EPS_ALPHA_RANGE)
+            and _plain(beta_deg, *BETA_RANGE_DEG)
             and _plain(alpha_n_deg, *ALPHA_N_RANGE_DEG) and _plain(hfp_star, *HFP_RANGE)
             and _plain(rhofp_star, *RHOFP_RANGE) and _plain(spr_star, *SPR_RANGE)):
         return (float(z), float(x), float(da_over_mn), float(eps_alpha), abs(float(beta_deg)),
@@ -193,9 +194,9 @@ def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops):
     α_e = arccos(d_bn/d_e), γ_e = (π/2 + 2x tan α_n)/z_n + inv α_n − inv α_e, α_Fen = α_e − γ_e,
     h_Fe/m_n = ½[(cos γ_e − sin γ_e tan α_Fen) d_e/m_n − z_n cos(π/3 − θ) − G/cos θ + ρ_fP/m_n].
 
-    Evaluated with cos γ_e − sin γ_e tan α_Fen = cos α_e/cos α_Fen (so its first term is d_bn/cos α_Fen), inv α_e
-    with tan α_e = √(d_e² − d_bn²)/d_bn, and cos θ, sin θ, cos(π/3 − θ), sin(π/3 − θ) from tan θ: fewer
-    trigonometric functions, the same values to a few ulp."""
+    Evaluated with cos γ_e − sin γ_e tan α_Fen = cos α_e/cos α_Fen (so its first term is d_bn/cos α_Fen),
+    inv α_e with tan α_e = √(d_e² − d_bn²)/d_bn, and cos θ, sin θ, cos(π/3 − θ), sin(π/3 − θ) from tan θ:
+    fewer trigonometric functions, the same values to a few ulp."""
     G = rho - hfp + x
     H = 2.0 / z_n * (math.pi / 2.0 - E) - math.pi / 3.0
     th, t = _theta(G, H, z_n, x, ops)

@@ -117,7 +117,8 @@ def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
                                       rf.relative_surface_factor_Y_RrelT(Rz_root, kind))),
                 f"Y_X{i}": G.pick(f"Y_X{i}", lambda: once(memo, ("Y_X", kind), lambda: rf.size_factor_Y_X(m, kind))),
                 f"q_s{i}": ff["q_s"],
-                f"root_out_of_range{i}": (not in_range) if type(in_range) is bool else ~np.asarray(in_range, dtype=bool)})
+                f"root_out_of_range{i}": (not in_range) if type(in_range) is bool else
+                ~np.asarray(in_range, dtype=bool)})
 
 
 def _rim(rf, s_R_mm, h_t, m, internal):

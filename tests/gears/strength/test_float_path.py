@@ -12,7 +12,8 @@ from geardesign.errors import GearDesignError
 from geardesign.gears.strength import Load, material, pair_strength
 
 NAMES = ("42CrMo4", "18CrNiMo7-6", "31CrMoV9", "C45", "42CrMo4-IF")
-GIVEN = (None, {"K_Hbeta": 1.2}, {"K_v": 1.05, "Z_NT1": 0.95}, {"Y_F1": 2.1, "Y_eps": 0.7}, {"f_sh": 3.0, "c_prime": 14.0})
+GIVEN = (None, {"K_Hbeta": 1.2}, {"K_v": 1.05, "Z_NT1": 0.95}, {"Y_F1": 2.1, "Y_eps": 0.7},
+         {"f_sh": 3.0, "c_prime": 14.0})
 
 design = st.fixed_dictionaries(dict(
     m=st.sampled_from([1.0, 2.0, 3.0, 5.5, 8.0, 12.0]), z1=st.integers(12, 45), dz=st.integers(1, 90),
