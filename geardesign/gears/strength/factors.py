@@ -276,8 +276,9 @@ def shaft_misalignment(line_load_n_mm, b_mm, d1_mm, K_prime=0.48, l_mm=None, s_m
     xp = ops_of(line_load_n_mm, b_mm, d1_mm)
     w, d1 = xp.asarray(line_load_n_mm), xp.asarray(d1_mm)
     d_sh = d1 if d_sh_mm is None else d_sh_mm
-    l = 0.0 if l_mm is None else l_mm
-    gamma = xp.abs(1.0 + K_prime * l * s_mm / d1 ** 2 * (d1 / d_sh) ** 4 - 0.3) + 0.3
+    lever = K_prime * (0.0 if l_mm is None else l_mm) * s_mm
+    # without the lever term (the defaults) γ is one number: 1 + 0·(...) − 0.3 is 1 − 0.3 exactly
+    gamma = xp.abs(1.0 + (lever / d1 ** 2 * (d1 / d_sh) ** 4 if lever else 0.0) - 0.3) + 0.3
     return w * 0.023 * gamma * (xp.asarray(b_mm) / d1) ** 2
 
 

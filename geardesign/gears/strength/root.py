@@ -151,8 +151,9 @@ def _theta(G, H, z_n, x, ops):
         step = (th - k * t + H) / slope
         th = ops.clip(th - step, -1.2, 1.2)
         # Newton's error after a step is ~(f''/2f')·step² with |f''/2f'| < 1 here: a step below 1e-9 leaves
-        # ~1e-18 (three steps after the first, for z_n 8 to 400 and x -0.5 to 1.2); the residual below checks it
-        if i >= 1 and ops.all(ops.abs(step) <= 1e-9):
+        # ~1e-18 (three steps after the first, for z_n 8 to 400 and x -0.5 to 1.2: no check before the third);
+        # the residual below checks it
+        if i >= 2 and ops.all(ops.abs(step) <= 1e-9):
             break
     t = ops.tan(th)
     ok = (ops.abs(th - k * t + H) <= 1e-12) & (1.0 - k * (1.0 + t * t) > 0.0)
