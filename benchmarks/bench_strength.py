@@ -10,6 +10,9 @@
 
 The issue's goals: ≤ 100 µs for one pair, ≥ 1 M designs/s vectorised.
 
+Times are CPU times of this process (time.process_time): on a machine shared with other jobs the wall clock of a
+call drifts by 2-4x from one repeat to the next, its CPU time much less (the code is single-threaded).
+
 Run: python benchmarks/bench_strength.py [N]
 Prints figures; asserts nothing (speed is measured, not tested).
 """
@@ -28,11 +31,18 @@ from geardesign.gears.strength.chain import CHAIN_GEOMETRY_FIELDS
 def best(fn, repeat=5, number=20):
     times = []
     for _ in range(repeat):
-        t = time.perf_counter()
+        t = time.process_time()
         for _ in range(number):
             fn()
-        times.append((time.perf_counter() - t) / number)
+        times.append((time.process_time() - t) / number)
     return min(times)
+
+
+def once(fn):
+    """The CPU time of one call (s)."""
+    t = time.process_time()
+    fn()
+    return time.process_time() - t
 
 
 def plain_contact(m, z1, z2, x1, x2, T1, b, sigma_Hlim=767.0, K=1.3):
@@ -99,15 +109,10 @@ def main(n=200_000):
         x1 = rng.uniform(0.0, 0.6, size)
         x2 = rng.uniform(0.0, 0.6, size)
         m = rng.choice([2.0, 3.0, 4.0, 5.0], size)
-        t = time.perf_counter()
-        pair_strength(m, z1, z2, x1, x2, load=load, material1=mat, face_width_mm=10 * m)
-        t_vec = time.perf_counter() - t
-        t = time.perf_counter()
-        pair_strength(m, z1, z2, x1, x2, load=load, material1=mat, face_width_mm=10 * m, root=False)
-        t_contact = time.perf_counter() - t
-        t = time.perf_counter()
-        plain_contact_numpy(m, z1, z2, x1, x2, 200.0, 10 * m)
-        t_np = time.perf_counter() - t
+        t_vec = once(lambda: pair_strength(m, z1, z2, x1, x2, load=load, material1=mat, face_width_mm=10 * m))
+        t_contact = once(lambda: pair_strength(m, z1, z2, x1, x2, load=load, material1=mat, face_width_mm=10 * m,
+                                               root=False))
+        t_np = once(lambda: plain_contact_numpy(m, z1, z2, x1, x2, 200.0, 10 * m))
         print(f"vectorised, {size:,} designs: {size / t_vec / 1e6:6.3f} M designs/s with every factor "
               f"({t_vec / t_np:5.1f}x the plain numpy contact side, {size / t_np / 1e6:.2f} M designs/s); "
               f"goal 1 M/s -> {'met' if size / t_vec >= 1e6 else 'not met'}; contact side only (root=False): "
