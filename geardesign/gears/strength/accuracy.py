@@ -9,7 +9,7 @@ classes of ISO 1328-1:2013; ISO/TR 6336-30 and these formulas use the 1995 grade
 """
 from __future__ import annotations
 
-import numpy as np
+from .ops import ops_of
 
 __all__ = ["grade_step", "single_pitch_deviation", "profile_form_deviation", "helix_deviation_total",
            "helix_slope_deviation", "GRADE_RANGE"]
@@ -23,7 +23,8 @@ def grade_step(grade):
     >>> float(grade_step(7))
     2.0
     """
-    return np.exp2((np.asarray(grade, dtype=float) - 5.0) / 2.0)
+    xp = ops_of(grade)
+    return xp.exp2((xp.asarray(grade) - 5.0) / 2.0)
 
 
 def single_pitch_deviation(m_n_mm, d_mm, grade):
@@ -32,7 +33,8 @@ def single_pitch_deviation(m_n_mm, d_mm, grade):
     >>> round(float(single_pitch_deviation(7.746, 187.08, 5)), 2)   # grade 5 at the range means m 7.75, d 187 mm
     7.97
     """
-    return (0.3 * (np.asarray(m_n_mm) + 0.4 * np.sqrt(d_mm)) + 4.0) * grade_step(grade)
+    xp = ops_of(m_n_mm, d_mm)
+    return (0.3 * (xp.asarray(m_n_mm) + 0.4 * xp.sqrt(d_mm)) + 4.0) * grade_step(grade)
 
 
 def profile_form_deviation(m_n_mm, d_mm, grade):
@@ -41,7 +43,8 @@ def profile_form_deviation(m_n_mm, d_mm, grade):
     >>> round(float(profile_form_deviation(7.746, 187.08, 5)), 2)
     9.78
     """
-    return (2.5 * np.sqrt(m_n_mm) + 0.17 * np.sqrt(d_mm) + 0.5) * grade_step(grade)
+    xp = ops_of(m_n_mm, d_mm)
+    return (2.5 * xp.sqrt(m_n_mm) + 0.17 * xp.sqrt(d_mm) + 0.5) * grade_step(grade)
 
 
 def helix_deviation_total(d_mm, b_mm, grade):
@@ -50,7 +53,8 @@ def helix_deviation_total(d_mm, b_mm, grade):
     >>> round(float(helix_deviation_total(187.08, 109.54, 5)), 2)
     12.16
     """
-    return (0.1 * np.sqrt(d_mm) + 0.63 * np.sqrt(b_mm) + 4.2) * grade_step(grade)
+    xp = ops_of(d_mm, b_mm)
+    return (0.1 * xp.sqrt(d_mm) + 0.63 * xp.sqrt(b_mm) + 4.2) * grade_step(grade)
 
 
 def helix_slope_deviation(d_mm, b_mm, grade):
@@ -59,4 +63,5 @@ def helix_slope_deviation(d_mm, b_mm, grade):
     >>> round(float(helix_slope_deviation(187.08, 109.54, 5)), 2)
     8.67
     """
-    return (0.07 * np.sqrt(d_mm) + 0.45 * np.sqrt(b_mm) + 3.0) * grade_step(grade)
+    xp = ops_of(d_mm, b_mm)
+    return (0.07 * xp.sqrt(d_mm) + 0.45 * xp.sqrt(b_mm) + 3.0) * grade_step(grade)

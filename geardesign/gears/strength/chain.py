@@ -5,6 +5,7 @@ designs in one call; and the one-pair path that returns a :class:`StrengthResult
 from __future__ import annotations
 
 import math
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -20,6 +21,7 @@ from . import factors as kf
 from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
+from .ops import ArrayOps, FloatOps, checked, once
 from .result import StrengthResult, from_chain
 from .root_chain import root_side
 
@@ -39,6 +41,7 @@ STRENGTH_FIELDS = ("S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigm
 # the geometry fields the chain reads (of pair_geometry, or of the caller's mesh_geometry dict)
 CHAIN_GEOMETRY_FIELDS = ("a_w", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", "df1", "df2", "eps_alpha", "p_b")
 _GEOMETRY = list(CHAIN_GEOMETRY_FIELDS)
+_SMALL = 64   # designs: up to this many, the pair-wide fields are filled arrays instead of broadcast views
 
 
 class _Given:
@@ -74,75 +77,77 @@ def _material(value, name):
     raise GearDesignError(f"{name} must be a geardesign Material or a material name, got {type(value).__name__}")
 
 
-def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening):
+def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening, plain):
     """The geometry fields the chain needs, from pair_geometry (validated there), and the section constants."""
-    if all(type(v) in (int, float) for v in (m, z1, z2, x1, x2)) and isinstance(rack, BasicRack):
+    if plain and isinstance(rack, BasicRack):
         # one design in plain numbers: the float path of the geometry (validated as pair_geometry does)
         validate_inputs(m, z1, z2, x1, x2)
-        mesh = Mesh(z1, z2, rack, tip_shortening, float(beta_deg), internal)
+        mesh = Mesh(z1, z2, rack, tip_shortening, beta_deg, internal)
         geo = mesh_geometry_float(mesh, m, x1, x2, full=False)
         if not (geo["inv_alpha_w"] > 0 and geo["_gap1"] > 0 and geo["_gap2"] > 0 and geo["df1"] > 0
                 and geo["df2"] > 0):
             validate_geometry(mesh_geometry(mesh, m, x1, x2, full=False), mesh)
-        return _derived({k: np.float64(geo[k]) for k in _GEOMETRY}, z1, z2, rack, beta_deg)
+        return _derived({k: float(geo[k]) for k in _GEOMETRY}, float(z1), float(z2), rack, beta_deg, FloatOps)
     if np.size(x1) > 1 or np.size(x2) > 1:
         # pair_geometry(fields=...) of one pair (m, z1, z2 numbers) over more than one block of shifts fills the
         # pair-wide fields at the full size in each block and fails: give it m at the designs' shape instead
         m = np.broadcast_to(np.asarray(m, dtype=float), np.broadcast_shapes(np.shape(m), np.shape(x1), np.shape(x2)))
     geo = pair_geometry(m, z1, z2, x1, x2, rack=rack, tip_shortening=tip_shortening, fields=_GEOMETRY,
                         beta_deg=beta_deg, internal=internal)
-    return _derived({k: np.asarray(getattr(geo, k), dtype=float) for k in _GEOMETRY}, z1, z2, rack, beta_deg)
+    return _derived({k: np.asarray(getattr(geo, k), dtype=float) for k in _GEOMETRY}, np.asarray(z1, dtype=float),
+                    np.asarray(z2, dtype=float), rack, beta_deg, ArrayOps)
 
 
-def _derived(g, z1, z2, rack, beta_deg):
+def _derived(g, z1, z2, rack, beta_deg, xp):
     """α_wt (from d_b1/d_w1), α_t, β_b, z_n, tooth depths: what the chain reads besides pair_geometry's fields."""
     sc = section_constants(rack.alpha, math.radians(beta_deg))
-    with np.errstate(invalid="ignore"):
-        g["alpha_wt_deg"] = np.degrees(np.arccos(np.minimum(g["db1"] / g["dw1"], 1.0)))
+    with xp.errstate(invalid="ignore"):
+        g["alpha_wt_deg"] = xp.degrees(xp.arccos(xp.minimum(g["db1"] / g["dw1"], 1.0)))
     g["alpha_t_deg"] = math.degrees(sc.alpha_t)
     g["beta_b_deg"] = math.degrees(sc.beta_b)
     zn = 1.0 / (sc.cos_beta_b ** 2 * sc.cos_beta)
-    g["_z1"] = np.asarray(z1, dtype=float)
-    g["_z2"] = np.asarray(z2, dtype=float)
-    g["z_n1"], g["z_n2"] = g["_z1"] * zn, g["_z2"] * zn
+    g["_z1"], g["_z2"] = z1, z2
+    g["z_n1"], g["z_n2"] = z1 * zn, z2 * zn
     g["h1"] = (g["da1"] - g["df1"]) / 2.0
-    g["h2"] = np.abs(g["da2"] - g["df2"]) / 2.0
+    g["h2"] = xp.abs(g["da2"] - g["df2"]) / 2.0
     return g
 
 
-def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float) -> dict:
+def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float, xp=ArrayOps) -> dict:
     """The fields the chain reads, from a geometry dict of :func:`~geardesign.gears.geometry.mesh_geometry`
     (with its path of contact) instead of a validated :func:`pair_geometry`: designs that do not exist give
-    NaN (the strength checks of the shift solvers mask them)."""
-    with np.errstate(invalid="ignore"):
-        return _derived({k: np.asarray(geo[k], dtype=float) for k in _GEOMETRY}, geo["_z1"], geo["_z2"], rack,
-                        beta_deg)
+    NaN (the strength checks of the shift solvers mask them). ``xp`` :class:`FloatOps`: one design's dict of
+    :func:`~geardesign.gears.geometry.mesh_geometry_float` (a :class:`~geardesign.GearPair`'s)."""
+    with xp.errstate(invalid="ignore"):
+        return _derived({k: xp.asarray(geo[k]) for k in _GEOMETRY}, xp.asarray(geo["_z1"]), xp.asarray(geo["_z2"]),
+                        rack, beta_deg, xp)
 
 
-def _widths(face_width_mm, face_width2_mm, m):
+def _widths(face_width_mm, face_width2_mm, m, xp):
     """(b, b1, b2): the common width for contact and each gear's width for its root stress, the wider gear
     counted at most one module wider on each side (ISO 6336-3:2019 clause 5, b)."""
-    b1 = require_range("face_width_mm", face_width_mm, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
-    b2 = b1 if face_width2_mm is None else require_range("face_width2_mm", face_width2_mm,
-                                                         *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
-    b = np.minimum(b1, b2)
-    return b, np.minimum(b1, b + 2.0 * np.asarray(m)), np.minimum(b2, b + 2.0 * np.asarray(m))
+    b1 = checked("face_width_mm", face_width_mm, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
+    b2 = b1 if face_width2_mm is None else checked("face_width2_mm", face_width2_mm, *dflt.FACE_WIDTH_RANGE_MM,
+                                                   lo_open=True, unit="mm")
+    b = xp.minimum(b1, b2)
+    return b, xp.minimum(b1, b + 2.0 * m), xp.minimum(b2, b + 2.0 * m)
 
 
 def _speeds(load: Load, z1, z2):
-    """(T1 in N·m, n1, n2 in rpm): the load carried over to the pinion (gear 1)."""
-    u = np.asarray(z2, dtype=float) / z1
+    """(T1 in N·m, n1, n2 in rpm): the load carried over to the pinion (gear 1); the given gear's as numbers (its
+    life factors then are numbers too, one for all designs)."""
+    u = z2 / z1
     if load.on_gear == 1:
-        return np.full_like(u, load.torque_nm), np.full_like(u, load.n_rpm), load.n_rpm / u
-    return load.torque_nm / u, load.n_rpm * u, np.full_like(u, load.n_rpm)
+        return load.torque_nm, load.n_rpm, load.n_rpm / u
+    return load.torque_nm / u, load.n_rpm * u, load.n_rpm
 
 
-def _deviations(G, m, g, b, grade):
+def _deviations(G, m, g, b, grade, xp):
     """ISO 1328-1:1995 deviations of the pair (µm): f_pb, f_fα, F_β, f_Hβ — the larger gear's (the wheel's
     larger diameter gives the larger tolerance); f_pb = f_pt·cos α_t, the single pitch deviation on the base
     circle."""
-    d = np.maximum(g["d1"], g["d2"])
-    cos_t = math.cos(math.radians(float(np.asarray(g["alpha_t_deg"]))))
+    d = xp.maximum(g["d1"], g["d2"])
+    cos_t = math.cos(math.radians(g["alpha_t_deg"]))
     return {"f_pb": G.pick("f_pb", lambda: acc.single_pitch_deviation(m, d, grade) * cos_t),
             "f_falpha": G.pick("f_falpha", lambda: acc.profile_form_deviation(m, d, grade)),
             "F_beta": G.pick("F_beta", lambda: acc.helix_deviation_total(d, b, grade)),
@@ -152,40 +157,44 @@ def _deviations(G, m, g, b, grade):
 def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
     """c′_th, c′, c_γα, c_γβ (ISO 6336-1:2019 clause 9) and the regression's range flag. A ring's shift enters
     with ISO 21771's sign (x_ISO = −x of this project's GOST 19274 convention, as its tooth count is −z there)."""
-    x2 = -np.asarray(x2, dtype=float) if internal else x2
+    x2 = -x2 if internal else x2
     c_th = kf.theoretical_single_stiffness(g["z_n1"], g["z_n2"], x1, x2, internal)
     C_B = kf.basic_rack_factor(rack.ha + rack.c, rack.alpha_deg)
     c_prime = G.pick("c_prime", lambda: kf.single_stiffness(c_th, C_B, beta_deg, w_A))
     c_ga, c_gb = kf.mesh_stiffness(c_prime, g["eps_alpha"])
-    out.update(c_th=c_th, C_B=np.asarray(C_B), c_prime=np.asarray(c_prime),
-               c_gamma_alpha=np.asarray(G.pick("c_gamma_alpha", lambda: c_ga)),
-               c_gamma_beta=np.asarray(G.pick("c_gamma_beta", lambda: c_gb)))
-    xs = np.asarray(x1) + x2
+    out.update(c_th=c_th, C_B=C_B, c_prime=c_prime, c_gamma_alpha=G.pick("c_gamma_alpha", lambda: c_ga),
+               c_gamma_beta=G.pick("c_gamma_beta", lambda: c_gb))
+    xs = x1 + x2
     lo, hi = kf.STIFFNESS_X_SUM_RANGE
-    out["stiffness_out_of_range"] = (xs < lo) | (xs > hi) | (np.asarray(x1) < x2)
+    out["stiffness_out_of_range"] = (xs < lo) | (xs > hi) | (x1 < x2)
 
 
-def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal, z1, v, out):
+def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal, v, xp, out):
     """K_v by method B with the running-in allowance y_α (ISO 6336-1:2019 6.5.9)."""
-    y_a = (kf.running_in_alpha(dev["f_pb"], mats[0].sigma_Hlim_mpa, mats[0].kind, v)
-           + kf.running_in_alpha(dev["f_pb"], mats[1].sigma_Hlim_mpa, mats[1].kind, v)) / 2.0
-    C_a = G.pick("C_a", lambda: tip_relief_um if tip_relief_um is not None else (
-        kf.tip_relief_running_in(mats[0].sigma_Hlim_mpa) + kf.tip_relief_running_in(mats[1].sigma_Hlim_mpa)) / 2.0)
+    y_a = _pair_mean(mats, lambda mat: kf.running_in_alpha(dev["f_pb"], mat.sigma_Hlim_mpa, mat.kind, v))
+    C_a = G.pick("C_a", lambda: tip_relief_um if tip_relief_um is not None else _pair_mean(
+        mats, lambda mat: kf.tip_relief_running_in(mat.sigma_Hlim_mpa)))
     d_m1 = (g["da1"] + g["df1"]) / 2.0
     m_red = kf.reduced_mass(d_m1, g["db1"], g["d2"] / g["d1"], bore[0], bore[1], internal=internal)
-    n_E1 = kf.resonance_speed(z1, out["c_gamma_alpha"], m_red)
+    n_E1 = kf.resonance_speed(g["_z1"], out["c_gamma_alpha"], m_red)
     N = kf.resonance_ratio(n1, n_E1)
     c = out["c_prime"]
-    B_p = c * np.maximum(dev["f_pb"] - y_a, 0.0) / w_A
-    B_f = c * np.maximum(dev["f_falpha"] - y_a, 0.0) / w_A
-    B_k = np.abs(1.0 - out["c_gamma_alpha"] * C_a / w_A)
-    K_v = G.pick("K_v", lambda: kf.dynamic_factor(N, eps_gamma, B_p, B_f, B_k, w_A))
+    B_p = c * xp.maximum(dev["f_pb"] - y_a, 0.0) / w_A
+    B_f = c * xp.maximum(dev["f_falpha"] - y_a, 0.0) / w_A
+    B_k = xp.abs(1.0 - out["c_gamma_alpha"] * C_a / w_A)
     N_S = kf.subcritical_limit(w_A)
-    out.update(y_alpha=np.asarray(y_a), C_a=np.asarray(C_a), m_red=m_red, n_E1=n_E1, N=N, K_v=np.asarray(K_v),
-               K_v_resonance=(N > N_S) & (N < 1.5))
+    K_v = G.pick("K_v", lambda: kf.dynamic_factor(N, eps_gamma, B_p, B_f, B_k, w_A, N_S=N_S))
+    out.update(y_alpha=y_a, C_a=C_a, m_red=m_red, n_E1=n_E1, N=N, K_v=K_v, K_v_resonance=(N > N_S) & (N < 1.5))
 
 
-def _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft, out):
+def _pair_mean(mats, f):
+    """(f(material1) + f(material2))/2, the pair's value of a per-material allowance (ISO 6336-1: the mean of the two
+    gears'); one evaluation for one material on both gears ((a + a)/2 is a, exactly)."""
+    a = f(mats[0])
+    return a if mats[1] is mats[0] else (a + f(mats[1])) / 2.0
+
+
+def _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft, xp, out):
     """K_Hβ by method C from F_βy (ISO 6336-1:2019 7.6; f_sh, F_βx, y_β per 2006/Cor.1:2008) and K_Fβ."""
     w_m = F_t * K_A * out["K_v"] / b
 
@@ -193,73 +202,83 @@ def _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft, out):
         f_sh = G.pick("f_sh", lambda: kf.shaft_misalignment(w_m, b, g["d1"], **shaft))
         f_ma = G.pick("f_ma", lambda: dev["f_Hbeta"])
         F_bx = kf.helix_misalignment(f_sh, f_ma, w_m, dev["F_beta"])
-        y_b = (kf.running_in_beta(F_bx, mats[0].sigma_Hlim_mpa, mats[0].kind, v)
-               + kf.running_in_beta(F_bx, mats[1].sigma_Hlim_mpa, mats[1].kind, v)) / 2.0
-        out.update(f_sh=np.asarray(f_sh), f_ma=np.asarray(f_ma), F_betax=F_bx, y_beta=y_b, F_betay=F_bx - y_b)
+        y_b = _pair_mean(mats, lambda mat: kf.running_in_beta(F_bx, mat.sigma_Hlim_mpa, mat.kind, v))
+        out.update(f_sh=f_sh, f_ma=f_ma, F_betax=F_bx, y_beta=y_b, F_betay=F_bx - y_b)
         return kf.face_load_factor_H(F_bx - y_b, out["c_gamma_beta"], w_m)
 
-    K_Hb = np.asarray(G.pick("K_Hbeta", compute))
-    b_over_h = np.minimum(b / g["h1"], b / g["h2"])
+    K_Hb = G.pick("K_Hbeta", compute)
+    b_over_h = xp.minimum(b / g["h1"], b / g["h2"])
     N_F = kf.face_load_exponent(b_over_h)
-    out.update(K_Hbeta=K_Hb, N_F=N_F, K_Fbeta=np.asarray(G.pick("K_Fbeta", lambda: kf.face_load_factor_F(K_Hb, N_F))))
+    out.update(K_Hbeta=K_Hb, N_F=N_F, K_Fbeta=G.pick("K_Fbeta", lambda: kf.face_load_factor_F(K_Hb, N_F)))
 
 
-def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, out):
+def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, xp, out):
     """K_Hα and K_Fα by method B, limited to their ranges (ISO 6336-1:2019 8.3.2-8.3.4)."""
     w_H = F_t * K_A * out["K_v"] * out["K_Hbeta"] / b
     raw = kf.transverse_load_factor(eps_gamma, out["c_gamma_alpha"], dev["f_pb"] - out["y_alpha"], w_H)
     hi_H, hi_F = kf.transverse_load_limits(eps_gamma, g["eps_alpha"], Z_eps)
     if root_method == "C":   # ISO 6336-1:2006 eq. (76): ε_γ/(ε_α Y_ε) with the tip-load method's Y_ε
         hi_F = eps_gamma / (g["eps_alpha"] * (0.25 + 0.75 / out["eps_alpha_n"]))
-    K_Ha = np.clip(raw, 1.0, np.maximum(hi_H, 1.0))
-    K_Fa = np.clip(raw, 1.0, np.maximum(hi_F, 1.0))
-    out.update(K_Halpha=np.asarray(G.pick("K_Halpha", lambda: K_Ha)),
-               K_Falpha=np.asarray(G.pick("K_Falpha", lambda: K_Fa)),
-               K_Halpha_limited=raw > np.maximum(hi_H, 1.0), K_Falpha_limited=raw > np.maximum(hi_F, 1.0))
+    hi_H, hi_F = xp.maximum(hi_H, 1.0), xp.maximum(hi_F, 1.0)
+    out.update(K_Halpha=G.pick("K_Halpha", lambda: xp.clip(raw, 1.0, hi_H)),
+               K_Falpha=G.pick("K_Falpha", lambda: xp.clip(raw, 1.0, hi_F)),
+               K_Halpha_limited=raw > hi_H, K_Falpha_limited=raw > hi_F)
 
 
-def _contact(G, g, mats, F_t, b, u, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_opts, internal, out):
-    """σ_H0, σ_H1,2, σ_HG1,2 and S_H1,2 (ISO 6336-2:2019)."""
+def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_opts, internal, xp, out):
+    """σ_H0, σ_H1,2 and the pitting side of each gear (ISO 6336-2:2019)."""
     m1, m2 = mats
-    out["Z_H"] = np.asarray(G.pick("Z_H", lambda: zc.zone_factor(g["beta_b_deg"], g["alpha_t_deg"],
-                                                                  g["alpha_wt_deg"])))
-    out["Z_E"] = np.asarray(G.pick("Z_E", lambda: zc.elasticity_factor(m1.E_mpa, m1.nu, m2.E_mpa, m2.nu)))
+    out["Z_H"] = G.pick("Z_H", lambda: zc.zone_factor(g["beta_b_deg"], g["alpha_t_deg"], g["alpha_wt_deg"]))
+    out["Z_E"] = G.pick("Z_E", lambda: zc.elasticity_factor(m1.E_mpa, m1.nu, m2.E_mpa, m2.nu))
     ZB, ZD = zc.single_pair_factors(g["db1"], g["db2"], g["da1"], g["da2"], g["alpha_wt_deg"], g["a_w"],
                                     g["eps_alpha"], out["eps_beta"], g["p_b"], internal, g["_z2"] / g["_z1"])
-    out["Z_B"], out["Z_D"] = (np.asarray(G.pick("Z_B", lambda: ZB)), np.asarray(G.pick("Z_D", lambda: ZD)))
-    s0 = zc.nominal_contact_stress(F_t, g["d1"], b, u, out["Z_H"], out["Z_E"], out["Z_eps"], out["Z_beta"], internal)
+    out["Z_B"], out["Z_D"] = G.pick("Z_B", lambda: ZB), G.pick("Z_D", lambda: ZD)
+    s0 = zc.nominal_contact_stress(F_t, g["d1"], b, g["d2"] / g["d1"], out["Z_H"], out["Z_E"], out["Z_eps"],
+                                   out["Z_beta"], internal)
     K = (K_A, K_gamma, out["K_v"], out["K_Hbeta"], out["K_Halpha"])
     out["sigma_H0"] = s0
     out["sigma_H1"], out["sigma_H2"] = zc.contact_stress(s0, out["Z_B"], *K), zc.contact_stress(s0, out["Z_D"], *K)
-    rho1 = g["db1"] / 2.0 * np.tan(np.radians(g["alpha_wt_deg"]))
-    rho2 = g["db2"] / 2.0 * np.tan(np.radians(g["alpha_wt_deg"]))
-    rho_red = zc.relative_radius(rho1, rho2, internal)
+    t_w = xp.tan(xp.radians(g["alpha_wt_deg"]))
+    rho_red = zc.relative_radius(g["db1"] / 2.0 * t_w, g["db2"] / 2.0 * t_w, internal)
+    out["Z_X"] = G.pick("Z_X", lambda: zc.SIZE_FACTOR_Z_X)
     hard = (m1.surface_hardened, m2.surface_hardened)
+    memo = {}
     for i, (mat, n) in enumerate(zip(mats, n12), start=1):
-        s = mat.sigma_Hlim_mpa
-        N_L = None if life_h is None else load_cycles(n, life_h)
-        out[f"Z_NT{i}"] = np.asarray(G.pick(f"Z_NT{i}", lambda: np.ones_like(s0) if N_L is None else
-                                            contact_life_factor(N_L, mat.kind, **life_opts)))
-        out[f"Z_L{i}"] = np.asarray(G.pick(f"Z_L{i}", lambda: zc.lubricant_factor(nu40, s)))
-        out[f"Z_v{i}"] = np.asarray(G.pick(f"Z_v{i}", lambda: zc.velocity_factor(v, s)))
-        out[f"Z_R{i}"] = np.asarray(G.pick(f"Z_R{i}", lambda: zc.roughness_factor(Rz, Rz, rho_red, s)))
         softer = (not hard[i - 1]) and hard[2 - i]
-        out[f"Z_W{i}"] = np.asarray(G.pick(f"Z_W{i}", lambda: zc.work_hardening_factor(mat.brinell, softer)))
-        out[f"N_L{i}"] = np.nan if N_L is None else N_L
-        Z_X = G.pick("Z_X", lambda: zc.SIZE_FACTOR_Z_X)
-        out["Z_X"] = np.asarray(Z_X)
-        out[f"sigma_HG{i}"] = zc.contact_stress_limit(s, out[f"Z_NT{i}"], out[f"Z_L{i}"], out[f"Z_v{i}"],
-                                                      out[f"Z_R{i}"], out[f"Z_W{i}"], Z_X)
-        out[f"S_H{i}"] = zc.contact_safety(out[f"sigma_HG{i}"], out[f"sigma_H{i}"])
+        _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, xp, out, memo)
+
+
+def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, xp, out, memo):
+    """Z_NT, Z_L, Z_v, Z_R, Z_W, σ_HG and S_H of gear ``i`` (ISO 6336-2:2019 clauses 10-14); Z_L, Z_v, Z_R depend
+    on the gear through σ_Hlim alone (``memo``: computed once for two gears of one σ_Hlim)."""
+    s = mat.sigma_Hlim_mpa
+    N_L = None if life_h is None else load_cycles(n, life_h)
+    out[f"Z_NT{i}"] = G.pick(f"Z_NT{i}", lambda: 1.0 if N_L is None else
+                             contact_life_factor(N_L, mat.kind, **life_opts))
+    out[f"Z_L{i}"] = G.pick(f"Z_L{i}", lambda: once(memo, ("Z_L", s), lambda: zc.lubricant_factor(nu40, s)))
+    out[f"Z_v{i}"] = G.pick(f"Z_v{i}", lambda: once(memo, ("Z_v", s), lambda: zc.velocity_factor(v, s)))
+    out[f"Z_R{i}"] = G.pick(f"Z_R{i}", lambda: once(memo, ("Z_R", s), lambda: zc.roughness_factor(Rz, Rz, rho_red, s)))
+    out[f"Z_W{i}"] = G.pick(f"Z_W{i}", lambda: zc.work_hardening_factor(mat.brinell, softer))
+    out[f"N_L{i}"] = math.nan if N_L is None else N_L
+    out[f"sigma_HG{i}"] = zc.contact_stress_limit(s, out[f"Z_NT{i}"], out[f"Z_L{i}"], out[f"Z_v{i}"],
+                                                  out[f"Z_R{i}"], out[f"Z_W{i}"], out["Z_X"])
+    out[f"S_H{i}"] = zc.contact_safety(out[f"sigma_HG{i}"], out[f"sigma_H{i}"])
 
 
 def _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method):
-    grade = require_range("accuracy_grade", accuracy_grade, *acc.GRADE_RANGE)
-    return (grade, require_range("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
-            require_range("Rz_flank_um", Rz_flank_um, *dflt.RZ_RANGE_UM, unit="µm"),
-            require_range("Rz_root_um", Rz_root_um, dflt.RZ_RANGE_UM[0], dflt.RZ_ROOT_MAX_UM, unit="µm"),
-            one_number("K_gamma", require_range("K_gamma", K_gamma, *dflt.K_GAMMA_RANGE)),
+    grade = checked("accuracy_grade", accuracy_grade, *acc.GRADE_RANGE)
+    grade = grade if type(grade) is float else float(grade) if np.ndim(grade) == 0 else grade
+    return (grade, _number("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
+            _number("Rz_flank_um", Rz_flank_um, *dflt.RZ_RANGE_UM, unit="µm"),
+            _number("Rz_root_um", Rz_root_um, dflt.RZ_RANGE_UM[0], dflt.RZ_ROOT_MAX_UM, unit="µm"),
+            _number("K_gamma", K_gamma, *dflt.K_GAMMA_RANGE),
             root_method if root_method in ("B", "C") else _bad_method(root_method))
+
+
+def _number(name, value, lo, hi, **kw):
+    """One number in [lo, hi] as a Python float (refused by name otherwise)."""
+    value = checked(name, value, lo, hi, **kw)
+    return value if type(value) is float else one_number(name, value)
 
 
 def _bad_method(root_method):
@@ -297,7 +316,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``root=False`` leaves the root side out (no S_F, σ_F, Y fields): half the work where only contact is asked.
     ``geometry``: the pair's geometry dict when the caller has it (:func:`~geardesign.gears.geometry.mesh_geometry`
     of these designs: the strength checks of the shift solvers); it is used unvalidated, so designs that do not
-    exist, or have no root section, give NaN rather than an error.
+    exist, or (given as arrays) have no root section, give NaN rather than an error.
     """
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
@@ -305,42 +324,76 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     mats = (_material(material1, "material1"), _material(material1 if material2 is None else material2, "material2"))
     grade, nu40, Rz, Rz_root, K_gamma, root_method = _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um,
                                                                        K_gamma, root_method)
-    S_Hmin = one_number("S_Hmin", require_range("S_Hmin", S_Hmin, 0.5, 10.0))
-    S_Fmin = one_number("S_Fmin", require_range("S_Fmin", S_Fmin, 0.5, 10.0))
-    cpr = tuple(one_number("cycles_per_rev", require_range("cycles_per_rev", c, 1, 1000)) for c in cycles_per_rev)
+    S_Hmin, S_Fmin = _number("S_Hmin", S_Hmin, 0.5, 10.0), _number("S_Fmin", S_Fmin, 0.5, 10.0)
+    cpr = tuple(_number("cycles_per_rev", c, 1, 1000) for c in cycles_per_rev)
+    o = SimpleNamespace(load=load, mats=mats, grade=grade, nu40=nu40, Rz=Rz, Rz_root=Rz_root, K_gamma=K_gamma,
+                        root_method=root_method, cpr=cpr, tip_relief_um=tip_relief_um, bore=bore_ratio,
+                        shaft=shaft or {},
+                        life={"pitting_permitted": pitting_permitted, "optimum": optimum_life}, rim=rim_mm,
+                        root=require_bool("root", root), S_min=(S_Hmin, S_Fmin), rack=rack, beta_deg=beta_deg,
+                        internal=internal, tip_shortening=tip_shortening, geometry=geometry)
+    float_geometry = geometry is None or all(type(geometry[k]) is float for k in _GEOMETRY)
+    o.refuse = float_geometry          # a pair's own (validated) geometry: a design without a root section is refused
     G = _Given(factors)
-    g = (_geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening) if geometry is None
-         else chain_geometry(geometry, rack, beta_deg))
-    m_arr = np.asarray(m, dtype=float)
-    b, b1, b2 = _widths(face_width_mm, face_width2_mm, m_arr)
-    broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=b)
-    out = _kinematics(load, g, b, m_arr, beta_deg, K_gamma)
-    F_t, v, n1, n2, eps_gamma = out["F_t"], out["v"], out["n1"], out["n2"], out["eps_gamma"]
-    K_A = load.application_factor
+    designs = (m, z1, z2, x1, x2, face_width_mm, face_width2_mm)
+    if all(type(v) in (int, float) for v in designs[:6]) and (
+            face_width2_mm is None or type(face_width2_mm) in (int, float)) and float_geometry:
+        # one design in Python floats: the formulas on math, not numpy (see .ops)
+        try:
+            return _evaluate(_floats(designs), G, o, FloatOps)
+        except GearDesignError:
+            raise
+        except (ArithmeticError, ValueError):   # math's domain error where numpy gives NaN: the array path says why
+            G.used.clear()
+    return _evaluate(designs, G, o, ArrayOps)
+
+
+def _floats(designs):
+    """The designs' numbers as Python floats (the tooth counts as given: the geometry checks them)."""
+    m, z1, z2, x1, x2, b1, b2 = designs
+    return float(m), z1, z2, float(x1), float(x2), float(b1), None if b2 is None else float(b2)
+
+
+def _evaluate(designs, G, o, xp) -> dict:
+    """The chain of :func:`pair_strength` on validated options ``o``, in floats (``xp`` :class:`FloatOps`, one
+    design) or arrays."""
+    m, z1, z2, x1, x2, face_width_mm, face_width2_mm = designs
+    plain = xp is FloatOps
+    beta_deg = float(o.beta_deg) if plain and type(o.beta_deg) is int else o.beta_deg
+    g = (_geometry(m, z1, z2, x1, x2, o.rack, beta_deg, o.internal, o.tip_shortening, plain) if o.geometry is None
+         else chain_geometry(o.geometry, o.rack, beta_deg, xp))
+    m_arr = xp.asarray(m)
+    b, b1, b2 = _widths(face_width_mm, face_width2_mm, m_arr, xp)
+    if not plain:
+        x1, x2 = np.asarray(x1, dtype=float), np.asarray(x2, dtype=float)
+        if len({np.shape(v) for v in (m, z1, z2, x1, b)} | {x2.shape}) > 1:    # one shape: nothing to check
+            broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=b)
+    out = _kinematics(o.load, g, b, m_arr, beta_deg, o.K_gamma)
+    F_t, v, n1, eps_gamma = out["F_t"], out["v"], out["n1"], out["eps_gamma"]
+    K_A, mats, n12 = o.load.application_factor, o.mats, (n1 * o.cpr[0], out["n2"] * o.cpr[1])
     w_A = F_t * K_A / b
-    dev = _deviations(G, m_arr, g, b, grade)
-    out.update({k: np.asarray(val) for k, val in dev.items()})
-    _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out)
-    _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore_ratio, eps_gamma, internal, z1, v, out)
-    _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft or {}, out)
-    out["Z_eps"] = np.asarray(G.pick("Z_eps", lambda: zc.contact_ratio_factor(g["eps_alpha"], out["eps_beta"])))
-    out["Z_beta"] = np.asarray(G.pick("Z_beta", lambda: zc.helix_angle_factor(beta_deg)))
-    _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], root_method, out)
-    _contact(G, g, mats, F_t, b, g["d2"] / g["d1"], K_A, K_gamma, v, (n1 * cpr[0], n2 * cpr[1]), load.life_h, nu40, Rz,
-             {"pitting_permitted": pitting_permitted, "optimum": optimum_life}, internal, out)
-    if require_bool("root", root):
-        root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root,
-                  (n1 * cpr[0], n2 * cpr[1]), load.life_h, root_method, out, rim_mm, refuse=geometry is None)
-    return _finish(out, S_Hmin, S_Fmin, np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
+    dev = _deviations(G, m_arr, g, b, o.grade, xp)
+    out.update(dev)
+    _stiffness(G, g, x1, x2, o.rack, beta_deg, w_A, o.internal, out)
+    _dynamic(G, g, mats, n1, w_A, dev, o.tip_relief_um, o.bore, eps_gamma, o.internal, v, xp, out)
+    _face_load(G, g, mats, F_t, b, K_A, dev, v, o.shaft, xp, out)
+    out["Z_eps"] = G.pick("Z_eps", lambda: zc.contact_ratio_factor(g["eps_alpha"], out["eps_beta"]))
+    out["Z_beta"] = G.pick("Z_beta", lambda: zc.helix_angle_factor(beta_deg))
+    _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], o.root_method, xp, out)
+    _contact(G, g, mats, F_t, b, K_A, o.K_gamma, v, n12, o.load.life_h, o.nu40, o.Rz, o.life, o.internal, xp, out)
+    if o.root:
+        root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), o.rack, beta_deg, o.internal, K_A, o.K_gamma, o.grade,
+                  o.Rz_root, n12, o.load.life_h, o.root_method, out, o.rim, xp, o.refuse)
+    return _finish(out, *o.S_min, () if plain else np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
 
 
 def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
     """F_t, v, the speeds and the contact ratios: the first fields of the chain's dict."""
     T1, n1, n2 = _speeds(load, g["_z1"], g["_z2"])
     F_t = kf.tangential_load(T1, g["d1"])
-    eps_beta = b * math.sin(math.radians(beta_deg)) / (math.pi * m)
-    return {"F_t": F_t, "v": kf.pitch_line_velocity(g["d1"], n1), "K_A": np.asarray(load.application_factor),
-            "K_gamma": np.asarray(K_gamma), "n1": n1, "n2": n2, "alpha_wt_deg": g["alpha_wt_deg"],
+    eps_beta = b * math.sin(math.radians(beta_deg)) / (math.pi * m) if beta_deg else 0.0   # spur: one number
+    return {"F_t": F_t, "v": kf.pitch_line_velocity(g["d1"], n1), "K_A": load.application_factor,
+            "K_gamma": K_gamma, "n1": n1, "n2": n2, "alpha_wt_deg": g["alpha_wt_deg"],
             "eps_alpha": g["eps_alpha"], "z_n1": g["z_n1"], "z_n2": g["z_n2"], "eps_beta": eps_beta,
             "eps_gamma": g["eps_alpha"] + eps_beta,
             "eps_alpha_n": g["eps_alpha"] / math.cos(math.radians(g["beta_b_deg"])) ** 2}
@@ -353,11 +406,15 @@ def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
         if f"sigma_FG{i}" in out:
             out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
     out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
-    for k, val in out.items():   # read-only views for the pair-wide fields
-        if isinstance(val, np.ndarray) and val.shape != shape:
-            out[k] = np.broadcast_to(val, shape)
-        elif isinstance(val, float) and shape:
-            out[k] = np.broadcast_to(np.float64(val), shape)
+    if shape:
+        # the pair-wide fields at the designs' shape: read-only views of a large batch, copies of a small one
+        # (np.full costs a quarter of np.broadcast_to there)
+        small = math.prod(shape) <= _SMALL
+        for k, val in out.items():
+            if isinstance(val, np.ndarray) and val.shape != shape:
+                out[k] = np.full(shape, val) if small and val.ndim == 0 else np.broadcast_to(val, shape)
+            elif isinstance(val, float):
+                out[k] = np.full(shape, val) if small else np.broadcast_to(np.float64(val), shape)
     out["given"] = tuple(sorted(G.used))
     out["given_unused"] = tuple(sorted(set(G.values) - G.used))   # e.g. f_sh with K_Hbeta given, Y_eps with method B
     return out
@@ -381,6 +438,8 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
     b = pair.face_width_mm if face_width_mm is None else face_width_mm
     if b is None:
         raise GearDesignError("face_width_mm is needed: give it, or build the GearPair with face_width_mm=")
+    # the pair's own geometry (validated when it was built): the chain need not compute it again
+    options.setdefault("geometry", getattr(pair, "_geo", None))
     out = pair_strength(pair.m, pair.z1, pair.z2, pair.x1, pair.x2, load=load, material1=material,
                         material2=material2, face_width_mm=b, beta_deg=pair.beta_deg, internal=pair.internal,
                         rack=pair.rack, tip_shortening=pair.tip_shortening, **options)

@@ -6,7 +6,8 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
+
+from .ops import ops_of
 
 __all__ = [
     "zone_factor", "elasticity_factor", "contact_ratio_factor", "helix_angle_factor", "single_pair_factors",
@@ -24,8 +25,9 @@ def zone_factor(beta_b_deg, alpha_t_deg, alpha_wt_deg):
     >>> round(float(zone_factor(0, 20, 20)), 4)                 # standard spur pair: 2.4946
     2.4946
     """
-    bb, at, awt = (np.radians(v) for v in (beta_b_deg, alpha_t_deg, alpha_wt_deg))
-    return np.sqrt(2.0 * np.cos(bb) * np.cos(awt) / (np.cos(at) ** 2 * np.sin(awt)))
+    xp = ops_of(beta_b_deg, alpha_t_deg, alpha_wt_deg)
+    bb, at, awt = xp.radians(beta_b_deg), xp.radians(alpha_t_deg), xp.radians(alpha_wt_deg)
+    return xp.sqrt(2.0 * xp.cos(bb) * xp.cos(awt) / (xp.cos(at) ** 2 * xp.sin(awt)))
 
 
 def elasticity_factor(E1_mpa, nu1, E2_mpa, nu2):
@@ -34,7 +36,8 @@ def elasticity_factor(E1_mpa, nu1, E2_mpa, nu2):
     >>> round(float(elasticity_factor(206000, 0.3, 206000, 0.3)), 4)   # steel on steel: 189.8 (ISO/TR 6336-30: 189.8117)
     189.8117
     """
-    return np.sqrt(1.0 / (math.pi * ((1.0 - np.asarray(nu1) ** 2) / E1_mpa + (1.0 - np.asarray(nu2) ** 2) / E2_mpa)))
+    xp = ops_of(E1_mpa, nu1, E2_mpa, nu2)
+    return xp.sqrt(1.0 / (math.pi * ((1.0 - xp.asarray(nu1) ** 2) / E1_mpa + (1.0 - xp.asarray(nu2) ** 2) / E2_mpa)))
 
 
 def contact_ratio_factor(eps_alpha, eps_beta):
@@ -44,9 +47,10 @@ def contact_ratio_factor(eps_alpha, eps_beta):
     >>> round(float(contact_ratio_factor(1.54908, 1.0835)), 4)          # ISO/TR 6336-30 ex. 1: 0.803
     0.8035
     """
-    ea = np.asarray(eps_alpha, dtype=float)
-    eb = np.minimum(np.asarray(eps_beta, dtype=float), 1.0)
-    return np.sqrt((4.0 - ea) * (1.0 - eb) / 3.0 + eb / ea)
+    xp = ops_of(eps_alpha, eps_beta)
+    ea = xp.asarray(eps_alpha)
+    eb = xp.minimum(xp.asarray(eps_beta), 1.0)
+    return xp.sqrt((4.0 - ea) * (1.0 - eb) / 3.0 + eb / ea)
 
 
 def helix_angle_factor(beta_deg):
@@ -55,7 +59,8 @@ def helix_angle_factor(beta_deg):
     >>> round(float(helix_angle_factor(15.8)), 5)                       # ISO/TR 6336-30 ex. 1: 1.01944
     1.01944
     """
-    return 1.0 / np.sqrt(np.cos(np.radians(beta_deg)))
+    xp = ops_of(beta_deg)
+    return 1.0 / xp.sqrt(xp.cos(xp.radians(beta_deg)))
 
 
 def relative_radius(rho1, rho2, internal=False):
@@ -74,25 +79,27 @@ def single_pair_factors(db1, db2, da1, da2, alpha_wt_deg, a_w, eps_alpha, eps_be
     >>> [round(float(z), 4) for z in single_pair_factors(42.28617, 84.57234, 50, 95, 20, 67.5, 1.611106, 0, 7.380329)]
     [1.0772, 1.0]
     """
-    awt = np.radians(alpha_wt_deg)
-    T1T2 = np.asarray(a_w) * np.sin(awt)
-    rc1 = np.asarray(db1) / 2.0 * np.tan(awt)
+    xp = ops_of(db1, db2, da1, da2, alpha_wt_deg, a_w, eps_beta, p_bt)
+    db1, db2, da1, da2 = xp.asarray(db1), xp.asarray(db2), xp.asarray(da1), xp.asarray(da2)
+    awt = xp.radians(alpha_wt_deg)
+    T1T2 = xp.asarray(a_w) * xp.sin(awt)
+    rc1 = db1 / 2.0 * xp.tan(awt)
     rc2 = T1T2 + rc1 if internal else T1T2 - rc1
-    ra1 = np.sqrt((np.asarray(da1) / 2.0) ** 2 - (np.asarray(db1) / 2.0) ** 2)   # pinion tip on the line of action
-    rb1 = ra1 - p_bt                                                                 # point B: one base pitch inside
+    ra1 = xp.sqrt((da1 / 2.0) ** 2 - (db1 / 2.0) ** 2)   # pinion tip on the line of action
+    rb1 = ra1 - p_bt                                       # point B: one base pitch inside
     rb2 = T1T2 + rb1 if internal else T1T2 - rb1
-    M1 = np.sqrt(rc1 * rc2 / (rb1 * rb2))
-    eb = np.minimum(np.asarray(eps_beta, dtype=float), 1.0)
-    Z_B = np.maximum(M1 - eb * (M1 - 1.0), 1.0)
-    if internal:          # Z_D = 1 (ISO 6336-2:2019 6.1): the ring's point D is not needed
-        return Z_B, np.ones_like(Z_B)
-    ra2 = np.sqrt((np.asarray(da2) / 2.0) ** 2 - (np.asarray(db2) / 2.0) ** 2)
+    M1 = xp.sqrt(rc1 * rc2 / (rb1 * rb2))
+    eb = xp.minimum(xp.asarray(eps_beta), 1.0)
+    Z_B = xp.maximum(M1 - eb * (M1 - 1.0), 1.0)
+    u = db2 / db1 if u is None else u   # give u = z2/z1: exact at the rule's 1.5
+    if internal or xp.all(u > 1.5):     # Z_D = 1 there: M2 is not needed (nor its square root)
+        return Z_B, xp.like(Z_B, 1.0)
+    ra2 = xp.sqrt((da2 / 2.0) ** 2 - (db2 / 2.0) ** 2)
     rd2 = ra2 - p_bt
     rd1 = T1T2 - rd2
-    M2 = np.sqrt(rc1 * rc2 / (rd1 * rd2))
-    Z_D = np.maximum(M2 - eb * (M2 - 1.0), 1.0)
-    u = np.asarray(db2) / db1 if u is None else np.asarray(u)   # give u = z2/z1: exact at the rule's 1.5
-    return Z_B, np.where(u > 1.5, 1.0, Z_D)
+    M2 = xp.sqrt(rc1 * rc2 / (rd1 * rd2))
+    Z_D = xp.maximum(M2 - eb * (M2 - 1.0), 1.0)
+    return Z_B, xp.where(u > 1.5, 1.0, Z_D)
 
 
 def nominal_contact_stress(F_t, d1, b, u, Z_H, Z_E, Z_eps, Z_beta, internal=False):
@@ -102,9 +109,10 @@ def nominal_contact_stress(F_t, d1, b, u, Z_H, Z_E, Z_eps, Z_beta, internal=Fals
     >>> round(float(nominal_contact_stress(127352.4, 141.3401, 100.0, 103/17, 2.39533, 189.8117, 0.80346, 1.01944)), 1)
     1206.6
     """
-    uu = np.asarray(u, dtype=float)
+    xp = ops_of(F_t, d1, b, u)
+    uu = xp.asarray(u)
     ratio = (uu - 1.0) / uu if internal else (uu + 1.0) / uu
-    return Z_H * Z_E * Z_eps * Z_beta * np.sqrt(np.asarray(F_t) / (np.asarray(d1) * b) * ratio)
+    return Z_H * Z_E * Z_eps * Z_beta * xp.sqrt(xp.asarray(F_t) / (xp.asarray(d1) * b) * ratio)
 
 
 def contact_stress(sigma_H0, Z_BD, K_A, K_gamma, K_v, K_Hbeta, K_Halpha):
@@ -113,13 +121,15 @@ def contact_stress(sigma_H0, Z_BD, K_A, K_gamma, K_v, K_Hbeta, K_Halpha):
     >>> round(float(contact_stress(1206.58207, 1.0, 1.0, 1.0, 1.003, 1.16, 1.0)), 2)   # TR 6336-30: 1301.35 (K_v rounded)
     1301.48
     """
-    return Z_BD * np.asarray(sigma_H0) * np.sqrt(K_A * K_gamma * np.asarray(K_v) * K_Hbeta * K_Halpha)
+    xp = ops_of(sigma_H0, K_A, K_gamma, K_v, K_Hbeta, K_Halpha)
+    return Z_BD * xp.asarray(sigma_H0) * xp.sqrt(K_A * K_gamma * xp.asarray(K_v) * K_Hbeta * K_Halpha)
 
 
 def _c_zl(sigma_Hlim):
     """C_ZL (ISO 6336-2:2019 eq. (22)-(24)): 0.83 below 850 MPa, 0.91 above 1200, σ_Hlim/4375 + 0.6357 between."""
-    s = np.asarray(sigma_Hlim, dtype=float)
-    return np.where(s < 850.0, 0.83, np.where(s > 1200.0, 0.91, s / 4375.0 + 0.6357))
+    xp = ops_of(sigma_Hlim)
+    s = xp.asarray(sigma_Hlim)
+    return xp.where(s < 850.0, 0.83, xp.where(s > 1200.0, 0.91, s / 4375.0 + 0.6357))
 
 
 def lubricant_factor(nu40_mm2_s, sigma_Hlim_mpa):
@@ -130,7 +140,7 @@ def lubricant_factor(nu40_mm2_s, sigma_Hlim_mpa):
     1.04739
     """
     c = _c_zl(sigma_Hlim_mpa)
-    return c + 4.0 * (1.0 - c) / (1.2 + 134.0 / np.asarray(nu40_mm2_s, dtype=float)) ** 2
+    return c + 4.0 * (1.0 - c) / (1.2 + 134.0 / ops_of(nu40_mm2_s).asarray(nu40_mm2_s)) ** 2
 
 
 def velocity_factor(v_m_s, sigma_Hlim_mpa):
@@ -141,7 +151,8 @@ def velocity_factor(v_m_s, sigma_Hlim_mpa):
     0.96911
     """
     c = _c_zl(sigma_Hlim_mpa) + 0.02
-    return c + 2.0 * (1.0 - c) / np.sqrt(0.8 + 32.0 / np.asarray(v_m_s, dtype=float))
+    xp = ops_of(v_m_s, c)
+    return c + 2.0 * (1.0 - c) / xp.sqrt(0.8 + 32.0 / xp.asarray(v_m_s))
 
 
 def roughness_factor(Rz1_um, Rz2_um, rho_red_mm, sigma_Hlim_mpa):
@@ -151,9 +162,10 @@ def roughness_factor(Rz1_um, Rz2_um, rho_red_mm, sigma_Hlim_mpa):
     >>> round(float(roughness_factor(6.0, 6.0, 10.0, 1500)), 5)
     0.94606
     """
-    rz10 = (np.asarray(Rz1_um, dtype=float) + Rz2_um) / 2.0 * np.cbrt(10.0 / np.asarray(rho_red_mm))
-    s = np.asarray(sigma_Hlim_mpa, dtype=float)
-    c = np.where(s < 850.0, 0.15, np.where(s > 1200.0, 0.08, 0.32 - 0.0002 * s))
+    xp = ops_of(Rz1_um, Rz2_um, rho_red_mm, sigma_Hlim_mpa)
+    rz10 = (xp.asarray(Rz1_um) + Rz2_um) / 2.0 * xp.cbrt(10.0 / xp.asarray(rho_red_mm))
+    s = xp.asarray(sigma_Hlim_mpa)
+    c = xp.where(s < 850.0, 0.15, xp.where(s > 1200.0, 0.08, 0.32 - 0.0002 * s))
     return (3.0 / rz10) ** c
 
 
@@ -165,8 +177,9 @@ def work_hardening_factor(HB_softer, applies):
     >>> round(float(work_hardening_factor(300, True)), 12), float(work_hardening_factor(300, False))
     (1.1, 1.0)
     """
-    hb = np.clip(np.asarray(HB_softer, dtype=float), 130.0, 470.0)
-    return np.where(applies, 1.2 - (hb - 130.0) / 1700.0, 1.0)
+    xp = ops_of(HB_softer)
+    hb = xp.clip(xp.asarray(HB_softer), 130.0, 470.0)
+    return xp.where(applies, 1.2 - (hb - 130.0) / 1700.0, 1.0)
 
 
 def contact_stress_limit(sigma_Hlim, Z_NT, Z_L, Z_v, Z_R, Z_W, Z_X=SIZE_FACTOR_Z_X):
@@ -176,7 +189,7 @@ def contact_stress_limit(sigma_Hlim, Z_NT, Z_L, Z_v, Z_R, Z_W, Z_X=SIZE_FACTOR_Z
     >>> round(float(contact_stress_limit(1500, 0.91, 1.04739, 0.96911, 0.96599, 1.0)), 1)   # TR 6336-30: 1338.5
     1338.4
     """
-    return np.asarray(sigma_Hlim, dtype=float) * Z_NT * Z_L * Z_v * Z_R * Z_W * Z_X
+    return ops_of(sigma_Hlim).asarray(sigma_Hlim) * Z_NT * Z_L * Z_v * Z_R * Z_W * Z_X
 
 
 def contact_safety(sigma_HG, sigma_H):
@@ -186,4 +199,4 @@ def contact_safety(sigma_HG, sigma_H):
     >>> round(float(contact_safety(1338.48, 1301.35)), 4)               # ISO/TR 6336-30 ex. 1: 1.02853
     1.0285
     """
-    return np.asarray(sigma_HG, dtype=float) / sigma_H
+    return ops_of(sigma_HG).asarray(sigma_HG) / sigma_H

@@ -11,7 +11,8 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
+
+from .ops import ops_of
 
 __all__ = [
     "tangential_load", "pitch_line_velocity", "basic_rack_factor", "theoretical_single_stiffness",
@@ -39,7 +40,7 @@ def tangential_load(torque_nm, d_mm):
     >>> round(float(tangential_load(9000, 141.3401)))     # ISO/TR 6336-30 ex. 1: 127 352 N
     127352
     """
-    return 2000.0 * np.asarray(torque_nm, dtype=float) / d_mm
+    return 2000.0 * ops_of(torque_nm).asarray(torque_nm) / d_mm
 
 
 def pitch_line_velocity(d_mm, n_rpm):
@@ -48,7 +49,7 @@ def pitch_line_velocity(d_mm, n_rpm):
     >>> round(float(pitch_line_velocity(141.3401, 360)), 3)     # ISO/TR 6336-30 ex. 1: 2.664 m/s
     2.664
     """
-    return math.pi * np.asarray(d_mm, dtype=float) * n_rpm / 60_000.0
+    return math.pi * ops_of(d_mm).asarray(d_mm) * n_rpm / 60_000.0
 
 
 def basic_rack_factor(hfp_star, alpha_n_deg=20.0):
@@ -58,7 +59,8 @@ def basic_rack_factor(hfp_star, alpha_n_deg=20.0):
     >>> float(basic_rack_factor(1.4))        # ISO 53 profile D
     0.9
     """
-    return (1.0 + 0.5 * (1.2 - np.asarray(hfp_star, dtype=float))) * (1.0 - 0.02 * (20.0 - np.asarray(alpha_n_deg)))
+    xp = ops_of(hfp_star, alpha_n_deg)
+    return (1.0 + 0.5 * (1.2 - xp.asarray(hfp_star))) * (1.0 - 0.02 * (20.0 - xp.asarray(alpha_n_deg)))
 
 
 def theoretical_single_stiffness(z_n1, z_n2, x1, x2, internal=False):
@@ -70,10 +72,9 @@ def theoretical_single_stiffness(z_n1, z_n2, x1, x2, internal=False):
     17.856
     """
     c1, c2, c3, c4, c5, c6, c7, c8, c9 = _Q_COEFFS
-    z_n1 = np.asarray(z_n1, dtype=float)
-    x1 = np.asarray(x1, dtype=float)
-    x2 = np.asarray(x2, dtype=float)
-    inv_zn2 = 0.0 if internal else 1.0 / np.asarray(z_n2, dtype=float)
+    xp = ops_of(z_n1, z_n2, x1, x2)
+    z_n1, x1, x2 = xp.asarray(z_n1), xp.asarray(x1), xp.asarray(x2)
+    inv_zn2 = 0.0 if internal else 1.0 / xp.asarray(z_n2)
     q = (c1 + c2 / z_n1 + c3 * inv_zn2 + c4 * x1 + c5 * x1 / z_n1 + c6 * x2 + c7 * x2 * inv_zn2
          + c8 * x1 * x1 + c9 * x2 * x2)
     return 1.0 / q
@@ -86,9 +87,10 @@ def single_stiffness(c_th, C_B, beta_deg, line_load_n_mm, C_R=1.0, C_M=C_M_SOLID
     >>> round(float(single_stiffness(17.85584, 0.9, 15.8, 1273.5)), 3)   # ISO/TR 6336-30 ex. 1: 12.370
     12.37
     """
-    w = np.asarray(line_load_n_mm, dtype=float)
-    low = np.sqrt(np.sqrt(np.minimum(w, 100.0) / 100.0))
-    return np.asarray(c_th) * C_M * C_R * C_B * np.cos(np.radians(beta_deg)) * low
+    xp = ops_of(c_th, C_B, beta_deg, line_load_n_mm)
+    w = xp.asarray(line_load_n_mm)
+    low = xp.sqrt(xp.sqrt(xp.minimum(w, 100.0) / 100.0))
+    return xp.asarray(c_th) * C_M * C_R * C_B * xp.cos(xp.radians(beta_deg)) * low
 
 
 def mesh_stiffness(c_prime, eps_alpha):
@@ -97,7 +99,8 @@ def mesh_stiffness(c_prime, eps_alpha):
     >>> [round(float(c), 3) for c in mesh_stiffness(12.37047, 1.54908)]   # ISO/TR 6336-30 ex. 1: 17.465, 14.845
     [17.465, 14.845]
     """
-    c_ga = np.asarray(c_prime) * (0.75 * np.asarray(eps_alpha) + 0.25)
+    xp = ops_of(c_prime, eps_alpha)
+    c_ga = xp.asarray(c_prime) * (0.75 * xp.asarray(eps_alpha) + 0.25)
     return c_ga, 0.85 * c_ga
 
 
@@ -110,9 +113,11 @@ def reduced_mass(d_m1, d_b1, u, q1=0.0, q2=0.0, rho1=STEEL_DENSITY_KG_MM3, rho2=
     >>> round(float(reduced_mass(100.0, 93.97, 2.0)), 5)
     0.02786
     """
-    lead = math.pi / 8.0 * (np.asarray(d_m1) / d_b1) ** 2 * np.asarray(d_m1) ** 2
-    inv1 = 1.0 / ((1.0 - np.asarray(q1) ** 4) * rho1)
-    inv2 = 0.0 if internal else 1.0 / ((1.0 - np.asarray(q2) ** 4) * rho2 * np.asarray(u) ** 2)
+    xp = ops_of(d_m1, d_b1, u, q1, q2)
+    d_m1 = xp.asarray(d_m1)
+    lead = math.pi / 8.0 * (d_m1 / d_b1) ** 2 * d_m1 ** 2
+    inv1 = 1.0 / ((1.0 - xp.asarray(q1) ** 4) * rho1)
+    inv2 = 0.0 if internal else 1.0 / ((1.0 - xp.asarray(q2) ** 4) * rho2 * xp.asarray(u) ** 2)
     return lead / (inv1 + inv2)
 
 
@@ -123,7 +128,8 @@ def resonance_speed(z1, c_gamma_alpha, m_red):
     >>> round(float(resonance_speed(20, 20.0, 0.02786)))
     12793
     """
-    return 30_000.0 / (math.pi * np.asarray(z1, dtype=float)) * np.sqrt(np.asarray(c_gamma_alpha) / m_red)
+    xp = ops_of(z1, c_gamma_alpha, m_red)
+    return 30_000.0 / (math.pi * xp.asarray(z1)) * xp.sqrt(xp.asarray(c_gamma_alpha) / m_red)
 
 
 def resonance_ratio(n1_rpm, n_E1_rpm):
@@ -132,7 +138,7 @@ def resonance_ratio(n1_rpm, n_E1_rpm):
     >>> float(resonance_ratio(360, 7200))
     0.05
     """
-    return np.asarray(n1_rpm, dtype=float) / n_E1_rpm
+    return ops_of(n1_rpm).asarray(n1_rpm) / n_E1_rpm
 
 
 def subcritical_limit(line_load_n_mm):
@@ -142,8 +148,9 @@ def subcritical_limit(line_load_n_mm):
     >>> float(subcritical_limit(100)), float(subcritical_limit(25))
     (0.85, 0.675)
     """
-    w = np.asarray(line_load_n_mm, dtype=float)
-    return np.where(w < 100.0, 0.5 + 0.35 * np.sqrt(np.minimum(w, 100.0) / 100.0), 0.85)
+    xp = ops_of(line_load_n_mm)
+    w = xp.asarray(line_load_n_mm)
+    return xp.where(w < 100.0, 0.5 + 0.35 * xp.sqrt(xp.minimum(w, 100.0) / 100.0), 0.85)
 
 
 def dynamic_coefficients(eps_gamma):
@@ -152,45 +159,62 @@ def dynamic_coefficients(eps_gamma):
     >>> [round(float(c), 3) for c in dynamic_coefficients(1.5)]
     [0.32, 0.34, 0.23, 0.9, 0.47, 0.47, 0.75]
     """
-    e = np.asarray(eps_gamma, dtype=float)
+    xp = ops_of(eps_gamma)
+    e = xp.asarray(eps_gamma)
+    return _coefficients_1_6(e, xp) + (_coefficient_7(e, xp),)
+
+
+def _coefficients_1_6(e, xp) -> tuple:
+    """C_v1 … C_v6 of ISO 6336-1:2019 Table 7 (see :func:`dynamic_coefficients`)."""
     hi = e > 2.0
-    eh = np.where(hi, e, 3.0)   # keeps the ε_γ > 2 branch finite where it is not used
-    cv1 = np.full_like(e, 0.32)
-    cv2 = np.where(hi, 0.57 / (eh - 0.3), 0.34)
-    cv3 = np.where(hi, 0.096 / (eh - 1.56), 0.23)
-    cv4 = np.where(hi, (0.57 - 0.05 * eh) / (eh - 1.44), 0.90)
-    cv5 = np.full_like(e, 0.47)
-    cv6 = np.where(hi, 0.12 / (eh - 1.74), 0.47)
-    cv7 = np.where(e <= 1.5, 0.75, np.where(e <= 2.5, 0.125 * np.sin(math.pi * (e - 2.0)) + 0.875, 1.0))
-    return cv1, cv2, cv3, cv4, cv5, cv6, cv7
+    if not xp.any(hi):         # every ε_γ ≤ 2 (spur pairs): the first column's constants
+        return 0.32, 0.34, 0.23, 0.90, 0.47, 0.47
+    eh = xp.where(hi, e, 3.0)   # keeps the ε_γ > 2 branch finite where it is not used
+    cv2 = xp.where(hi, 0.57 / (eh - 0.3), 0.34)
+    cv3 = xp.where(hi, 0.096 / (eh - 1.56), 0.23)
+    cv4 = xp.where(hi, (0.57 - 0.05 * eh) / (eh - 1.44), 0.90)
+    cv6 = xp.where(hi, 0.12 / (eh - 1.74), 0.47)
+    return xp.like(e, 0.32), cv2, cv3, cv4, xp.like(e, 0.47), cv6
 
 
-def dynamic_factor(N, eps_gamma, B_p, B_f, B_k, line_load_n_mm):
+def _coefficient_7(e, xp):
+    """C_v7 of ISO 6336-1:2019 Table 7 (see :func:`dynamic_coefficients`)."""
+    return xp.where(e <= 1.5, 0.75, xp.where(e <= 2.5, 0.125 * xp.sin(math.pi * (e - 2.0)) + 0.875, 1.0))
+
+
+def dynamic_factor(N, eps_gamma, B_p, B_f, B_k, line_load_n_mm, N_S=None):
     """K_v by method B (ISO 6336-1:2019 6.5.9): subcritical N ≤ N_S: K_v = N·K + 1, K = C_v1 B_p + C_v2 B_f
     + C_v3 B_k (eq. (33)); main resonance N_S < N ≤ 1.15: K_v = C_v1 B_p + C_v2 B_f + C_v4 B_k + 1 (eq. (37));
     supercritical N ≥ 1.5: K_v = C_v5 B_p + C_v6 B_f + C_v7 (eq. (39)); between 1.15 and 1.5 linear in N
     between the two (eq. (38)). B_p = c′ f_pb,eff/(K_A F_t/b), B_f = c′ f_fα,eff/(K_A F_t/b),
-    B_k = |1 − c_γα C_a/(K_A F_t/b)|.
+    B_k = |1 − c_γα C_a/(K_A F_t/b)|. ``N_S``: :func:`subcritical_limit` of the line load, when the caller has it.
 
     >>> round(float(dynamic_factor(0.05, 2.6, 0.0311, 0.0543, 0.04, 1273.5)), 4)
     1.0014
     """
-    cv1, cv2, cv3, cv4, cv5, cv6, cv7 = dynamic_coefficients(eps_gamma)
-    N = np.asarray(N, dtype=float)
+    xp = ops_of(N, eps_gamma, B_p, B_f, B_k, line_load_n_mm)
+    N, e = xp.asarray(N), xp.asarray(eps_gamma)
+    cv1, cv2, cv3, cv4, cv5, cv6 = _coefficients_1_6(e, xp)
     sub = N * (cv1 * B_p + cv2 * B_f + cv3 * B_k) + 1.0
+    N_S = subcritical_limit(line_load_n_mm) if N_S is None else N_S
+    below = N <= N_S
+    if xp.all(below):          # every design subcritical (the usual case): the other ranges are not needed
+        return sub
     main = cv1 * B_p + cv2 * B_f + cv4 * B_k + 1.0
-    sup = cv5 * B_p + cv6 * B_f + cv7
+    sup = cv5 * B_p + cv6 * B_f + _coefficient_7(e, xp)
     inter = sup + (main - sup) / 0.35 * (1.5 - N)
-    N_S = subcritical_limit(line_load_n_mm)
-    return np.where(N <= N_S, sub, np.where(N <= 1.15, main, np.where(N < 1.5, inter, sup)))
+    return xp.where(below, sub, xp.where(N <= 1.15, main, xp.where(N < 1.5, inter, sup)))
 
 
 def _speed_capped(y, v, cap_5_10, cap_10):
     """Caps of the running-in allowances by pitch-line speed: none up to 5 m/s, ``cap_5_10`` to 10 m/s, ``cap_10``
     above (ISO 6336-1:2006 eq. (66)-(71) and (83)-(88))."""
-    v = np.asarray(v, dtype=float)
-    cap = np.where(v <= 5.0, np.inf, np.where(v <= 10.0, cap_5_10, cap_10))
-    return np.minimum(y, cap)
+    xp = ops_of(y, v, cap_5_10)
+    v = xp.asarray(v)
+    if xp.all(v <= 5.0):
+        return y
+    cap = xp.where(v <= 5.0, math.inf, xp.where(v <= 10.0, cap_5_10, cap_10))
+    return xp.minimum(y, cap)
 
 
 def running_in_alpha(f_pb_um, sigma_Hlim_mpa, kind, v_m_s):
@@ -202,12 +226,13 @@ def running_in_alpha(f_pb_um, sigma_Hlim_mpa, kind, v_m_s):
     >>> float(running_in_alpha(10.0, 800.0, "V", 3.0)), float(running_in_alpha(10.0, 1500.0, "Eh", 3.0))
     (2.0, 0.75)
     """
-    f = np.asarray(f_pb_um, dtype=float)
+    xp = ops_of(f_pb_um, sigma_Hlim_mpa)
+    f = xp.asarray(f_pb_um)
     if kind in _SURFACE_HARDENED:
-        return np.minimum(0.075 * f, 3.0)
+        return xp.minimum(0.075 * f, 3.0)
     if kind in _GREY:
         return _speed_capped(0.275 * f, v_m_s, 22.0, 11.0)
-    s = np.asarray(sigma_Hlim_mpa, dtype=float)
+    s = xp.asarray(sigma_Hlim_mpa)
     return _speed_capped(160.0 / s * f, v_m_s, 12_800.0 / s, 6_400.0 / s)
 
 
@@ -219,12 +244,13 @@ def running_in_beta(F_betax_um, sigma_Hlim_mpa, kind, v_m_s):
     >>> float(running_in_beta(20.0, 800.0, "V", 3.0)), float(running_in_beta(20.0, 1500.0, "Eh", 3.0))
     (8.0, 3.0)
     """
-    F = np.asarray(F_betax_um, dtype=float)
+    xp = ops_of(F_betax_um, sigma_Hlim_mpa)
+    F = xp.asarray(F_betax_um)
     if kind in _SURFACE_HARDENED:
-        return np.minimum(0.15 * F, 6.0)
+        return xp.minimum(0.15 * F, 6.0)
     if kind in _GREY:
         return _speed_capped(0.55 * F, v_m_s, 45.0, 22.0)
-    s = np.asarray(sigma_Hlim_mpa, dtype=float)
+    s = xp.asarray(sigma_Hlim_mpa)
     return _speed_capped(320.0 / s * F, v_m_s, 25_600.0 / s, 12_800.0 / s)
 
 
@@ -235,7 +261,7 @@ def tip_relief_running_in(sigma_Hlim_mpa):
     >>> round(float(tip_relief_running_in(1500.0)), 3)
     1.995
     """
-    return (np.asarray(sigma_Hlim_mpa, dtype=float) / 97.0 - 18.45) ** 2 / 18.0 + 1.5
+    return (ops_of(sigma_Hlim_mpa).asarray(sigma_Hlim_mpa) / 97.0 - 18.45) ** 2 / 18.0 + 1.5
 
 
 def shaft_misalignment(line_load_n_mm, b_mm, d1_mm, K_prime=0.48, l_mm=None, s_mm=0.0, d_sh_mm=None):
@@ -247,12 +273,13 @@ def shaft_misalignment(line_load_n_mm, b_mm, d1_mm, K_prime=0.48, l_mm=None, s_m
     >>> round(float(shaft_misalignment(1277.3, 100.0, 141.33)), 3)
     14.708
     """
-    w = np.asarray(line_load_n_mm, dtype=float)
-    d1 = np.asarray(d1_mm, dtype=float)
+    xp = ops_of(line_load_n_mm, b_mm, d1_mm)
+    w, d1 = xp.asarray(line_load_n_mm), xp.asarray(d1_mm)
     d_sh = d1 if d_sh_mm is None else d_sh_mm
-    l = 0.0 if l_mm is None else l_mm
-    gamma = np.abs(1.0 + K_prime * l * s_mm / d1 ** 2 * (d1 / d_sh) ** 4 - 0.3) + 0.3
-    return w * 0.023 * gamma * (np.asarray(b_mm) / d1) ** 2
+    lever = K_prime * (0.0 if l_mm is None else l_mm) * s_mm
+    # without the lever term (the defaults) γ is one number: 1 + 0·(...) − 0.3 is 1 − 0.3 exactly
+    gamma = xp.abs(1.0 + (lever / d1 ** 2 * (d1 / d_sh) ** 4 if lever else 0.0) - 0.3) + 0.3
+    return w * 0.023 * gamma * (xp.asarray(b_mm) / d1) ** 2
 
 
 def helix_misalignment(f_sh_um, f_ma_um, line_load_n_mm, F_beta_um):
@@ -262,8 +289,9 @@ def helix_misalignment(f_sh_um, f_ma_um, line_load_n_mm, F_beta_um):
     >>> float(helix_misalignment(10.0, 5.0, 1000.0, 10.0))
     18.3
     """
-    raw = 1.33 * np.asarray(f_sh_um, dtype=float) + f_ma_um
-    return np.maximum(raw, np.maximum(0.005 * np.asarray(line_load_n_mm), 0.5 * np.asarray(F_beta_um)))
+    xp = ops_of(f_sh_um, f_ma_um, line_load_n_mm, F_beta_um)
+    raw = 1.33 * xp.asarray(f_sh_um) + f_ma_um
+    return xp.maximum(raw, xp.maximum(0.005 * xp.asarray(line_load_n_mm), 0.5 * xp.asarray(F_beta_um)))
 
 
 def face_load_factor_H(F_betay_um, c_gamma_beta, line_load_n_mm):
@@ -273,8 +301,9 @@ def face_load_factor_H(F_betay_um, c_gamma_beta, line_load_n_mm):
     >>> round(float(face_load_factor_H(15.0, 14.845, 1277.3)), 4)
     1.0872
     """
-    r = np.asarray(c_gamma_beta) * np.asarray(F_betay_um, dtype=float) / np.asarray(line_load_n_mm)
-    return np.where(r <= 2.0, 1.0 + r / 2.0, np.sqrt(2.0 * np.maximum(r, 2.0)))
+    xp = ops_of(F_betay_um, c_gamma_beta, line_load_n_mm)
+    r = xp.asarray(c_gamma_beta) * xp.asarray(F_betay_um) / xp.asarray(line_load_n_mm)
+    return xp.where(r <= 2.0, 1.0 + r / 2.0, xp.sqrt(2.0 * xp.maximum(r, 2.0)))
 
 
 def face_load_exponent(b_over_h):
@@ -284,7 +313,8 @@ def face_load_exponent(b_over_h):
     >>> round(float(face_load_exponent(100 / 19.2)), 4)
     0.8138
     """
-    r = np.maximum(np.asarray(b_over_h, dtype=float), 3.0)
+    xp = ops_of(b_over_h)
+    r = xp.maximum(xp.asarray(b_over_h), 3.0)
     return r * r / (1.0 + r + r * r)
 
 
@@ -294,7 +324,7 @@ def face_load_factor_F(K_Hbeta, N_F):
     >>> round(float(face_load_factor_F(1.16, face_load_exponent(5.148))), 4)   # ISO/TR 6336-30 ex. 1: 1.12803
     1.128
     """
-    return np.asarray(K_Hbeta, dtype=float) ** N_F
+    return ops_of(K_Hbeta).asarray(K_Hbeta) ** N_F
 
 
 def transverse_load_factor(eps_gamma, c_gamma_alpha, f_pb_eff_um, line_load_H_n_mm):
@@ -306,11 +336,12 @@ def transverse_load_factor(eps_gamma, c_gamma_alpha, f_pb_eff_um, line_load_H_n_
     >>> round(float(transverse_load_factor(1.55, 17.46, 7.0, 1500.0)), 4)
     0.7228
     """
-    e = np.asarray(eps_gamma, dtype=float)
-    load = np.asarray(c_gamma_alpha) * np.maximum(np.asarray(f_pb_eff_um, dtype=float), 0.0) / line_load_H_n_mm
+    xp = ops_of(eps_gamma, c_gamma_alpha, f_pb_eff_um, line_load_H_n_mm)
+    e = xp.asarray(eps_gamma)
+    load = xp.asarray(c_gamma_alpha) * xp.maximum(xp.asarray(f_pb_eff_um), 0.0) / line_load_H_n_mm
     low = e / 2.0 * (0.9 + 0.4 * load)
-    high = 0.9 + 0.4 * np.sqrt(2.0 * (np.maximum(e, 1.0) - 1.0) / e) * load
-    return np.where(e <= 2.0, low, high)
+    high = 0.9 + 0.4 * xp.sqrt(2.0 * (xp.maximum(e, 1.0) - 1.0) / e) * load
+    return xp.where(e <= 2.0, low, high)
 
 
 def transverse_load_limits(eps_gamma, eps_alpha, Z_eps):
@@ -320,5 +351,6 @@ def transverse_load_limits(eps_gamma, eps_alpha, Z_eps):
     >>> [round(float(v), 4) for v in transverse_load_limits(1.55, 1.55, 0.9)]
     [1.2346, 1.3626]
     """
-    e_g = np.asarray(eps_gamma, dtype=float)
-    return e_g / (np.asarray(eps_alpha) * np.asarray(Z_eps) ** 2), e_g / (0.25 * np.asarray(eps_alpha) + 0.75)
+    xp = ops_of(eps_gamma, eps_alpha, Z_eps)
+    e_g, e_a = xp.asarray(eps_gamma), xp.asarray(eps_alpha)
+    return e_g / (e_a * xp.asarray(Z_eps) ** 2), e_g / (0.25 * e_a + 0.75)

@@ -2,9 +2,11 @@
 the reference test gears per material kind, straight lines between their table points in log-log scale."""
 from __future__ import annotations
 
-import numpy as np
+import functools
+import math
 
 from ...errors import GearDesignError
+from .ops import ops_of
 
 __all__ = ["contact_life_curve", "contact_life_factor", "load_cycles"]
 
@@ -27,7 +29,7 @@ def load_cycles(n_rpm, life_h, contacts_per_revolution=1):
     >>> float(load_cycles(360, 50_000))          # ISO/TR 6336-30 ex. 1 pinion: 1.08e9
     1080000000.0
     """
-    return 60.0 * np.asarray(n_rpm, dtype=float) * life_h * contacts_per_revolution
+    return 60.0 * ops_of(n_rpm).asarray(n_rpm) * life_h * contacts_per_revolution
 
 
 def contact_life_curve(kind: str, pitting_permitted: bool = False, optimum: bool = False) -> tuple:
@@ -56,8 +58,13 @@ def contact_life_factor(N_L, kind: str, pitting_permitted: bool = False, optimum
     >>> [round(float(z), 3) for z in contact_life_factor([1.08e9, 1.783e8], "Eh")]   # ISO/TR 6336-30 ex. 1: 0.91, 0.962
     [0.91, 0.962]
     """
-    pts = contact_life_curve(kind, pitting_permitted, optimum)
-    logs_n = np.log([p[0] for p in pts])
-    logs_z = np.log([p[1] for p in pts])
-    n = np.asarray(N_L, dtype=float)
-    return np.exp(np.interp(np.log(np.maximum(n, 1.0)), logs_n, logs_z))
+    logs_n, logs_z = _log_curve(kind, pitting_permitted, optimum)
+    xp = ops_of(N_L)
+    return xp.exp(xp.interp(xp.log(xp.maximum(xp.asarray(N_L), 1.0)), logs_n, logs_z))
+
+
+@functools.lru_cache(maxsize=None)
+def _log_curve(kind, pitting_permitted, optimum):
+    """The points of :func:`contact_life_curve` as (log N_L, log Z_NT) tuples."""
+    pts = contact_life_curve(kind, bool(pitting_permitted), bool(optimum))
+    return tuple(math.log(p[0]) for p in pts), tuple(math.log(p[1]) for p in pts)

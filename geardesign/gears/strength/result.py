@@ -96,7 +96,7 @@ class StrengthResult(Result):
     sigma_FP2: float
     S_Hmin: float
     S_Fmin: float
-    _factor_rows: tuple = field(repr=False, compare=False)
+    _chain: dict = field(repr=False, compare=False)   # the chain's one-design dict: the factor table's source
     given: tuple = ()
     notes: tuple = ()
     title: str = ""
@@ -108,7 +108,7 @@ class StrengthResult(Result):
         """The factor table: columns ``symbol, gear, value, clause`` (built on first use, then kept)."""
         frame = self.__dict__.get("_frame")
         if frame is None:
-            frame = pd.DataFrame(list(self._factor_rows), columns=["symbol", "gear", "value", "clause"])
+            frame = pd.DataFrame(_factor_rows(self._chain), columns=["symbol", "gear", "value", "clause"])
             object.__setattr__(self, "_frame", frame)
         return frame
 
@@ -173,21 +173,27 @@ class StrengthResult(Result):
 
 
 def _scalar(v) -> float:
-    return float(np.asarray(v).reshape(-1)[0])
+    return v if type(v) is float else float(np.asarray(v).reshape(-1)[0])
+
+
+def _factor_rows(out: dict) -> list:
+    """(symbol, gear, value, clause) of every factor in the chain's one-design dict."""
+    rows = [(sym, gear, _scalar(out[key]), clause) for sym, key, gear, clause in FACTOR_TABLE if key in out]
+    rows.append(("Y_ST", 0, 2.0, "ISO 6336-3:2019 (reference test gear: sigma_FE = sigma_Flim Y_ST)"))
+    return rows
 
 
 def from_chain(out: dict, title: str = "") -> StrengthResult:
-    """The :class:`StrengthResult` of a one-design dict of :func:`~geardesign.gears.strength.chain.pair_strength`."""
-    rows = [(sym, gear, _scalar(out[key]), clause) for sym, key, gear, clause in FACTOR_TABLE if key in out]
-    rows.append(("Y_ST", 0, 2.0, "ISO 6336-3:2019 (reference test gear: sigma_FE = sigma_Flim Y_ST)"))
+    """The :class:`StrengthResult` of a one-design dict of :func:`~geardesign.gears.strength.chain.pair_strength`
+    (its factor table built when first read)."""
     notes = []
     for flag, text in _FLAG_NOTES.items():
-        if flag in out and bool(np.any(out[flag])):
+        if flag in out and (out[flag] if type(out[flag]) is bool else bool(np.any(out[flag]))):
             notes.append(text)
     for name in out.get("given", ()):
         notes.append(f"{name} given, not computed")
     for name in out.get("given_unused", ()):
         notes.append(f"{name} given but not used (another given factor or the root method makes it unneeded)")
     return StrengthResult(**{k: _scalar(out[k]) for k in _STRESSES}, S_Hmin=float(out["S_Hmin"]),
-                          S_Fmin=float(out["S_Fmin"]), _factor_rows=tuple(rows), given=tuple(out.get("given", ())),
+                          S_Fmin=float(out["S_Fmin"]), _chain=out, given=tuple(out.get("given", ())),
                           notes=tuple(notes), title=title)

@@ -7,8 +7,9 @@ import numpy as np
 
 from ...errors import GearDesignError
 from .materials import STRENGTH_NEEDED_KINDS
+from .ops import once, ops_of
 
-__all__ = ["root_side", "root_stress", "root_stress_limit", "Y_ST"]
+__all__ = ["root_side", "root_stress", "nominal_root_stress", "loaded_root_stress", "root_stress_limit", "Y_ST"]
 
 Y_ST = 2.0   # stress correction factor of the reference test gears (ISO 6336-3:2019 clause 9)
 
@@ -20,7 +21,27 @@ def root_stress(F_t, b, m_n, form, K_A, K_gamma, K_v, K_Fbeta, K_Falpha):
     >>> round(float(root_stress(10000.0, 50.0, 4.0, 2.2 * 1.9, 1.0, 1.0, 1.1, 1.2, 1.0)), 2)
     275.88
     """
-    return np.asarray(F_t) / (np.asarray(b) * m_n) * form * K_A * K_gamma * K_v * K_Fbeta * K_Falpha
+    return loaded_root_stress(nominal_root_stress(F_t, b, m_n, form), K_A, K_gamma, K_v, K_Fbeta, K_Falpha)
+
+
+def nominal_root_stress(F_t, b, m_n, form):
+    """σ_F0 = F_t/(b m_n)·(product of the form, stress-correction, helix, rim and deep-tooth factors) in MPa
+    (ISO 6336-3:2019 eq. (3)).
+
+    >>> round(float(nominal_root_stress(10000.0, 50.0, 4.0, 2.2 * 1.9)), 2)
+    209.0
+    """
+    xp = ops_of(F_t, b)
+    return xp.asarray(F_t) / (xp.asarray(b) * m_n) * form
+
+
+def loaded_root_stress(sigma_F0, K_A, K_gamma, K_v, K_Fbeta, K_Falpha):
+    """σ_F = σ_F0·K_A K_γ K_v K_Fβ K_Fα in MPa (ISO 6336-3:2019 eq. (2)).
+
+    >>> round(float(loaded_root_stress(209.0, 1.0, 1.0, 1.1, 1.2, 1.0)), 2)
+    275.88
+    """
+    return sigma_F0 * K_A * K_gamma * K_v * K_Fbeta * K_Falpha
 
 
 def root_stress_limit(sigma_Flim, Y_NT, Y_deltarelT, Y_RrelT, Y_X, Y_ST=Y_ST):
@@ -30,10 +51,10 @@ def root_stress_limit(sigma_Flim, Y_NT, Y_deltarelT, Y_RrelT, Y_X, Y_ST=Y_ST):
     >>> round(float(root_stress_limit(500.0, 1.0, 1.0, 1.0, 1.0)), 1)
     1000.0
     """
-    return np.asarray(sigma_Flim, dtype=float) * Y_ST * Y_NT * Y_deltarelT * Y_RrelT * Y_X
+    return ops_of(sigma_Flim).asarray(sigma_Flim) * Y_ST * Y_NT * Y_deltarelT * Y_RrelT * Y_X
 
 
-def _root_modules():
+def _import_root_modules():
     try:
         from . import root, root_factors
     except ImportError:          # the form factors live in their own module; without it the root side is absent
@@ -41,8 +62,15 @@ def _root_modules():
     return root, root_factors
 
 
+_ROOT_MODULES = _import_root_modules()
+
+
+def _root_modules():
+    return _ROOT_MODULES
+
+
 def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12, life_h,
-              method, out, rim=(None, None), refuse=True):
+              method, out, rim=(None, None), xp=None, refuse=True):
     """Fill ``out`` with the root factors, σ_F1,2, σ_FG1,2 and S_F1,2 of both gears (``refuse`` False: NaN
     for a design without a root section, see :func:`~.root.root_form_factors`)."""
     mods = _root_modules()
@@ -52,47 +80,46 @@ def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_g
         out["root_unavailable"] = True
         return
     root, rf = mods
-    _root_factors(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12,
-                  life_h, method, out, root, rf, rim, refuse)
-
-
-def _root_factors(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12,
-                  life_h, method, out, root, rf, rim, refuse):
     names = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")
-    out["Y_beta"] = np.asarray(G.pick("Y_beta", lambda: rf.helix_factor_Y_beta(out["eps_beta"], beta_deg)))
+    out["Y_beta"] = G.pick("Y_beta", lambda: rf.helix_factor_Y_beta(out["eps_beta"], beta_deg))
     if method == "B":
-        out["Y_DT"] = np.asarray(G.pick("Y_DT", lambda: rf.deep_tooth_factor_Y_DT(out["eps_alpha_n"], grade)))
+        out["Y_DT"] = G.pick("Y_DT", lambda: rf.deep_tooth_factor_Y_DT(out["eps_alpha_n"], grade))
         extra = out["Y_DT"]
     else:
-        out["Y_eps"] = np.asarray(G.pick("Y_eps", lambda: rf.contact_ratio_factor_Y_eps(out["eps_alpha_n"])))
+        out["Y_eps"] = G.pick("Y_eps", lambda: rf.contact_ratio_factor_Y_eps(out["eps_alpha_n"]))
         extra = out["Y_eps"]
-    K = (K_A, K_gamma, out["K_v"], out["K_Fbeta"], out["K_Falpha"])
-    for i, (mat, z_key, x, b, n) in enumerate(zip(mats, ("z1", "z2"), xs, widths, n12), start=1):
-        da = g[f"da{i}"]
-        ff = root.root_form_factors(g[f"_{z_key}"], x, da / m, eps_alpha=g["eps_alpha"], beta_deg=beta_deg,
-                                    alpha_n_deg=rack.alpha_deg, hfp_star=rack.ha + rack.c, rhofp_star=rack.rho_f,
-                                    internal=internal and i == 2, method=method, refuse=refuse)
-        YF = np.asarray(G.pick(f"{names[0]}{i}", lambda: ff[names[0]]))
-        YS = np.asarray(G.pick(f"{names[1]}{i}", lambda: ff[names[1]]))
-        YB = np.asarray(G.pick(f"Y_B{i}", lambda: _rim(rf, rim[i - 1], g[f"h{i}"], m, internal and i == 2)))
-        kind = _root_kind(mat.kind, rf)
-        N_L = None if life_h is None else 60.0 * n * life_h
-        Y_NT = np.asarray(G.pick(f"Y_NT{i}", lambda: np.ones_like(F_t) if N_L is None else rf.life_factor_Y_NT(N_L, kind)))
-        Y_d = np.asarray(G.pick(f"Y_deltarelT{i}", lambda: _notch(rf, ff["q_s"], mat, out, i, refuse)))
-        Y_R = np.asarray(G.pick(f"Y_RrelT{i}", lambda: rf.relative_surface_factor_Y_RrelT(Rz_root, kind)))
-        Y_X = np.asarray(G.pick(f"Y_X{i}", lambda: rf.size_factor_Y_X(m, kind)))
-        out.update({f"{names[0]}{i}": YF, f"{names[1]}{i}": YS, f"Y_B{i}": YB, f"Y_NT{i}": Y_NT,
-                    f"Y_deltarelT{i}": Y_d, f"Y_RrelT{i}": Y_R, f"Y_X{i}": Y_X, f"q_s{i}": np.asarray(ff["q_s"]),
-                    f"root_out_of_range{i}": ~np.asarray(ff.get("in_range", True), dtype=bool)})
-        out[f"sigma_F0{i}"] = root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra, 1.0, 1.0, 1.0, 1.0, 1.0)
-        out[f"sigma_F{i}"] = root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra, *K)
-        out[f"sigma_FG{i}"] = root_stress_limit(mat.sigma_Flim_mpa, Y_NT, Y_d, Y_R, Y_X, rf.Y_ST)
+    gear = (G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp or ops_of(F_t), {}, refuse)
+    for i, (mat, x, b, n, s_R) in enumerate(zip(mats, xs, widths, n12, rim), start=1):
+        _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h)
+        YF, YS, YB = out[f"{names[0]}{i}"], out[f"{names[1]}{i}"], out[f"Y_B{i}"]
+        s0 = out[f"sigma_F0{i}"] = nominal_root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra)
+        out[f"sigma_F{i}"] = loaded_root_stress(s0, K_A, K_gamma, out["K_v"], out["K_Fbeta"], out["K_Falpha"])
+        out[f"sigma_FG{i}"] = root_stress_limit(mat.sigma_Flim_mpa, out[f"Y_NT{i}"], out[f"Y_deltarelT{i}"],
+                                                out[f"Y_RrelT{i}"], out[f"Y_X{i}"], rf.Y_ST)
         out[f"S_F{i}"] = out[f"sigma_FG{i}"] / out[f"sigma_F{i}"]
 
 
-def _root_kind(kind, rf):
-    """The root module's name of a material kind (one list for the package: materials.MATERIAL_KINDS is it)."""
-    return kind
+def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
+    """Y_F, Y_S (or Y_Fa, Y_Sa), Y_B, Y_NT, Y_δrelT, Y_RrelT, Y_X and q_s of gear ``i`` into the chain's dict."""
+    G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp, memo, refuse = gear
+    ring = internal and i == 2
+    ff = root.form_factors(g[f"_z{i}"], x, g[f"da{i}"] / m, g["eps_alpha"], beta_deg, rack.alpha_deg, rack.ha + rack.c,
+                           rack.rho_f, 0.0, ring, method, keys=(names[0], names[1], "q_s", "in_range"), refuse=refuse)
+    kind = mat.kind
+    N_L = None if life_h is None else 60.0 * n * life_h
+    in_range = ff["in_range"]
+    out.update({f"{names[0]}{i}": G.pick(f"{names[0]}{i}", lambda: ff[names[0]]),
+                f"{names[1]}{i}": G.pick(f"{names[1]}{i}", lambda: ff[names[1]]),
+                f"Y_B{i}": G.pick(f"Y_B{i}", lambda: _rim(rf, s_R, g[f"h{i}"], m, ring)),
+                f"Y_NT{i}": G.pick(f"Y_NT{i}", lambda: 1.0 if N_L is None else
+                                   rf.life_factor_Y_NT(N_L, kind)),
+                f"Y_deltarelT{i}": G.pick(f"Y_deltarelT{i}", lambda: _notch(rf, ff["q_s"], mat, out, i, refuse)),
+                f"Y_RrelT{i}": G.pick(f"Y_RrelT{i}", lambda: once(memo, ("Y_RrelT", kind), lambda:
+                                      rf.relative_surface_factor_Y_RrelT(Rz_root, kind))),
+                f"Y_X{i}": G.pick(f"Y_X{i}", lambda: once(memo, ("Y_X", kind), lambda: rf.size_factor_Y_X(m, kind))),
+                f"q_s{i}": ff["q_s"],
+                f"root_out_of_range{i}": (not in_range) if type(in_range) is bool else
+                ~np.asarray(in_range, dtype=bool)})
 
 
 def _rim(rf, s_R_mm, h_t, m, internal):

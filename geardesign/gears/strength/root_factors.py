@@ -16,6 +16,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import require_bool, require_choice, require_int, require_positive, require_range
+from .ops import checked, ops_of
 
 __all__ = ["MATERIAL_KINDS", "Y_ST", "helix_factor_Y_beta", "contact_ratio_factor_Y_eps", "deep_tooth_factor_Y_DT",
            "rim_factor_Y_B", "relative_notch_sensitivity_Y_delta_relT", "relative_surface_factor_Y_RrelT",
@@ -42,6 +43,8 @@ Y_ST = 2.0
 
 
 def _kind(material_kind) -> str:
+    if type(material_kind) is str and material_kind in MATERIAL_KINDS:
+        return material_kind
     return require_choice("material_kind", material_kind, MATERIAL_KINDS)
 
 
@@ -59,11 +62,15 @@ def helix_factor_Y_beta(eps_beta, beta_deg, *, edition: int = 2006):
     >>> round(float(helix_factor_Y_beta(0.5, 10.0, edition=2019)), 4)
     1.0034
     """
-    edition = int(require_choice("edition", str(edition), ["2006", "2019"]))
-    eb = np.minimum(require_range("eps_beta", eps_beta, 0.0, 50.0), 1.0)
-    b = np.minimum(np.abs(require_range("beta_deg", beta_deg, -45.0, 45.0, unit="deg")), 30.0)
+    if not (type(edition) is int and edition in (2006, 2019)):
+        edition = int(require_choice("edition", str(edition), ["2006", "2019"]))
+    eps_beta = checked("eps_beta", eps_beta, 0.0, 50.0)
+    beta_deg = checked("beta_deg", beta_deg, -45.0, 45.0, unit="deg")
+    xp = ops_of(eps_beta, beta_deg)
+    eb = xp.minimum(eps_beta, 1.0)
+    b = xp.minimum(xp.abs(beta_deg), 30.0)
     y = 1.0 - eb * b / 120.0
-    return y / np.cos(np.radians(b)) ** 3 if edition == 2019 else y
+    return y / xp.cos(xp.radians(b)) ** 3 if edition == 2019 else y
 
 
 def contact_ratio_factor_Y_eps(eps_alpha_n):
@@ -74,8 +81,7 @@ def contact_ratio_factor_Y_eps(eps_alpha_n):
     >>> round(float(contact_ratio_factor_Y_eps(1.5)), 4)
     0.75
     """
-    e = require_range("eps_alpha_n", eps_alpha_n, 1.0, 10.0)
-    return 0.25 + 0.75 / e
+    return 0.25 + 0.75 / checked("eps_alpha_n", eps_alpha_n, 1.0, 10.0)
 
 
 def deep_tooth_factor_Y_DT(eps_alpha_n, accuracy_grade):
@@ -88,11 +94,17 @@ def deep_tooth_factor_Y_DT(eps_alpha_n, accuracy_grade):
     >>> float(deep_tooth_factor_Y_DT(2.3, 6))
     1.0
     """
-    e = require_range("eps_alpha_n", eps_alpha_n, 1.0, 10.0)
-    q = require_int("accuracy_grade", accuracy_grade, 1, 12)
-    e, q = np.broadcast_arrays(e, q)
-    line = np.where(e > 2.5, 0.7, -0.666 * e + 2.366)
-    return np.where((e <= 2.05) | (q > 4), 1.0, line)
+    e = checked("eps_alpha_n", eps_alpha_n, 1.0, 10.0)
+    q = accuracy_grade
+    if (type(q) is int or type(q) is float) and 1 <= q <= 12 and q == int(q):
+        q = float(q)
+    else:
+        q = require_int("accuracy_grade", accuracy_grade, 1, 12)
+    xp = ops_of(e)
+    if xp is not ops_of(q):
+        e, q = np.broadcast_arrays(e, q)
+    line = xp.where(e > 2.5, 0.7, -0.666 * e + 2.366)
+    return xp.where((e <= 2.05) | (q > 4), 1.0, line)
 
 
 def rim_factor_Y_B(s_R_over_h_t=None, *, internal: bool = False, s_R_over_mn=None):
@@ -116,8 +128,10 @@ def rim_factor_Y_B(s_R_over_h_t=None, *, internal: bool = False, s_R_over_mn=Non
         return np.where(r >= 3.5, 1.0, 1.15 * np.log(8.324 / r))
     if s_R_over_h_t is None:
         return 1.0
-    r = require_range("s_R_over_h_t", s_R_over_h_t, 0.5, 1e6, lo_open=True)
-    return np.where(r >= 1.2, 1.0, 1.6 * np.log(2.242 / r))
+    r = s_R_over_h_t if type(s_R_over_h_t) is float and 0.5 < s_R_over_h_t <= 1e6 else require_range(
+        "s_R_over_h_t", s_R_over_h_t, 0.5, 1e6, lo_open=True)
+    xp = ops_of(r)
+    return xp.where(r >= 1.2, 1.0, 1.6 * xp.log(2.242 / r))
 
 
 # Slip-layer thickness rho' (mm) of the relative notch sensitivity (ISO 6336-3:2019, clause 13, method B, its
@@ -134,16 +148,25 @@ _SLIP_LAYER_MM = {
 _CHI_T = 1.2      # relative stress gradient chi*_T = (1 + 2 q_sT)/5 of the reference test gear, q_sT = 2.5
 
 
+def _by_kind(table: dict) -> dict:
+    """{kind: row} of a table whose keys are tuples of the kinds that share a row."""
+    return {kind: row for kinds, row in table.items() for kind in kinds}
+
+
+_SLIP_BY_KIND = _by_kind({k: v if isinstance(v, float) else (tuple(t[0] for t in v), tuple(t[1] for t in v))
+                          for k, v in _SLIP_LAYER_MM.items()})
+
+
 def _slip_layer(kind: str, limit_mpa):
-    table = next(v for k, v in _SLIP_LAYER_MM.items() if kind in k)
+    table = _SLIP_BY_KIND[kind]
     if isinstance(table, float):
         return table
-    lo, hi = table[0][0], table[-1][0]
+    lo, hi = table[0][0], table[0][-1]
     if limit_mpa is None:
         raise GearDesignError(f"limit_mpa (the material's strength for kind {kind!r}) must be given, in "
                               f"[{lo:g}, {hi:g}] MPa, got None")
-    s = require_range("limit_mpa", limit_mpa, lo, hi, unit="MPa")
-    return np.interp(s, [t[0] for t in table], [t[1] for t in table])
+    s = checked("limit_mpa", limit_mpa, lo, hi, unit="MPa")
+    return ops_of(s).interp(s, *table)
 
 
 # Static relative notch sensitivity (ISO 6336-3:2019, clause 13, method B, N_L <= the static limit): linear in Y_S
@@ -181,7 +204,7 @@ def relative_notch_sensitivity_Y_delta_relT(q_s, material_kind, *, limit_mpa=Non
     0.956
     """
     kind = _kind(material_kind)
-    if require_bool("static", static):
+    if static is not False and require_bool("static", static):
         if Y_S is None:
             raise GearDesignError("Y_S must be given for the static relative notch sensitivity, got None")
         ys = require_range("Y_S", Y_S, 1.0, 5.0)
@@ -194,9 +217,10 @@ def relative_notch_sensitivity_Y_delta_relT(q_s, material_kind, *, limit_mpa=Non
                                   "relative notch sensitivity, > 0 MPa, got None")
         k = c * (s0 / require_positive("limit_mpa", limit_mpa, "MPa")) ** 0.25
         return (1.0 + k * (ys - 1.0)) / (1.0 + k)
-    qs = require_range("q_s", q_s, *NOTCH_Q_S_RANGE)
+    qs = checked("q_s", q_s, *NOTCH_Q_S_RANGE)
     rho = _slip_layer(kind, limit_mpa)
-    return (1.0 + np.sqrt(rho * (1.0 + 2.0 * qs) / 5.0)) / (1.0 + np.sqrt(rho * _CHI_T))
+    xp = ops_of(qs, rho)
+    return (1.0 + xp.sqrt(rho * (1.0 + 2.0 * qs) / 5.0)) / (1.0 + xp.sqrt(rho * _CHI_T))
 
 
 # Relative surface factor (ISO 6336-3:2019, clause 14, method B): for 1 <= Rz <= 40 um, a − b (Rz + 1)^c;
@@ -205,6 +229,7 @@ _SURFACE = {("V", "GGG(perl)", "GTS", "Eh", "IF"): (1.674, 0.529, 0.1, 1.120),
             ("St",): (5.306, 4.203, 0.01, 1.070),
             ("GG", "GGG(ferr)", "NT", "NV(nitr)", "NV(nitrocar)"): (4.299, 3.259, 0.0058, 1.025)}
 RZ_MAX_UM = 40.0
+_SURFACE_BY_KIND = _by_kind(_SURFACE)
 
 
 def relative_surface_factor_Y_RrelT(Rz_um, material_kind, *, static: bool = False):
@@ -219,17 +244,19 @@ def relative_surface_factor_Y_RrelT(Rz_um, material_kind, *, static: bool = Fals
     1.07
     """
     kind = _kind(material_kind)
-    rz = require_range("Rz_um", Rz_um, 0.0, RZ_MAX_UM, unit="um")
-    if require_bool("static", static):
-        return np.ones_like(rz)
-    a, b, c, low = next(v for k, v in _SURFACE.items() if kind in k)
-    return np.where(rz < 1.0, low, a - b * (rz + 1.0) ** c)
+    rz = checked("Rz_um", Rz_um, 0.0, RZ_MAX_UM, unit="um")
+    xp = ops_of(rz)
+    if static is not False and require_bool("static", static):
+        return xp.like(rz, 1.0)
+    a, b, c, low = _SURFACE_BY_KIND[kind]
+    return xp.where(rz < 1.0, low, a - b * (rz + 1.0) ** c)
 
 
 # Size factor (ISO 6336-3:2019, clause 15, method B): 1 up to 5 mm, then a − b m_n down to a floor.
 _SIZE = {("St", "V", "GGG(perl)", "GTS"): (1.03, 0.006, 0.85),
          ("Eh", "IF", "NT", "NV(nitr)", "NV(nitrocar)"): (1.05, 0.01, 0.80),
          ("GG", "GGG(ferr)"): (1.075, 0.015, 0.70)}
+_SIZE_BY_KIND = _by_kind(_SIZE)
 
 
 def size_factor_Y_X(m_n_mm, material_kind, *, static: bool = False):
@@ -243,11 +270,13 @@ def size_factor_Y_X(m_n_mm, material_kind, *, static: bool = False):
     [1.0, 0.97, 0.8]
     """
     kind = _kind(material_kind)
-    m = require_range("m_n_mm", m_n_mm, 0.0, 1000.0, lo_open=True, unit="mm")
-    if require_bool("static", static):
-        return np.ones_like(m)
-    a, b, floor = next(v for k, v in _SIZE.items() if kind in k)
-    return np.where(m <= 5.0, 1.0, np.maximum(a - b * m, floor))
+    m = m_n_mm if type(m_n_mm) is float and 0.0 < m_n_mm <= 1000.0 else require_range(
+        "m_n_mm", m_n_mm, 0.0, 1000.0, lo_open=True, unit="mm")
+    xp = ops_of(m)
+    if static is not False and require_bool("static", static):
+        return xp.like(m, 1.0)
+    a, b, floor = _SIZE_BY_KIND[kind]
+    return xp.where(m <= 5.0, 1.0, xp.maximum(a - b * m, floor))
 
 
 # Life factor (ISO 6336-3:2019, clause 12, method B): static value up to N_static, 1.0 at 3e6, 0.85 at 1e10,
@@ -259,6 +288,8 @@ _LIFE = {("St", "V", "GGG(perl)", "GTS"): (1e4, 2.5),
          ("NV(nitrocar)",): (1e3, 1.1)}
 N_ENDURANCE = 3e6
 N_LONG = 1e10
+_LN_ENDURANCE, _LN_LONG = math.log(N_ENDURANCE), math.log(N_LONG)
+_LIFE_BY_KIND = _by_kind(_LIFE)
 
 
 def life_factor_Y_NT(N_L, material_kind, *, optimum: bool = False):
@@ -275,10 +306,11 @@ def life_factor_Y_NT(N_L, material_kind, *, optimum: bool = False):
     1.727
     """
     kind = _kind(material_kind)
-    n = require_range("N_L", N_L, 1.0, 1e30)
-    n_static, y_static = next(v for k, v in _LIFE.items() if kind in k)
-    y_long = 1.0 if require_bool("optimum", optimum) else 0.85
-    ln = np.log(np.clip(n, n_static, N_LONG))
-    upper = math.log(y_static) * (math.log(N_ENDURANCE) - ln) / (math.log(N_ENDURANCE) - math.log(n_static))
-    lower = math.log(y_long) * (ln - math.log(N_ENDURANCE)) / (math.log(N_LONG) - math.log(N_ENDURANCE))
-    return np.exp(np.where(ln <= math.log(N_ENDURANCE), upper, lower))
+    n = checked("N_L", N_L, 1.0, 1e30)
+    n_static, y_static = _LIFE_BY_KIND[kind]
+    y_long = 1.0 if optimum is not False and require_bool("optimum", optimum) else 0.85
+    xp = ops_of(n)
+    ln = xp.log(xp.clip(n, n_static, N_LONG))
+    upper = math.log(y_static) * (_LN_ENDURANCE - ln) / (_LN_ENDURANCE - math.log(n_static))
+    lower = math.log(y_long) * (ln - _LN_ENDURANCE) / (_LN_LONG - _LN_ENDURANCE)
+    return xp.exp(xp.where(ln <= _LN_ENDURANCE, upper, lower))
