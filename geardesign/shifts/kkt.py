@@ -135,8 +135,12 @@ def _first_kkt_point(prob: Problem, ev: Evaluator, w0, near_p, near_m, max_move:
     nv = prob.nvar
     t0 = w0[nv]
     nit = 0
+    # Newton reads the active rows alone: where no costly check is active it walks without them, and the
+    # point it reaches is checked against every check below
+    light, costly = ev.light(), getattr(prob, "costly_parts", set())
     for act_p, act_m in itertools.islice(_promising_first(prob, ev, w0, _active_sets(near_p, near_m, nv)), limit):
-        out = _kkt_newton(ev, nv, act_p, act_m, w0, max_move, noisy=prob.fd_gradients)
+        walk = light if light is not None and costly.isdisjoint(act_m) else ev
+        out = _kkt_newton(walk, nv, act_p, act_m, w0, max_move, noisy=walk.prob.fd_gradients)
         if out is None:
             continue
         w, it = out

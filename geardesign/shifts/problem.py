@@ -7,6 +7,8 @@ Objectives (:mod:`geardesign.shifts.objectives`) are maximised internally as F =
 from __future__ import annotations
 
 import contextlib
+import copy
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -86,9 +88,7 @@ class Problem:
         # the smooth parts the solvers see (see Check.part_margins): part -> index of its check
         self.part_check = [i for i, c in enumerate(self.checks) for _ in range(c.n_parts)]
         # gradients that are central differences carry ~1e-10 noise, their derivatives more
-        self.fd_gradients = (self.objective.kind == "margin"
-                             or type(self.objective).piece_gradients is Objective.piece_gradients
-                             or any(getattr(c, "fd_gradient", False) for c in self.checks))
+        self.fd_gradients = _fd_gradients(self.objective, self.checks)
 
     # --- evaluation ---------------------------------------------------------------------
     # The checks and pieces are written once, as formulas on a geometry dict; the dict holds
@@ -192,6 +192,35 @@ class Problem:
             return self._normalised(geo).min(axis=0)
         return self.objective.sense * self.pieces(geo).min(axis=0)
 
+    def with_checks(self, checks) -> "Problem":
+        """This problem (mesh, objective, x-sum) with ``checks`` in place of its own, one for one: the cheaper
+        stand-ins of its costly checks that the solvers walk on (:meth:`light`, :meth:`modelled_at`)."""
+        out = copy.copy(self)
+        out.checks, out._last_point = tuple(checks), None
+        out.objective = self.objective.bound(out.checks)
+        out.fd_gradients = _fd_gradients(out.objective, out.checks)
+        return out
+
+    @property
+    def costly_parts(self) -> set:
+        """The indices of the margin parts that belong to costly checks (see Check.costly)."""
+        return {k for k, i in enumerate(self.part_check) if self.checks[i].costly}
+
+    def light(self) -> "Problem | None":
+        """This problem with its costly checks left unevaluated (NaN margins), for the steps of a solver that read
+        only the other checks; None when it has none, or when its objective reads them."""
+        if not self.costly_parts or self.objective.needs_load or self.objective.kind == "margin":
+            return None
+        return self.with_checks(_Unevaluated(c.name, n_parts=c.n_parts) if c.costly else c for c in self.checks)
+
+    def modelled_at(self, v) -> "Problem":
+        """This problem with its costly checks replaced by their quadratic models around the point v (see
+        Check.modelled_at): one evaluation of them, then a problem as cheap as one without them."""
+        x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - self.sgn * float(v[0]))
+        out = self.with_checks(c.modelled_at(self._point_geo(x1, x2)) for c in self.checks)
+        out.anchor = np.array([float(c) for c in v])
+        return out
+
     def subproblem(self, indices) -> "Problem":
         """The same design space with only the checks at ``indices`` (the conflict search)."""
         return Problem(self.mesh, [self.checks[j] for j in indices], "max_x_sum", self.m, self.x_sum, meshing=False)
@@ -270,9 +299,19 @@ class Problem:
                 mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
             return geo, self.evaluate_geo(geo, parts, grads)
         except _FLOAT_FAULTS:
-            with np.errstate(all="ignore"):
-                geo = self.geo(np.float64(x1), np.float64(x2))
+            geo = self._array_geo(x1, x2)
             return geo, self.evaluate_geo(geo, parts, grads)
+
+    def _point_geo(self, x1: float, x2: float) -> dict:
+        """The geometry of one design: Python floats, or 0-d arrays where the floats fault."""
+        try:
+            return mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
+        except _FLOAT_FAULTS:
+            return self._array_geo(x1, x2)
+
+    def _array_geo(self, x1: float, x2: float) -> dict:
+        with np.errstate(all="ignore"):
+            return self.geo(np.float64(x1), np.float64(x2))
 
     def evaluate_geo(self, geo, parts: bool = False, grads: bool = True):
         """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict
@@ -303,6 +342,31 @@ class Problem:
     def _free(self, G):
         """Gradients in (x1, x2) → in the free variables (d/dx1 along x2 = x_sum − sgn·x1)."""
         return G if self.x_sum is None else (G[:, 0] - self.sgn * G[:, 1])[:, None]
+
+
+def _fd_gradients(objective, checks) -> bool:
+    """True when a gradient the solvers read is a central difference (~1e-10 noise, its derivatives more)."""
+    return (objective.kind == "margin" or type(objective).piece_gradients is Objective.piece_gradients
+            or any(getattr(c, "fd_gradient", False) for c in checks))
+
+
+@dataclass(frozen=True)
+class _Unevaluated(_checks.Check):
+    """A costly check not evaluated (NaN margins, a failing margin wherever read): :meth:`Problem.light`."""
+
+    n_parts: int = 1
+
+    def value(self, geo):
+        return math.nan
+
+    def gradient(self, geo):
+        return math.nan, math.nan
+
+    def part_margins(self, geo) -> list:
+        return [math.nan] * self.n_parts
+
+    def part_gradients(self, geo) -> list:
+        return [(math.nan, math.nan)] * self.n_parts
 
 
 def _stack(values, like) -> np.ndarray:
