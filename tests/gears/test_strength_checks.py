@@ -97,6 +97,18 @@ def test_an_overload_names_the_strength_check_in_the_conflict():
     assert not r.success and "contact_strength" in r.conflict
 
 
+@pytest.mark.parametrize("method", ["exact", "grid"])
+def test_a_pitting_limit_the_geometry_cannot_meet_is_named_alone(method):
+    """20/60, m = 4, 40 mm of 42CrMo4 at 200 N·m: S_H rises with x_Σ until ε_α reaches 1 (the chain's range),
+    and stays below S_Hmin = 1 there; the answer names contact_strength alone, and the reference chain agrees
+    that S_H < 1 at the most central point returned."""
+    case = {"load": Load(torque_nm=200, n_rpm=1000, life_h=20000), "material": "42CrMo4", "face_width_mm": 40}
+    r = gd.optimize_shifts(20, 60, m=4, method=method, checks=case)
+    assert not r.success and r.conflict == ["contact_strength"]
+    ref = gd.GearPair(4.0, 20, 60, r.x1, r.x2, face_width_mm=40.0).strength(case["load"], material="42CrMo4")
+    assert min(ref.S_H1, ref.S_H2) < 1.0
+
+
 def test_balanced_root_strength_equalises_the_gears_on_a_fixed_centre_distance():
     m, z1, z2 = 4.0, 20, 60
     a_w = gd.GearPair(m, z1, z2, 0.3, 0.2).geometry().a_w
