@@ -65,7 +65,8 @@ class Problem:
     and x2 = x_sum − x1 (x2 = x_sum + x1 for an internal pair, whose x_Σ is x2 − x1).
     """
 
-    _last_point = None   # (key, evaluate_point's value, its geometry) of the last point evaluated
+    _recent = None   # key -> (evaluate_point's value, its geometry) of the last points evaluated
+    _RECENT = 8      # points remembered: the best of several starts, evaluated again for the result
 
     def __init__(self, mesh: Mesh, checks=None, objective="max_x_sum", m=1.0, x_sum=None, meshing: bool = True):
         if not isinstance(mesh, Mesh):
@@ -196,7 +197,7 @@ class Problem:
         """This problem (mesh, objective, x-sum) with ``checks`` in place of its own, one for one: the cheaper
         stand-ins of its costly checks that the solvers walk on (:meth:`light`, :meth:`modelled_at`)."""
         out = copy.copy(self)
-        out.checks, out._last_point = tuple(checks), None
+        out.checks, out._recent = tuple(checks), None
         out.objective = self.objective.bound(out.checks)
         out.fd_gradients = _fd_gradients(out.objective, out.checks)
         return out
@@ -280,23 +281,26 @@ class Problem:
         smooth parts (:attr:`part_check` maps each to its check)."""
         x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - self.sgn * float(v[0]))
         key = (x1, x2, self.x_sum)   # the free variables' gradients depend on x_sum too
-        if self._last_point is not None and self._last_point[0] == key:   # a start checked, then solved from
-            return self._last_point[1]
+        if self._recent is None:
+            self._recent = {}
+        if key in self._recent:   # a start checked, then solved from
+            return self._recent[key][0]
         geo, (P, M, GP, GM) = self.evaluate_design(x1, x2, parts=True)
         out = P, M, self._free(GP), self._free(GM)
-        self._last_point = (key, out, geo)
+        if len(self._recent) >= self._RECENT:
+            self._recent.pop(next(iter(self._recent)))
+        self._recent[key] = (out, geo)
         return out
 
     def evaluate_design(self, x1: float, x2: float, parts: bool = False, grads: bool = True):
         """(geo, (P, M, GP, GM)) of one design on the float path; where Python floats fault (a
         division by zero exactly at a boundary, an overflow), the same formulas on 0-d numpy
-        arrays, which give inf/NaN as the vectorised path does. The geometry of the point
-        :meth:`evaluate_point` saw last (a solver's final iterate, usually) is reused. Without
+        arrays, which give inf/NaN as the vectorised path does. The geometry of a point
+        :meth:`evaluate_point` saw lately (a solver's final iterate, usually) is reused. Without
         ``grads`` GP and GM are None (unless the objective is made of normalised margins)."""
-        last = self._last_point
+        seen = (self._recent or {}).get((x1, x2, self.x_sum))
         try:
-            geo = last[2] if last is not None and last[0] == (x1, x2, self.x_sum) else \
-                mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
+            geo = seen[1] if seen is not None else mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
             return geo, self.evaluate_geo(geo, parts, grads)
         except _FLOAT_FAULTS:
             geo = self._array_geo(x1, x2)
