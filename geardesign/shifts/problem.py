@@ -164,6 +164,12 @@ class Problem:
         """(K, 2, ...) ∂margin/∂(x1, x2)."""
         return _stack_pairs(self._margin_gradient_values(geo), geo["_x1"])
 
+    def margins_and_gradients(self, geo) -> tuple:
+        """(:meth:`margins`, :meth:`margin_gradients`): the gradients asked first, so that a check whose values
+        come with them (the strength chain's stencil) is evaluated once."""
+        G = self.margin_gradients(geo)
+        return self.margins(geo), G
+
     def pieces(self, geo) -> np.ndarray:
         """(P, ...) pieces whose minimum is the maximised function F = sense·fun."""
         return _stack(self._piece_values(geo), geo["_x1"])
@@ -213,6 +219,14 @@ class Problem:
         if not self.costly_parts or self.objective.needs_load or self.objective.kind == "margin":
             return None
         return self.with_checks(_Unevaluated(c.name, n_parts=c.n_parts) if c.costly else c for c in self.checks)
+
+    def reading(self, checks) -> "Problem":
+        """This problem, or its :meth:`light` view when none of the checks at the indices ``checks`` is costly:
+        for a step that reads those checks alone (a boundary traced or a corner solved)."""
+        light = self.light()
+        if light is None or any(self.checks[i].costly for i in np.unique(checks)):
+            return self
+        return light
 
     def modelled_at(self, v) -> "Problem":
         """This problem with its costly checks replaced by their quadratic models around the point v (see
@@ -266,9 +280,8 @@ class Problem:
                 "P": self._normalised(geo) if self.objective.kind == "margin" else self.pieces(geo)})
             return out["P"], out["M"]
         geo = self.geo(x1, x2)
-        M = self.margins(geo)
+        M, GM = self.margins_and_gradients(geo)
         P = self._normalised(geo) if self.objective.kind == "margin" else self.pieces(geo)
-        GM = self.margin_gradients(geo)
         if self.objective.kind == "margin":
             GP = np.stack(self._central(self._normalised, geo), axis=1)
         else:
