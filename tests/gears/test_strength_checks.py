@@ -141,3 +141,21 @@ def test_region_draws_the_strength_curves():
     ax = region.plot()
     assert any("contact_strength" in t.get_text() for t in ax.get_legend().get_texts())
     matplotlib.pyplot.close(ax.figure)
+
+
+def test_the_solvers_quadratic_model_of_the_chain_matches_it():
+    """The model the solvers walk on (StrengthSpec.model): at its anchor the chain's own values and gradients,
+    nearby a second-order Taylor polynomial (error of third order at 1e-3 away: far below the first-order one's)."""
+    from geardesign.gears.geometry import mesh_geometry_float
+    from geardesign.gears.mesh import Mesh
+    spec = make_checks(**CASE)[-1].spec
+    at = mesh_geometry_float(Mesh(20, 60), 4.0, 0.3, 0.25)
+    model, exact = spec.model(at), spec.safety(mesh_geometry_float(Mesh(20, 60), 4.0, 0.3, 0.25), gradients=True)
+    assert model.safety(at) == exact
+    d = 1e-3
+    near = mesh_geometry_float(Mesh(20, 60), 4.0, 0.3 + d, 0.25 - d)
+    truth = spec.safety(near)
+    for name in ("S_H", "S_F1", "S_F2"):
+        linear = exact[name] + (exact["d" + name][0] - exact["d" + name][1]) * d
+        error = abs(model.safety(near)[name] - truth[name])
+        assert error < 1e-8 and error < abs(linear - truth[name]) / 10
