@@ -232,7 +232,8 @@ class Problem:
         """This problem with its costly checks replaced by their quadratic models around the point v (see
         Check.modelled_at): one evaluation of them, then a problem as cheap as one without them."""
         x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - self.sgn * float(v[0]))
-        out = self.with_checks(c.modelled_at(self._point_geo(x1, x2)) for c in self.checks)
+        geo = self._point_geo(x1, x2)   # one geometry: the checks share the chain's evaluation kept in it
+        out = self.with_checks(c.modelled_at(geo) for c in self.checks)
         out.anchor = np.array([float(c) for c in v])
         return out
 
