@@ -66,7 +66,7 @@ class Problem:
     """
 
     _recent = None   # key -> (evaluate_point's value, its geometry) of the last points evaluated
-    _RECENT = 8      # points remembered: the best of several starts, evaluated again for the result
+    _RECENT = 32     # points remembered: the best of several starts, evaluated again for the result
 
     def __init__(self, mesh: Mesh, checks=None, objective="max_x_sum", m=1.0, x_sum=None, meshing: bool = True):
         if not isinstance(mesh, Mesh):
