@@ -1,6 +1,7 @@
 """The shift solvers with the ISO 6336 strength checks against the same solves without them (issue 26 §6:
 `exact` with the three strength checks <= 2x its time without), measured in one run over the same pairs,
-interleaved, median per pair; and feasible_region with and without them.
+interleaved, median per pair; an infeasible load case (its conflict named) against a feasible one of the same
+pair; and feasible_region with and without them.
 
 Run: python benchmarks/bench_strength_checks.py [PAIRS]
 Prints figures; asserts nothing (speed is measured, not tested).
