@@ -109,6 +109,19 @@ def test_a_pitting_limit_the_geometry_cannot_meet_is_named_alone(method):
     assert min(ref.S_H1, ref.S_H2) < 1.0
 
 
+def test_an_overloaded_ring_pair_names_its_conflict():
+    """20/70 internal at 1500 N·m: the search grids hold designs the chain refuses (a root notch parameter q_s
+    below its range, where the geometry fails anyway); they fail the check instead of stopping the solve, and
+    the answer names the root strength of the ring, which the reference chain confirms below S_Fmin."""
+    over = {**CASE, "load": Load(torque_nm=1500, n_rpm=1000, life_h=20000)}
+    for method in ("exact", "grid"):
+        r = gd.optimize_shifts(20, 70, m=4, internal=True, method=method, checks=over)
+        assert not r.success and r.conflict == ["root_strength2"]
+        ref = gd.GearPair(4.0, 20, 70, r.x1, r.x2, internal=True, face_width_mm=40.0).strength(over["load"],
+                                                                                              material=MATERIAL)
+        assert ref.S_F2 < 1.4
+
+
 def test_balanced_root_strength_equalises_the_gears_on_a_fixed_centre_distance():
     m, z1, z2 = 4.0, 20, 60
     a_w = gd.GearPair(m, z1, z2, 0.3, 0.2).geometry().a_w

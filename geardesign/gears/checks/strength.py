@@ -93,17 +93,22 @@ class StrengthSpec:
             # the chain's formulas hold for gears that mesh with ε_α >= 1 (ISO 6336's own range) and for the
             # root form factors' |x| <= 3; elsewhere the design fails its geometry anyway, and its safety
             # factors are NaN (a failing margin)
-            valid = np.broadcast_to(_in_range(g5, X1, X2), X1.shape)
-            S = {k: np.full(X1.shape, np.nan) for k in _QUANTITIES}
-            if valid.any():
-                sub = {k: np.broadcast_to(g5[k], X1.shape)[valid] for k in CHAIN_GEOMETRY_FIELDS + ("_z1", "_z2")}
-                out = pair_strength(np.broadcast_to(M, X1.shape)[valid], np.broadcast_to(Z1, X1.shape)[valid],
-                                    np.broadcast_to(Z2, X1.shape)[valid], X1[valid], X2[valid], load=self.load,
-                                    material1=self.material1, material2=self.material2, face_width_mm=width,
-                                    beta_deg=mesh.beta_deg, internal=mesh.internal, rack=mesh.rack,
-                                    tip_shortening=mesh.tip_shortening, geometry=sub, **dict(self.options))
-                for k in S:
-                    S[k][valid] = out[k]
+            idx = np.flatnonzero(np.broadcast_to(_in_range(g5, X1, X2), X1.shape))
+            S = {k: np.full(X1.size, np.nan) for k in _QUANTITIES}
+            if idx.size:
+                flat = {k: np.broadcast_to(g5[k], X1.shape).ravel()
+                        for k in CHAIN_GEOMETRY_FIELDS + ("_z1", "_z2", "_m", "_x1", "_x2")}
+
+                def call(sel):
+                    at = {k: v[idx[sel]] for k, v in flat.items()}
+                    out = pair_strength(at["_m"], at["_z1"], at["_z2"], at["_x1"], at["_x2"], load=self.load,
+                                        material1=self.material1, material2=self.material2, face_width_mm=width,
+                                        beta_deg=mesh.beta_deg, internal=mesh.internal, rack=mesh.rack,
+                                        tip_shortening=mesh.tip_shortening, geometry=at, **dict(self.options))
+                    return {k: out[k] for k in _QUANTITIES}
+
+                for k, v in _where_it_holds(call, idx.size).items():
+                    S[k][idx] = v
         return {k: v.reshape((n_pts,) + x1.shape) for k, v in S.items()}
 
     def model(self, geo: dict) -> "StrengthModel":
@@ -124,6 +129,42 @@ class StrengthSpec:
                 parts[q] = (v[0], grad, tuple(c if c == c else 0.0 for c in (h11, h12, h22)))
             memo[(self, "model")] = StrengthModel(geo["_x1"], geo["_x2"], parts)
         return memo[(self, "model")]
+
+
+_REFUSAL_SPLITS = 64   # calls of the chain spent finding the designs it refuses among many
+
+
+def _where_it_holds(call, n: int) -> dict:
+    """``call(sel)`` for the designs 0 … n−1. The chain refuses a whole call for one design outside a range it
+    checks inside itself (the root's notch parameter q_s, say, of a design the geometry fails anyway): the
+    designs it refuses alone then get NaN (a failing margin), found by halving. A refusal of every design
+    (a bad option, or a single design out of range) is raised, as is one that takes more than
+    _REFUSAL_SPLITS calls to pin down."""
+    budget = [_REFUSAL_SPLITS]
+
+    def part(sel):   # the values of sel, None where the chain refuses every design of it
+        try:
+            return call(sel)
+        except GearDesignError:
+            if sel.size == 1:
+                return None
+            budget[0] -= 2
+            if budget[0] < 0:
+                raise
+            halves = [part(h) for h in (sel[:sel.size // 2], sel[sel.size // 2:])]
+            if all(h is None for h in halves):
+                return None
+            halves = [h if h is not None else {k: np.full(s.size, np.nan) for k in _QUANTITIES}
+                      for h, s in zip(halves, (sel[:sel.size // 2], sel[sel.size // 2:]))]
+            return {k: np.concatenate([h[k] for h in halves]) for k in _QUANTITIES}
+
+    try:
+        return call(np.arange(n))
+    except GearDesignError:
+        out = part(np.arange(n)) if n > 1 else None
+        if out is None:
+            raise
+        return out
 
 
 def _in_range(g: dict, x1, x2):
