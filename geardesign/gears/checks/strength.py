@@ -8,7 +8,9 @@ the pair's face width) and ``strength`` (a dict of :func:`~geardesign.gears.stre
 options: accuracy grade, lubricant, roughness, given factors, root method, ...). The safety factors come
 from the vectorised chain evaluated on the solver's own geometry; their gradients in (x1, x2) are central
 differences of the chain, evaluated with the design in the same vectorised call (five designs for the
-price of about one). Margins S/S_min − 1.
+price of about one). Margins S/S_min − 1. The checks are ``costly`` (see Check.costly): the solvers evaluate
+them only where a decision reads them, and walk on their quadratic model (:meth:`StrengthSpec.model`) where
+they would otherwise call the chain hundreds of times.
 """
 from __future__ import annotations
 
