@@ -91,7 +91,7 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, h_node: float, iters: int = 10, 
             break
         x1, x2, r = X[live, 0], X[live, 1], np.arange(live.size)
         geo = mesh_geometry(proto.mesh.unchecked(z1[live], z2[live]), 1.0, x1, x2, proto.full)
-        M, G = proto.margins(geo), proto.margin_gradients(geo)
+        M, G = proto.margins_and_gradients(geo)
         ma, ga = M[a_idx[live], r], G[a_idx[live], :, r]
         mb, gb = M[b_idx[live], r], G[b_idx[live], :, r]
         # the second equation: m_b = 0 at a vertex, the stationarity residual ∇f × ∇m_a = 0 on an edge
@@ -106,7 +106,7 @@ def _batched_kkt(proto: Problem, Z1, Z2, start, h_node: float, iters: int = 10, 
         # converged (a step below 1e-13) or broken down (no finite Newton step): leave the loop
         live = live[ok & (np.abs(step).max(axis=1) > 1e-13)]
     geo = mesh_geometry(proto.mesh.unchecked(z1, z2), 1.0, X[:, 0], X[:, 1], proto.full)
-    M, G = proto.margins(geo), proto.margin_gradients(geo)
+    M, G = proto.margins_and_gradients(geo)
     return _best_candidate(proto, geo, M, G, _piece_gradient(proto, geo).T, X, a_idx, b_idx, is_v, pair, Z1.size,
                            bounds)
 
@@ -118,7 +118,7 @@ def _kkt_candidates(proto: Problem, Z1, Z2, start, h_node: float):
     K = len(proto.checks)
     geo0 = mesh_geometry(proto.mesh.unchecked(Z1.astype(float), Z2.astype(float)), 1.0, start[:, 0], start[:, 1],
                          proto.full)
-    M0, G0 = proto.margins(geo0), proto.margin_gradients(geo0)
+    M0, G0 = proto.margins_and_gradients(geo0)
     near = (M0 <= _REACH * h_node * np.sqrt((G0 ** 2).sum(axis=1))) | ~np.isfinite(M0)    # (K, B)
     combos = np.array([(a, b) for a in range(K) for b in range(a + 1, K)] + [(a, -1) for a in range(K)])
     take = near[combos[:, 0]] & np.where(combos[:, 1:2] >= 0, near[np.maximum(combos[:, 1], 0)], True)

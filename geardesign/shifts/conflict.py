@@ -6,7 +6,7 @@ import itertools
 import numpy as np
 
 from .nodes import grid_points
-from .local import MinMargin, slsqp
+from .local import maximin
 from .problem import DEFAULT_BOUNDS, Problem
 
 __all__ = ["smallest_conflict", "conflict_message"]
@@ -29,7 +29,7 @@ def smallest_conflict(prob: Problem, bounds=DEFAULT_BOUNDS, n: int = 161) -> lis
                 continue
             sub_prob = prob.subproblem(sub)
             # maximise the smallest margin of the subset
-            w, _, _, _ = slsqp(MinMargin(sub_prob), V[i], bounds, ftol=1e-12, pieces_only=True)
+            w, _ = maximin(sub_prob, V[i], bounds)
             if w[-1] < -1e-9:
                 return [prob.names[j] for j in sub]
     return []

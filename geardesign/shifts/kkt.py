@@ -135,8 +135,12 @@ def _first_kkt_point(prob: Problem, ev: Evaluator, w0, near_p, near_m, max_move:
     nv = prob.nvar
     t0 = w0[nv]
     nit = 0
+    # Newton reads the active rows alone: where no costly check is active it walks without them, and the
+    # point it reaches is checked against every check below
+    light, costly = ev.light(), getattr(prob, "costly_parts", set())
     for act_p, act_m in itertools.islice(_promising_first(prob, ev, w0, _active_sets(near_p, near_m, nv)), limit):
-        out = _kkt_newton(ev, nv, act_p, act_m, w0, max_move, noisy=prob.fd_gradients)
+        walk = light if light is not None and costly.isdisjoint(act_m) else ev
+        out = _kkt_newton(walk, nv, act_p, act_m, w0, max_move, noisy=walk.prob.fd_gradients)
         if out is None:
             continue
         w, it = out
@@ -174,6 +178,9 @@ def _polish(prob: Problem, w, ev: Evaluator, tol: float, act_tol=1e-5):
     return None if found is None else found[:3]
 
 
+_SLSQP_KKT = "converged: SLSQP, then Newton on the KKT system of its active set"
+
+
 def exact_from(prob: Problem, ev: Evaluator, v0, bounds, tol, h):
     """One local exact solve from the feasible point v0: (w, iterations, message, kind), kind
     "kkt" for a KKT point, "slsqp" for SLSQP's point where no KKT point was found near it, "edge"
@@ -183,11 +190,18 @@ def exact_from(prob: Problem, ev: Evaluator, v0, bounds, tol, h):
     found = _first_kkt_point(prob, ev, w0, *_near(ev, nv, w0, reach=2.2 * h), max_move=3 * h)
     if found is not None:
         return found[0], found[3], "converged: KKT system of the active set solved by Newton from a grid node", "kkt"
+    if getattr(prob, "costly_parts", None):
+        # SLSQP on the costly checks' quadratic model around v0 (one call of the chain), then the polish on the
+        # checks themselves; where that finds no KKT point, SLSQP on the checks themselves
+        w, nit, _, _ = slsqp(prob.modelled_at(v0), v0, bounds)
+        polished = _polish(prob, w, Evaluator(prob), tol)
+        if polished is not None:
+            return polished[0], nit, _SLSQP_KKT, "kkt"
     # with central-difference gradients (~1e-10 noise) SLSQP cannot meet 1e-15; it would run to maxiter
     w, nit, ev_s, ok = slsqp(prob, v0, bounds, ftol=1e-10 if prob.fd_gradients else 1e-15)
     polished = _polish(prob, w, ev_s, tol)
     if polished is not None:
-        return polished[0], nit, "converged: SLSQP, then Newton on the KKT system of its active set", "kkt"
+        return polished[0], nit, _SLSQP_KKT, "kkt"
     # Where SLSQP stops after a failed line search depends on the last digits of the margins
     # near the edge (on it or just inside): the edge is recognised by SLSQP having reached it.
     kind = "edge" if not ok and ev_s.missing > 0 else "slsqp"

@@ -36,11 +36,25 @@ def _square_grid(n: int, lo: float, hi: float) -> np.ndarray:
 
 
 def best_feasible(prob: Problem, V: np.ndarray):
-    P, M = prob.evaluate(V, grads=False)
+    """(index of the best feasible node of V or None, pieces (P, n), margins (K, n)). Costly checks (the
+    strength chain) are evaluated only at the nodes every other check passes: a node that fails one of
+    those is infeasible whatever they say (all of them at every node where none is feasible)."""
+    light = prob.light() if hasattr(prob, "light") else None
+    if light is None:
+        P, M = prob.evaluate(V, grads=False)
+    else:
+        P, M = light.evaluate(V, grads=False)
+        costly = [i for i, c in enumerate(prob.checks) if c.costly]
+        rest = [i for i, c in enumerate(prob.checks) if not c.costly]
+        near = (M[rest] >= -FEASIBILITY_TOL).all(axis=0)
+        if not near.any():
+            return None, *prob.evaluate(V, grads=False)
+        M[costly] = -np.inf
+        M[:, near] = prob.evaluate(V[near], grads=False)[1]
     feasible = (M >= -FEASIBILITY_TOL).all(axis=0) if M.size else np.ones(V.shape[0], bool)
     score = np.where(feasible, P.min(axis=0), -np.inf)
     if not np.isfinite(score).any():
-        return None, P, M
+        return (None, P, M) if light is None else (None, *prob.evaluate(V, grads=False))
     return int(np.argmax(score)), P, M
 
 

@@ -133,13 +133,12 @@ class _StrengthObjective(Objective):
         out.checks = found
         return out
 
-    def _ratios(self, geo, names):
-        """(S/S_min, its gradient) of the bound checks called ``names``."""
-        out = []
-        for c in self.checks:
-            if c.name in names:
-                out.append((c.value(geo) / c.limit, tuple(g for g in c.gradient(geo))))
-        return out
+    def pieces(self, geo):
+        """S/S_min of the bound checks called ``_names``."""
+        return tuple(c.value(geo) / c.limit for c in self.checks if c.name in self._names)
+
+    def piece_gradients(self, geo):
+        return [tuple(c.gradient(geo)) for c in self.checks if c.name in self._names]
 
 
 class BalancedRootStrength(_StrengthObjective):
@@ -147,23 +146,11 @@ class BalancedRootStrength(_StrengthObjective):
     description = "largest min(S_F1, S_F2): equal root safety of both gears where no check stops it"
     _names = ("root_strength1", "root_strength2")
 
-    def pieces(self, geo):
-        return tuple(r for r, _ in self._ratios(geo, self._names))
-
-    def piece_gradients(self, geo):
-        return [g for _, g in self._ratios(geo, self._names)]
-
 
 class MaxMinSafety(_StrengthObjective):
     name, sense = "max_min_safety", +1
     description = "largest smallest safety factor, each relative to its minimum (S_H/S_Hmin, S_F/S_Fmin)"
     _names = ("contact_strength", "root_strength1", "root_strength2")
-
-    def pieces(self, geo):
-        return tuple(r for r, _ in self._ratios(geo, self._names))
-
-    def piece_gradients(self, geo):
-        return [g for _, g in self._ratios(geo, self._names)]
 
 
 class CustomObjective(Objective):

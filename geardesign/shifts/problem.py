@@ -7,6 +7,8 @@ Objectives (:mod:`geardesign.shifts.objectives`) are maximised internally as F =
 from __future__ import annotations
 
 import contextlib
+import copy
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -63,7 +65,8 @@ class Problem:
     and x2 = x_sum − x1 (x2 = x_sum + x1 for an internal pair, whose x_Σ is x2 − x1).
     """
 
-    _last_point = None   # (key, evaluate_point's value, its geometry) of the last point evaluated
+    _recent = None   # key -> (evaluate_point's value, its geometry) of the last points evaluated
+    _RECENT = 32     # points remembered: the best of several starts, evaluated again for the result
 
     def __init__(self, mesh: Mesh, checks=None, objective="max_x_sum", m=1.0, x_sum=None, meshing: bool = True):
         if not isinstance(mesh, Mesh):
@@ -86,9 +89,7 @@ class Problem:
         # the smooth parts the solvers see (see Check.part_margins): part -> index of its check
         self.part_check = [i for i, c in enumerate(self.checks) for _ in range(c.n_parts)]
         # gradients that are central differences carry ~1e-10 noise, their derivatives more
-        self.fd_gradients = (self.objective.kind == "margin"
-                             or type(self.objective).piece_gradients is Objective.piece_gradients
-                             or any(getattr(c, "fd_gradient", False) for c in self.checks))
+        self.fd_gradients = _fd_gradients(self.objective, self.checks)
 
     # --- evaluation ---------------------------------------------------------------------
     # The checks and pieces are written once, as formulas on a geometry dict; the dict holds
@@ -163,6 +164,12 @@ class Problem:
         """(K, 2, ...) ∂margin/∂(x1, x2)."""
         return _stack_pairs(self._margin_gradient_values(geo), geo["_x1"])
 
+    def margins_and_gradients(self, geo) -> tuple:
+        """(:meth:`margins`, :meth:`margin_gradients`): the gradients asked first, so that a check whose values
+        come with them (the strength chain's stencil) is evaluated once."""
+        G = self.margin_gradients(geo)
+        return self.margins(geo), G
+
     def pieces(self, geo) -> np.ndarray:
         """(P, ...) pieces whose minimum is the maximised function F = sense·fun."""
         return _stack(self._piece_values(geo), geo["_x1"])
@@ -191,6 +198,44 @@ class Problem:
         if self.objective.kind == "margin":
             return self._normalised(geo).min(axis=0)
         return self.objective.sense * self.pieces(geo).min(axis=0)
+
+    def with_checks(self, checks) -> "Problem":
+        """This problem (mesh, objective, x-sum) with ``checks`` in place of its own, one for one: the cheaper
+        stand-ins of its costly checks that the solvers walk on (:meth:`light`, :meth:`modelled_at`)."""
+        out = copy.copy(self)
+        out.checks, out._recent = tuple(checks), None
+        out.objective = self.objective.bound(out.checks)
+        out.fd_gradients = _fd_gradients(out.objective, out.checks)
+        return out
+
+    @property
+    def costly_parts(self) -> set:
+        """The indices of the margin parts that belong to costly checks (see Check.costly)."""
+        return {k for k, i in enumerate(self.part_check) if self.checks[i].costly}
+
+    def light(self) -> "Problem | None":
+        """This problem with its costly checks left unevaluated (NaN margins), for the steps of a solver that read
+        only the other checks; None when it has none, or when its objective reads them."""
+        if not self.costly_parts or self.objective.needs_load or self.objective.kind == "margin":
+            return None
+        return self.with_checks(_Unevaluated(c.name, n_parts=c.n_parts) if c.costly else c for c in self.checks)
+
+    def reading(self, checks) -> "Problem":
+        """This problem, or its :meth:`light` view when none of the checks at the indices ``checks`` is costly:
+        for a step that reads those checks alone (a boundary traced or a corner solved)."""
+        light = self.light()
+        if light is None or any(self.checks[i].costly for i in np.unique(checks)):
+            return self
+        return light
+
+    def modelled_at(self, v) -> "Problem":
+        """This problem with its costly checks replaced by their quadratic models around the point v (see
+        Check.modelled_at): one evaluation of them, then a problem as cheap as one without them."""
+        x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - self.sgn * float(v[0]))
+        geo = self._point_geo(x1, x2)   # one geometry: the checks share the chain's evaluation kept in it
+        out = self.with_checks(c.modelled_at(geo) for c in self.checks)
+        out.anchor = np.array([float(c) for c in v])
+        return out
 
     def subproblem(self, indices) -> "Problem":
         """The same design space with only the checks at ``indices`` (the conflict search)."""
@@ -236,9 +281,8 @@ class Problem:
                 "P": self._normalised(geo) if self.objective.kind == "margin" else self.pieces(geo)})
             return out["P"], out["M"]
         geo = self.geo(x1, x2)
-        M = self.margins(geo)
+        M, GM = self.margins_and_gradients(geo)
         P = self._normalised(geo) if self.objective.kind == "margin" else self.pieces(geo)
-        GM = self.margin_gradients(geo)
         if self.objective.kind == "margin":
             GP = np.stack(self._central(self._normalised, geo), axis=1)
         else:
@@ -251,28 +295,41 @@ class Problem:
         smooth parts (:attr:`part_check` maps each to its check)."""
         x1, x2 = float(v[0]), (float(v[1]) if self.x_sum is None else self.x_sum - self.sgn * float(v[0]))
         key = (x1, x2, self.x_sum)   # the free variables' gradients depend on x_sum too
-        if self._last_point is not None and self._last_point[0] == key:   # a start checked, then solved from
-            return self._last_point[1]
+        if self._recent is None:
+            self._recent = {}
+        if key in self._recent:   # a start checked, then solved from
+            return self._recent[key][0]
         geo, (P, M, GP, GM) = self.evaluate_design(x1, x2, parts=True)
         out = P, M, self._free(GP), self._free(GM)
-        self._last_point = (key, out, geo)
+        if len(self._recent) >= self._RECENT:
+            self._recent.pop(next(iter(self._recent)))
+        self._recent[key] = (out, geo)
         return out
 
     def evaluate_design(self, x1: float, x2: float, parts: bool = False, grads: bool = True):
         """(geo, (P, M, GP, GM)) of one design on the float path; where Python floats fault (a
         division by zero exactly at a boundary, an overflow), the same formulas on 0-d numpy
-        arrays, which give inf/NaN as the vectorised path does. The geometry of the point
-        :meth:`evaluate_point` saw last (a solver's final iterate, usually) is reused. Without
+        arrays, which give inf/NaN as the vectorised path does. The geometry of a point
+        :meth:`evaluate_point` saw lately (a solver's final iterate, usually) is reused. Without
         ``grads`` GP and GM are None (unless the objective is made of normalised margins)."""
-        last = self._last_point
+        seen = (self._recent or {}).get((x1, x2, self.x_sum))
         try:
-            geo = last[2] if last is not None and last[0] == (x1, x2, self.x_sum) else \
-                mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
+            geo = seen[1] if seen is not None else mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
             return geo, self.evaluate_geo(geo, parts, grads)
         except _FLOAT_FAULTS:
-            with np.errstate(all="ignore"):
-                geo = self.geo(np.float64(x1), np.float64(x2))
+            geo = self._array_geo(x1, x2)
             return geo, self.evaluate_geo(geo, parts, grads)
+
+    def _point_geo(self, x1: float, x2: float) -> dict:
+        """The geometry of one design: Python floats, or 0-d arrays where the floats fault."""
+        try:
+            return mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
+        except _FLOAT_FAULTS:
+            return self._array_geo(x1, x2)
+
+    def _array_geo(self, x1: float, x2: float) -> dict:
+        with np.errstate(all="ignore"):
+            return self.geo(np.float64(x1), np.float64(x2))
 
     def evaluate_geo(self, geo, parts: bool = False, grads: bool = True):
         """P, M, GP, GM with gradients in (x1, x2) for one design given as a float geometry dict
@@ -303,6 +360,31 @@ class Problem:
     def _free(self, G):
         """Gradients in (x1, x2) → in the free variables (d/dx1 along x2 = x_sum − sgn·x1)."""
         return G if self.x_sum is None else (G[:, 0] - self.sgn * G[:, 1])[:, None]
+
+
+def _fd_gradients(objective, checks) -> bool:
+    """True when a gradient the solvers read is a central difference (~1e-10 noise, its derivatives more)."""
+    return (objective.kind == "margin" or type(objective).piece_gradients is Objective.piece_gradients
+            or any(getattr(c, "fd_gradient", False) for c in checks))
+
+
+@dataclass(frozen=True)
+class _Unevaluated(_checks.Check):
+    """A costly check not evaluated (NaN margins, a failing margin wherever read): :meth:`Problem.light`."""
+
+    n_parts: int = 1
+
+    def value(self, geo):
+        return math.nan
+
+    def gradient(self, geo):
+        return math.nan, math.nan
+
+    def part_margins(self, geo) -> list:
+        return [math.nan] * self.n_parts
+
+    def part_gradients(self, geo) -> list:
+        return [(math.nan, math.nan)] * self.n_parts
 
 
 def _stack(values, like) -> np.ndarray:

@@ -267,11 +267,12 @@ def _project(prob: Problem, P: np.ndarray, idx: np.ndarray, iters: int = 10) -> 
     """Newton steps x ← x − m_k ∇m_k/‖∇m_k‖² onto check idx[i]'s curve, all points at once."""
     P = P.copy()
     rows = np.arange(len(P))
+    prob = prob.reading(idx)
     for _ in range(iters):
         x1, x2 = P[:, 0], P[:, 1]
         geo = prob.geo(x1, x2)
-        M = prob.margins(geo)[idx, rows]
-        G = prob.margin_gradients(geo)[idx, :, rows]
+        M, G = prob.margins_and_gradients(geo)
+        M, G = M[idx, rows], G[idx, :, rows]
         nrm2 = (G ** 2).sum(axis=1)
         step = np.where(np.isfinite(M) & (nrm2 > 0), M / np.where(nrm2 > 0, nrm2, 1.0), 0.0)
         step = np.clip(step, -0.05, 0.05)
@@ -283,11 +284,11 @@ def _corners(prob: Problem, P: np.ndarray, a: np.ndarray, b: np.ndarray, iters: 
     """Intersections of check a's and check b's curves by 2-D Newton, from the points P."""
     P = P.copy()
     rows = np.arange(len(P))
+    prob = prob.reading(np.concatenate([a, b]))
     for _ in range(iters):
         x1, x2 = P[:, 0], P[:, 1]
         geo = prob.geo(x1, x2)
-        M = prob.margins(geo)
-        G = prob.margin_gradients(geo)
+        M, G = prob.margins_and_gradients(geo)
         ma, mb = M[a, rows], M[b, rows]
         ga, gb = G[a, :, rows], G[b, :, rows]
         det = ga[:, 0] * gb[:, 1] - ga[:, 1] * gb[:, 0]
@@ -388,11 +389,12 @@ def _off_curve_area(prob: Problem, L: np.ndarray, names: np.ndarray) -> float:
     on = k >= 0
     if not on.any():
         return 0.0
+    prob = prob.reading(k[on])
     with np.errstate(all="ignore"):
         geo = prob.geo(L[on, 0], L[on, 1])
         rows = np.arange(on.sum())
-        mk = prob.margins(geo)[k[on], rows]
-        G = prob.margin_gradients(geo)[k[on], :, rows]
+        mk, G = prob.margins_and_gradients(geo)
+        mk, G = mk[k[on], rows], G[k[on], :, rows]
         dist = np.abs(mk) / np.hypot(G[:, 0], G[:, 1])
     edge = np.hypot(*(np.roll(L, -1, axis=0) - L).T)
     half = (edge + np.roll(edge, 1)) / 2
@@ -451,8 +453,7 @@ def _trace(prob: Problem, box, n: int, window, method: str) -> list:
     g1, g2 = np.linspace(box[0], box[1], n), np.linspace(box[2], box[3], n)
     X1, X2 = np.meshgrid(g1, g2, indexing="ij")
     with np.errstate(all="ignore"):
-        M = prob.margins(prob.geo(X1, X2))
-    F = M.min(axis=0) if M.size else np.ones_like(X1)
+        F = _smallest_margin(prob, X1, X2)
     F = np.where(np.isfinite(F), F, -1.0)
     # a frame of -1 outside the box closes the loops along its edges
     h1, h2 = g1[1] - g1[0], g2[1] - g2[0]
@@ -472,6 +473,24 @@ def _trace(prob: Problem, box, n: int, window, method: str) -> list:
         L[:, 1] = np.clip(L[:, 1], box[2], box[3])
         out.append(_label(prob, L, box, window, method))
     return out
+
+
+def _smallest_margin(prob: Problem, X1, X2) -> np.ndarray:
+    """The smallest margin at the nodes (X1, X2) (n×n). Costly checks (the strength chain) are evaluated only
+    at the nodes where every other check holds and at their neighbours: elsewhere the smallest margin is
+    negative whatever they say, and no zero contour crosses a cell all of whose corners are negative."""
+    from scipy import ndimage
+
+    light = prob.light() if hasattr(prob, "light") else None
+    costly = [i for i, c in enumerate(prob.checks) if c.costly]
+    if light is None or len(costly) == len(prob.checks):
+        M = prob.margins(prob.geo(X1, X2))
+        return M.min(axis=0) if M.size else np.ones_like(X1)
+    F = np.delete(light.margins(light.geo(X1, X2)), costly, axis=0).min(axis=0)
+    near = ndimage.maximum_filter(F >= 0, size=3, mode="constant", cval=False)
+    if near.any():
+        F[near] = np.minimum(F[near], prob.margins(prob.geo(X1[near], X2[near]))[costly].min(axis=0))
+    return F
 
 
 def _label(prob: Problem, L: np.ndarray, box, window, method: str):
@@ -531,11 +550,12 @@ def _slide(prob: Problem, p: np.ndarray, k: int, iters: int = 8):
     check k's curve; None when it does not converge within a small step."""
     p = p.copy()
     start = p.copy()
+    prob = prob.reading([k])
     for _ in range(iters):
         with np.errstate(all="ignore"):
             geo = prob.geo(np.array([p[0]]), np.array([p[1]]))
-            mk = prob.margins(geo)[k, 0]
-            G = prob.margin_gradients(geo)[k, :, 0]
+            mk, G = prob.margins_and_gradients(geo)
+            mk, G = mk[k, 0], G[k, :, 0]
         # the free coordinate is the one along which the box edge runs: pick the larger slope
         j = int(np.argmax(np.abs(G)))
         if not (np.isfinite(mk) and np.isfinite(G[j]) and G[j] != 0):

@@ -18,6 +18,8 @@ _SCP_CACHE: dict = {}
 # on the normalised-margin subproblems (cvxpy then warned "Solution may be inaccurate" on ~1 in 20 of
 # them); 1e-10 is reached and is still far below the method's tolerance in x (1e-7)
 _SUBPROBLEM_TOL = 1e-10
+# a dual value of the subproblem below this is an inactive check's (Clarabel leaves ~1e-10 there)
+_NO_MULTIPLIER = 1e-8
 # weight of the checks' violation against the objective in the merit that accepts or refuses a step
 _PENALTY = 10.0
 
@@ -48,11 +50,16 @@ def _curvature(ev: Evaluator, v, lam_p, lam_m, h=1e-5):
     differences of the analytic gradients."""
     nv = v.size
     H = np.zeros((nv, nv))
+    # checks without a multiplier add no curvature: where the costly ones (the strength chain) have none,
+    # the differences are taken without evaluating them
+    costly = sorted(getattr(ev.prob, "costly_parts", ()))
+    light = ev.light() if costly and np.all(np.abs(lam_m[costly]) <= _NO_MULTIPLIER) else None
+    at = ev if light is None else light
     for j in range(nv):
         e = np.zeros(nv)
         e[j] = h
-        _, _, GPu, GMu = ev(v + e)
-        _, _, GPd, GMd = ev(v - e)
+        _, _, GPu, GMu = at(v + e)
+        _, _, GPd, GMd = at(v - e)
         H[:, j] = lam_p @ (GPu - GPd) / (2 * h) + (lam_m @ (GMu - GMd) / (2 * h) if lam_m.size else 0.0)
     B = -(H + H.T) / 2
     vals, vecs = np.linalg.eigh(B)

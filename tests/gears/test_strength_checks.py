@@ -97,6 +97,31 @@ def test_an_overload_names_the_strength_check_in_the_conflict():
     assert not r.success and "contact_strength" in r.conflict
 
 
+@pytest.mark.parametrize("method", ["exact", "grid"])
+def test_a_pitting_limit_the_geometry_cannot_meet_is_named_alone(method):
+    """20/60, m = 4, 40 mm of 42CrMo4 at 200 N·m: S_H rises with x_Σ until ε_α reaches 1 (the chain's range),
+    and stays below S_Hmin = 1 there; the answer names contact_strength alone, and the reference chain agrees
+    that S_H < 1 at the most central point returned."""
+    case = {"load": Load(torque_nm=200, n_rpm=1000, life_h=20000), "material": "42CrMo4", "face_width_mm": 40}
+    r = gd.optimize_shifts(20, 60, m=4, method=method, checks=case)
+    assert not r.success and r.conflict == ["contact_strength"]
+    ref = gd.GearPair(4.0, 20, 60, r.x1, r.x2, face_width_mm=40.0).strength(case["load"], material="42CrMo4")
+    assert min(ref.S_H1, ref.S_H2) < 1.0
+
+
+def test_an_overloaded_ring_pair_names_its_conflict():
+    """20/70 internal at 1500 N·m: the search grids hold designs the chain refuses (a root notch parameter q_s
+    below its range, where the geometry fails anyway); they fail the check instead of stopping the solve, and
+    the answer names the root strength of the ring, which the reference chain confirms below S_Fmin."""
+    over = {**CASE, "load": Load(torque_nm=1500, n_rpm=1000, life_h=20000)}
+    for method in ("exact", "grid"):
+        r = gd.optimize_shifts(20, 70, m=4, internal=True, method=method, checks=over)
+        assert not r.success and r.conflict == ["root_strength2"]
+        ref = gd.GearPair(4.0, 20, 70, r.x1, r.x2, internal=True, face_width_mm=40.0).strength(over["load"],
+                                                                                              material=MATERIAL)
+        assert ref.S_F2 < 1.4
+
+
 def test_balanced_root_strength_equalises_the_gears_on_a_fixed_centre_distance():
     m, z1, z2 = 4.0, 20, 60
     a_w = gd.GearPair(m, z1, z2, 0.3, 0.2).geometry().a_w
@@ -129,3 +154,21 @@ def test_region_draws_the_strength_curves():
     ax = region.plot()
     assert any("contact_strength" in t.get_text() for t in ax.get_legend().get_texts())
     matplotlib.pyplot.close(ax.figure)
+
+
+def test_the_solvers_quadratic_model_of_the_chain_matches_it():
+    """The model the solvers walk on (StrengthSpec.model): at its anchor the chain's own values and gradients,
+    nearby a second-order Taylor polynomial (error of third order at 1e-3 away: far below the first-order one's)."""
+    from geardesign.gears.geometry import mesh_geometry_float
+    from geardesign.gears.mesh import Mesh
+    spec = make_checks(**CASE)[-1].spec
+    at = mesh_geometry_float(Mesh(20, 60), 4.0, 0.3, 0.25)
+    model, exact = spec.model(at), spec.safety(mesh_geometry_float(Mesh(20, 60), 4.0, 0.3, 0.25), gradients=True)
+    assert model.safety(at) == exact
+    d = 1e-3
+    near = mesh_geometry_float(Mesh(20, 60), 4.0, 0.3 + d, 0.25 - d)
+    truth = spec.safety(near)
+    for name in ("S_H", "S_F1", "S_F2"):
+        linear = exact[name] + (exact["d" + name][0] - exact["d" + name][1]) * d
+        error = abs(model.safety(near)[name] - truth[name])
+        assert error < 1e-8 and error < abs(linear - truth[name]) / 10

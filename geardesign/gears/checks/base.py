@@ -82,6 +82,9 @@ class Check:
     # True for checks whose gradients are central differences (~1e-10 noise): the solvers then loosen
     # the tolerances that would chase it
     fd_gradient = False
+    # True for checks that cost far more than the geometry (the ISO 6336 chain): the solvers then evaluate
+    # them only where a decision reads them, and walk on a quadratic model of them (``modelled_at``)
+    costly = False
 
     @classmethod
     def build(cls, value, context: dict) -> list:
@@ -114,6 +117,11 @@ class Check:
 
     def part_gradients(self, geo: dict) -> list:
         return [self.gradient(geo)]
+
+    def modelled_at(self, geo: dict) -> "Check":
+        """A cheap stand-in of a ``costly`` check: the same check on a quadratic model of its values around
+        the one design of ``geo`` (the check itself for a check that is not costly)."""
+        return self
 
 
 _REGISTRY: list[type] = []

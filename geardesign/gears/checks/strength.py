@@ -8,11 +8,13 @@ the pair's face width) and ``strength`` (a dict of :func:`~geardesign.gears.stre
 options: accuracy grade, lubricant, roughness, given factors, root method, ...). The safety factors come
 from the vectorised chain evaluated on the solver's own geometry; their gradients in (x1, x2) are central
 differences of the chain, evaluated with the design in the same vectorised call (five designs for the
-price of about one). Margins S/S_min − 1.
+price of about one). Margins S/S_min − 1. The checks are ``costly`` (see Check.costly): the solvers evaluate
+them only where a decision reads them, and walk on their quadratic model (:meth:`StrengthSpec.model`) where
+they would otherwise call the chain hundreds of times.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -20,7 +22,7 @@ from ...errors import GearDesignError
 from ..strength.defaults import MIN_SAFETY_SOURCE, S_FMIN, S_HMIN
 from .base import Check, Option, register, register_context
 
-__all__ = ["StrengthSpec", "ContactStrength", "RootStrength", "strength_spec", "STRENGTH_CONTEXT", "SAFETY_RANGE"]
+__all__ = ["StrengthSpec", "StrengthModel", "ContactStrength", "RootStrength", "strength_spec", "STRENGTH_CONTEXT", "SAFETY_RANGE"]
 
 SAFETY_RANGE = (0.5, 10.0)
 CONTACT_SAFETY = Option("S_Hmin", "limit", S_HMIN, "smallest contact (pitting) safety factor S_H, with a load",
@@ -30,6 +32,8 @@ ROOT_SAFETY = Option("S_Fmin", "limit", S_FMIN, "smallest tooth-root (bending) s
 # the keywords of make_checks that describe the load case (they switch the strength checks on)
 STRENGTH_CONTEXT = ("load", "material", "material2", "face_width_mm", "strength")
 _FD_STEP = 1e-6   # in x: the chain is smooth there; central differences hold ~1e-9 relative
+_HESSIAN_STEP = 1e-4   # second differences: truncation ~h² and rounding ~1e-16/h², both ~1e-8
+_QUANTITIES = ("S_H1", "S_H2", "S_F1", "S_F2")
 
 
 @dataclass(frozen=True)
@@ -57,20 +61,33 @@ class StrengthSpec:
         return memo[(self, stencil)]
 
     def _evaluate(self, geo: dict, stencil: bool) -> dict:
+        h = _FD_STEP
+        S = self._chain(geo, _GRADIENT_STENCIL if stencil else _GRADIENT_STENCIL[:1])
+        res = {"S_H": np.minimum(S["S_H1"], S["S_H2"]), "S_F1": S["S_F1"], "S_F2": S["S_F2"]}
+        scalar = isinstance(geo["_x1"], float)
+        result = {}
+        for name, v in res.items():
+            result[name] = float(v[0]) if scalar else v[0]
+            if stencil:
+                grad = (_difference(v[0], v[1], v[2], h), _difference(v[0], v[3], v[4], h))
+                result["d" + name] = tuple(float(g) for g in grad) if scalar else grad
+        return result
+
+    def _chain(self, geo: dict, offsets) -> dict:
+        """S_H1, S_H2, S_F1, S_F2 by the vectorised chain at the designs of ``geo`` moved by each (Δx1, Δx2) of
+        ``offsets``, in one call: arrays (len(offsets), *shape of the designs)."""
         # here: the chain loads the materials catalog (pandas), which a pair without a load never needs
         from ..geometry import mesh_geometry
         from ..strength.chain import CHAIN_GEOMETRY_FIELDS, pair_strength
-        from ..strength.root import X_RANGE
 
         mesh = geo["_mesh"]
         width = self.face_width_mm if self.face_width_mm is not None else mesh.face_width_mm
         if width is None:
             raise GearDesignError("the strength checks need a face width: give face_width_mm with the load")
         x1, x2 = np.asarray(geo["_x1"], dtype=float), np.asarray(geo["_x2"], dtype=float)
-        h = _FD_STEP
-        n_pts = 5 if stencil else 1
-        X1 = np.stack([x1, x1 + h, x1 - h, x1, x1][:n_pts]).reshape(n_pts, -1)
-        X2 = np.stack([x2, x2, x2, x2 + h, x2 - h][:n_pts]).reshape(n_pts, -1)
+        n_pts = len(offsets)
+        X1 = np.stack([x1 + a for a, _ in offsets]).reshape(n_pts, -1)
+        X2 = np.stack([x2 + b for _, b in offsets]).reshape(n_pts, -1)
         M, Z1, Z2 = (np.broadcast_to(np.asarray(geo[k], dtype=float), x1.shape).reshape(1, -1)
                      for k in ("_m", "_z1", "_z2"))
         with np.errstate(all="ignore"):
@@ -78,51 +95,118 @@ class StrengthSpec:
             # the chain's formulas hold for gears that mesh with ε_α >= 1 (ISO 6336's own range) and for the
             # root form factors' |x| <= 3; elsewhere the design fails its geometry anyway, and its safety
             # factors are NaN (a failing margin)
-            valid = ((g5["eps_alpha"] >= 1.0) & (g5["rho_p1"] > 0) & (g5["rho_p2"] > 0)
-                     & (X_RANGE[0] <= X1) & (X1 <= X_RANGE[1]) & (X_RANGE[0] <= X2) & (X2 <= X_RANGE[1]))
-            valid = np.broadcast_to(valid, X1.shape)
-            S = {k: np.full(X1.shape, np.nan) for k in ("S_H1", "S_H2", "S_F1", "S_F2")}
-            if valid.any():
-                sub = {k: np.broadcast_to(g5[k], X1.shape)[valid] for k in CHAIN_GEOMETRY_FIELDS + ("_z1", "_z2")}
-                args = (np.broadcast_to(M, X1.shape)[valid], np.broadcast_to(Z1, X1.shape)[valid],
-                        np.broadcast_to(Z2, X1.shape)[valid], X1[valid], X2[valid])
+            idx = np.flatnonzero(np.broadcast_to(_in_range(g5, X1, X2), X1.shape))
+            S = {k: np.full(X1.size, np.nan) for k in _QUANTITIES}
+            if idx.size:
+                flat = {k: np.broadcast_to(g5[k], X1.shape).ravel()
+                        for k in CHAIN_GEOMETRY_FIELDS + ("_z1", "_z2", "_m", "_x1", "_x2")}
 
-                def chain(index):
-                    return pair_strength(*(a[index] for a in args), load=self.load, material1=self.material1,
-                                         material2=self.material2, face_width_mm=width, beta_deg=mesh.beta_deg,
-                                         internal=mesh.internal, rack=mesh.rack, tip_shortening=mesh.tip_shortening,
-                                         geometry={k: v[index] for k, v in sub.items()}, **dict(self.options))
+                def call(sel):
+                    at = {k: v[idx[sel]] for k, v in flat.items()}
+                    out = pair_strength(at["_m"], at["_z1"], at["_z2"], at["_x1"], at["_x2"], load=self.load,
+                                        material1=self.material1, material2=self.material2, face_width_mm=width,
+                                        beta_deg=mesh.beta_deg, internal=mesh.internal, rack=mesh.rack,
+                                        tip_shortening=mesh.tip_shortening, geometry=at, **dict(self.options))
+                    return {k: out[k] for k in _QUANTITIES}
 
-                out = _where_defined(chain, args[0].size, tuple(S))
-                for k in S:
-                    S[k][valid] = out[k]
-        shape = x1.shape
-        res = {"S_H": np.minimum(S["S_H1"], S["S_H2"]), "S_F1": S["S_F1"], "S_F2": S["S_F2"]}
-        res = {name: v.reshape((n_pts,) + shape) for name, v in res.items()}
-        scalar = isinstance(geo["_x1"], float)
-        result = {}
-        for name, v in res.items():
-            v = np.asarray(v, dtype=float)
-            result[name] = float(v[0]) if scalar else v[0]
-            if stencil:
-                grad = (_difference(v[0], v[1], v[2], h), _difference(v[0], v[3], v[4], h))
-                result["d" + name] = tuple(float(g) for g in grad) if scalar else grad
-        return result
+                for k, v in _where_it_holds(call, idx.size).items():
+                    S[k][idx] = v
+        return {k: v.reshape((n_pts,) + x1.shape) for k, v in S.items()}
+
+    def model(self, geo: dict) -> "StrengthModel":
+        """The quadratic model of the safety factors around the one design of ``geo`` (a float geometry): values
+        and gradients as :meth:`safety` gives them, second derivatives by central differences, from one call of
+        the chain on 13 designs (kept in ``geo``, which the three checks share)."""
+        memo = geo.setdefault("_strength", {})
+        if (self, "model") not in memo:
+            h, S = _HESSIAN_STEP, self._chain(geo, _GRADIENT_STENCIL + _HESSIAN_STENCIL)
+            parts = {}
+            for q, v in S.items():
+                v = [float(a) for a in v]
+                grad = tuple(float(_difference(v[0], v[i], v[i + 1], _FD_STEP)) for i in (1, 3))
+                h11 = (v[5] - 2.0 * v[0] + v[6]) / (h * h)
+                h22 = (v[7] - 2.0 * v[0] + v[8]) / (h * h)
+                h12 = (v[9] - v[10] - v[11] + v[12]) / (4.0 * h * h)
+                # a second difference that leaves the chain's range (NaN): no curvature on that side
+                parts[q] = (v[0], grad, tuple(c if c == c else 0.0 for c in (h11, h12, h22)))
+            memo[(self, "model")] = StrengthModel(geo["_x1"], geo["_x2"], parts)
+        return memo[(self, "model")]
 
 
-def _where_defined(chain, n: int, names: tuple) -> dict:
-    """``chain(index)`` over the designs 0..n-1, NaN where the chain refuses a design (a shift past the root
-    section's range of ISO 6336-3, say, that the geometry's own checks would fail anyway): the refused
-    designs are found by halving, so a few of them cost a few more calls, not one call per design."""
+_REFUSAL_SPLITS = 64   # calls of the chain spent finding the designs it refuses among many
+
+
+def _where_it_holds(call, n: int) -> dict:
+    """``call(sel)`` for the designs 0 … n−1. The chain refuses a whole call for one design outside a range it
+    checks inside itself (the root's notch parameter q_s, say, of a design the geometry fails anyway): the
+    designs it refuses alone then get NaN (a failing margin), found by halving. A refusal of every design
+    (a bad option, or a single design out of range) is raised, as is one that takes more than
+    _REFUSAL_SPLITS calls to pin down."""
+    budget = [_REFUSAL_SPLITS]
+
+    def part(sel):   # the values of sel, None where the chain refuses every design of it
+        try:
+            return call(sel)
+        except GearDesignError:
+            if sel.size == 1:
+                return None
+            budget[0] -= 2
+            if budget[0] < 0:
+                raise
+            halves = [part(h) for h in (sel[:sel.size // 2], sel[sel.size // 2:])]
+            if all(h is None for h in halves):
+                return None
+            halves = [h if h is not None else {k: np.full(s.size, np.nan) for k in _QUANTITIES}
+                      for h, s in zip(halves, (sel[:sel.size // 2], sel[sel.size // 2:]))]
+            return {k: np.concatenate([h[k] for h in halves]) for k in _QUANTITIES}
+
     try:
-        return chain(slice(0, n))
+        return call(np.arange(n))
     except GearDesignError:
-        if n == 1:
-            return {k: np.full(1, np.nan) for k in names}
-    index = np.arange(n)
-    halves = (index[: n // 2], index[n // 2:])
-    parts = [_where_defined(lambda sub, h=h: chain(h[sub]), h.size, names) for h in halves]
-    return {k: np.concatenate([np.broadcast_to(p[k], (h.size,)) for p, h in zip(parts, halves)]) for k in names}
+        out = part(np.arange(n)) if n > 1 else None
+        if out is None:
+            raise
+        return out
+
+
+def _in_range(g: dict, x1, x2):
+    """True where the chain's formulas hold: ε_α >= 1 (ISO 6336's own range), a start of active profile on
+    both gears, and the root form factors' |x| <= 3."""
+    from ..strength.root import X_RANGE
+
+    return ((g["eps_alpha"] >= 1.0) & (g["rho_p1"] > 0) & (g["rho_p2"] > 0)
+            & (X_RANGE[0] <= x1) & (x1 <= X_RANGE[1]) & (X_RANGE[0] <= x2) & (x2 <= X_RANGE[1]))
+
+
+_GRADIENT_STENCIL = ((0.0, 0.0), (_FD_STEP, 0.0), (-_FD_STEP, 0.0), (0.0, _FD_STEP), (0.0, -_FD_STEP))
+_HESSIAN_STENCIL = ((_HESSIAN_STEP, 0.0), (-_HESSIAN_STEP, 0.0), (0.0, _HESSIAN_STEP), (0.0, -_HESSIAN_STEP),
+                    (_HESSIAN_STEP, _HESSIAN_STEP), (_HESSIAN_STEP, -_HESSIAN_STEP),
+                    (-_HESSIAN_STEP, _HESSIAN_STEP), (-_HESSIAN_STEP, -_HESSIAN_STEP))
+
+
+class StrengthModel:
+    """S_H, S_F1, S_F2 and their gradients from second-order Taylor polynomials of S_H1, S_H2, S_F1, S_F2 around
+    one design (x1, x2) (:meth:`StrengthSpec.model`), read like :meth:`StrengthSpec.safety`: a stand-in the
+    solvers walk on, confirmed by the chain where they stop. S_H is the smaller of the two gears' models (its
+    kink kept)."""
+
+    def __init__(self, x1: float, x2: float, parts: dict):
+        self.x1, self.x2, self.parts = x1, x2, parts
+
+    def safety(self, geo: dict, gradients: bool = False) -> dict:
+        d1, d2 = geo["_x1"] - self.x1, geo["_x2"] - self.x2
+        val, grad = {}, {}
+        for q, (v0, (g1, g2), (h11, h12, h22)) in self.parts.items():
+            a1, a2 = g1 + h11 * d1 + h12 * d2, g2 + h12 * d1 + h22 * d2
+            val[q] = v0 + 0.5 * ((g1 + a1) * d1 + (g2 + a2) * d2)
+            grad[q] = (a1, a2)
+        first = val["S_H1"] <= val["S_H2"]
+        out = {"S_H": np.where(first, val["S_H1"], val["S_H2"]), "S_F1": val["S_F1"], "S_F2": val["S_F2"],
+               "dS_H": tuple(np.where(first, a, b) for a, b in zip(grad["S_H1"], grad["S_H2"])),
+               "dS_F1": grad["S_F1"], "dS_F2": grad["S_F2"]}
+        if isinstance(geo["_x1"], float):
+            out = {k: (tuple(map(float, v)) if isinstance(v, tuple) else float(v)) for k, v in out.items()}
+        return out
 
 
 def _difference(v0, up, down, h):
@@ -175,6 +259,16 @@ def _build_with_spec(cls, value, context: dict) -> list:
     return [cls(limit=value, spec=spec) if j is None else cls(gear=j, limit=value, spec=spec) for j in gears]
 
 
+def _modelled_at(self, geo):
+    """The check on the quadratic model of the chain around the design of ``geo`` (see Check.modelled_at)."""
+    return replace(self, spec=self.spec.model(geo)) if self.costly else self
+
+
+# a check on the chain itself is costly; the same check on a StrengthModel is not
+_costly = property(lambda self: isinstance(self.spec, StrengthSpec))
+
+
+
 @register
 @dataclass(frozen=True)
 class ContactStrength(Check):
@@ -185,6 +279,7 @@ class ContactStrength(Check):
     fd_gradient = True
     margin_per_limit = property(lambda self: 1.0 / self.limit)   # −∂margin/∂limit at the boundary
     build = classmethod(_build_with_spec)
+    costly, modelled_at = _costly, _modelled_at
 
     limit: float = S_HMIN
     spec: StrengthSpec | None = None
@@ -215,6 +310,7 @@ class RootStrength(Check):
     fd_gradient = True
     margin_per_limit = property(lambda self: 1.0 / self.limit)
     build = classmethod(_build_with_spec)
+    costly, modelled_at = _costly, _modelled_at
 
     gear: int = 1
     limit: float = S_FMIN
