@@ -91,9 +91,20 @@ def set_sizing(fn):
     return before
 
 
+@lru_cache(maxsize=1)
 def _series() -> np.ndarray:
+    """The ISO 54 modules (read once: the catalog lookup costs ~3 ms, the search asks per tooth pair)."""
     from ...catalogs.tables import module_series   # here: catalogs load pandas
-    return module_series()
+    series = np.array(module_series(), dtype=float)
+    series.flags.writeable = False
+    return series
+
+
+def _shifts_scale_free(stage: GearStage) -> bool:
+    """True when the pair's shift solution does not depend on its module and face width: every
+    geometric check is a margin in units of the module, and the face width enters only ε_β, i.e. the
+    ε_γ check of a helical pair."""
+    return stage.beta_deg == 0.0 or (stage.checks or {}).get("eps_gamma_min") is None
 
 
 class GearKind(ToothedKind):
@@ -159,23 +170,34 @@ class GearKind(ToothedKind):
         return sol
 
     def _strength_sized(self, stage, z1, z2, objective, flow) -> dict:
-        """Module and width by the strength checks: shifts of the pair at m = 1 (the geometric checks of a
-        spur pair do not depend on the module), every series module × width checked at once, then the
-        smallest candidates re-solved at their own module until one holds every check."""
+        """Module and width by the strength checks: shifts of the pair at m = 1, every series module × width
+        checked at once at those shifts; the smallest candidate then holds every check when the shift
+        solution does not depend on the module and width (``_shifts_scale_free``), else the smallest
+        candidates are re-solved at their own module until one holds every check."""
         ref = gear_solution(replace(stage, m=1.0), z1, z2, objective)
         if "x1" not in ref:
             return dict(ref, m=math.nan, face_width_mm=None)
-        cands, closest = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
-                                        _series(), MARGIN_TOL)
+        cands, best = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
+                                     _series(), MARGIN_TOL)
+        if cands and _shifts_scale_free(stage):   # the reference shifts are those of the first candidate
+            return self._scaled(ref, *best)
         for m, b in cands[:SIZING_TRIES]:
             sol = self._candidate(stage, m, b, z1, z2, objective, flow)
             if sol["feasible"]:
                 return sol
         if cands:
             return sol
-        sol = self._candidate(stage, closest[0], closest[1], z1, z2, objective, flow)
-        return dict(sol, reason=f"no module of the ISO 54 series carries the load (closest m = {closest[0]:g} mm, "
-                                f"b = {closest[1]:g} mm: {sol['reason']})")
+        sol = self._candidate(stage, best[0], best[1], z1, z2, objective, flow)
+        return dict(sol, reason=f"no module of the ISO 54 series carries the load (closest m = {best[0]:g} mm, "
+                                f"b = {best[1]:g} mm: {sol['reason']})")
+
+    @staticmethod
+    def _scaled(ref: dict, m: float, b: float, strength: dict) -> dict:
+        """The solution at module m, face width b from the shifts solved at m = 1 (``_shifts_scale_free``):
+        the same shifts and geometric margins, lengths scaled by m, and the ``strength`` margins (all
+        holding) the sizing computed at (m, b)."""
+        return dict(ref, a_w=ref["a_w"] * m, da1=ref["da1"] * m, da2=ref["da2"] * m,
+                    margins={**ref["margins"], **strength}, m=m, face_width_mm=b)
 
     # -- the branch and bound
     def solve(self, stage, option: dict, objective: str, flow=None) -> dict:

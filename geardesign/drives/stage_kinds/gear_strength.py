@@ -60,8 +60,9 @@ def _widths(stage, modules: np.ndarray, z1: int) -> tuple:
 
 def strength_sizes(stage, torque_nm: float, speed_rpm: float, z1: int, z2: int, x1: float, x2: float,
                    modules: np.ndarray, tol: float) -> tuple:
-    """(candidates, closest): the (m, b) that hold every strength check at shifts x1, x2, smallest
-    module first, then narrowest; and when none holds, the (m, b, margins) closest to holding."""
+    """(candidates, best): the (m, b) that hold every strength check at shifts x1, x2, smallest module
+    first, then narrowest; and (m, b, {check: margin}) of the first candidate, or when none holds, of
+    the (m, b) closest to holding."""
     M, B = _widths(stage, np.asarray(modules, dtype=float), z1)
     margins = strength_margins(stage, M, B, z1, z2, x1, x2, torque_nm, speed_rpm)
     worst = np.minimum.reduce([np.broadcast_to(margins[k], M.shape) for k in STRENGTH_CHECKS])
@@ -70,6 +71,7 @@ def strength_sizes(stage, torque_nm: float, speed_rpm: float, z1: int, z2: int, 
     order = np.lexsort((B[ok], M[ok]))
     cands = [(float(m), float(b)) for m, b in zip(M[ok][order], B[ok][order])]
     if cands:
-        return cands, None
-    i = np.unravel_index(np.argmax(worst), M.shape)
-    return [], (float(M[i]), float(B[i]), {k: float(np.broadcast_to(v, M.shape)[i]) for k, v in margins.items()})
+        i = tuple(np.argwhere(ok)[order[0]])
+    else:
+        i = np.unravel_index(np.argmax(worst), M.shape)
+    return cands, (float(M[i]), float(B[i]), {k: float(np.broadcast_to(v, M.shape)[i]) for k, v in margins.items()})
