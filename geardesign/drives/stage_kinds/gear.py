@@ -293,11 +293,11 @@ class GearKind(ToothedKind):
     def _analyse_strength(st, pair, flow, out: dict) -> None:
         """The strength checks at the flow into ``out``'s margins, the StrengthResult (its factor table)
         as ``out["strength"]`` and the face width in the summary."""
-        from ...gears.strength import Load, strength   # here: the materials catalog loads pandas
+        from ...gears.strength import strength   # here: the materials catalog loads pandas
 
         sm = strength_margins(st, st.m, st.width_mm, st.z1, st.z2, pair.x1, pair.x2, flow.torque_in_nm, flow.n_in_rpm)
         out["margins"].update({k: float(v) for k, v in sm.items()})
-        out["strength"] = strength(pair, Load(torque_nm=flow.torque_in_nm, n_rpm=flow.n_in_rpm),
+        out["strength"] = strength(pair, st.load(flow.torque_in_nm, flow.n_in_rpm),
                                    stage_material(st.material), face_width_mm=st.width_mm)
         out["summary"]["face_width_mm"] = st.width_mm
 
@@ -306,7 +306,13 @@ class GearKind(ToothedKind):
         from ...shifts.objectives import OBJECTIVES   # here: the shifts layer loads pandas
 
         f, i = "float", "int"
-        return {"module": dict(kind=f, required=True, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
+        from ...gears.strength.load import APPLICATION_FACTOR_RANGE, LIFE_RANGE_H
+
+        # no module: sized by the stage's load (needs a material); see GearStage
+        return {"module": dict(kind=f, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
+                "material": dict(kind="str"),
+                "life_h": dict(kind=f, lo=LIFE_RANGE_H[0], hi=LIFE_RANGE_H[1], lo_open=True),
+                "application_factor": dict(kind=f, lo=APPLICATION_FACTOR_RANGE[0], hi=APPLICATION_FACTOR_RANGE[1]),
                 "z1": dict(kind=i, lo=Z_MIN, hi=Z_MAX), "z2": dict(kind=i, lo=Z_MIN, hi=Z_MAX),
                 "x1": dict(kind=f, lo=-X_ABS_MAX, hi=X_ABS_MAX), "x2": dict(kind=f, lo=-X_ABS_MAX, hi=X_ABS_MAX),
                 "efficiency": dict(kind=f, default=0.98, lo=EFFICIENCY_RANGE[0], hi=EFFICIENCY_RANGE[1], lo_open=True),
@@ -319,7 +325,7 @@ class GearKind(ToothedKind):
 
     def from_scene(self, spec: dict):
         kw = dict(spec)
-        kw["m"] = kw.pop("module")
+        kw["m"] = kw.pop("module", None)
         kw["checks"] = dict(kw["checks"]) if kw.get("checks") else None
         for k in ("z1_range", "ratio_range"):
             if k in kw:

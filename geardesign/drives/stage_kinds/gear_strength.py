@@ -2,8 +2,8 @@
 into it, and the module and face width of a stage given without them.
 
 Checks (signed margins, >= 0 holds), from :func:`geardesign.gears.strength.pair_strength` with both
-gears of the stage's ``material``, the load on the pinion (gear 1) at endurance (no life given:
-Z_NT = Y_NT = 1) and the strength model's defaults (accuracy grade, lubricant, roughness, S_Hmin and
+gears of the stage's ``material``, the load on the pinion (gear 1) with the stage's ``application_factor``
+and ``life_h`` (None: endurance, Z_NT = Y_NT = 1) and the strength model's defaults (accuracy grade, lubricant, roughness, S_Hmin and
 S_Fmin, :mod:`geardesign.gears.strength.defaults`):
 
 - ``contact_strength``: min(S_H1, S_H2)/S_Hmin − 1;
@@ -38,10 +38,10 @@ WIDTH_TO_DIAMETER_STEP = 0.05
 
 def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, speed_rpm: float) -> dict:
     """{check: margin array} of :data:`STRENGTH_CHECKS` for the stage's pairs (m, b broadcast) carrying
-    ``torque_nm`` on the pinion at ``speed_rpm``."""
-    from ...gears.strength import Load, pair_strength   # here: the materials catalog loads pandas
+    ``torque_nm`` on the pinion at ``speed_rpm`` (with the stage's life and application factor)."""
+    from ...gears.strength import pair_strength   # here: the materials catalog loads pandas
 
-    out = pair_strength(m, z1, z2, x1, x2, load=Load(torque_nm=float(torque_nm), n_rpm=float(speed_rpm)),
+    out = pair_strength(m, z1, z2, x1, x2, load=stage.load(torque_nm, speed_rpm),
                         material1=stage_material(stage.material), face_width_mm=face_width_mm, beta_deg=stage.beta_deg)
     return {"contact_strength": np.minimum(out["S_H1"], out["S_H2"]) / out["S_Hmin"] - 1.0,
             "root_strength1": out["S_F1"] / out["S_Fmin"] - 1.0,
