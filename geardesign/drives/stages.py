@@ -134,10 +134,10 @@ class GearStage:
     ``face_width_mm`` enters ε_β (helical) and the mass model (default 4πm).
 
     ``m=None`` leaves the module (and, with ``face_width_mm=None``, the face width) to be sized by
-    the load the stage carries: the search and ``Drive.analyse`` ask the sizing function installed
-    with :func:`geardesign.drives.stage_kinds.set_sizing` for modules of the ISO 54 series at each
-    design's torque and speed (``material`` is handed to it). None is installed by default (the
-    tooth-strength model is not part of this version), so such a stage is refused until one is.
+    the load the stage carries: with a ``material``, the smallest module of the ISO 54 series (then the
+    narrowest face width) whose ISO 6336 strength checks hold at each design's torque and speed
+    (:mod:`geardesign.drives.stage_kinds.gear_strength`); or the sizing function installed with
+    :func:`geardesign.drives.stage_kinds.set_sizing`. Without either such a stage is refused by name.
 
     ``life_h`` (None: endurance, Z_NT = Y_NT = 1) and ``application_factor`` (K_A) are the load case of
     the strength checks of a stage with a ``material``, as in :class:`geardesign.gears.strength.Load`.
