@@ -160,3 +160,16 @@ def test_drive_load_options_without_a_gear_stage_or_beside_a_motor_are_refused(t
     motor = GIVEN.replace("power_kw = 4\nn_in_rpm = 1500\n", "[drive.motor]\npower_kw = 4\nspeed_rpm = 1500\n")
     assert main(["drive", _scene(tmp_path, motor), "--power", "3"]) == 2
     assert "[drive.motor]" in capsys.readouterr().err
+
+
+def test_drive_strength_width_is_the_face_width_of_stages_without_one(tmp_path, capsys):
+    import geardesign as gd
+    from geardesign.gears.strength import Load
+
+    body = LOADED.replace("face_width_mm = 40\n", "")
+    code, data, got = _drive_json(capsys, [_scene(tmp_path, body), "--material", "42CrMo4", "--strength-width", "30"])
+    stage = data["analysis"]["stages"][1]
+    assert stage["face_width_mm"] == 30
+    pair = gd.GearPair(4, 20, 60, stage["x1"], stage["x2"], face_width_mm=30)
+    res = pair.strength(Load(torque_nm=7500 / (2 * math.pi * 1450 / 60) * 2 * 0.95, n_rpm=725), "42CrMo4")
+    assert got["root_strength1"] == pytest.approx(res.S_F1 / res.S_Fmin - 1, rel=1e-12)
