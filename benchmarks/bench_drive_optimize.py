@@ -12,9 +12,12 @@ noisy (±50 %), so read the ratio.
     python benchmarks/bench_drive_optimize.py
 """
 import json
+import os
 import subprocess
 import sys
+import tempfile
 import time
+from pathlib import Path
 
 import numpy as np
 
@@ -108,8 +111,10 @@ def plain_sized_per_combination(samples=40, seed=2):
 
 def sized_drive():
     """Issue 26 §6: the sized drive's first call in a fresh process, against the plain loop."""
-    out = json.loads(subprocess.run([sys.executable, "-c", FRESH], capture_output=True, text=True,
-                                    check=True).stdout)
+    root = str(Path(gd.__file__).resolve().parents[1])      # the package this benchmark imported
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([root, os.environ.get("PYTHONPATH", "")])}
+    out = json.loads(subprocess.run([sys.executable, "-c", FRESH], capture_output=True, text=True, check=True,
+                                    env=env, cwd=tempfile.gettempdir()).stdout)
     plain = plain_sized_per_combination() * out["combos"]
     print()
     print(f"sized drive ({SIZED}).optimize(total_ratio=8), first call in a fresh process")
