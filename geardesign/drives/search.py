@@ -32,7 +32,8 @@ from .. import parallel
 from ..errors import GearDesignError
 from . import key
 from .drive_results import DriveOptimum
-from .limits import CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX, MARGIN_TOL
+from .limits import (CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX, LOOK_AHEAD,
+                     MARGIN_TOL)
 from .stage_kinds import StageFlow, kind_of
 from .stages import Shaft
 
@@ -213,8 +214,7 @@ class Search:
 
     def _solution(self, k: int, c: int) -> dict:
         """Stage k's option at design c solved (kept per option, and per input flow when it depends on it)."""
-        j = int(self.idx[c, k])
-        key = (k, j, int(self.flow_group[k][c])) if k in self.flow_group else (k, j)
+        key = self._key(k, c)
         if key not in self._solved:
             kind = self.kinds[k]
             before = kind.solve_count()
@@ -222,6 +222,30 @@ class Search:
             self._solved[key] = kind.solve(self.stages[k], self.option_at(k, c), self.objective, flow)
             self.n_solves += kind.solve_count() - before
         return self._solved[key]
+
+    def _key(self, k: int, c: int) -> tuple:
+        j = int(self.idx[c, k])
+        return (k, j, int(self.flow_group[k][c])) if k in self.flow_group else (k, j)
+
+    def _solve_ahead(self, firsts) -> None:
+        """The unsolved options of the groups whose first designs are ``firsts`` (the walk's next ones,
+        all still within the bound: a group the walk stops before costs a solve, never a result), each
+        stage's solved together (:meth:`StageKind.solve_many`), so that their fixed costs are shared."""
+        for k in self.solved_k:
+            if not self.kinds[k].solves_together(self.stages[k]):
+                continue
+            todo: dict = {}
+            for c in firsts:
+                todo.setdefault(self._key(k, c), c)
+            todo = {key: c for key, c in todo.items() if key not in self._solved}
+            if len(todo) < 2:
+                continue
+            kind, load = self.kinds[k], k in self.flow_group
+            before = kind.solve_count()
+            sols = kind.solve_many(self.stages[k], [self.option_at(k, c) for c in todo.values()], self.objective,
+                                   [self.flow_at(k, c) if load else None for c in todo.values()])
+            self._solved.update(zip(todo, sols))
+            self.n_solves += kind.solve_count() - before
 
     def _lower_bounds(self) -> np.ndarray:
         """Each design's cost whatever its solved stages give (their bounds; margins unknown)."""
@@ -269,8 +293,7 @@ class Search:
         items, keys = [], []
         for c in firsts:
             for k in self.solved_k:
-                j = int(self.idx[c, k])
-                key = (k, j, int(self.flow_group[k][c])) if k in self.flow_group else (k, j)
+                key = self._key(k, c)
                 if key not in self._solved and key not in keys:
                     keys.append(key)
                     items.append((k, self.option_at(k, c), self.flow_at(k, c) if k in self.flow_group else None))
@@ -298,10 +321,12 @@ class Search:
         if where and parallel.requested(**where):
             self._presolve(order[starts[np.argsort(glb, kind="stable")]], where)
         heap: list = []          # the `top` best costs so far, as a max-heap of −cost
-        for g in np.argsort(glb, kind="stable"):
+        walk = np.argsort(glb, kind="stable")
+        for i, g in enumerate(walk):
             if len(heap) >= top and glb[g] > -heap[0] + 1e-12 * abs(heap[0]):
                 break      # no design of this or any later group can enter the list
             members = order[starts[g]:ends[g]]
+            self._solve_ahead(order[starts[walk[i:i + LOOK_AHEAD]]])
             sols = [self._solution(k, members[0]) for k in self.solved_k]
             if progress is not None:
                 progress(int(np.count_nonzero(glb <= glb[g])), starts.size)

@@ -102,6 +102,16 @@ class StageKind:
         :class:`StageFlow` into the stage when :meth:`load_dependent` says the solve needs it, else None."""
         raise NotImplementedError(f"stage kind {self.name!r} solves nothing one by one")
 
+    def solves_together(self, stage) -> bool:
+        """True when :meth:`solve_many` shares work between options (the search then hands it the
+        options it will likely need next)."""
+        return False
+
+    def solve_many(self, stage, options: list, objective: str, flows: list) -> list:
+        """:meth:`solve` of several options (``flows``: theirs, or Nones), in order; a kind may share
+        work between them (the same solutions as one by one)."""
+        return [self.solve(stage, o, objective, f) for o, f in zip(options, flows)]
+
     def solve_count(self) -> int:
         """How many costly solves the kind has done so far (for the optimum's count)."""
         return 0

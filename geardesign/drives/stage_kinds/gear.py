@@ -28,7 +28,7 @@ from ...validate import one_number, require_range
 from ..limits import MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
 from .base import ToothedKind
-from .gear_strength import strength_margins, strength_sizes
+from .gear_strength import strength_margins, strength_sizes, strength_sizes_many
 
 __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution"]
 
@@ -101,10 +101,21 @@ def _series() -> np.ndarray:
 
 
 def _shifts_scale_free(stage: GearStage) -> bool:
-    """True when the pair's shift solution does not depend on its module and face width: every
-    geometric check is a margin in units of the module, and the face width enters only ε_β, i.e. the
-    ε_γ check of a helical pair."""
-    return stage.beta_deg == 0.0 or (stage.checks or {}).get("eps_gamma_min") is None
+    """True when the pair's shift solution does not depend on its module and face width: each of its
+    checks is a built-in geometric one, a margin in units of the module; the face width enters only
+    ε_β, i.e. the ε_γ check of a helical pair. (A registered check or a strength check in ``checks``
+    may depend on lengths in mm: such a stage is solved at each module.)"""
+    return _scale_free_checks(stage.checks_key(), stage.beta_deg != 0.0)
+
+
+@lru_cache(maxsize=64)
+def _scale_free_checks(checks_key: tuple, helical: bool) -> bool:
+    from ...gears.checks import resolve_checks   # here: the check registry loads pandas
+    from ...gears.checks.external import (ContactRatio, Interference, Jamming, TipThickness, TotalContactRatio,
+                                          Undercut)
+
+    free = (Undercut, Interference, Jamming, TipThickness, ContactRatio) + (() if helical else (TotalContactRatio,))
+    return all(type(c) in free for c in resolve_checks(dict(checks_key) or None))
 
 
 class GearKind(ToothedKind):
@@ -205,6 +216,30 @@ class GearKind(ToothedKind):
         if stage.m is None:
             return self._sized(stage, z1, z2, objective, flow)
         return self._with_strength(stage, gear_solution(stage, z1, z2, objective), z1, z2, flow)
+
+    def solves_together(self, stage) -> bool:
+        """A stage sized by the strength checks whose shifts do not depend on the module."""
+        return stage.m is None and _SIZING[0] is None and stage.material is not None and _shifts_scale_free(stage)
+
+    def solve_many(self, stage, options: list, objective: str, flows: list) -> list:
+        """Tooth pairs of a stage sized by the strength checks (:meth:`solves_together`) sized together:
+        one vectorised strength call per input flow; any other stage one by one."""
+        if not self.solves_together(stage):
+            return super().solve_many(stage, options, objective, flows)
+        pairs = [(int(o["z1"]), int(o["z2"])) for o in options]
+        refs = [gear_solution(replace(stage, m=1.0), z1, z2, objective) for z1, z2 in pairs]
+        out = [None] * len(options)
+        by_flow: dict = {}
+        for i, (ref, flow) in enumerate(zip(refs, flows)):
+            if "x1" in ref:
+                by_flow.setdefault((flow.torque_in_nm, flow.n_in_rpm), []).append(i)
+        for (torque, speed), idx in by_flow.items():
+            sizes = strength_sizes_many(stage, torque, speed, [(*pairs[i], refs[i]["x1"], refs[i]["x2"]) for i in idx],
+                                        _series(), MARGIN_TOL)
+            for i, (cands, best) in zip(idx, sizes):
+                out[i] = self._scaled(refs[i], *best) if cands else None
+        return [sol if sol is not None else self.solve(stage, o, objective, f)      # unsized: as one by one
+                for sol, o, f in zip(out, options, flows)]
 
     def solve_count(self) -> int:
         return shift_solution.cache_info().misses

@@ -29,7 +29,7 @@ import numpy as np
 from ..stages import stage_material
 
 __all__ = ["STRENGTH_CHECKS", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
-           "strength_sizes"]
+           "strength_sizes", "strength_sizes_many"]
 
 STRENGTH_CHECKS = ("contact_strength", "root_strength1", "root_strength2")
 WIDTH_TO_DIAMETER_RANGE = (0.2, 1.0)
@@ -63,9 +63,26 @@ def strength_sizes(stage, torque_nm: float, speed_rpm: float, z1: int, z2: int, 
     """(candidates, best): the (m, b) that hold every strength check at shifts x1, x2, smallest module
     first, then narrowest; and (m, b, {check: margin}) of the first candidate, or when none holds, of
     the (m, b) closest to holding."""
-    M, B = _widths(stage, np.asarray(modules, dtype=float), z1)
+    return strength_sizes_many(stage, torque_nm, speed_rpm, [(z1, z2, x1, x2)], modules, tol)[0]
+
+
+def strength_sizes_many(stage, torque_nm: float, speed_rpm: float, pairs, modules: np.ndarray, tol: float) -> list:
+    """:func:`strength_sizes` of several tooth pairs ``pairs`` [(z1, z2, x1, x2), ...] at one load, in one
+    vectorised call (its fixed cost shared)."""
+    modules = np.asarray(modules, dtype=float)
+    grids = [_widths(stage, modules, z1) for z1, _, _, _ in pairs]
+    M = np.stack([np.broadcast_to(m, grids[0][0].shape) for m, _ in grids])
+    B = np.stack([np.broadcast_to(b, grids[0][0].shape) for _, b in grids])
+    z1, z2 = (np.array([p[i] for p in pairs], dtype=np.int64)[:, None, None] for i in (0, 1))
+    x1, x2 = (np.array([p[i] for p in pairs], dtype=float)[:, None, None] for i in (2, 3))
     margins = strength_margins(stage, M, B, z1, z2, x1, x2, torque_nm, speed_rpm)
-    worst = np.minimum.reduce([np.broadcast_to(margins[k], M.shape) for k in STRENGTH_CHECKS])
+    margins = {k: np.broadcast_to(v, M.shape) for k, v in margins.items()}
+    return [_first_size(M[i], B[i], {k: v[i] for k, v in margins.items()}, tol) for i in range(len(pairs))]
+
+
+def _first_size(M: np.ndarray, B: np.ndarray, margins: dict, tol: float) -> tuple:
+    """(candidates, best) of one pair's (m, b) grid and its margins, as :func:`strength_sizes` returns."""
+    worst = np.minimum.reduce([margins[k] for k in STRENGTH_CHECKS])
     worst = np.where(np.isnan(worst), -np.inf, worst)
     ok = worst >= -tol
     order = np.lexsort((B[ok], M[ok]))
@@ -74,4 +91,4 @@ def strength_sizes(stage, torque_nm: float, speed_rpm: float, z1: int, z2: int, 
         i = tuple(np.argwhere(ok)[order[0]])
     else:
         i = np.unravel_index(np.argmax(worst), M.shape)
-    return cands, (float(M[i]), float(B[i]), {k: float(np.broadcast_to(v, M.shape)[i]) for k, v in margins.items()})
+    return cands, (float(M[i]), float(B[i]), {k: float(v[i]) for k, v in margins.items()})
