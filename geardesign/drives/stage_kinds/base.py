@@ -11,7 +11,9 @@ A stage kind is one object with these parts (defaults here fit a stage with noth
   multiply the designs, e.g. catalog rows);
 - **margins in a batch**: :meth:`~StageKind.batch` (every margin, size and mass of many designs at
   once), or, for a kind whose options are costly (``solved = True``), :meth:`~StageKind.solve` one
-  option at a time inside the branch and bound with :meth:`~StageKind.bound` below its cost;
+  option at a time inside the branch and bound with :meth:`~StageKind.bound` below its cost
+  (:meth:`~StageKind.solve_many` several at once, when :meth:`~StageKind.solves_together` says that
+  shares work);
 - **analyse**: :meth:`~StageKind.analyse` receives the flow into and out of the stage
   (:class:`StageFlow`: speed rpm, torque N·m) and returns its checks, size, mass and summary;
 - **scenes**: :meth:`~StageKind.scene_keys` and :meth:`~StageKind.from_scene`;
