@@ -31,7 +31,11 @@ def add_parser(subparsers):
         description="Link the stages of a scene's [drive] section (motor, given units, gear pairs, chains, keyed "
                     "shafts): analyse the power flow, or with total_ratio optimise the ratio split and every free "
                     "variable together (see docs/drive_train.md). Exit status 0 when every check of the drive holds, 1 "
-                    "when one fails (the output names the stage and check), 2 on bad input.")
+                    "when one fails (the output names the stage and check), 2 on bad input.",
+        epilog="Load options for a drive: --power or --torque with --speed replace the scene's input; --material, "
+               "--life-h, --application-factor and --strength-width apply to every gear stage that does not set "
+               "its own (a gear stage without module is then sized by its load); --on-gear 2 and --material2 are "
+               "refused (each stage carries its own shaft's load, in one material).")
     p.add_argument("scene", help="a scene file (.toml) with a [drive] section")
     add_output_file(p, "--plot", "PNG", "the drive's diagram")
     p.add_argument("--report", metavar="HTML", default=None,
