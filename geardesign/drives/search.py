@@ -228,8 +228,8 @@ class Search:
         return (k, j, int(self.flow_group[k][c])) if k in self.flow_group else (k, j)
 
     def _solve_ahead(self, firsts) -> None:
-        """The unsolved options of the groups whose first designs are ``firsts`` (the walk's next ones,
-        all still within the bound: a group the walk stops before costs a solve, never a result), each
+        """The unsolved options of the groups whose first designs are ``firsts`` (the walk's next ones
+        within the bound so far: one the walk then stops before costs a solve, never a result), each
         stage's solved together (:meth:`StageKind.solve_many`), so that their fixed costs are shared."""
         for k in self.solved_k:
             if not self.kinds[k].solves_together(self.stages[k]):
@@ -323,10 +323,12 @@ class Search:
         heap: list = []          # the `top` best costs so far, as a max-heap of −cost
         walk = np.argsort(glb, kind="stable")
         for i, g in enumerate(walk):
-            if len(heap) >= top and glb[g] > -heap[0] + 1e-12 * abs(heap[0]):
+            limit = -heap[0] + 1e-12 * abs(heap[0]) if len(heap) >= top else math.inf
+            if glb[g] > limit:
                 break      # no design of this or any later group can enter the list
             members = order[starts[g]:ends[g]]
-            self._solve_ahead(order[starts[walk[i:i + LOOK_AHEAD]]])
+            ahead = walk[i:i + LOOK_AHEAD]
+            self._solve_ahead(order[starts[ahead[glb[ahead] <= limit]]])
             sols = [self._solution(k, members[0]) for k in self.solved_k]
             if progress is not None:
                 progress(int(np.count_nonzero(glb <= glb[g])), starts.size)
@@ -490,7 +492,7 @@ class Search:
 def _row_groups(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Each row's index among the distinct rows (a, b), numbered in their sorted order (as
     np.unique(..., axis=0) numbers them, without its row-wise sort of ~10⁶ rows)."""
-    ua, ia = np.unique(a, return_inverse=True)
+    _, ia = np.unique(a, return_inverse=True)
     ub, ib = np.unique(b, return_inverse=True)
     _, inv = np.unique(ia.ravel() * ub.size + ib.ravel(), return_inverse=True)
     return inv.ravel()
