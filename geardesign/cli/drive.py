@@ -3,9 +3,17 @@
 Prints the power flow, every check of the drive, the keys and (optimised) the ranked alternatives;
 ``--plot FILE`` writes the drive's diagram, ``--json`` prints the result. Exit status 0 when every
 check holds, 1 when the drive fails (the output names the stage and checks), 2 on bad input.
+
+The load options of ``pair``/``shift``/``teeth`` (:func:`~geardesign.cli.options.add_load_args`) mean
+here: ``--power``/``--torque`` and ``--speed`` the drive's input (instead of the scene's; the power
+flow brings each gear stage its own torque and speed), ``--material``, ``--life-h``,
+``--application-factor`` and ``--strength-width`` the load case of every gear stage that does not set
+its own in the scene (a stage without ``module`` is then sized by its load). ``--on-gear 2`` and
+``--material2`` have no meaning for a drive and are refused.
 """
 from __future__ import annotations
 
+import math
 import sys
 
 from ..errors import GearDesignError
@@ -13,7 +21,7 @@ from ..files import check_output_path, write_file_atomic
 from ..scene.drive import compute_drive
 from ..scene.html import drive_report
 from ..scene.load import load_scene
-from .options import add_cluster_args, add_output_file, cluster_from_args
+from .options import add_cluster_args, add_load_args, add_output_file, cluster_from_args
 from .output import Progress, add_json_flag, print_frame, print_json, print_wrapped
 
 
@@ -23,14 +31,65 @@ def add_parser(subparsers):
         description="Link the stages of a scene's [drive] section (motor, given units, gear pairs, chains, keyed "
                     "shafts): analyse the power flow, or with total_ratio optimise the ratio split and every free "
                     "variable together (see docs/drive_train.md). Exit status 0 when every check of the drive holds, 1 "
-                    "when one fails (the output names the stage and check), 2 on bad input.")
+                    "when one fails (the output names the stage and check), 2 on bad input.",
+        epilog="Load options for a drive: --power or --torque with --speed replace the scene's input; --material, "
+               "--life-h, --application-factor and --strength-width apply to every gear stage that does not set "
+               "its own (a gear stage without module is then sized by its load); --on-gear 2 and --material2 are "
+               "refused (each stage carries its own shaft's load, in one material).")
     p.add_argument("scene", help="a scene file (.toml) with a [drive] section")
     add_output_file(p, "--plot", "PNG", "the drive's diagram")
     p.add_argument("--report", metavar="HTML", default=None,
                    help="write a one-page report (checks, power flow, stages, gear geometry, keys, diagram) to this HTML file")
     add_json_flag(p)
+    add_load_args(p)
     add_cluster_args(p)
     return p
+
+
+_STAGE_LOAD = (("material", "material"), ("life_h", "life_h"), ("application_factor", "application_factor"),
+               ("strength_width", "face_width_mm"))
+
+
+def _input_from_args(section: dict, args) -> dict:
+    """The [drive] head with --power/--torque/--speed as the drive's input."""
+    if args.power is None and args.torque is None and args.speed is None:
+        return section
+    if "motor" in section:
+        raise GearDesignError("--power/--torque/--speed: the scene's [drive.motor] sets the drive's input; "
+                              "give either the motor or these options")
+    from ..gears.strength import Load   # validates the options by their names and ranges
+
+    speed = args.speed if args.speed is not None else section.get("n_in_rpm")
+    if speed is None:
+        raise GearDesignError("--speed: the drive's input speed is needed (the scene's [drive] gives no n_in_rpm)")
+    out = dict(section, n_in_rpm=speed)
+    if args.power is not None or args.torque is not None:
+        load = Load(torque_nm=args.torque, power_kw=args.power, n_rpm=speed)
+        out.pop("output_torque_nm", None)
+        out["power_kw"] = load.torque_nm * speed * 2 * math.pi / 60_000 if args.power is None else args.power
+    return out
+
+
+def _with_load(section: dict, args) -> dict:
+    """The [drive] section with the command's load options (see the module's docstring)."""
+    if args.on_gear != 1:
+        raise GearDesignError(f"--on-gear: a drive's load is at its input shaft, the pinion of its first stage "
+                              f"(--on-gear 1); got {args.on_gear}")
+    if args.material2 is not None:
+        raise GearDesignError(f"--material2: a drive's gear stages take one material for both gears (--material); "
+                              f"got {args.material2!r}")
+    out = _input_from_args(section, args)
+    given = {key: getattr(args, opt) for opt, key in _STAGE_LOAD
+             if getattr(args, opt) is not None and not (opt == "application_factor" and args.application_factor == 1.0)}
+    if not given:
+        return out
+    gears = [i for i, st in enumerate(out["stages"]) if st["kind"] == "gear"]
+    if not gears:
+        raise GearDesignError(f"--{next(iter(given)).replace('_', '-')}: the scene's drive has no gear stage")
+    stages = list(out["stages"])
+    for i in gears:
+        stages[i] = {**given, **stages[i]}     # the stage's own keys win
+    return dict(out, stages=stages)
 
 
 def run(args) -> int:
@@ -43,7 +102,8 @@ def run(args) -> int:
     bar = Progress(1, "drive: gear pairs")
     try:
         with cluster_from_args(args) as client:
-            drive, motor, opt, an = compute_drive({**scene.sections["drive"], "_client": client}, bar.to)
+            drive, motor, opt, an = compute_drive({**_with_load(scene.sections["drive"], args), "_client": client},
+                                                  bar.to)
     finally:
         if bar.done:
             bar.close()
@@ -79,6 +139,11 @@ def run(args) -> int:
         print()
         print_wrapped(f"analysis: {an.message}")
         print_frame(an.flow, title="power flow:")
+        print()
+        print("stages:")
+        for st in an.stages:     # a gear stage sized by its load shows its module and face width here
+            print_wrapped("  " + ", ".join(f"{k} = {v:.6g}" if isinstance(v, float) else f"{k} = {v}"
+                                           for k, v in st["summary"].items()))
         print()
         print_frame(an.checks, title="checks:")
         if len(an.keys):

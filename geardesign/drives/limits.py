@@ -3,7 +3,7 @@ from __future__ import annotations
 
 __all__ = ["OBJECTIVES", "STAGES_MAX", "COMBINATIONS_MAX", "CANDIDATES_MAX", "TOP_MAX", "TOTAL_RATIO_RANGE",
            "RATIO_TOL_RANGE", "SPEED_RANGE_RPM", "POWER_RANGE_KW", "TORQUE_RANGE_NM", "MARGIN_TOL", "SHIFT_CACHE",
-           "INFEASIBLE_SHOWN", "LOAD_BOUNDS_MAX", "SIZING_TRIES"]
+           "INFEASIBLE_SHOWN", "LOAD_BOUNDS_MAX", "SIZING_TRIES", "LOOK_AHEAD"]
 
 OBJECTIVES = ("min_size", "min_mass", "max_margin")
 STAGES_MAX = 6                    # stages in one drive
@@ -20,3 +20,5 @@ SHIFT_CACHE = 4096                # solved tooth pairs kept between calls (each 
 INFEASIBLE_SHOWN = 5              # closest failing designs listed after the feasible ones
 LOAD_BOUNDS_MAX = 20_000          # (option, input flow) bounds of a stage sized by load; beyond, its load-free bound
 SIZING_TRIES = 8                  # sized candidates re-solved for their own shifts before a tooth pair is given up
+LOOK_AHEAD = 8                    # groups of the branch and bound whose options are solved together (a pair's
+                                  # strength sizing shares one vectorised call); at most 7 solved past the stop

@@ -32,7 +32,8 @@ from .. import parallel
 from ..errors import GearDesignError
 from . import key
 from .drive_results import DriveOptimum
-from .limits import CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX, MARGIN_TOL
+from .limits import (CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX, LOOK_AHEAD,
+                     MARGIN_TOL)
 from .stage_kinds import StageFlow, kind_of
 from .stages import Shaft
 
@@ -208,14 +209,12 @@ class Search:
         groups = {}
         for k in self.solved_k:
             if self.kinds[k].load_dependent(self.stages[k]):
-                _, inv = np.unique(np.column_stack([self.n[:, k], self.T[:, k]]), axis=0, return_inverse=True)
-                groups[k] = inv.ravel()
+                groups[k] = _row_groups(self.n[:, k], self.T[:, k])
         return groups
 
     def _solution(self, k: int, c: int) -> dict:
         """Stage k's option at design c solved (kept per option, and per input flow when it depends on it)."""
-        j = int(self.idx[c, k])
-        key = (k, j, int(self.flow_group[k][c])) if k in self.flow_group else (k, j)
+        key = self._key(k, c)
         if key not in self._solved:
             kind = self.kinds[k]
             before = kind.solve_count()
@@ -223,6 +222,30 @@ class Search:
             self._solved[key] = kind.solve(self.stages[k], self.option_at(k, c), self.objective, flow)
             self.n_solves += kind.solve_count() - before
         return self._solved[key]
+
+    def _key(self, k: int, c: int) -> tuple:
+        j = int(self.idx[c, k])
+        return (k, j, int(self.flow_group[k][c])) if k in self.flow_group else (k, j)
+
+    def _solve_ahead(self, firsts) -> None:
+        """The unsolved options of the groups whose first designs are ``firsts`` (the walk's next ones
+        within the bound so far: one the walk then stops before costs a solve, never a result), each
+        stage's solved together (:meth:`StageKind.solve_many`), so that their fixed costs are shared."""
+        for k in self.solved_k:
+            if not self.kinds[k].solves_together(self.stages[k]):
+                continue
+            todo: dict = {}
+            for c in firsts:
+                todo.setdefault(self._key(k, c), c)
+            todo = {key: c for key, c in todo.items() if key not in self._solved}
+            if len(todo) < 2:
+                continue
+            kind, load = self.kinds[k], k in self.flow_group
+            before = kind.solve_count()
+            sols = kind.solve_many(self.stages[k], [self.option_at(k, c) for c in todo.values()], self.objective,
+                                   [self.flow_at(k, c) if load else None for c in todo.values()])
+            self._solved.update(zip(todo, sols))
+            self.n_solves += kind.solve_count() - before
 
     def _lower_bounds(self) -> np.ndarray:
         """Each design's cost whatever its solved stages give (their bounds; margins unknown)."""
@@ -239,8 +262,9 @@ class Search:
         its load per (option, input flow) while there are at most LOAD_BOUNDS_MAX of them."""
         kind, st = self.kinds[k], self.stages[k]
         if k in self.flow_group:
-            pairs, first, inv = np.unique(np.column_stack([self.idx[:, k], self.flow_group[k]]), axis=0,
-                                          return_index=True, return_inverse=True)
+            fg = self.flow_group[k]
+            pairs, first, inv = np.unique(self.idx[:, k] * (int(fg.max()) + 1) + fg, return_index=True,
+                                          return_inverse=True)
             if len(pairs) <= LOAD_BOUNDS_MAX:
                 b = np.array([kind.bound_at(st, self.option_at(k, c), self.flow_at(k, c)) for c in first])
                 return b[inv.ravel(), 0], b[inv.ravel(), 1]
@@ -269,8 +293,7 @@ class Search:
         items, keys = [], []
         for c in firsts:
             for k in self.solved_k:
-                j = int(self.idx[c, k])
-                key = (k, j, int(self.flow_group[k][c])) if k in self.flow_group else (k, j)
+                key = self._key(k, c)
                 if key not in self._solved and key not in keys:
                     keys.append(key)
                     items.append((k, self.option_at(k, c), self.flow_at(k, c) if k in self.flow_group else None))
@@ -298,10 +321,14 @@ class Search:
         if where and parallel.requested(**where):
             self._presolve(order[starts[np.argsort(glb, kind="stable")]], where)
         heap: list = []          # the `top` best costs so far, as a max-heap of −cost
-        for g in np.argsort(glb, kind="stable"):
-            if len(heap) >= top and glb[g] > -heap[0] + 1e-12 * abs(heap[0]):
+        walk = np.argsort(glb, kind="stable")
+        for i, g in enumerate(walk):
+            limit = -heap[0] + 1e-12 * abs(heap[0]) if len(heap) >= top else math.inf
+            if glb[g] > limit:
                 break      # no design of this or any later group can enter the list
             members = order[starts[g]:ends[g]]
+            ahead = walk[i:i + LOOK_AHEAD]
+            self._solve_ahead(order[starts[ahead[glb[ahead] <= limit]]])
             sols = [self._solution(k, members[0]) for k in self.solved_k]
             if progress is not None:
                 progress(int(np.count_nonzero(glb <= glb[g])), starts.size)
@@ -460,6 +487,15 @@ class Search:
         fixed = replace(self.drive, stages=tuple(new))
         object.__setattr__(fixed, "_load_from_motor", self.drive._load_from_motor)
         return fixed
+
+
+def _row_groups(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Each row's index among the distinct rows (a, b), numbered in their sorted order (as
+    np.unique(..., axis=0) numbers them, without its row-wise sort of ~10⁶ rows)."""
+    _, ia = np.unique(a, return_inverse=True)
+    ub, ib = np.unique(b, return_inverse=True)
+    _, inv = np.unique(ia.ravel() * ub.size + ib.ravel(), return_inverse=True)
+    return inv.ravel()
 
 
 @lru_cache(maxsize=256)

@@ -134,10 +134,13 @@ class GearStage:
     ``face_width_mm`` enters ε_β (helical) and the mass model (default 4πm).
 
     ``m=None`` leaves the module (and, with ``face_width_mm=None``, the face width) to be sized by
-    the load the stage carries: the search and ``Drive.analyse`` ask the sizing function installed
-    with :func:`geardesign.drives.stage_kinds.set_sizing` for modules of the ISO 54 series at each
-    design's torque and speed (``material`` is handed to it). None is installed by default (the
-    tooth-strength model is not part of this version), so such a stage is refused until one is.
+    the load the stage carries: with a ``material``, the smallest module of the ISO 54 series (then the
+    narrowest face width) whose ISO 6336 strength checks hold at each design's torque and speed
+    (:mod:`geardesign.drives.stage_kinds.gear_strength`); or the sizing function installed with
+    :func:`geardesign.drives.stage_kinds.set_sizing`. Without either such a stage is refused by name.
+
+    ``life_h`` (None: endurance, Z_NT = Y_NT = 1) and ``application_factor`` (K_A) are the load case of
+    the strength checks of a stage with a ``material``, as in :class:`geardesign.gears.strength.Load`.
     """
 
     m: float | None = None
@@ -155,6 +158,8 @@ class GearStage:
     shift_objective: str | None = None
     name: str = "gear"
     material: object = None
+    life_h: float | None = None
+    application_factor: float = 1.0
 
     kind = "gear"
 
@@ -188,6 +193,12 @@ class GearStage:
         resolve_checks(self.checks)    # unknown keys are refused here, not mid-search
         if self.material is not None:   # an unknown material is refused here, not mid-search
             stage_material(self.material)
+        from ..gears.strength.load import APPLICATION_FACTOR_RANGE, LIFE_RANGE_H
+        object.__setattr__(self, "application_factor", one_number("application_factor", require_range(
+            "application_factor", self.application_factor, *APPLICATION_FACTOR_RANGE)))
+        if self.life_h is not None:
+            object.__setattr__(self, "life_h", one_number("life_h", require_range(
+                "life_h", self.life_h, *LIFE_RANGE_H, lo_open=True, unit="h")))
         if self.x1 is not None and self.m is not None:
             self.fixed_pair()          # a fixed pair that cannot be built is refused here
         if self.shift_objective is not None:
@@ -209,6 +220,13 @@ class GearStage:
         if self.m is None:
             raise GearDesignError(f"gear stage '{self.name}' has no module yet (m=None: sized by its load)")
         return FACE_WIDTH_PITCHES * math.pi * self.m
+
+    def load(self, torque_nm: float, speed_rpm: float):
+        """The strength checks' load case: ``torque_nm`` on the pinion at ``speed_rpm``, with the
+        stage's life and application factor."""
+        from ..gears.strength import Load   # here: the strength model loads pandas
+        return Load(torque_nm=float(torque_nm), n_rpm=float(speed_rpm), life_h=self.life_h,
+                    application_factor=self.application_factor)
 
     def checks_key(self) -> tuple:
         return tuple(sorted((self.checks or {}).items()))

@@ -83,3 +83,93 @@ def test_run_writes_the_drive_report(tmp_path, capsys):
     text = (out / "report.md").read_text()
     assert "### Power flow" in text and "![drive diagram](drive_diagram.png)" in text
     assert (out / "drive_diagram.png").is_file() and (out / "drive_flow.csv").is_file()
+
+
+# -- the load options (--material, --power/--torque/--speed, --life-h, ...): each gear stage's strength checks
+# equal the pair's own StrengthResult (GearPair.strength) at the torque and speed the flow brings it, worked by
+# hand here: T = P/ω·u·η upstream of the stage.
+LOADED = ("[drive]\npower_kw = 7.5\nn_in_rpm = 1450\n[[drive.stage]]\nkind = 'given'\nratio = 2\nefficiency = 0.95\n"
+          "[[drive.stage]]\nkind = 'gear'\nmodule = 4\nz1 = 20\nz2 = 60\nface_width_mm = 40\n")
+
+
+def _strength_margins(stage, torque_nm, n_rpm, material="42CrMo4", **load):
+    import geardesign as gd
+    from geardesign.gears.strength import Load
+
+    pair = gd.GearPair(stage["m"], stage["z1"], stage["z2"], stage["x1"], stage["x2"], face_width_mm=40)
+    res = pair.strength(Load(torque_nm=torque_nm, n_rpm=n_rpm, **load), material)
+    return {"contact_strength": min(res.S_H1, res.S_H2) / res.S_Hmin - 1, "root_strength1": res.S_F1 / res.S_Fmin - 1,
+            "root_strength2": res.S_F2 / res.S_Fmin - 1}
+
+
+def _drive_json(capsys, argv):
+    code = main(["drive", *argv, "--json"])
+    data = json.loads(capsys.readouterr().out)
+    got = {c["check"]: c["margin"] for c in data["analysis"]["checks"] if c["item"] == "gear"}
+    return code, data, got
+
+
+@pytest.mark.parametrize("options, torque_nm, n_rpm, load", [
+    ([], 7500 / (2 * math.pi * 1450 / 60) * 2 * 0.95, 725, {}),                     # the scene's input
+    (["--power", "15", "--speed", "1000"], 15000 / (2 * math.pi * 1000 / 60) * 2 * 0.95, 500, {}),
+    (["--torque", "80"], 80 * 2 * 0.95, 725, {}),                                     # at the scene's 1450 rpm
+    (["--life-h", "2000", "--application-factor", "1.25"], 7500 / (2 * math.pi * 1450 / 60) * 2 * 0.95, 725,
+     {"life_h": 2000, "application_factor": 1.25}),
+])
+def test_drive_load_options_reach_the_gear_stage(tmp_path, capsys, options, torque_nm, n_rpm, load):
+    code, data, got = _drive_json(capsys, [_scene(tmp_path, LOADED), "--material", "42CrMo4", *options])
+    flow = data["analysis"]["flow"]
+    assert flow[1]["torque_nm"] == pytest.approx(torque_nm / 0.98 * 0.98, rel=1e-13)   # into the gear stage
+    assert flow[1]["n_rpm"] == pytest.approx(n_rpm, rel=1e-14)
+    want = _strength_margins(data["analysis"]["stages"][1], torque_nm, n_rpm, **load)
+    assert {k: got[k] for k in want} == pytest.approx(want, rel=1e-12)
+    assert code == (0 if min(data["analysis"]["checks"], key=lambda c: c["margin"])["margin"] >= -1e-9 else 1)
+
+
+def test_drive_stage_material_of_the_scene_wins_and_a_free_module_is_sized(tmp_path, capsys):
+    body = LOADED.replace("module = 4\n", "material = 'C45'\n").replace("face_width_mm = 40\n", "")
+    code, data, got = _drive_json(capsys, [_scene(tmp_path, body), "--material", "42CrMo4"])
+    stage = data["analysis"]["stages"][1]
+    # sized by its own load, with its own material: the smallest ISO 54 module whose checks hold
+    assert code == 0 and stage["m"] in (1, 1.125, 1.25, 1.375, 1.5, 1.75, 2, 2.25, 2.5, 2.75, 3, 3.5, 4, 4.5, 5, 5.5, 6)
+    import geardesign as gd
+    from geardesign.gears.strength import Load
+
+    pair = gd.GearPair(stage["m"], 20, 60, stage["x1"], stage["x2"], face_width_mm=stage["face_width_mm"])
+    res = pair.strength(Load(torque_nm=7500 / (2 * math.pi * 1450 / 60) * 2 * 0.95, n_rpm=725), "C45")
+    assert got["contact_strength"] == pytest.approx(min(res.S_H1, res.S_H2) / res.S_Hmin - 1, rel=1e-12)
+    assert min(got.values()) >= -1e-9
+
+
+@pytest.mark.parametrize("options, words", [
+    (["--on-gear", "2"], "--on-gear"),
+    (["--material2", "C45"], "--material2"),
+    (["--material", "unobtainium"], "unobtainium"),
+    (["--life-h", "-5", "--material", "C45"], "life_h"),
+    (["--power", "4", "--torque", "20"], "torque"),
+])
+def test_drive_bad_load_options_one_line_exit_2(tmp_path, capsys, options, words):
+    assert main(["drive", _scene(tmp_path, LOADED), *options]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and words in err
+
+
+def test_drive_load_options_without_a_gear_stage_or_beside_a_motor_are_refused(tmp_path, capsys):
+    assert main(["drive", _scene(tmp_path, GIVEN), "--material", "C45"]) == 2
+    assert "no gear stage" in capsys.readouterr().err
+    motor = GIVEN.replace("power_kw = 4\nn_in_rpm = 1500\n", "[drive.motor]\npower_kw = 4\nspeed_rpm = 1500\n")
+    assert main(["drive", _scene(tmp_path, motor), "--power", "3"]) == 2
+    assert "[drive.motor]" in capsys.readouterr().err
+
+
+def test_drive_strength_width_is_the_face_width_of_stages_without_one(tmp_path, capsys):
+    import geardesign as gd
+    from geardesign.gears.strength import Load
+
+    body = LOADED.replace("face_width_mm = 40\n", "")
+    code, data, got = _drive_json(capsys, [_scene(tmp_path, body), "--material", "42CrMo4", "--strength-width", "30"])
+    stage = data["analysis"]["stages"][1]
+    assert stage["face_width_mm"] == 30
+    pair = gd.GearPair(4, 20, 60, stage["x1"], stage["x2"], face_width_mm=30)
+    res = pair.strength(Load(torque_nm=7500 / (2 * math.pi * 1450 / 60) * 2 * 0.95, n_rpm=725), "42CrMo4")
+    assert got["root_strength1"] == pytest.approx(res.S_F1 / res.S_Fmin - 1, rel=1e-12)

@@ -120,3 +120,42 @@ def test_a_drive_whose_gear_cannot_carry_the_load_names_the_strength_checks():
         res = gd.GearPair(1.5, 17, z2, o.x1, o.x2, face_width_mm=4 * math.pi * 1.5).strength(
             Load(torque_nm=t_in, n_rpm=1480), "42CrMo4")
         assert max(res.S_H1, res.S_H2) < res.S_Hmin and max(res.S_F1, res.S_F2) < res.S_Fmin
+
+
+def test_the_stage_load_case_takes_its_life_and_application_factor():
+    """GearStage(life_h=, application_factor=): the strength checks are the pair's StrengthResult under
+    Load(..., life_h, application_factor) at the stage's own torque and speed."""
+    stage = gd.GearStage(4, z1=20, z2=60, face_width_mm=40, material="42CrMo4", life_h=5000, application_factor=1.5)
+    a = gd.Drive(power_kw=7.5, n_in_rpm=1450, stages=[gd.GivenStage(2, 0.95, "belt"), stage]).analyse()
+    s = a.stages[1]["summary"]
+    pair = gd.GearPair(4, 20, 60, s["x1"], s["x2"], face_width_mm=40)
+    t_in = 7500 / _omega(1450) * 2 * 0.95
+    want = _margins(pair.strength(Load(torque_nm=t_in, n_rpm=725, life_h=5000, application_factor=1.5), "42CrMo4"))
+    got = a.checks[a.checks["item"] == "gear"].set_index("check")["margin"]
+    assert {k: got[k] for k in want} == pytest.approx(want, rel=1e-12)
+    endurance = _margins(pair.strength(Load(torque_nm=t_in, n_rpm=725), "42CrMo4"))
+    assert want["contact_strength"] != pytest.approx(endurance["contact_strength"], rel=1e-3)   # K_A and life count
+
+
+@pytest.mark.parametrize("kw, words", [({"life_h": -1.0}, "life_h"), ({"application_factor": 0.5}, "application_factor"),
+                                       ({"application_factor": "x"}, "application_factor")])
+def test_a_bad_stage_load_case_is_refused_by_name(kw, words):
+    from geardesign.errors import GearDesignError
+
+    with pytest.raises(GearDesignError, match=words):
+        gd.GearStage(3, material="42CrMo4", **kw)
+
+
+def test_the_searchs_sized_geometry_is_the_pairs_own_at_the_chosen_module():
+    """The search solves a sized spur stage's shifts once (at m = 1: every geometric check is a margin in
+    module units) and scales the lengths: the table's shifts and centre distance equal those of
+    optimize_shifts and GearPair at the chosen module and width."""
+    stages = [gd.GearStage(None, z1_range=(19, 19), ratio_range=(3, 3.2), material="42CrMo4")]
+    r = gd.Drive(power_kw=11, n_in_rpm=1460, stages=stages).optimize(3.1, 0.03, top=3)
+    assert r.success
+    for _, row in r.table[r.table["feasible"]].iterrows():
+        m, b, z2 = row["gear.m"], row["gear.face_width_mm"], int(row["gear.z2"])
+        o = optimize_shifts(19, z2, "max_x_sum", None, "exact", m=m, face_width_mm=b)
+        assert (row["gear.x1"], row["gear.x2"]) == pytest.approx((o.x1, o.x2), abs=1e-12)
+        geo = gd.GearPair(m, 19, z2, o.x1, o.x2, face_width_mm=b).geometry()
+        assert row["gear.a_w_mm"] == pytest.approx(geo.a_w, rel=1e-12)

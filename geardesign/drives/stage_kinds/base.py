@@ -11,7 +11,9 @@ A stage kind is one object with these parts (defaults here fit a stage with noth
   multiply the designs, e.g. catalog rows);
 - **margins in a batch**: :meth:`~StageKind.batch` (every margin, size and mass of many designs at
   once), or, for a kind whose options are costly (``solved = True``), :meth:`~StageKind.solve` one
-  option at a time inside the branch and bound with :meth:`~StageKind.bound` below its cost;
+  option at a time inside the branch and bound with :meth:`~StageKind.bound` below its cost
+  (:meth:`~StageKind.solve_many` several at once, when :meth:`~StageKind.solves_together` says that
+  shares work);
 - **analyse**: :meth:`~StageKind.analyse` receives the flow into and out of the stage
   (:class:`StageFlow`: speed rpm, torque N·m) and returns its checks, size, mass and summary;
 - **scenes**: :meth:`~StageKind.scene_keys` and :meth:`~StageKind.from_scene`;
@@ -101,6 +103,16 @@ class StageKind:
         """One option solved (``solved`` kinds): dict(feasible, reason, margins, ...). ``flow``: the
         :class:`StageFlow` into the stage when :meth:`load_dependent` says the solve needs it, else None."""
         raise NotImplementedError(f"stage kind {self.name!r} solves nothing one by one")
+
+    def solves_together(self, stage) -> bool:
+        """True when :meth:`solve_many` shares work between options (the search then hands it the
+        options it will likely need next)."""
+        return False
+
+    def solve_many(self, stage, options: list, objective: str, flows: list) -> list:
+        """:meth:`solve` of several options (``flows``: theirs, or Nones), in order; a kind may share
+        work between them (the same solutions as one by one)."""
+        return [self.solve(stage, o, objective, f) for o, f in zip(options, flows)]
 
     def solve_count(self) -> int:
         """How many costly solves the kind has done so far (for the optimum's count)."""

@@ -28,7 +28,7 @@ from ...validate import one_number, require_range
 from ..limits import MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
 from .base import ToothedKind
-from .gear_strength import strength_margins, strength_sizes
+from .gear_strength import strength_margins, strength_sizes, strength_sizes_many
 
 __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution"]
 
@@ -91,9 +91,31 @@ def set_sizing(fn):
     return before
 
 
+@lru_cache(maxsize=1)
 def _series() -> np.ndarray:
+    """The ISO 54 modules (read once: the catalog lookup costs ~3 ms, the search asks per tooth pair)."""
     from ...catalogs.tables import module_series   # here: catalogs load pandas
-    return module_series()
+    series = np.array(module_series(), dtype=float)
+    series.flags.writeable = False
+    return series
+
+
+def _shifts_scale_free(stage: GearStage) -> bool:
+    """True when the pair's shift solution does not depend on its module and face width: each of its
+    checks is a built-in geometric one, a margin in units of the module; the face width enters only
+    ε_β, i.e. the ε_γ check of a helical pair. (A registered check or a strength check in ``checks``
+    may depend on lengths in mm: such a stage is solved at each module.)"""
+    return _scale_free_checks(stage.checks_key(), stage.beta_deg != 0.0)
+
+
+@lru_cache(maxsize=64)
+def _scale_free_checks(checks_key: tuple, helical: bool) -> bool:
+    from ...gears.checks import resolve_checks   # here: the check registry loads pandas
+    from ...gears.checks.external import (ContactRatio, Interference, Jamming, TipThickness, TotalContactRatio,
+                                          Undercut)
+
+    free = (Undercut, Interference, Jamming, TipThickness, ContactRatio) + (() if helical else (TotalContactRatio,))
+    return all(type(c) in free for c in resolve_checks(dict(checks_key) or None))
 
 
 class GearKind(ToothedKind):
@@ -159,23 +181,34 @@ class GearKind(ToothedKind):
         return sol
 
     def _strength_sized(self, stage, z1, z2, objective, flow) -> dict:
-        """Module and width by the strength checks: shifts of the pair at m = 1 (the geometric checks of a
-        spur pair do not depend on the module), every series module × width checked at once, then the
-        smallest candidates re-solved at their own module until one holds every check."""
+        """Module and width by the strength checks: shifts of the pair at m = 1, every series module × width
+        checked at once at those shifts; the smallest candidate then holds every check when the shift
+        solution does not depend on the module and width (``_shifts_scale_free``), else the smallest
+        candidates are re-solved at their own module until one holds every check."""
         ref = gear_solution(replace(stage, m=1.0), z1, z2, objective)
         if "x1" not in ref:
             return dict(ref, m=math.nan, face_width_mm=None)
-        cands, closest = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
-                                        _series(), MARGIN_TOL)
+        cands, best = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
+                                     _series(), MARGIN_TOL)
+        if cands and _shifts_scale_free(stage):   # the reference shifts are those of the first candidate
+            return self._scaled(ref, *best)
         for m, b in cands[:SIZING_TRIES]:
             sol = self._candidate(stage, m, b, z1, z2, objective, flow)
             if sol["feasible"]:
                 return sol
         if cands:
             return sol
-        sol = self._candidate(stage, closest[0], closest[1], z1, z2, objective, flow)
-        return dict(sol, reason=f"no module of the ISO 54 series carries the load (closest m = {closest[0]:g} mm, "
-                                f"b = {closest[1]:g} mm: {sol['reason']})")
+        sol = self._candidate(stage, best[0], best[1], z1, z2, objective, flow)
+        return dict(sol, reason=f"no module of the ISO 54 series carries the load (closest m = {best[0]:g} mm, "
+                                f"b = {best[1]:g} mm: {sol['reason']})")
+
+    @staticmethod
+    def _scaled(ref: dict, m: float, b: float, strength: dict) -> dict:
+        """The solution at module m, face width b from the shifts solved at m = 1 (``_shifts_scale_free``):
+        the same shifts and geometric margins, lengths scaled by m, and the ``strength`` margins (all
+        holding) the sizing computed at (m, b)."""
+        return dict(ref, a_w=ref["a_w"] * m, da1=ref["da1"] * m, da2=ref["da2"] * m,
+                    margins={**ref["margins"], **strength}, m=m, face_width_mm=b)
 
     # -- the branch and bound
     def solve(self, stage, option: dict, objective: str, flow=None) -> dict:
@@ -183,6 +216,30 @@ class GearKind(ToothedKind):
         if stage.m is None:
             return self._sized(stage, z1, z2, objective, flow)
         return self._with_strength(stage, gear_solution(stage, z1, z2, objective), z1, z2, flow)
+
+    def solves_together(self, stage) -> bool:
+        """A stage sized by the strength checks whose shifts do not depend on the module."""
+        return stage.m is None and _SIZING[0] is None and stage.material is not None and _shifts_scale_free(stage)
+
+    def solve_many(self, stage, options: list, objective: str, flows: list) -> list:
+        """Tooth pairs of a stage sized by the strength checks (:meth:`solves_together`) sized together:
+        one vectorised strength call per input flow; any other stage one by one."""
+        if not self.solves_together(stage):
+            return super().solve_many(stage, options, objective, flows)
+        pairs = [(int(o["z1"]), int(o["z2"])) for o in options]
+        refs = [gear_solution(replace(stage, m=1.0), z1, z2, objective) for z1, z2 in pairs]
+        out = [None] * len(options)
+        by_flow: dict = {}
+        for i, (ref, flow) in enumerate(zip(refs, flows)):
+            if "x1" in ref:
+                by_flow.setdefault((flow.torque_in_nm, flow.n_in_rpm), []).append(i)
+        for (torque, speed), idx in by_flow.items():
+            sizes = strength_sizes_many(stage, torque, speed, [(*pairs[i], refs[i]["x1"], refs[i]["x2"]) for i in idx],
+                                        _series(), MARGIN_TOL)
+            for i, (cands, best) in zip(idx, sizes):
+                out[i] = self._scaled(refs[i], *best) if cands else None
+        return [sol if sol is not None else self.solve(stage, o, objective, f)      # unsized: as one by one
+                for sol, o, f in zip(out, options, flows)]
 
     def solve_count(self) -> int:
         return shift_solution.cache_info().misses
@@ -271,11 +328,11 @@ class GearKind(ToothedKind):
     def _analyse_strength(st, pair, flow, out: dict) -> None:
         """The strength checks at the flow into ``out``'s margins, the StrengthResult (its factor table)
         as ``out["strength"]`` and the face width in the summary."""
-        from ...gears.strength import Load, strength   # here: the materials catalog loads pandas
+        from ...gears.strength import strength   # here: the materials catalog loads pandas
 
         sm = strength_margins(st, st.m, st.width_mm, st.z1, st.z2, pair.x1, pair.x2, flow.torque_in_nm, flow.n_in_rpm)
         out["margins"].update({k: float(v) for k, v in sm.items()})
-        out["strength"] = strength(pair, Load(torque_nm=flow.torque_in_nm, n_rpm=flow.n_in_rpm),
+        out["strength"] = strength(pair, st.load(flow.torque_in_nm, flow.n_in_rpm),
                                    stage_material(st.material), face_width_mm=st.width_mm)
         out["summary"]["face_width_mm"] = st.width_mm
 
@@ -284,7 +341,13 @@ class GearKind(ToothedKind):
         from ...shifts.objectives import OBJECTIVES   # here: the shifts layer loads pandas
 
         f, i = "float", "int"
-        return {"module": dict(kind=f, required=True, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
+        from ...gears.strength.load import APPLICATION_FACTOR_RANGE, LIFE_RANGE_H
+
+        # no module: sized by the stage's load (needs a material); see GearStage
+        return {"module": dict(kind=f, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
+                "material": dict(kind="str"),
+                "life_h": dict(kind=f, lo=LIFE_RANGE_H[0], hi=LIFE_RANGE_H[1], lo_open=True),
+                "application_factor": dict(kind=f, lo=APPLICATION_FACTOR_RANGE[0], hi=APPLICATION_FACTOR_RANGE[1]),
                 "z1": dict(kind=i, lo=Z_MIN, hi=Z_MAX), "z2": dict(kind=i, lo=Z_MIN, hi=Z_MAX),
                 "x1": dict(kind=f, lo=-X_ABS_MAX, hi=X_ABS_MAX), "x2": dict(kind=f, lo=-X_ABS_MAX, hi=X_ABS_MAX),
                 "efficiency": dict(kind=f, default=0.98, lo=EFFICIENCY_RANGE[0], hi=EFFICIENCY_RANGE[1], lo_open=True),
@@ -297,7 +360,7 @@ class GearKind(ToothedKind):
 
     def from_scene(self, spec: dict):
         kw = dict(spec)
-        kw["m"] = kw.pop("module")
+        kw["m"] = kw.pop("module", None)
         kw["checks"] = dict(kw["checks"]) if kw.get("checks") else None
         for k in ("z1_range", "ratio_range"):
             if k in kw:

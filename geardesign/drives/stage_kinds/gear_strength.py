@@ -2,8 +2,8 @@
 into it, and the module and face width of a stage given without them.
 
 Checks (signed margins, >= 0 holds), from :func:`geardesign.gears.strength.pair_strength` with both
-gears of the stage's ``material``, the load on the pinion (gear 1) at endurance (no life given:
-Z_NT = Y_NT = 1) and the strength model's defaults (accuracy grade, lubricant, roughness, S_Hmin and
+gears of the stage's ``material``, the load on the pinion (gear 1) with the stage's ``application_factor``
+and ``life_h`` (None: endurance, Z_NT = Y_NT = 1) and the strength model's defaults (accuracy grade, lubricant, roughness, S_Hmin and
 S_Fmin, :mod:`geardesign.gears.strength.defaults`):
 
 - ``contact_strength``: min(S_H1, S_H2)/S_Hmin − 1;
@@ -29,7 +29,7 @@ import numpy as np
 from ..stages import stage_material
 
 __all__ = ["STRENGTH_CHECKS", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
-           "strength_sizes"]
+           "strength_sizes", "strength_sizes_many"]
 
 STRENGTH_CHECKS = ("contact_strength", "root_strength1", "root_strength2")
 WIDTH_TO_DIAMETER_RANGE = (0.2, 1.0)
@@ -38,10 +38,10 @@ WIDTH_TO_DIAMETER_STEP = 0.05
 
 def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, speed_rpm: float) -> dict:
     """{check: margin array} of :data:`STRENGTH_CHECKS` for the stage's pairs (m, b broadcast) carrying
-    ``torque_nm`` on the pinion at ``speed_rpm``."""
-    from ...gears.strength import Load, pair_strength   # here: the materials catalog loads pandas
+    ``torque_nm`` on the pinion at ``speed_rpm`` (with the stage's life and application factor)."""
+    from ...gears.strength import pair_strength   # here: the materials catalog loads pandas
 
-    out = pair_strength(m, z1, z2, x1, x2, load=Load(torque_nm=float(torque_nm), n_rpm=float(speed_rpm)),
+    out = pair_strength(m, z1, z2, x1, x2, load=stage.load(torque_nm, speed_rpm),
                         material1=stage_material(stage.material), face_width_mm=face_width_mm, beta_deg=stage.beta_deg)
     return {"contact_strength": np.minimum(out["S_H1"], out["S_H2"]) / out["S_Hmin"] - 1.0,
             "root_strength1": out["S_F1"] / out["S_Fmin"] - 1.0,
@@ -60,16 +60,35 @@ def _widths(stage, modules: np.ndarray, z1: int) -> tuple:
 
 def strength_sizes(stage, torque_nm: float, speed_rpm: float, z1: int, z2: int, x1: float, x2: float,
                    modules: np.ndarray, tol: float) -> tuple:
-    """(candidates, closest): the (m, b) that hold every strength check at shifts x1, x2, smallest
-    module first, then narrowest; and when none holds, the (m, b, margins) closest to holding."""
-    M, B = _widths(stage, np.asarray(modules, dtype=float), z1)
+    """(candidates, best): the (m, b) that hold every strength check at shifts x1, x2, smallest module
+    first, then narrowest; and (m, b, {check: margin}) of the first candidate, or when none holds, of
+    the (m, b) closest to holding."""
+    return strength_sizes_many(stage, torque_nm, speed_rpm, [(z1, z2, x1, x2)], modules, tol)[0]
+
+
+def strength_sizes_many(stage, torque_nm: float, speed_rpm: float, pairs, modules: np.ndarray, tol: float) -> list:
+    """:func:`strength_sizes` of several tooth pairs ``pairs`` [(z1, z2, x1, x2), ...] at one load, in one
+    vectorised call (its fixed cost shared)."""
+    modules = np.asarray(modules, dtype=float)
+    grids = [_widths(stage, modules, z1) for z1, _, _, _ in pairs]
+    M = np.stack([np.broadcast_to(m, grids[0][0].shape) for m, _ in grids])
+    B = np.stack([np.broadcast_to(b, grids[0][0].shape) for _, b in grids])
+    z1, z2 = (np.array([p[i] for p in pairs], dtype=np.int64)[:, None, None] for i in (0, 1))
+    x1, x2 = (np.array([p[i] for p in pairs], dtype=float)[:, None, None] for i in (2, 3))
     margins = strength_margins(stage, M, B, z1, z2, x1, x2, torque_nm, speed_rpm)
-    worst = np.minimum.reduce([np.broadcast_to(margins[k], M.shape) for k in STRENGTH_CHECKS])
+    margins = {k: np.broadcast_to(v, M.shape) for k, v in margins.items()}
+    return [_first_size(M[i], B[i], {k: v[i] for k, v in margins.items()}, tol) for i in range(len(pairs))]
+
+
+def _first_size(M: np.ndarray, B: np.ndarray, margins: dict, tol: float) -> tuple:
+    """(candidates, best) of one pair's (m, b) grid and its margins, as :func:`strength_sizes` returns."""
+    worst = np.minimum.reduce([margins[k] for k in STRENGTH_CHECKS])
     worst = np.where(np.isnan(worst), -np.inf, worst)
     ok = worst >= -tol
     order = np.lexsort((B[ok], M[ok]))
     cands = [(float(m), float(b)) for m, b in zip(M[ok][order], B[ok][order])]
     if cands:
-        return cands, None
-    i = np.unravel_index(np.argmax(worst), M.shape)
-    return [], (float(M[i]), float(B[i]), {k: float(np.broadcast_to(v, M.shape)[i]) for k, v in margins.items()})
+        i = tuple(np.argwhere(ok)[order[0]])
+    else:
+        i = np.unravel_index(np.argmax(worst), M.shape)
+    return cands, (float(M[i]), float(B[i]), {k: float(v[i]) for k, v in margins.items()})
