@@ -11,7 +11,8 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import _show, require_range
-from ..ring import (ShaperCutter, cutting_mesh, trimming_margin, trochoid_margin,
+from ..distinct import distinct_codes
+from ..ring import (CuttingMesh, ShaperCutter, cutting_mesh, cutting_mesh_slopes, trimming_margin, trochoid_margin,
                     trochoid_margin_gradient)
 from .base import Check, Option, register
 from .external import INTERFERENCE
@@ -45,18 +46,56 @@ def _cutter(cutter):
     return cutter
 
 
-def _cutting_mesh(geo: dict, cutter):
+def _cutting_mesh(geo: dict, cutter, slopes: bool = False):
     """The cutter–ring mesh (:func:`geardesign.gears.ring.cutting_mesh`) of the ring in ``geo``,
-    kept in ``geo`` by cutter: the margins and gradients of one design share it."""
+    kept in ``geo`` by cutter: the margins and gradients of one design share it. It depends on the
+    ring's shift alone: a grid of one pair computes it once per distinct x2 (a column of the grid),
+    and without its derivatives until a gradient asks for them (one design's come with it, cheaply)."""
     memo = geo.setdefault("_cutting_meshes", {})
     key = (cutter.z0, cutter.x0, cutter.ha0)   # equal cutters share it; a plain tuple hashes in C
-    if key not in memo:
-        ta, tn = geo["_ta"], geo["_tn"]   # tan α_t, tan α_n: one value for every design
-        at = math.atan(ta) if type(ta) is float else float(np.arctan(np.ravel(ta)[0]))
-        cos_beta = geo["_m"] * geo["_z2"] / geo["d2"]
-        memo[key] = cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], cutter, at,
-                                 tn if type(tn) is float else float(np.ravel(tn)[0]), cos_beta)
-    return memo[key]
+    cm = memo.get(key)
+    if cm is None or (slopes and cm.drho_form2_dx2 is None):
+        m, z2, ra2, *rest = args = _mesh_args(geo, cutter)
+        # the ring's tip angle as the geometry has it (one value for each fact)
+        x2, t_a2, inv_a2 = geo["_x2"], geo["_t_a2"], geo["_inv_a2"]
+        if type(x2) is float:
+            cm = cutting_mesh(m, z2, x2, ra2, *rest, tip=(t_a2, inv_a2))
+        elif cm is None:
+            one_pair = np.ndim(m) == 0 and np.ndim(z2) == 0 and np.ndim(rest[-1]) == 0
+            cm = (_per_ring_shift if one_pair else _direct)(
+                lambda x, r, t, i: cutting_mesh(m, z2, x, r, *rest, slopes=slopes, tip=(t, i)), x2, ra2, t_a2, inv_a2)
+        else:
+            cm = cutting_mesh_slopes(cm, *args, tip=(t_a2, inv_a2))
+        memo[key] = cm
+    return cm
+
+
+def _mesh_args(geo: dict, cutter) -> tuple:
+    """(m, z2, r_a2, cutter, α_t, tan α_n, cos β) of the cutting mesh of the ring in ``geo``."""
+    ta, tn = geo["_ta"], geo["_tn"]   # tan α_t, tan α_n: one value for every design
+    at = math.atan(ta) if type(ta) is float else float(np.arctan(np.ravel(ta)[0]))
+    tn = tn if type(tn) is float else float(np.ravel(tn)[0])
+    m, z2 = geo["_m"], geo["_z2"]
+    return m, z2, geo["_ra2"], cutter, at, tn, m * z2 / geo["d2"]
+
+
+def _direct(mesh, x2, *follow):
+    return mesh(x2, *follow)
+
+
+def _per_ring_shift(mesh, x2, ra2, *tip):
+    """``mesh(x2, ra2, *tip)`` of one pair, computed once per distinct x2 where x2 repeats (the ring's tip
+    radius r_a2, and its angle with it, follow x2: checked on r_a2, not assumed)."""
+    found = distinct_codes(x2) if all(np.shape(v) == np.shape(x2) for v in (ra2, *tip)) else None
+    if found is None:
+        return mesh(x2, ra2, *tip)
+    codes, first = found
+    flat_ra2 = ra2.reshape(-1)
+    ra2_first = flat_ra2[first]
+    if not (ra2_first[codes] == flat_ra2).all():
+        return mesh(x2, ra2, *tip)
+    cm = mesh(x2.reshape(-1)[first], ra2_first, *(v.reshape(-1)[first] for v in tip))
+    return CuttingMesh(*(f[codes].reshape(x2.shape) if np.ndim(f) else f for f in cm))
 
 
 @register
@@ -95,7 +134,7 @@ class RingInterference(Check):
         # ρ_F2 depends on x2 alone, through α_w0 (:class:`~geardesign.gears.ring.CuttingMesh`)
         dp1, dp2 = _drho_p(geo, 2)
         m = geo["_m"]
-        return -dp1 / m, (_cutting_mesh(geo, self.cutter).drho_form2_dx2 - dp2) / m
+        return -dp1 / m, (_cutting_mesh(geo, self.cutter, True).drho_form2_dx2 - dp2) / m
 
 
 @register
@@ -221,7 +260,7 @@ class CutterTrimming(Check):
         return _cutting_mesh(geo, self.cutter).trimming
 
     def gradient(self, geo):
-        return 0.0, _cutting_mesh(geo, self.cutter).dtrimming_dx2
+        return 0.0, _cutting_mesh(geo, self.cutter, True).dtrimming_dx2
 
 
 @register
@@ -259,7 +298,7 @@ class CutterInterference(Check):
         m = geo["_m"]
         # ρ_a2² = r_a2² − r_b2², ∂r_a2/∂x2 = m (the ring's tip moves out with x2);
         # ∂N0N2/∂x2 = ∂ρ_F2/∂x2 (ρ_a0 is the cutter's)
-        return 0.0, (m * geo["_ra2"] / geo["_rho_a2"] - _cutting_mesh(geo, self.cutter).drho_form2_dx2) / m
+        return 0.0, (m * geo["_ra2"] / geo["_rho_a2"] - _cutting_mesh(geo, self.cutter, True).drho_form2_dx2) / m
 
 
 @register
