@@ -123,8 +123,9 @@ def trochoid_margin(z1, z2, r_a1, r_a2, a_w, inv_a1, inv_a2, inv_aw):
     >>> round(float(trochoid_margin(16, 24, 27.0, 34.5, 13.1682677, 0.0760958, 0.0026109, 0.0604007)), 4)
     0.0401
     """
-    c1 = (r_a2 * r_a2 - r_a1 * r_a1 - a_w * a_w) / (2.0 * a_w * r_a1)
-    c2 = (r_a2 * r_a2 - r_a1 * r_a1 + a_w * a_w) / (2.0 * a_w * r_a2)
+    d, a2, a_w2 = r_a2 * r_a2 - r_a1 * r_a1, a_w * a_w, 2.0 * a_w
+    c1 = (d - a2) / (a_w2 * r_a1)
+    c2 = (d + a2) / (a_w2 * r_a2)
     return (z1 * (inv_a1 + _arccos_clipped(c1)) - z2 * (inv_a2 + _arccos_clipped(c2)) + (z2 - z1) * inv_aw) / z2
 
 
@@ -272,9 +273,9 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
             trim = trimming_margin(k.z0, z2, k.cos_a0, k.r_b2 / r_a2, k.inv_a0, inv_a2, inv_w0)
     a_w0 = k.half_span * _sqrt(1.0 + t_w0 * t_w0)   # half_span / cos α_w0
     n0n2 = k.half_span * t_w0                        # N0N2 = a_w0 sin α_w0 = half_span tan α_w0
-    cm = CuttingMesh(k.z0, a_w0, k.r_a0, inv_w0, trim, None, 2.0 * a_w0 + 2.0 * k.r_a0, k.rho_a0 + n0n2, None,
-                     n0n2, t_w0)
-    return _with_slopes(cm, k, m_n, z2, r_a2, t_a2, scalar) if slopes else cm
+    dtrim, drho = _slopes(k, m_n, z2, r_a2, t_a2, t_w0, scalar) if slopes else (None, None)
+    return CuttingMesh(k.z0, a_w0, k.r_a0, inv_w0, trim, dtrim, 2.0 * a_w0 + 2.0 * k.r_a0, k.rho_a0 + n0n2, drho,
+                       n0n2, t_w0)
 
 
 def cutting_mesh_slopes(cm: CuttingMesh, m_n, z2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n: float,
@@ -284,7 +285,8 @@ def cutting_mesh_slopes(cm: CuttingMesh, m_n, z2, r_a2, cutter: ShaperCutter, al
     scalar, k, m_n, z2, _, r_a2 = _setup(m_n, z2, cm.inv_w0, r_a2, cutter, alpha_t, tan_n, cos_beta)
     with (contextlib.nullcontext() if scalar else np.errstate(invalid="ignore")):
         t_a2 = _ring_tip(k, r_a2, tip)[0]
-    return _with_slopes(cm, k, m_n, z2, r_a2, t_a2, scalar)
+    dtrim, drho = _slopes(k, m_n, z2, r_a2, t_a2, cm.tan_w0, scalar)
+    return cm._replace(dtrimming_dx2=dtrim, drho_form2_dx2=drho)
 
 
 def _ring_tip(k: _CutterRing, r_a2, tip=None):
@@ -297,11 +299,10 @@ def _ring_tip(k: _CutterRing, r_a2, tip=None):
     return t_a2, inv_from_tan(t_a2)
 
 
-def _with_slopes(cm: CuttingMesh, k: _CutterRing, m_n, z2, r_a2, t_a2, scalar: bool) -> CuttingMesh:
-    """The derivatives in x2: x2 moves the ring's tip by m_n (r_a2 = r2 − m_n(h_a* − x2)) and inv α_w0
+def _slopes(k: _CutterRing, m_n, z2, r_a2, t_a2, t_w0, scalar: bool) -> tuple:
+    """(∂trimming/∂x2, ∂ρ_F2/∂x2): x2 moves the ring's tip by m_n (r_a2 = r2 − m_n(h_a* − x2)) and inv α_w0
     by 2 tan α_n/(z2 − z0); ∂N0N2/∂x2 = drho_scale (1 + t²)/t², t = tan α_w0 (d tan/d inv = (1 + t²)/t²)."""
-    t_w0 = cm.tan_w0
     with (contextlib.nullcontext() if scalar else np.errstate(invalid="ignore", divide="ignore")):
         dtrim = trimming_margin_gradient(k.z0, z2, k.cos_a0, k.r_b2 / r_a2, r_a2, t_a2, m_n, k.dinv_dx2)
         drho = k.drho_scale * (1.0 + t_w0 * t_w0) / (t_w0 * t_w0)
-    return cm._replace(dtrimming_dx2=dtrim, drho_form2_dx2=drho)
+    return dtrim, drho

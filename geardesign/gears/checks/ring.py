@@ -95,7 +95,8 @@ def _per_ring_shift(mesh, x2, ra2, *tip):
     if not (ra2_first[codes] == flat_ra2).all():
         return mesh(x2, ra2, *tip)
     cm = mesh(x2.reshape(-1)[first], ra2_first, *(v.reshape(-1)[first] for v in tip))
-    return CuttingMesh(*(f[codes].reshape(x2.shape) if np.ndim(f) else f for f in cm))
+    codes = codes.reshape(x2.shape)
+    return CuttingMesh(*(f.take(codes) if np.ndim(f) else f for f in cm))
 
 
 @register
