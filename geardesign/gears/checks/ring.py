@@ -84,19 +84,31 @@ def _direct(mesh, x2, *follow):
 
 
 def _per_ring_shift(mesh, x2, ra2, *tip):
-    """``mesh(x2, ra2, *tip)`` of one pair, computed once per distinct x2 where x2 repeats (the ring's tip
-    radius r_a2, and its angle with it, follow x2: checked on r_a2, not assumed)."""
+    """``mesh(x2, ra2, *tip)`` of one pair, computed once per distinct x2 where x2 repeats. The ring's tip
+    radius r_a2 (and its angle with it) follows x2, except where the pair does not exist (no operating
+    angle: the geometry makes r_a2 NaN there, and with it the trimming, which alone reads the tip):
+    checked on r_a2, not assumed."""
     found = distinct_codes(x2) if all(np.shape(v) == np.shape(x2) for v in (ra2, *tip)) else None
     if found is None:
         return mesh(x2, ra2, *tip)
     codes, first = found
     flat_ra2 = ra2.reshape(-1)
+    gone = np.isnan(flat_ra2)
+    if gone.any():   # stand for each x2 by a node where the pair exists, where it has one
+        live = np.flatnonzero(~gone)
+        first = first.copy()
+        first[codes[live]] = live
     ra2_first = flat_ra2[first]
-    if not (ra2_first[codes] == flat_ra2).all():
+    if not ((ra2_first[codes] == flat_ra2) | gone).all():
         return mesh(x2, ra2, *tip)
     cm = mesh(x2.reshape(-1)[first], ra2_first, *(v.reshape(-1)[first] for v in tip))
     codes = codes.reshape(x2.shape)
-    return CuttingMesh(*(f.take(codes) if np.ndim(f) else f for f in cm))
+    cm = CuttingMesh(*(f.take(codes) if np.ndim(f) else f for f in cm))
+    if gone.any():
+        gone = gone.reshape(x2.shape)
+        cm = cm._replace(**{k: np.where(gone, np.nan, getattr(cm, k)) for k in ("trimming", "dtrimming_dx2")
+                            if getattr(cm, k) is not None})
+    return cm
 
 
 @register
