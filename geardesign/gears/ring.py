@@ -161,18 +161,24 @@ def trimming_margin(z1, z2, cos_a1, cos_a2, inv_a1, inv_a2, inv_aw):
     return t1 + inv_a1 - inv_aw - z2 / z1 * (t2 + inv_a2 - inv_aw)
 
 
-def trimming_margin_gradient(z1, z2, cos_a1, cos_a2, r_a2, t_a2, d_ra2, d_inv_aw):
+def trimming_margin_gradient(z1, z2, cos_a1, cos_a2, r_a2, t_a2, d_ra2, d_inv_aw, r_a1=None, t_a1=None,
+                             d_ra1=None):
     """The derivative of :func:`trimming_margin` when the ring's tip radius changes by d_ra2 (mm)
-    and inv α_w by d_inv_aw, the pinion (or cutter) fixed. Chain rule: q = (cos α_a1/cos α_a2)²,
-    cos α_a2 = r_b2/r_a2, so dq = 2q dr_a2/r_a2; ds1 = −dq/(1 − (z1/z2)²),
-    ds2 = −(dq/q²)/((z2/z1)² − 1); dθ = ds/(2√(s(1 − s))); d inv α_a2 = tan α_a2 dr_a2/r_a2."""
+    and inv α_w by d_inv_aw, and with ``r_a1, t_a1, d_ra1`` the pinion's tip radius by d_ra1 (else the
+    pinion, or cutter, is fixed). Chain rule: q = (cos α_a1/cos α_a2)², cos α_a = r_b/r_a, so
+    dq = 2q (dr_a2/r_a2 − dr_a1/r_a1); ds1 = −dq/(1 − (z1/z2)²), ds2 = −(dq/q²)/((z2/z1)² − 1);
+    dθ = ds/(2√(s(1 − s))); d inv α_a = tan α_a dr_a/r_a."""
     q = (cos_a1 / cos_a2) ** 2
     s1 = (1.0 - q) / (1.0 - (z1 / z2) ** 2)
     s2 = (1.0 / q - 1.0) / ((z2 / z1) ** 2 - 1.0)
     dq = 2.0 * q * d_ra2 / r_a2
+    if d_ra1 is not None:
+        dq = dq - 2.0 * q * d_ra1 / r_a1
     ds1 = -dq / (1.0 - (z1 / z2) ** 2)
     ds2 = -dq / (q * q) / ((z2 / z1) ** 2 - 1.0)
     dt1, dt2 = _darcsin_sqrt(s1, ds1), _darcsin_sqrt(s2, ds2)   # outside the arcsines' domain: NaN
+    if d_ra1 is not None:
+        dt1 = dt1 + t_a1 * d_ra1 / r_a1
     return dt1 - d_inv_aw - z2 / z1 * (dt2 + t_a2 * d_ra2 / r_a2 - d_inv_aw)
 
 

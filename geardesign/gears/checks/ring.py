@@ -12,8 +12,8 @@ import numpy as np
 from ...errors import GearDesignError
 from ...validate import _show, require_range
 from ..distinct import distinct_codes
-from ..ring import (CuttingMesh, ShaperCutter, cutting_mesh, cutting_mesh_slopes, trimming_margin, trochoid_margin,
-                    trochoid_margin_gradient)
+from ..ring import (CuttingMesh, ShaperCutter, cutting_mesh, cutting_mesh_slopes, trimming_margin,
+                    trimming_margin_gradient, trochoid_margin, trochoid_margin_gradient)
 from .base import Check, Option, register
 from .external import INTERFERENCE
 from .gradients import _drho_p
@@ -228,7 +228,8 @@ class TipInterference(Check):
 class RadialAssembly(Check):
     """The pinion can be put into the ring radially (internal pairs; KHK §5.2 eq. (5-9)/(5-10), the
     trimming condition at the operating centre distance): margin in radians of pinion rotation;
-    failing means the pinion goes in axially. Optional. Gradient by central differences."""
+    failing means the pinion goes in axially. Optional. Gradient by the chain rule,
+    :func:`geardesign.gears.ring.trimming_margin_gradient`."""
 
     option, pair_kinds, colour, order = RADIAL_ASSEMBLY, ("internal",), "slategray", 30
 
@@ -244,7 +245,17 @@ class RadialAssembly(Check):
                                geo["_inv_a2"], geo["inv_alpha_w"])
 
     def gradient(self, geo):
-        return None
+        # as TipInterference: ∂r_a/∂x_j = m(δ_gear,j − ∂Δy/∂x_Σ ∂x_Σ/∂x_j), ∂inv α_w/∂x_Σ = 2 tan α_n / z_Σ
+        m, sgn, z1, z2 = geo["_m"], geo["_sgn"], geo["_z1"], geo["_z2"]
+        dinv = 2.0 * geo["_tn"] / (z2 - z1)
+        c1, c2 = _cos_tip(geo, 1), _cos_tip(geo, 2)
+        out = []
+        for j, dxs in ((1, sgn), (2, 1.0)):
+            d_ra1 = m * ((j == 1) - geo["_dk"] * dxs)
+            d_ra2 = m * ((j == 2) - geo["_dk"] * dxs)
+            out.append(trimming_margin_gradient(z1, z2, c1, c2, geo["_ra2"], geo["_t_a2"], d_ra2, dinv * dxs,
+                                                geo["_ra1"], geo["_t_a1"], d_ra1))
+        return tuple(out)
 
 
 @register
