@@ -77,8 +77,11 @@ def test_a_grid_of_one_pair_gives_each_node_its_own_margins_and_gradients(z1, z2
     V = grid_points(prob, 31, (-1.5, 3.0))
     x1, x2 = prob.xy(V)
     P, M = prob.evaluate(V, grads=False)                            # x2 repeats: once per column
-    geo = mesh_geometry(mesh, 2.5, x1, x2, full=False)
-    G = prob.margin_gradients(geo)                                   # slopes after the margins
+    geo = prob.geo_then(x1, x2, lambda g: g)                         # one pair's grid, as the solvers see it
+    assert np.array_equal(prob.margins(geo), M)
+    G = prob.margin_gradients(geo)                                   # the slopes added after the margins
+    assert np.allclose(G, prob.margin_gradients(mesh_geometry(mesh, 2.5, x1, x2, full=False)), rtol=1e-12,
+                       atol=1e-12, equal_nan=True)                  # the plain elementwise path
     rng = np.random.default_rng(0)
     for i in rng.choice(V.shape[0], 40, replace=False):
         one = mesh_geometry_float(mesh, 2.5, float(x1[i]), float(x2[i]), False)
