@@ -203,6 +203,8 @@ class _CutterRing(NamedTuple):
 
     z0: object          # the cutter's teeth (NaN where it has as many as the ring or more)
     inv_t: object       # inv α_t
+    tan_n: object       # tan α_n
+    z_diff: object      # z2 − z0
     dinv_dx2: object    # ∂inv α_w0/∂x2 = 2 tan α_n/(z2 − z0)
     half_span: object   # m_t (z2 − z0) cos α_t / 2: a_w0 = half_span/cos α_w0, N0N2 = half_span tan α_w0
     r_a0: object        # the cutter's tip radius
@@ -221,8 +223,9 @@ def _cutter_ring(m_n, z2, z0, x0, ha0, alpha_t, tan_n, cos_beta) -> _CutterRing:
     r_a0 = m_t * z0 / 2.0 + (ha0 + x0) * m_n
     r_b0 = m_t * z0 / 2.0 * cos_t
     rho_a0 = _sqrt((r_a0 - r_b0) * (r_a0 + r_b0))   # inv α_a0 from tan α_a0 = ρ_a0/r_b0: no arccos near 1
-    return _CutterRing(z0, inv(alpha_t), 2.0 * tan_n / (z2 - z0), m_t * (z2 - z0) * cos_t / 2.0, r_a0, rho_a0,
-                       r_b0 / r_a0, inv_from_tan(rho_a0 / r_b0), m_t * z2 / 2.0 * cos_t, m_t * cos_t * tan_n)
+    return _CutterRing(z0, inv(alpha_t), tan_n, z2 - z0, 2.0 * tan_n / (z2 - z0), m_t * (z2 - z0) * cos_t / 2.0,
+                       r_a0, rho_a0, r_b0 / r_a0, inv_from_tan(rho_a0 / r_b0), m_t * z2 / 2.0 * cos_t,
+                       m_t * cos_t * tan_n)
 
 
 # one ring (a pair's solve evaluates the cutting mesh at every design it visits): once per ring and cutter
@@ -266,7 +269,7 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
     79.5
     """
     scalar, k, m_n, z2, x2, r_a2 = _setup(m_n, z2, x2, r_a2, cutter, alpha_t, tan_n, cos_beta)
-    inv_w0 = k.inv_t + (x2 - cutter.x0) * k.dinv_dx2
+    inv_w0 = k.inv_t + 2.0 * (x2 - cutter.x0) * k.tan_n / k.z_diff
     if scalar:
         t_w0 = _tan_from_inv_float(inv_w0) if inv_w0 > 0 else math.nan
         # a ring tip inside its base circle: NaN, a failing margin (_sqrt gives the NaN itself)
@@ -277,7 +280,7 @@ def cutting_mesh(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t: float, tan_n:
         with np.errstate(invalid="ignore"):
             t_a2, inv_a2 = _ring_tip(k, r_a2, tip)
             trim = trimming_margin(k.z0, z2, k.cos_a0, k.r_b2 / r_a2, k.inv_a0, inv_a2, inv_w0)
-    a_w0 = k.half_span * _sqrt(1.0 + t_w0 * t_w0)   # half_span / cos α_w0
+    a_w0 = k.half_span / (1.0 / _sqrt(1.0 + t_w0 * t_w0))   # half_span / cos α_w0
     n0n2 = k.half_span * t_w0                        # N0N2 = a_w0 sin α_w0 = half_span tan α_w0
     dtrim, drho = _slopes(k, m_n, z2, r_a2, t_a2, t_w0, scalar) if slopes else (None, None)
     return CuttingMesh(k.z0, a_w0, k.r_a0, inv_w0, trim, dtrim, 2.0 * a_w0 + 2.0 * k.r_a0, k.rho_a0 + n0n2, drho,
