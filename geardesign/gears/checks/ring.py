@@ -61,9 +61,11 @@ def _cutting_mesh(geo: dict, cutter, slopes: bool = False):
         if type(x2) is float:
             cm = cutting_mesh(m, z2, x2, ra2, *rest, tip=(t_a2, inv_a2))
         elif cm is None:
+            def mesh(x, r, t, i):
+                return cutting_mesh(m, z2, x, r, *rest, slopes=slopes, tip=(t, i))
+
             one_pair = np.ndim(m) == 0 and np.ndim(z2) == 0 and np.ndim(rest[-1]) == 0
-            cm = (_per_ring_shift if one_pair else _direct)(
-                lambda x, r, t, i: cutting_mesh(m, z2, x, r, *rest, slopes=slopes, tip=(t, i)), x2, ra2, t_a2, inv_a2)
+            cm = _per_ring_shift(mesh, x2, ra2, t_a2, inv_a2) if one_pair else mesh(x2, ra2, t_a2, inv_a2)
         else:
             cm = cutting_mesh_slopes(cm, *args, tip=(t_a2, inv_a2))
         memo[key] = cm
@@ -77,10 +79,6 @@ def _mesh_args(geo: dict, cutter) -> tuple:
     tn = tn if type(tn) is float else float(np.ravel(tn)[0])
     m, z2 = geo["_m"], geo["_z2"]
     return m, z2, geo["_ra2"], cutter, at, tn, m * z2 / geo["d2"]
-
-
-def _direct(mesh, x2, *follow):
-    return mesh(x2, *follow)
 
 
 def _per_ring_shift(mesh, x2, ra2, *tip):
