@@ -1,6 +1,7 @@
 """The operating angle once per distinct x-sum: a grid of (x1, x2) takes ~2n x-sums over n² nodes, so the
 vectorised geometry computes it per diagonal (exact when the nodes' sums are exact, :func:`exact_sum_nodes`)
-or per hashed distinct value of a large batch that repeats itself."""
+or per hashed distinct value of a large batch that repeats itself; a ring's cutter mesh once per distinct x2
+(:func:`distinct_codes`)."""
 from __future__ import annotations
 
 import functools
@@ -8,7 +9,7 @@ import math
 
 import numpy as np
 
-__all__ = ["per_distinct", "exact_sum_nodes"]
+__all__ = ["per_distinct", "distinct_codes", "exact_sum_nodes"]
 
 
 _PROBE = 1024   # values looked at before deduplicating: a grid block repeats its x-sums within them
@@ -19,28 +20,47 @@ _SHAPED_MIN = 64
 
 
 @functools.lru_cache(maxsize=8)
-def _diagonal_codes(n: int) -> tuple:
-    """For an n × n grid flattened row by row: the index of each node's x-sum diagonal (i + j) and of its
-    x-difference diagonal (j − i + n − 1), with the node that carries each diagonal's value first."""
+def _grid_patterns(n: int) -> tuple:
+    """For an n × n grid flattened row by row: the index of each node's x-sum diagonal (i + j), of its
+    x-difference diagonal (j − i + n − 1) and of its column j (x2 of a grid whose x2 runs along the rows),
+    each with the node that carries its value first."""
     i, j = np.divmod(np.arange(n * n), n)
     first_sum = np.concatenate((np.arange(n), np.arange(2, n + 1) * n - 1))      # row 0, then column n − 1
     first_diff = np.concatenate((np.arange(n - 1, 0, -1) * n, np.arange(n)))   # column 0 upwards, then row 0
-    return (i + j, first_sum), (j - i + n - 1, first_diff)
+    return (i + j, first_sum), (j - i + n - 1, first_diff), (j, np.arange(n))
 
 
 def _grid_codes(v):
-    """(codes, distinct) when v is constant or a flattened square grid constant along its diagonals or
-    anti-diagonals (the x-sums of :func:`exact_sum_nodes` grids, an external or an internal pair's), else None."""
+    """(codes, first) with flat[first][codes] == flat (flat = v flattened) when v is constant or a flattened
+    square grid constant along its diagonals, anti-diagonals (the x-sums of :func:`exact_sum_nodes` grids, an
+    external or an internal pair's) or columns, else None."""
     flat = v.reshape(-1)
     if flat[0] == flat[-1] and (flat == flat[0]).all():   # a fixed-x_Σ line
-        return np.zeros(flat.size, dtype=np.intp), flat[:1]
+        return np.zeros(flat.size, dtype=np.intp), np.zeros(1, dtype=np.intp)
     n = math.isqrt(flat.size)
     if n * n == flat.size:
-        for codes, first in _diagonal_codes(n):
-            distinct = flat[first]
-            if (distinct[codes] == flat).all():
-                return codes, distinct
+        for codes, first in _grid_patterns(n):
+            if (flat[first][codes] == flat).all():
+                return codes, first
     return None
+
+
+def distinct_codes(v):
+    """(codes, first) with flat[first][codes] == flat (flat = v flattened, ``first`` the index of each
+    distinct value's first node) when v repeats its values enough to gain from computing once per value:
+    a square grid's diagonals or columns (:func:`_grid_codes`), else by sorting when a probe of v repeats
+    itself; None otherwise (or for fewer than 64 values)."""
+    if v.size < _SHAPED_MIN:
+        return None
+    found = _grid_codes(v)
+    if found is not None:
+        return found
+    flat = v.reshape(-1)
+    probe = flat[:_PROBE]
+    if 4 * np.unique(probe).size > probe.size:
+        return None
+    _, first, codes = np.unique(flat, return_index=True, return_inverse=True)
+    return (codes.reshape(-1), first) if 4 * first.size <= flat.size else None
 
 
 def per_distinct(func, v):
@@ -51,8 +71,8 @@ def per_distinct(func, v):
     if _SHAPED_MIN <= v.size < _DEDUPE_MIN:
         found = _grid_codes(v)
         if found is not None:
-            codes, distinct = found
-            return tuple(r[codes].reshape(v.shape) for r in func(distinct))
+            codes, first = found
+            return tuple(r[codes].reshape(v.shape) for r in func(v.reshape(-1)[first]))
     elif v.size >= _DEDUPE_MIN:
         probe = v.reshape(-1)[:_PROBE]   # a grid repeats its x-sums at once; scattered designs do not,
         if 4 * np.unique(probe).size <= probe.size:   # and then the deduplication would be wasted

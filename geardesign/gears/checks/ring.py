@@ -11,8 +11,9 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import _show, require_range
-from ..ring import (ShaperCutter, cutting_mesh, trimming_margin, trochoid_margin,
-                    trochoid_margin_gradient)
+from ..distinct import distinct_codes
+from ..ring import (CuttingMesh, ShaperCutter, cutting_mesh, cutting_mesh_slopes, trimming_margin,
+                    trimming_margin_gradient, trochoid_margin, trochoid_margin_gradient)
 from .base import Check, Option, register
 from .external import INTERFERENCE
 from .gradients import _drho_p
@@ -45,18 +46,67 @@ def _cutter(cutter):
     return cutter
 
 
-def _cutting_mesh(geo: dict, cutter):
+def _cutting_mesh(geo: dict, cutter, slopes: bool = False):
     """The cutter–ring mesh (:func:`geardesign.gears.ring.cutting_mesh`) of the ring in ``geo``,
-    kept in ``geo`` by cutter: the margins and gradients of one design share it."""
+    kept in ``geo`` by cutter: the margins and gradients of one design share it. It depends on the
+    ring's shift alone: a grid of one pair computes it once per distinct x2 (a column of the grid),
+    and without its derivatives until a gradient asks for them (one design's come with it, cheaply)."""
     memo = geo.setdefault("_cutting_meshes", {})
     key = (cutter.z0, cutter.x0, cutter.ha0)   # equal cutters share it; a plain tuple hashes in C
-    if key not in memo:
-        ta, tn = geo["_ta"], geo["_tn"]   # tan α_t, tan α_n: one value for every design
-        at = math.atan(ta) if type(ta) is float else float(np.arctan(np.ravel(ta)[0]))
-        cos_beta = geo["_m"] * geo["_z2"] / geo["d2"]
-        memo[key] = cutting_mesh(geo["_m"], geo["_z2"], geo["_x2"], geo["_ra2"], cutter, at,
-                                 tn if type(tn) is float else float(np.ravel(tn)[0]), cos_beta)
-    return memo[key]
+    cm = memo.get(key)
+    if cm is None or (slopes and cm.drho_form2_dx2 is None):
+        m, z2, ra2, *rest = args = _mesh_args(geo, cutter)
+        # the ring's tip angle as the geometry has it (one value for each fact)
+        x2, t_a2, inv_a2 = geo["_x2"], geo["_t_a2"], geo["_inv_a2"]
+        if type(x2) is float:
+            cm = cutting_mesh(m, z2, x2, ra2, *rest, tip=(t_a2, inv_a2))
+        elif cm is None:
+            def mesh(x, r, t, i):
+                return cutting_mesh(m, z2, x, r, *rest, slopes=slopes, tip=(t, i))
+
+            one_pair = np.ndim(m) == 0 and np.ndim(z2) == 0 and np.ndim(rest[-1]) == 0
+            cm = _per_ring_shift(mesh, x2, ra2, t_a2, inv_a2) if one_pair else mesh(x2, ra2, t_a2, inv_a2)
+        else:
+            cm = cutting_mesh_slopes(cm, *args, tip=(t_a2, inv_a2))
+        memo[key] = cm
+    return cm
+
+
+def _mesh_args(geo: dict, cutter) -> tuple:
+    """(m, z2, r_a2, cutter, α_t, tan α_n, cos β) of the cutting mesh of the ring in ``geo``."""
+    ta, tn = geo["_ta"], geo["_tn"]   # tan α_t, tan α_n: one value for every design
+    at = math.atan(ta) if type(ta) is float else float(np.arctan(np.ravel(ta)[0]))
+    tn = tn if type(tn) is float else float(np.ravel(tn)[0])
+    m, z2 = geo["_m"], geo["_z2"]
+    return m, z2, geo["_ra2"], cutter, at, tn, m * z2 / geo["d2"]
+
+
+def _per_ring_shift(mesh, x2, ra2, *tip):
+    """``mesh(x2, ra2, *tip)`` of one pair, computed once per distinct x2 where x2 repeats. The ring's tip
+    radius r_a2 (and its angle with it) follows x2, except where the pair does not exist (no operating
+    angle: the geometry makes r_a2 NaN there, and with it the trimming, which alone reads the tip):
+    checked on r_a2, not assumed."""
+    found = distinct_codes(x2) if all(np.shape(v) == np.shape(x2) for v in (ra2, *tip)) else None
+    if found is None:
+        return mesh(x2, ra2, *tip)
+    codes, first = found
+    flat_ra2 = ra2.reshape(-1)
+    gone = np.isnan(flat_ra2)
+    if gone.any():   # stand for each x2 by a node where the pair exists, where it has one
+        live = np.flatnonzero(~gone)
+        first = first.copy()
+        first[codes[live]] = live
+    ra2_first = flat_ra2[first]
+    if not ((ra2_first[codes] == flat_ra2) | gone).all():
+        return mesh(x2, ra2, *tip)
+    cm = mesh(x2.reshape(-1)[first], ra2_first, *(v.reshape(-1)[first] for v in tip))
+    codes = codes.reshape(x2.shape)
+    cm = CuttingMesh(*(f.take(codes) if np.ndim(f) else f for f in cm))
+    if gone.any():
+        gone = gone.reshape(x2.shape)
+        cm = cm._replace(**{k: np.where(gone, np.nan, getattr(cm, k)) for k in ("trimming", "dtrimming_dx2")
+                            if getattr(cm, k) is not None})
+    return cm
 
 
 @register
@@ -95,7 +145,7 @@ class RingInterference(Check):
         # ρ_F2 depends on x2 alone, through α_w0 (:class:`~geardesign.gears.ring.CuttingMesh`)
         dp1, dp2 = _drho_p(geo, 2)
         m = geo["_m"]
-        return -dp1 / m, (_cutting_mesh(geo, self.cutter).drho_form2_dx2 - dp2) / m
+        return -dp1 / m, (_cutting_mesh(geo, self.cutter, True).drho_form2_dx2 - dp2) / m
 
 
 @register
@@ -176,7 +226,8 @@ class TipInterference(Check):
 class RadialAssembly(Check):
     """The pinion can be put into the ring radially (internal pairs; KHK §5.2 eq. (5-9)/(5-10), the
     trimming condition at the operating centre distance): margin in radians of pinion rotation;
-    failing means the pinion goes in axially. Optional. Gradient by central differences."""
+    failing means the pinion goes in axially. Optional. Gradient by the chain rule,
+    :func:`geardesign.gears.ring.trimming_margin_gradient`."""
 
     option, pair_kinds, colour, order = RADIAL_ASSEMBLY, ("internal",), "slategray", 30
 
@@ -192,7 +243,17 @@ class RadialAssembly(Check):
                                geo["_inv_a2"], geo["inv_alpha_w"])
 
     def gradient(self, geo):
-        return None
+        # as TipInterference: ∂r_a/∂x_j = m(δ_gear,j − ∂Δy/∂x_Σ ∂x_Σ/∂x_j), ∂inv α_w/∂x_Σ = 2 tan α_n / z_Σ
+        m, sgn, z1, z2 = geo["_m"], geo["_sgn"], geo["_z1"], geo["_z2"]
+        dinv = 2.0 * geo["_tn"] / (z2 - z1)
+        c1, c2 = _cos_tip(geo, 1), _cos_tip(geo, 2)
+        out = []
+        for j, dxs in ((1, sgn), (2, 1.0)):
+            d_ra1 = m * ((j == 1) - geo["_dk"] * dxs)
+            d_ra2 = m * ((j == 2) - geo["_dk"] * dxs)
+            out.append(trimming_margin_gradient(z1, z2, c1, c2, geo["_ra2"], geo["_t_a2"], d_ra2, dinv * dxs,
+                                                geo["_ra1"], geo["_t_a1"], d_ra1))
+        return tuple(out)
 
 
 @register
@@ -221,7 +282,7 @@ class CutterTrimming(Check):
         return _cutting_mesh(geo, self.cutter).trimming
 
     def gradient(self, geo):
-        return 0.0, _cutting_mesh(geo, self.cutter).dtrimming_dx2
+        return 0.0, _cutting_mesh(geo, self.cutter, True).dtrimming_dx2
 
 
 @register
@@ -259,7 +320,7 @@ class CutterInterference(Check):
         m = geo["_m"]
         # ρ_a2² = r_a2² − r_b2², ∂r_a2/∂x2 = m (the ring's tip moves out with x2);
         # ∂N0N2/∂x2 = ∂ρ_F2/∂x2 (ρ_a0 is the cutter's)
-        return 0.0, (m * geo["_ra2"] / geo["_rho_a2"] - _cutting_mesh(geo, self.cutter).drho_form2_dx2) / m
+        return 0.0, (m * geo["_ra2"] / geo["_rho_a2"] - _cutting_mesh(geo, self.cutter, True).drho_form2_dx2) / m
 
 
 @register
