@@ -370,7 +370,7 @@ def _mesh_options(opts: dict, meshes: PlanetaryMeshes, arrangement: str) -> tupl
                                   f"the strength checks need load= (a geardesign Load on the sun)")
         return opts, opts
     # here: the strength package loads pandas and the materials catalog, which a set without a load never needs
-    from .strength.planetary_strength import mesh_loads
+    from .strength.planetary_meshes import mesh_loads
 
     cases = mesh_loads(meshes.z_sun, meshes.z_planet, meshes.z_ring, meshes.n_planets, arrangement, opts["load"])
     sun = opts.get("material")

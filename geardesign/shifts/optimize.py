@@ -108,8 +108,15 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
 
 def solve_problem(prob: Problem, method: str, bounds, tol: float, grid_n=None, start=None) -> Outcome:
     """Hand a built problem to its method (:data:`~geardesign.shifts.methods.METHOD_TABLE`); the Outcome
-    at the method's point."""
-    return METHOD_TABLE[method].solve(prob, bounds, tol, grid_n, start)
+    at the method's point. A problem with costly checks (the strength chain) is solved first without them:
+    where that optimum holds them as well it is this problem's too, and the chain is read once, there."""
+    solve = METHOD_TABLE[method].solve
+    relaxed = prob.relaxed()
+    if relaxed is not None:
+        out = solve(relaxed, bounds, tol, grid_n, start)
+        if out.success and prob.holds_costly(out.v):
+            return out
+    return solve(prob, bounds, tol, grid_n, start)
 
 
 SLIDING_IMBALANCE = 2.0   # the larger root sliding over the smaller one above which the message names balanced_sliding

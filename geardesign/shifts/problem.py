@@ -220,6 +220,23 @@ class Problem:
             return None
         return self.with_checks(_Unevaluated(c.name, n_parts=c.n_parts) if c.costly else c for c in self.checks)
 
+    def relaxed(self) -> "Problem | None":
+        """This problem without its costly checks, for a first solve: where its optimum holds them too, it is the
+        optimum of this problem (a relaxation's optimum that is feasible is optimal), found without the chain.
+        None when there are none, or when the objective reads them."""
+        if not self.costly_parts or self.objective.needs_load or self.objective.kind == "margin":
+            return None
+        out = self.with_checks(c for c in self.checks if not c.costly)
+        out.names = [c.name for c in out.checks]
+        out.part_check = [i for i, c in enumerate(out.checks) for _ in range(c.n_parts)]
+        return out
+
+    def holds_costly(self, v) -> bool:
+        """True when every costly check holds (to the feasibility tolerance) at the free-variable point v."""
+        x1, x2 = (float(c[0]) for c in self.xy(np.asarray(v, dtype=float)[None, :]))
+        _, (_, M, _, _) = self.evaluate_design(x1, x2, grads=False)
+        return all(M[i] >= -_checks.FEASIBILITY_TOL for i, c in enumerate(self.checks) if c.costly)
+
     def reading(self, checks) -> "Problem":
         """This problem, or its :meth:`light` view when none of the checks at the indices ``checks`` is costly:
         for a step that reads those checks alone (a boundary traced or a corner solved)."""

@@ -10,7 +10,7 @@ import pytest
 import geardesign as gd
 from geardesign.cli import main as cli_main
 from geardesign.gears.strength import Load, pair_strength
-from geardesign.gears.strength.planetary_strength import planetary_strength
+from geardesign.gears.strength import planetary_strength
 from geardesign.gears.strength.root import root_form_factors
 
 SET = (21, 43, 108, 3)           # LECAD's set (tests/data/planetary_examples.csv), m = 1.75 mm

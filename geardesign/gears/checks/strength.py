@@ -50,10 +50,10 @@ class StrengthSpec:
     def safety(self, geo: dict, gradients: bool = False) -> dict:
         """S_H (the smaller of both gears'), S_F1, S_F2 at the designs of ``geo`` and, with ``gradients``,
         their gradients (``d<name>``: (∂/∂x1, ∂/∂x2)), kept in ``geo`` so that the three checks share one
-        evaluation. One design (the local solvers' float path) gets its gradients in the same call: five
-        designs cost about what one does there; a grid gets them only when asked (five times the work)."""
+        evaluation. One design (the local solvers' float path) runs the chain on Python floats, a grid on
+        arrays; either gets its gradients only when asked (five designs' work)."""
         memo = geo.setdefault("_strength", {})
-        stencil = gradients or isinstance(geo["_x1"], float)
+        stencil = gradients
         if (self, True) in memo:
             return memo[(self, True)]
         if (self, stencil) not in memo:
@@ -84,6 +84,8 @@ class StrengthSpec:
         width = self.face_width_mm if self.face_width_mm is not None else mesh.face_width_mm
         if width is None:
             raise GearDesignError("the strength checks need a face width: give face_width_mm with the load")
+        if isinstance(geo["_x1"], float):
+            return self._chain_floats(geo, offsets, width, pair_strength, CHAIN_GEOMETRY_FIELDS)
         x1, x2 = np.asarray(geo["_x1"], dtype=float), np.asarray(geo["_x2"], dtype=float)
         n_pts = len(offsets)
         X1 = np.stack([x1 + a for a, _ in offsets]).reshape(n_pts, -1)
@@ -112,6 +114,30 @@ class StrengthSpec:
                 for k, v in _where_it_holds(call, idx.size).items():
                     S[k][idx] = v
         return {k: v.reshape((n_pts,) + x1.shape) for k, v in S.items()}
+
+    def _chain_floats(self, geo: dict, offsets, width, pair_strength, fields) -> dict:
+        """:meth:`_chain` of one design on the chain's float path (a design at a time: each ~5x cheaper than a
+        small array call); a design outside the chain's range or refused by it gets NaN (a failing margin)."""
+        from ..geometry import mesh_geometry_float
+
+        mesh, m = geo["_mesh"], geo["_m"]
+        S = {k: np.full((len(offsets), 1), np.nan) for k in _QUANTITIES}
+        for j, (a, b) in enumerate(offsets):
+            x1, x2 = geo["_x1"] + a, geo["_x2"] + b
+            g = geo if a == b == 0.0 else mesh_geometry_float(mesh, m, x1, x2, full=False)
+            try:
+                if not _in_range(g, x1, x2):
+                    continue
+                out = pair_strength(m, mesh.z1, mesh.z2, x1, x2, load=self.load, material1=self.material1,
+                                    material2=self.material2, face_width_mm=width, beta_deg=mesh.beta_deg,
+                                    internal=mesh.internal, rack=mesh.rack, tip_shortening=mesh.tip_shortening,
+                                    geometry={**{k: float(g[k]) for k in fields}, "_z1": mesh.z1, "_z2": mesh.z2},
+                                    **dict(self.options))
+            except GearDesignError:
+                continue
+            for k in _QUANTITIES:
+                S[k][j, 0] = out[k]
+        return {k: v.reshape((len(offsets),)) for k, v in S.items()}
 
     def model(self, geo: dict) -> "StrengthModel":
         """The quadratic model of the safety factors around the one design of ``geo`` (a float geometry): values
