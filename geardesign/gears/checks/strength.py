@@ -196,11 +196,11 @@ def _where_it_holds(call, n: int) -> dict:
 
 
 def _in_range(g: dict, x1, x2):
-    """True where the chain's formulas hold: ε_α >= 1 (ISO 6336's own range), a start of active profile on
-    both gears, and the root form factors' |x| <= 3."""
-    from ..strength.root import X_RANGE
+    """True where the chain's formulas hold: 1 <= ε_α <= 3 (ISO 6336's own range) and the root form factors'
+    |x| <= 3 (a design outside a factor's domain inside that gets NaN from the chain: a failing margin)."""
+    from ..strength.root import EPS_ALPHA_RANGE, X_RANGE
 
-    return ((g["eps_alpha"] >= 1.0) & (g["rho_p1"] > 0) & (g["rho_p2"] > 0)
+    return ((EPS_ALPHA_RANGE[0] <= g["eps_alpha"]) & (g["eps_alpha"] <= EPS_ALPHA_RANGE[1])
             & (X_RANGE[0] <= x1) & (x1 <= X_RANGE[1]) & (X_RANGE[0] <= x2) & (x2 <= X_RANGE[1]))
 
 
@@ -264,7 +264,9 @@ def strength_spec(context: dict) -> StrengthSpec | None:
     options = context.get("strength") or {}
     if not isinstance(options, dict):
         raise GearDesignError(f"strength must be a dict of pair_strength options, got {type(options).__name__}")
-    frozen = tuple(sorted((k, _hashable(v)) for k, v in options.items()))
+    from ..strength.chain import check_options
+
+    frozen = tuple(sorted((k, _hashable(v)) for k, v in check_options(options).items()))
     return StrengthSpec(load, mat1, mat2, context.get("face_width_mm"), frozen)
 
 

@@ -4,6 +4,7 @@ designs in one call; and the one-pair path that returns a :class:`StrengthResult
 """
 from __future__ import annotations
 
+import inspect
 import math
 from types import SimpleNamespace
 
@@ -325,7 +326,16 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     grade, nu40, Rz, Rz_root, K_gamma, root_method = _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um,
                                                                        K_gamma, root_method)
     S_Hmin, S_Fmin = _number("S_Hmin", S_Hmin, 0.5, 10.0), _number("S_Fmin", S_Fmin, 0.5, 10.0)
-    cpr = tuple(_number("cycles_per_rev", c, 1, 1000) for c in cycles_per_rev)
+    cpr = _pair_option("cycles_per_rev", cycles_per_rev, lambda c: _number("cycles_per_rev", c, 1, 1000))
+    rim_mm = _pair_option("rim_mm", rim_mm, lambda r: None if r is None else _number(
+        "rim_mm", r, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm"))
+    bore_ratio = _pair_option("bore_ratio", bore_ratio, lambda q: _number("bore_ratio", q, 0.0, 1.0, hi_open=True))
+    if tip_relief_um is not None:
+        tip_relief_um = _number("tip_relief_um", _not_bool("tip_relief_um", tip_relief_um), *TIP_RELIEF_RANGE_UM,
+                                unit="µm")
+    if geometry is None and not all(type(v) in (int, float) for v in (m, z1, z2, x1, x2)):
+        validate_inputs(m, z1, z2, x1, x2)      # ragged or mismatched arrays refused by name before any work
+        broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=face_width_mm)
     o = SimpleNamespace(load=load, mats=mats, grade=grade, nu40=nu40, Rz=Rz, Rz_root=Rz_root, K_gamma=K_gamma,
                         root_method=root_method, cpr=cpr, tip_relief_um=tip_relief_um, bore=bore_ratio,
                         shaft=shaft or {},
@@ -340,12 +350,65 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
             face_width2_mm is None or type(face_width2_mm) in (int, float)) and float_geometry:
         # one design in Python floats: the formulas on math, not numpy (see .ops)
         try:
-            return _evaluate(_floats(designs), G, o, FloatOps)
+            return _finite(_evaluate(_floats(designs), G, o, FloatOps), designs, o)
         except GearDesignError:
             raise
         except (ArithmeticError, ValueError):   # math's domain error where numpy gives NaN: the array path says why
             G.used.clear()
-    return _evaluate(designs, G, o, ArrayOps)
+    with np.errstate(all="ignore"):            # what is not finite is refused by name below (or is NaN on purpose)
+        return _finite(_evaluate(designs, G, o, ArrayOps), designs, o)
+
+
+# the factors whose formulas can leave their domain for a design that exists (first named when one does)
+_DOMAIN_FACTORS = ("Z_B", "Z_D", "Z_H", "Z_eps", "K_v", "K_Hbeta", "K_Halpha", "Y_F1", "Y_F2", "Y_S1", "Y_S2",
+                   "Y_Fa1", "Y_Fa2", "Y_Sa1", "Y_Sa2", "Y_deltarelT1", "Y_deltarelT2")
+
+
+def _finite(out: dict, designs, o) -> dict:
+    """``out`` when its stresses and safety factors are finite, or where NaN is asked for (a caller's unvalidated
+    geometry); else a refusal that names the design and the first factor out of its formula's domain (an
+    undercut pinion whose inner point of single contact lies below its base circle: Z_B, say)."""
+    if not o.refuse:
+        return out
+    bad = np.zeros(np.shape(out["S_H1"]), dtype=bool)
+    for k in STRENGTH_FIELDS:
+        if k in out:
+            bad |= ~np.isfinite(np.asarray(out[k], dtype=float))
+    if not bad.any():
+        return out
+    at = tuple(np.argwhere(bad)[0]) if bad.ndim else ()
+    factor = next((k for k in _DOMAIN_FACTORS if k in out and not np.all(np.isfinite(np.asarray(out[k])[at]
+                                                                                     if np.ndim(out[k]) else out[k]))),
+                  "a stress")
+    values = ", ".join(f"{n}={np.asarray(v, dtype=float)[at] if np.ndim(v) else v}"
+                       for n, v in zip(("m", "z1", "z2", "x1", "x2"), designs[:5]))
+    raise GearDesignError(f"no ISO 6336 result for the design {values}: {factor} is not finite there (outside its "
+                          f"formula's domain: an undercut pinion, a contact below a base circle, an extreme load)")
+
+
+TIP_RELIEF_RANGE_UM = (0.0, 1000.0)    # C_a given: from none to a millimetre (a relief of module size)
+
+
+def _not_bool(name, value):
+    if isinstance(value, (bool, np.bool_)):
+        raise GearDesignError(f"{name} must be a number, got {value!r}")
+    return value
+
+
+def _pair_option(name, value, check) -> tuple:
+    """An option with a value per gear, (gear 1, gear 2): a tuple or list of two, each ``check``-ed."""
+    if not isinstance(value, (tuple, list)) or len(value) != 2:
+        raise GearDesignError(f"{name} must be a pair (gear 1, gear 2), got {value!r}")
+    return tuple(check(_not_bool(name, v)) for v in value)
+
+
+def check_options(options: dict) -> dict:
+    """``options`` for :func:`pair_strength`, refused by name when one is not one of its keywords."""
+    unknown = sorted(set(options) - set(_OPTION_NAMES))
+    if unknown:
+        raise GearDesignError(f"unknown strength option {', '.join(map(repr, unknown))}; allowed: "
+                              f"{', '.join(_OPTION_NAMES)}")
+    return options
 
 
 def _floats(designs):
@@ -392,6 +455,10 @@ def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
     T1, n1, n2 = _speeds(load, g["_z1"], g["_z2"])
     F_t = kf.tangential_load(T1, g["d1"])
     eps_beta = b * math.sin(math.radians(beta_deg)) / (math.pi * m) if beta_deg else 0.0   # spur: one number
+    if beta_deg and np.any(np.asarray(eps_beta) > dflt.EPS_BETA_MAX):
+        raise GearDesignError(f"face_width_mm must give an overlap ratio eps_beta = b sin(beta)/(pi m) <= "
+                              f"{dflt.EPS_BETA_MAX:g} (ISO 6336's factors are taken up to there), got eps_beta = "
+                              f"{float(np.max(eps_beta)):.4g} with beta_deg = {beta_deg:g}")
     return {"F_t": F_t, "v": kf.pitch_line_velocity(g["d1"], n1), "K_A": load.application_factor,
             "K_gamma": K_gamma, "n1": n1, "n2": n2, "alpha_wt_deg": g["alpha_wt_deg"],
             "eps_alpha": g["eps_alpha"], "z_n1": g["z_n1"], "z_n2": g["z_n2"], "eps_beta": eps_beta,
@@ -435,6 +502,7 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
     """
     if material is None:
         raise GearDesignError("material is needed (a geardesign Material or a name such as '42CrMo4')")
+    check_options(options)
     b = pair.face_width_mm if face_width_mm is None else face_width_mm
     if b is None:
         raise GearDesignError("face_width_mm is needed: give it, or build the GearPair with face_width_mm=")
@@ -444,3 +512,8 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
                         material2=material2, face_width_mm=b, beta_deg=pair.beta_deg, internal=pair.internal,
                         rack=pair.rack, tip_shortening=pair.tip_shortening, **options)
     return from_chain(out, title=f"{pair.z1}/{pair.z2} m={pair.m:g}")
+
+
+# the keywords of pair_strength a caller's options may set (the design and the load case are given apart)
+_OPTION_NAMES = tuple(k for k in inspect.signature(pair_strength).parameters
+                      if k not in ("m", "z1", "z2", "x1", "x2", "load", "material1", "material2", "face_width_mm"))

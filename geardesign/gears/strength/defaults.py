@@ -23,3 +23,4 @@ RZ_ROOT_MAX_UM = 40.0              # the end of the Y_RrelT curves (ISO 6336-3:2
 K_GAMMA_RANGE = (1.0, 3.0)         # mesh load factor of planetary sets (ISO 6336-1:2019 6.4: 1.0 to about 1.6)
 FACE_WIDTH_RANGE_MM = (0.0, 1e5)   # open below
 FACTOR_RANGE = (0.01, 100.0)       # a given factor outside this is a typo, not a measurement
+EPS_BETA_MAX = 50.0      # the overlap ratio up to which the helix factors are taken (far beyond any gear)

@@ -220,7 +220,7 @@ def _speed_capped(y, v, cap_5_10, cap_10):
 def running_in_alpha(f_pb_um, sigma_Hlim_mpa, kind, v_m_s):
     """y_α (µm), the running-in allowance for a base pitch deviation f_pb (ISO 6336-1:2006 8.3.5 with
     Cor.1:2008): St, V, GGG(perl), GTS: y_α = (160/σ_Hlim)·f_pb, ≤ 12 800/σ_Hlim for 5 < v ≤ 10 m/s and ≤ 6 400/σ_Hlim
-    above; GG, GGG(ferr): y_α = 0.275 f_pb, ≤ 22 and ≤ 11 µm; Eh, IF, NT, NV: y_α = 0.075 f_pb ≤ 3 µm. For a pair of
+    above, and not above f_pb; GG, GGG(ferr): y_α = 0.275 f_pb, ≤ 22 and ≤ 11 µm; Eh, IF, NT, NV: y_α = 0.075 f_pb ≤ 3 µm. For a pair of
     different materials use the mean of the two gears' values.
 
     >>> float(running_in_alpha(10.0, 800.0, "V", 3.0)), float(running_in_alpha(10.0, 1500.0, "Eh", 3.0))
@@ -233,13 +233,14 @@ def running_in_alpha(f_pb_um, sigma_Hlim_mpa, kind, v_m_s):
     if kind in _GREY:
         return _speed_capped(0.275 * f, v_m_s, 22.0, 11.0)
     s = xp.asarray(sigma_Hlim_mpa)
-    return _speed_capped(160.0 / s * f, v_m_s, 12_800.0 / s, 6_400.0 / s)
+    # not above f_pb itself: running-in cannot wear away more than the deviation (σ_Hlim < 160 MPa would)
+    return xp.minimum(_speed_capped(160.0 / s * f, v_m_s, 12_800.0 / s, 6_400.0 / s), f)
 
 
 def running_in_beta(F_betax_um, sigma_Hlim_mpa, kind, v_m_s):
     """y_β (µm), the running-in allowance for the initial equivalent misalignment F_βx (ISO 6336-1:2006 7.6.3
     with Cor.1:2008): St, V, GGG(perl), GTS: y_β = (320/σ_Hlim)·F_βx, ≤ 25 600/σ_Hlim for 5 < v ≤ 10 m/s and
-    ≤ 12 800/σ_Hlim above; GG, GGG(ferr): y_β = 0.55 F_βx, ≤ 45 and ≤ 22 µm; Eh, IF, NT, NV: y_β = 0.15 F_βx ≤ 6 µm.
+    ≤ 12 800/σ_Hlim above, and not above F_βx; GG, GGG(ferr): y_β = 0.55 F_βx, ≤ 45 and ≤ 22 µm; Eh, IF, NT, NV: y_β = 0.15 F_βx ≤ 6 µm.
 
     >>> float(running_in_beta(20.0, 800.0, "V", 3.0)), float(running_in_beta(20.0, 1500.0, "Eh", 3.0))
     (8.0, 3.0)
@@ -251,7 +252,8 @@ def running_in_beta(F_betax_um, sigma_Hlim_mpa, kind, v_m_s):
     if kind in _GREY:
         return _speed_capped(0.55 * F, v_m_s, 45.0, 22.0)
     s = xp.asarray(sigma_Hlim_mpa)
-    return _speed_capped(320.0 / s * F, v_m_s, 25_600.0 / s, 12_800.0 / s)
+    # not above F_βx itself (F_βy = F_βx − y_β >= 0, K_Hβ >= 1): σ_Hlim < 320 MPa would run in more than there is
+    return xp.minimum(_speed_capped(320.0 / s * F, v_m_s, 25_600.0 / s, 12_800.0 / s), F)
 
 
 def tip_relief_running_in(sigma_Hlim_mpa):

@@ -61,7 +61,11 @@ class Load:
             p = one_number("power_kw", require_range("power_kw", self.power_kw, *POWER_RANGE_KW, lo_open=True,
                                                      unit="kW"))
             object.__setattr__(self, "power_kw", p)
-            object.__setattr__(self, "torque_nm", p * 1e3 / (n * math.pi / 30.0))
+            t = p * 1e3 / (n * math.pi / 30.0)
+            if not t <= TORQUE_RANGE_NM[1]:
+                raise GearDesignError(f"power_kw and n_rpm must give a torque in (0, {TORQUE_RANGE_NM[1]:g}] N·m, got "
+                                      f"power_kw={p!r} at n_rpm={n!r} ({t:.4g} N·m)")
+            object.__setattr__(self, "torque_nm", t)
             object.__setattr__(self, "_given", "power")
         if self.on_gear not in (1, 2) or isinstance(self.on_gear, bool):
             raise GearDesignError(f"on_gear must be 1 or 2 (the gear the torque and speed are given on), "

@@ -165,6 +165,9 @@ def _material(name, hardness, quality, E_mpa, nu, yield_mpa) -> Material:
     """:func:`material` without the cache (a Material is frozen: one per set of arguments is enough)."""
     if quality is not None and quality not in QUALITIES:
         raise GearDesignError(f"quality must be one of {list(QUALITIES)}, got {quality!r}")
+    if not isinstance(name, str) or not name:
+        raise GearDesignError(f"material must be a name of the catalog or an ISO 6336-5 group (see material_names()), "
+                              f"got {name!r}")
     named = named_materials()
     row = None
     if isinstance(name, str):

@@ -145,12 +145,12 @@ class StrengthResult(Result):
         lines = [f"StrengthResult{(' ' + self.title) if self.title else ''}: {verdict} "
                  f"(S_Hmin {self.S_Hmin:g}, S_Fmin {self.S_Fmin:g})",
                  f"  {'':9}{'gear 1':>10}{'gear 2':>10}",
-                 f"  {'S_H':9}{self.S_H1:10.3f}{self.S_H2:10.3f}",
-                 f"  {'S_F':9}{self.S_F1:10.3f}{self.S_F2:10.3f}",
-                 f"  {'sigma_H':9}{self.sigma_H1:10.1f}{self.sigma_H2:10.1f}  MPa (sigma_H0 {self.sigma_H0:.1f})",
-                 f"  {'sigma_HP':9}{self.sigma_HP1:10.1f}{self.sigma_HP2:10.1f}  MPa",
-                 f"  {'sigma_F':9}{self.sigma_F1:10.1f}{self.sigma_F2:10.1f}  MPa",
-                 f"  {'sigma_FP':9}{self.sigma_FP1:10.1f}{self.sigma_FP2:10.1f}  MPa",
+                 f"  {'S_H':9}{_col(self.S_H1, '.3f')}{_col(self.S_H2, '.3f')}",
+                 f"  {'S_F':9}{_col(self.S_F1, '.3f')}{_col(self.S_F2, '.3f')}",
+                 f"  {'sigma_H':9}{_col(self.sigma_H1)}{_col(self.sigma_H2)}  MPa (sigma_H0 {_col(self.sigma_H0).strip()})",
+                 f"  {'sigma_HP':9}{_col(self.sigma_HP1)}{_col(self.sigma_HP2)}  MPa",
+                 f"  {'sigma_F':9}{_col(self.sigma_F1)}{_col(self.sigma_F2)}  MPa",
+                 f"  {'sigma_FP':9}{_col(self.sigma_FP1)}{_col(self.sigma_FP2)}  MPa",
                  f"  governing: {what}, margin {margin:+.1%}"]
         if self.given:
             lines.append(f"  given: {', '.join(self.given)}")
@@ -170,6 +170,12 @@ class StrengthResult(Result):
                 f"<tr><td>S_F</td><td>{self.S_F1:.3f}</td><td>{self.S_F2:.3f}</td><td>{self.S_Fmin:g}</td></tr></table>"
                 f"<details><summary>factors</summary><table><tr><th>symbol</th><th>gear</th><th>value</th>"
                 f"<th>clause</th></tr>{rows}</table></details><ul>{notes}</ul></div>")
+
+
+def _col(v: float, fmt: str = ".1f") -> str:
+    """A right-aligned column of the repr, 10 wide; a number too long for it in 4 significant digits."""
+    text = format(v, fmt)
+    return f"{text if len(text) <= 9 else format(v, '.4g'):>10}"
 
 
 def _scalar(v) -> float:

@@ -123,10 +123,16 @@ def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
 
 
 def _rim(rf, s_R_mm, h_t, m, internal):
-    """Y_B from the rim thickness s_R (mm) below the root; None: a solid gear (1)."""
+    """Y_B from the rim thickness s_R (mm) below the root; None: a solid gear (1). A rim thinner than the method
+    takes (s_R/h_t <= 0.5, a ring's s_R/m_n <= 1.75) is refused by the caller's name, rim_mm."""
     if s_R_mm is None:
         return 1.0
-    return rf.rim_factor_Y_B(s_R_mm / h_t) if not internal else rf.rim_factor_Y_B(internal=True, s_R_over_mn=s_R_mm / m)
+    ratio, least = (s_R_mm / m, 1.75) if internal else (s_R_mm / h_t, 0.5)
+    if np.any(np.asarray(ratio) <= least):
+        base = "m_n" if internal else "h_t"
+        raise GearDesignError(f"rim_mm must be > {least:g}·{base} = {float(np.max(least * (m if internal else h_t))):.4g} "
+                              f"mm for ISO 6336-3's rim factor Y_B, got {s_R_mm!r}")
+    return rf.rim_factor_Y_B(ratio) if not internal else rf.rim_factor_Y_B(internal=True, s_R_over_mn=ratio)
 
 
 def _notch(rf, q_s, mat, out, i, refuse=True):

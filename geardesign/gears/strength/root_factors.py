@@ -16,6 +16,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import require_bool, require_choice, require_int, require_positive, require_range
+from .defaults import EPS_BETA_MAX
 from .ops import checked, ops_of
 
 __all__ = ["MATERIAL_KINDS", "Y_ST", "helix_factor_Y_beta", "contact_ratio_factor_Y_eps", "deep_tooth_factor_Y_DT",
@@ -64,7 +65,7 @@ def helix_factor_Y_beta(eps_beta, beta_deg, *, edition: int = 2006):
     """
     if not (type(edition) is int and edition in (2006, 2019)):
         edition = int(require_choice("edition", str(edition), ["2006", "2019"]))
-    eps_beta = checked("eps_beta", eps_beta, 0.0, 50.0)
+    eps_beta = checked("eps_beta", eps_beta, 0.0, EPS_BETA_MAX)
     beta_deg = checked("beta_deg", beta_deg, -45.0, 45.0, unit="deg")
     xp = ops_of(eps_beta, beta_deg)
     eb = xp.minimum(eps_beta, 1.0)
