@@ -31,7 +31,7 @@ Modelling choices (written down here, once):
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -212,6 +212,13 @@ class MeshCheck(_checks.Check):
     @property
     def needs_report_fields(self):
         return self.inner.needs_report_fields
+
+    @property
+    def costly(self):
+        return self.inner.costly
+
+    def modelled_at(self, geo):
+        return replace(self, inner=self.inner.modelled_at(geo[self.mesh])) if self.costly else self
 
     def value(self, geo):
         return self.inner.value(geo[self.mesh])

@@ -110,6 +110,13 @@ class PlanetaryProblem(Problem):
     def _geo_like(self, geo):
         return lambda x1, x2: set_geometry(self.meshes, geo["_m"], x1, x2, full=self.full)
 
+    def _point_geo(self, x1: float, x2: float) -> dict:
+        try:
+            return set_geometry(self.meshes, self.m, float(x1), float(x2), full=self.full)
+        except _FLOAT_FAULTS:
+            with np.errstate(all="ignore"):
+                return self.geo(np.float64(x1), np.float64(x2))
+
     def evaluate_design(self, x1: float, x2: float, parts: bool = False, grads: bool = True):
         try:
             geo = set_geometry(self.meshes, self.m, float(x1), float(x2), full=self.full)
