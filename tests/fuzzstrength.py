@@ -491,3 +491,27 @@ def _strength_drive(rng):
 
 STRENGTH = {"strength_pair": _strength_pair, "pair_strength": _pair_strength, "strength_solvers": _strength_solvers,
             "strength_planetary": _strength_planetary, "strength_cli": _strength_cli, "strength_drive": _strength_drive}
+
+
+# The failure classes reproduced in tests/test_strength_defects.py (xfail until fixed), by a pattern of
+# a case's outcome detail or description: the CI sample (tests/test_fuzz.py) passes a case of one of
+# them and fails on any other. Delete a class's line with its fix.
+KNOWN_DEFECTS = {
+    "test_an_undercut_pinion_gets_a_contact_safety_or_a_clear_refusal": r"S_H[12]: nan|Z_B: |encountered in sqrt",
+    "test_the_face_load_factor_is_at_least_one": r"encountered in power|K_Fbeta|S_[HF][12]: nan",
+    "test_pair_strength_refuses_mismatched_or_ragged_arrays": r"shape mismatch|inhomogeneous",
+    "test_pair_valued_options_must_be_pairs": r"'(cycles_per_rev|rim_mm|bore_ratio)': (\d|array|True|False|np\.)"
+                                              r"|not iterable|not subscriptable|index out of range|invalid index",
+    "test_the_tip_relief_is_validated": r"'tip_relief_um': (1e\+308|nan|inf|array|'|True|-)|non-scalar to a scalar",
+    "test_a_material_name_of_a_wrong_type_is_refused": r"unhashable type",
+    "test_the_strength_checks_agree_with_strength_on_a_pair_with_interference": r"^nan$",
+}
+
+
+def known_defect(desc: str, detail: str) -> str | None:
+    """The test of tests/test_strength_defects.py reproducing this failure's class, or None (a new one)."""
+    import re
+    for test, pattern in KNOWN_DEFECTS.items():
+        if re.search(pattern, detail) or re.search(pattern, desc):
+            return test
+    return None

@@ -41,6 +41,21 @@ def test_scenes_cli_regions_and_atlases_answer_or_refuse_cleanly(target, seed):
     _assert_good(target, seed)
 
 
+_STRENGTH = ("strength_pair", "pair_strength", "strength_cli")
+
+
+@settings(max_examples=60, deadline=None, derandomize=True, database=None)
+@given(target=st.sampled_from(_STRENGTH), seed=st.integers(0, 10**9))
+def test_strength_surfaces_answer_or_refuse_cleanly(target, seed):
+    """The load-capacity surfaces (tests/fuzzstrength.py; the solvers, atlases, planetary sets and drives
+    with a load are left to tools/fuzz.py, being slow): a failure of a class already reproduced, xfail, in
+    tests/test_strength_defects.py passes here; any other fails."""
+    from tests.fuzzstrength import known_defect
+    outcome, desc, detail = run_case(target, seed, time_limit_s=60.0)
+    if outcome not in ("ok", "clean_error", "feasibility_tol"):
+        assert known_defect(desc, detail), f"{outcome}: {desc}\n  -> {detail}"
+
+
 @pytest.mark.parametrize("argv", [
     ["pair", "--module", "5e-324", "--z1", "17", "--z2", "26"],
     ["pair", "--module", "1", "--z1", "1e308", "--z2", "26"],
