@@ -1,7 +1,7 @@
 """Defects of the load-capacity surfaces (ISO 6336) found by fuzzing them (tests/fuzzstrength.py,
 ``python tools/fuzz.py --targets strength_pair,pair_strength,strength_solvers,strength_planetary,
-strength_cli,strength_drive --cases 1500 --seed 7 --seconds 1500``): one minimal reproducer per failure
-class, each stating the project's rule (a result with finite numbers, or one GearDesignError naming the
+strength_cli,strength_drive --cases 1500 --seed 7 --seconds 1500``, and the strength_report target):
+one minimal reproducer per failure class, each stating the project's rule (a result with finite numbers, or one GearDesignError naming the
 input, its value and its range; no warning escaping a call) and marked ``xfail(strict=True)`` until the
 package is fixed, so that the fix must unmark it.
 """
