@@ -4,6 +4,7 @@ geardesign/gears/geometry.py, tests/cli/test_shift.py the `geardesign shift` com
 At the top level: the suites that cut across the package (golden data, extremes against mpmath,
 property tests, fuzzing, doctests), the tests of the top-level modules (files, validate), and the
 shared helpers the test modules import as ``tests.<name>``: strategies (hypothesis designs),
-reference_mp (50-digit reference geometry), mp_formulas, scene_files, fuzzcases with fuzzsurfaces and
-fuzzrecheck (also used by tools/fuzz.py) and data/ (golden values with their sources).
+reference_mp (50-digit reference geometry), mp_formulas, scene_files, fuzzcases with fuzzsurfaces,
+fuzzstrength (the load-capacity targets) and fuzzrecheck (also used by tools/fuzz.py) and data/ (golden
+values with their sources).
 """

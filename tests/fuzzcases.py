@@ -446,10 +446,13 @@ TARGETS = {
 
 
 def _surfaces():
-    """The targets of tests/fuzzsurfaces.py (files, links, a command's outputs, Ctrl-C), added here
+    """The targets of tests/fuzzsurfaces.py (files, links, a command's outputs, Ctrl-C) and of
+    tests/fuzzstrength.py (the load-capacity surfaces, ISO 6336), added here
     so that one TARGETS lists every surface; imported late, as they use this module's helpers."""
+    from tests.fuzzstrength import STRENGTH
     from tests.fuzzsurfaces import SURFACES
     TARGETS.update(SURFACES)
+    TARGETS.update(STRENGTH)
 
 
 # --- judging a result -----------------------------------------------------------------------

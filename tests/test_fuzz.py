@@ -17,9 +17,10 @@ from hypothesis import given, settings, strategies as st
 
 import geardesign as gd
 from tests.fuzzcases import TARGETS, run_case
+from tests.fuzzstrength import STRENGTH, known_defect
 
 _SLOW = ("scene", "cli", "shift_atlas", "feasible_region", "profile_files", "cli_files", "ctrl_c")
-_FAST = [t for t in TARGETS if t not in _SLOW]
+_FAST = [t for t in TARGETS if t not in _SLOW and t not in STRENGTH]     # the load-capacity ones: their own sample
 
 
 def _assert_good(target, seed):
@@ -39,6 +40,21 @@ def test_functions_answer_or_refuse_cleanly(target, seed):
 @given(target=st.sampled_from(_SLOW), seed=st.integers(0, 10**9))
 def test_scenes_cli_regions_and_atlases_answer_or_refuse_cleanly(target, seed):
     _assert_good(target, seed)
+
+
+_STRENGTH = ("strength_pair", "pair_strength")
+
+
+@settings(max_examples=80, deadline=None, derandomize=True, database=None)
+@given(target=st.sampled_from(_STRENGTH), seed=st.integers(0, 10**9))
+def test_strength_surfaces_answer_or_refuse_cleanly(target, seed):
+    """The load-capacity surfaces: GearPair.strength and pair_strength (tests/fuzzstrength.py; the solvers,
+    atlases, planetary sets, drives, reports and commands with a load are left to tools/fuzz.py, being
+    slow): a failure of a class already reproduced, xfail, in
+    tests/test_strength_defects.py passes here; any other fails."""
+    outcome, desc, detail = run_case(target, seed, time_limit_s=60.0)
+    if outcome not in ("ok", "clean_error", "feasibility_tol"):
+        assert known_defect(desc, detail), f"{outcome}: {desc}\n  -> {detail}"
 
 
 @pytest.mark.parametrize("argv", [
