@@ -494,7 +494,8 @@ def non_finite(obj, depth=0) -> str | None:
         return None
     if is_dataclass(obj):
         for f in fields(obj):
-            if f.name in ("candidates", "problem", "table", "skipped", "blocking", "boundary"):
+            # "_chain": a StrengthResult's raw chain dict (N_L is NaN for "no life given"; its figures are fields)
+            if f.name in ("candidates", "problem", "table", "skipped", "blocking", "boundary", "_chain"):
                 continue
             if isinstance(obj, gd.Geometry) and f.name in NOT_APPLICABLE:
                 continue

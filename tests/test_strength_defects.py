@@ -2,8 +2,8 @@
 ``python tools/fuzz.py --targets strength_pair,pair_strength,strength_solvers,strength_planetary,
 strength_cli,strength_drive --cases 1500 --seed 7 --seconds 1500``, and the strength_report target):
 one minimal reproducer per failure class, each stating the project's rule (a result with finite numbers, or one GearDesignError naming the
-input, its value and its range; no warning escaping a call) and marked ``xfail(strict=True)`` until the
-package is fixed, so that the fix must unmark it.
+input, its value and its range; no warning escaping a call). Each was marked ``xfail(strict=True)`` until
+the package was fixed; all are fixed now and hold as plain tests.
 """
 import math
 import warnings
@@ -21,7 +21,6 @@ def _pair():
     return gd.GearPair(4, 20, 60, 0.0, 0.0, face_width_mm=40)
 
 
-@pytest.mark.xfail(strict=True, reason="empty material name answers with a catalog material")
 def test_an_empty_material_name_is_refused():
     # material("") returns 18CrNiMo7-6 (the catalog's first row) instead of refusing the name; a name
     # with a space or in lower case is refused, and pair_strength(material1="") refuses it too
@@ -29,14 +28,12 @@ def test_an_empty_material_name_is_refused():
         material("")
 
 
-@pytest.mark.xfail(strict=True, reason="material name of a wrong type: TypeError traceback")
 @pytest.mark.parametrize("name", [["42CrMo4"], {"a": 1}])
 def test_a_material_name_of_a_wrong_type_is_refused(name):
     with pytest.raises(gd.GearDesignError, match="material"):     # now TypeError: unhashable type
         material(name)
 
 
-@pytest.mark.xfail(strict=True, reason="pair-valued strength options not validated as pairs")
 @pytest.mark.parametrize("option, value", [("cycles_per_rev", 3), ("cycles_per_rev", (2,)),
                                            ("cycles_per_rev", (1, 1, 1)), ("rim_mm", 30.0), ("rim_mm", True),
                                            ("bore_ratio", 0.5)])
@@ -47,7 +44,6 @@ def test_pair_valued_options_must_be_pairs(option, value):
         _pair().strength(LOAD, "42CrMo4", **{option: value})
 
 
-@pytest.mark.xfail(strict=True, reason="tip_relief_um not validated")
 @pytest.mark.parametrize("value", [1e308, float("nan"), float("inf"), "a", -1.0, True, np.array([1.0])])
 def test_the_tip_relief_is_validated(value):
     # now: 1e308 and NaN give ValueError (min() of an empty sequence, in the result's governing check),
@@ -59,7 +55,6 @@ def test_the_tip_relief_is_validated(value):
             _pair().strength(LOAD, "42CrMo4", tip_relief_um=value)
 
 
-@pytest.mark.xfail(strict=True, reason="S_H NaN with a RuntimeWarning for an undercut pinion (Z_B sqrt < 0)")
 @pytest.mark.parametrize("z1, z2, x1, x2", [(5, 300, 0.0, 0.0), (21, 59, -1.205, 1.518)])
 def test_an_undercut_pinion_gets_a_contact_safety_or_a_clear_refusal(z1, z2, x1, x2):
     # GearPair accepts the pair (it exists and meshes); strength() returns S_H1 = NaN (Z_B: sqrt of a
@@ -74,16 +69,17 @@ def test_an_undercut_pinion_gets_a_contact_safety_or_a_clear_refusal(z1, z2, x1,
     assert all(math.isfinite(v) for v in (r.S_H1, r.S_H2, r.S_F1, r.S_F2, r.sigma_H1))
 
 
-@pytest.mark.xfail(strict=True, reason="S_H NaN with a RuntimeWarning for an undercut pinion (Z_B sqrt < 0)")
 def test_pair_strength_arrays_hold_no_nan_without_a_given_geometry():
-    # the docstring: only with geometry= (unvalidated) may a design give NaN; here Z_B, sigma_H1, S_H1 are NaN
+    # the docstring: only with geometry= (unvalidated) may a design give NaN; these two were NaN (Z_B's root of a
+    # negative): now the first such design is refused by name, the factor named, with no warning on the way
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        out = pair_strength(4, 5, 300, np.array([0.0, 0.5]), 0.0, load=LOAD, material1="42CrMo4", face_width_mm=40)
+        with pytest.raises(gd.GearDesignError, match=r"design m=4, z1=5, z2=300, x1=0.0, x2=0.0: Z_B is not finite"):
+            pair_strength(4, 5, 300, np.array([0.0, 0.5]), 0.0, load=LOAD, material1="42CrMo4", face_width_mm=40)
+        out = pair_strength(4, 20, 60, np.array([0.0, 0.5]), 0.0, load=LOAD, material1="42CrMo4", face_width_mm=40)
     assert np.isfinite(out["S_H1"]).all() and np.isfinite(out["Z_B"]).all()
 
 
-@pytest.mark.xfail(strict=True, reason="pair_strength's arrays used before validation: ValueError traceback")
 @pytest.mark.parametrize("x1, x2", [(np.zeros(3), np.zeros(4)), (0.0, [[1], [2, 3]])])
 def test_pair_strength_refuses_mismatched_or_ragged_arrays(x1, x2):
     # now numpy's ValueError (shape mismatch; setting an array element with a sequence) from the chain's
@@ -92,7 +88,6 @@ def test_pair_strength_refuses_mismatched_or_ragged_arrays(x1, x2):
         pair_strength(4, 20, 60, x1, x2, load=LOAD, material1="42CrMo4", face_width_mm=40)
 
 
-@pytest.mark.xfail(strict=True, reason="unknown strength option: TypeError traceback")
 def test_an_unknown_strength_option_is_refused():
     # in a checks dict's "strength" (as in every solver) and in GearPair.strength(**options): now a
     # TypeError (pair_strength() got an unexpected keyword argument 'bogus')
@@ -100,7 +95,6 @@ def test_an_unknown_strength_option_is_refused():
         _pair().checks(load=LOAD, material="42CrMo4", face_width_mm=40, strength={"bogus": 1})
 
 
-@pytest.mark.xfail(strict=True, reason="a torque from power and speed is not held to torque_nm's range")
 def test_a_torque_from_power_and_speed_is_held_to_the_torque_range():
     # torque_nm=1e10 is refused ("torque_nm must be in (0, 1e+09] N·m"), but 1e6 kW at 1e-6 rpm
     # (9.5e15 N·m) is taken: S_H = 0.000, sigma_F of 1e11 MPa, and on the command line NaN checks
@@ -108,7 +102,6 @@ def test_a_torque_from_power_and_speed_is_held_to_the_torque_range():
         Load(power_kw=1e6, n_rpm=1e-6)
 
 
-@pytest.mark.xfail(strict=True, reason="refusal names an internal quantity, not the input")
 @pytest.mark.parametrize("kw, name", [(dict(rim_mm=(1.0, 1.0)), "rim_mm"), ({}, "face_width")])
 def test_a_refusal_names_the_input_given(kw, name):
     # rim_mm=(1, 1): "s_R_over_h_t must be in (0.5, 1e+06], got 0.111"; a face width of 1e4 mm on a
@@ -119,7 +112,6 @@ def test_a_refusal_names_the_input_given(kw, name):
         pair.strength(LOAD, "42CrMo4", **kw)
 
 
-@pytest.mark.xfail(strict=True, reason="StrengthResult repr columns run together for large stresses")
 def test_the_result_repr_keeps_its_columns_apart():
     # a valid extreme load (1e9 N·m, the top of torque_nm's range, on a module-4 pair):
     # "sigma_F  461890345.3437006678.1  MPa"
@@ -128,7 +120,6 @@ def test_the_result_repr_keeps_its_columns_apart():
     assert len(row.split()) >= 4, row
 
 
-@pytest.mark.xfail(strict=True, reason="K_Hbeta below 1 or negative: running-in allowance y_beta > F_betax")
 @pytest.mark.parametrize("m, z1, z2, x2, width, load", [(4, 20, 60, 0.0, 40, LOAD),
                                                         (0.1, 22, 112, -0.337, 2.3, Load(torque_nm=400, n_rpm=1e-6))])
 def test_the_face_load_factor_is_at_least_one(m, z1, z2, x2, width, load):
@@ -144,7 +135,6 @@ def test_the_face_load_factor_is_at_least_one(m, z1, z2, x2, width, load):
     assert out["K_Hbeta"] >= 1.0 and out["K_Fbeta"] >= 1.0 and np.isfinite(out["S_H1"])
 
 
-@pytest.mark.xfail(strict=True, reason="strength checks NaN (margin -inf) where strength() answers")
 def test_the_strength_checks_agree_with_strength_on_a_pair_with_interference():
     # 20/300 at x1 = -0.2 (slight undercut, interference1 fails): strength() gives S_H1 = 0.740,
     # S_F1 = 3.46, but checks(load=...) gives contact_strength, root_strength1, root_strength2 value NaN,
@@ -158,7 +148,6 @@ def test_the_strength_checks_agree_with_strength_on_a_pair_with_interference():
     assert t.loc["root_strength1", "value"] == pytest.approx(r.S_F1)
 
 
-@pytest.mark.xfail(strict=True, reason="planetary_strength: an option it sets itself gives a TypeError traceback")
 @pytest.mark.parametrize("option, value", [("cycles_per_rev", (2, 1)), ("beta_deg", 10.0)])
 def test_planetary_strength_refuses_the_options_it_sets(option, value):
     # now: TypeError (pair_strength() / dict() got multiple values for keyword argument ...); the set

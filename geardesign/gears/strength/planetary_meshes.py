@@ -3,11 +3,15 @@ load factor K_γ (ISO 6336-1:2019 clause 6.4)."""
 from __future__ import annotations
 
 from ...errors import GearDesignError
-from .chain import pair_strength
+from .chain import check_options, pair_strength
 from .load import Load
 from .result import StrengthResult, from_chain
 
 __all__ = ["planetary_strength", "mesh_loads"]
+
+
+# the pair_strength options a set fixes itself
+_SET_OWN = ("beta_deg", "rack", "tip_shortening", "internal", "cycles_per_rev", "geometry")
 
 
 def _carrier_speed(arrangement: str, z_sun: int, z_ring: int, n_sun: float) -> float:
@@ -62,6 +66,11 @@ def planetary_strength(pset, load: Load, material=None, *, face_width_mm: float,
     """
     if material is None:
         raise GearDesignError("material is needed (a geardesign Material or a name such as '18CrNiMo7-6')")
+    taken = sorted(set(options) & set(_SET_OWN))
+    if taken:
+        raise GearDesignError(f"{', '.join(taken)}: planetary_strength takes these from the set (its helix, rack and "
+                              f"the planets' load cycles), not as options")
+    check_options(options)
     (sp_load, sp_cycles), (pr_load, pr_cycles) = mesh_loads(pset.z_sun, pset.z_planet, pset.z_ring, pset.n_planets,
                                                              pset.arrangement, load).values()
     common = dict(beta_deg=pset.beta_deg, rack=pset.rack, tip_shortening=False, face_width_mm=face_width_mm,
