@@ -66,3 +66,25 @@ def test_planetary_optima_recheck(z_sun, z_planet, n):
     assume(r.success)
     s = gd.PlanetarySet(2.0, z_sun, z_planet, z_ring, n, x_sun=r.x_sun, x_planet=r.x_planet, x_ring=r.x_ring)
     assert s.ok(), s.checks()
+
+
+def test_an_slsqp_optimum_is_moved_inside_the_check_it_meets():
+    # found by fuzzing the strength surfaces: max_min_safety on 20/60 m = 0.5 ends on SLSQP's point (no KKT
+    # polish), whose contact ratio margin was -1.8e-12, outside FEASIBILITY_TOL; the point is now moved inside
+    load = gd.Load(torque_nm=0.001, n_rpm=1e-06)
+    case = {"load": load, "material": "42CrMo4", "face_width_mm": 40.0}
+    r = gd.optimize_shifts(20, 60, m=0.5, checks=case, method="exact", objective="max_min_safety")
+    assert r.success and "SLSQP" in r.message
+    table = gd.GearPair(0.5, 20, 60, r.x1, r.x2).checks(**case)
+    assert table["ok"].all(), table
+    assert (table["margin"] >= 0.0).all()
+
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(z1=st.integers(14, 40), dz=st.integers(5, 80), torque=st.floats(10.0, 800.0),
+       objective=st.sampled_from(["max_x_sum", "max_min_safety", "balanced_root_strength"]))
+def test_loaded_optima_recheck(z1, dz, torque, objective):
+    case = {"load": gd.Load(torque_nm=torque, n_rpm=1000), "material": "18CrNiMo7-6", "face_width_mm": 40.0}
+    r = gd.optimize_shifts(z1, z1 + dz, m=4, checks=case, objective=objective)
+    assume(r.success)
+    assert gd.GearPair(4, z1, z1 + dz, r.x1, r.x2).ok(**case)

@@ -205,7 +205,23 @@ def exact_from(prob: Problem, ev: Evaluator, v0, bounds, tol, h):
     # Where SLSQP stops after a failed line search depends on the last digits of the margins
     # near the edge (on it or just inside): the edge is recognised by SLSQP having reached it.
     kind = "edge" if not ok and ev_s.missing > 0 else "slsqp"
-    return w, nit, "converged (SLSQP; active-set polish not applicable)", kind
+    return _inside(ev_s, w, nv, tol), nit, "converged (SLSQP; active-set polish not applicable)", kind
+
+
+def _inside(ev, w, nv: int, tol: float):
+    """SLSQP's point w moved the least that makes the margins it misses by less than ``tol`` hold (one
+    Gauss-Newton step on those margins, to a hair inside): SLSQP meets its constraints to its own tolerance,
+    a returned optimum must hold every check (FEASIBILITY_TOL). w itself where no such step does it."""
+    _, M, _, GM = ev(w[:nv])
+    miss = M < 0.0
+    if not miss.any() or (M < -tol).any():
+        return w
+    step = np.linalg.lstsq(GM[miss], FEASIBILITY_TOL - M[miss], rcond=None)[0]
+    v = w[:nv] + step
+    P2, M2, _, _ = ev(v)
+    if M2.min() >= 0.0 and np.isfinite(P2).all():
+        return np.append(v, P2.min())
+    return w
 
 
 _NO_OPTIMUM = ("no optimum: {objective} keeps improving toward the edge where the pair stops existing "
