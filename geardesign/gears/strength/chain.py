@@ -326,13 +326,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     grade, nu40, Rz, Rz_root, K_gamma, root_method = _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um,
                                                                        K_gamma, root_method)
     S_Hmin, S_Fmin = _number("S_Hmin", S_Hmin, 0.5, 10.0), _number("S_Fmin", S_Fmin, 0.5, 10.0)
-    cpr = _pair_option("cycles_per_rev", cycles_per_rev, lambda c: _number("cycles_per_rev", c, 1, 1000))
-    rim_mm = _pair_option("rim_mm", rim_mm, lambda r: None if r is None else _number(
-        "rim_mm", r, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm"))
-    bore_ratio = _pair_option("bore_ratio", bore_ratio, lambda q: _number("bore_ratio", q, 0.0, 1.0, hi_open=True))
-    if tip_relief_um is not None:
-        tip_relief_um = _number("tip_relief_um", _not_bool("tip_relief_um", tip_relief_um), *TIP_RELIEF_RANGE_UM,
-                                unit="µm")
+    cpr, rim_mm, bore_ratio, tip_relief_um = _per_gear_options(cycles_per_rev, rim_mm, bore_ratio, tip_relief_um)
     if geometry is None and not all(type(v) in (int, float) for v in (m, z1, z2, x1, x2)):
         validate_inputs(m, z1, z2, x1, x2)      # ragged or mismatched arrays refused by name before any work
         broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=face_width_mm)
@@ -400,6 +394,18 @@ def _pair_option(name, value, check) -> tuple:
     if not isinstance(value, (tuple, list)) or len(value) != 2:
         raise GearDesignError(f"{name} must be a pair (gear 1, gear 2), got {value!r}")
     return tuple(check(_not_bool(name, v)) for v in value)
+
+
+def _per_gear_options(cycles_per_rev, rim_mm, bore_ratio, tip_relief_um) -> tuple:
+    """The options of the two gears (pairs) and the tip relief, checked."""
+    cpr = _pair_option("cycles_per_rev", cycles_per_rev, lambda c: _number("cycles_per_rev", c, 1, 1000))
+    rim_mm = _pair_option("rim_mm", rim_mm, lambda r: None if r is None else _number(
+        "rim_mm", r, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm"))
+    bore_ratio = _pair_option("bore_ratio", bore_ratio, lambda q: _number("bore_ratio", q, 0.0, 1.0, hi_open=True))
+    if tip_relief_um is not None:
+        tip_relief_um = _number("tip_relief_um", _not_bool("tip_relief_um", tip_relief_um), *TIP_RELIEF_RANGE_UM,
+                                unit="µm")
+    return cpr, rim_mm, bore_ratio, tip_relief_um
 
 
 def check_options(options: dict) -> dict:
