@@ -328,8 +328,14 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     S_Hmin, S_Fmin = _number("S_Hmin", S_Hmin, 0.5, 10.0), _number("S_Fmin", S_Fmin, 0.5, 10.0)
     cpr, rim_mm, bore_ratio, tip_relief_um = _per_gear_options(cycles_per_rev, rim_mm, bore_ratio, tip_relief_um)
     if geometry is None and not all(type(v) in (int, float) for v in (m, z1, z2, x1, x2)):
-        validate_inputs(m, z1, z2, x1, x2)      # ragged or mismatched arrays refused by name before any work
-        broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=face_width_mm)
+        # ragged lists and shapes that do not broadcast refused by name before any work (arrays' values are
+        # checked by the geometry, once)
+        if not all(isinstance(v, (np.ndarray, int, float, np.number)) for v in (m, z1, z2, x1, x2)):
+            validate_inputs(m, z1, z2, x1, x2)
+        try:
+            np.broadcast_shapes(*(np.shape(v) for v in (m, z1, z2, x1, x2, face_width_mm)))
+        except ValueError:
+            broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=face_width_mm)
     o = SimpleNamespace(load=load, mats=mats, grade=grade, nu40=nu40, Rz=Rz, Rz_root=Rz_root, K_gamma=K_gamma,
                         root_method=root_method, cpr=cpr, tip_relief_um=tip_relief_um, bore=bore_ratio,
                         shaft=shaft or {},
