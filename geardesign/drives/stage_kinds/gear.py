@@ -190,8 +190,8 @@ class GearKind(ToothedKind):
             return dict(ref, m=math.nan, face_width_mm=None)
         cands, best = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
                                      _series(), MARGIN_TOL)
-        if cands and _shifts_scale_free(stage):   # the reference shifts are those of the first candidate
-            return self._scaled(ref, *best)
+        if _shifts_scale_free(stage):   # the reference shifts are those of the first candidate (or the closest)
+            return self._scaled(ref, *best) if cands else self._unsized(ref, *best)
         for m, b in cands[:SIZING_TRIES]:
             sol = self._candidate(stage, m, b, z1, z2, objective, flow)
             if sol["feasible"]:
@@ -201,6 +201,16 @@ class GearKind(ToothedKind):
         sol = self._candidate(stage, best[0], best[1], z1, z2, objective, flow)
         return dict(sol, reason=f"no module of the ISO 54 series carries the load (closest m = {best[0]:g} mm, "
                                 f"b = {best[1]:g} mm: {sol['reason']})")
+
+    @classmethod
+    def _unsized(cls, ref: dict, m: float, b: float, strength: dict) -> dict:
+        """The failing solution of a tooth pair no module carries: :meth:`_scaled` to the closest (m, b) with the
+        strength checks it fails named (as a solve at that module would name them)."""
+        sol = cls._scaled(ref, m, b, strength)
+        why = "fails " + ", ".join(k for k, v in strength.items() if not v >= -MARGIN_TOL)
+        why = f"{ref['reason']}; {why}" if ref["reason"] else why
+        return dict(sol, feasible=False, reason=f"no module of the ISO 54 series carries the load (closest "
+                                                f"m = {m:g} mm, b = {b:g} mm: {why})")
 
     @staticmethod
     def _scaled(ref: dict, m: float, b: float, strength: dict) -> dict:
@@ -237,7 +247,7 @@ class GearKind(ToothedKind):
             sizes = strength_sizes_many(stage, torque, speed, [(*pairs[i], refs[i]["x1"], refs[i]["x2"]) for i in idx],
                                         _series(), MARGIN_TOL)
             for i, (cands, best) in zip(idx, sizes):
-                out[i] = self._scaled(refs[i], *best) if cands else None
+                out[i] = self._scaled(refs[i], *best) if cands else self._unsized(refs[i], *best)
         return [sol if sol is not None else self.solve(stage, o, objective, f)      # unsized: as one by one
                 for sol, o, f in zip(out, options, flows)]
 
