@@ -530,17 +530,3 @@ def _strength_report(rng):
 STRENGTH = {"strength_pair": _strength_pair, "pair_strength": _pair_strength, "strength_solvers": _strength_solvers,
             "strength_planetary": _strength_planetary, "strength_cli": _strength_cli, "strength_drive": _strength_drive,
             "strength_report": _strength_report}
-
-
-# The failure classes reproduced in tests/test_strength_defects.py (xfail until fixed), by a pattern of
-# a case's outcome detail or description: the CI sample (tests/test_fuzz.py) passes a case of one of
-# them and fails on any other. Delete a class's line with its fix.
-KNOWN_DEFECTS: dict = {}   # every class found is fixed (tests/test_strength_defects.py); a new one fails the sample
-
-
-def known_defect(desc: str, detail: str) -> str | None:
-    """The test of tests/test_strength_defects.py reproducing this failure's class, or None (a new one)."""
-    for test, pattern in KNOWN_DEFECTS.items():
-        if re.search(pattern, detail) or re.search(pattern, desc):
-            return test
-    return None

@@ -17,7 +17,7 @@ from hypothesis import given, settings, strategies as st
 
 import geardesign as gd
 from tests.fuzzcases import TARGETS, run_case
-from tests.fuzzstrength import STRENGTH, known_defect
+from tests.fuzzstrength import STRENGTH
 
 _SLOW = ("scene", "cli", "shift_atlas", "feasible_region", "profile_files", "cli_files", "ctrl_c")
 _FAST = [t for t in TARGETS if t not in _SLOW and t not in STRENGTH]     # the load-capacity ones: their own sample
@@ -50,11 +50,10 @@ _STRENGTH = ("strength_pair", "pair_strength")
 def test_strength_surfaces_answer_or_refuse_cleanly(target, seed):
     """The load-capacity surfaces: GearPair.strength and pair_strength (tests/fuzzstrength.py; the solvers,
     atlases, planetary sets, drives, reports and commands with a load are left to tools/fuzz.py, being
-    slow): a failure of a class already reproduced, xfail, in
-    tests/test_strength_defects.py passes here; any other fails."""
+    slow): a result with finite numbers or one clean refusal, every case (the classes the first runs found
+    are fixed; their reproducers are tests/test_strength_defects.py)."""
     outcome, desc, detail = run_case(target, seed, time_limit_s=60.0)
-    if outcome not in ("ok", "clean_error", "feasibility_tol"):
-        assert known_defect(desc, detail), f"{outcome}: {desc}\n  -> {detail}"
+    assert outcome in ("ok", "clean_error"), f"{outcome}: {desc}\n  -> {detail}"
 
 
 @pytest.mark.parametrize("argv", [

@@ -226,15 +226,7 @@ def running_in_alpha(f_pb_um, sigma_Hlim_mpa, kind, v_m_s):
     >>> float(running_in_alpha(10.0, 800.0, "V", 3.0)), float(running_in_alpha(10.0, 1500.0, "Eh", 3.0))
     (2.0, 0.75)
     """
-    xp = ops_of(f_pb_um, sigma_Hlim_mpa)
-    f = xp.asarray(f_pb_um)
-    if kind in _SURFACE_HARDENED:
-        return xp.minimum(0.075 * f, 3.0)
-    if kind in _GREY:
-        return _speed_capped(0.275 * f, v_m_s, 22.0, 11.0)
-    s = xp.asarray(sigma_Hlim_mpa)
-    # not above f_pb itself: running-in cannot wear away more than the deviation (σ_Hlim < 160 MPa would)
-    return xp.minimum(_speed_capped(160.0 / s * f, v_m_s, 12_800.0 / s, 6_400.0 / s), f)
+    return _running_in(f_pb_um, sigma_Hlim_mpa, kind, v_m_s, _RUNNING_IN_ALPHA)
 
 
 def running_in_beta(F_betax_um, sigma_Hlim_mpa, kind, v_m_s):
@@ -245,15 +237,28 @@ def running_in_beta(F_betax_um, sigma_Hlim_mpa, kind, v_m_s):
     >>> float(running_in_beta(20.0, 800.0, "V", 3.0)), float(running_in_beta(20.0, 1500.0, "Eh", 3.0))
     (8.0, 3.0)
     """
-    xp = ops_of(F_betax_um, sigma_Hlim_mpa)
-    F = xp.asarray(F_betax_um)
+    return _running_in(F_betax_um, sigma_Hlim_mpa, kind, v_m_s, _RUNNING_IN_BETA)
+
+
+# (surface hardened: factor, cap µm), (grey iron: factor, cap 5-10 m/s, cap above µm), (the others: numerator of
+# factor/σ_Hlim, caps' numerators) of y_α and y_β
+_RUNNING_IN_ALPHA = ((0.075, 3.0), (0.275, 22.0, 11.0), (160.0, 12_800.0, 6_400.0))
+_RUNNING_IN_BETA = ((0.15, 6.0), (0.55, 45.0, 22.0), (320.0, 25_600.0, 12_800.0))
+
+
+def _running_in(dev_um, sigma_Hlim_mpa, kind, v_m_s, table):
+    """The running-in allowance of ``dev_um`` (f_pb or F_βx) by the kind's row of ``table``; for St, V, GGG(perl),
+    GTS (the last row) never above the deviation itself (σ_Hlim below the row's numerator would wear away more
+    than there is: K_Hβ >= 1 needs F_βy = F_βx − y_β >= 0)."""
+    xp = ops_of(dev_um, sigma_Hlim_mpa)
+    d = xp.asarray(dev_um)
+    (k_h, cap_h), (k_g, cap_g5, cap_g10), (k_s, cap_s5, cap_s10) = table
     if kind in _SURFACE_HARDENED:
-        return xp.minimum(0.15 * F, 6.0)
+        return xp.minimum(k_h * d, cap_h)
     if kind in _GREY:
-        return _speed_capped(0.55 * F, v_m_s, 45.0, 22.0)
+        return _speed_capped(k_g * d, v_m_s, cap_g5, cap_g10)
     s = xp.asarray(sigma_Hlim_mpa)
-    # not above F_βx itself (F_βy = F_βx − y_β >= 0, K_Hβ >= 1): σ_Hlim < 320 MPa would run in more than there is
-    return xp.minimum(_speed_capped(320.0 / s * F, v_m_s, 25_600.0 / s, 12_800.0 / s), F)
+    return xp.minimum(_speed_capped(k_s / s * d, v_m_s, cap_s5 / s, cap_s10 / s), d)
 
 
 def tip_relief_running_in(sigma_Hlim_mpa):
