@@ -32,3 +32,17 @@ def test_blocked_plain_margins_are_the_plain_margins():
     z1, z2, x1, x2 = designs(40_000, seed=6)
     z1, z2 = z1.astype(float), z2.astype(float)
     np.testing.assert_array_equal(plain_blocked(z1, z2, x1, x2), np.array(plain_margins(z1, z2, x1, x2)))
+
+
+def test_margin_bound_witness_beats_the_max_margin_solution():
+    """bench_drive_margin_bound's witness: a node of the window where the smallest raw check margin, re-checked
+    by GearPair.checks (another path than the vectorised problem), is the witness's value and lies well above the
+    smallest raw margin at the max_margin shift solution of the same pair (its Chebyshev centre of the
+    normalised margins): a bound valid over the window cannot come near the solved value."""
+    from bench_drive_margin_bound import witness
+
+    value, x1, x2 = witness(25, 116, 3.0)
+    table = gd.GearPair(3.0, 25, 116, x1, x2).checks(jamming=False)   # the drive stage's checks
+    assert abs(table["margin"].astype(float).min() - value) <= 1e-9
+    solved = gd.optimize_shifts(25, 116, "max_margin", m=3.0)
+    assert value > min(solved.margins.values()) + 0.05
