@@ -230,9 +230,11 @@ class Search:
     def _solve_ahead(self, firsts) -> None:
         """The unsolved options of the groups whose first designs are ``firsts`` (the walk's next ones
         within the bound so far: one the walk then stops before costs a solve, never a result), each
-        stage's solved together (:meth:`StageKind.solve_many`), so that their fixed costs are shared."""
+        stage's solved together (:meth:`StageKind.solve_many`), so that their fixed costs are shared.
+        A stage is solved ahead only when the walk's current group (``firsts[0]``) needs it: the window
+        is then solved as one chunk, not topped up by one option per step (which would share nothing)."""
         for k in self.solved_k:
-            if not self.kinds[k].solves_together(self.stages[k]):
+            if not self.kinds[k].solves_together(self.stages[k]) or self._key(k, firsts[0]) in self._solved:
                 continue
             todo: dict = {}
             for c in firsts:
