@@ -188,11 +188,12 @@ class GearKind(ToothedKind):
         ref = gear_solution(replace(stage, m=1.0), z1, z2, objective)
         if "x1" not in ref:
             return dict(ref, m=math.nan, face_width_mm=None)
+        free = _shifts_scale_free(stage)
         cands, best = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
-                                     _series(), MARGIN_TOL)
-        if _shifts_scale_free(stage):   # the reference shifts are those of the first candidate (or the closest)
+                                     _series(), MARGIN_TOL, 1 if free else SIZING_TRIES)
+        if free:   # the reference shifts are those of the first candidate (or the closest)
             return self._scaled(ref, *best) if cands else self._unsized(ref, *best)
-        for m, b in cands[:SIZING_TRIES]:
+        for m, b in cands:
             sol = self._candidate(stage, m, b, z1, z2, objective, flow)
             if sol["feasible"]:
                 return sol

@@ -11,9 +11,13 @@ S_Fmin, :mod:`geardesign.gears.strength.defaults`):
 
 Sizing (``GearStage(m=None)``): every module of the ISO 54 series (``catalogs/modules_iso54.csv``)
 times face widths b = ψ_d·d1 (rounded up to whole mm) for ψ_d = b/d1 in :data:`WIDTH_TO_DIAMETER_RANGE`
-by steps of :data:`WIDTH_TO_DIAMETER_STEP` (or the stage's own ``face_width_mm``) is checked in one
-vectorised call; the candidates that hold every strength check come smallest module first, then
-narrowest. The range is a modelling choice, stated with where its ends come from: b/d1 ≥ 0.2 is the
+by steps of :data:`WIDTH_TO_DIAMETER_STEP` (or the stage's own ``face_width_mm``) is checked, vectorised
+over the grid and over several tooth pairs at once; the candidates that hold every strength check come
+smallest module first, then narrowest. Contact first: its margin on the whole grid (the root side is
+half of the strength model's work), then the root checks only where they can decide the answer, i.e.
+at the first contact-holding designs in that order (a design whose contact fails is no candidate
+whatever its root); on the whole grid only when that does not settle the candidates asked for, or
+when no design holds (the closest one is then chosen over every check). The range is a modelling choice, stated with where its ends come from: b/d1 ≥ 0.2 is the
 lower end VDI 2736 Sheet 2 (2014) allows (as quoted by the FVA-Workbench documentation, attribute
 "Ratio of facewidth to pinion diameter", https://adoc.fva-service.de/help/8.0/en/attr/PMID_10677.htm);
 b/d1 ≤ 1.0 follows the rule that the width stay below the pinion diameter, as the load distribution
@@ -36,16 +40,19 @@ WIDTH_TO_DIAMETER_RANGE = (0.2, 1.0)
 WIDTH_TO_DIAMETER_STEP = 0.05
 
 
-def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, speed_rpm: float) -> dict:
+def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, speed_rpm: float,
+                     root: bool = True) -> dict:
     """{check: margin array} of :data:`STRENGTH_CHECKS` for the stage's pairs (m, b broadcast) carrying
-    ``torque_nm`` on the pinion at ``speed_rpm`` (with the stage's life and application factor)."""
+    ``torque_nm`` on the pinion at ``speed_rpm`` (with the stage's life and application factor);
+    ``root=False``: ``contact_strength`` alone (the strength model skips the root side)."""
     from ...gears.strength import pair_strength   # here: the materials catalog loads pandas
 
-    out = pair_strength(m, z1, z2, x1, x2, load=stage.load(torque_nm, speed_rpm),
+    out = pair_strength(m, z1, z2, x1, x2, load=stage.load(torque_nm, speed_rpm), root=root,
                         material1=stage_material(stage.material), face_width_mm=face_width_mm, beta_deg=stage.beta_deg)
-    return {"contact_strength": np.minimum(out["S_H1"], out["S_H2"]) / out["S_Hmin"] - 1.0,
-            "root_strength1": out["S_F1"] / out["S_Fmin"] - 1.0,
-            "root_strength2": out["S_F2"] / out["S_Fmin"] - 1.0}
+    margins = {"contact_strength": np.minimum(out["S_H1"], out["S_H2"]) / out["S_Hmin"] - 1.0}
+    if root:
+        margins.update(root_strength1=out["S_F1"] / out["S_Fmin"] - 1.0, root_strength2=out["S_F2"] / out["S_Fmin"] - 1.0)
+    return margins
 
 
 def _widths(stage, modules: np.ndarray, z1: int) -> tuple:
@@ -59,36 +66,73 @@ def _widths(stage, modules: np.ndarray, z1: int) -> tuple:
 
 
 def strength_sizes(stage, torque_nm: float, speed_rpm: float, z1: int, z2: int, x1: float, x2: float,
-                   modules: np.ndarray, tol: float) -> tuple:
-    """(candidates, best): the (m, b) that hold every strength check at shifts x1, x2, smallest module
-    first, then narrowest; and (m, b, {check: margin}) of the first candidate, or when none holds, of
-    the (m, b) closest to holding."""
-    return strength_sizes_many(stage, torque_nm, speed_rpm, [(z1, z2, x1, x2)], modules, tol)[0]
+                   modules: np.ndarray, tol: float, tries: int = 1) -> tuple:
+    """(candidates, best): the first ``tries`` (m, b) that hold every strength check at shifts x1, x2,
+    smallest module first, then narrowest; and (m, b, {check: margin}) of the first candidate, or when
+    none holds, of the (m, b) closest to holding."""
+    return strength_sizes_many(stage, torque_nm, speed_rpm, [(z1, z2, x1, x2)], modules, tol, tries)[0]
 
 
-def strength_sizes_many(stage, torque_nm: float, speed_rpm: float, pairs, modules: np.ndarray, tol: float) -> list:
-    """:func:`strength_sizes` of several tooth pairs ``pairs`` [(z1, z2, x1, x2), ...] at one load, in one
-    vectorised call (its fixed cost shared)."""
+def strength_sizes_many(stage, torque_nm: float, speed_rpm: float, pairs, modules: np.ndarray, tol: float,
+                        tries: int = 1) -> list:
+    """:func:`strength_sizes` of several tooth pairs ``pairs`` [(z1, z2, x1, x2), ...] at one load, each
+    strength call vectorised over them all (its fixed cost shared). The contact margin on every pair's
+    whole grid; the root margins (:func:`_root_rounds`) where they decide the candidates."""
     modules = np.asarray(modules, dtype=float)
     grids = [_widths(stage, modules, z1) for z1, _, _, _ in pairs]
-    M = np.stack([np.broadcast_to(m, grids[0][0].shape) for m, _ in grids])
-    B = np.stack([np.broadcast_to(b, grids[0][0].shape) for _, b in grids])
+    shape = (len(pairs),) + grids[0][0].shape
+    M = np.stack([np.broadcast_to(m, shape[1:]) for m, _ in grids])
+    B = np.stack([np.broadcast_to(b, shape[1:]) for _, b in grids])
     z1, z2 = (np.array([p[i] for p in pairs], dtype=np.int64)[:, None, None] for i in (0, 1))
     x1, x2 = (np.array([p[i] for p in pairs], dtype=float)[:, None, None] for i in (2, 3))
-    margins = strength_margins(stage, M, B, z1, z2, x1, x2, torque_nm, speed_rpm)
-    margins = {k: np.broadcast_to(v, M.shape) for k, v in margins.items()}
-    return [_first_size(M[i], B[i], {k: v[i] for k, v in margins.items()}, tol) for i in range(len(pairs))]
+    grid = dict(m=M, b=B, z1=z1, z2=z2, x1=x1, x2=x2)
+    contact = np.broadcast_to(strength_margins(stage, M, B, z1, z2, x1, x2, torque_nm, speed_rpm, root=False)
+                              ["contact_strength"], shape).reshape(len(pairs), -1)
+    order = [np.lexsort((B[i].ravel(), M[i].ravel())) for i in range(len(pairs))]
+    roots = _root_rounds(stage, torque_nm, speed_rpm, grid, contact, order, tol, tries)
+    margins = {"contact_strength": contact, **roots}
+    return [_first_size(M[i].ravel(), B[i].ravel(), {k: v[i] for k, v in margins.items()}, order[i], tol, tries)
+            for i in range(len(pairs))]
 
 
-def _first_size(M: np.ndarray, B: np.ndarray, margins: dict, tol: float) -> tuple:
-    """(candidates, best) of one pair's (m, b) grid and its margins, as :func:`strength_sizes` returns."""
+def _root_rounds(stage, torque_nm, speed_rpm, grid: dict, contact: np.ndarray, order: list, tol: float,
+                 tries: int) -> dict:
+    """The root margins (NaN where not computed) of the designs that decide each pair's sizing (pairs ×
+    flat grid). Round one: each pair's first ``tries`` contact-holding designs in (m, b) order (every
+    design when none holds contact). A candidate must hold contact, so a pair is settled when ``tries``
+    of them hold every check, or when every contact-holding design is checked and one holds. Round two:
+    every design of the others (when none holds, the closest design is chosen over the whole grid)."""
+    ok_c = contact >= -tol                                   # NaN: no such design, never a candidate
+    checked = np.zeros(contact.shape, dtype=bool)
+    for i, o in enumerate(order):
+        holders = o[ok_c[i, o]]
+        checked[i, holders[:tries] if holders.size else o] = True
+    roots = {k: np.full(contact.shape, np.nan) for k in STRENGTH_CHECKS[1:]}
+    _root_at(stage, torque_nm, speed_rpm, grid, checked, roots)
+    held = (ok_c & (np.minimum(roots["root_strength1"], roots["root_strength2"]) >= -tol)).sum(axis=1)
+    unsettled = ((held < tries) & (ok_c & ~checked).any(axis=1)) | (held == 0)
+    _root_at(stage, torque_nm, speed_rpm, grid, unsettled[:, None] & ~checked, roots)
+    return roots
+
+
+def _root_at(stage, torque_nm, speed_rpm, grid: dict, pick: np.ndarray, roots: dict) -> None:
+    """The root margins of the designs ``pick`` (pairs × flat grid) into ``roots``, in one call."""
+    if not pick.any():
+        return
+    shape = grid["m"].shape
+    at = {k: np.broadcast_to(v, shape).reshape(pick.shape)[pick] for k, v in grid.items()}
+    out = strength_margins(stage, at["m"], at["b"], at["z1"], at["z2"], at["x1"], at["x2"], torque_nm, speed_rpm)
+    for k in STRENGTH_CHECKS[1:]:
+        roots[k][pick] = out[k]
+
+
+def _first_size(M: np.ndarray, B: np.ndarray, margins: dict, order: np.ndarray, tol: float, tries: int) -> tuple:
+    """(candidates, best) of one pair's flat (m, b) grid, its margins (root NaN where unchecked) and its
+    (m, b) order, as :func:`strength_sizes` returns."""
     worst = np.minimum.reduce([margins[k] for k in STRENGTH_CHECKS])
     worst = np.where(np.isnan(worst), -np.inf, worst)
-    ok = worst >= -tol
-    order = np.lexsort((B[ok], M[ok]))
-    cands = [(float(m), float(b)) for m, b in zip(M[ok][order], B[ok][order])]
-    if cands:
-        i = tuple(np.argwhere(ok)[order[0]])
-    else:
-        i = np.unravel_index(np.argmax(worst), M.shape)
-    return cands, (float(M[i]), float(B[i]), {k: float(v[i]) for k, v in margins.items()})
+    ok = worst[order] >= -tol
+    first = order[ok][:tries]
+    i = first[0] if first.size else int(np.argmax(worst))
+    return ([(float(M[j]), float(B[j])) for j in first],
+            (float(M[i]), float(B[i]), {k: float(v[i]) for k, v in margins.items()}))
