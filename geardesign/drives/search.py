@@ -388,11 +388,11 @@ class Search:
         return row
 
     def _solved_cols(self, c, solve=True) -> dict:
+        """The solved stages' columns of design c (``solve``: an evaluated design, whose solutions the walk
+        kept; a stage sized by its load is not sized again per listed row)."""
         out = {}
         for k in self.solved_k:
-            kind, st = self.kinds[k], self.stages[k]
-            sol = kind.solve(st, self.option_at(k, c), self.objective, self.flow_at(k, c)) if solve else None
-            out.update(kind.solved_columns(st, sol))
+            out.update(self.kinds[k].solved_columns(self.stages[k], self._solution(k, c) if solve else None))
         return out
 
     def _ranked_rows(self, feas) -> list:
