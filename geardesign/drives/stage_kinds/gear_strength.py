@@ -37,7 +37,7 @@ import numpy as np
 from ..stages import stage_material
 
 __all__ = ["STRENGTH_CHECKS", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
-           "strength_sizes", "strength_sizes_many"]
+           "strength_sizes", "strength_sizes_many", "widest_width"]
 
 STRENGTH_CHECKS = ("contact_strength", "root_strength1", "root_strength2")
 WIDTH_TO_DIAMETER_RANGE = (0.2, 1.0)
@@ -67,6 +67,11 @@ def _widths(stage, modules: np.ndarray, z1: int) -> tuple:
     psi = np.arange(lo, hi + 1e-9, WIDTH_TO_DIAMETER_STEP)
     d1 = modules[:, None] * z1 / math.cos(math.radians(stage.beta_deg))
     return np.broadcast_to(modules[:, None], (modules.size, psi.size)), np.ceil(psi[None, :] * d1 - 1e-9)
+
+
+def widest_width(stage, z1: int, m: float = 1.0) -> float:
+    """The widest face width the sizing tries at module ``m`` [mm] (the stage's own when it has one)."""
+    return float(_widths(stage, np.array([float(m)]), z1)[1].max())
 
 
 def strength_sizes(stage, torque_nm: float, speed_rpm: float, z1: int, z2: int, x1: float, x2: float,
