@@ -20,5 +20,6 @@ SHIFT_CACHE = 4096                # solved tooth pairs kept between calls (each 
 INFEASIBLE_SHOWN = 5              # closest failing designs listed after the feasible ones
 LOAD_BOUNDS_MAX = 20_000          # (option, input flow) bounds of a stage sized by load; beyond, its load-free bound
 SIZING_TRIES = 8                  # sized candidates re-solved for their own shifts before a tooth pair is given up
-LOOK_AHEAD = 8                    # groups of the branch and bound whose options are solved together (a pair's
-                                  # strength sizing shares one vectorised call); at most 7 solved past the stop
+LOOK_AHEAD = 16                   # groups of the branch and bound whose options are solved together (a pair's
+                                  # strength sizing shares one vectorised call, ~1 ms of fixed cost per call);
+                                  # at most 15 solved past the stop (none in the sized benchmark drive)

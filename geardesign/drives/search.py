@@ -230,9 +230,11 @@ class Search:
     def _solve_ahead(self, firsts) -> None:
         """The unsolved options of the groups whose first designs are ``firsts`` (the walk's next ones
         within the bound so far: one the walk then stops before costs a solve, never a result), each
-        stage's solved together (:meth:`StageKind.solve_many`), so that their fixed costs are shared."""
+        stage's solved together (:meth:`StageKind.solve_many`), so that their fixed costs are shared.
+        A stage is solved ahead only when the walk's current group (``firsts[0]``) needs it: the window
+        is then solved as one chunk, not topped up by one option per step (which would share nothing)."""
         for k in self.solved_k:
-            if not self.kinds[k].solves_together(self.stages[k]):
+            if not self.kinds[k].solves_together(self.stages[k]) or self._key(k, firsts[0]) in self._solved:
                 continue
             todo: dict = {}
             for c in firsts:
@@ -386,11 +388,11 @@ class Search:
         return row
 
     def _solved_cols(self, c, solve=True) -> dict:
+        """The solved stages' columns of design c (``solve``: an evaluated design, whose solutions the walk
+        kept; a stage sized by its load is not sized again per listed row)."""
         out = {}
         for k in self.solved_k:
-            kind, st = self.kinds[k], self.stages[k]
-            sol = kind.solve(st, self.option_at(k, c), self.objective, self.flow_at(k, c)) if solve else None
-            out.update(kind.solved_columns(st, sol))
+            out.update(self.kinds[k].solved_columns(self.stages[k], self._solution(k, c) if solve else None))
         return out
 
     def _ranked_rows(self, feas) -> list:

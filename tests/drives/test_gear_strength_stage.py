@@ -159,3 +159,29 @@ def test_the_searchs_sized_geometry_is_the_pairs_own_at_the_chosen_module():
         assert (row["gear.x1"], row["gear.x2"]) == pytest.approx((o.x1, o.x2), abs=1e-12)
         geo = gd.GearPair(m, 19, z2, o.x1, o.x2, face_width_mm=b).geometry()
         assert row["gear.a_w_mm"] == pytest.approx(geo.a_w, rel=1e-12)
+
+
+def test_a_helical_stage_with_a_total_contact_ratio_check_is_sized():
+    """ε_γ = ε_α + ε_β needs a face width (ε_β = b·sin β/(π·m)), which a stage sized by its load has not
+    before it is sized: the pair is solved first at m = 1 with the widest width of the sizing range, and
+    each candidate again at its own module and width. The stage chosen holds ε_γ ≥ 1.3 (ε_β by ISO 21771:2007
+    eq. (83), ε_β = b·sin β/(π·m_n)) and every strength check, by the pair's own geometry and
+    StrengthResult at its own shifts."""
+    t_in = 15_000 / _omega(1450)
+    stage = gd.GearStage(m=None, material="42CrMo4", beta_deg=15, z1=21, z2=55, checks={"eps_gamma_min": 1.3})
+    a = gd.Drive(power_kw=15, n_in_rpm=1450, stages=[stage]).analyse()
+    s = a.stages[0]["summary"]
+    m, b = s["m"], s["face_width_mm"]
+    assert a.success and m in ISO54
+
+    def holds(width):
+        o = optimize_shifts(21, 55, "max_x_sum", {"eps_gamma_min": 1.3}, "exact", m=m, beta_deg=15, face_width_mm=width)
+        if not o.success:
+            return False
+        pair = gd.GearPair(m, 21, 55, o.x1, o.x2, beta_deg=15, face_width_mm=width)
+        eps_gamma = pair.geometry().eps_alpha + width * math.sin(math.radians(15)) / (math.pi * m)
+        res = pair.strength(Load(torque_nm=t_in, n_rpm=1450), "42CrMo4")
+        return eps_gamma >= 1.3 - 1e-9 and min(_margins(res).values()) >= -1e-9
+
+    assert b in np.ceil(PSI * m * 21 / math.cos(math.radians(15)) - 1e-9)
+    assert holds(b)

@@ -28,7 +28,7 @@ from ...validate import one_number, require_range
 from ..limits import MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
 from .base import ToothedKind
-from .gear_strength import strength_margins, strength_sizes, strength_sizes_many
+from .gear_strength import strength_margins, strength_sizes, strength_sizes_many, widest_width
 
 __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution"]
 
@@ -184,15 +184,19 @@ class GearKind(ToothedKind):
         """Module and width by the strength checks: shifts of the pair at m = 1, every series module × width
         checked at once at those shifts; the smallest candidate then holds every check when the shift
         solution does not depend on the module and width (``_shifts_scale_free``), else the smallest
-        candidates are re-solved at their own module until one holds every check."""
-        ref = gear_solution(replace(stage, m=1.0), z1, z2, objective)
+        candidates are re-solved at their own module until one holds every check. Such a stage without a
+        face width is solved at m = 1 with the widest width of the sizing range (ε_γ needs one: the
+        widest ε_β, the most permissive reference)."""
+        free = _shifts_scale_free(stage)
+        b_ref = stage.face_width_mm if free or stage.face_width_mm is not None else widest_width(stage, z1)
+        ref = gear_solution(replace(stage, m=1.0, face_width_mm=b_ref), z1, z2, objective)
         if "x1" not in ref:
             return dict(ref, m=math.nan, face_width_mm=None)
         cands, best = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
-                                     _series(), MARGIN_TOL)
-        if _shifts_scale_free(stage):   # the reference shifts are those of the first candidate (or the closest)
+                                     _series(), MARGIN_TOL, 1 if free else SIZING_TRIES)
+        if free:   # the reference shifts are those of the first candidate (or the closest)
             return self._scaled(ref, *best) if cands else self._unsized(ref, *best)
-        for m, b in cands[:SIZING_TRIES]:
+        for m, b in cands:
             sol = self._candidate(stage, m, b, z1, z2, objective, flow)
             if sol["feasible"]:
                 return sol
@@ -237,7 +241,8 @@ class GearKind(ToothedKind):
         if not self.solves_together(stage):
             return super().solve_many(stage, options, objective, flows)
         pairs = [(int(o["z1"]), int(o["z2"])) for o in options]
-        refs = [gear_solution(replace(stage, m=1.0), z1, z2, objective) for z1, z2 in pairs]
+        unit = replace(stage, m=1.0)      # one stage for all (building one validates it: ~50 µs)
+        refs = [gear_solution(unit, z1, z2, objective) for z1, z2 in pairs]
         out = [None] * len(options)
         by_flow: dict = {}
         for i, (ref, flow) in enumerate(zip(refs, flows)):

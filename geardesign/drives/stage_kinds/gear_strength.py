@@ -11,14 +11,22 @@ S_Fmin, :mod:`geardesign.gears.strength.defaults`):
 
 Sizing (``GearStage(m=None)``): every module of the ISO 54 series (``catalogs/modules_iso54.csv``)
 times face widths b = ψ_d·d1 (rounded up to whole mm) for ψ_d = b/d1 in :data:`WIDTH_TO_DIAMETER_RANGE`
-by steps of :data:`WIDTH_TO_DIAMETER_STEP` (or the stage's own ``face_width_mm``) is checked in one
-vectorised call; the candidates that hold every strength check come smallest module first, then
-narrowest. The range is a modelling choice, stated with where its ends come from: b/d1 ≥ 0.2 is the
-lower end VDI 2736 Sheet 2 (2014) allows (as quoted by the FVA-Workbench documentation, attribute
-"Ratio of facewidth to pinion diameter", https://adoc.fva-service.de/help/8.0/en/attr/PMID_10677.htm);
-b/d1 ≤ 1.0 follows the rule that the width stay below the pinion diameter, as the load distribution
-over a wider face suffers (GearCalc manual 12.7 "Face width",
-http://www.gearcalc.com/downloads/manual/manualse47.html).
+by steps of :data:`WIDTH_TO_DIAMETER_STEP` (or the stage's own ``face_width_mm``) is checked, vectorised
+over the grid and over several tooth pairs at once; the candidates that hold every strength check come
+smallest module first, then narrowest. The range is a modelling choice, stated with where its ends come
+from: b/d1 ≥ 0.2 is the lower end VDI 2736 Sheet 2 (2014) allows (as quoted by the FVA-Workbench
+documentation, attribute "Ratio of facewidth to pinion diameter",
+https://adoc.fva-service.de/help/8.0/en/attr/PMID_10677.htm); b/d1 ≤ 1.0 follows the rule that the width
+stay below the pinion diameter, as the load distribution over a wider face suffers (GearCalc manual 12.7
+"Face width", http://www.gearcalc.com/downloads/manual/manualse47.html).
+
+The answer is that of every design checked in full, with less work, nothing assumed of how the
+margins vary with m and b: a design is computed once however many ψ_d round to its width (small
+modules: b = 1, 1, 2, 2, ... mm); contact first, on the whole grid (the root side is half of the
+strength model's work); then the root checks only where they decide the answer, i.e. at the first
+contact-holding designs in (m, b) order (a design whose contact fails is no candidate whatever its
+root), and on the whole grid only when those do not settle the candidates asked for, or when no
+design holds (the closest one is then chosen over every check).
 """
 from __future__ import annotations
 
@@ -29,23 +37,26 @@ import numpy as np
 from ..stages import stage_material
 
 __all__ = ["STRENGTH_CHECKS", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
-           "strength_sizes", "strength_sizes_many"]
+           "strength_sizes", "strength_sizes_many", "widest_width"]
 
 STRENGTH_CHECKS = ("contact_strength", "root_strength1", "root_strength2")
 WIDTH_TO_DIAMETER_RANGE = (0.2, 1.0)
 WIDTH_TO_DIAMETER_STEP = 0.05
 
 
-def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, speed_rpm: float) -> dict:
+def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, speed_rpm: float,
+                     root: bool = True) -> dict:
     """{check: margin array} of :data:`STRENGTH_CHECKS` for the stage's pairs (m, b broadcast) carrying
-    ``torque_nm`` on the pinion at ``speed_rpm`` (with the stage's life and application factor)."""
+    ``torque_nm`` on the pinion at ``speed_rpm`` (with the stage's life and application factor);
+    ``root=False``: ``contact_strength`` alone (the strength model skips the root side)."""
     from ...gears.strength import pair_strength   # here: the materials catalog loads pandas
 
-    out = pair_strength(m, z1, z2, x1, x2, load=stage.load(torque_nm, speed_rpm),
+    out = pair_strength(m, z1, z2, x1, x2, load=stage.load(torque_nm, speed_rpm), root=root,
                         material1=stage_material(stage.material), face_width_mm=face_width_mm, beta_deg=stage.beta_deg)
-    return {"contact_strength": np.minimum(out["S_H1"], out["S_H2"]) / out["S_Hmin"] - 1.0,
-            "root_strength1": out["S_F1"] / out["S_Fmin"] - 1.0,
-            "root_strength2": out["S_F2"] / out["S_Fmin"] - 1.0}
+    margins = {"contact_strength": np.minimum(out["S_H1"], out["S_H2"]) / out["S_Hmin"] - 1.0}
+    if root:
+        margins.update(root_strength1=out["S_F1"] / out["S_Fmin"] - 1.0, root_strength2=out["S_F2"] / out["S_Fmin"] - 1.0)
+    return margins
 
 
 def _widths(stage, modules: np.ndarray, z1: int) -> tuple:
@@ -58,37 +69,97 @@ def _widths(stage, modules: np.ndarray, z1: int) -> tuple:
     return np.broadcast_to(modules[:, None], (modules.size, psi.size)), np.ceil(psi[None, :] * d1 - 1e-9)
 
 
+def widest_width(stage, z1: int, m: float = 1.0) -> float:
+    """The widest face width the sizing tries at module ``m`` [mm] (the stage's own when it has one)."""
+    return float(_widths(stage, np.array([float(m)]), z1)[1].max())
+
+
 def strength_sizes(stage, torque_nm: float, speed_rpm: float, z1: int, z2: int, x1: float, x2: float,
-                   modules: np.ndarray, tol: float) -> tuple:
-    """(candidates, best): the (m, b) that hold every strength check at shifts x1, x2, smallest module
-    first, then narrowest; and (m, b, {check: margin}) of the first candidate, or when none holds, of
-    the (m, b) closest to holding."""
-    return strength_sizes_many(stage, torque_nm, speed_rpm, [(z1, z2, x1, x2)], modules, tol)[0]
+                   modules: np.ndarray, tol: float, tries: int = 1) -> tuple:
+    """(candidates, best): the first ``tries`` (m, b) that hold every strength check at shifts x1, x2,
+    smallest module first, then narrowest; and (m, b, {check: margin}) of the first candidate, or when
+    none holds, of the (m, b) closest to holding."""
+    return strength_sizes_many(stage, torque_nm, speed_rpm, [(z1, z2, x1, x2)], modules, tol, tries)[0]
 
 
-def strength_sizes_many(stage, torque_nm: float, speed_rpm: float, pairs, modules: np.ndarray, tol: float) -> list:
-    """:func:`strength_sizes` of several tooth pairs ``pairs`` [(z1, z2, x1, x2), ...] at one load, in one
-    vectorised call (its fixed cost shared)."""
-    modules = np.asarray(modules, dtype=float)
-    grids = [_widths(stage, modules, z1) for z1, _, _, _ in pairs]
-    M = np.stack([np.broadcast_to(m, grids[0][0].shape) for m, _ in grids])
-    B = np.stack([np.broadcast_to(b, grids[0][0].shape) for _, b in grids])
-    z1, z2 = (np.array([p[i] for p in pairs], dtype=np.int64)[:, None, None] for i in (0, 1))
-    x1, x2 = (np.array([p[i] for p in pairs], dtype=float)[:, None, None] for i in (2, 3))
-    margins = strength_margins(stage, M, B, z1, z2, x1, x2, torque_nm, speed_rpm)
-    margins = {k: np.broadcast_to(v, M.shape) for k, v in margins.items()}
-    return [_first_size(M[i], B[i], {k: v[i] for k, v in margins.items()}, tol) for i in range(len(pairs))]
+def strength_sizes_many(stage, torque_nm: float, speed_rpm: float, pairs, modules: np.ndarray, tol: float,
+                        tries: int = 1) -> list:
+    """:func:`strength_sizes` of several tooth pairs ``pairs`` [(z1, z2, x1, x2), ...] at one load, each
+    strength call vectorised over them all (its fixed cost shared): the contact margin on every pair's
+    whole grid, the root margins where they decide the candidates (:func:`_root_margins`)."""
+    grid, first, same = _grid(stage, np.asarray(modules, dtype=float), pairs)
+    load = (stage, torque_nm, speed_rpm, grid)
+    contact = np.take_along_axis(_margins_at(*load, first, root=False)["contact_strength"], same, axis=1)
+    order = np.lexsort((grid["b"], grid["m"]), axis=1)
+    margins = {"contact_strength": contact, **_root_margins(load, first, same, contact, order, tol, tries)}
+    return [_first_size(grid["m"][i], grid["b"][i], {k: v[i] for k, v in margins.items()}, order[i], tol, tries)
+            for i in range(len(pairs))]
 
 
-def _first_size(M: np.ndarray, B: np.ndarray, margins: dict, tol: float) -> tuple:
-    """(candidates, best) of one pair's (m, b) grid and its margins, as :func:`strength_sizes` returns."""
+def _grid(stage, modules: np.ndarray, pairs) -> tuple:
+    """(grid, first, same) of the pairs' designs, pairs × flat (m, b) grid: ``grid`` {m, b, z1, z2, x1, x2}
+    as arrays of that shape; ``first`` True at the first design of each run of equal widths along a
+    module's widths; ``same`` the index of that first design (the margins of a design are those of it)."""
+    mb = [_widths(stage, modules, z1) for z1, _, _, _ in pairs]
+    shape = mb[0][1].shape
+    grid = {"m": np.stack([np.broadcast_to(m, shape).ravel() for m, _ in mb]),
+            "b": np.stack([np.broadcast_to(b, shape).ravel() for _, b in mb])}
+    for i, name in enumerate(("z1", "z2", "x1", "x2")):
+        col = np.array([p[i] for p in pairs], dtype=np.int64 if i < 2 else float)
+        grid[name] = np.broadcast_to(col[:, None], grid["m"].shape)
+    pos = np.arange(grid["b"].shape[1])
+    first = np.ones(grid["b"].shape, dtype=bool)
+    first[:, 1:] = (grid["b"][:, 1:] != grid["b"][:, :-1]) | (pos[1:] % shape[1] == 0)
+    return grid, first, np.maximum.accumulate(np.where(first, pos, 0), axis=1)
+
+
+def _margins_at(stage, torque_nm, speed_rpm, grid: dict, pick: np.ndarray, root: bool = True) -> dict:
+    """{check: margins} of the designs ``pick`` (pairs × flat grid; NaN elsewhere), in one call."""
+    names = STRENGTH_CHECKS if root else STRENGTH_CHECKS[:1]
+    out = {k: np.full(pick.shape, np.nan) for k in names}
+    if pick.any():
+        at = {k: v[pick] for k, v in grid.items()}
+        got = strength_margins(stage, at["m"], at["b"], at["z1"], at["z2"], at["x1"], at["x2"], torque_nm, speed_rpm,
+                               root=root)
+        for k in names:
+            out[k][pick] = got[k]
+    return out
+
+
+def _root_margins(load: tuple, first, same, contact: np.ndarray, order: np.ndarray, tol: float, tries: int) -> dict:
+    """The root margins (NaN where not computed) of the designs that decide each pair's sizing (pairs ×
+    flat grid). Round one: each pair's first ``tries`` contact-holding designs in (m, b) order (every
+    design when none holds contact). A candidate must hold contact, so a pair is settled when ``tries``
+    of the designs known hold every check (those known are a leading run of the contact-holding ones in
+    that order), or when every contact-holding design is known and one holds. Round two: every design
+    of the others (when none holds, the closest design is chosen over the whole grid). A design equal
+    to an earlier one of the run (``same``) comes right after it in the order, so computing the firsts
+    (``first``) of the designs asked for covers them all."""
+    ok_c = contact >= -tol                                   # NaN: no such design, never a candidate
+    want = np.zeros(contact.shape, dtype=bool)
+    for i, o in enumerate(order):
+        holders = o[ok_c[i, o]]
+        want[i, holders[:tries] if holders.size else o] = True
+    at = _margins_at(*load, want & first)
+    roots = {k: np.take_along_axis(at[k], same, axis=1) for k in STRENGTH_CHECKS[1:]}
+    known = np.take_along_axis(want & first, same, axis=1)
+    held = (ok_c & (np.minimum(roots["root_strength1"], roots["root_strength2"]) >= -tol)).sum(axis=1)
+    unsettled = ((held < tries) & (ok_c & ~known).any(axis=1)) | (held == 0)
+    more = unsettled[:, None] & ~known
+    if more.any():
+        at = _margins_at(*load, more & first)
+        for k in roots:
+            roots[k] = np.where(more, np.take_along_axis(at[k], same, axis=1), roots[k])
+    return roots
+
+
+def _first_size(M: np.ndarray, B: np.ndarray, margins: dict, order: np.ndarray, tol: float, tries: int) -> tuple:
+    """(candidates, best) of one pair's flat (m, b) grid, its margins (root NaN where unchecked) and its
+    (m, b) order, as :func:`strength_sizes` returns."""
     worst = np.minimum.reduce([margins[k] for k in STRENGTH_CHECKS])
     worst = np.where(np.isnan(worst), -np.inf, worst)
-    ok = worst >= -tol
-    order = np.lexsort((B[ok], M[ok]))
-    cands = [(float(m), float(b)) for m, b in zip(M[ok][order], B[ok][order])]
-    if cands:
-        i = tuple(np.argwhere(ok)[order[0]])
-    else:
-        i = np.unravel_index(np.argmax(worst), M.shape)
-    return cands, (float(M[i]), float(B[i]), {k: float(v[i]) for k, v in margins.items()})
+    ok = worst[order] >= -tol
+    first = order[ok][:tries]
+    i = first[0] if first.size else int(np.argmax(worst))
+    return ([(float(M[j]), float(B[j])) for j in first],
+            (float(M[i]), float(B[i]), {k: float(v[i]) for k, v in margins.items()}))
