@@ -12,13 +12,15 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import broadcast_inputs, one_number, require_bool, require_range
-from ..geometry import mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry, validate_inputs
+from ..geometry import (DESIGNS_MAX, mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry,
+                        validate_inputs)
 from ..mesh import Mesh, section_constants
 from ..rack import STANDARD_RACK, BasicRack
 from . import accuracy as acc
 from . import contact as zc
 from . import defaults as dflt
 from . import factors as kf
+from .blocks import BLOCK, batch_shape, in_blocks
 from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
@@ -356,7 +358,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
         except (ArithmeticError, ValueError):   # math's domain error where numpy gives NaN: the array path says why
             G.used.clear()
     with np.errstate(all="ignore"):            # what is not finite is refused by name below (or is NaN on purpose)
-        return _finite(_evaluate(designs, G, o, ArrayOps), designs, o)
+        return _finite(_evaluate_batch(designs, G, o), designs, o)
 
 
 # the factors whose formulas can leave their domain for a design that exists (first named when one does)
@@ -429,9 +431,35 @@ def _floats(designs):
     return float(m), z1, z2, float(x1), float(x2), float(b1), None if b2 is None else float(b2)
 
 
-def _evaluate(designs, G, o, xp) -> dict:
+def _evaluate_batch(designs, G, o) -> dict:
+    """:func:`_evaluate` of arrays: more than one block of designs in blocks (see :mod:`.blocks`; every option,
+    given factor and accuracy grade one number for all), where a refusal is found again by the whole batch's
+    call, so that it names what the batch's call names."""
+    geo_keys = () if o.geometry is None else (*_GEOMETRY, "_z1", "_z2")
+    values = [*designs, *(o.geometry[k] for k in geo_keys)]
+    shape = batch_shape(values)
+    if (shape is None or not BLOCK < math.prod(shape) <= DESIGNS_MAX or np.ndim(o.grade)
+            or any(np.ndim(v) for v in (*G.values.values(), *o.shaft.values()))):
+        return _evaluate(designs, G, o, ArrayOps)
+
+    def block(vals):
+        geo = None if o.geometry is None else dict(zip(geo_keys, vals[len(designs):]))
+        return _evaluate(tuple(vals[:len(designs)]), G, SimpleNamespace(**{**vars(o), "geometry": geo}), ArrayOps,
+                         finish=False)
+
+    try:
+        out = in_blocks(block, values, shape)
+    except GearDesignError:
+        out = None
+    if out is None:
+        G.used.clear()
+        return _evaluate(designs, G, o, ArrayOps)
+    return _finish(out, *o.S_min, shape, G)
+
+
+def _evaluate(designs, G, o, xp, finish=True) -> dict:
     """The chain of :func:`pair_strength` on validated options ``o``, in floats (``xp`` :class:`FloatOps`, one
-    design) or arrays."""
+    design) or arrays; ``finish`` False: its fields as computed, before :func:`_finish`."""
     m, z1, z2, x1, x2, face_width_mm, face_width2_mm = designs
     plain = xp is FloatOps
     beta_deg = float(o.beta_deg) if plain and type(o.beta_deg) is int else o.beta_deg
@@ -459,6 +487,8 @@ def _evaluate(designs, G, o, xp) -> dict:
     if o.root:
         root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), o.rack, beta_deg, o.internal, K_A, o.K_gamma, o.grade,
                   o.Rz_root, n12, o.load.life_h, o.root_method, out, o.rim, xp, o.refuse)
+    if not finish:
+        return out
     return _finish(out, *o.S_min, () if plain else np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
 
 
