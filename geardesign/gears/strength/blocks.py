@@ -29,17 +29,23 @@ def batch_shape(values) -> tuple | None:
 def in_blocks(evaluate, values, shape, block=BLOCK) -> dict | None:
     """``evaluate(values of one block)`` over the designs of ``shape`` (``values`` broadcast to it; numbers and
     None passed as they are), block by block, and its dict at full size: each field an array of ``shape`` where
-    a block gave an array, else the first block's number. None when the blocks' dicts differ in their keys (then
-    the caller evaluates the batch whole)."""
+    a block gave an array (fields that are one array in each block share one), else the first block's number.
+    None when the blocks' dicts differ in their keys or in which fields they share (then the caller evaluates the
+    batch whole)."""
     n = math.prod(shape)
     flat = [v if v is None or np.ndim(v) == 0 else np.broadcast_to(np.asarray(v), shape).reshape(-1)
             for v in values]
-    out, full = {}, set()
+    out, full, same = {}, set(), {}
     for s in range(0, n, block):
         part = evaluate([v if v is None or np.ndim(v) == 0 else v[s:s + block] for v in flat])
-        if s and part.keys() != out.keys():
+        if not s:
+            same = _shared(part)
+        elif part.keys() != out.keys() or any(part[k] is not part[j] for k, j in same.items()):
             return None
         for k, v in part.items():
+            if k in same:
+                out[k] = None           # its place in the dict's order; the array it shares comes at the end
+                continue
             if k not in full and isinstance(v, np.ndarray) and v.ndim:
                 arr = np.empty(n, dtype=v.dtype)
                 if k in out:            # a number in the blocks before (a shortcut taken over those designs)
@@ -50,4 +56,13 @@ def in_blocks(evaluate, values, shape, block=BLOCK) -> dict | None:
                 out[k][s:s + block] = v
             elif k not in out:
                 out[k] = v
-    return {k: v.reshape(shape) if k in full else v for k, v in out.items()}
+    out.update({k: v.reshape(shape) for k, v in out.items() if k in full})
+    out.update({k: out[j] for k, j in same.items()})
+    return out
+
+
+def _shared(part: dict) -> dict:
+    """{field: the earlier field whose array it is} of one block's dict (f_ma is f_Hbeta, say)."""
+    first = {}
+    return {k: first[id(v)] for k, v in part.items()
+            if isinstance(v, np.ndarray) and v.ndim and first.setdefault(id(v), k) != k}

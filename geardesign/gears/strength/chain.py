@@ -105,7 +105,8 @@ def _derived(g, z1, z2, rack, beta_deg, xp):
     """α_wt (from d_b1/d_w1), α_t, β_b, z_n, tooth depths: what the chain reads besides pair_geometry's fields."""
     sc = section_constants(rack.alpha, math.radians(beta_deg))
     with xp.errstate(invalid="ignore"):
-        g["alpha_wt_deg"] = xp.degrees(xp.arccos(xp.minimum(g["db1"] / g["dw1"], 1.0)))
+        g["_cos_wt"] = xp.minimum(g["db1"] / g["dw1"], 1.0)
+        g["alpha_wt_deg"] = xp.degrees(xp.arccos(g["_cos_wt"]))
     g["alpha_t_deg"] = math.degrees(sc.alpha_t)
     g["beta_b_deg"] = math.degrees(sc.beta_b)
     zn = 1.0 / (sc.cos_beta_b ** 2 * sc.cos_beta)
@@ -130,8 +131,9 @@ def _widths(face_width_mm, face_width2_mm, m, xp):
     """(b, b1, b2): the common width for contact and each gear's width for its root stress, the wider gear
     counted at most one module wider on each side (ISO 6336-3:2019 clause 5, b)."""
     b1 = checked("face_width_mm", face_width_mm, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
-    b2 = b1 if face_width2_mm is None else checked("face_width2_mm", face_width2_mm, *dflt.FACE_WIDTH_RANGE_MM,
-                                                   lo_open=True, unit="mm")
+    if face_width2_mm is None:      # one width: min(b1, b1 + 2m) is b1
+        return b1, b1, b1
+    b2 = checked("face_width2_mm", face_width2_mm, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
     b = xp.minimum(b1, b2)
     return b, xp.minimum(b1, b + 2.0 * m), xp.minimum(b2, b + 2.0 * m)
 
@@ -231,17 +233,21 @@ def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, xp, out):
 def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_opts, internal, xp, out):
     """σ_H0, σ_H1,2 and the pitting side of each gear (ISO 6336-2:2019)."""
     m1, m2 = mats
-    out["Z_H"] = G.pick("Z_H", lambda: zc.zone_factor(g["beta_b_deg"], g["alpha_t_deg"], g["alpha_wt_deg"]))
+    # α_wt's sine and tangent from its cosine d_b1/d_w1 (numpy's sin and cos cost ~5 divisions each)
+    c_w = g["_cos_wt"]
+    s_w = xp.sqrt((1.0 - c_w) * (1.0 + c_w))
+    t_w = s_w / c_w
+    out["Z_H"] = G.pick("Z_H", lambda: zc.zone_factor_of(math.cos(math.radians(g["beta_b_deg"])),
+                                                         math.cos(math.radians(g["alpha_t_deg"])), c_w, s_w))
     out["Z_E"] = G.pick("Z_E", lambda: zc.elasticity_factor(m1.E_mpa, m1.nu, m2.E_mpa, m2.nu))
-    ZB, ZD = zc.single_pair_factors(g["db1"], g["db2"], g["da1"], g["da2"], g["alpha_wt_deg"], g["a_w"],
-                                    g["eps_alpha"], out["eps_beta"], g["p_b"], internal, g["_z2"] / g["_z1"])
+    ZB, ZD = zc.single_pair_factors_of(g["db1"], g["db2"], g["da1"], g["da2"], s_w, t_w, g["a_w"], g["eps_alpha"],
+                                       out["eps_beta"], g["p_b"], internal, g["_z2"] / g["_z1"])
     out["Z_B"], out["Z_D"] = G.pick("Z_B", lambda: ZB), G.pick("Z_D", lambda: ZD)
     s0 = zc.nominal_contact_stress(F_t, g["d1"], b, g["d2"] / g["d1"], out["Z_H"], out["Z_E"], out["Z_eps"],
                                    out["Z_beta"], internal)
     K = (K_A, K_gamma, out["K_v"], out["K_Hbeta"], out["K_Halpha"])
     out["sigma_H0"] = s0
     out["sigma_H1"], out["sigma_H2"] = zc.contact_stress(s0, out["Z_B"], *K), zc.contact_stress(s0, out["Z_D"], *K)
-    t_w = xp.tan(xp.radians(g["alpha_wt_deg"]))
     rho_red = zc.relative_radius(g["db1"] / 2.0 * t_w, g["db2"] / 2.0 * t_w, internal)
     out["Z_X"] = G.pick("Z_X", lambda: zc.SIZE_FACTOR_Z_X)
     hard = (m1.surface_hardened, m2.surface_hardened)
@@ -504,8 +510,10 @@ def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
     return {"F_t": F_t, "v": kf.pitch_line_velocity(g["d1"], n1), "K_A": load.application_factor,
             "K_gamma": K_gamma, "n1": n1, "n2": n2, "alpha_wt_deg": g["alpha_wt_deg"],
             "eps_alpha": g["eps_alpha"], "z_n1": g["z_n1"], "z_n2": g["z_n2"], "eps_beta": eps_beta,
-            "eps_gamma": g["eps_alpha"] + eps_beta,
-            "eps_alpha_n": g["eps_alpha"] / math.cos(math.radians(g["beta_b_deg"])) ** 2}
+            # a spur pair's ε_γ and ε_αn are its ε_α (ε_β = 0, cos β_b = 1): one array, not three equal ones
+            "eps_gamma": g["eps_alpha"] + eps_beta if beta_deg else g["eps_alpha"],
+            "eps_alpha_n": (g["eps_alpha"] / math.cos(math.radians(g["beta_b_deg"])) ** 2 if beta_deg else
+                            g["eps_alpha"])}
 
 
 def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
