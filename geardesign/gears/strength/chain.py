@@ -364,7 +364,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
         except (ArithmeticError, ValueError):   # math's domain error where numpy gives NaN: the array path says why
             G.used.clear()
     with np.errstate(all="ignore"):            # what is not finite is refused by name below (or is NaN on purpose)
-        return _finite(_evaluate_batch(designs, G, o), designs, o)
+        return _evaluate_batch(designs, G, o)
 
 
 # the factors whose formulas can leave their domain for a design that exists (first named when one does)
@@ -438,20 +438,25 @@ def _floats(designs):
 
 
 def _evaluate_batch(designs, G, o) -> dict:
-    """:func:`_evaluate` of arrays: more than one block of designs in blocks (see :mod:`.blocks`; every option,
-    given factor and accuracy grade one number for all), where a refusal is found again by the whole batch's
-    call, so that it names what the batch's call names."""
+    """:func:`_evaluate` of arrays, refused by :func:`_finite` where not finite: more than one block of designs in
+    blocks (see :mod:`.blocks`; every option, given factor and accuracy grade one number for all), each block's
+    stresses checked while in the caches, where a refusal is found again by the whole batch's call, so that it
+    names what the batch's call names."""
     geo_keys = () if o.geometry is None else (*_GEOMETRY, "_z1", "_z2")
     values = [*designs, *(o.geometry[k] for k in geo_keys)]
     shape = batch_shape(values)
     if (shape is None or not BLOCK < math.prod(shape) <= DESIGNS_MAX or np.ndim(o.grade)
             or any(np.ndim(v) for v in (*G.values.values(), *o.shaft.values()))):
-        return _evaluate(designs, G, o, ArrayOps)
+        return _finite(_evaluate(designs, G, o, ArrayOps), designs, o)
+    finite = [True]
 
     def block(vals):
         geo = None if o.geometry is None else dict(zip(geo_keys, vals[len(designs):]))
-        return _evaluate(tuple(vals[:len(designs)]), G, SimpleNamespace(**{**vars(o), "geometry": geo}), ArrayOps,
+        part = _evaluate(tuple(vals[:len(designs)]), G, SimpleNamespace(**{**vars(o), "geometry": geo}), ArrayOps,
                          finish=False)
+        finite[0] = finite[0] and (not o.refuse or all(np.isfinite(part[k]).all() for k in STRENGTH_FIELDS
+                                                       if k in part))
+        return part
 
     try:
         out = in_blocks(block, values, shape)
@@ -459,8 +464,9 @@ def _evaluate_batch(designs, G, o) -> dict:
         out = None
     if out is None:
         G.used.clear()
-        return _evaluate(designs, G, o, ArrayOps)
-    return _finish(out, *o.S_min, shape, G)
+        return _finite(_evaluate(designs, G, o, ArrayOps), designs, o)
+    out = _finish(out, shape, G)
+    return out if finite[0] else _finite(out, designs, o)
 
 
 def _evaluate(designs, G, o, xp, finish=True) -> dict:
@@ -493,9 +499,10 @@ def _evaluate(designs, G, o, xp, finish=True) -> dict:
     if o.root:
         root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), o.rack, beta_deg, o.internal, K_A, o.K_gamma, o.grade,
                   o.Rz_root, n12, o.load.life_h, o.root_method, out, o.rim, xp, o.refuse)
+    _permissible(out, *o.S_min)
     if not finish:
         return out
-    return _finish(out, *o.S_min, () if plain else np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
+    return _finish(out, () if plain else np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
 
 
 def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
@@ -516,13 +523,18 @@ def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
                             g["eps_alpha"])}
 
 
-def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
-    """The permissible stresses, every field at the designs' shape, and the names of the given factors."""
+def _permissible(out, S_Hmin, S_Fmin) -> dict:
+    """The permissible stresses σ_HP = σ_HG/S_Hmin, σ_FP = σ_FG/S_Fmin and the minimum safety factors."""
     for i in (1, 2):
         out[f"sigma_HP{i}"] = out[f"sigma_HG{i}"] / S_Hmin
         if f"sigma_FG{i}" in out:
             out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
     out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
+    return out
+
+
+def _finish(out, shape, G) -> dict:
+    """Every field at the designs' shape, and the names of the given factors."""
     if shape:
         # the pair-wide fields at the designs' shape: read-only views of a large batch, copies of a small one
         # (np.full costs a quarter of np.broadcast_to there)
