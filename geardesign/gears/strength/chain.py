@@ -105,8 +105,8 @@ def _derived(g, z1, z2, rack, beta_deg, xp):
     """α_wt (from d_b1/d_w1), α_t, β_b, z_n, tooth depths: what the chain reads besides pair_geometry's fields."""
     sc = section_constants(rack.alpha, math.radians(beta_deg))
     with xp.errstate(invalid="ignore"):
-        g["_cos_wt"] = xp.minimum(g["db1"] / g["dw1"], 1.0)
-        g["alpha_wt_deg"] = xp.degrees(xp.arccos(g["_cos_wt"]))
+        g["cos_alpha_wt"] = xp.minimum(g["db1"] / g["dw1"], 1.0)
+        g["alpha_wt_deg"] = xp.degrees(xp.arccos(g["cos_alpha_wt"]))
     g["alpha_t_deg"] = math.degrees(sc.alpha_t)
     g["beta_b_deg"] = math.degrees(sc.beta_b)
     zn = 1.0 / (sc.cos_beta_b ** 2 * sc.cos_beta)
@@ -234,7 +234,7 @@ def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_op
     """σ_H0, σ_H1,2 and the pitting side of each gear (ISO 6336-2:2019)."""
     m1, m2 = mats
     # α_wt's sine and tangent from its cosine d_b1/d_w1 (numpy's sin and cos cost ~5 divisions each)
-    c_w = g["_cos_wt"]
+    c_w = g["cos_alpha_wt"]
     s_w = xp.sqrt((1.0 - c_w) * (1.0 + c_w))
     t_w = s_w / c_w
     out["Z_H"] = G.pick("Z_H", lambda: zc.zone_factor_of(math.cos(math.radians(g["beta_b_deg"])),
