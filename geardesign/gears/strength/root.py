@@ -185,10 +185,10 @@ def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops, refuse=True):
     rho_a = ops.sqrt((da_n - d_bn) * (da_n + d_bn)) / 2.0
     p_bn = math.pi * math.cos(alpha_n)
     rho_e = rho_a + p_bn * (eps_n - 1.0) if internal else rho_a - p_bn * (eps_n - 1.0)
-    if ops.any(rho_e <= 0.0) and not refuse:
+    if ops.any(bad := rho_e <= 0.0) and not refuse:
         rho_e = np.where(rho_e > 0.0, rho_e, np.nan)
-    elif ops.any(rho_e <= 0.0):
-        bad = np.asarray(rho_e) <= 0.0
+    elif ops.any(bad):
+        bad = np.asarray(bad)
         most = eps_n + rho_e / p_bn       # ε_αn = 1 + ρ_a/p_bn puts the point on the base circle (external only:
         #                                   a ring's point lies outward of its tip)
         raise GearDesignError(
@@ -215,8 +215,9 @@ def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
     c = 1.0 / ops.sqrt(1.0 + t * t)              # |θ| < π/2: cos θ > 0
     s = t * c
     r3 = math.sqrt(3.0)
-    s_Fn = z_n * (0.5 * r3 * c - 0.5 * s) + r3 * (G / c - rho)
-    rho_F = rho + 2.0 * G * G / (c * (z_n * c * c - 2.0 * G))
+    G_c, G2 = G / c, 2.0 * G
+    s_Fn = z_n * (0.5 * r3 * c - 0.5 * s) + r3 * (G_c - rho)
+    rho_F = rho + G2 * G / (c * (z_n * c * c - G2))
     d_bn = z_n * math.cos(alpha_n)
     alpha_e = ops.arccos(d_bn / d_e)
     tan_e = ops.sqrt((d_e - d_bn) * (d_e + d_bn)) / d_bn
@@ -224,7 +225,7 @@ def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
     alpha_F = alpha_e - gamma_e
     t_F = ops.tan(alpha_F)
     cos_F = 1.0 / ops.sqrt(1.0 + t_F * t_F)
-    h_Fe = 0.5 * (d_bn / cos_F - z_n * (0.5 * c + 0.5 * r3 * s) - G / c + rho)
+    h_Fe = 0.5 * (d_bn / cos_F - z_n * (0.5 * c + 0.5 * r3 * s) - G_c + rho)
     return s_Fn, rho_F, h_Fe, alpha_F, th, cos_F
 
 
