@@ -326,7 +326,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``geometry``: the pair's geometry dict when the caller has it (:func:`~geardesign.gears.geometry.mesh_geometry`
     of these designs: the strength checks of the shift solvers); it is used unvalidated, so designs that do not
     exist, or (given as arrays) have no root section, give NaN rather than an error. A batch larger than
-    :data:`~.blocks.BLOCK` runs in blocks, its per-design fields rows of one array per dtype (copy one to keep it alone).
+    :data:`~.blocks.BLOCK` runs in blocks, its per-design fields rows of one array per dtype (copy one to keep alone).
     """
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
