@@ -107,7 +107,8 @@ def single_pair_factors_of(db1, db2, da1, da2, sin_alpha_wt, tan_alpha_wt, a_w, 
     ra1 = xp.sqrt((da1 / 2.0) ** 2 - (db1 / 2.0) ** 2)   # pinion tip on the line of action
     rb1 = ra1 - p_bt                                       # point B: one base pitch inside
     rb2 = T1T2 + rb1 if internal else T1T2 - rb1
-    M1 = xp.sqrt(rc1 * rc2 / (rb1 * rb2))
+    rc12 = rc1 * rc2
+    M1 = xp.sqrt(rc12 / (rb1 * rb2))
     eb = xp.minimum(xp.asarray(eps_beta), 1.0)
     Z_B = xp.maximum(M1 - eb * (M1 - 1.0), 1.0)
     u = db2 / db1 if u is None else u   # give u = z2/z1: exact at the rule's 1.5
@@ -116,7 +117,7 @@ def single_pair_factors_of(db1, db2, da1, da2, sin_alpha_wt, tan_alpha_wt, a_w, 
     ra2 = xp.sqrt((da2 / 2.0) ** 2 - (db2 / 2.0) ** 2)
     rd2 = ra2 - p_bt
     rd1 = T1T2 - rd2
-    M2 = xp.sqrt(rc1 * rc2 / (rd1 * rd2))
+    M2 = xp.sqrt(rc12 / (rd1 * rd2))
     Z_D = xp.maximum(M2 - eb * (M2 - 1.0), 1.0)
     return Z_B, xp.where(u > 1.5, 1.0, Z_D)
 
