@@ -4,8 +4,9 @@ The chain makes a few hundred array temporaries. Over 10⁶ designs each is 8 MB
 pages in on first touch (numpy asks for huge pages from 4 MB up, each zeroed when first touched) and that no cache
 holds. The chain then ran at half its speed per design at 2·10⁵ designs. In blocks of :data:`BLOCK` designs the
 temporaries are 128 kB, taken again and again from the allocator's heap and kept in the caches; only the results
-are full size (one array per dtype, each field a row of it). Every formula of the chain is elementwise (where it branches on ``any``/``all`` over the designs,
-each branch gives a design the value it has alone), so the blocks give the unblocked call's values bit for bit.
+are full size (one array per dtype, each field a row of it). Every formula of the chain is elementwise (where it
+branches on ``any``/``all`` over the designs, each branch gives a design the value it has alone), so the blocks give
+the unblocked call's values bit for bit.
 """
 from __future__ import annotations
 
