@@ -3,8 +3,9 @@
 * one pair's full strength (``strength(pair, load, material=...)``: every factor of parts 1, 2, 3, the result
   object with its factor table) and the bare dict of ``pair_strength`` on numbers, against a plain-Python float
   evaluation of the contact side (geometry, Z_H, Z_E, Z_ε, σ_H0, σ_H with fixed K factors);
-* the vectorised chain over N designs (every factor, both gears, both methods' work for method B), in designs/s,
-  against a straight-line numpy evaluation of the same contact side over the same designs;
+* the vectorised chain over N, 5N and 10N designs (every factor, both gears, both methods' work for method B; the
+  first call at each size), in designs/s, against a straight-line numpy evaluation of the same contact side over the
+  same designs;
 * the shift solvers' call: ``pair_strength`` on the 5 designs of a finite-difference stencil with their geometry
   given (``geometry=``, as geardesign.gears.checks.strength does once per solver iteration).
 
@@ -103,7 +104,7 @@ def main(n=200_000):
     print(f"  pair_strength(5 designs, geometry=)     {t_stencil * 1e6:9.0f} µs   ({t_stencil / t_plain:6.0f}x; the "
           f"shift solvers' strength checks, once per iteration)")
     rng = np.random.default_rng(0)
-    for size in (n, 5 * n):
+    for size in (n, 5 * n, 10 * n):
         z1 = rng.integers(14, 40, size)
         z2 = z1 + rng.integers(5, 80, size)
         x1 = rng.uniform(0.0, 0.6, size)

@@ -3,7 +3,7 @@ checks, objectives and drawings read (the written contract of the geometry dict'
 holds every key read anywhere in the package to this table)."""
 from __future__ import annotations
 
-__all__ = ["GEOMETRY_FIELDS", "INTERNAL_FIELDS", "REPORT_FIELDS", "CONTACT_FIELDS"]
+__all__ = ["GEOMETRY_FIELDS", "INTERNAL_FIELDS", "REPORT_FIELDS", "CONTACT_FIELDS", "TIP_FIELDS"]
 
 
 # name -> (unit, description); the order is the order of reports.
@@ -76,6 +76,12 @@ REPORT_FIELDS = frozenset({"alpha_w_deg", "s1", "s2", "sw1", "sw2", "p_w", "alph
 # Fields of the path of contact: computed unless only fields without them are asked for
 CONTACT_FIELDS = frozenset({"p_b", "g_alpha", "eps_alpha", "rho_p1", "rho_p2", "sliding1_root", "sliding2_root",
                             "spec_pressure_pitch", "eps_gamma"})
+
+
+# Fields of the tooth tips (their thicknesses) and of the ends of the path of contact: computed unless only fields
+# without them (and the validation's) are asked for, as the strength chain's geometry is
+TIP_FIELDS = frozenset({"sa1", "sa2", "san1", "san2", "_t_a1", "_t_a2", "_inv_a1", "_inv_a2", "rho_p1", "rho_p2",
+                        "sliding1_root", "sliding2_root", "spec_pressure_pitch", "eps_gamma"})
 
 
 # name -> meaning (units: lengths mm, angles rad, the rest dimensionless). Not reported; the checks'

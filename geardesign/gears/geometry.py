@@ -27,7 +27,7 @@ from .center_distance import (center_distance_from_x_sum, inv_operating_angle, m
 from .distinct import per_distinct, exact_sum_nodes  # noqa: F401
 from .inputs import (_VALIDATION_FIELDS, DESIGNS_MAX, M_RANGE_MM, X_ABS_MAX, require_module,  # noqa: F401
                      validate_geometry, validate_inputs)
-from .fields import CONTACT_FIELDS, GEOMETRY_FIELDS, INTERNAL_FIELDS, REPORT_FIELDS  # noqa: F401
+from .fields import CONTACT_FIELDS, GEOMETRY_FIELDS, INTERNAL_FIELDS, REPORT_FIELDS, TIP_FIELDS  # noqa: F401
 from .involute import _tan_from_inv_float, t_minus_atan, t_minus_atan_float, tan_from_inv
 from .mesh import Z_MAX, Z_MIN, Mesh, section_tuple as _section_constants
 from .rack import BasicRack
@@ -83,12 +83,13 @@ _FLOAT_OPS = SimpleNamespace(
 BLOCK = 16_384
 
 
-def mesh_geometry(mesh: Mesh, m, x1, x2, full: bool = True, then=None, contact: bool = True) -> dict:
+def mesh_geometry(mesh: Mesh, m, x1, x2, full: bool = True, then=None, contact: bool = True, tips: bool = True) -> dict:
     """All geometry fields of ``mesh`` at module ``m`` (mm) and shifts x1, x2 as float arrays
     (broadcast with the mesh's tooth counts), no validation: designs that do not exist give NaN.
     Internal quantities the checks and gradients use carry a leading underscore. ``full=False``
     leaves out the fields only reports use (:data:`REPORT_FIELDS`), and with it ``contact=False`` those of
-    the path of contact (:data:`CONTACT_FIELDS`). Large inputs are evaluated
+    the path of contact (:data:`CONTACT_FIELDS`), and with ``tips=False`` (not ``full``) those of :data:`TIP_FIELDS`
+    (the fields are absent). Large inputs are evaluated
     in blocks of :data:`BLOCK` designs. ``then``: a function of the geometry dict (e.g. the
     checks' margins) applied block by block, whose dict of arrays (the designs along their last
     axis) is returned instead: only what it returns is stored at full size, not the ~50 fields. For one
@@ -102,14 +103,14 @@ def mesh_geometry(mesh: Mesh, m, x1, x2, full: bool = True, then=None, contact: 
         m, z1, z2, x1, x2 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, mesh.z1, mesh.z2, x1, x2)))
     with np.errstate(invalid="ignore", divide="ignore"):
         if x1.size <= BLOCK:
-            geo = _formulas(mesh, m, z1, z2, x1, x2, _ARRAY_OPS, full, contact)
+            geo = _formulas(mesh, m, z1, z2, x1, x2, _ARRAY_OPS, full, contact, tips)
             return geo if then is None else then(geo)
         shape = x1.shape
         flat = [v if one_pair else v.reshape(-1) for v in (m, z1, z2)] + [x1.reshape(-1), x2.reshape(-1)]
         out = {}
         for s in range(0, x1.size, BLOCK):
             part = _formulas(mesh, *(v if np.ndim(v) == 0 else v[s:s + BLOCK] for v in flat), _ARRAY_OPS, full,
-                             contact)
+                             contact, tips)
             if then is not None:
                 part = then(part)
             for k, v in part.items():
@@ -146,11 +147,12 @@ def _operating_angle(D, ta, inv_a, ops):
     return inv_aw, ta + dt, dt
 
 
-def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True, contact: bool = True) -> dict:
+def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True, contact: bool = True, tips: bool = True) -> dict:
     """Every field of the pair; ``m`` is the normal module, x1/x2 normal shifts, and the circles,
     angles, thicknesses and the path of contact are transverse (ISO 21771:2007 §4–5). A spur
     pair is a helical one with z/cos β = z and every factor cos β or cos β_b = 1.0. The path of
-    contact is left out with ``contact=False`` unless ``full`` (the reports read it).
+    contact is left out with ``contact=False`` unless ``full`` (the reports read it), the fields of
+    :data:`TIP_FIELDS` with ``tips=False`` unless ``full``.
     The steps hand their values on as tuples (the float path of the optimisers runs this ~10⁴
     times a second, where dicts between the steps cost a sixth of its time)."""
     rack, internal = mesh.rack, mesh.internal
@@ -158,8 +160,9 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True, contact: bo
     sa, ta, tn = c[1], c[3], c[7]
     om = _operating_mesh(mesh, c, m, z1, z2, x1, x2, ops)
     _, inv_aw, t_w, _, cos_w, sin_w, a, y, a_w, dy, k = om
-    g1 = _gear(rack, c, m, z1, x1, k, cos_w, ops)
-    g2 = _gear(rack, c, m, z2, x2, k, cos_w, ops, ring=internal)
+    tips = tips or full
+    g1 = _gear(rack, c, m, z1, x1, k, cos_w, ops, tips=tips)
+    g2 = _gear(rack, c, m, z2, x2, k, cos_w, ops, ring=internal, tips=tips)
     _, d1, db1, _, rw1, _, da1, df1, ra1, gap1, psi1, x_min1, rho_l1, rho_a1, t_a1, sa1, inv_a1 = g1
     _, d2, db2, _, rw2, _, da2, df2, ra2, gap2, psi2, x_min2, rho_l2, rho_a2, t_a2, sa2, inv_a2 = g2
 
@@ -182,9 +185,12 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True, contact: bo
         "_sgn": -1.0 if internal else 1.0, "_tn": tn, "_tan_beta": math.tan(math.radians(mesh.beta_deg)),
         "_mesh": mesh,
     }
+    if not tips:
+        for key in TIP_FIELDS.intersection(out):
+            del out[key]
     if not (contact or full):
         return out
-    out.update(_contact_fields(internal, c, m, z1, z2, om, g1, g2, eps_beta))
+    out.update(_contact_fields(internal, c, m, z1, z2, om, g1, g2, eps_beta, tips))
     if not full:
         return out
     # the fields no check or objective of the library needs: only for reports
@@ -192,8 +198,8 @@ def _formulas(mesh: Mesh, m, z1, z2, x1, x2, ops, full: bool = True, contact: bo
     return out
 
 
-def _contact_fields(internal: bool, c, m, z1, z2, om, g1, g2, eps_beta) -> dict:
-    """The path of contact: p_b, g_α, ε_α, ε_γ, the radii of curvature at its ends ρ_p, specific
+def _contact_fields(internal: bool, c, m, z1, z2, om, g1, g2, eps_beta, ends: bool = True) -> dict:
+    """The path of contact: p_b, g_α, ε_α and (``ends``) ε_γ, the radii of curvature at its ends ρ_p, specific
     sliding at the roots and m/ρ_red at the pitch point (ISO 21771:2007 §5.4)."""
     ca, cb, cbb = c[2], c[8], c[9]
     zs, t_w, sin_w, y = om[0], om[2], om[5], om[7]
@@ -208,6 +214,8 @@ def _contact_fields(internal: bool, c, m, z1, z2, om, g1, g2, eps_beta) -> dict:
     e2 = m * ((h2 + y * z2 / zs) if internal else (h2 - y * z2 / zs)) * (ra2 + rw2) / (rho_a2 + n2)
     g_alpha = e1 + e2
     eps_alpha = g_alpha / p_b
+    if not ends:
+        return {"p_b": p_b, "g_alpha": g_alpha, "eps_alpha": eps_alpha}
     # radii of curvature where the path of contact ends: the ring's grows with the pinion's
     rho_p1 = n1 - e2
     rho_p2 = n2 + e1 if internal else n2 - e1
@@ -277,11 +285,11 @@ def _operating_mesh(mesh: Mesh, c, m, z1, z2, x1, x2, ops) -> tuple:
     return zs, inv_aw, t_w, dt_w, cos_w, t_w * cos_w, a, y, a + y * m, dy, k
 
 
-def _gear(rack: BasicRack, c, m, z, x, k, cos_w, ops, ring: bool = False) -> tuple:
+def _gear(rack: BasicRack, c, m, z, x, k, cos_w, ops, ring: bool = False, tips: bool = True) -> tuple:
     """One gear: z/cos β, d, d_b, r_b, r_w, tip height h (modules), d_a, d_f, r_a, r_a − r_b, ψ = s/d ± inv α,
     x_min, ρ_l, ρ_a, tan α_a, s_a, inv α_a. An external gear (ISO 21771:2007 §4–5), or with ``ring``
     the internal gear of an internal pair (tips inside the reference circle, roots outside, flanks
-    concave; KHK Table 5-1 and GOST 19274-73, docs/references.md)."""
+    concave; KHK Table 5-1 and GOST 19274-73, docs/references.md). ``tips=False``: None for tan α_a, s_a, inv α_a."""
     _, sa, ca, ta, inv_a, s2h, h_limit, tn, cb, _ = c
     zt = z / cb                                # d/m_n: the reference diameter in normal modules
     d = m * zt
@@ -313,6 +321,8 @@ def _gear(rack: BasicRack, c, m, z, x, k, cos_w, ops, ring: bool = False) -> tup
         rho_l = m * (x - x_min) / sa
     ra = da / 2.0
     rho_a = ops.sqrt(gap * (gap + db))         # √(r_a² − r_b²) = r_b tan α_a
+    if not tips:
+        return zt, d, db, rb, rb / cos_w, h, da, df, ra, gap, psi, x_min, rho_l, rho_a, None, None, None
     # s_a = d_a (s/(m_t z) − (inv α_a − inv α_t)), the difference of involutes a step from
     # Δt = tan α_a − tan α_t = (r_a − r)(r_a + r)/(r_b (ρ_a + r_b tan α_t)): at large z the two
     # involutes agree to many digits, and α_t, a derived double, must not leak its rounding (z·ulp)
@@ -350,7 +360,7 @@ def _overlap_ratio(mesh: Mesh, m, ops):
 def _normal_tip_thickness(sa, da, d, mesh: Mesh):
     """s_an = s_at cos β_a, tan β_a = tan β d_a/d (ISO 21771:2007 eq. (54), (55)): the tooth thickness
     on the tip cylinder across the helix; the transverse s_at for a spur pair."""
-    if mesh.beta_deg == 0.0:
+    if mesh.beta_deg == 0.0 or sa is None:
         return sa
     tb = math.tan(math.radians(mesh.beta_deg)) * da / d
     return sa / (1.0 + tb * tb) ** 0.5
@@ -549,6 +559,7 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
     names = None if fields is None else _field_names(fields)
     full = names is None or not REPORT_FIELDS.isdisjoint(names)
     contact = full or not CONTACT_FIELDS.isdisjoint(names)
+    tips = full or not TIP_FIELDS.isdisjoint(names)
     # with ``fields``, only those and what the validation reads are stored at full size
     keep = None if names is None else _VALIDATION_FIELDS.union(names, ("a",))
     with np.errstate(all="ignore"):   # designs that do not exist are refused by name just below
@@ -556,7 +567,7 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
         shape = np.broadcast_shapes(*(np.shape(v) for v in (m, z1, z2, x1, x2)))
         geo = mesh_geometry(mesh, m, x1, x2, full, then=None if keep is None else (
             lambda g: {k: np.full(shape, v) if np.ndim(v) == 0 else v for k, v in g.items() if k in keep}),
-            contact=contact)
+            contact=contact, tips=tips)
     validate_geometry(geo, mesh)
     return Geometry._from_core(geo, scalar, names)
 

@@ -12,13 +12,15 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import broadcast_inputs, one_number, require_bool, require_range
-from ..geometry import mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry, validate_inputs
+from ..geometry import (DESIGNS_MAX, mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry,
+                        validate_inputs)
 from ..mesh import Mesh, section_constants
 from ..rack import STANDARD_RACK, BasicRack
 from . import accuracy as acc
 from . import contact as zc
 from . import defaults as dflt
 from . import factors as kf
+from .blocks import BLOCK, batch_shape, in_blocks
 from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
@@ -103,7 +105,8 @@ def _derived(g, z1, z2, rack, beta_deg, xp):
     """α_wt (from d_b1/d_w1), α_t, β_b, z_n, tooth depths: what the chain reads besides pair_geometry's fields."""
     sc = section_constants(rack.alpha, math.radians(beta_deg))
     with xp.errstate(invalid="ignore"):
-        g["alpha_wt_deg"] = xp.degrees(xp.arccos(xp.minimum(g["db1"] / g["dw1"], 1.0)))
+        g["cos_alpha_wt"] = xp.minimum(g["db1"] / g["dw1"], 1.0)
+        g["alpha_wt_deg"] = xp.degrees(xp.arccos(g["cos_alpha_wt"]))
     g["alpha_t_deg"] = math.degrees(sc.alpha_t)
     g["beta_b_deg"] = math.degrees(sc.beta_b)
     zn = 1.0 / (sc.cos_beta_b ** 2 * sc.cos_beta)
@@ -128,8 +131,9 @@ def _widths(face_width_mm, face_width2_mm, m, xp):
     """(b, b1, b2): the common width for contact and each gear's width for its root stress, the wider gear
     counted at most one module wider on each side (ISO 6336-3:2019 clause 5, b)."""
     b1 = checked("face_width_mm", face_width_mm, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
-    b2 = b1 if face_width2_mm is None else checked("face_width2_mm", face_width2_mm, *dflt.FACE_WIDTH_RANGE_MM,
-                                                   lo_open=True, unit="mm")
+    if face_width2_mm is None:      # one width: min(b1, b1 + 2m) is b1
+        return b1, b1, b1
+    b2 = checked("face_width2_mm", face_width2_mm, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
     b = xp.minimum(b1, b2)
     return b, xp.minimum(b1, b + 2.0 * m), xp.minimum(b2, b + 2.0 * m)
 
@@ -229,17 +233,21 @@ def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, xp, out):
 def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_opts, internal, xp, out):
     """σ_H0, σ_H1,2 and the pitting side of each gear (ISO 6336-2:2019)."""
     m1, m2 = mats
-    out["Z_H"] = G.pick("Z_H", lambda: zc.zone_factor(g["beta_b_deg"], g["alpha_t_deg"], g["alpha_wt_deg"]))
+    # α_wt's sine and tangent from its cosine d_b1/d_w1 (numpy's sin and cos cost ~5 divisions each)
+    c_w = g["cos_alpha_wt"]
+    s_w = xp.sqrt((1.0 - c_w) * (1.0 + c_w))
+    t_w = s_w / c_w
+    out["Z_H"] = G.pick("Z_H", lambda: zc.zone_factor_of(math.cos(math.radians(g["beta_b_deg"])),
+                                                         math.cos(math.radians(g["alpha_t_deg"])), c_w, s_w))
     out["Z_E"] = G.pick("Z_E", lambda: zc.elasticity_factor(m1.E_mpa, m1.nu, m2.E_mpa, m2.nu))
-    ZB, ZD = zc.single_pair_factors(g["db1"], g["db2"], g["da1"], g["da2"], g["alpha_wt_deg"], g["a_w"],
-                                    g["eps_alpha"], out["eps_beta"], g["p_b"], internal, g["_z2"] / g["_z1"])
+    ZB, ZD = zc.single_pair_factors_of(g["db1"], g["db2"], g["da1"], g["da2"], s_w, t_w, g["a_w"], g["eps_alpha"],
+                                       out["eps_beta"], g["p_b"], internal, g["_z2"] / g["_z1"])
     out["Z_B"], out["Z_D"] = G.pick("Z_B", lambda: ZB), G.pick("Z_D", lambda: ZD)
     s0 = zc.nominal_contact_stress(F_t, g["d1"], b, g["d2"] / g["d1"], out["Z_H"], out["Z_E"], out["Z_eps"],
                                    out["Z_beta"], internal)
     K = (K_A, K_gamma, out["K_v"], out["K_Hbeta"], out["K_Halpha"])
     out["sigma_H0"] = s0
     out["sigma_H1"], out["sigma_H2"] = zc.contact_stress(s0, out["Z_B"], *K), zc.contact_stress(s0, out["Z_D"], *K)
-    t_w = xp.tan(xp.radians(g["alpha_wt_deg"]))
     rho_red = zc.relative_radius(g["db1"] / 2.0 * t_w, g["db2"] / 2.0 * t_w, internal)
     out["Z_X"] = G.pick("Z_X", lambda: zc.SIZE_FACTOR_Z_X)
     hard = (m1.surface_hardened, m2.surface_hardened)
@@ -317,7 +325,8 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``root=False`` leaves the root side out (no S_F, σ_F, Y fields): half the work where only contact is asked.
     ``geometry``: the pair's geometry dict when the caller has it (:func:`~geardesign.gears.geometry.mesh_geometry`
     of these designs: the strength checks of the shift solvers); it is used unvalidated, so designs that do not
-    exist, or (given as arrays) have no root section, give NaN rather than an error.
+    exist, or (given as arrays) have no root section, give NaN rather than an error. A batch larger than
+    :data:`~.blocks.BLOCK` runs in blocks, its per-design fields rows of one array per dtype (copy one to keep alone).
     """
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
@@ -356,7 +365,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
         except (ArithmeticError, ValueError):   # math's domain error where numpy gives NaN: the array path says why
             G.used.clear()
     with np.errstate(all="ignore"):            # what is not finite is refused by name below (or is NaN on purpose)
-        return _finite(_evaluate(designs, G, o, ArrayOps), designs, o)
+        return _evaluate_batch(designs, G, o)
 
 
 # the factors whose formulas can leave their domain for a design that exists (first named when one does)
@@ -429,9 +438,41 @@ def _floats(designs):
     return float(m), z1, z2, float(x1), float(x2), float(b1), None if b2 is None else float(b2)
 
 
-def _evaluate(designs, G, o, xp) -> dict:
+def _evaluate_batch(designs, G, o) -> dict:
+    """:func:`_evaluate` of arrays, refused by :func:`_finite` where not finite: more than one block of designs in
+    blocks (see :mod:`.blocks`; every option, given factor and accuracy grade one number for all), each block's
+    stresses checked while in the caches, where a refusal is found again by the whole batch's call, so that it
+    names what the batch's call names."""
+    geo_keys = () if o.geometry is None else (*_GEOMETRY, "_z1", "_z2")
+    values = [*designs, *(o.geometry[k] for k in geo_keys)]
+    shape = batch_shape(values)
+    if (shape is None or not BLOCK < math.prod(shape) <= DESIGNS_MAX or np.ndim(o.grade)
+            or any(np.ndim(v) for v in (*G.values.values(), *o.shaft.values()))):
+        return _finite(_evaluate(designs, G, o, ArrayOps), designs, o)
+    finite = [True]
+
+    def block(vals):
+        geo = None if o.geometry is None else dict(zip(geo_keys, vals[len(designs):]))
+        part = _evaluate(tuple(vals[:len(designs)]), G, SimpleNamespace(**{**vars(o), "geometry": geo}), ArrayOps,
+                         finish=False)
+        finite[0] = finite[0] and (not o.refuse or all(np.isfinite(part[k]).all() for k in STRENGTH_FIELDS
+                                                       if k in part))
+        return part
+
+    try:
+        out = in_blocks(block, values, shape)
+    except GearDesignError:
+        out = None
+    if out is None:
+        G.used.clear()
+        return _finite(_evaluate(designs, G, o, ArrayOps), designs, o)
+    out = _finish(out, shape, G)
+    return out if finite[0] else _finite(out, designs, o)
+
+
+def _evaluate(designs, G, o, xp, finish=True) -> dict:
     """The chain of :func:`pair_strength` on validated options ``o``, in floats (``xp`` :class:`FloatOps`, one
-    design) or arrays."""
+    design) or arrays; ``finish`` False: its fields as computed, before :func:`_finish`."""
     m, z1, z2, x1, x2, face_width_mm, face_width2_mm = designs
     plain = xp is FloatOps
     beta_deg = float(o.beta_deg) if plain and type(o.beta_deg) is int else o.beta_deg
@@ -459,7 +500,10 @@ def _evaluate(designs, G, o, xp) -> dict:
     if o.root:
         root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), o.rack, beta_deg, o.internal, K_A, o.K_gamma, o.grade,
                   o.Rz_root, n12, o.load.life_h, o.root_method, out, o.rim, xp, o.refuse)
-    return _finish(out, *o.S_min, () if plain else np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
+    _permissible(out, *o.S_min)
+    if not finish:
+        return out
+    return _finish(out, () if plain else np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
 
 
 def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
@@ -474,17 +518,24 @@ def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
     return {"F_t": F_t, "v": kf.pitch_line_velocity(g["d1"], n1), "K_A": load.application_factor,
             "K_gamma": K_gamma, "n1": n1, "n2": n2, "alpha_wt_deg": g["alpha_wt_deg"],
             "eps_alpha": g["eps_alpha"], "z_n1": g["z_n1"], "z_n2": g["z_n2"], "eps_beta": eps_beta,
-            "eps_gamma": g["eps_alpha"] + eps_beta,
-            "eps_alpha_n": g["eps_alpha"] / math.cos(math.radians(g["beta_b_deg"])) ** 2}
+            # a spur pair's ε_γ and ε_αn are its ε_α (ε_β = 0, cos β_b = 1): one array, not three equal ones
+            "eps_gamma": g["eps_alpha"] + eps_beta if beta_deg else g["eps_alpha"],
+            "eps_alpha_n": (g["eps_alpha"] / math.cos(math.radians(g["beta_b_deg"])) ** 2 if beta_deg else
+                            g["eps_alpha"])}
 
 
-def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
-    """The permissible stresses, every field at the designs' shape, and the names of the given factors."""
+def _permissible(out, S_Hmin, S_Fmin) -> dict:
+    """The permissible stresses σ_HP = σ_HG/S_Hmin, σ_FP = σ_FG/S_Fmin and the minimum safety factors."""
     for i in (1, 2):
         out[f"sigma_HP{i}"] = out[f"sigma_HG{i}"] / S_Hmin
         if f"sigma_FG{i}" in out:
             out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
     out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
+    return out
+
+
+def _finish(out, shape, G) -> dict:
+    """Every field at the designs' shape, and the names of the given factors."""
     if shape:
         # the pair-wide fields at the designs' shape: read-only views of a large batch, copies of a small one
         # (np.full costs a quarter of np.broadcast_to there)

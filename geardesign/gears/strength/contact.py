@@ -10,7 +10,8 @@ import math
 from .ops import ops_of
 
 __all__ = [
-    "zone_factor", "elasticity_factor", "contact_ratio_factor", "helix_angle_factor", "single_pair_factors",
+    "zone_factor", "zone_factor_of", "elasticity_factor", "contact_ratio_factor", "helix_angle_factor",
+    "single_pair_factors", "single_pair_factors_of",
     "nominal_contact_stress", "contact_stress", "lubricant_factor", "velocity_factor", "roughness_factor",
     "work_hardening_factor", "SIZE_FACTOR_Z_X", "contact_stress_limit", "contact_safety", "relative_radius",
 ]
@@ -27,7 +28,17 @@ def zone_factor(beta_b_deg, alpha_t_deg, alpha_wt_deg):
     """
     xp = ops_of(beta_b_deg, alpha_t_deg, alpha_wt_deg)
     bb, at, awt = xp.radians(beta_b_deg), xp.radians(alpha_t_deg), xp.radians(alpha_wt_deg)
-    return xp.sqrt(2.0 * xp.cos(bb) * xp.cos(awt) / (xp.cos(at) ** 2 * xp.sin(awt)))
+    return zone_factor_of(xp.cos(bb), xp.cos(at), xp.cos(awt), xp.sin(awt))
+
+
+def zone_factor_of(cos_beta_b, cos_alpha_t, cos_alpha_wt, sin_alpha_wt):
+    """:func:`zone_factor` from the cosines and the sine (the factor chain has cos α_wt = d_b1/d_w1 from the
+    geometry: numpy's sin and cos are ~5x slower than a division and a square root).
+
+    >>> round(float(zone_factor_of(1.0, 0.9396926, 0.9396926, 0.3420201)), 4)
+    2.4946
+    """
+    return ops_of(cos_alpha_wt, sin_alpha_wt).sqrt(2.0 * cos_beta_b * cos_alpha_wt / (cos_alpha_t ** 2 * sin_alpha_wt))
 
 
 def elasticity_factor(E1_mpa, nu1, E2_mpa, nu2):
@@ -80,15 +91,24 @@ def single_pair_factors(db1, db2, da1, da2, alpha_wt_deg, a_w, eps_alpha, eps_be
     [1.0772, 1.0]
     """
     xp = ops_of(db1, db2, da1, da2, alpha_wt_deg, a_w, eps_beta, p_bt)
-    db1, db2, da1, da2 = xp.asarray(db1), xp.asarray(db2), xp.asarray(da1), xp.asarray(da2)
     awt = xp.radians(alpha_wt_deg)
-    T1T2 = xp.asarray(a_w) * xp.sin(awt)
-    rc1 = db1 / 2.0 * xp.tan(awt)
+    return single_pair_factors_of(db1, db2, da1, da2, xp.sin(awt), xp.tan(awt), a_w, eps_alpha, eps_beta, p_bt,
+                                  internal, u)
+
+
+def single_pair_factors_of(db1, db2, da1, da2, sin_alpha_wt, tan_alpha_wt, a_w, eps_alpha, eps_beta, p_bt,
+                           internal=False, u=None):
+    """:func:`single_pair_factors` from sin α_wt and tan α_wt (the factor chain's, from cos α_wt = d_b1/d_w1)."""
+    xp = ops_of(db1, db2, da1, da2, sin_alpha_wt, a_w, eps_beta, p_bt)
+    db1, db2, da1, da2 = xp.asarray(db1), xp.asarray(db2), xp.asarray(da1), xp.asarray(da2)
+    T1T2 = xp.asarray(a_w) * sin_alpha_wt
+    rc1 = db1 / 2.0 * tan_alpha_wt
     rc2 = T1T2 + rc1 if internal else T1T2 - rc1
     ra1 = xp.sqrt((da1 / 2.0) ** 2 - (db1 / 2.0) ** 2)   # pinion tip on the line of action
     rb1 = ra1 - p_bt                                       # point B: one base pitch inside
     rb2 = T1T2 + rb1 if internal else T1T2 - rb1
-    M1 = xp.sqrt(rc1 * rc2 / (rb1 * rb2))
+    rc12 = rc1 * rc2
+    M1 = xp.sqrt(rc12 / (rb1 * rb2))
     eb = xp.minimum(xp.asarray(eps_beta), 1.0)
     Z_B = xp.maximum(M1 - eb * (M1 - 1.0), 1.0)
     u = db2 / db1 if u is None else u   # give u = z2/z1: exact at the rule's 1.5
@@ -97,7 +117,7 @@ def single_pair_factors(db1, db2, da1, da2, alpha_wt_deg, a_w, eps_alpha, eps_be
     ra2 = xp.sqrt((da2 / 2.0) ** 2 - (db2 / 2.0) ** 2)
     rd2 = ra2 - p_bt
     rd1 = T1T2 - rd2
-    M2 = xp.sqrt(rc1 * rc2 / (rd1 * rd2))
+    M2 = xp.sqrt(rc12 / (rd1 * rd2))
     Z_D = xp.maximum(M2 - eb * (M2 - 1.0), 1.0)
     return Z_B, xp.where(u > 1.5, 1.0, Z_D)
 

@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 
-from .ops import ops_of
+from .ops import ArrayOps, ops_of
 
 __all__ = [
     "tangential_load", "pitch_line_velocity", "basic_rack_factor", "theoretical_single_stiffness",
@@ -213,6 +214,11 @@ def _speed_capped(y, v, cap_5_10, cap_10):
     v = xp.asarray(v)
     if xp.all(v <= 5.0):
         return y
+    if xp is ArrayOps and v.ndim and np.ndim(cap_5_10) == 0 and np.ndim(cap_10) == 0:
+        # the cap taken from [∞, cap_5_10, cap_10] by 2 − (v ≤ 10) − (v ≤ 5) (NaN: the last, as below): 4x faster
+        # than two np.where over arrays
+        at = 2 - (v <= 10.0).view(np.int8) - (v <= 5.0).view(np.int8)
+        return xp.minimum(y, np.array([math.inf, cap_5_10, cap_10]).take(at))
     cap = xp.where(v <= 5.0, math.inf, xp.where(v <= 10.0, cap_5_10, cap_10))
     return xp.minimum(y, cap)
 
@@ -310,6 +316,8 @@ def face_load_factor_H(F_betay_um, c_gamma_beta, line_load_n_mm):
     """
     xp = ops_of(F_betay_um, c_gamma_beta, line_load_n_mm)
     r = xp.asarray(c_gamma_beta) * xp.asarray(F_betay_um) / xp.asarray(line_load_n_mm)
+    if xp.all(r <= 2.0):        # the usual case: the second branch is not needed
+        return 1.0 + r / 2.0
     return xp.where(r <= 2.0, 1.0 + r / 2.0, xp.sqrt(2.0 * xp.maximum(r, 2.0)))
 
 
@@ -347,6 +355,8 @@ def transverse_load_factor(eps_gamma, c_gamma_alpha, f_pb_eff_um, line_load_H_n_
     e = xp.asarray(eps_gamma)
     load = xp.asarray(c_gamma_alpha) * xp.maximum(xp.asarray(f_pb_eff_um), 0.0) / line_load_H_n_mm
     low = e / 2.0 * (0.9 + 0.4 * load)
+    if xp.all(e <= 2.0):        # every ε_γ ≤ 2 (spur pairs): the second branch is not needed
+        return low
     high = 0.9 + 0.4 * xp.sqrt(2.0 * (xp.maximum(e, 1.0) - 1.0) / e) * load
     return xp.where(e <= 2.0, low, high)
 

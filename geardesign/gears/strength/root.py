@@ -47,6 +47,7 @@ HFP_RANGE = (0.5, 2.5)                 # basic rack dedendum h_fP*/m_n
 RHOFP_RANGE = (0.0, 1.0)               # basic rack root radius ρ_fP*/m_n
 SPR_RANGE = (0.0, 0.5)                 # protuberance residual s_pr*/m_n
 _NEWTON_STEPS = 40
+_FLOAT_MAX = float(np.finfo(float).max)
 BLOCK = 16_384                         # designs per block of a large array call (cache-sized temporaries)
 DESIGNS_MAX = 50_000_000               # designs in one call: ~20 output fields of 8 bytes each (~8 GB)
 
@@ -93,9 +94,14 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
         return (float(z), float(x), float(da_over_mn), float(eps_alpha), abs(float(beta_deg)),
                 math.radians(alpha_n_deg), float(hfp_star), float(rhofp_star), float(spr_star), internal, method,
                 _FloatOps)
-    z = require_int("z", z, *Z_RANGE).astype(float)
+    if not (type(z) is np.ndarray and z.dtype == np.float64 and z.size and Z_RANGE[0] <= z.min()
+            and z.max() <= Z_RANGE[1] and (np.rint(z) == z).all()):      # (the factor chain's: its geometry's z)
+        z = require_int("z", z, *Z_RANGE).astype(float)
     x = checked("x", x, *X_RANGE)
-    da = require_positive("da_over_mn", da_over_mn)
+    da = da_over_mn
+    if not (type(da) is np.ndarray and da.dtype == np.float64 and da.size and da.min() > 0.0
+            and da.max() <= _FLOAT_MAX):
+        da = require_positive("da_over_mn", da_over_mn)
     eps = checked("eps_alpha", eps_alpha, *EPS_ALPHA_RANGE)
     beta = checked("beta_deg", beta_deg, *BETA_RANGE_DEG, unit="deg")
     alpha_n = one_number("alpha_n_deg", require_range("alpha_n_deg", alpha_n_deg, *ALPHA_N_RANGE_DEG,
@@ -179,10 +185,10 @@ def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops, refuse=True):
     rho_a = ops.sqrt((da_n - d_bn) * (da_n + d_bn)) / 2.0
     p_bn = math.pi * math.cos(alpha_n)
     rho_e = rho_a + p_bn * (eps_n - 1.0) if internal else rho_a - p_bn * (eps_n - 1.0)
-    if ops.any(rho_e <= 0.0) and not refuse:
+    if ops.any(bad := rho_e <= 0.0) and not refuse:
         rho_e = np.where(rho_e > 0.0, rho_e, np.nan)
-    elif ops.any(rho_e <= 0.0):
-        bad = np.asarray(rho_e) <= 0.0
+    elif ops.any(bad):
+        bad = np.asarray(bad)
         most = eps_n + rho_e / p_bn       # ε_αn = 1 + ρ_a/p_bn puts the point on the base circle (external only:
         #                                   a ring's point lies outward of its tip)
         raise GearDesignError(
@@ -192,7 +198,7 @@ def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops, refuse=True):
 
 
 def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
-    """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) of an external gear: ISO 6336-3:2019 clause 6.2,
+    """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) and cos α_Fen of an external gear: ISO 6336-3:2019 clause 6.2,
     G = ρ_fP/m_n − h_fP/m_n + x, H = 2/z_n (π/2 − E/m_n) − π/3, θ = (2G/z_n) tan θ − H,
     s_Fn/m_n = z_n sin(π/3 − θ) + √3 (G/cos θ − ρ_fP/m_n),
     ρ_F/m_n = ρ_fP/m_n + 2G²/(cos θ (z_n cos²θ − 2G)),
@@ -200,23 +206,27 @@ def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
     h_Fe/m_n = ½[(cos γ_e − sin γ_e tan α_Fen) d_e/m_n − z_n cos(π/3 − θ) − G/cos θ + ρ_fP/m_n].
 
     Evaluated with cos γ_e − sin γ_e tan α_Fen = cos α_e/cos α_Fen (so its first term is d_bn/cos α_Fen),
-    inv α_e with tan α_e = √(d_e² − d_bn²)/d_bn, and cos θ, sin θ, cos(π/3 − θ), sin(π/3 − θ) from tan θ:
-    fewer trigonometric functions, the same values to a few ulp."""
+    inv α_e with tan α_e = √(d_e² − d_bn²)/d_bn, cos θ, sin θ, cos(π/3 − θ), sin(π/3 − θ) from tan θ and
+    cos α_Fen = 1/√(1 + tan² α_Fen) (|α_Fen| < π/2; numpy's tan is ~5x faster than its cos): fewer trigonometric
+    functions, the same values to a few ulp."""
     G = rho - hfp + x
     H = 2.0 / z_n * (math.pi / 2.0 - E) - math.pi / 3.0
     th, t = _theta(G, H, z_n, x, ops, refuse)
     c = 1.0 / ops.sqrt(1.0 + t * t)              # |θ| < π/2: cos θ > 0
     s = t * c
     r3 = math.sqrt(3.0)
-    s_Fn = z_n * (0.5 * r3 * c - 0.5 * s) + r3 * (G / c - rho)
-    rho_F = rho + 2.0 * G * G / (c * (z_n * c * c - 2.0 * G))
+    G_c, G2 = G / c, 2.0 * G
+    s_Fn = z_n * (0.5 * r3 * c - 0.5 * s) + r3 * (G_c - rho)
+    rho_F = rho + G2 * G / (c * (z_n * c * c - G2))
     d_bn = z_n * math.cos(alpha_n)
     alpha_e = ops.arccos(d_bn / d_e)
     tan_e = ops.sqrt((d_e - d_bn) * (d_e + d_bn)) / d_bn
     gamma_e = (math.pi / 2.0 + 2.0 * x * math.tan(alpha_n)) / z_n + _inv(alpha_n, math) - (tan_e - alpha_e)
     alpha_F = alpha_e - gamma_e
-    h_Fe = 0.5 * (d_bn / ops.cos(alpha_F) - z_n * (0.5 * c + 0.5 * r3 * s) - G / c + rho)
-    return s_Fn, rho_F, h_Fe, alpha_F, th
+    t_F = ops.tan(alpha_F)
+    cos_F = 1.0 / ops.sqrt(1.0 + t_F * t_F)
+    h_Fe = 0.5 * (d_bn / cos_F - z_n * (0.5 * c + 0.5 * r3 * s) - G_c + rho)
+    return s_Fn, rho_F, h_Fe, alpha_F, th, cos_F
 
 
 # The internal gear's critical section: the tangent at 60° to the tooth centre line (30° external).
@@ -224,7 +234,7 @@ _TANGENT_INTERNAL = math.pi / 3.0
 
 
 def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
-    """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) of an internal gear treated, as ISO 6336-3:2006
+    """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) and cos α_Fen of an internal gear treated, as ISO 6336-3:2006
     does, as its basic rack (z_n → ∞) with the 60° tangent.
 
     The ring's tooth is the rack tooth between two cutter teeth; the cutter's fillet centre lies
@@ -241,7 +251,7 @@ def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
     h_Fe = depth_chord - h_e - (math.pi / 4.0 + h_e * t) * t
     s_Fn = math.pi - 2.0 * E - 2.0 * rho * math.cos(_TANGENT_INTERNAL)
     return (ops.like(h_Fe, s_Fn), ops.like(h_Fe, rho), h_Fe, ops.like(h_Fe, alpha_n),
-            ops.like(h_Fe, math.pi / 2.0 - _TANGENT_INTERNAL))
+            ops.like(h_Fe, math.pi / 2.0 - _TANGENT_INTERNAL), math.cos(alpha_n))
 
 
 def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=20.0, hfp_star=1.25,
@@ -325,12 +335,17 @@ def form_factors(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, r
 def _factors(z, x, da, eps, beta, rack, ops, refuse=True) -> dict:
     """Every field of :func:`root_form_factors` for validated inputs (arrays of one shape, or floats)."""
     alpha_n, hfp, rho, E, internal, method = rack
-    cos_beta = ops.cos(beta * (math.pi / 180.0))
-    sin_bb = ops.sin(beta * (math.pi / 180.0)) * math.cos(alpha_n)
-    cos_bb2 = 1.0 - sin_bb * sin_bb                   # cos²β_b
-    z_n = z / (cos_bb2 * cos_beta)
-    eps_n = eps / cos_bb2
-    da_n = z_n + da - z / cos_beta                    # d_an = d_n + d_a − d
+    if type(beta) is np.ndarray and beta.ndim == 0 and beta == 0.0:
+        z_n, eps_n = z * 1.0, eps * 1.0               # spur: the divisions by cos β = cos²β_b = 1 below (new arrays:
+        #                                                 the result's z_n is not the caller's z)
+        da_n = z_n + da - z
+    else:
+        cos_beta = ops.cos(beta * (math.pi / 180.0))
+        sin_bb = ops.sin(beta * (math.pi / 180.0)) * math.cos(alpha_n)
+        cos_bb2 = 1.0 - sin_bb * sin_bb               # cos²β_b
+        z_n = z / (cos_bb2 * cos_beta)
+        eps_n = eps / cos_bb2
+        da_n = z_n + da - z / cos_beta                # d_an = d_n + d_a − d
     if ops.any(bad := da_n <= z_n * math.cos(alpha_n)) and not refuse:
         da_n = np.where(bad, np.nan, da_n)
     elif ops.any(bad):
@@ -340,12 +355,12 @@ def _factors(z, x, da, eps, beta, rack, ops, refuse=True) -> dict:
             f"the virtual gear), got {_first(da, bad)}")
     d_e = _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops, refuse)
     section = _internal_section if internal else _external_section
-    s_Fn, rho_F, h_Fe, alpha_F, th = section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse)
+    s_Fn, rho_F, h_Fe, alpha_F, th, cos_F = section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse)
     if ops.any(bad := (s_Fn <= 0.0) | (h_Fe <= 0.0)) and not refuse:
         s_Fn = np.where(bad, np.nan, s_Fn)
     elif ops.any(bad):
         raise GearDesignError(f"x gives no root section (s_Fn or h_Fe <= 0), got x={_first(x, bad)}")
-    Y_F = 6.0 * h_Fe * ops.cos(alpha_F) / (s_Fn * s_Fn * math.cos(alpha_n))
+    Y_F = 6.0 * h_Fe * cos_F / (s_Fn * s_Fn * math.cos(alpha_n))
     Y_S = stress_correction_factor(s_Fn, h_Fe, rho_F)
     q_s = s_Fn / (2.0 * rho_F)
     names = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")

@@ -102,6 +102,8 @@ def deep_tooth_factor_Y_DT(eps_alpha_n, accuracy_grade):
     else:
         q = require_int("accuracy_grade", accuracy_grade, 1, 12)
     xp = ops_of(e)
+    if type(q) is float and q > 4:    # grades 5-12: 1 whatever ε_αn is
+        return xp.like(e, 1.0)
     if xp is not ops_of(q):
         e, q = np.broadcast_arrays(e, q)
     line = xp.where(e > 2.5, 0.7, -0.666 * e + 2.366)
@@ -277,6 +279,8 @@ def size_factor_Y_X(m_n_mm, material_kind, *, static: bool = False):
     if static is not False and require_bool("static", static):
         return xp.like(m, 1.0)
     a, b, floor = _SIZE_BY_KIND[kind]
+    if xp.all(m <= 5.0):        # modules up to 5 mm: 1
+        return xp.like(m, 1.0)
     return xp.where(m <= 5.0, 1.0, xp.maximum(a - b * m, floor))
 
 
@@ -312,6 +316,9 @@ def life_factor_Y_NT(N_L, material_kind, *, optimum: bool = False):
     y_long = 1.0 if optimum is not False and require_bool("optimum", optimum) else 0.85
     xp = ops_of(n)
     ln = xp.log(xp.clip(n, n_static, N_LONG))
-    upper = math.log(y_static) * (_LN_ENDURANCE - ln) / (_LN_ENDURANCE - math.log(n_static))
+    long = ln > _LN_ENDURANCE
     lower = math.log(y_long) * (ln - _LN_ENDURANCE) / (_LN_LONG - _LN_ENDURANCE)
+    if xp.all(long):                # every gear beyond the endurance knee (the usual case): one line
+        return xp.exp(lower)
+    upper = math.log(y_static) * (_LN_ENDURANCE - ln) / (_LN_ENDURANCE - math.log(n_static))
     return xp.exp(xp.where(ln <= _LN_ENDURANCE, upper, lower))
