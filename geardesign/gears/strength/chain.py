@@ -350,7 +350,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
             face_width2_mm is None or type(face_width2_mm) in (int, float)) and float_geometry:
         # one design in Python floats: the formulas on math, not numpy (see .ops)
         try:
-            return _finite(_evaluate(_floats(designs), G, o, FloatOps), designs, o)
+            return _finite(_evaluate(_floats(designs), G, o, FloatOps), designs, o, plain=True)
         except GearDesignError:
             raise
         except (ArithmeticError, ValueError):   # math's domain error where numpy gives NaN: the array path says why
@@ -364,11 +364,12 @@ _DOMAIN_FACTORS = ("Z_B", "Z_D", "Z_H", "Z_eps", "K_v", "K_Hbeta", "K_Halpha", "
                    "Y_Fa1", "Y_Fa2", "Y_Sa1", "Y_Sa2", "Y_deltarelT1", "Y_deltarelT2")
 
 
-def _finite(out: dict, designs, o) -> dict:
+def _finite(out: dict, designs, o, plain=False) -> dict:
     """``out`` when its stresses and safety factors are finite, or where NaN is asked for (a caller's unvalidated
     geometry); else a refusal that names the design and the first factor out of its formula's domain (an
-    undercut pinion whose inner point of single contact lies below its base circle: Z_B, say)."""
-    if not o.refuse:
+    undercut pinion whose inner point of single contact lies below its base circle: Z_B, say). ``plain``: one
+    design in numbers, whose sum is finite when each is (a NaN or an infinity carries into it)."""
+    if not o.refuse or plain and math.isfinite(sum([out[k] for k in STRENGTH_FIELDS if k in out])):
         return out
     bad = np.zeros(np.shape(out["S_H1"]), dtype=bool)
     for k in STRENGTH_FIELDS:
