@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import inspect
 import math
+import operator
 from types import SimpleNamespace
 
 import numpy as np
@@ -62,12 +63,19 @@ class _Given:
             lo, hi = (0.0, 1e4) if name[0] in "fFCc" or name == "Z_E" else dflt.FACTOR_RANGE
             self.values[name] = require_range(f"factors[{name!r}]", value, lo, hi)
 
-    def pick(self, name, compute):
-        """The given value of ``name``, or ``compute()`` (a thunk: nothing is computed for a given factor)."""
+    def pick(self, name, compute, *args):
+        """The given value of ``name``, or ``compute(*args)`` (nothing is computed for a given factor)."""
         if name in self.values:
             self.used.add(name)
             return self.values[name]
-        return compute()
+        return compute(*args)
+
+    def value(self, name, computed):
+        """The given value of ``name``, or ``computed`` (at hand already)."""
+        if name in self.values:
+            self.used.add(name)
+            return self.values[name]
+        return computed
 
 
 def _material(value, name):
@@ -150,9 +158,9 @@ def _deviations(G, m, g, b, grade, xp):
     d = xp.maximum(g["d1"], g["d2"])
     cos_t = math.cos(math.radians(g["alpha_t_deg"]))
     return {"f_pb": G.pick("f_pb", lambda: acc.single_pitch_deviation(m, d, grade) * cos_t),
-            "f_falpha": G.pick("f_falpha", lambda: acc.profile_form_deviation(m, d, grade)),
-            "F_beta": G.pick("F_beta", lambda: acc.helix_deviation_total(d, b, grade)),
-            "f_Hbeta": G.pick("f_Hbeta", lambda: acc.helix_slope_deviation(d, b, grade))}
+            "f_falpha": G.pick("f_falpha", acc.profile_form_deviation, m, d, grade),
+            "F_beta": G.pick("F_beta", acc.helix_deviation_total, d, b, grade),
+            "f_Hbeta": G.pick("f_Hbeta", acc.helix_slope_deviation, d, b, grade)}
 
 
 def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
@@ -161,10 +169,10 @@ def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
     x2 = -x2 if internal else x2
     c_th = kf.theoretical_single_stiffness(g["z_n1"], g["z_n2"], x1, x2, internal)
     C_B = kf.basic_rack_factor(rack.ha + rack.c, rack.alpha_deg)
-    c_prime = G.pick("c_prime", lambda: kf.single_stiffness(c_th, C_B, beta_deg, w_A))
+    c_prime = G.pick("c_prime", kf.single_stiffness, c_th, C_B, beta_deg, w_A)
     c_ga, c_gb = kf.mesh_stiffness(c_prime, g["eps_alpha"])
-    out.update(c_th=c_th, C_B=C_B, c_prime=c_prime, c_gamma_alpha=G.pick("c_gamma_alpha", lambda: c_ga),
-               c_gamma_beta=G.pick("c_gamma_beta", lambda: c_gb))
+    out.update(c_th=c_th, C_B=C_B, c_prime=c_prime, c_gamma_alpha=G.value("c_gamma_alpha", c_ga),
+               c_gamma_beta=G.value("c_gamma_beta", c_gb))
     xs = x1 + x2
     lo, hi = kf.STIFFNESS_X_SUM_RANGE
     out["stiffness_out_of_range"] = (xs < lo) | (xs > hi) | (x1 < x2)
@@ -173,8 +181,8 @@ def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
 def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal, v, xp, out):
     """K_v by method B with the running-in allowance y_α (ISO 6336-1:2019 6.5.9)."""
     y_a = _pair_mean(mats, lambda mat: kf.running_in_alpha(dev["f_pb"], mat.sigma_Hlim_mpa, mat.kind, v))
-    C_a = G.pick("C_a", lambda: tip_relief_um if tip_relief_um is not None else _pair_mean(
-        mats, lambda mat: kf.tip_relief_running_in(mat.sigma_Hlim_mpa)))
+    C_a = G.value("C_a", tip_relief_um) if tip_relief_um is not None else G.pick(
+        "C_a", _pair_mean, mats, lambda mat: kf.tip_relief_running_in(mat.sigma_Hlim_mpa))
     d_m1 = (g["da1"] + g["df1"]) / 2.0
     m_red = kf.reduced_mass(d_m1, g["db1"], g["d2"] / g["d1"], bore[0], bore[1], internal=internal)
     n_E1 = kf.resonance_speed(g["_z1"], out["c_gamma_alpha"], m_red)
@@ -184,7 +192,7 @@ def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal,
     B_f = c * xp.maximum(dev["f_falpha"] - y_a, 0.0) / w_A
     B_k = xp.abs(1.0 - out["c_gamma_alpha"] * C_a / w_A)
     N_S = kf.subcritical_limit(w_A)
-    K_v = G.pick("K_v", lambda: kf.dynamic_factor(N, eps_gamma, B_p, B_f, B_k, w_A, N_S=N_S))
+    K_v = G.pick("K_v", kf.dynamic_factor, N, eps_gamma, B_p, B_f, B_k, w_A, N_S)
     out.update(y_alpha=y_a, C_a=C_a, m_red=m_red, n_E1=n_E1, N=N, K_v=K_v, K_v_resonance=(N > N_S) & (N < 1.5))
 
 
@@ -201,7 +209,7 @@ def _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft, xp, out):
 
     def compute():
         f_sh = G.pick("f_sh", lambda: kf.shaft_misalignment(w_m, b, g["d1"], **shaft))
-        f_ma = G.pick("f_ma", lambda: dev["f_Hbeta"])
+        f_ma = G.value("f_ma", dev["f_Hbeta"])
         F_bx = kf.helix_misalignment(f_sh, f_ma, w_m, dev["F_beta"])
         y_b = _pair_mean(mats, lambda mat: kf.running_in_beta(F_bx, mat.sigma_Hlim_mpa, mat.kind, v))
         out.update(f_sh=f_sh, f_ma=f_ma, F_betax=F_bx, y_beta=y_b, F_betay=F_bx - y_b)
@@ -210,7 +218,7 @@ def _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft, xp, out):
     K_Hb = G.pick("K_Hbeta", compute)
     b_over_h = xp.minimum(b / g["h1"], b / g["h2"])
     N_F = kf.face_load_exponent(b_over_h)
-    out.update(K_Hbeta=K_Hb, N_F=N_F, K_Fbeta=G.pick("K_Fbeta", lambda: kf.face_load_factor_F(K_Hb, N_F)))
+    out.update(K_Hbeta=K_Hb, N_F=N_F, K_Fbeta=G.pick("K_Fbeta", kf.face_load_factor_F, K_Hb, N_F))
 
 
 def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, xp, out):
@@ -221,19 +229,19 @@ def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, xp, out):
     if root_method == "C":   # ISO 6336-1:2006 eq. (76): ε_γ/(ε_α Y_ε) with the tip-load method's Y_ε
         hi_F = eps_gamma / (g["eps_alpha"] * (0.25 + 0.75 / out["eps_alpha_n"]))
     hi_H, hi_F = xp.maximum(hi_H, 1.0), xp.maximum(hi_F, 1.0)
-    out.update(K_Halpha=G.pick("K_Halpha", lambda: xp.clip(raw, 1.0, hi_H)),
-               K_Falpha=G.pick("K_Falpha", lambda: xp.clip(raw, 1.0, hi_F)),
+    out.update(K_Halpha=G.pick("K_Halpha", xp.clip, raw, 1.0, hi_H),
+               K_Falpha=G.pick("K_Falpha", xp.clip, raw, 1.0, hi_F),
                K_Halpha_limited=raw > hi_H, K_Falpha_limited=raw > hi_F)
 
 
 def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_opts, internal, xp, out):
     """σ_H0, σ_H1,2 and the pitting side of each gear (ISO 6336-2:2019)."""
     m1, m2 = mats
-    out["Z_H"] = G.pick("Z_H", lambda: zc.zone_factor(g["beta_b_deg"], g["alpha_t_deg"], g["alpha_wt_deg"]))
-    out["Z_E"] = G.pick("Z_E", lambda: zc.elasticity_factor(m1.E_mpa, m1.nu, m2.E_mpa, m2.nu))
+    out["Z_H"] = G.pick("Z_H", zc.zone_factor, g["beta_b_deg"], g["alpha_t_deg"], g["alpha_wt_deg"])
+    out["Z_E"] = G.pick("Z_E", zc.elasticity_factor, m1.E_mpa, m1.nu, m2.E_mpa, m2.nu)
     ZB, ZD = zc.single_pair_factors(g["db1"], g["db2"], g["da1"], g["da2"], g["alpha_wt_deg"], g["a_w"],
                                     g["eps_alpha"], out["eps_beta"], g["p_b"], internal, g["_z2"] / g["_z1"])
-    out["Z_B"], out["Z_D"] = G.pick("Z_B", lambda: ZB), G.pick("Z_D", lambda: ZD)
+    out["Z_B"], out["Z_D"] = G.value("Z_B", ZB), G.value("Z_D", ZD)
     s0 = zc.nominal_contact_stress(F_t, g["d1"], b, g["d2"] / g["d1"], out["Z_H"], out["Z_E"], out["Z_eps"],
                                    out["Z_beta"], internal)
     K = (K_A, K_gamma, out["K_v"], out["K_Hbeta"], out["K_Halpha"])
@@ -241,7 +249,7 @@ def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_op
     out["sigma_H1"], out["sigma_H2"] = zc.contact_stress(s0, out["Z_B"], *K), zc.contact_stress(s0, out["Z_D"], *K)
     t_w = xp.tan(xp.radians(g["alpha_wt_deg"]))
     rho_red = zc.relative_radius(g["db1"] / 2.0 * t_w, g["db2"] / 2.0 * t_w, internal)
-    out["Z_X"] = G.pick("Z_X", lambda: zc.SIZE_FACTOR_Z_X)
+    out["Z_X"] = G.value("Z_X", zc.SIZE_FACTOR_Z_X)
     hard = (m1.surface_hardened, m2.surface_hardened)
     memo = {}
     for i, (mat, n) in enumerate(zip(mats, n12), start=1):
@@ -254,26 +262,31 @@ def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, 
     on the gear through σ_Hlim alone (``memo``: computed once for two gears of one σ_Hlim)."""
     s = mat.sigma_Hlim_mpa
     N_L = None if life_h is None else load_cycles(n, life_h)
-    out[f"Z_NT{i}"] = G.pick(f"Z_NT{i}", lambda: 1.0 if N_L is None else
-                             contact_life_factor(N_L, mat.kind, **life_opts))
-    out[f"Z_L{i}"] = G.pick(f"Z_L{i}", lambda: once(memo, ("Z_L", s), lambda: zc.lubricant_factor(nu40, s)))
-    out[f"Z_v{i}"] = G.pick(f"Z_v{i}", lambda: once(memo, ("Z_v", s), lambda: zc.velocity_factor(v, s)))
-    out[f"Z_R{i}"] = G.pick(f"Z_R{i}", lambda: once(memo, ("Z_R", s), lambda: zc.roughness_factor(Rz, Rz, rho_red, s)))
-    out[f"Z_W{i}"] = G.pick(f"Z_W{i}", lambda: zc.work_hardening_factor(mat.brinell, softer))
+    out[f"Z_NT{i}"] = (G.value(f"Z_NT{i}", 1.0) if N_L is None else
+                       G.pick(f"Z_NT{i}", contact_life_factor, N_L, mat.kind, *life_opts))
+    out[f"Z_L{i}"] = G.pick(f"Z_L{i}", once, memo, ("Z_L", s), zc.lubricant_factor, nu40, s)
+    out[f"Z_v{i}"] = G.pick(f"Z_v{i}", once, memo, ("Z_v", s), zc.velocity_factor, v, s)
+    out[f"Z_R{i}"] = G.pick(f"Z_R{i}", once, memo, ("Z_R", s), zc.roughness_factor, Rz, Rz, rho_red, s)
+    out[f"Z_W{i}"] = G.pick(f"Z_W{i}", zc.work_hardening_factor, mat.brinell, softer)
     out[f"N_L{i}"] = math.nan if N_L is None else N_L
     out[f"sigma_HG{i}"] = zc.contact_stress_limit(s, out[f"Z_NT{i}"], out[f"Z_L{i}"], out[f"Z_v{i}"],
                                                   out[f"Z_R{i}"], out[f"Z_W{i}"], out["Z_X"])
     out[f"S_H{i}"] = zc.contact_safety(out[f"sigma_HG{i}"], out[f"sigma_H{i}"])
 
 
-def _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method):
+def _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method, S_Hmin, S_Fmin,
+                      cycles_per_rev, rim_mm, bore_ratio, tip_relief_um) -> tuple:
+    """The options of :func:`pair_strength` that are numbers (or pairs of them), checked: (grade, nu40, Rz, Rz_root,
+    K_gamma, root_method, (S_Hmin, S_Fmin), cycles_per_rev, rim_mm, bore_ratio, tip_relief_um)."""
     grade = checked("accuracy_grade", accuracy_grade, *acc.GRADE_RANGE)
     grade = grade if type(grade) is float else float(grade) if np.ndim(grade) == 0 else grade
     return (grade, _number("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
             _number("Rz_flank_um", Rz_flank_um, *dflt.RZ_RANGE_UM, unit="µm"),
             _number("Rz_root_um", Rz_root_um, dflt.RZ_RANGE_UM[0], dflt.RZ_ROOT_MAX_UM, unit="µm"),
             _number("K_gamma", K_gamma, *dflt.K_GAMMA_RANGE),
-            root_method if root_method in ("B", "C") else _bad_method(root_method))
+            root_method if root_method in ("B", "C") else _bad_method(root_method),
+            (_number("S_Hmin", S_Hmin, 0.5, 10.0), _number("S_Fmin", S_Fmin, 0.5, 10.0)),
+            *_per_gear_options(cycles_per_rev, rim_mm, bore_ratio, tip_relief_um))
 
 
 def _number(name, value, lo, hi, **kw):
@@ -323,10 +336,11 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     if not isinstance(load, Load):
         raise GearDesignError(f"load must be a geardesign Load, got {type(load).__name__}")
     mats = (_material(material1, "material1"), _material(material1 if material2 is None else material2, "material2"))
-    grade, nu40, Rz, Rz_root, K_gamma, root_method = _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um,
-                                                                       K_gamma, root_method)
-    S_Hmin, S_Fmin = _number("S_Hmin", S_Hmin, 0.5, 10.0), _number("S_Fmin", S_Fmin, 0.5, 10.0)
-    cpr, rim_mm, bore_ratio, tip_relief_um = _per_gear_options(cycles_per_rev, rim_mm, bore_ratio, tip_relief_um)
+    raw = (accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method, S_Hmin, S_Fmin, cycles_per_rev, rim_mm,
+           bore_ratio, tip_relief_um)
+    # the defaults (the very objects of the signature) were checked once, at import
+    checked_options = _DEFAULTS_CHECKED if all(map(operator.is_, raw, _DEFAULTS)) else _validate_options(*raw)
+    grade, nu40, Rz, Rz_root, K_gamma, root_method, S_min, cpr, rim_mm, bore_ratio, tip_relief_um = checked_options
     if geometry is None and not all(type(v) in (int, float) for v in (m, z1, z2, x1, x2)):
         # ragged lists and shapes that do not broadcast refused by name before any work (arrays' values are
         # checked by the geometry, once)
@@ -339,8 +353,8 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     o = SimpleNamespace(load=load, mats=mats, grade=grade, nu40=nu40, Rz=Rz, Rz_root=Rz_root, K_gamma=K_gamma,
                         root_method=root_method, cpr=cpr, tip_relief_um=tip_relief_um, bore=bore_ratio,
                         shaft=shaft or {},
-                        life={"pitting_permitted": pitting_permitted, "optimum": optimum_life}, rim=rim_mm,
-                        root=require_bool("root", root), S_min=(S_Hmin, S_Fmin), rack=rack, beta_deg=beta_deg,
+                        life=(pitting_permitted, optimum_life), rim=rim_mm,
+                        root=require_bool("root", root), S_min=S_min, rack=rack, beta_deg=beta_deg,
                         internal=internal, tip_shortening=tip_shortening, geometry=geometry)
     float_geometry = geometry is None or all(type(geometry[k]) is float for k in _GEOMETRY)
     o.refuse = float_geometry          # a pair's own (validated) geometry: a design without a root section is refused
@@ -417,7 +431,9 @@ def _per_gear_options(cycles_per_rev, rim_mm, bore_ratio, tip_relief_um) -> tupl
 
 def check_options(options: dict) -> dict:
     """``options`` for :func:`pair_strength`, refused by name when one is not one of its keywords."""
-    unknown = sorted(set(options) - set(_OPTION_NAMES))
+    if options.keys() <= _OPTION_SET:
+        return options
+    unknown = sorted(set(options) - _OPTION_SET)
     if unknown:
         raise GearDesignError(f"unknown strength option {', '.join(map(repr, unknown))}; allowed: "
                               f"{', '.join(_OPTION_NAMES)}")
@@ -453,8 +469,8 @@ def _evaluate(designs, G, o, xp) -> dict:
     _stiffness(G, g, x1, x2, o.rack, beta_deg, w_A, o.internal, out)
     _dynamic(G, g, mats, n1, w_A, dev, o.tip_relief_um, o.bore, eps_gamma, o.internal, v, xp, out)
     _face_load(G, g, mats, F_t, b, K_A, dev, v, o.shaft, xp, out)
-    out["Z_eps"] = G.pick("Z_eps", lambda: zc.contact_ratio_factor(g["eps_alpha"], out["eps_beta"]))
-    out["Z_beta"] = G.pick("Z_beta", lambda: zc.helix_angle_factor(beta_deg))
+    out["Z_eps"] = G.pick("Z_eps", zc.contact_ratio_factor, g["eps_alpha"], out["eps_beta"])
+    out["Z_beta"] = G.pick("Z_beta", zc.helix_angle_factor, beta_deg)
     _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], o.root_method, xp, out)
     _contact(G, g, mats, F_t, b, K_A, o.K_gamma, v, n12, o.load.life_h, o.nu40, o.Rz, o.life, o.internal, xp, out)
     if o.root:
@@ -530,3 +546,8 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
 # the keywords of pair_strength a caller's options may set (the design and the load case are given apart)
 _OPTION_NAMES = tuple(k for k in inspect.signature(pair_strength).parameters
                       if k not in ("m", "z1", "z2", "x1", "x2", "load", "material1", "material2", "face_width_mm"))
+_OPTION_SET = frozenset(_OPTION_NAMES)
+# the defaults of the options _validate_options checks, and their checked values
+_DEFAULTS = tuple(inspect.signature(pair_strength).parameters[k].default
+                  for k in inspect.signature(_validate_options).parameters)
+_DEFAULTS_CHECKED = _validate_options(*_DEFAULTS)

@@ -108,8 +108,8 @@ def checked(name, value, lo, hi, *, lo_open=False, hi_open=False, unit=""):
     return require_range(name, value, lo, hi, lo_open=lo_open, hi_open=hi_open, unit=unit)
 
 
-def once(memo: dict, key, compute):
-    """``compute()`` the first time ``key`` is asked for, the stored value after: a factor both gears of a pair
+def once(memo: dict, key, compute, *args):
+    """``compute(*args)`` the first time ``key`` is asked for, the stored value after: a factor both gears of a pair
     share (one material on both: Z_L, Z_v, Z_R by σ_Hlim, Y_RrelT, Y_X by kind).
 
     >>> memo = {}
@@ -117,5 +117,5 @@ def once(memo: dict, key, compute):
     (1.05, 1.05)
     """
     if key not in memo:
-        memo[key] = compute()
+        memo[key] = compute(*args)
     return memo[key]

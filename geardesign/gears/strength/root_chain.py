@@ -81,12 +81,12 @@ def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_g
         return
     root, rf = mods
     names = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")
-    out["Y_beta"] = G.pick("Y_beta", lambda: rf.helix_factor_Y_beta(out["eps_beta"], beta_deg))
+    out["Y_beta"] = G.pick("Y_beta", rf.helix_factor_Y_beta, out["eps_beta"], beta_deg)
     if method == "B":
-        out["Y_DT"] = G.pick("Y_DT", lambda: rf.deep_tooth_factor_Y_DT(out["eps_alpha_n"], grade))
+        out["Y_DT"] = G.pick("Y_DT", rf.deep_tooth_factor_Y_DT, out["eps_alpha_n"], grade)
         extra = out["Y_DT"]
     else:
-        out["Y_eps"] = G.pick("Y_eps", lambda: rf.contact_ratio_factor_Y_eps(out["eps_alpha_n"]))
+        out["Y_eps"] = G.pick("Y_eps", rf.contact_ratio_factor_Y_eps, out["eps_alpha_n"])
         extra = out["Y_eps"]
     gear = (G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp or ops_of(F_t), {}, refuse)
     for i, (mat, x, b, n, s_R) in enumerate(zip(mats, xs, widths, n12, rim), start=1):
@@ -108,15 +108,15 @@ def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
     kind = mat.kind
     N_L = None if life_h is None else 60.0 * n * life_h
     in_range = ff["in_range"]
-    out.update({f"{names[0]}{i}": G.pick(f"{names[0]}{i}", lambda: ff[names[0]]),
-                f"{names[1]}{i}": G.pick(f"{names[1]}{i}", lambda: ff[names[1]]),
-                f"Y_B{i}": G.pick(f"Y_B{i}", lambda: _rim(rf, s_R, g[f"h{i}"], m, ring)),
-                f"Y_NT{i}": G.pick(f"Y_NT{i}", lambda: 1.0 if N_L is None else
-                                   rf.life_factor_Y_NT(N_L, kind)),
-                f"Y_deltarelT{i}": G.pick(f"Y_deltarelT{i}", lambda: _notch(rf, ff["q_s"], mat, out, i, refuse)),
-                f"Y_RrelT{i}": G.pick(f"Y_RrelT{i}", lambda: once(memo, ("Y_RrelT", kind), lambda:
-                                      rf.relative_surface_factor_Y_RrelT(Rz_root, kind))),
-                f"Y_X{i}": G.pick(f"Y_X{i}", lambda: once(memo, ("Y_X", kind), lambda: rf.size_factor_Y_X(m, kind))),
+    out.update({f"{names[0]}{i}": G.value(f"{names[0]}{i}", ff[names[0]]),
+                f"{names[1]}{i}": G.value(f"{names[1]}{i}", ff[names[1]]),
+                f"Y_B{i}": G.pick(f"Y_B{i}", _rim, rf, s_R, g[f"h{i}"], m, ring),
+                f"Y_NT{i}": (G.value(f"Y_NT{i}", 1.0) if N_L is None else
+                             G.pick(f"Y_NT{i}", rf.life_factor_Y_NT, N_L, kind)),
+                f"Y_deltarelT{i}": G.pick(f"Y_deltarelT{i}", _notch, rf, ff["q_s"], mat, out, i, refuse),
+                f"Y_RrelT{i}": G.pick(f"Y_RrelT{i}", once, memo, ("Y_RrelT", kind), rf.relative_surface_factor_Y_RrelT,
+                                      Rz_root, kind),
+                f"Y_X{i}": G.pick(f"Y_X{i}", once, memo, ("Y_X", kind), rf.size_factor_Y_X, m, kind),
                 f"q_s{i}": ff["q_s"],
                 f"root_out_of_range{i}": (not in_range) if type(in_range) is bool else
                 ~np.asarray(in_range, dtype=bool)})
