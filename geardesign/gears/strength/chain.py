@@ -252,8 +252,7 @@ def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_op
     out["Z_X"] = G.value("Z_X", zc.SIZE_FACTOR_Z_X)
     hard = (m1.surface_hardened, m2.surface_hardened)
     memo = {}
-    for i, (mat, n) in enumerate(zip(mats, n12), start=1):
-        softer = (not hard[i - 1]) and hard[2 - i]
+    for i, mat, n, softer in zip("12", mats, n12, ((not hard[0]) and hard[1], (not hard[1]) and hard[0])):
         _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, xp, out, memo)
 
 
@@ -262,16 +261,16 @@ def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, 
     on the gear through σ_Hlim alone (``memo``: computed once for two gears of one σ_Hlim)."""
     s = mat.sigma_Hlim_mpa
     N_L = None if life_h is None else load_cycles(n, life_h)
-    out[f"Z_NT{i}"] = (G.value(f"Z_NT{i}", 1.0) if N_L is None else
-                       G.pick(f"Z_NT{i}", contact_life_factor, N_L, mat.kind, *life_opts))
-    out[f"Z_L{i}"] = G.pick(f"Z_L{i}", once, memo, ("Z_L", s), zc.lubricant_factor, nu40, s)
-    out[f"Z_v{i}"] = G.pick(f"Z_v{i}", once, memo, ("Z_v", s), zc.velocity_factor, v, s)
-    out[f"Z_R{i}"] = G.pick(f"Z_R{i}", once, memo, ("Z_R", s), zc.roughness_factor, Rz, Rz, rho_red, s)
-    out[f"Z_W{i}"] = G.pick(f"Z_W{i}", zc.work_hardening_factor, mat.brinell, softer)
-    out[f"N_L{i}"] = math.nan if N_L is None else N_L
-    out[f"sigma_HG{i}"] = zc.contact_stress_limit(s, out[f"Z_NT{i}"], out[f"Z_L{i}"], out[f"Z_v{i}"],
-                                                  out[f"Z_R{i}"], out[f"Z_W{i}"], out["Z_X"])
-    out[f"S_H{i}"] = zc.contact_safety(out[f"sigma_HG{i}"], out[f"sigma_H{i}"])
+    out["Z_NT" + i] = (G.value("Z_NT" + i, 1.0) if N_L is None else
+                       G.pick("Z_NT" + i, contact_life_factor, N_L, mat.kind, *life_opts))
+    out["Z_L" + i] = G.pick("Z_L" + i, once, memo, ("Z_L", s), zc.lubricant_factor, nu40, s)
+    out["Z_v" + i] = G.pick("Z_v" + i, once, memo, ("Z_v", s), zc.velocity_factor, v, s)
+    out["Z_R" + i] = G.pick("Z_R" + i, once, memo, ("Z_R", s), zc.roughness_factor, Rz, Rz, rho_red, s)
+    out["Z_W" + i] = G.pick("Z_W" + i, zc.work_hardening_factor, mat.brinell, softer)
+    out["N_L" + i] = math.nan if N_L is None else N_L
+    out["sigma_HG" + i] = zc.contact_stress_limit(s, out["Z_NT" + i], out["Z_L" + i], out["Z_v" + i],
+                                                  out["Z_R" + i], out["Z_W" + i], out["Z_X"])
+    out["S_H" + i] = zc.contact_safety(out["sigma_HG" + i], out["sigma_H" + i])
 
 
 def _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method, S_Hmin, S_Fmin,
@@ -341,7 +340,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     # the defaults (the very objects of the signature) were checked once, at import
     checked_options = _DEFAULTS_CHECKED if all(map(operator.is_, raw, _DEFAULTS)) else _validate_options(*raw)
     grade, nu40, Rz, Rz_root, K_gamma, root_method, S_min, cpr, rim_mm, bore_ratio, tip_relief_um = checked_options
-    if geometry is None and not all(type(v) in (int, float) for v in (m, z1, z2, x1, x2)):
+    if geometry is None and not _plain_numbers((m, z1, z2, x1, x2)):
         # ragged lists and shapes that do not broadcast refused by name before any work (arrays' values are
         # checked by the geometry, once)
         if not all(isinstance(v, (np.ndarray, int, float, np.number)) for v in (m, z1, z2, x1, x2)):
@@ -356,12 +355,11 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
                         life=(pitting_permitted, optimum_life), rim=rim_mm,
                         root=require_bool("root", root), S_min=S_min, rack=rack, beta_deg=beta_deg,
                         internal=internal, tip_shortening=tip_shortening, geometry=geometry)
-    float_geometry = geometry is None or all(type(geometry[k]) is float for k in _GEOMETRY)
+    float_geometry = geometry is None or _FLOAT.issuperset(map(type, map(geometry.__getitem__, _GEOMETRY)))
     o.refuse = float_geometry          # a pair's own (validated) geometry: a design without a root section is refused
     G = _Given(factors)
     designs = (m, z1, z2, x1, x2, face_width_mm, face_width2_mm)
-    if all(type(v) in (int, float) for v in designs[:6]) and (
-            face_width2_mm is None or type(face_width2_mm) in (int, float)) and float_geometry:
+    if _plain_numbers(designs[:6]) and (face_width2_mm is None or _plain_numbers(designs[6:])) and float_geometry:
         # one design in Python floats: the formulas on math, not numpy (see .ops)
         try:
             return _finite(_evaluate(_floats(designs), G, o, FloatOps), designs, o, plain=True)
@@ -399,6 +397,14 @@ def _finite(out: dict, designs, o, plain=False) -> dict:
                        for n, v in zip(("m", "z1", "z2", "x1", "x2"), designs[:5]))
     raise GearDesignError(f"no ISO 6336 result for the design {values}: {factor} is not finite there (outside its "
                           f"formula's domain: an undercut pinion, a contact below a base circle, an extreme load)")
+
+
+_FLOAT, _INT_FLOAT = frozenset({float}), frozenset({int, float})
+
+
+def _plain_numbers(values) -> bool:
+    """True when every value is a Python int or float (one design in plain numbers)."""
+    return _INT_FLOAT.issuperset(map(type, values))
 
 
 TIP_RELIEF_RANGE_UM = (0.0, 1000.0)    # C_a given: from none to a millimetre (a relief of module size)
@@ -497,10 +503,10 @@ def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
 
 def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
     """The permissible stresses, every field at the designs' shape, and the names of the given factors."""
-    for i in (1, 2):
-        out[f"sigma_HP{i}"] = out[f"sigma_HG{i}"] / S_Hmin
-        if f"sigma_FG{i}" in out:
-            out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
+    for i in "12":
+        out["sigma_HP" + i] = out["sigma_HG" + i] / S_Hmin
+        if "sigma_FG" + i in out:
+            out["sigma_FP" + i] = out["sigma_FG" + i] / S_Fmin
     out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
     if shape:
         # the pair-wide fields at the designs' shape: read-only views of a large batch, copies of a small one

@@ -43,6 +43,9 @@ class ArrayOps:
         return np.full(np.shape(a), v)
 
 
+_NO_CONTEXT = contextlib.nullcontext()     # reusable: it holds nothing
+
+
 def _where(cond, a, b):
     return a if cond else b
 
@@ -64,7 +67,7 @@ class FloatOps:
     radians, degrees, abs, maximum, minimum = math.radians, math.degrees, abs, max, min
     where, interp = staticmethod(_where), staticmethod(_interp)
     any = all = staticmethod(bool)
-    errstate = staticmethod(lambda **kw: contextlib.nullcontext())    # math raises instead of warning
+    errstate = staticmethod(lambda **kw: _NO_CONTEXT)    # math raises instead of warning
 
     @staticmethod
     def clip(v, lo, hi):

@@ -75,8 +75,8 @@ def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_g
     for a design without a root section, see :func:`~.root.root_form_factors`)."""
     mods = _root_modules()
     if mods is None:
-        for i in (1, 2):
-            out[f"sigma_F{i}"] = out[f"sigma_FG{i}"] = out[f"S_F{i}"] = np.full_like(F_t, np.nan)
+        for i in "12":
+            out["sigma_F" + i] = out["sigma_FG" + i] = out["S_F" + i] = np.full_like(F_t, np.nan)
         out["root_unavailable"] = True
         return
     root, rf = mods
@@ -89,36 +89,36 @@ def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_g
         out["Y_eps"] = G.pick("Y_eps", rf.contact_ratio_factor_Y_eps, out["eps_alpha_n"])
         extra = out["Y_eps"]
     gear = (G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp or ops_of(F_t), {}, refuse)
-    for i, (mat, x, b, n, s_R) in enumerate(zip(mats, xs, widths, n12, rim), start=1):
+    for i, mat, x, b, n, s_R in zip("12", mats, xs, widths, n12, rim):
         _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h)
-        YF, YS, YB = out[f"{names[0]}{i}"], out[f"{names[1]}{i}"], out[f"Y_B{i}"]
-        s0 = out[f"sigma_F0{i}"] = nominal_root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra)
-        out[f"sigma_F{i}"] = loaded_root_stress(s0, K_A, K_gamma, out["K_v"], out["K_Fbeta"], out["K_Falpha"])
-        out[f"sigma_FG{i}"] = root_stress_limit(mat.sigma_Flim_mpa, out[f"Y_NT{i}"], out[f"Y_deltarelT{i}"],
-                                                out[f"Y_RrelT{i}"], out[f"Y_X{i}"], rf.Y_ST)
-        out[f"S_F{i}"] = out[f"sigma_FG{i}"] / out[f"sigma_F{i}"]
+        YF, YS, YB = out[names[0] + i], out[names[1] + i], out["Y_B" + i]
+        s0 = out["sigma_F0" + i] = nominal_root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra)
+        out["sigma_F" + i] = loaded_root_stress(s0, K_A, K_gamma, out["K_v"], out["K_Fbeta"], out["K_Falpha"])
+        out["sigma_FG" + i] = root_stress_limit(mat.sigma_Flim_mpa, out["Y_NT" + i], out["Y_deltarelT" + i],
+                                                out["Y_RrelT" + i], out["Y_X" + i], rf.Y_ST)
+        out["S_F" + i] = out["sigma_FG" + i] / out["sigma_F" + i]
 
 
 def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
     """Y_F, Y_S (or Y_Fa, Y_Sa), Y_B, Y_NT, Y_δrelT, Y_RrelT, Y_X and q_s of gear ``i`` into the chain's dict."""
     G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp, memo, refuse = gear
-    ring = internal and i == 2
-    ff = root.form_factors(g[f"_z{i}"], x, g[f"da{i}"] / m, g["eps_alpha"], beta_deg, rack.alpha_deg, rack.ha + rack.c,
+    ring = internal and i == "2"
+    ff = root.form_factors(g["_z" + i], x, g["da" + i] / m, g["eps_alpha"], beta_deg, rack.alpha_deg, rack.ha + rack.c,
                            rack.rho_f, 0.0, ring, method, keys=(names[0], names[1], "q_s", "in_range"), refuse=refuse)
     kind = mat.kind
     N_L = None if life_h is None else 60.0 * n * life_h
     in_range = ff["in_range"]
-    out.update({f"{names[0]}{i}": G.value(f"{names[0]}{i}", ff[names[0]]),
-                f"{names[1]}{i}": G.value(f"{names[1]}{i}", ff[names[1]]),
-                f"Y_B{i}": G.pick(f"Y_B{i}", _rim, rf, s_R, g[f"h{i}"], m, ring),
-                f"Y_NT{i}": (G.value(f"Y_NT{i}", 1.0) if N_L is None else
-                             G.pick(f"Y_NT{i}", rf.life_factor_Y_NT, N_L, kind)),
-                f"Y_deltarelT{i}": G.pick(f"Y_deltarelT{i}", _notch, rf, ff["q_s"], mat, out, i, refuse),
-                f"Y_RrelT{i}": G.pick(f"Y_RrelT{i}", once, memo, ("Y_RrelT", kind), rf.relative_surface_factor_Y_RrelT,
+    out.update({names[0] + i: G.value(names[0] + i, ff[names[0]]),
+                names[1] + i: G.value(names[1] + i, ff[names[1]]),
+                "Y_B" + i: G.pick("Y_B" + i, _rim, rf, s_R, g["h" + i], m, ring),
+                "Y_NT" + i: (G.value("Y_NT" + i, 1.0) if N_L is None else
+                             G.pick("Y_NT" + i, rf.life_factor_Y_NT, N_L, kind)),
+                "Y_deltarelT" + i: G.pick("Y_deltarelT" + i, _notch, rf, ff["q_s"], mat, out, i, refuse),
+                "Y_RrelT" + i: G.pick("Y_RrelT" + i, once, memo, ("Y_RrelT", kind), rf.relative_surface_factor_Y_RrelT,
                                       Rz_root, kind),
-                f"Y_X{i}": G.pick(f"Y_X{i}", once, memo, ("Y_X", kind), rf.size_factor_Y_X, m, kind),
-                f"q_s{i}": ff["q_s"],
-                f"root_out_of_range{i}": (not in_range) if type(in_range) is bool else
+                "Y_X" + i: G.pick("Y_X" + i, once, memo, ("Y_X", kind), rf.size_factor_Y_X, m, kind),
+                "q_s" + i: ff["q_s"],
+                "root_out_of_range" + i: (not in_range) if type(in_range) is bool else
                 ~np.asarray(in_range, dtype=bool)})
 
 
@@ -150,7 +150,7 @@ def _notch(rf, q_s, mat, out, i, refuse=True):
                               "sensitivity Y_deltarelT (ISO 6336-3:2019 clause 13): give it to material() or Material()")
     lo, hi = _SLIP_RANGE[mat.kind]
     limit = min(max(mat.yield_mpa, lo), hi)
-    out[f"strength_clipped{i}"] = limit != mat.yield_mpa
+    out["strength_clipped" + i] = limit != mat.yield_mpa
     return rf.relative_notch_sensitivity_Y_delta_relT(q_s, mat.kind, limit_mpa=limit)
 
 
