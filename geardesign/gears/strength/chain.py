@@ -490,7 +490,8 @@ def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
     T1, n1, n2 = _speeds(load, g["_z1"], g["_z2"])
     F_t = kf.tangential_load(T1, g["d1"])
     eps_beta = b * math.sin(math.radians(beta_deg)) / (math.pi * m) if beta_deg else 0.0   # spur: one number
-    if beta_deg and np.any(np.asarray(eps_beta) > dflt.EPS_BETA_MAX):
+    if beta_deg and (eps_beta > dflt.EPS_BETA_MAX if type(eps_beta) is float else
+                     np.any(np.asarray(eps_beta) > dflt.EPS_BETA_MAX)):
         raise GearDesignError(f"face_width_mm must give an overlap ratio eps_beta = b sin(beta)/(pi m) <= "
                               f"{dflt.EPS_BETA_MAX:g} (ISO 6336's factors are taken up to there), got eps_beta = "
                               f"{float(np.max(eps_beta)):.4g} with beta_deg = {beta_deg:g}")
@@ -517,6 +518,9 @@ def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
                 out[k] = np.full(shape, val) if small and val.ndim == 0 else np.broadcast_to(val, shape)
             elif isinstance(val, float):
                 out[k] = np.full(shape, val) if small else np.broadcast_to(np.float64(val), shape)
+    if not G.values:
+        out["given"] = out["given_unused"] = ()
+        return out
     out["given"] = tuple(sorted(G.used))
     out["given_unused"] = tuple(sorted(set(G.values) - G.used))   # e.g. f_sh with K_Hbeta given, Y_eps with method B
     return out
