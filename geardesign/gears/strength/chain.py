@@ -14,7 +14,8 @@ import numpy as np
 from ...errors import GearDesignError
 from ...validate import broadcast_inputs, one_number, require_bool, require_range
 from ..geometry import mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry, validate_inputs
-from ..mesh import Mesh, section_constants
+from ..inputs import M_RANGE_MM, X_ABS_MAX
+from ..mesh import Z_MAX, Z_MIN, Mesh, section_constants
 from ..rack import STANDARD_RACK, BasicRack
 from . import accuracy as acc
 from . import contact as zc
@@ -52,6 +53,8 @@ class _Given:
     def __init__(self, factors):
         self.values = {}
         self.used = set()
+        if not factors:      # nothing given (the usual case): every factor computed, without a look-up each
+            self.pick, self.value = _computed, _at_hand
         if factors is None:
             return
         if not isinstance(factors, dict):
@@ -78,6 +81,14 @@ class _Given:
         return computed
 
 
+def _computed(name, compute, *args):
+    return compute(*args)
+
+
+def _at_hand(name, computed):
+    return computed
+
+
 def _material(value, name):
     if isinstance(value, Material):
         return value
@@ -90,7 +101,10 @@ def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening, plain
     """The geometry fields the chain needs, from pair_geometry (validated there), and the section constants."""
     if plain and isinstance(rack, BasicRack):
         # one design in plain numbers: the float path of the geometry (validated as pair_geometry does)
-        validate_inputs(m, z1, z2, x1, x2)
+        if not (type(z1) is int and type(z2) is int and Z_MIN <= z1 <= Z_MAX and Z_MIN <= z2 <= Z_MAX
+                and M_RANGE_MM[0] <= m <= M_RANGE_MM[1] and -X_ABS_MAX <= x1 <= X_ABS_MAX
+                and -X_ABS_MAX <= x2 <= X_ABS_MAX):     # else refused by name there
+            validate_inputs(m, z1, z2, x1, x2)
         mesh = Mesh(z1, z2, rack, tip_shortening, beta_deg, internal)
         geo = mesh_geometry_float(mesh, m, x1, x2, full=False)
         if not (geo["inv_alpha_w"] > 0 and geo["_gap1"] > 0 and geo["_gap2"] > 0 and geo["df1"] > 0
