@@ -4,6 +4,7 @@ designs in one call; and the one-pair path that returns a :class:`StrengthResult
 """
 from __future__ import annotations
 
+import functools
 import inspect
 import math
 import operator
@@ -45,6 +46,10 @@ STRENGTH_FIELDS = ("S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigm
 CHAIN_GEOMETRY_FIELDS = ("a_w", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", "df1", "df2", "eps_alpha", "p_b")
 _GEOMETRY = list(CHAIN_GEOMETRY_FIELDS)
 _SMALL = 64   # designs: up to this many, the pair-wide fields are filled arrays instead of broadcast views
+# factors of the materials and the options alone (numbers on either path): each computed once for all calls
+_elasticity_factor = functools.lru_cache(maxsize=256)(zc.elasticity_factor)
+_tip_relief_running_in = functools.lru_cache(maxsize=256)(kf.tip_relief_running_in)
+_lubricant_factor = functools.lru_cache(maxsize=256)(zc.lubricant_factor)
 
 
 class _Given:
@@ -142,8 +147,8 @@ def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float, xp=ArrayOps) -> 
     NaN (the strength checks of the shift solvers mask them). ``xp`` :class:`FloatOps`: one design's dict of
     :func:`~geardesign.gears.geometry.mesh_geometry_float` (a :class:`~geardesign.GearPair`'s)."""
     with xp.errstate(invalid="ignore"):
-        return _derived({k: xp.asarray(geo[k]) for k in _GEOMETRY}, xp.asarray(geo["_z1"]), xp.asarray(geo["_z2"]),
-                        rack, beta_deg, xp)
+        return _derived(dict(zip(_GEOMETRY, map(xp.asarray, map(geo.__getitem__, _GEOMETRY)))),
+                        xp.asarray(geo["_z1"]), xp.asarray(geo["_z2"]), rack, beta_deg, xp)
 
 
 def _widths(face_width_mm, face_width2_mm, m, xp):
@@ -196,7 +201,7 @@ def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal,
     """K_v by method B with the running-in allowance y_α (ISO 6336-1:2019 6.5.9)."""
     y_a = _pair_mean(mats, lambda mat: kf.running_in_alpha(dev["f_pb"], mat.sigma_Hlim_mpa, mat.kind, v))
     C_a = G.value("C_a", tip_relief_um) if tip_relief_um is not None else G.pick(
-        "C_a", _pair_mean, mats, lambda mat: kf.tip_relief_running_in(mat.sigma_Hlim_mpa))
+        "C_a", _pair_mean, mats, lambda mat: _tip_relief_running_in(mat.sigma_Hlim_mpa))
     d_m1 = (g["da1"] + g["df1"]) / 2.0
     m_red = kf.reduced_mass(d_m1, g["db1"], g["d2"] / g["d1"], bore[0], bore[1], internal=internal)
     n_E1 = kf.resonance_speed(g["_z1"], out["c_gamma_alpha"], m_red)
@@ -252,7 +257,7 @@ def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_op
     """σ_H0, σ_H1,2 and the pitting side of each gear (ISO 6336-2:2019)."""
     m1, m2 = mats
     out["Z_H"] = G.pick("Z_H", zc.zone_factor, g["beta_b_deg"], g["alpha_t_deg"], g["alpha_wt_deg"])
-    out["Z_E"] = G.pick("Z_E", zc.elasticity_factor, m1.E_mpa, m1.nu, m2.E_mpa, m2.nu)
+    out["Z_E"] = G.pick("Z_E", _elasticity_factor, m1.E_mpa, m1.nu, m2.E_mpa, m2.nu)
     ZB, ZD = zc.single_pair_factors(g["db1"], g["db2"], g["da1"], g["da2"], g["alpha_wt_deg"], g["a_w"],
                                     g["eps_alpha"], out["eps_beta"], g["p_b"], internal, g["_z2"] / g["_z1"])
     out["Z_B"], out["Z_D"] = G.value("Z_B", ZB), G.value("Z_D", ZD)
@@ -272,12 +277,13 @@ def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_op
 
 def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, xp, out, memo):
     """Z_NT, Z_L, Z_v, Z_R, Z_W, σ_HG and S_H of gear ``i`` (ISO 6336-2:2019 clauses 10-14); Z_L, Z_v, Z_R depend
-    on the gear through σ_Hlim alone (``memo``: computed once for two gears of one σ_Hlim)."""
+    on the gear through σ_Hlim alone (``memo``: computed once for two gears of one σ_Hlim; Z_L, of the material and
+    the lubricant alone, once for all calls)."""
     s = mat.sigma_Hlim_mpa
     N_L = None if life_h is None else load_cycles(n, life_h)
     out["Z_NT" + i] = (G.value("Z_NT" + i, 1.0) if N_L is None else
                        G.pick("Z_NT" + i, contact_life_factor, N_L, mat.kind, *life_opts))
-    out["Z_L" + i] = G.pick("Z_L" + i, once, memo, ("Z_L", s), zc.lubricant_factor, nu40, s)
+    out["Z_L" + i] = G.pick("Z_L" + i, _lubricant_factor, nu40, s)
     out["Z_v" + i] = G.pick("Z_v" + i, once, memo, ("Z_v", s), zc.velocity_factor, v, s)
     out["Z_R" + i] = G.pick("Z_R" + i, once, memo, ("Z_R", s), zc.roughness_factor, Rz, Rz, rho_red, s)
     out["Z_W" + i] = G.pick("Z_W" + i, zc.work_hardening_factor, mat.brinell, softer)

@@ -3,6 +3,8 @@ limit and the safety factor of each gear, from the form factors of :mod:`.root` 
 :mod:`.root_factors`."""
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from ...errors import GearDesignError
@@ -69,6 +71,12 @@ def _root_modules():
     return _ROOT_MODULES
 
 
+@functools.lru_cache(maxsize=256)
+def _surface_factor(Rz_root_um, kind):
+    """Y_RrelT of a root roughness and a material kind (both numbers on either path): once for all calls."""
+    return _ROOT_MODULES[1].relative_surface_factor_Y_RrelT(Rz_root_um, kind)
+
+
 def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12, life_h,
               method, out, rim=(None, None), xp=None, refuse=True):
     """Fill ``out`` with the root factors, σ_F1,2, σ_FG1,2 and S_F1,2 of both gears (``refuse`` False: NaN
@@ -114,8 +122,7 @@ def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
                 "Y_NT" + i: (G.value("Y_NT" + i, 1.0) if N_L is None else
                              G.pick("Y_NT" + i, rf.life_factor_Y_NT, N_L, kind)),
                 "Y_deltarelT" + i: G.pick("Y_deltarelT" + i, _notch, rf, ff["q_s"], mat, out, i, refuse),
-                "Y_RrelT" + i: G.pick("Y_RrelT" + i, once, memo, ("Y_RrelT", kind), rf.relative_surface_factor_Y_RrelT,
-                                      Rz_root, kind),
+                "Y_RrelT" + i: G.pick("Y_RrelT" + i, _surface_factor, Rz_root, kind),
                 "Y_X" + i: G.pick("Y_X" + i, once, memo, ("Y_X", kind), rf.size_factor_Y_X, m, kind),
                 "q_s" + i: ff["q_s"],
                 "root_out_of_range" + i: (not in_range) if type(in_range) is bool else
