@@ -46,20 +46,21 @@ STRENGTH_FIELDS = ("S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigm
 CHAIN_GEOMETRY_FIELDS = ("a_w", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", "df1", "df2", "eps_alpha", "p_b")
 _GEOMETRY = list(CHAIN_GEOMETRY_FIELDS)
 _SMALL = 64   # designs: up to this many, the pair-wide fields are filled arrays instead of broadcast views
+_PITTING_KEYS = {i: tuple(k + i for k in ("Z_NT", "Z_L", "Z_v", "Z_R", "Z_W")) for i in "12"}   # per gear
 # factors of the materials and the options alone (numbers on either path): each computed once for all calls
 _elasticity_factor = functools.lru_cache(maxsize=256)(zc.elasticity_factor)
 _tip_relief_running_in = functools.lru_cache(maxsize=256)(kf.tip_relief_running_in)
 _lubricant_factor = functools.lru_cache(maxsize=256)(zc.lubricant_factor)
 
 
-class _Given:
-    """The factors given by the caller, and which of them were used."""
+class _Given(dict):
+    """The factors given by the caller, by name, and which of them were used (read). A step of the chain takes a
+    factor as ``G[name] if name in G else <its formula>``: nothing is computed for a given factor, and the usual
+    case (nothing given) costs one look-up."""
 
     def __init__(self, factors):
-        self.values = {}
+        super().__init__()
         self.used = set()
-        if not factors:      # nothing given (the usual case): every factor computed, without a look-up each
-            self.pick, self.value = _computed, _at_hand
         if factors is None:
             return
         if not isinstance(factors, dict):
@@ -69,29 +70,11 @@ class _Given:
                 raise GearDesignError(f"factors: unknown factor {name!r}; allowed: {', '.join(sorted(GIVEN_FACTORS))}")
             # deviations and stiffness (µm, N/(mm·µm)) and Z_E (√MPa) are not dimensionless factors near 1
             lo, hi = (0.0, 1e4) if name[0] in "fFCc" or name == "Z_E" else dflt.FACTOR_RANGE
-            self.values[name] = require_range(f"factors[{name!r}]", value, lo, hi)
+            self[name] = require_range(f"factors[{name!r}]", value, lo, hi)
 
-    def pick(self, name, compute, *args):
-        """The given value of ``name``, or ``compute(*args)`` (nothing is computed for a given factor)."""
-        if name in self.values:
-            self.used.add(name)
-            return self.values[name]
-        return compute(*args)
-
-    def value(self, name, computed):
-        """The given value of ``name``, or ``computed`` (at hand already)."""
-        if name in self.values:
-            self.used.add(name)
-            return self.values[name]
-        return computed
-
-
-def _computed(name, compute, *args):
-    return compute(*args)
-
-
-def _at_hand(name, computed):
-    return computed
+    def __getitem__(self, name):
+        self.used.add(name)
+        return dict.__getitem__(self, name)
 
 
 def _material(value, name):
@@ -176,10 +159,10 @@ def _deviations(G, m, g, b, grade, xp):
     circle."""
     d = xp.maximum(g["d1"], g["d2"])
     cos_t = math.cos(math.radians(g["alpha_t_deg"]))
-    return {"f_pb": G.pick("f_pb", lambda: acc.single_pitch_deviation(m, d, grade) * cos_t),
-            "f_falpha": G.pick("f_falpha", acc.profile_form_deviation, m, d, grade),
-            "F_beta": G.pick("F_beta", acc.helix_deviation_total, d, b, grade),
-            "f_Hbeta": G.pick("f_Hbeta", acc.helix_slope_deviation, d, b, grade)}
+    return {"f_pb": G["f_pb"] if "f_pb" in G else acc.single_pitch_deviation(m, d, grade) * cos_t,
+            "f_falpha": G["f_falpha"] if "f_falpha" in G else acc.profile_form_deviation(m, d, grade),
+            "F_beta": G["F_beta"] if "F_beta" in G else acc.helix_deviation_total(d, b, grade),
+            "f_Hbeta": G["f_Hbeta"] if "f_Hbeta" in G else acc.helix_slope_deviation(d, b, grade)}
 
 
 def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
@@ -188,10 +171,10 @@ def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
     x2 = -x2 if internal else x2
     c_th = kf.theoretical_single_stiffness(g["z_n1"], g["z_n2"], x1, x2, internal)
     C_B = kf.basic_rack_factor(rack.ha + rack.c, rack.alpha_deg)
-    c_prime = G.pick("c_prime", kf.single_stiffness, c_th, C_B, beta_deg, w_A)
+    c_prime = G["c_prime"] if "c_prime" in G else kf.single_stiffness(c_th, C_B, beta_deg, w_A)
     c_ga, c_gb = kf.mesh_stiffness(c_prime, g["eps_alpha"])
-    out.update(c_th=c_th, C_B=C_B, c_prime=c_prime, c_gamma_alpha=G.value("c_gamma_alpha", c_ga),
-               c_gamma_beta=G.value("c_gamma_beta", c_gb))
+    out.update(c_th=c_th, C_B=C_B, c_prime=c_prime, c_gamma_alpha=G["c_gamma_alpha"] if "c_gamma_alpha" in G else c_ga,
+               c_gamma_beta=G["c_gamma_beta"] if "c_gamma_beta" in G else c_gb)
     xs = x1 + x2
     lo, hi = kf.STIFFNESS_X_SUM_RANGE
     out["stiffness_out_of_range"] = (xs < lo) | (xs > hi) | (x1 < x2)
@@ -200,8 +183,8 @@ def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
 def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal, v, xp, out):
     """K_v by method B with the running-in allowance y_α (ISO 6336-1:2019 6.5.9)."""
     y_a = _pair_mean(mats, lambda mat: kf.running_in_alpha(dev["f_pb"], mat.sigma_Hlim_mpa, mat.kind, v))
-    C_a = G.value("C_a", tip_relief_um) if tip_relief_um is not None else G.pick(
-        "C_a", _pair_mean, mats, lambda mat: _tip_relief_running_in(mat.sigma_Hlim_mpa))
+    C_a = (G["C_a"] if "C_a" in G else tip_relief_um if tip_relief_um is not None else
+           _pair_mean(mats, lambda mat: _tip_relief_running_in(mat.sigma_Hlim_mpa)))
     d_m1 = (g["da1"] + g["df1"]) / 2.0
     m_red = kf.reduced_mass(d_m1, g["db1"], g["d2"] / g["d1"], bore[0], bore[1], internal=internal)
     n_E1 = kf.resonance_speed(g["_z1"], out["c_gamma_alpha"], m_red)
@@ -211,7 +194,7 @@ def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal,
     B_f = c * xp.maximum(dev["f_falpha"] - y_a, 0.0) / w_A
     B_k = xp.abs(1.0 - out["c_gamma_alpha"] * C_a / w_A)
     N_S = kf.subcritical_limit(w_A)
-    K_v = G.pick("K_v", kf.dynamic_factor, N, eps_gamma, B_p, B_f, B_k, w_A, N_S)
+    K_v = G["K_v"] if "K_v" in G else kf.dynamic_factor(N, eps_gamma, B_p, B_f, B_k, w_A, N_S=N_S)
     out.update(y_alpha=y_a, C_a=C_a, m_red=m_red, n_E1=n_E1, N=N, K_v=K_v, K_v_resonance=(N > N_S) & (N < 1.5))
 
 
@@ -227,17 +210,17 @@ def _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft, xp, out):
     w_m = F_t * K_A * out["K_v"] / b
 
     def compute():
-        f_sh = G.pick("f_sh", lambda: kf.shaft_misalignment(w_m, b, g["d1"], **shaft))
-        f_ma = G.value("f_ma", dev["f_Hbeta"])
+        f_sh = G["f_sh"] if "f_sh" in G else kf.shaft_misalignment(w_m, b, g["d1"], **shaft)
+        f_ma = G["f_ma"] if "f_ma" in G else dev["f_Hbeta"]
         F_bx = kf.helix_misalignment(f_sh, f_ma, w_m, dev["F_beta"])
         y_b = _pair_mean(mats, lambda mat: kf.running_in_beta(F_bx, mat.sigma_Hlim_mpa, mat.kind, v))
         out.update(f_sh=f_sh, f_ma=f_ma, F_betax=F_bx, y_beta=y_b, F_betay=F_bx - y_b)
         return kf.face_load_factor_H(F_bx - y_b, out["c_gamma_beta"], w_m)
 
-    K_Hb = G.pick("K_Hbeta", compute)
+    K_Hb = G["K_Hbeta"] if "K_Hbeta" in G else compute()
     b_over_h = xp.minimum(b / g["h1"], b / g["h2"])
     N_F = kf.face_load_exponent(b_over_h)
-    out.update(K_Hbeta=K_Hb, N_F=N_F, K_Fbeta=G.pick("K_Fbeta", kf.face_load_factor_F, K_Hb, N_F))
+    out.update(K_Hbeta=K_Hb, N_F=N_F, K_Fbeta=G["K_Fbeta"] if "K_Fbeta" in G else kf.face_load_factor_F(K_Hb, N_F))
 
 
 def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, xp, out):
@@ -248,19 +231,19 @@ def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, xp, out):
     if root_method == "C":   # ISO 6336-1:2006 eq. (76): ε_γ/(ε_α Y_ε) with the tip-load method's Y_ε
         hi_F = eps_gamma / (g["eps_alpha"] * (0.25 + 0.75 / out["eps_alpha_n"]))
     hi_H, hi_F = xp.maximum(hi_H, 1.0), xp.maximum(hi_F, 1.0)
-    out.update(K_Halpha=G.pick("K_Halpha", xp.clip, raw, 1.0, hi_H),
-               K_Falpha=G.pick("K_Falpha", xp.clip, raw, 1.0, hi_F),
+    out.update(K_Halpha=G["K_Halpha"] if "K_Halpha" in G else xp.clip(raw, 1.0, hi_H),
+               K_Falpha=G["K_Falpha"] if "K_Falpha" in G else xp.clip(raw, 1.0, hi_F),
                K_Halpha_limited=raw > hi_H, K_Falpha_limited=raw > hi_F)
 
 
 def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_opts, internal, xp, out):
     """σ_H0, σ_H1,2 and the pitting side of each gear (ISO 6336-2:2019)."""
     m1, m2 = mats
-    out["Z_H"] = G.pick("Z_H", zc.zone_factor, g["beta_b_deg"], g["alpha_t_deg"], g["alpha_wt_deg"])
-    out["Z_E"] = G.pick("Z_E", _elasticity_factor, m1.E_mpa, m1.nu, m2.E_mpa, m2.nu)
+    out["Z_H"] = G["Z_H"] if "Z_H" in G else zc.zone_factor(g["beta_b_deg"], g["alpha_t_deg"], g["alpha_wt_deg"])
+    out["Z_E"] = G["Z_E"] if "Z_E" in G else _elasticity_factor(m1.E_mpa, m1.nu, m2.E_mpa, m2.nu)
     ZB, ZD = zc.single_pair_factors(g["db1"], g["db2"], g["da1"], g["da2"], g["alpha_wt_deg"], g["a_w"],
                                     g["eps_alpha"], out["eps_beta"], g["p_b"], internal, g["_z2"] / g["_z1"])
-    out["Z_B"], out["Z_D"] = G.value("Z_B", ZB), G.value("Z_D", ZD)
+    out["Z_B"], out["Z_D"] = G["Z_B"] if "Z_B" in G else ZB, G["Z_D"] if "Z_D" in G else ZD
     s0 = zc.nominal_contact_stress(F_t, g["d1"], b, g["d2"] / g["d1"], out["Z_H"], out["Z_E"], out["Z_eps"],
                                    out["Z_beta"], internal)
     K = (K_A, K_gamma, out["K_v"], out["K_Hbeta"], out["K_Halpha"])
@@ -268,7 +251,7 @@ def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_op
     out["sigma_H1"], out["sigma_H2"] = zc.contact_stress(s0, out["Z_B"], *K), zc.contact_stress(s0, out["Z_D"], *K)
     t_w = xp.tan(xp.radians(g["alpha_wt_deg"]))
     rho_red = zc.relative_radius(g["db1"] / 2.0 * t_w, g["db2"] / 2.0 * t_w, internal)
-    out["Z_X"] = G.value("Z_X", zc.SIZE_FACTOR_Z_X)
+    out["Z_X"] = G["Z_X"] if "Z_X" in G else zc.SIZE_FACTOR_Z_X
     hard = (m1.surface_hardened, m2.surface_hardened)
     memo = {}
     for i, mat, n, softer in zip("12", mats, n12, ((not hard[0]) and hard[1], (not hard[1]) and hard[0])):
@@ -281,16 +264,15 @@ def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, 
     the lubricant alone, once for all calls)."""
     s = mat.sigma_Hlim_mpa
     N_L = None if life_h is None else load_cycles(n, life_h)
-    out["Z_NT" + i] = (G.value("Z_NT" + i, 1.0) if N_L is None else
-                       G.pick("Z_NT" + i, contact_life_factor, N_L, mat.kind, *life_opts))
-    out["Z_L" + i] = G.pick("Z_L" + i, _lubricant_factor, nu40, s)
-    out["Z_v" + i] = G.pick("Z_v" + i, once, memo, ("Z_v", s), zc.velocity_factor, v, s)
-    out["Z_R" + i] = G.pick("Z_R" + i, once, memo, ("Z_R", s), zc.roughness_factor, Rz, Rz, rho_red, s)
-    out["Z_W" + i] = G.pick("Z_W" + i, zc.work_hardening_factor, mat.brinell, softer)
-    out["N_L" + i] = math.nan if N_L is None else N_L
-    out["sigma_HG" + i] = zc.contact_stress_limit(s, out["Z_NT" + i], out["Z_L" + i], out["Z_v" + i],
-                                                  out["Z_R" + i], out["Z_W" + i], out["Z_X"])
-    out["S_H" + i] = zc.contact_safety(out["sigma_HG" + i], out["sigma_H" + i])
+    nt, zl, zv, zr, zw = _PITTING_KEYS[i]
+    Z_NT = G[nt] if nt in G else 1.0 if N_L is None else contact_life_factor(N_L, mat.kind, *life_opts)
+    Z_L = G[zl] if zl in G else _lubricant_factor(nu40, s)
+    Z_v = G[zv] if zv in G else once(memo, ("Z_v", s), zc.velocity_factor, v, s)
+    Z_R = G[zr] if zr in G else once(memo, ("Z_R", s), zc.roughness_factor, Rz, Rz, rho_red, s)
+    Z_W = G[zw] if zw in G else zc.work_hardening_factor(mat.brinell, softer)
+    sigma_HG = zc.contact_stress_limit(s, Z_NT, Z_L, Z_v, Z_R, Z_W, out["Z_X"])
+    out.update({nt: Z_NT, zl: Z_L, zv: Z_v, zr: Z_R, zw: Z_W, "N_L" + i: math.nan if N_L is None else N_L,
+                "sigma_HG" + i: sigma_HG, "S_H" + i: zc.contact_safety(sigma_HG, out["sigma_H" + i])})
 
 
 def _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method, S_Hmin, S_Fmin,
@@ -495,8 +477,8 @@ def _evaluate(designs, G, o, xp) -> dict:
     _stiffness(G, g, x1, x2, o.rack, beta_deg, w_A, o.internal, out)
     _dynamic(G, g, mats, n1, w_A, dev, o.tip_relief_um, o.bore, eps_gamma, o.internal, v, xp, out)
     _face_load(G, g, mats, F_t, b, K_A, dev, v, o.shaft, xp, out)
-    out["Z_eps"] = G.pick("Z_eps", zc.contact_ratio_factor, g["eps_alpha"], out["eps_beta"])
-    out["Z_beta"] = G.pick("Z_beta", zc.helix_angle_factor, beta_deg)
+    out["Z_eps"] = G["Z_eps"] if "Z_eps" in G else zc.contact_ratio_factor(g["eps_alpha"], out["eps_beta"])
+    out["Z_beta"] = G["Z_beta"] if "Z_beta" in G else zc.helix_angle_factor(beta_deg)
     _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], o.root_method, xp, out)
     _contact(G, g, mats, F_t, b, K_A, o.K_gamma, v, n12, o.load.life_h, o.nu40, o.Rz, o.life, o.internal, xp, out)
     if o.root:
@@ -538,11 +520,11 @@ def _finish(out, S_Hmin, S_Fmin, shape, G) -> dict:
                 out[k] = np.full(shape, val) if small and val.ndim == 0 else np.broadcast_to(val, shape)
             elif isinstance(val, float):
                 out[k] = np.full(shape, val) if small else np.broadcast_to(np.float64(val), shape)
-    if not G.values:
+    if not G:
         out["given"] = out["given_unused"] = ()
         return out
     out["given"] = tuple(sorted(G.used))
-    out["given_unused"] = tuple(sorted(set(G.values) - G.used))   # e.g. f_sh with K_Hbeta given, Y_eps with method B
+    out["given_unused"] = tuple(sorted(set(G) - G.used))   # e.g. f_sh with K_Hbeta given, Y_eps with method B
     return out
 
 

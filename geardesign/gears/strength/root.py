@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import functools
 import math
+import operator
 
 import numpy as np
 
@@ -75,18 +76,16 @@ def _inv(a, ops):
 _NUMBER_TYPES = frozenset({int, float})
 
 
-def _plain(values, ranges) -> bool:
-    """True for Python ints or floats each inside its range [lo, hi]: the common case, checked without numpy."""
-    if not _NUMBER_TYPES.issuperset(map(type, values)):
-        return False
-    for v, (lo, hi) in zip(values, ranges):
-        if not lo <= v <= hi:
-            return False
-    return True
+def _plain(values) -> bool:
+    """True for Python ints or floats each inside its range of :data:`_PLAIN_RANGES` (x, da_over_mn, eps_alpha,
+    beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star): the common case, checked without numpy."""
+    return (_NUMBER_TYPES.issuperset(map(type, values)) and all(map(operator.le, _PLAIN_LO, values))
+            and all(map(operator.le, values, _PLAIN_HI)))
 
 
 _PLAIN_RANGES = (X_RANGE, (1e-300, 1e300), EPS_ALPHA_RANGE, BETA_RANGE_DEG, ALPHA_N_RANGE_DEG, HFP_RANGE, RHOFP_RANGE,
                  SPR_RANGE)
+_PLAIN_LO, _PLAIN_HI = tuple(r[0] for r in _PLAIN_RANGES), tuple(r[1] for r in _PLAIN_RANGES)
 
 
 def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star,
@@ -98,8 +97,7 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
     if type(internal) is not bool:
         internal = require_bool("internal", internal)
     if ((type(z) is int or type(z) is float and z.is_integer()) and Z_RANGE[0] <= z <= Z_RANGE[1]
-            and _plain((x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star),
-                       _PLAIN_RANGES)):
+            and _plain((x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star))):
         return (float(z), float(x), float(da_over_mn), float(eps_alpha), abs(float(beta_deg)),
                 math.radians(alpha_n_deg), float(hfp_star), float(rhofp_star), float(spr_star), internal, method,
                 _FloatOps)
