@@ -47,8 +47,9 @@ CHAIN_GEOMETRY_FIELDS = ("a_w", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "
 _GEOMETRY = list(CHAIN_GEOMETRY_FIELDS)
 _SMALL = 64   # designs: up to this many, the pair-wide fields are filled arrays instead of broadcast views
 _PITTING_KEYS = {i: tuple(k + i for k in ("Z_NT", "Z_L", "Z_v", "Z_R", "Z_W")) for i in "12"}   # per gear
-# factors of the materials and the options alone (numbers on either path): each computed once for all calls
+# factors of the materials, the rack and the options alone (numbers on either path): each computed once for all calls
 _elasticity_factor = functools.lru_cache(maxsize=256)(zc.elasticity_factor)
+_basic_rack_factor = functools.lru_cache(maxsize=256)(kf.basic_rack_factor)
 _tip_relief_running_in = functools.lru_cache(maxsize=256)(kf.tip_relief_running_in)
 _lubricant_factor = functools.lru_cache(maxsize=256)(zc.lubricant_factor)
 
@@ -170,7 +171,7 @@ def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
     with ISO 21771's sign (x_ISO = −x of this project's GOST 19274 convention, as its tooth count is −z there)."""
     x2 = -x2 if internal else x2
     c_th = kf.theoretical_single_stiffness(g["z_n1"], g["z_n2"], x1, x2, internal)
-    C_B = kf.basic_rack_factor(rack.ha + rack.c, rack.alpha_deg)
+    C_B = _basic_rack_factor(rack.ha + rack.c, rack.alpha_deg)
     c_prime = G["c_prime"] if "c_prime" in G else kf.single_stiffness(c_th, C_B, beta_deg, w_A)
     c_ga, c_gb = kf.mesh_stiffness(c_prime, g["eps_alpha"])
     out.update(c_th=c_th, C_B=C_B, c_prime=c_prime, c_gamma_alpha=G["c_gamma_alpha"] if "c_gamma_alpha" in G else c_ga,
