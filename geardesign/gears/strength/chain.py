@@ -25,7 +25,7 @@ from . import factors as kf
 from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
-from .ops import ArrayOps, FloatOps, checked, once
+from .ops import ArrayOps, FloatOps, checked, once, per_load_case
 from .result import StrengthResult, from_chain
 from .root_chain import root_side
 
@@ -266,7 +266,7 @@ def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, 
     s = mat.sigma_Hlim_mpa
     N_L = None if life_h is None else load_cycles(n, life_h)
     nt, zl, zv, zr, zw = _PITTING_KEYS[i]
-    Z_NT = G[nt] if nt in G else 1.0 if N_L is None else contact_life_factor(N_L, mat.kind, *life_opts)
+    Z_NT = G[nt] if nt in G else 1.0 if N_L is None else per_load_case(contact_life_factor, N_L, mat.kind, *life_opts)
     Z_L = G[zl] if zl in G else _lubricant_factor(nu40, s)
     Z_v = G[zv] if zv in G else once(memo, ("Z_v", s), zc.velocity_factor, v, s)
     Z_R = G[zr] if zr in G else once(memo, ("Z_R", s), zc.roughness_factor, Rz, Rz, rho_red, s)

@@ -5,13 +5,14 @@ vectorised chain evaluate the same expressions."""
 from __future__ import annotations
 
 import contextlib
+import functools
 import math
 
 import numpy as np
 
 from ...validate import require_range
 
-__all__ = ["FloatOps", "ArrayOps", "ops_of", "checked", "once"]
+__all__ = ["FloatOps", "ArrayOps", "ops_of", "checked", "once", "per_load_case"]
 
 
 def _any(a):
@@ -122,3 +123,18 @@ def once(memo: dict, key, compute, *args):
     if key not in memo:
         memo[key] = compute(*args)
     return memo[key]
+
+
+def per_load_case(factor, N_L, *args):
+    """``factor(N_L, *args)``, a life factor (Z_NT, Y_NT) of N_L load cycles: once per load case when N_L is one
+    number (the one-design path; the shift solvers and the sizing of a stage vary the design, not the cycles).
+
+    >>> per_load_case(lambda n, k: n * k, 2.0, 3.0), per_load_case(lambda n, k: n * k, 2.0, 3.0)
+    (6.0, 6.0)
+    """
+    return _cached_factor(factor, N_L, *args) if type(N_L) is float else factor(N_L, *args)
+
+
+@functools.lru_cache(maxsize=1024)
+def _cached_factor(factor, N_L, *args):
+    return factor(N_L, *args)

@@ -9,7 +9,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 from .materials import STRENGTH_NEEDED_KINDS
-from .ops import once, ops_of
+from .ops import once, ops_of, per_load_case
 
 __all__ = ["root_side", "root_stress", "nominal_root_stress", "loaded_root_stress", "root_stress_limit", "Y_ST"]
 
@@ -118,7 +118,7 @@ def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
     Y = {kF: G[kF] if kF in G else ff[names[0]],
          kS: G[kS] if kS in G else ff[names[1]],
          kB: G[kB] if kB in G else _rim(rf, s_R, g["h" + i], m, ring),
-         kN: G[kN] if kN in G else 1.0 if N_L is None else rf.life_factor_Y_NT(N_L, kind),
+         kN: G[kN] if kN in G else 1.0 if N_L is None else per_load_case(rf.life_factor_Y_NT, N_L, kind),
          kd: G[kd] if kd in G else _notch(rf, ff["q_s"], mat, out, i, refuse),
          kR: G[kR] if kR in G else _surface_factor(Rz_root, kind),
          kX: G[kX] if kX in G else once(memo, ("Y_X", kind), rf.size_factor_Y_X, m, kind)}
