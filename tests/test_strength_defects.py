@@ -156,3 +156,13 @@ def test_planetary_strength_refuses_the_options_it_sets(option, value):
     s = gd.PlanetarySet.coaxial(2, 20, 31, 82, 3)
     with pytest.raises(gd.GearDesignError, match=option):
         planetary_strength(s, LOAD, "42CrMo4", face_width_mm=25, **{option: value})
+
+
+def test_strength_refuses_root_false_by_name():
+    # was: KeyError 'S_F1' from the result object (found by the strength-scalar review); the contact side alone
+    # is pair_strength's, whose dict then has no root fields
+    pair = gd.GearPair(4, 20, 60, 0.3, 0.1, face_width_mm=40)
+    with pytest.raises(gd.GearDesignError, match="root=False"):
+        pair.strength(LOAD, "42CrMo4", root=False)
+    out = pair_strength(4, 20, 60, 0.3, 0.1, load=LOAD, material1="42CrMo4", face_width_mm=40, root=False)
+    assert "S_F1" not in out and out["S_H1"] > 0

@@ -9,7 +9,9 @@ classes of ISO 1328-1:2013; ISO/TR 6336-30 and these formulas use the 1995 grade
 """
 from __future__ import annotations
 
-from .ops import ops_of
+import functools
+
+from .ops import FloatOps, ops_of
 
 __all__ = ["grade_step", "single_pitch_deviation", "profile_form_deviation", "helix_deviation_total",
            "helix_slope_deviation", "GRADE_RANGE"]
@@ -23,8 +25,16 @@ def grade_step(grade):
     >>> float(grade_step(7))
     2.0
     """
+    if type(grade) is float:
+        return _float_grade_step(grade)
     xp = ops_of(grade)
     return xp.exp2((xp.asarray(grade) - 5.0) / 2.0)
+
+
+@functools.lru_cache(maxsize=32)
+def _float_grade_step(grade: float) -> float:
+    """:func:`grade_step` of one grade given as a Python float (once per grade: the four deviations share it)."""
+    return FloatOps.exp2((grade - 5.0) / 2.0)
 
 
 def single_pitch_deviation(m_n_mm, d_mm, grade):

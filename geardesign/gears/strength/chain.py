@@ -4,17 +4,20 @@ designs in one call; and the one-pair path that returns a :class:`StrengthResult
 """
 from __future__ import annotations
 
+import functools
 import inspect
 import math
+import operator
 from types import SimpleNamespace
 
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import broadcast_inputs, one_number, require_bool, require_range
+from ...validate import broadcast_inputs, require_bool, require_range
 from ..geometry import (DESIGNS_MAX, mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry,
                         validate_inputs)
-from ..mesh import Mesh, section_constants
+from ..inputs import M_RANGE_MM, X_ABS_MAX
+from ..mesh import Z_MAX, Z_MIN, Mesh, section_constants
 from ..rack import STANDARD_RACK, BasicRack
 from . import accuracy as acc
 from . import contact as zc
@@ -24,7 +27,8 @@ from .blocks import BLOCK, batch_shape, in_blocks
 from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
-from .ops import ArrayOps, FloatOps, checked, once
+from .ops import ArrayOps, FloatOps, checked, once, per_load_case
+from .options import validate_options
 from .result import StrengthResult, from_chain
 from .root_chain import root_side
 
@@ -45,13 +49,21 @@ STRENGTH_FIELDS = ("S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigm
 CHAIN_GEOMETRY_FIELDS = ("a_w", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", "df1", "df2", "eps_alpha", "p_b")
 _GEOMETRY = list(CHAIN_GEOMETRY_FIELDS)
 _SMALL = 64   # designs: up to this many, the pair-wide fields are filled arrays instead of broadcast views
+_PITTING_KEYS = {i: tuple(k + i for k in ("Z_NT", "Z_L", "Z_v", "Z_R", "Z_W")) for i in "12"}   # per gear
+# factors of the materials, the rack and the options alone (numbers on either path): each computed once for all calls
+_elasticity_factor = functools.lru_cache(maxsize=256)(zc.elasticity_factor)
+_basic_rack_factor = functools.lru_cache(maxsize=256)(kf.basic_rack_factor)
+_tip_relief_running_in = functools.lru_cache(maxsize=256)(kf.tip_relief_running_in)
+_lubricant_factor = functools.lru_cache(maxsize=256)(zc.lubricant_factor)
 
 
-class _Given:
-    """The factors given by the caller, and which of them were used."""
+class _Given(dict):
+    """The factors given by the caller, by name, and which of them were used (read). A step of the chain takes a
+    factor as ``G[name] if name in G else <its formula>``: nothing is computed for a given factor, and the usual
+    case (nothing given) costs one look-up."""
 
     def __init__(self, factors):
-        self.values = {}
+        super().__init__()
         self.used = set()
         if factors is None:
             return
@@ -62,14 +74,11 @@ class _Given:
                 raise GearDesignError(f"factors: unknown factor {name!r}; allowed: {', '.join(sorted(GIVEN_FACTORS))}")
             # deviations and stiffness (µm, N/(mm·µm)) and Z_E (√MPa) are not dimensionless factors near 1
             lo, hi = (0.0, 1e4) if name[0] in "fFCc" or name == "Z_E" else dflt.FACTOR_RANGE
-            self.values[name] = require_range(f"factors[{name!r}]", value, lo, hi)
+            self[name] = require_range(f"factors[{name!r}]", value, lo, hi)
 
-    def pick(self, name, compute):
-        """The given value of ``name``, or ``compute()`` (a thunk: nothing is computed for a given factor)."""
-        if name in self.values:
-            self.used.add(name)
-            return self.values[name]
-        return compute()
+    def __getitem__(self, name):
+        self.used.add(name)
+        return dict.__getitem__(self, name)
 
 
 def _material(value, name):
@@ -84,7 +93,10 @@ def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening, plain
     """The geometry fields the chain needs, from pair_geometry (validated there), and the section constants."""
     if plain and isinstance(rack, BasicRack):
         # one design in plain numbers: the float path of the geometry (validated as pair_geometry does)
-        validate_inputs(m, z1, z2, x1, x2)
+        if not (type(z1) is int and type(z2) is int and Z_MIN <= z1 <= Z_MAX and Z_MIN <= z2 <= Z_MAX
+                and M_RANGE_MM[0] <= m <= M_RANGE_MM[1] and -X_ABS_MAX <= x1 <= X_ABS_MAX
+                and -X_ABS_MAX <= x2 <= X_ABS_MAX):     # else refused by name there
+            validate_inputs(m, z1, z2, x1, x2)
         mesh = Mesh(z1, z2, rack, tip_shortening, beta_deg, internal)
         geo = mesh_geometry_float(mesh, m, x1, x2, full=False)
         if not (geo["inv_alpha_w"] > 0 and geo["_gap1"] > 0 and geo["_gap2"] > 0 and geo["df1"] > 0
@@ -123,8 +135,8 @@ def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float, xp=ArrayOps) -> 
     NaN (the strength checks of the shift solvers mask them). ``xp`` :class:`FloatOps`: one design's dict of
     :func:`~geardesign.gears.geometry.mesh_geometry_float` (a :class:`~geardesign.GearPair`'s)."""
     with xp.errstate(invalid="ignore"):
-        return _derived({k: xp.asarray(geo[k]) for k in _GEOMETRY}, xp.asarray(geo["_z1"]), xp.asarray(geo["_z2"]),
-                        rack, beta_deg, xp)
+        return _derived(dict(zip(_GEOMETRY, map(xp.asarray, map(geo.__getitem__, _GEOMETRY)))),
+                        xp.asarray(geo["_z1"]), xp.asarray(geo["_z2"]), rack, beta_deg, xp)
 
 
 def _widths(face_width_mm, face_width2_mm, m, xp):
@@ -153,10 +165,10 @@ def _deviations(G, m, g, b, grade, xp):
     circle."""
     d = xp.maximum(g["d1"], g["d2"])
     cos_t = math.cos(math.radians(g["alpha_t_deg"]))
-    return {"f_pb": G.pick("f_pb", lambda: acc.single_pitch_deviation(m, d, grade) * cos_t),
-            "f_falpha": G.pick("f_falpha", lambda: acc.profile_form_deviation(m, d, grade)),
-            "F_beta": G.pick("F_beta", lambda: acc.helix_deviation_total(d, b, grade)),
-            "f_Hbeta": G.pick("f_Hbeta", lambda: acc.helix_slope_deviation(d, b, grade))}
+    return {"f_pb": G["f_pb"] if "f_pb" in G else acc.single_pitch_deviation(m, d, grade) * cos_t,
+            "f_falpha": G["f_falpha"] if "f_falpha" in G else acc.profile_form_deviation(m, d, grade),
+            "F_beta": G["F_beta"] if "F_beta" in G else acc.helix_deviation_total(d, b, grade),
+            "f_Hbeta": G["f_Hbeta"] if "f_Hbeta" in G else acc.helix_slope_deviation(d, b, grade)}
 
 
 def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
@@ -164,11 +176,11 @@ def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
     with ISO 21771's sign (x_ISO = −x of this project's GOST 19274 convention, as its tooth count is −z there)."""
     x2 = -x2 if internal else x2
     c_th = kf.theoretical_single_stiffness(g["z_n1"], g["z_n2"], x1, x2, internal)
-    C_B = kf.basic_rack_factor(rack.ha + rack.c, rack.alpha_deg)
-    c_prime = G.pick("c_prime", lambda: kf.single_stiffness(c_th, C_B, beta_deg, w_A))
+    C_B = _basic_rack_factor(rack.ha + rack.c, rack.alpha_deg)
+    c_prime = G["c_prime"] if "c_prime" in G else kf.single_stiffness(c_th, C_B, beta_deg, w_A)
     c_ga, c_gb = kf.mesh_stiffness(c_prime, g["eps_alpha"])
-    out.update(c_th=c_th, C_B=C_B, c_prime=c_prime, c_gamma_alpha=G.pick("c_gamma_alpha", lambda: c_ga),
-               c_gamma_beta=G.pick("c_gamma_beta", lambda: c_gb))
+    out.update(c_th=c_th, C_B=C_B, c_prime=c_prime, c_gamma_alpha=G["c_gamma_alpha"] if "c_gamma_alpha" in G else c_ga,
+               c_gamma_beta=G["c_gamma_beta"] if "c_gamma_beta" in G else c_gb)
     xs = x1 + x2
     lo, hi = kf.STIFFNESS_X_SUM_RANGE
     out["stiffness_out_of_range"] = (xs < lo) | (xs > hi) | (x1 < x2)
@@ -177,8 +189,8 @@ def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
 def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal, v, xp, out):
     """K_v by method B with the running-in allowance y_α (ISO 6336-1:2019 6.5.9)."""
     y_a = _pair_mean(mats, lambda mat: kf.running_in_alpha(dev["f_pb"], mat.sigma_Hlim_mpa, mat.kind, v))
-    C_a = G.pick("C_a", lambda: tip_relief_um if tip_relief_um is not None else _pair_mean(
-        mats, lambda mat: kf.tip_relief_running_in(mat.sigma_Hlim_mpa)))
+    C_a = (G["C_a"] if "C_a" in G else tip_relief_um if tip_relief_um is not None else
+           _pair_mean(mats, lambda mat: _tip_relief_running_in(mat.sigma_Hlim_mpa)))
     d_m1 = (g["da1"] + g["df1"]) / 2.0
     m_red = kf.reduced_mass(d_m1, g["db1"], g["d2"] / g["d1"], bore[0], bore[1], internal=internal)
     n_E1 = kf.resonance_speed(g["_z1"], out["c_gamma_alpha"], m_red)
@@ -188,7 +200,7 @@ def _dynamic(G, g, mats, n1, w_A, dev, tip_relief_um, bore, eps_gamma, internal,
     B_f = c * xp.maximum(dev["f_falpha"] - y_a, 0.0) / w_A
     B_k = xp.abs(1.0 - out["c_gamma_alpha"] * C_a / w_A)
     N_S = kf.subcritical_limit(w_A)
-    K_v = G.pick("K_v", lambda: kf.dynamic_factor(N, eps_gamma, B_p, B_f, B_k, w_A, N_S=N_S))
+    K_v = G["K_v"] if "K_v" in G else kf.dynamic_factor(N, eps_gamma, B_p, B_f, B_k, w_A, N_S=N_S)
     out.update(y_alpha=y_a, C_a=C_a, m_red=m_red, n_E1=n_E1, N=N, K_v=K_v, K_v_resonance=(N > N_S) & (N < 1.5))
 
 
@@ -204,17 +216,17 @@ def _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft, xp, out):
     w_m = F_t * K_A * out["K_v"] / b
 
     def compute():
-        f_sh = G.pick("f_sh", lambda: kf.shaft_misalignment(w_m, b, g["d1"], **shaft))
-        f_ma = G.pick("f_ma", lambda: dev["f_Hbeta"])
+        f_sh = G["f_sh"] if "f_sh" in G else kf.shaft_misalignment(w_m, b, g["d1"], **shaft)
+        f_ma = G["f_ma"] if "f_ma" in G else dev["f_Hbeta"]
         F_bx = kf.helix_misalignment(f_sh, f_ma, w_m, dev["F_beta"])
         y_b = _pair_mean(mats, lambda mat: kf.running_in_beta(F_bx, mat.sigma_Hlim_mpa, mat.kind, v))
         out.update(f_sh=f_sh, f_ma=f_ma, F_betax=F_bx, y_beta=y_b, F_betay=F_bx - y_b)
         return kf.face_load_factor_H(F_bx - y_b, out["c_gamma_beta"], w_m)
 
-    K_Hb = G.pick("K_Hbeta", compute)
+    K_Hb = G["K_Hbeta"] if "K_Hbeta" in G else compute()
     b_over_h = xp.minimum(b / g["h1"], b / g["h2"])
     N_F = kf.face_load_exponent(b_over_h)
-    out.update(K_Hbeta=K_Hb, N_F=N_F, K_Fbeta=G.pick("K_Fbeta", lambda: kf.face_load_factor_F(K_Hb, N_F)))
+    out.update(K_Hbeta=K_Hb, N_F=N_F, K_Fbeta=G["K_Fbeta"] if "K_Fbeta" in G else kf.face_load_factor_F(K_Hb, N_F))
 
 
 def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, xp, out):
@@ -225,8 +237,8 @@ def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, xp, out):
     if root_method == "C":   # ISO 6336-1:2006 eq. (76): ε_γ/(ε_α Y_ε) with the tip-load method's Y_ε
         hi_F = eps_gamma / (g["eps_alpha"] * (0.25 + 0.75 / out["eps_alpha_n"]))
     hi_H, hi_F = xp.maximum(hi_H, 1.0), xp.maximum(hi_F, 1.0)
-    out.update(K_Halpha=G.pick("K_Halpha", lambda: xp.clip(raw, 1.0, hi_H)),
-               K_Falpha=G.pick("K_Falpha", lambda: xp.clip(raw, 1.0, hi_F)),
+    out.update(K_Halpha=G["K_Halpha"] if "K_Halpha" in G else xp.clip(raw, 1.0, hi_H),
+               K_Falpha=G["K_Falpha"] if "K_Falpha" in G else xp.clip(raw, 1.0, hi_F),
                K_Halpha_limited=raw > hi_H, K_Falpha_limited=raw > hi_F)
 
 
@@ -237,62 +249,40 @@ def _contact(G, g, mats, F_t, b, K_A, K_gamma, v, n12, life_h, nu40, Rz, life_op
     c_w = g["cos_alpha_wt"]
     s_w = xp.sqrt((1.0 - c_w) * (1.0 + c_w))
     t_w = s_w / c_w
-    out["Z_H"] = G.pick("Z_H", lambda: zc.zone_factor_of(math.cos(math.radians(g["beta_b_deg"])),
-                                                         math.cos(math.radians(g["alpha_t_deg"])), c_w, s_w))
-    out["Z_E"] = G.pick("Z_E", lambda: zc.elasticity_factor(m1.E_mpa, m1.nu, m2.E_mpa, m2.nu))
+    out["Z_H"] = G["Z_H"] if "Z_H" in G else zc.zone_factor_of(math.cos(math.radians(g["beta_b_deg"])),
+                                                                 math.cos(math.radians(g["alpha_t_deg"])), c_w, s_w)
+    out["Z_E"] = G["Z_E"] if "Z_E" in G else _elasticity_factor(m1.E_mpa, m1.nu, m2.E_mpa, m2.nu)
     ZB, ZD = zc.single_pair_factors_of(g["db1"], g["db2"], g["da1"], g["da2"], s_w, t_w, g["a_w"], g["eps_alpha"],
                                        out["eps_beta"], g["p_b"], internal, g["_z2"] / g["_z1"])
-    out["Z_B"], out["Z_D"] = G.pick("Z_B", lambda: ZB), G.pick("Z_D", lambda: ZD)
+    out["Z_B"], out["Z_D"] = G["Z_B"] if "Z_B" in G else ZB, G["Z_D"] if "Z_D" in G else ZD
     s0 = zc.nominal_contact_stress(F_t, g["d1"], b, g["d2"] / g["d1"], out["Z_H"], out["Z_E"], out["Z_eps"],
                                    out["Z_beta"], internal)
     K = (K_A, K_gamma, out["K_v"], out["K_Hbeta"], out["K_Halpha"])
     out["sigma_H0"] = s0
     out["sigma_H1"], out["sigma_H2"] = zc.contact_stress(s0, out["Z_B"], *K), zc.contact_stress(s0, out["Z_D"], *K)
     rho_red = zc.relative_radius(g["db1"] / 2.0 * t_w, g["db2"] / 2.0 * t_w, internal)
-    out["Z_X"] = G.pick("Z_X", lambda: zc.SIZE_FACTOR_Z_X)
+    out["Z_X"] = G["Z_X"] if "Z_X" in G else zc.SIZE_FACTOR_Z_X
     hard = (m1.surface_hardened, m2.surface_hardened)
     memo = {}
-    for i, (mat, n) in enumerate(zip(mats, n12), start=1):
-        softer = (not hard[i - 1]) and hard[2 - i]
+    for i, mat, n, softer in zip("12", mats, n12, ((not hard[0]) and hard[1], (not hard[1]) and hard[0])):
         _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, xp, out, memo)
 
 
 def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, xp, out, memo):
     """Z_NT, Z_L, Z_v, Z_R, Z_W, σ_HG and S_H of gear ``i`` (ISO 6336-2:2019 clauses 10-14); Z_L, Z_v, Z_R depend
-    on the gear through σ_Hlim alone (``memo``: computed once for two gears of one σ_Hlim)."""
+    on the gear through σ_Hlim alone (``memo``: computed once for two gears of one σ_Hlim; Z_L, of the material and
+    the lubricant alone, once for all calls)."""
     s = mat.sigma_Hlim_mpa
     N_L = None if life_h is None else load_cycles(n, life_h)
-    out[f"Z_NT{i}"] = G.pick(f"Z_NT{i}", lambda: 1.0 if N_L is None else
-                             contact_life_factor(N_L, mat.kind, **life_opts))
-    out[f"Z_L{i}"] = G.pick(f"Z_L{i}", lambda: once(memo, ("Z_L", s), lambda: zc.lubricant_factor(nu40, s)))
-    out[f"Z_v{i}"] = G.pick(f"Z_v{i}", lambda: once(memo, ("Z_v", s), lambda: zc.velocity_factor(v, s)))
-    out[f"Z_R{i}"] = G.pick(f"Z_R{i}", lambda: once(memo, ("Z_R", s), lambda: zc.roughness_factor(Rz, Rz, rho_red, s)))
-    out[f"Z_W{i}"] = G.pick(f"Z_W{i}", lambda: zc.work_hardening_factor(mat.brinell, softer))
-    out[f"N_L{i}"] = math.nan if N_L is None else N_L
-    out[f"sigma_HG{i}"] = zc.contact_stress_limit(s, out[f"Z_NT{i}"], out[f"Z_L{i}"], out[f"Z_v{i}"],
-                                                  out[f"Z_R{i}"], out[f"Z_W{i}"], out["Z_X"])
-    out[f"S_H{i}"] = zc.contact_safety(out[f"sigma_HG{i}"], out[f"sigma_H{i}"])
-
-
-def _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method):
-    grade = checked("accuracy_grade", accuracy_grade, *acc.GRADE_RANGE)
-    grade = grade if type(grade) is float else float(grade) if np.ndim(grade) == 0 else grade
-    return (grade, _number("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
-            _number("Rz_flank_um", Rz_flank_um, *dflt.RZ_RANGE_UM, unit="µm"),
-            _number("Rz_root_um", Rz_root_um, dflt.RZ_RANGE_UM[0], dflt.RZ_ROOT_MAX_UM, unit="µm"),
-            _number("K_gamma", K_gamma, *dflt.K_GAMMA_RANGE),
-            root_method if root_method in ("B", "C") else _bad_method(root_method))
-
-
-def _number(name, value, lo, hi, **kw):
-    """One number in [lo, hi] as a Python float (refused by name otherwise)."""
-    value = checked(name, value, lo, hi, **kw)
-    return value if type(value) is float else one_number(name, value)
-
-
-def _bad_method(root_method):
-    raise GearDesignError(f"root_method must be 'B' (ISO 6336-3:2019, load at the outer point of single pair "
-                          f"contact) or 'C' (tip load with Y_eps, ISO 6336-3:1996), got {root_method!r}")
+    nt, zl, zv, zr, zw = _PITTING_KEYS[i]
+    Z_NT = G[nt] if nt in G else 1.0 if N_L is None else per_load_case(contact_life_factor, N_L, mat.kind, *life_opts)
+    Z_L = G[zl] if zl in G else _lubricant_factor(nu40, s)
+    Z_v = G[zv] if zv in G else once(memo, ("Z_v", s), zc.velocity_factor, v, s)
+    Z_R = G[zr] if zr in G else once(memo, ("Z_R", s), zc.roughness_factor, Rz, Rz, rho_red, s)
+    Z_W = G[zw] if zw in G else zc.work_hardening_factor(mat.brinell, softer)
+    sigma_HG = zc.contact_stress_limit(s, Z_NT, Z_L, Z_v, Z_R, Z_W, out["Z_X"])
+    out.update({nt: Z_NT, zl: Z_L, zv: Z_v, zr: Z_R, zw: Z_W, "N_L" + i: math.nan if N_L is None else N_L,
+                "sigma_HG" + i: sigma_HG, "S_H" + i: zc.contact_safety(sigma_HG, out["sigma_H" + i])})
 
 
 def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, face_width_mm, face_width2_mm=None,
@@ -332,11 +322,12 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     if not isinstance(load, Load):
         raise GearDesignError(f"load must be a geardesign Load, got {type(load).__name__}")
     mats = (_material(material1, "material1"), _material(material1 if material2 is None else material2, "material2"))
-    grade, nu40, Rz, Rz_root, K_gamma, root_method = _validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um,
-                                                                       K_gamma, root_method)
-    S_Hmin, S_Fmin = _number("S_Hmin", S_Hmin, 0.5, 10.0), _number("S_Fmin", S_Fmin, 0.5, 10.0)
-    cpr, rim_mm, bore_ratio, tip_relief_um = _per_gear_options(cycles_per_rev, rim_mm, bore_ratio, tip_relief_um)
-    if geometry is None and not all(type(v) in (int, float) for v in (m, z1, z2, x1, x2)):
+    raw = (accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method, S_Hmin, S_Fmin, cycles_per_rev, rim_mm,
+           bore_ratio, tip_relief_um)
+    # the defaults (the very objects of the signature) were checked once, at import
+    checked_options = _DEFAULTS_CHECKED if all(map(operator.is_, raw, _DEFAULTS)) else validate_options(*raw)
+    grade, nu40, Rz, Rz_root, K_gamma, root_method, S_min, cpr, rim_mm, bore_ratio, tip_relief_um = checked_options
+    if geometry is None and not _plain_numbers((m, z1, z2, x1, x2)):
         # ragged lists and shapes that do not broadcast refused by name before any work (arrays' values are
         # checked by the geometry, once)
         if not all(isinstance(v, (np.ndarray, int, float, np.number)) for v in (m, z1, z2, x1, x2)):
@@ -348,18 +339,17 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     o = SimpleNamespace(load=load, mats=mats, grade=grade, nu40=nu40, Rz=Rz, Rz_root=Rz_root, K_gamma=K_gamma,
                         root_method=root_method, cpr=cpr, tip_relief_um=tip_relief_um, bore=bore_ratio,
                         shaft=shaft or {},
-                        life={"pitting_permitted": pitting_permitted, "optimum": optimum_life}, rim=rim_mm,
-                        root=require_bool("root", root), S_min=(S_Hmin, S_Fmin), rack=rack, beta_deg=beta_deg,
+                        life=(pitting_permitted, optimum_life), rim=rim_mm,
+                        root=require_bool("root", root), S_min=S_min, rack=rack, beta_deg=beta_deg,
                         internal=internal, tip_shortening=tip_shortening, geometry=geometry)
-    float_geometry = geometry is None or all(type(geometry[k]) is float for k in _GEOMETRY)
+    float_geometry = geometry is None or _FLOAT.issuperset(map(type, map(geometry.__getitem__, _GEOMETRY)))
     o.refuse = float_geometry          # a pair's own (validated) geometry: a design without a root section is refused
     G = _Given(factors)
     designs = (m, z1, z2, x1, x2, face_width_mm, face_width2_mm)
-    if all(type(v) in (int, float) for v in designs[:6]) and (
-            face_width2_mm is None or type(face_width2_mm) in (int, float)) and float_geometry:
+    if _plain_numbers(designs[:6]) and (face_width2_mm is None or _plain_numbers(designs[6:])) and float_geometry:
         # one design in Python floats: the formulas on math, not numpy (see .ops)
         try:
-            return _finite(_evaluate(_floats(designs), G, o, FloatOps), designs, o)
+            return _finite(_evaluate(_floats(designs), G, o, FloatOps), designs, o, plain=True)
         except GearDesignError:
             raise
         except (ArithmeticError, ValueError):   # math's domain error where numpy gives NaN: the array path says why
@@ -373,11 +363,12 @@ _DOMAIN_FACTORS = ("Z_B", "Z_D", "Z_H", "Z_eps", "K_v", "K_Hbeta", "K_Halpha", "
                    "Y_Fa1", "Y_Fa2", "Y_Sa1", "Y_Sa2", "Y_deltarelT1", "Y_deltarelT2")
 
 
-def _finite(out: dict, designs, o) -> dict:
+def _finite(out: dict, designs, o, plain=False) -> dict:
     """``out`` when its stresses and safety factors are finite, or where NaN is asked for (a caller's unvalidated
     geometry); else a refusal that names the design and the first factor out of its formula's domain (an
-    undercut pinion whose inner point of single contact lies below its base circle: Z_B, say)."""
-    if not o.refuse:
+    undercut pinion whose inner point of single contact lies below its base circle: Z_B, say). ``plain``: one
+    design in numbers, whose sum is finite when each is (a NaN or an infinity carries into it)."""
+    if not o.refuse or plain and math.isfinite(sum([out[k] for k in STRENGTH_FIELDS if k in out])):
         return out
     bad = np.zeros(np.shape(out["S_H1"]), dtype=bool)
     for k in STRENGTH_FIELDS:
@@ -395,37 +386,19 @@ def _finite(out: dict, designs, o) -> dict:
                           f"formula's domain: an undercut pinion, a contact below a base circle, an extreme load)")
 
 
-TIP_RELIEF_RANGE_UM = (0.0, 1000.0)    # C_a given: from none to a millimetre (a relief of module size)
+_FLOAT, _INT_FLOAT = frozenset({float}), frozenset({int, float})
 
 
-def _not_bool(name, value):
-    if isinstance(value, (bool, np.bool_)):
-        raise GearDesignError(f"{name} must be a number, got {value!r}")
-    return value
-
-
-def _pair_option(name, value, check) -> tuple:
-    """An option with a value per gear, (gear 1, gear 2): a tuple or list of two, each ``check``-ed."""
-    if not isinstance(value, (tuple, list)) or len(value) != 2:
-        raise GearDesignError(f"{name} must be a pair (gear 1, gear 2), got {value!r}")
-    return tuple(check(_not_bool(name, v)) for v in value)
-
-
-def _per_gear_options(cycles_per_rev, rim_mm, bore_ratio, tip_relief_um) -> tuple:
-    """The options of the two gears (pairs) and the tip relief, checked."""
-    cpr = _pair_option("cycles_per_rev", cycles_per_rev, lambda c: _number("cycles_per_rev", c, 1, 1000))
-    rim_mm = _pair_option("rim_mm", rim_mm, lambda r: None if r is None else _number(
-        "rim_mm", r, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm"))
-    bore_ratio = _pair_option("bore_ratio", bore_ratio, lambda q: _number("bore_ratio", q, 0.0, 1.0, hi_open=True))
-    if tip_relief_um is not None:
-        tip_relief_um = _number("tip_relief_um", _not_bool("tip_relief_um", tip_relief_um), *TIP_RELIEF_RANGE_UM,
-                                unit="µm")
-    return cpr, rim_mm, bore_ratio, tip_relief_um
+def _plain_numbers(values) -> bool:
+    """True when every value is a Python int or float (one design in plain numbers)."""
+    return _INT_FLOAT.issuperset(map(type, values))
 
 
 def check_options(options: dict) -> dict:
     """``options`` for :func:`pair_strength`, refused by name when one is not one of its keywords."""
-    unknown = sorted(set(options) - set(_OPTION_NAMES))
+    if options.keys() <= _OPTION_SET:
+        return options
+    unknown = sorted(set(options) - _OPTION_SET)
     if unknown:
         raise GearDesignError(f"unknown strength option {', '.join(map(repr, unknown))}; allowed: "
                               f"{', '.join(_OPTION_NAMES)}")
@@ -447,7 +420,7 @@ def _evaluate_batch(designs, G, o) -> dict:
     values = [*designs, *(o.geometry[k] for k in geo_keys)]
     shape = batch_shape(values)
     if (shape is None or not BLOCK < math.prod(shape) <= DESIGNS_MAX or np.ndim(o.grade)
-            or any(np.ndim(v) for v in (*G.values.values(), *o.shaft.values()))):
+            or any(np.ndim(v) for v in (*G.values(), *o.shaft.values()))):
         return _finite(_evaluate(designs, G, o, ArrayOps), designs, o)
     finite = [True]
 
@@ -493,8 +466,8 @@ def _evaluate(designs, G, o, xp, finish=True) -> dict:
     _stiffness(G, g, x1, x2, o.rack, beta_deg, w_A, o.internal, out)
     _dynamic(G, g, mats, n1, w_A, dev, o.tip_relief_um, o.bore, eps_gamma, o.internal, v, xp, out)
     _face_load(G, g, mats, F_t, b, K_A, dev, v, o.shaft, xp, out)
-    out["Z_eps"] = G.pick("Z_eps", lambda: zc.contact_ratio_factor(g["eps_alpha"], out["eps_beta"]))
-    out["Z_beta"] = G.pick("Z_beta", lambda: zc.helix_angle_factor(beta_deg))
+    out["Z_eps"] = G["Z_eps"] if "Z_eps" in G else zc.contact_ratio_factor(g["eps_alpha"], out["eps_beta"])
+    out["Z_beta"] = G["Z_beta"] if "Z_beta" in G else zc.helix_angle_factor(beta_deg)
     _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], o.root_method, xp, out)
     _contact(G, g, mats, F_t, b, K_A, o.K_gamma, v, n12, o.load.life_h, o.nu40, o.Rz, o.life, o.internal, xp, out)
     if o.root:
@@ -511,7 +484,8 @@ def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
     T1, n1, n2 = _speeds(load, g["_z1"], g["_z2"])
     F_t = kf.tangential_load(T1, g["d1"])
     eps_beta = b * math.sin(math.radians(beta_deg)) / (math.pi * m) if beta_deg else 0.0   # spur: one number
-    if beta_deg and np.any(np.asarray(eps_beta) > dflt.EPS_BETA_MAX):
+    if beta_deg and (eps_beta > dflt.EPS_BETA_MAX if type(eps_beta) is float else
+                     np.any(np.asarray(eps_beta) > dflt.EPS_BETA_MAX)):
         raise GearDesignError(f"face_width_mm must give an overlap ratio eps_beta = b sin(beta)/(pi m) <= "
                               f"{dflt.EPS_BETA_MAX:g} (ISO 6336's factors are taken up to there), got eps_beta = "
                               f"{float(np.max(eps_beta)):.4g} with beta_deg = {beta_deg:g}")
@@ -526,10 +500,10 @@ def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
 
 def _permissible(out, S_Hmin, S_Fmin) -> dict:
     """The permissible stresses σ_HP = σ_HG/S_Hmin, σ_FP = σ_FG/S_Fmin and the minimum safety factors."""
-    for i in (1, 2):
-        out[f"sigma_HP{i}"] = out[f"sigma_HG{i}"] / S_Hmin
-        if f"sigma_FG{i}" in out:
-            out[f"sigma_FP{i}"] = out[f"sigma_FG{i}"] / S_Fmin
+    for i in "12":
+        out["sigma_HP" + i] = out["sigma_HG" + i] / S_Hmin
+        if "sigma_FG" + i in out:
+            out["sigma_FP" + i] = out["sigma_FG" + i] / S_Fmin
     out["S_Hmin"], out["S_Fmin"] = S_Hmin, S_Fmin
     return out
 
@@ -545,8 +519,11 @@ def _finish(out, shape, G) -> dict:
                 out[k] = np.full(shape, val) if small and val.ndim == 0 else np.broadcast_to(val, shape)
             elif isinstance(val, float):
                 out[k] = np.full(shape, val) if small else np.broadcast_to(np.float64(val), shape)
+    if not G:
+        out["given"] = out["given_unused"] = ()
+        return out
     out["given"] = tuple(sorted(G.used))
-    out["given_unused"] = tuple(sorted(set(G.values) - G.used))   # e.g. f_sh with K_Hbeta given, Y_eps with method B
+    out["given_unused"] = tuple(sorted(set(G) - G.used))   # e.g. f_sh with K_Hbeta given, Y_eps with method B
     return out
 
 
@@ -566,6 +543,9 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
     if material is None:
         raise GearDesignError("material is needed (a geardesign Material or a name such as '42CrMo4')")
     check_options(options)
+    if options.get("root", True) is not True:
+        raise GearDesignError(f"root={options['root']!r}: strength() reports every factor of both sides; the contact "
+                              f"side alone is pair_strength(..., root=False)")
     b = pair.face_width_mm if face_width_mm is None else face_width_mm
     if b is None:
         raise GearDesignError("face_width_mm is needed: give it, or build the GearPair with face_width_mm=")
@@ -580,3 +560,8 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
 # the keywords of pair_strength a caller's options may set (the design and the load case are given apart)
 _OPTION_NAMES = tuple(k for k in inspect.signature(pair_strength).parameters
                       if k not in ("m", "z1", "z2", "x1", "x2", "load", "material1", "material2", "face_width_mm"))
+_OPTION_SET = frozenset(_OPTION_NAMES)
+# the defaults of the options validate_options checks, and their checked values
+_DEFAULTS = tuple(inspect.signature(pair_strength).parameters[k].default
+                  for k in inspect.signature(validate_options).parameters)
+_DEFAULTS_CHECKED = validate_options(*_DEFAULTS)

@@ -5,13 +5,14 @@ vectorised chain evaluate the same expressions."""
 from __future__ import annotations
 
 import contextlib
+import functools
 import math
 
 import numpy as np
 
 from ...validate import require_range
 
-__all__ = ["FloatOps", "ArrayOps", "ops_of", "checked", "once"]
+__all__ = ["FloatOps", "ArrayOps", "ops_of", "checked", "once", "per_load_case"]
 
 
 def _any(a):
@@ -43,6 +44,9 @@ class ArrayOps:
         return np.full(np.shape(a), v)
 
 
+_NO_CONTEXT = contextlib.nullcontext()     # reusable: it holds nothing
+
+
 def _where(cond, a, b):
     return a if cond else b
 
@@ -64,7 +68,7 @@ class FloatOps:
     radians, degrees, abs, maximum, minimum = math.radians, math.degrees, abs, max, min
     where, interp = staticmethod(_where), staticmethod(_interp)
     any = all = staticmethod(bool)
-    errstate = staticmethod(lambda **kw: contextlib.nullcontext())    # math raises instead of warning
+    errstate = staticmethod(lambda **kw: _NO_CONTEXT)    # math raises instead of warning
 
     @staticmethod
     def clip(v, lo, hi):
@@ -108,8 +112,8 @@ def checked(name, value, lo, hi, *, lo_open=False, hi_open=False, unit=""):
     return require_range(name, value, lo, hi, lo_open=lo_open, hi_open=hi_open, unit=unit)
 
 
-def once(memo: dict, key, compute):
-    """``compute()`` the first time ``key`` is asked for, the stored value after: a factor both gears of a pair
+def once(memo: dict, key, compute, *args):
+    """``compute(*args)`` the first time ``key`` is asked for, the stored value after: a factor both gears of a pair
     share (one material on both: Z_L, Z_v, Z_R by σ_Hlim, Y_RrelT, Y_X by kind).
 
     >>> memo = {}
@@ -117,5 +121,20 @@ def once(memo: dict, key, compute):
     (1.05, 1.05)
     """
     if key not in memo:
-        memo[key] = compute()
+        memo[key] = compute(*args)
     return memo[key]
+
+
+def per_load_case(factor, N_L, *args):
+    """``factor(N_L, *args)``, a life factor (Z_NT, Y_NT) of N_L load cycles: once per load case when N_L is one
+    number (the one-design path; the shift solvers and the sizing of a stage vary the design, not the cycles).
+
+    >>> per_load_case(lambda n, k: n * k, 2.0, 3.0), per_load_case(lambda n, k: n * k, 2.0, 3.0)
+    (6.0, 6.0)
+    """
+    return _cached_factor(factor, N_L, *args) if type(N_L) is float else factor(N_L, *args)
+
+
+@functools.lru_cache(maxsize=1024)
+def _cached_factor(factor, N_L, *args):
+    return factor(N_L, *args)

@@ -200,6 +200,11 @@ def from_chain(out: dict, title: str = "") -> StrengthResult:
         notes.append(f"{name} given, not computed")
     for name in out.get("given_unused", ()):
         notes.append(f"{name} given but not used (another given factor or the root method makes it unneeded)")
-    return StrengthResult(**{k: _scalar(out[k]) for k in _STRESSES}, S_Hmin=float(out["S_Hmin"]),
-                          S_Fmin=float(out["S_Fmin"]), _chain=out, given=tuple(out.get("given", ())),
-                          notes=tuple(notes), title=title)
+    fields = {k: v if type(v := out[k]) is float else _scalar(v) for k in _STRESSES}
+    fields.update(S_Hmin=float(out["S_Hmin"]), S_Fmin=float(out["S_Fmin"]), _chain=out,
+                  given=tuple(out.get("given", ())), notes=tuple(notes), title=title)
+    # every field set at once: the frozen dataclass's __init__ sets them one by one through object.__setattr__,
+    # which costs as much again as the rest of this function (there is no __post_init__ to skip)
+    result = object.__new__(StrengthResult)
+    result.__dict__.update(fields)
+    return result

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import functools
 import math
+import operator
 
 import numpy as np
 
@@ -62,7 +63,7 @@ def stress_correction_factor(s_Fn, h_Fe, rho_F):
     >>> round(float(stress_correction_factor(2.0, 1.0, 0.5)), 4)    # L = 2, q_s = 2: 1.46·2^(1/2.36)
     1.9584
     """
-    if not all(type(v) is float for v in (s_Fn, h_Fe, rho_F)):
+    if not (type(s_Fn) is float and type(h_Fe) is float and type(rho_F) is float):
         s_Fn, h_Fe, rho_F = (np.asarray(v, dtype=float) for v in (s_Fn, h_Fe, rho_F))
     L = s_Fn / h_Fe
     q_s = s_Fn / (2.0 * rho_F)
@@ -73,9 +74,19 @@ def _inv(a, ops):
     return ops.tan(a) - a
 
 
-def _plain(v, lo, hi) -> bool:
-    """True for one Python int or float inside [lo, hi]: the common case, checked without numpy."""
-    return (type(v) is float or type(v) is int) and lo <= v <= hi
+_NUMBER_TYPES = frozenset({int, float})
+
+
+def _plain(values) -> bool:
+    """True for Python ints or floats each inside its range of :data:`_PLAIN_RANGES` (x, da_over_mn, eps_alpha,
+    beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star): the common case, checked without numpy."""
+    return (_NUMBER_TYPES.issuperset(map(type, values)) and all(map(operator.le, _PLAIN_LO, values))
+            and all(map(operator.le, values, _PLAIN_HI)))
+
+
+_PLAIN_RANGES = (X_RANGE, (1e-300, 1e300), EPS_ALPHA_RANGE, BETA_RANGE_DEG, ALPHA_N_RANGE_DEG, HFP_RANGE, RHOFP_RANGE,
+                 SPR_RANGE)
+_PLAIN_LO, _PLAIN_HI = tuple(r[0] for r in _PLAIN_RANGES), tuple(r[1] for r in _PLAIN_RANGES)
 
 
 def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star,
@@ -87,10 +98,7 @@ def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, 
     if type(internal) is not bool:
         internal = require_bool("internal", internal)
     if ((type(z) is int or type(z) is float and z.is_integer()) and Z_RANGE[0] <= z <= Z_RANGE[1]
-            and _plain(x, *X_RANGE) and _plain(da_over_mn, 1e-300, 1e300) and _plain(eps_alpha, *EPS_ALPHA_RANGE)
-            and _plain(beta_deg, *BETA_RANGE_DEG)
-            and _plain(alpha_n_deg, *ALPHA_N_RANGE_DEG) and _plain(hfp_star, *HFP_RANGE)
-            and _plain(rhofp_star, *RHOFP_RANGE) and _plain(spr_star, *SPR_RANGE)):
+            and _plain((x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star))):
         return (float(z), float(x), float(da_over_mn), float(eps_alpha), abs(float(beta_deg)),
                 math.radians(alpha_n_deg), float(hfp_star), float(rhofp_star), float(spr_star), internal, method,
                 _FloatOps)
@@ -140,6 +148,11 @@ def _first(values, bad) -> str:
     return repr(values[tuple(np.argwhere(bad)[0])].item()) if values.ndim else repr(values.item())
 
 
+_PI_6 = math.pi / 6.0
+_TAN_PI_6 = math.tan(_PI_6)
+_SEC2_PI_6 = 1.0 + _TAN_PI_6 * _TAN_PI_6
+
+
 def _theta(G, H, z_n, x, ops, refuse=True):
     """Root of θ = (2G/z_n) tan θ − H (radians; ISO 6336-3:2019 clause 6.2), Newton from θ = π/6, and tan θ.
 
@@ -147,15 +160,14 @@ def _theta(G, H, z_n, x, ops, refuse=True):
     Newton finds here; where there is none (a shift so large that G = ρ_fP* − h_fP* + x approaches
     z_n cos²θ/2) the design is refused."""
     k = 2.0 * G / z_n
+    tan, maximum, minimum = ops.tan, ops.maximum, ops.minimum     # θ clipped to [-1.2, 1.2] by these two
     # the first step from π/6 takes its tan and cos as constants (1/cos²θ = 1 + tan²θ throughout)
-    t6 = math.tan(math.pi / 6.0)
-    th = ops.clip(math.pi / 6.0 - (math.pi / 6.0 - k * t6 + H) / ops.maximum(1.0 - k * (1.0 + t6 * t6), 0.05),
-                  -1.2, 1.2)
+    th = minimum(maximum(_PI_6 - (_PI_6 - k * _TAN_PI_6 + H) / maximum(1.0 - k * _SEC2_PI_6, 0.05), -1.2), 1.2)
     for i in range(_NEWTON_STEPS):
-        t = ops.tan(th)
-        slope = ops.maximum(1.0 - k * (1.0 + t * t), 0.05)    # > 1 wherever G < 0, the usual case
+        t = tan(th)
+        slope = maximum(1.0 - k * (1.0 + t * t), 0.05)    # > 1 wherever G < 0, the usual case
         step = (th - k * t + H) / slope
-        th = ops.clip(th - step, -1.2, 1.2)
+        th = minimum(maximum(th - step, -1.2), 1.2)
         # Newton's error after a step is ~(f''/2f')·step² with |f''/2f'| < 1 here: a step below 1e-9 leaves
         # ~1e-18 (three steps after the first, for z_n 8 to 400 and x -0.5 to 1.2: no check before the third);
         # the residual below checks it

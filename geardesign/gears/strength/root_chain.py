@@ -3,15 +3,18 @@ limit and the safety factor of each gear, from the form factors of :mod:`.root` 
 :mod:`.root_factors`."""
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from ...errors import GearDesignError
 from .materials import STRENGTH_NEEDED_KINDS
-from .ops import once, ops_of
+from .ops import once, ops_of, per_load_case
 
 __all__ = ["root_side", "root_stress", "nominal_root_stress", "loaded_root_stress", "root_stress_limit", "Y_ST"]
 
 Y_ST = 2.0   # stress correction factor of the reference test gears (ISO 6336-3:2019 clause 9)
+_ROOT_KEYS = {i: tuple(k + i for k in ("Y_B", "Y_NT", "Y_deltarelT", "Y_RrelT", "Y_X")) for i in "12"}   # per gear
 
 
 def root_stress(F_t, b, m_n, form, K_A, K_gamma, K_v, K_Fbeta, K_Falpha):
@@ -69,57 +72,60 @@ def _root_modules():
     return _ROOT_MODULES
 
 
+@functools.lru_cache(maxsize=256)
+def _surface_factor(Rz_root_um, kind):
+    """Y_RrelT of a root roughness and a material kind (both numbers on either path): once for all calls."""
+    return _ROOT_MODULES[1].relative_surface_factor_Y_RrelT(Rz_root_um, kind)
+
+
 def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_gamma, grade, Rz_root, n12, life_h,
               method, out, rim=(None, None), xp=None, refuse=True):
     """Fill ``out`` with the root factors, σ_F1,2, σ_FG1,2 and S_F1,2 of both gears (``refuse`` False: NaN
     for a design without a root section, see :func:`~.root.root_form_factors`)."""
     mods = _root_modules()
     if mods is None:
-        for i in (1, 2):
-            out[f"sigma_F{i}"] = out[f"sigma_FG{i}"] = out[f"S_F{i}"] = np.full_like(F_t, np.nan)
+        for i in "12":
+            out["sigma_F" + i] = out["sigma_FG" + i] = out["S_F" + i] = np.full_like(F_t, np.nan)
         out["root_unavailable"] = True
         return
     root, rf = mods
     names = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")
-    out["Y_beta"] = G.pick("Y_beta", lambda: rf.helix_factor_Y_beta(out["eps_beta"], beta_deg))
+    out["Y_beta"] = G["Y_beta"] if "Y_beta" in G else rf.helix_factor_Y_beta(out["eps_beta"], beta_deg)
     if method == "B":
-        out["Y_DT"] = G.pick("Y_DT", lambda: rf.deep_tooth_factor_Y_DT(out["eps_alpha_n"], grade))
-        extra = out["Y_DT"]
+        out["Y_DT"] = extra = G["Y_DT"] if "Y_DT" in G else rf.deep_tooth_factor_Y_DT(out["eps_alpha_n"], grade)
     else:
-        out["Y_eps"] = G.pick("Y_eps", lambda: rf.contact_ratio_factor_Y_eps(out["eps_alpha_n"]))
-        extra = out["Y_eps"]
+        out["Y_eps"] = extra = G["Y_eps"] if "Y_eps" in G else rf.contact_ratio_factor_Y_eps(out["eps_alpha_n"])
     gear = (G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp or ops_of(F_t), {}, refuse)
-    for i, (mat, x, b, n, s_R) in enumerate(zip(mats, xs, widths, n12, rim), start=1):
-        _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h)
-        YF, YS, YB = out[f"{names[0]}{i}"], out[f"{names[1]}{i}"], out[f"Y_B{i}"]
-        s0 = out[f"sigma_F0{i}"] = nominal_root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra)
-        out[f"sigma_F{i}"] = loaded_root_stress(s0, K_A, K_gamma, out["K_v"], out["K_Fbeta"], out["K_Falpha"])
-        out[f"sigma_FG{i}"] = root_stress_limit(mat.sigma_Flim_mpa, out[f"Y_NT{i}"], out[f"Y_deltarelT{i}"],
-                                                out[f"Y_RrelT{i}"], out[f"Y_X{i}"], rf.Y_ST)
-        out[f"S_F{i}"] = out[f"sigma_FG{i}"] / out[f"sigma_F{i}"]
+    for i, mat, x, b, n, s_R in zip("12", mats, xs, widths, n12, rim):
+        YF, YS, YB, Y_NT, Y_delta, Y_R, Y_X = _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h)
+        s0 = nominal_root_stress(F_t, b, m, YF * YS * out["Y_beta"] * YB * extra)
+        sF = loaded_root_stress(s0, K_A, K_gamma, out["K_v"], out["K_Fbeta"], out["K_Falpha"])
+        sFG = root_stress_limit(mat.sigma_Flim_mpa, Y_NT, Y_delta, Y_R, Y_X, rf.Y_ST)
+        out.update({"sigma_F0" + i: s0, "sigma_F" + i: sF, "sigma_FG" + i: sFG, "S_F" + i: sFG / sF})
 
 
 def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
-    """Y_F, Y_S (or Y_Fa, Y_Sa), Y_B, Y_NT, Y_δrelT, Y_RrelT, Y_X and q_s of gear ``i`` into the chain's dict."""
+    """Y_F, Y_S (or Y_Fa, Y_Sa), Y_B, Y_NT, Y_δrelT, Y_RrelT, Y_X and q_s of gear ``i`` into the chain's dict; the
+    factors, in that order."""
     G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp, memo, refuse = gear
-    ring = internal and i == 2
-    ff = root.form_factors(g[f"_z{i}"], x, g[f"da{i}"] / m, g["eps_alpha"], beta_deg, rack.alpha_deg, rack.ha + rack.c,
+    ring = internal and i == "2"
+    ff = root.form_factors(g["_z" + i], x, g["da" + i] / m, g["eps_alpha"], beta_deg, rack.alpha_deg, rack.ha + rack.c,
                            rack.rho_f, 0.0, ring, method, keys=(names[0], names[1], "q_s", "in_range"), refuse=refuse)
     kind = mat.kind
     N_L = None if life_h is None else 60.0 * n * life_h
     in_range = ff["in_range"]
-    out.update({f"{names[0]}{i}": G.pick(f"{names[0]}{i}", lambda: ff[names[0]]),
-                f"{names[1]}{i}": G.pick(f"{names[1]}{i}", lambda: ff[names[1]]),
-                f"Y_B{i}": G.pick(f"Y_B{i}", lambda: _rim(rf, s_R, g[f"h{i}"], m, ring)),
-                f"Y_NT{i}": G.pick(f"Y_NT{i}", lambda: 1.0 if N_L is None else
-                                   rf.life_factor_Y_NT(N_L, kind)),
-                f"Y_deltarelT{i}": G.pick(f"Y_deltarelT{i}", lambda: _notch(rf, ff["q_s"], mat, out, i, refuse)),
-                f"Y_RrelT{i}": G.pick(f"Y_RrelT{i}", lambda: once(memo, ("Y_RrelT", kind), lambda:
-                                      rf.relative_surface_factor_Y_RrelT(Rz_root, kind))),
-                f"Y_X{i}": G.pick(f"Y_X{i}", lambda: once(memo, ("Y_X", kind), lambda: rf.size_factor_Y_X(m, kind))),
-                f"q_s{i}": ff["q_s"],
-                f"root_out_of_range{i}": (not in_range) if type(in_range) is bool else
-                ~np.asarray(in_range, dtype=bool)})
+    kF, kS, kB, kN, kd, kR, kX = names[0] + i, names[1] + i, *_ROOT_KEYS[i]
+    Y = {kF: G[kF] if kF in G else ff[names[0]],
+         kS: G[kS] if kS in G else ff[names[1]],
+         kB: G[kB] if kB in G else _rim(rf, s_R, g["h" + i], m, ring),
+         kN: G[kN] if kN in G else 1.0 if N_L is None else per_load_case(rf.life_factor_Y_NT, N_L, kind),
+         kd: G[kd] if kd in G else _notch(rf, ff["q_s"], mat, out, i, refuse),
+         kR: G[kR] if kR in G else _surface_factor(Rz_root, kind),
+         kX: G[kX] if kX in G else once(memo, ("Y_X", kind), rf.size_factor_Y_X, m, kind)}
+    out.update(Y)
+    out["q_s" + i] = ff["q_s"]
+    out["root_out_of_range" + i] = (not in_range) if type(in_range) is bool else ~np.asarray(in_range, dtype=bool)
+    return tuple(Y.values())
 
 
 def _rim(rf, s_R_mm, h_t, m, internal):
@@ -150,7 +156,7 @@ def _notch(rf, q_s, mat, out, i, refuse=True):
                               "sensitivity Y_deltarelT (ISO 6336-3:2019 clause 13): give it to material() or Material()")
     lo, hi = _SLIP_RANGE[mat.kind]
     limit = min(max(mat.yield_mpa, lo), hi)
-    out[f"strength_clipped{i}"] = limit != mat.yield_mpa
+    out["strength_clipped" + i] = limit != mat.yield_mpa
     return rf.relative_notch_sensitivity_Y_delta_relT(q_s, mat.kind, limit_mpa=limit)
 
 

@@ -10,6 +10,7 @@ print, not re-derived.
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -172,6 +173,12 @@ def _slip_layer(kind: str, limit_mpa):
     return ops_of(s).interp(s, *table)
 
 
+@functools.lru_cache(maxsize=256)
+def _material_slip_layer(kind: str, limit_mpa):
+    """:func:`_slip_layer` of one material's strength (a number or None): once per material."""
+    return _slip_layer(kind, limit_mpa)
+
+
 # Static relative notch sensitivity (ISO 6336-3:2019, clause 13, method B, N_L <= the static limit): linear in Y_S
 # where the kind has no strength term: (a, b) of a Y_S + b.
 _STATIC_LINEAR = {"Eh": (0.44, 0.12), "IF": (0.44, 0.12), "NT": (0.20, 0.60), "NV(nitr)": (0.20, 0.60),
@@ -221,7 +228,8 @@ def relative_notch_sensitivity_Y_delta_relT(q_s, material_kind, *, limit_mpa=Non
         k = c * (s0 / require_positive("limit_mpa", limit_mpa, "MPa")) ** 0.25
         return (1.0 + k * (ys - 1.0)) / (1.0 + k)
     qs = checked("q_s", q_s, *NOTCH_Q_S_RANGE)
-    rho = _slip_layer(kind, limit_mpa)
+    rho = (_material_slip_layer(kind, limit_mpa) if limit_mpa is None or type(limit_mpa) is float else
+           _slip_layer(kind, limit_mpa))
     xp = ops_of(qs, rho)
     return (1.0 + xp.sqrt(rho * (1.0 + 2.0 * qs) / 5.0)) / (1.0 + xp.sqrt(rho * _CHI_T))
 

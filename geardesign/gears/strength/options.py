@@ -1,0 +1,66 @@
+"""The options of :func:`~geardesign.gears.strength.chain.pair_strength` that are numbers, or a pair of them (one per
+gear), checked by name against their ranges before any work."""
+from __future__ import annotations
+
+import numpy as np
+
+from ...errors import GearDesignError
+from ...validate import one_number
+from . import accuracy as acc
+from . import defaults as dflt
+from .ops import checked
+
+__all__ = ["validate_options", "TIP_RELIEF_RANGE_UM"]
+
+TIP_RELIEF_RANGE_UM = (0.0, 1000.0)    # C_a given: from none to a millimetre (a relief of module size)
+
+
+def _not_bool(name, value):
+    if isinstance(value, (bool, np.bool_)):
+        raise GearDesignError(f"{name} must be a number, got {value!r}")
+    return value
+
+
+def _pair_option(name, value, check) -> tuple:
+    """An option with a value per gear, (gear 1, gear 2): a tuple or list of two, each ``check``-ed."""
+    if not isinstance(value, (tuple, list)) or len(value) != 2:
+        raise GearDesignError(f"{name} must be a pair (gear 1, gear 2), got {value!r}")
+    return tuple(check(_not_bool(name, v)) for v in value)
+
+
+def _per_gear_options(cycles_per_rev, rim_mm, bore_ratio, tip_relief_um) -> tuple:
+    """The options of the two gears (pairs) and the tip relief, checked."""
+    cpr = _pair_option("cycles_per_rev", cycles_per_rev, lambda c: _number("cycles_per_rev", c, 1, 1000))
+    rim_mm = _pair_option("rim_mm", rim_mm, lambda r: None if r is None else _number(
+        "rim_mm", r, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm"))
+    bore_ratio = _pair_option("bore_ratio", bore_ratio, lambda q: _number("bore_ratio", q, 0.0, 1.0, hi_open=True))
+    if tip_relief_um is not None:
+        tip_relief_um = _number("tip_relief_um", _not_bool("tip_relief_um", tip_relief_um), *TIP_RELIEF_RANGE_UM,
+                                unit="µm")
+    return cpr, rim_mm, bore_ratio, tip_relief_um
+
+
+def validate_options(accuracy_grade, nu40, Rz_flank_um, Rz_root_um, K_gamma, root_method, S_Hmin, S_Fmin,
+                      cycles_per_rev, rim_mm, bore_ratio, tip_relief_um) -> tuple:
+    """The options of :func:`pair_strength` that are numbers (or pairs of them), checked: (grade, nu40, Rz, Rz_root,
+    K_gamma, root_method, (S_Hmin, S_Fmin), cycles_per_rev, rim_mm, bore_ratio, tip_relief_um)."""
+    grade = checked("accuracy_grade", accuracy_grade, *acc.GRADE_RANGE)
+    grade = grade if type(grade) is float else float(grade) if np.ndim(grade) == 0 else grade
+    return (grade, _number("nu40", nu40, *dflt.NU40_RANGE, unit="mm²/s"),
+            _number("Rz_flank_um", Rz_flank_um, *dflt.RZ_RANGE_UM, unit="µm"),
+            _number("Rz_root_um", Rz_root_um, dflt.RZ_RANGE_UM[0], dflt.RZ_ROOT_MAX_UM, unit="µm"),
+            _number("K_gamma", K_gamma, *dflt.K_GAMMA_RANGE),
+            root_method if root_method in ("B", "C") else _bad_method(root_method),
+            (_number("S_Hmin", S_Hmin, 0.5, 10.0), _number("S_Fmin", S_Fmin, 0.5, 10.0)),
+            *_per_gear_options(cycles_per_rev, rim_mm, bore_ratio, tip_relief_um))
+
+
+def _number(name, value, lo, hi, **kw):
+    """One number in [lo, hi] as a Python float (refused by name otherwise)."""
+    value = checked(name, value, lo, hi, **kw)
+    return value if type(value) is float else one_number(name, value)
+
+
+def _bad_method(root_method):
+    raise GearDesignError(f"root_method must be 'B' (ISO 6336-3:2019, load at the outer point of single pair "
+                          f"contact) or 'C' (tip load with Y_eps, ISO 6336-3:1996), got {root_method!r}")
