@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..limits import BATCH_BLOCK
 from ..stages import EFFICIENCY_RANGE, ChainStage, disc_mass_kg, stage_area_mm2
 from .base import Batch, ToothedKind
 
@@ -43,6 +44,13 @@ def _batch(stage: ChainStage, rows, z1, z2, n1_rpm, torque_nm) -> dict:
                 a=np.asarray(c["center_distance_mm"]))
 
 
+def _joined(parts: list) -> dict:
+    """The dicts of :func:`_batch` over consecutive blocks of designs, as one."""
+    out = {k: np.concatenate([p[k] for p in parts]) for k in parts[0] if k != "margins"}
+    out["margins"] = {k: np.concatenate([p["margins"][k] for p in parts]) for k in parts[0]["margins"]}
+    return out
+
+
 class ChainKind(ToothedKind):
     name = "chain"
     stage_class = ChainStage
@@ -54,7 +62,10 @@ class ChainKind(ToothedKind):
 
     def batch(self, stage, designs) -> Batch:
         z1, z2 = designs.option["z1"], designs.option["z2"]
-        ch = _batch(stage, designs.rows, z1, z2, designs.n_in_rpm, designs.torque_in_nm)
+        cols = (designs.rows, z1, z2, designs.n_in_rpm, designs.torque_in_nm)
+        parts = [_batch(stage, *(c[s:s + BATCH_BLOCK] for c in cols))
+                 for s in range(0, max(len(designs.n_in_rpm), 1), BATCH_BLOCK)]
+        ch = parts[0] if len(parts) == 1 else _joined(parts)
         return Batch(margins=ch["margins"], size_mm2=ch["size"], mass_kg=ch["mass"], info=dict(ch, z1=z1, z2=z2))
 
     def design_columns(self, stage, option: dict, info, c: int) -> dict:
