@@ -49,7 +49,8 @@ STRENGTH_FIELDS = ("S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigm
 CHAIN_GEOMETRY_FIELDS = ("a_w", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", "df1", "df2", "eps_alpha", "p_b")
 _GEOMETRY = list(CHAIN_GEOMETRY_FIELDS)
 _SMALL = 64   # designs: up to this many, the pair-wide fields are filled arrays instead of broadcast views
-_PITTING_KEYS = {i: tuple(k + i for k in ("Z_NT", "Z_L", "Z_v", "Z_R", "Z_W")) for i in "12"}   # per gear
+_PITTING_KEYS = {i: tuple(k + i for k in ("Z_NT", "Z_L", "Z_v", "Z_R", "Z_W", "N_L", "sigma_HG", "S_H", "sigma_H"))
+                 for i in "12"}   # per gear
 # factors of the materials, the rack and the options alone (numbers on either path): each computed once for all calls
 _elasticity_factor = functools.lru_cache(maxsize=256)(zc.elasticity_factor)
 _basic_rack_factor = functools.lru_cache(maxsize=256)(kf.basic_rack_factor)
@@ -74,7 +75,7 @@ class _Given(dict):
                 raise GearDesignError(f"factors: unknown factor {name!r}; allowed: {', '.join(sorted(GIVEN_FACTORS))}")
             # deviations and stiffness (µm, N/(mm·µm)) and Z_E (√MPa) are not dimensionless factors near 1
             lo, hi = (0.0, 1e4) if name[0] in "fFCc" or name == "Z_E" else dflt.FACTOR_RANGE
-            self[name] = require_range(f"factors[{name!r}]", value, lo, hi)
+            self[name] = checked(f"factors[{name!r}]", value, lo, hi)
 
     def __getitem__(self, name):
         self.used.add(name)
@@ -274,15 +275,15 @@ def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, 
     the lubricant alone, once for all calls)."""
     s = mat.sigma_Hlim_mpa
     N_L = None if life_h is None else load_cycles(n, life_h)
-    nt, zl, zv, zr, zw = _PITTING_KEYS[i]
+    nt, zl, zv, zr, zw, nl, hg, sh, sigma_H = _PITTING_KEYS[i]
     Z_NT = G[nt] if nt in G else 1.0 if N_L is None else per_load_case(contact_life_factor, N_L, mat.kind, *life_opts)
     Z_L = G[zl] if zl in G else _lubricant_factor(nu40, s)
     Z_v = G[zv] if zv in G else once(memo, ("Z_v", s), zc.velocity_factor, v, s)
     Z_R = G[zr] if zr in G else once(memo, ("Z_R", s), zc.roughness_factor, Rz, Rz, rho_red, s)
     Z_W = G[zw] if zw in G else zc.work_hardening_factor(mat.brinell, softer)
     sigma_HG = zc.contact_stress_limit(s, Z_NT, Z_L, Z_v, Z_R, Z_W, out["Z_X"])
-    out.update({nt: Z_NT, zl: Z_L, zv: Z_v, zr: Z_R, zw: Z_W, "N_L" + i: math.nan if N_L is None else N_L,
-                "sigma_HG" + i: sigma_HG, "S_H" + i: zc.contact_safety(sigma_HG, out["sigma_H" + i])})
+    out.update({nt: Z_NT, zl: Z_L, zv: Z_v, zr: Z_R, zw: Z_W, nl: math.nan if N_L is None else N_L,
+                hg: sigma_HG, sh: zc.contact_safety(sigma_HG, out[sigma_H])})
 
 
 def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, face_width_mm, face_width2_mm=None,
