@@ -137,7 +137,7 @@ def _rim(rf, s_R_mm, h_t, m, internal):
     if s_R_mm is None:
         return 1.0
     ratio, least = (s_R_mm / m, 1.75) if internal else (s_R_mm / h_t, 0.5)
-    if np.any(np.asarray(ratio) <= least):
+    if ratio <= least if type(ratio) is float else np.any(np.asarray(ratio) <= least):
         base = "m_n" if internal else "h_t"
         raise GearDesignError(f"rim_mm must be > {least:g}·{base} = {float(np.max(least * (m if internal else h_t))):.4g} "
                               f"mm for ISO 6336-3's rim factor Y_B, got {s_R_mm!r}")
