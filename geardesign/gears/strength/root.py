@@ -79,7 +79,8 @@ _NUMBER_TYPES = frozenset({int, float})
 
 def _plain(values) -> bool:
     """True for Python ints or floats each inside its range of :data:`_PLAIN_RANGES` (x, da_over_mn, eps_alpha,
-    beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star): the common case, checked without numpy."""
+    beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star; the first four alone when four are given): the common
+    case, checked without numpy."""
     return (_NUMBER_TYPES.issuperset(map(type, values)) and all(map(operator.le, _PLAIN_LO, values))
             and all(map(operator.le, values, _PLAIN_HI)))
 
@@ -87,6 +88,25 @@ def _plain(values) -> bool:
 _PLAIN_RANGES = (X_RANGE, (1e-300, 1e300), EPS_ALPHA_RANGE, BETA_RANGE_DEG, ALPHA_N_RANGE_DEG, HFP_RANGE, RHOFP_RANGE,
                  SPR_RANGE)
 _PLAIN_LO, _PLAIN_HI = tuple(r[0] for r in _PLAIN_RANGES), tuple(r[1] for r in _PLAIN_RANGES)
+_FLOAT_TYPE = frozenset({float})
+
+
+@functools.lru_cache(maxsize=64, typed=True)   # typed: internal=1 is refused, not taken for True
+def _float_rack(alpha_n_deg, hfp_star, rhofp_star, spr_star, internal, method):
+    """The rack tuple of :func:`_factors` for the rack's floats, ``internal`` and ``method`` of the one-design path,
+    checked once per rack as :func:`_check_inputs` and :func:`form_factors` check them; None where one is refused
+    (their checks then name it)."""
+    values = (alpha_n_deg, hfp_star, rhofp_star, spr_star)
+    if not (type(internal) is bool and type(method) is str and method in METHODS
+            and all(lo <= v <= hi for v, (lo, hi) in zip(values, _PLAIN_RANGES[4:]))
+            and not (internal and rhofp_star <= 0.0)):
+        return None
+    alpha_n = math.radians(alpha_n_deg)
+    try:
+        E = _rack_fillet_centre(alpha_n, hfp_star, rhofp_star, spr_star)
+    except GearDesignError:
+        return None
+    return alpha_n, hfp_star, rhofp_star, E, internal, method
 
 
 def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star,
@@ -322,6 +342,12 @@ def form_factors(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, r
                  keys=None, refuse=True) -> dict:
     """:func:`root_form_factors` (positional, the same checks) with Python floats for one design given in plain
     numbers; ``keys``: only these fields are kept of an array call (the factor chain's); ``refuse`` as there."""
+    if (_FLOAT_TYPE.issuperset(map(type, (alpha_n_deg, hfp_star, rhofp_star, spr_star)))
+            and (rack := _float_rack(alpha_n_deg, hfp_star, rhofp_star, spr_star, internal, method)) is not None
+            and (type(z) is int or type(z) is float and z.is_integer()) and Z_RANGE[0] <= z <= Z_RANGE[1]
+            and _plain((x, da_over_mn, eps_alpha, beta_deg))):
+        # one design and a rack checked before (the factor chain's two gears): the checks of the design alone
+        return _factors(float(z), float(x), float(da_over_mn), float(eps_alpha), abs(float(beta_deg)), rack, _FloatOps)
     (z, x, da, eps, beta, alpha_n, hfp, rho, spr, internal, method,
      ops) = _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star,
                           internal, method)
