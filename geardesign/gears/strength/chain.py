@@ -99,7 +99,7 @@ def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening, plain
                 and -X_ABS_MAX <= x2 <= X_ABS_MAX):     # else refused by name there
             validate_inputs(m, z1, z2, x1, x2)
         mesh = Mesh(z1, z2, rack, tip_shortening, beta_deg, internal)
-        geo = mesh_geometry_float(mesh, m, x1, x2, full=False)
+        geo = mesh_geometry_float(mesh, m, x1, x2, full=False, tips=False)
         if not (geo["inv_alpha_w"] > 0 and geo["_gap1"] > 0 and geo["_gap2"] > 0 and geo["df1"] > 0
                 and geo["df2"] > 0):
             validate_geometry(mesh_geometry(mesh, m, x1, x2, full=False), mesh)
@@ -369,7 +369,7 @@ def _finite(out: dict, designs, o, plain=False) -> dict:
     geometry); else a refusal that names the design and the first factor out of its formula's domain (an
     undercut pinion whose inner point of single contact lies below its base circle: Z_B, say). ``plain``: one
     design in numbers, whose sum is finite when each is (a NaN or an infinity carries into it)."""
-    if not o.refuse or plain and math.isfinite(sum([out[k] for k in STRENGTH_FIELDS if k in out])):
+    if not o.refuse or plain and math.isfinite(sum(_PLAIN_STRESSES[o.root](out))):
         return out
     bad = np.zeros(np.shape(out["S_H1"]), dtype=bool)
     for k in STRENGTH_FIELDS:
@@ -388,6 +388,9 @@ def _finite(out: dict, designs, o, plain=False) -> dict:
 
 
 _FLOAT, _INT_FLOAT = frozenset({float}), frozenset({int, float})
+# the stresses and safety factors of one design, with the root side (root=True) and without it
+_PLAIN_STRESSES = {True: operator.itemgetter(*STRENGTH_FIELDS),
+                   False: operator.itemgetter(*(k for k in STRENGTH_FIELDS if "_F" not in k))}
 
 
 def _plain_numbers(values) -> bool:
