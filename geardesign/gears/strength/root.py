@@ -373,7 +373,8 @@ def form_factors(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, r
 def _factors(z, x, da, eps, beta, rack, ops, refuse=True) -> dict:
     """Every field of :func:`root_form_factors` for validated inputs (arrays of one shape, or floats)."""
     alpha_n, hfp, rho, E, internal, method = rack
-    if type(beta) is np.ndarray and beta.ndim == 0 and beta == 0.0:
+    if (type(beta) is float or type(beta) is np.ndarray and beta.ndim == 0) and beta == 0.0:
+        cos_beta = 1.0
         z_n, eps_n = z * 1.0, eps * 1.0               # spur: the divisions by cos β = cos²β_b = 1 below (new arrays:
         #                                                 the result's z_n is not the caller's z)
         da_n = z_n + da - z
