@@ -328,7 +328,9 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     # the defaults (the very objects of the signature) were checked once, at import
     checked_options = _DEFAULTS_CHECKED if all(map(operator.is_, raw, _DEFAULTS)) else validate_options(*raw)
     grade, nu40, Rz, Rz_root, K_gamma, root_method, S_min, cpr, rim_mm, bore_ratio, tip_relief_um = checked_options
-    if geometry is None and not _plain_numbers((m, z1, z2, x1, x2)):
+    designs = (m, z1, z2, x1, x2, face_width_mm, face_width2_mm)
+    plain = _plain_numbers(designs[:6]) and (face_width2_mm is None or _plain_numbers(designs[6:]))
+    if geometry is None and not plain and not _plain_numbers(designs[:5]):
         # ragged lists and shapes that do not broadcast refused by name before any work (arrays' values are
         # checked by the geometry, once)
         if not all(isinstance(v, (np.ndarray, int, float, np.number)) for v in (m, z1, z2, x1, x2)):
@@ -346,8 +348,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     float_geometry = geometry is None or _FLOAT.issuperset(map(type, map(geometry.__getitem__, _GEOMETRY)))
     o.refuse = float_geometry          # a pair's own (validated) geometry: a design without a root section is refused
     G = _Given(factors)
-    designs = (m, z1, z2, x1, x2, face_width_mm, face_width2_mm)
-    if _plain_numbers(designs[:6]) and (face_width2_mm is None or _plain_numbers(designs[6:])) and float_geometry:
+    if plain and float_geometry:
         # one design in Python floats: the formulas on math, not numpy (see .ops)
         try:
             return _finite(_evaluate(_floats(designs), G, o, FloatOps), designs, o, plain=True)
