@@ -13,7 +13,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import broadcast_inputs, require_bool, require_range
+from ...validate import broadcast_inputs, require_bool
 from ..geometry import (DESIGNS_MAX, mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry,
                         validate_inputs)
 from ..inputs import M_RANGE_MM, X_ABS_MAX
