@@ -123,13 +123,15 @@ def mesh_geometry(mesh: Mesh, m, x1, x2, full: bool = True, then=None, contact: 
         return {k: (v.reshape(v.shape[:-1] + shape) if np.ndim(v) else v) for k, v in out.items()}
 
 
-def mesh_geometry_float(mesh: Mesh, m: float, x1: float, x2: float, full: bool = True) -> dict:
+def mesh_geometry_float(mesh: Mesh, m: float, x1: float, x2: float, full: bool = True, tips: bool = True) -> dict:
     """:func:`mesh_geometry` of one design in Python floats: the same fields, ~20× faster than a
-    one-element array call (designs that do not exist give NaN here too)."""
+    one-element array call (designs that do not exist give NaN here too); ``tips`` as there."""
     try:
-        return _formulas(mesh, float(m), float(mesh.z1), float(mesh.z2), float(x1), float(x2), _FLOAT_OPS, full)
+        return _formulas(mesh, float(m), float(mesh.z1), float(mesh.z2), float(x1), float(x2), _FLOAT_OPS, full,
+                         True, tips)
     except (ZeroDivisionError, OverflowError):
-        return {k: v if k == "_mesh" else float(v) for k, v in mesh_geometry(mesh, m, x1, x2, full).items()}
+        return {k: v if k == "_mesh" else float(v)
+                for k, v in mesh_geometry(mesh, m, x1, x2, full, tips=tips).items()}
 
 
 def _operating_angle(D, ta, inv_a, ops):

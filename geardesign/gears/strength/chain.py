@@ -13,7 +13,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import broadcast_inputs, require_bool, require_range
+from ...validate import broadcast_inputs, require_bool
 from ..geometry import (DESIGNS_MAX, mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry,
                         validate_inputs)
 from ..inputs import M_RANGE_MM, X_ABS_MAX
@@ -49,7 +49,8 @@ STRENGTH_FIELDS = ("S_H1", "S_H2", "S_F1", "S_F2", "sigma_H0", "sigma_H1", "sigm
 CHAIN_GEOMETRY_FIELDS = ("a_w", "d1", "d2", "db1", "db2", "dw1", "dw2", "da1", "da2", "df1", "df2", "eps_alpha", "p_b")
 _GEOMETRY = list(CHAIN_GEOMETRY_FIELDS)
 _SMALL = 64   # designs: up to this many, the pair-wide fields are filled arrays instead of broadcast views
-_PITTING_KEYS = {i: tuple(k + i for k in ("Z_NT", "Z_L", "Z_v", "Z_R", "Z_W")) for i in "12"}   # per gear
+_PITTING_KEYS = {i: tuple(k + i for k in ("Z_NT", "Z_L", "Z_v", "Z_R", "Z_W", "N_L", "sigma_HG", "S_H", "sigma_H"))
+                 for i in "12"}   # per gear
 # factors of the materials, the rack and the options alone (numbers on either path): each computed once for all calls
 _elasticity_factor = functools.lru_cache(maxsize=256)(zc.elasticity_factor)
 _basic_rack_factor = functools.lru_cache(maxsize=256)(kf.basic_rack_factor)
@@ -74,7 +75,7 @@ class _Given(dict):
                 raise GearDesignError(f"factors: unknown factor {name!r}; allowed: {', '.join(sorted(GIVEN_FACTORS))}")
             # deviations and stiffness (µm, N/(mm·µm)) and Z_E (√MPa) are not dimensionless factors near 1
             lo, hi = (0.0, 1e4) if name[0] in "fFCc" or name == "Z_E" else dflt.FACTOR_RANGE
-            self[name] = require_range(f"factors[{name!r}]", value, lo, hi)
+            self[name] = checked(f"factors[{name!r}]", value, lo, hi)
 
     def __getitem__(self, name):
         self.used.add(name)
@@ -98,7 +99,7 @@ def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening, plain
                 and -X_ABS_MAX <= x2 <= X_ABS_MAX):     # else refused by name there
             validate_inputs(m, z1, z2, x1, x2)
         mesh = Mesh(z1, z2, rack, tip_shortening, beta_deg, internal)
-        geo = mesh_geometry_float(mesh, m, x1, x2, full=False)
+        geo = mesh_geometry_float(mesh, m, x1, x2, full=False, tips=False)
         if not (geo["inv_alpha_w"] > 0 and geo["_gap1"] > 0 and geo["_gap2"] > 0 and geo["df1"] > 0
                 and geo["df2"] > 0):
             validate_geometry(mesh_geometry(mesh, m, x1, x2, full=False), mesh)
@@ -274,15 +275,15 @@ def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, 
     the lubricant alone, once for all calls)."""
     s = mat.sigma_Hlim_mpa
     N_L = None if life_h is None else load_cycles(n, life_h)
-    nt, zl, zv, zr, zw = _PITTING_KEYS[i]
+    nt, zl, zv, zr, zw, nl, hg, sh, sigma_H = _PITTING_KEYS[i]
     Z_NT = G[nt] if nt in G else 1.0 if N_L is None else per_load_case(contact_life_factor, N_L, mat.kind, *life_opts)
     Z_L = G[zl] if zl in G else _lubricant_factor(nu40, s)
     Z_v = G[zv] if zv in G else once(memo, ("Z_v", s), zc.velocity_factor, v, s)
     Z_R = G[zr] if zr in G else once(memo, ("Z_R", s), zc.roughness_factor, Rz, Rz, rho_red, s)
     Z_W = G[zw] if zw in G else zc.work_hardening_factor(mat.brinell, softer)
     sigma_HG = zc.contact_stress_limit(s, Z_NT, Z_L, Z_v, Z_R, Z_W, out["Z_X"])
-    out.update({nt: Z_NT, zl: Z_L, zv: Z_v, zr: Z_R, zw: Z_W, "N_L" + i: math.nan if N_L is None else N_L,
-                "sigma_HG" + i: sigma_HG, "S_H" + i: zc.contact_safety(sigma_HG, out["sigma_H" + i])})
+    out.update({nt: Z_NT, zl: Z_L, zv: Z_v, zr: Z_R, zw: Z_W, nl: math.nan if N_L is None else N_L,
+                hg: sigma_HG, sh: zc.contact_safety(sigma_HG, out[sigma_H])})
 
 
 def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, face_width_mm, face_width2_mm=None,
@@ -327,7 +328,9 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     # the defaults (the very objects of the signature) were checked once, at import
     checked_options = _DEFAULTS_CHECKED if all(map(operator.is_, raw, _DEFAULTS)) else validate_options(*raw)
     grade, nu40, Rz, Rz_root, K_gamma, root_method, S_min, cpr, rim_mm, bore_ratio, tip_relief_um = checked_options
-    if geometry is None and not _plain_numbers((m, z1, z2, x1, x2)):
+    designs = (m, z1, z2, x1, x2, face_width_mm, face_width2_mm)
+    plain = _plain_numbers(designs[:6]) and (face_width2_mm is None or _plain_numbers(designs[6:]))
+    if geometry is None and not plain and not _plain_numbers(designs[:5]):
         # ragged lists and shapes that do not broadcast refused by name before any work (arrays' values are
         # checked by the geometry, once)
         if not all(isinstance(v, (np.ndarray, int, float, np.number)) for v in (m, z1, z2, x1, x2)):
@@ -345,8 +348,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     float_geometry = geometry is None or _FLOAT.issuperset(map(type, map(geometry.__getitem__, _GEOMETRY)))
     o.refuse = float_geometry          # a pair's own (validated) geometry: a design without a root section is refused
     G = _Given(factors)
-    designs = (m, z1, z2, x1, x2, face_width_mm, face_width2_mm)
-    if _plain_numbers(designs[:6]) and (face_width2_mm is None or _plain_numbers(designs[6:])) and float_geometry:
+    if plain and float_geometry:
         # one design in Python floats: the formulas on math, not numpy (see .ops)
         try:
             return _finite(_evaluate(_floats(designs), G, o, FloatOps), designs, o, plain=True)
@@ -368,7 +370,7 @@ def _finite(out: dict, designs, o, plain=False) -> dict:
     geometry); else a refusal that names the design and the first factor out of its formula's domain (an
     undercut pinion whose inner point of single contact lies below its base circle: Z_B, say). ``plain``: one
     design in numbers, whose sum is finite when each is (a NaN or an infinity carries into it)."""
-    if not o.refuse or plain and math.isfinite(sum([out[k] for k in STRENGTH_FIELDS if k in out])):
+    if not o.refuse or plain and math.isfinite(sum(_PLAIN_STRESSES[o.root](out))):
         return out
     bad = np.zeros(np.shape(out["S_H1"]), dtype=bool)
     for k in STRENGTH_FIELDS:
@@ -387,6 +389,9 @@ def _finite(out: dict, designs, o, plain=False) -> dict:
 
 
 _FLOAT, _INT_FLOAT = frozenset({float}), frozenset({int, float})
+# the stresses and safety factors of one design, with the root side (root=True) and without it
+_PLAIN_STRESSES = {True: operator.itemgetter(*STRENGTH_FIELDS),
+                   False: operator.itemgetter(*(k for k in STRENGTH_FIELDS if "_F" not in k))}
 
 
 def _plain_numbers(values) -> bool:

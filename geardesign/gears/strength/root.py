@@ -79,7 +79,8 @@ _NUMBER_TYPES = frozenset({int, float})
 
 def _plain(values) -> bool:
     """True for Python ints or floats each inside its range of :data:`_PLAIN_RANGES` (x, da_over_mn, eps_alpha,
-    beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star): the common case, checked without numpy."""
+    beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star; the first four alone when four are given): the common
+    case, checked without numpy."""
     return (_NUMBER_TYPES.issuperset(map(type, values)) and all(map(operator.le, _PLAIN_LO, values))
             and all(map(operator.le, values, _PLAIN_HI)))
 
@@ -87,6 +88,30 @@ def _plain(values) -> bool:
 _PLAIN_RANGES = (X_RANGE, (1e-300, 1e300), EPS_ALPHA_RANGE, BETA_RANGE_DEG, ALPHA_N_RANGE_DEG, HFP_RANGE, RHOFP_RANGE,
                  SPR_RANGE)
 _PLAIN_LO, _PLAIN_HI = tuple(r[0] for r in _PLAIN_RANGES), tuple(r[1] for r in _PLAIN_RANGES)
+_FLOAT_TYPE = frozenset({float})
+
+
+@functools.lru_cache(maxsize=64, typed=True)   # typed: internal=1 is refused, not taken for True
+def _float_rack(alpha_n_deg, hfp_star, rhofp_star, spr_star, internal, method):
+    """The rack tuple of :func:`_factors` for the rack's floats, ``internal`` and ``method`` of the one-design path,
+    checked once per rack as :func:`_check_inputs` and :func:`form_factors` check them; None where one is refused
+    (their checks then name it)."""
+    values = (alpha_n_deg, hfp_star, rhofp_star, spr_star)
+    if not (type(internal) is bool and type(method) is str and method in METHODS
+            and all(lo <= v <= hi for v, (lo, hi) in zip(values, _PLAIN_RANGES[4:]))
+            and not (internal and rhofp_star <= 0.0)):
+        return None
+    try:
+        return _rack(math.radians(alpha_n_deg), hfp_star, rhofp_star, spr_star, internal, method)
+    except GearDesignError:
+        return None
+
+
+def _rack(alpha_n, hfp, rho, spr, internal, method) -> tuple:
+    """The rack tuple of :func:`_factors`: α_n, h_fP*, ρ_fP*, E/m_n, ``internal``, ``method`` and the rack's cos α_n,
+    tan α_n, inv α_n (the virtual gears' constants, once per call of :func:`form_factors`, not per formula)."""
+    return (alpha_n, hfp, rho, _rack_fillet_centre(alpha_n, hfp, rho, spr), internal, method, math.cos(alpha_n),
+            math.tan(alpha_n), _inv(alpha_n, math))
 
 
 def _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star,
@@ -148,6 +173,7 @@ def _first(values, bad) -> str:
     return repr(values[tuple(np.argwhere(bad)[0])].item()) if values.ndim else repr(values.item())
 
 
+_SQRT_3 = math.sqrt(3.0)
 _PI_6 = math.pi / 6.0
 _TAN_PI_6 = math.tan(_PI_6)
 _SEC2_PI_6 = 1.0 + _TAN_PI_6 * _TAN_PI_6
@@ -186,16 +212,16 @@ def _theta(G, H, z_n, x, ops, refuse=True):
     return th, t
 
 
-def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops, refuse=True):
+def _load_point(z_n, da_n, cos_n, eps_n, internal, method, ops, refuse=True):
     """d_en/m_n (method B, outer point of single pair contact) or d_an/m_n (method C, the tip) of the
     virtual gear; ISO 6336-3:2019 clause 6.2: d_en = 2 √{[√((d_an/2)² − (d_bn/2)²) ∓ π m_n cos α_n
     (ε_αn − 1)]² + (d_bn/2)²} (− for an external gear; + for an internal one, whose point of single
     pair contact lies outward of its tip)."""
-    d_bn = z_n * math.cos(alpha_n)
+    d_bn = z_n * cos_n
     if method == "C":
         return da_n
     rho_a = ops.sqrt((da_n - d_bn) * (da_n + d_bn)) / 2.0
-    p_bn = math.pi * math.cos(alpha_n)
+    p_bn = math.pi * cos_n
     rho_e = rho_a + p_bn * (eps_n - 1.0) if internal else rho_a - p_bn * (eps_n - 1.0)
     if ops.any(bad := rho_e <= 0.0) and not refuse:
         rho_e = np.where(rho_e > 0.0, rho_e, np.nan)
@@ -209,7 +235,7 @@ def _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops, refuse=True):
     return 2.0 * ops.sqrt(rho_e * rho_e + d_bn * d_bn / 4.0)
 
 
-def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
+def _external_section(z_n, x, d_e, rack, ops, refuse=True):
     """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) and cos α_Fen of an external gear: ISO 6336-3:2019 clause 6.2,
     G = ρ_fP/m_n − h_fP/m_n + x, H = 2/z_n (π/2 − E/m_n) − π/3, θ = (2G/z_n) tan θ − H,
     s_Fn/m_n = z_n sin(π/3 − θ) + √3 (G/cos θ − ρ_fP/m_n),
@@ -221,19 +247,20 @@ def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
     inv α_e with tan α_e = √(d_e² − d_bn²)/d_bn, cos θ, sin θ, cos(π/3 − θ), sin(π/3 − θ) from tan θ and
     cos α_Fen = 1/√(1 + tan² α_Fen) (|α_Fen| < π/2; numpy's tan is ~5x faster than its cos): fewer trigonometric
     functions, the same values to a few ulp."""
+    _, hfp, rho, E, _, _, cos_n, tan_n, inv_n = rack
     G = rho - hfp + x
     H = 2.0 / z_n * (math.pi / 2.0 - E) - math.pi / 3.0
     th, t = _theta(G, H, z_n, x, ops, refuse)
     c = 1.0 / ops.sqrt(1.0 + t * t)              # |θ| < π/2: cos θ > 0
     s = t * c
-    r3 = math.sqrt(3.0)
+    r3 = _SQRT_3
     G_c, G2 = G / c, 2.0 * G
     s_Fn = z_n * (0.5 * r3 * c - 0.5 * s) + r3 * (G_c - rho)
     rho_F = rho + G2 * G / (c * (z_n * c * c - G2))
-    d_bn = z_n * math.cos(alpha_n)
+    d_bn = z_n * cos_n
     alpha_e = ops.arccos(d_bn / d_e)
     tan_e = ops.sqrt((d_e - d_bn) * (d_e + d_bn)) / d_bn
-    gamma_e = (math.pi / 2.0 + 2.0 * x * math.tan(alpha_n)) / z_n + _inv(alpha_n, math) - (tan_e - alpha_e)
+    gamma_e = (math.pi / 2.0 + 2.0 * x * tan_n) / z_n + inv_n - (tan_e - alpha_e)
     alpha_F = alpha_e - gamma_e
     t_F = ops.tan(alpha_F)
     cos_F = 1.0 / ops.sqrt(1.0 + t_F * t_F)
@@ -245,7 +272,7 @@ def _external_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
 _TANGENT_INTERNAL = math.pi / 3.0
 
 
-def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
+def _internal_section(z_n, x, d_e, rack, ops, refuse=True):
     """s_Fn, ρ_F, h_Fe, α_Fen, θ (lengths /m_n) and cos α_Fen of an internal gear treated, as ISO 6336-3:2006
     does, as its basic rack (z_n → ∞) with the 60° tangent.
 
@@ -257,13 +284,13 @@ def _internal_section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse=True):
     h_e = d_e/2 − z_n/2 − x, where the half tooth is π/4 + h_e tan α_n, and meets the centre line
     (π/4 + h_e tan α_n) tan α_n deeper: h_Fe is the rest of the way to the chord. θ is reported as
     the limit of the external equation for z_n → ∞ with this tangent, π/2 − 60°."""
-    t = math.tan(alpha_n)
+    alpha_n, hfp, rho, E, _, _, cos_n, t, _ = rack
     depth_chord = hfp - rho + rho * math.sin(_TANGENT_INTERNAL)
     h_e = (d_e - z_n) / 2.0 - x
     h_Fe = depth_chord - h_e - (math.pi / 4.0 + h_e * t) * t
     s_Fn = math.pi - 2.0 * E - 2.0 * rho * math.cos(_TANGENT_INTERNAL)
     return (ops.like(h_Fe, s_Fn), ops.like(h_Fe, rho), h_Fe, ops.like(h_Fe, alpha_n),
-            ops.like(h_Fe, math.pi / 2.0 - _TANGENT_INTERNAL), math.cos(alpha_n))
+            ops.like(h_Fe, math.pi / 2.0 - _TANGENT_INTERNAL), cos_n)
 
 
 def root_form_factors(z, x, da_over_mn, *, eps_alpha, beta_deg=0.0, alpha_n_deg=20.0, hfp_star=1.25,
@@ -322,13 +349,19 @@ def form_factors(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, r
                  keys=None, refuse=True) -> dict:
     """:func:`root_form_factors` (positional, the same checks) with Python floats for one design given in plain
     numbers; ``keys``: only these fields are kept of an array call (the factor chain's); ``refuse`` as there."""
+    if (_FLOAT_TYPE.issuperset(map(type, (alpha_n_deg, hfp_star, rhofp_star, spr_star)))
+            and (rack := _float_rack(alpha_n_deg, hfp_star, rhofp_star, spr_star, internal, method)) is not None
+            and (type(z) is int or type(z) is float and z.is_integer()) and Z_RANGE[0] <= z <= Z_RANGE[1]
+            and _plain((x, da_over_mn, eps_alpha, beta_deg))):
+        # one design and a rack checked before (the factor chain's two gears): the checks of the design alone
+        return _factors(float(z), float(x), float(da_over_mn), float(eps_alpha), abs(float(beta_deg)), rack, _FloatOps)
     (z, x, da, eps, beta, alpha_n, hfp, rho, spr, internal, method,
      ops) = _check_inputs(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, rhofp_star, spr_star,
                           internal, method)
     if internal and rho <= 0.0:
         raise GearDesignError("rhofp_star must be > 0 for an internal gear (its fillet radius is "
                               f"rho_fP itself), got {rho!r}")
-    rack = (alpha_n, hfp, rho, _rack_fillet_centre(alpha_n, hfp, rho, spr), internal, method)
+    rack = _rack(alpha_n, hfp, rho, spr, internal, method)
     if ops is _FloatOps or z.size <= BLOCK:
         return _factors(z, x, da, eps, beta, rack, ops, refuse or ops is _FloatOps)
     # block by block: ~60 temporaries of BLOCK doubles stay in the caches (as geometry.mesh_geometry does),
@@ -346,33 +379,34 @@ def form_factors(z, x, da_over_mn, eps_alpha, beta_deg, alpha_n_deg, hfp_star, r
 
 def _factors(z, x, da, eps, beta, rack, ops, refuse=True) -> dict:
     """Every field of :func:`root_form_factors` for validated inputs (arrays of one shape, or floats)."""
-    alpha_n, hfp, rho, E, internal, method = rack
-    if type(beta) is np.ndarray and beta.ndim == 0 and beta == 0.0:
+    alpha_n, _, _, _, internal, method, cos_n, _, _ = rack
+    if (type(beta) is float or type(beta) is np.ndarray and beta.ndim == 0) and beta == 0.0:
+        cos_beta = 1.0
         z_n, eps_n = z * 1.0, eps * 1.0               # spur: the divisions by cos β = cos²β_b = 1 below (new arrays:
         #                                                 the result's z_n is not the caller's z)
         da_n = z_n + da - z
     else:
         cos_beta = ops.cos(beta * (math.pi / 180.0))
-        sin_bb = ops.sin(beta * (math.pi / 180.0)) * math.cos(alpha_n)
+        sin_bb = ops.sin(beta * (math.pi / 180.0)) * cos_n
         cos_bb2 = 1.0 - sin_bb * sin_bb               # cos²β_b
         z_n = z / (cos_bb2 * cos_beta)
         eps_n = eps / cos_bb2
         da_n = z_n + da - z / cos_beta                # d_an = d_n + d_a − d
-    if ops.any(bad := da_n <= z_n * math.cos(alpha_n)) and not refuse:
+    if ops.any(bad := da_n <= z_n * cos_n) and not refuse:
         da_n = np.where(bad, np.nan, da_n)
     elif ops.any(bad):
-        least = z / cos_beta - z_n * (1.0 - math.cos(alpha_n))      # d_an = d_bn
+        least = z / cos_beta - z_n * (1.0 - cos_n)      # d_an = d_bn
         raise GearDesignError(
             f"da_over_mn must be > {float(_first(least, bad)):.6g} (the tip above the base circle: d_an > d_bn of "
             f"the virtual gear), got {_first(da, bad)}")
-    d_e = _load_point(z_n, da_n, alpha_n, eps_n, internal, method, ops, refuse)
+    d_e = _load_point(z_n, da_n, cos_n, eps_n, internal, method, ops, refuse)
     section = _internal_section if internal else _external_section
-    s_Fn, rho_F, h_Fe, alpha_F, th, cos_F = section(z_n, x, d_e, alpha_n, E, hfp, rho, ops, refuse)
+    s_Fn, rho_F, h_Fe, alpha_F, th, cos_F = section(z_n, x, d_e, rack, ops, refuse)
     if ops.any(bad := (s_Fn <= 0.0) | (h_Fe <= 0.0)) and not refuse:
         s_Fn = np.where(bad, np.nan, s_Fn)
     elif ops.any(bad):
         raise GearDesignError(f"x gives no root section (s_Fn or h_Fe <= 0), got x={_first(x, bad)}")
-    Y_F = 6.0 * h_Fe * cos_F / (s_Fn * s_Fn * math.cos(alpha_n))
+    Y_F = 6.0 * h_Fe * cos_F / (s_Fn * s_Fn * cos_n)
     Y_S = stress_correction_factor(s_Fn, h_Fe, rho_F)
     q_s = s_Fn / (2.0 * rho_F)
     names = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")

@@ -14,7 +14,10 @@ from .ops import once, ops_of, per_load_case
 __all__ = ["root_side", "root_stress", "nominal_root_stress", "loaded_root_stress", "root_stress_limit", "Y_ST"]
 
 Y_ST = 2.0   # stress correction factor of the reference test gears (ISO 6336-3:2019 clause 9)
-_ROOT_KEYS = {i: tuple(k + i for k in ("Y_B", "Y_NT", "Y_deltarelT", "Y_RrelT", "Y_X")) for i in "12"}   # per gear
+# the chain's keys of each gear's root factors per method: Y_F, Y_S (or Y_Fa, Y_Sa), Y_B, Y_NT, Y_δrelT, Y_RrelT, Y_X
+_ROOT_KEYS = {(method, i): tuple(k + i for k in (*names, "Y_B", "Y_NT", "Y_deltarelT", "Y_RrelT", "Y_X"))
+              for method, names in (("B", ("Y_F", "Y_S")), ("C", ("Y_Fa", "Y_Sa"))) for i in "12"}
+_FORM_KEYS = {"B": ("Y_F", "Y_S", "q_s", "in_range"), "C": ("Y_Fa", "Y_Sa", "q_s", "in_range")}   # of form_factors
 
 
 def root_stress(F_t, b, m_n, form, K_A, K_gamma, K_v, K_Fbeta, K_Falpha):
@@ -89,7 +92,7 @@ def root_side(G, g, mats, F_t, widths, m, xs, rack, beta_deg, internal, K_A, K_g
         out["root_unavailable"] = True
         return
     root, rf = mods
-    names = ("Y_F", "Y_S") if method == "B" else ("Y_Fa", "Y_Sa")
+    names = _FORM_KEYS[method]      # Y_F, Y_S (or Y_Fa, Y_Sa) first
     out["Y_beta"] = G["Y_beta"] if "Y_beta" in G else rf.helix_factor_Y_beta(out["eps_beta"], beta_deg)
     if method == "B":
         out["Y_DT"] = extra = G["Y_DT"] if "Y_DT" in G else rf.deep_tooth_factor_Y_DT(out["eps_alpha_n"], grade)
@@ -110,11 +113,11 @@ def _gear_root(gear, i, mat, x, b, n, s_R, Rz_root, life_h):
     G, g, F_t, m, rack, beta_deg, internal, method, names, out, root, rf, xp, memo, refuse = gear
     ring = internal and i == "2"
     ff = root.form_factors(g["_z" + i], x, g["da" + i] / m, g["eps_alpha"], beta_deg, rack.alpha_deg, rack.ha + rack.c,
-                           rack.rho_f, 0.0, ring, method, keys=(names[0], names[1], "q_s", "in_range"), refuse=refuse)
+                           rack.rho_f, 0.0, ring, method, names, refuse)
     kind = mat.kind
     N_L = None if life_h is None else 60.0 * n * life_h
     in_range = ff["in_range"]
-    kF, kS, kB, kN, kd, kR, kX = names[0] + i, names[1] + i, *_ROOT_KEYS[i]
+    kF, kS, kB, kN, kd, kR, kX = _ROOT_KEYS[method, i]
     Y = {kF: G[kF] if kF in G else ff[names[0]],
          kS: G[kS] if kS in G else ff[names[1]],
          kB: G[kB] if kB in G else _rim(rf, s_R, g["h" + i], m, ring),
@@ -134,7 +137,7 @@ def _rim(rf, s_R_mm, h_t, m, internal):
     if s_R_mm is None:
         return 1.0
     ratio, least = (s_R_mm / m, 1.75) if internal else (s_R_mm / h_t, 0.5)
-    if np.any(np.asarray(ratio) <= least):
+    if ratio <= least if type(ratio) is float else np.any(np.asarray(ratio) <= least):
         base = "m_n" if internal else "h_t"
         raise GearDesignError(f"rim_mm must be > {least:g}·{base} = {float(np.max(least * (m if internal else h_t))):.4g} "
                               f"mm for ISO 6336-3's rim factor Y_B, got {s_R_mm!r}")
