@@ -166,3 +166,22 @@ def test_strength_refuses_root_false_by_name():
         pair.strength(LOAD, "42CrMo4", root=False)
     out = pair_strength(4, 20, 60, 0.3, 0.1, load=LOAD, material1="42CrMo4", face_width_mm=40, root=False)
     assert "S_F1" not in out and out["S_H1"] > 0
+
+
+@pytest.mark.parametrize("shaft, match", [({"B_star": 1.0}, "unknown key 'B_star'"), ({"l_mm": -5.0}, r"shaft\['l_mm'\]"),
+                                          ({"d_sh_mm": 0.0}, r"shaft\['d_sh_mm'\]"), ({"K_prime": "a"}, "K_prime"),
+                                          ({"K_prime": True}, "K_prime"), (5, "shaft must be a dict")])
+def test_pair_strength_refuses_a_bad_shaft_by_name(shaft, match):
+    # was: TypeError from shaft_misalignment (an unknown key, a string, not a dict), or a negative bearing span
+    # taken silently (found by the strength-scalar2 review)
+    with pytest.raises(gd.GearDesignError, match=match):
+        pair_strength(4, 20, 60, 0.3, 0.1, load=LOAD, material1="42CrMo4", face_width_mm=40, shaft=shaft)
+
+
+def test_a_pinion_shaft_offset_raises_f_sh_as_eq_44_says():
+    # ISO 6336-1:2006 eq. (44): f_sh = (F_m/b) 0.023 [|1 + K' l s/d1² (d1/d_sh)⁴ − 0.3| + 0.3] (b/d1)²; with
+    # K' = 0.48, l = 200, s = 20, d_sh = d1 = 80 mm the bracket is |1 + 0.48·200·20/6400 − 0.3| + 0.3 = 1.3
+    plain = pair_strength(4, 20, 60, 0.3, 0.1, load=LOAD, material1="42CrMo4", face_width_mm=40)
+    off = pair_strength(4, 20, 60, 0.3, 0.1, load=LOAD, material1="42CrMo4", face_width_mm=40,
+                        shaft={"K_prime": 0.48, "l_mm": 200.0, "s_mm": 20.0, "d_sh_mm": 80.0})
+    assert off["f_sh"] / plain["f_sh"] == pytest.approx(1.3 / 1.0, rel=1e-12)

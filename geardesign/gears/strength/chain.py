@@ -28,7 +28,7 @@ from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
 from .ops import ArrayOps, FloatOps, checked, once, per_load_case
-from .options import validate_options
+from .options import shaft_option, validate_options
 from .result import StrengthResult, from_chain
 from .root_chain import root_side
 
@@ -308,7 +308,9 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     valley roughness. ``root_method``: "B" (ISO 6336-3:2019) or "C" (tip load, Y_ε). ``factors``: measured or
     agreed values of any of :data:`GIVEN_FACTORS`. ``K_gamma``: mesh load factor (planetary sets).
     ``tip_relief_um``: C_a (default C_ay of running-in). ``bore_ratio``: (q1, q2) for the reduced mass.
-    ``shaft``: keyword arguments of :func:`~geardesign.gears.strength.factors.shaft_misalignment`.
+    ``shaft``: the pinion shaft of ISO 6336-1 eq. (44), a dict of numbers ``K_prime``, ``l_mm``, ``s_mm``, ``d_sh_mm``
+    (their ranges: :data:`~geardesign.gears.strength.options.SHAFT_RANGES`; see
+    :func:`~geardesign.gears.strength.factors.shaft_misalignment`).
     ``pitting_permitted``, ``optimum_life``: choose the Z_NT curve (ISO 6336-2:2019 Table 2). ``S_Hmin``,
     ``S_Fmin``: the minimum safety factors for σ_HP = σ_HG/S_Hmin and σ_FP = σ_FG/S_Fmin (defaults and their
     source: :mod:`~geardesign.gears.strength.defaults`). ``cycles_per_rev``: load cycles of a tooth per revolution of
@@ -341,7 +343,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
             broadcast_inputs(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=face_width_mm)
     o = SimpleNamespace(load=load, mats=mats, grade=grade, nu40=nu40, Rz=Rz, Rz_root=Rz_root, K_gamma=K_gamma,
                         root_method=root_method, cpr=cpr, tip_relief_um=tip_relief_um, bore=bore_ratio,
-                        shaft=shaft or {},
+                        shaft=shaft_option(shaft),
                         life=(pitting_permitted, optimum_life), rim=rim_mm,
                         root=require_bool("root", root), S_min=S_min, rack=rack, beta_deg=beta_deg,
                         internal=internal, tip_shortening=tip_shortening, geometry=geometry)
@@ -425,7 +427,7 @@ def _evaluate_batch(designs, G, o) -> dict:
     values = [*designs, *(o.geometry[k] for k in geo_keys)]
     shape = batch_shape(values)
     if (shape is None or not BLOCK < math.prod(shape) <= DESIGNS_MAX or np.ndim(o.grade)
-            or any(np.ndim(v) for v in (*G.values(), *o.shaft.values()))):
+            or any(np.ndim(v) for v in G.values())):
         return _finite(_evaluate(designs, G, o, ArrayOps), designs, o)
     finite = [True]
 

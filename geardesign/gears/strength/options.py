@@ -10,9 +10,13 @@ from . import accuracy as acc
 from . import defaults as dflt
 from .ops import checked
 
-__all__ = ["validate_options", "TIP_RELIEF_RANGE_UM"]
+__all__ = ["validate_options", "shaft_option", "TIP_RELIEF_RANGE_UM", "SHAFT_RANGES"]
 
 TIP_RELIEF_RANGE_UM = (0.0, 1000.0)    # C_a given: from none to a millimetre (a relief of module size)
+# the pinion shaft of ISO 6336-1:2006 7.6.2.2, eq. (44) (factors.shaft_misalignment's keywords): K' is one of the
+# standard's ±0.48, ±0.8, ±1.33, -0.36, -0.6 (Fig. 13); l the bearing span, s the pinion's offset from its middle,
+# d_sh the shaft's diameter (mm)
+SHAFT_RANGES = {"K_prime": (-2.0, 2.0), "l_mm": (0.0, 1e5), "s_mm": (0.0, 1e5), "d_sh_mm": (0.0, 1e5)}
 
 
 def _not_bool(name, value):
@@ -64,3 +68,18 @@ def _number(name, value, lo, hi, **kw):
 def _bad_method(root_method):
     raise GearDesignError(f"root_method must be 'B' (ISO 6336-3:2019, load at the outer point of single pair "
                           f"contact) or 'C' (tip load with Y_eps, ISO 6336-3:1996), got {root_method!r}")
+
+
+def shaft_option(shaft) -> dict:
+    """``shaft`` (None or a dict of :data:`SHAFT_RANGES`' keywords) as a dict of checked numbers."""
+    if shaft is None:
+        return {}
+    if not isinstance(shaft, dict):
+        raise GearDesignError(f"shaft must be a dict of {', '.join(SHAFT_RANGES)} (ISO 6336-1 eq. (44)), got "
+                              f"{type(shaft).__name__}")
+    unknown = sorted(set(shaft) - set(SHAFT_RANGES), key=str)
+    if unknown:
+        raise GearDesignError(f"shaft: unknown key {', '.join(map(repr, unknown))}; allowed: {', '.join(SHAFT_RANGES)}")
+    return {k: _number(f"shaft[{k!r}]", _not_bool(f"shaft[{k!r}]", v), *SHAFT_RANGES[k],
+                       lo_open=k in ("l_mm", "d_sh_mm"), unit="" if k == "K_prime" else "mm")
+            for k, v in shaft.items()}
