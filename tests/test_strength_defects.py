@@ -185,3 +185,27 @@ def test_a_pinion_shaft_offset_raises_f_sh_as_eq_44_says():
     off = pair_strength(4, 20, 60, 0.3, 0.1, load=LOAD, material1="42CrMo4", face_width_mm=40,
                         shaft={"K_prime": 0.48, "l_mm": 200.0, "s_mm": 20.0, "d_sh_mm": 80.0})
     assert off["f_sh"] / plain["f_sh"] == pytest.approx(1.3 / 1.0, rel=1e-12)
+
+
+@pytest.mark.parametrize("width", [np.array(100.0), np.float64(100.0)])
+def test_a_pairs_checks_and_report_take_a_width_as_a_0d_array(width, tmp_path):
+    # was: TypeError unhashable type 'numpy.ndarray' (the strength checks' spec is hashed), found by
+    # tools/fuzz.py --targets strength_report --seed 17; the values are those of the width as a float
+    pair = gd.GearPair(4, 20, 60, 0.3, 0.1)
+    t = pair.checks(load=LOAD, material="42CrMo4", face_width_mm=width).set_index("check")
+    assert t.loc["contact_strength", "value"] == pytest.approx(
+        min(pair.strength(LOAD, "42CrMo4", face_width_mm=100.0).S_H1,
+            pair.strength(LOAD, "42CrMo4", face_width_mm=100.0).S_H2), rel=1e-12)
+    assert pair.report(tmp_path / "r.html", load=LOAD, material="42CrMo4", face_width_mm=width).exists()
+
+
+@pytest.mark.parametrize("call", ["strength", "checks"])
+def test_one_pairs_strength_refuses_several_widths_by_name(call):
+    # was: TypeError "only 0-dimensional arrays can be converted" from the result object (strength), unhashable
+    # (checks)
+    pair = gd.GearPair(4, 20, 60, 0.3, 0.1)
+    with pytest.raises(gd.GearDesignError, match="face_width_mm must be one number"):
+        if call == "strength":
+            pair.strength(LOAD, "42CrMo4", face_width_mm=np.array([100.0]))
+        else:
+            pair.checks(load=LOAD, material="42CrMo4", face_width_mm=[100.0, 90.0])

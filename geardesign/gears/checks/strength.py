@@ -19,7 +19,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ...errors import GearDesignError
-from ..strength.defaults import MIN_SAFETY_SOURCE, S_FMIN, S_HMIN
+from ...validate import one_number, require_range
+from ..strength.defaults import FACE_WIDTH_RANGE_MM, MIN_SAFETY_SOURCE, S_FMIN, S_HMIN
 from .base import Check, Option, register, register_context
 
 __all__ = ["StrengthSpec", "StrengthModel", "ContactStrength", "RootStrength", "strength_spec", "STRENGTH_CONTEXT", "SAFETY_RANGE"]
@@ -267,7 +268,11 @@ def strength_spec(context: dict) -> StrengthSpec | None:
     from ..strength.chain import check_options
 
     frozen = tuple(sorted((k, _hashable(v)) for k, v in check_options(options).items()))
-    return StrengthSpec(load, mat1, mat2, context.get("face_width_mm"), frozen)
+    width = context.get("face_width_mm")
+    if width is not None:      # one number: the spec is hashed (its values are memoised per geometry)
+        width = one_number("face_width_mm", require_range("face_width_mm", width, *FACE_WIDTH_RANGE_MM, lo_open=True,
+                                                          unit="mm"))
+    return StrengthSpec(load, mat1, mat2, width, frozen)
 
 
 def _hashable(value):

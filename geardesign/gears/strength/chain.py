@@ -13,7 +13,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import broadcast_inputs, require_bool
+from ...validate import broadcast_inputs, one_number, require_bool
 from ..geometry import (DESIGNS_MAX, mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry,
                         validate_inputs)
 from ..inputs import M_RANGE_MM, X_ABS_MAX
@@ -556,6 +556,8 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
     b = pair.face_width_mm if face_width_mm is None else face_width_mm
     if b is None:
         raise GearDesignError("face_width_mm is needed: give it, or build the GearPair with face_width_mm=")
+    if type(b) is not float and np.ndim(b) != 0:    # one pair: one width (numbers pass as they are)
+        one_number("face_width_mm", b)
     # the pair's own geometry (validated when it was built): the chain need not compute it again
     options.setdefault("geometry", getattr(pair, "_geo", None))
     out = pair_strength(pair.m, pair.z1, pair.z2, pair.x1, pair.x2, load=load, material1=material,
