@@ -209,3 +209,29 @@ def test_one_pairs_strength_refuses_several_widths_by_name(call):
             pair.strength(LOAD, "42CrMo4", face_width_mm=np.array([100.0]))
         else:
             pair.checks(load=LOAD, material="42CrMo4", face_width_mm=[100.0, 90.0])
+
+
+FAST = gd.Load(torque_nm=500.0, n_rpm=1450.0, life_h=20_000)   # v = 6.1 m/s: the running-in caps of 5-10 m/s
+_GIVEN_VALUES = {"f_pb": 5.0, "f_falpha": 5.0, "F_beta": 10.0, "f_Hbeta": 8.0, "f_sh": 5.0, "f_ma": 5.0, "C_a": 5.0,
+                 "c_prime": 14.0, "c_gamma_alpha": 18.0, "c_gamma_beta": 17.0, "Z_E": 189.8}
+
+
+@pytest.mark.parametrize("mat", ["42CrMo4", "18CrNiMo7-6", "GG"])
+def test_every_given_factor_as_a_float_over_arrays_of_designs(mat):
+    # was: ValueError "truth value of an array is ambiguous" for factors={'f_pb': 0.0} over an array of wheels
+    # (tools/fuzz.py --targets pair_strength --seed 23): a given factor kept as a Python float made the running-in
+    # allowance take math's min over the speeds' array. Each factor given as a float gives the values of the same
+    # factor given as a numpy number, and each design the values of its own one-design call (the float path).
+    material = gd.material("GG", hardness=200, E_mpa=110000, nu=0.28, yield_mpa=250) if mat == "GG" else mat
+    from geardesign.gears.strength.chain import GIVEN_FACTORS
+    z2 = np.array([40, 60, 80])
+    for name in sorted(GIVEN_FACTORS):
+        value = _GIVEN_VALUES.get(name, 1.1)
+        kw = dict(load=FAST, material1=material, face_width_mm=40.0, beta_deg=15.0)
+        a = pair_strength(4.0, 20, z2, 0.2, 0.1, factors={name: value}, **kw)
+        b = pair_strength(4.0, 20, z2, 0.2, 0.1, factors={name: np.float64(value)}, **kw)
+        for k in ("S_H1", "S_H2", "S_F1", "S_F2"):
+            assert np.array_equal(a[k], b[k]), (name, k)
+        one = [pair_strength(4.0, 20, int(z), 0.2, 0.1, factors={name: value}, **kw) for z in z2]
+        for k in ("S_H1", "S_F2"):
+            np.testing.assert_allclose([o[k] for o in one], a[k], rtol=1e-12, err_msg=name)

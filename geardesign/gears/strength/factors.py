@@ -256,7 +256,7 @@ def _running_in(dev_um, sigma_Hlim_mpa, kind, v_m_s, table):
     """The running-in allowance of ``dev_um`` (f_pb or F_βx) by the kind's row of ``table``; for St, V, GGG(perl),
     GTS (the last row) never above the deviation itself (σ_Hlim below the row's numerator would wear away more
     than there is: K_Hβ >= 1 needs F_βy = F_βx − y_β >= 0)."""
-    xp = ops_of(dev_um, sigma_Hlim_mpa)
+    xp = ops_of(dev_um, sigma_Hlim_mpa, v_m_s)
     d = xp.asarray(dev_um)
     (k_h, cap_h), (k_g, cap_g5, cap_g10), (k_s, cap_s5, cap_s10) = table
     if kind in _SURFACE_HARDENED:
