@@ -235,3 +235,11 @@ def test_every_given_factor_as_a_float_over_arrays_of_designs(mat):
         one = [pair_strength(4.0, 20, int(z), 0.2, 0.1, factors={name: value}, **kw) for z in z2]
         for k in ("S_H1", "S_F2"):
             np.testing.assert_allclose([o[k] for o in one], a[k], rtol=1e-12, err_msg=name)
+
+
+def test_power_at_a_vanishing_speed_is_refused_by_name():
+    # was: ZeroDivisionError (ω = n·π/30 of n = 5e-324 rpm underflows to 0), tools/fuzz.py --targets pair_strength
+    # --seed 29; P/ω is then past every torque
+    with pytest.raises(gd.GearDesignError, match="power_kw and n_rpm must give a torque"):
+        gd.Load(power_kw=1e6, n_rpm=5e-324)
+    assert gd.Load(power_kw=75.0, n_rpm=1480.0).torque_nm == pytest.approx(75_000 * 30 / (math.pi * 1480), rel=1e-15)

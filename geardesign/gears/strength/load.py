@@ -61,7 +61,7 @@ class Load:
             p = one_number("power_kw", require_range("power_kw", self.power_kw, *POWER_RANGE_KW, lo_open=True,
                                                      unit="kW"))
             object.__setattr__(self, "power_kw", p)
-            t = p * 1e3 / (n * math.pi / 30.0)
+            t = p * 1e3 * 30.0 / math.pi / n    # not P/ω: ω of a denormal speed underflows to 0 (inf here: refused)
             if not t <= TORQUE_RANGE_NM[1]:
                 raise GearDesignError(f"power_kw and n_rpm must give a torque in (0, {TORQUE_RANGE_NM[1]:g}] N·m, got "
                                       f"power_kw={p!r} at n_rpm={n!r} ({t:.4g} N·m)")
