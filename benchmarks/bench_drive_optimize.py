@@ -33,20 +33,26 @@ def make_drive():
                     shafts=[gd.Shaft(40, 60, 1, "pinion shaft"), gd.Shaft(60, 80, 2, "output")])
 
 
-def plain_loop_per_combination(drive, samples=40, seed=1):
-    """Seconds per ratio combination when each is checked with the standalone functions."""
+def sampled_combinations(drive, total_ratio, samples, seed):
+    """(z1, z2, u_gear, chain z1s, chain z2s) of ``samples`` random gear tooth pairs of the drive that a chain
+    completes to ``total_ratio`` ± 3 %: the combinations a plain loop checks."""
     gear, ch = drive.stages
     z1, z2 = gear.pairs(1.0, 100.0)
     rng = np.random.default_rng(seed)
-    t = 0.0
-    done = 0
     for i in rng.choice(z1.size, samples, replace=False):
         ug = z2[i] / z1[i]
-        zc1, zc2 = ch.pairs(10 / ug * 0.97, 10 / ug * 1.03)
-        if zc1.size == 0:
-            continue
+        zc1, zc2 = ch.pairs(total_ratio / ug * 0.97, total_ratio / ug * 1.03)
+        if zc1.size:
+            yield int(z1[i]), int(z2[i]), ug, zc1, zc2
+
+
+def plain_loop_per_combination(drive, samples=40, seed=1):
+    """Seconds per ratio combination when each is checked with the standalone functions."""
+    t = 0.0
+    done = 0
+    for z1, z2, ug, zc1, zc2 in sampled_combinations(drive, 10, samples, seed):
         t0 = time.process_time()
-        optimize_shifts(int(z1[i]), int(z2[i]), "max_x_sum", None, "exact", m=3)
+        optimize_shifts(z1, z2, "max_x_sum", None, "exact", m=3)
         n1 = drive.n_in_rpm / ug
         t1 = 27.09 * ug * 0.98
         chain.design(torque_nm=t1, n1_rpm=n1, ratio=zc2[0] / zc1[0], z1=int(zc1[0]))
@@ -82,24 +88,16 @@ def plain_sized_per_combination(samples=40, seed=2):
     from geardesign.catalogs.tables import module_series
     from geardesign.gears.strength import Load, pair_strength
 
-    drive = eval(SIZED)
-    gear, ch = drive.stages
-    z1, z2 = gear.pairs(1.0, 100.0)
     t_in = 75_000 / (2 * np.pi * 1480 / 60)
     series = np.asarray(module_series(), dtype=float)
     psi = np.arange(0.2, 1.0 + 1e-9, 0.05)
-    rng = np.random.default_rng(seed)
     t, done = 0.0, 0
-    for i in rng.choice(z1.size, samples, replace=False):
-        ug = z2[i] / z1[i]
-        zc1, zc2 = ch.pairs(8 / ug * 0.97, 8 / ug * 1.03)
-        if zc1.size == 0:
-            continue
+    for z1, z2, ug, zc1, zc2 in sampled_combinations(eval(SIZED), 8, samples, seed):
         t0 = time.process_time()
-        o = optimize_shifts(int(z1[i]), int(z2[i]), "max_x_sum", None, "exact", m=1.0)
+        o = optimize_shifts(z1, z2, "max_x_sum", None, "exact", m=1.0)
         M = np.repeat(series, psi.size)
-        B = np.ceil(np.tile(psi, series.size) * M * z1[i] - 1e-9)
-        s = pair_strength(M, int(z1[i]), int(z2[i]), o.x1, o.x2, load=Load(torque_nm=t_in, n_rpm=1480),
+        B = np.ceil(np.tile(psi, series.size) * M * z1 - 1e-9)
+        s = pair_strength(M, z1, z2, o.x1, o.x2, load=Load(torque_nm=t_in, n_rpm=1480),
                           material1="42CrMo4", face_width_mm=B)
         ok = (np.minimum(s["S_H1"], s["S_H2"]) >= s["S_Hmin"]) & (np.minimum(s["S_F1"], s["S_F2"]) >= s["S_Fmin"])
         assert ok.any()

@@ -8,7 +8,8 @@ from ..errors import GearDesignError
 from ..validate import require_int, require_positive, require_range
 from .mesh import Z_MAX, Z_MIN, Mesh, section_tuple
 
-__all__ = ["M_RANGE_MM", "X_ABS_MAX", "DESIGNS_MAX", "validate_inputs", "require_module", "validate_geometry"]
+__all__ = ["M_RANGE_MM", "X_ABS_MAX", "DESIGNS_MAX", "validate_inputs", "plain_inputs_ok", "require_module",
+           "validate_geometry"]
 
 M_RANGE_MM = (1e-4, 1e4)   # module: watch gears to mill gears with room to spare; outside, results overflow
 X_ABS_MAX = 10.0           # |x|: beyond a few units the tip or root crosses the base circle anyway
@@ -23,6 +24,15 @@ def validate_inputs(m, z1, z2, x1, x2):
     x1 = require_range("x1", x1, -X_ABS_MAX, X_ABS_MAX)
     x2 = require_range("x2", x2, -X_ABS_MAX, X_ABS_MAX)
     return m, z1, z2, x1, x2
+
+
+def plain_inputs_ok(m, x1, x2) -> bool:
+    """True for Python floats/ints inside their ranges: the common case of one design, checked without numpy
+    (the tooth counts are :class:`~geardesign.gears.mesh.Mesh`'s to check; anything else goes to
+    :func:`validate_inputs`, which names what is wrong)."""
+    return (type(m) in (float, int) and M_RANGE_MM[0] <= m <= M_RANGE_MM[1]
+            and type(x1) in (float, int) and -X_ABS_MAX <= x1 <= X_ABS_MAX
+            and type(x2) in (float, int) and -X_ABS_MAX <= x2 <= X_ABS_MAX)
 
 
 def require_module(m):

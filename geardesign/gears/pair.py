@@ -11,9 +11,10 @@ import numpy as np
 from . import checks as _checks
 from ..errors import GearDesignError
 from ..validate import ndim, one_number, require_positive, require_range
-from .geometry import (M_RANGE_MM, X_ABS_MAX, Geometry, center_distance_from_x_sum, mesh_geometry,
+from .geometry import (X_ABS_MAX, Geometry, center_distance_from_x_sum, mesh_geometry,
                        mesh_geometry_float, min_center_distance, validate_geometry, validate_inputs,
                        x_sum_from_center_distance)
+from .inputs import plain_inputs_ok
 from .mesh import Mesh
 from .rack import STANDARD_RACK, BasicRack
 
@@ -48,13 +49,6 @@ def balanced_sliding_split(m, z1, z2, x_sum, rack: BasicRack = BasicRack(), tip_
         return float(x_sum * z2 / (z1 + z2)) if sgn > 0 else 0.0
     i = idx[0]
     return float(brentq(f, grid[i], grid[i + 1], xtol=1e-14, rtol=1e-15))
-
-
-def _plain_inputs(m, x1, x2) -> bool:
-    """True for Python floats/ints inside their ranges: the common case, checked without numpy."""
-    return (type(m) in (float, int) and M_RANGE_MM[0] <= m <= M_RANGE_MM[1]
-            and type(x1) in (float, int) and -X_ABS_MAX <= x1 <= X_ABS_MAX
-            and type(x2) in (float, int) and -X_ABS_MAX <= x2 <= X_ABS_MAX)
 
 
 def _exists(geo: dict) -> bool:
@@ -96,7 +90,7 @@ class GearPair:
     face_width_mm: float | None = None
 
     def __post_init__(self):
-        if not _plain_inputs(self.m, self.x1, self.x2):   # anything but plain numbers in range: by name
+        if not plain_inputs_ok(self.m, self.x1, self.x2):   # anything but plain numbers in range: by name
             for name in ("m", "z1", "z2", "x1", "x2"):
                 if ndim(getattr(self, name)) != 0:
                     raise GearDesignError(f"{name} must be a single number for GearPair (use pair_geometry for arrays)")

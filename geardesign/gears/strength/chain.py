@@ -16,8 +16,8 @@ from ...errors import GearDesignError
 from ...validate import broadcast_inputs, one_number, require_bool
 from ..geometry import (DESIGNS_MAX, mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry,
                         validate_inputs)
-from ..inputs import M_RANGE_MM, X_ABS_MAX
-from ..mesh import Z_MAX, Z_MIN, Mesh, section_constants
+from ..inputs import plain_inputs_ok
+from ..mesh import Mesh, section_constants
 from ..rack import STANDARD_RACK, BasicRack
 from . import accuracy as acc
 from . import contact as zc
@@ -94,9 +94,7 @@ def _geometry(m, z1, z2, x1, x2, rack, beta_deg, internal, tip_shortening, plain
     """The geometry fields the chain needs, from pair_geometry (validated there), and the section constants."""
     if plain and isinstance(rack, BasicRack):
         # one design in plain numbers: the float path of the geometry (validated as pair_geometry does)
-        if not (type(z1) is int and type(z2) is int and Z_MIN <= z1 <= Z_MAX and Z_MIN <= z2 <= Z_MAX
-                and M_RANGE_MM[0] <= m <= M_RANGE_MM[1] and -X_ABS_MAX <= x1 <= X_ABS_MAX
-                and -X_ABS_MAX <= x2 <= X_ABS_MAX):     # else refused by name there
+        if not plain_inputs_ok(m, x1, x2):        # the tooth counts: Mesh's
             validate_inputs(m, z1, z2, x1, x2)
         mesh = Mesh(z1, z2, rack, tip_shortening, beta_deg, internal)
         geo = mesh_geometry_float(mesh, m, x1, x2, full=False, tips=False)
@@ -403,12 +401,9 @@ def _plain_numbers(values) -> bool:
 
 def check_options(options: dict) -> dict:
     """``options`` for :func:`pair_strength`, refused by name when one is not one of its keywords."""
-    if options.keys() <= _OPTION_SET:
-        return options
-    unknown = sorted(set(options) - _OPTION_SET)
-    if unknown:
-        raise GearDesignError(f"unknown strength option {', '.join(map(repr, unknown))}; allowed: "
-                              f"{', '.join(_OPTION_NAMES)}")
+    if not options.keys() <= _OPTION_SET:
+        raise GearDesignError(f"unknown strength option {', '.join(map(repr, sorted(set(options) - _OPTION_SET)))}; "
+                              f"allowed: {', '.join(_OPTION_NAMES)}")
     return options
 
 

@@ -200,7 +200,7 @@ def from_chain(out: dict, title: str = "") -> StrengthResult:
         notes.append(f"{name} given, not computed")
     for name in out.get("given_unused", ()):
         notes.append(f"{name} given but not used (another given factor or the root method makes it unneeded)")
-    fields = {k: v if type(v := out[k]) is float else _scalar(v) for k in _STRESSES}
+    fields = {k: _scalar(out[k]) for k in _STRESSES}
     fields.update(S_Hmin=float(out["S_Hmin"]), S_Fmin=float(out["S_Fmin"]), _chain=out,
                   given=tuple(out.get("given", ())), notes=tuple(notes), title=title)
     # every field set at once: the frozen dataclass's __init__ sets them one by one through object.__setattr__,
