@@ -243,3 +243,14 @@ def test_power_at_a_vanishing_speed_is_refused_by_name():
     with pytest.raises(gd.GearDesignError, match="power_kw and n_rpm must give a torque"):
         gd.Load(power_kw=1e6, n_rpm=5e-324)
     assert gd.Load(power_kw=75.0, n_rpm=1480.0).torque_nm == pytest.approx(75_000 * 30 / (math.pi * 1480), rel=1e-15)
+
+
+def test_an_overloaded_pair_ends_infeasible_naming_the_conflict_not_undefined():
+    # was: "no finite result ... the pair's geometry or a check is undefined at the point the solver reached"
+    # (also from `geardesign pair ... --torque 400 --report`): the least infeasible point lies on ε_α = 1, where the
+    # ISO 6336 chain is undefined (its load point needs ε_αn >= 1), so the strength margins there are -inf
+    r = gd.optimize_shifts(20, 60, m=4, checks={"load": gd.Load(torque_nm=400, n_rpm=1000), "material": "42CrMo4",
+                                                "face_width_mm": 40})
+    assert not r.success and "contact_strength" in r.conflict
+    assert all(math.isfinite(v) or v == -math.inf for v in r.margins.values())
+    assert all(math.isfinite(v) for k, v in r.margins.items() if "strength" not in k)

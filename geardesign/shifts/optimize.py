@@ -146,12 +146,18 @@ def _result(prob: Problem, out: Outcome, method: str, tol: float, a_w, t0: float
     zero = tol if method != "grid" else 1e-12
     mg = {name: (0.0 if abs(v) <= zero else float(v)) for name, v in zip(prob.names, M)}
     fun = float(prob.objective.sense * P.min()) if prob.objective.kind != "margin" else float(P.min())
-    if not all(map(math.isfinite, [fun, float(geo["a_w"]), float(geo["eps_alpha"]), *mg.values()])):
+    # a check undefined at an infeasible point (the ISO 6336 chain where ε_α < 1) fails there: −inf, not an error
+    margins_ok = all(map(math.isfinite, mg.values())) or not out.success and not any(map(math.isnan, mg.values()))
+    if not (margins_ok and all(map(math.isfinite, [fun, float(geo["a_w"]), float(geo["eps_alpha"])]))):
         raise GearDesignError(
             f"no finite result for z1/z2 = {prob.z1}/{prob.z2} ({prob.objective.name}, {method}): the pair's "
             f"geometry or a check is undefined at the point the solver reached ({x1:.6g}, {x2:.6g}); "
             f"check the rack and the window")
     message, success = out.message, out.success
+    undefined = [name for name, v in mg.items() if v == -math.inf]
+    if undefined:
+        message += (f"; {', '.join(undefined)} undefined at the point shown (margin -inf, failing: e.g. ISO 6336 "
+                    f"needs eps_alpha >= 1, here {float(geo['eps_alpha']):.4g})")
     if success and not float(geo["eps_alpha"]) > 0:   # a tolerance asked too coarse to hold the meshing
         message, success = (f"the gears do not mesh at the point reached (eps_alpha {float(geo['eps_alpha']):.4g}): "
                             f"no design; a finer tol finds one"), False
