@@ -394,6 +394,7 @@ class GearKind(ToothedKind):
         r1, r2 = (0.9 * r1 / max(r1, r2), 0.9 * r2 / max(r1, r2))
         for xc, r in ((x, r1), (x + r1 + r2, r2)):
             canvas.circle(xc, r, self.color, alpha=0.9)
-        text = (f"{s['name']}: z {s['z1']}/{s['z2']}, m {s['m']:g}\n"
+        width = f", b {s['face_width_mm']:g}" if s.get("face_width_mm") is not None else ""   # a stage with a load
+        text = (f"{s['name']}: z {s['z1']}/{s['z2']}, m {s['m']:g}{width}\n"
                 f"x {s['x1']:.3f}/{s['x2']:.3f}, a_w {s['a_w_mm']:.1f} mm")
         return x + r1 + r2, text
