@@ -19,7 +19,7 @@ import numpy as np
 
 from bench_drive_optimize import make_drive
 from geardesign.drives.search import Search
-from geardesign.drives.stage_kinds.gear import shift_solution
+from geardesign.drives.stage_kinds.gear import clear_shift_cache
 from geardesign.gears.mesh import Mesh
 from geardesign.shifts.problem import DEFAULT_BOUNDS, Problem
 
@@ -28,7 +28,7 @@ GRID_N = 91     # nodes per axis of the witness grid (any grid gives witnesses; 
 
 def first_call(drive, objective):
     """(result, CPU seconds) of the first call (shift cache cleared)."""
-    shift_solution.cache_clear()
+    clear_shift_cache()
     c0 = time.process_time()
     r = drive.optimize(10, objective=objective)
     return r, time.process_time() - c0

@@ -294,7 +294,7 @@ def _drive(rng):
     gear = dict(m=_pick(rng, [2.0, 3.0, 4.0], 0.1))
     shaft = dict(d_mm=_pick(rng, [30.0, 40.0, 60.0], 0.1), hub_length_mm=_pick(rng, [50.0, 80.0], 0.1))
     kw = dict(total_ratio=ratio, ratio_tol=_pick(rng, [0.03, 0.05], 0.1),
-              objective=_pick(rng, ["min_size", "min_mass"], 0.05))
+              objective=_pick(rng, ["min_size", "min_mass", "max_margin"], 0.05))
     use_gear = rng.random() < 0.5
 
     def call():
@@ -305,6 +305,37 @@ def _drive(rng):
                          shafts=[gd.Shaft(**shaft, at=len(stages))])
         return drive.optimize(**kw)
     return f"Drive({power} kW, {n_in} rpm, {given}, gear={use_gear and gear}, {shaft}).optimize(**{kw})", call
+
+
+def _margin_centres(rng):
+    """Many tooth pairs' max_margin shifts at once (a max_margin drive's solver); every certified answer is
+    re-checked as optimize_shifts' would be."""
+    from geardesign.gears.checks import FEASIBILITY_TOL
+    from geardesign.gears.mesh import Mesh
+    from geardesign.shifts.centres import margin_centres
+    from geardesign.shifts.problem import Problem
+
+    n = rng.choice([1, 2, 7, 40])
+    z1 = _pick(rng, lambda r: [_z(r) for _ in range(n)], 0.1)
+    z2 = _pick(rng, lambda r: [_z(r) for _ in range(n if r.random() < 0.95 else n + 1)], 0.1)
+    kw = dict(m=_pick(rng, _m, 0.1))
+    if rng.random() < 0.4:
+        kw["checks"] = _pick(rng, [{}, {"undercut": False}, {"sa_min": 0.4}, {"bogus": 1}] + _DROPPED)
+    if rng.random() < 0.3:
+        kw["beta_deg"] = _pick(rng, [8.0, 15.0, 30.0, 46.0], 0.2)
+    if rng.random() < 0.15:
+        kw["bounds"] = _pick(rng, [(-0.5, 1.0), (-1, 2), (0, 0), (3, -1)])
+
+    def call():
+        r = margin_centres(z1, z2, **kw)
+        for i in np.flatnonzero(r["ok"]):
+            prob = Problem(Mesh(int(z1[i]), int(z2[i]), beta_deg=kw.get("beta_deg", 0.0)), kw.get("checks"),
+                           "max_margin", kw["m"])
+            M = prob.margins(prob.geo(np.float64(r["x1"][i]), np.float64(r["x2"][i])))
+            if (M < -FEASIBILITY_TOL).any():
+                raise FailsChecks(f"pair {i}: margins {dict(zip(prob.names, M.tolist()))}")
+        return {k: v for k, v in r.items() if k == "ok"}
+    return f"margin_centres({z1}, {z2}, **{kw})", call
 
 
 def _chain(rng):
@@ -441,7 +472,7 @@ TARGETS = {
     "optimize_shifts": _optimize, "feasible_region": _region, "shift_atlas": _atlas, "select_teeth": _teeth,
     "chain": _chain, "key": _key, "scene": _scene, "cli": _cli,
     "planetary_set": _planetary_set, "optimize_planetary_shifts": _optimize_planetary,
-    "select_planetary_teeth": _planetary_teeth, "drive": _drive,
+    "select_planetary_teeth": _planetary_teeth, "drive": _drive, "margin_centres": _margin_centres,
 }
 
 

@@ -32,7 +32,7 @@ from .. import parallel
 from ..errors import GearDesignError
 from . import key
 from .drive_results import DriveOptimum
-from .limits import (CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX, LOOK_AHEAD,
+from .limits import (CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX,
                      MARGIN_TOL)
 from .stage_kinds import StageFlow, kind_of
 from .stages import Shaft
@@ -64,8 +64,18 @@ def min_margin(margins: dict):
 
 
 def _solve_options(kinds, stages, objective, items) -> list:
-    """The solves of one chunk of (stage index, option, flow): what a worker runs."""
-    return [kinds[k].solve(stages[k], opt, objective, flow) for k, opt, flow in items]
+    """The solves of one chunk of (stage index, option, flow), what a worker runs: each stage's options
+    together where its kind solves them together (:meth:`StageKind.solve_ahead`), in the chunk's order."""
+    out = [None] * len(items)
+    for k in dict.fromkeys(k for k, _, _ in items):
+        at = [i for i, item in enumerate(items) if item[0] == k]
+        if kinds[k].solve_ahead(stages[k], objective):
+            sols = kinds[k].solve_many(stages[k], [items[i][1] for i in at], objective, [items[i][2] for i in at])
+        else:
+            sols = [kinds[k].solve(stages[k], items[i][1], objective, items[i][2]) for i in at]
+        for i, sol in zip(at, sols):
+            out[i] = sol
+    return out
 
 
 class Search:
@@ -79,6 +89,8 @@ class Search:
         self.u_lo, self.u_hi = U * (1 - tol), U * (1 + tol)
         self.solved_k = [k for k, kind in enumerate(self.kinds) if kind.solved]
         self.n_solves = 0
+        # groups of the walk looked at ahead: the most any solved stage takes at once (StageKind.solve_ahead)
+        self.look_ahead = max([1] + [self.kinds[k].solve_ahead(self.stages[k], objective) for k in self.solved_k])
 
     def run(self, progress=None, where=None) -> DriveOptimum:
         """The search; ``where``: client= / workers= of :func:`geardesign.parallel.map_chunks` for the
@@ -234,10 +246,11 @@ class Search:
         A stage is solved ahead only when the walk's current group (``firsts[0]``) needs it: the window
         is then solved as one chunk, not topped up by one option per step (which would share nothing)."""
         for k in self.solved_k:
-            if not self.kinds[k].solves_together(self.stages[k]) or self._key(k, firsts[0]) in self._solved:
+            ahead = self.kinds[k].solve_ahead(self.stages[k], self.objective)
+            if not ahead or self._key(k, firsts[0]) in self._solved:
                 continue
             todo: dict = {}
-            for c in firsts:
+            for c in firsts[:ahead]:
                 todo.setdefault(self._key(k, c), c)
             todo = {key: c for key, c in todo.items() if key not in self._solved}
             if len(todo) < 2:
@@ -329,7 +342,7 @@ class Search:
             if glb[g] > limit:
                 break      # no design of this or any later group can enter the list
             members = order[starts[g]:ends[g]]
-            ahead = walk[i:i + LOOK_AHEAD]
+            ahead = walk[i:i + self.look_ahead]
             self._solve_ahead(order[starts[ahead[glb[ahead] <= limit]]])
             sols = [self._solution(k, members[0]) for k in self.solved_k]
             if progress is not None:

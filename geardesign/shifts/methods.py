@@ -8,7 +8,8 @@ from dataclasses import dataclass
 from typing import Callable
 
 from ..errors import GearDesignError
-from . import grid, kkt, scp
+from . import centres, grid, kkt, scp
+from .problem import Problem
 from .starts import feasible_starts, start_nodes
 
 __all__ = ["Method", "register_method", "METHOD_TABLE", "METHODS", "DEFAULT_TOL", "ACCURACY"]
@@ -54,6 +55,12 @@ def _solve_convex(prob, bounds, tol, grid_n=None, start=None):
 
 
 def _solve_exact(prob, bounds, tol, grid_n=None, start=None):
+    # one pair's Chebyshev centre as a drive solves many (a planetary set's problem is two meshes: not here)
+    if (type(prob) is Problem and prob.objective.kind == "margin" and prob.nvar == 2 and start is None
+            and not prob.costly_parts):
+        out = centres.solve(prob, bounds)
+        if out is not None:
+            return out
     starts, infeasible = feasible_starts(prob, bounds, start)
     if infeasible is not None:
         return infeasible

@@ -18,6 +18,10 @@ Every objective is written as "maximise t subject to piece_k(x) >= t and margin_
   When none qualifies, SLSQP from the node and the same Newton polish. Reaches ~1e-12 in x.
   One design is evaluated in Python floats (:meth:`Problem.evaluate_point`), ~20× cheaper
   than a one-element numpy call; a solve takes ~5 evaluations and ~0.9 ms.
+  ``max_margin`` with both shifts free goes first to :mod:`~geardesign.shifts.centres` (sequential
+  linear programming to the vertex or edge of the smallest normalised margins, with the same KKT
+  certificate; the solver a drive runs on hundreds of pairs at once), and to the search above where
+  that gives no certificate.
 
 Sensitivities are d(fun)/d(limit) of the active checks: how much the optimum moves per unit
 rise of each active limit (for undercut and interference, per unit of extra margin required).

@@ -12,7 +12,7 @@ A stage kind is one object with these parts (defaults here fit a stage with noth
 - **margins in a batch**: :meth:`~StageKind.batch` (every margin, size and mass of many designs at
   once), or, for a kind whose options are costly (``solved = True``), :meth:`~StageKind.solve` one
   option at a time inside the branch and bound with :meth:`~StageKind.bound` below its cost
-  (:meth:`~StageKind.solve_many` several at once, when :meth:`~StageKind.solves_together` says that
+  (:meth:`~StageKind.solve_many` several at once, when :meth:`~StageKind.solve_ahead` says that
   shares work);
 - **analyse**: :meth:`~StageKind.analyse` receives the flow into and out of the stage
   (:class:`StageFlow`: speed rpm, torque N·m) and returns its checks, size, mass and summary;
@@ -104,10 +104,10 @@ class StageKind:
         :class:`StageFlow` into the stage when :meth:`load_dependent` says the solve needs it, else None."""
         raise NotImplementedError(f"stage kind {self.name!r} solves nothing one by one")
 
-    def solves_together(self, stage) -> bool:
-        """True when :meth:`solve_many` shares work between options (the search then hands it the
-        options it will likely need next)."""
-        return False
+    def solve_ahead(self, stage, objective: str) -> int:
+        """How many of the walk's next groups :meth:`solve_many` should take at once, when solving options
+        together shares work (the search then hands it the options it will likely need next); 0: one by one."""
+        return 0
 
     def solve_many(self, stage, options: list, objective: str, flows: list) -> list:
         """:meth:`solve` of several options (``flows``: theirs, or Nones), in order; a kind may share

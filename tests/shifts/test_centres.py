@@ -1,0 +1,142 @@
+"""The max_margin optimum of many tooth pairs at once (geardesign.shifts.centres).
+
+References: the exact method's own active-set search (kkt.py, a different algorithm: a Newton solve per
+candidate active set from the best node of a 31 × 31 grid, several starts), and a fine grid of the
+window evaluated with Problem.fun (no solver at all): no node may beat the optimum, and the optimum is
+within a node's reach of the best node.
+"""
+import numpy as np
+import pytest
+
+import geardesign as gd
+from geardesign.drives.stage_kinds import gear as gear_kind
+from geardesign.gears.mesh import Mesh
+from geardesign.shifts import centres
+from geardesign.shifts.problem import DEFAULT_BOUNDS, Problem
+
+# (z1, z2, m): vertices (three smallest normalised margins equal; the benchmark drive's pairs are all of
+# this kind) and edges (tip thickness 1 and interference 1 opposite each other, common at ratios 2...10)
+VERTICES = [(25, 116, 3.0), (24, 123, 3.0), (17, 26, 1.0), (20, 40, 1.0)]
+EDGES = [(41, 146, 1.0), (34, 69, 1.0), (50, 102, 1.0)]
+
+
+def _pieces_at(z1, z2, m, x1, x2):
+    """The normalised pieces of one design, smallest first (Problem.evaluate_point: the float path)."""
+    p = Problem(Mesh(z1, z2), None, "max_margin", m)
+    P = p.evaluate_point(np.array([x1, x2]))[0]
+    return np.sort(P)
+
+
+def _one_pair(z1, z2, m):
+    return centres.margin_centres([z1], [z2], m)
+
+
+@pytest.mark.parametrize("z1, z2, m", VERTICES + EDGES)
+def test_agrees_with_the_active_set_search(monkeypatch, z1, z2, m):
+    r = _one_pair(z1, z2, m)
+    assert r["ok"][0]
+    monkeypatch.setattr(centres, "solve", lambda prob, bounds: None)      # the exact method's own search
+    s = gd.optimize_shifts(z1, z2, "max_margin", m=m)
+    assert "from a grid node" in s.message or "SLSQP" in s.message
+    # a vertex is fixed by three equations (x to rounding); an edge's stationarity holds to the noise of
+    # central-difference gradients (both methods stop at 1e-8 on it), while fun is flat there
+    x_tol = 1e-11 if (z1, z2, m) in VERTICES else 1e-7
+    assert r["x1"][0] == pytest.approx(s.x1, abs=x_tol)
+    assert r["x2"][0] == pytest.approx(s.x2, abs=x_tol)
+    assert r["fun"][0] == pytest.approx(s.fun, abs=1e-11)
+
+
+@pytest.mark.parametrize("z1, z2, m, active", [v + (3,) for v in VERTICES[:2]] + [e + (2,) for e in EDGES[:2]])
+def test_vertices_and_edges_are_certified_with_their_active_pieces(z1, z2, m, active):
+    r = _one_pair(z1, z2, m)
+    assert r["ok"][0]
+    P = _pieces_at(z1, z2, m, r["x1"][0], r["x2"][0])
+    assert P[:active] == pytest.approx(np.full(active, P[0]), abs=1e-10)
+    assert P[active] > P[0] + 1e-3
+
+
+@pytest.mark.parametrize("z1, z2, m", [(25, 116, 3.0), (41, 146, 1.0), (17, 26, 1.0)])
+def test_no_node_of_a_fine_grid_beats_the_optimum(z1, z2, m):
+    r = _one_pair(z1, z2, m)
+    g = np.linspace(*DEFAULT_BOUNDS, 241)                 # spacing 0.01875
+    x1, x2 = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
+    p = Problem(Mesh(z1, z2), None, "max_margin", m)
+    with np.errstate(all="ignore"):
+        fun = np.nan_to_num(p.fun(p.geo(x1, x2)), nan=-np.inf)
+    best = fun.max()
+    assert best <= r["fun"][0] + 1e-12
+    assert best >= r["fun"][0] - 0.02                    # the best node lies within a spacing of the optimum
+
+
+def test_a_batch_gives_each_pair_the_bits_of_its_own_solve():
+    rng = np.random.default_rng(5)
+    z1, z2 = rng.integers(12, 60, 40), rng.integers(20, 250, 40)
+    r = centres.margin_centres(z1, z2, 2.0)
+    assert r["ok"].sum() >= 36
+    for i in range(0, 40, 4):
+        s = gd.optimize_shifts(int(z1[i]), int(z2[i]), "max_margin", m=2.0)
+        if r["ok"][i]:
+            assert (r["x1"][i], r["x2"][i]) == (s.x1, s.x2)
+            # the margins at that point: the same formulas on arrays (the batch) and on floats (one design)
+            assert {k: v[i] for k, v in r["margins"].items()} == pytest.approx(s.margins, rel=1e-14, abs=1e-15)
+            geo = gd.GearPair(2.0, int(z1[i]), int(z2[i]), s.x1, s.x2).geometry()
+            assert r["a_w"][i] == pytest.approx(geo.a_w, rel=1e-14)
+            assert r["da1"][i] == pytest.approx(geo.da1, rel=1e-14)
+
+
+def test_helical_pairs_and_other_checks():
+    checks = {"sa_min": 0.4, "eps_alpha_min": 1.1}
+    r = centres.margin_centres([23, 31], [77, 95], 2.5, checks, beta_deg=15.0)
+    assert r["ok"].all()
+    for i, (z1, z2) in enumerate([(23, 77), (31, 95)]):
+        s = gd.optimize_shifts(z1, z2, "max_margin", checks, m=2.5, beta_deg=15.0)
+        assert (r["x1"][i], r["x2"][i]) == (s.x1, s.x2)
+
+
+def test_a_pair_without_a_design_is_left_uncertified():
+    # 8/8 with the default checks: no shifts hold them all (optimize_shifts names the conflict)
+    r = centres.margin_centres([8, 20], [8, 40])
+    assert not r["ok"][0] and r["ok"][1]
+    assert np.isnan(r["x1"][0]) and np.isnan(r["margins"]["undercut1"][0])
+    assert gd.optimize_shifts(8, 8, "max_margin").conflict
+
+
+def test_feasible_nodes_in_several_pieces_are_told_apart():
+    f = np.zeros((3, 5, 5), bool)
+    f[0, 0, 0] = f[0, 4, 4] = True           # two pieces
+    f[1, 0, 0] = f[1, 1, 1] = f[1, 2, 2] = True   # one piece, through diagonal neighbours
+    f[2, 1:4, 2] = True                       # one piece
+    best = np.array([0, 0, 7])
+    assert centres._one_piece(f.reshape(3, -1), best, 5).tolist() == [False, True, True]
+
+
+@pytest.mark.parametrize("z1, z2, match", [
+    ([17, 20], [26], "same number"), ([2], [30], "z1"), ([17], [1e308], "z2"), ([], [], "same number")])
+def test_inputs_are_refused_by_name(z1, z2, match):
+    with pytest.raises(gd.GearDesignError, match=match):
+        centres.margin_centres(z1, z2)
+
+
+def test_the_number_of_pairs_is_limited_up_front():
+    n = centres.PAIRS_MAX + 1
+    with pytest.raises(gd.GearDesignError, match=f"at most {centres.PAIRS_MAX}"):
+        centres.margin_centres(np.full(n, 17), np.full(n, 26))
+
+
+def test_a_max_margin_drive_solves_its_pairs_in_batches_with_the_same_result(monkeypatch):
+    gear = gd.GearStage(2, z1_range=(17, 22), z2_max=90, ratio_range=(1.0, 5.0))
+    chain = gd.ChainStage(ratio_range=(1.0, 3.0), z2_max=40, strands=(1, 2))
+    drive = gd.Drive(power_kw=3.0, n_in_rpm=1410, stages=[gear, chain])
+    gear_kind.clear_shift_cache()
+    batched = drive.optimize(6.0, 0.03, objective="max_margin", top=8)
+    calls = []
+    monkeypatch.setattr(gear_kind, "margin_solutions", lambda stage, pairs: calls.append(len(pairs)))
+    gear_kind.clear_shift_cache()
+    alone = drive.optimize(6.0, 0.03, objective="max_margin", top=8)
+    assert calls and batched.n_shift_solves == alone.n_shift_solves > 2
+    assert batched.table["reason"].tolist() == alone.table["reason"].tolist()
+    num = alone.table.select_dtypes("number").columns
+    assert batched.table.drop(columns=num).equals(alone.table.drop(columns=num))
+    # the same shifts; the margins and lengths at them evaluated on arrays (batch) or floats (one by one)
+    np.testing.assert_allclose(batched.table[num].to_numpy(float), alone.table[num].to_numpy(float), rtol=1e-13,
+                               atol=1e-15)
