@@ -36,7 +36,7 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..gears.checks import FEASIBILITY_TOL
-from ..gears.geometry import mesh_geometry
+from ..gears.geometry import mesh_geometry, mesh_geometry_float
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from ..validate import require_int
 from .problem import _FD_STEP, DEFAULT_BOUNDS, Problem, _stack, _stack_pairs, validate_bounds
@@ -345,19 +345,21 @@ def _holds(P, x, t_start, lo: float, hi: float):
 
 
 def _results(prob: Problem, z1, z2, x, ok) -> dict:
-    """The certified points' geometry and margins (per check), NaN elsewhere."""
+    """The certified points' geometry and margins (per check), NaN elsewhere. They are read as one design
+    is, on the float path (:func:`~geardesign.gears.geometry.mesh_geometry_float`, what ``optimize_shifts``
+    reports and ``GearPair.geometry`` gives), so that a pair's figures do not depend on how it was solved."""
     i = np.flatnonzero(ok)
     out = {k: np.full(z1.size, np.nan) for k in ("x1", "x2", "fun", "a_w", "da1", "da2")}
     out["ok"] = ok
     margins = np.full((len(prob.checks), z1.size), np.nan)
     if i.size:
-        P, _, geo = _pieces(prob, z1[i], z2[i], x[0, i], x[1, i])
-        with np.errstate(all="ignore"):
-            mg = prob.margins(geo)
-        margins[:, i] = np.where(np.abs(mg) <= _ZERO_MARGIN, 0.0, mg)
-        out["x1"][i], out["x2"][i] = x[0, i], x[1, i]
+        P, _, _ = _pieces(prob, z1[i], z2[i], x[0, i], x[1, i])
         out["fun"][i] = P.min(axis=0)
-        for k in ("a_w", "da1", "da2"):
-            out[k][i] = geo[k]
+        out["x1"][i], out["x2"][i] = x[0, i], x[1, i]
+    for j in i:
+        geo = mesh_geometry_float(prob.mesh.unchecked(int(z1[j]), int(z2[j])), prob.m, x[0, j], x[1, j])
+        mg = prob._margins_only(geo, parts=False)
+        margins[:, j] = np.where(np.abs(mg) <= _ZERO_MARGIN, 0.0, mg)
+        out["a_w"][j], out["da1"][j], out["da2"][j] = geo["a_w"], geo["da1"], geo["da2"]
     out["margins"] = dict(zip(prob.names, margins))
     return out

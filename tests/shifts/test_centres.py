@@ -77,11 +77,9 @@ def test_a_batch_gives_each_pair_the_bits_of_its_own_solve():
         s = gd.optimize_shifts(int(z1[i]), int(z2[i]), "max_margin", m=2.0)
         if r["ok"][i]:
             assert (r["x1"][i], r["x2"][i]) == (s.x1, s.x2)
-            # the margins at that point: the same formulas on arrays (the batch) and on floats (one design)
-            assert {k: v[i] for k, v in r["margins"].items()} == pytest.approx(s.margins, rel=1e-14, abs=1e-15)
+            assert {k: float(v[i]) for k, v in r["margins"].items()} == s.margins
             geo = gd.GearPair(2.0, int(z1[i]), int(z2[i]), s.x1, s.x2).geometry()
-            assert r["a_w"][i] == pytest.approx(geo.a_w, rel=1e-14)
-            assert r["da1"][i] == pytest.approx(geo.da1, rel=1e-14)
+            assert (r["a_w"][i], r["da1"][i], r["da2"][i]) == (geo.a_w, geo.da1, geo.da2)
 
 
 def test_helical_pairs_and_other_checks():
@@ -134,9 +132,4 @@ def test_a_max_margin_drive_solves_its_pairs_in_batches_with_the_same_result(mon
     gear_kind.clear_shift_cache()
     alone = drive.optimize(6.0, 0.03, objective="max_margin", top=8)
     assert calls and batched.n_shift_solves == alone.n_shift_solves > 2
-    assert batched.table["reason"].tolist() == alone.table["reason"].tolist()
-    num = alone.table.select_dtypes("number").columns
-    assert batched.table.drop(columns=num).equals(alone.table.drop(columns=num))
-    # the same shifts; the margins and lengths at them evaluated on arrays (batch) or floats (one by one)
-    np.testing.assert_allclose(batched.table[num].to_numpy(float), alone.table[num].to_numpy(float), rtol=1e-13,
-                               atol=1e-15)
+    assert batched.table.equals(alone.table)
