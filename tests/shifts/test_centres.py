@@ -7,9 +7,12 @@ within a node's reach of the best node.
 """
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import geardesign as gd
 from geardesign.drives.stage_kinds import gear as gear_kind
+from geardesign.gears.checks import FEASIBILITY_TOL
 from geardesign.gears.mesh import Mesh
 from geardesign.shifts import centres
 from geardesign.shifts.problem import DEFAULT_BOUNDS, Problem
@@ -133,3 +136,21 @@ def test_a_max_margin_drive_solves_its_pairs_in_batches_with_the_same_result(mon
     alone = drive.optimize(6.0, 0.03, objective="max_margin", top=8)
     assert calls and batched.n_shift_solves == alone.n_shift_solves > 2
     assert batched.table.equals(alone.table)
+
+
+@settings(max_examples=15, deadline=None, derandomize=True, database=None)
+@given(z1=st.integers(8, 80), z2=st.integers(8, 300), beta=st.sampled_from([0.0, 15.0, 30.0]),
+       checks=st.sampled_from([None, {"sa_min": 0.4}, {"undercut": False}, {"eps_alpha_min": 1.1}]))
+def test_every_certified_optimum_holds_its_checks_and_no_node_beats_it(z1, z2, beta, checks):
+    r = centres.margin_centres([z1], [z2], 1.0, checks, beta_deg=beta)
+    if not r["ok"][0]:
+        return
+    assert min(v[0] for v in r["margins"].values()) >= -FEASIBILITY_TOL
+    p = Problem(Mesh(z1, z2, beta_deg=beta), checks, "max_margin", 1.0)
+    g = np.linspace(*DEFAULT_BOUNDS, 61)
+    x1, x2 = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
+    with np.errstate(all="ignore"):
+        geo = p.geo(x1, x2)
+        feasible = (p.margins(geo) >= 0).all(axis=0)
+        fun = np.where(feasible, np.nan_to_num(p.fun(geo), nan=-np.inf), -np.inf)
+    assert fun.max() <= r["fun"][0] + 1e-12
