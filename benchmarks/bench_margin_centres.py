@@ -7,7 +7,9 @@ The pairs are those `Drive.optimize(objective="max_margin")` solves on the drive
 * one by one: `optimize_shifts(z1, z2, "max_margin", m=3)` per pair (the same solver on one pair);
 * active-set search: the exact method's own KKT search per pair (the path before this solver; reference).
 
-Printed: CPU time of each, per pair, their ratios, and how far the answers are apart.
+Printed: CPU time of each, per pair, their ratios, and how far the answers are apart; then the same drive at
+other total ratios (u = 4, 6, 20: more of their pairs' optima are edges), max_margin's first call against
+min_size's.
 
     python benchmarks/bench_margin_centres.py [n_sample]
 """
@@ -19,6 +21,7 @@ import numpy as np
 from bench_drive_margin_bound import groups
 from bench_drive_optimize import make_drive
 import geardesign as gd
+from geardesign.drives.stage_kinds.gear import clear_shift_cache
 from geardesign.shifts import centres
 
 
@@ -58,6 +61,16 @@ def main():
     print(f"  active-set   {1e3 * per_old:.3f} ms a pair ({sample} pairs): batch {per_old / per_batch:.0f}x faster, "
           f"one by one {per_old / per_one:.1f}x")
     print(f"  largest |dx|: batch - one by one {dx_one:.1e}, batch - active-set search {dx_old:.1e}")
+    print("the drive at other total ratios, first call (CPU s):")
+    for u in (4.0, 6.0, 20.0):
+        (size, t_size), (margin, t_margin) = (first_call(drive, u, objective) for objective in ("min_size", "max_margin"))
+        print(f"  u = {u:g}: min_size {t_size:.3f} ({size.n_shift_solves} shift solves), max_margin {t_margin:.3f} "
+              f"({margin.n_shift_solves}): {t_margin / t_size:.2f}x")
+
+
+def first_call(drive, u, objective):
+    clear_shift_cache()
+    return cpu(lambda: drive.optimize(u, objective=objective))
 
 
 if __name__ == "__main__":
