@@ -42,7 +42,7 @@ from ..validate import require_int
 from .problem import _FD_STEP, DEFAULT_BOUNDS, Problem, _stack, _stack_pairs, validate_bounds
 from .result import Outcome
 
-__all__ = ["margin_centres", "solve", "START_N", "FINE_START_N", "PAIRS_MAX", "CHUNK", "LOW_PIECES", "MAX_STEPS",
+__all__ = ["margin_centres", "solve", "solve_pairs", "START_N", "FINE_START_N", "PAIRS_MAX", "CHUNK", "LOW_PIECES", "MAX_STEPS",
            "EDGE_STEPS", "EDGE_REACH"]
 
 START_N = 7          # start-grid nodes per axis: a spacing of 0.75 on the default window
@@ -81,7 +81,7 @@ def margin_centres(z1, z2, m: float = 1.0, checks=None, beta_deg: float = 0.0, f
     lo, hi = validate_bounds(bounds)
     prob = Problem(Mesh(int(z1[0]), int(z2[0]), beta_deg=beta_deg, face_width_mm=face_width_mm), checks,
                    "max_margin", m)
-    parts = [_solve_pairs(prob, z1[c], z2[c], lo, hi) for c in
+    parts = [solve_pairs(prob, z1[c], z2[c], lo, hi) for c in
              (slice(s, s + CHUNK) for s in range(0, z1.size, CHUNK))]     # each pair's arithmetic is its own
     x = np.concatenate([p[0] for p in parts], axis=1)
     return _results(prob, z1, z2, x, np.concatenate([p[1] for p in parts]))
@@ -92,7 +92,7 @@ def solve(prob: Problem, bounds):
     :class:`~geardesign.shifts.result.Outcome`; None where this method gives no certificate (the exact
     method's active-set search then solves it)."""
     lo, hi = bounds
-    x, ok, nit = _solve_pairs(prob, np.array([float(prob.z1)]), np.array([float(prob.z2)]), lo, hi)
+    x, ok, nit = solve_pairs(prob, np.array([float(prob.z1)]), np.array([float(prob.z2)]), lo, hi)
     if not ok[0]:
         return None
     return Outcome(x[:, 0], int(nit[0]), True, "converged: KKT system of the active set (the vertex or edge of "
@@ -100,7 +100,7 @@ def solve(prob: Problem, bounds):
                                                "and Newton")
 
 
-def _solve_pairs(prob: Problem, z1, z2, lo: float, hi: float):
+def solve_pairs(prob: Problem, z1, z2, lo: float, hi: float):
     """(points (2, n), certified (n,), steps (n,)) of the pairs (z1[i], z2[i]) of the problem's kind.
     Each pair's arithmetic is its own (elementwise): a pair gives the same bits alone or in a batch. A problem
     of fewer than three smooth parts (checks dropped) has no vertex to walk to: none is certified."""
@@ -140,6 +140,16 @@ def _walk(prob: Problem, z1, z2, x, started, radius0: float, radius_max: float):
         nit[i] += 1
         t0 = P[:, i].min(axis=0)
         d, t_lp = _lp_step(P[:, i], GP[:, :, i], radius[i])
+        # no gain in the linear model: a KKT vertex has converged; anywhere else the gain lies past pieces
+        # the programme leaves out (beyond the LOW_PIECES lowest), so it looks again in a smaller region
+        flat = ~(t_lp - t0 > 1e-15 * (1.0 + np.abs(t0)))
+        if flat.any():
+            f = i[flat]
+            kkt = _vertex_holds(P[:, f], GP[:, :, f])
+            done[f[kkt]] = True
+            radius[f[~kkt]] /= 8.0
+            alive[f[~kkt & (radius[f] < 1e-13)]] = False
+            i, d, t_lp, t0 = i[~flat], d[:, ~flat], t_lp[~flat], t0[~flat]
         step = np.abs(d).max(axis=0)
         x_try = x[:, i] + d
         P_try, GP_try = _stencil(prob, z1[i], z2[i], x_try)
