@@ -142,6 +142,21 @@ def _sliding_hint(prob: Problem, geo, success: bool) -> str:
             "equalises it" + (" on this a_w" if prob.x_sum is not None else ""))
 
 
+# The stationarity of an edge is read from central differences of gradients that are central differences
+# themselves (max_margin's pieces): it holds to ~1e-8, and so does x along the edge.
+_EDGE_ACCURACY = ("KKT point on an edge of two normalised margins, solved by Newton: x to ~1e-8 along the edge (its "
+                  "stationarity is read from central-difference gradients), fun to ~1e-14, checks hold to {tol:g}")
+
+
+def _edge_accuracy(prob: Problem, P, method: str, tol: float) -> str:
+    """What an exact max_margin optimum on an edge (two pieces active, not a vertex's three) is accurate to;
+    '' for any other result."""
+    if method != "exact" or prob.objective.kind != "margin" or prob.nvar != 2 or not np.isfinite(P).all():
+        return ""
+    edge = int(np.sum(P - P.min() <= 1e-9 * max(1.0, abs(P.min())))) == 2
+    return _EDGE_ACCURACY.format(tol=tol) if edge else ""
+
+
 def _result(prob: Problem, out: Outcome, method: str, tol: float, a_w, t0: float) -> ShiftResult:
     """The design at the method's point, evaluated once more on the float path, as a ShiftResult."""
     x1, x2 = (float(c[0]) for c in prob.xy(np.asarray(out.v)[None, :]))
@@ -175,5 +190,6 @@ def _result(prob: Problem, out: Outcome, method: str, tol: float, a_w, t0: float
         method=method, tol=tol, nit=out.nit, time_s=time.perf_counter() - t0, margins=mg, active=active,
         sensitivity=out.sensitivity, conflict=out.conflict, z1=prob.z1, z2=prob.z2, m=prob.m,
         x_sum_fixed=prob.x_sum, a_w=float(geo["a_w"]), eps_alpha=float(geo["eps_alpha"]),
-        sensitivity_sides=out.sides, accuracy=ACCURACY[method].format(tol=tol), beta_deg=prob.mesh.beta_deg,
+        sensitivity_sides=out.sides, accuracy=_edge_accuracy(prob, P, method, tol) or ACCURACY[method].format(tol=tol),
+        beta_deg=prob.mesh.beta_deg,
         internal=prob.mesh.internal)

@@ -166,3 +166,10 @@ def test_a_max_margin_atlas_gives_each_pair_its_own_solve():
         s = gd.optimize_shifts(int(row.z1), int(row.z2), "max_margin")
         assert (row.x1, row.x2) == (s.x1, s.x2)
         assert row.objective == pytest.approx(s.fun, abs=1e-12)
+
+
+@pytest.mark.parametrize("z1, z2, edge", [(41, 146, True), (34, 69, True), (25, 116, False), (17, 26, False)])
+def test_the_result_states_an_edges_accuracy(z1, z2, edge):
+    r = gd.optimize_shifts(z1, z2, "max_margin")
+    assert ("x to ~1e-8 along the edge" in r.accuracy) == edge
+    assert ("x to ~1e-12" in r.accuracy) == (not edge)
