@@ -173,3 +173,41 @@ def test_the_result_states_an_edges_accuracy(z1, z2, edge):
     r = gd.optimize_shifts(z1, z2, "max_margin")
     assert ("x to ~1e-8 along the edge" in r.accuracy) == edge
     assert ("x to ~1e-12" in r.accuracy) == (not edge)
+
+
+def _edge_maximum(z1, z2, x0, h=1e-4, n=21):
+    """An independent reference for an edge optimum from values alone: points of the edge (the two lowest
+    pieces equal, found by secant steps along its normal) at arc offsets within ±h of x0, a quadratic
+    fitted to their smallest piece, and the edge's point at the fit's top: (x, smallest piece there). The
+    fit's bias grows as h² (7e-7 in x at h = 2e-3, 1e-9 at 1e-4); rounding enters as ~1e-16/h."""
+    p = Problem(Mesh(z1, z2), None, "max_margin", 1.0)
+    pieces = lambda v: p.evaluate_point(np.asarray(v, dtype=float))[0]
+    a, b = np.argsort(pieces(x0))[:2]
+    f = lambda v: pieces(v)[a] - pieces(v)[b]
+    e = 1e-6
+    g = np.array([f(x0 + [e, 0]) - f(x0 - [e, 0]), f(x0 + [0, e]) - f(x0 - [0, e])])
+    normal = g / np.linalg.norm(g)
+    along = np.array([-normal[1], normal[0]])
+
+    def on_edge(s):
+        y, q0, q1 = x0 + s * along, 0.0, 1e-7
+        f0, f1 = f(y), f(y + q1 * normal)
+        for _ in range(30):
+            if f1 == f0 or abs(f1) < 1e-15:
+                break
+            q0, q1, f0 = q1, q1 - f1 * (q1 - q0) / (f1 - f0), f1
+            f1 = f(y + q1 * normal)
+        return y + q1 * normal
+
+    s = np.linspace(-h, h, n)
+    c2, c1, _ = np.polyfit(s, [pieces(on_edge(si)).min() for si in s], 2)
+    x = on_edge(-c1 / (2 * c2))
+    return x, pieces(x).min()
+
+
+@pytest.mark.parametrize("z1, z2", [e[:2] for e in EDGES])
+def test_an_edge_optimum_is_the_top_of_its_edge_found_from_values_alone(z1, z2):
+    r = gd.optimize_shifts(z1, z2, "max_margin")
+    x_ref, t_ref = _edge_maximum(z1, z2, np.array([r.x1, r.x2]))
+    assert np.abs(np.array([r.x1, r.x2]) - x_ref).max() <= 1e-8      # what r.accuracy states
+    assert r.fun == pytest.approx(t_ref, abs=1e-13)
