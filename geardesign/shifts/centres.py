@@ -12,9 +12,11 @@ evaluation of all pairs at five stencil points:
 2. sequential linear programming in a trust region: at the iterate the pieces are linearised and the
    linear programme "maximise t, piece_k + ∇piece_k · d >= t, |d_i| <= r" is solved by its vertices
    (:func:`_lp_step`); a step whose real gain falls short of a tenth of the promised one is refused and
-   the region shrinks, one that keeps its promise on the region's edge widens it. Where the optimum is a
-   vertex (three pieces equal, the usual case) the steps become Newton's on those three equations and
-   converge quadratically;
+   the region shrinks, one that keeps its promise on the region's edge widens it; a programme that sees
+   no gain at a vertex whose multipliers are not all >= 0 (the gain lies past the :data:`LOW_PIECES`
+   pieces it enumerates) is solved again in a region an eighth the size. Where the optimum is a vertex
+   (three pieces equal, the usual case) the steps become Newton's on those three equations and converge
+   quadratically;
 3. where the walk ends on an edge instead (two pieces equal, their gradients opposite: tip thickness
    against interference, common at ratios 2–10), Newton on that edge's KKT system (:func:`_edges`);
 4. a certificate at the point reached: the KKT conditions the exact method's own Newton stops on
@@ -47,7 +49,7 @@ __all__ = ["margin_centres", "solve", "solve_pairs", "START_N", "FINE_START_N", 
 
 START_N = 7          # start-grid nodes per axis: a spacing of 0.75 on the default window
 FINE_START_N = 31    # the grid of a pair with no feasible node on the coarse one (the exact method's START_N)
-PAIRS_MAX = 100_000  # tooth pairs in one call (a drive hands it MARGIN_AHEAD = 256): ~0.06 ms each
+PAIRS_MAX = 100_000  # tooth pairs in one call (a drive hands it MARGIN_AHEAD = 256): ~0.07 ms each
 CHUNK = 1024         # pairs walked together: the linear programmes' arrays stay ~10 MB
 START_POINTS = 65_536    # grid nodes evaluated at once while the start grids are searched
 LOW_PIECES = 5       # the lowest pieces whose triples are the linear programme's candidate vertices

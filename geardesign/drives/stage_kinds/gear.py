@@ -93,8 +93,9 @@ def _solve_shifts(m, z1, z2, checks_key, beta_deg, face_width_mm, objective) -> 
 
 def margin_solutions(stage: GearStage, pairs: list) -> None:
     """The ``max_margin`` shifts of many tooth pairs of a stage of known module solved together
-    (:func:`geardesign.shifts.centres.margin_centres`, the same optimum as one by one to ~1e-13 in x) into
-    the cache; a pair the batch does not certify is left for :func:`shift_solution` to solve alone."""
+    (:func:`geardesign.shifts.centres.margin_centres`: each pair's solution bit for bit the one
+    :func:`shift_solution` gives alone) into the cache; a pair the batch does not certify is left for
+    :func:`shift_solution` to solve alone."""
     from ...shifts.centres import margin_centres   # here: the shifts layer loads pandas
 
     head = (stage.m,)
@@ -305,7 +306,7 @@ class GearKind(ToothedKind):
     def solve_ahead(self, stage, objective: str) -> int:
         """Groups whose tooth pairs :meth:`solve_many` takes at once: a stage sized by its strength (one
         vectorised sizing call per flow), a stage whose shifts follow ``max_margin`` (one batch of Chebyshev
-        centres, ~3 ms of fixed cost and ~0.06 ms a pair); else none."""
+        centres, ~3 ms of fixed cost and ~0.07 ms a pair); else none."""
         if self._sized_together(stage):
             return LOOK_AHEAD
         margin = stage.m is not None and stage.free_shifts and _shift_objective(stage, objective) == "max_margin"
