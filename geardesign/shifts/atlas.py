@@ -373,9 +373,9 @@ def _atlas_rows(proto: Problem, Z1, Z2, setup: dict, progress) -> pd.DataFrame:
         # pairs with no feasible node (a sliver thinner than the grid) start from their least infeasible node
         fast = _polish(proto, Z1, Z2, np.where(np.isnan(start), least, start),
                        (bounds[1] - bounds[0]) / (_ATLAS_N - 1), bounds=bounds)
-    elif method == "exact" and proto.objective.kind == "margin" and not proto.costly_parts:
+    elif method == "exact" and centres.serves(proto):
         # max_margin: every pair's Chebyshev centre at once, as optimize_shifts finds each (the same bits)
-        x, ok, _ = centres.solve_pairs(proto, Z1.astype(float), Z2.astype(float), *bounds)
+        x, ok, _, _ = centres.solve_pairs(proto, Z1.astype(float), Z2.astype(float), *bounds)
         fast[ok] = x[:, ok].T
     solve_kw = dict(objective=setup["objective"], checks=setup["checks"], method=method, tol=setup["tol"],
                     rack=proto.rack, tip_shortening=setup["tip_shortening"], bounds=bounds,

@@ -41,10 +41,10 @@ from ..gears.checks import FEASIBILITY_TOL
 from ..gears.geometry import mesh_geometry, mesh_geometry_float
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from ..validate import require_int
-from .problem import _FD_STEP, DEFAULT_BOUNDS, Problem, _stack, _stack_pairs, validate_bounds
+from .problem import _FD_STEP, DEFAULT_BOUNDS, Problem, validate_bounds
 from .result import Outcome
 
-__all__ = ["margin_centres", "solve", "solve_pairs", "START_N", "FINE_START_N", "PAIRS_MAX", "CHUNK", "LOW_PIECES", "MAX_STEPS",
+__all__ = ["margin_centres", "serves", "solve", "solve_pairs", "START_N", "FINE_START_N", "PAIRS_MAX", "CHUNK", "LOW_PIECES", "MAX_STEPS",
            "EDGE_STEPS", "EDGE_REACH"]
 
 START_N = 7          # start-grid nodes per axis: a spacing of 0.75 on the default window
@@ -85,8 +85,15 @@ def margin_centres(z1, z2, m: float = 1.0, checks=None, beta_deg: float = 0.0, f
                    "max_margin", m)
     parts = [solve_pairs(prob, z1[c], z2[c], lo, hi) for c in
              (slice(s, s + CHUNK) for s in range(0, z1.size, CHUNK))]     # each pair's arithmetic is its own
-    x = np.concatenate([p[0] for p in parts], axis=1)
-    return _results(prob, z1, z2, x, np.concatenate([p[1] for p in parts]))
+    x, ok, _, fun = (np.concatenate([p[k] for p in parts], axis=-1) for k in range(4))
+    return _results(prob, z1, z2, x, ok, fun)
+
+
+def serves(prob: Problem) -> bool:
+    """True for the problems this solver takes: one external or internal pair's (not a planetary set's two
+    meshes), objective ``max_margin``, both shifts free, no costly checks (the strength chain)."""
+    return (type(prob) is Problem and prob.objective.kind == "margin" and prob.nvar == 2
+            and not prob.costly_parts)
 
 
 def solve(prob: Problem, bounds):
@@ -94,7 +101,7 @@ def solve(prob: Problem, bounds):
     :class:`~geardesign.shifts.result.Outcome`; None where this method gives no certificate (the exact
     method's active-set search then solves it)."""
     lo, hi = bounds
-    x, ok, nit = solve_pairs(prob, np.array([float(prob.z1)]), np.array([float(prob.z2)]), lo, hi)
+    x, ok, nit, _ = solve_pairs(prob, np.array([float(prob.z1)]), np.array([float(prob.z2)]), lo, hi)
     if not ok[0]:
         return None
     return Outcome(x[:, 0], int(nit[0]), True, "converged: KKT system of the active set (the vertex or edge of "
@@ -103,11 +110,13 @@ def solve(prob: Problem, bounds):
 
 
 def solve_pairs(prob: Problem, z1, z2, lo: float, hi: float):
-    """(points (2, n), certified (n,), steps (n,)) of the pairs (z1[i], z2[i]) of the problem's kind.
+    """(points (2, n), certified (n,), steps (n,), smallest piece there (n,), NaN where not certified) of the
+    pairs (z1[i], z2[i]) of the problem's kind.
     Each pair's arithmetic is its own (elementwise): a pair gives the same bits alone or in a batch. A problem
     of fewer than three smooth parts (checks dropped) has no vertex to walk to: none is certified."""
+    fun = np.full(z1.size, np.nan)
     if len(prob.part_check) < 3:
-        return np.full((2, z1.size), np.nan), np.zeros(z1.size, dtype=bool), np.zeros(z1.size, dtype=np.int64)
+        return np.full((2, z1.size), np.nan), np.zeros(z1.size, dtype=bool), np.zeros(z1.size, dtype=np.int64), fun
     x, t_start, single = _starts(prob, z1, z2, lo, hi, START_N)
     i = np.flatnonzero(~(t_start >= 0.0))
     if i.size:    # no feasible node on the coarse grid: the region is small; the exact method's own grid
@@ -117,11 +126,12 @@ def solve_pairs(prob: Problem, z1, z2, lo: float, hi: float):
     i = np.flatnonzero(done)
     ok = np.zeros(z1.size, dtype=bool)
     ok[i] = _vertex_holds(P[:, i], GP[:, :, i]) & _holds(P[:, i], x[:, i], t_start[i], lo, hi)
+    fun[ok] = P[:, ok].min(axis=0)
     i = np.flatnonzero(started & ~ok)
     if i.size:
-        x[:, i], ok[i], steps = _edges(prob, z1[i], z2[i], x[:, i], t_start[i], lo, hi)
+        x[:, i], ok[i], steps, fun[i] = _edges(prob, z1[i], z2[i], x[:, i], t_start[i], lo, hi)
         nit[i] += steps
-    return x, ok, nit
+    return x, ok, nit, fun
 
 
 def _walk(prob: Problem, z1, z2, x, started, radius0: float, radius_max: float):
@@ -160,7 +170,11 @@ def _walk(prob: Problem, z1, z2, x, started, radius0: float, radius_max: float):
             take = (gain >= 0.1 * promised) & (promised > 0) | (step <= 1e-9) & (gain >= -1e-13)
         j = i[take]
         x[:, j], P[:, j], GP[:, :, j] = x_try[:, take], P_try[:, take], GP_try[:, :, take]
-        done[j[step[take] <= _STEP_TOL]] = True
+        # a step below the tolerance ends the walk at a KKT vertex; elsewhere the region shrinks, as above
+        f = j[step[take] <= _STEP_TOL]
+        kkt = _vertex_holds(P[:, f], GP[:, :, f])
+        done[f[kkt]] = True
+        radius[f[~kkt]] /= 8.0
         # the model held: a step on the region's edge may grow it; else the region shrinks below the step
         grow = take & (gain >= 0.75 * promised) & (step >= 0.99 * radius[i])
         radius[i[grow]] = np.minimum(2.0 * radius[i[grow]], radius_max)
@@ -173,7 +187,7 @@ def _edges(prob: Problem, z1, z2, x, t_start, lo: float, hi: float):
     """Newton on the KKT system of an edge, from the walk's points x (2, n): the two lowest pieces equal and
     their gradients opposite (the stationarity of :func:`geardesign.shifts.kkt._stationarity`, its
     derivative by forward differences of the central-difference gradients, as the exact method starts
-    its own). Returns (x, certified)."""
+    its own). Returns (x, certified, steps, smallest piece where certified)."""
     n = z1.size
     cols = np.arange(n)
     P, G = _stencil(prob, z1, z2, x)
@@ -208,11 +222,13 @@ def _edges(prob: Problem, z1, z2, x, t_start, lo: float, hi: float):
         move = ~there & ~bad
         x[:, i[move]] = xi[:, move] + np.stack((d1, d2))[:, move]
     ok = live & done
+    fun = np.full(n, np.nan)
     i = np.flatnonzero(ok)
     if i.size:
         P, G = _stencil(prob, z1[i], z2[i], x[:, i])
         ok[i] = _edge_holds(P, G, a[i], b[i]) & _holds(P, x[:, i], t_start[i], lo, hi)
-    return x, ok, nit
+        fun[i] = np.where(ok[i], P.min(axis=0), np.nan)
+    return x, ok, nit, fun
 
 
 def _opposed(ga, gb):
@@ -221,13 +237,9 @@ def _opposed(ga, gb):
 
 
 def _pieces(prob: Problem, z1, z2, x1, x2):
-    """(normalised pieces (parts, n), raw part margins (parts, n), geometry) of the designs."""
+    """The normalised pieces (parts, n) of the designs (Problem.part_distances over many tooth pairs)."""
     with np.errstate(all="ignore"):
-        geo = mesh_geometry(prob.mesh.unchecked(z1, z2), prob.m, x1, x2, prob.full)
-        M = _stack(prob._margin_values(geo, parts=True), x1)
-        G = _stack_pairs(prob._margin_gradient_values(geo, parts=True), x1)
-        P = M / np.hypot(G[:, 0], G[:, 1])
-    return np.where(np.isfinite(P), P, -np.inf), M, geo
+        return prob.part_distances(mesh_geometry(prob.mesh.unchecked(z1, z2), prob.m, x1, x2, prob.full))
 
 
 def _starts(prob: Problem, z1, z2, lo: float, hi: float, nodes: int):
@@ -242,31 +254,24 @@ def _starts(prob: Problem, z1, z2, lo: float, hi: float, nodes: int):
     for s in range(0, n, step):
         c = slice(s, s + step)
         m = z1[c].size
-        P, _, _ = _pieces(prob, np.repeat(z1[c], k), np.repeat(z2[c], k), np.tile(g1, m), np.tile(g2, m))
+        P = _pieces(prob, np.repeat(z1[c], k), np.repeat(z2[c], k), np.tile(g1, m), np.tile(g2, m))
         low[c] = P.min(axis=0).reshape(m, k)
     best = np.argmax(low, axis=1)
     return np.stack((g1[best], g2[best])), low[np.arange(n), best], _one_piece(low >= 0.0, best, nodes)
 
 
 def _one_piece(feasible, best, nodes: int):
-    """(n,) True where the feasible nodes (n, nodes²) are all reached from the best one through feasible
-    neighbours (8-connected, as the exact method tells the pieces of its grid apart)."""
+    """(n,) True where the feasible nodes (n, nodes²) are one piece with the best one: 8-connected, as the exact
+    method tells the pieces of its grid apart (:func:`~geardesign.shifts.nodes.grid_starts`); every pair's grid
+    labelled in one call, no piece reaching across pairs."""
+    from scipy import ndimage
+
     feasible = feasible.reshape(-1, nodes, nodes)
-    reached = np.zeros_like(feasible)
-    reached.reshape(len(best), -1)[np.arange(len(best)), best] = True
-    reached &= feasible
-    for _ in range(nodes * nodes):
-        rows = reached.copy()
-        rows[:, 1:] |= reached[:, :-1]
-        rows[:, :-1] |= reached[:, 1:]
-        grown = rows.copy()
-        grown[:, :, 1:] |= rows[:, :, :-1]
-        grown[:, :, :-1] |= rows[:, :, 1:]
-        grown &= feasible
-        if (grown == reached).all():
-            break
-        reached = grown
-    return (reached == feasible).all(axis=(1, 2))
+    within = np.zeros((3, 3, 3), dtype=bool)
+    within[1] = True
+    labels = ndimage.label(feasible, structure=within)[0].reshape(len(best), -1)
+    own = labels[np.arange(len(best)), best]
+    return ((labels == own[:, None]) | (labels == 0)).all(axis=1) & (own > 0)
 
 
 def _stencil(prob: Problem, z1, z2, x):
@@ -275,7 +280,7 @@ def _stencil(prob: Problem, z1, z2, x):
     h = _FD_STEP
     x1 = np.concatenate((x[0], x[0] + h, x[0] - h, x[0], x[0]))
     x2 = np.concatenate((x[1], x[1], x[1], x[1] + h, x[1] - h))
-    P, _, _ = _pieces(prob, np.tile(z1, 5), np.tile(z2, 5), x1, x2)
+    P = _pieces(prob, np.tile(z1, 5), np.tile(z2, 5), x1, x2)
     P = P.reshape(P.shape[0], 5, -1)
     with np.errstate(invalid="ignore"):
         G = np.stack(((P[:, 1] - P[:, 2]) / (2 * h), (P[:, 3] - P[:, 4]) / (2 * h)), axis=1)
@@ -356,18 +361,15 @@ def _holds(P, x, t_start, lo: float, hi: float):
     return (t >= -FEASIBILITY_TOL) & (t >= t_start - 1e-9) & ((x >= lo) & (x <= hi)).all(axis=0)
 
 
-def _results(prob: Problem, z1, z2, x, ok) -> dict:
+def _results(prob: Problem, z1, z2, x, ok, fun) -> dict:
     """The certified points' geometry and margins (per check), NaN elsewhere. They are read as one design
     is, on the float path (:func:`~geardesign.gears.geometry.mesh_geometry_float`, what ``optimize_shifts``
     reports and ``GearPair.geometry`` gives), so that a pair's figures do not depend on how it was solved."""
     i = np.flatnonzero(ok)
-    out = {k: np.full(z1.size, np.nan) for k in ("x1", "x2", "fun", "a_w", "da1", "da2")}
-    out["ok"] = ok
+    out = {k: np.full(z1.size, np.nan) for k in ("x1", "x2", "a_w", "da1", "da2")}
+    out["ok"], out["fun"] = ok, fun
+    out["x1"][i], out["x2"][i] = x[0, i], x[1, i]
     margins = np.full((len(prob.checks), z1.size), np.nan)
-    if i.size:
-        P, _, _ = _pieces(prob, z1[i], z2[i], x[0, i], x[1, i])
-        out["fun"][i] = P.min(axis=0)
-        out["x1"][i], out["x2"][i] = x[0, i], x[1, i]
     for j in i:
         geo = mesh_geometry_float(prob.mesh.unchecked(int(z1[j]), int(z2[j])), prob.m, x[0, j], x[1, j])
         mg = prob._margins_only(geo, parts=False)

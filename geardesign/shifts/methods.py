@@ -9,7 +9,6 @@ from typing import Callable
 
 from ..errors import GearDesignError
 from . import centres, grid, kkt, scp
-from .problem import Problem
 from .starts import feasible_starts, start_nodes
 
 __all__ = ["Method", "register_method", "METHOD_TABLE", "METHODS", "DEFAULT_TOL", "ACCURACY"]
@@ -55,9 +54,7 @@ def _solve_convex(prob, bounds, tol, grid_n=None, start=None):
 
 
 def _solve_exact(prob, bounds, tol, grid_n=None, start=None):
-    # one pair's Chebyshev centre as a drive solves many (a planetary set's problem is two meshes: not here)
-    if (type(prob) is Problem and prob.objective.kind == "margin" and prob.nvar == 2 and start is None
-            and not prob.costly_parts):
+    if start is None and centres.serves(prob):     # one pair's Chebyshev centre, as a drive solves many
         out = centres.solve(prob, bounds)
         if out is not None:
             return out

@@ -178,16 +178,21 @@ class Problem:
         """(P, 2, ...) gradients of :meth:`pieces`."""
         return _stack_pairs(self._piece_gradient_values(geo), geo["_x1"])
 
-    def _normalised(self, geo) -> np.ndarray:
-        """(K, ...) each check's first-order distance in x to its boundary: the smallest over its
-        smooth parts of part/‖∇part‖, the pieces the single-design path maximises (a check of two
-        parts, ρ_p >= ρ_l and ρ_p >= 0, has two boundaries; the margin's active part alone would
-        miss the other's)."""
+    def part_distances(self, geo) -> np.ndarray:
+        """(parts, ...) each smooth part's first-order distance in x to its boundary, part/‖∇part‖
+        (−inf where undefined): the pieces ``max_margin`` maximises."""
         M = _stack(self._margin_values(geo, parts=True), geo["_x1"])
         G = _stack_pairs(self._margin_gradient_values(geo, parts=True), geo["_x1"])
         with np.errstate(invalid="ignore", divide="ignore"):
             P = M / np.sqrt(G[:, 0] ** 2 + G[:, 1] ** 2)
-        P = np.where(np.isfinite(P), P, -np.inf)
+        return np.where(np.isfinite(P), P, -np.inf)
+
+    def _normalised(self, geo) -> np.ndarray:
+        """(K, ...) each check's first-order distance in x to its boundary: the smallest over its
+        smooth parts of :meth:`part_distances`, the pieces the single-design path maximises (a check of
+        two parts, ρ_p >= ρ_l and ρ_p >= 0, has two boundaries; the margin's active part alone would
+        miss the other's)."""
+        P = self.part_distances(geo)
         if P.shape[0] == len(self.checks):
             return P
         owner = np.asarray(self.part_check)

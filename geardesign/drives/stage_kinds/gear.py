@@ -67,9 +67,14 @@ def clear_shift_cache() -> None:
     _SOLVED.clear()
 
 
-def shift_solution(m, z1, z2, checks_key, beta_deg, face_width_mm, objective) -> dict:
-    """The shifts of one tooth pair by optimize_shifts (exact), with the pair's geometry and margins."""
-    key = (m, z1, z2, checks_key, beta_deg, face_width_mm, objective)
+def _pair_key(stage: GearStage, z1: int, z2: int, objective: str) -> tuple:
+    """What a tooth pair's shift solution depends on: (m, z1, z2, checks, β, b, shift objective)."""
+    return stage.m, int(z1), int(z2), stage.checks_key(), stage.beta_deg, stage.face_width_mm, objective
+
+
+def shift_solution(key: tuple) -> dict:
+    """The shifts of one tooth pair (its :func:`_pair_key`) by optimize_shifts (exact), with the pair's geometry
+    and margins."""
     sol = _SOLVED.get(key)
     return sol if sol is not None else _SOLVED.put(key, _solve_shifts(*key))
 
@@ -98,18 +103,17 @@ def margin_solutions(stage: GearStage, pairs: list) -> None:
     :func:`shift_solution` to solve alone."""
     from ...shifts.centres import margin_centres   # here: the shifts layer loads pandas
 
-    head = (stage.m,)
-    tail = (stage.checks_key(), stage.beta_deg, stage.face_width_mm, "max_margin")
-    todo = list(dict.fromkeys(p for p in pairs if _SOLVED.get(head + p + tail) is None))
+    todo = list(dict.fromkeys(k for k in (_pair_key(stage, z1, z2, "max_margin") for z1, z2 in pairs)
+                              if _SOLVED.get(k) is None))
     if len(todo) < 2:
         return
-    z1, z2 = np.array(todo).T
+    z1, z2 = np.array([k[1:3] for k in todo]).T
     try:
-        r = margin_centres(z1, z2, stage.m, dict(tail[0]) or None, stage.beta_deg, stage.face_width_mm)
+        r = margin_centres(z1, z2, stage.m, dict(stage.checks_key()) or None, stage.beta_deg, stage.face_width_mm)
     except GearDesignError:    # one by one, each with its own reason
         return
     for j in np.flatnonzero(r["ok"]):
-        _SOLVED.put(head + todo[j] + tail, dict(
+        _SOLVED.put(todo[j], dict(
             feasible=True, reason="", x1=float(r["x1"][j]), x2=float(r["x2"][j]),
             margins={k: float(v[j]) for k, v in r["margins"].items()},
             a_w=float(r["a_w"][j]), da1=float(r["da1"][j]), da2=float(r["da2"][j])))
@@ -132,8 +136,7 @@ def gear_solution(stage: GearStage, z1: int, z2: int, objective: str) -> dict:
         failing = [k for k, v in margins.items() if v < -MARGIN_TOL]
         return dict(feasible=not failing, reason=("fails " + ", ".join(failing)) if failing else "", x1=pair.x1,
                     x2=pair.x2, margins=margins, a_w=geo.a_w, da1=geo.da1, da2=geo.da2)
-    return shift_solution(stage.m, int(z1), int(z2), stage.checks_key(), stage.beta_deg, stage.face_width_mm,
-                          _shift_objective(stage, objective))
+    return shift_solution(_pair_key(stage, z1, z2, _shift_objective(stage, objective)))
 
 
 def _base_circle_bounds(stage: GearStage, m: float, z1, z2):
