@@ -34,6 +34,7 @@ __all__ = [
     "chain_catalog",
     "module_series",
     "center_distance_series",
+    "preferred_numbers",
     "key_lengths_mm",
 ]
 
@@ -131,6 +132,9 @@ SCHEMAS: dict[str, Schema] = {
     "center_distances": Schema(
         "center_distances", (_f("a_w_mm"), Column("series", "int", positive=True)), increasing=("a_w_mm",),
         description="standard centre distances (GOST 2185-66)"),
+    "preferred_numbers": Schema(
+        "preferred_numbers", (_f("value"), Column("series", "int", positive=True)), increasing=("value",),
+        description="preferred numbers 1.00 ... 9.50 (ISO 3 basic series R10, R20, R40: the smallest series holding each)"),
     "motors": Schema(
         "motors",
         (Column("designation", "str"), _f("power_kw"), Column("poles", "int", positive=True), _f("sync_speed_rpm"),
@@ -159,6 +163,7 @@ BUNDLED: dict[str, tuple[str, str, str | None]] = {
     "key_lengths": ("key_lengths.csv", "key_lengths", None),
     "modules": ("modules_iso54.csv", "modules", None),
     "center_distances": ("center_distances_gost2185.csv", "center_distances", None),
+    "preferred_numbers": ("preferred_numbers_iso3.csv", "preferred_numbers", None),
     "motors_air": ("motors_air.csv", "motors", None),
     "motors_soga_mt3": ("motors_soga_mt3.csv", "motors", None),
     "motors_motive_delphi": ("motors_motive_delphi.csv", "motors", None),
@@ -343,6 +348,10 @@ def _row_rules(frame: pd.DataFrame, schema: Schema, path, lines) -> None:
             fail(frame[col].to_numpy() > top, col, f"a torque ratio above {top:g} is not a catalogue motor's")
     elif schema.kind in ("modules", "center_distances"):
         fail(~frame["series"].isin([1, 2]).to_numpy(), "series", "series must be 1 or 2")
+    elif schema.kind == "preferred_numbers":
+        fail(~frame["series"].isin([10, 20, 40]).to_numpy(), "series", "series must be 10, 20 or 40 (R10, R20, R40)")
+        value = frame["value"].to_numpy()
+        fail((value < 1.0) | (value >= 10.0), "value", "preferred numbers of one decade lie in [1, 10)")
 
 
 def _schema_for(frame_columns, kind: str | None, path) -> Schema:
@@ -489,6 +498,24 @@ def center_distance_series(series=(1, 2), min_mm: float | None = None, max_mm: f
     lo = -np.inf if min_mm is None else min_mm
     hi = np.inf if max_mm is None else max_mm
     return values[(values >= lo) & (values <= hi)]
+
+
+def preferred_numbers(series: str = "R20", min_value: float = 1.0, max_value: float = 1e4) -> np.ndarray:
+    """The ISO 3 preferred numbers of basic series ``series`` ("R10", "R20" or "R40") in [min_value, max_value],
+    sorted: the table's decade 1.00 ... 9.50 times the powers of ten.
+
+    >>> preferred_numbers("R20", 100, 200).tolist()
+    [100.0, 112.0, 125.0, 140.0, 160.0, 180.0, 200.0]
+    """
+    names = {"R10": (10,), "R20": (10, 20), "R40": (10, 20, 40)}
+    if series not in names:
+        raise GearDesignError(f"series must be one of {', '.join(names)}, got {series!r}")
+    frame = load_catalog("preferred_numbers")
+    decade = frame.loc[frame["series"].isin(names[series]), "value"].to_numpy(dtype=float)
+    lo, hi = int(np.floor(np.log10(min_value))) - 1, int(np.ceil(np.log10(max_value))) + 1
+    # round to the table's two decimals after scaling, so that 1.12 × 100 is 112 exactly
+    values = np.concatenate([np.round(decade * 10.0 ** k, max(2 - k, 0)) for k in range(lo, hi + 1)])
+    return np.sort(values[(values >= min_value) & (values <= max_value)])
 
 
 def key_lengths_mm() -> np.ndarray:

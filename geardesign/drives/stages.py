@@ -141,6 +141,16 @@ class GearStage:
 
     ``life_h`` (None: endurance, Z_NT = Y_NT = 1) and ``application_factor`` (K_A) are the load case of
     the strength checks of a stage with a ``material``, as in :class:`geardesign.gears.strength.Load`.
+
+    The housing and the shop (:mod:`geardesign.drives.housing`, :mod:`geardesign.gears.manufactured`):
+    ``center_distance`` is "free" (the shifts' objective sets it), a standard series ("gost2185", the default of
+    a stage sized by its load; "gost2185-1", "R10", "R20", "R40": the smallest standard a_w whose shift sum lies
+    in the reducer window, the objective splitting it), or a housing's a_w in mm. ``shift_bounds`` is the window
+    of x1 and x2 (default (−1.2, 1.2) for a stage sized by its load, else optimize_shifts' own).
+    ``mating_type`` (GOST 1643-81 H … A; default "B" for a stage sized by its load, "none" otherwise) makes
+    every design hold its geometric checks also at its manufactured state (teeth thinned by their allowances,
+    the housing within its centre-distance allowance); the margins there are ``<check>_manufactured``.
+    ``strength`` holds further options of the strength model (as ``pair_strength`` takes them).
     """
 
     m: float | None = None
@@ -160,6 +170,10 @@ class GearStage:
     material: object = None
     life_h: float | None = None
     application_factor: float = 1.0
+    center_distance: object = None
+    shift_bounds: tuple | None = None
+    mating_type: str | None = None
+    strength: dict | None = None
 
     kind = "gear"
 
@@ -201,6 +215,24 @@ class GearStage:
                 "life_h", self.life_h, *LIFE_RANGE_H, lo_open=True, unit="h")))
         if self.x1 is not None and self.m is not None:
             self.fixed_pair()          # a fixed pair that cannot be built is refused here
+        from .housing import check_center_distance
+        object.__setattr__(self, "center_distance", check_center_distance(self.center_distance))
+        if self.shift_bounds is not None:
+            lo, hi = _range("shift_bounds", self.shift_bounds, -3.0, 3.0)
+            if not lo < hi:
+                raise GearDesignError(f"shift_bounds must be (min, max) with min < max, got {self.shift_bounds!r}")
+            object.__setattr__(self, "shift_bounds", (lo, hi))
+        if self.mating_type is not None:
+            from ..gears.backlash import GOST1643_TYPES
+            if self.mating_type not in GOST1643_TYPES + ("none",):
+                raise GearDesignError(f"mating_type must be one of {', '.join(GOST1643_TYPES)} (GOST 1643-81) or "
+                                      f"'none', got {self.mating_type!r}")
+        if self.strength is not None:
+            if not isinstance(self.strength, dict):
+                raise GearDesignError(f"strength must be a dict of pair_strength options, got "
+                                      f"{type(self.strength).__name__}")
+            from ..gears.strength.chain import check_options
+            check_options(self.strength)
         if self.shift_objective is not None:
             from ..shifts.objectives import OBJECTIVES   # here: the shifts layer loads pandas
             if self.shift_objective not in OBJECTIVES:
@@ -210,6 +242,34 @@ class GearStage:
     @property
     def free_shifts(self) -> bool:
         return self.x1 is None
+
+    @property
+    def sized(self) -> bool:
+        """True when the load sizes the stage (no module given)."""
+        return self.m is None
+
+    @property
+    def housing(self):
+        """The centre distance rule in force: "free", a series name or a_w in mm (None: by the stage)."""
+        if self.center_distance is None:
+            return "gost2185" if self.sized else "free"
+        return self.center_distance
+
+    @property
+    def bounds(self):
+        """The window of x1 and x2 in force (None: optimize_shifts' own)."""
+        if self.shift_bounds is None:
+            from .housing import REDUCER_SHIFT_BOUNDS
+            return REDUCER_SHIFT_BOUNDS if self.sized else None
+        return self.shift_bounds
+
+    @property
+    def fit(self):
+        """The GOST 1643-81 mating type of the manufactured state in force, or None."""
+        if self.mating_type is None:
+            from ..gears.manufactured import DEFAULT_MATING_TYPE
+            return DEFAULT_MATING_TYPE if self.sized else None
+        return None if self.mating_type == "none" else self.mating_type
 
     @property
     def width_mm(self) -> float:

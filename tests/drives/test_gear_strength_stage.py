@@ -147,10 +147,11 @@ def test_a_bad_stage_load_case_is_refused_by_name(kw, words):
 
 
 def test_the_searchs_sized_geometry_is_the_pairs_own_at_the_chosen_module():
-    """The search solves a sized spur stage's shifts once (at m = 1: every geometric check is a margin in
-    module units) and scales the lengths: the table's shifts and centre distance equal those of
+    """With a free housing the search solves a sized spur stage's shifts once (at m = 1: every geometric check
+    is a margin in module units) and scales the lengths: the table's shifts and centre distance equal those of
     optimize_shifts and GearPair at the chosen module and width."""
-    stages = [gd.GearStage(None, z1_range=(19, 19), ratio_range=(3, 3.2), material="42CrMo4")]
+    stages = [gd.GearStage(None, z1_range=(19, 19), ratio_range=(3, 3.2), material="42CrMo4", center_distance="free",
+                           shift_bounds=(-1.5, 3.0), mating_type="none")]
     r = gd.Drive(power_kw=11, n_in_rpm=1460, stages=stages).optimize(3.1, 0.03, top=3)
     assert r.success
     for _, row in r.table[r.table["feasible"]].iterrows():
@@ -159,6 +160,39 @@ def test_the_searchs_sized_geometry_is_the_pairs_own_at_the_chosen_module():
         assert (row["gear.x1"], row["gear.x2"]) == pytest.approx((o.x1, o.x2), abs=1e-12)
         geo = gd.GearPair(m, 19, z2, o.x1, o.x2, face_width_mm=b).geometry()
         assert row["gear.a_w_mm"] == pytest.approx(geo.a_w, rel=1e-12)
+
+
+def test_a_sized_stage_sits_on_a_standard_center_distance_with_shifts_a_shop_can_cut():
+    """Issue 35 §2-4: a stage sized by its load (defaults) puts a_w on GOST 2185-66, its shifts split the x-sum
+    that a_w fixes (balanced specific sliding, optimize_shifts' rule for a fixed x-sum) within |x| <= 1.2, and
+    every check holds at the manufactured state (teeth thinned by their GOST 1643 B allowances, the housing at
+    either end of its centre-distance allowance)."""
+    from geardesign.catalogs import center_distance_series
+    from geardesign.gears.manufactured import manufactured_margins, shop_allowances
+
+    stages = [gd.GearStage(None, z1_range=(17, 21), ratio_range=(3, 3.3), material="42CrMo4")]
+    r = gd.Drive(power_kw=11, n_in_rpm=1460, stages=stages).optimize(3.15, 0.05, top=4)
+    assert r.success
+    series = center_distance_series((1, 2))
+    for _, row in r.table[r.table["feasible"]].iterrows():
+        m, z1, z2, a_w = row["gear.m"], int(row["gear.z1"]), int(row["gear.z2"]), row["gear.a_w_mm"]
+        assert np.min(np.abs(series - a_w)) < 1e-9 * a_w                 # a standard a_w, to rounding
+        assert -1.2 <= row["gear.x1"] <= 1.2 and -1.2 <= row["gear.x2"] <= 1.2
+        o = optimize_shifts(z1, z2, "balanced_sliding", None, "exact", m=m, a_w=float(np.round(a_w)),
+                            bounds=(-1.2, 1.2))
+        assert (row["gear.x1"], row["gear.x2"]) == pytest.approx((o.x1, o.x2), abs=1e-9)
+        pair = gd.GearPair(m, z1, z2, o.x1, o.x2)
+        table = pair.checks(jamming=False)
+        shop = manufactured_margins(pair, table, shop_allowances(pair))
+        assert min(shop.values()) >= -1e-9                                # holds on the shop floor
+        # and the allowances really thin the teeth: every moved margin is below its nominal one
+        nominal = dict(zip(table["check"], table["margin"]))
+        assert shop["tip_thickness1"] < nominal["tip_thickness1"] and shop["contact_ratio"] < nominal["contact_ratio"]
+    best = r.best                                   # the rank-1 design analysed again, fixed
+    assert best.success and best.min_margin == pytest.approx(r.table["min_margin"].iloc[0], abs=1e-9)
+    assert any(k.endswith("_manufactured") for k in best.checks["check"])
+    stage = best.drive.stages[0]
+    assert stage.center_distance == pytest.approx(r.table["gear.a_w_mm"].iloc[0], rel=1e-9)
 
 
 def test_a_helical_stage_with_a_total_contact_ratio_check_is_sized():

@@ -29,7 +29,8 @@ from ...validate import one_number, require_range
 from ..limits import LOOK_AHEAD, MARGIN_AHEAD, MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
 from .base import ToothedKind
-from .gear_strength import strength_margins, strength_sizes, strength_sizes_many, widest_width
+from .gear_strength import _widths, strength_margins, strength_sizes, strength_sizes_many, widest_width
+from ...gears.center_distance import x_sum_from_center_distance
 
 __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution", "margin_solutions", "clear_shift_cache"]
 
@@ -68,8 +69,25 @@ def clear_shift_cache() -> None:
 
 
 def _pair_key(stage: GearStage, z1: int, z2: int, objective: str) -> tuple:
-    """What a tooth pair's shift solution depends on: (m, z1, z2, checks, β, b, shift objective)."""
-    return stage.m, int(z1), int(z2), stage.checks_key(), stage.beta_deg, stage.face_width_mm, objective
+    """What a tooth pair's shift solution depends on: (m, z1, z2, checks, β, b, shift objective, a_w of the
+    housing or None, the shift window or None, the mating type of the manufactured state or None)."""
+    a_w = housing_center_distance(stage, z1, z2)
+    if a_w is not None and objective in ("max_x_sum", "min_specific_pressure"):
+        objective = "balanced_sliding"     # a housing fixes the x-sum: the objective splits it (optimize_shifts)
+    return (stage.m, int(z1), int(z2), stage.checks_key(), stage.beta_deg, stage.face_width_mm, objective, a_w,
+            stage.bounds, stage.fit)
+
+
+def housing_center_distance(stage: GearStage, z1: int, z2: int):
+    """The a_w [mm] a stage of known module puts the pair at: None (free), the housing's, or the smallest
+    standard one of its series whose x-sum lies in the reducer window (NaN: none does)."""
+    rule = stage.housing
+    if rule == "free":
+        return None
+    if not isinstance(rule, str):
+        return float(rule)
+    from ..housing import standard_center_distance
+    return float(standard_center_distance(stage.m, int(z1), int(z2), rule, stage.beta_deg))
 
 
 def shift_solution(key: tuple) -> dict:
@@ -79,21 +97,46 @@ def shift_solution(key: tuple) -> dict:
     return sol if sol is not None else _SOLVED.put(key, _solve_shifts(*key))
 
 
-def _solve_shifts(m, z1, z2, checks_key, beta_deg, face_width_mm, objective) -> dict:
+def _solve_shifts(m, z1, z2, checks_key, beta_deg, face_width_mm, objective, a_w=None, bounds=None,
+                  fit=None) -> dict:
     from ...gears.pair import GearPair   # here: the pair's checks and the solvers load pandas and scipy
     from ...shifts.optimize import optimize_shifts
+    from ...shifts.problem import DEFAULT_BOUNDS
 
     checks = dict(checks_key) or None
+    if a_w is not None and not math.isfinite(a_w):
+        return dict(feasible=False, reason="no standard centre distance gives a shift sum in the reducer window "
+                                           "(geardesign.drives.housing.REDUCER_X_SUM_WINDOW)", margins={})
     try:
-        r = optimize_shifts(int(z1), int(z2), objective, checks, "exact", m=m, beta_deg=beta_deg, face_width_mm=face_width_mm)
+        r = optimize_shifts(int(z1), int(z2), objective, checks, "exact", m=m, beta_deg=beta_deg,
+                            face_width_mm=face_width_mm, a_w=a_w, bounds=DEFAULT_BOUNDS if bounds is None else bounds)
     except GearDesignError as exc:
         return dict(feasible=False, reason=str(exc), margins={})
     if not (r.success and not r.conflict):
         why = "conflict: " + ", ".join(r.conflict) if r.conflict else r.message
         return dict(feasible=False, reason=why, margins=dict(r.margins))
-    geo = GearPair(m, int(z1), int(z2), r.x1, r.x2, beta_deg=beta_deg, face_width_mm=face_width_mm).geometry()
-    return dict(feasible=True, reason="", x1=r.x1, x2=r.x2, margins=dict(r.margins), a_w=geo.a_w, da1=geo.da1,
-                da2=geo.da2)
+    pair = GearPair(m, int(z1), int(z2), r.x1, r.x2, beta_deg=beta_deg, face_width_mm=face_width_mm)
+    geo = pair.geometry()
+    sol = dict(feasible=True, reason="", x1=r.x1, x2=r.x2, margins=dict(r.margins), a_w=geo.a_w, da1=geo.da1,
+               da2=geo.da2, a_w_housing=a_w)
+    return _with_shop(sol, pair, checks, fit) if fit is not None else sol
+
+
+def _with_shop(sol: dict, pair, checks, fit: str) -> dict:
+    """``sol`` with the margins of its manufactured state (``<check>_manufactured``, GOST 1643-81 mating type
+    ``fit``), failing when one of them fails."""
+    from ...gears.manufactured import manufactured_margins, shop_allowances
+
+    allow = shop_allowances(pair, fit)
+    table = pair.checks(**{"jamming": False, **(checks or {})})
+    shop = {f"{k}_manufactured": v for k, v in manufactured_margins(pair, table, allow).items()
+            if v != sol["margins"].get(k)}
+    failing = [k for k, v in shop.items() if not v >= -MARGIN_TOL]
+    out = dict(sol, margins={**sol["margins"], **shop}, allowances=allow)
+    if failing:
+        why = "fails at the manufactured state: " + ", ".join(failing)
+        out.update(feasible=False, reason=f"{sol['reason']}; {why}" if sol["reason"] else why)
+    return out
 
 
 def margin_solutions(stage: GearStage, pairs: list) -> None:
@@ -103,6 +146,8 @@ def margin_solutions(stage: GearStage, pairs: list) -> None:
     :func:`shift_solution` to solve alone."""
     from ...shifts.centres import margin_centres   # here: the shifts layer loads pandas
 
+    if stage.housing != "free" or stage.bounds is not None or stage.fit is not None:
+        return    # the batch solves free shifts in the default window: these pairs are solved one by one
     todo = list(dict.fromkeys(k for k in (_pair_key(stage, z1, z2, "max_margin") for z1, z2 in pairs)
                               if _SOLVED.get(k) is None))
     if len(todo) < 2:
@@ -134,8 +179,9 @@ def gear_solution(stage: GearStage, z1: int, z2: int, objective: str) -> dict:
         geo = pair.geometry()
         margins = dict(zip(table["check"], table["margin"].astype(float)))
         failing = [k for k, v in margins.items() if v < -MARGIN_TOL]
-        return dict(feasible=not failing, reason=("fails " + ", ".join(failing)) if failing else "", x1=pair.x1,
-                    x2=pair.x2, margins=margins, a_w=geo.a_w, da1=geo.da1, da2=geo.da2)
+        sol = dict(feasible=not failing, reason=("fails " + ", ".join(failing)) if failing else "", x1=pair.x1,
+                   x2=pair.x2, margins=margins, a_w=geo.a_w, da1=geo.da1, da2=geo.da2)
+        return _with_shop(sol, pair, stage.checks, stage.fit) if stage.fit is not None else sol
     return shift_solution(_pair_key(stage, z1, z2, _shift_objective(stage, objective)))
 
 
@@ -187,6 +233,77 @@ def _scale_free_checks(checks_key: tuple, helical: bool) -> bool:
 
     free = (Undercut, Interference, Jamming, TipThickness, ContactRatio) + (() if helical else (TotalContactRatio,))
     return all(type(c) in free for c in resolve_checks(dict(checks_key) or None))
+
+
+CONTACT_SCREEN = 0.1   # a module whose contact margin at the even split is below −0.1 is not solved
+STANDARD_TRIES = 2     # modules per pair and round of the standard-housing sizing
+
+
+_STANDARD_CACHE: dict = {}
+
+
+def _standard_modules(stage: GearStage, z1: int, z2: int) -> tuple:
+    """(modules, a_w, b for the shifts' ε_β or None, widest width, x_Σ) of the series modules that put z1/z2 on a
+    standard centre distance of the stage's series (arrays; kept, they do not depend on the load)."""
+    key = (stage.housing, stage.beta_deg, stage.face_width_mm, stage.z1_range, int(z1), int(z2))
+    hit = _STANDARD_CACHE.get(key)
+    if hit is None:
+        from ..housing import standard_center_distance
+
+        series = _series()
+        a_w = np.asarray(standard_center_distance(series, z1, z2, stage.housing, stage.beta_deg), dtype=float)
+        have = np.isfinite(a_w)
+        ms, a_w = series[have], a_w[have]
+        b_max = np.array([widest_width(stage, z1, m) for m in ms])
+        b_ref = ([stage.face_width_mm] * ms.size if stage.face_width_mm is not None or stage.beta_deg == 0.0
+                 else list(b_max))          # a helical stage's ε_β: the widest width's
+        x_sum = np.asarray(x_sum_from_center_distance(ms, z1, z2, a_w, beta_deg=stage.beta_deg), dtype=float)
+        hit = _STANDARD_CACHE.setdefault(key, (ms, a_w, b_ref, b_max, np.atleast_1d(x_sum)))
+    return hit
+
+
+def _housing_key(stage: GearStage, m: float, z1: int, z2: int, a_w: float, objective: str, b_ref) -> tuple:
+    """The solution key of a sized stage's pair at module m on the standard a_w (as :func:`_pair_key` builds it
+    for the stage at that module and housing, without building the stage)."""
+    obj = _shift_objective(stage, objective)
+    if obj in ("max_x_sum", "min_specific_pressure"):
+        obj = "balanced_sliding"
+    return (float(m), int(z1), int(z2), stage.checks_key(), stage.beta_deg, b_ref, obj, float(a_w), stage.bounds,
+            stage.fit)
+
+
+def _strength_first_fits(stage, pairs, batch, flow):
+    """(pair index, m, solution, b, {check: margin}) of each batch item's first width holding every strength
+    check (else its closest), all items' widths in one strength call."""
+    grids = [_widths(stage, np.array([m]), pairs[i][0])[1].ravel() for i, m, _ in batch]
+    sizes = [g.size for g in grids]
+    rep = lambda f: np.concatenate([np.full(n, f(item)) for n, item in zip(sizes, batch)])
+    B = np.concatenate(grids)
+    M = rep(lambda it: it[1])
+    Z1, Z2 = rep(lambda it: pairs[it[0]][0]), rep(lambda it: pairs[it[0]][1])
+    X1, X2 = rep(lambda it: it[2]["x1"]), rep(lambda it: it[2]["x2"])
+    margins = strength_margins(stage, M, B, Z1, Z2, X1, X2, flow.torque_in_nm, flow.n_in_rpm)
+    worst = np.minimum.reduce(list(margins.values()))
+    worst = np.where(np.isnan(worst), -np.inf, worst)
+    start = 0
+    for (i, m, sol), n in zip(batch, sizes):
+        w = worst[start:start + n]
+        ok = np.flatnonzero(w >= -MARGIN_TOL)
+        j = start + (ok[0] if ok.size else int(np.argmax(w)))
+        yield i, m, sol, float(B[j]), {k: float(v[j]) for k, v in margins.items()}
+        start += n
+
+
+def _sized_stage(stage: GearStage, sol: dict) -> GearStage:
+    """The stage at the module and width its sizing chose, with the rules it was sized under made explicit (the
+    housing's a_w as a number, the shift window, the mating type): the same shifts when solved again."""
+    st = replace(stage, m=sol["m"], face_width_mm=sol["face_width_mm"], shift_bounds=stage.bounds,
+                 mating_type=stage.fit or "none")
+    if stage.housing != "free" and sol.get("a_w_housing") is not None:
+        st = replace(st, center_distance=sol["a_w_housing"])    # the series value itself: the same key, shifts
+    else:
+        st = replace(st, center_distance="free")
+    return st
 
 
 class GearKind(ToothedKind):
@@ -258,6 +375,8 @@ class GearKind(ToothedKind):
         candidates are re-solved at their own module until one holds every check. Such a stage without a
         face width is solved at m = 1 with the widest width of the sizing range (ε_γ needs one: the
         widest ε_β, the most permissive reference)."""
+        if stage.housing != "free":
+            return self._standard_sized(stage, z1, z2, objective, flow)
         free = _shifts_scale_free(stage)
         b_ref = stage.face_width_mm if free or stage.face_width_mm is not None else widest_width(stage, z1)
         ref = gear_solution(replace(stage, m=1.0, face_width_mm=b_ref), z1, z2, objective)
@@ -276,6 +395,76 @@ class GearKind(ToothedKind):
         sol = self._candidate(stage, best[0], best[1], z1, z2, objective, flow)
         return dict(sol, reason=f"no module of the ISO 54 series carries the load (closest m = {best[0]:g} mm, "
                                 f"b = {best[1]:g} mm: {sol['reason']})")
+
+    def _standard_sized(self, stage, z1, z2, objective, flow) -> dict:
+        """:meth:`_standard_sized_many` of one tooth pair."""
+        return self._standard_sized_many(stage, [(z1, z2)], objective, flow)[0]
+
+    def _standard_sized_many(self, stage, pairs: list, objective: str, flow) -> list:
+        """Module and width of tooth pairs of a stage whose housing is standard, at one flow: for each module of
+        the series (smallest first) the smallest standard a_w whose x-sum lies in the reducer window, the shifts
+        that split it (with the manufactured state), then every width checked by the strength checks; each
+        pair's first (m, b) holding every check. The shifts depend on the module (x_Σ follows from a_w/m), so
+        each module's are solved (and kept); a module whose contact safety at the widest width falls more than
+        :data:`CONTACT_SCREEN` short at the even split of x_Σ is passed over unsolved (the split moves S_H far
+        less). The strength checks run in one vectorised call per round over all pairs, each round taking every
+        unsettled pair's next :data:`STANDARD_TRIES` modules."""
+        cands = [_standard_modules(stage, z1, z2) for z1, z2 in pairs]
+        screen = self._contact_screen(stage, pairs, cands, flow)
+        todo = [list(np.flatnonzero(ok)) for ok in screen]
+        out: list = [None] * len(pairs)
+        closest: list = [None] * len(pairs)
+        while True:
+            batch = []          # (pair index, module, solution)
+            for i, (z1, z2) in enumerate(pairs):
+                took = 0
+                while out[i] is None and todo[i] and took < STANDARD_TRIES:
+                    k = todo[i].pop(0)
+                    m, a_w, b_ref = cands[i][0][k], cands[i][1][k], cands[i][2][k]
+                    sol = shift_solution(_housing_key(stage, m, z1, z2, a_w, objective, b_ref))
+                    if "x1" in sol and sol["feasible"]:
+                        batch.append((i, float(m), sol))
+                        took += 1
+            if not batch:
+                break
+            for i, m, sol, b, margins in _strength_first_fits(stage, pairs, batch, flow):
+                if out[i] is not None:
+                    continue
+                full = dict(sol, margins={**sol["margins"], **margins}, m=m, face_width_mm=b)
+                worst = min(margins.values())
+                if worst >= -MARGIN_TOL:
+                    out[i] = full
+                elif closest[i] is None or worst > closest[i][0]:
+                    closest[i] = (worst, full)
+        for i, (z1, z2) in enumerate(pairs):
+            if out[i] is not None:
+                continue
+            if closest[i] is None:
+                out[i] = dict(feasible=False, reason=f"no module of the ISO 54 series puts z1/z2 = {z1}/{z2} on a "
+                                                     f"standard centre distance ({stage.housing}) that holds its "
+                                                     f"checks", margins={}, m=math.nan, face_width_mm=None)
+                continue
+            sol = closest[i][1]
+            failing = ", ".join(k for k, v in sol["margins"].items() if not v >= -MARGIN_TOL)
+            out[i] = dict(sol, feasible=False, reason=f"no module of the ISO 54 series carries the load on a standard "
+                                                     f"centre distance (closest m = {sol['m']:g} mm, b = "
+                                                     f"{sol['face_width_mm']:g} mm: fails {failing})")
+        return out
+
+    @staticmethod
+    def _contact_screen(stage, pairs, cands, flow) -> list:
+        """Per pair, which of its modules pass the contact screen (one strength call for all)."""
+        sizes = [c[0].size for c in cands]
+        if not sum(sizes):
+            return [np.zeros(0, dtype=bool) for _ in pairs]
+        M = np.concatenate([c[0] for c in cands])
+        B = np.concatenate([c[3] for c in cands])
+        X = np.concatenate([c[4] for c in cands]) / 2
+        Z1 = np.concatenate([np.full(n, z1) for n, (z1, _) in zip(sizes, pairs)])
+        Z2 = np.concatenate([np.full(n, z2) for n, (_, z2) in zip(sizes, pairs)])
+        contact = strength_margins(stage, M, B, Z1, Z2, X, X, flow.torque_in_nm, flow.n_in_rpm,
+                                   root=False)["contact_strength"]
+        return np.split(contact >= -CONTACT_SCREEN, np.cumsum(sizes)[:-1])
 
     @classmethod
     def _unsized(cls, ref: dict, m: float, b: float, strength: dict) -> dict:
@@ -302,15 +491,20 @@ class GearKind(ToothedKind):
             return self._sized(stage, z1, z2, objective, flow)
         return self._with_strength(stage, gear_solution(stage, z1, z2, objective), z1, z2, flow)
 
+    def _standard_together(self, stage) -> bool:
+        """A stage sized by the strength checks on a standard housing (:meth:`_standard_sized_many`)."""
+        return stage.m is None and _SIZING[0] is None and stage.material is not None and stage.housing != "free"
+
     def _sized_together(self, stage) -> bool:
-        """A stage sized by the strength checks whose shifts do not depend on the module."""
-        return stage.m is None and _SIZING[0] is None and stage.material is not None and _shifts_scale_free(stage)
+        """A stage sized by the strength checks whose shifts do not depend on the module (a free housing)."""
+        return (stage.m is None and _SIZING[0] is None and stage.material is not None and stage.housing == "free"
+                and _shifts_scale_free(stage))
 
     def solve_ahead(self, stage, objective: str) -> int:
         """Groups whose tooth pairs :meth:`solve_many` takes at once: a stage sized by its strength (one
         vectorised sizing call per flow), a stage whose shifts follow ``max_margin`` (one batch of Chebyshev
         centres, ~3 ms of fixed cost and ~0.07 ms a pair); else none."""
-        if self._sized_together(stage):
+        if self._sized_together(stage) or self._standard_together(stage):
             return LOOK_AHEAD
         margin = stage.m is not None and stage.free_shifts and _shift_objective(stage, objective) == "max_margin"
         return MARGIN_AHEAD if margin else 0
@@ -319,6 +513,15 @@ class GearKind(ToothedKind):
         """Tooth pairs solved together (:meth:`solve_ahead`): the ``max_margin`` shifts in one batch, the
         strength sizing in one vectorised call per input flow; the same solutions as one by one."""
         pairs = [(int(o["z1"]), int(o["z2"])) for o in options]
+        if self._standard_together(stage):
+            out = [None] * len(options)
+            by_flow: dict = {}
+            for i, flow in enumerate(flows):
+                by_flow.setdefault((flow.torque_in_nm, flow.n_in_rpm), (flow, []))[1].append(i)
+            for flow, idx in by_flow.values():
+                for i, sol in zip(idx, self._standard_sized_many(stage, [pairs[i] for i in idx], objective, flow)):
+                    out[i] = sol
+            return out
         margin = _shift_objective(stage, objective) == "max_margin" and stage.free_shifts
         if not self._sized_together(stage):
             if margin and stage.m is not None:
@@ -392,13 +595,14 @@ class GearKind(ToothedKind):
         z1, z2 = int(option["z1"]), int(option["z2"])
         sol = self.solve(stage, option, objective, flow)
         if stage.m is None:
-            stage = replace(stage, m=sol["m"], face_width_mm=sol["face_width_mm"])
+            stage = _sized_stage(stage, sol)
         return replace(stage, z1=z1, z2=z2, x1=sol["x1"], x2=sol["x2"])
 
     # -- analyse
     def analyse(self, stage, flow, objective: str) -> dict:
         """A gear stage at its tooth counts (free shifts solved; a free module sized at the flow): its
-        checks (with a material, its strength at the flow too), size and mass."""
+        checks (at the manufactured state too, with a mating type; with a material, its load checks at the
+        flow, through the check registry), size and mass."""
         from ...gears.pair import GearPair   # here: the pair's checks load pandas
 
         st = stage
@@ -407,34 +611,53 @@ class GearKind(ToothedKind):
             if not math.isfinite(sol["m"]):
                 raise GearDesignError(f"stage '{st.name}': z1/z2 = {st.z1}/{st.z2} has no feasible shifts "
                                       f"({sol['reason']})")
-            st = replace(st, m=sol["m"], face_width_mm=sol["face_width_mm"])
+            st = _sized_stage(st, sol)
         sol = gear_solution(st, st.z1, st.z2, objective)
         if not sol["feasible"] and "x1" not in sol:
             raise GearDesignError(f"stage '{st.name}': z1/z2 = {st.z1}/{st.z2} has no feasible shifts ({sol['reason']})")
         pair = GearPair(st.m, st.z1, st.z2, sol["x1"], sol["x2"], beta_deg=st.beta_deg, face_width_mm=st.face_width_mm)
-        table = pair.checks(**{"jamming": False, **(st.checks or {})})
+        load = {} if st.material is None else self._load_context(st, flow)
+        table = pair.checks(**{"jamming": False, **(st.checks or {}), **load})
+        margins = dict(zip(table["check"], table["margin"].astype(float)))
+        margins.update({k: v for k, v in sol["margins"].items() if k.endswith("_manufactured")})
         geo = pair.geometry()
-        out = dict(stage=st, pair=pair, checks=table, margins=dict(zip(table["check"], table["margin"].astype(float))),
+        out = dict(stage=st, pair=pair, checks=table, margins=margins,
                    size=float(stage_area_mm2(geo.a_w, geo.da1, geo.da2)),
                    mass=float(disc_mass_kg(geo.da1, st.width_mm) + disc_mass_kg(geo.da2, st.width_mm)),
                    summary=dict(name=st.name, kind="gear", m=st.m, z1=st.z1, z2=st.z2, x1=pair.x1, x2=pair.x2,
                                 a_w_mm=geo.a_w, da1_mm=geo.da1, da2_mm=geo.da2, ratio=st.z2 / st.z1,
                                 efficiency=st.efficiency))
+        if "allowances" in sol:
+            out["allowances"] = sol["allowances"]
+            out["summary"]["manufactured_state"] = sol["allowances"].describe()
+        if st.housing != "free":
+            out["summary"]["housing"] = st.housing if isinstance(st.housing, str) else f"a_w {st.housing:g} mm"
         if st.material is not None:
-            self._analyse_strength(st, pair, flow, out)
+            out["strength"] = self._strength_result(st, pair, load)
+            out["summary"]["face_width_mm"] = st.width_mm
         return out
 
     @staticmethod
-    def _analyse_strength(st, pair, flow, out: dict) -> None:
-        """The strength checks at the flow into ``out``'s margins, the StrengthResult (its factor table)
-        as ``out["strength"]`` and the face width in the summary."""
-        from ...gears.strength import strength   # here: the materials catalog loads pandas
+    def _load_context(st, flow) -> dict:
+        """The load case of the stage's checks at ``flow``, as make_checks takes it (the single route)."""
+        opts = dict(st.strength or {})
+        limits = {k: opts.pop(k) for k in ("S_Hmin", "S_Fmin") if k in opts}
+        return dict(load=st.load(flow.torque_in_nm, flow.n_in_rpm), material=stage_material(st.material),
+                    face_width_mm=st.width_mm, strength=opts or None, **limits)
 
-        sm = strength_margins(st, st.m, st.width_mm, st.z1, st.z2, pair.x1, pair.x2, flow.torque_in_nm, flow.n_in_rpm)
-        out["margins"].update({k: float(v) for k, v in sm.items()})
-        out["strength"] = strength(pair, st.load(flow.torque_in_nm, flow.n_in_rpm),
-                                   stage_material(st.material), face_width_mm=st.width_mm)
-        out["summary"]["face_width_mm"] = st.width_mm
+    @staticmethod
+    def _strength_result(st, pair, load: dict):
+        """The StrengthResult (the factor table) of the design whose checks were just evaluated on ``pair``: from
+        the chain's output the strength checks kept, not a second run of the chain."""
+        from ...gears.checks import make_checks
+        from ...gears.strength.result import from_chain
+
+        for c in make_checks(**load):
+            raw = c.spec.chain_output(pair._geo) if c.costly else None   # the pair's own geometry memo
+            if raw is not None:
+                return from_chain(raw, title=f"{pair.z1}/{pair.z2} m={pair.m:g}")
+        raise GearDesignError(f"stage '{st.name}': the strength of z1/z2 = {pair.z1}/{pair.z2} is undefined at its "
+                              f"shifts (outside ISO 6336's range)")
 
     # -- scenes
     def scene_keys(self) -> dict:

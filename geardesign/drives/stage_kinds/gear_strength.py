@@ -31,12 +31,13 @@ design holds (the closest one is then chosen over every check).
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 import numpy as np
 
 from ..stages import stage_material
 
-__all__ = ["STRENGTH_CHECKS", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
+__all__ = ["STRENGTH_CHECKS", "load_checks", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
            "strength_sizes", "strength_sizes_many", "widest_width"]
 
 STRENGTH_CHECKS = ("contact_strength", "root_strength1", "root_strength2")
@@ -46,17 +47,46 @@ WIDTH_TO_DIAMETER_STEP = 0.05
 
 def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, speed_rpm: float,
                      root: bool = True) -> dict:
-    """{check: margin array} of :data:`STRENGTH_CHECKS` for the stage's pairs (m, b broadcast) carrying
-    ``torque_nm`` on the pinion at ``speed_rpm`` (with the stage's life and application factor);
-    ``root=False``: ``contact_strength`` alone (the strength model skips the root side)."""
-    from ...gears.strength import pair_strength   # here: the materials catalog loads pandas
+    """{check: margin array} of the stage's load checks for its pairs (m, b broadcast) carrying ``torque_nm`` on
+    the pinion at ``speed_rpm`` (with the stage's life, application factor and strength options): the checks the
+    check registry builds for that load case (:func:`load_checks`; the built-in :data:`STRENGTH_CHECKS`, and any
+    load model registered there), evaluated on the arrays in one call each; ``root=False``: ``contact_strength``
+    alone (the strength model skips the root side)."""
+    from ...gears.mesh import Mesh
 
-    out = pair_strength(m, z1, z2, x1, x2, load=stage.load(torque_nm, speed_rpm), root=root,
-                        material1=stage_material(stage.material), face_width_mm=face_width_mm, beta_deg=stage.beta_deg)
-    margins = {"contact_strength": np.minimum(out["S_H1"], out["S_H2"]) / out["S_Hmin"] - 1.0}
-    if root:
-        margins.update(root_strength1=out["S_F1"] / out["S_Fmin"] - 1.0, root_strength2=out["S_F2"] / out["S_Fmin"] - 1.0)
-    return margins
+    checks = load_checks(stage, float(torque_nm), float(speed_rpm), root)
+    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, face_width_mm, z1, z2, x1, x2)))
+    M, B, Z1, Z2, X1, X2 = arrays
+    geo = {"_mesh": Mesh(20, 60, None, True, stage.beta_deg), "_m": M, "_z1": Z1, "_z2": Z2, "_x1": X1, "_x2": X2,
+           "_face_width_mm": B}
+    return {c.name: np.asarray(c.margin(geo), dtype=float) for c in checks}
+
+
+def _strength_options(stage) -> tuple:
+    return tuple(sorted((stage.strength or {}).items()))
+
+
+def load_checks(stage, torque_nm: float, speed_rpm: float, root: bool = True) -> tuple:
+    """The checks of a gear stage's load case at one flow: what :func:`~geardesign.gears.checks.make_checks`
+    builds from the stage's load context (its ``costly`` checks: the strength chain, and any load model
+    registered with the check registry), the route every pair, region and search takes (docs/extending.md)."""
+    return _load_checks(stage.material, stage.life_h, stage.application_factor, _strength_options(stage), torque_nm,
+                        speed_rpm, root)
+
+
+@lru_cache(maxsize=256)
+def _load_checks(material, life_h, application_factor, options: tuple, torque_nm, speed_rpm, root) -> tuple:
+    from ...gears.checks import make_checks   # here: the check registry loads pandas
+    from ...gears.strength import Load
+
+    opts = dict(options)
+    limits = {k: opts.pop(k) for k in ("S_Hmin", "S_Fmin") if k in opts}
+    if not root:
+        opts["root"] = False
+        limits["S_Fmin"] = None
+    load = Load(torque_nm=torque_nm, n_rpm=speed_rpm, life_h=life_h, application_factor=application_factor)
+    built = make_checks(load=load, material=stage_material(material), strength=opts or None, **limits)
+    return tuple(c for c in built if c.costly)
 
 
 def _widths(stage, modules: np.ndarray, z1: int) -> tuple:

@@ -82,7 +82,8 @@ class StrengthSpec:
         from ..strength.chain import CHAIN_GEOMETRY_FIELDS, pair_strength
 
         mesh = geo["_mesh"]
-        width = self.face_width_mm if self.face_width_mm is not None else mesh.face_width_mm
+        # the spec's width, else a width per design (a drive's sizing grid: "_face_width_mm"), else the mesh's
+        width = self.face_width_mm if self.face_width_mm is not None else geo.get("_face_width_mm", mesh.face_width_mm)
         if width is None:
             raise GearDesignError("the strength checks need a face width: give face_width_mm with the load")
         if isinstance(geo["_x1"], float):
@@ -103,14 +104,20 @@ class StrengthSpec:
             if idx.size:
                 flat = {k: np.broadcast_to(g5[k], X1.shape).ravel()
                         for k in CHAIN_GEOMETRY_FIELDS + ("_z1", "_z2", "_m", "_x1", "_x2")}
+                per_design = np.ndim(width) > 0
+                if per_design:
+                    flat["_b"] = np.broadcast_to(np.broadcast_to(np.asarray(width, dtype=float), x1.shape).reshape(1, -1),
+                                                 X1.shape).ravel()
 
                 def call(sel):
                     at = {k: v[idx[sel]] for k, v in flat.items()}
+                    b = at.pop("_b") if per_design else width
                     out = pair_strength(at["_m"], at["_z1"], at["_z2"], at["_x1"], at["_x2"], load=self.load,
-                                        material1=self.material1, material2=self.material2, face_width_mm=width,
+                                        material1=self.material1, material2=self.material2, face_width_mm=b,
                                         beta_deg=mesh.beta_deg, internal=mesh.internal, rack=mesh.rack,
                                         tip_shortening=mesh.tip_shortening, geometry=at, **dict(self.options))
-                    return {k: out[k] for k in _QUANTITIES}
+                    # without the root side (option root=False) S_F is not computed: NaN
+                    return {k: out[k] if k in out else np.full(np.shape(at["_x1"]), np.nan) for k in _QUANTITIES}
 
                 for k, v in _where_it_holds(call, idx.size).items():
                     S[k][idx] = v
@@ -136,9 +143,17 @@ class StrengthSpec:
                                     **dict(self.options))
             except GearDesignError:
                 continue
+            if a == b == 0.0:    # the design's whole chain output: its factor table (StrengthResult) needs no rerun
+                geo.setdefault("_strength", {})[(self, "chain")] = out
             for k in _QUANTITIES:
-                S[k][j, 0] = out[k]
+                S[k][j, 0] = out.get(k, np.nan)
         return {k: v.reshape((len(offsets),)) for k, v in S.items()}
+
+    def chain_output(self, geo: dict) -> dict | None:
+        """The chain's whole output for the one design of ``geo`` (a float geometry) after its checks were
+        evaluated there (None before): what :func:`~geardesign.gears.strength.from_chain` turns into a
+        StrengthResult without running the chain again."""
+        return geo.get("_strength", {}).get((self, "chain"))
 
     def model(self, geo: dict) -> "StrengthModel":
         """The quadratic model of the safety factors around the one design of ``geo`` (a float geometry): values
