@@ -22,6 +22,7 @@ FACTOR_TABLE = (
     ("f_pb", "f_pb", 0, "ISO 1328-1:1995 6.3.1 (f_pt cos α_t), µm"), ("f_falpha", "f_falpha", 0, "ISO 1328-1:1995 6.3.4, µm"),
     ("F_beta", "F_beta", 0, "ISO 1328-1:1995 6.3.6, µm"), ("f_Hbeta", "f_Hbeta", 0, "ISO 1328-1:1995 6.3.7, µm"),
     ("c_th", "c_th", 0, f"{P1} eq. (73), (74), N/(mm·µm)"), ("C_B", "C_B", 0, f"{P1} eq. (75)"),
+    ("C_R", "C_R", 0, f"{P1} 9.3.3, eq. (72) (1: solid gears)"),
     ("c_prime", "c_prime", 0, f"{P1} eq. (70), (71), N/(mm·µm)"),
     ("c_gamma_alpha", "c_gamma_alpha", 0, f"{P1} eq. (76), N/(mm·µm)"),
     ("c_gamma_beta", "c_gamma_beta", 0, f"{P1} eq. (77), N/(mm·µm)"),
@@ -30,6 +31,8 @@ FACTOR_TABLE = (
     ("N", "N", 0, f"{P1} eq. (28)"), ("K_v", "K_v", 0, f"{P1} 6.5.9, method B"),
     ("f_sh", "f_sh", 0, "ISO 6336-1:2006 7.6.2.2 eq. (44), µm"), ("f_ma", "f_ma", 0, "f_Hβ (ISO 6336-1:2006 7.6.2.1), µm"),
     ("F_betax", "F_betax", 0, "ISO 6336-1:2006/Cor.1:2008 7.6.2.1, µm"), ("y_beta", "y_beta", 0, "ISO 6336-1:2006 7.6.3, µm"),
+    ("f_Kalpha", "f_Kalpha", 0, "deviation in K_Halpha: f_pb, or with transverse_deviation='larger' the larger "
+                                "of f_pb, f_falpha (ISO 6336-1:2006 8.3.2), µm"),
     ("K_Hbeta", "K_Hbeta", 0, f"{P1} 7.6, method C"), ("N_F", "N_F", 0, f"{P1} eq. (56)"),
     ("K_Fbeta", "K_Fbeta", 0, f"{P1} eq. (55)"), ("K_Halpha", "K_Halpha", 0, f"{P1} 8.3.2, method B"),
     ("K_Falpha", "K_Falpha", 0, f"{P1} 8.3.2, method B"),
