@@ -15,7 +15,8 @@ from .defaults import MIN_SAFETY_SOURCE
 __all__ = ["StrengthResult", "FACTOR_TABLE", "from_chain"]
 
 P1, P2, P3 = "ISO 6336-1:2019", "ISO 6336-2:2019", "ISO 6336-3:2019"
-# (symbol, key in the chain's dict, gear (0 = the pair), clause or equation)
+# (symbol, key in the chain's dict, gear (0 = the pair), clause or equation): every clause names its standard and
+# edition, as the chain mixes editions where the 2019 text was not at hand (y_α, y_β, F_βx, f_sh, C_ay, Z_W, Y_β: 2006)
 FACTOR_TABLE = (
     ("F_t", "F_t", 0, f"{P1} eq. (1), N"), ("v", "v", 0, f"{P1} eq. (3), m/s"),
     ("K_A", "K_A", 0, f"{P1} 6.3"), ("K_gamma", "K_gamma", 0, f"{P1} 6.4"),
@@ -43,13 +44,14 @@ FACTOR_TABLE = (
     ("Z_L", "Z_L1", 1, f"{P2} eq. (21)"), ("Z_L", "Z_L2", 2, f"{P2} eq. (21)"),
     ("Z_v", "Z_v1", 1, f"{P2} eq. (25)"), ("Z_v", "Z_v2", 2, f"{P2} eq. (25)"),
     ("Z_R", "Z_R1", 1, f"{P2} eq. (27)"), ("Z_R", "Z_R2", 2, f"{P2} eq. (27)"),
-    ("Z_W", "Z_W1", 1, "ISO 6336-2:2006 clause 13"), ("Z_W", "Z_W2", 2, "ISO 6336-2:2006 clause 13"),
+    ("Z_W", "Z_W1", 1, "ISO 6336-2:2006 clause 13 (without the 2019 roughness term)"),
+    ("Z_W", "Z_W2", 2, "ISO 6336-2:2006 clause 13 (without the 2019 roughness term)"),
     ("Z_X", "Z_X", 0, f"{P2} clause 14"),
     ("Y_F", "Y_F1", 1, f"{P3} clause 6, method B"), ("Y_F", "Y_F2", 2, f"{P3} clause 6, method B"),
     ("Y_S", "Y_S1", 1, f"{P3} clause 7"), ("Y_S", "Y_S2", 2, f"{P3} clause 7"),
     ("Y_Fa", "Y_Fa1", 1, "ISO 6336-3:1996 method C"), ("Y_Fa", "Y_Fa2", 2, "ISO 6336-3:1996 method C"),
     ("Y_Sa", "Y_Sa1", 1, "ISO 6336-3:1996 method C"), ("Y_Sa", "Y_Sa2", 2, "ISO 6336-3:1996 method C"),
-    ("Y_eps", "Y_eps", 0, "ISO 6336-3:1996 eq. (20)"), ("Y_beta", "Y_beta", 0, f"{P3} clause 8"),
+    ("Y_eps", "Y_eps", 0, "ISO 6336-3:1996 eq. (20)"), ("Y_beta", "Y_beta", 0, "ISO 6336-3:2006 clause 8 (1 - eps_beta beta/120; the 2019 form is not used)"),
     ("Y_B", "Y_B1", 1, f"{P3} clause 9 (solid gear)"), ("Y_B", "Y_B2", 2, f"{P3} clause 9 (solid gear)"),
     ("Y_DT", "Y_DT", 0, f"{P3} clause 10"),
     ("Y_NT", "Y_NT1", 1, f"{P3} clause 12"), ("Y_NT", "Y_NT2", 2, f"{P3} clause 12"),

@@ -102,3 +102,19 @@ def test_arrays_take_the_options_too():
                         transverse_deviation="larger")
     assert float(out["K_Halpha"][0]) == pytest.approx(float(stage3(gear_blank=(0.25, 5.0),
                                                                    transverse_deviation="larger")["K_Halpha"]))
+
+
+def test_factor_table_names_each_factors_standard_and_edition():
+    import re
+
+    from geardesign import GearPair
+    r = GearPair(m=4, z1=20, z2=60, x1=0.3, x2=0.1, face_width_mm=40, beta_deg=12).strength(
+        Load(torque_nm=400, n_rpm=1000, life_h=20000), material="42CrMo4", material2="C45")
+    table = r.factors
+    edition = re.compile(r"ISO( 1328-1| 6336-[1235]|/TR 6336-30)?:(1995|1996|2006|2019)")
+    assert all(edition.search(c) for c in table["clause"]), table[~table["clause"].str.contains(":")]
+    clause = dict(zip(table["symbol"], table["clause"]))
+    # the factors the chain takes from the 2006 texts say so (issue 36: a chain that says 2019 must not hide them)
+    for sym in ("Y_beta", "Z_W", "y_alpha", "y_beta", "F_betax", "f_sh"):
+        assert "2006" in clause[sym], sym
+    assert "2019" in clause["K_v"] and "2019" in clause["Z_H"] and "2019" in clause["Y_F"]
