@@ -309,7 +309,8 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``material2``: :class:`Material` or catalog names (``material2`` defaults to ``material1``).
     ``face_width_mm`` (gear 1, both if ``face_width2_mm`` is None). ``accuracy_grade``: ISO 1328-1:1995
     grade (0-12). ``nu40``: lubricant viscosity at 40 °C, mm²/s. ``Rz_flank_um``, ``Rz_root_um``: mean peak-to-
-    valley roughness. ``root_method``: "B" (ISO 6336-3:2019) or "C" (tip load, Y_ε). ``factors``: measured or
+    valley roughness; ``Rz_flank_um`` is the mean of the two gears' flanks, R_z = (R_z1 + R_z2)/2 of Z_R
+    (ISO 6336-2:2019 eq. (29)): give that mean when the flanks differ. ``root_method``: "B" (ISO 6336-3:2019) or "C" (tip load, Y_ε). ``factors``: measured or
     agreed values of any of :data:`GIVEN_FACTORS`. ``K_gamma``: mesh load factor (planetary sets).
     ``tip_relief_um``: C_a (default C_ay of running-in). ``bore_ratio``: (q1, q2) for the reduced mass.
     ``shaft``: the pinion shaft of ISO 6336-1 eq. (44), a dict of numbers ``K_prime``, ``l_mm``, ``s_mm``, ``d_sh_mm``
