@@ -118,3 +118,15 @@ def test_factor_table_names_each_factors_standard_and_edition():
     for sym in ("Y_beta", "Z_W", "y_alpha", "y_beta", "F_betax", "f_sh"):
         assert "2006" in clause[sym], sym
     assert "2019" in clause["K_v"] and "2019" in clause["Z_H"] and "2019" in clause["Y_F"]
+
+
+def test_a_pairs_strength_takes_the_new_options():
+    from geardesign import GearPair
+    pair = GearPair(m=4, z1=20, z2=60, x1=0.3, x2=0.1, face_width_mm=40)
+    load = Load(torque_nm=400, n_rpm=1000, life_h=20000)
+    plain = pair.strength(load, "42CrMo4")
+    webbed = pair.strength(load, "42CrMo4", gear_blank=(0.25, 5.0), transverse_deviation="larger")
+    rows = dict(zip(webbed.factors["symbol"], webbed.factors["value"]))
+    assert rows["C_R"] == pytest.approx(kf.gear_blank_factor(0.25, 5.0))
+    assert rows["f_Kalpha"] == max(rows["f_pb"], rows["f_falpha"])
+    assert dict(zip(plain.factors["symbol"], plain.factors["value"]))["C_R"] == 1.0
