@@ -84,9 +84,9 @@ def theoretical_single_stiffness(z_n1, z_n2, x1, x2, internal=False):
 
 def gear_blank_factor(bs_over_b, sR_over_mn):
     """C_R = 1 + ln(b_s/b)/(5·e^(s_R/(5 m_n))), the gear blank factor of c′ for a webbed wheel (web thickness b_s,
-    rim thickness s_R under the root), with b_s/b taken as 0.2 below 0.2 and as 1.2 above 1.2 and s_R/m_n taken as 1
-    below 1 (ISO 6336-1:2019 9.3.3, eq. (72); the same equation and limits as ISO 6336-1:2006 eq. (84) and DIN 3990-1).
-    A solid disc gear has C_R = 1 (b_s/b = 1).
+    rim thickness s_R under the root) (ISO 6336-1:2019 9.3.3, eq. (72); the same equation in ISO 6336-1:2006 and
+    DIN 3990-1). The equation is stated for 0.2 <= b_s/b <= 1.2 and s_R/m_n >= 1; outside that range its ends are
+    taken (b_s/b = 0.2 or 1.2, s_R/m_n = 1). A solid disc gear has C_R = 1 (b_s/b = 1).
 
     >>> round(float(gear_blank_factor(0.25, 5.0)), 3)    # KISSsoft report of the NREL 5 MW stage 3: C_R 0.898
     0.898

@@ -69,7 +69,7 @@ def _contact_ratio(g: dict, da1: float, da2: float, internal: bool) -> float:
 def set_tips(pset, tips="unshortened") -> dict:
     """The tip diameters (mm) planetary strength uses: {"sun": d_a, "planet": d_a, "ring": d_a}. ``"unshortened"``:
     the set's own (d ± 2(h_a* ± x)m, as its checks have them); ``"shortened"``: the sun's and planet's shortened by
-    the sun-planet mesh's tip alteration k·m (ISO 21771:2007 5.2.3, as a pair's tips are; a ring is not shortened);
+    the sun-planet mesh's tip alteration k·m (ISO 21771:2007, as a pair's tips are; a ring is not shortened);
     a dict with any of "sun", "planet", "ring": those diameters as made (the others unshortened).
 
     >>> from geardesign.gears.planetary import PlanetarySet
