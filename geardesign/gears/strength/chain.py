@@ -28,7 +28,7 @@ from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
 from .ops import ArrayOps, FloatOps, checked, once, per_load_case
-from .options import shaft_option, validate_options
+from .options import blank_option, shaft_option, transverse_option, validate_options
 from .result import StrengthResult, from_chain
 from .root_chain import root_side
 
@@ -170,15 +170,17 @@ def _deviations(G, m, g, b, grade, xp):
             "f_Hbeta": G["f_Hbeta"] if "f_Hbeta" in G else acc.helix_slope_deviation(d, b, grade)}
 
 
-def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, out):
+def _stiffness(G, g, x1, x2, rack, beta_deg, w_A, internal, C_R, out):
     """c′_th, c′, c_γα, c_γβ (ISO 6336-1:2019 clause 9) and the regression's range flag. A ring's shift enters
-    with ISO 21771's sign (x_ISO = −x of this project's GOST 19274 convention, as its tooth count is −z there)."""
+    with ISO 21771's sign (x_ISO = −x of this project's GOST 19274 convention, as its tooth count is −z there).
+    ``C_R``: the gear blank factor (1.0: solid disc gears)."""
     x2 = -x2 if internal else x2
     c_th = kf.theoretical_single_stiffness(g["z_n1"], g["z_n2"], x1, x2, internal)
     C_B = _basic_rack_factor(rack.ha + rack.c, rack.alpha_deg)
-    c_prime = G["c_prime"] if "c_prime" in G else kf.single_stiffness(c_th, C_B, beta_deg, w_A)
+    c_prime = G["c_prime"] if "c_prime" in G else kf.single_stiffness(c_th, C_B, beta_deg, w_A, C_R=C_R)
     c_ga, c_gb = kf.mesh_stiffness(c_prime, g["eps_alpha"])
-    out.update(c_th=c_th, C_B=C_B, c_prime=c_prime, c_gamma_alpha=G["c_gamma_alpha"] if "c_gamma_alpha" in G else c_ga,
+    out.update(c_th=c_th, C_B=C_B, C_R=C_R, c_prime=c_prime,
+               c_gamma_alpha=G["c_gamma_alpha"] if "c_gamma_alpha" in G else c_ga,
                c_gamma_beta=G["c_gamma_beta"] if "c_gamma_beta" in G else c_gb)
     xs = x1 + x2
     lo, hi = kf.STIFFNESS_X_SUM_RANGE
@@ -228,10 +230,13 @@ def _face_load(G, g, mats, F_t, b, K_A, dev, v, shaft, xp, out):
     out.update(K_Hbeta=K_Hb, N_F=N_F, K_Fbeta=G["K_Fbeta"] if "K_Fbeta" in G else kf.face_load_factor_F(K_Hb, N_F))
 
 
-def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, xp, out):
-    """K_Hα and K_Fα by method B, limited to their ranges (ISO 6336-1:2019 8.3.2-8.3.4)."""
+def _transverse(G, g, F_t, b, K_A, dev, eps_gamma, Z_eps, root_method, which, xp, out):
+    """K_Hα and K_Fα by method B, limited to their ranges (ISO 6336-1:2019 8.3.2-8.3.4); ``which`` deviation enters
+    (:func:`~.factors.transverse_deviation`: the larger of f_pb and f_fα, or f_pb)."""
     w_H = F_t * K_A * out["K_v"] * out["K_Hbeta"] / b
-    raw = kf.transverse_load_factor(eps_gamma, out["c_gamma_alpha"], dev["f_pb"] - out["y_alpha"], w_H)
+    f_alpha = kf.transverse_deviation(dev["f_pb"], dev["f_falpha"], which)
+    out["f_Kalpha"] = f_alpha
+    raw = kf.transverse_load_factor(eps_gamma, out["c_gamma_alpha"], f_alpha - out["y_alpha"], w_H)
     hi_H, hi_F = kf.transverse_load_limits(eps_gamma, g["eps_alpha"], Z_eps)
     if root_method == "C":   # ISO 6336-1:2006 eq. (76): ε_γ/(ε_α Y_ε) with the tip-load method's Y_ε
         hi_F = eps_gamma / (g["eps_alpha"] * (0.25 + 0.75 / out["eps_alpha_n"]))
@@ -291,7 +296,8 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
                   K_gamma: float = 1.0, tip_relief_um=None, bore_ratio=(0.0, 0.0), shaft=None,
                   pitting_permitted: bool = False, optimum_life: bool = False, S_Hmin: float = dflt.S_HMIN,
                   S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), rim_mm=(None, None), root: bool = True,
-                  geometry: dict | None = None) -> dict:
+                  geometry: dict | None = None, gear_blank=None,
+                  transverse_deviation: str = dflt.TRANSVERSE_DEVIATION) -> dict:
     """ISO 6336 load capacity of gear pairs, vectorised: m (normal module, mm), z1, z2, x1, x2 and the face
     widths broadcast like :func:`~geardesign.gears.geometry.pair_geometry`, whose geometry (operating
     pressure angle, ε_α, diameters) is used as it is. Returns a dict of float arrays: the stresses and safety
@@ -303,7 +309,8 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``material2``: :class:`Material` or catalog names (``material2`` defaults to ``material1``).
     ``face_width_mm`` (gear 1, both if ``face_width2_mm`` is None). ``accuracy_grade``: ISO 1328-1:1995
     grade (0-12). ``nu40``: lubricant viscosity at 40 °C, mm²/s. ``Rz_flank_um``, ``Rz_root_um``: mean peak-to-
-    valley roughness. ``root_method``: "B" (ISO 6336-3:2019) or "C" (tip load, Y_ε). ``factors``: measured or
+    valley roughness; ``Rz_flank_um`` is the mean of the two gears' flanks, R_z = (R_z1 + R_z2)/2 of Z_R
+    (ISO 6336-2:2019 eq. (29)): give that mean when the flanks differ. ``root_method``: "B" (ISO 6336-3:2019) or "C" (tip load, Y_ε). ``factors``: measured or
     agreed values of any of :data:`GIVEN_FACTORS`. ``K_gamma``: mesh load factor (planetary sets).
     ``tip_relief_um``: C_a (default C_ay of running-in). ``bore_ratio``: (q1, q2) for the reduced mass.
     ``shaft``: the pinion shaft of ISO 6336-1 eq. (44), a dict of numbers ``K_prime``, ``l_mm``, ``s_mm``, ``d_sh_mm``
@@ -318,6 +325,11 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     of these designs: the strength checks of the shift solvers); it is used unvalidated, so designs that do not
     exist, or (given as arrays) have no root section, give NaN rather than an error. A batch larger than
     :data:`~.blocks.BLOCK` runs in blocks, its per-design fields rows of one array per dtype (copy one to keep alone).
+    ``gear_blank``: None (solid disc gears, C_R = 1) or the webbed wheels' (b_s/b, s_R/m_n), web thickness over face
+    width and rim thickness over module, for the gear blank factor C_R of c′ (ISO 6336-1:2019 9.3.3); per gear
+    ``((b_s/b, s_R/m_n) or None, (b_s/b, s_R/m_n) or None)`` takes the mean of the two gears' C_R.
+    ``transverse_deviation``: the deviation of K_Hα, K_Fα, ``"larger"`` of f_pb and f_fα (ISO 6336-1:2006 8.3.2) or
+    ``"f_pb"`` (see :func:`~geardesign.gears.strength.factors.transverse_deviation`).
     """
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
@@ -344,7 +356,8 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
                         shaft=shaft_option(shaft),
                         life=(pitting_permitted, optimum_life), rim=rim_mm,
                         root=require_bool("root", root), S_min=S_min, rack=rack, beta_deg=beta_deg,
-                        internal=internal, tip_shortening=tip_shortening, geometry=geometry)
+                        internal=internal, tip_shortening=tip_shortening, geometry=geometry,
+                        C_R=blank_option(gear_blank), transverse_deviation=transverse_option(transverse_deviation))
     float_geometry = geometry is None or _FLOAT.issuperset(map(type, map(geometry.__getitem__, _GEOMETRY)))
     o.refuse = float_geometry          # a pair's own (validated) geometry: a design without a root section is refused
     G = _Given(factors)
@@ -465,12 +478,12 @@ def _evaluate(designs, G, o, xp, finish=True) -> dict:
     w_A = F_t * K_A / b
     dev = _deviations(G, m_arr, g, b, o.grade, xp)
     out.update(dev)
-    _stiffness(G, g, x1, x2, o.rack, beta_deg, w_A, o.internal, out)
+    _stiffness(G, g, x1, x2, o.rack, beta_deg, w_A, o.internal, o.C_R, out)
     _dynamic(G, g, mats, n1, w_A, dev, o.tip_relief_um, o.bore, eps_gamma, o.internal, v, xp, out)
     _face_load(G, g, mats, F_t, b, K_A, dev, v, o.shaft, xp, out)
     out["Z_eps"] = G["Z_eps"] if "Z_eps" in G else zc.contact_ratio_factor(g["eps_alpha"], out["eps_beta"])
     out["Z_beta"] = G["Z_beta"] if "Z_beta" in G else zc.helix_angle_factor(beta_deg)
-    _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], o.root_method, xp, out)
+    _transverse(G, g, F_t, b, K_A, dev, eps_gamma, out["Z_eps"], o.root_method, o.transverse_deviation, xp, out)
     _contact(G, g, mats, F_t, b, K_A, o.K_gamma, v, n12, o.load.life_h, o.nu40, o.Rz, o.life, o.internal, xp, out)
     if o.root:
         root_side(G, g, mats, F_t, (b1, b2), m_arr, (x1, x2), o.rack, beta_deg, o.internal, K_A, o.K_gamma, o.grade,

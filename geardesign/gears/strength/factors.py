@@ -21,7 +21,8 @@ __all__ = [
     "resonance_ratio", "subcritical_limit", "dynamic_coefficients", "dynamic_factor", "running_in_alpha",
     "running_in_beta", "tip_relief_running_in", "shaft_misalignment", "helix_misalignment",
     "face_load_factor_H", "face_load_exponent", "face_load_factor_F", "transverse_load_factor",
-    "transverse_load_limits", "STEEL_DENSITY_KG_MM3", "C_M_SOLID",
+    "transverse_load_limits", "STEEL_DENSITY_KG_MM3", "C_M_SOLID", "gear_blank_factor", "transverse_deviation",
+    "TRANSVERSE_DEVIATIONS",
 ]
 
 STEEL_DENSITY_KG_MM3 = 7.83e-6    # ISO 6336-1:2019 6.5.9 (ρ of steel)
@@ -79,6 +80,21 @@ def theoretical_single_stiffness(z_n1, z_n2, x1, x2, internal=False):
     q = (c1 + c2 / z_n1 + c3 * inv_zn2 + c4 * x1 + c5 * x1 / z_n1 + c6 * x2 + c7 * x2 * inv_zn2
          + c8 * x1 * x1 + c9 * x2 * x2)
     return 1.0 / q
+
+
+def gear_blank_factor(bs_over_b, sR_over_mn):
+    """C_R = 1 + ln(b_s/b)/(5·e^(s_R/(5 m_n))), the gear blank factor of c′ for a webbed wheel (web thickness b_s,
+    rim thickness s_R under the root) (ISO 6336-1:2019 9.3.3, eq. (72); the same equation in ISO 6336-1:2006 and
+    DIN 3990-1). The equation is stated for 0.2 <= b_s/b <= 1.2 and s_R/m_n >= 1; outside that range its ends are
+    taken (b_s/b = 0.2 or 1.2, s_R/m_n = 1). A solid disc gear has C_R = 1 (b_s/b = 1).
+
+    >>> round(float(gear_blank_factor(0.25, 5.0)), 3)    # KISSsoft report of the NREL 5 MW stage 3: C_R 0.898
+    0.898
+    """
+    xp = ops_of(bs_over_b, sR_over_mn)
+    r = xp.clip(xp.asarray(bs_over_b), 0.2, 1.2)
+    s = xp.maximum(xp.asarray(sR_over_mn), 1.0)
+    return 1.0 + xp.log(r) / (5.0 * xp.exp(s / 5.0))
 
 
 def single_stiffness(c_th, C_B, beta_deg, line_load_n_mm, C_R=1.0, C_M=C_M_SOLID):
@@ -359,6 +375,26 @@ def transverse_load_factor(eps_gamma, c_gamma_alpha, f_pb_eff_um, line_load_H_n_
         return low
     high = 0.9 + 0.4 * xp.sqrt(2.0 * (xp.maximum(e, 1.0) - 1.0) / e) * load
     return xp.where(e <= 2.0, low, high)
+
+
+# which deviation enters K_Hα, K_Fα (see transverse_deviation)
+TRANSVERSE_DEVIATIONS = ("larger", "f_pb")
+
+
+def transverse_deviation(f_pb_um, f_falpha_um, which="larger"):
+    """The deviation of eq. (61), (62) for K_Hα, K_Fα (µm): ``"larger"`` the larger of f_pb and f_fα, as
+    ISO 6336-1:2006 8.3.2 prescribes (its note to f_pb: where the profile form deviation f_fα exceeds f_pb, f_fα is
+    used, as quoted by an independent implementation; the calculation program KISSsoft does the same, see
+    tests/data/iso6336_nrel_stage3_kisssoft.md); ``"f_pb"`` f_pb alone (the chain's default, its validated figures).
+    The running-in allowance y_α is the one of f_pb in both cases.
+
+    >>> float(transverse_deviation(15.9, 22.0)), float(transverse_deviation(15.9, 22.0, "f_pb"))
+    (22.0, 15.9)
+    """
+    if which == "f_pb":
+        return f_pb_um
+    xp = ops_of(f_pb_um, f_falpha_um)
+    return xp.maximum(xp.asarray(f_pb_um), xp.asarray(f_falpha_um))
 
 
 def transverse_load_limits(eps_gamma, eps_alpha, Z_eps):

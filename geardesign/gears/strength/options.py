@@ -8,14 +8,18 @@ from ...errors import GearDesignError
 from ...validate import one_number
 from . import accuracy as acc
 from . import defaults as dflt
+from .factors import TRANSVERSE_DEVIATIONS, gear_blank_factor
 from .ops import checked
 
-__all__ = ["validate_options", "shaft_option", "TIP_RELIEF_RANGE_UM", "SHAFT_RANGES"]
+__all__ = ["validate_options", "shaft_option", "blank_option", "transverse_option", "TIP_RELIEF_RANGE_UM",
+           "SHAFT_RANGES", "BLANK_RANGES"]
 
 TIP_RELIEF_RANGE_UM = (0.0, 1000.0)    # C_a given: from none to a millimetre (a relief of module size)
 # the pinion shaft of ISO 6336-1:2006 7.6.2.2, eq. (44) (factors.shaft_misalignment's keywords): K' is one of the
 # standard's ±0.48, ±0.8, ±1.33, -0.36, -0.6 (Fig. 13); l the bearing span, s the pinion's offset from its middle,
 # d_sh the shaft's diameter (mm)
+# a webbed wheel's (b_s/b, s_R/m_n) for C_R: open below; beyond the standard's 0.2..1.2 and >= 1 C_R takes the ends
+BLANK_RANGES = ((0.0, 100.0), (0.0, 1000.0))
 SHAFT_RANGES = {"K_prime": (-2.0, 2.0), "l_mm": (0.0, 1e5), "s_mm": (0.0, 1e5), "d_sh_mm": (0.0, 1e5)}
 
 
@@ -83,3 +87,39 @@ def shaft_option(shaft) -> dict:
     return {k: _number(f"shaft[{k!r}]", _not_bool(f"shaft[{k!r}]", v), *SHAFT_RANGES[k],
                        lo_open=k in ("l_mm", "d_sh_mm"), unit="" if k == "K_prime" else "mm")
             for k, v in shaft.items()}
+
+
+def _one_blank(value):
+    """One gear's (b_s/b, s_R/m_n), checked; None: a solid disc gear."""
+    if value is None:
+        return None
+    if not isinstance(value, (tuple, list)) or len(value) != 2:
+        raise GearDesignError(f"gear_blank must be None (solid gears), (b_s/b, s_R/m_n) or one such pair or None per "
+                              f"gear, got {value!r}")
+    return tuple(_number(name, _not_bool(name, v), lo, hi, lo_open=True)
+                 for name, v, (lo, hi) in zip(("gear_blank b_s/b", "gear_blank s_R/m_n"), value, BLANK_RANGES))
+
+
+def blank_option(gear_blank) -> float:
+    """C_R of ``gear_blank`` (see :func:`~geardesign.gears.strength.chain.pair_strength`): 1.0 for None (solid
+    gears), the factor of one (b_s/b, s_R/m_n) for both gears, or the mean of the two gears' factors (a solid gear's
+    1.0) for a pair of them.
+
+    >>> blank_option(None), round(blank_option((0.25, 5.0)), 4), round(blank_option((None, (0.25, 5.0))), 4)
+    (1.0, 0.898, 0.949)
+    """
+    if gear_blank is None:
+        return 1.0
+    if (isinstance(gear_blank, (tuple, list)) and len(gear_blank) == 2
+            and all(g is None or isinstance(g, (tuple, list)) for g in gear_blank)):
+        per_gear = [_one_blank(g) for g in gear_blank]
+        return sum(1.0 if g is None else float(gear_blank_factor(*g)) for g in per_gear) / 2.0
+    return float(gear_blank_factor(*_one_blank(gear_blank)))
+
+
+def transverse_option(which) -> str:
+    """``transverse_deviation`` checked: one of :data:`~.factors.TRANSVERSE_DEVIATIONS`."""
+    if isinstance(which, str) and which in TRANSVERSE_DEVIATIONS:
+        return which
+    raise GearDesignError(f"transverse_deviation must be 'larger' (the larger of f_pb and f_falpha, ISO 6336-1:2006 "
+                          f"8.3.2) or 'f_pb', got {which!r}")

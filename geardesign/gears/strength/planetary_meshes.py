@@ -2,12 +2,21 @@
 load factor K_γ (ISO 6336-1:2019 clause 6.4)."""
 from __future__ import annotations
 
+import math
+
 from ...errors import GearDesignError
-from .chain import check_options, pair_strength
+from ...validate import one_number, require_range
+from ..geometry import mesh_geometry_float
+from ..mesh import Mesh
+from .chain import CHAIN_GEOMETRY_FIELDS, check_options, pair_strength
 from .load import Load
 from .result import StrengthResult, from_chain
 
-__all__ = ["planetary_strength", "mesh_loads"]
+__all__ = ["planetary_strength", "mesh_loads", "set_tips", "TIPS"]
+
+# the tips planetary_strength may take: the set's unshortened tips, or the sun and planet shortened by the sun-planet
+# mesh's k·m (ISO 21771: tip alteration, as a pair's tips are); a dict of diameters gives them as made
+TIPS = ("unshortened", "shortened")
 
 
 # the pair_strength options a set fixes itself
@@ -47,8 +56,67 @@ def mesh_loads(z_sun: int, z_planet: int, z_ring: int, n_planets: int, arrangeme
                             (1, n_planets))}
 
 
+def _contact_ratio(g: dict, da1: float, da2: float, internal: bool) -> float:
+    """ε_α = g_α/p_bt of a mesh's geometry ``g`` with tip diameters ``da1``, ``da2``: each gear's part of the path of
+    contact √(r_a² − r_b²) − r_b tan α_wt, a ring's r_b tan α_wt − √(r_a² − r_b²) (ISO 21771:2007 5.4)."""
+    tan_w = math.sqrt(g["dw1"] ** 2 - g["db1"] ** 2) / g["db1"]
+    e1 = math.sqrt(da1 * da1 - g["db1"] ** 2) / 2.0 - g["db1"] / 2.0 * tan_w
+    rho2 = math.sqrt(da2 * da2 - g["db2"] ** 2) / 2.0
+    e2 = g["db2"] / 2.0 * tan_w - rho2 if internal else rho2 - g["db2"] / 2.0 * tan_w
+    return (e1 + e2) / g["p_b"]
+
+
+def set_tips(pset, tips="unshortened") -> dict:
+    """The tip diameters (mm) planetary strength uses: {"sun": d_a, "planet": d_a, "ring": d_a}. ``"unshortened"``:
+    the set's own (d ± 2(h_a* ± x)m, as its checks have them); ``"shortened"``: the sun's and planet's shortened by
+    the sun-planet mesh's tip alteration k·m (ISO 21771:2007, as a pair's tips are; a ring is not shortened);
+    a dict with any of "sun", "planet", "ring": those diameters as made (the others unshortened).
+
+    >>> from geardesign.gears.planetary import PlanetarySet
+    >>> s = PlanetarySet(45, 19, 17, 56, 3, 0.617, 0.8021, 0.5013)     # NREL 5 MW stage 1
+    >>> {k: round(v, 3) for k, v in set_tips(s, "shortened").items()}
+    {'sun': 978.809, 'planet': 905.468, 'ring': 2475.117}
+    """
+    sp, pr = pset._geo["sun-planet"], pset._geo["planet-ring"]
+    out = {"sun": float(sp["da1"]), "planet": float(sp["da2"]), "ring": float(pr["da2"])}
+    if isinstance(tips, str) and tips in TIPS:
+        if tips == "shortened":
+            mesh = Mesh(pset.z_sun, pset.z_planet, pset.rack, True, pset.beta_deg)
+            short = mesh_geometry_float(mesh, pset.m, pset.x_sun, pset.x_planet, full=False, tips=False)
+            out.update(sun=float(short["da1"]), planet=float(short["da2"]))
+        return out
+    if not isinstance(tips, dict) or not tips or not set(tips) <= set(out):
+        raise GearDesignError(f"tips must be 'unshortened', 'shortened' or a dict of tip diameters in mm with keys "
+                              f"'sun', 'planet', 'ring', got {tips!r}")
+    for gear, d in tips.items():
+        d = float(one_number(f"tips[{gear!r}]", require_range(f"tips[{gear!r}]", d, 0.0, 1e9, lo_open=True,
+                                                              unit="mm")))
+        base = (sp["db1"] if gear == "sun" else sp["db2"] if gear == "planet" else pr["db2"])
+        root = (sp["df1"] if gear == "sun" else sp["df2"] if gear == "planet" else pr["df2"])
+        if gear != "ring" and not base < d or gear == "ring" and not d < root:
+            lo_hi = (f"above the base circle {base:.6g} mm" if gear != "ring" else
+                     f"below the root circle {root:.6g} mm")
+            raise GearDesignError(f"tips[{gear!r}] = {d:g} mm: an {'external' if gear != 'ring' else 'internal'} "
+                                  f"gear's tip diameter must lie {lo_hi}")
+        out[gear] = d
+    return out
+
+
+def _mesh_geometry(pset, tag: str, da1: float, da2: float) -> dict:
+    """The chain's geometry fields of one mesh of the set with these tip diameters (ε_α recomputed)."""
+    g = pset._geo[tag]
+    internal = tag == "planet-ring"
+    geo = {k: float(g[k]) for k in CHAIN_GEOMETRY_FIELDS}
+    geo.update(da1=da1, da2=da2, eps_alpha=_contact_ratio(g, da1, da2, internal), _z1=float(g["_z1"]),
+               _z2=float(g["_z2"]))
+    if not geo["eps_alpha"] > 0.0:
+        raise GearDesignError(f"{tag} mesh: no path of contact with these tips (eps_alpha = {geo['eps_alpha']:.4g})")
+    return geo
+
+
 def planetary_strength(pset, load: Load, material=None, *, face_width_mm: float, K_gamma: float = 1.0,
-                       planet_material=None, ring_material=None, **options) -> dict[str, StrengthResult]:
+                       planet_material=None, ring_material=None, tips="unshortened",
+                       **options) -> dict[str, StrengthResult]:
     """ISO 6336 strength of the sun-planet and planet-ring meshes of a
     :class:`~geardesign.gears.planetary.PlanetarySet`: ``load`` is the sun's torque (or power) and its speed
     (``on_gear`` 1); each mesh carries T_sun/N_planets (F_t = 2000 T_s/(N d_s)) times ``K_gamma``, the mesh
@@ -56,7 +124,10 @@ def planetary_strength(pset, load: Load, material=None, *, face_width_mm: float,
     tooth meets N planets per relative revolution, a ring tooth N. Materials: ``material`` for all three
     gears unless ``planet_material`` or ``ring_material`` is given. Returns {"sun-planet": ..., "planet-ring":
     ...}. The planet's root is loaded in both directions (reversed bending); its root safety here is the
-    one-directional value of ISO 6336-3 without the mean stress factor.
+    one-directional value of ISO 6336-3 without the mean stress factor. ``tips``: the tip diameters the meshes
+    have (ε_α, the root's load point, the tooth depth): ``"unshortened"`` (the default: the set's own tips, as its
+    geometric checks have them), ``"shortened"`` (sun and planet shortened by the sun-planet mesh's k·m, as a pair's
+    are) or a dict of the diameters as made (see :func:`set_tips`).
 
     >>> from geardesign.gears.planetary import PlanetarySet
     >>> s = PlanetarySet.coaxial(2, 20, 31, 82, 3)
@@ -75,11 +146,16 @@ def planetary_strength(pset, load: Load, material=None, *, face_width_mm: float,
                                                              pset.arrangement, load).values()
     common = dict(beta_deg=pset.beta_deg, rack=pset.rack, tip_shortening=False, face_width_mm=face_width_mm,
                   K_gamma=K_gamma, **options)
+    d = set_tips(pset, tips)
+    geo = ({} if isinstance(tips, str) and tips == "unshortened" else
+           {"sun-planet": _mesh_geometry(pset, "sun-planet", d["sun"], d["planet"]),
+            "planet-ring": _mesh_geometry(pset, "planet-ring", d["planet"], d["ring"])})
     planet = planet_material or material
     sp = pair_strength(pset.m, pset.z_sun, pset.z_planet, pset.x_sun, pset.x_planet, load=sp_load,
-                       material1=material, material2=planet, cycles_per_rev=sp_cycles, **common)
+                       material1=material, material2=planet, cycles_per_rev=sp_cycles, geometry=geo.get("sun-planet"),
+                       **common)
     pr = pair_strength(pset.m, pset.z_planet, pset.z_ring, pset.x_planet, pset.x_ring, load=pr_load,
                        material1=planet, material2=ring_material or material, internal=True,
-                       cycles_per_rev=pr_cycles, **common)
+                       cycles_per_rev=pr_cycles, geometry=geo.get("planet-ring"), **common)
     return {"sun-planet": from_chain(sp, title=f"sun-planet {pset.z_sun}/{pset.z_planet}"),
             "planet-ring": from_chain(pr, title=f"planet-ring {pset.z_planet}/{pset.z_ring}")}

@@ -15,13 +15,15 @@ from .defaults import MIN_SAFETY_SOURCE
 __all__ = ["StrengthResult", "FACTOR_TABLE", "from_chain"]
 
 P1, P2, P3 = "ISO 6336-1:2019", "ISO 6336-2:2019", "ISO 6336-3:2019"
-# (symbol, key in the chain's dict, gear (0 = the pair), clause or equation)
+# (symbol, key in the chain's dict, gear (0 = the pair), clause or equation): every clause names its standard and
+# edition, as the chain mixes editions where the 2019 text was not at hand (y_α, y_β, F_βx, f_sh, C_ay, Z_W, Y_β: 2006)
 FACTOR_TABLE = (
     ("F_t", "F_t", 0, f"{P1} eq. (1), N"), ("v", "v", 0, f"{P1} eq. (3), m/s"),
     ("K_A", "K_A", 0, f"{P1} 6.3"), ("K_gamma", "K_gamma", 0, f"{P1} 6.4"),
     ("f_pb", "f_pb", 0, "ISO 1328-1:1995 6.3.1 (f_pt cos α_t), µm"), ("f_falpha", "f_falpha", 0, "ISO 1328-1:1995 6.3.4, µm"),
     ("F_beta", "F_beta", 0, "ISO 1328-1:1995 6.3.6, µm"), ("f_Hbeta", "f_Hbeta", 0, "ISO 1328-1:1995 6.3.7, µm"),
     ("c_th", "c_th", 0, f"{P1} eq. (73), (74), N/(mm·µm)"), ("C_B", "C_B", 0, f"{P1} eq. (75)"),
+    ("C_R", "C_R", 0, f"{P1} 9.3.3, eq. (72) (1: solid gears)"),
     ("c_prime", "c_prime", 0, f"{P1} eq. (70), (71), N/(mm·µm)"),
     ("c_gamma_alpha", "c_gamma_alpha", 0, f"{P1} eq. (76), N/(mm·µm)"),
     ("c_gamma_beta", "c_gamma_beta", 0, f"{P1} eq. (77), N/(mm·µm)"),
@@ -30,6 +32,8 @@ FACTOR_TABLE = (
     ("N", "N", 0, f"{P1} eq. (28)"), ("K_v", "K_v", 0, f"{P1} 6.5.9, method B"),
     ("f_sh", "f_sh", 0, "ISO 6336-1:2006 7.6.2.2 eq. (44), µm"), ("f_ma", "f_ma", 0, "f_Hβ (ISO 6336-1:2006 7.6.2.1), µm"),
     ("F_betax", "F_betax", 0, "ISO 6336-1:2006/Cor.1:2008 7.6.2.1, µm"), ("y_beta", "y_beta", 0, "ISO 6336-1:2006 7.6.3, µm"),
+    ("f_Kalpha", "f_Kalpha", 0, "deviation in K_Halpha: f_pb, or with transverse_deviation='larger' the larger "
+                                "of f_pb, f_falpha (ISO 6336-1:2006 8.3.2), µm"),
     ("K_Hbeta", "K_Hbeta", 0, f"{P1} 7.6, method C"), ("N_F", "N_F", 0, f"{P1} eq. (56)"),
     ("K_Fbeta", "K_Fbeta", 0, f"{P1} eq. (55)"), ("K_Halpha", "K_Halpha", 0, f"{P1} 8.3.2, method B"),
     ("K_Falpha", "K_Falpha", 0, f"{P1} 8.3.2, method B"),
@@ -40,13 +44,14 @@ FACTOR_TABLE = (
     ("Z_L", "Z_L1", 1, f"{P2} eq. (21)"), ("Z_L", "Z_L2", 2, f"{P2} eq. (21)"),
     ("Z_v", "Z_v1", 1, f"{P2} eq. (25)"), ("Z_v", "Z_v2", 2, f"{P2} eq. (25)"),
     ("Z_R", "Z_R1", 1, f"{P2} eq. (27)"), ("Z_R", "Z_R2", 2, f"{P2} eq. (27)"),
-    ("Z_W", "Z_W1", 1, "ISO 6336-2:2006 clause 13"), ("Z_W", "Z_W2", 2, "ISO 6336-2:2006 clause 13"),
+    ("Z_W", "Z_W1", 1, "ISO 6336-2:2006 clause 13 (without the 2019 roughness term)"),
+    ("Z_W", "Z_W2", 2, "ISO 6336-2:2006 clause 13 (without the 2019 roughness term)"),
     ("Z_X", "Z_X", 0, f"{P2} clause 14"),
     ("Y_F", "Y_F1", 1, f"{P3} clause 6, method B"), ("Y_F", "Y_F2", 2, f"{P3} clause 6, method B"),
     ("Y_S", "Y_S1", 1, f"{P3} clause 7"), ("Y_S", "Y_S2", 2, f"{P3} clause 7"),
     ("Y_Fa", "Y_Fa1", 1, "ISO 6336-3:1996 method C"), ("Y_Fa", "Y_Fa2", 2, "ISO 6336-3:1996 method C"),
     ("Y_Sa", "Y_Sa1", 1, "ISO 6336-3:1996 method C"), ("Y_Sa", "Y_Sa2", 2, "ISO 6336-3:1996 method C"),
-    ("Y_eps", "Y_eps", 0, "ISO 6336-3:1996 eq. (20)"), ("Y_beta", "Y_beta", 0, f"{P3} clause 8"),
+    ("Y_eps", "Y_eps", 0, "ISO 6336-3:1996 eq. (20)"), ("Y_beta", "Y_beta", 0, "ISO 6336-3:2006 clause 8 (1 - eps_beta beta/120; the 2019 form is not used)"),
     ("Y_B", "Y_B1", 1, f"{P3} clause 9 (solid gear)"), ("Y_B", "Y_B2", 2, f"{P3} clause 9 (solid gear)"),
     ("Y_DT", "Y_DT", 0, f"{P3} clause 10"),
     ("Y_NT", "Y_NT1", 1, f"{P3} clause 12"), ("Y_NT", "Y_NT2", 2, f"{P3} clause 12"),
