@@ -245,7 +245,7 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     ratio_tol : the relative ratio error allowed, |z2/z1 − u|/u <= ratio_tol (0.02 = 2 %).
     m : module in mm, ``"series"`` (ISO 54 / GOST 9563 within ``m_range``, default 1..50 mm) or
         ``None`` (the series with ``a_w``, else m = 1); see "Modules and centre distances" above.
-    a_w : operating centre distance in mm, or ``"series"`` (GOST 2185-66, the nearest >= a).
+    a_w : operating centre distance in mm, or ``"standard"`` (alias ``"series"``: GOST 2185-66, the nearest >= a).
     z1_range : (min, max) teeth of the pinion, inclusive.  z_sum_max : largest z1 + z2.
     objective : a name in :data:`geardesign.shifts.objectives.OBJECTIVES` or an Objective; default ``"max_x_sum"`` with the
         centre distance free, ``"balanced_sliding"`` with ``a_w`` given (the x-sum is then
@@ -308,11 +308,11 @@ def _x_sum_window(window) -> tuple[float, float]:
 
 
 def _housing(a_w):
-    """The housing centre distance: None, "series" (the GOST 2185 value above a) or a length in mm."""
+    """The housing centre distance: None, "series" or "standard" (the GOST 2185 value above a) or a length in mm."""
     if isinstance(a_w, str):
-        if a_w != "series":
-            raise GearDesignError(f"a_w must be a centre distance in mm, 'series' or None, got {a_w!r}")
-        return a_w
+        if a_w not in ("series", "standard"):
+            raise GearDesignError(f"a_w must be a centre distance in mm, 'standard' ('series') or None, got {a_w!r}")
+        return "series"
     if a_w is None:
         return None
     return one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))

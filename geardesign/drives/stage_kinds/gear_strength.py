@@ -52,13 +52,15 @@ def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, 
     check registry builds for that load case (:func:`load_checks`; the built-in :data:`STRENGTH_CHECKS`, and any
     load model registered there), evaluated on the arrays in one call each; ``root=False``: ``contact_strength``
     alone (the strength model skips the root side)."""
+    from ...gears.geometry import mesh_geometry
     from ...gears.mesh import Mesh
 
     checks = load_checks(stage, float(torque_nm), float(speed_rpm), root)
     arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, face_width_mm, z1, z2, x1, x2)))
     M, B, Z1, Z2, X1, X2 = arrays
-    geo = {"_mesh": Mesh(20, 60, None, True, stage.beta_deg), "_m": M, "_z1": Z1, "_z2": Z2, "_x1": X1, "_x2": X2,
-           "_face_width_mm": B}
+    with np.errstate(all="ignore"):
+        geo = mesh_geometry(Mesh(20, 60, None, True, stage.beta_deg).unchecked(Z1, Z2), M, X1, X2, full=False)
+    geo["_face_width_mm"] = B           # a width per design (the sizing grid), read by the load checks
     return {c.name: np.asarray(c.margin(geo), dtype=float) for c in checks}
 
 
@@ -70,12 +72,13 @@ def load_checks(stage, torque_nm: float, speed_rpm: float, root: bool = True) ->
     """The checks of a gear stage's load case at one flow: what :func:`~geardesign.gears.checks.make_checks`
     builds from the stage's load context (its ``costly`` checks: the strength chain, and any load model
     registered with the check registry), the route every pair, region and search takes (docs/extending.md)."""
-    return _load_checks(stage.material, stage.life_h, stage.application_factor, _strength_options(stage), torque_nm,
-                        speed_rpm, root)
+    return _load_checks(stage.material, stage.life_h, stage.application_factor, _strength_options(stage),
+                        stage.checks_key(), torque_nm, speed_rpm, root)
 
 
 @lru_cache(maxsize=256)
-def _load_checks(material, life_h, application_factor, options: tuple, torque_nm, speed_rpm, root) -> tuple:
+def _load_checks(material, life_h, application_factor, options: tuple, checks: tuple, torque_nm, speed_rpm,
+                 root) -> tuple:
     from ...gears.checks import make_checks   # here: the check registry loads pandas
     from ...gears.strength import Load
 
@@ -85,8 +88,10 @@ def _load_checks(material, life_h, application_factor, options: tuple, torque_nm
         opts["root"] = False
         limits["S_Fmin"] = None
     load = Load(torque_nm=torque_nm, n_rpm=speed_rpm, life_h=life_h, application_factor=application_factor)
-    built = make_checks(load=load, material=stage_material(material), strength=opts or None, **limits)
-    return tuple(c for c in built if c.costly)
+    geometric = dict(checks)
+    plain = {c.name for c in make_checks(**geometric)}
+    built = make_checks(**geometric, load=load, material=stage_material(material), strength=opts or None, **limits)
+    return tuple(c for c in built if c.name not in plain)   # what the load case adds: every registered load model
 
 
 def _widths(stage, modules: np.ndarray, z1: int) -> tuple:

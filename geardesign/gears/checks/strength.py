@@ -82,8 +82,7 @@ class StrengthSpec:
         from ..strength.chain import CHAIN_GEOMETRY_FIELDS, pair_strength
 
         mesh = geo["_mesh"]
-        # the spec's width, else a width per design (a drive's sizing grid: "_face_width_mm"), else the mesh's
-        width = self.face_width_mm if self.face_width_mm is not None else geo.get("_face_width_mm", mesh.face_width_mm)
+        width = self.width(geo)
         if width is None:
             raise GearDesignError("the strength checks need a face width: give face_width_mm with the load")
         if isinstance(geo["_x1"], float):
@@ -148,6 +147,13 @@ class StrengthSpec:
             for k in _QUANTITIES:
                 S[k][j, 0] = out.get(k, np.nan)
         return {k: v.reshape((len(offsets),)) for k, v in S.items()}
+
+    def width(self, geo: dict):
+        """The face width [mm] of the designs of ``geo``: the load case's, else a width per design (a drive's
+        sizing grid puts an array in ``geo["_face_width_mm"]``), else the mesh's (None: not given)."""
+        if self.face_width_mm is not None:
+            return self.face_width_mm
+        return geo.get("_face_width_mm", geo["_mesh"].face_width_mm)
 
     def chain_output(self, geo: dict) -> dict | None:
         """The chain's whole output for the one design of ``geo`` (a float geometry) after its checks were
