@@ -304,10 +304,11 @@ def _evaluate(rows, fr, fa, n, life, a1, kappa, e_c, lubrication, s0_min):
                          L10_mrev=L10, L10h=L10h, a1=a1, a_iso=a_iso, Lnmh=Lnmh, s0=s0, s0_min=s0_need,
                          speed_limit_rpm=speed)
     # a yes/no check has margin +1 (holds) or -1 (fails); where the axial load cannot be carried the other
-    # checks have no value (NaN) and the axial check is the limiting one
+    # checks have no value (NaN) and the axial check is the limiting one; without a required life the life
+    # check is not made (NaN)
     ok = loads["axial_ok"]
     margins = {"axial_load": np.where(ok, 1.0, -1.0),
-               "life": np.where(ok, Lnmh / life - 1.0, np.nan) if life is not None else np.where(ok, 0.0, np.nan),
+               "life": np.where(ok, Lnmh / life - 1.0, np.nan) if life is not None else np.full(len(rows), np.nan),
                "static_safety": np.where(ok, s0 / s0_need - 1.0, np.nan),
                "speed": np.where(np.isfinite(speed), 1.0 - n / speed, 0.0)}
     for name, m in margins.items():
@@ -316,7 +317,7 @@ def _evaluate(rows, fr, fa, n, life, a1, kappa, e_c, lubrication, s0_min):
     m = np.where(ok[:, None], m, np.where(np.arange(m.shape[1]) == 0, -1.0, np.nan))
     table["min_margin"] = np.nanmin(m, axis=1)
     table["limiting_check"] = np.array(list(margins))[np.nanargmin(m, axis=1)]
-    table["feasible"] = ok & np.all(np.nan_to_num(m, nan=-1.0) >= 0, axis=1)
+    table["feasible"] = ok & np.all(np.isnan(m) | (m >= 0), axis=1)     # NaN: a check not asked for
     return table
 
 
