@@ -179,7 +179,9 @@ def life_modification_factor(kind, kappa, ec_cu_over_p):
     the text layer of that page also shows the exponent 0.83 beside the roller formulas, which we could not
     check against the standard: the roller form here (without it) is lower confidence (docs/bearings.md).
 
-    κ above 4 counts as 4 (ISO 281); κ below 0.1 is outside the formulas and refused. Where the bracket
+    κ above 4 counts as 4 (ISO 281); κ below 0.1 is outside the formulas and refused. At κ = 0.1 the inner
+    difference (2.5671 − 2.2649/κ^b, 1.5859 − 1.3993/κ^b) is zero but for the rounding of the printed constants
+    (about −5·10⁻⁶): it is taken as zero, a_ISO = 0.1, never below. Where the bracket
     reaches zero (a very clean, lightly loaded bearing) a_ISO is the cap, 50.
 
     >>> round(float(life_modification_factor("ball", 1.0, 0.0)), 6)     # no contamination credit: 0.1
@@ -204,7 +206,7 @@ def life_modification_factor(kind, kappa, ec_cu_over_p):
         power = -9.3
     else:
         A = np.where(low, 1.3993, 1.2348)
-        term = (1.5859 - A / k ** b) * x ** 0.4
+        term = np.maximum(1.5859 - A / k ** b, 0.0) * x ** 0.4
         power = -9.185
     base = 1.0 - term
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
