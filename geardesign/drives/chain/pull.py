@@ -108,6 +108,11 @@ class ChainPull(Result):
     def finite(self) -> bool:
         return math.isfinite(self.shaft_load_n)
 
+    def __repr__(self) -> str:
+        return (f"ChainPull(working pull {self.working_pull_n:.6g} N, centrifugal {self.centrifugal_n:.4g} N, sag "
+                f"{self.sag_n:.4g} N (k_f = {self.k_f:g}); load on each shaft {self.shaft_load_n:.6g} N along the line "
+                f"of centres at {self.incline_deg:g} deg)")
+
     @property
     def shaft1_load_n(self) -> tuple:
         """The load on the driving sprocket's shaft as (horizontal, vertical) components, N."""
