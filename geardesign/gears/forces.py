@@ -8,8 +8,7 @@ Convention (stated in every result as ``circle``):
 
 * ``"reference"`` — ISO 6336-1:2019 eq. (1): F_t = 2000·T1/d1 on the reference circle, F_r = F_t·tan α_t
   with the reference transverse pressure angle (tan α_t = tan α_n / cos β), F_a = F_t·tan β: the nominal
-  forces of a rating (NTN CAT. No. 2203/E §4.1 eqs. (4.2)-(4.6); Shigley's Mechanical Engineering Design,
-  eqs. (13-36), (13-40));
+  forces of a rating (NTN CAT. No. 2203/E §4.1 eqs. (4.2)-(4.6));
 * ``"operating"`` (the default for shaft and bearing loads) — the same torque on the operating pitch
   circle: F_t = 2000·T1/d_w1 and F_r = F_t·tan α_wt. The tooth force acts along the line of action,
   F_bt = 2000·T1/d_b1 in the transverse plane, so these two are its exact components along and across the
@@ -53,7 +52,7 @@ def tangential_force_n(torque_nm, d_mm):
 
 def radial_force_n(F_t, alpha_t_deg):
     """F_r = F_t·tan α_t (N), α_t the transverse pressure angle of the circle F_t is taken on (NTN CAT.
-    2203/E eqs. (4.4a), (4.4b) with tan α_t = tan α_n/cos β; Shigley eq. (13-40)).
+    2203/E eqs. (4.4a), (4.4b): K_s = K_t·tan α_n/cos β for a helical gear, tan α_t = tan α_n/cos β).
 
     NTN's Example 4: K_s = 9.55 kN·tan 20° = 3.48 kN:
 
@@ -64,8 +63,8 @@ def radial_force_n(F_t, alpha_t_deg):
 
 
 def axial_force_n(F_t, beta_deg):
-    """F_a = F_t·tan β (N) with F_t and β of the reference circle (NTN CAT. 2203/E eq. (4.6); Shigley
-    eq. (13-40)); 0 for a spur pair.
+    """F_a = F_t·tan β (N) with F_t and β of the reference circle (NTN CAT. 2203/E eq. (4.6)); 0 for a spur
+    pair.
 
     >>> round(float(axial_force_n(1000.0, 45.0)), 9)
     1000.0
@@ -75,7 +74,8 @@ def axial_force_n(F_t, beta_deg):
 
 def normal_force_n(F_t, alpha_n_deg, beta_deg):
     """F_n = F_t/(cos α_n·cos β) (N), the whole tooth force normal to the flank, with the reference F_t,
-    α_n and β (Shigley eq. (13-40): W = W_t/(cos φ_n cos ψ)).
+    α_n and β: the magnitude √(F_t² + F_r² + F_a²) of NTN CAT. 2203/E eqs. (4.2)-(4.6), since
+    1 + tan²α_n/cos²β + tan²β = 1/(cos²α_n cos²β).
 
     >>> round(float(normal_force_n(9550.0, 20.0, 0.0)) / 1000, 2)   # NTN Example 4: K_r = 10.16 kN
     10.16
