@@ -19,6 +19,7 @@ Sources (docs/references.md, docs/bearings.md):
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -301,7 +302,7 @@ def _evaluate(rows, fr, fa, n, life, a1, kappa, e_c, lubrication, s0_min):
     s0_need = np.where(kind == "ball", S0_MIN_NORMAL["ball"], S0_MIN_NORMAL["roller"]) if s0_min is None \
         else np.full(len(rows), float(s0_min))
     speed = rows[f"speed_{lubrication}_rpm"].to_numpy(dtype=float)
-    table = rows[["designation", "series", "d_mm", "D_mm", "B_mm", "C_kn", "C0_kn", "Cu_kn", "f0"]].copy()
+    table = rows[["designation", "series", "bearing_type", "d_mm", "D_mm", "B_mm", "C_kn", "C0_kn", "Cu_kn", "f0"]].copy()
     table = table.assign(e=loads["e"], X=loads["X"], Y=loads["Y"], P_n=loads["P_n"], P0_n=loads["P0_n"],
                          L10_mrev=L10, L10h=L10h, a1=a1, a_iso=a_iso, Lnmh=Lnmh, s0=s0, s0_min=s0_need,
                          speed_limit_rpm=speed)
@@ -361,9 +362,11 @@ class BearingCheck(Result):
 
     def __repr__(self) -> str:
         life = f"L10h = {self.L10h:.6g} h" + (f", Lnmh = {self.Lnmh:.6g} h" if self.Lnmh != self.L10h else "")
-        return (f"BearingCheck({self.designation}: {self.message})\n  d x D x B = {self.d_mm:g} x {self.D_mm:g} x "
-                f"{self.B_mm:g} mm, C = {self.C_kn:g} kN, C0 = {self.C0_kn:g} kN\n  P = {self.P_n:.6g} N "
-                f"(X = {self.X:g}, Y = {self.Y:.4g}), {life}, s0 = {self.s0:.4g}")
+        head = (f"BearingCheck({self.designation}: {self.message})\n  d x D x B = {self.d_mm:g} x {self.D_mm:g} x "
+                f"{self.B_mm:g} mm, C = {self.C_kn:g} kN, C0 = {self.C0_kn:g} kN")
+        if not math.isfinite(self.P_n):       # the axial load cannot be carried: no load, life or safety to show
+            return head
+        return head + f"\n  P = {self.P_n:.6g} N (X = {self.X:g}, Y = {self.Y:.4g}), {life}, s0 = {self.s0:.4g}"
 
 
 @dataclass(frozen=True, eq=False)
@@ -387,8 +390,10 @@ def _check_from_row(row, fr, fa, n, life) -> BearingCheck:
     what = {"life": (f"life {row['Lnmh']:.6g} h" + (f" against the required {life:g} h" if life else "")),
             "static_safety": f"static safety s0 = {row['s0']:.4g} against {row['s0_min']:g}",
             "speed": f"speed {n:g} rpm against the allowable {row['speed_limit_rpm']:g} rpm",
-            "axial_load": "the axial load (a type NU bearing carries none; a deep groove ball bearing up to "
-                          "f0 Fa/C0r = 6.89)"}
+            "axial_load": (f"a type NU bearing carries no axial load (Fa = {fa:g} N)"
+                           if row["bearing_type"] == "cylindrical_roller" else
+                           f"f0 Fa/C0r = {row['f0'] * fa / (1000 * row['C0_kn']):.3g} is beyond the end of the "
+                           f"ISO 281 table, 6.89 (about Fa = 0.5 C0)")}
     msg = (f"{row['designation']} holds: {what['life']}, s0 = {row['s0']:.4g}" if ok
            else f"{row['designation']} fails {limiting}: {what[limiting]}")
     f = lambda k: float(row[k])
