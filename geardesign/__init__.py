@@ -49,6 +49,9 @@ _NAMES = {
     "pair_backlash": "gears.backlash", "Backlash": "gears.backlash", "x_sum_for_backlash": "gears.backlash",
     "gost1643_jn_min": "gears.backlash", "flank_tolerances": "gears.tolerances", "FlankTolerances": "gears.tolerances",
     "data_block": "gears.data_block",
+    "mesh_forces": "gears.forces", "pair_forces": "gears.forces", "planetary_forces": "gears.forces",
+    "MeshForces": "gears.forces", "check_bearing": "drives.bearing", "select_bearing": "drives.bearing",
+    "chain_pull": "drives.chain.pull",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {
@@ -56,7 +59,7 @@ _MODULES = {
     "key": "drives.key", "sprocket": "drives.sprocket", "sweeps": "sensitivity.sweeps", "scene": "scene",
     "studies": "sensitivity.sweeps",    # the module's name before it was sweeps.py; kept for old scripts
     "gears": "gears", "shifts": "shifts", "drives": "drives", "sensitivity": "sensitivity", "profiles": "profiles",
-    "motor": "drives.motor",
+    "motor": "drives.motor", "bearing": "drives.bearing", "forces": "gears.forces",
 }
 
 __all__ = sorted(_NAMES) + sorted(_MODULES)

@@ -48,6 +48,10 @@ def _examples():
         "ToothMeasurements": gd.tooth_measurements(8, 17, 0.898),
         "Backlash": pair.backlash(-0.1, -0.12, 0.05),
         "FlankTolerances": gd.flank_tolerances(8, 17, 7, face_width_mm=60),
+        "MeshForces": pair.forces(400.0),
+        "ChainPull": gd.chain_pull(380, 31.75, 13, 120, 3.8, 1270.0),
+        "BearingCheck": gd.check_bearing("6208", 3200, 1800, 650),
+        "BearingSelection": gd.select_bearing(["62", "63"], 40, 3200, 1800, 650, life_h=20000),
     }
 
 
@@ -92,7 +96,7 @@ def test_scene_report_repr(tmp_path):
     "Geometry", "Geometry (arrays)", "checks table", "ToothProfile", "RingProfile", "pair_profiles", "ShiftResult",
     "ShiftResult (failed)", "Region", "TeethSelection", "PlanetarySet", "PlanetaryShiftResult",
     "PlanetaryTeethSelection", "ChainDesign", "KeySelection", "KeyCapacity", "MotorSelection", "Drive",
-    "DriveAnalysis", "GearStage"])
+    "DriveAnalysis", "GearStage", "MeshForces", "ChainPull", "BearingCheck", "BearingSelection"])
 def test_repr_is_short_and_never_an_array_dump(name, examples):
     text = repr(examples[name])
     lines = text.splitlines()
@@ -102,7 +106,7 @@ def test_repr_is_short_and_never_an_array_dump(name, examples):
 
 
 @pytest.mark.parametrize("name", ["Geometry", "ShiftResult", "TeethSelection", "ChainDesign", "KeySelection",
-                                  "DriveAnalysis", "PlanetaryShiftResult", "checks table"])
+                                  "DriveAnalysis", "PlanetaryShiftResult", "checks table", "BearingSelection"])
 def test_tabular_results_have_an_html_view(name, examples):
     html = examples[name]._repr_html_()
     assert "<table" in html and "array([" not in html

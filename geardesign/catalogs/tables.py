@@ -145,6 +145,20 @@ SCHEMAS: dict[str, Schema] = {
         increasing_within=("sync_speed_rpm",), trend=(("power_kw", "nondecreasing"),),
         description="three-phase asynchronous motors: rated power and speed; T_max/T_nom, shaft end diameter, "
                     "efficiency, T_start/T_nom and mass where the source prints them (blank otherwise)"),
+    "bearings": Schema(
+        "bearings",
+        (Column("designation", "str"), Column("series", "str"), Column("type", "str"), _f("d_mm"), _f("D_mm"),
+         _f("B_mm"), _f("C_kn"), _f("C0_kn"), _f("Cu_kn", required=False), _f("f0", required=False),
+         _f("speed_grease_rpm", required=False), _f("speed_oil_rpm", required=False)),
+        increasing=("d_mm",), increasing_within=("series",),
+        trend=(("D_mm", "nondecreasing"),),
+        description="rolling bearings: bore d, outside diameter D, width B, basic dynamic and static load ratings C, "
+                    "C0 and fatigue load limit Cu in kN, the deep groove ball bearing factor f0, allowable speeds"),
+    "bearing_factors": Schema(
+        "bearing_factors",
+        (_f("f0_fa_c0r"), _f("e"), _f("X"), _f("Y")),
+        increasing=("f0_fa_c0r",), trend=(("e", "nondecreasing"), ("Y", "nonincreasing")),
+        description="e, X and Y of the equivalent dynamic load P = X Fr + Y Fa against f0 Fa/C0r (ISO 281)"),
 }
 
 # Bundled tables: name -> (file, schema kind, row filter on the "series" column or None)
@@ -167,6 +181,10 @@ BUNDLED: dict[str, tuple[str, str, str | None]] = {
     "motors_air": ("motors_air.csv", "motors", None),
     "motors_soga_mt3": ("motors_soga_mt3.csv", "motors", None),
     "motors_motive_delphi": ("motors_motive_delphi.csv", "motors", None),
+    "bearings_deep_groove": ("bearings_deep_groove.csv", "bearings", None),
+    "bearings_angular_contact": ("bearings_angular_contact.csv", "bearings", None),
+    "bearings_cylindrical_roller": ("bearings_cylindrical_roller.csv", "bearings", None),
+    "bearing_factors_deep_groove": ("bearing_factors_deep_groove.csv", "bearing_factors", None),
 }
 CHAIN_CATALOGS = ("gost13568", "iso606", "iso606a", "iso606b", "ansi_b29")
 
@@ -346,6 +364,14 @@ def _row_rules(frame: pd.DataFrame, schema: Schema, path, lines) -> None:
         fail(frame["efficiency_pct"].to_numpy() >= 100.0, "efficiency_pct", "efficiency must be below 100 %")
         for col, top in (("max_torque_ratio", MOTOR_TORQUE_RATIO_MAX), ("start_torque_ratio", MOTOR_TORQUE_RATIO_MAX)):
             fail(frame[col].to_numpy() > top, col, f"a torque ratio above {top:g} is not a catalogue motor's")
+    elif schema.kind == "bearings":
+        d, D, B = (frame[c].to_numpy(dtype=float) for c in ("d_mm", "D_mm", "B_mm"))
+        fail(D <= d, "D_mm", "the outside diameter must exceed the bore")
+        fail(B >= D - d, "B_mm", "the width must be less than D - d (a radial bearing)")
+        fail(frame["C0_kn"].to_numpy() > 3.0 * frame["C_kn"].to_numpy(), "C0_kn",
+             "C0 above 3 C is not a radial bearing's rating (a slip of the decimal point)")
+        fail(frame["Cu_kn"].to_numpy(dtype=float) >= frame["C0_kn"].to_numpy(), "Cu_kn",
+             "the fatigue load limit must be below C0")
     elif schema.kind in ("modules", "center_distances"):
         fail(~frame["series"].isin([1, 2]).to_numpy(), "series", "series must be 1 or 2")
     elif schema.kind == "preferred_numbers":

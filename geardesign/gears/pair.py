@@ -216,6 +216,13 @@ class GearPair:
         from .strength import strength   # here: the chain loads the materials catalog (pandas)
         return strength(self, load, material, **options)
 
+    def forces(self, load, circle: str = "operating"):
+        """The mesh forces F_t, F_r, F_a (N) and where they act (:func:`~geardesign.gears.forces.pair_forces`):
+        ``load`` a :class:`~geardesign.gears.strength.Load` or gear 1's torque in N·m; ``circle`` "operating"
+        (the pitch circle the pair runs on; default) or "reference" (ISO 6336-1's F_t = 2000 T/d)."""
+        from .forces import pair_forces   # here: loaded on first use, a pair is built without it
+        return pair_forces(self, load, circle)
+
     def measurements(self, gear: int | None = None, **options):
         """The measuring sizes of gear 1, gear 2 or (``gear=None``) both as a tuple
         (:func:`~geardesign.gears.measurement.tooth_measurements`, with this pair's module, shifts, rack, helix,

@@ -21,10 +21,11 @@ from .inputs import (CENTER_DISTANCE_MAX_MM, CENTER_DISTANCE_MIN_MM, CENTER_DIST
                          METHODS, N1_RANGE_RPM, OBJECTIVES, POWER_RANGE_KW, RATIO_RANGE, SAFETY_FACTOR_RANGE,
                          SAG_FACTOR_RANGE, STRANDS_RANGE, TORQUE_RANGE_NM, Z1_RANGE, Z2_MAX_LIMIT, Conditions)
 from .design import ChainDesign, design
+from .pull import ChainPull, chain_pull
 from .formulas import (G, HP_TO_KW, IN_MM, allowable_pressure_mpa, hinge_pressure_mpa, pitch_estimate_mm,
                        rated_power_link_plate_kw, rated_power_roller_bushing_kw, recommended_z1, safety_factor)
 
-__all__ = ["Conditions", "ChainDesign", "design", "recommended_z1", "pitch_estimate_mm", "hinge_pressure_mpa",
+__all__ = ["Conditions", "ChainDesign", "design", "ChainPull", "chain_pull", "recommended_z1", "pitch_estimate_mm", "hinge_pressure_mpa",
            "safety_factor", "rated_power_link_plate_kw", "rated_power_roller_bushing_kw", "allowable_pressure_mpa",
            "OBJECTIVES", "METHODS", "FACTOR_NAMES", "TORQUE_RANGE_NM", "POWER_RANGE_KW", "N1_RANGE_RPM", "RATIO_RANGE",
            "K_E_RANGE", "FACTOR_RANGE", "SAFETY_FACTOR_RANGE", "SAG_FACTOR_RANGE", "Z1_RANGE", "STRANDS_RANGE",
