@@ -58,8 +58,12 @@ def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, 
     checks = load_checks(stage, float(torque_nm), float(speed_rpm), root)
     arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, face_width_mm, z1, z2, x1, x2)))
     M, B, Z1, Z2, X1, X2 = arrays
-    with np.errstate(all="ignore"):
-        geo = mesh_geometry(Mesh(20, 60, None, True, stage.beta_deg).unchecked(Z1, Z2), M, X1, X2, full=False)
+    mesh = Mesh(20, 60, None, True, stage.beta_deg).unchecked(Z1, Z2)
+    if all(c.costly for c in checks):   # the chain computes the geometry it needs itself
+        geo = {"_mesh": mesh, "_m": M, "_z1": Z1, "_z2": Z2, "_x1": X1, "_x2": X2}
+    else:                               # a load model reading geometry fields: give it them all
+        with np.errstate(all="ignore"):
+            geo = mesh_geometry(mesh, M, X1, X2, full=False)
     geo["_face_width_mm"] = B           # a width per design (the sizing grid), read by the load checks
     return {c.name: np.asarray(c.margin(geo), dtype=float) for c in checks}
 
