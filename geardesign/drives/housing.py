@@ -20,7 +20,7 @@ from ..errors import GearDesignError
 from ..gears.center_distance import center_distance_from_x_sum, min_center_distance
 from ..validate import one_number, require_range
 
-__all__ = ["CENTER_DISTANCE_SERIES", "REDUCER_X_SUM_WINDOW", "REDUCER_SHIFT_BOUNDS", "series_values",
+__all__ = ["CENTER_DISTANCE_SERIES", "CENTER_DISTANCE_RANGE_MM", "REDUCER_X_SUM_WINDOW", "REDUCER_SHIFT_BOUNDS", "series_values",
            "standard_center_distance", "check_center_distance"]
 
 # a name of a standard series -> (what it is, how to get its values)

@@ -665,6 +665,8 @@ class GearKind(ToothedKind):
 
         f, i = "float", "int"
         from ...gears.strength.load import APPLICATION_FACTOR_RANGE, LIFE_RANGE_H
+        from ...gears.backlash import GOST1643_TYPES
+        from ..housing import CENTER_DISTANCE_RANGE_MM, CENTER_DISTANCE_SERIES
 
         # no module: sized by the stage's load (needs a material); see GearStage
         return {"module": dict(kind=f, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
@@ -679,13 +681,18 @@ class GearKind(ToothedKind):
                 "z1_range": dict(kind="ints", lo=Z_MIN, hi=Z_MAX, length=2), "z2_max": dict(kind=i, lo=Z_MIN, hi=Z_MAX),
                 "ratio_range": dict(kind="floats", lo=1.0, hi=100.0, length=2),
                 "shift_objective": dict(kind="choice", choices=tuple(OBJECTIVES)),
+                # the housing and the shop (GearStage): a series name or a_w in mm; the x window; GOST 1643 type
+                "center_distance": dict(kind="float_or_str", lo=CENTER_DISTANCE_RANGE_MM[0],
+                                        hi=CENTER_DISTANCE_RANGE_MM[1], choices=("free",) + tuple(CENTER_DISTANCE_SERIES)),
+                "shift_bounds": dict(kind="floats", lo=-3.0, hi=3.0, length=2),
+                "mating_type": dict(kind="choice", choices=GOST1643_TYPES + ("none",)),
                 "checks": dict(table="checks", without=("jamming",))}
 
     def from_scene(self, spec: dict):
         kw = dict(spec)
         kw["m"] = kw.pop("module", None)
         kw["checks"] = dict(kw["checks"]) if kw.get("checks") else None
-        for k in ("z1_range", "ratio_range"):
+        for k in ("z1_range", "ratio_range", "shift_bounds"):
             if k in kw:
                 kw[k] = tuple(kw[k])
         return GearStage(**kw)

@@ -1,0 +1,131 @@
+"""Issue 35 §2-4: standard centre distances (GOST 2185-66, ISO 3 preferred numbers) and the manufactured state
+of a pair (its checks with the teeth thinned by their allowances, the housing within its allowance)."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+import geardesign as gd
+from geardesign.catalogs import center_distance_series, preferred_numbers
+from geardesign.drives.housing import REDUCER_X_SUM_WINDOW, standard_center_distance
+from geardesign.errors import GearDesignError
+from geardesign.gears.manufactured import ShopAllowances, manufactured_margins, shop_allowances
+
+
+def test_iso3_preferred_numbers_are_the_standards_rounded_values():
+    """ISO 3:1973 Table 1 (= DIN 323-1): R10 and R20 between 100 and 1000, as printed."""
+    assert preferred_numbers("R10", 100, 1000).tolist() == [100, 125, 160, 200, 250, 315, 400, 500, 630, 800, 1000]
+    assert preferred_numbers("R20", 100, 250).tolist() == [100, 112, 125, 140, 160, 180, 200, 224, 250]
+    # every R40 value lies within 1.3 % of the exact geometric series 10^(i/40) (ISO 3's rounding)
+    r40 = preferred_numbers("R40", 1, 9.99)
+    exact = 10 ** (np.arange(40) / 40)
+    assert np.max(np.abs(r40 / exact - 1)) < 0.013
+    with pytest.raises(GearDesignError, match="series"):
+        preferred_numbers("R7")
+
+
+def _x_sum(m, z1, z2, a_w, beta_deg=0.0):
+    """x1 + x2 for a_w, written out here: inv α_wt = inv α_t + 2 x_Σ tan α_n / z_Σ (ISO 21771 eq. (62))."""
+    an = math.radians(20)
+    b = math.radians(beta_deg)
+    at = math.atan(math.tan(an) / math.cos(b))
+    a = m * (z1 + z2) / (2 * math.cos(b))
+    awt = math.acos(a * math.cos(at) / a_w)
+    inv = lambda t: math.tan(t) - t
+    return (inv(awt) - inv(at)) * (z1 + z2) / (2 * math.tan(an))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from([1.5, 2, 2.5, 3, 4, 5, 6, 8]), st.integers(14, 30), st.integers(30, 140),
+       st.sampled_from([0.0, 8.0, 15.0]))
+def test_the_standard_center_distance_is_the_smallest_series_value_in_the_window(m, z1, z2, beta):
+    """Brute force over GOST 2185-66: the chosen a_w is the smallest series value whose x-sum (computed here)
+    lies in the reducer window; NaN when none does."""
+    got = standard_center_distance(m, z1, z2, "gost2185", beta)
+    lo, hi = REDUCER_X_SUM_WINDOW
+    a_ref = m * (z1 + z2) / (2 * math.cos(math.radians(beta)))
+    at = math.atan(math.tan(math.radians(20)) / math.cos(math.radians(beta)))
+    fits = [a for a in center_distance_series((1, 2)) if a > a_ref * math.cos(at)
+            and lo - 1e-9 <= _x_sum(m, z1, z2, a, beta) <= hi + 1e-9]
+    if fits:
+        assert got == fits[0]
+    else:
+        assert math.isnan(got)
+
+
+def test_zero_allowances_give_the_nominal_margins_by_another_formula():
+    """At zero allowances the manufactured margins (ε_α and ρ_p from the tip radii and a' sin α'_wt, the
+    involute thickness at the tip) equal the geometry's own (computed without cancellation another way)."""
+    zero = ShopAllowances(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, "B", 0.0, "")
+    for args, kw in (((3, 20, 61, 0.3, 0.2), {}), ((2.5, 17, 40, 0.5, -0.1), {"beta_deg": 12.0}),
+                     ((4, 13, 90, 0.6, 0.4), {})):
+        pair = gd.GearPair(*args, **kw)
+        table = pair.checks(jamming=False)
+        got = manufactured_margins(pair, table, zero)
+        for name, margin in zip(table["check"], table["margin"]):
+            assert got[name] == pytest.approx(float(margin), abs=1e-11), name
+
+
+def test_the_manufactured_state_by_hand():
+    """20/61 m 3, x 0.3/0.2, allowances A_sni = −0.2 mm, a' = a_w ± 0.05 mm: the margins written out."""
+    pair = gd.GearPair(3, 20, 61, 0.3, 0.2)
+    g = pair.geometry()
+    table = pair.checks(jamming=False)
+    allow = ShopAllowances(-0.05, 0.05, -0.1, -0.1, -0.2, -0.2, "B", 0.0, "")
+    got = manufactured_margins(pair, table, allow)
+    ra1, ra2, rb1, rb2 = g.da1 / 2, g.da2 / 2, g.db1 / 2, g.db2 / 2
+    a_hi = g.a_w + 0.05
+    w = math.acos((rb1 + rb2) / a_hi)
+    pbt = math.pi * 3 * math.cos(math.radians(20))
+    eps = (math.sqrt(ra1**2 - rb1**2) + math.sqrt(ra2**2 - rb2**2) - a_hi * math.sin(w)) / pbt
+    assert got["contact_ratio"] == pytest.approx(eps - 1.2, abs=1e-12)
+    x_e = 0.3 - 0.2 / (2 * 3 * math.tan(math.radians(20)))
+    assert got["undercut1"] == pytest.approx(x_e - g.x_min1, abs=1e-12)
+    # tip thickness: s_a = d_a (s/d + inv α − inv α_a) with s thinned by 0.2 mm
+    d1 = 60.0
+    s = 3 * (math.pi / 2 + 2 * 0.3 * math.tan(math.radians(20))) - 0.2
+    aa = math.acos(rb1 / ra1)
+    inv = lambda t: math.tan(t) - t
+    sa = g.da1 * (s / d1 + inv(math.radians(20)) - inv(aa))
+    assert got["tip_thickness1"] == pytest.approx(sa / 3 - 0.25, abs=1e-12)
+    a_lo = g.a_w - 0.05
+    w = math.acos((rb1 + rb2) / a_lo)
+    rho_p1 = a_lo * math.sin(w) - math.sqrt(ra2**2 - rb2**2)
+    assert got["interference1"] == pytest.approx((rho_p1 - max(g.rho_l1, 0)) / 3, abs=1e-12)
+
+
+def test_shop_allowances_follow_gost1643_and_leave_its_least_backlash():
+    pair = gd.GearPair(3, 20, 61, 0.3, 0.2)           # a_w 124.6 mm: GOST 1643 interval 80-125 mm
+    a = shop_allowances(pair)
+    assert a.jn_min_mm == pytest.approx(0.140)       # mating type B: 140 µm (Table 13)
+    from geardesign.gears.backlash import pair_backlash
+
+    b = pair_backlash(pair, a.a_sne1, a.a_sne2, (a.a_ai, a.a_ae))      # the least backlash they leave
+    assert b.jbn_min == pytest.approx(0.140, abs=1e-9)
+    assert a.a_sni1 == pytest.approx(2 * a.a_sne1) and a.a_sne1 < 0
+    with pytest.raises(GearDesignError, match="mating_type"):
+        shop_allowances(pair, "Z")
+
+
+def test_stage_options_are_checked_by_name():
+    with pytest.raises(GearDesignError, match="center_distance"):
+        gd.GearStage(3, center_distance="R7")
+    with pytest.raises(GearDesignError, match="center_distance"):
+        gd.GearStage(3, center_distance=-5)
+    with pytest.raises(GearDesignError, match="mating_type"):
+        gd.GearStage(3, mating_type="Q")
+    with pytest.raises(GearDesignError, match="shift_bounds"):
+        gd.GearStage(3, shift_bounds=(1, 0))
+    assert gd.GearStage(None, material="42CrMo4").housing == "gost2185"
+    assert gd.GearStage(3).housing == "free" and gd.GearStage(3).fit is None
+
+
+def test_a_given_housing_puts_the_pair_there():
+    """A stage of given module in a housing of a_w = 125 mm: the analysed pair runs at 125 mm."""
+    a = gd.Drive(power_kw=5, n_in_rpm=1460, stages=[gd.GearStage(3, z1=20, z2=62, center_distance=125.0,
+                                                                 mating_type="B")]).analyse()
+    assert a.stages[0]["pair"].geometry().a_w == pytest.approx(125.0, abs=1e-9)
+    assert a.success
