@@ -14,6 +14,8 @@ lines for speed reducers) could not be obtained for this project and are not rep
 """
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 
 from ..errors import GearDesignError
@@ -36,6 +38,7 @@ REDUCER_SHIFT_BOUNDS = (-1.2, 1.2)
 CENTER_DISTANCE_RANGE_MM = (1.0, 1e5)
 
 
+@lru_cache(maxsize=16)
 def series_values(series: str) -> np.ndarray:
     """The centre distances [mm] of a standard series (a name of :data:`CENTER_DISTANCE_SERIES`).
 
@@ -45,11 +48,16 @@ def series_values(series: str) -> np.ndarray:
     from ..catalogs.tables import center_distance_series, preferred_numbers   # here: catalogs load pandas
 
     if series == "gost2185":
-        return center_distance_series((1, 2))
-    if series == "gost2185-1":
-        return center_distance_series(1)
-    if series in ("R10", "R20", "R40"):
-        return preferred_numbers(series, *CENTER_DISTANCE_RANGE_MM)
+        values = center_distance_series((1, 2))
+    elif series == "gost2185-1":
+        values = center_distance_series(1)
+    elif series in ("R10", "R20", "R40"):
+        values = preferred_numbers(series, *CENTER_DISTANCE_RANGE_MM)
+    else:
+        values = None
+    if values is not None:
+        values.flags.writeable = False      # kept (lru_cache): a caller cannot change the series
+        return values
     raise GearDesignError(f"center_distance series must be one of {', '.join(CENTER_DISTANCE_SERIES)}, "
                           f"got {series!r}")
 

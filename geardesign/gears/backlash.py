@@ -23,6 +23,7 @@ base half-angles (+ external tooth; a ring's tooth ψ + inv α). To first order 
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -264,13 +265,19 @@ def allowances_for_backlash(pair, jbn_min_mm: float, center_distance_allowance_m
     return out
 
 
-def _gost_table():
+@functools.lru_cache(maxsize=1)
+def _gost_columns() -> dict:
+    """The GOST 1643 table's columns as read-only arrays (read once: a drive's sizing asks per design)."""
     import pandas as pd
 
     from ..catalogs.tables import catalog_dir   # here: the catalogs layer loads pandas
 
     with (catalog_dir() / "gost1643_backlash.csv").open("r", encoding="utf-8") as fh:
-        return pd.read_csv(fh)
+        table = pd.read_csv(fh)
+    cols = {c: table[c].to_numpy(dtype=float) for c in table.columns if c.startswith(("a_w_", "jn_min_um_"))}
+    for v in cols.values():
+        v.flags.writeable = False
+    return cols
 
 
 def gost1643_jn_min(mating_type: str, a_w_mm):
@@ -283,9 +290,9 @@ def gost1643_jn_min(mating_type: str, a_w_mm):
     """
     mating_type = require_choice("mating_type", mating_type, GOST1643_TYPES)
     a = require_range("a_w_mm", a_w_mm, 0.0, 3150.0, lo_open=True, unit="mm")
-    table = _gost_table()
-    upper = table["a_w_max_mm"].to_numpy(dtype=float)
-    col = table[f"jn_min_um_{mating_type}"].to_numpy(dtype=float)
+    table = _gost_columns()
+    upper = table["a_w_max_mm"]
+    col = table[f"jn_min_um_{mating_type}"]
     idx = np.searchsorted(upper, a, side="left")
     out = col[idx] / 1000.0
     return float(out) if np.ndim(out) == 0 else out

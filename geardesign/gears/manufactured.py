@@ -123,6 +123,13 @@ def shop_allowances(pair, mating_type: str = DEFAULT_MATING_TYPE, center_distanc
                           source=f"centre distance {fa_src}; A_sne for GOST 1643-81 j_n,min at a_w + A_ai; {t_src}")
 
 
+class _Row:
+    __slots__ = ("margin", "limit")
+
+    def __init__(self, margin: float, limit: float):
+        self.margin, self.limit = margin, limit
+
+
 def _path_at(geo, a_prime: float):
     """(√(r_a1² − r_b1²), √(r_a2² − r_b2²), a' sin α'_wt) of the pair of ``geo`` run at centre distance a'."""
     ra1, ra2, rb1, rb2 = geo.da1 / 2, geo.da2 / 2, geo.db1 / 2, geo.db2 / 2
@@ -132,8 +139,9 @@ def _path_at(geo, a_prime: float):
 
 
 def manufactured_margins(pair, checks_table, allowances: ShopAllowances) -> dict:
-    """{check: margin} of the checks in ``checks_table`` (the pair's :meth:`~geardesign.GearPair.checks` table)
-    at the manufactured state of ``allowances``; checks the allowances do not move keep their nominal margin.
+    """{check: margin} of the checks in ``checks_table`` (the pair's :meth:`~geardesign.GearPair.checks` table,
+    or a dict {check: (nominal margin, limit)}) at the manufactured state of ``allowances``; checks the
+    allowances do not move keep their nominal margin.
 
     >>> from geardesign import GearPair
     >>> p = GearPair(3, 20, 61, 0.3, 0.2)
@@ -145,8 +153,12 @@ def manufactured_margins(pair, checks_table, allowances: ShopAllowances) -> dict
     geo = pair.geometry()
     m, beta = pair.m, math.radians(pair.mesh.beta_deg)
     alpha_n = pair.rack.alpha
-    rows = {r.check: r for r in checks_table.itertuples()}
-    out = {name: float(r.margin) for name, r in rows.items()}
+    if isinstance(checks_table, dict):
+        rows = {k: _Row(float(v[0]), float(v[1])) for k, v in checks_table.items()}
+    else:
+        rows = {c: _Row(float(mg), float(lim)) for c, mg, lim in zip(checks_table["check"], checks_table["margin"],
+                                                                      checks_table["limit"])}
+    out = {name: r.margin for name, r in rows.items()}
     e1, e2, n_hi = _path_at(geo, geo.a_w + allowances.a_ae)
     eps = (e1 + e2 - n_hi) / geo.p_b
     for name in ("contact_ratio", "meshing"):

@@ -122,14 +122,21 @@ def _solve_shifts(m, z1, z2, checks_key, beta_deg, face_width_mm, objective, a_w
     return _with_shop(sol, pair, checks, fit) if fit is not None else sol
 
 
+@lru_cache(maxsize=64)
+def _geometric_checks(checks_key: tuple) -> tuple:
+    from ...gears.checks import resolve_checks   # here: the check registry loads pandas
+    return resolve_checks({"jamming": False, **dict(checks_key)})
+
+
 def _with_shop(sol: dict, pair, checks, fit: str) -> dict:
     """``sol`` with the margins of its manufactured state (``<check>_manufactured``, GOST 1643-81 mating type
     ``fit``), failing when one of them fails."""
-    from ...gears.manufactured import manufactured_margins, shop_allowances
+    from ...gears.manufactured import MANUFACTURED_CHECKS, manufactured_margins, shop_allowances
 
     allow = shop_allowances(pair, fit)
-    table = pair.checks(**{"jamming": False, **(checks or {})})
-    shop = {f"{k}_manufactured": v for k, v in manufactured_margins(pair, table, allow).items()
+    limits = {c.name: (sol["margins"][c.name], c.limit) for c in _geometric_checks(tuple(sorted((checks or {}).items())))
+              if c.name in MANUFACTURED_CHECKS and c.name in sol["margins"]}
+    shop = {f"{k}_manufactured": v for k, v in manufactured_margins(pair, limits, allow).items()
             if v != sol["margins"].get(k)}
     failing = [k for k, v in shop.items() if not v >= -MARGIN_TOL]
     out = dict(sol, margins={**sol["margins"], **shop}, allowances=allow)
@@ -236,7 +243,7 @@ def _scale_free_checks(checks_key: tuple, helical: bool) -> bool:
 
 
 CONTACT_SCREEN = 0.1   # a module whose contact margin at the even split is below −0.1 is not solved
-STANDARD_TRIES = 2     # modules per pair and round of the standard-housing sizing
+STANDARD_TRIES = 1     # modules per pair and round of the standard-housing sizing
 
 
 _STANDARD_CACHE: dict = {}
