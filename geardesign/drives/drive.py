@@ -189,8 +189,11 @@ class Drive:
         mm, lim = _smallest(checks)
         ok = bool(checks["ok"].all())
         failing = checks[~checks["ok"]]
+        at_limit = checks.loc[checks["ok"] & (checks["margin"].abs() <= AT_LIMIT), ["item", "check"]]
+        zero = ("; at its limit, no reserve: " + ", ".join(f"{a}: {b}" for a, b in at_limit.itertuples(index=False))
+                if len(at_limit) else "")
         msg = (f"u = {float(np.prod(ratios)):.6g}, output {n[-1]:.6g} rpm, {T[-1]:.6g} N·m; "
-               + (f"every check holds; smallest margin {mm:+.4f} ({lim})" if ok else
+               + (f"every check holds; smallest margin {mm:+.4f} ({lim}){zero}" if ok else
                   "fails " + ", ".join(f"{a}: {b} ({c:+.3f})" for a, b, c in failing[["item", "check", "margin"]]
                                        .itertuples(index=False))))
         return DriveAnalysis(success=ok, message=msg, flow=flow, checks=checks, keys=keys, stages=tuple(stages_out),
@@ -230,6 +233,9 @@ def _checks_table(rows) -> pd.DataFrame:
     checks.loc[checks["margin"].abs() <= MARGIN_TOL, "margin"] = 0.0
     checks["ok"] = checks["margin"] >= 0
     return checks
+
+
+AT_LIMIT = 1e-6     # a margin this close to 0 holds with no reserve: the message says so
 
 
 def _smallest(checks: pd.DataFrame):

@@ -129,3 +129,12 @@ def test_a_given_housing_puts_the_pair_there():
                                                                  mating_type="B")]).analyse()
     assert a.stages[0]["pair"].geometry().a_w == pytest.approx(125.0, abs=1e-9)
     assert a.success
+
+
+def test_a_check_at_zero_margin_is_reported_as_such():
+    """Issue 35 §4: a design on a boundary holds, and its analysis says which check has no reserve. 17/26 m 8 at
+    the max_x_sum shifts sits on ε_α = 1.2 (seed 000's pair, optimize_shifts' own optimum)."""
+    r = gd.optimize_shifts(17, 26, m=8)
+    a = gd.Drive(power_kw=5, n_in_rpm=1000, stages=[gd.GearStage(8, z1=17, z2=26, x1=r.x1, x2=r.x2)]).analyse()
+    assert a.success
+    assert "at its limit, no reserve: gear: contact_ratio" in a.message
