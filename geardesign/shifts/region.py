@@ -539,9 +539,15 @@ def _solve_corners(prob: Problem, L, idx, on_box, finite):
                 break
     pts, labs, box, fin = [], [], [], []
     for k in range(len(L)):
-        pts.append(L[k]); labs.append(idx[k]); box.append(on_box[k]); fin.append(finite[k])
-        if k in ins:
-            pts.append(ins[k]); labs.append(idx[nxt[k]]); box.append(False); fin.append(True)
+        pts.append(L[k])
+        labs.append(idx[k])
+        box.append(on_box[k])
+        fin.append(finite[k])
+        if k in ins:            # the point where a check's curve crosses the edge after vertex k
+            pts.append(ins[k])
+            labs.append(idx[nxt[k]])
+            box.append(False)
+            fin.append(True)
     return np.array(pts), np.array(labs), np.array(box), np.array(fin)
 
 
