@@ -27,6 +27,7 @@ import pandas as pd
 
 from ..catalogs.tables import load_catalog
 from ..errors import GearDesignError
+from ..renamed import renamed_keywords
 from ..results import Result
 from ..validate import one_number, require_range
 
@@ -44,7 +45,8 @@ _PRINTED = (("T_max/T_nom", "max_torque_ratio", ""), ("T_start/T_nom", "start_to
             ("efficiency", "efficiency_pct", " %"), ("mass", "mass_kg", " kg"))
 
 
-def rated_torque_nm(power_kw, speed_rpm):
+@renamed_keywords(speed_rpm="n_rpm")
+def rated_torque_nm(power_kw, n_rpm):
     """Rated torque T = P/ω = 9550·P/n [N·m], P in kW, n in rpm (ω = 2πn/60).
 
     Seed 002's AIR100L4 (4 kW) at its 1410 rpm rated speed:
@@ -52,7 +54,7 @@ def rated_torque_nm(power_kw, speed_rpm):
     >>> round(rated_torque_nm(4.0, 1410), 3)
     27.09
     """
-    return 1000.0 * power_kw / (2.0 * math.pi * speed_rpm / 60.0)
+    return 1000.0 * power_kw / (2.0 * math.pi * n_rpm / 60.0)
 
 
 @dataclass(frozen=True, eq=False)

@@ -45,7 +45,7 @@ def belt_speed_m_s(d1_mm, n1_rpm):
 class BeltKind(StageKind):
     name = "belt"
     stage_class = BeltStage
-    color = "#e5d8bd"
+    colour = "#e5d8bd"
 
     def _pairs(self, st):
         d1 = np.array(st.d1_list if st.d1_mm is None else (st.d1_mm,))
@@ -91,8 +91,8 @@ class BeltKind(StageKind):
         r1 = 0.35
         r2 = min(r1 * s["ratio"], 0.9)
         x2 = x + r1 + r2 + 0.8
-        canvas.circle(x, r1, self.color)
-        canvas.circle(x2, r2, self.color)
+        canvas.circle(x, r1, self.colour)
+        canvas.circle(x2, r2, self.colour)
         canvas.line([x, x2], [r1, r2])
         canvas.line([x, x2], [-r1, -r2])
         return x2, f"{s['name']}: d {s['d1_mm']:g}/{s['d2_mm']:g} mm, v {s['speed_m_s']:.1f} m/s"

@@ -192,7 +192,7 @@ def _scale_free_checks(checks_key: tuple, helical: bool) -> bool:
 class GearKind(ToothedKind):
     name = "gear"
     stage_class = GearStage
-    color = "#9ecae1"
+    colour = "#9ecae1"
     solved = True
     unsolved_label = "shifts"
 
@@ -478,7 +478,7 @@ class GearKind(ToothedKind):
         r2 = r1 * s["ratio"]
         r1, r2 = (0.9 * r1 / max(r1, r2), 0.9 * r2 / max(r1, r2))
         for xc, r in ((x, r1), (x + r1 + r2, r2)):
-            canvas.circle(xc, r, self.color, alpha=0.9)
+            canvas.circle(xc, r, self.colour, alpha=0.9)
         width = f", b {s['face_width_mm']:g}" if s.get("face_width_mm") is not None else ""   # a stage with a load
         text = (f"{s['name']}: z {s['z1']}/{s['z2']}, m {s['m']:g}{width}\n"
                 f"x {s['x1']:.3f}/{s['x2']:.3f}, a_w {s['a_w_mm']:.1f} mm")
