@@ -7,7 +7,7 @@ flowing into it (:mod:`.gear_strength`: ``contact_strength``, ``root_strength1``
 a stage whose module is None has its module (and face width, when not given) chosen per design
 from the ISO 54 series so that they hold. Another sizing rule can be installed, ``set_sizing(fn)``::
 
-    fn(torque_nm, speed_rpm, z1, z2, *, modules, stage) -> [(m_mm, face_width_mm or None), ...]
+    fn(torque_nm, n_rpm, z1, z2, *, modules, stage) -> [(m_mm, face_width_mm or None), ...]
 
 ``modules`` is the ISO 54 series (``catalogs/modules_iso54.csv``, both series) the module must be
 taken from; the candidates come smallest (preferred) first, and the stage takes the first whose
