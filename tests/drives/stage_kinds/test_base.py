@@ -208,7 +208,7 @@ def test_the_extending_guide_runs_this_files_kind():
 
     import matplotlib.pyplot as plt
 
-    doc = (Path(__file__).resolve().parents[2] / "docs" / "extending.md").read_text(encoding="utf-8")
+    doc = (Path(__file__).resolve().parents[3] / "docs" / "extending.md").read_text(encoding="utf-8")
     section = doc[doc.index("## Adding a drive stage kind"):]
     block = re.search(r"```python\n(.*?)```", section, re.S).group(1)
     for obj in (BeltStage, belt_speed_m_s, BeltKind):
