@@ -195,6 +195,7 @@ def _shell_blocks():
     return out
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("path, content, skip", _shell_blocks())
 def test_shell_block_runs(path, content, skip, checkout):
     if skip:
@@ -213,6 +214,7 @@ def _python_files():
             if any(info == "python" for info, *_ in _fences(p))]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("path", _python_files())
 def test_python_blocks_run(path, checkout, monkeypatch):
     import matplotlib
@@ -269,6 +271,7 @@ def _steps(content: str):
     return steps
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("path, content, skip", _transcripts())
 def test_transcript_matches_the_program(path, content, skip, checkout):
     if skip:
