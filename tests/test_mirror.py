@@ -25,7 +25,9 @@ PURE_REEXPORTS = {
 # mirror file of their own: each entry is a gap to close (add the file, then remove the entry; the test
 # below fails when an entry's file exists, so this list only shrinks).
 NOT_YET_MIRRORED = {
-    "geardesign/cli/__init__.py": "tests/cli/test_main.py, test_options.py",
+    # the command's entry point (main, the Ctrl-C handling) is tested in tests/cli/test_main.py; moving that file
+    # to tests/test_cli.py waits for the branch that reworks the command's Ctrl-C (issue 36 §1.3)
+    "geardesign/cli/__init__.py": "tests/cli/test_main.py",
 }
 
 
