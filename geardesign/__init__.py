@@ -8,7 +8,8 @@
 The package is layered; each layer imports only the ones before it:
 
 - :mod:`geardesign.errors`, :mod:`geardesign.validate`, :mod:`geardesign.results`, :mod:`geardesign.files`,
-  :mod:`geardesign.inline` (a result's picture in a notebook)
+  :mod:`geardesign.inline` (a result's picture in a notebook), :mod:`geardesign.renamed` (old keywords, for one
+  release)
 - :mod:`geardesign.catalogs` — CSV tables and standard series
 - :mod:`geardesign.gears` — involute, rack, mesh, geometry, checks, :class:`GearPair`
 - :mod:`geardesign.shifts` — the shift problem, its methods, region, atlas, tooth counts
