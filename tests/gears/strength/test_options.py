@@ -39,3 +39,23 @@ def test_the_shaft_option():
                        ({"K_prime": True}, "K_prime")):
         with pytest.raises(GearDesignError, match=words):
             shaft_option(bad)
+
+
+def test_the_options_grouped_in_one_object_give_the_same_result():
+    from geardesign.gears.strength import Load, StrengthOptions, pair_strength
+    from geardesign.gears.strength.options import GROUPED
+
+    loose = dict(accuracy_grade=6, nu40=320.0, Rz_flank_um=4.0, K_gamma=1.1, tip_relief_um=20.0,
+                 bore_ratio=(0.3, 0.5), S_Fmin=1.5, cycles_per_rev=(1, 3), rim_mm=(None, 12.0))
+    design = dict(load=Load(torque_nm=200, n_rpm=1000, life_h=20_000), material1="42CrMo4", face_width_mm=30)
+    one = pair_strength(3, 20, 40, 0.2, 0.1, **design, options=StrengthOptions(**loose))
+    many = pair_strength(3, 20, 40, 0.2, 0.1, **design, **loose)
+    for key in ("S_H1", "S_H2", "S_F1", "S_F2", "K_v", "Z_L1", "Y_B2"):
+        assert float(one[key]) == float(many[key])
+    assert set(GROUPED) == set(StrengthOptions.__dataclass_fields__)
+    with pytest.raises(GearDesignError, match="not both: nu40"):
+        pair_strength(3, 20, 40, 0.2, 0.1, **design, options=StrengthOptions(**loose), nu40=100.0)
+    with pytest.raises(GearDesignError, match="options must be a geardesign StrengthOptions"):
+        pair_strength(3, 20, 40, 0.2, 0.1, **design, options=loose)
+    with pytest.raises(GearDesignError, match="nu40"):
+        StrengthOptions(nu40=-1.0)          # refused by name when made, before any work
