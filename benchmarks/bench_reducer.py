@@ -2,7 +2,7 @@
 the search returns re-checked stage by stage: a_w, shifts, the smallest margin at the nominal and at the
 manufactured state, and S_H, S_F1, S_F2 recomputed by ``GearPair.strength`` at the stage's own torque.
 
-    python benchmarks/bench_reducer.py [job ...]      # jobs: sized75, conveyor, three_stage (default: all)
+    python benchmarks/bench_reducer.py [job ...]   # jobs: sized75, conveyor, conveyor_narrowed, three_stage
 
 Times are CPU seconds of the search call (the machine is shared: compare runs of one session only). The
 script reads only the public API, so it runs against an earlier checkout too (``PYTHONPATH=<checkout>``) for
@@ -23,6 +23,11 @@ JOBS = {
     "conveyor": ("gd.Drive(motor=gd.motor.select(15, 1460), stages=[gd.GearStage(None, material='42CrMo4', "
                  "name='fast'), gd.GearStage(None, material='42CrMo4', name='slow'), gd.ChainStage()])",
                  1460 / 60),
+    # the same with the ranges a user had to narrow before the search took it (issue 35's 21 s run)
+    "conveyor_narrowed": ("gd.Drive(motor=gd.motor.select(15, 1460), stages=[gd.GearStage(None, material='42CrMo4', "
+                          "name='fast', z1_range=(17, 21), ratio_range=(3.5, 5)), gd.GearStage(None, "
+                          "material='42CrMo4', name='slow', z1_range=(17, 21), ratio_range=(3.5, 5)), "
+                          "gd.ChainStage(z1=17, ratio_range=(1.2, 1.6))])", 1460 / 60),
     # a three-stage gear reducer, 15 kW, 1460 rpm to ~20 rpm
     "three_stage": ("gd.Drive(motor=gd.motor.select(15, 1460), stages=[gd.GearStage(None, material='42CrMo4', "
                     "name='g1'), gd.GearStage(None, material='42CrMo4', name='g2'), "

@@ -8,7 +8,8 @@
 The package is layered; each layer imports only the ones before it:
 
 - :mod:`geardesign.errors`, :mod:`geardesign.validate`, :mod:`geardesign.results`, :mod:`geardesign.files`,
-  :mod:`geardesign.inline` (a result's picture in a notebook)
+  :mod:`geardesign.inline` (a result's picture in a notebook), :mod:`geardesign.renamed` (old keywords, for one
+  release)
 - :mod:`geardesign.catalogs` — CSV tables and standard series
 - :mod:`geardesign.gears` — involute, rack, mesh, geometry, checks, :class:`GearPair`
 - :mod:`geardesign.shifts` — the shift problem, its methods, region, atlas, tooth counts
@@ -44,7 +45,7 @@ _NAMES = {
     "Drive": "drives.drive", "GearStage": "drives.stages", "ChainStage": "drives.stages",
     "GivenStage": "drives.stages", "Shaft": "drives.stages",
     "Load": "gears.strength", "Material": "gears.strength", "material": "gears.strength",
-    "pair_strength": "gears.strength", "StrengthResult": "gears.strength",
+    "pair_strength": "gears.strength", "StrengthResult": "gears.strength", "StrengthOptions": "gears.strength",
     "tooth_measurements": "gears.measurement", "ToothMeasurements": "gears.measurement",
     "pair_backlash": "gears.backlash", "Backlash": "gears.backlash", "x_sum_for_backlash": "gears.backlash",
     "gost1643_jn_min": "gears.backlash", "flank_tolerances": "gears.tolerances", "FlankTolerances": "gears.tolerances",

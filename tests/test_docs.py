@@ -3,7 +3,8 @@
 * Every Markdown file (README, CHANGELOG, docs/**, catalogs/README) renders with a CommonMark parser
   (markdown-it-py) with no code fence left open and none "closed" by a fence line followed by text
   (CommonMark keeps such a block open and swallows the rest of the page).
-* Every ```bash / ```sh command and every ```python block of README.md and docs/*.md runs as written,
+* Every ```bash / ```sh command and every ```python block of README.md, CONTRIBUTING.md, examples/README.md
+  and docs/*.md runs as written,
   on a copy of the checkout's files in a temporary folder, with the ``geardesign`` command of the
   package under test. A command's expected exit status is 0 unless its comment says ``exit 1`` (a design
   that fails a check). Setup steps a fresh machine needs and this environment has done (``python3 -m venv``,
@@ -31,9 +32,9 @@ import pytest
 import geardesign
 
 ROOT = Path(__file__).resolve().parents[1]
-MARKDOWN = sorted({ROOT / "README.md", ROOT / "CHANGELOG.md", ROOT / "catalogs" / "README.md",
-                   *ROOT.glob("docs/**/*.md")})
-RUNNABLE = [ROOT / "README.md", *sorted(ROOT.glob("docs/*.md"))]
+MARKDOWN = sorted({ROOT / "README.md", ROOT / "CHANGELOG.md", ROOT / "CONTRIBUTING.md", ROOT / "catalogs" / "README.md",
+                   ROOT / "examples" / "README.md", *ROOT.glob("docs/**/*.md")})
+RUNNABLE = [ROOT / "README.md", ROOT / "CONTRIBUTING.md", ROOT / "examples" / "README.md", *sorted(ROOT.glob("docs/*.md"))]
 SKIP = re.compile(r"<!--\s*doc-test:\s*skip\s*\((?P<reason>[^)]+)\)\s*-->")
 SETUP = re.compile(r"^(python3? -m venv \S+|\. \S+/bin/activate|source \S+/bin/activate|pip install .*)$")
 TIME_EXEMPT = {"performance.md", "CHANGELOG.md"}
@@ -144,7 +145,7 @@ def checkout(tmp_path_factory):
         if src.is_file():
             (dest / f).parent.mkdir(parents=True, exist_ok=True)
             shutil.copy2(src, dest / f)
-    for f in ("README.md", "CHANGELOG.md"):        # the working copy's docs, committed or not
+    for f in ("README.md", "CHANGELOG.md", "CONTRIBUTING.md", "examples/README.md"):   # the working copy's docs
         shutil.copy2(ROOT / f, dest / f)
     for p in ROOT.glob("docs/*.md"):
         shutil.copy2(p, dest / "docs" / p.name)
@@ -194,6 +195,7 @@ def _shell_blocks():
     return out
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("path, content, skip", _shell_blocks())
 def test_shell_block_runs(path, content, skip, checkout):
     if skip:
@@ -212,6 +214,7 @@ def _python_files():
             if any(info == "python" for info, *_ in _fences(p))]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("path", _python_files())
 def test_python_blocks_run(path, checkout, monkeypatch):
     import matplotlib
@@ -268,6 +271,7 @@ def _steps(content: str):
     return steps
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("path, content, skip", _transcripts())
 def test_transcript_matches_the_program(path, content, skip, checkout):
     if skip:

@@ -197,6 +197,7 @@ def compare(valid):
     return worst
 
 
+@pytest.mark.slow
 def test_grid_covers_the_extremes():
     valid, invalid = grid()
     assert 2000 <= len(valid) + len(invalid) <= 5000

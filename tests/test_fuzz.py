@@ -30,12 +30,14 @@ def _assert_good(target, seed):
     assert outcome in ("ok", "clean_error", "feasibility_tol"), f"{outcome}: {desc}\n  -> {detail}"
 
 
+@pytest.mark.slow
 @settings(max_examples=160, deadline=None, derandomize=True, database=None)
 @given(target=st.sampled_from(_FAST), seed=st.integers(0, 10**9))
 def test_functions_answer_or_refuse_cleanly(target, seed):
     _assert_good(target, seed)
 
 
+@pytest.mark.slow
 @settings(max_examples=30, deadline=None, derandomize=True, database=None)
 @given(target=st.sampled_from(_SLOW), seed=st.integers(0, 10**9))
 def test_scenes_cli_regions_and_atlases_answer_or_refuse_cleanly(target, seed):
@@ -56,6 +58,7 @@ def test_strength_surfaces_answer_or_refuse_cleanly(target, seed):
     assert outcome in ("ok", "clean_error"), f"{outcome}: {desc}\n  -> {detail}"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("argv", [
     ["pair", "--module", "5e-324", "--z1", "17", "--z2", "26"],
     ["pair", "--module", "1", "--z1", "1e308", "--z2", "26"],
@@ -86,6 +89,7 @@ def test_a_failed_run_leaves_the_output_folder_as_it_was(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
 
 
+@pytest.mark.slow
 def test_existing_plot_is_not_overwritten_without_overwrite(tmp_path):
     plot = tmp_path / "contour.png"
     plot.write_bytes(b"precious")

@@ -80,6 +80,7 @@ def test_an_slsqp_optimum_is_moved_inside_the_check_it_meets():
     assert (table["margin"] >= 0.0).all()
 
 
+@pytest.mark.slow
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(z1=st.integers(14, 40), dz=st.integers(5, 80), torque=st.floats(10.0, 800.0),
        objective=st.sampled_from(["max_x_sum", "max_min_safety", "balanced_root_strength"]))

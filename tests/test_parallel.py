@@ -15,6 +15,8 @@ from geardesign import parallel
 from geardesign.errors import GearDesignError
 from tests.dask_cluster import client  # noqa: F401  (the module's cluster fixture)
 
+pytestmark = pytest.mark.slow   # clusters, browsers, notebooks: seconds each (CONTRIBUTING.md)
+
 
 def square_all(chunk):
     return [v * v for v in chunk]

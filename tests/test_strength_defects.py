@@ -187,6 +187,7 @@ def test_a_pinion_shaft_offset_raises_f_sh_as_eq_44_says():
     assert off["f_sh"] / plain["f_sh"] == pytest.approx(1.3 / 1.0, rel=1e-12)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("width", [np.array(100.0), np.float64(100.0)])
 def test_a_pairs_checks_and_report_take_a_width_as_a_0d_array(width, tmp_path):
     # was: TypeError unhashable type 'numpy.ndarray' (the strength checks' spec is hashed), found by

@@ -396,7 +396,9 @@ def _check_from_row(row, fr, fa, n, life) -> BearingCheck:
                            f"ISO 281 table, 6.89 (about Fa = 0.5 C0)")}
     msg = (f"{row['designation']} holds: {what['life']}, s0 = {row['s0']:.4g}" if ok
            else f"{row['designation']} fails {limiting}: {what[limiting]}")
-    f = lambda k: float(row[k])
+    def f(k):
+        return float(row[k])
+
     return BearingCheck(ok=ok, message=msg, designation=str(row["designation"]), series=str(row["series"]),
                         d_mm=f("d_mm"), D_mm=f("D_mm"), B_mm=f("B_mm"), C_kn=f("C_kn"), C0_kn=f("C0_kn"),
                         fr_n=fr, fa_n=fa, n_rpm=n, e=f("e"), X=f("X"), Y=f("Y"), P_n=f("P_n"), P0_n=f("P0_n"),

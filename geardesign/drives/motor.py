@@ -27,6 +27,7 @@ import pandas as pd
 
 from ..catalogs.tables import load_catalog
 from ..errors import GearDesignError
+from ..renamed import renamed_keywords
 from ..results import Result
 from ..validate import one_number, require_range
 
@@ -44,7 +45,8 @@ _PRINTED = (("T_max/T_nom", "max_torque_ratio", ""), ("T_start/T_nom", "start_to
             ("efficiency", "efficiency_pct", " %"), ("mass", "mass_kg", " kg"))
 
 
-def rated_torque_nm(power_kw, speed_rpm):
+@renamed_keywords(speed_rpm="n_rpm")
+def rated_torque_nm(power_kw, n_rpm):
     """Rated torque T = P/ω = 9550·P/n [N·m], P in kW, n in rpm (ω = 2πn/60).
 
     Seed 002's AIR100L4 (4 kW) at its 1410 rpm rated speed:
@@ -52,7 +54,7 @@ def rated_torque_nm(power_kw, speed_rpm):
     >>> round(rated_torque_nm(4.0, 1410), 3)
     27.09
     """
-    return 1000.0 * power_kw / (2.0 * math.pi * speed_rpm / 60.0)
+    return 1000.0 * power_kw / (2.0 * math.pi * n_rpm / 60.0)
 
 
 @dataclass(frozen=True, eq=False)
@@ -79,10 +81,12 @@ class MotorSelection(Result):
         return f"MotorSelection(P >= {self.power_kw * self.service_factor:g} kW, n ~ {self.speed_rpm:g} rpm): {self.message}"
 
 
-def select(power_kw, speed_rpm, service_factor=1.0, catalog="motors_air") -> MotorSelection:
+@renamed_keywords(speed_rpm="n_rpm")
+def select(power_kw, n_rpm, service_factor=1.0, catalog="motors_air") -> MotorSelection:
     """The motor for a drive: the smallest rated power P >= power_kw·service_factor, of the
-    synchronous speed whose rated speed is nearest ``speed_rpm`` (the usual course-design rule:
-    pick the speed series, then the first power step that covers the need).
+    synchronous speed whose rated speed is nearest ``n_rpm`` (``speed_rpm=`` is its old name; the
+    result keeps the field ``speed_rpm``, a key of the ``drive`` command's JSON) (the usual course-design
+    rule: pick the speed series, then the first power step that covers the need).
 
     Ties in speed go to the faster series (a smaller, lighter motor for the same power); two
     frames of one power in a series (SOGA MT3 lists some) go to the lighter.
@@ -91,7 +95,7 @@ def select(power_kw, speed_rpm, service_factor=1.0, catalog="motors_air") -> Mot
     'AIR100L4'
     """
     p = one_number("power_kw", require_range("power_kw", power_kw, *POWER_RANGE_KW, unit="kW"))
-    n = one_number("speed_rpm", require_range("speed_rpm", speed_rpm, *SPEED_RANGE_RPM, unit="rpm"))
+    n = one_number("n_rpm", require_range("n_rpm", n_rpm, *SPEED_RANGE_RPM, unit="rpm"))
     sf = one_number("service_factor", require_range("service_factor", service_factor, *SERVICE_FACTOR_RANGE))
     if not (isinstance(catalog, str) and (catalog in MOTOR_CATALOGS or catalog.lower().endswith(".csv"))):
         raise GearDesignError(f"catalog must be one of {', '.join(MOTOR_CATALOGS)} or a motor CSV path, got {catalog!r}")

@@ -17,6 +17,7 @@ from functools import lru_cache
 import numpy as np
 
 from ..errors import GearDesignError
+from ..renamed import renamed_keywords
 from ..gears.geometry import require_module
 from ..gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
 from ..results import compact_repr
@@ -281,11 +282,12 @@ class GearStage:
             raise GearDesignError(f"gear stage '{self.name}' has no module yet (m=None: sized by its load)")
         return FACE_WIDTH_PITCHES * math.pi * self.m
 
-    def load(self, torque_nm: float, speed_rpm: float):
-        """The strength checks' load case: ``torque_nm`` on the pinion at ``speed_rpm``, with the
-        stage's life and application factor."""
+    @renamed_keywords(speed_rpm="n_rpm")
+    def load(self, torque_nm: float, n_rpm: float):
+        """The strength checks' load case: ``torque_nm`` on the pinion at ``n_rpm`` (``speed_rpm=`` is its old
+        name), with the stage's life and application factor."""
         from ..gears.strength import Load   # here: the strength model loads pandas
-        return Load(torque_nm=float(torque_nm), n_rpm=float(speed_rpm), life_h=self.life_h,
+        return Load(torque_nm=float(torque_nm), n_rpm=float(n_rpm), life_h=self.life_h,
                     application_factor=self.application_factor)
 
     def checks_key(self) -> tuple:

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import GearDesignError
+from ..renamed import renamed_keywords
 from ..results import Result
 from ..validate import one_number, require_choice, require_range
 from .geometry import min_center_distance, require_module, x_sum_from_center_distance
@@ -280,7 +281,8 @@ def _gost_columns() -> dict:
     return cols
 
 
-def gost1643_jn_min(mating_type: str, a_w_mm):
+@renamed_keywords(a_w_mm="a_w")
+def gost1643_jn_min(mating_type: str, a_w):
     """The guaranteed least normal backlash j_n,min (mm) of a GOST 1643-81 mating type (H, E, D, C, B, A) at the
     centre distance a_w (mm; up to 3150), from ``catalogs/gost1643_backlash.csv`` (GOST 1643-81 Table 13);
     arrays of a_w broadcast. GOST's j_n is the normal backlash j_bn here.
@@ -289,7 +291,7 @@ def gost1643_jn_min(mating_type: str, a_w_mm):
     0.087
     """
     mating_type = require_choice("mating_type", mating_type, GOST1643_TYPES)
-    a = require_range("a_w_mm", a_w_mm, 0.0, 3150.0, lo_open=True, unit="mm")
+    a = require_range("a_w", a_w, 0.0, 3150.0, lo_open=True, unit="mm")
     table = _gost_columns()
     upper = table["a_w_max_mm"]
     col = table[f"jn_min_um_{mating_type}"]

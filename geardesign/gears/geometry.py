@@ -29,7 +29,7 @@ from .inputs import (_VALIDATION_FIELDS, DESIGNS_MAX, M_RANGE_MM, X_ABS_MAX, req
                      validate_geometry, validate_inputs)
 from .fields import CONTACT_FIELDS, GEOMETRY_FIELDS, INTERNAL_FIELDS, REPORT_FIELDS, TIP_FIELDS  # noqa: F401
 from .involute import _tan_from_inv_float, t_minus_atan, t_minus_atan_float, tan_from_inv
-from .mesh import Z_MAX, Z_MIN, Mesh, section_tuple as _section_constants
+from .mesh import Z_MAX, Z_MIN, Mesh, mesh_of, section_tuple as _section_constants
 from .rack import BasicRack
 
 __all__ = [
@@ -520,14 +520,16 @@ _FIELD_NAMES = tuple(GEOMETRY_FIELDS)
 _GET_FIELDS = operator.itemgetter(*_FIELD_NAMES)
 
 
-def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shortening: bool = True,
-                  fields=None, beta_deg: float = 0.0, internal: bool = False, face_width_mm=None) -> Geometry:
+def pair_geometry(m, z1=None, z2=None, x1=0.0, x2=0.0, rack: BasicRack = BasicRack(), tip_shortening: bool = True,
+                  fields=None, beta_deg: float = 0.0, internal: bool = False, face_width_mm=None, *,
+                  mesh: Mesh | None = None) -> Geometry:
     """Geometry of spur and helical, external and internal pairs; m, z1, z2, x1, x2 broadcast.
 
     ``beta_deg``: reference helix angle (``m`` is then the normal module, x1/x2 normal shifts; the
     circles, angles, thicknesses and path of contact are transverse). ``internal``: gear 2 is a
     ring with z2 > z1 teeth (GOST 19274-73 sign convention, see :class:`~geardesign.gears.mesh.Mesh`).
-    ``face_width_mm`` (mm): for the overlap ratio ε_β.
+    ``face_width_mm`` (mm): for the overlap ratio ε_β. ``mesh``: a :class:`~geardesign.gears.mesh.Mesh` instead
+    of z1, z2 and those five keywords (giving both is refused); x1, x2 default to 0.
 
     ``fields`` (names of :data:`GEOMETRY_FIELDS`) keeps only those in the result (the others are
     None) and computes only what they need: the report-only fields (:data:`REPORT_FIELDS`) are
@@ -550,6 +552,12 @@ def pair_geometry(m, z1, z2, x1, x2, rack: BasicRack = BasicRack(), tip_shorteni
     >>> pair_geometry(3, 12, 24, 0.6, 0.36, fields=["a_w", "eps_alpha"]).names
     ['a_w', 'eps_alpha']
     """
+    if mesh is not None:   # one Mesh instead of the tooth counts and the mesh's five keywords
+        mesh = mesh_of(mesh, z1, z2, rack, tip_shortening, beta_deg, internal, face_width_mm)
+        z1, z2, rack, tip_shortening, beta_deg, internal, face_width_mm = (
+            mesh.z1, mesh.z2, mesh.rack, mesh.tip_shortening, mesh.beta_deg, mesh.internal, mesh.face_width_mm)
+    elif z1 is None or z2 is None:
+        raise GearDesignError("give the tooth counts z1 and z2, or a mesh= (a geardesign.Mesh)")
     if not isinstance(rack, BasicRack):
         raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
     scalar = all(ndim(v) == 0 for v in (m, z1, z2, x1, x2))

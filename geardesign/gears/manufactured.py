@@ -29,8 +29,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
-
 from ..errors import GearDesignError
 from ..results import compact_repr
 from .backlash import GOST1643_TYPES, allowances_for_backlash, gost1643_jn_min

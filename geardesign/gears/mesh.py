@@ -19,7 +19,7 @@ from ..validate import one_number, require_bool, require_int, require_range
 from .involute import _t_minus_atan
 from .rack import STANDARD_RACK, BasicRack
 
-__all__ = ["Mesh", "Z_MIN", "Z_MAX", "BETA_RANGE_DEG", "FACE_WIDTH_RANGE_MM", "SectionConstants", "section_tuple"]
+__all__ = ["Mesh", "mesh_of", "Z_MIN", "Z_MAX", "BETA_RANGE_DEG", "FACE_WIDTH_RANGE_MM", "SectionConstants", "section_tuple"]
 
 Z_MIN = 3        # smallest tooth count accepted
 Z_MAX = 100_000  # largest tooth count accepted (the accuracy tests reach 10 000)
@@ -182,3 +182,32 @@ def section_tuple(rack: BasicRack, beta_deg: float) -> tuple:
     alpha = sc.alpha_t
     return (alpha, sc.sin_t, sc.cos_t, sc.tan_t, _t_minus_atan(sc.tan_t, math.sqrt), math.sin(alpha / 2.0) ** 2,
             rack.h_limit, sc.tan_n, sc.cos_beta, sc.cos_beta_b)
+
+
+def mesh_of(mesh, z1, z2, rack=None, tip_shortening=True, beta_deg=0.0, internal=False, face_width_mm=None) -> Mesh:
+    """The :class:`Mesh` of a call that takes either ``mesh=`` or the loose keywords (z1, z2 and the five
+    of the mesh): a mesh given with any of them set is refused by name, rather than one silently winning.
+
+    >>> m = mesh_of(Mesh(17, 26, beta_deg=12.0), None, None)
+    >>> m.z1, m.beta_deg
+    (17, 12.0)
+    >>> mesh_of(Mesh(17, 26), None, None, internal=True)
+    Traceback (most recent call last):
+    ...
+    geardesign.errors.GearDesignError: give the mesh either as mesh= or as internal, not both (mesh has internal=False)
+    """
+    if mesh is None:
+        if z1 is None or z2 is None:
+            raise GearDesignError("give the tooth counts z1 and z2, or a mesh= (a geardesign.Mesh)")
+        return Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width_mm)
+    if not isinstance(mesh, Mesh):
+        raise GearDesignError(f"mesh must be a geardesign.Mesh, got {type(mesh).__name__}")
+    given = [name for name, value, unset in (
+        ("z1", z1, z1 is None), ("z2", z2, z2 is None), ("rack", rack, rack is None or rack == STANDARD_RACK),
+        ("tip_shortening", tip_shortening, tip_shortening is True), ("beta_deg", beta_deg, beta_deg == 0.0),
+        ("internal", internal, internal is False), ("face_width_mm", face_width_mm, face_width_mm is None))
+        if not unset]
+    if given:
+        raise GearDesignError(f"give the mesh either as mesh= or as {', '.join(given)}, not both (mesh has "
+                              + ", ".join(f"{k}={getattr(mesh, k)!r}" for k in given) + ")")
+    return mesh

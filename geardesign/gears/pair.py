@@ -111,6 +111,21 @@ class GearPair:
         object.__setattr__(self, "mesh", mesh)
 
     @classmethod
+    def from_mesh(cls, m, mesh: Mesh, x1: float = 0.0, x2: float = 0.0) -> "GearPair":
+        """The pair of module ``m`` (mm) and shifts ``x1``, ``x2`` on a :class:`~geardesign.gears.mesh.Mesh` (its tooth
+        counts, rack, tips, helix angle, kind and face width): the mesh is described once and passed on.
+
+        >>> GearPair.from_mesh(8, Mesh(17, 26), 0.898, 0.517) == GearPair(8, 17, 26, 0.898, 0.517)
+        True
+        """
+        if not isinstance(mesh, Mesh):
+            raise GearDesignError(f"mesh must be a geardesign.Mesh, got {type(mesh).__name__}")
+        if mesh.is_batch:
+            raise GearDesignError("z1 and z2 must be single numbers for GearPair (use pair_geometry for arrays)")
+        return cls(m, mesh.z1, mesh.z2, x1, x2, mesh.rack, mesh.tip_shortening, mesh.beta_deg, mesh.internal,
+                   mesh.face_width_mm)
+
+    @classmethod
     def from_center_distance(cls, m, z1, z2, a_w, x1=None, rack: BasicRack | None = None,
                              tip_shortening: bool = True, beta_deg: float = 0.0, internal: bool = False,
                              face_width_mm: float | None = None) -> "GearPair":

@@ -17,6 +17,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from ..renamed import renamed_keywords
 from ..validate import one_number, require_int, require_range
 from .involute import _tan_from_inv_float, inv, inv_from_tan, tan_from_inv
 
@@ -53,19 +54,20 @@ class ShaperCutter:
         object.__setattr__(self, "x0", one_number("x0", require_range("x0", self.x0, *X0_RANGE)))
         object.__setattr__(self, "ha0", one_number("ha0", require_range("ha0", self.ha0, *HA0_RANGE)))
 
-    def teeth(self, m_mm, z2):
-        """z0, or the default for module ``m_mm`` and a ring of ``z2`` teeth: the 100 mm cutter,
-        round(100/m), or for a ring too small for it the largest one with z2 − z0 >= 18 (at least 8).
+    @renamed_keywords(m_mm="m")
+    def teeth(self, m, z2):
+        """z0, or the default for module ``m`` (mm; ``m_mm=`` is its old name) and a ring of ``z2`` teeth: the
+        100 mm cutter, round(100/m), or for a ring too small for it the largest one with z2 − z0 >= 18 (at least 8).
 
         >>> [int(c.teeth(4.0, z2)) for c, z2 in ((ShaperCutter(), 90), (ShaperCutter(), 30), (ShaperCutter(z0=30), 90))]
         [25, 12, 30]
         """
-        one = type(z2) in (float, int) and type(m_mm) in (float, int)   # no np.ndim on the optimisers' path
+        one = type(z2) in (float, int) and type(m) in (float, int)   # no np.ndim on the optimisers' path
         if self.z0 is not None:
             return self.z0 if one else self.z0 + 0 * np.asarray(z2)
-        if one or (np.ndim(m_mm) == 0 and np.ndim(z2) == 0):   # one design: Python's round is numpy's (half to even)
-            return max(Z0_RANGE[0], min(round(CUTTER_DIAMETER_MM / float(m_mm)), int(z2) - RING_MINUS_CUTTER_MIN))
-        return np.maximum(Z0_RANGE[0], np.minimum(np.round(CUTTER_DIAMETER_MM / np.asarray(m_mm, dtype=float)),
+        if one or (np.ndim(m) == 0 and np.ndim(z2) == 0):   # one design: Python's round is numpy's (half to even)
+            return max(Z0_RANGE[0], min(round(CUTTER_DIAMETER_MM / float(m)), int(z2) - RING_MINUS_CUTTER_MIN))
+        return np.maximum(Z0_RANGE[0], np.minimum(np.round(CUTTER_DIAMETER_MM / np.asarray(m, dtype=float)),
                                                   np.asarray(z2) - RING_MINUS_CUTTER_MIN)).astype(int)
 
 

@@ -20,6 +20,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from ..errors import GearDesignError
+from ..renamed import renamed_keywords
 from ..results import Result, plain
 from ..validate import broadcast_inputs, require_int, require_range
 
@@ -155,8 +156,9 @@ def _check_range(name, value, lo, hi, unit=""):
     return require_range(f"{name} (ISO 1328-1:2013 range)", value, lo, hi, unit=unit)
 
 
-def flank_tolerances(m_n, z, accuracy_class, *, beta_deg=0.0, face_width_mm=None, d_mm=None) -> FlankTolerances:
-    """The ISO 1328-1:2013 flank tolerances (µm) of a gear: module m_n (mm), tooth count z, flank tolerance class
+@renamed_keywords(m_n="m")
+def flank_tolerances(m, z, accuracy_class, *, beta_deg=0.0, face_width_mm=None, d_mm=None) -> FlankTolerances:
+    """The ISO 1328-1:2013 flank tolerances (µm) of a gear: (normal) module m (mm; ``m_n=`` is its old name), tooth count z, flank tolerance class
     A (1 … 11), helix β, face width b (for the helix tolerances) and the reference diameter d (default
     z m_n / cos β); arrays broadcast. Outside the standard's ranges (module docstring): GearDesignError.
 
@@ -165,7 +167,7 @@ def flank_tolerances(m_n, z, accuracy_class, *, beta_deg=0.0, face_width_mm=None
     (9.0, 29.0, 12.0)
     """
     a = require_int("accuracy_class (ISO 1328-1:2013 flank tolerance class)", accuracy_class, *ISO1328_CLASSES)
-    m_n = _check_range("m_n", m_n, *ISO1328_RANGES["m_n"], unit="mm")
+    m_n = _check_range("m", m, *ISO1328_RANGES["m_n"], unit="mm")
     z = require_int("z (ISO 1328-1:2013 range)", z, *ISO1328_RANGES["z"])
     if np.ndim(beta_deg) != 0:
         raise GearDesignError("beta_deg must be one number for flank_tolerances")

@@ -65,7 +65,7 @@ class RingProfile(ToothProfile):
     :class:`~geardesign.profiles.tooth.ToothProfile`, ``m``, ``x`` and ``x0`` transverse for a helical ring;
     ``undercut`` is always False), and the cutting:
     ``z0``, ``x0`` the cutter, ``a_w0_mm`` the cutting centre distance, ``r_root_mm`` = a_w0 + r_a0
-    the root radius the cutter's tip circle cuts, ``rim_diameter_mm`` the outer rim. 
+    the root radius the cutter's tip circle cuts, ``rim_diameter_mm`` the outer rim.
     ``cutting_interference``: the ring's flank runs past the end of its involute toward its tip (past the
     cutting mesh's interference point N0, or where the cutter's teeth rolling out cut into it): the
     points labelled "interference" are what the cutter leaves there, found by a material test."""

@@ -84,7 +84,7 @@ def build_drive(section: dict):
     if "motor" in section:
         from ..drives.motor import select
         m = section["motor"]
-        motor = select(m["power_kw"], m["speed_rpm"], m["service_factor"], m["catalog"])
+        motor = select(m["power_kw"], m["n_rpm"], m["service_factor"], m["catalog"])
         if not motor.found:
             raise GearDesignError(f"[drive.motor]: {motor.message}")
     shafts = [Shaft(**{k: v for k, v in s.items()}) for s in section["shafts"]]

@@ -233,7 +233,7 @@ def load_scene(path) -> Scene:
         raise GearDesignError(f"{path}: nested deeper than a scene can be (at most {SCENE_DEPTH_MAX} levels)") from None
     _check_values(path, raw)
     top = {k: v for k, v in raw.items() if not isinstance(v, (dict, list)) or k not in SECTIONS}
-    for k, v in top.items():
+    for k in top:
         if k not in section_schema(""):
             where.fail("", k, f"unknown section or key; expected sections {', '.join(f'[{s}]' for s in SECTIONS)} "
                               f"and the keys title, description")

@@ -6,6 +6,7 @@ from __future__ import annotations
 import functools
 import math
 import sys
+import warnings
 from dataclasses import dataclass
 
 from ..errors import GearDesignError
@@ -238,7 +239,7 @@ def drive_schema(part: str = "") -> dict:
                 "objective": _Key("choice", default=d.OBJECTIVES[0], choices=d.OBJECTIVES),
                 "top": _I(default=10, lo=1, hi=d.TOP_MAX),
                 "motor": {"power_kw": _F(required=True, lo=mo.POWER_RANGE_KW[0], hi=mo.POWER_RANGE_KW[1]),
-                          "speed_rpm": _F(required=True, lo=mo.SPEED_RANGE_RPM[0], hi=mo.SPEED_RANGE_RPM[1]),
+                          "n_rpm": _F(required=True, lo=mo.SPEED_RANGE_RPM[0], hi=mo.SPEED_RANGE_RPM[1]),
                           "service_factor": _F(default=1.0, lo=mo.SERVICE_FACTOR_RANGE[0], hi=mo.SERVICE_FACTOR_RANGE[1]),
                           "catalog": _Key("choice", default=mo.MOTOR_CATALOGS[0], choices=mo.MOTOR_CATALOGS)}}
     if part in stage_kinds():
@@ -352,8 +353,27 @@ def _check_value(where: Where, section: str, key: str, spec: _Key, v):
     return tuple(out)
 
 
+# keys renamed for one name per quantity (docs/glossary.md): (section, old key) -> new key. A scene with the old
+# key still loads for one release, with a DeprecationWarning naming the new one.
+RENAMED_KEYS = {("drive.motor", "speed_rpm"): "n_rpm"}
+
+
+def _renamed(where: Where, section: str, table: dict) -> dict:
+    out = dict(table)
+    for (sec, old), new in RENAMED_KEYS.items():
+        if sec == section and old in out:
+            if new in out:
+                where.fail(section, old, f"give {new} only (its old name {old} is deprecated)")
+            warnings.warn(f"[{section}] {old} is deprecated: name it {new} (one name per quantity, docs/glossary.md)",
+                          DeprecationWarning, stacklevel=2)
+            out[new] = out.pop(old)
+    return out
+
+
 def validate_table(where: Where, section: str, table: dict, schema: dict) -> dict:
     out = {}
+    if RENAMED_KEYS:
+        table = _renamed(where, section, table)
     for key, v in table.items():
         if key not in schema:
             allowed = ", ".join(schema)

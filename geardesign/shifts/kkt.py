@@ -70,7 +70,7 @@ def _kkt_newton(ev: Evaluator, nv: int, act_p, act_m, w0, max_move: float, maxit
             srow[j] = (_stationarity(active_rows(GPj, GMj, act_p, act_m), nv) - F[-1]) / step
         if not all(map(math.isfinite, srow)):
             return None
-    for it in range(1, maxit + 1):
+    for it in range(1, maxit + 1):   # noqa: B007 (the count is returned after the loop)
         try:
             dw = solve_small(rows + [srow] if edge else rows, [-f for f in F])
         except np.linalg.LinAlgError:

@@ -34,7 +34,7 @@ import time
 import numpy as np
 
 from ..errors import GearDesignError
-from ..gears.mesh import Mesh
+from ..gears.mesh import Mesh, mesh_of
 from ..validate import _show, one_number, require_choice, require_count, require_finite, require_range
 from .center_distance import reachable_center_distance, x_sum_for_housing
 from .conflict import smallest_conflict
@@ -49,11 +49,11 @@ __all__ = ["optimize_shifts", "ShiftResult", "METHODS", "DEFAULT_TOL", "OBJECTIV
 
 
 
-def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
+def optimize_shifts(z1=None, z2=None, objective=None, checks=None, method: str = "exact",
                     tol: float | None = None, a_w: float | None = None, m: float | None = None, rack=None,
                     tip_shortening: bool = True, bounds=DEFAULT_BOUNDS, grid_n: int | None = None,
                     start=None, beta_deg: float = 0.0, internal: bool = False,
-                    face_width_mm: float | None = None) -> ShiftResult:
+                    face_width_mm: float | None = None, *, mesh: Mesh | None = None) -> ShiftResult:
     """The best profile shifts x1, x2 for tooth counts z1, z2 under the chosen checks.
 
     Parameters
@@ -82,6 +82,8 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
     beta_deg, internal, face_width_mm : a helical pair (normal module and shifts), an internal pair
         (gear 2 a ring; its x_Σ, which a_w fixes and ``max_x_sum`` maximises, is x2 − x1), and the
         face width for ε_β (see :class:`~geardesign.gears.mesh.Mesh`).
+    mesh : a :class:`~geardesign.gears.mesh.Mesh` instead of z1, z2, rack, tip_shortening, beta_deg, internal
+        and face_width_mm (giving both is refused).
 
     >>> r = optimize_shifts(17, 26)          # seed 000's tooth counts: ε_α >= 1.2 caps x1 + x2
     >>> r.success, r.active, round(r.fun, 6)
@@ -98,7 +100,7 @@ def optimize_shifts(z1, z2, objective=None, checks=None, method: str = "exact",
         grid_n = require_count("grid_n", grid_n, 2, GRID_N_MAX)
     if start is not None and np.shape(require_finite("start", start)) != (2,):
         raise GearDesignError(f"start must be a point (x1, x2), got {_show(start)}")
-    prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width_mm), checks, objective,
+    prob = Problem(mesh_of(mesh, z1, z2, rack, tip_shortening, beta_deg, internal, face_width_mm), checks, objective,
                    1.0 if m is None else m)
     if prob.objective.kind == "margin" and not prob.asked:
         raise GearDesignError("objective 'max_margin' (the point farthest from every check's boundary) needs at "

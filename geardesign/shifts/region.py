@@ -16,7 +16,7 @@ import pandas as pd
 
 from ..errors import GearDesignError
 from ..results import Result, plain
-from ..gears.mesh import Mesh
+from ..gears.mesh import Mesh, mesh_of
 from ..validate import one_number, require_axes, require_count, require_range
 from ..gears.geometry import center_distance_from_x_sum
 from ..inline import html_view
@@ -305,13 +305,14 @@ REGION_N_MAX = 2001     # nodes per axis of a region's grid: 4 M designs, ~3 GB 
 NO_GEOMETRY = "no_geometry"   # edge where the pair stops existing (α_w -> 0, a tip at its base circle)
 
 
-def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: float | None = None,
+def feasible_region(z1=None, z2=None, rack=None, checks=None, method: str = "exact", tol: float | None = None,
                     m: float = 1.0, tip_shortening: bool = True, bounds=DEFAULT_BOUNDS,
                     n: int | None = None, beta_deg: float = 0.0, internal: bool = False,
-                    face_width_mm: float | None = None) -> Region:
+                    face_width_mm: float | None = None, *, mesh: Mesh | None = None) -> Region:
     """The region of (x1, x2) where every chosen check holds, with its labelled boundary.
 
-    Parameters as :func:`geardesign.shifts.optimize.optimize_shifts`; ``method`` "grid" keeps the
+    Parameters as :func:`geardesign.shifts.optimize.optimize_shifts` (``mesh=`` a :class:`~geardesign.gears.mesh.Mesh`
+    instead of the tooth counts and the mesh's keywords); ``method`` "grid" keeps the
     grid-interpolated contour (vertex error ~ grid step²), "exact" (default) puts every vertex
     on its check's curve (or the window's edge) and solves the corners to ~1e-12. ``n`` nodes
     per axis (default 321, or from ``tol`` for "grid"; at most REGION_N_MAX). A region thinner
@@ -331,7 +332,8 @@ def feasible_region(z1, z2, rack=None, checks=None, method: str = "exact", tol: 
     if n is None:
         n = int(min(max(math.ceil((hi - lo) / tol) + 1, 41), 801)) if method == "grid" else 321
     n = require_count("n", n, 11, REGION_N_MAX)
-    prob = Problem(Mesh(z1, z2, rack, tip_shortening, beta_deg, internal, face_width_mm), checks, "max_x_sum", m)
+    prob = Problem(mesh_of(mesh, z1, z2, rack, tip_shortening, beta_deg, internal, face_width_mm), checks, "max_x_sum",
+                   m)
     return region_of(prob, method, tol, (lo, hi), n)
 
 
@@ -539,9 +541,15 @@ def _solve_corners(prob: Problem, L, idx, on_box, finite):
                 break
     pts, labs, box, fin = [], [], [], []
     for k in range(len(L)):
-        pts.append(L[k]); labs.append(idx[k]); box.append(on_box[k]); fin.append(finite[k])
-        if k in ins:
-            pts.append(ins[k]); labs.append(idx[nxt[k]]); box.append(False); fin.append(True)
+        pts.append(L[k])
+        labs.append(idx[k])
+        box.append(on_box[k])
+        fin.append(finite[k])
+        if k in ins:            # the point where a check's curve crosses the edge after vertex k
+            pts.append(ins[k])
+            labs.append(idx[nxt[k]])
+            box.append(False)
+            fin.append(True)
     return np.array(pts), np.array(labs), np.array(box), np.array(fin)
 
 

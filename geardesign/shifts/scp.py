@@ -84,7 +84,7 @@ def solve_convex(prob: Problem, v0, bounds, tol, maxit=100):
     lam_m = np.zeros(M.size)
     L = np.eye(nv) * 1e-4
     nit = inaccurate = 0
-    for nit in range(1, maxit + 1):
+    for nit in range(1, maxit + 1):   # noqa: B007 (the count is returned after the loop)
         step, value, rough = _subproblem_step(sub, P, M, GP, GM, L, np.maximum(-radius, box_lo - v),
                                               np.minimum(radius, box_hi - v))
         inaccurate += rough

@@ -5,6 +5,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from geardesign.cli import main
 
 SEED = ["chain", "--torque", "380", "--n1", "120", "--ratio", "1", "--z1", "13", "--strands", "1,2",
@@ -53,6 +55,7 @@ def test_chain_power_rating(capsys):
     assert best["designation"] == "08A" and best["links"] == 122
 
 
+@pytest.mark.slow
 def test_python_m_geardesign_chain():
     root = Path(__file__).resolve().parents[2]
     proc = subprocess.run([sys.executable, "-m", "geardesign"] + SEED + ["--json", "--top", "2"],

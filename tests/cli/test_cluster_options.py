@@ -17,6 +17,8 @@ from geardesign import parallel
 from geardesign.cli import main
 from tests.dask_cluster import client  # noqa: F401
 
+pytestmark = pytest.mark.slow   # clusters, browsers, notebooks: seconds each (CONTRIBUTING.md)
+
 ROOT = Path(__file__).resolve().parents[2]
 
 

@@ -157,7 +157,7 @@ def test_drive_bad_load_options_one_line_exit_2(tmp_path, capsys, options, words
 def test_drive_load_options_without_a_gear_stage_or_beside_a_motor_are_refused(tmp_path, capsys):
     assert main(["drive", _scene(tmp_path, GIVEN), "--material", "C45"]) == 2
     assert "no gear stage" in capsys.readouterr().err
-    motor = GIVEN.replace("power_kw = 4\nn_in_rpm = 1500\n", "[drive.motor]\npower_kw = 4\nspeed_rpm = 1500\n")
+    motor = GIVEN.replace("power_kw = 4\nn_in_rpm = 1500\n", "[drive.motor]\npower_kw = 4\nn_rpm = 1500\n")
     assert main(["drive", _scene(tmp_path, motor), "--power", "3"]) == 2
     assert "[drive.motor]" in capsys.readouterr().err
 

@@ -32,6 +32,7 @@ def test_measure_flags_exit_1(capsys):
     assert "note: ring" in capsys.readouterr().out
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("argv, words", [
     (["measure", "-m", "3", "--z", "2"], ["z", "[3, 100000]"]),
     (["measure", "-m", "3", "--z", "24", "--allowance", "-0.1", "-0.05"], ["A_sni"]),

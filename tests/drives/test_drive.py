@@ -162,6 +162,7 @@ def small_case():
     return drive, U, tol, designs
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("objective", ["min_size", "min_mass", "max_margin"])
 def test_optimize_finds_the_best_of_an_exhaustive_enumeration(small_case, objective):
     drive, U, tol, designs = small_case

@@ -174,7 +174,7 @@ def test_gost1643_least_backlash_is_the_it_grade_of_the_centre_distance(kind):
 
 
 @pytest.mark.parametrize("call, word", [
-    (lambda: gost1643_jn_min("F", 100), "mating_type"), (lambda: gost1643_jn_min("C", 4000), "a_w_mm"),
+    (lambda: gost1643_jn_min("F", 100), "mating_type"), (lambda: gost1643_jn_min("C", 4000), "a_w"),
     (lambda: x_sum_for_backlash(2, 20, 30, 60, 0.1, "j"), "kind"),
     (lambda: pair_backlash(gd.GearPair(2, 20, 30), (-0.2, -0.1)), "A_sni"),
     (lambda: pair_backlash(gd.GearPair(2, 20, 30), 0.0, 0.0, 5.0), "center_distance_allowance_mm"),

@@ -4,6 +4,7 @@ checks' gradients on the array path)."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import given
 
 from geardesign.gears.checks import make_checks
@@ -13,6 +14,7 @@ from geardesign.gears.mesh import Mesh
 from tests.strategies import SETTINGS, designs
 
 
+@pytest.mark.slow
 @SETTINGS
 @given(designs())
 def test_part_gradients_match_central_differences(d):

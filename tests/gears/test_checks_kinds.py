@@ -31,6 +31,7 @@ def _fd(d, func, h=1e-5):
     return [(4.0 * f - c) / 3.0 for f, c in zip(fine, coarse)]
 
 
+@pytest.mark.slow
 @SETTINGS
 @given(kinds())
 def test_check_gradients_match_central_differences(d):
@@ -63,6 +64,7 @@ def test_an_undefined_check_fails_and_says_so():
     assert table.loc["tip_thickness1", "margin"] > 0          # the rest are evaluated as usual
 
 
+@pytest.mark.slow
 @SETTINGS
 @given(kinds())
 def test_objective_gradients_match_central_differences(d):
@@ -202,6 +204,7 @@ def test_cutter_interference_is_khk_5_4(m, z2, x2, z0):
     assert float(c.margin(geo)) == pytest.approx(float(want), abs=1e-12)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("m, z2, x2, z0", [(3.0, 24, 0.5, 8), (2.0, 40, 0.0, 20), (2.0, 40, 0.0, 30),
                                           (2.0, 50, 0.3, 30), (2.0, 30, 0.8, 10)])
 def test_cutter_interference_fails_exactly_where_the_generated_ring_loses_its_tips(m, z2, x2, z0):

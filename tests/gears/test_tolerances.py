@@ -52,13 +52,13 @@ def test_grow_with_size_and_class_and_broadcast():
 
 
 @pytest.mark.parametrize("kwargs, word", [
-    (dict(m_n=3, z=40, accuracy_class=0), "accuracy_class"), (dict(m_n=3, z=40, accuracy_class=12), "accuracy_class"),
-    (dict(m_n=0.3, z=40, accuracy_class=6), "m_n"), (dict(m_n=80, z=40, accuracy_class=6), "m_n"),
-    (dict(m_n=3, z=4, accuracy_class=6), "z"), (dict(m_n=3, z=1001, accuracy_class=6), "z"),
-    (dict(m_n=3, z=40, accuracy_class=6, face_width_mm=2), "face_width_mm"),
-    (dict(m_n=3, z=40, accuracy_class=6, beta_deg=50), "beta_deg"),
-    (dict(m_n=0.5, z=5, accuracy_class=6, d_mm=2.0), "d_mm"), (dict(m_n=70, z=1000, accuracy_class=6), "d_mm"),
-    (dict(m_n=3, z=40, accuracy_class=6.5), "accuracy_class"),
+    (dict(m=3, z=40, accuracy_class=0), "accuracy_class"), (dict(m=3, z=40, accuracy_class=12), "accuracy_class"),
+    (dict(m=0.3, z=40, accuracy_class=6), "m"), (dict(m=80, z=40, accuracy_class=6), "m"),
+    (dict(m=3, z=4, accuracy_class=6), "z"), (dict(m=3, z=1001, accuracy_class=6), "z"),
+    (dict(m=3, z=40, accuracy_class=6, face_width_mm=2), "face_width_mm"),
+    (dict(m=3, z=40, accuracy_class=6, beta_deg=50), "beta_deg"),
+    (dict(m=0.5, z=5, accuracy_class=6, d_mm=2.0), "d_mm"), (dict(m=70, z=1000, accuracy_class=6), "d_mm"),
+    (dict(m=3, z=40, accuracy_class=6.5), "accuracy_class"),
 ])
 def test_outside_the_standard_is_one_clear_error(kwargs, word):
     with pytest.raises(GearDesignError, match=word):

@@ -30,6 +30,7 @@ def test_line_of_action_points_match_the_geometry(m, z1, z2, x1, x2):
     assert np.linalg.norm(c["A"]) < g.da1 / 2 and np.linalg.norm(c["E"]) == pytest.approx(g.da1 / 2, abs=1e-9 * m)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("m, z1, z2, x1, x2", PAIRS)
 @pytest.mark.parametrize("roll_deg", [0.0, 4.0])
 def test_teeth_in_mesh_touch_without_overlap(m, z1, z2, x1, x2, roll_deg):

@@ -61,6 +61,7 @@ def _margin(z1, z2, x1, x2, name):
 CASES = [(12, 60, 1), (14, 40, 1), (10, 30, 1), (60, 12, 2)]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("z1, z2, gear", CASES)
 @pytest.mark.parametrize("target", [-0.02, -0.002, 0.002, 0.02])
 def test_the_mates_tip_enters_the_fillet_exactly_when_interference_fails(z1, z2, gear, target):

@@ -162,6 +162,7 @@ def _sweep(p, step_rad=3e-4):
     return into_material, into_space
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("m, z, x, z0", [(3.0, 24, 0.5, 8), (3.0, 36, 0.3, 12)])
 def test_ring_is_what_the_cutters_outline_leaves(m, z, x, z0):
     """Independent of the generation code: the cutter's own outline, swept, removes the space side of
@@ -179,6 +180,7 @@ def test_ring_is_what_the_cutters_outline_leaves(m, z, x, z0):
     assert into_space.all()
 
 
+@pytest.mark.slow
 def test_ring_annulus_area_and_export(tmp_path):
     """The ring's file holds the toothed bore and the rim; the annulus between them has the area of the
     rim circle less the bore (each outline's area reproduced after re-reading, 1e-9 relative)."""

@@ -99,6 +99,7 @@ def _penetration(pair, roll_deg, points=200, profiles=None):
     return d1, d2, gap, np.hypot(r_in_pin[:, 0], r_in_pin[:, 1] + a_w)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("m, z1, z2, x1, x2, beta", [PAIRS[0], PAIRS[2]])
 @pytest.mark.parametrize("roll_deg", [0.0, 5.0])
 def test_pinion_and_generated_ring_touch_without_overlap(m, z1, z2, x1, x2, beta, roll_deg):
@@ -111,6 +112,7 @@ def test_pinion_and_generated_ring_touch_without_overlap(m, z1, z2, x1, x2, beta
     assert gap < 1e-2 * m
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("x2, fails", [(0.3, True), (0.6, False)])
 def test_ring_tip_runs_into_the_pinion_fillet_exactly_when_interference1_fails(x2, fails):
     """4 mm, 25/90, x1 = 0: with x2 = 0.3 the ring's tip meets the pinion below its form circle
@@ -124,6 +126,7 @@ def test_ring_tip_runs_into_the_pinion_fillet_exactly_when_interference1_fails(x
     assert (deepest > 1e-4 * 4.0) == fails
 
 
+@pytest.mark.slow
 def test_khk_internal_example_drawn_as_cut():
     """KHK's 16/24 example, its ring cut by the default cutter for a 24-tooth ring (8 teeth): the ring's
     tip circle lies past that cutter's interference point N0, so the cutter trims the ring's tips

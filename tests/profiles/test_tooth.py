@@ -52,6 +52,7 @@ def test_outline_is_symmetric_and_spans_one_pitch():
     assert list(p.to_frame().columns) == ["x_mm", "y_mm", "segment"]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("z", [8, 10, 12, 14, 17, 25, 40])
 def test_profile_is_undercut_exactly_below_the_undercut_limit(z):
     """Material test: the cutter removes involute just above the base circle exactly where the

@@ -21,6 +21,7 @@ def _script():
     return mod
 
 
+@pytest.mark.slow
 def test_api_reference_builds_without_warnings(tmp_path):
     import pdoc  # noqa: F401  (the dev extra's: a missing one fails here, it is not skipped)
     out = subprocess.run([sys.executable, str(SCRIPT), str(tmp_path / "api")], cwd=ROOT, capture_output=True,

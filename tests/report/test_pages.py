@@ -19,6 +19,8 @@ from geardesign.shifts.contour_html import contour_figure
 
 from .browser import dump_dom, print_pages, tables
 
+pytestmark = pytest.mark.slow   # clusters, browsers, notebooks: seconds each (CONTRIBUTING.md)
+
 DATA = Path(__file__).resolve().parents[1] / "data" / "gear_examples.csv"
 
 

@@ -17,6 +17,7 @@ def test_scene_with_given_shifts_and_a_housing_center_distance(tmp_path):
     assert "balanced_sliding" in rep.summary[0] and "a_w = 180.0000 mm" in rep.summary[0]
 
 
+@pytest.mark.slow
 def test_mesh_drawing_adds_the_drawing_and_diagrams_of_both_pairs(tmp_path):
     """``mesh_drawing = true``: the optimum's and the given pair's meshing drawing and diagrams are
     written and linked from the report; without it, none are."""
@@ -41,6 +42,7 @@ def test_mesh_drawing_adds_the_drawing_and_diagrams_of_both_pairs(tmp_path):
     assert not list((tmp_path / "out2").glob("gear_mesh_*"))
 
 
+@pytest.mark.slow
 def test_planetary_section_optimises_checks_and_searches(tmp_path):
     """[planetary]: the best coaxial shifts with the region and the set's drawing; given shifts get
     every check of both meshes and of the set (LECAD's printed set fails the planet's fillet by the

@@ -9,6 +9,8 @@ from geardesign import sweeps
 from geardesign.errors import GearDesignError
 from tests.dask_cluster import assert_same_bits, client  # noqa: F401
 
+pytestmark = pytest.mark.slow   # clusters, browsers, notebooks: seconds each (CONTRIBUTING.md)
+
 
 def test_limit_sweep_on_a_cluster_is_the_serial_sweep(client):  # noqa: F811
     values = np.linspace(1.05, 1.45, sweeps.WARM_START_RUN + 6)     # two runs: the second starts cold

@@ -9,6 +9,8 @@ from geardesign.errors import GearDesignError
 from geardesign.shifts import atlas
 from tests.dask_cluster import assert_same_bits, client  # noqa: F401
 
+pytestmark = pytest.mark.slow   # clusters, browsers, notebooks: seconds each (CONTRIBUTING.md)
+
 
 @pytest.fixture(autouse=True)
 def small_chunks(monkeypatch):

@@ -14,6 +14,7 @@ KINDS = [  # (z1, z2, kind)
 ]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("z1, z2, kind", KINDS)
 @pytest.mark.parametrize("objective, fun, sense", [
     ("max_x_sum", lambda g: g["_x2"] + g["_sgn"] * g["_x1"], +1),

@@ -66,6 +66,7 @@ def test_max_x_sum_matches_reference(z1, z2):
     assert r.fun >= ref[2] - 1e-9           # never worse than the reference
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("z1,z2", PAIRS[:5])
 def test_max_eps_alpha_matches_reference(z1, z2):
     ref = reference_optimum(z1, z2, lambda g: g["eps_alpha"])
@@ -73,6 +74,7 @@ def test_max_eps_alpha_matches_reference(z1, z2):
     assert abs(r.x1 - ref[0]) < 1e-6 and abs(r.x2 - ref[1]) < 1e-6
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("z1,z2", [(17, 26), (12, 24), (30, 90)])
 def test_balanced_sliding_matches_reference(z1, z2):
     ref = reference_optimum(z1, z2, lambda g: np.maximum(abs(g["sliding1_root"]), abs(g["sliding2_root"])), sense=-1)

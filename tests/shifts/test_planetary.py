@@ -78,6 +78,7 @@ def reference_optimum(scores, lo=-1.5, hi=3.0, n=41, levels=34):
 SETS = [(18, 27, 72, 3), (21, 43, 108, 3), (11, 12, 37, 3), (24, 30, 86, 5), (12, 12, 42, 3)]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("sizes", SETS)
 @pytest.mark.parametrize("objective", ["max_eps_alpha", "max_x_sum"])
 def test_exact_matches_brute_force(sizes, objective):
@@ -160,6 +161,7 @@ def test_every_optimum_is_coaxial_and_holds_every_check(z_s, z_p, d, n, objectiv
     assert (t["margin"] >= -1e-9).all(), t[t["margin"] < -1e-9]
 
 
+@pytest.mark.slow
 def test_region_of_a_thin_sliver_has_its_true_area():
     """Issue 29 §3.5: a sliver's midpoints were projected across it onto another branch of their
     curves, and the refined polygon turned over: area −0.0105 with feasible True. Reference: the

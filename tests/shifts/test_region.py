@@ -101,6 +101,7 @@ def test_empty_region_plot_says_so():
     assert any("no feasible x1, x2" in t and all(c in t for c in reg.conflict) for t in texts)
 
 
+@pytest.mark.slow
 def test_thin_region_is_found_and_its_area_is_honest():
     # 8/44: a sliver ~0.02 wide that no node of the default grid falls in, yet the optimum is
     # feasible there; the area agrees with a 1601-node trace within the stated error
@@ -111,6 +112,7 @@ def test_thin_region_is_found_and_its_area_is_honest():
     assert abs(reg.area - fine.area) <= reg.area_error + 1e-12
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("z1,z2", [(33, 123), (17, 26), (40, 120)])
 def test_area_within_its_stated_error(z1, z2):
     """Against an independent count: the fraction of a fine grid's cell centres where every

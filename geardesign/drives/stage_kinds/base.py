@@ -17,7 +17,7 @@ A stage kind is one object with these parts (defaults here fit a stage with noth
 - **analyse**: :meth:`~StageKind.analyse` receives the flow into and out of the stage
   (:class:`StageFlow`: speed rpm, torque N·m) and returns its checks, size, mass and summary;
 - **scenes**: :meth:`~StageKind.scene_keys` and :meth:`~StageKind.from_scene`;
-- **diagram**: :meth:`~StageKind.draw` and :attr:`~StageKind.color`.
+- **diagram**: :meth:`~StageKind.draw` and :attr:`~StageKind.colour`.
 
 ``register(kind)`` adds a kind (``unregister(name)`` removes one); the drive, the search, the scenes
 and the diagram find it by :func:`kind_of` (a stage object) or :func:`kind_named` (a scene's or a
@@ -25,6 +25,7 @@ summary's ``kind``).
 """
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -62,15 +63,31 @@ class StageKind:
     """One kind of drive stage; subclass it and :func:`register` an instance.
 
     ``name``: the kind's name (scenes' ``kind = ...``, summaries' ``kind``); ``stage_class``: the
-    dataclass of its stages (it must have ``name`` and ``efficiency``); ``color``: its fill in the
-    diagram; ``solved``: its options are solved one at a time in the branch and bound.
+    dataclass of its stages (it must have ``name`` and ``efficiency``); ``colour``: its fill in the
+    diagram (the checks' word; ``color``, its old name, works for one release with a DeprecationWarning);
+    ``solved``: its options are solved one at a time in the branch and bound.
     """
 
     name: str = ""
     stage_class: type = object
-    color: str = "#d9d9d9"
+    colour: str = "#d9d9d9"
     solved: bool = False
     unsolved_label: str = "margins"   # what a solved option lacks when it has no margins
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        if "color" in cls.__dict__:   # a kind written before the rename: its colour still draws
+            warnings.warn(f"stage kind {cls.__name__}: the class attribute color is deprecated, name it colour "
+                          f"(one name per quantity, docs/glossary.md)", DeprecationWarning, stacklevel=2)
+            if "colour" not in cls.__dict__:
+                cls.colour = cls.__dict__["color"]
+
+    @property
+    def color(self) -> str:
+        """The old name of :attr:`colour` (read only)."""
+        warnings.warn("StageKind.color is deprecated: use colour (one name per quantity, docs/glossary.md)",
+                      DeprecationWarning, stacklevel=2)
+        return self.colour
 
     # -- ratio
     def ratio_span(self, stage) -> tuple:
@@ -177,7 +194,7 @@ class StageKind:
     def draw(self, canvas, x: float, summary: dict) -> tuple:
         """Draw the stage from shaft x (``canvas``: :class:`~geardesign.drives.diagram.Canvas`);
         (x of its output shaft, the label above it or '')."""
-        canvas.box(x + 0.15, 1.3, 0.9, self.color, f"{summary['name']}\nu = {summary['ratio']:g}")
+        canvas.box(x + 0.15, 1.3, 0.9, self.colour, f"{summary['name']}\nu = {summary['ratio']:g}")
         return x + 1.6, ""
 
 

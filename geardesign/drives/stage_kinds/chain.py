@@ -54,7 +54,7 @@ def _joined(parts: list) -> dict:
 class ChainKind(ToothedKind):
     name = "chain"
     stage_class = ChainStage
-    color = "#fdd0a2"
+    colour = "#fdd0a2"
 
 
     def rows(self, stage):
@@ -145,7 +145,7 @@ class ChainKind(ToothedKind):
         r2 = min(r1 * s["ratio"], 0.9)
         x2 = x + r1 + r2 + 0.8
         for xc, r in ((x, r1), (x2, r2)):
-            canvas.circle(xc, r, self.color)
+            canvas.circle(xc, r, self.colour)
         canvas.line([x, x2], [r1, r2])
         canvas.line([x, x2], [-r1, -r2])
         return x2, f"{s['name']}: {s['designation']}\nz {s['z1']}/{s['z2']}, {s['links']} links"

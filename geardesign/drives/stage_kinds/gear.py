@@ -7,7 +7,7 @@ flowing into it (:mod:`.gear_strength`: ``contact_strength``, ``root_strength1``
 a stage whose module is None has its module (and face width, when not given) chosen per design
 from the ISO 54 series so that they hold. Another sizing rule can be installed, ``set_sizing(fn)``::
 
-    fn(torque_nm, speed_rpm, z1, z2, *, modules, stage) -> [(m_mm, face_width_mm or None), ...]
+    fn(torque_nm, n_rpm, z1, z2, *, modules, stage) -> [(m_mm, face_width_mm or None), ...]
 
 ``modules`` is the ISO 54 series (``catalogs/modules_iso54.csv``, both series) the module must be
 taken from; the candidates come smallest (preferred) first, and the stage takes the first whose
@@ -284,7 +284,9 @@ def _strength_first_fits(stage, pairs, batch, flow):
     check (else its closest), all items' widths in one strength call."""
     grids = [_widths(stage, np.array([m]), pairs[i][0])[1].ravel() for i, m, _ in batch]
     sizes = [g.size for g in grids]
-    rep = lambda f: np.concatenate([np.full(n, f(item)) for n, item in zip(sizes, batch)])
+    def rep(f):      # one value per batch item, repeated over its widths
+        return np.concatenate([np.full(n, f(item)) for n, item in zip(sizes, batch)])
+
     B = np.concatenate(grids)
     M = rep(lambda it: it[1])
     Z1, Z2 = rep(lambda it: pairs[it[0]][0]), rep(lambda it: pairs[it[0]][1])
@@ -316,7 +318,7 @@ def _sized_stage(stage: GearStage, sol: dict) -> GearStage:
 class GearKind(ToothedKind):
     name = "gear"
     stage_class = GearStage
-    color = "#9ecae1"
+    colour = "#9ecae1"
     solved = True
     unsolved_label = "shifts"
 
@@ -715,7 +717,7 @@ class GearKind(ToothedKind):
         r2 = r1 * s["ratio"]
         r1, r2 = (0.9 * r1 / max(r1, r2), 0.9 * r2 / max(r1, r2))
         for xc, r in ((x, r1), (x + r1 + r2, r2)):
-            canvas.circle(xc, r, self.color, alpha=0.9)
+            canvas.circle(xc, r, self.colour, alpha=0.9)
         width = f", b {s['face_width_mm']:g}" if s.get("face_width_mm") is not None else ""   # a stage with a load
         text = (f"{s['name']}: z {s['z1']}/{s['z2']}, m {s['m']:g}{width}\n"
                 f"x {s['x1']:.3f}/{s['x2']:.3f}, a_w {s['a_w_mm']:.1f} mm")

@@ -11,7 +11,7 @@ __all__ = ["GivenKind"]
 class GivenKind(StageKind):
     name = "given"
     stage_class = GivenStage
-    color = "#d9d9d9"
+    colour = "#d9d9d9"
 
     def batch(self, stage, designs) -> Batch:
         return Batch(margins=stage.margins(designs.torque_out_nm))

@@ -31,5 +31,5 @@ __all__ = [
     "ToothDifference", "CenterDistance", "CustomCheck", "ContactStrength", "RootStrength", "StrengthSpec", "make_checks", "resolve_checks", "evaluate", "margins",
     "register", "unregister", "registered", "registry_version", "options", "option", "check_colour", "sliding_root_gradient",
     "DEFAULT_EPS_ALPHA_MIN", "DEFAULT_SA_MIN", "EPS_ALPHA_MIN_RANGE", "SA_MIN_RANGE", "EPS_GAMMA_MIN_RANGE",
-    "TOOTH_DIFFERENCE_RANGE", "FEASIBILITY_TOL", "UNDEFINED", "CONTEXT_KEYWORDS",
+    "TOOTH_DIFFERENCE_RANGE", "FEASIBILITY_TOL", "UNDEFINED", "CONTEXT_KEYWORDS", "register_context",
 ]

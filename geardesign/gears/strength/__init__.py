@@ -12,7 +12,8 @@ import importlib
 _NAMES = {"GIVEN_FACTORS": "chain", "STRENGTH_FIELDS": "chain", "pair_strength": "chain", "strength": "chain",
           "MIN_SAFETY_SOURCE": "defaults", "S_FMIN": "defaults", "S_HMIN": "defaults", "Load": "load",
           "MATERIAL_KINDS": "materials", "Material": "materials", "material": "materials",
-          "material_names": "materials", "planetary_strength": "planetary_meshes", "StrengthResult": "result"}
+          "material_names": "materials", "planetary_strength": "planetary_meshes", "StrengthResult": "result",
+          "StrengthOptions": "options"}
 
 __all__ = sorted(_NAMES)
 

@@ -28,7 +28,7 @@ from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
 from .ops import ArrayOps, FloatOps, checked, once, per_load_case
-from .options import blank_option, shaft_option, transverse_option, validate_options
+from .options import GROUPED, StrengthOptions, blank_option, grouped, shaft_option, transverse_option, validate_options
 from .result import StrengthResult, from_chain
 from .root_chain import root_side
 
@@ -297,7 +297,7 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
                   pitting_permitted: bool = False, optimum_life: bool = False, S_Hmin: float = dflt.S_HMIN,
                   S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), rim_mm=(None, None), root: bool = True,
                   geometry: dict | None = None, gear_blank=None,
-                  transverse_deviation: str = dflt.TRANSVERSE_DEVIATION) -> dict:
+                  transverse_deviation: str = dflt.TRANSVERSE_DEVIATION, options: StrengthOptions | None = None) -> dict:
     """ISO 6336 load capacity of gear pairs, vectorised: m (normal module, mm), z1, z2, x1, x2 and the face
     widths broadcast like :func:`~geardesign.gears.geometry.pair_geometry`, whose geometry (operating
     pressure angle, ε_α, diameters) is used as it is. Returns a dict of float arrays: the stresses and safety
@@ -320,6 +320,8 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``S_Fmin``: the minimum safety factors for σ_HP = σ_HG/S_Hmin and σ_FP = σ_FG/S_Fmin (defaults and their
     source: :mod:`~geardesign.gears.strength.defaults`). ``cycles_per_rev``: load cycles of a tooth per revolution of
     each gear (a sun among N planets: N). ``rim_mm``: (s_R1, s_R2) rim thickness under the root for Y_B (None: solid).
+    ``options``: a :class:`~geardesign.gears.strength.options.StrengthOptions` holding the options above (from
+    ``accuracy_grade`` to ``rim_mm``) in one object, instead of the keywords (giving both is refused).
     ``root=False`` leaves the root side out (no S_F, σ_F, Y fields): half the work where only contact is asked.
     ``geometry``: the pair's geometry dict when the caller has it (:func:`~geardesign.gears.geometry.mesh_geometry`
     of these designs: the strength checks of the shift solvers); it is used unvalidated, so designs that do not
@@ -331,6 +333,15 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``transverse_deviation``: the deviation of K_Hα, K_Fα, ``"larger"`` of f_pb and f_fα (ISO 6336-1:2006 8.3.2) or
     ``"f_pb"`` (see :func:`~geardesign.gears.strength.factors.transverse_deviation`).
     """
+    if options is not None:   # the options grouped in one object (docs/glossary.md)
+        (accuracy_grade, nu40, Rz_flank_um, Rz_root_um, root_method, factors, K_gamma, tip_relief_um, bore_ratio, shaft,
+         pitting_permitted, optimum_life, S_Hmin, S_Fmin, cycles_per_rev, rim_mm, gear_blank,
+         transverse_deviation) = grouped(options, dict(
+            accuracy_grade=accuracy_grade, nu40=nu40, Rz_flank_um=Rz_flank_um, Rz_root_um=Rz_root_um,
+            root_method=root_method, factors=factors, K_gamma=K_gamma, tip_relief_um=tip_relief_um,
+            bore_ratio=bore_ratio, shaft=shaft, pitting_permitted=pitting_permitted, optimum_life=optimum_life,
+            S_Hmin=S_Hmin, S_Fmin=S_Fmin, cycles_per_rev=cycles_per_rev, rim_mm=rim_mm, gear_blank=gear_blank,
+            transverse_deviation=transverse_deviation), _GROUPED_DEFAULTS)
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
         raise GearDesignError(f"load must be a geardesign Load, got {type(load).__name__}")
@@ -582,3 +593,4 @@ _OPTION_SET = frozenset(_OPTION_NAMES)
 _DEFAULTS = tuple(inspect.signature(pair_strength).parameters[k].default
                   for k in inspect.signature(validate_options).parameters)
 _DEFAULTS_CHECKED = validate_options(*_DEFAULTS)
+_GROUPED_DEFAULTS = {k: inspect.signature(pair_strength).parameters[k].default for k in GROUPED}

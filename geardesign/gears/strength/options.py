@@ -2,6 +2,8 @@
 gear), checked by name against their ranges before any work."""
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from ...errors import GearDesignError
@@ -12,7 +14,7 @@ from .factors import TRANSVERSE_DEVIATIONS, gear_blank_factor
 from .ops import checked
 
 __all__ = ["validate_options", "shaft_option", "blank_option", "transverse_option", "TIP_RELIEF_RANGE_UM",
-           "SHAFT_RANGES", "BLANK_RANGES"]
+           "SHAFT_RANGES", "BLANK_RANGES", "StrengthOptions", "GROUPED", "grouped"]
 
 TIP_RELIEF_RANGE_UM = (0.0, 1000.0)    # C_a given: from none to a millimetre (a relief of module size)
 # the pinion shaft of ISO 6336-1:2006 7.6.2.2, eq. (44) (factors.shaft_misalignment's keywords): K' is one of the
@@ -123,3 +125,71 @@ def transverse_option(which) -> str:
         return which
     raise GearDesignError(f"transverse_deviation must be 'larger' (the larger of f_pb and f_falpha, ISO 6336-1:2006 "
                           f"8.3.2) or 'f_pb', got {which!r}")
+# The options of pair_strength that describe the gears' making, lubrication and rating (not the design or its
+# load), grouped in one object: ``pair_strength(..., options=StrengthOptions(accuracy_grade=6, nu40=320))``.
+GROUPED = ("accuracy_grade", "nu40", "Rz_flank_um", "Rz_root_um", "root_method", "factors", "K_gamma", "tip_relief_um",
+           "bore_ratio", "shaft", "pitting_permitted", "optimum_life", "S_Hmin", "S_Fmin", "cycles_per_rev", "rim_mm",
+           "gear_blank", "transverse_deviation")
+
+
+@dataclass(frozen=True)
+class StrengthOptions:
+    """The options of :func:`~geardesign.gears.strength.chain.pair_strength` in one object (their meaning, units and
+    ranges: its docstring and docs/glossary.md), checked by name when made. Passed as ``options=``, instead of
+    the same keywords one by one (giving both is refused).
+
+    >>> StrengthOptions(accuracy_grade=6, nu40=320).nu40
+    320
+    >>> StrengthOptions(root_method="A")
+    Traceback (most recent call last):
+    ...
+    geardesign.errors.GearDesignError: root_method must be 'B' (ISO 6336-3:2019, load at the outer point of single pair contact) or 'C' (tip load with Y_eps, ISO 6336-3:1996), got 'A'
+    """
+
+    accuracy_grade: float = dflt.ACCURACY_GRADE
+    nu40: float = dflt.NU40_MM2_S
+    Rz_flank_um: float = dflt.RZ_FLANK_UM
+    Rz_root_um: float = dflt.RZ_ROOT_UM
+    root_method: str = "B"
+    factors: dict | None = None
+    K_gamma: float = 1.0
+    tip_relief_um: float | None = None
+    bore_ratio: tuple = (0.0, 0.0)
+    shaft: dict | None = None
+    pitting_permitted: bool = False
+    optimum_life: bool = False
+    S_Hmin: float = dflt.S_HMIN
+    S_Fmin: float = dflt.S_FMIN
+    cycles_per_rev: tuple = (1, 1)
+    rim_mm: tuple = (None, None)
+    gear_blank: object = None
+    transverse_deviation: str = dflt.TRANSVERSE_DEVIATION
+
+    def __post_init__(self):
+        blank_option(self.gear_blank)
+        transverse_option(self.transverse_deviation)
+        validate_options(self.accuracy_grade, self.nu40, self.Rz_flank_um, self.Rz_root_um, self.K_gamma,
+                         self.root_method, self.S_Hmin, self.S_Fmin, self.cycles_per_rev, self.rim_mm,
+                         self.bore_ratio, self.tip_relief_um)
+        shaft_option(self.shaft)
+        if self.factors is not None and not isinstance(self.factors, dict):
+            raise GearDesignError(f"factors must be a dict of factor values, got {type(self.factors).__name__}")
+
+
+def grouped(options, loose: dict, defaults: dict) -> tuple:
+    """The values of :data:`GROUPED` from ``options`` (a :class:`StrengthOptions`), in that order; refused when
+    a keyword of ``loose`` was also given away from its default ``defaults``."""
+    if not isinstance(options, StrengthOptions):
+        raise GearDesignError(f"options must be a geardesign StrengthOptions, got {type(options).__name__}")
+    given = [k for k in GROUPED if loose[k] is not defaults[k] and not _same(loose[k], defaults[k])]
+    if given:
+        raise GearDesignError(f"give the strength options either as options= or as keywords, not both: "
+                              f"{', '.join(given)}")
+    return tuple(getattr(options, k) for k in GROUPED)
+
+
+def _same(a, b) -> bool:
+    try:
+        return bool(a == b)
+    except (ValueError, TypeError):   # arrays: compared element-wise, ambiguous
+        return False

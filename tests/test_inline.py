@@ -53,7 +53,7 @@ def test_drive_analysis_shows_its_diagram():
     from geardesign.scene import load_scene
     from geardesign.scene.drive import compute_drive
 
-    scene = Path(__file__).resolve().parents[2] / "studies" / "scenes" / "seed002_drive.toml"
+    scene = Path(__file__).resolve().parents[1] / "studies" / "scenes" / "seed002_drive.toml"
     *_, analysis = compute_drive(load_scene(scene).sections["drive"])
     view = analysis._repr_html_()
     assert _picture(view)[1] > 300 and "DriveAnalysis" in view

@@ -134,6 +134,7 @@ def test_balanced_root_strength_equalises_the_gears_on_a_fixed_centre_distance()
     assert r.x1 + r.x2 == pytest.approx(0.5, abs=1e-9)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("method", ["exact", "convex", "grid"])
 def test_strength_objectives_run_on_every_method(method):
     r = gd.optimize_shifts(20, 60, m=4, objective="max_min_safety", method=method, checks=CASE)

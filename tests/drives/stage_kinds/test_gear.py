@@ -24,8 +24,8 @@ def rule_module(torque_nm, z1):
     return min(m for m in ISO54 if m >= need)
 
 
-def stand_in(torque_nm, speed_rpm, z1, z2, *, modules, stage):
-    SEEN.append((torque_nm, speed_rpm, z1, z2, stage.material))
+def stand_in(torque_nm, n_rpm, z1, z2, *, modules, stage):
+    SEEN.append((torque_nm, n_rpm, z1, z2, stage.material))
     assert set(ISO54) <= set(modules.tolist())
     need = math.sqrt(200 * torque_nm / (z1 * W_N_PER_MM))
     return [(m, 10 * m) for m in modules if m >= need][:3]

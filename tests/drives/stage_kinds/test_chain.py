@@ -1,5 +1,8 @@
 """A chain stage's checks over a drive's designs are evaluated block by block (drives.limits.BATCH_BLOCK): the
 same ranked table as one evaluation of every design at once (the chain's formulas are elementwise)."""
+
+import pytest
+
 import geardesign as gd
 from geardesign.drives.stage_kinds import chain as chain_kind
 
@@ -9,6 +12,7 @@ def _table(objective):
     return drive.optimize(10, objective=objective).table
 
 
+@pytest.mark.slow
 def test_blocks_give_the_table_of_one_evaluation(monkeypatch):
     blocked = {obj: _table(obj) for obj in ("min_size", "min_mass")}
     monkeypatch.setattr(chain_kind, "BATCH_BLOCK", 10**9)     # every design in one evaluation

@@ -1,0 +1,49 @@
+"""The meshes of a planetary set under load (geardesign.gears.strength.planetary_meshes): the torque and the
+speeds relative to the carrier by Willis' equation, written out here, and each mesh's strength equal to the
+pair's own strength at that load."""
+import pytest
+
+from geardesign.errors import GearDesignError
+from geardesign.gears.planetary import PlanetarySet
+from geardesign.gears.strength import Load, pair_strength
+from geardesign.gears.strength.planetary_meshes import mesh_loads, planetary_strength
+
+
+@pytest.mark.parametrize("zs, zp, zr, n, arrangement", [(20, 31, 82, 3, "ring_fixed"), (21, 43, 108, 3, "ring_fixed"),
+                                                       (18, 27, 72, 4, "carrier_fixed")])
+def test_mesh_loads_by_willis(zs, zp, zr, n, arrangement):
+    t_sun, n_sun = 300.0, 1020.0
+    # Willis: (n_s − n_c)/(n_r − n_c) = −z_r/z_s; with the ring held, n_c = n_s z_s/(z_s + z_r)
+    n_c = n_sun * zs / (zs + zr) if arrangement == "ring_fixed" else 0.0
+    sp, pr = mesh_loads(zs, zp, zr, n, arrangement, Load(torque_nm=t_sun, n_rpm=n_sun, life_h=1000)).values()
+    assert sp[0].torque_nm == pytest.approx(t_sun / n, rel=1e-15)            # the planets share the torque
+    assert sp[0].n_rpm == pytest.approx(n_sun - n_c, rel=1e-15)
+    # the planet: the same tangential force, so T_p = T_s z_p/z_s per planet, at (n_s − n_c) z_s/z_p
+    assert pr[0].torque_nm == pytest.approx(t_sun / n * zp / zs, rel=1e-15)
+    assert pr[0].n_rpm == pytest.approx((n_sun - n_c) * zs / zp, rel=1e-15)
+    assert sp[1] == (n, 1) and pr[1] == (1, n)      # a sun tooth meets n planets, a ring tooth n planets
+    assert sp[0].power_kw == pytest.approx(pr[0].power_kw, rel=1e-14)   # one mesh's power through the planet
+
+
+def test_each_mesh_is_the_pairs_own_strength():
+    s = PlanetarySet.coaxial(2, 20, 31, 82, 3)
+    load = Load(torque_nm=100, n_rpm=1500, life_h=10_000)
+    got = planetary_strength(s, load, "18CrNiMo7-6", face_width_mm=25)
+    sp, pr = mesh_loads(20, 31, 82, 3, "ring_fixed", load).values()
+    common = dict(beta_deg=s.beta_deg, rack=s.rack, tip_shortening=False, face_width_mm=25, material1="18CrNiMo7-6")
+    own_sp = pair_strength(2, 20, 31, s.x_sun, s.x_planet, load=sp[0], cycles_per_rev=sp[1], **common)
+    own_pr = pair_strength(2, 31, 82, s.x_planet, s.x_ring, load=pr[0], cycles_per_rev=pr[1], internal=True, **common)
+    for key in ("S_H1", "S_H2", "S_F1", "S_F2"):
+        assert getattr(got["sun-planet"], key) == pytest.approx(float(own_sp[key]), rel=1e-12)
+        assert getattr(got["planet-ring"], key) == pytest.approx(float(own_pr[key]), rel=1e-12)
+
+
+@pytest.mark.parametrize("call, words", [
+    (lambda s, ld: mesh_loads(20, 31, 82, 3, "sun_fixed", ld), "arrangement"),
+    (lambda s, ld: mesh_loads(20, 31, 82, 3, "ring_fixed", Load(torque_nm=10, n_rpm=100, on_gear=2)), "on_gear=1"),
+    (lambda s, ld: planetary_strength(s, ld, None, face_width_mm=25), "material"),
+    (lambda s, ld: planetary_strength(s, ld, "18CrNiMo7-6", face_width_mm=25, beta_deg=10), "beta_deg"),
+])
+def test_refusals_name_the_input(call, words):
+    with pytest.raises(GearDesignError, match=words):
+        call(PlanetarySet.coaxial(2, 20, 31, 82, 3), Load(torque_nm=100, n_rpm=1500))
