@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import GearDesignError
-from ..gears.geometry import min_center_distance, require_module
+from ..gears.geometry import A_W_RANGE_MM, min_center_distance, require_module
 from ..gears.planetary import (ARRANGEMENTS, MESH_NAMES, Assembly, MeshCheck, PlanetaryMeshes, planetary_ratio,
                                set_checks, set_geometry)
 from ..inline import html_view
@@ -288,7 +288,7 @@ def optimize_planetary_shifts(z_sun, z_planet, z_ring, n_planets, m, a_w=None, o
     method = require_choice("method", method, METHODS)
     require_choice("arrangement", arrangement, tuple(ARRANGEMENTS))
     if a_w is not None:
-        a_w = one_number("a_w (center distance)", require_range("a_w (center distance)", a_w, 0, 1e7,
+        a_w = one_number("a_w (center distance)", require_range("a_w (center distance)", a_w, *A_W_RANGE_MM,
                                                                 lo_open=True, unit="mm"))
     tol = DEFAULT_TOL[method] if tol is None else one_number("tol", require_range("tol", tol, 1e-14, 1.0))
     bounds = validate_bounds(bounds)
