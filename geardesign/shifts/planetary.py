@@ -37,6 +37,7 @@ from .optimize import DEFAULT_TOL, METHODS, solve_problem
 from .problem import _FLOAT_FAULTS, DEFAULT_BOUNDS, Problem, _holds_meshing, validate_bounds, with_meshing
 from .looks import margin_bars
 from .region import REGION_N_MAX, Region, region_of
+from .result import conflict_text
 from .methods import ACCURACY
 
 __all__ = ["optimize_planetary_shifts", "planetary_region", "PlanetaryShiftResult", "PlanetaryProblem"]
@@ -233,7 +234,7 @@ class PlanetaryShiftResult(Result):
             f"      method: {self.method}, tol {self.tol:g}, nit {self.nit}, {self.time_s * 1e3:.2f} ms",
         ]
         if self.conflict:
-            lines.insert(2, f"    conflict: {', '.join(self.conflict)}")
+            lines.insert(2, "    conflict: " + conflict_text(self.conflict, self.margins))
         return "\n".join(lines)
 
 
@@ -333,7 +334,7 @@ def _result(prob: PlanetaryProblem, out, method, tol, a_w, arrangement, t0) -> P
         ratio=planetary_ratio(ms.z_sun, ms.z_ring, arrangement), arrangement=arrangement, z_sun=ms.z_sun,
         z_planet=ms.z_planet, z_ring=ms.z_ring, n_planets=ms.n_planets, m=prob.m, beta_deg=ms.beta_deg,
         margins=margins, active=active, sensitivity=out.sensitivity, sensitivity_sides=out.sides,
-        conflict=conflict, a_w_fixed=a_w, accuracy=ACCURACY[method].format(tol=tol))
+        conflict=conflict, a_w_fixed=a_w, accuracy=out.accuracy or ACCURACY[method].format(tol=tol))
 
 
 def planetary_region(z_sun, z_planet, z_ring, n_planets, m, checks=None, method: str = "exact",
