@@ -131,6 +131,9 @@ SCHEMAS: dict[str, Schema] = {
     "center_distances": Schema(
         "center_distances", (_f("a_w_mm"), Column("series", "int", positive=True)), increasing=("a_w_mm",),
         description="standard centre distances (GOST 2185-66)"),
+    "measuring_balls": Schema(
+        "measuring_balls", (_f("ball_mm"), Column("inch", "str", required=False)), increasing=("ball_mm",),
+        description="nominal diameters of precision balls (and the pins cut to them) stocked for measuring gears"),
     "motors": Schema(
         "motors",
         (Column("designation", "str"), _f("power_kw"), Column("poles", "int", positive=True), _f("sync_speed_rpm"),
@@ -159,6 +162,7 @@ BUNDLED: dict[str, tuple[str, str, str | None]] = {
     "key_lengths": ("key_lengths.csv", "key_lengths", None),
     "modules": ("modules_iso54.csv", "modules", None),
     "center_distances": ("center_distances_gost2185.csv", "center_distances", None),
+    "measuring_balls": ("measuring_balls_iso3290.csv", "measuring_balls", None),
     "motors_air": ("motors_air.csv", "motors", None),
     "motors_soga_mt3": ("motors_soga_mt3.csv", "motors", None),
     "motors_motive_delphi": ("motors_motive_delphi.csv", "motors", None),
@@ -477,6 +481,16 @@ def module_series(series=(1, 2), min_mm: float | None = None, max_mm: float | No
     lo = -np.inf if min_mm is None else min_mm
     hi = np.inf if max_mm is None else max_mm
     return values[(values >= lo) & (values <= hi)]
+
+
+def measuring_ball_series() -> np.ndarray:
+    """Nominal diameters of the precision balls a shop can buy for the dimension over balls, mm, sorted (ISO 3290-1
+    metric and inch sizes, as a maker stocks them: ``catalogs/measuring_balls_iso3290.csv``).
+
+    >>> [float(v) for v in measuring_ball_series()[:4]]
+    [1.5, 1.5875, 2.0, 2.3812]
+    """
+    return np.sort(load_catalog("measuring_balls")["ball_mm"].to_numpy(dtype=float))
 
 
 def center_distance_series(series=(1, 2), min_mm: float | None = None, max_mm: float | None = None) -> np.ndarray:
