@@ -200,12 +200,14 @@ def _ctrl_c_deferred():
     disposition, start deaf to it. An ignored signal is thrown away, though, and with it the user's Ctrl-C
     (issue 36 §1.3): a small watcher process in the same group hears it instead and tells this process
     (SIGUSR1); a watcher that died of it (hit before its handler was set) counts as heard too."""
-    if threading.current_thread() is not threading.main_thread() or not hasattr(signal, "SIGUSR1"):
+    import subprocess
+    import sys
+
+    if (threading.current_thread() is not threading.main_thread() or not hasattr(signal, "SIGUSR1")
+            or not sys.executable):   # no watcher to start (another thread, Windows, an embedded Python)
         with _ctrl_c_ignored():
             yield
         return
-    import subprocess
-    import sys
 
     caught = []
     old_usr1 = signal.signal(signal.SIGUSR1, lambda signum, frame: caught.append(signum))
