@@ -16,7 +16,7 @@ from pathlib import Path
 from .errors import GearDesignError
 
 __all__ = ["check_output_path", "check_output_dir", "write_file_atomic", "write_dir_atomic", "all_or_nothing",
-           "NAME_MAX_BYTES"]
+           "parents_made", "NAME_MAX_BYTES"]
 
 # The longest file name (one path component) the common file systems take: ext4, XFS, APFS, NTFS
 # (255 UTF-16 units there); the temporary names below are kept within it too.
@@ -87,6 +87,35 @@ def check_output_dir(path, *, overwrite: bool = False, what: str = "--out") -> P
     if p.is_dir() and any(p.iterdir()) and not overwrite:
         raise GearDesignError(f"{what} {str(p)!r} is not empty: give --overwrite to replace its contents")
     return p
+
+
+@contextlib.contextmanager
+def parents_made(path, what: str = "--out"):
+    """Create the missing parent folders of ``path`` for the block; when the block ends in an error
+    (Ctrl-C included) the folders it created are removed again, so a failed run leaves nothing. An
+    ancestor that is a file, or a folder that cannot be made, is one GearDesignError naming ``what``."""
+    p = Path(os.fspath(path))
+    missing, parent = [], p.parent
+    while str(parent) not in ("", ".") and not os.path.lexists(parent):
+        missing.append(parent)
+        parent = parent.parent
+    if os.path.lexists(parent) and not parent.is_dir():
+        raise GearDesignError(f"{what} {_cut(str(p))}: {_cut(str(parent))} is a file, not a folder")
+    made = []
+    try:
+        for d in reversed(missing):
+            try:
+                os.mkdir(d)
+            except OSError as exc:
+                raise GearDesignError(f"{what} {_cut(str(p))}: cannot make the folder {_cut(str(d))}: "
+                                      f"{exc.strerror}") from None
+            made.append(d)
+        yield p
+    except BaseException:
+        for d in reversed(made):
+            with contextlib.suppress(OSError):   # a folder something else has written to stays
+                os.rmdir(d)
+        raise
 
 
 def _temp_affixes(name: str, suffix: str = "") -> tuple[str, str]:

@@ -18,8 +18,8 @@ set on the worker after it. The workers
 must run the same versions of numpy, scipy and geardesign, as Dask itself requires.
 ``progress(done, total)`` is called as chunks finish. Ctrl-C (KeyboardInterrupt), or an error in
 one chunk, cancels every future; a cluster started here is closed and its scratch folder removed
-(its workers start with Ctrl-C ignored, so that this process alone handles it: see
-:func:`_ctrl_c_ignored`).
+(its workers start with Ctrl-C ignored, so that this process alone handles it; a Ctrl-C during
+their start is held back until the start ends, then acted on: see :func:`_ctrl_c_deferred`).
 
 Dask is an optional extra (``pip install "geardesign[dask]"``); it is imported only when a batch
 goes to a cluster, never by ``import geardesign``.
@@ -166,11 +166,12 @@ def _local_cluster(n: int):
     scratch = tempfile.mkdtemp(prefix="geardesign-dask-")
     local = client = None
     try:
-        with _ctrl_c_ignored(), dask.config.set(_LOCAL_CONFIG):
+        # the scheduler's scratch folder too (Dask's default: $TMPDIR/dask-scratch-space, left behind)
+        with _ctrl_c_deferred(), dask.config.set({**_LOCAL_CONFIG, "temporary-directory": scratch}):
             local = distributed.LocalCluster(n_workers=n, processes=True, threads_per_worker=1,
                                              dashboard_address=":0", local_directory=scratch,
                                              silence_logs=logging.CRITICAL)
-        client = distributed.Client(local, set_as_default=False)
+            client = distributed.Client(local, set_as_default=False)
         yield client
     finally:
         with _ctrl_c_ignored():
@@ -182,16 +183,59 @@ def _local_cluster(n: int):
             shutil.rmtree(scratch, ignore_errors=True)
 
 
+# A watcher beside this process while a local cluster starts: it hears Ctrl-C for it (see _ctrl_c_deferred) and
+# ends when its stdin closes (this process done with it, or gone).
+_WATCHER = ("import os, signal, sys\n"
+            "signal.signal(signal.SIGINT, lambda *_: os.kill(os.getppid(), signal.SIGUSR1))\n"
+            "sys.stdin.read()\n")
+
+
+@contextlib.contextmanager
+def _ctrl_c_deferred():
+    """Ctrl-C held back for the block and acted on when it ends (KeyboardInterrupt): around the start of a
+    local cluster (main thread only; elsewhere Python delivers no signals).
+
+    Ctrl-C goes to the terminal's whole process group, and workers it reaches mid-start print tracebacks
+    while their nannies restart them; so SIGINT is ignored for the block, and the workers, which inherit the
+    disposition, start deaf to it. An ignored signal is thrown away, though, and with it the user's Ctrl-C
+    (issue 36 §1.3): a small watcher process in the same group hears it instead and tells this process
+    (SIGUSR1); a watcher that died of it (hit before its handler was set) counts as heard too."""
+    import subprocess
+    import sys
+
+    if (threading.current_thread() is not threading.main_thread() or not hasattr(signal, "SIGUSR1")
+            or not sys.executable):   # no watcher to start (another thread, Windows, an embedded Python)
+        with _ctrl_c_ignored():
+            yield
+        return
+
+    caught = []
+    old_usr1 = signal.signal(signal.SIGUSR1, lambda signum, frame: caught.append(signum))
+    watcher = subprocess.Popen([sys.executable, "-I", "-S", "-c", _WATCHER], stdin=subprocess.PIPE,
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        with _ctrl_c_ignored():
+            try:
+                yield
+            except Exception:
+                if not (caught or watcher.poll() == -signal.SIGINT):
+                    raise
+    finally:
+        watcher.stdin.close()
+        try:
+            watcher.wait(5)
+        except subprocess.TimeoutExpired:
+            watcher.kill()
+            watcher.wait()
+        signal.signal(signal.SIGUSR1, old_usr1)
+    if caught or watcher.returncode == -signal.SIGINT:
+        raise KeyboardInterrupt from None
+
+
 @contextlib.contextmanager
 def _ctrl_c_ignored():
-    """SIGINT ignored for the block (in the main thread; elsewhere Python delivers no signals).
-
-    Around the start of a local cluster: Ctrl-C goes to the terminal's whole process group, and
-    workers killed by it mid-import or mid-task print tracebacks while their nannies restart them.
-    An ignored signal stays ignored in a spawned child (and Python leaves it so), so the workers
-    never see Ctrl-C; this process alone handles it, by cancelling and closing. A Ctrl-C in the
-    second or so the workers take to start is lost. Around the clean-up: a second Ctrl-C must not
-    cut the closing of the cluster short."""
+    """SIGINT ignored for the block (in the main thread; elsewhere Python delivers no signals): around
+    the clean-up of a local cluster, so that a second Ctrl-C does not cut its closing short."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return

@@ -12,7 +12,7 @@ from .errors import GearDesignError
 __all__ = [
     "require_finite", "require_positive", "require_range", "require_int", "require_count", "one_number",
     "ndim", "require_choice", "require_bool", "broadcast_inputs", "require_axes",
-    "require_callable",
+    "require_callable", "hint_unknown_arguments",
 ]
 
 
@@ -184,6 +184,32 @@ def broadcast_inputs(**arrays) -> list[np.ndarray]:
 
 
 _INT_MAX = 10**15
+
+
+def hint_unknown_arguments(cls, hints: dict):
+    """Wrap the dataclass ``cls``'s ``__init__`` so that an unknown keyword is refused by name: the class's own
+    arguments listed, and where ``hints`` holds the name, a hint to the right one (``{value!r}``: what was given),
+    in place of Python's bare TypeError. Returns ``cls``."""
+    import dataclasses
+    import functools
+
+    init = cls.__init__
+    known = [f.name for f in dataclasses.fields(cls) if f.init]
+
+    @functools.wraps(init)
+    def checked_init(self, *args, **kwargs):
+        for name in kwargs:
+            if name not in known:
+                hint = hints.get(name, "").format(value=kwargs[name])
+                raise GearDesignError(f"{cls.__name__} has no argument {name!r}" + (f": {hint}" if hint else "")
+                                      + f"; its arguments are {', '.join(sorted(known))}")
+        if len(args) > len(known):
+            raise GearDesignError(f"{cls.__name__} takes at most {len(known)} arguments ({', '.join(known)}), "
+                                  f"got {len(args)}")
+        init(self, *args, **kwargs)
+
+    cls.__init__ = checked_init
+    return cls
 
 
 def _short(value) -> str:

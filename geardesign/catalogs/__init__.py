@@ -5,7 +5,7 @@
 2.0
 """
 from .tables import (CHAIN_CATALOGS, catalog_dir, catalog_names, center_distance_series, chain_catalog,
-                     key_lengths_mm, load_catalog, module_series, preferred_numbers)
+                     key_lengths_mm, load_catalog, measuring_ball_series, module_series, preferred_numbers)
 
 __all__ = ["CHAIN_CATALOGS", "catalog_dir", "catalog_names", "center_distance_series", "chain_catalog",
-           "key_lengths_mm", "load_catalog", "module_series", "preferred_numbers"]
+           "key_lengths_mm", "load_catalog", "measuring_ball_series", "module_series", "preferred_numbers"]

@@ -135,6 +135,9 @@ SCHEMAS: dict[str, Schema] = {
     "preferred_numbers": Schema(
         "preferred_numbers", (_f("value"), Column("series", "int", positive=True)), increasing=("value",),
         description="preferred numbers 1.00 ... 9.50 (ISO 3 basic series R10, R20, R40: the smallest series holding each)"),
+    "measuring_balls": Schema(
+        "measuring_balls", (_f("ball_mm"), Column("inch", "str", required=False)), increasing=("ball_mm",),
+        description="nominal diameters of precision balls (and the pins cut to them) stocked for measuring gears"),
     "motors": Schema(
         "motors",
         (Column("designation", "str"), _f("power_kw"), Column("poles", "int", positive=True), _f("sync_speed_rpm"),
@@ -178,6 +181,7 @@ BUNDLED: dict[str, tuple[str, str, str | None]] = {
     "modules": ("modules_iso54.csv", "modules", None),
     "center_distances": ("center_distances_gost2185.csv", "center_distances", None),
     "preferred_numbers": ("preferred_numbers_iso3.csv", "preferred_numbers", None),
+    "measuring_balls": ("measuring_balls_iso3290.csv", "measuring_balls", None),
     "motors_air": ("motors_air.csv", "motors", None),
     "motors_soga_mt3": ("motors_soga_mt3.csv", "motors", None),
     "motors_motive_delphi": ("motors_motive_delphi.csv", "motors", None),
@@ -512,6 +516,16 @@ def module_series(series=(1, 2), min_mm: float | None = None, max_mm: float | No
     lo = -np.inf if min_mm is None else min_mm
     hi = np.inf if max_mm is None else max_mm
     return values[(values >= lo) & (values <= hi)]
+
+
+def measuring_ball_series() -> np.ndarray:
+    """Nominal diameters of the precision balls a shop can buy for the dimension over balls, mm, sorted (ISO 3290-1
+    metric and inch sizes, as a maker stocks them: ``catalogs/measuring_balls_iso3290.csv``).
+
+    >>> [float(v) for v in measuring_ball_series()[:4]]
+    [1.5, 1.5875, 2.0, 2.3812]
+    """
+    return np.sort(load_catalog("measuring_balls")["ball_mm"].to_numpy(dtype=float))
 
 
 def center_distance_series(series=(1, 2), min_mm: float | None = None, max_mm: float | None = None) -> np.ndarray:

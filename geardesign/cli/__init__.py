@@ -41,10 +41,17 @@ def main(argv=None) -> int:
     """Run one command; exit status 0 (done), 1 (no feasible design), 2 (bad input, one line on
     stderr) or 130 (Ctrl-C, one line on stderr, no traceback, nothing written)."""
     try:
-        return _main(argv)
+        code = _main(argv)
     except KeyboardInterrupt:   # during start-up: the imports and the parser
         print("geardesign: interrupted", file=sys.stderr)
-        return 130
+        code = 130
+    if code == 130 and argv is None:
+        # the command (the process: argv from the command line) is ending: a Ctrl-C pressed again while the
+        # interpreter shuts down (a second or two after a cluster) must not kill it by SIGINT (status -2) half-way
+        import signal
+
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+    return code
 
 
 def _main(argv) -> int:

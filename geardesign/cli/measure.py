@@ -17,7 +17,8 @@ from .options import add_rack_args, rack_from_args
 ROWS = (
     ("k", "teeth spanned k", ""), ("w_k", "span W_k", "mm"), ("w_k_max", "  largest (A_sne / A_sni)", "mm"),
     ("w_k_min", "  smallest", "mm"), ("d_wk", "  anvils touch on diameter", "mm"), ("span_ok", "  span usable", ""),
-    ("face_width_min_mm", "  least face width (helical)", "mm"), ("ball_mm", "ball diameter D_M", "mm"),
+    ("face_width_min_mm", "  least face width (helical)", "mm"), ("ball_mm", "ball diameter D_M (stocked)", "mm"),
+    ("ball_exact_mm", "  exact ball (touches on d_y)", "mm"),
     ("d_m", "  ball centre circle d_M", "mm"), ("m_d", "dimension over balls M_d (ring: between)", "mm"),
     ("m_d_max", "  largest", "mm"), ("m_d_min", "  smallest", "mm"), ("d_ball", "  ball touches on diameter", "mm"),
     ("ball_ok", "  ball usable", ""), ("pin_mm", "pin diameter", "mm"), ("m_d_pin", "dimension over pins", "mm"),
@@ -47,7 +48,8 @@ def add_parser(sub):
     p.add_argument("--ball", type=float, default=None, metavar="MM", help="ball diameter (default: touches mid-flank)")
     p.add_argument("--pin", type=float, default=None, metavar="MM", help="pin diameter (default: the ball's)")
     p.add_argument("--allowance", type=float, nargs="+", default=[0.0], metavar="MM",
-                   help="normal tooth-thickness allowance A_sne [A_sni], mm (negative thins; one value: both)")
+                   help="normal tooth-thickness allowance A_sne [A_sni], mm: <= 0, negative thins the tooth "
+                        "(A_sni <= A_sne <= 0; one value: both)")
     p.add_argument("--accuracy-class", type=float, default=None, metavar="A",
                    help="ISO 1328-1:2013 flank tolerance class 1..11: print its tolerances")
     add_rack_args(p)
@@ -55,16 +57,26 @@ def add_parser(sub):
     return p
 
 
-def _allowance(values):
+def allowance_from(values, option: str = "--allowance"):
+    """A_sne, or (A_sne, A_sni), of a command line's allowance option, refused by the option's name when it
+    would thicken the tooth (A_sne > 0) or has its lower value above its upper one."""
+    from ..gears.measurement import THICKNESS_SIGN, refuse_thickening
+
+    if values is None:
+        return 0.0
     if len(values) > 2:
-        raise GearDesignError(f"--allowance takes A_sne and optionally A_sni, got {len(values)} values")
+        raise GearDesignError(f"{option} takes A_sne and optionally A_sni, got {len(values)} values")
+    if len(values) == 2 and values[1] > values[0]:
+        raise GearDesignError(f"{option}: the lower allowance A_sni = {values[1]:g} mm exceeds the upper A_sne = "
+                              f"{values[0]:g} mm; {THICKNESS_SIGN}")
+    refuse_thickening(option, values[0])
     return values[0] if len(values) == 1 else (values[0], values[1])
 
 
 def run(args) -> int:
     t = tooth_measurements(args.module, args.z, args.x, beta_deg=args.beta, internal=args.internal,
                            rack=rack_from_args(args), k=args.k, ball_mm=args.ball, pin_mm=args.pin,
-                           thickness_allowance_mm=_allowance(args.allowance), face_width_mm=args.face_width_mm,
+                           thickness_allowance_mm=allowance_from(args.allowance), face_width_mm=args.face_width_mm,
                            tip_diameter_mm=args.tip_diameter)
     tol = None
     if args.accuracy_class is not None:

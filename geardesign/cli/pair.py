@@ -70,28 +70,71 @@ def add_parser(sub):
                                    "it), 2 on bad input.")
     add_pair_args(p)
     add_check_args(p)
-    p.add_argument("--measurements", action="store_true",
+    g = p.add_argument_group("drawing sizes (ISO 21771 allowances, ISO 1340 data block)")
+    g.add_argument("--measurements", action="store_true",
                    help="also the measuring sizes of both gears (span, over balls, chordal; see geardesign measure)")
+    for i in (1, 2):
+        g.add_argument(f"--allowance{i}", type=float, nargs="+", default=None, metavar="MM",
+                       help=f"tooth-thickness allowance A_sne [A_sni] of gear {i}, mm: <= 0, negative thins the tooth "
+                            f"(A_sni <= A_sne <= 0; one value: both); for --measurements, --backlash, --data-block")
+    g.add_argument("--center-distance-allowance", type=float, nargs=2, default=None, metavar=("A_AI", "A_AE"),
+                   help="lower and upper centre-distance allowances, mm (for --backlash, --data-block)")
+    g.add_argument("--backlash", action="store_true", help="also the least and most backlash the allowances give")
+    g.add_argument("--data-block", type=float, default=None, nargs="?", const=0, metavar="CLASS",
+                   help="also both gears' drawing data blocks (ISO 1340), with the ISO 1328-1 class CLASS if given")
     add_json_flag(p)
     add_output_file(p, "--report", "HTML", "a one-page calculation report (inputs, geometry, checks, contour, mesh)")
     return p
 
 
-def _measurements(pair, as_json: bool):
+def _allowances(args) -> tuple:
+    """(A_sn of gear 1, of gear 2, centre-distance (A_ai, A_ae) or 0) from the command line, refused by option
+    before any output (with the --data-block class)."""
+    from .measure import allowance_from
+
+    a = [allowance_from(getattr(args, f"allowance{i}"), f"--allowance{i}") for i in (1, 2)]
+    if args.data_block and not 1 <= args.data_block <= 11:    # checked before anything is printed
+        raise GearDesignError(f"--data-block CLASS must be an ISO 1328-1:2013 flank tolerance class 1..11 (or none), "
+                              f"got {args.data_block:g}")
+    ca = args.center_distance_allowance
+    if ca is not None and ca[0] > ca[1]:
+        raise GearDesignError(f"--center-distance-allowance: the lower A_ai = {ca[0]:g} mm exceeds the upper "
+                              f"A_ae = {ca[1]:g} mm")
+    return a[0], a[1], (tuple(ca) if ca is not None else 0.0)
+
+
+def _measurements(pair, as_json: bool, allowances=(0.0, 0.0)):
     """Both gears' measuring sizes: records for JSON, else a printed table (``--measurements``)."""
     import pandas as pd
 
-    gears = pair.measurements()
+    gears = tuple(pair.measurements(gear=i, thickness_allowance_mm=a) for i, a in ((1, allowances[0]),
+                                                                                  (2, allowances[1])))
     if as_json:
         return [g.to_dict() for g in gears]
-    frame = pd.DataFrame([(label, *(getattr(g, name) for g in gears), unit) for name, label, unit in ROWS],
+    # the least face width is a helical span's; a spur gear has none
+    rows = [r for r in ROWS if not (r[0] == "face_width_min_mm" and not pair.beta_deg)]
+    frame = pd.DataFrame([(label, *(getattr(g, name) for g in gears), unit) for name, label, unit in rows],
                          columns=["quantity", "gear 1", "gear 2", "unit"])
-    print_frame(frame, "\nMeasuring sizes (no allowances; geardesign measure gives them with allowances)",
+    given = any(a != 0.0 for a in allowances)
+    print_frame(frame, "\nMeasuring sizes" + (f" (A_sne / A_sni: gear 1 {gears[0].a_sne:g} / {gears[0].a_sni:g}, gear 2 "
+                                                f"{gears[1].a_sne:g} / {gears[1].a_sni:g} mm)" if given else
+                                                " (no allowances: --allowance1, --allowance2 give them)"),
                 float_format="{:.5f}")
     for i, g in enumerate(gears, 1):
         for note in g.notes:
             print(f"note (gear {i}): {note}")
     return None
+
+
+def _data_blocks(pair, args, allowances) -> list:
+    """Both gears' data blocks (``--data-block [CLASS]``; 0: no class stated)."""
+    from ..gears.data_block import data_block
+
+    cls = args.data_block or None
+    hand = ("right", "left") if pair.beta_deg else (None, None)
+    return [data_block(pair, i, cls, helix_hand=hand[i - 1], thickness_allowance_mm=allowances[i - 1],
+                       center_distance_allowance_mm=allowances[2] if isinstance(allowances[2], tuple) else None)
+            for i in (1, 2)]
 
 
 def describe(pair, shorten: bool) -> str:
@@ -109,6 +152,7 @@ def run(args) -> int:
         check_output_path(args.report, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--report")
     pair, housing = pair_from_args(args)
     checks = checks_from_args(args)
+    allowances = _allowances(args)
     if args.report:
         pair_report(pair, args.report, overwrite=args.overwrite, eps_alpha_min=args.eps_alpha_min,
                     sa_min=args.sa_min, housing_a_w=housing, eps_gamma_min=args.eps_gamma_min,
@@ -128,7 +172,10 @@ def run(args) -> int:
                       "face_width_mm": pair.face_width_mm},
             "geometry": geo.to_dict(),
             "checks": frame_records(table[["check", "value", "limit", "margin", "ok"]]),
-            **({"measurements": _measurements(pair, True)} if args.measurements else {}),
+            **({"measurements": _measurements(pair, True, allowances[:2])} if args.measurements else {}),
+            **({"backlash": pair.backlash(*allowances).to_dict()} if args.backlash else {}),
+            **({"data_block": [frame_records(t) for t in _data_blocks(pair, args, allowances)]}
+               if args.data_block is not None else {}),
             **({"strength": strength.to_dict()} if strength is not None else {}),
         })
         return 1 if failed else 0
@@ -137,7 +184,12 @@ def run(args) -> int:
     print_frame(table[["check", "value", "limit", "margin", "ok", "label"]], "\nChecks (margin >= 0 holds)")
     print_frame(geo.to_table(helical=bool(pair.beta_deg)), "\nGeometry", float_format="{:.8g}")
     if args.measurements:
-        _measurements(pair, False)
+        _measurements(pair, False, allowances[:2])
+    if args.backlash:
+        print(f"\n{pair.backlash(*allowances)!r}")
+    if args.data_block is not None:
+        for i, t in enumerate(_data_blocks(pair, args, allowances), 1):
+            print_frame(t, f"\nData block of gear {i} (ISO 1340)")
     if strength is not None:
         print(f"\n{strength!r}")
         print_frame(strength.factors, "\nISO 6336 factors (gear 0: the pair)", float_format="{:.6g}")

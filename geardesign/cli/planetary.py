@@ -35,7 +35,9 @@ def add_parser(sub):
     p.add_argument("--beta", type=float, default=0.0, metavar="DEG", help="helix angle, degrees (0: spur)")
     p.add_argument("--neighbour-clearance", type=float, default=DEFAULT_NEIGHBOUR_CLEARANCE, metavar="K",
                    help=f"least gap between adjacent planet tips, in modules ({DEFAULT_NEIGHBOUR_CLEARANCE:g})")
-    p.add_argument("--ratio", type=float, default=None, help="find tooth counts for this ratio n_in/n_out")
+    p.add_argument("--ratio", type=float, default=None,
+                   help="find tooth counts for this ratio n_in/n_out, signed (< -1 for carrier_fixed: the ring "
+                        "turns backwards)")
     p.add_argument("--ratio-tol", type=float, default=0.02, help="relative ratio tolerance (0.02)")
     p.add_argument("--z-sun-range", default="12:40", metavar="LO:HI", help="sun teeth searched (12:40)")
     p.add_argument("--nonstandard-max", type=int, default=2,

@@ -1,7 +1,7 @@
 """``geardesign run scene.toml --out DIR``: run a scene file and write its report.
 
 Writes report.md (tables and pictures), the tables as CSV and the plots as PNG into DIR (its parent
-folders are created) and prints a summary (``--json``: the summary and the file names as JSON). A
+folders are created, and removed again if the run fails) and prints a summary (``--json``: the summary and the file names as JSON). A
 wrong scene stops with one line naming the file, the key and what was expected (exit 2), and writes
 nothing. Exit status 1 when a design of the scene fails (:attr:`SceneReport.failures`: an empty shift
 region, given shifts that fail a check, nothing feasible, a failing drive); the report is written
@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..files import parents_made
 from ..scene import run_scene
 from .options import add_cluster_args, cluster_from_args
 from .output import Progress, add_json_flag, print_json
@@ -35,10 +36,10 @@ def add_parser(subparsers):
 
 
 def run(args) -> int:
-    Path(args.out).parent.mkdir(parents=True, exist_ok=True)
     bar = Progress(1, "scene")
     try:
-        with cluster_from_args(args) as client:
+        # the parents are made for the report and removed again if the run fails (bad scene, Ctrl-C)
+        with parents_made(args.out, "--out"), cluster_from_args(args) as client:
             rep = run_scene(args.scene, args.out, overwrite=args.overwrite, client=client,
                             progress=lambda done, total, section: bar.to(done, total, f"scene [{section}]"))
     finally:

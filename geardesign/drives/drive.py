@@ -161,7 +161,9 @@ class Drive:
         """The power flow, every stage's checks and margins, every key, the smallest margin.
 
         Every stage needs its tooth counts; free gear shifts are solved (``objective`` only picks
-        the shift rule, as in :meth:`optimize`), a free chain row is chosen by chain.design.
+        the shift rule, as in :meth:`optimize`), a free chain row is chosen by chain.design. To re-analyse
+        an optimum, take ``best.drive`` (its shifts fixed); tooth counts alone are solved again for
+        ``objective``, which must then be the optimum's to give the same shifts.
         """
         kinds = [kind_of(s) for s in self.stages]
         ratios = np.array([kind.fixed_ratio(s) for kind, s in zip(kinds, self.stages)])

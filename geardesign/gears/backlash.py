@@ -35,6 +35,7 @@ from ..results import Result
 from ..validate import one_number, require_choice, require_range
 from .geometry import min_center_distance, require_module, x_sum_from_center_distance
 from .involute import inv_from_tan
+from .measurement import refuse_thickening
 from .measurement_formulas import generating_shift
 from .mesh import Mesh, section_constants
 from .rack import STANDARD_RACK, BasicRack
@@ -159,6 +160,7 @@ def pair_backlash(pair, thickness_allowance1_mm=0.0, thickness_allowance2_mm=0.0
     for name, e, i in (("thickness_allowance1_mm", sne1, sni1), ("thickness_allowance2_mm", sne2, sni2)):
         if i > e:
             raise GearDesignError(f"{name}: the lower allowance A_sni = {i:g} mm exceeds the upper A_sne = {e:g} mm")
+        refuse_thickening(name, e)
     if isinstance(center_distance_allowance_mm, (tuple, list)):
         ai, ae = _pair_of("center_distance_allowance_mm", center_distance_allowance_mm)
     else:

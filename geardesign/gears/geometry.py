@@ -25,7 +25,7 @@ from ..validate import broadcast_inputs, ndim, require_bool
 from .center_distance import (center_distance_from_x_sum, inv_operating_angle, min_center_distance,  # noqa: F401
                               undercut_x_min, x_sum_from_center_distance)
 from .distinct import per_distinct, exact_sum_nodes  # noqa: F401
-from .inputs import (_VALIDATION_FIELDS, DESIGNS_MAX, M_RANGE_MM, X_ABS_MAX, require_module,  # noqa: F401
+from .inputs import (_VALIDATION_FIELDS, A_W_RANGE_MM, DESIGNS_MAX, M_RANGE_MM, X_ABS_MAX, require_module,  # noqa: F401
                      validate_geometry, validate_inputs)
 from .fields import CONTACT_FIELDS, GEOMETRY_FIELDS, INTERNAL_FIELDS, REPORT_FIELDS, TIP_FIELDS  # noqa: F401
 from .involute import _tan_from_inv_float, t_minus_atan, t_minus_atan_float, tan_from_inv
@@ -44,7 +44,7 @@ __all__ = [
     "GEOMETRY_FIELDS",
     "Z_MIN",
     "Z_MAX",
-    "M_RANGE_MM",
+    "M_RANGE_MM", "A_W_RANGE_MM",
     "X_ABS_MAX",
 ]
 

@@ -8,10 +8,13 @@ from ..errors import GearDesignError
 from ..validate import require_int, require_positive, require_range
 from .mesh import Z_MAX, Z_MIN, Mesh, section_tuple
 
-__all__ = ["M_RANGE_MM", "X_ABS_MAX", "DESIGNS_MAX", "validate_inputs", "plain_inputs_ok", "require_module",
+__all__ = ["M_RANGE_MM", "A_W_RANGE_MM", "X_ABS_MAX", "DESIGNS_MAX", "validate_inputs", "plain_inputs_ok", "require_module",
            "validate_geometry"]
 
 M_RANGE_MM = (1e-4, 1e4)   # module: watch gears to mill gears with room to spare; outside, results overflow
+# a centre distance: open below; above, past the largest pair the module and tooth-count ranges allow
+# (1e4 mm · 2·1e5 teeth / 2 / cos 60° = 2e9 mm), so a value beyond it is a slip, refused before any formula overflows
+A_W_RANGE_MM = (0.0, 1e10)
 X_ABS_MAX = 10.0           # |x|: beyond a few units the tip or root crosses the base circle anyway
 DESIGNS_MAX = 20_000_000   # designs in one vectorised call: ~1.5 GB of fields per million, so ~30 GB
 

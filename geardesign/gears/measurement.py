@@ -6,8 +6,9 @@ normal and chordal tooth thickness, each with the sizes its tooth-thickness allo
 :mod:`geardesign.gears.measurement_formulas`. How k and the ball are chosen: both aim at the circle
 d_y = d + 2 x m_n, where the generating rack's datum line rolls (about mid-height of the working flank); k is
 the nearest whole number whose anvils touch inside the involute (between the form circle d_Ff and the tip
-d_a; for a ring between its bore d_a and its form circle near the root), and the ball is the one that touches
-on d_y exactly. A span whose contact falls outside the involute, a ball that does not, or a helical gear
+d_a; for a ring between its bore d_a and its form circle near the root), and the ball is the stocked size (ISO
+3290 metric and inch balls, ``catalogs/measuring_balls_iso3290.csv``) nearest the one that touches on d_y exactly
+(``ball_exact_mm``; ``ball_mm="exact"`` takes that one) that still touches inside the involute. A span whose contact falls outside the involute, a ball that does not, or a helical gear
 narrower than W_k sin β_b plus a margin, is flagged (``span_ok``, ``ball_ok``), not hidden.
 
 Internal gears (the project's GOST 19274-73 sign, see :mod:`~geardesign.gears.measurement_formulas`): M_d is
@@ -49,7 +50,8 @@ class ToothMeasurements(Result):
 
     ``k`` teeth spanned (spaces for a ring), ``w_k`` the span and ``w_k_max``/``w_k_min`` the sizes the
     allowances give, ``d_wk`` the diameter the anvils touch on, ``span_ok`` (inside the involute, and for a
-    helical gear b >= ``face_width_min_mm``); ``ball_mm`` the ball (or pin) diameter, ``d_m`` the circle through
+    helical gear b >= ``face_width_min_mm``); ``ball_mm`` the ball (or pin) diameter (by default the stocked size
+    nearest ``ball_exact_mm``, the one that touches on d_y exactly, that can measure the gear), ``d_m`` the circle through
     the ball centres, ``m_d`` the dimension over (ring: between) balls, ``m_d_max``/``m_d_min``, ``d_ball`` where
     the ball touches, ``ball_ok``; ``pin_mm``, ``m_d_pin`` (``m_d_pin_max``/``_min``) over pins, exact for a spur
     gear, approximate on a helical one (``pin_exact``); ``s_n`` the normal tooth thickness, ``s_chord`` the
@@ -71,6 +73,7 @@ class ToothMeasurements(Result):
     span_ok: object
     face_width_min_mm: object
     ball_mm: object
+    ball_exact_mm: object
     d_m: object
     m_d: object
     m_d_max: object
@@ -138,13 +141,27 @@ class ToothMeasurements(Result):
             f"ToothMeasurements({kind}m_n {self.m_n:g} mm, z {int(self.z)}, x {self.x:.6g}",
             f"  span      k = {int(self.k)}  W_k = {self.w_k:.4f} mm  ({self.w_k_min:.4f} .. {self.w_k_max:.4f}),"
             f" touches on d {self.d_wk:.4f}  ok {bool(self.span_ok)}",
-            f"  balls     D_M = {self.ball_mm:.4f} mm  M_d {over} = {self.m_d:.4f} mm  ({self.m_d_min:.4f} .. "
+            f"  balls     D_M = {self.ball_mm:.4f} mm (exact {self.ball_exact_mm:.4f})  M_d {over} = {self.m_d:.4f} mm  ({self.m_d_min:.4f} .. "
             f"{self.m_d_max:.4f}), touches on d {self.d_ball:.4f}  ok {bool(self.ball_ok)}",
             f"  pins      D = {self.pin_mm:.4f} mm  M_d = {self.m_d_pin:.4f} mm"
             + ("" if self.pin_exact else " (approximate: helical)"),
             f"  thickness s_n = {self.s_n:.4f} mm  chordal {self.s_chord:.4f} mm at height {self.h_chord:.4f} mm",
             f"  allowances A_sne {self.a_sne:.4g} / A_sni {self.a_sni:.4g} mm: x_E {self.x_e_sne:.5f} / {self.x_e_sni:.5f})",
         ])
+
+
+# the sign convention of a tooth-thickness allowance, for the messages that refuse the other sign
+THICKNESS_SIGN = ("tooth-thickness allowances thin the tooth: A_sni <= A_sne <= 0 (ISO 21771:2007 §5.4, DIN 3967: "
+                  "negative = thinner than nominal; 0 = the nominal tooth)")
+
+
+def refuse_thickening(name: str, upper) -> None:
+    """Refuse an upper allowance A_sne > 0, which would make the tooth thicker than nominal (the mesh would jam
+    at the nominal centre distance): by ``name`` (an argument or a command-line option) with the convention."""
+    bad = np.asarray(upper) > 0
+    if bad.any():
+        raise GearDesignError(f"{name}: A_sne = {float(np.max(upper)):g} mm would make the tooth thicker than nominal; "
+                              f"{THICKNESS_SIGN}")
 
 
 def _allowances(thickness_allowance_mm):
@@ -162,6 +179,7 @@ def _allowances(thickness_allowance_mm):
     if bad.any():
         raise GearDesignError(f"thickness_allowance_mm: the lower allowance A_sni must not exceed the upper A_sne, got "
                               f"A_sne = {float(np.max(upper)):g} mm, A_sni = {float(np.min(lower)):g} mm")
+    refuse_thickening("thickness_allowance_mm", upper)
     return upper, lower
 
 
@@ -177,10 +195,15 @@ def _validated(m, z, x, beta_deg, internal, rack, k, ball_mm, pin_mm, face_width
     if not isinstance(rack, BasicRack):
         raise GearDesignError(f"rack must be a geardesign.BasicRack, got {type(rack).__name__}")
     k = None if k is None else require_int("k (teeth spanned)", k, 1, Z_MAX)
-    ball = None if ball_mm is None else require_range("ball_mm", ball_mm, 0.0, 1e9, lo_open=True, unit="mm")
+    if isinstance(ball_mm, str):
+        if ball_mm != "exact":
+            raise GearDesignError(f"ball_mm must be a diameter in mm, 'exact' or None (a stocked size), got {ball_mm!r}")
+        ball = ball_mm
+    else:
+        ball = None if ball_mm is None else require_range("ball_mm", ball_mm, 0.0, 1e9, lo_open=True, unit="mm")
     pin = None if pin_mm is None else require_range("pin_mm", pin_mm, 0.0, 1e9, lo_open=True, unit="mm")
     for name, v in (("ball_mm", ball), ("pin_mm", pin)):
-        if v is not None and np.any(v > BALL_MAX_MODULES * m):
+        if v is not None and not isinstance(v, str) and np.any(v > BALL_MAX_MODULES * m):
             raise GearDesignError(f"{name} must be at most {BALL_MAX_MODULES:g} modules ({float(np.min(BALL_MAX_MODULES * m)):g} mm "
                                   f"here), got {float(np.max(v)):g} mm")
     b = None if face_width_mm is None else require_range("face_width_mm", face_width_mm, *FACE_WIDTH_RANGE_MM,
@@ -206,7 +229,8 @@ def tooth_measurements(m, z, x=0.0, *, beta_deg=0.0, internal=False, rack: Basic
     """The measuring sizes of a gear (see the module docstring); m (normal module, mm), z, x broadcast.
 
     ``thickness_allowance_mm``: the normal tooth-thickness allowance A_sn (mm, negative thins the tooth), one
-    number or the pair (A_sne, A_sni) (upper, lower; ISO 21771:2007 §5.4, DIN 3967). ``k``, ``ball_mm``,
+    number or the pair (A_sne, A_sni) (upper, lower; ISO 21771:2007 §5.4, DIN 3967); A_sni <= A_sne <= 0 (a
+    positive one, a tooth thicker than nominal, is refused). ``k``, ``ball_mm``,
     ``pin_mm`` override the choices; ``tip_diameter_mm`` the tip (default d ± 2(h_a* ± x)m_n, no tip shortening;
     :meth:`GearPair.measurements` passes the pair's); ``face_width_mm`` b checks a helical span.
 
@@ -217,8 +241,10 @@ def tooth_measurements(m, z, x=0.0, *, beta_deg=0.0, internal=False, rack: Basic
     m, z, x, beta, internal, rack, k, ball, pin, b, d_a_in = _validated(
         m, z, x, beta_deg, internal, rack, k, ball_mm, pin_mm, face_width_mm, tip_diameter_mm)
     a_sne, a_sni = _allowances(thickness_allowance_mm)
-    _size_guard(m, z, x, k, ball, pin, a_sne, a_sni, d_a_in, b)
-    shape = np.broadcast_shapes(*(np.shape(v) for v in (m, z, x, k, ball, pin, a_sne, a_sni, d_a_in, b) if v is not None))
+    given_ball = None if isinstance(ball, str) else ball
+    _size_guard(m, z, x, k, given_ball, pin, a_sne, a_sni, d_a_in, b)
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (m, z, x, k, given_ball, pin, a_sne, a_sni, d_a_in, b)
+                                  if v is not None))
     m, z, x, a_sne, a_sni = broadcast_inputs(m=m, z=z, x=x, a_sne=a_sne, a_sni=a_sni, shape=np.zeros(shape))[:5]
     if np.any(np.abs(a_sne) > ALLOWANCE_MAX_MODULES * m) or np.any(np.abs(a_sni) > ALLOWANCE_MAX_MODULES * m):
         raise GearDesignError(f"thickness_allowance_mm must be within ±{ALLOWANCE_MAX_MODULES:g}·m_n, got "
@@ -286,25 +312,60 @@ def _span(g, k, b, span_face_margin_mm, notes: list) -> dict:
 def _balls(g, ball, pin, b, notes: list) -> dict:
     """The ball (default: touching on d_y), M_d and its sizes from the allowances, where it touches, whether it is
     usable; the pins."""
+    exact = np.broadcast_to(f.ball_for_contact(g.m, g.zf, g.x, g.d_y, g.d_b, g.an, g.at, g.cbb, g.internal),
+                            g.d.shape)
     if ball is None:
-        ball = f.ball_for_contact(g.m, g.zf, g.x, g.d_y, g.d_b, g.an, g.at, g.cbb, g.internal)
+        ball = _stocked_ball(g, exact, notes)
+    elif isinstance(ball, str):   # "exact"
+        ball = exact
     ball = np.broadcast_to(ball, g.d.shape)
     pin = ball if pin is None else np.broadcast_to(pin, g.d.shape)
-    inv_m = f.ball_center_inv(g.m, g.zf, g.x, ball, g.an, g.at, g.internal)
-    d_m = f.ball_center_diameter(g.d_b, inv_m)
-    d_ball = f.ball_contact_diameter(g.d_b, inv_m, ball, g.cbb, g.internal)
-    # the contact must lie on the involute (tan α_c > 0: past the base circle) between its ends, and an external
-    # gear's ball must stand out of the tips (a ring's inside its bore) to be measured
-    t_c = f.tan_from_inv(inv_m, validate=False) - g.sgn * ball * g.cbb / g.d_b
-    stands_out = (d_m - ball < g.d_a) if g.internal else (d_m + ball > g.d_a)
-    ball_ok = (t_c > 0) & (d_ball > g.lo) & (d_ball < g.hi) & stands_out
+    inv_m, d_m, d_ball, ball_ok = _ball_fit(g, ball)
     sizes = [f.dimension_over_balls(f.ball_center_diameter(g.d_b, f.ball_center_inv(
         g.m, g.zf, xe, ball, g.an, g.at, g.internal)), ball, g.z, g.internal) for xe in g.x_e]
     pins = _pins(g.m, g.z, g.zf, g.x, g.x_e, pin, g.d_b, g.an, g.at, g.beta, b, g.internal, notes)
-    return dict(ball_mm=ball, d_m=d_m, m_d=f.dimension_over_balls(d_m, ball, g.z, g.internal),
+    return dict(ball_mm=ball, ball_exact_mm=exact, d_m=d_m, m_d=f.dimension_over_balls(d_m, ball, g.z, g.internal),
                 m_d_max=_largest_smallest(sizes)[0], m_d_min=_largest_smallest(sizes)[1], d_ball=d_ball,
                 ball_ok=ball_ok, pin_mm=pin, m_d_pin=pins[0], m_d_pin_max=_largest_smallest(pins[1:])[0],
                 m_d_pin_min=_largest_smallest(pins[1:])[1])
+
+
+def _ball_fit(g, ball):
+    """(inv α of the ball centre, d_M, the diameter the ball touches on, whether it can measure the gear): the
+    contact must lie on the involute (tan α_c > 0: past the base circle) between its ends, and an external gear's
+    ball must stand out of the tips (a ring's inside its bore)."""
+    inv_m = f.ball_center_inv(g.m, g.zf, g.x, ball, g.an, g.at, g.internal)
+    d_m = f.ball_center_diameter(g.d_b, inv_m)
+    d_ball = f.ball_contact_diameter(g.d_b, inv_m, ball, g.cbb, g.internal)
+    t_c = f.tan_from_inv(inv_m, validate=False) - g.sgn * ball * g.cbb / g.d_b
+    stands_out = (d_m - ball < g.d_a) if g.internal else (d_m + ball > g.d_a)
+    return inv_m, d_m, d_ball, (t_c > 0) & (d_ball > g.lo) & (d_ball < g.hi) & stands_out
+
+
+def _stocked_ball(g, exact, notes: list):
+    """The stocked ball (:func:`~geardesign.catalogs.tables.measuring_ball_series`) nearest the exact one that
+    can measure the gear: the two sizes on either side of it, nearest first; where none of the four can (or the
+    exact size is outside the series), the exact size, with a note."""
+    from ..catalogs.tables import measuring_ball_series   # here: the catalog loads pandas
+
+    series = measuring_ball_series()
+    i = np.searchsorted(series, exact)
+    lower = [series[np.clip(i - j, 0, series.size - 1)] for j in (1, 2)]
+    upper = [series[np.clip(i + j, 0, series.size - 1)] for j in (0, 1)]
+    cands = []
+    for lo, hi in zip(lower, upper):   # the nearer of each pair first
+        near_lo = np.abs(exact - lo) <= np.abs(hi - exact)
+        cands += [np.where(near_lo, lo, hi), np.where(near_lo, hi, lo)]
+    chosen = np.full(exact.shape, np.nan)
+    for c in cands:
+        fits = np.isnan(chosen) & (np.abs(c - exact) <= 0.25 * exact) & _ball_fit(g, c)[3]
+        chosen = np.where(fits, c, chosen)
+    missing = np.isnan(chosen)
+    if missing.any():
+        notes.append("no stocked ball (ISO 3290 sizes, catalogs/measuring_balls_iso3290.csv) near the exact one can "
+                     "measure " + ("this gear" if exact.ndim == 0 else f"{int(missing.sum())} of the gears")
+                     + ": the exact size is given")
+    return np.where(missing, exact, chosen)
 
 
 def _thickness(g, a_sne, a_sni) -> dict:

@@ -1,16 +1,14 @@
 """One gear pair as an object: inputs, geometry, checks."""
 from __future__ import annotations
 
-import functools
-
 import math
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 
 import numpy as np
 
 from . import checks as _checks
 from ..errors import GearDesignError
-from ..validate import ndim, one_number, require_positive, require_range
+from ..validate import hint_unknown_arguments, ndim, one_number, require_positive, require_range
 from .geometry import (X_ABS_MAX, Geometry, center_distance_from_x_sum, mesh_geometry,
                        mesh_geometry_float, min_center_distance, validate_geometry, validate_inputs,
                        x_sum_from_center_distance)
@@ -263,21 +261,4 @@ _ARGUMENT_HINTS = {
     "b": "the face width is face_width_mm={value!r} (mm)",
     "face_width": "the face width is face_width_mm={value!r} (mm)",
 }
-_dataclass_init = GearPair.__init__
-
-
-@functools.wraps(_dataclass_init)
-def _init_with_hints(self, *args, **kwargs):
-    """The dataclass's __init__, with an unknown argument refused by name (and a hint where it belongs)."""
-    known = {f.name for f in fields(GearPair) if f.init}
-    for name in kwargs:
-        if name not in known:
-            hint = _ARGUMENT_HINTS.get(name, "").format(value=kwargs[name])
-            raise GearDesignError(f"GearPair has no argument {name!r}"
-                                  + (f": {hint}" if hint else "") + f"; its arguments are {', '.join(sorted(known))}")
-    if len(args) > len(known):
-        raise GearDesignError(f"GearPair takes at most {len(known)} arguments ({', '.join(known)}), got {len(args)}")
-    _dataclass_init(self, *args, **kwargs)
-
-
-GearPair.__init__ = _init_with_hints
+hint_unknown_arguments(GearPair, _ARGUMENT_HINTS)

@@ -35,7 +35,15 @@ def smallest_conflict(prob: Problem, bounds=DEFAULT_BOUNDS, n: int = 161) -> lis
     return []
 
 
+# what the point of a failed result is, in place of the method's accuracy text (it is no optimum of anything)
+INFEASIBLE_ACCURACY = ("no feasible point, so no optimum: x is the point of largest smallest margin found near the "
+                       "least infeasible grid node (SLSQP), not certified")
+
+
 def conflict_message(conflict) -> str:
+    if len(conflict) == 1:
+        return f"no feasible point: check {conflict[0]} conflicts with the window (it holds nowhere in it)"
     if conflict:
-        return f"no feasible point: checks {', '.join(conflict)} conflict"
+        return (f"no feasible point: checks {', '.join(conflict)} conflict (no shifts hold them all at once; each "
+                f"may hold alone)")
     return "no feasible point in the window: every check passes somewhere, but not all together"

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from .conflict import conflict_message, smallest_conflict
+from .conflict import INFEASIBLE_ACCURACY, conflict_message, smallest_conflict
 from .local import central_point
 from .nodes import best_feasible, grid_points
 from .problem import Problem
@@ -40,4 +40,5 @@ def solve(prob: Problem, bounds, tol: float, grid_n: int | None = None) -> Outco
         return Outcome(w[:-1], 1, True, f"no feasible node among {V.shape[0]} (spacing {h:.3g}): the region is "
                        "thinner than the grid; returned its most central point nearby", tol=tol)
     conflict = smallest_conflict(prob, bounds)
-    return Outcome(w[:-1], 1, False, conflict_message(conflict), conflict=conflict, tol=tol)
+    return Outcome(w[:-1], 1, False, conflict_message(conflict), conflict=conflict, tol=tol,
+                   accuracy=INFEASIBLE_ACCURACY)

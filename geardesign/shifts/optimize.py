@@ -192,6 +192,7 @@ def _result(prob: Problem, out: Outcome, method: str, tol: float, a_w, t0: float
         method=method, tol=tol, nit=out.nit, time_s=time.perf_counter() - t0, margins=mg, active=active,
         sensitivity=out.sensitivity, conflict=out.conflict, z1=prob.z1, z2=prob.z2, m=prob.m,
         x_sum_fixed=prob.x_sum, a_w=float(geo["a_w"]), eps_alpha=float(geo["eps_alpha"]),
-        sensitivity_sides=out.sides, accuracy=_edge_accuracy(prob, P, method, tol) or ACCURACY[method].format(tol=tol),
+        sensitivity_sides=out.sides, accuracy=out.accuracy or _edge_accuracy(prob, P, method, tol)
+        or ACCURACY[method].format(tol=tol),
         beta_deg=prob.mesh.beta_deg,
         internal=prob.mesh.internal)

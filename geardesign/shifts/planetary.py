@@ -10,10 +10,13 @@ region run on it unchanged.
 Objectives over both meshes: ``max_eps_alpha`` maximises the smaller ε_α, ``balanced_sliding``
 balances the largest root sliding of all four roots, ``min_specific_pressure`` the larger pitch
 point coefficient, ``max_margin`` the distance to every check of both meshes; ``max_x_sum``
-maximises x_sun + x_planet (x_r − x_p grows with it: the largest common a_w).
+maximises x_sun + x_planet (x_r − x_p grows with it: the largest common a_w); with a load,
+``balanced_root_strength`` and ``max_min_safety`` read the strength checks of both meshes, each
+mesh with its own load case (the smallest S/S_min of the four roots, or of every flank and root).
 """
 from __future__ import annotations
 
+import copy
 import math
 import time
 from dataclasses import dataclass, field
@@ -21,7 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import GearDesignError
-from ..gears.geometry import min_center_distance, require_module
+from ..gears.geometry import A_W_RANGE_MM, min_center_distance, require_module
 from ..gears.planetary import (ARRANGEMENTS, MESH_NAMES, Assembly, MeshCheck, PlanetaryMeshes, planetary_ratio,
                                set_checks, set_geometry)
 from ..inline import html_view
@@ -34,6 +37,7 @@ from .optimize import DEFAULT_TOL, METHODS, solve_problem
 from .problem import _FLOAT_FAULTS, DEFAULT_BOUNDS, Problem, _holds_meshing, validate_bounds, with_meshing
 from .looks import margin_bars
 from .region import REGION_N_MAX, Region, region_of
+from .result import conflict_text
 from .methods import ACCURACY
 
 __all__ = ["optimize_planetary_shifts", "planetary_region", "PlanetaryShiftResult", "PlanetaryProblem"]
@@ -46,21 +50,32 @@ class _SetObjective(Objective):
 
     def __init__(self, inner: Objective):
         self.inner = inner
-        for name in ("name", "sense", "kind", "description", "x_sum_only", "needs_report_fields"):
+        for name in ("name", "sense", "kind", "description", "x_sum_only", "needs_report_fields", "needs_load"):
             setattr(self, name, getattr(inner, name))
         self.meshes = MESH_NAMES[:1] if inner.name == "max_x_sum" else MESH_NAMES
+        self.of_mesh = {tag: inner for tag in self.meshes}
         if isinstance(inner, CustomObjective) or type(inner).piece_gradients is Objective.piece_gradients:
             self.piece_gradients = lambda geo: None   # central differences in the set's shifts
+
+    def bound(self, checks):
+        """An objective that reads a load case (the strength objectives) bound to each mesh's own strength
+        checks: each mesh carries its own load (the torque shared over the planets, relative speeds)."""
+        if not self.needs_load:
+            return self
+        out = copy.copy(self)
+        out.of_mesh = {tag: self.inner.bound([c.inner for c in checks if isinstance(c, MeshCheck) and c.mesh == tag])
+                       for tag in self.meshes}
+        return out
 
     def pieces(self, geo):
         if isinstance(self.inner, CustomObjective):
             return self.inner.pieces(geo)
-        return tuple(p for tag in self.meshes for p in self.inner.pieces(geo[tag]))
+        return tuple(p for tag in self.meshes for p in self.of_mesh[tag].pieces(geo[tag]))
 
     def piece_gradients(self, geo):
         out = []
         for tag in self.meshes:
-            for g1, g2 in self.inner.piece_gradients(geo[tag]):
+            for g1, g2 in self.of_mesh[tag].piece_gradients(geo[tag]):
                 out.append((g1, g2) if tag == "sun-planet" else (g2 * geo["_r"], g1 + g2 * (1.0 + geo["_r"])))
         return out
 
@@ -84,7 +99,7 @@ class PlanetaryProblem(Problem):
         self.sgn = 1
         objective = objective if isinstance(objective, _SetObjective) else _SetObjective(
             default_objective(objective, x_sum_fixed=False))
-        self.objective = objective
+        self.objective = objective.bound(self.checks)
         self.full = objective.needs_report_fields or any(c.needs_report_fields for c in self.checks)
         self.x_sum = None if x_sum is None else float(x_sum)
         self.names = [c.name for c in self.checks]
@@ -219,7 +234,7 @@ class PlanetaryShiftResult(Result):
             f"      method: {self.method}, tol {self.tol:g}, nit {self.nit}, {self.time_s * 1e3:.2f} ms",
         ]
         if self.conflict:
-            lines.insert(2, f"    conflict: {', '.join(self.conflict)}")
+            lines.insert(2, "    conflict: " + conflict_text(self.conflict, self.margins))
         return "\n".join(lines)
 
 
@@ -274,7 +289,7 @@ def optimize_planetary_shifts(z_sun, z_planet, z_ring, n_planets, m, a_w=None, o
     method = require_choice("method", method, METHODS)
     require_choice("arrangement", arrangement, tuple(ARRANGEMENTS))
     if a_w is not None:
-        a_w = one_number("a_w (center distance)", require_range("a_w (center distance)", a_w, 0, 1e7,
+        a_w = one_number("a_w (center distance)", require_range("a_w (center distance)", a_w, *A_W_RANGE_MM,
                                                                 lo_open=True, unit="mm"))
     tol = DEFAULT_TOL[method] if tol is None else one_number("tol", require_range("tol", tol, 1e-14, 1.0))
     bounds = validate_bounds(bounds)
@@ -319,7 +334,7 @@ def _result(prob: PlanetaryProblem, out, method, tol, a_w, arrangement, t0) -> P
         ratio=planetary_ratio(ms.z_sun, ms.z_ring, arrangement), arrangement=arrangement, z_sun=ms.z_sun,
         z_planet=ms.z_planet, z_ring=ms.z_ring, n_planets=ms.n_planets, m=prob.m, beta_deg=ms.beta_deg,
         margins=margins, active=active, sensitivity=out.sensitivity, sensitivity_sides=out.sides,
-        conflict=conflict, a_w_fixed=a_w, accuracy=ACCURACY[method].format(tol=tol))
+        conflict=conflict, a_w_fixed=a_w, accuracy=out.accuracy or ACCURACY[method].format(tol=tol))
 
 
 def planetary_region(z_sun, z_planet, z_ring, n_planets, m, checks=None, method: str = "exact",

@@ -24,12 +24,12 @@ import pandas as pd
 
 from .. import parallel
 from ..errors import GearDesignError
-from ..gears.planetary import ARRANGEMENTS, N_PLANETS_RANGE, planetary_ratio
+from ..gears.planetary import ARRANGEMENTS, N_PLANETS_RANGE, PlanetaryMeshes, planetary_ratio
 from ..results import RankedTable
 from ..validate import one_number, require_choice, require_count, require_positive, require_range
 from .objectives import resolve_objective
 from .optimize import METHODS
-from .planetary import optimize_planetary_shifts
+from .planetary import PlanetaryProblem, optimize_planetary_shifts
 
 __all__ = ["select_planetary_teeth", "PlanetaryTeethSelection", "PLANETARY_SOLVES_MAX", "NONSTANDARD_MAX_RANGE"]
 
@@ -79,8 +79,8 @@ def _candidates(ratio, ratio_tol, n_planets, z_sun_range, nonstandard_max, arran
     # z_r interval per z_sun from the ratio's inverse (monotonic in z_r for each arrangement)
     if arrangement == "ring_fixed":
         r_lo, r_hi = (lo - 1) * zs, (hi - 1) * zs
-    elif arrangement == "carrier_fixed":   # |ratio| = z_r/z_s
-        r_lo, r_hi = abs(ratio) * (1 - ratio_tol) * zs, abs(ratio) * (1 + ratio_tol) * zs
+    elif arrangement == "carrier_fixed":   # ratio = -z_r/z_s
+        r_lo, r_hi = -ratio * (1 - ratio_tol) * zs, -ratio * (1 + ratio_tol) * zs
     else:   # sun_fixed: 1 + z_s/z_r
         with np.errstate(divide="ignore"):
             r_lo, r_hi = zs / max(hi - 1, 1e-300), zs / max(lo - 1, 1e-300)
@@ -100,9 +100,11 @@ def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_r
                            nonstandard_max: int = 2, arrangement: str = "ring_fixed", objective=DEFAULT_OBJECTIVE,
                            checks=None, method: str = "exact", rack=None, beta_deg: float = 0.0,
                            cutter=None, *, client=None, workers=None, progress=None) -> PlanetaryTeethSelection:
-    """Every (z_sun, z_planet, z_ring) for ``ratio`` (n_in/n_out of ``arrangement``; for
-    "carrier_fixed" the ring turns the other way and ±ratio are the same), standard and
-    non-standard, with the shifts that make each fit, ranked (see the module docstring).
+    """Every (z_sun, z_planet, z_ring) for ``ratio`` (the signed n_in/n_out of ``arrangement``, as
+    :func:`~geardesign.gears.planetary.planetary_ratio` and the results give it: "carrier_fixed" turns
+    the ring against the sun, so its ratios are < -1; a positive one is refused), standard and
+    non-standard, with the shifts that make each fit, ranked (see the module docstring). The table's
+    ``ratio`` is signed the same way, its ``ratio_error`` is (ratio - asked)/|asked|.
 
     ``client`` (a ``dask.distributed.Client``) or ``workers`` (a local cluster of that many
     processes, made for the call) solve the candidates in chunks of at least PLANETARY_CHUNK_MIN;
@@ -131,6 +133,7 @@ def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_r
                               f"nonstandard_max")
     kw = dict(objective=obj, checks=checks, method=method, rack=rack, beta_deg=beta_deg, arrangement=arrangement,
               cutter=cutter)
+    _options_ok(table, todo, n_planets, m, kw)
     if not parallel.requested(client, workers):
         for k, i in enumerate(todo):
             _solve_row(table, i, n_planets, m, kw)
@@ -151,9 +154,12 @@ def select_planetary_teeth(ratio, n_planets, m, ratio_tol: float = 0.02, z_sun_r
 def _validate(ratio, ratio_tol, n_planets, nonstandard_max, z_sun_range, arrangement):
     ratio = one_number("ratio", require_range("ratio", ratio, -1e4, 1e4))
     arrangement = require_choice("arrangement", arrangement, tuple(ARRANGEMENTS))
+    # the ratio is signed, n_in/n_out as planetary_ratio gives it: the carrier-fixed set turns its ring backwards
     if arrangement == "ring_fixed" and not ratio > 1 or arrangement == "sun_fixed" and not 1 < ratio < 2 \
-            or arrangement == "carrier_fixed" and abs(ratio) <= 1:
-        allowed = {"ring_fixed": "> 1", "sun_fixed": "in (1, 2)", "carrier_fixed": "|ratio| > 1"}[arrangement]
+            or arrangement == "carrier_fixed" and not ratio < -1:
+        allowed = {"ring_fixed": "> 1", "sun_fixed": "in (1, 2)",
+                   "carrier_fixed": f"< -1 (signed n_in/n_out: the ring turns against the sun; give {-abs(ratio):g})"
+                   if ratio > 1 else "< -1 (signed n_in/n_out: the ring turns against the sun)"}[arrangement]
         raise GearDesignError(f"ratio = {ratio:g} cannot be made by a simple planetary set with the {arrangement} "
                               f"arrangement: it must be {allowed}")
     ratio_tol = one_number("ratio_tol", require_range("ratio_tol", ratio_tol, 0.0, 0.5))
@@ -179,7 +185,7 @@ def _screen(cand, ratio, n_planets, arrangement) -> pd.DataFrame:
     z_s, z_p, z_r = (cand[:, k] for k in range(3))
     ratios = planetary_ratio(z_s, z_r, arrangement) if len(cand) else np.zeros(0)
     table = pd.DataFrame({"z_sun": z_s, "z_planet": z_p, "z_ring": z_r, "standard": z_r == z_s + 2 * z_p,
-                          "ratio": ratios, "ratio_error": (np.abs(ratios) - abs(ratio)) / abs(ratio),
+                          "ratio": ratios, "ratio_error": (ratios - ratio) / abs(ratio),
                           "feasible": False}, columns=_COLUMNS)
     for c in _COLUMNS[7:-1]:
         table[c] = np.nan
@@ -188,6 +194,19 @@ def _screen(cand, ratio, n_planets, arrangement) -> pd.DataFrame:
     table["reason"] = np.where(q != np.round(q), [f"set:assembly: (z_s + z_r)/N = {v:.4g} is not whole" for v in q],
                                np.where(fits, "", "set:neighbours: the planets overlap whatever the shifts"))
     return table
+
+
+def _options_ok(table, todo, n_planets, m, kw) -> None:
+    """Refuse a bad option (a NaN face width, a strength objective without a load, ...) by name, up front:
+    the per-candidate solves below turn their errors into reasons, which would hide it as "no feasible
+    set" (issue 36 §1.4). The options are validated on one candidate's problem, built as each solve
+    builds it."""
+    rows = todo if todo.size else table.index
+    if not rows.size:
+        return
+    z_s, z_p, z_r = (int(table.loc[rows[0], c]) for c in ("z_sun", "z_planet", "z_ring"))
+    meshes = PlanetaryMeshes(z_s, z_p, z_r, n_planets, kw["rack"], kw["beta_deg"])
+    PlanetaryProblem(meshes, m, kw["checks"], kw["objective"], cutter=kw["cutter"], arrangement=kw["arrangement"])
 
 
 def _solve_row(table, i, n_planets, m, kw) -> None:

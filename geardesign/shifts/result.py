@@ -114,8 +114,23 @@ class ShiftResult(Result):
             f"    accuracy: {self.accuracy}",
         ]
         if self.conflict:
-            lines.insert(2, f"    conflict: {', '.join(self.conflict)}")
+            lines.insert(2, "    conflict: " + conflict_text(self.conflict, self.margins))
         return "\n".join(lines)
+
+
+
+def conflict_text(conflict, margins: dict) -> str:
+    """The conflict line of a failed result: the checks that cannot all hold at once, and which of them fail at
+    the point shown (the others hold there: a conflict is about holding together, not each alone)."""
+    names = ", ".join(conflict)
+    if len(conflict) < 2:
+        return names
+    failing = [c for c in conflict if c in margins and margins[c] < 0]
+    holding = [c for c in conflict if c in margins and margins[c] >= 0]
+    if not holding:
+        return f"{names} (not all at once)"
+    return f"{names} (not all at once: here {', '.join(failing) or '-'} fail{'s' if len(failing) == 1 else ''}, " \
+           f"{', '.join(holding)} hold{'s' if len(holding) == 1 else ''})"
 
 
 @dataclass
@@ -131,3 +146,4 @@ class Outcome:
     sides: dict = field(default_factory=dict)
     conflict: list = field(default_factory=list)
     tol: float | None = None  # the tolerance achieved, when the method changes it (grid spacing)
+    accuracy: str | None = None   # what the point is accurate to, when it is not what the method's table says

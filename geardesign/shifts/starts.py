@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .conflict import conflict_message, smallest_conflict
+from .conflict import INFEASIBLE_ACCURACY, conflict_message, smallest_conflict
 from .local import central_point
 from .nodes import MAX_STARTS, START_N, grid_starts, grid_points
 from .problem import Problem
@@ -45,5 +45,6 @@ def feasible_starts(prob: Problem, bounds, start=None):
     w = central_point(prob, V, M, bounds)
     if w[-1] < 0:
         conflict = smallest_conflict(prob, bounds)
-        return [], Outcome(w[:-1], 1, False, conflict_message(conflict), conflict=conflict)
+        return [], Outcome(w[:-1], 1, False, conflict_message(conflict), conflict=conflict,
+                           accuracy=INFEASIBLE_ACCURACY)
     return [w[:-1]] + starts[:MAX_STARTS - 1], None

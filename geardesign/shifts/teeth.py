@@ -45,7 +45,7 @@ from ..results import RankedTable, plain
 from ..gears.checks import resolve_checks
 from ..errors import GearDesignError
 from ..validate import _show, one_number, require_callable, require_count, require_finite, require_positive, require_range
-from ..gears.geometry import min_center_distance, require_module, x_sum_from_center_distance
+from ..gears.geometry import A_W_RANGE_MM, min_center_distance, require_module, x_sum_from_center_distance
 from ..gears.mesh import Z_MAX, Z_MIN, Mesh
 from .objectives import default_objective
 from .problem import DEFAULT_BOUNDS
@@ -245,7 +245,8 @@ def select_teeth(ratio, ratio_tol=0.02, m=None, a_w=None, z1_range=(8, 40), z_su
     ratio_tol : the relative ratio error allowed, |z2/z1 − u|/u <= ratio_tol (0.02 = 2 %).
     m : module in mm, ``"series"`` (ISO 54 / GOST 9563 within ``m_range``, default 1..50 mm) or
         ``None`` (the series with ``a_w``, else m = 1); see "Modules and centre distances" above.
-    a_w : operating centre distance in mm, or ``"standard"`` (alias ``"series"``: GOST 2185-66, the nearest >= a).
+    a_w : operating centre distance in mm (in :data:`~geardesign.gears.inputs.A_W_RANGE_MM`), or ``"standard"``
+        (alias ``"series"``: GOST 2185-66, the nearest >= a).
     z1_range : (min, max) teeth of the pinion, inclusive.  z_sum_max : largest z1 + z2.
     objective : a name in :data:`geardesign.shifts.objectives.OBJECTIVES` or an Objective; default ``"max_x_sum"`` with the
         centre distance free, ``"balanced_sliding"`` with ``a_w`` given (the x-sum is then
@@ -315,7 +316,8 @@ def _housing(a_w):
         return "series"
     if a_w is None:
         return None
-    return one_number("a_w (center distance)", require_positive("a_w (center distance)", a_w, unit="mm"))
+    return one_number("a_w (center distance)", require_range("a_w (center distance)", a_w, *A_W_RANGE_MM,
+                                                             lo_open=True, unit="mm"))
 
 
 def _candidates(z1, z2, ratio: float, mods, series, kind) -> pd.DataFrame:

@@ -129,3 +129,37 @@ def test_ctrl_c_on_a_local_cluster_exits_130_and_leaves_nothing():
         time.sleep(0.2)
     assert alive() == []
     assert {n for n in os.listdir(tempfile.gettempdir()) if n.startswith("geardesign-dask-")} <= scratch
+
+
+def test_one_ctrl_c_while_the_workers_start_ends_the_command(tmp_path):
+    """Issue 36 §1.3: a Ctrl-C pressed once, while the local cluster starts (its child processes are
+    appearing), was thrown away: the search ran to its end and exited 0. It is held back until the start ends,
+    then acted on: exit 130, one line, no process and no scratch folder left (Dask's own included)."""
+    env = dict(os.environ, TMPDIR=str(tmp_path))
+    p = subprocess.Popen([sys.executable, "-m", "geardesign", "planetary", "-m", "2", "--planets", "3", "--ratio",
+                          "5.2", "--torque", "80", "--speed", "1500", "--material", "18CrNiMo7-6", "--face-width",
+                          "20", "--workers", "2"], cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         text=True, start_new_session=True,
+                         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    proc, seen, t0 = psutil.Process(p.pid), set(), time.monotonic()
+    try:
+        while p.poll() is None and len(seen) < 2 and time.monotonic() - t0 < 120:
+            seen |= {k.pid for k in proc.children(recursive=True)}
+            time.sleep(0.02)
+        assert len(seen) >= 2, "the cluster never started its processes"
+        os.killpg(p.pid, signal.SIGINT)
+        out, err = p.communicate(timeout=180)
+    finally:
+        if p.poll() is None:
+            os.killpg(p.pid, signal.SIGKILL)
+    assert p.returncode == 130, (out[-300:], err[-300:])
+    assert err.strip().splitlines() == ["geardesign planetary: interrupted, nothing written"]
+
+    def alive():
+        return [pid for pid in seen if psutil.pid_exists(pid) and psutil.Process(pid).status() != psutil.STATUS_ZOMBIE]
+
+    end = time.monotonic() + 15            # multiprocessing's resource tracker leaves once its pipe closes
+    while alive() and time.monotonic() < end:
+        time.sleep(0.2)
+    assert alive() == []
+    assert list(tmp_path.iterdir()) == []

@@ -65,3 +65,16 @@ def test_given_shifts_write_both_plot_and_drawing(tmp_path, capsys):
     assert rc in (0, 1)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["r.png", "s.png"]
     assert all((tmp_path / n).read_bytes()[:4] == b"\x89PNG" for n in ("r.png", "s.png"))
+
+
+def test_ratio_is_signed_on_the_command_line_too(capsys):
+    # issue 36 §1.8: the carrier-fixed set's ratio is -z_r/z_s, asked and printed with its sign
+    args = ["planetary", "-m", "2.5", "--planets", "2", "--ratio-tol", "0.05", "--z-sun-range", "12:12",
+            "--nonstandard-max", "0", "--arrangement", "carrier_fixed", "--json"]
+    assert main(args + ["--ratio", "12"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "must be < -1" in err[0] and "give -12" in err[0]
+    assert main(args + ["--ratio", "-12"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["ok"] and out["table"][0]["ratio"] == -144 / 12
+    assert all(row["ratio"] == -row["z_ring"] / row["z_sun"] for row in out["table"])

@@ -33,6 +33,30 @@ def test_cli_one_line_exit_2_and_nothing_written(tmp_path, capsys, text):
     assert sorted(x.name for x in tmp_path.iterdir()) == before     # no temporary directory left either
 
 
+def test_a_failed_run_leaves_no_parent_folders(tmp_path, capsys):
+    # issue 36 §1.2: a wrong scene exited 2 but left the parents of --out that it had created
+    p = write(tmp_path, GOOD_GEAR + "colour = 'red'\n")
+    before = sorted(x.name for x in tmp_path.iterdir())
+    assert main(["run", str(p), "--out", str(tmp_path / "a" / "b" / "out")]) == 2
+    assert len(capsys.readouterr().err.strip().splitlines()) == 1
+    assert sorted(x.name for x in tmp_path.iterdir()) == before
+    # a good run keeps them: they hold the report
+    assert main(["run", str(write(tmp_path, GOOD_GEAR)), "--out", str(tmp_path / "a" / "b" / "out")]) in (0, 1)
+    assert (tmp_path / "a" / "b" / "out" / "report.md").is_file()
+
+
+def test_out_below_a_file_is_one_line(tmp_path, capsys, monkeypatch):
+    # issue 36 §1.7: --out afile/sub, afile a file, was a FileExistsError traceback
+    monkeypatch.chdir(tmp_path)
+    Path("afile").write_text("mine", encoding="utf-8")
+    write(tmp_path, GOOD_GEAR)
+    for out in ("afile/sub", "afile/sub/deeper"):
+        assert main(["run", "case.toml", "--out", out]) == 2
+        err = capsys.readouterr().err.strip()
+        assert err.splitlines() == [f"geardesign run: error: --out '{out}': 'afile' is a file, not a folder"]
+    assert Path("afile").read_text(encoding="utf-8") == "mine"
+
+
 def _eps_alpha_by_hand(m, z1, z2, x1, x2, alpha_deg=20.0, ha=1.0):
     """ε_α of a shifted pair from the textbook formulas (GOST 16532-70), written out here."""
     al = math.radians(alpha_deg)

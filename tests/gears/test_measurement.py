@@ -133,7 +133,7 @@ def test_ball_equals_circle_tangent_to_generated_flanks(m, z, x, ball):
 @pytest.mark.parametrize("m, z, x, beta", [(3, 24, 0.4, 20.0), (1.5, 17, 0.3, 30.0)])
 def test_ball_on_helical_gear_is_exact(m, z, x, beta):
     """A ball touching the helicoid (the transverse generated flank swept along the helix) in 3-D."""
-    t = tooth_measurements(m, z, x, beta_deg=beta)
+    t = tooth_measurements(m, z, x, beta_deg=beta, ball_mm="exact")
     cut, bounds = _flank(m, z, x, beta, t.d_a)
     twist = math.tan(math.radians(beta)) / cut.r
     axis = (math.sin(math.pi / z), math.cos(math.pi / z))
@@ -243,7 +243,7 @@ def test_chordal_thickness_and_height_on_the_generated_tooth(m, z, x, internal):
 
 def test_default_ball_touches_the_aim_circle():
     for internal, z in ((False, 31), (True, 64)):
-        t = tooth_measurements(2.5, z, 0.25, internal=internal, beta_deg=15)
+        t = tooth_measurements(2.5, z, 0.25, internal=internal, beta_deg=15, ball_mm="exact")
         assert abs(t.d_ball - t.d_y) < 1e-9 * 2.5
 
 
@@ -353,3 +353,58 @@ def test_span_flags():
 def test_bad_input_is_one_clear_error(kwargs, word):
     with pytest.raises(GearDesignError, match=word):
         tooth_measurements(**kwargs)
+
+
+# --- issue 36 §1.5: the allowance's sign, the stocked ball ---------------------------------------------------------
+
+@pytest.mark.parametrize("call", [
+    lambda: tooth_measurements(3, 24, thickness_allowance_mm=(0.1, 0.05)),
+    lambda: tooth_measurements(3, 24, thickness_allowance_mm=0.02),
+    lambda: gd.GearPair(3, 20, 40).backlash((0.1, 0.05)),
+    lambda: gd.GearPair(3, 20, 40).measurements(gear=1, thickness_allowance_mm=0.05),
+])
+def test_an_allowance_that_thickens_the_tooth_is_refused_with_the_convention(call):
+    # was accepted silently: a tooth thicker than nominal jams the mesh at the nominal centre distance
+    with pytest.raises(GearDesignError, match=r"thicker than nominal; .*A_sni <= A_sne <= 0"):
+        call()
+
+
+def test_the_ball_series_is_its_source_s_inch_sizes():
+    # the catalogue prints the inch balls to 4 decimals: each is its fraction of an inch (25.4 mm) rounded so
+    from geardesign.catalogs import load_catalog
+
+    rows = load_catalog("measuring_balls")
+    for d, inch in zip(rows["ball_mm"], rows["inch"]):
+        if isinstance(inch, str) and inch:
+            num, _, den = inch.partition("/")
+            assert abs(d - 25.4 * int(num) / int(den or 1)) <= 0.6e-4, (d, inch)
+
+
+@pytest.mark.parametrize("m, z, x, beta, internal", [
+    (3, 24, 0.4, 20.0, False), (3, 20, 0.3, 0.0, False), (2.5, 64, 0.25, 15.0, True), (4, 17, 0.0, 0.0, False),
+    (5, 80, -0.2, 0.0, True),
+])
+def test_the_default_ball_is_the_nearest_stocked_size_that_measures(m, z, x, beta, internal):
+    from geardesign.catalogs.tables import measuring_ball_series
+
+    series = measuring_ball_series()
+    t = tooth_measurements(m, z, x, beta_deg=beta, internal=internal)
+    exact = tooth_measurements(m, z, x, beta_deg=beta, internal=internal, ball_mm="exact")
+    assert t.ball_exact_mm == exact.ball_mm and abs(exact.d_ball - exact.d_y) < 1e-9 * m
+    assert t.ball_mm in series and t.ball_ok and t.ball_mm != t.ball_exact_mm
+    # every stocked size nearer the exact one fails to measure the gear
+    nearer = series[np.abs(series - t.ball_exact_mm) < abs(t.ball_mm - t.ball_exact_mm)]
+    assert all(not tooth_measurements(m, z, x, beta_deg=beta, internal=internal, ball_mm=b).ball_ok for b in nearer)
+    # and the sizes are those of that ball given by hand
+    given_ball = tooth_measurements(m, z, x, beta_deg=beta, internal=internal, ball_mm=t.ball_mm)
+    assert (given_ball.m_d, given_ball.d_ball) == (t.m_d, t.d_ball)
+
+
+def test_a_gear_beyond_the_ball_series_keeps_the_exact_ball_and_says_so():
+    t = tooth_measurements(0.3, 24)            # D_M ~0.5 mm: below the smallest stocked ball (1.5 mm)
+    assert t.ball_mm == t.ball_exact_mm and any("no stocked ball" in n for n in t.notes)
+
+
+def test_data_block_is_public():
+    from geardesign.gears.data_block import data_block
+    assert gd.data_block is data_block and "data_block" in gd.__all__

@@ -40,3 +40,55 @@ def test_select_teeth_says_why_the_largest_pair_wins():
     assert "largest pair in the range wins" in sel.choice and "a_w=" in sel.choice
     fixed = gd.select_teeth(1.5, m=8, a_w=180)
     assert "largest pair" not in fixed.choice
+
+
+@pytest.mark.parametrize("m, z1, z2, torque, material", [
+    (3, 32, 106, 50, "C45"),                 # ends on SLSQP's point (no KKT point near it)
+    (4, 32, 106, 50, "C45"),                 # SLSQP, then the Newton polish
+    (2, 30, 64, 200, "18CrNiMo7-6"),         # the KKT system from a grid node
+])
+def test_the_accuracy_line_says_what_the_message_says(m, z1, z2, torque, material):
+    # issue 36 §1.11: "converged (SLSQP; active-set polish not applicable)" was printed with "accuracy: KKT point
+    # solved by Newton: x to ~1e-12": the accuracy of the method's table, not of the point returned
+    ck = dict(load=gd.Load(torque_nm=torque, n_rpm=1000), material=material, face_width_mm=20)
+    r = gd.optimize_shifts(z1, z2, m=m, objective="max_min_safety", checks=ck)
+    assert r.success
+    polished = "Newton" in r.message
+    assert ("Newton" in r.accuracy) == polished, (r.message, r.accuracy)
+    if not polished:
+        assert "not applicable" in r.message and r.accuracy.startswith("SLSQP's point")
+    assert f"repr: {r!r}".count("Newton") == 2 * polished
+
+
+def _holds_together(m, z1, z2, x_sum, checks, names, n=1801):
+    """The largest smallest margin of ``names`` along the line x1 + x2 = x_sum in the window [-1.5, 3], by
+    GearPair.checks (the route a user re-checks a design by), on n points."""
+    import numpy as np
+
+    best = -np.inf
+    for x1 in np.linspace(-1.5, 3.0, n):
+        if not -1.5 <= x_sum - x1 <= 3.0:
+            continue
+        try:
+            t = gd.GearPair(m, z1, z2, float(x1), float(x_sum - x1)).checks(**checks).set_index("check")["margin"]
+        except gd.GearDesignError:
+            continue
+        best = max(best, min(float(t[c]) for c in names))
+    return best
+
+
+def test_a_conflict_names_checks_that_cannot_hold_together_and_says_which_fail_at_the_point():
+    # issue 36 §1.11: "conflict: interference1, contact_strength" was listed beside interference1 at +0.1503: true
+    # (they cannot hold together) but read as a contradiction. The line says which fail at the point shown
+    ck = dict(load=gd.Load(torque_nm=100, n_rpm=1000), material="42CrMo4", face_width_mm=60)
+    r = gd.optimize_shifts(17, 71, m=4, a_w=175, checks=ck)
+    assert not r.success and len(r.conflict) >= 2
+    assert _holds_together(4, 17, 71, r.x1 + r.x2, ck, r.conflict) < 0      # a genuine conflict on the a_w line
+    fail = [c for c in r.conflict if r.margins[c] < 0]
+    hold = [c for c in r.conflict if r.margins[c] >= 0]
+    assert fail and hold                      # the case of the issue: one of them holds at the point shown
+    line = next(s for s in repr(r).splitlines() if s.strip().startswith("conflict:"))
+    assert f"here {', '.join(fail)} fail" in line and f"{', '.join(hold)} hold" in line
+    assert "no shifts hold them all at once" in r.message
+    # and the point is no optimum: the accuracy line does not claim a KKT point
+    assert "Newton" not in r.accuracy and r.accuracy.startswith("no feasible point, so no optimum")

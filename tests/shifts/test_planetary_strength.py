@@ -126,3 +126,35 @@ def test_root_form_factors_nan_where_the_design_has_no_root_section():
     out = root_form_factors(np.array([43, 43]), np.array([0.5, 2.9]), np.array([46.0, 50.8]), eps_alpha=1.3,
                             refuse=False)
     assert np.isfinite(out["Y_F"][0]) and np.isnan(out["Y_F"][1])
+
+
+@pytest.mark.parametrize("objective", ["balanced_root_strength", "max_min_safety"])
+def test_the_strength_objectives_of_a_set(objective):
+    # issue 36 §1.1: both raised a bare ValueError (a minimum over no pieces: the set's objective was never bound to
+    # its meshes' strength checks). Without a load: refused by name, as optimize_shifts refuses it
+    with pytest.raises(gd.GearDesignError, match=f"objective '{objective}' needs a load"):
+        gd.optimize_planetary_shifts(16, 25, 66, 4, m=4, objective=objective)
+    # with one: solved, and fun is the smallest S/S_min of both meshes' set report at the shifts found
+    ck = _checks(150.0)
+    r = gd.optimize_planetary_shifts(*SET, M, objective=objective, checks=ck)
+    assert r.success and min(r.margins.values()) >= 0
+    s = gd.PlanetarySet.coaxial(M, *SET, r.x_sun, r.x_planet)
+    rep = planetary_strength(s, ck["load"], MAT, face_width_mm=25.0)
+    roots = [rep[t].S_F1 / rep[t].S_Fmin for t in ("sun-planet", "planet-ring")]
+    roots += [rep[t].S_F2 / rep[t].S_Fmin for t in ("sun-planet", "planet-ring")]
+    contact = [min(rep[t].S_H1, rep[t].S_H2) / rep[t].S_Hmin for t in ("sun-planet", "planet-ring")]
+    want = min(roots) if objective == "balanced_root_strength" else min(roots + contact)
+    assert r.fun == pytest.approx(want, rel=1e-9)
+    # no node of a fine grid beats it
+    grid = gd.optimize_planetary_shifts(*SET, M, objective=objective, checks=ck, method="grid", grid_n=81)
+    assert grid.fun <= r.fun + 1e-9
+
+
+def test_planetary_cli_strength_objective(capsys):
+    # issue 36 §1.1: a traceback (exit 1) before
+    args = ["planetary", "-m", "2", "--planets", "3", "--z-sun", "20", "--z-planet", "31", "--z-ring", "82",
+            "--objective", "max_min_safety"]
+    assert cli_main(args + ["--torque", "10", "--speed", "1000", "--material", "42CrMo4", "--face-width", "20"]) == 0
+    assert "(max_min_safety)" in capsys.readouterr().out
+    assert cli_main(args) == 2
+    assert "needs a load" in capsys.readouterr().err

@@ -192,7 +192,7 @@ def test_result_object():
     (dict(ratio=1.5, z1_range=(20, 10)), ["z1_range", "min <= max"]),
     (dict(ratio=1.5, m=-2), ["m (module)", "-2"]),
     (dict(ratio=1.5, m="big"), ["m must be", "'big'"]),
-    (dict(ratio=1.5, m=2, a_w=0), ["a_w", "> 0", "0"]),
+    (dict(ratio=1.5, m=2, a_w=0), ["a_w", "(0, 1e+10]", "0"]),
     (dict(ratio=1.5, m=2, a_w="nearest"), ["a_w", "'nearest'"]),
     (dict(ratio=1.5, objective="cheap"), ["objective", "'cheap'"]),
     (dict(ratio=float("nan")), ["ratio", "finite"]),
@@ -248,3 +248,24 @@ def test_internal_search_skips_pairs_without_a_ring_quietly():
     assert (sel.table["z2"] > sel.table["z1"]).all()
     no_ring = sel.skipped[sel.skipped["z2"] <= sel.skipped["z1"]]
     assert len(no_ring) > 0 and no_ring["reason"].str.contains("z2 <= z1").all()
+
+
+@pytest.mark.parametrize("a_w", [1.7976931348623157e+308, 1.0000001e10])
+def test_a_centre_distance_beyond_any_gear_is_refused_by_name(a_w):
+    # issue 36 §1.10: a_w = DBL_MAX let a RuntimeWarning (overflow, center_distance.py) escape; the limit is
+    # A_W_RANGE_MM, past the largest pair the module and tooth ranges allow: 1e4 mm · 2e5 teeth / 2 / cos 60°
+    import warnings
+
+    from geardesign.gears.inputs import A_W_RANGE_MM, M_RANGE_MM
+    from geardesign.gears.mesh import Z_MAX
+    assert A_W_RANGE_MM[1] >= M_RANGE_MM[1] * 2 * Z_MAX / 2 / math.cos(math.radians(60))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(gd.GearDesignError, match=r"a_w \(center distance\) must be in \(0, 1e\+10\] mm"):
+            select_teeth(3.497, ratio_tol=0.05, z1_range=(13, 16), a_w=a_w, beta_deg=23.6376, internal=True,
+                         face_width_mm=29.63)
+        with pytest.raises(gd.GearDesignError, match=r"a_w \(center distance\) must be in \(0, 1e\+10\] mm"):
+            gd.optimize_planetary_shifts(21, 43, 108, 3, 1.75, a_w=a_w)
+        # the largest one allowed runs without a warning: no pair reaches it
+        sel = select_teeth(3.497, ratio_tol=0.05, z1_range=(13, 16), m=2, a_w=A_W_RANGE_MM[1], internal=True)
+        assert sel.best is None and len(sel.skipped) > 0

@@ -5,7 +5,7 @@ import math
 from dataclasses import dataclass
 
 from ...errors import GearDesignError
-from ...validate import one_number, require_range
+from ...validate import hint_unknown_arguments, one_number, require_range
 
 __all__ = ["Load", "TORQUE_RANGE_NM", "SPEED_RANGE_RPM", "APPLICATION_FACTOR_RANGE", "LIFE_RANGE_H"]
 
@@ -85,3 +85,16 @@ class Load:
     def given(self) -> str:
         """"torque" or "power": which of the two was given (the other is derived)."""
         return object.__getattribute__(self, "_given")
+
+
+# Names a user may reach for: the hint the error gives (each quantity's name carries its unit).
+hint_unknown_arguments(Load, {
+    "torque": "the torque is torque_nm={value!r} (N·m)",
+    "T": "the torque is torque_nm={value!r} (N·m)",
+    "power": "the power is power_kw={value!r} (kW)",
+    "P": "the power is power_kw={value!r} (kW)",
+    **{k: "the speed is n_rpm={value!r} (rpm, of the gear on_gear)" for k in ("n", "speed", "speed_rpm", "rpm")},
+    "K_A": "the application factor is application_factor={value!r}",
+    **{k: "the required life is life_h={value!r} (hours)" for k in ("life", "life_hours")},
+    "gear": "the gear the load is given on is on_gear={value!r} (1 or 2)",
+})
