@@ -14,7 +14,8 @@ M = M_rr + M_sl (+ M_seal + M_drag), in N·mm:
   F_a > 0: G_rr = R1·d_m^1.96·(F_r + R2/sin α_F·F_a)^0.54,
   G_sl = S1·d_m^−0.145·(F_r^5 + S2·d_m^1.5/sin α_F·F_a^4)^(1/3), α_F = 24.6·(F_a/C_0)^0.24 degrees.
 
-The geometry constants R1, R2, S1, S2 of the series 62 and 63 (Table 2b) are in :data:`SKF_CONSTANTS`. Not
+The geometry constants R1, R2, S1, S2 of the series 62 and 63 (Table 2b) are in :data:`SKF_CONSTANTS`, read in a
+public restatement of SKF's table (docs/efficiency.md says which sources were and were not read). Not
 modelled: the seals' moment M_seal (the catalog rows are open bearings) and the drag loss M_drag of a
 bearing dipping in an oil bath (it needs the oil level and SKF's drag diagram); other bearing types (angular
 contact, cylindrical roller: their constants were not read in a public text). Units: n in rpm, ν in mm²/s
