@@ -33,7 +33,7 @@ import numpy as np
 from ..errors import GearDesignError
 from ..validate import one_number, require_positive, require_range
 
-__all__ = ["WALTHER_C_ASTM", "WALTHER_C_DIN", "LUBRICANT_FACTORS", "Lubricant", "walther_constants",
+__all__ = ["WALTHER_C_ASTM", "WALTHER_C_DIN", "ISO_VG_GRADES", "LUBRICANT_FACTORS", "Lubricant", "walther_constants",
            "kinematic_viscosity", "oil_density", "dynamic_viscosity", "mean_friction_coefficient",
            "tip_contact_ratios", "gear_loss_factor_ohlendorf", "gear_loss_factor_integrated",
            "mesh_power_loss", "MeshLoss", "mesh_loss"]
@@ -42,6 +42,8 @@ WALTHER_C_ASTM = 0.7     # ASTM D341: log log(ν + 0.7), ν in mm²/s, for ν >=
 WALTHER_C_DIN = 0.8      # DIN 51563 writes the same line with 0.8
 NU_MIN_MM2S = 2.0        # below 2 mm²/s ASTM D341 adds further terms that are not implemented here
 TEMPERATURE_RANGE_C = (-40.0, 200.0)
+# ISO 3448 viscosity grades: the mid-point kinematic viscosity at 40 °C in mm²/s (limits ±10 %)
+ISO_VG_GRADES = (2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200)
 
 # Lubricant factor X_L of the friction formula by base oil (ISO/TR 14179-2 after Schlenk, as restated by
 # Höhn et al. 2009 and Fernandes et al. 2015): 1.0 mineral oil; the others are the values of those papers'
@@ -136,6 +138,19 @@ class Lubricant:
         if self.nu100_mm2s >= self.nu40_mm2s:
             raise GearDesignError(f"nu100_mm2s must be below nu40_mm2s, got nu40_mm2s={self.nu40_mm2s!r}, "
                                   f"nu100_mm2s={self.nu100_mm2s!r}")
+
+    @classmethod
+    def iso_vg(cls, grade, nu100_mm2s, **kwargs):
+        """An oil of ISO viscosity grade ``grade`` (ISO 3448: ν40 is the grade's number, the mid-point of its
+        ±10 % band) with the data sheet's ``nu100_mm2s``.
+
+        >>> Lubricant.iso_vg(220, 19.0).nu40_mm2s
+        220.0
+        """
+        if isinstance(grade, bool) or grade not in ISO_VG_GRADES:
+            raise GearDesignError(f"grade must be an ISO 3448 viscosity grade ({', '.join(map(str, ISO_VG_GRADES))}), "
+                                  f"got {grade!r}")
+        return cls(float(grade), nu100_mm2s, **kwargs)
 
     def viscosity_mm2s(self, temperature_c):
         """Kinematic viscosity (mm²/s) at ``temperature_c`` (ASTM D341)."""

@@ -55,7 +55,7 @@ def _h_v_quad(z1, u, eps1, eps2):
     """H_V = (u+1)/(u r_b1) (1/p) ∫ |x| / N(x) dx over the path (p = 1, r_b1 = z1/2π), by quad between the
     points where N changes: the load shared equally between the pairs in contact (Ohlendorf's assumption)."""
     x_a, x_e = -eps2, eps1
-    pts = sorted({float(v) for v in np.clip([x_a, x_e, 0.0, x_a + 1, x_e - 1], x_a, x_e)})
+    pts = sorted({float(v) for v in np.clip([x_a, x_e, 0.0, x_a + 1, x_e - 1, x_a + 2, x_e - 2], x_a, x_e)})
     f = lambda x: abs(x) / _n_contacts(x, x_a, x_e)
     total = sum(quad(f, a, b, epsabs=1e-14, epsrel=1e-13)[0] for a, b in zip(pts[:-1], pts[1:]) if b > a)
     return (u + 1) / (u * z1 / (2 * math.pi)) * total
@@ -194,3 +194,30 @@ def test_bad_inputs_name_themselves():
         kinematic_viscosity(100.0, 11.0, float("nan"))
     with pytest.raises(GearDesignError, match="nu40_mm2s"):
         kinematic_viscosity(1.0, 0.5, 40.0)
+
+
+def test_integrated_h_v_of_high_contact_ratio_spur_pairs_against_quad():
+    # ε_α > 2: two or three pairs share the load; Ohlendorf's form does not apply, the integral does
+    rng = np.random.default_rng(11)
+    for _ in range(20):
+        eps_alpha = rng.uniform(2.05, 2.9)
+        eps1 = rng.uniform(0.3, eps_alpha - 0.3)
+        z1, u = int(rng.integers(20, 60)), float(rng.uniform(1.0, 4.0))
+        expect = _h_v_quad(z1, u, eps1, eps_alpha - eps1)
+        assert gear_loss_factor_integrated(z1, u, 0.0, eps1, eps_alpha - eps1) == pytest.approx(expect, rel=1e-9)
+
+
+def test_internal_pair_mesh_loss():
+    pair = GearPair(2.0, 20, 60, 0.2, 0.3, internal=True, face_width_mm=20)
+    loss = mesh_loss(pair, 50.0, 1500.0, 30.0)
+    assert loss.H_V == pytest.approx(loss.H_V_ohlendorf, rel=1e-12)
+    g = pair.geometry()
+    rho1 = g.dw1 / 2 * math.sin(math.radians(g.alpha_w_deg))
+    rho2 = g.dw2 / 2 * math.sin(math.radians(g.alpha_w_deg))
+    assert loss.rho_red_c_mm == pytest.approx(rho1 * rho2 / (rho2 - rho1), rel=1e-12)   # concave ring flank
+
+
+def test_iso_vg_grades():
+    assert Lubricant.iso_vg(320, 24.0).nu40_mm2s == 320.0
+    with pytest.raises(GearDesignError, match="ISO 3448"):
+        Lubricant.iso_vg(300, 24.0)
