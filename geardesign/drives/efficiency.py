@@ -17,7 +17,7 @@ from ..errors import GearDesignError
 from ..gears.efficiency import Lubricant, MeshLoss, mesh_loss
 from ..results import Result
 from ..validate import one_number, require_range
-from .bearing_friction import K_RS, BearingFriction, bearing_friction
+from .bearing_friction import K_RS, bearing_friction
 
 __all__ = ["BearingLoad", "StageEfficiency", "stage_efficiency"]
 
@@ -34,7 +34,8 @@ class BearingLoad:
 
     def __post_init__(self):
         if self.shaft not in (1, 2) or isinstance(self.shaft, bool):
-            raise GearDesignError(f"shaft must be 1 or 2 (the gear whose shaft carries the bearing), got {self.shaft!r}")
+            raise GearDesignError(f"shaft must be 1 or 2 (the gear whose shaft carries the bearing), "
+                                  f"got {self.shaft!r}")
 
 
 @dataclass(frozen=True)
@@ -113,8 +114,10 @@ def stage_efficiency(pair, load, lubricant: Lubricant, oil_temperature_c: float,
     if not isinstance(load, Load):
         raise GearDesignError(f"load must be a geardesign Load (torque or power at a speed), got {load!r}")
     if not isinstance(lubricant, Lubricant):
-        raise GearDesignError(f"lubricant must be a geardesign Lubricant (viscosities at 40 and 100 °C), got {lubricant!r}")
-    t_oil = one_number("oil_temperature_c", require_range("oil_temperature_c", oil_temperature_c, -40.0, 200.0, unit="°C"))
+        raise GearDesignError(f"lubricant must be a geardesign Lubricant (viscosities at 40 and 100 °C), "
+                              f"got {lubricant!r}")
+    t_oil = one_number("oil_temperature_c", require_range("oil_temperature_c", oil_temperature_c, -40.0, 200.0,
+                                                          unit="°C"))
     p0 = one_number("no_load_loss_w", require_range("no_load_loss_w", no_load_loss_w, 0.0, 1e9, unit="W"))
     if lubrication not in K_RS:
         raise GearDesignError(f"lubrication must be one of {', '.join(K_RS)}, got {lubrication!r}")

@@ -335,7 +335,7 @@ def mesh_loss(pair, torque1_nm, n1_rpm, eta_mpas, Ra_um=0.5, lubricant_factor=1.
     internal = bool(pair.internal)
     u = pair.z2 / pair.z1
     alpha_w = math.radians(float(g.alpha_w_deg))
-    beta_b_deg = math.degrees(math.atan(math.tan(math.radians(pair.beta_deg)) * math.cos(math.radians(float(g.alpha_t_deg)))))
+    beta_b_deg = float(g.beta_b_deg)
     cos_bb = math.cos(math.radians(beta_b_deg))
     e1, e2 = (float(v) for v in tip_contact_ratios(g, internal))
     eps_beta = b * math.sin(math.radians(pair.beta_deg)) / (math.pi * pair.m)

@@ -2,6 +2,7 @@
 an independent implementation of the SKF model on random cases, and the properties issue 37 asks for."""
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -88,7 +89,7 @@ OILS = [Lubricant(32, 5.4), Lubricant(100, 11.1), Lubricant(320, 24), Lubricant(
 
 def test_efficiency_falls_as_the_oil_thickens_at_low_load():
     eta = [_stage(10.0, oil).efficiency for oil in OILS]
-    assert all(a > b for a, b in zip(eta, eta[1:])), eta
+    assert all(a > b for a, b in itertools.pairwise(eta)), eta
 
 
 def test_a_larger_load_raises_the_load_dependent_loss():

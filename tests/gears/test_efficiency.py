@@ -3,6 +3,7 @@ efficiency_examples.md), an oil data sheet's viscosities, and independent implem
 line and of H_V (the sliding integrated over the path of contact with scipy's quad)."""
 from __future__ import annotations
 
+import itertools
 import math
 from pathlib import Path
 
@@ -13,9 +14,18 @@ import pytest
 from scipy.integrate import quad
 
 from geardesign.errors import GearDesignError
-from geardesign.gears.efficiency import (Lubricant, dynamic_viscosity, gear_loss_factor_integrated,
-                                         gear_loss_factor_ohlendorf, kinematic_viscosity, mean_friction_coefficient,
-                                         mesh_loss, oil_density, tip_contact_ratios, walther_constants)
+from geardesign.gears.efficiency import (
+    Lubricant,
+    dynamic_viscosity,
+    gear_loss_factor_integrated,
+    gear_loss_factor_ohlendorf,
+    kinematic_viscosity,
+    mean_friction_coefficient,
+    mesh_loss,
+    oil_density,
+    tip_contact_ratios,
+    walther_constants,
+)
 from geardesign.gears.pair import GearPair
 
 DATA = Path(__file__).resolve().parents[1] / "data"
@@ -57,7 +67,7 @@ def _h_v_quad(z1, u, eps1, eps2):
     x_a, x_e = -eps2, eps1
     pts = sorted({float(v) for v in np.clip([x_a, x_e, 0.0, x_a + 1, x_e - 1, x_a + 2, x_e - 2], x_a, x_e)})
     f = lambda x: abs(x) / _n_contacts(x, x_a, x_e)
-    total = sum(quad(f, a, b, epsabs=1e-14, epsrel=1e-13)[0] for a, b in zip(pts[:-1], pts[1:]) if b > a)
+    total = sum(quad(f, a, b, epsabs=1e-14, epsrel=1e-13)[0] for a, b in itertools.pairwise(pts) if b > a)
     return (u + 1) / (u * z1 / (2 * math.pi)) * total
 
 
