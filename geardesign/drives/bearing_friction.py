@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -167,16 +168,24 @@ class BearingFriction(Result):
                 f"{self.power_loss_w:.4g} W)")
 
 
-def _catalog_row(designation: str):
+@lru_cache(maxsize=1)
+def _catalog_rows() -> dict:
+    """designation -> (series, d, D, C0 in N) of the bundled rows of the modelled series, read once: a drive
+    search asks for the same few bearings many times, and a pandas lookup per call costs ~0.5 ms."""
     from .bearing import bearing_catalog
 
     rows = bearing_catalog(list(SKF_CONSTANTS))
-    hit = rows[rows["designation"].astype(str) == str(designation)]
-    if hit.empty:
-        have = rows["designation"].astype(str)
+    return {str(r.designation): (str(r.series), float(r.d_mm), float(r.D_mm), 1000.0 * float(r.C0_kn))
+            for r in rows.itertuples()}
+
+
+def _catalog_row(designation: str):
+    rows = _catalog_rows()
+    if str(designation) not in rows:
+        have = list(rows)
         raise GearDesignError(f"bearing must be a deep groove ball bearing of series {', '.join(SKF_CONSTANTS)} "
-                              f"({have.iloc[0]} ... {have.iloc[-1]}) for the friction model, got {designation!r}")
-    return hit.iloc[0]
+                              f"({have[0]} ... {have[-1]}) for the friction model, got {designation!r}")
+    return rows[str(designation)]
 
 
 def bearing_friction(designation, Fr_n, Fa_n, n_rpm, nu_mm2s, lubrication="oil_jet", mu_bl=MU_BL,
@@ -200,10 +209,8 @@ def bearing_friction(designation, Fr_n, Fa_n, n_rpm, nu_mm2s, lubrication="oil_j
     nu = one_number("nu_mm2s", require_range("nu_mm2s", nu_mm2s, 1.0, 1e5, unit="mm²/s"))
     for name, v in (("mu_bl", mu_bl), ("mu_ehl", mu_ehl)):
         require_range(name, v, 0.0, 1.0)
-    row = _catalog_row(designation)
-    R1, R2, S1, S2 = SKF_CONSTANTS[str(row["series"])]
-    d, D = float(row["d_mm"]), float(row["D_mm"])
-    C0 = 1000.0 * float(row["C0_kn"])
+    series, d, D, C0 = _catalog_row(designation)
+    R1, R2, S1, S2 = SKF_CONSTANTS[series]
     dm = (d + D) / 2.0
     G_rr = rolling_frictional_variable(R1, R2, dm, Fr, Fa, C0)
     G_sl = sliding_frictional_variable(S1, S2, dm, Fr, Fa, C0)
@@ -211,6 +218,6 @@ def bearing_friction(designation, Fr_n, Fa_n, n_rpm, nu_mm2s, lubrication="oil_j
                                            replenishment_factor(n, nu, d, D, K_RS[lubrication])))
     M_sl = float(G_sl * sliding_friction_coefficient(n, nu, dm, mu_bl, mu_ehl))
     M = M_rr + M_sl
-    return BearingFriction(designation=str(row["designation"]), n_rpm=n, Fr_n=Fr, Fa_n=Fa, nu_mm2s=nu, dm_mm=dm,
+    return BearingFriction(designation=str(designation), n_rpm=n, Fr_n=Fr, Fa_n=Fa, nu_mm2s=nu, dm_mm=dm,
                            M_rr_nmm=M_rr, M_sl_nmm=M_sl, M_nmm=M, power_loss_w=float(frictional_power_w(M, n)),
                            lubrication=lubrication)
