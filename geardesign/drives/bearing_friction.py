@@ -42,10 +42,10 @@ __all__ = ["SKF_CONSTANTS", "K_RS", "K_Z_DEEP_GROOVE", "inlet_shear_heating_fact
 SKF_CONSTANTS = {"62": (3.9e-7, 1.7, 3.23e-3, 36.5), "63": (3.7e-7, 1.7, 2.84e-3, 92.8)}
 K_RS = {"oil_jet": 3e-8, "oil_bath": 3e-8, "grease": 6e-8, "oil_air": 6e-8}
 K_Z_DEEP_GROOVE = 3.1
-# μ_bl ≈ 0.15 (the additive package's boundary friction) and μ_EHL = 0.05 for mineral oils (0.04 synthetic,
-# 0.1 transmission fluids) in SKF 10000/1 EN; both can be given (SKF's online tool and other texts use
-# μ_bl = 0.12, μ_EHL = 0.04..0.05)
-MU_BL = 0.15
+# The boundary and full-film friction coefficients of μ_sl, as the restatement we read takes them: μ_bl = 0.12 and
+# μ_EHL = 0.05 (it notes SKF's online calculator takes 0.05, and itself uses 0.04); both depend on the oil (its
+# additives, mineral or synthetic base) and can be given
+MU_BL = 0.12
 MU_EHL = 0.05
 
 
@@ -113,7 +113,7 @@ def sliding_friction_coefficient(n_rpm, nu_mm2s, dm_mm, mu_bl=MU_BL, mu_ehl=MU_E
     friction at standstill, full-film friction at speed.
 
     >>> round(float(sliding_friction_coefficient(0.0, 100.0, 50.0)), 9)
-    0.15
+    0.12
     """
     n, nu, dm = (np.asarray(v, dtype=float) for v in (n_rpm, nu_mm2s, dm_mm))
     phi_bl = np.exp(-2.6e-8 * (n * nu) ** 1.4 * dm)

@@ -17,7 +17,7 @@ from geardesign.gears.pair import GearPair
 from geardesign.gears.strength import Load
 
 
-def _skf_reference(R1, R2, S1, S2, d, D, C0, Fr, Fa, n, nu, K_rs, mu_bl=0.15, mu_ehl=0.05):
+def _skf_reference(R1, R2, S1, S2, d, D, C0, Fr, Fa, n, nu, K_rs, mu_bl=0.12, mu_ehl=0.05):
     """The SKF model written out again from its equations (module docstring's source), in plain math."""
     dm = 0.5 * (d + D)
     phi_ish = 1 / (1 + 1.84e-9 * (n * dm) ** 1.28 * nu ** 0.64)
