@@ -53,6 +53,8 @@ _NAMES = {
     "mesh_forces": "gears.forces", "pair_forces": "gears.forces", "planetary_forces": "gears.forces",
     "MeshForces": "gears.forces", "check_bearing": "drives.bearing", "select_bearing": "drives.bearing",
     "chain_pull": "drives.chain.pull",
+    "Lubricant": "gears.efficiency", "mesh_loss": "gears.efficiency", "stage_efficiency": "drives.efficiency",
+    "BearingLoad": "drives.efficiency", "bearing_friction": "drives.bearing_friction",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {
