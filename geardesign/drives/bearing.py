@@ -118,7 +118,7 @@ def deep_groove_factors(f0_fa_c0r):
     return e, Y
 
 
-def equivalent_dynamic_load(Fr_n, Fa_n, e, X, Y):
+def equivalent_dynamic_load(fr_n, fa_n, e, X, Y):
     """Equivalent dynamic load P = Fr when Fa/Fr <= e, else X·Fr + Y·Fa (ISO 281; NTN CAT. 2203/E eq. (4.28)),
     in the unit of the forces. Written as Fa <= e·Fr so that a pure axial load (Fr = 0) takes X Fr + Y Fa.
 
@@ -128,18 +128,18 @@ def equivalent_dynamic_load(Fr_n, Fa_n, e, X, Y):
     >>> round(float(equivalent_dynamic_load(3.2, 1.8, 0.30, 0.56, 1.44)), 2)
     4.38
     """
-    Fr, Fa = np.asarray(Fr_n, dtype=float), np.asarray(Fa_n, dtype=float)
+    Fr, Fa = np.asarray(fr_n, dtype=float), np.asarray(fa_n, dtype=float)
     return np.where(Fa <= np.asarray(e) * Fr, Fr, np.asarray(X) * Fr + np.asarray(Y) * Fa)
 
 
-def equivalent_static_load(Fr_n, Fa_n, X0, Y0):
+def equivalent_static_load(fr_n, fa_n, X0, Y0):
     """Equivalent static load P0 = X0·Fr + Y0·Fa, not below Fr (NTN CAT. 2203/E pp. B-27, B-61: "when
     P0r < Fr use P0r = Fr"); deep groove X0 = 0.6, Y0 = 0.5, 40° angular contact 0.5 and 0.26.
 
     >>> float(equivalent_static_load(1000.0, 2000.0, 0.6, 0.5))
     1600.0
     """
-    Fr, Fa = np.asarray(Fr_n, dtype=float), np.asarray(Fa_n, dtype=float)
+    Fr, Fa = np.asarray(fr_n, dtype=float), np.asarray(fa_n, dtype=float)
     return np.maximum(np.asarray(X0) * Fr + np.asarray(Y0) * Fa, Fr)
 
 
@@ -230,13 +230,13 @@ def bearing_catalog(series) -> pd.DataFrame:
     return pd.concat(frames, ignore_index=True)
 
 
-def bearing_loads(rows: pd.DataFrame, Fr_n, Fa_n):
+def bearing_loads(rows: pd.DataFrame, fr_n, fa_n):
     """e, X, Y, P and P0 of each catalog row under Fr and Fa (N), by the row's bearing type, as a dict of
     arrays; ``axial_ok`` is False where the type cannot take the axial load (a cylindrical roller bearing
     of type NU carries none; a deep groove ball bearing beyond the end of the e/X/Y table)."""
     n = len(rows)
-    Fr = np.broadcast_to(np.asarray(Fr_n, dtype=float), (n,))
-    Fa = np.broadcast_to(np.asarray(Fa_n, dtype=float), (n,))
+    Fr = np.broadcast_to(np.asarray(fr_n, dtype=float), (n,))
+    Fa = np.broadcast_to(np.asarray(fa_n, dtype=float), (n,))
     t = rows["bearing_type"].to_numpy()
     C0 = rows["C0_kn"].to_numpy(dtype=float)
     f0 = rows["f0"].to_numpy(dtype=float)
@@ -263,9 +263,9 @@ def bearing_loads(rows: pd.DataFrame, Fr_n, Fa_n):
             "axial_ok": axial_ok}
 
 
-def _inputs(Fr_n, Fa_n, n_rpm, life_h, reliability, kappa, e_c, lubrication):
-    fr = one_number("fr_n", require_range("fr_n", Fr_n, 0.0, FORCE_MAX_N, unit="N"))
-    fa = one_number("fa_n", require_range("fa_n", Fa_n, 0.0, FORCE_MAX_N, unit="N"))
+def _inputs(fr_n, fa_n, n_rpm, life_h, reliability, kappa, e_c, lubrication):
+    fr = one_number("fr_n", require_range("fr_n", fr_n, 0.0, FORCE_MAX_N, unit="N"))
+    fa = one_number("fa_n", require_range("fa_n", fa_n, 0.0, FORCE_MAX_N, unit="N"))
     if fr == 0.0 and fa == 0.0:
         raise GearDesignError("fr_n and fa_n are both 0: a bearing needs a load to have a life")
     n = one_number("n_rpm", require_range("n_rpm", n_rpm, 0.0, SPEED_MAX_RPM, lo_open=True, unit="rpm"))

@@ -71,7 +71,7 @@ def walther_constants(nu1_mm2s, t1_c, nu2_mm2s, t2_c, c=WALTHER_C_ASTM):
     return w1 + B * x1, B
 
 
-def kinematic_viscosity(nu40_mm2s, nu100_mm2s, temperature_c, c=WALTHER_C_ASTM):
+def kinematic_viscosity(nu40, nu100, temperature_c, c=WALTHER_C_ASTM):
     """Kinematic viscosity ν (mm²/s) at ``temperature_c`` from the viscosities at 40 and 100 °C, on the
     Ubbelohde-Walther line of ASTM D341 (c = 0.7; DIN 51563: 0.8).
 
@@ -81,11 +81,11 @@ def kinematic_viscosity(nu40_mm2s, nu100_mm2s, temperature_c, c=WALTHER_C_ASTM):
     >>> [round(float(kinematic_viscosity(30.8, 5.9, t, c=0.8)), 2) for t in (80, 90)]
     [9.12, 7.25]
     """
-    nu40 = require_range("nu40_mm2s", nu40_mm2s, NU_MIN_MM2S, 1e6, unit="mm²/s")
-    nu100 = require_range("nu100_mm2s", nu100_mm2s, NU_MIN_MM2S, 1e6, unit="mm²/s")
+    nu40 = require_range("nu40", nu40, NU_MIN_MM2S, 1e6, unit="mm²/s")
+    nu100 = require_range("nu100", nu100, NU_MIN_MM2S, 1e6, unit="mm²/s")
     if np.any(nu100 >= nu40):
-        raise GearDesignError(f"nu100_mm2s must be below nu40_mm2s (an oil thins as it warms), got "
-                              f"nu40_mm2s={nu40_mm2s!r}, nu100_mm2s={nu100_mm2s!r}")
+        raise GearDesignError(f"nu100 must be below nu40 (an oil thins as it warms), got "
+                              f"nu40={nu40!r}, nu100={nu100!r}")
     t = require_range("temperature_c", temperature_c, *TEMPERATURE_RANGE_C, unit="°C")
     A, B = walther_constants(nu40, 40.0, nu100, 100.0, c)
     return 10.0 ** 10.0 ** (A - B * np.log10(t + 273.15)) - c
@@ -125,36 +125,36 @@ class Lubricant:
     320.0
     """
 
-    nu40_mm2s: float
-    nu100_mm2s: float
+    nu40: float
+    nu100: float
     density15_kg_m3: float = 900.0
     lubricant_factor: float = 1.0
     name: str = "oil"
 
     def __post_init__(self):
-        for field, lo, hi in (("nu40_mm2s", NU_MIN_MM2S, 1e6), ("nu100_mm2s", NU_MIN_MM2S, 1e6),
+        for field, lo, hi in (("nu40", NU_MIN_MM2S, 1e6), ("nu100", NU_MIN_MM2S, 1e6),
                               ("density15_kg_m3", 500.0, 2000.0), ("lubricant_factor", 0.1, 3.0)):
             object.__setattr__(self, field, one_number(field, require_range(field, getattr(self, field), lo, hi)))
-        if self.nu100_mm2s >= self.nu40_mm2s:
-            raise GearDesignError(f"nu100_mm2s must be below nu40_mm2s, got nu40_mm2s={self.nu40_mm2s!r}, "
-                                  f"nu100_mm2s={self.nu100_mm2s!r}")
+        if self.nu100 >= self.nu40:
+            raise GearDesignError(f"nu100 must be below nu40, got nu40={self.nu40!r}, "
+                                  f"nu100={self.nu100!r}")
 
     @classmethod
-    def iso_vg(cls, grade, nu100_mm2s, **kwargs):
+    def iso_vg(cls, grade, nu100, **kwargs):
         """An oil of ISO viscosity grade ``grade`` (ISO 3448: ν40 is the grade's number, the mid-point of its
-        ±10 % band) with the data sheet's ``nu100_mm2s``.
+        ±10 % band) with the data sheet's ``nu100``.
 
-        >>> Lubricant.iso_vg(220, 19.0).nu40_mm2s
+        >>> Lubricant.iso_vg(220, 19.0).nu40
         220.0
         """
         if isinstance(grade, bool) or grade not in ISO_VG_GRADES:
             raise GearDesignError(f"grade must be an ISO 3448 viscosity grade ({', '.join(map(str, ISO_VG_GRADES))}), "
                                   f"got {grade!r}")
-        return cls(float(grade), nu100_mm2s, **kwargs)
+        return cls(float(grade), nu100, **kwargs)
 
     def viscosity_mm2s(self, temperature_c):
         """Kinematic viscosity (mm²/s) at ``temperature_c`` (ASTM D341)."""
-        return kinematic_viscosity(self.nu40_mm2s, self.nu100_mm2s, temperature_c)
+        return kinematic_viscosity(self.nu40, self.nu100, temperature_c)
 
     def dynamic_viscosity_mpas(self, temperature_c):
         """Dynamic viscosity (mPa·s) at ``temperature_c``."""
@@ -227,7 +227,9 @@ def _contact_mean_abs(s0, x_a, x_e, p, width):
         return np.sum(np.where(inside, np.abs(lo), 0.0), axis=1) / np.sum(inside, axis=1)
     c_lo = np.clip(lo, x_a, x_e)
     c_hi = np.clip(lo + width, x_a, x_e)
-    prim = lambda x: x * np.abs(x) / 2.0   # ∫|x| dx
+    def prim(x):     # ∫|x| dx
+        return x * np.abs(x) / 2.0
+
     return np.sum(prim(c_hi) - prim(c_lo), axis=1) / np.sum(c_hi - c_lo, axis=1)
 
 
