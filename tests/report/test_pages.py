@@ -30,7 +30,7 @@ def _khk():
 @pytest.fixture(scope="module")
 def khk_report(tmp_path_factory):
     path = tmp_path_factory.mktemp("report") / "khk.html"
-    gd.GearPair(3, 12, 24, 0.6, 0.36).report(path)      # the method the issue names; gd.pair_report alike
+    gd.pair_report(gd.GearPair(3, 12, 24, 0.6, 0.36), path)      # GearPair.report (deprecated) alike
     return path
 
 
@@ -252,7 +252,7 @@ def test_report_with_a_load_shows_the_strength_and_its_factors(tmp_path):
     # factor table; the page's figures are the StrengthResult's (and 20/60 at 400 N·m fails contact first)
     pair = gd.GearPair(4, 20, 60, 0.3, 0.1, face_width_mm=40)
     case = {"load": gd.Load(torque_nm=400, n_rpm=1000, life_h=20000), "material": "42CrMo4"}
-    path = pair.report(tmp_path / "loaded.html", **case)
+    path = gd.pair_report(pair, tmp_path / "loaded.html", **case)
     res = pair.strength(case["load"], "42CrMo4")
     dom = dump_dom(path)
     verdict = re.search(r'<div class="verdict fail">(.*?)</div>', dom).group(1)
