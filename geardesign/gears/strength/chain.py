@@ -29,7 +29,7 @@ from .load import Load
 from .materials import Material, material as material_by_name
 from .ops import ArrayOps, FloatOps, checked, once, per_load_case
 from .options import shaft_option, validate_options
-from .result import StrengthResult, from_chain
+from .result import StrengthResult, from_chain, load_case
 from .root_chain import root_side
 
 __all__ = ["pair_strength", "strength", "chain_geometry", "GIVEN_FACTORS", "STRENGTH_FIELDS", "CHAIN_GEOMETRY_FIELDS"]
@@ -558,7 +558,11 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
     out = pair_strength(pair.m, pair.z1, pair.z2, pair.x1, pair.x2, load=load, material1=material,
                         material2=material2, face_width_mm=b, beta_deg=pair.beta_deg, internal=pair.internal,
                         rack=pair.rack, tip_shortening=pair.tip_shortening, **options)
-    return from_chain(out, title=f"{pair.z1}/{pair.z2} m={pair.m:g}")
+    mat1 = _material(material, "material")
+    case = load_case(mat1, mat1 if material2 is None else _material(material2, "material2"),
+                     *(options.get(k, d) for k, d in (("accuracy_grade", dflt.ACCURACY_GRADE), ("nu40", dflt.NU40_MM2_S),
+                                                      ("Rz_flank_um", dflt.RZ_FLANK_UM), ("Rz_root_um", dflt.RZ_ROOT_UM))))
+    return from_chain(out, title=f"{pair.z1}/{pair.z2} m={pair.m:g}", case=case)
 
 
 # the keywords of pair_strength a caller's options may set (the design and the load case are given apart)
