@@ -108,9 +108,10 @@ def _png(fig) -> str:
     return "data:image/png;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
 
 
-def _pictures(pair: GearPair, lim: _Limits) -> tuple[str, str, object]:
+def _pictures(pair: GearPair, lim: _Limits, table) -> tuple[str, str, object]:
     """(contour PNG, mesh PNG, the optimum) of the pair: its region with the pair and the optimum
-    marked (on the housing's a_w line when one is given), and its meshing drawing."""
+    marked (on the housing's a_w line when one is given), and its meshing drawing titled with the
+    verdict of the report's own checks ``table`` (its limits and load case)."""
     from ..profiles.drawing import plot_mesh
     from ..shifts.optimize import optimize_shifts
     from ..shifts.region import feasible_region
@@ -122,7 +123,7 @@ def _pictures(pair: GearPair, lim: _Limits) -> tuple[str, str, object]:
     opt = optimize_shifts(pair.z1, pair.z2, checks=checks, m=pair.m, a_w=lim.housing_a_w, **kind)
     ax = region.plot(optimum=opt if opt.success else None, proposed=(pair.x1, pair.x2), x_sum=opt.x_sum_fixed)
     contour = _png(ax.figure)
-    mesh = _png(plot_mesh(pair).figure)
+    mesh = _png(plot_mesh(pair, checks=table).figure)
     return contour, mesh, opt
 
 
@@ -222,7 +223,7 @@ def pair_report_html(pair: GearPair, eps_alpha_min: float = DEFAULT_EPS_ALPHA_MI
              f'<p class="small">geardesign {__version__}. Geometry: ISO 21771:2007; GOST 16532-70 (external), '
              "GOST 19274-73 (internal). Margins are dimensionless, ≥ 0 where a check holds.</p>"]
     if pictures:
-        contour, mesh, opt = _pictures(pair, lim)
+        contour, mesh, opt = _pictures(pair, lim, table)
         best = (f"the optimum of {opt.objective} x<sub>1</sub> = {opt.x1:.4f}, x<sub>2</sub> = {opt.x2:.4f} (star)"
                 if opt.success else "no feasible optimum")
         parts += ['<h2 class="pictures">Pictures</h2><div class="figs">',
@@ -240,7 +241,47 @@ def _strength_part(pair: GearPair, load_case: dict) -> list:
         return []
     r = pair.strength(load_case["load"], load_case.get("material"), material2=load_case.get("material2"),
                       face_width_mm=load_case.get("face_width_mm"), **(load_case.get("strength") or {}))
-    load = load_case["load"]
+    return ["<h2>Load capacity (ISO 6336:2019)</h2>", *strength_html(r, load_case["load"])]
+
+
+_GOVERNING = {"contact1": "contact (pitting), gear 1", "contact2": "contact (pitting), gear 2",
+              "root1": "tooth root, gear 1", "root2": "tooth root, gear 2"}
+
+
+def strength_case_rows(r) -> list[tuple]:
+    """(input, symbol, unit, gear 1, gear 2) of what a :class:`~geardesign.StrengthResult` was computed with:
+    each gear's material and its σ_Hlim, σ_Flim (ISO 6336-5), the accuracy grade, the lubricant and the
+    roughness (one value for both gears: gear 2 None); with the factor table, enough to compute σ_HP
+    (= σ_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X / S_Hmin) and σ_FP again."""
+    c = r.case or {}
+    if not c:
+        return []
+    return [("material", "", "", c["material1"], c["material2"]),
+            ("contact endurance limit", "σ<sub>Hlim</sub>", "MPa", f"{c['sigma_Hlim1_mpa']:g}", f"{c['sigma_Hlim2_mpa']:g}"),
+            ("bending endurance limit", "σ<sub>Flim</sub>", "MPa", f"{c['sigma_Flim1_mpa']:g}", f"{c['sigma_Flim2_mpa']:g}"),
+            ("accuracy grade (ISO 1328-1:1995)", "Q", "–", f"{c['accuracy_grade']}", None),
+            ("lubricant viscosity at 40 °C", "ν<sub>40</sub>", "mm²/s", f"{c['nu40_mm2_s']:g}", None),
+            ("flank roughness (mean of both flanks)", "R<sub>z</sub>", "µm", f"{c['Rz_flank_um']:g}", None),
+            ("root roughness", "R<sub>z,root</sub>", "µm", f"{c['Rz_root_um']:g}", None),
+            ("minimum safety factors", "S<sub>Hmin</sub>, S<sub>Fmin</sub>", "–", f"{r.S_Hmin:g}, {r.S_Fmin:g}", None)]
+
+
+def _two_columns(head: list, rows: list) -> str:
+    """A (name, symbol, unit, gear 1, gear 2) table; gear 2 None spans both gear columns."""
+    out = []
+    for name, sym, unit, v1, v2 in rows:
+        cells = [_td(html.escape(name)), _td(sym), _td(unit)]
+        cells += ([_td(html.escape(str(v1)), "num"), _td(html.escape(str(v2)), "num")] if v2 is not None else
+                  [f'<td class="num span" colspan="2">{html.escape(str(v1))}</td>'])
+        out.append(cells)
+    return _table(head, out)
+
+
+def strength_html(r, load, level: int = 3) -> list:
+    """A :class:`~geardesign.StrengthResult` as page parts: the load, the inputs it was computed with, the
+    governing check, S, σ and σ_P per gear, the notes and the factor table (each factor with its clause)."""
+    check, margin = r.governing
+    verdict = "holds" if r.ok else "FAILS"
     rows = [[_td(name), _td(_fmt("{:.4g}", a), "num"), _td(_fmt("{:.4g}", b), "num"), _td(_fmt("{:.4g}", lo), "num")]
             for name, a, b, lo in (("safety S<sub>H</sub> (contact)", r.S_H1, r.S_H2, r.S_Hmin),
                                    ("safety S<sub>F</sub> (root)", r.S_F1, r.S_F2, r.S_Fmin),
@@ -249,11 +290,16 @@ def _strength_part(pair: GearPair, load_case: dict) -> list:
                                    ("σ<sub>F</sub>, MPa", r.sigma_F1, r.sigma_F2, None),
                                    ("σ<sub>FP</sub>, MPa", r.sigma_FP1, r.sigma_FP2, None))]
     notes = "".join(f"<li>{html.escape(n)}</li>" for n in r.notes)
-    return [f"<h2>Load capacity (ISO 6336:2019)</h2><p>{load.torque_nm:.6g} N·m at {load.n_rpm:.6g} rpm on gear "
-            f"{load.on_gear} ({load.power_kw:.4g} kW), K<sub>A</sub> = {load.application_factor:g}, life "
-            + (f"{load.life_h:g} h" if load.life_h else "endurance") + ".</p>",
-            _table(["", "gear 1", "gear 2", "minimum"], rows), f"<ul>{notes}</ul>" if notes else "",
-            "<h3>Factors (gear 0: the pair)</h3>", _frame(r.factors, {"value": "{:.6g}"})]
+    h = f"h{level}"
+    case = strength_case_rows(r)
+    return [f"<p>{load.torque_nm:.6g} N·m at {load.n_rpm:.6g} rpm on gear {load.on_gear} ({load.power_kw:.4g} kW), "
+            f"K<sub>A</sub> = {load.application_factor:g}, life " + (f"{load.life_h:g} h" if load.life_h else "endurance")
+            + f". Governing: {_GOVERNING[check]}, margin {margin:+.4f} ({verdict}).</p>",
+            *([f"<{h}>Strength inputs</{h}>", _two_columns(["input", "symbol", "unit", "gear 1", "gear 2"], case)]
+              if case else []),
+            f"<{h}>Safety factors and stresses</{h}>", _table(["", "gear 1", "gear 2", "minimum"], rows),
+            f"<ul>{notes}</ul>" if notes else "",
+            f"<{h}>Factors (gear 0: the pair)</{h}>", _frame(r.factors, {"value": "{:.6g}"})]
 
 
 def pair_report(pair: GearPair, path, overwrite: bool = False, **limits):

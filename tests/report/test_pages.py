@@ -258,7 +258,9 @@ def test_report_with_a_load_shows_the_strength_and_its_factors(tmp_path):
     verdict = re.search(r'<div class="verdict fail">(.*?)</div>', dom).group(1)
     assert "contact_strength" in verdict
     found = tables(dom)
-    checks, summary, factors = found[0], found[3], found[4]
+    checks = found[0]
+    summary = next(t for t in found if t[0] == ["", "gear 1", "gear 2", "minimum"])
+    factors = next(t for t in found if t[0] == ["symbol", "gear", "value", "clause"])
     assert {"contact_strength", "root_strength1", "root_strength2"} <= {r[1] for r in checks[1:]}
     assert summary[0] == ["", "gear 1", "gear 2", "minimum"]
     rows = {r[0]: r for r in summary[1:]}
