@@ -468,15 +468,25 @@ class GearKind(ToothedKind):
         return GearStage(**kw)
 
     # -- diagram
+    wheels = True
+
+    @staticmethod
+    def _radii(summary: dict) -> tuple:
+        """The two circles' radii: in the ratio of the teeth, the larger 0.9."""
+        r1 = 0.9 / max(1.0, summary["ratio"])
+        r2 = r1 * summary["ratio"]
+        return 0.9 * r1 / max(r1, r2), 0.9 * r2 / max(r1, r2)
+
     def first_offset(self, summary: dict) -> float:
-        return 0.9 / max(1.0, summary.get("ratio", 1.0))
+        return self._radii(summary)[0]
+
+    def last_offset(self, summary: dict) -> float:
+        return self._radii(summary)[1]
 
     def draw(self, canvas, x: float, summary: dict) -> tuple:
         """Two meshing circles, radii in the ratio of the teeth."""
         s = summary
-        r1 = 0.9 / max(1.0, s["ratio"])
-        r2 = r1 * s["ratio"]
-        r1, r2 = (0.9 * r1 / max(r1, r2), 0.9 * r2 / max(r1, r2))
+        r1, r2 = self._radii(s)
         for xc, r in ((x, r1), (x + r1 + r2, r2)):
             canvas.circle(xc, r, self.color, alpha=0.9)
         width = f", b {s['face_width_mm']:g}" if s.get("face_width_mm") is not None else ""   # a stage with a load
