@@ -12,7 +12,7 @@ import pandas as pd
 from ...results import Result, plain
 from .defaults import MIN_SAFETY_SOURCE
 
-__all__ = ["StrengthResult", "FACTOR_TABLE", "from_chain", "load_case"]
+__all__ = ["StrengthResult", "FACTOR_TABLE", "from_chain", "load_case", "case_text"]
 
 P1, P2, P3 = "ISO 6336-1:2019", "ISO 6336-2:2019", "ISO 6336-3:2019"
 # (symbol, key in the chain's dict, gear (0 = the pair), clause or equation)
@@ -155,6 +155,8 @@ class StrengthResult(Result):
                  f"  {'sigma_F':9}{_col(self.sigma_F1)}{_col(self.sigma_F2)}  MPa",
                  f"  {'sigma_FP':9}{_col(self.sigma_FP1)}{_col(self.sigma_FP2)}  MPa",
                  f"  governing: {what}, margin {margin:+.1%}"]
+        if self.case:
+            lines.extend(f"  {line}" for line in case_text(self.case))
         if self.given:
             lines.append(f"  given: {', '.join(self.given)}")
         lines.extend(f"  note: {n}" for n in self.notes[:3])
@@ -186,6 +188,15 @@ def load_case(material1, material2, accuracy_grade, nu40, Rz_flank_um, Rz_root_u
     out.update(accuracy_grade=plain(accuracy_grade), nu40_mm2_s=float(nu40), Rz_flank_um=float(Rz_flank_um),
                Rz_root_um=float(Rz_root_um))
     return out
+
+
+def case_text(case: dict) -> list[str]:
+    """Two lines of a :func:`load_case`: the materials with σ_Hlim/σ_Flim; the grade, ν40 and the roughness."""
+    mats = [f"{case[f'material{k}']} (sigma_Hlim {case[f'sigma_Hlim{k}_mpa']:g}, sigma_Flim {case[f'sigma_Flim{k}_mpa']:g} MPa)"
+            for k in (1, 2)]
+    mat = f"material {mats[0]}" if mats[0] == mats[1] else f"materials {mats[0]} / {mats[1]}"
+    return [mat, f"accuracy grade {case['accuracy_grade']} (ISO 1328-1:1995), nu40 {case['nu40_mm2_s']:g} mm2/s, "
+                 f"Rz flank {case['Rz_flank_um']:g} um, root {case['Rz_root_um']:g} um"]
 
 
 def _col(v: float, fmt: str = ".1f") -> str:
