@@ -208,3 +208,19 @@ def test_the_drive_text_and_json_show_each_stages_strength(reducer, capsys):
         assert st["case"]["material1"] == "42CrMo4" and st["case"]["sigma_Hlim1_mpa"] == gd.material("42CrMo4").sigma_Hlim_mpa
         assert st["S_H1"] == pytest.approx(r.S_H1, rel=1e-9) and st["sigma_F2"] == pytest.approx(r.sigma_F2, rel=1e-9)
         assert st["governing"] == "contact1" and len(st["factors"]) == len(r.factors)
+
+
+def test_the_scene_run_shows_each_stages_strength(reducer, tmp_path, capsys):
+    import pandas as pd
+
+    from geardesign.cli import main
+
+    out = tmp_path / "out"
+    assert main(["run", str(reducer), "--out", str(out)]) == 1
+    text = (out / "report.md").read_text(encoding="utf-8")
+    for k, r in enumerate(_hand_strength(), start=1):
+        part = text[text.index(f"### Strength of stage 'stage {k}'"):]
+        assert "material 42CrMo4 (sigma_Hlim 766.9, sigma_Flim 314.5 MPa)" in part.splitlines()[2]
+        assert f"S_H = {r.S_H1:.4g} / {r.S_H2:.4g}" in part and f"σ_F = {r.sigma_F1:.4g} / {r.sigma_F2:.4g} MPa" in part
+        factors = pd.read_csv(out / f"drive_strength_stage_{k}.csv")
+        assert list(factors.columns) == ["symbol", "gear", "value", "clause"] and len(factors) == len(r.factors)
