@@ -359,12 +359,19 @@ def _materials(r) -> str:
     return c["material1"] if c["material1"] == c["material2"] else f"{c['material1']} / {c['material2']}"
 
 
-def _data_blocks(pair: GearPair) -> str:
+def _data_blocks(pair: GearPair, allowances=None) -> str:
     """The drawing's data block of both gears (ISO 1340, GOST 2.403: gear, control sizes, reference data) side by
-    side; no tooth-thickness allowance and no accuracy class are assumed here (the sizes are nominal)."""
+    side; the control sizes with the stage's shop ``allowances`` (its manufactured state: tooth thickness
+    a_sne/a_sni per gear, centre distance a_ai/a_ae, mm) when the analysis gives them, else nominal."""
     from ..gears.data_block import data_block
 
-    a, b = data_block(pair, 1), data_block(pair, 2)
+    if allowances is None:
+        a, b = data_block(pair, 1), data_block(pair, 2)
+    else:
+        centre = (allowances.a_ai, allowances.a_ae)
+        a, b = (data_block(pair, g, thickness_allowance_mm=(getattr(allowances, f"a_sne{g}"),
+                                                             getattr(allowances, f"a_sni{g}")),
+                           center_distance_allowance_mm=centre) for g in (1, 2))
     rows = [[_td(html.escape(str(p))), _td(html.escape(str(sym))), _td(html.escape(str(v1)), "num"),
              _td(html.escape(str(v2)), "num"), _td(html.escape(str(u)))]
             for p, sym, v1, v2, u in zip(a["parameter"], a["symbol"], a["value"], b["value"], a["unit"])]
@@ -413,8 +420,10 @@ def _stage_parts(k: int, st: dict) -> list:
                       *strength_html(r, st["stage"].load(flow.torque_in_nm, flow.n_in_rpm), level=4)]
         else:
             parts.append("<p>No material given: the stage's strength is not checked.</p>")
-        return parts + ["<h3>Drawing data (nominal sizes: no tooth-thickness allowance assumed)</h3>",
-                        _data_blocks(pair)]
+        shop = st.get("allowances")      # the manufactured state the analysis assumed, when it gives one
+        what = (f"with the allowances of the manufactured state: {html.escape(shop.describe())}" if shop is not None
+                else "nominal sizes: no tooth-thickness allowance assumed")
+        return parts + [f"<h3>Drawing data</h3><p>Control sizes {what}.</p>", _data_blocks(pair, shop)]
     if s["kind"] == "chain" and st.get("row") is not None:
         return [head, at, *_chain_part(st)]
     rest = ", ".join(f"{key} {html.escape(str(v))}" for key, v in s.items() if key not in ("name", "kind"))
