@@ -421,9 +421,10 @@ def _stage_parts(k: int, st: dict) -> list:
         else:
             parts.append("<p>No material given: the stage's strength is not checked.</p>")
         shop = st.get("allowances")      # the manufactured state the analysis assumed, when it gives one
-        what = (f"with the allowances of the manufactured state: {html.escape(shop.describe())}" if shop is not None
-                else "nominal sizes: no tooth-thickness allowance assumed")
-        return parts + [f"<h3>Drawing data</h3><p>Control sizes {what}.</p>", _data_blocks(pair, shop)]
+        what = (f"Control sizes with the allowances of the manufactured state the checks assumed: "
+                f"{html.escape(shop.describe())}" if shop is not None else
+                "Control sizes: nominal, no tooth-thickness allowance assumed")
+        return parts + [f"<h3>Drawing data</h3><p>{what}.</p>", _data_blocks(pair, shop)]
     if s["kind"] == "chain" and st.get("row") is not None:
         return [head, at, *_chain_part(st)]
     rest = ", ".join(f"{key} {html.escape(str(v))}" for key, v in s.items() if key not in ("name", "kind"))
