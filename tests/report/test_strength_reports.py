@@ -224,3 +224,28 @@ def test_the_scene_run_shows_each_stages_strength(reducer, tmp_path, capsys):
         assert f"S_H = {r.S_H1:.4g} / {r.S_H2:.4g}" in part and f"σ_F = {r.sigma_F1:.4g} / {r.sigma_F2:.4g} MPa" in part
         factors = pd.read_csv(out / f"drive_strength_stage_{k}.csv")
         assert list(factors.columns) == ["symbol", "gear", "value", "clause"] and len(factors) == len(r.factors)
+
+
+def test_the_data_block_takes_the_stages_shop_allowances():
+    # a stage whose analysis assumed a manufactured state (out["allowances"]: tooth-thickness allowances a_sne/a_sni
+    # per gear and a_ai/a_ae of the centre distance, mm) prints its control sizes with them: the span's deviations
+    # are the thickness allowances times cos α_n (ISO 21771:2007 eq. (93) differentiated: dW/ds = cos α_n)
+    import dataclasses
+    from types import SimpleNamespace
+
+    from geardesign.scene.html import drive_report_html
+
+    an = gd.Drive(power_kw=4, n_in_rpm=1450, stages=[gd.GearStage(3, 21, 74, 0.4, 0.6, face_width_mm=40)]).analyse()
+    shop = SimpleNamespace(a_ai=-0.032, a_ae=0.032, a_sne1=-0.097, a_sni1=-0.193, a_sne2=-0.110, a_sni2=-0.220,
+                           describe=lambda: "mating type B (test)")
+    page = drive_report_html(dataclasses.replace(an, stages=(dict(an.stages[0], allowances=shop),)), pictures=False)
+    assert "Control sizes with the allowances of the manufactured state the checks assumed: mating type B (test)" in page
+    block = {r[1]: r for r in _by_head(tables(page), ["parameter", "symbol", "gear 1", "gear 2", "unit"])[1:]}
+    cos_a = math.cos(math.radians(20.0))
+    for col, (upper, lower) in ((2, (shop.a_sne1, shop.a_sni1)), (3, (shop.a_sne2, shop.a_sni2))):
+        nominal, dev = block["W_k"][col].split(" ", 1)
+        hi, lo = (float(v) for v in dev.strip("()").split(" / "))
+        assert (hi, lo) == (pytest.approx(upper * cos_a, abs=1e-4), pytest.approx(lower * cos_a, abs=1e-4))
+    assert block["a_w"][2].endswith("(+0.0320 / -0.0320)")
+    # without a manufactured state the sizes are nominal and say so
+    assert "Control sizes: nominal, no tooth-thickness allowance assumed" in drive_report_html(an, pictures=False)
