@@ -104,3 +104,68 @@ def test_the_pair_report_method_is_deprecated_and_still_writes(tmp_path):
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
                          env={"PYTHONPATH": str(PKG.parent), "PATH": ""}).stdout
     assert out.strip() == "[]"
+
+
+def _import_graph() -> dict:
+    """module -> the package modules its import statements (anywhere in it) name, e.g. geardesign.gears.pair."""
+    mods = {}
+    for f in PKG.rglob("*.py"):
+        parts = list(f.relative_to(PKG.parent).with_suffix("").parts)
+        mods[".".join(parts[:-1] if parts[-1] == "__init__" else parts)] = f
+
+    def resolve(name):
+        while name and name not in mods:
+            name = name.rsplit(".", 1)[0] if "." in name else ""
+        return name
+
+    graph = {}
+    for m, f in mods.items():
+        pkg = m if f.name == "__init__.py" else m.rsplit(".", 1)[0]
+        found = set()
+        for n in ast.walk(ast.parse(f.read_text(encoding="utf-8"))):
+            if isinstance(n, ast.Import):
+                names = [a.name for a in n.names]
+            elif isinstance(n, ast.ImportFrom):
+                base = (".".join(pkg.split(".")[: len(pkg.split(".")) - n.level + 1] + ([n.module] if n.module else []))
+                        if n.level else n.module or "")
+                names = [base] + [f"{base}.{a.name}" for a in n.names]
+            else:
+                continue
+            found |= {resolve(t) for t in names if t.startswith("geardesign")}
+        graph[m] = found - {m, "", "geardesign"}
+    return graph
+
+
+def _cycles(graph: dict) -> list:
+    """The import circles: strongly connected components of more than one module (Tarjan)."""
+    index, low, stack, on, out = {}, {}, [], set(), []
+
+    def visit(v):
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        on.add(v)
+        for w in graph.get(v, ()):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            comp = []
+            while not comp or comp[-1] != v:
+                comp.append(stack.pop())
+                on.discard(comp[-1])
+            if len(comp) > 1:
+                out.append(sorted(comp))
+
+    for v in list(graph):
+        if v not in index:
+            visit(v)
+    return out
+
+
+def test_no_import_circle():
+    # issue 36 §4: GearPair.report's import of scene/html.py closed a circle of 12 modules (gears, drives, scene)
+    assert _cycles(_import_graph()) == []
+    # the finder sees such a circle: pair -> scene.html -> pair
+    assert _cycles({"a.pair": {"a.html"}, "a.html": {"a.pair", "a.x"}, "a.x": set()}) == [["a.html", "a.pair"]]
