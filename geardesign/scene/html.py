@@ -281,7 +281,8 @@ def _two_columns(head: list, rows: list) -> str:
 def strength_html(r, load, level: int = 3) -> list:
     """A :class:`~geardesign.StrengthResult` as page parts: the load, the inputs it was computed with, the
     governing check, S, σ and σ_P per gear, the notes and the factor table (each factor with its clause)."""
-    check, margin = r.governing
+    finite = [v for v in r.margins.values() if math.isfinite(v)]
+    check, margin = r.governing if finite else (None, math.nan)
     verdict = "holds" if r.ok else "FAILS"
     rows = [[_td(name), _td(_fmt("{:.4g}", a), "num"), _td(_fmt("{:.4g}", b), "num"), _td(_fmt("{:.4g}", lo), "num")]
             for name, a, b, lo in (("safety S<sub>H</sub> (contact)", r.S_H1, r.S_H2, r.S_Hmin),
@@ -295,7 +296,8 @@ def strength_html(r, load, level: int = 3) -> list:
     case = strength_case_rows(r)
     return [f"<p>{load.torque_nm:.6g} N·m at {load.n_rpm:.6g} rpm on gear {load.on_gear} ({load.power_kw:.4g} kW), "
             f"K<sub>A</sub> = {load.application_factor:g}, life " + (f"{load.life_h:g} h" if load.life_h else "endurance")
-            + f". Governing: {_GOVERNING[check]}, margin {margin:+.4f} ({verdict}).</p>",
+            + (f". Governing: {_GOVERNING[check]}, margin {margin:+.4f} ({verdict}).</p>" if check else
+               ". No safety factor could be computed (see the notes).</p>"),
             *([f"<{h}>Strength inputs</{h}>", _two_columns(["input", "symbol", "unit", "gear 1", "gear 2"], case)]
               if case else []),
             f"<{h}>Safety factors and stresses</{h}>", _table(["", "gear 1", "gear 2", "minimum"], rows),
@@ -340,10 +342,11 @@ def _stage_overview(an) -> str:
                          for k, v in s.items() if k not in ("name", "kind", "ratio", "efficiency"))
         r = st.get("strength")
         if r is not None:
-            check, margin = r.governing
+            finite = any(math.isfinite(v) for v in r.margins.values())
+            check, margin = r.governing if finite else (None, math.nan)
             strength = [_td(html.escape(_materials(r))), _td(_fmt("{:.4g}", min(r.S_H1, r.S_H2)), "num"),
                         _td(_fmt("{:.4g}", r.S_F1), "num"), _td(_fmt("{:.4g}", r.S_F2), "num"),
-                        _td(f"{_GOVERNING[check]} ({margin:+.4f})")]
+                        _td(f"{_GOVERNING[check]} ({margin:+.4f})" if check else "–")]
         else:
             strength = [_td("–")] * 5
         rows.append([_td(html.escape(str(s["name"]))), _td(s["kind"]), _td(_fmt("{:.5g}", s["ratio"]), "num"),
