@@ -18,6 +18,8 @@ SCALE_PT = 54.0      # points per diagram unit at the default size (a gear's lar
 _PAD = 0.12          # diagram units kept free between a band of labels and the next (and between levels)
 _GAP = 0.3           # ... and between two labels side by side (closer, "0.98 u 3.4" reads as one label)
 _TITLE_PT = 9
+_BOX_PT = 8          # the font size of the text in a box
+_CHAR_EM = 0.62      # a character's mean width in DejaVu Sans, in ems (for wrapping a box's text)
 
 
 class Canvas:
@@ -34,11 +36,16 @@ class Canvas:
         self.x_lo, self.x_hi = min(self.x_lo, x0), max(self.x_hi, x1)
 
     def box(self, x, w, h, color, text):
-        """A rounded box from x, w wide and h high about the centre line, with ``text`` inside."""
+        """A rounded box from x, w wide and h high about the centre line, with ``text`` inside (its lines
+        wrapped at the words to the box's width at the default scale)."""
+        import textwrap
+
         from matplotlib.patches import FancyBboxPatch
 
         self.ax.add_patch(FancyBboxPatch((x, self.y0 - h / 2), w, h, boxstyle="round,pad=0.02", fc=color, ec="k", lw=1))
-        self.ax.text(x + w / 2, self.y0, text, ha="center", va="center", fontsize=8)
+        chars = max(6, int(w * SCALE_PT / (_CHAR_EM * _BOX_PT)))     # the characters one line of the box holds
+        text = "\n".join(textwrap.fill(line, chars, break_on_hyphens=False) for line in text.split("\n"))
+        self.ax.text(x + w / 2, self.y0, text, ha="center", va="center", fontsize=_BOX_PT)
         self._span(x - 0.02, x + w + 0.02, self.y0 - h / 2 - 0.02, self.y0 + h / 2 + 0.02)
 
     def circle(self, xc, r, color, **kw):

@@ -66,7 +66,7 @@ def _three_gears():
 def _motor_chain():
     return gd.Drive(power_kw=4, n_in_rpm=1500, stages=[
         gd.GivenStage(12.5, 0.87, "gear motor"), gd.ChainStage(catalog="gost13568", z1=13, z2=13),
-        gd.GivenStage(2, 0.95, "belt")], shafts=[gd.Shaft(60, 50, at=1), gd.Shaft(60, 50, at=2)])
+        gd.GivenStage(2, 0.95, "belt drive with a longer name")], shafts=[gd.Shaft(60, 50, at=1), gd.Shaft(60, 50, at=2)])
 
 
 def _extents(ax):
@@ -95,6 +95,9 @@ def test_no_label_overlaps_at_the_default_size(make):
     touching = [(a, b) for i, (a, ea) in enumerate(labels) for b, eb in labels[i + 1:] if ea.overlaps(eb)]
     assert not touching, touching
     inside = [t for t, e in labels if any(b.contains((e.x0 + e.x1) / 2, (e.y0 + e.y1) / 2) for b in boxes)]
+    # a box's text stays in its box (a long name is wrapped)
+    assert all(any(b.x0 <= e.x0 and e.x1 <= b.x1 and b.y0 <= e.y0 and e.y1 <= b.y1 for b in boxes)
+               for t, e in labels if t in inside)
     free = [(t, e) for t, e in labels if t not in inside]
     assert not [(t, w) for t, e in free for w in wheels if e.overlaps(w)]
     assert not [(b, w) for b in boxes for w in wheels if b.overlaps(w)]
