@@ -153,7 +153,7 @@ def run(args) -> int:
     return 0 if ok else 1
 
 
-def factor_columns(result) -> "pd.DataFrame":
+def factor_columns(result):
     """A StrengthResult's factor table one row per symbol: ``symbol, pair, gear 1, gear 2, clause`` (the value of a
     pair factor under ``pair``, a per-gear factor under its gear), in the order of the factor chain."""
     import pandas as pd
