@@ -564,11 +564,14 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
 def strength_case(material, material2=None, **options) -> dict:
     """The inputs a :class:`StrengthResult` names (:func:`~.result.load_case`: each gear's material with σ_Hlim
     and σ_Flim, the accuracy grade, ν40, Rz) from the arguments of :func:`strength` (``options`` as
-    :func:`pair_strength` takes them; the others are ignored, the defaults filled in)."""
+    :func:`pair_strength` takes them, loose or grouped in one ``options`` object with those attributes; the others
+    are ignored, the defaults filled in)."""
     mat1 = _material(material, "material")
+    group = options.get("options")
+    pick = (lambda k, d: options.get(k, d)) if group is None else (lambda k, d: getattr(group, k, d))
     return load_case(mat1, mat1 if material2 is None else _material(material2, "material2"),
-                     *(options.get(k, d) for k, d in (("accuracy_grade", dflt.ACCURACY_GRADE), ("nu40", dflt.NU40_MM2_S),
-                                                      ("Rz_flank_um", dflt.RZ_FLANK_UM), ("Rz_root_um", dflt.RZ_ROOT_UM))))
+                     *(pick(k, d) for k, d in (("accuracy_grade", dflt.ACCURACY_GRADE), ("nu40", dflt.NU40_MM2_S),
+                                               ("Rz_flank_um", dflt.RZ_FLANK_UM), ("Rz_root_um", dflt.RZ_ROOT_UM))))
 
 
 # the keywords of pair_strength a caller's options may set (the design and the load case are given apart)

@@ -30,3 +30,14 @@ def test_the_case_reproduces_the_permissible_stresses(grade, nu40, rz):
               * _factor(r, "Y_RrelT", k) * _factor(r, "Y_X", k) / r.S_Fmin)
         assert math.isclose(fp, getattr(r, f"sigma_FP{k}"), rel_tol=1e-12)
     assert r.to_dict()["case"] == c
+
+
+def test_the_case_reads_options_grouped_in_one_object():
+    # the strength options may come grouped in one object (pair_strength's options=); the case reads them there
+    from types import SimpleNamespace
+
+    from geardesign.gears.strength.chain import strength_case
+
+    c = strength_case("42CrMo4", options=SimpleNamespace(accuracy_grade=5, nu40=320.0, Rz_flank_um=2.0, Rz_root_um=8.0))
+    assert (c["accuracy_grade"], c["nu40_mm2_s"], c["Rz_flank_um"], c["Rz_root_um"]) == (5, 320.0, 2.0, 8.0)
+    assert strength_case("42CrMo4", accuracy_grade=8)["accuracy_grade"] == 8
