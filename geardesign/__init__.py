@@ -24,6 +24,8 @@ a scene loads only what its sections need.
 """
 import importlib
 
+from . import writers     # a registry in the bottom layer (errors only): the package's import stays light
+
 __version__ = "0.1.0"
 
 # public name -> module that defines it
@@ -66,6 +68,15 @@ _MODULES = {
 }
 
 __all__ = sorted(_NAMES) + sorted(_MODULES)
+
+
+def _pair_report(pair, path, overwrite=False, **limits):
+    """:func:`geardesign.scene.html.pair_report`, loaded on its first call (for ``GearPair.report``)."""
+    return __getattr__("pair_report")(pair, path, overwrite=overwrite, **limits)
+
+
+# the writer a lower object reaches by name: registered here, above every layer, so no layer imports upward
+writers.register("pair_report", _pair_report)
 
 
 def __getattr__(name):

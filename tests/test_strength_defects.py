@@ -197,7 +197,7 @@ def test_a_pairs_checks_and_report_take_a_width_as_a_0d_array(width, tmp_path):
     assert t.loc["contact_strength", "value"] == pytest.approx(
         min(pair.strength(LOAD, "42CrMo4", face_width_mm=100.0).S_H1,
             pair.strength(LOAD, "42CrMo4", face_width_mm=100.0).S_H2), rel=1e-12)
-    assert pair.report(tmp_path / "r.html", load=LOAD, material="42CrMo4", face_width_mm=width).exists()
+    assert gd.pair_report(pair, tmp_path / "r.html", load=LOAD, material="42CrMo4", face_width_mm=width).exists()
 
 
 @pytest.mark.parametrize("call", ["strength", "checks"])

@@ -144,9 +144,40 @@ def run(args) -> int:
         for st in an.stages:     # a gear stage sized by its load shows its module and face width here
             print_wrapped("  " + ", ".join(f"{k} = {v:.6g}" if isinstance(v, float) else f"{k} = {v}"
                                            for k, v in st["summary"].items()))
+        _print_strength(an)
         print()
         print_frame(an.checks, title="checks:")
         if len(an.keys):
             print()
             print_frame(an.keys.drop(columns=["message"]), title="keys:")
     return 0 if ok else 1
+
+
+def factor_columns(result):
+    """A StrengthResult's factor table one row per symbol: ``symbol, pair, gear 1, gear 2, clause`` (the value of a
+    pair factor under ``pair``, a per-gear factor under its gear), in the order of the factor chain."""
+    import pandas as pd
+
+    f = result.factors
+    rows = {}
+    for sym, gear, value, clause in f.itertuples(index=False, name=None):
+        row = rows.setdefault(sym, {"symbol": sym, "pair": None, "gear 1": None, "gear 2": None, "clause": clause})
+        row[("pair", "gear 1", "gear 2")[int(gear)]] = value
+    return pd.DataFrame(list(rows.values()))
+
+
+def _print_strength(an) -> None:
+    """Per gear stage with a material: its ISO 6336 result at the flow into it (material with σ_Hlim and σ_Flim,
+    S_H, S_F, σ_H, σ_F, the governing check) and its factor table (issue 35 §6)."""
+    for st in an.stages:
+        r = st.get("strength")
+        if r is None:
+            continue
+        flow = st["flow"]
+        print()
+        name = st["summary"]["name"]
+        print_wrapped(f"strength of stage '{name}' (ISO 6336 at {flow.torque_in_nm:.6g} N·m, {flow.n_in_rpm:.6g} "
+                      f"rpm on its pinion):")
+        print(repr(r))
+        print_frame(factor_columns(r).drop(columns="clause"),
+                    title=f"factors of stage '{name}' (each with its clause: --json, --report):")

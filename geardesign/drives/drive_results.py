@@ -21,7 +21,9 @@ class DriveAnalysis(Result):
     whole drive (item, check, margin, ok); ``keys``: one row per keyed hub; ``stages``: per stage
     its result (GearPair and its checks, ChainDesign and the chosen row, or the given unit) and
     ``flow``, the :class:`~geardesign.drives.stage_kinds.StageFlow` through it (speed and torque in
-    and out: what a load-based check of the stage reads);
+    and out: what a load-based check of the stage reads), and for a gear stage with a material
+    ``strength``, its :class:`~geardesign.gears.strength.StrengthResult` at that flow (``to_dict`` gives it
+    with each stage's summary);
     ``min_margin`` and ``limiting``: the smallest margin of the drive and its item and check.
     """
 
@@ -45,7 +47,7 @@ class DriveAnalysis(Result):
         return plain({"status": self.status, "success": self.success, "message": self.message,
                       "total_ratio": self.total_ratio, "min_margin": self.min_margin, "limiting": self.limiting,
                       "size_mm2": self.size_mm2, "mass_kg": self.mass_kg, "flow": self.flow, "checks": self.checks,
-                      "keys": self.keys, "stages": [s["summary"] for s in self.stages]})
+                      "keys": self.keys, "stages": [_stage_dict(s) for s in self.stages]})
 
     def __repr__(self) -> str:
         with pd.option_context("display.width", 160, "display.max_columns", 20):
@@ -61,6 +63,15 @@ class DriveAnalysis(Result):
     def plot(self, ax=None):
         """The drive's diagram (input, stages, shafts with n and T, keys): a matplotlib Axes."""
         return plot_drive(self, ax=ax)
+
+
+def _stage_dict(stage: dict) -> dict:
+    """A stage's summary; a gear stage with a material also its ISO 6336 result (material with σ_Hlim, σ_Flim,
+    S_H, S_F, σ_H, σ_F, the governing check, the factor table: :meth:`StrengthResult.to_dict`)."""
+    out = dict(stage["summary"])
+    if stage.get("strength") is not None:
+        out["strength"] = stage["strength"].to_dict()
+    return out
 
 
 @dataclass(frozen=True, eq=False)

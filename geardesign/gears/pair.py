@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -9,6 +10,7 @@ import numpy as np
 from . import checks as _checks
 from ..errors import GearDesignError
 from ..validate import hint_unknown_arguments, ndim, one_number, require_positive, require_range
+from ..writers import writer
 from .geometry import (X_ABS_MAX, Geometry, center_distance_from_x_sum, mesh_geometry,
                        mesh_geometry_float, min_center_distance, validate_geometry, validate_inputs,
                        x_sum_from_center_distance)
@@ -209,13 +211,14 @@ class GearPair:
         return _checks.CenterDistance(limit=a_housing, tol_mm=housing_tol_mm, label=label)
 
     def report(self, path, overwrite: bool = False, **limits):
-        """Write the pair's one-page calculation report (self-contained, printable HTML: inputs, geometry
-        gear 1 | gear 2, checks verdict first, blocking contour, meshing drawing) to ``path``: the same as
-        :func:`geardesign.pair_report`. The one call of this layer into a higher one (the report draws the
-        contour and the mesh), made on call so that importing the gears never loads the scene layer."""
-        from ..scene.html import pair_report
+        """Deprecated: use :func:`geardesign.pair_report` (``gd.pair_report(pair, path, ...)``), which this calls.
 
-        return pair_report(self, path, overwrite=overwrite, **limits)
+        The report draws on the layers above the gears (the contour, the mesh), and a layer imports only
+        downward: the report is a function of the scene layer taking a pair. This method reaches it through
+        the writer the package registers (:mod:`geardesign.writers`), with a FutureWarning."""
+        warnings.warn("GearPair.report(path, ...) is deprecated; use geardesign.pair_report(pair, path, ...)",
+                      FutureWarning, stacklevel=2)
+        return writer("pair_report")(self, path, overwrite=overwrite, **limits)
 
     def ok(self, **limits) -> bool:
         """True when every check of :meth:`checks` holds."""

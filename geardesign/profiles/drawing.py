@@ -47,9 +47,11 @@ def contact_points(geo: dict) -> dict:
     return out
 
 
-def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60, cutter=None):
+def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60, cutter=None, checks=None):
     """Draw the meshing picture of a :class:`~geardesign.gears.pair.GearPair` (returns the axes); a
-    ring (internal pair) as the shaper ``cutter`` generates it (default: the checks' cutter)."""
+    ring (internal pair) as the shaper ``cutter`` generates it (default: the checks' cutter). The title's
+    last line is the verdict of ``checks`` (a table of :meth:`GearPair.checks`: the caller's limits and
+    load case), by default of the checks under the default limits."""
     import matplotlib.pyplot as plt
 
     pair = require_pair(pair)
@@ -79,7 +81,7 @@ def plot_mesh(pair, ax=None, roll_deg: float = 0.0, points: int = 60, cutter=Non
                  + ("\n" if long else ": ")
                  + f"α_w = {float(geo['alpha_w_deg']):.4g}°, a_w = {a_w:.6g} mm, ε_α = {float(geo['eps_alpha']):.4g}"
                  + (f", ring cut by a z0 = {p2.z0} shaper at a_w0 = {p2.a_w0_mm:.5g} mm" if internal else "")
-                 + "\n" + verdict_text(pair),
+                 + "\n" + verdict_text(pair, checks),
                  fontsize=10)
     ax.legend(loc="upper left", fontsize=7, framealpha=0.9)
     return ax
@@ -140,12 +142,14 @@ def _draw_line_of_action(ax, c: dict, internal: bool) -> None:
         ax.annotate(name, pt, textcoords="offset points", xytext=offset, fontsize=9)
 
 
-def verdict_text(pair) -> str:
-    """"every check holds" or "FAILS contact_ratio (1.153 < 1.2), ..." under the default limits."""
-    table = pair.checks()
-    bad = table.loc[~table["ok"]]
+def verdict_text(pair, table=None) -> str:
+    """"every check holds" or "FAILS contact_ratio (1.153 vs limit 1.2), ..." of ``table`` (a checks table of
+    the pair), by default under the default limits."""
+    given = table is not None
+    table = pair.checks() if table is None else table
+    bad = table.loc[~table["ok"].astype(bool)]
     if bad.empty:
-        return "every check holds (default limits)"
+        return f"every check holds ({len(table)} checks)" if given else "every check holds (default limits)"
     return "FAILS " + ", ".join(f"{r['check']} ({float(r['value']):.4g} vs limit {float(r['limit']):.4g})"
                                 for _, r in bad.iterrows())
 

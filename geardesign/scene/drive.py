@@ -106,7 +106,9 @@ def compute_drive(section: dict, progress=None):
 
 
 def run_drive(rep, section: dict) -> None:
-    """The [drive] section into the report: the flow, the diagram, each stage, the keys, the alternatives."""
+    """The [drive] section into the report: the flow, the diagram, each stage (a gear stage with a material with
+    its strength and factor table), the keys, the alternatives."""
+    from ..gears.strength.result import case_text
 
     drive, motor, opt, an = compute_drive(section)
     rep.results["drive"] = {"optimum": opt, "analysis": an, "motor": motor}
@@ -127,15 +129,24 @@ def run_drive(rep, section: dict) -> None:
     rep.tables["drive_flow"] = an.flow
     rep.tables["drive_checks"] = an.checks
     rep.tables["drive_keys"] = an.keys
-    plt = pyplot()
-    fig, ax = plt.subplots(figsize=(2.2 + 2.4 * len(an.stages), 4.0))
-    an.plot(ax=ax)
-    rep.figures["drive_diagram"] = fig
+    pyplot()     # the non-interactive backend before the diagram makes its figure
+    rep.figures["drive_diagram"] = an.plot().figure       # at its default size: sized to its labels
     md += ["### Power flow", "", an.message + ".", "", md_table(an.flow), "",
            "![drive diagram](drive_diagram.png)", "", "### Stages", ""]
     for st in an.stages:
         s = st["summary"]
         md += ["- " + ", ".join(f"{k} = {v:.6g}" if isinstance(v, float) else f"{k} = {v}" for k, v in s.items())]
+    for st in an.stages:          # a gear stage with a material: its strength at the flow into it
+        r = st.get("strength")
+        if r is None:
+            continue
+        name, (check, margin) = st["summary"]["name"], r.governing
+        rep.tables["drive_strength_" + "".join(c if c.isalnum() else "_" for c in str(name))] = r.factors
+        md += ["", f"### Strength of stage '{name}' (ISO 6336:2019)", "",
+               f"{'; '.join(case_text(r.case)) if r.case else ''}. S_H = {r.S_H1:.4g} / {r.S_H2:.4g} "
+               f"(S_Hmin {r.S_Hmin:g}), S_F = {r.S_F1:.4g} / {r.S_F2:.4g} (S_Fmin {r.S_Fmin:g}); σ_H = {r.sigma_H1:.4g} / "
+               f"{r.sigma_H2:.4g} MPa, σ_F = {r.sigma_F1:.4g} / {r.sigma_F2:.4g} MPa; governing {check} "
+               f"(margin {margin:+.4f}).", "", md_table(r.factors)]
     md += ["", "### Checks of the whole drive", "", md_table(an.checks), "", "### Keys", "",
            md_table(an.keys.drop(columns=["message"])), ""]
     md += [f"- {r['name']}: {r['message']}" for _, r in an.keys.iterrows()] + [""]

@@ -29,6 +29,7 @@ __all__ = ["pair_report", "pair_report_html", "drive_report", "drive_report_html
 _CSS = """
 body { font: 13px/1.35 "DejaVu Sans", Arial, sans-serif; color: #111; margin: 18px auto; max-width: 1060px; }
 h1 { font-size: 19px; margin: 0 0 4px; } h2 { font-size: 15px; margin: 16px 0 6px; border-bottom: 1px solid #999; }
+h3 { font-size: 14px; margin: 12px 0 4px; } h4 { font-size: 13px; margin: 8px 0 3px; }
 .verdict { padding: 6px 10px; border-radius: 4px; font-weight: bold; margin: 6px 0 10px; }
 .verdict.ok { background: #dff0d8; border: 1px solid #3c763d; color: #2b542c; }
 .verdict.fail { background: #f2dede; border: 1px solid #a94442; color: #843534; }
@@ -108,9 +109,10 @@ def _png(fig) -> str:
     return "data:image/png;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
 
 
-def _pictures(pair: GearPair, lim: _Limits) -> tuple[str, str, object]:
+def _pictures(pair: GearPair, lim: _Limits, table) -> tuple[str, str, object]:
     """(contour PNG, mesh PNG, the optimum) of the pair: its region with the pair and the optimum
-    marked (on the housing's a_w line when one is given), and its meshing drawing."""
+    marked (on the housing's a_w line when one is given), and its meshing drawing titled with the
+    verdict of the report's own checks ``table`` (its limits and load case)."""
     from ..profiles.drawing import plot_mesh
     from ..shifts.optimize import optimize_shifts
     from ..shifts.region import feasible_region
@@ -122,7 +124,7 @@ def _pictures(pair: GearPair, lim: _Limits) -> tuple[str, str, object]:
     opt = optimize_shifts(pair.z1, pair.z2, checks=checks, m=pair.m, a_w=lim.housing_a_w, **kind)
     ax = region.plot(optimum=opt if opt.success else None, proposed=(pair.x1, pair.x2), x_sum=opt.x_sum_fixed)
     contour = _png(ax.figure)
-    mesh = _png(plot_mesh(pair).figure)
+    mesh = _png(plot_mesh(pair, checks=table).figure)
     return contour, mesh, opt
 
 
@@ -222,7 +224,7 @@ def pair_report_html(pair: GearPair, eps_alpha_min: float = DEFAULT_EPS_ALPHA_MI
              f'<p class="small">geardesign {__version__}. Geometry: ISO 21771:2007; GOST 16532-70 (external), '
              "GOST 19274-73 (internal). Margins are dimensionless, ≥ 0 where a check holds.</p>"]
     if pictures:
-        contour, mesh, opt = _pictures(pair, lim)
+        contour, mesh, opt = _pictures(pair, lim, table)
         best = (f"the optimum of {opt.objective} x<sub>1</sub> = {opt.x1:.4f}, x<sub>2</sub> = {opt.x2:.4f} (star)"
                 if opt.success else "no feasible optimum")
         parts += ['<h2 class="pictures">Pictures</h2><div class="figs">',
@@ -240,7 +242,48 @@ def _strength_part(pair: GearPair, load_case: dict) -> list:
         return []
     r = pair.strength(load_case["load"], load_case.get("material"), material2=load_case.get("material2"),
                       face_width_mm=load_case.get("face_width_mm"), **(load_case.get("strength") or {}))
-    load = load_case["load"]
+    return ["<h2>Load capacity (ISO 6336:2019)</h2>", *strength_html(r, load_case["load"])]
+
+
+_GOVERNING = {"contact1": "contact (pitting), gear 1", "contact2": "contact (pitting), gear 2",
+              "root1": "tooth root, gear 1", "root2": "tooth root, gear 2"}
+
+
+def strength_case_rows(r) -> list[tuple]:
+    """(input, symbol, unit, gear 1, gear 2) of what a :class:`~geardesign.StrengthResult` was computed with:
+    each gear's material and its σ_Hlim, σ_Flim (ISO 6336-5), the accuracy grade, the lubricant and the
+    roughness (one value for both gears: gear 2 None); with the factor table, enough to compute σ_HP
+    (= σ_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X / S_Hmin) and σ_FP again."""
+    c = r.case or {}
+    if not c:
+        return []
+    return [("material", "", "", c["material1"], c["material2"]),
+            ("contact endurance limit", "σ<sub>Hlim</sub>", "MPa", f"{c['sigma_Hlim1_mpa']:g}", f"{c['sigma_Hlim2_mpa']:g}"),
+            ("bending endurance limit", "σ<sub>Flim</sub>", "MPa", f"{c['sigma_Flim1_mpa']:g}", f"{c['sigma_Flim2_mpa']:g}"),
+            ("accuracy grade (ISO 1328-1:1995)", "Q", "–", f"{c['accuracy_grade']}", None),
+            ("lubricant viscosity at 40 °C", "ν<sub>40</sub>", "mm²/s", f"{c['nu40_mm2_s']:g}", None),
+            ("flank roughness (mean of both flanks)", "R<sub>z</sub>", "µm", f"{c['Rz_flank_um']:g}", None),
+            ("root roughness", "R<sub>z,root</sub>", "µm", f"{c['Rz_root_um']:g}", None),
+            ("minimum safety factors", "S<sub>Hmin</sub>, S<sub>Fmin</sub>", "–", f"{r.S_Hmin:g}, {r.S_Fmin:g}", None)]
+
+
+def _two_columns(head: list, rows: list) -> str:
+    """A (name, symbol, unit, gear 1, gear 2) table; gear 2 None spans both gear columns."""
+    out = []
+    for name, sym, unit, v1, v2 in rows:
+        cells = [_td(html.escape(name)), _td(sym), _td(unit)]
+        cells += ([_td(html.escape(str(v1)), "num"), _td(html.escape(str(v2)), "num")] if v2 is not None else
+                  [f'<td class="num span" colspan="2">{html.escape(str(v1))}</td>'])
+        out.append(cells)
+    return _table(head, out)
+
+
+def strength_html(r, load, level: int = 3) -> list:
+    """A :class:`~geardesign.StrengthResult` as page parts: the load, the inputs it was computed with, the
+    governing check, S, σ and σ_P per gear, the notes and the factor table (each factor with its clause)."""
+    finite = [v for v in r.margins.values() if math.isfinite(v)]
+    check, margin = r.governing if finite else (None, math.nan)
+    verdict = "holds" if r.ok else "FAILS"
     rows = [[_td(name), _td(_fmt("{:.4g}", a), "num"), _td(_fmt("{:.4g}", b), "num"), _td(_fmt("{:.4g}", lo), "num")]
             for name, a, b, lo in (("safety S<sub>H</sub> (contact)", r.S_H1, r.S_H2, r.S_Hmin),
                                    ("safety S<sub>F</sub> (root)", r.S_F1, r.S_F2, r.S_Fmin),
@@ -249,11 +292,17 @@ def _strength_part(pair: GearPair, load_case: dict) -> list:
                                    ("σ<sub>F</sub>, MPa", r.sigma_F1, r.sigma_F2, None),
                                    ("σ<sub>FP</sub>, MPa", r.sigma_FP1, r.sigma_FP2, None))]
     notes = "".join(f"<li>{html.escape(n)}</li>" for n in r.notes)
-    return [f"<h2>Load capacity (ISO 6336:2019)</h2><p>{load.torque_nm:.6g} N·m at {load.n_rpm:.6g} rpm on gear "
-            f"{load.on_gear} ({load.power_kw:.4g} kW), K<sub>A</sub> = {load.application_factor:g}, life "
-            + (f"{load.life_h:g} h" if load.life_h else "endurance") + ".</p>",
-            _table(["", "gear 1", "gear 2", "minimum"], rows), f"<ul>{notes}</ul>" if notes else "",
-            "<h3>Factors (gear 0: the pair)</h3>", _frame(r.factors, {"value": "{:.6g}"})]
+    h = f"h{level}"
+    case = strength_case_rows(r)
+    return [f"<p>{load.torque_nm:.6g} N·m at {load.n_rpm:.6g} rpm on gear {load.on_gear} ({load.power_kw:.4g} kW), "
+            f"K<sub>A</sub> = {load.application_factor:g}, life " + (f"{load.life_h:g} h" if load.life_h else "endurance")
+            + (f". Governing: {_GOVERNING[check]}, margin {margin:+.4f} ({verdict}).</p>" if check else
+               ". No safety factor could be computed (see the notes).</p>"),
+            *([f"<{h}>Strength inputs</{h}>", _two_columns(["input", "symbol", "unit", "gear 1", "gear 2"], case)]
+              if case else []),
+            f"<{h}>Safety factors and stresses</{h}>", _table(["", "gear 1", "gear 2", "minimum"], rows),
+            f"<ul>{notes}</ul>" if notes else "",
+            f"<{h}>Factors (gear 0: the pair)</{h}>", _frame(r.factors, {"value": "{:.6g}"})]
 
 
 def pair_report(pair: GearPair, path, overwrite: bool = False, **limits):
@@ -283,10 +332,115 @@ def _analysis(result):
     raise GearDesignError(f"a drive report needs a Drive, DriveAnalysis or DriveOptimum, got {type(result).__name__}")
 
 
+def _stage_overview(an) -> str:
+    """One row per stage: kind, u, η, its design in short, and for a gear stage with a material its strength
+    (material, the smallest S_H, S_F of each gear, the governing check)."""
+    rows = []
+    for st in an.stages:
+        s = st["summary"]
+        rest = ", ".join(f"{k} {_fmt('{:.5g}', v) if isinstance(v, float) else html.escape(str(v))}"
+                         for k, v in s.items() if k not in ("name", "kind", "ratio", "efficiency"))
+        r = st.get("strength")
+        if r is not None:
+            finite = any(math.isfinite(v) for v in r.margins.values())
+            check, margin = r.governing if finite else (None, math.nan)
+            strength = [_td(html.escape(_materials(r))), _td(_fmt("{:.4g}", min(r.S_H1, r.S_H2)), "num"),
+                        _td(_fmt("{:.4g}", r.S_F1), "num"), _td(_fmt("{:.4g}", r.S_F2), "num"),
+                        _td(f"{_GOVERNING[check]} ({margin:+.4f})" if check else "–")]
+        else:
+            strength = [_td("–")] * 5
+        rows.append([_td(html.escape(str(s["name"]))), _td(s["kind"]), _td(_fmt("{:.5g}", s["ratio"]), "num"),
+                     _td(_fmt("{:.3g}", s["efficiency"]), "num"), _td(rest), *strength])
+    return _table(["stage", "kind", "u", "η", "design", "material", "S<sub>H</sub>", "S<sub>F1</sub>",
+                   "S<sub>F2</sub>", "governing (margin)"], rows)
+
+
+def _materials(r) -> str:
+    c = r.case or {}
+    if not c:
+        return "–"
+    return c["material1"] if c["material1"] == c["material2"] else f"{c['material1']} / {c['material2']}"
+
+
+def _data_blocks(pair: GearPair, allowances=None) -> str:
+    """The drawing's data block of both gears (ISO 1340, GOST 2.403: gear, control sizes, reference data) side by
+    side; the control sizes with the stage's shop ``allowances`` (its manufactured state: tooth thickness
+    a_sne/a_sni per gear, centre distance a_ai/a_ae, mm) when the analysis gives them, else nominal."""
+    from ..gears.data_block import data_block
+
+    if allowances is None:
+        a, b = data_block(pair, 1), data_block(pair, 2)
+    else:
+        centre = (allowances.a_ai, allowances.a_ae)
+        a, b = (data_block(pair, g, thickness_allowance_mm=(getattr(allowances, f"a_sne{g}"),
+                                                             getattr(allowances, f"a_sni{g}")),
+                           center_distance_allowance_mm=centre) for g in (1, 2))
+    rows = [[_td(html.escape(str(p))), _td(html.escape(str(sym))), _td(html.escape(str(v1)), "num"),
+             _td(html.escape(str(v2)), "num"), _td(html.escape(str(u)))]
+            for p, sym, v1, v2, u in zip(a["parameter"], a["symbol"], a["value"], b["value"], a["unit"])]
+    return _table(["parameter", "symbol", "gear 1", "gear 2", "unit"], rows)
+
+
+def _chain_part(st: dict) -> list:
+    """A chain stage: the chosen chain and sprockets, the load on the chain and each check's value and limit."""
+    row, design = st["row"], st.get("design")
+    items = [("chain", "", "", str(row["designation"])), ("pitch", "t", "mm", _fmt("{:.4g}", row["pitch_mm"])),
+             ("strands", "", "–", f"{int(row['strands'])}"), ("sprocket teeth", "z<sub>1</sub>, z<sub>2</sub>", "–",
+                                                               f"{int(row['z1'])}, {int(row['z2'])}"),
+             ("links", "", "–", f"{int(row['links'])}"),
+             ("centre distance", "a", "mm", _fmt("{:.1f}", row["center_distance_mm"])),
+             ("sprocket pitch diameters", "d<sub>1</sub>, d<sub>2</sub>", "mm",
+              f"{row['sprocket1_pitch_diameter_mm']:.2f}, {row['sprocket2_pitch_diameter_mm']:.2f}"),
+             ("chain speed", "v", "m/s", _fmt("{:.4g}", row["speed_m_s"])),
+             ("chain pull", "F<sub>t</sub>", "N", _fmt("{:.5g}", row["force_n"])),
+             ("hinge pressure (allowed)", "p ([p])", "MPa",
+              f"{row['pressure_mpa']:.4g} ({row['allowable_pressure_mpa']:.4g})"),
+             ("breaking-load safety (required)", "s ([s])", "–",
+              f"{row['safety_factor']:.4g} ({row['allowable_safety_factor']:.4g})")]
+    if design is not None and getattr(design, "k_e", None) is not None:
+        items.append(("service factor", "K<sub>e</sub>", "–", _fmt("{:.4g}", design.k_e)))
+    margins = [(k[len("margin_"):], row[k]) for k in row.index if str(k).startswith("margin_")]
+    items += [(f"margin: {k}", "", "–", _fmt("{:+.4f}", v)) for k, v in margins]
+    return [_table(["quantity", "symbol", "unit", "value"],
+                   [[_td(html.escape(a)), _td(b), _td(c), _td(html.escape(d), "num")] for a, b, c, d in items])]
+
+
+def _stage_parts(k: int, st: dict) -> list:
+    """The section of stage ``k`` of the reducer: a gear pair's geometry, strength and data block; a chain's
+    design; a bought unit's ratio, efficiency and rating."""
+    s = st["summary"]
+    kinds = {"gear": "gear pair", "chain": "roller chain", "given": "bought unit"}
+    head = f"<h2>Stage {k}, '{html.escape(str(s['name']))}': {html.escape(kinds.get(s['kind'], s['kind']))}</h2>"
+    flow = st.get("flow")
+    at = (f"<p>In: {flow.n_in_rpm:.6g} rpm, {flow.torque_in_nm:.6g} N·m; out: {flow.n_out_rpm:.6g} rpm, "
+          f"{flow.torque_out_nm:.6g} N·m; u = {s['ratio']:.6g}, η = {s['efficiency']:g}.</p>") if flow is not None else ""
+    if s["kind"] == "gear" and isinstance(st.get("pair"), GearPair):
+        pair = st["pair"]
+        parts = [head, at, "<h3>Geometry</h3>", _geometry(pair)]
+        r = st.get("strength")
+        if r is not None:
+            parts += ["<h3>Load capacity (ISO 6336:2019)</h3>",
+                      *strength_html(r, st["stage"].load(flow.torque_in_nm, flow.n_in_rpm), level=4)]
+        else:
+            parts.append("<p>No material given: the stage's strength is not checked.</p>")
+        shop = st.get("allowances")      # the manufactured state the analysis assumed, when it gives one
+        what = (f"Control sizes with the allowances of the manufactured state the checks assumed: "
+                f"{html.escape(shop.describe())}" if shop is not None else
+                "Control sizes: nominal, no tooth-thickness allowance assumed")
+        return parts + [f"<h3>Drawing data</h3><p>{what}.</p>", _data_blocks(pair, shop)]
+    if s["kind"] == "chain" and st.get("row") is not None:
+        return [head, at, *_chain_part(st)]
+    rest = ", ".join(f"{key} {html.escape(str(v))}" for key, v in s.items() if key not in ("name", "kind"))
+    return [head, at, f"<p>{rest}</p>"]
+
+
 def drive_report_html(result, pictures: bool = True) -> str:
-    """The report of a drive as one HTML page: the verdict, every check (the smallest margins
-    first), the power flow, the stages, each gear pair's geometry (gear 1 | gear 2), the keys and
-    the diagram. ``result``: a Drive (analysed here), a DriveAnalysis or a DriveOptimum (its best)."""
+    """The report of a drive (a reducer) as one HTML page: the verdict, the power flow, the stages in short
+    with each gear stage's strength, every check (the smallest margins first), then a section per stage —
+    a gear pair's geometry (gear 1 | gear 2), its ISO 6336 strength (material with σ_Hlim and σ_Flim, S, σ
+    and σ_P per gear, the governing check, the factor table) and the drawing's data block of both gears; a
+    chain's design — the keys and the diagram. ``result``: a Drive (analysed here), a DriveAnalysis or a
+    DriveOptimum (its best)."""
     an = _analysis(result)
     t = an.checks.sort_values("margin", kind="stable")
     rows = [[_td("holds" if r["ok"] else "FAILS", "mark"), _td(html.escape(str(r["item"]))),
@@ -296,21 +450,15 @@ def drive_report_html(result, pictures: bool = True) -> str:
     verdict = (f'<div class="verdict ok">Every check holds ({len(t)} checks); smallest margin '
                f"{an.min_margin:+.4f} ({html.escape(an.limiting)}).</div>" if not failed and an.success else
                f'<div class="verdict fail">FAILS: {"; ".join(failed) or html.escape(an.message)}</div>')
-    stages = []
-    for st in an.stages:
-        s = st["summary"]
-        rest = ", ".join(f"{k} {_fmt('{:.5g}', v) if isinstance(v, float) else html.escape(str(v))}"
-                         for k, v in s.items() if k not in ("name", "kind", "ratio", "efficiency"))
-        stages.append([_td(html.escape(str(s["name"]))), _td(s["kind"]), _td(_fmt("{:.5g}", s["ratio"]), "num"),
-                       _td(_fmt("{:.3g}", s["efficiency"]), "num"), _td(rest)])
-    parts = [f"<h1>Drive u = {an.total_ratio:.5g}</h1>", verdict,
-             "<h2>Checks (smallest margin first; ≥ 0 holds)</h2>",
-             _table(["verdict", "item", "check", "margin"], rows, ["" if r["ok"] else "failrow" for _, r in t.iterrows()]),
+    p_in = an.flow["power_kw"].iloc[0]
+    parts = [f"<h1>Drive u = {an.total_ratio:.5g}: {p_in:.4g} kW at {an.flow['n_rpm'].iloc[0]:.5g} rpm, "
+             f"{len(an.stages)} stage{'s' * (len(an.stages) != 1)}</h1>", verdict,
              "<h2>Power flow</h2>", _frame(an.flow, {"n_rpm": "{:.5g}", "torque_nm": "{:.5g}", "power_kw": "{:.4g}"}),
-             "<h2>Stages</h2>", _table(["stage", "kind", "u", "η", "design"], stages)]
-    for st in an.stages:
-        if st["summary"]["kind"] == "gear" and isinstance(st.get("pair"), GearPair):
-            parts += [f"<h2>Gear stage {html.escape(str(st['summary']['name']))}: geometry</h2>", _geometry(st["pair"])]
+             "<h2>Stages</h2>", _stage_overview(an),
+             "<h2>Checks (smallest margin first; ≥ 0 holds)</h2>",
+             _table(["verdict", "item", "check", "margin"], rows, ["" if r["ok"] else "failrow" for _, r in t.iterrows()])]
+    for k, st in enumerate(an.stages, start=1):
+        parts += _stage_parts(k, st)
     if len(an.keys):
         k = an.keys
         keys = k[["name", "at", "d_mm", "hub_length_mm", "torque_nm"]].assign(
@@ -320,11 +468,16 @@ def drive_report_html(result, pictures: bool = True) -> str:
         parts += ["<h2>Keys</h2>", _frame(keys, {"d_mm": "{:.4g}", "hub_length_mm": "{:.4g}", "torque_nm": "{:.4g}",
                                                  "crush_mpa": "{:.4g}", "shear_mpa": "{:.4g}",
                                                  "margin_crush": "{:+.4f}", "margin_shear": "{:+.4f}"})]
+    from .. import __version__
+    parts.append(f'<p class="small">geardesign {__version__}. Geometry: ISO 21771:2007; strength: ISO 6336-1, -2, -3:2019 '
+                 "(each factor with its clause); data block: ISO 1340:1976, GOST 2.403-75. Margins are dimensionless, "
+                 "≥ 0 where a check holds.</p>")
     if pictures:
         diagram = _png(an.plot().figure)
         parts += ['<h2 class="pictures">Diagram</h2>',
-                  f'<figure id="diagram"><img alt="drive diagram" src="{diagram}" style="width:auto"><figcaption>The drive seen end-on: '
-                  "each dot a shaft with its speed and torque, black squares keyed hubs.</figcaption></figure>"]
+                  f'<figure id="diagram"><img alt="drive diagram" src="{diagram}" style="width:auto;max-width:100%">'
+                  "<figcaption>The drive seen end-on: each dot a shaft with its speed and torque, black squares "
+                  "keyed hubs.</figcaption></figure>"]
     return _page(f"Drive u = {an.total_ratio:.5g}", parts)
 
 

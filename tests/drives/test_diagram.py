@@ -40,3 +40,67 @@ def test_gear_pair_circles_touch_in_the_tooth_ratio(ax):
     (c1, c2) = sorted(circles, key=lambda c: c.center[0])
     assert c2.radius / c1.radius == pytest.approx(50 / 20, rel=1e-12)
     assert c2.center[0] - c1.center[0] == pytest.approx(c1.radius + c2.radius, rel=1e-12)
+
+
+# issue 35 §8: at their default size the diagrams overlapped labels ("u 3.52, η 0.98u 3.385, η 0.98") and a
+# chain's sprocket covered the gear motor's box. Measured by the renderer: no label's box touches another's, no
+# label sits on a wheel, no wheel on a box.
+def _gear_gear_chain():
+    return gd.Drive(power_kw=15, n_in_rpm=1460, stages=[
+        gd.GearStage(3, 21, 74, 0.4, 0.6, face_width_mm=60, name="stage 1"),
+        gd.GearStage(4, 22, 75, 0.4, 0.6, face_width_mm=80, name="stage 2"),
+        gd.ChainStage(catalog="gost13568", z1=17, z2=34, name="chain")],
+        shafts=[gd.Shaft(40, 60, at=1, name="intermediate"), gd.Shaft(60, 80, at=2, name="output"),
+                gd.Shaft(70, 90, at=3, name="conveyor")])
+
+
+def _three_gears():
+    return gd.Drive(power_kw=15, n_in_rpm=1460, stages=[
+        gd.GearStage(2.5, 20, 70, 0.4, 0.6, face_width_mm=45, name="s1"),
+        gd.GearStage(3, 21, 68, 0.4, 0.6, face_width_mm=60, name="s2"),
+        gd.GearStage(5, 22, 65, 0.4, 0.6, face_width_mm=80, name="s3")],
+        shafts=[gd.Shaft(40, 60, at=1, name="s1 out"), gd.Shaft(60, 80, at=2, name="s2 out"),
+                gd.Shaft(90, 110, at=3, name="out")])
+
+
+def _motor_chain():
+    return gd.Drive(power_kw=4, n_in_rpm=1500, stages=[
+        gd.GivenStage(12.5, 0.87, "gear motor"), gd.ChainStage(catalog="gost13568", z1=13, z2=13),
+        gd.GivenStage(2, 0.95, "belt drive with a longer name")], shafts=[gd.Shaft(60, 50, at=1), gd.Shaft(60, 50, at=2)])
+
+
+def _extents(ax):
+    from matplotlib.patches import FancyBboxPatch
+
+    fig = ax.figure
+    fig.canvas.draw()
+    r = fig.canvas.get_renderer()
+    texts = [t for t in [*ax.texts, ax.title] if t.get_text()]
+    boxes = [p.get_window_extent(r) for p in ax.patches if isinstance(p, FancyBboxPatch)]
+    wheels = [p.get_window_extent(r) for p in ax.patches if isinstance(p, Circle)]
+    return [(t.get_text(), t.get_window_extent(r)) for t in texts], boxes, wheels
+
+
+@pytest.mark.parametrize("make", [_gear_gear_chain, _three_gears, _motor_chain])
+def test_no_label_overlaps_at_the_default_size(make):
+    import matplotlib.pyplot as plt
+
+    an = make().analyse()
+    ax = plot_drive(an)
+    try:
+        labels, boxes, wheels = _extents(ax)
+    finally:
+        plt.close(ax.figure)
+    assert len(labels) >= 3 * len(an.stages) + 2
+    touching = [(a, b) for i, (a, ea) in enumerate(labels) for b, eb in labels[i + 1:] if ea.overlaps(eb)]
+    assert not touching, touching
+    inside = [t for t, e in labels if any(b.contains((e.x0 + e.x1) / 2, (e.y0 + e.y1) / 2) for b in boxes)]
+    # a box's text stays in its box (a long name is wrapped)
+    assert all(any(b.x0 <= e.x0 and e.x1 <= b.x1 and b.y0 <= e.y0 and e.y1 <= b.y1 for b in boxes)
+               for t, e in labels if t in inside)
+    free = [(t, e) for t, e in labels if t not in inside]
+    assert not [(t, w) for t, e in free for w in wheels if e.overlaps(w)]
+    assert not [(b, w) for b in boxes for w in wheels if b.overlaps(w)]
+    # the figure holds its content (nothing cut at the edges)
+    fig_box = ax.figure.bbox
+    assert all(fig_box.x0 <= e.x0 and e.x1 <= fig_box.x1 and fig_box.y0 <= e.y0 and e.y1 <= fig_box.y1 for _, e in labels)

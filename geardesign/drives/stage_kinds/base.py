@@ -187,8 +187,15 @@ class StageKind:
         return self.stage_class(**spec)
 
     # -- diagram
+    wheels = False    # draws wheels on its shafts (a bought unit's box sits between them, clear of the neighbours')
+
     def first_offset(self, summary: dict) -> float:
-        """How far right of the input block the first shaft sits when this stage comes first."""
+        """The radius of the wheel this stage draws on its input shaft (how far right of the input block, or
+        of a box before it, that shaft sits)."""
+        return 0.0
+
+    def last_offset(self, summary: dict) -> float:
+        """The radius of the wheel this stage draws on its output shaft (a box after it starts beyond it)."""
         return 0.0
 
     def draw(self, canvas, x: float, summary: dict) -> tuple:

@@ -135,8 +135,13 @@ class ChainKind(ToothedKind):
         return ChainStage(**kw)
 
     # -- diagram
+    wheels = True
+
     def first_offset(self, summary: dict) -> float:
         return 0.35
+
+    def last_offset(self, summary: dict) -> float:
+        return min(0.35 * summary["ratio"], 0.9)
 
     def draw(self, canvas, x: float, summary: dict) -> tuple:
         """Two sprockets and the chain's strands between them."""

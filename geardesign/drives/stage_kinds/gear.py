@@ -659,12 +659,14 @@ class GearKind(ToothedKind):
         """The StrengthResult (the factor table) of the design whose checks were just evaluated on ``pair``: from
         the chain's output the strength checks kept, not a second run of the chain."""
         from ...gears.checks import make_checks
+        from ...gears.strength.chain import strength_case
         from ...gears.strength.result import from_chain
 
         for c in make_checks(**load):
             raw = c.spec.chain_output(pair._geo) if c.costly else None   # the pair's own geometry memo
             if raw is not None:
-                return from_chain(raw, title=f"{pair.z1}/{pair.z2} m={pair.m:g}")
+                return from_chain(raw, title=f"{pair.z1}/{pair.z2} m={pair.m:g}",
+                                  case=strength_case(load["material"], **(load.get("strength") or {})))
         raise GearDesignError(f"stage '{st.name}': the strength of z1/z2 = {pair.z1}/{pair.z2} is undefined at its "
                               f"shifts (outside ISO 6336's range)")
 
@@ -707,15 +709,25 @@ class GearKind(ToothedKind):
         return GearStage(**kw)
 
     # -- diagram
+    wheels = True
+
+    @staticmethod
+    def _radii(summary: dict) -> tuple:
+        """The two circles' radii: in the ratio of the teeth, the larger 0.9."""
+        r1 = 0.9 / max(1.0, summary["ratio"])
+        r2 = r1 * summary["ratio"]
+        return 0.9 * r1 / max(r1, r2), 0.9 * r2 / max(r1, r2)
+
     def first_offset(self, summary: dict) -> float:
-        return 0.9 / max(1.0, summary.get("ratio", 1.0))
+        return self._radii(summary)[0]
+
+    def last_offset(self, summary: dict) -> float:
+        return self._radii(summary)[1]
 
     def draw(self, canvas, x: float, summary: dict) -> tuple:
         """Two meshing circles, radii in the ratio of the teeth."""
         s = summary
-        r1 = 0.9 / max(1.0, s["ratio"])
-        r2 = r1 * s["ratio"]
-        r1, r2 = (0.9 * r1 / max(r1, r2), 0.9 * r2 / max(r1, r2))
+        r1, r2 = self._radii(s)
         for xc, r in ((x, r1), (x + r1 + r2, r2)):
             canvas.circle(xc, r, self.colour, alpha=0.9)
         width = f", b {s['face_width_mm']:g}" if s.get("face_width_mm") is not None else ""   # a stage with a load

@@ -29,7 +29,7 @@ from .load import Load
 from .materials import Material, material as material_by_name
 from .ops import ArrayOps, FloatOps, checked, once, per_load_case
 from .options import GROUPED, StrengthOptions, blank_option, grouped, shaft_option, transverse_option, validate_options
-from .result import StrengthResult, from_chain
+from .result import StrengthResult, from_chain, load_case
 from .root_chain import root_side
 
 __all__ = ["pair_strength", "strength", "chain_geometry", "GIVEN_FACTORS", "STRENGTH_FIELDS", "CHAIN_GEOMETRY_FIELDS"]
@@ -582,7 +582,20 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
     out = pair_strength(pair.m, pair.z1, pair.z2, pair.x1, pair.x2, load=load, material1=material,
                         material2=material2, face_width_mm=b, beta_deg=pair.beta_deg, internal=pair.internal,
                         rack=pair.rack, tip_shortening=pair.tip_shortening, **options)
-    return from_chain(out, title=f"{pair.z1}/{pair.z2} m={pair.m:g}")
+    return from_chain(out, title=f"{pair.z1}/{pair.z2} m={pair.m:g}", case=strength_case(material, material2, **options))
+
+
+def strength_case(material, material2=None, **options) -> dict:
+    """The inputs a :class:`StrengthResult` names (:func:`~.result.load_case`: each gear's material with σ_Hlim
+    and σ_Flim, the accuracy grade, ν40, Rz) from the arguments of :func:`strength` (``options`` as
+    :func:`pair_strength` takes them, loose or grouped in one ``options`` object with those attributes; the others
+    are ignored, the defaults filled in)."""
+    mat1 = _material(material, "material")
+    group = options.get("options")
+    pick = (lambda k, d: options.get(k, d)) if group is None else (lambda k, d: getattr(group, k, d))
+    return load_case(mat1, mat1 if material2 is None else _material(material2, "material2"),
+                     *(pick(k, d) for k, d in (("accuracy_grade", dflt.ACCURACY_GRADE), ("nu40", dflt.NU40_MM2_S),
+                                               ("Rz_flank_um", dflt.RZ_FLANK_UM), ("Rz_root_um", dflt.RZ_ROOT_UM))))
 
 
 # the keywords of pair_strength a caller's options may set (the design and the load case are given apart)

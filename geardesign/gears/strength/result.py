@@ -12,7 +12,7 @@ import pandas as pd
 from ...results import Result, plain
 from .defaults import MIN_SAFETY_SOURCE
 
-__all__ = ["StrengthResult", "FACTOR_TABLE", "from_chain"]
+__all__ = ["StrengthResult", "FACTOR_TABLE", "from_chain", "load_case", "case_text"]
 
 P1, P2, P3 = "ISO 6336-1:2019", "ISO 6336-2:2019", "ISO 6336-3:2019"
 # (symbol, key in the chain's dict, gear (0 = the pair), clause or equation): every clause names its standard and
@@ -84,7 +84,9 @@ class StrengthResult(Result):
     factors; ``sigma_H0`` nominal and ``sigma_H1, sigma_H2`` contact stresses, ``sigma_F1, sigma_F2`` root
     stresses and ``sigma_HP*``, ``sigma_FP*`` permissible stresses (MPa); ``factors`` a DataFrame with columns
     ``symbol, gear, value, clause`` (gear 0 = the pair); ``given`` the factors taken from the caller;
-    ``notes`` the ranges left and limits applied; ``S_Hmin``, ``S_Fmin`` the minimum safety factors."""
+    ``notes`` the ranges left and limits applied; ``S_Hmin``, ``S_Fmin`` the minimum safety factors; ``case`` (from
+    :func:`~geardesign.gears.strength.chain.strength`) what a reader needs to compute σ_HP again: each gear's
+    material with σ_Hlim, σ_Flim, the accuracy grade, the lubricant's ν40 and the flank and root roughness."""
 
     S_H1: float
     S_H2: float
@@ -105,6 +107,7 @@ class StrengthResult(Result):
     given: tuple = ()
     notes: tuple = ()
     title: str = ""
+    case: dict | None = None
     _success_field = "ok"
     _table_fields = ("factors",)
 
@@ -157,6 +160,8 @@ class StrengthResult(Result):
                  f"  {'sigma_F':9}{_col(self.sigma_F1)}{_col(self.sigma_F2)}  MPa",
                  f"  {'sigma_FP':9}{_col(self.sigma_FP1)}{_col(self.sigma_FP2)}  MPa",
                  f"  governing: {what}, margin {margin:+.1%}"]
+        if self.case:
+            lines.extend(f"  {line}" for line in case_text(self.case))
         if self.given:
             lines.append(f"  given: {', '.join(self.given)}")
         lines.extend(f"  note: {n}" for n in self.notes[:3])
@@ -177,6 +182,28 @@ class StrengthResult(Result):
                 f"<th>clause</th></tr>{rows}</table></details><ul>{notes}</ul></div>")
 
 
+def load_case(material1, material2, accuracy_grade, nu40, Rz_flank_um, Rz_root_um) -> dict:
+    """The inputs of a strength result a report names (plain values, JSON-ready): each gear's material name,
+    σ_Hlim and σ_Flim [MPa] (ISO 6336-5, the catalog row), the ISO 1328-1:1995 accuracy grade, ν40 [mm²/s],
+    Rz of flank and root [µm]."""
+    out = {}
+    for k, mat in ((1, material1), (2, material2)):
+        out.update({f"material{k}": mat.name, f"sigma_Hlim{k}_mpa": float(mat.sigma_Hlim_mpa),
+                    f"sigma_Flim{k}_mpa": float(mat.sigma_Flim_mpa)})
+    out.update(accuracy_grade=plain(accuracy_grade), nu40_mm2_s=float(nu40), Rz_flank_um=float(Rz_flank_um),
+               Rz_root_um=float(Rz_root_um))
+    return out
+
+
+def case_text(case: dict) -> list[str]:
+    """Two lines of a :func:`load_case`: the materials with σ_Hlim/σ_Flim; the grade, ν40 and the roughness."""
+    mats = [f"{case[f'material{k}']} (sigma_Hlim {case[f'sigma_Hlim{k}_mpa']:g}, sigma_Flim {case[f'sigma_Flim{k}_mpa']:g} MPa)"
+            for k in (1, 2)]
+    mat = f"material {mats[0]}" if mats[0] == mats[1] else f"materials {mats[0]} / {mats[1]}"
+    return [mat, f"accuracy grade {case['accuracy_grade']} (ISO 1328-1:1995), nu40 {case['nu40_mm2_s']:g} mm2/s, "
+                 f"Rz flank {case['Rz_flank_um']:g} um, root {case['Rz_root_um']:g} um"]
+
+
 def _col(v: float, fmt: str = ".1f") -> str:
     """A right-aligned column of the repr, 10 wide; a number too long for it in 4 significant digits."""
     text = format(v, fmt)
@@ -194,9 +221,9 @@ def _factor_rows(out: dict) -> list:
     return rows
 
 
-def from_chain(out: dict, title: str = "") -> StrengthResult:
+def from_chain(out: dict, title: str = "", case: dict | None = None) -> StrengthResult:
     """The :class:`StrengthResult` of a one-design dict of :func:`~geardesign.gears.strength.chain.pair_strength`
-    (its factor table built when first read)."""
+    (its factor table built when first read); ``case`` the inputs it was computed with (:func:`load_case`)."""
     notes = []
     for flag, text in _FLAG_NOTES.items():
         if flag in out and (out[flag] if type(out[flag]) is bool else bool(np.any(out[flag]))):
@@ -207,7 +234,7 @@ def from_chain(out: dict, title: str = "") -> StrengthResult:
         notes.append(f"{name} given but not used (another given factor or the root method makes it unneeded)")
     fields = {k: _scalar(out[k]) for k in _STRESSES}
     fields.update(S_Hmin=float(out["S_Hmin"]), S_Fmin=float(out["S_Fmin"]), _chain=out,
-                  given=tuple(out.get("given", ())), notes=tuple(notes), title=title)
+                  given=tuple(out.get("given", ())), notes=tuple(notes), title=title, case=case)
     # every field set at once: the frozen dataclass's __init__ sets them one by one through object.__setattr__,
     # which costs as much again as the rest of this function (there is no __post_init__ to skip)
     result = object.__new__(StrengthResult)

@@ -87,6 +87,14 @@ class BeltKind(StageKind):
         return {"d1_mm": dict(kind="float", lo=20.0, hi=2000.0), "d2_mm": dict(kind="float", lo=20.0, hi=2000.0),
                 "efficiency": dict(kind="float", default=0.95, lo=0.3, hi=1.0, lo_open=True)}
 
+    wheels = True                      # two pulleys on the shafts
+
+    def first_offset(self, s):
+        return 0.35
+
+    def last_offset(self, s):
+        return min(0.35 * s["ratio"], 0.9)
+
     def draw(self, canvas, x, s):
         r1 = 0.35
         r2 = min(r1 * s["ratio"], 0.9)
