@@ -149,4 +149,4 @@ def _strength(pair, checks: dict):
     if "load" not in checks:
         return None
     return pair.strength(checks["load"], checks["material"], material2=checks["material2"],
-                         face_width_mm=checks["face_width_mm"])
+                         face_width_mm=checks["face_width_mm"], **checks.get("strength", {}))
