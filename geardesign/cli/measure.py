@@ -75,6 +75,7 @@ def run(args) -> int:
         return 0 if t.ok else 1
     import pandas as pd
 
+    print("OK: every size can be measured." if t.ok else "FAILS: " + "; ".join(t.notes or ("a size is flagged",)))
     kind = ("ring" if t.internal else "gear") + (f", helical beta = {t.beta_deg:g} deg" if t.beta_deg else "")
     print(f"Measuring sizes: {kind}, m = {t.m_n:g} mm, z = {t.z}, x = {t.x:.6g}, "
           f"A_sne / A_sni = {t.a_sne:g} / {t.a_sni:g} mm")

@@ -132,8 +132,8 @@ def run(args) -> int:
             **({"strength": strength.to_dict()} if strength is not None else {}),
         })
         return 1 if failed else 0
-    print(describe(pair, shorten))
     print_verdict(failed, check_details(table))
+    print(describe(pair, shorten))
     print_frame(table[["check", "value", "limit", "margin", "ok", "label"]], "\nChecks (margin >= 0 holds)")
     print_frame(geo.to_table(helical=bool(pair.beta_deg)), "\nGeometry", float_format="{:.8g}")
     if args.measurements:

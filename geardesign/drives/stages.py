@@ -140,7 +140,10 @@ class GearStage:
     :func:`geardesign.drives.stage_kinds.set_sizing`. Without either such a stage is refused by name.
 
     ``life_h`` (None: endurance, Z_NT = Y_NT = 1) and ``application_factor`` (K_A) are the load case of
-    the strength checks of a stage with a ``material``, as in :class:`geardesign.gears.strength.Load`.
+    the strength checks of a stage with a ``material``, as in :class:`geardesign.gears.strength.Load`;
+    ``strength`` a dict of :func:`~geardesign.gears.strength.pair_strength` options for them (``accuracy_grade``,
+    ``nu40``, ``Rz_flank_um``, ``Rz_root_um``, ``S_Hmin``, ``S_Fmin``, ``factors``, ...; None: the model's
+    defaults).
     """
 
     m: float | None = None
@@ -160,6 +163,7 @@ class GearStage:
     material: object = None
     life_h: float | None = None
     application_factor: float = 1.0
+    strength: dict | None = None
 
     kind = "gear"
 
@@ -199,6 +203,12 @@ class GearStage:
         if self.life_h is not None:
             object.__setattr__(self, "life_h", one_number("life_h", require_range(
                 "life_h", self.life_h, *LIFE_RANGE_H, lo_open=True, unit="h")))
+        if self.strength is not None:   # options out of range are refused here, not mid-search
+            if not isinstance(self.strength, dict):
+                raise GearDesignError(f"strength must be a dict of pair_strength options, got "
+                                      f"{type(self.strength).__name__}")
+            from ..gears.strength.chain import check_options   # here: the chain loads the materials catalog
+            object.__setattr__(self, "strength", dict(check_options(self.strength)))
         if self.x1 is not None and self.m is not None:
             self.fixed_pair()          # a fixed pair that cannot be built is refused here
         if self.shift_objective is not None:

@@ -433,7 +433,7 @@ class GearKind(ToothedKind):
         sm = strength_margins(st, st.m, st.width_mm, st.z1, st.z2, pair.x1, pair.x2, flow.torque_in_nm, flow.n_in_rpm)
         out["margins"].update({k: float(v) for k, v in sm.items()})
         out["strength"] = strength(pair, st.load(flow.torque_in_nm, flow.n_in_rpm),
-                                   stage_material(st.material), face_width_mm=st.width_mm)
+                                   stage_material(st.material), face_width_mm=st.width_mm, **(st.strength or {}))
         out["summary"]["face_width_mm"] = st.width_mm
 
     # -- scenes
@@ -442,6 +442,7 @@ class GearKind(ToothedKind):
 
         f, i = "float", "int"
         from ...gears.strength.load import APPLICATION_FACTOR_RANGE, LIFE_RANGE_H
+        from ...gears.strength.user_options import scene_keys as strength_scene_keys
 
         # no module: sized by the stage's load (needs a material); see GearStage
         return {"module": dict(kind=f, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
@@ -456,10 +457,13 @@ class GearKind(ToothedKind):
                 "z1_range": dict(kind="ints", lo=Z_MIN, hi=Z_MAX, length=2), "z2_max": dict(kind=i, lo=Z_MIN, hi=Z_MAX),
                 "ratio_range": dict(kind="floats", lo=1.0, hi=100.0, length=2),
                 "shift_objective": dict(kind="choice", choices=tuple(OBJECTIVES)),
-                "checks": dict(table="checks", without=("jamming",))}
+                "checks": dict(table="checks", without=("jamming",)), **strength_scene_keys()}
 
     def from_scene(self, spec: dict):
-        kw = dict(spec)
+        from ...gears.strength.user_options import options_from_table
+
+        strength, kw = options_from_table(spec)     # the strength options' keys: the stage's strength dict
+        kw["strength"] = strength or None
         kw["m"] = kw.pop("module", None)
         kw["checks"] = dict(kw["checks"]) if kw.get("checks") else None
         for k in ("z1_range", "ratio_range"):

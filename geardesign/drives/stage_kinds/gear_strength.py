@@ -3,8 +3,8 @@ into it, and the module and face width of a stage given without them.
 
 Checks (signed margins, >= 0 holds), from :func:`geardesign.gears.strength.pair_strength` with both
 gears of the stage's ``material``, the load on the pinion (gear 1) with the stage's ``application_factor``
-and ``life_h`` (None: endurance, Z_NT = Y_NT = 1) and the strength model's defaults (accuracy grade, lubricant, roughness, S_Hmin and
-S_Fmin, :mod:`geardesign.gears.strength.defaults`):
+and ``life_h`` (None: endurance, Z_NT = Y_NT = 1) and the stage's ``strength`` options (accuracy grade, lubricant,
+roughness, S_Hmin and S_Fmin, given factors; the defaults of :mod:`geardesign.gears.strength.defaults`):
 
 - ``contact_strength``: min(S_H1, S_H2)/S_Hmin − 1;
 - ``root_strength1``, ``root_strength2``: S_F1/S_Fmin − 1, S_F2/S_Fmin − 1.
@@ -52,7 +52,8 @@ def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, 
     from ...gears.strength import pair_strength   # here: the materials catalog loads pandas
 
     out = pair_strength(m, z1, z2, x1, x2, load=stage.load(torque_nm, speed_rpm), root=root,
-                        material1=stage_material(stage.material), face_width_mm=face_width_mm, beta_deg=stage.beta_deg)
+                        material1=stage_material(stage.material), face_width_mm=face_width_mm, beta_deg=stage.beta_deg,
+                        **(stage.strength or {}))
     margins = {"contact_strength": np.minimum(out["S_H1"], out["S_H2"]) / out["S_Hmin"] - 1.0}
     if root:
         margins.update(root_strength1=out["S_F1"] / out["S_Fmin"] - 1.0, root_strength2=out["S_F2"] / out["S_Fmin"] - 1.0)

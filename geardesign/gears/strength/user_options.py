@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from . import defaults as dflt
 from .accuracy import GRADE_RANGE
 
-__all__ = ["StrengthOption", "STRENGTH_OPTIONS", "strength_option", "FACTORS_FLAG"]
+__all__ = ["StrengthOption", "STRENGTH_OPTIONS", "strength_option", "FACTORS_FLAG", "scene_keys", "options_from_table"]
 
 FACTORS_FLAG = "--factor"
 
@@ -79,3 +79,34 @@ _BY_KEYWORD = {o.keyword: o for o in STRENGTH_OPTIONS}
 def strength_option(keyword: str) -> StrengthOption:
     """The option of ``keyword`` (KeyError for another)."""
     return _BY_KEYWORD[keyword]
+
+
+def scene_keys(limits: bool = True) -> dict:
+    """The scene keys of the strength options, as neutral descriptions (``kind``, ``lo``, ``hi``, as
+    :meth:`~geardesign.drives.stage_kinds.base.StageKind.scene_keys` gives them): one per option (``limits``
+    False leaves out S_Hmin and S_Fmin, which a section's ``[checks]`` sets) and ``factors``, a table of given
+    factors by name (their ranges checked by the strength model)."""
+    from .chain import GIVEN_FACTORS   # here: a scene without a load never reads the chain
+
+    keys = {o.keyword: dict(kind="float", lo=o.range[0], hi=o.range[1]) if o.range else dict(kind="float", lo=0.0)
+            for o in STRENGTH_OPTIONS if limits or not o.limit}
+    keys["factors"] = {name: dict(kind="float") for name in sorted(GIVEN_FACTORS)}
+    return keys
+
+
+def options_from_table(table: dict) -> tuple[dict, dict]:
+    """(the :func:`pair_strength` options of a table with :func:`scene_keys`' keys, the table's other keys): a
+    given factor among the options (f_ma) joins the ``factors``."""
+    options, rest = {}, {}
+    for key, value in table.items():
+        (options if key in _BY_KEYWORD or key == "factors" else rest)[key] = value
+    factors = dict(options.pop("factors", None) or {})
+    for key in [k for k in options if _BY_KEYWORD[k].factor]:
+        if key in factors:
+            from ...errors import GearDesignError
+
+            raise GearDesignError(f"{key} given twice, as a key and in factors: give one")
+        factors[key] = options.pop(key)
+    if factors:
+        options["factors"] = factors
+    return options, rest
