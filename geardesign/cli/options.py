@@ -213,7 +213,7 @@ def strength_from_args(args) -> dict:
             continue
         if opt.factor:
             if opt.keyword in factors:
-                raise GearDesignError(f"{opt.flag} and {FACTORS_FLAG} {opt.keyword}= both given: give one")
+                raise GearDesignError(f"{opt.flag} and {FACTORS_FLAG} '{opt.keyword}=...' both given: give one")
             factors[opt.keyword] = value
         else:
             out[opt.keyword] = value
