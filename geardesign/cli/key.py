@@ -55,7 +55,7 @@ def run(args) -> int:
     if args.json:
         print_json({"ok": bool(sel.feasible), **sel.to_dict()})
     else:
-        print_verdict_line(bool(sel.feasible), sel.message if hasattr(sel, "message") else repr(sel).splitlines()[0])
+        print_verdict_line(bool(sel.feasible), sel.message.split(" (")[0])   # the repr below gives the details
         for line in repr(sel).splitlines():
             print_wrapped(line, indent="    ")
     return 0 if sel.feasible else 1
