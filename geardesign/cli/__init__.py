@@ -63,9 +63,13 @@ def _main(argv) -> int:
             warnings.simplefilter("ignore", RuntimeWarning)
             return int(args._run(args) or 0)
     except GearDesignError as exc:
+        from pathlib import Path
+
         from .options import option_names   # the library's keyword named by the command's option
 
-        text = option_names(' '.join(str(exc).split()), args._parser)
+        text = ' '.join(str(exc).split())
+        if not (hasattr(args, "scene") and text.startswith(f"{Path(args.scene)}: ")):   # a scene's keys stay keys
+            text = option_names(text, args._parser)
         print(f"geardesign {args.command}: error: {text}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # output piped into `head` and the like: stop quietly

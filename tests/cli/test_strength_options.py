@@ -265,3 +265,13 @@ def test_a_bad_option_value_is_one_line_not_the_usage_block(capsys, command):
     assert exc.value.code == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith(f"geardesign {command}: error: ") and "usage:" not in err[0], err
+
+
+def test_a_scene_error_keeps_the_scene_key(tmp_path, capsys):
+    """An error in the scene file names the scene's key (accuracy_grade, life_h), not the command's option."""
+    scene = tmp_path / "d.toml"
+    scene.write_text(LOADED + "accuracy_grade = 14\n")
+    assert main(["drive", str(scene), "--material", "C45"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == (f"geardesign drive: error: {scene}: [drive.stage #2] accuracy_grade: expected a number in [0, 12], "
+                   f"got 14 (integer)")

@@ -60,7 +60,7 @@ STRENGTH_OPTIONS = (
                    "mesh misalignment from manufacture f_ma, µm (ISO 6336-1 7.6.2.1; default f_Hbeta of the grade: "
                    "no helix adjustment; 0: helix matched by modification or lapping)", factor=True),
     StrengthOption("nu40", "--nu40", "MM2_S", "mm²/s",
-                   "lubricant's kinematic viscosity at 40 °C, mm²/s (220: ISO VG 220)", dflt.NU40_MM2_S,
+                   "lubricant's kinematic viscosity at 40 °C, mm²/s (an ISO VG grade number)", dflt.NU40_MM2_S,
                    dflt.NU40_RANGE),
     StrengthOption("Rz_flank_um", "--rz-flank", "UM", "µm", "mean peak-to-valley roughness R_z of the flanks, µm",
                    dflt.RZ_FLANK_UM, dflt.RZ_RANGE_UM),
