@@ -24,7 +24,7 @@ a scene loads only what its sections need.
 """
 import importlib
 
-from . import writers     # a registry in the bottom layer (errors only): the package's import stays light
+from . import writers     # a registry in the bottom layer that imports nothing: the package's import stays light
 
 __version__ = "0.1.0"
 

@@ -17,8 +17,6 @@ geardesign.errors.GearDesignError: no writer 'nothing' is registered (registered
 """
 from __future__ import annotations
 
-from .errors import GearDesignError
-
 __all__ = ["register", "writer"]
 
 _WRITERS: dict = {}
@@ -27,6 +25,7 @@ _WRITERS: dict = {}
 def register(name: str, fn) -> None:
     """Register ``fn`` as the writer called ``name`` (replaces one registered before)."""
     if not callable(fn):
+        from .errors import GearDesignError   # here: the package's own import loads nothing but this registry
         raise GearDesignError(f"the writer {name!r} must be callable, got {type(fn).__name__}")
     _WRITERS[name] = fn
 
@@ -35,5 +34,6 @@ def writer(name: str):
     """The writer registered as ``name``."""
     fn = _WRITERS.get(name)
     if fn is None:
+        from .errors import GearDesignError
         raise GearDesignError(f"no writer {name!r} is registered (registered: {', '.join(sorted(_WRITERS)) or 'none'})")
     return fn

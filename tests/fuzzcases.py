@@ -457,7 +457,7 @@ def _cli(rng):
                     code = exc.code
             _no_temp_left(tmp, None)
             lines = err.getvalue().strip().splitlines()
-            if code == 2 and len(lines) != 1 and not err.getvalue().startswith("usage:"):
+            if code == 2 and len(lines) != 1:      # argparse's errors too: one line (issue 35 §7)
                 raise AssertionError(f"exit 2 with {len(lines)} stderr lines: {err.getvalue()[:300]!r}")
             if code not in (0, 1, 2):
                 raise AssertionError(f"exit {code}")

@@ -18,10 +18,11 @@ SUBCOMMANDS = ("pair", "measure", "mesh", "shift", "atlas", "teeth", "planetary"
 
 
 def build_parser():
-    import argparse   # here and in _main: inside main's Ctrl-C handler (see the note above)
-    import importlib
+    import importlib   # here and in _main: inside main's Ctrl-C handler (see the note above)
 
-    parser = argparse.ArgumentParser(
+    from .options import OneLineParser   # a bad option value: one line naming it, exit 2
+
+    parser = OneLineParser(
         prog="geardesign",
         description="Gear-pair geometry and profile-shift optimisation, roller chains and keys. Every command "
                     "exits 0 when the design passes, 1 when it fails a check (the output names it), 2 on bad input.")
@@ -33,7 +34,7 @@ def build_parser():
     for name in SUBCOMMANDS:
         module = importlib.import_module(f"{__name__}.{name}")
         p = module.add_parser(sub)
-        p.set_defaults(_run=module.run)
+        p.set_defaults(_run=module.run, _parser=p)
     return parser
 
 
@@ -70,7 +71,14 @@ def _main(argv) -> int:
             warnings.simplefilter("ignore", RuntimeWarning)
             return int(args._run(args) or 0)
     except GearDesignError as exc:
-        print(f"geardesign {args.command}: error: {' '.join(str(exc).split())}", file=sys.stderr)
+        from pathlib import Path
+
+        from .options import option_names   # the library's keyword named by the command's option
+
+        text = ' '.join(str(exc).split())
+        if not (hasattr(args, "scene") and text.startswith(f"{Path(args.scene)}: ")):   # a scene's keys stay keys
+            text = option_names(text, args._parser)
+        print(f"geardesign {args.command}: error: {text}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # output piped into `head` and the like: stop quietly
         import os

@@ -7,7 +7,7 @@ from ..shifts.atlas import ATLAS_PAIRS_MAX, atlas_size, shift_atlas
 from ..files import check_output_path, write_file_atomic
 from ..errors import GearDesignError
 from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args, local_workers
-from .output import Progress, add_json_flag, frame_records, print_frame, print_json
+from .output import Progress, add_json_flag, frame_records, print_frame, print_json, print_verdict_line
 from .options import add_rack_args, rack_from_args
 from .pair import add_kind_args, kind_from_args
 from .options import add_check_args, checks_from_args
@@ -65,6 +65,8 @@ def run(args) -> int:
     if args.json:
         print_json({"ok": True, "time_s": df.attrs.get("time_s"), "rows": frame_records(df)})
         return 0
+    print_verdict_line(True, f"{len(df)} pairs tabulated, {int(df.feasible.sum())} with feasible shifts (a pair "
+                             f"without is a row, not a failure)")
     cols = ["z1", "z2", "feasible", "x1", "x2", "objective", "eps_alpha", "area", "active", "conflict"]
     print_frame(df[cols].head(40), f"{len(df)} pairs in {df.attrs.get('time_s', 0):.2f} s "
                                    f"({int(df.feasible.sum())} feasible); first rows:")

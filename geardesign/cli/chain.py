@@ -9,7 +9,30 @@ from __future__ import annotations
 from ..drives import chain
 from ..catalogs.tables import CHAIN_CATALOGS
 from ..errors import GearDesignError
-from .output import add_json_flag, frame_records, print_frame, print_json, print_wrapped
+from .output import add_json_flag, frame_records, print_frame, print_json, print_verdict_line, print_wrapped
+
+# where the default service factor comes from (catalogs/chain_operating_factors.csv: each factor's source)
+K_E_DEFAULT_SOURCE = ("the default: K_d K_a K_n K_reg K_lub K_mode each 1, uniform load, drip lubrication, one "
+                      "shift; catalogs/chain_operating_factors.csv; set --k-e")
+
+
+def service_factor(k_e: float, given) -> str:
+    """K_e with where it comes from: the --k-e given, or the default and its source."""
+    return f"K_e = {k_e:g} (given by --k-e)" if given is not None else f"K_e = {k_e:g} ({K_E_DEFAULT_SOURCE})"
+
+
+def _verdict(result) -> str:
+    """The verdict's text: the chosen chain and its limiting check, or the closest candidate's failing one."""
+    rows = result.candidates
+    if result.best is not None:
+        b = result.best
+        return (f"{b['designation']} x{int(b['strands'])}, z1/z2 = {int(b['z1'])}/{int(b['z2'])}, limiting "
+                f"{b['limiting_check']} (margin {float(b['min_margin']):+.3f})")
+    if not len(rows):
+        return "no candidate"
+    c = rows.sort_values("min_margin", ascending=False, kind="stable").iloc[0]
+    return (f"{c['limiting_check']} (margin {float(c['min_margin']):+.3f}) of the closest candidate "
+            f"{c['designation']} x{int(c['strands'])}, z1 = {int(c['z1'])}: no chain passes")
 
 SHOW = ["rank", "designation", "pitch_mm", "strands", "z1", "z2", "links", "center_distance_mm", "speed_m_s",
         "force_n", "pressure_mpa", "allowable_pressure_mpa", "safety_factor", "allowable_safety_factor",
@@ -58,7 +81,9 @@ def add_parser(subparsers):
     p.add_argument("--catalog", default="gost13568",
                    help=f"chain catalog: {', '.join(CHAIN_CATALOGS)} or a CSV path (default gost13568)")
     p.add_argument("--strands", default="1,2,3", help="strand counts to try, comma separated (default 1,2,3)")
-    p.add_argument("--k-e", type=float, dest="k_e", help="operating factor K_e (product of K_d..K_mode; default 1)")
+    p.add_argument("--k-e", type=float, dest="k_e",
+                   help="service (operating) factor K_e, the product K_d K_a K_n K_reg K_lub K_mode (default 1: uniform "
+                        "load, drip lubrication, one shift; catalogs/chain_operating_factors.csv)")
     p.add_argument("--p-allow", type=float, dest="p_allow", metavar="MPA",
                    help="allowable hinge pressure [p] (default: table by pitch and n1)")
     p.add_argument("--s-allow", type=float, dest="s_allow", help="allowable safety factor [s] (default: table)")
@@ -91,6 +116,7 @@ def run(args) -> int:
         out["candidates"] = frame_records(top.drop(columns=[c for c in ("edition", "source", "note") if c in top]))
         print_json(out)
     else:
+        print_verdict_line(result.success, f"{_verdict(result)}; {service_factor(result.k_e, args.k_e)}")
         print_wrapped(result.message)
         if result.pitch_estimate_mm:
             print_wrapped("pitch estimate (starting point): " + ", ".join(
@@ -103,7 +129,8 @@ def run(args) -> int:
                   f"{b['sprocket2_root_diameter_mm']:.2f} mm")
         print()
         print_frame(top[[c for c in cols if c in top.columns]],
-                    title=f"candidates ({len(top)} of {len(result.candidates)}, K_e = {result.k_e:g}):")
+                    title=f"candidates ({len(top)} of {len(result.candidates)}, K_e = {result.k_e:g}"
+                          f"{'' if args.k_e is not None else ', the default'}):")
         if not result.success:
             print()
             print_frame(result.blocking, title="what stops each chain family (best candidate of each):")

@@ -8,7 +8,9 @@ The load options of ``pair``/``shift``/``teeth`` (:func:`~geardesign.cli.options
 here: ``--power``/``--torque`` and ``--speed`` the drive's input (instead of the scene's; the power
 flow brings each gear stage its own torque and speed), ``--material``, ``--life-h``,
 ``--application-factor`` and ``--strength-width`` the load case of every gear stage that does not set
-its own in the scene (a stage without ``module`` is then sized by its load). ``--on-gear 2`` and
+its own in the scene (a stage without ``module`` is then sized by its load), and the strength options
+(``--accuracy-grade``, ``--factor``, ``--fma``, ``--nu40``, ``--rz-flank``, ``--rz-root``, ``--sh-min``,
+``--sf-min``) those of every gear stage that does not set its own. ``--on-gear 2`` and
 ``--material2`` have no meaning for a drive and are refused.
 """
 from __future__ import annotations
@@ -21,8 +23,8 @@ from ..files import check_output_path, write_file_atomic
 from ..scene.drive import compute_drive
 from ..scene.html import drive_report
 from ..scene.load import load_scene
-from .options import add_cluster_args, add_load_args, add_output_file, cluster_from_args
-from .output import Progress, add_json_flag, print_frame, print_json, print_wrapped
+from .options import add_cluster_args, add_load_args, add_output_file, cluster_from_args, strength_from_args
+from .output import Progress, add_json_flag, print_frame, print_json, print_verdict_line, print_wrapped
 
 
 def add_parser(subparsers):
@@ -41,13 +43,21 @@ def add_parser(subparsers):
     p.add_argument("--report", metavar="HTML", default=None,
                    help="write a one-page report (checks, power flow, stages, gear geometry, keys, diagram) to this HTML file")
     add_json_flag(p)
-    add_load_args(p)
+    add_load_args(p, limits=True)
     add_cluster_args(p)
     return p
 
 
 _STAGE_LOAD = (("material", "material"), ("life_h", "life_h"), ("application_factor", "application_factor"),
                ("strength_width", "face_width_mm"))
+
+
+def _flag(key: str) -> str:
+    """The option that sets a gear stage's ``key``."""
+    from ..gears.strength.user_options import FACTORS_FLAG, STRENGTH_OPTIONS
+
+    flags = {"factors": FACTORS_FLAG, "face_width_mm": "--strength-width", **{o.keyword: o.flag for o in STRENGTH_OPTIONS}}
+    return flags.get(key, "--" + key.replace("_", "-"))
 
 
 def _input_from_args(section: dict, args) -> dict:
@@ -81,15 +91,27 @@ def _with_load(section: dict, args) -> dict:
     out = _input_from_args(section, args)
     given = {key: getattr(args, opt) for opt, key in _STAGE_LOAD
              if getattr(args, opt) is not None and not (opt == "application_factor" and args.application_factor == 1.0)}
+    given.update(strength_from_args(args))   # the strength options, keys of a gear stage as in a scene
     if not given:
         return out
     gears = [i for i, st in enumerate(out["stages"]) if st["kind"] == "gear"]
     if not gears:
-        raise GearDesignError(f"--{next(iter(given)).replace('_', '-')}: the scene's drive has no gear stage")
+        raise GearDesignError(f"{_flag(next(iter(given)))}: the scene's drive has no gear stage")
     stages = list(out["stages"])
     for i in gears:
         stages[i] = {**given, **stages[i]}     # the stage's own keys win
     return dict(out, stages=stages)
+
+
+def _verdict(opt, an) -> str:
+    """The first line's text: the failing checks (stage:check with its margin), or what was found."""
+    if an is None:
+        return opt.message
+    failing = an.checks.loc[~an.checks["ok"].astype(bool)]
+    if len(failing):
+        return "; ".join(f"{r['item']}:{r['check']} (margin {float(r['margin']) + 0.0:+.4g})"
+                         for _, r in failing.iterrows())
+    return an.message
 
 
 def run(args) -> int:
@@ -126,6 +148,7 @@ def run(args) -> int:
                "optimum": None if opt is None else opt.to_dict(), "analysis": None if an is None else an.to_dict()}
         print_json(out)
         return 0 if ok else 1
+    print_verdict_line(bool(ok), _verdict(opt, an))
     if motor is not None:
         print_wrapped(f"motor: {motor.message}")
     if opt is not None:

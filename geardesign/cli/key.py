@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from ..drives import key
 from ..errors import GearDesignError
-from .output import add_json_flag, print_json, print_wrapped
+from .output import add_json_flag, print_json, print_verdict_line, print_wrapped
 
 
 def add_parser(subparsers):
@@ -41,13 +41,12 @@ def run(args) -> int:
         if args.json:
             print_json({"ok": ok, **cap.to_dict()})
         else:
+            print_verdict_line(ok, f"{cap['torque_nm']:.1f} N·m {'>=' if ok else '<'} the torque {args.torque:g} N·m"
+                               if args.torque is not None else f"the key carries {cap['torque_nm']:.1f} N·m")
             print_wrapped(f"key {cap['b_mm']:g}x{cap['h_mm']:g}x{args.length:g} on d = {args.d:g} mm "
                   f"({cap['n_keys']} key{'s' if cap['n_keys'] > 1 else ''}, l_p = {cap['working_length_mm']:g} mm): "
                   f"carries {cap['torque_nm']:.1f} N·m, limited by {cap['governing']} "
                   f"(crushing {cap['torque_crush_nm']:.1f} N·m, shear {cap['torque_shear_nm']:.1f} N·m)")
-            if args.torque is not None:
-                print(f"{'OK' if ok else 'FAILS'}: {cap['torque_nm']:.1f} N·m {'>=' if ok else '<'} "
-                      f"the torque {args.torque:g} N·m")
         return 0 if ok else 1
     if args.torque is None or args.hub_length is None:
         raise GearDesignError("--torque and --hub-length are required to select a key (or give --length)")
@@ -56,6 +55,7 @@ def run(args) -> int:
     if args.json:
         print_json({"ok": bool(sel.feasible), **sel.to_dict()})
     else:
+        print_verdict_line(bool(sel.feasible), sel.message.split(" (")[0])   # the repr below gives the details
         for line in repr(sel).splitlines():
             print_wrapped(line, indent="    ")
     return 0 if sel.feasible else 1

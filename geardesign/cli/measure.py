@@ -83,10 +83,13 @@ def run(args) -> int:
         b = args.face_width_mm if args.face_width_mm is not None and args.face_width_mm >= 4.0 else None
         tol = flank_tolerances(args.module, args.z, args.accuracy_class, beta_deg=args.beta, face_width_mm=b)
     if args.json:
-        print_json({"measurements": t.to_dict(), "tolerances": None if tol is None else tol.to_dict()})
+        print_json({"ok": bool(t.ok), "measurements": t.to_dict(), "tolerances": None if tol is None else tol.to_dict()})
         return 0 if t.ok else 1
     import pandas as pd
 
+    flagged = ([] if t.internal or t.span_ok else [f"span_ok (W_k over k = {t.k:g} touches at d = {t.d_wk:.4g} mm)"]) + (
+        [] if t.ball_ok else [f"ball_ok (D_M = {t.ball_mm:.4g} mm touches at d = {t.d_ball:.4g} mm)"])
+    print("OK: every size can be measured." if t.ok else "FAILS: " + "; ".join(flagged) + ": not measurable there")
     kind = ("ring" if t.internal else "gear") + (f", helical beta = {t.beta_deg:g} deg" if t.beta_deg else "")
     print(f"Measuring sizes: {kind}, m = {t.m_n:g} mm, z = {t.z}, x = {t.x:.6g}, "
           f"A_sne / A_sni = {t.a_sne:g} / {t.a_sni:g} mm")

@@ -118,6 +118,7 @@ def run(args) -> int:
     if args.json:
         print_json(summary)
         return 1 if failed else 0
+    print_verdict(failed, check_details(table))
     lo = summary["line_of_action_mm"]
     kind = ("Internal " if pair.internal else "") + (f"helical (beta = {pair.beta_deg:g} deg) " if pair.beta_deg else "spur ")
     print_wrapped(f"{kind[0].upper() + kind[1:]}pair m = {pair.m:g} mm, z1/z2 = {pair.z1}/{pair.z2}, x1/x2 = {pair.x1:.6g}/{pair.x2:.6g}: "
@@ -127,7 +128,6 @@ def run(args) -> int:
           f"E {lo['N1E']:.6g} mm; active A-E {lo['active_A_to_E']:.6g} mm = "
           f"{lo['double_contact_each_end']:.6g} double + {lo['single_contact']:.6g} single + "
           f"{lo['double_contact_each_end']:.6g} double (p_b = {lo['base_pitch']:.6g} mm)")
-    print_verdict(failed, check_details(table))
     for flag, path in targets.items():
         print(f"wrote {path} ({OUTPUTS[flag][1]})")
     return 1 if failed else 0

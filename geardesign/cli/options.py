@@ -8,8 +8,9 @@ import contextlib
 
 from ..gears.checks import options as check_options
 
-__all__ = ["add_check_args", "checks_from_args", "add_load_args", "load_from_args", "add_rack_args", "rack_from_args", "add_solver_args", "add_output_file", "add_cluster_args",
-           "cluster_from_args", "local_workers"]
+__all__ = ["add_check_args", "checks_from_args", "add_load_args", "load_from_args", "add_strength_args",
+           "strength_from_args", "add_rack_args", "rack_from_args", "add_solver_args", "add_output_file",
+           "add_cluster_args", "cluster_from_args", "local_workers"]
 
 # the older spellings of --no-undercut and --no-interference, kept working
 _ALIASES = {"undercut": "--allow-undercut", "interference": "--allow-interference"}
@@ -29,6 +30,10 @@ def add_check_args(p, exclude=(), load: bool = True) -> None:
     """One option per registered check option (:func:`geardesign.gears.checks.options`): a limit as
     ``--eps-alpha-min VALUE`` (``none`` drops the check), a flag as ``--undercut``/``--no-undercut``; with
     ``load``, the load case of the strength checks (:func:`add_load_args`)."""
+    from ..gears.strength.user_options import STRENGTH_OPTIONS
+
+    # a strength option that is also a check's limit (--sh-min) names that check's option a second way
+    aliases = {o.keyword: [o.flag] for o in STRENGTH_OPTIONS if o.limit}
     g = p.add_argument_group("checks (limits and switches; see docs/extending.md for adding one)")
     for opt in check_options().values():
         if not opt.cli or opt.name in exclude:
@@ -37,8 +42,8 @@ def add_check_args(p, exclude=(), load: bool = True) -> None:
         if opt.kind == "limit":
             lo, hi = opt.range
             default = "none: off" if opt.default is None else f"{opt.default:g}"
-            g.add_argument(flag, type=_limit, default=opt.default, metavar="VALUE",
-                           help=f"{opt.help} ({default}; {lo:g} to {hi:g}, or none to drop the check)")
+            g.add_argument(flag, *aliases.get(opt.name, ()), dest=opt.name, type=_limit, default=opt.default,
+                           metavar="VALUE", help=f"{opt.help} ({default}; {lo:g} to {hi:g}, or none to drop the check)")
         else:
             g.add_argument(flag, action=argparse.BooleanOptionalAction, default=None,
                            help=f"{opt.help} ({'on' if opt.default else 'off'} by default)")
@@ -118,10 +123,12 @@ def cluster_from_args(args):
         yield client
 
 
-def add_load_args(p, planetary: bool = False) -> None:
+def add_load_args(p, planetary: bool = False, limits: bool = False) -> None:
     """The load case of the strength checks (ISO 6336): a torque or a power at a speed, the material(s),
     the life and the application factor; given, the strength checks join the others. ``planetary``: the
-    sun's load of a planetary set, with the planet's and the ring's materials, K_γ and the face width."""
+    sun's load of a planetary set, with the planet's and the ring's materials, K_γ and the face width; the
+    strength model's options (:func:`add_strength_args`; ``limits``: with --sh-min and --sf-min, for a command
+    without the check options)."""
     g = p.add_argument_group("load capacity (ISO 6336; any of these switches the strength checks on)")
     on = "the sun" if planetary else "gear 1 (--on-gear)"
     g.add_argument("--torque", type=float, default=None, metavar="NM", help=f"torque on {on}, N·m")
@@ -149,6 +156,70 @@ def add_load_args(p, planetary: bool = False) -> None:
     if not planetary:
         g.add_argument("--strength-width", type=float, default=None, metavar="MM",
                        help="face width for the strength checks, mm (default: --face-width)")
+    add_strength_args(g, limits=limits)
+
+
+def _factor(text: str) -> tuple:
+    """``NAME=VALUE`` of ``--factor``: a given factor of the strength model (its name checked, with the
+    nearest names on a miss) and its value."""
+    import difflib
+
+    from ..gears.strength.chain import GIVEN_FACTORS   # here: only --factor reads the chain's names
+
+    name, sep, value = text.partition("=")
+    name = name.strip()
+    if not sep or not name:
+        raise argparse.ArgumentTypeError(f"expected NAME=VALUE (e.g. K_Hbeta=1.3), got {text!r}")
+    if name not in GIVEN_FACTORS:
+        near = difflib.get_close_matches(name, sorted(GIVEN_FACTORS), n=3, cutoff=0.5)
+        raise argparse.ArgumentTypeError(f"unknown factor {name!r}" + (f"; nearest: {', '.join(near)}" if near else "")
+                                         + "; the names are geardesign.gears.strength.GIVEN_FACTORS (docs/strength.md)")
+    try:
+        return name, float(value)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{name}: expected a number after '=', got {value.strip()!r}") from None
+
+
+def add_strength_args(g, limits: bool = True) -> None:
+    """One option per user-facing strength option (:data:`~geardesign.gears.strength.user_options.STRENGTH_OPTIONS`)
+    and ``--factor NAME=VALUE`` (repeatable, any given factor). ``limits`` False leaves out the options that are
+    also check limits (--sh-min, --sf-min): the check options of :func:`add_check_args` carry them there."""
+    from ..gears.strength.user_options import FACTORS_FLAG, STRENGTH_OPTIONS
+
+    for opt in STRENGTH_OPTIONS:
+        if opt.limit and not limits:
+            continue
+        g.add_argument(opt.flag, dest=opt.keyword, type=float, default=None, metavar=opt.metavar,
+                       help=opt.describe())
+    g.add_argument(FACTORS_FLAG, dest="factors", action="append", type=_factor, default=None, metavar="NAME=VALUE",
+                   help="a factor given instead of computed (ISO 6336 allows measured values), e.g. K_Hbeta=1.3; "
+                        "repeat for more; the names: geardesign.gears.strength.GIVEN_FACTORS (docs/strength.md)")
+
+
+def strength_from_args(args) -> dict:
+    """The strength options the command line gave, as :func:`~geardesign.gears.strength.pair_strength` keywords
+    (``factors`` a dict of the given factors); the options not given are left out (the model's defaults)."""
+    from ..errors import GearDesignError
+    from ..gears.strength.user_options import FACTORS_FLAG, STRENGTH_OPTIONS
+
+    out, factors = {}, {}
+    for name, value in getattr(args, "factors", None) or ():
+        if name in factors:
+            raise GearDesignError(f"{FACTORS_FLAG} {name} given twice ({factors[name]:g} and {value:g})")
+        factors[name] = value
+    for opt in STRENGTH_OPTIONS:
+        value = getattr(args, opt.keyword, None)
+        if value is None or (opt.limit and value == opt.default):
+            continue
+        if opt.factor:
+            if opt.keyword in factors:
+                raise GearDesignError(f"{opt.flag} and {FACTORS_FLAG} '{opt.keyword}=...' both given: give one")
+            factors[opt.keyword] = value
+        else:
+            out[opt.keyword] = value
+    if factors:
+        out["factors"] = factors
+    return out
 
 
 # the load options of a pair and of a planetary set: the set's extra ones go to its checks dict as they are
@@ -160,7 +231,15 @@ def load_from_args(args) -> dict:
     extra = {k: getattr(args, k) for k in _SET_LOAD if getattr(args, k, None) is not None}
     given = [args.torque, args.power, args.speed, args.material, getattr(args, "material2", None), args.life_h,
              *extra.values()]
+    options = strength_from_args(args)
     if all(v is None for v in given):
+        if options:
+            from ..errors import GearDesignError
+            from ..gears.strength.user_options import FACTORS_FLAG, strength_option
+
+            flags = [FACTORS_FLAG if k == "factors" else strength_option(k).flag for k in options]
+            raise GearDesignError(f"{', '.join(flags)}: the strength options need a load (--torque or --power, "
+                                  f"--speed and --material)")
         return {}
     from ..gears.strength import Load   # here: only a command with a load reads the strength model
 
@@ -169,9 +248,11 @@ def load_from_args(args) -> dict:
     width = args.strength_width if args.strength_width is not None else getattr(args, "face_width_mm", None)
     out = {"load": load, "material": args.material, "face_width_mm": width, **extra}
     if hasattr(args, "k_gamma"):
-        out["strength"] = {"K_gamma": args.k_gamma}
+        out["strength"] = {"K_gamma": args.k_gamma, **options}
     else:
         out["material2"] = args.material2
+        if options:
+            out["strength"] = options
     return out
 
 
@@ -192,3 +273,45 @@ def rack_from_args(args):
     from ..gears.rack import BasicRack
 
     return BasicRack(alpha_deg=args.alpha_deg, ha=args.ha, c=args.c, rho_f=args.rho_f)
+
+
+class OneLineParser(argparse.ArgumentParser):
+    """An ArgumentParser whose errors are one line on stderr naming the option, exit status 2 (argparse's own
+    prints the whole usage block first); its subcommands' parsers are of this class too."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {' '.join(message.split())} (see {self.prog} --help)\n")
+
+
+# the library's keywords that an error message may name, by the command-line option that sets them: the load
+# (Load's keywords), the strength options (their one definition) and a few of the commands' own
+_KEYWORD_FLAGS = {"torque_nm": "--torque", "power_kw": "--power", "n_rpm": "--speed", "life_h": "--life-h",
+                  "application_factor": "--application-factor", "K_gamma": "--k-gamma", "material1": "--material",
+                  "material": "--material", "material2": "--material2", "on_gear": "--on-gear",
+                  "face_width_mm": "--face-width", "n1_rpm": "--n1", "k_e": "--k-e", "beta_deg": "--beta",
+                  "alpha_deg": "--alpha-deg", "rho_f": "--rho-f", "planet_material": "--planet-material",
+                  "ring_material": "--ring-material", "center_distance_mm": "--center-distance",
+                  "allowable_pressure_mpa": "--p-allow", "allowable_safety_factor": "--s-allow"}
+# plain words (not identifiers) are renamed only where they start what is said of them
+_PLAIN_WORD_AFTER = r"(?= must| given| is needed|: )"
+
+
+def option_names(message: str, parser) -> str:
+    """``message`` of a GearDesignError with each library keyword the command sets by an option named by that
+    option (``n_rpm must be ...`` -> ``--speed must be ...``, ``factors['K_Hbeta']`` -> ``--factor K_Hbeta``);
+    keywords of options ``parser`` does not have are left as they are."""
+    import re
+
+    from ..gears.strength.user_options import FACTORS_FLAG, STRENGTH_OPTIONS
+
+    flags = {s for a in parser._actions for s in a.option_strings}
+    table = {**_KEYWORD_FLAGS, **{o.keyword: o.flag for o in STRENGTH_OPTIONS}}
+    if FACTORS_FLAG in flags:
+        message = re.sub(r"(?<![\w\-.])factors\[['\"](\w+)['\"]\]", lambda m: f"{FACTORS_FLAG} {m.group(1)}",
+                         message)
+    for keyword, flag in table.items():
+        if flag not in flags:
+            continue
+        tail = "" if ("_" in keyword or any(c.isdigit() for c in keyword)) else _PLAIN_WORD_AFTER
+        message = re.sub(rf"(?<![\w\-.'\"\[]){re.escape(keyword)}(?![\w'\"]){tail}", flag, message)
+    return message

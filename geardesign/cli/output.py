@@ -19,7 +19,7 @@ def frame_records(frame: pd.DataFrame) -> list[dict]:
     return [plain(r) for r in frame.to_dict(orient="records")]
 
 
-DEFAULT_WIDTH = 100    # columns when the output is not a terminal (a pipe, a file, a test)
+DEFAULT_WIDTH = 80     # columns when the output is not a terminal (a pipe, a file, a test)
 TEXT_MAX = 60          # a text cell longer than this is cut with an ellipsis (the JSON keeps it whole)
 
 
@@ -29,23 +29,70 @@ def terminal_width() -> int:
 
 
 def print_frame(frame: pd.DataFrame, title: str | None = None, float_format="{:.6g}") -> None:
-    """A table folded to the terminal's width: columns that do not fit continue below, long text cut."""
+    """A table folded to the terminal's width: long text cut (the first column, the rows' names, down to
+    :data:`KEY_MIN` characters when that makes the table fit), then the columns that still do not fit continue
+    below in blocks that each repeat the first column."""
     if title:
         print(title)
     width = max(terminal_width(), 40)
-    limit = min(TEXT_MAX, width - 10)
+    shown = _cut_text(frame, min(TEXT_MAX, width - 10))
+    if shown.shape[1] > 1 and _is_text(shown.iloc[:, 0]):
+        widths = [len(_column_lines(shown, i, float_format)[0]) for i in range(shown.shape[1])]
+        excess = sum(widths) + len(widths) - 1 - width
+        if excess > 0 and widths[0] - excess >= KEY_MIN:
+            first = _cut_text(frame.iloc[:, [0]], widths[0] - excess)
+            shown = pd.concat([first, shown.iloc[:, 1:]], axis=1)
+    for block in fold_columns(shown, width, float_format):
+        print(block)
+
+
+KEY_MIN = 30   # characters of a table's first (name) column kept when it is cut to fit the width
+
+
+def _is_text(column: pd.Series) -> bool:
+    return column.dtype == object or pd.api.types.is_string_dtype(column)
+
+
+def _cut_text(frame: pd.DataFrame, limit: int) -> pd.DataFrame:
+    """``frame`` with text longer than ``limit`` cut with an ellipsis and text columns left-aligned."""
     shown = frame.copy()
-    for col in shown.columns:
-        if shown[col].dtype == object or pd.api.types.is_string_dtype(shown[col]):
-            cut = [v if not isinstance(v, str) or len(v) <= limit else v[:limit - 1] + "…" for v in shown[col]]
-            if all(isinstance(v, str) for v in cut):     # text reads left-aligned
-                pad = max([len(str(col))] + [len(v) for v in cut])
-                cut = [v.ljust(pad) for v in cut]
-                shown = shown.rename(columns={col: str(col).ljust(pad)})
-                col = str(col).ljust(pad)
-            shown[col] = cut
-    with pd.option_context("display.max_rows", 500, "display.max_columns", 50, "display.width", width):
-        print(shown.to_string(index=False, float_format=float_format.format, line_width=width, na_rep=""))
+    for i, col in enumerate(frame.columns):
+        column = frame.iloc[:, i]
+        if not _is_text(column):
+            continue
+        cut = [v if not isinstance(v, str) or len(v) <= limit else v[:limit - 1] + "…" for v in column]
+        if all(isinstance(v, str) for v in cut):     # text reads left-aligned
+            pad = max([len(str(col))] + [len(v) for v in cut])
+            cut = [v.ljust(pad) for v in cut]
+            shown = shown.rename(columns={col: str(col).ljust(pad)})
+        shown.isetitem(i, cut)
+    return shown
+
+
+def _column_lines(frame: pd.DataFrame, i: int, float_format) -> list[str]:
+    """Column ``i`` as pandas prints it (header, then the rows), every line of one width."""
+    lines = frame.iloc[:, [i]].to_string(index=False, float_format=float_format.format, na_rep="").split("\n")
+    n = max(map(len, lines))
+    return [line.rjust(n) for line in lines]
+
+
+def fold_columns(frame: pd.DataFrame, width: int, float_format="{:.6g}") -> list[str]:
+    """The table as text blocks of at most ``width`` columns (a column wider than that alone is left whole):
+    the columns in order, each block starting with the first column again, blocks apart by an empty line."""
+    if frame.shape[1] == 0 or len(frame) == 0:
+        return [frame.to_string(index=False)]
+    cols = [_column_lines(frame, i, float_format) for i in range(frame.shape[1])]
+    key = cols[0]
+    blocks, current, used = [], [key], len(key[0])
+    for col in cols[1:]:
+        if used + 1 + len(col[0]) > width and len(current) > 1:
+            blocks.append(current)
+            current, used = [key], len(key[0])
+        current.append(col)
+        used += 1 + len(col[0])
+    blocks.append(current)
+    return ["\n\n".join("\n".join(" ".join(col[i] for col in block).rstrip() for i in range(len(key)))
+                        for block in blocks)]
 
 
 def print_wrapped(text: str, indent: str = "  ") -> None:
@@ -62,6 +109,19 @@ def print_verdict(failed: list, details: dict | None = None, what: str = "checks
     details = details or {}
     print_wrapped("FAILS: " + "; ".join(f"{name}{' (' + details[name] + ')' if details.get(name) else ''}"
                                 for name in failed))
+
+
+def print_verdict_line(ok: bool, text: str) -> None:
+    """The first line of every command's text output: ``OK: text`` or ``FAILS: text`` (wrapped)."""
+    print_wrapped(("OK: " if ok else "FAILS: ") + text)
+
+
+def failing_margins(margins: dict, names=None) -> str:
+    """``check (margin -0.1336); ...`` of the failing (or the named) checks of a {check: margin} dict."""
+    from ..gears.checks.base import FEASIBILITY_TOL
+
+    names = [k for k, v in margins.items() if not v >= -FEASIBILITY_TOL] if names is None else names
+    return "; ".join(f"{k} (margin {float(margins[k]) + 0.0:+.4g})" if k in margins else k for k in names)
 
 
 def check_details(table: pd.DataFrame) -> dict:

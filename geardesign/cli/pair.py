@@ -10,7 +10,8 @@ from ..gears.pair import GearPair
 from ..scene.html import pair_report
 from .measure import ROWS
 from .options import add_check_args, add_output_file, add_rack_args, checks_from_args, rack_from_args
-from .output import add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict
+from .output import (add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict,
+                     print_wrapped)
 
 
 def add_pair_args(p) -> None:
@@ -179,8 +180,8 @@ def run(args) -> int:
             **({"strength": strength.to_dict()} if strength is not None else {}),
         })
         return 1 if failed else 0
-    print(describe(pair, shorten))
     print_verdict(failed, check_details(table))
+    print_wrapped(describe(pair, shorten))
     print_frame(table[["check", "value", "limit", "margin", "ok", "label"]], "\nChecks (margin >= 0 holds)")
     print_frame(geo.to_table(helical=bool(pair.beta_deg)), "\nGeometry", float_format="{:.8g}")
     if args.measurements:
@@ -201,4 +202,4 @@ def _strength(pair, checks: dict):
     if "load" not in checks:
         return None
     return pair.strength(checks["load"], checks["material"], material2=checks["material2"],
-                         face_width_mm=checks["face_width_mm"])
+                         face_width_mm=checks["face_width_mm"], **checks.get("strength", {}))

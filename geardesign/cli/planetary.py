@@ -7,7 +7,8 @@ from ..files import all_or_nothing, check_output_path, write_file_atomic
 from ..gears.planetary import ARRANGEMENTS, DEFAULT_NEIGHBOUR_CLEARANCE, PlanetarySet
 from ..profiles.planetary import plot_planetary
 from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args
-from .output import add_json_flag, print_frame, print_json, print_wrapped
+from .output import (add_json_flag, check_details, failing_margins, print_frame, print_json, print_verdict,
+                     print_verdict_line, print_wrapped)
 from .options import add_check_args, add_load_args, checks_from_args
 from .options import add_rack_args, rack_from_args
 
@@ -133,11 +134,10 @@ def _check(args) -> int:
                     "a_w_planet_ring": s.a_w_planet_ring, "ratio": s.ratio, "ok": ok,
                     "checks": table[["check", "mesh", "margin", "ok", "value", "limit"]]})
         return 0 if ok else 1
+    print_verdict(table.loc[~table["ok"], "check"].tolist(), check_details(table))
     print_wrapped(f"Planetary set {s.meshes.title}, m = {s.m:g} mm: x = {s.x_sun:.6g}/{s.x_planet:.6g}/{s.x_ring:.6g}, "
           f"a_w = {s.a_w:.8g} mm (planet-ring {s.a_w_planet_ring:.8g} mm), ratio {s.ratio:.6g} ({s.arrangement})")
     print_frame(table[["check", "margin", "ok", "value", "limit"]])
-    failed = table.loc[~table["ok"], "check"].tolist()
-    print("OK: all checks hold." if ok else f"FAILS: {', '.join(failed)}")
     return 0 if ok else 1
 
 
@@ -167,6 +167,8 @@ def _optimize(args) -> int:
     if args.json:
         print_json({"ok": bool(r.success), **r.to_dict()})
         return 0 if r.success else 1
+    print_verdict_line(r.success, f"optimum x = {r.x_sun:.6g}/{r.x_planet:.6g}/{r.x_ring:.6g}, every check holds"
+                       if r.success else f"{failing_margins(r.margins, r.conflict or None)}: no feasible shifts")
     for line in repr(r).splitlines():
         print_wrapped(line, indent=" " * 14)
     if r.success:
@@ -191,7 +193,7 @@ def _teeth(args) -> int:
     if args.json:
         print_json({"ok": bool(sel.found)} | sel.to_dict() | {"message": sel.message})
         return 0 if sel.found else 1
-    print_wrapped(sel.message)
+    print_verdict_line(bool(sel.found), sel.message)
     cols = ["z_sun", "z_planet", "z_ring", "standard", "ratio", "feasible", "x_sun", "x_planet", "x_ring", "a_w",
             "fun", "reason"]
     print_frame(sel.table[cols].head(25), f"\n{len(sel.table)} candidates ({sel.n_solved} solved), best first:")

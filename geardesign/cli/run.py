@@ -51,9 +51,9 @@ def run(args) -> int:
         d["out"] = str(out)
         print_json(d)
         return 1 if rep.failures else 0
+    print("OK: every design of the scene passes." if not rep.failures else "FAILS: " + "; ".join(rep.failures))
     print(f"{rep.scene.title} ({Path(rep.scene.path).name}, {rep.time_s:.2f} s)")
     for line in rep.summary:
         print(f"  {line}")
     print(f"wrote {out / 'report.md'}, {len(rep.tables)} CSV table(s), {len(rep.figures)} plot(s)")
-    print("OK: every design of the scene passes." if not rep.failures else "FAILS: " + "; ".join(rep.failures))
     return 1 if rep.failures else 0

@@ -8,8 +8,8 @@ from ..shifts.objectives import OBJECTIVES
 from ..shifts.optimize import DEFAULT_TOL, METHODS, optimize_shifts
 from ..shifts.region import feasible_region
 from .options import add_check_args, add_output_file, checks_from_args
-from .output import (add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict,
-                     print_wrapped)
+from .output import (add_json_flag, check_details, failing_margins, frame_records, print_frame, print_json,
+                     print_verdict, print_verdict_line, print_wrapped)
 from .options import add_rack_args, rack_from_args
 from .pair import add_kind_args, kind_from_args
 
@@ -94,6 +94,7 @@ def run(args) -> int:
                              "checks": frame_records(proposed[["check", "value", "limit", "margin", "ok"]])}
         print_json(d)
         return 0 if ok else 1
+    _verdict(res, proposed, failed, args)
     for line in repr(res).splitlines():
         print_wrapped(line, indent=" " * 14)
     print()
@@ -109,6 +110,20 @@ def run(args) -> int:
     if args.html:
         print(f"interactive blocking contour written to {args.html}")
     return 0 if ok else 1
+
+
+def _verdict(res, proposed, failed, args) -> None:
+    """The first line: the proposed pair's failing checks, or the region's conflict, or the optimum."""
+    if failed:
+        details = check_details(proposed)
+        print_verdict_line(False, "; ".join(f"{k} ({details[k]})" if details.get(k) else k for k in failed)
+                           + f" at the proposed x1 = {args.x1:g}, x2 = {args.x2:g}")
+    elif not res.success:
+        print_verdict_line(False, f"{failing_margins(res.margins, res.conflict or None)}: no feasible shifts "
+                                  f"({res.message})")
+    else:
+        print_verdict_line(True, f"optimum x1 = {res.x1:.6g}, x2 = {res.x2:.6g} ({res.objective}), every check holds"
+                           + (f"; the proposed x1 = {args.x1:g}, x2 = {args.x2:g} too" if proposed is not None else ""))
 
 
 def _write_plot(region, res, proposed, args, write_file_atomic) -> None:

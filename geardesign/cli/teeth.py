@@ -11,7 +11,7 @@ from ..shifts.teeth import select_teeth
 from ..files import check_output_path, write_file_atomic
 from .options import (add_check_args, add_cluster_args, add_output_file, add_solver_args, checks_from_args,
                       cluster_from_args)
-from .output import Progress, add_json_flag, frame_records, print_frame, print_json, print_wrapped
+from .output import Progress, add_json_flag, frame_records, print_frame, print_json, print_verdict_line, print_wrapped
 from .options import add_rack_args, rack_from_args
 from .pair import add_kind_args, kind_from_args
 
@@ -26,6 +26,15 @@ def _number_or_series(text: str, what: str):
         return float(text)
     except ValueError:
         raise GearDesignError(f"{what} must be a number in mm or 'series', got {text!r}") from None
+
+
+def _no_feasible(sel) -> str:
+    """The verdict of a search without a feasible pair: the first candidate's conflicting checks."""
+    if not len(sel.table):
+        return f"no tooth pair within the ratio tolerance ({len(sel.skipped)} skipped before solving)"
+    row = sel.table.iloc[0]
+    return (f"{str(row['reason']).removeprefix('conflict: ') or 'a check'} of the best candidate "
+            f"{int(row['z1'])}/{int(row['z2'])}: no feasible tooth pair")
 
 
 def add_parser(subparsers):
@@ -90,6 +99,10 @@ def run(args) -> int:
         out["skipped"] = frame_records(sel.skipped)
         print_json(out)
     else:
+        b = sel.best
+        print_verdict_line(b is not None, (
+            f"z1/z2 = {int(b['z1'])}/{int(b['z2'])}, x1 = {b['x1']:.4f}, x2 = {b['x2']:.4f}, every check holds"
+            if b is not None else _no_feasible(sel)))
         print_wrapped(f"Ratio {sel.ratio:g} ± {100 * sel.ratio_tol:g} %, objective {sel.objective}, "
               f"m = {sel.m}, a_w = {sel.a_w if sel.a_w is not None else 'free'}, method {sel.method}: "
               f"{len(sel.table)} candidates solved, {len(sel.skipped)} skipped, {sel.time_s:.2f} s")

@@ -151,7 +151,9 @@ class GearStage:
     ``mating_type`` (GOST 1643-81 H … A; default "B" for a stage sized by its load, "none" otherwise) makes
     every design hold its geometric checks also at its manufactured state (teeth thinned by their allowances,
     the housing within its centre-distance allowance); the margins there are ``<check>_manufactured``.
-    ``strength`` holds further options of the strength model (as ``pair_strength`` takes them).
+    ``strength`` is a dict of :func:`~geardesign.gears.strength.pair_strength` options for the strength checks
+    (``accuracy_grade``, ``nu40``, ``Rz_flank_um``, ``Rz_root_um``, ``S_Hmin``, ``S_Fmin``, ``factors``, ...;
+    None: the model's defaults).
     """
 
     m: float | None = None
@@ -214,6 +216,12 @@ class GearStage:
         if self.life_h is not None:
             object.__setattr__(self, "life_h", one_number("life_h", require_range(
                 "life_h", self.life_h, *LIFE_RANGE_H, lo_open=True, unit="h")))
+        if self.strength is not None:   # options out of range are refused here, not mid-search
+            if not isinstance(self.strength, dict):
+                raise GearDesignError(f"strength must be a dict of pair_strength options, got "
+                                      f"{type(self.strength).__name__}")
+            from ..gears.strength.chain import check_options   # here: the chain loads the materials catalog
+            object.__setattr__(self, "strength", dict(check_options(self.strength)))
         if self.x1 is not None and self.m is not None:
             self.fixed_pair()          # a fixed pair that cannot be built is refused here
         from .housing import check_center_distance
@@ -228,12 +236,6 @@ class GearStage:
             if self.mating_type not in GOST1643_TYPES + ("none",):
                 raise GearDesignError(f"mating_type must be one of {', '.join(GOST1643_TYPES)} (GOST 1643-81) or "
                                       f"'none', got {self.mating_type!r}")
-        if self.strength is not None:
-            if not isinstance(self.strength, dict):
-                raise GearDesignError(f"strength must be a dict of pair_strength options, got "
-                                      f"{type(self.strength).__name__}")
-            from ..gears.strength.chain import check_options
-            check_options(self.strength)
         if self.shift_objective is not None:
             from ..shifts.objectives import OBJECTIVES   # here: the shifts layer loads pandas
             if self.shift_objective not in OBJECTIVES:

@@ -88,6 +88,7 @@ TIP_FIELDS = frozenset({"sa1", "sa2", "san1", "san2", "_t_a1", "_t_a2", "_inv_a1
 # gradients, the objectives and the drawings read them from the dict of :func:`mesh_geometry`.
 INTERNAL_FIELDS: dict[str, str] = {
     "_m": "normal module m_n (mm)",
+    "_face_width_mm": "face width per design (mm), set by a drive's sizing grid for its load checks (absent elsewhere)",
     "_z1": "tooth count of gear 1", "_z2": "tooth count of gear 2",
     "_x1": "profile shift coefficient of gear 1", "_x2": "profile shift coefficient of gear 2",
     "_sgn": "∂x_Σ/∂x1: +1 for an external pair, −1 for an internal one (x_Σ = x2 − x1)",

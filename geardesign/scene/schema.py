@@ -98,9 +98,12 @@ def _shift_keys() -> dict:
 
 def _load_schema() -> dict:
     """[gear.load]: the load case of the strength checks (ISO 6336), as :class:`geardesign.gears.strength.Load`
-    and the materials of the catalog; the face width is the section's ``face_width_mm``."""
+    and the materials of the catalog, and the strength model's options (accuracy_grade, nu40, ..., [gear.load.factors];
+    :data:`geardesign.gears.strength.user_options.STRENGTH_OPTIONS`); the face width is the section's
+    ``face_width_mm``."""
     from ..gears.strength.load import (APPLICATION_FACTOR_RANGE, LIFE_RANGE_H, POWER_RANGE_KW, SPEED_RANGE_RPM,
                                        TORQUE_RANGE_NM)
+    from ..gears.strength.user_options import scene_keys as strength_scene_keys
 
     return {"torque_nm": _F(lo=TORQUE_RANGE_NM[0], hi=TORQUE_RANGE_NM[1], lo_open=True),
             "power_kw": _F(lo=POWER_RANGE_KW[0], hi=POWER_RANGE_KW[1], lo_open=True),
@@ -108,7 +111,9 @@ def _load_schema() -> dict:
             "on_gear": _I(default=1, lo=1, hi=2),
             "application_factor": _F(default=1.0, lo=APPLICATION_FACTOR_RANGE[0], hi=APPLICATION_FACTOR_RANGE[1]),
             "life_h": _F(lo=LIFE_RANGE_H[0], hi=LIFE_RANGE_H[1], lo_open=True),
-            "material": _Key("str", required=True), "material2": _Key("str")}
+            "material": _Key("str", required=True), "material2": _Key("str"),
+            # the strength model's options (S_Hmin and S_Fmin: the section's [checks] limits)
+            **{k: _stage_key(v) for k, v in strength_scene_keys(limits=False).items()}}
 
 
 def _gear_schema() -> dict:

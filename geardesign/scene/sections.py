@@ -73,11 +73,15 @@ def _checks_dict(spec: dict | None, section: dict | None = None) -> dict | None:
     load = (section or {}).get("load")
     if load:
         from ..gears.strength import Load
+        from ..gears.strength.user_options import options_from_table
 
+        strength, _ = options_from_table(load)
+        # the [checks] limits are the strength result's S_Hmin, S_Fmin too (its sigma_HP, sigma_FP, verdict)
+        strength.update({k: out[k] for k in ("S_Hmin", "S_Fmin") if out.get(k) is not None})
         out.update(load=Load(**{k: load.get(k) for k in ("torque_nm", "power_kw", "n_rpm", "on_gear",
                                                         "application_factor", "life_h")}),
                    material=load["material"], material2=load.get("material2"),
-                   face_width_mm=section.get("face_width_mm"))
+                   face_width_mm=section.get("face_width_mm"), **({"strength": strength} if strength else {}))
     return out or None
 
 
@@ -197,7 +201,8 @@ def _add_strength(rep: SceneReport, g: dict, checks: dict, res, given, pair_kw: 
     pairs = ([("optimum", res.x1, res.x2)] if res.success else []) + ([("given", *given)] if given else [])
     for tag, x1, x2 in pairs:
         r = GearPair(g["module"], g["z1"], g["z2"], x1, x2, **pair_kw).strength(
-            checks["load"], checks["material"], material2=checks["material2"], face_width_mm=checks["face_width_mm"])
+            checks["load"], checks["material"], material2=checks["material2"], face_width_mm=checks["face_width_mm"],
+            **checks.get("strength", {}))
         rep.tables[f"gear_strength_{tag}"] = r.factors
         rep.markdown += [f"### Load capacity (ISO 6336) of the {tag} pair", "", "```", repr(r), "```", "",
                          md_table(r.factors), ""]

@@ -17,7 +17,9 @@ def test_chain_table(capsys):
     assert main(SEED + ["--objective", "min_sprocket_diameter", "--top", "3"]) == 0
     out = capsys.readouterr().out
     # seed 002's choice: two-strand 31.75 mm chain; pitch estimates 36.2 / 30.35 mm (seed 1.9.5)
-    assert out.startswith("2PR-31,75-177 with z1/z2 = 13/13")
+    assert out.startswith("OK: 2PR-31,75-177 x2, z1/z2 = 13/13")   # the verdict first (issue 35 §8)
+    assert "2PR-31,75-177 with z1/z2 = 13/13" in out
+    assert "K_e =\n  2.148 (given by --k-e)" in out or "K_e = 2.148 (given by --k-e)" in out
     assert "1 strand t >= 36.2" in out and "2 strands t >= 30.35" in out
     assert "candidates (3 of" in out
 
@@ -40,7 +42,7 @@ def test_chain_infeasible_exit_1(capsys):
 def test_chain_bad_input_exit_2(capsys):
     assert main(["chain", "--torque", "-380", "--n1", "120", "--ratio", "1"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "torque_nm must be in [0.001, 1e+07] N·m, got -380" in err[0]
+    assert len(err) == 1 and "--torque must be in [0.001, 1e+07] N·m, got -380" in err[0]   # the option's name
     assert main(["chain", "--torque", "380", "--n1", "120", "--ratio", "1", "--catalog", "din8187"]) == 2
     assert "catalog must be one of" in capsys.readouterr().err
     assert main(["chain", "--torque", "380", "--n1", "120", "--ratio", "1", "--strands", "one"]) == 2

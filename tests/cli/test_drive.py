@@ -17,7 +17,8 @@ T1 = 4000 / (2 * math.pi * 1500 / 60) * 12.5 * 0.87
 def test_drive_table_and_exit_0(capsys):
     assert main(["drive", SEED]) == 0
     out = capsys.readouterr().out
-    assert out.startswith("optimum (min_mass, u = 12.5 ± 0 %)")
+    assert out.startswith("OK: u = 12.5")          # the verdict first (issue 35 §8)
+    assert out.splitlines()[2].startswith("optimum (min_mass, u = 12.5 ± 0 %)")
     assert f"{T1:.6g}".rstrip("0") in out          # 276.93 N·m on the driving sprocket's shaft
     assert "alternatives" in out and "power flow:" in out and "keys:" in out
 
@@ -145,7 +146,7 @@ def test_drive_stage_material_of_the_scene_wins_and_a_free_module_is_sized(tmp_p
     (["--on-gear", "2"], "--on-gear"),
     (["--material2", "C45"], "--material2"),
     (["--material", "unobtainium"], "unobtainium"),
-    (["--life-h", "-5", "--material", "C45"], "life_h"),
+    (["--life-h", "-5", "--material", "C45"], "--life-h must"),   # the option, not GearStage's life_h
     (["--power", "4", "--torque", "20"], "torque"),
 ])
 def test_drive_bad_load_options_one_line_exit_2(tmp_path, capsys, options, words):

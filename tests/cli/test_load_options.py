@@ -37,7 +37,7 @@ def test_the_issue_pinion_fails_by_strength_with_exit_1(capsys):
 
 def test_a_material_without_a_load_is_refused_by_name(capsys):
     assert main(PAIR + ["--material", "42CrMo4"]) == 2
-    assert "give either torque_nm or power_kw" in capsys.readouterr().err
+    assert "give either --torque or --power" in capsys.readouterr().err   # the option, not Load's keyword
 
 
 def test_shift_optimum_respects_the_load(capsys):

@@ -60,4 +60,4 @@ def test_without_ctrl_c_the_same_child_runs_the_command(tmp_path):
     proc = subprocess.run([sys.executable, "-c", _CHILD, "no_such_module", "module", "pair", "--module", "2",
                            "--z1", "20", "--z2", "40"], capture_output=True, text=True, cwd=tmp_path, env=env,
                           timeout=120)
-    assert proc.returncode == 0 and proc.stdout.startswith("Spur pair") and "OK:" in proc.stdout, proc.stderr
+    assert proc.returncode == 0 and proc.stdout.startswith("OK:") and "Spur pair" in proc.stdout, proc.stderr

@@ -5,6 +5,7 @@ import json
 
 import numpy as np
 import pandas as pd
+import pytest
 
 from geardesign.cli.output import Progress, add_json_flag, frame_records, print_frame, print_json
 
@@ -64,3 +65,79 @@ def test_progress_to_takes_counts_and_a_zero_total():
     frames = tty.getvalue().split("\r")[1:]
     assert frames[0] == "walk [" + " " * 30 + "] 0/1"
     assert frames[1] == "run [" + "#" * 15 + " " * 15 + "] 3/6\n"
+
+
+def _wide_frame():
+    """12 columns of 10 rows: about 150 characters wide, as a drive's alternatives or a chain's candidates."""
+    rng = np.random.default_rng(35)
+    data = {"designation": [f"2PR-{i},75-177" for i in range(10)]}
+    data.update({f"column_{k}_mm": rng.uniform(0, 1e4, 10) for k in range(10)})
+    data["limiting_check"] = ["pressure"] * 10
+    return pd.DataFrame(data)
+
+
+def _blocks(text: str) -> list[list[str]]:
+    return [b.splitlines() for b in text.strip("\n").split("\n\n")]
+
+
+@pytest.mark.parametrize("columns", ["80", "120", None])
+def test_tables_fold_to_the_width(capsys, monkeypatch, columns):
+    """Issue 35 §8: a wide table is folded into blocks that fit (80 columns off a terminal, else COLUMNS), each
+    block repeating the first column, every column once, no pandas '\\' continuation; the values are those of the
+    frame, row by row."""
+    if columns is None:
+        monkeypatch.delenv("COLUMNS", raising=False)     # captured output is not a terminal: 80 columns
+    else:
+        monkeypatch.setenv("COLUMNS", columns)
+    width = 80 if columns is None else int(columns)
+    f = _wide_frame()
+    print_frame(f)
+    text = capsys.readouterr().out
+    assert "\\" not in text
+    assert max(len(line) for line in text.splitlines()) <= width
+    blocks = _blocks(text)
+    assert len(blocks) >= 2       # ~150 characters do not fit in one
+    seen = []
+    for block in blocks:
+        header = block[0].split()
+        assert header[0] == "designation" and len(block) == 11
+        assert [row.split()[0] for row in block[1:]] == list(f["designation"])
+        for j, name in enumerate(header[1:], 1):
+            seen.append(name)
+            if name.startswith("column_"):
+                got = [float(row.split()[j]) for row in block[1:]]
+                assert got == pytest.approx(list(f[name]), rel=1e-5)   # printed to 6 significant digits
+    assert seen == list(f.columns[1:])
+
+
+def test_a_long_name_column_is_cut_before_folding(capsys, monkeypatch):
+    """The handbook's table (quantity | symbol | unit | gear 1 | gear 2) stays one block at 80 columns: its
+    quantity names are cut (with an ellipsis) rather than the gear columns moved below."""
+    monkeypatch.setenv("COLUMNS", "80")
+    import geardesign as gd
+
+    print_frame(gd.GearPair(8, 17, 26, 0.898, 0.517).geometry().to_table())
+    lines = capsys.readouterr().out.splitlines()
+    assert len(_blocks("\n".join(lines))) == 1 and max(map(len, lines)) <= 80
+    assert lines[0].split()[-4:] == ["gear", "1", "gear", "2"] and any("…" in line for line in lines)
+
+
+@pytest.mark.parametrize("argv", [
+    ["pair", "--module", "8", "--z1", "17", "--z2", "26", "--x1", "0.898", "--x2", "0.517"],
+    ["pair", "--module", "4", "--z1", "20", "--z2", "60", "--x1", "0.3", "--x2", "0.1", "--face-width", "40",
+     "--power", "15", "--speed", "1450", "--material", "42CrMo4"],
+    ["chain", "--torque", "380", "--n1", "120", "--ratio", "1"],
+    ["teeth", "--ratio", "1.5", "--module", "8", "--z1-max", "20"],
+    ["planetary", "--module", "1.75", "--planets", "3", "--ratio", "6"],
+])
+def test_piped_output_fits_80_columns(argv):
+    """A pipe (no terminal, no COLUMNS): 80 columns, every line."""
+    import os
+    import subprocess
+    import sys
+
+    env = {k: v for k, v in os.environ.items() if k != "COLUMNS"}
+    proc = subprocess.run([sys.executable, "-m", "geardesign", *argv], capture_output=True, text=True, env=env)
+    assert proc.returncode in (0, 1), proc.stderr
+    long = [line for line in proc.stdout.splitlines() if len(line) > 80]
+    assert not long, long[:3]

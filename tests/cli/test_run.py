@@ -76,7 +76,7 @@ def test_run_seed000_gear_scene(tmp_path, capsys):
     out = tmp_path / "s0"
     assert main(["run", str(SCENES / "seed000_gear.toml"), "--out", str(out)]) == 1   # the given shifts fail
     printed = capsys.readouterr().out
-    assert printed.splitlines()[-1] == "FAILS: gear: the given shifts fail contact_ratio"
+    assert printed.splitlines()[0] == "FAILS: gear: the given shifts fail contact_ratio"
     for f in ("report.md", "gear_region.png", "gear_optimum.csv", "gear_given_checks.csv", "gear_given_geometry.csv",
               "study_sweep.csv", "study_margins.png", "study_region_motion.png", "study_tornado.png"):
         assert (out / f).stat().st_size > 0, f

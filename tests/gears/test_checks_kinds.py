@@ -184,7 +184,7 @@ def test_pair_cli_takes_helical_and_internal(capsys):
     out = json.loads(capsys.readouterr().out)
     assert abs(out["geometry"]["a_w"] - 116.5) < 1e-9 and round(out["geometry"]["alpha_t_deg"], 10) == 21.2990642859
     assert main(["pair", "--module", "3", "--z1", "20", "--z2", "30", "--beta", "50"]) == 2
-    assert "beta_deg must be in [0, 45]" in capsys.readouterr().err
+    assert "--beta must be in [0, 45]" in capsys.readouterr().err      # the option, not the keyword (issue 35 §7)
 
 
 @pytest.mark.parametrize("m, z2, x2, z0", [(3.0, 24, 0.5, 8), (2.0, 40, 0.0, 20), (2.0, 40, 0.0, 30),

@@ -650,7 +650,7 @@ class GearKind(ToothedKind):
     def _load_context(st, flow) -> dict:
         """The load case of the stage's checks at ``flow``, as make_checks takes it (the single route)."""
         opts = dict(st.strength or {})
-        limits = {k: opts.pop(k) for k in ("S_Hmin", "S_Fmin") if k in opts}
+        limits = {k: opts[k] for k in ("S_Hmin", "S_Fmin") if k in opts}    # the checks' limits and the chain's
         return dict(load=st.load(flow.torque_in_nm, flow.n_in_rpm), material=stage_material(st.material),
                     face_width_mm=st.width_mm, strength=opts or None, **limits)
 
@@ -678,6 +678,7 @@ class GearKind(ToothedKind):
         from ...gears.strength.load import APPLICATION_FACTOR_RANGE, LIFE_RANGE_H
         from ...gears.backlash import GOST1643_TYPES
         from ..housing import CENTER_DISTANCE_RANGE_MM, CENTER_DISTANCE_SERIES
+        from ...gears.strength.user_options import scene_keys as strength_scene_keys
 
         # no module: sized by the stage's load (needs a material); see GearStage
         return {"module": dict(kind=f, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
@@ -697,10 +698,13 @@ class GearKind(ToothedKind):
                                         hi=CENTER_DISTANCE_RANGE_MM[1], choices=("free",) + tuple(CENTER_DISTANCE_SERIES)),
                 "shift_bounds": dict(kind="floats", lo=-3.0, hi=3.0, length=2),
                 "mating_type": dict(kind="choice", choices=GOST1643_TYPES + ("none",)),
-                "checks": dict(table="checks", without=("jamming",))}
+                "checks": dict(table="checks", without=("jamming",)), **strength_scene_keys()}
 
     def from_scene(self, spec: dict):
-        kw = dict(spec)
+        from ...gears.strength.user_options import options_from_table
+
+        strength, kw = options_from_table(spec)     # the strength options' keys: the stage's strength dict
+        kw["strength"] = strength or None
         kw["m"] = kw.pop("module", None)
         kw["checks"] = dict(kw["checks"]) if kw.get("checks") else None
         for k in ("z1_range", "ratio_range", "shift_bounds"):

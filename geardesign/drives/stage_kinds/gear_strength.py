@@ -3,8 +3,8 @@ into it, and the module and face width of a stage given without them.
 
 Checks (signed margins, >= 0 holds), from :func:`geardesign.gears.strength.pair_strength` with both
 gears of the stage's ``material``, the load on the pinion (gear 1) with the stage's ``application_factor``
-and ``life_h`` (None: endurance, Z_NT = Y_NT = 1) and the strength model's defaults (accuracy grade, lubricant, roughness, S_Hmin and
-S_Fmin, :mod:`geardesign.gears.strength.defaults`):
+and ``life_h`` (None: endurance, Z_NT = Y_NT = 1) and the stage's ``strength`` options (accuracy grade, lubricant,
+roughness, S_Hmin and S_Fmin, given factors; the defaults of :mod:`geardesign.gears.strength.defaults`):
 
 - ``contact_strength``: min(S_H1, S_H2)/S_Hmin − 1;
 - ``root_strength1``, ``root_strength2``: S_F1/S_Fmin − 1, S_F2/S_Fmin − 1.
@@ -69,7 +69,13 @@ def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, 
 
 
 def _strength_options(stage) -> tuple:
-    return tuple(sorted((stage.strength or {}).items()))
+    """The stage's strength options as a hashable key (a dict value, the given factors, as its sorted items)."""
+    return tuple(sorted((k, ("dict", tuple(sorted(v.items()))) if isinstance(v, dict) else v)
+                        for k, v in (stage.strength or {}).items()))
+
+
+def _thawed(options: tuple) -> dict:
+    return {k: dict(v[1]) if isinstance(v, tuple) and len(v) == 2 and v[0] == "dict" else v for k, v in options}
 
 
 def load_checks(stage, torque_nm: float, speed_rpm: float, root: bool = True) -> tuple:
@@ -86,8 +92,9 @@ def _load_checks(material, life_h, application_factor, options: tuple, checks: t
     from ...gears.checks import make_checks   # here: the check registry loads pandas
     from ...gears.strength import Load
 
-    opts = dict(options)
-    limits = {k: opts.pop(k) for k in ("S_Hmin", "S_Fmin") if k in opts}
+    opts = _thawed(options)
+    # S_Hmin, S_Fmin: the checks' limits, and the chain's too (its permissible stresses and the result's S_min)
+    limits = {k: opts[k] for k in ("S_Hmin", "S_Fmin") if k in opts}
     if not root:
         opts["root"] = False
         limits["S_Fmin"] = None

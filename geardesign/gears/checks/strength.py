@@ -35,6 +35,7 @@ STRENGTH_CONTEXT = ("load", "material", "material2", "face_width_mm", "strength"
 _FD_STEP = 1e-6   # in x: the chain is smooth there; central differences hold ~1e-9 relative
 _HESSIAN_STEP = 1e-4   # second differences: truncation ~h² and rounding ~1e-16/h², both ~1e-8
 _QUANTITIES = ("S_H1", "S_H2", "S_F1", "S_F2")
+_DICT_OPTIONS = ("factors", "shaft")   # the options of pair_strength that are dicts
 
 
 @dataclass(frozen=True)
@@ -47,6 +48,11 @@ class StrengthSpec:
     material2: object = None
     face_width_mm: float | None = None
     options: tuple = ()
+
+    def keywords(self) -> dict:
+        """The options as :func:`~geardesign.gears.strength.pair_strength` keywords: the dicts (``factors``,
+        ``shaft``) that were frozen into sorted items for the spec's hash, dicts again."""
+        return {k: dict(v) if k in _DICT_OPTIONS and v is not None else v for k, v in self.options}
 
     def safety(self, geo: dict, gradients: bool = False) -> dict:
         """S_H (the smaller of both gears'), S_F1, S_F2 at the designs of ``geo`` and, with ``gradients``,
@@ -114,7 +120,7 @@ class StrengthSpec:
                     out = pair_strength(at["_m"], at["_z1"], at["_z2"], at["_x1"], at["_x2"], load=self.load,
                                         material1=self.material1, material2=self.material2, face_width_mm=b,
                                         beta_deg=mesh.beta_deg, internal=mesh.internal, rack=mesh.rack,
-                                        tip_shortening=mesh.tip_shortening, geometry=at, **dict(self.options))
+                                        tip_shortening=mesh.tip_shortening, geometry=at, **self.keywords())
                     # without the root side (option root=False) S_F is not computed: NaN
                     return {k: out[k] if k in out else np.full(np.shape(at["_x1"]), np.nan) for k in _QUANTITIES}
 
@@ -139,7 +145,7 @@ class StrengthSpec:
                                     material2=self.material2, face_width_mm=width, beta_deg=mesh.beta_deg,
                                     internal=mesh.internal, rack=mesh.rack, tip_shortening=mesh.tip_shortening,
                                     geometry={**{k: float(g[k]) for k in fields}, "_z1": mesh.z1, "_z2": mesh.z2},
-                                    **dict(self.options))
+                                    **self.keywords())
             except GearDesignError:
                 continue
             if a == b == 0.0:    # the design's whole chain output: its factor table (StrengthResult) needs no rerun

@@ -424,10 +424,16 @@ def _plain_numbers(values) -> bool:
 
 
 def check_options(options: dict) -> dict:
-    """``options`` for :func:`pair_strength`, refused by name when one is not one of its keywords."""
+    """``options`` for :func:`pair_strength`, refused by name when one is not one of its keywords or when a
+    number, a given factor or the shaft is out of its range (before any work: a checks dict's strength checks
+    would otherwise fail at every design rather than say why)."""
     if not options.keys() <= _OPTION_SET:
         raise GearDesignError(f"unknown strength option {', '.join(map(repr, sorted(set(options) - _OPTION_SET)))}; "
                               f"allowed: {', '.join(_OPTION_NAMES)}")
+    if options.keys() & _VALIDATED:
+        validate_options(*(options.get(k, d) for k, d in zip(_VALIDATED, _DEFAULTS)))
+    _Given(options.get("factors"))
+    shaft_option(options.get("shaft"))
     return options
 
 
@@ -603,7 +609,7 @@ _OPTION_NAMES = tuple(k for k in inspect.signature(pair_strength).parameters
                       if k not in ("m", "z1", "z2", "x1", "x2", "load", "material1", "material2", "face_width_mm"))
 _OPTION_SET = frozenset(_OPTION_NAMES)
 # the defaults of the options validate_options checks, and their checked values
-_DEFAULTS = tuple(inspect.signature(pair_strength).parameters[k].default
-                  for k in inspect.signature(validate_options).parameters)
+_VALIDATED = tuple(inspect.signature(validate_options).parameters)
+_DEFAULTS = tuple(inspect.signature(pair_strength).parameters[k].default for k in _VALIDATED)
 _DEFAULTS_CHECKED = validate_options(*_DEFAULTS)
 _GROUPED_DEFAULTS = {k: inspect.signature(pair_strength).parameters[k].default for k in GROUPED}

@@ -2,6 +2,7 @@
 from the surface hardness by the part-5 lines) and named steels from the bundled catalog."""
 from __future__ import annotations
 
+import difflib
 import functools
 import math
 from dataclasses import dataclass
@@ -131,6 +132,23 @@ def material_names() -> tuple[str, ...]:
     return tuple(named.index) + tuple(aliases) + tuple(dict.fromkeys(material_group_lines().group))
 
 
+def _catalog_spelling(name: str) -> str:
+    """``name`` as the catalog spells it: an exact name, else the one name that matches it ignoring case
+    (``42crmo4`` is 42CrMo4); a name that matches none is refused with the nearest names (difflib)."""
+    names = material_names()
+    if name in names:
+        return name
+    folded = {}
+    for n in names:
+        folded.setdefault(n.casefold(), n)
+    if name.casefold() in folded:
+        return folded[name.casefold()]
+    near = [folded[k] for k in difflib.get_close_matches(name.casefold(), list(folded), n=3, cutoff=0.5)]
+    hint = f"; nearest: {', '.join(near)}" if near else ""
+    raise GearDesignError(f"material must be a name of the catalog or an ISO 6336-5 group (see material_names()), "
+                          f"got {name!r}{hint}")
+
+
 def material(name: str, *, hardness: float | None = None, quality: str | None = None, E_mpa: float | None = None,
              nu: float | None = None, yield_mpa: float | None = None) -> Material:
     """A :class:`Material` by name: a named steel of ``catalogs/materials_iso6336.csv`` (``"42CrMo4"``,
@@ -145,10 +163,12 @@ def material(name: str, *, hardness: float | None = None, quality: str | None = 
     ('V', 300.0, 766.9, 314.5)
     >>> material("40Х").name
     '40Cr'
-    >>> material("unobtainium")
+    >>> material("42crmo4").name          # any case
+    '42CrMo4'
+    >>> material("42CrMo5")
     Traceback (most recent call last):
     ...
-    geardesign.errors.GearDesignError: material must be a name of the catalog or an ISO 6336-5 group (see material_names()), got 'unobtainium'
+    geardesign.errors.GearDesignError: material must be a name of the catalog or an ISO 6336-5 group (see material_names()), got '42CrMo5'; nearest: 42CrMo4, 42CrMo4-IF, 34CrNiMo6
     """
     try:
         return _material_cached(name, hardness, quality, E_mpa, nu, yield_mpa)
@@ -168,6 +188,7 @@ def _material(name, hardness, quality, E_mpa, nu, yield_mpa) -> Material:
     if not isinstance(name, str) or not name:
         raise GearDesignError(f"material must be a name of the catalog or an ISO 6336-5 group (see material_names()), "
                               f"got {name!r}")
+    name = _catalog_spelling(name)
     named = named_materials()
     row = None
     if isinstance(name, str):
@@ -176,10 +197,6 @@ def _material(name, hardness, quality, E_mpa, nu, yield_mpa) -> Material:
         else:
             hits = named[named.aliases.apply(lambda text: name in text.split("|"))]
             row = hits.iloc[0] if len(hits) else None
-    groups = set(material_group_lines().group)
-    if row is None and name not in groups:
-        raise GearDesignError(f"material must be a name of the catalog or an ISO 6336-5 group (see material_names()), "
-                              f"got {name!r}")
     group = row.group if row is not None else name
     q = quality if quality is not None else (row.quality if row is not None else "MQ")
     if hardness is None and row is None:
