@@ -6,7 +6,7 @@ from pathlib import Path
 
 PKG = Path(__file__).resolve().parents[2] / "geardesign"
 LAYERS = [
-    {"errors", "validate", "results", "files", "inline", "parallel", "catalog_files"},
+    {"errors", "validate", "results", "files", "inline", "parallel", "progress", "catalog_files"},
     {"catalogs"},
     {"gears"},
     {"shifts", "profiles"},

@@ -137,6 +137,13 @@ class StageKind:
         """True when a solved option depends on the flow into the stage (sized by its load)."""
         return False
 
+    def cost_grows_with_load(self, stage) -> bool:
+        """True when a solved option's cost (size and mass) only grows as the torque into the stage rises
+        along the drive's power flow (its speed falling in proportion): the search then bounds the option's
+        cost over a cell of torques by its cost at the cell's least torque. A kind sized by a model that
+        holds this (the strength of a pair grows with √T; the speed's factors move it by a few %) says so."""
+        return False
+
     def design_columns(self, stage, option: dict, info, c: int) -> dict:
         """The columns of design ``c`` in the optimum's table (besides ``<name>.ratio``)."""
         return {}
