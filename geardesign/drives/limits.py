@@ -3,7 +3,7 @@ from __future__ import annotations
 
 __all__ = ["OBJECTIVES", "STAGES_MAX", "COMBINATIONS_MAX", "CANDIDATES_MAX", "TOP_MAX", "TOTAL_RATIO_RANGE",
            "RATIO_TOL_RANGE", "SPEED_RANGE_RPM", "POWER_RANGE_KW", "TORQUE_RANGE_NM", "MARGIN_TOL", "SHIFT_CACHE",
-           "INFEASIBLE_SHOWN", "LOAD_BOUNDS_MAX", "LOAD_CELL", "COMBINATION_BLOCK", "SIZING_TRIES", "LOOK_AHEAD",
+           "INFEASIBLE_SHOWN", "LOAD_BOUNDS_MAX", "LOAD_CELL", "COMBINATION_BLOCK", "PLAIN_DESIGNS_MAX", "PRUNE_GROWTH", "SIZING_TRIES", "LOOK_AHEAD",
            "MARGIN_AHEAD"]
 
 OBJECTIVES = ("min_size", "min_mass", "max_margin")
@@ -11,6 +11,8 @@ STAGES_MAX = 6                    # stages in one drive
 COMBINATIONS_MAX = 4_000_000      # ratio combinations (one option per stage) held at once (~100 MB for 3 stages)
 COMBINATION_BLOCK = 4_000_000     # (partial product, option) pairs tested at once while the split is built (~40 MB)
 CANDIDATES_MAX = 2_000_000        # designs evaluated at once: combinations × chain catalog rows
+PLAIN_DESIGNS_MAX = 1_000_000     # designs of a split enumerated whole; beyond, under a cost limit (drives/pruning.py)
+PRUNE_GROWTH = 1.25               # the cost limit of a pruned split is raised by this factor until the list is complete
 TOP_MAX = 1000                    # alternatives listed
 TOTAL_RATIO_RANGE = (1e-3, 1e5)
 RATIO_TOL_RANGE = (0.0, 0.5)

@@ -33,7 +33,8 @@ from ..errors import GearDesignError
 from . import key
 from .drive_results import DriveOptimum
 from .limits import (CANDIDATES_MAX, COMBINATION_BLOCK, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX,
-                     LOAD_CELL, MARGIN_TOL)
+                     LOAD_CELL, MARGIN_TOL, PLAIN_DESIGNS_MAX, PRUNE_GROWTH)
+from .pruning import StageBounds, pruned_combinations
 from .stage_kinds import StageFlow, kind_of
 from .stages import Shaft
 
@@ -54,6 +55,10 @@ class Designs:
     torque_in_nm: np.ndarray
     n_out_rpm: np.ndarray
     torque_out_nm: np.ndarray
+
+
+class _Large(Exception):
+    """The ratio split has more designs than the plain enumeration takes (PLAIN_DESIGNS_MAX)."""
 
 
 def min_margin(margins: dict):
@@ -99,20 +104,65 @@ class Search:
         ``where``: client= / workers= of :func:`geardesign.parallel.map_chunks` for the solved stages'
         solves (empty: here, one by one as the walk needs them)."""
         self.report = progress or (lambda label, done, total: None)
-        why = self.enumerate()               # 1-3: options per stage, ratio combinations, rows
+        self.n_pruned, self._bounds = 0, None
+        why = self._stage_options()          # 1: options per stage
+        if not why:
+            try:                             # 2: ratio combinations (all of them, when few enough)
+                why = self._combinations(PLAIN_DESIGNS_MAX if self._prunable() else None)
+            except _Large:
+                return self._run_pruned(where or {})
         if why:
             return self.no_split(why)
+        self._designs()                      # 3: the combinations times the rows, their flow
         self.batch_checks()                  # 4: every batch margin, key and motor check at once
         self.branch_and_bound(where or {})   # 5: the solved stages, best bound first
         return self.result()                 # 6: ranked table, the closest failing designs, the best
 
+    def _prunable(self) -> bool:
+        """A split too large to hold whole may be enumerated under a cost limit (:mod:`.pruning`): the
+        objectives of size and mass, with the input power given (it fixes each stage's power curve)."""
+        return self.drive.power_kw is not None and self.objective in ("min_size", "min_mass")
+
+    def _run_pruned(self, where: dict) -> DriveOptimum:
+        """Steps 2-6 under a cost limit raised by PRUNE_GROWTH from the cheapest bound until the ``top``
+        list is complete within it (a design left out costs more than its bound, so more than the limit)
+        or nothing is left out."""
+        self._bounds = bounds = StageBounds(self)
+        limit = sum(bounds.least())          # every stage's cheapest option at the least torque it can carry
+        while True:
+            idx, pruned, with_rows = pruned_combinations(self, bounds, limit)
+            n = with_rows[0].shape[0] if with_rows is not None else idx.shape[0] * self._rows_factor()
+            if n > CANDIDATES_MAX:
+                raise GearDesignError(
+                    f"{n} designs (ratio combinations x chain rows) could still rank after "
+                    f"{pruned} sub-trees of the ratio split were bounded out, more than {CANDIDATES_MAX}: narrow "
+                    f"the stages' z1_range, z2_max, ratio_range, the chain's strands or catalog, or ratio_tol")
+            self.report("drive: bounding the ratio split", 1, 1)
+            if n:
+                self.idx, self.n_comb, self.n_pruned = idx, idx.shape[0], pruned
+                self._designs(with_rows)
+                self.batch_checks()
+                self.branch_and_bound(where)
+                cost = np.sort(self.ex["cost"][self.ex["feas"]])
+                if pruned == 0 or (cost.size >= self.top and cost[self.top - 1] <= limit):
+                    return self.result()
+                if cost.size >= self.top:    # the list is complete within the cost of its last design
+                    limit = max(limit, float(cost[self.top - 1]))
+                    continue
+            elif pruned == 0:
+                return self.no_split(f"no combination of the stages' tooth pairs gives u = {self.U:g} ± "
+                                     f"{100 * self.tol:g} %")
+            limit *= PRUNE_GROWTH
+
     # -- 1-3: the designs
-    def enumerate(self) -> str:
-        """Options, combinations and rows; the reason when there is no design, else ''."""
-        why = self._stage_options() or self._combinations()
-        if why:
-            return why
-        self._expand_rows()
+    def _designs(self, with_rows=None) -> None:
+        """The combinations times the rows (``with_rows``: (idx, {stage: rows}) already chosen), their
+        ratios, flow and ratio error."""
+        if with_rows is None:
+            self._expand_rows()
+        else:
+            self.idx, self.rows = with_rows
+            self.n_cand = self.idx.shape[0]
         self.ratios = np.column_stack([self.options[k]["ratio"][self.idx[:, k]] for k in range(len(self.stages))])
         self.n, self.T, self.P = self.drive._flow(self.ratios)
         self.err = np.abs(np.prod(self.ratios, axis=1) - self.U) / self.U
@@ -136,7 +186,7 @@ class Search:
             self.options.append(opts)
         return ""
 
-    def _combinations(self) -> str:
+    def _combinations(self, most=None) -> str:
         """One option per stage, the product inside the ratio window (the remaining stages' range
         bounds each partial product). Each step is counted before it is built, in blocks of partial
         products (a step's pairs never all in memory at once), and refused by name beyond
@@ -155,8 +205,12 @@ class Search:
 
             step = max(1, COMBINATION_BLOCK // max(ratio.size, 1))
             blocks = [slice(s, s + step) for s in range(0, prod.size, step)]
-            keeps = [keep(b) for b in blocks]
-            total = sum(i.size for i, _ in keeps)
+            keeps, total = [], 0
+            for b in blocks:
+                keeps.append(keep(b))
+                total += keeps[-1][0].size
+                if most is not None and total * self._rows_factor() > most:
+                    raise _Large(total)     # known before the rest of the step is built
             if total * (k + 1) > COMBINATIONS_MAX * N:
                 raise GearDesignError(f"the ratio split has {total} combinations of the first {k + 1} stages' "
                                       f"options, more than the {COMBINATIONS_MAX} this search holds in memory: "
@@ -169,6 +223,10 @@ class Search:
             return f"no combination of the stages' tooth pairs gives u = {self.U:g} ± {100 * self.tol:g} %"
         self.idx, self.n_comb = idx, prod.size
         return ""
+
+    def _rows_factor(self) -> int:
+        """How many designs one ratio combination makes (the product of the stages' row counts)."""
+        return math.prod(r.size for r in (k.rows(st) for k, st in zip(self.kinds, self.stages)) if r is not None)
 
     def _expand_rows(self) -> None:
         """The combinations times the rows of every stage that has rows (e.g. chain catalog rows)."""
@@ -292,6 +350,9 @@ class Search:
         """Stage k's (size, mass) lower bound of every design: per option, or for a stage sized by
         its load per (option, input flow) while there are at most LOAD_BOUNDS_MAX of them."""
         kind, st = self.kinds[k], self.stages[k]
+        if self._bounds is not None and kind.cost_grows_with_load(st):     # the pruned split's, per torque cell
+            b = self._bounds.at(k, self.idx[:, k], self.T[:, k])
+            return b[:, 0], b[:, 1]
         if k in self.flow_group and kind.cost_grows_with_load(st) and self._cells_pay():
             return self._cell_bounds(k)
         if k in self.flow_group:
