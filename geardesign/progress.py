@@ -18,10 +18,10 @@ class Bar:
     """``bar(label, done, total)``: one tqdm bar on ``stream`` (stderr), restarted when the label changes;
     ``close()`` removes it. ``show`` None: only when the stream is a terminal."""
 
-    def __init__(self, show: bool | None = None, stream=None, delay_s: float = DELAY_S):
+    def __init__(self, show: bool | None = None, stream=None, delay_s: float = DELAY_S, min_interval_s: float = 0.2):
         self.stream = stream or sys.stderr
         self.show = _isatty(self.stream) if show is None else bool(show)
-        self.delay_s = delay_s
+        self.delay_s, self.min_interval_s = delay_s, min_interval_s
         self._bar = None
 
     def __call__(self, label: str, done: int, total: int) -> None:
@@ -33,7 +33,7 @@ class Bar:
             from tqdm import tqdm   # here: only a shown bar needs it
 
             self._bar = tqdm(total=total, desc=label, file=self.stream, leave=False, delay=self.delay_s,
-                             dynamic_ncols=True, mininterval=0.2)
+                             dynamic_ncols=True, mininterval=self.min_interval_s)
         self._bar.update(min(int(done), total) - self._bar.n)
 
     def close(self) -> None:

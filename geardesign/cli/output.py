@@ -91,11 +91,11 @@ class Progress:
     """A progress bar on stderr (tqdm, :class:`geardesign.progress.Bar`), shown only on a terminal and once
     the work has run a few seconds; never on stdout, so ``--json`` stays clean."""
 
-    def __init__(self, total: int, label: str = "", stream=None, show: bool | None = None):
+    def __init__(self, total: int, label: str = "", stream=None, show: bool | None = None, **bar):
         self.total = max(int(total), 1)
         self.label = label
         self.done = 0
-        self._bar = Bar(show, stream or sys.stderr)
+        self._bar = Bar(show, stream or sys.stderr, **bar)    # bar: delay_s, min_interval_s of Bar
         self.enabled = self._bar.show
 
     def update(self, n: int = 1) -> None:
