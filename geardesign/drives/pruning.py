@@ -41,18 +41,21 @@ class StageBounds:
         self.rows_cache = [dict() for _ in range(N)]     # a batch kind's (size, mass, holds) per row and cell
         self.free = [self._free(k) for k in range(N)]
         self.col = 0 if search.objective == "min_size" else 1     # the objective's column: size, mass
-        self._least = None
+        self._least_of = [None] * N
+
+    def least_of(self, k: int) -> np.ndarray:
+        """Stage k's options' bounds at the least torque the stage can carry (the smallest ratios before it):
+        below their bound at any torque they carry."""
+        if self._least_of[k] is None:
+            r_min = [float(o["ratio"].min()) for o in self.s.options[:k]]
+            j = np.arange(self.s.options[k]["ratio"].size)
+            T = np.full(j.size, self.t0 * self.eta_before[k] * math.prod(r_min))
+            self._least_of[k] = self.at(k, j, T)[:, self.col]
+        return self._least_of[k]
 
     def least(self) -> list:
-        """Each stage's cheapest option at the least torque it can carry (the smallest ratios before it)."""
-        if self._least is None:
-            r_min = [float(o["ratio"].min()) for o in self.s.options]
-            self._least = []
-            for k in range(len(r_min)):
-                j = np.arange(self.s.options[k]["ratio"].size)
-                T = np.full(j.size, self.t0 * self.eta_before[k] * math.prod(r_min[:k]))
-                self._least.append(float(self.at(k, j, T)[:, self.col].min()))
-        return self._least
+        """Each stage's cheapest option at the least torque it can carry."""
+        return [float(self.least_of(k).min()) for k in range(len(self.s.stages))]
 
     def _free(self, k: int) -> np.ndarray:
         """(options, 2) load-free bounds of stage k (0 for a kind that computes its cost in a batch)."""
@@ -172,7 +175,7 @@ def pruned_combinations(search, bounds: StageBounds, limit: float) -> tuple:
             i, j = np.nonzero((new * hi_rest >= U_lo * (1 - 1e-12)) & (new * lo_rest <= U_hi * (1 + 1e-12)))
             i = i + a
             qq = q[i] * ratio[j]
-            cheap = lb[i] + bounds.free[k][j, col] + rest[k] <= limit * (1 + 1e-12)
+            cheap = lb[i] + bounds.least_of(k)[j] + rest[k] <= limit * (1 + 1e-12)
             pruned += int(np.count_nonzero(~cheap))
             i, j, qq = i[cheap], j[cheap], qq[cheap]
             T = bounds.t0 * bounds.eta_before[k] * np.maximum(U_lo / qq, lo_rest)
