@@ -25,7 +25,8 @@ INFEASIBLE_SHOWN = 5              # closest failing designs listed after the fea
 LOAD_BOUNDS_MAX = 20_000          # (option, input flow) bounds of a stage sized by load; beyond, its load-free bound
 LOAD_CELL = 1.05                  # a stage whose cost grows with its load is bounded per option and torque cell of
                                   # this ratio (its cost at the cell's least torque): designs of a cell within 5 %
-                                  # (three sized stages, u = 70: 17 s CPU at 1.05, 20-26 s at 1.1, 22 s at 1.03)
+                                  # (three sized stages, u = 70: 15-17 s CPU at 1.05, 21 s at 1.1, 22 s at 1.03;
+                                  # the conveyor of issue 35: 23 s at 1.05, 15 s at 1.1; shared machine)
 SIZING_TRIES = 8                  # sized candidates re-solved for their own shifts before a tooth pair is given up
 LOOK_AHEAD = 16                   # groups of the branch and bound whose options are solved together (a pair's
                                   # strength sizing shares one vectorised call, ~1 ms of fixed cost per call);
