@@ -214,7 +214,8 @@ class Drive:
         few seconds), True always, False never; a callable ``progress(done, total)`` is called instead after
         each group of designs sharing their gear tooth pairs (the walk may stop well before ``total``). ``client=`` (a ``dask.distributed.Client``) or
         ``workers=N`` solve every group's tooth pairs on a cluster first, in chunks (the walk then finds them
-        solved: the same optimum as here, bit for bit; docs/scale.md).
+        solved: the same optimum as here, bit for bit; docs/scale.md); a split too large to enumerate whole
+        (built under a cost limit, docs/drive_train.md "Large splits") is solved here.
         """
         t0 = time.perf_counter()
         U = one_number("total_ratio", require_range("total_ratio", total_ratio, *TOTAL_RATIO_RANGE))

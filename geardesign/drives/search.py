@@ -110,7 +110,7 @@ class Search:
             try:                             # 2: ratio combinations (all of them, when few enough)
                 why = self._combinations(PLAIN_DESIGNS_MAX if self._prunable() else None)
             except _Large:
-                return self._run_pruned(where or {})
+                return self._run_pruned()
         if why:
             return self.no_split(why)
         self._designs()                      # 3: the combinations times the rows, their flow
@@ -123,7 +123,7 @@ class Search:
         objectives of size and mass, with the input power given (it fixes each stage's power curve)."""
         return self.drive.power_kw is not None and self.objective in ("min_size", "min_mass")
 
-    def _run_pruned(self, where: dict) -> DriveOptimum:
+    def _run_pruned(self) -> DriveOptimum:
         """Steps 2-6 under a cost limit raised by PRUNE_GROWTH from the cheapest bound until the ``top``
         list is complete within it (a design left out costs more than its bound, so more than the limit)
         or nothing is left out."""
@@ -142,7 +142,9 @@ class Search:
                 self.idx, self.n_comb, self.n_pruned = idx, idx.shape[0], pruned
                 self._designs(with_rows)
                 self.batch_checks()
-                self.branch_and_bound(where)
+                # here, not on the cluster: presolving every group of ~10⁵-10⁶ designs would solve far more than
+                # the walk (a few hundred groups); the bounds' solves are batched per torque cell already
+                self.branch_and_bound({})
                 cost = np.sort(self.ex["cost"][self.ex["feas"]])
                 if pruned == 0 or (cost.size >= self.top and cost[self.top - 1] <= limit):
                     return self.result()
