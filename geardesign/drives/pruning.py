@@ -37,8 +37,8 @@ class StageBounds:
         self.power_kw = [drive.power_kw * float(np.prod(eta[:k])) for k in range(N)]
         self.t0 = drive.power_kw * 1000.0 / (2.0 * math.pi * drive.n_in_rpm / 60.0)
         self.eta_before = [float(np.prod(eta[:k])) for k in range(N)]
-        self.cache = [dict() for _ in range(N)]
-        self.rows_cache = [dict() for _ in range(N)]     # a batch kind's (size, mass, holds) per row and cell
+        self.cache = [{} for _ in range(N)]
+        self.rows_cache = [{} for _ in range(N)]     # a batch kind's (size, mass, holds) per row and cell
         self.free = [self._free(k) for k in range(N)]
         self.col = 0 if search.objective == "min_size" else 1     # the objective's column: size, mass
         self._least_of = [None] * N

@@ -200,16 +200,13 @@ class Search:
             rest_lo = math.prod(float(options[j]["ratio"].min()) for j in range(k + 1, N))
             rest_hi = math.prod(float(options[j]["ratio"].max()) for j in range(k + 1, N))
             ratio = o["ratio"]
-
-            def keep(b):
-                new = prod[b, None] * ratio[None, :]
-                return np.nonzero((new * rest_hi >= self.u_lo * (1 - 1e-12)) & (new * rest_lo <= self.u_hi * (1 + 1e-12)))
-
             step = max(1, COMBINATION_BLOCK // max(ratio.size, 1))
             blocks = [slice(s, s + step) for s in range(0, prod.size, step)]
             keeps, total = [], 0
             for b in blocks:
-                keeps.append(keep(b))
+                new = prod[b, None] * ratio[None, :]
+                keeps.append(np.nonzero((new * rest_hi >= self.u_lo * (1 - 1e-12))
+                                        & (new * rest_lo <= self.u_hi * (1 + 1e-12))))
                 total += keeps[-1][0].size
                 if most is not None and total * self._rows_factor() > most:
                     raise _Large(total)     # known before the rest of the step is built
