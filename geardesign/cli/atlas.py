@@ -7,7 +7,8 @@ from ..shifts.atlas import ATLAS_PAIRS_MAX, atlas_size, shift_atlas
 from ..files import check_output_path, write_file_atomic
 from ..errors import GearDesignError
 from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args, local_workers
-from .output import Progress, add_json_flag, frame_records, print_frame, print_json, print_verdict_line
+from .output import (Progress, add_json_flag, add_progress_flag, frame_records, print_frame, print_json,
+                     print_verdict_line)
 from .options import add_rack_args, rack_from_args
 from .pair import add_kind_args, kind_from_args
 from .options import add_check_args, checks_from_args
@@ -40,6 +41,7 @@ def add_parser(sub):
     add_rack_args(p)
     add_check_args(p)
     add_json_flag(p)
+    add_progress_flag(p)
     add_cluster_args(p)
     return p
 
@@ -54,7 +56,7 @@ def run(args) -> int:
                               f"{limit:,}" + (f" ({ATLAS_PAIRS_MAX:,} per worker)" if limit > ATLAS_PAIRS_MAX else ""))
     if args.out:
         check_output_path(args.out, overwrite=args.overwrite, suffixes=(".csv",), what="--out")
-    bar = Progress(n, "atlas")
+    bar = Progress(n, "atlas", show=True if args.progress else None)
     with cluster_from_args(args) as client:
         df = shift_atlas(z1, z2, objective=args.objective, checks=checks_from_args(args), method=args.method,
                          rack=rack_from_args(args), progress=lambda k: bar.to(k, n), **kind_from_args(args),

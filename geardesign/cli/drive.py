@@ -24,7 +24,7 @@ from ..scene.drive import compute_drive
 from ..scene.html import drive_report
 from ..scene.load import load_scene
 from .options import add_cluster_args, add_load_args, add_output_file, cluster_from_args, strength_from_args
-from .output import Progress, add_json_flag, print_frame, print_json, print_verdict_line, print_wrapped
+from .output import Progress, add_json_flag, add_progress_flag, print_frame, print_json, print_verdict_line, print_wrapped
 
 
 def add_parser(subparsers):
@@ -43,6 +43,7 @@ def add_parser(subparsers):
     p.add_argument("--report", metavar="HTML", default=None,
                    help="write a one-page report (checks, power flow, stages, gear geometry, keys, diagram) to this HTML file")
     add_json_flag(p)
+    add_progress_flag(p)
     add_load_args(p, limits=True)
     add_cluster_args(p)
     return p
@@ -121,14 +122,13 @@ def run(args) -> int:
     target = check_output_path(args.plot, overwrite=args.overwrite) if args.plot else None
     if args.report:
         check_output_path(args.report, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--report")
-    bar = Progress(1, "drive: gear pairs")
+    bar = Progress(1, "drive: designs", show=True if args.progress else None)
     try:
         with cluster_from_args(args) as client:
             drive, motor, opt, an = compute_drive({**_with_load(scene.sections["drive"], args), "_client": client},
                                                   bar.to)
     finally:
-        if bar.done:
-            bar.close()
+        bar.close()
     if target is not None and an is not None:
         import matplotlib
         matplotlib.use("Agg")

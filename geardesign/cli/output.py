@@ -8,6 +8,7 @@ import textwrap
 
 import pandas as pd
 
+from ..progress import Bar
 from ..results import plain
 
 
@@ -135,28 +136,31 @@ def check_details(table: pd.DataFrame) -> dict:
     return out
 
 
+def add_progress_flag(parser) -> None:
+    parser.add_argument("--progress", action="store_true",
+                        help="show the progress bar on stderr also when it is not a terminal (it shows on a terminal "
+                             "anyway, once the work has run a few seconds)")
+
+
 def add_json_flag(parser) -> None:
     parser.add_argument("--json", action="store_true",
                         help='print JSON instead of tables (its "ok" says whether the design passes)')
 
 
 class Progress:
-    """A one-line progress bar on stderr, shown only on a terminal."""
+    """A progress bar on stderr (tqdm, :class:`geardesign.progress.Bar`), shown only on a terminal and once
+    the work has run a few seconds; never on stdout, so ``--json`` stays clean."""
 
-    def __init__(self, total: int, label: str = "", stream=None):
+    def __init__(self, total: int, label: str = "", stream=None, show: bool | None = None, **bar):
         self.total = max(int(total), 1)
         self.label = label
-        self.stream = stream or sys.stderr
-        self.enabled = self.stream.isatty()
         self.done = 0
+        self._bar = Bar(show, stream or sys.stderr, **bar)    # bar: delay_s, min_interval_s of Bar
+        self.enabled = self._bar.show
 
     def update(self, n: int = 1) -> None:
         self.done += n
-        if self.enabled:
-            shown = min(self.done, self.total)   # a caller that overshoots its total still reads n/n
-            bar = "#" * int(30 * shown / self.total)
-            self.stream.write(f"\r{self.label} [{bar:<30}] {shown}/{self.total}")
-            self.stream.flush()
+        self._bar(self.label, min(self.done, self.total), self.total)   # an overshooting caller reads n/n
 
     def to(self, done: int, total: int, label: str | None = None) -> None:
         """Show ``done`` of ``total`` (a callback that reports counts rather than steps)."""
@@ -165,7 +169,11 @@ class Progress:
             self.label = label
         self.update(done - self.done)
 
+    def report(self, label: str, done: int, total: int) -> None:
+        """A ``progress(label, done, total)`` of the library's long steps (each step its own bar)."""
+        if label != self.label:
+            self.done = 0
+        self.to(done, total, label)
+
     def close(self) -> None:
-        if self.enabled:
-            self.stream.write("\n")
-            self.stream.flush()
+        self._bar.close()

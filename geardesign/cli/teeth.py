@@ -11,7 +11,8 @@ from ..shifts.teeth import select_teeth
 from ..files import check_output_path, write_file_atomic
 from .options import (add_check_args, add_cluster_args, add_output_file, add_solver_args, checks_from_args,
                       cluster_from_args)
-from .output import Progress, add_json_flag, frame_records, print_frame, print_json, print_verdict_line, print_wrapped
+from .output import (Progress, add_json_flag, add_progress_flag, frame_records, print_frame, print_json,
+                     print_verdict_line, print_wrapped)
 from .options import add_rack_args, rack_from_args
 from .pair import add_kind_args, kind_from_args
 
@@ -63,6 +64,7 @@ def add_parser(subparsers):
     add_rack_args(p)
     add_check_args(p)
     add_json_flag(p)
+    add_progress_flag(p)
     add_cluster_args(p)
     return p
 
@@ -77,7 +79,7 @@ def run(args) -> int:
         m_range = (args.m_min if args.m_min is not None else 1.0, args.m_max if args.m_max is not None else 50.0)
     if args.out:
         check_output_path(args.out, overwrite=args.overwrite, suffixes=(".csv",), what="--out")
-    bar = Progress(0, "solving shifts")
+    bar = Progress(0, "solving shifts", show=True if args.progress else None)
     try:
         with cluster_from_args(args) as client:
             sel = select_teeth(args.ratio, ratio_tol=args.ratio_tol, m=m, a_w=a_w,

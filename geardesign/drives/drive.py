@@ -21,11 +21,12 @@ import numpy as np
 import pandas as pd
 
 from ..errors import GearDesignError
+from ..progress import bar_for
 from ..validate import one_number, require_range
 from .drive_results import DriveAnalysis, DriveOptimum
 from .limits import (CANDIDATES_MAX, COMBINATIONS_MAX, MARGIN_TOL, OBJECTIVES, POWER_RANGE_KW, RATIO_TOL_RANGE,
                      SPEED_RANGE_RPM, STAGES_MAX, TOP_MAX, TORQUE_RANGE_NM, TOTAL_RATIO_RANGE)
-from .search import Search
+from .search import WALK_LABEL, Search
 from .stage_kinds import StageFlow, kind_of
 from .stages import Shaft
 
@@ -214,10 +215,12 @@ class Drive:
         plus the chain (mass per metre × length); ``max_margin``: the largest smallest margin of
         every check of the drive. Ties go to the smaller ratio error, then the smaller size.
         The total ratio must hold within ``ratio_tol`` (relative). ``top`` alternatives are listed.
-        ``progress(done, total)`` is called after each group of designs sharing their gear tooth pairs
-        (the walk may stop well before ``total``). ``client=`` (a ``dask.distributed.Client``) or
+        ``progress``: None shows a bar on stderr when it is a terminal (tqdm, once the search has run a
+        few seconds), True always, False never; a callable ``progress(done, total)`` is called instead after
+        each group of designs sharing their gear tooth pairs (the walk may stop well before ``total``). ``client=`` (a ``dask.distributed.Client``) or
         ``workers=N`` solve every group's tooth pairs on a cluster first, in chunks (the walk then finds them
-        solved: the same optimum as here, bit for bit; docs/scale.md).
+        solved: the same optimum as here, bit for bit; docs/scale.md); a split too large to enumerate whole
+        (built under a cost limit, docs/drive_train.md "Large splits") is solved here.
         """
         t0 = time.perf_counter()
         U = one_number("total_ratio", require_range("total_ratio", total_ratio, *TOTAL_RATIO_RANGE))
@@ -225,7 +228,12 @@ class Drive:
         if objective not in OBJECTIVES:
             raise GearDesignError(f"objective must be one of {', '.join(OBJECTIVES)}, got {objective!r}")
         top = int(require_range("top", top, 1, TOP_MAX))
-        return Search(self, U, tol, objective, top, t0).run(progress, dict(client=client, workers=workers))
+        report, bar = bar_for(progress, WALK_LABEL)
+        try:
+            return Search(self, U, tol, objective, top, t0).run(report, dict(client=client, workers=workers))
+        finally:
+            if bar is not None:
+                bar.close()
 
 
 def _checks_table(rows) -> pd.DataFrame:

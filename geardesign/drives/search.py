@@ -22,7 +22,7 @@ import functools
 import heapq
 import math
 import time
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from functools import lru_cache
 
 import numpy as np
@@ -32,26 +32,19 @@ from .. import parallel
 from ..errors import GearDesignError
 from . import key
 from .drive_results import DriveOptimum
-from .limits import (CANDIDATES_MAX, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX,
-                     MARGIN_TOL)
-from .stage_kinds import StageFlow, kind_of
+from .limits import (CANDIDATES_MAX, COMBINATION_BLOCK, COMBINATIONS_MAX, INFEASIBLE_SHOWN, LOAD_BOUNDS_MAX,
+                     LOAD_CELL, MARGIN_TOL, PLAIN_DESIGNS_MAX, PRUNE_GROWTH)
+from .pruning import StageBounds, pruned_combinations
+from .stage_kinds import Designs, StageFlow, kind_of   # Designs: re-exported here, where it was defined before
 from .stages import Shaft
 
-__all__ = ["Search", "Designs", "min_margin"]
+__all__ = ["Search", "Designs", "min_margin", "WALK_LABEL"]
+
+WALK_LABEL = "drive: designs"     # the branch and bound's step, the one a progress(done, total) callback follows
 
 
-@dataclass(frozen=True)
-class Designs:
-    """One stage's view of N designs, handed to :meth:`StageKind.batch`: ``option`` its option
-    columns at each design ({column: array (N,)}), ``rows`` its row per design (or None), and the
-    flow into and out of it (arrays (N,), rpm and N·m)."""
-
-    option: dict
-    rows: object
-    n_in_rpm: np.ndarray
-    torque_in_nm: np.ndarray
-    n_out_rpm: np.ndarray
-    torque_out_nm: np.ndarray
+class _Large(Exception):
+    """The ratio split has more designs than the plain enumeration takes (PLAIN_DESIGNS_MAX)."""
 
 
 def min_margin(margins: dict):
@@ -93,22 +86,71 @@ class Search:
         self.look_ahead = max([1] + [self.kinds[k].solve_ahead(self.stages[k], objective) for k in self.solved_k])
 
     def run(self, progress=None, where=None) -> DriveOptimum:
-        """The search; ``where``: client= / workers= of :func:`geardesign.parallel.map_chunks` for the
-        solved stages' solves (empty: here, one by one as the walk needs them)."""
-        why = self.enumerate()               # 1-3: options per stage, ratio combinations, rows
+        """The search; ``progress(label, done, total)`` is told how far each long step is (None: nothing);
+        ``where``: client= / workers= of :func:`geardesign.parallel.map_chunks` for the solved stages'
+        solves (empty: here, one by one as the walk needs them)."""
+        self.report = progress or (lambda label, done, total: None)
+        self.n_pruned, self._bounds = 0, None
+        why = self._stage_options()          # 1: options per stage
+        if not why:
+            try:                             # 2: ratio combinations (all of them, when few enough)
+                why = self._combinations(PLAIN_DESIGNS_MAX if self._prunable() else None)
+            except _Large:
+                return self._run_pruned()
         if why:
             return self.no_split(why)
+        self._designs()                      # 3: the combinations times the rows, their flow
         self.batch_checks()                  # 4: every batch margin, key and motor check at once
-        self.branch_and_bound(progress, where or {})   # 5: the solved stages, best bound first
+        self.branch_and_bound(where or {})   # 5: the solved stages, best bound first
         return self.result()                 # 6: ranked table, the closest failing designs, the best
 
+    def _prunable(self) -> bool:
+        """A split too large to hold whole may be enumerated under a cost limit (:mod:`.pruning`): the
+        objectives of size and mass, with the input power given (it fixes each stage's power curve)."""
+        return self.drive.power_kw is not None and self.objective in ("min_size", "min_mass")
+
+    def _run_pruned(self) -> DriveOptimum:
+        """Steps 2-6 under a cost limit raised by PRUNE_GROWTH from the cheapest bound until the ``top``
+        list is complete within it (a design left out costs more than its bound, so more than the limit)
+        or nothing is left out."""
+        self._bounds = bounds = StageBounds(self)
+        limit = sum(bounds.least())          # every stage's cheapest option at the least torque it can carry
+        while True:
+            idx, pruned, with_rows = pruned_combinations(self, bounds, limit)
+            n = with_rows[0].shape[0] if with_rows is not None else idx.shape[0] * self._rows_factor()
+            if n > CANDIDATES_MAX:
+                raise GearDesignError(
+                    f"{n} designs (ratio combinations x chain rows) could still rank after "
+                    f"{pruned} sub-trees of the ratio split were bounded out, more than {CANDIDATES_MAX}: narrow "
+                    f"the stages' z1_range, z2_max, ratio_range, the chain's strands or catalog, or ratio_tol")
+            self.report("drive: bounding the ratio split", 1, 1)
+            if n:
+                self.idx, self.n_comb, self.n_pruned = idx, idx.shape[0], pruned
+                self._designs(with_rows)
+                self.batch_checks()
+                # here, not on the cluster: presolving every group of ~10⁵-10⁶ designs would solve far more than
+                # the walk (a few hundred groups); the bounds' solves are batched per torque cell already
+                self.branch_and_bound({})
+                cost = np.sort(self.ex["cost"][self.ex["feas"]])
+                if pruned == 0 or (cost.size >= self.top and cost[self.top - 1] <= limit):
+                    return self.result()
+                if cost.size >= self.top:    # the list is complete within the cost of its last design
+                    limit = max(limit, float(cost[self.top - 1]))
+                    continue
+            elif pruned == 0:
+                return self.no_split(f"no combination of the stages' tooth pairs gives u = {self.U:g} ± "
+                                     f"{100 * self.tol:g} %")
+            limit *= PRUNE_GROWTH
+
     # -- 1-3: the designs
-    def enumerate(self) -> str:
-        """Options, combinations and rows; the reason when there is no design, else ''."""
-        why = self._stage_options() or self._combinations()
-        if why:
-            return why
-        self._expand_rows()
+    def _designs(self, with_rows=None) -> None:
+        """The combinations times the rows (``with_rows``: (idx, {stage: rows}) already chosen), their
+        ratios, flow and ratio error."""
+        if with_rows is None:
+            self._expand_rows()
+        else:
+            self.idx, self.rows = with_rows
+            self.n_cand = self.idx.shape[0]
         self.ratios = np.column_stack([self.options[k]["ratio"][self.idx[:, k]] for k in range(len(self.stages))])
         self.n, self.T, self.P = self.drive._flow(self.ratios)
         self.err = np.abs(np.prod(self.ratios, axis=1) - self.U) / self.U
@@ -132,27 +174,44 @@ class Search:
             self.options.append(opts)
         return ""
 
-    def _combinations(self) -> str:
+    def _combinations(self, most=None) -> str:
         """One option per stage, the product inside the ratio window (the remaining stages' range
-        bounds each partial product)."""
+        bounds each partial product). Each step is counted before it is built, in blocks of partial
+        products (a step's pairs never all in memory at once), and refused by name beyond
+        COMBINATIONS_MAX."""
         options, N = self.options, len(self.options)
         idx = np.zeros((1, 0), dtype=np.int64)
         prod = np.ones(1)
         for k, o in enumerate(options):
             rest_lo = math.prod(float(options[j]["ratio"].min()) for j in range(k + 1, N))
             rest_hi = math.prod(float(options[j]["ratio"].max()) for j in range(k + 1, N))
-            new = prod[:, None] * o["ratio"][None, :]
-            keep = (new * rest_hi >= self.u_lo * (1 - 1e-12)) & (new * rest_lo <= self.u_hi * (1 + 1e-12))
-            i, j = np.nonzero(keep)
-            if i.size > COMBINATIONS_MAX:
-                raise GearDesignError(f"the ratio split has {i.size} combinations of tooth pairs, more than "
-                                      f"{COMBINATIONS_MAX}: narrow the stages' z1_range, z2_max or ratio_range")
+            ratio = o["ratio"]
+            step = max(1, COMBINATION_BLOCK // max(ratio.size, 1))
+            blocks = [slice(s, s + step) for s in range(0, prod.size, step)]
+            keeps, total = [], 0
+            for b in blocks:
+                new = prod[b, None] * ratio[None, :]
+                keeps.append(np.nonzero((new * rest_hi >= self.u_lo * (1 - 1e-12))
+                                        & (new * rest_lo <= self.u_hi * (1 + 1e-12))))
+                total += keeps[-1][0].size
+                if most is not None and total * self._rows_factor() > most:
+                    raise _Large(total)     # known before the rest of the step is built
+            if total * (k + 1) > COMBINATIONS_MAX * N:
+                raise GearDesignError(f"the ratio split has {total} combinations of the first {k + 1} stages' "
+                                      f"options, more than the {COMBINATIONS_MAX} this search holds in memory: "
+                                      f"narrow the stages' z1_range, z2_max or ratio_range, or ratio_tol")
+            i = np.concatenate([ii + b.start for (ii, _), b in zip(keeps, blocks)]) if keeps else np.zeros(0, np.int64)
+            j = np.concatenate([jj for _, jj in keeps]) if keeps else np.zeros(0, np.int64)
             idx = np.column_stack([idx[i], j])
-            prod = new[i, j]
+            prod = prod[i] * ratio[j]
         if prod.size == 0:
             return f"no combination of the stages' tooth pairs gives u = {self.U:g} ± {100 * self.tol:g} %"
         self.idx, self.n_comb = idx, prod.size
         return ""
+
+    def _rows_factor(self) -> int:
+        """How many designs one ratio combination makes (the product of the stages' row counts)."""
+        return math.prod(r.size for r in (k.rows(st) for k, st in zip(self.kinds, self.stages)) if r is not None)
 
     def _expand_rows(self) -> None:
         """The combinations times the rows of every stage that has rows (e.g. chain catalog rows)."""
@@ -276,6 +335,11 @@ class Search:
         """Stage k's (size, mass) lower bound of every design: per option, or for a stage sized by
         its load per (option, input flow) while there are at most LOAD_BOUNDS_MAX of them."""
         kind, st = self.kinds[k], self.stages[k]
+        if self._bounds is not None and kind.cost_grows_with_load(st):     # the pruned split's, per torque cell
+            b = self._bounds.at(k, self.idx[:, k], self.T[:, k])
+            return b[:, 0], b[:, 1]
+        if k in self.flow_group and kind.cost_grows_with_load(st) and self._cells_pay():
+            return self._cell_bounds(k)
         if k in self.flow_group:
             fg = self.flow_group[k]
             pairs, first, inv = np.unique(self.idx[:, k] * (int(fg.max()) + 1) + fg, return_index=True,
@@ -285,6 +349,54 @@ class Search:
                 return b[inv.ravel(), 0], b[inv.ravel(), 1]
         s, m_ = kind.bound(st, self.options[k])
         return s[self.idx[:, k]], m_[self.idx[:, k]]
+
+    def _cells_pay(self) -> bool:
+        """Cell bounds pay when two or more stages grow with their load: the walk, ordered by the others'
+        bounds, would otherwise solve nearly every group; one such stage alone is solved as the walk goes."""
+        return sum(1 for k in self.solved_k if self.kinds[k].cost_grows_with_load(self.stages[k])) >= 2
+
+    def _cell_bounds(self, k: int) -> tuple:
+        """Stage k's (size, mass) lower bound of every design, for a stage whose cost only grows with the load
+        it carries along the power flow (:meth:`StageKind.cost_grows_with_load`: the torque into it up, its
+        speed down): per option and cell of input torque (cells LOAD_CELL wide), the cost of the cell's design
+        of least torque, solved (the walk finds it solved); where that design fails, the option's load-free
+        bound (:meth:`StageKind.bound`)."""
+        kind, st = self.kinds[k], self.stages[k]
+        T = self.T[:, k]
+        cell = np.floor(np.log(T / T.min()) / math.log(LOAD_CELL) + 1e-9).astype(np.int64)
+        key = self.idx[:, k] * (int(cell.max()) + 1) + cell
+        order = np.lexsort((T, key))
+        ks = key[order]
+        first = order[np.r_[True, ks[1:] != ks[:-1]]] if order.size else order
+        _, inv = np.unique(key, return_inverse=True)     # the cells numbered in key order, as ``first``
+        self._solve_designs(k, first, f"bounds of stage '{st.name}'")
+        free_size, free_mass = kind.bound(st, self.options[k])
+        b = np.empty((first.size, 2))
+        for i, c in enumerate(first):
+            sol = self._solved[self._key(k, c)]
+            j = self.idx[c, k]
+            b[i] = kind.solved_cost(st, sol) if sol["feasible"] else (free_size[j], free_mass[j])
+        return b[inv.ravel(), 0], b[inv.ravel(), 1]
+
+    def _solve_designs(self, k: int, designs, label: str) -> None:
+        """Stage k solved at each of ``designs`` (its option at the design's flow) that is not solved yet,
+        in chunks that its kind solves together (:meth:`StageKind.solve_many`)."""
+        kind, st, load = self.kinds[k], self.stages[k], k in self.flow_group
+        todo: dict = {}
+        for c in designs:
+            key = self._key(k, int(c))
+            if key not in self._solved:
+                todo.setdefault(key, int(c))
+        keys, cs = list(todo), list(todo.values())
+        step = max(kind.solve_ahead(st, self.objective), 1) * 4
+        for s in range(0, len(cs), step):
+            part = cs[s:s + step]
+            before = kind.solve_count()
+            sols = kind.solve_many(st, [self.option_at(k, c) for c in part], self.objective,
+                                   [self.flow_at(k, c) if load else None for c in part])
+            self._solved.update(zip(keys[s:s + step], sols))
+            self.n_solves += kind.solve_count() - before
+            self.report(label, s + len(part), len(cs))
 
     def _groups(self):
         """(order, starts, ends, bound per group) of the designs that pass every batch check,
@@ -321,7 +433,7 @@ class Search:
             self._solved[key] = sol
         self.n_solves += len(keys)
 
-    def branch_and_bound(self, progress, where=None) -> None:
+    def branch_and_bound(self, where=None) -> None:
         """Groups of designs sharing their solved options, solved best bound first while a bound can
         still enter the ``top`` list; what each evaluated design costs is kept in ``self.ex``."""
         n_cand, top = self.n_cand, self.top
@@ -345,8 +457,7 @@ class Search:
             ahead = walk[i:i + self.look_ahead]
             self._solve_ahead(order[starts[ahead[glb[ahead] <= limit]]])
             sols = [self._solution(k, members[0]) for k in self.solved_k]
-            if progress is not None:
-                progress(int(np.count_nonzero(glb <= glb[g])), starts.size)
+            self.report(WALK_LABEL, int(np.count_nonzero(glb <= glb[g])), starts.size)
             self._exact(members, sols)
             for v in np.sort(ex["cost"][members][ex["feas"][members]])[:top]:
                 if len(heap) < top:

@@ -174,3 +174,11 @@ def test_drive_strength_width_is_the_face_width_of_stages_without_one(tmp_path, 
     pair = gd.GearPair(4, 20, 60, stage["x1"], stage["x2"], face_width_mm=30)
     res = pair.strength(Load(torque_nm=7500 / (2 * math.pi * 1450 / 60) * 2 * 0.95, n_rpm=725), "42CrMo4")
     assert got["root_strength1"] == pytest.approx(res.S_F1 / res.S_Fmin - 1, rel=1e-12)
+
+
+def test_drive_progress_never_touches_the_json(capsys):
+    """--progress asks for the bar on stderr even off a terminal; stdout stays one JSON document."""
+    assert main(["drive", SEED, "--json", "--progress"]) == 0
+    captured = capsys.readouterr()
+    assert json.loads(captured.out)["ok"] is True
+    assert "{" not in captured.err

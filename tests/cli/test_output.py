@@ -40,31 +40,37 @@ class _Tty(io.StringIO):
 
 def test_progress_only_on_a_terminal():
     quiet = io.StringIO()
-    bar = Progress(4, "walk", stream=quiet)
+    bar = Progress(4, "walk", stream=quiet, delay_s=0)
     bar.update(2)
     bar.close()
     assert quiet.getvalue() == ""
     tty = _Tty()
-    bar = Progress(4, "walk", stream=tty)
+    bar = Progress(4, "walk", stream=tty, delay_s=0, min_interval_s=0)
     bar.update(2)
     bar.update(5)           # past the total: the bar stays full and reads 4/4, not 7/4
     bar.close()
-    frames = tty.getvalue().split("\r")[1:]
-    assert frames[0] == "walk [" + "#" * 15 + " " * 15 + "] 2/4"
-    assert frames[1] == "walk [" + "#" * 30 + "] 4/4\n"
+    out = tty.getvalue()
+    assert "walk" in out and "2/4" in out and "4/4" in out and "7/4" not in out
+
+
+def test_progress_waits_a_few_seconds_before_it_shows():
+    tty = _Tty()
+    bar = Progress(4, "walk", stream=tty)      # the default delay: a quick step shows nothing
+    bar.update(4)
+    bar.close()
+    assert tty.getvalue().strip() == ""
 
 
 def test_progress_to_takes_counts_and_a_zero_total():
     """Callbacks report (done, total): the bar shows them as given; a total of 0 (nothing to solve yet)
     is shown as 0/1, not a division by zero."""
     tty = _Tty()
-    bar = Progress(1, "walk", stream=tty)
+    bar = Progress(1, "walk", stream=tty, delay_s=0, min_interval_s=0)
     bar.to(0, 0)
     bar.to(3, 6, "run")
     bar.close()
-    frames = tty.getvalue().split("\r")[1:]
-    assert frames[0] == "walk [" + " " * 30 + "] 0/1"
-    assert frames[1] == "run [" + "#" * 15 + " " * 15 + "] 3/6\n"
+    out = tty.getvalue()
+    assert "walk" in out and "0/1" in out and "run" in out and "3/6" in out
 
 
 def _wide_frame():

@@ -7,7 +7,7 @@ from pathlib import Path
 
 PKG = Path(__file__).resolve().parents[2] / "geardesign"
 LAYERS = [
-    {"errors", "validate", "results", "files", "inline", "parallel", "catalog_files", "renamed", "writers"},
+    {"errors", "validate", "results", "files", "inline", "parallel", "progress", "catalog_files", "renamed", "writers"},
     {"catalogs", "mechanism"},     # DESIGN.md: catalogs and the slider-crank depend on nothing above validate
     {"gears"},
     {"shifts", "profiles"},

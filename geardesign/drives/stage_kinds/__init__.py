@@ -5,12 +5,12 @@ drawing), found by the drive, the search, the scenes and the diagram through the
 The built-in kinds, registered here in this order: ``given`` (a bought unit), ``gear`` (an external
 gear pair), ``chain`` (a roller chain). docs/extending.md shows how to add one.
 """
-from .base import Batch, StageFlow, StageKind, kind_named, kind_names, kind_of, kinds, register, unregister
+from .base import Batch, Designs, StageFlow, StageKind, kind_named, kind_names, kind_of, kinds, register, unregister
 from .chain import ChainKind
 from .gear import GearKind, set_sizing
 from .given import GivenKind
 
-__all__ = ["StageKind", "StageFlow", "Batch", "register", "unregister", "kind_of", "kind_named", "kind_names", "kinds",
+__all__ = ["StageKind", "StageFlow", "Designs", "Batch", "register", "unregister", "kind_of", "kind_named", "kind_names", "kinds",
            "GivenKind", "GearKind", "ChainKind", "set_sizing"]
 
 for _kind in (GivenKind(), GearKind(), ChainKind()):

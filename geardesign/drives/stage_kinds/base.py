@@ -32,7 +32,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 
-__all__ = ["StageKind", "ToothedKind", "StageFlow", "Batch", "register", "unregister", "kind_of", "kind_named", "kind_names",
+__all__ = ["StageKind", "ToothedKind", "StageFlow", "Designs", "Batch", "register", "unregister", "kind_of", "kind_named", "kind_names",
            "kinds"]
 
 
@@ -45,6 +45,20 @@ class StageFlow:
     torque_in_nm: float
     n_out_rpm: float
     torque_out_nm: float
+
+
+@dataclass(frozen=True)
+class Designs:
+    """One stage's view of N designs, handed to :meth:`StageKind.batch`: ``option`` its option
+    columns at each design ({column: array (N,)}), ``rows`` its row per design (or None), and the
+    flow into and out of it (arrays (N,), rpm and N·m)."""
+
+    option: dict
+    rows: object
+    n_in_rpm: np.ndarray
+    torque_in_nm: np.ndarray
+    n_out_rpm: np.ndarray
+    torque_out_nm: np.ndarray
 
 
 @dataclass
@@ -113,7 +127,7 @@ class StageKind:
 
     def batch(self, stage, designs) -> Batch:
         """Margins, size and mass of many designs at once (``designs``: a
-        :class:`~geardesign.drives.search.Designs` view of this stage)."""
+        :class:`Designs` view of this stage)."""
         return Batch(margins={})
 
     def solve(self, stage, option: dict, objective: str, flow=None) -> dict:
@@ -152,6 +166,13 @@ class StageKind:
 
     def load_dependent(self, stage) -> bool:
         """True when a solved option depends on the flow into the stage (sized by its load)."""
+        return False
+
+    def cost_grows_with_load(self, stage) -> bool:
+        """True when a solved option's cost (size and mass) only grows as the torque into the stage rises
+        along the drive's power flow (its speed falling in proportion): the search then bounds the option's
+        cost over a cell of torques by its cost at the cell's least torque. A kind sized by a model that
+        holds this (the strength of a pair grows with √T; the speed's factors move it by a few %) says so."""
         return False
 
     def design_columns(self, stage, option: dict, info, c: int) -> dict:

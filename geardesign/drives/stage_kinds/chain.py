@@ -60,6 +60,10 @@ class ChainKind(ToothedKind):
     def rows(self, stage):
         return stage.rows()
 
+    def cost_grows_with_load(self, stage) -> bool:
+        """The cheapest catalog row that carries the load grows with it (the chain force F_t = 2T/d)."""
+        return True
+
     def batch(self, stage, designs) -> Batch:
         z1, z2 = designs.option["z1"], designs.option["z2"]
         cols = (designs.rows, z1, z2, designs.n_in_rpm, designs.torque_in_nm)

@@ -326,6 +326,10 @@ class GearKind(ToothedKind):
     def load_dependent(self, stage) -> bool:
         return stage.m is None or stage.material is not None
 
+    def cost_grows_with_load(self, stage) -> bool:
+        """A stage sized by the ISO 6336 strength (σ_H ∝ √T, σ_F ∝ T at a given module and width)."""
+        return stage.m is None and _SIZING[0] is None and stage.material is not None
+
     def sizes(self, stage, torque_nm: float, speed_rpm: float, z1: int, z2: int) -> list:
         """The installed sizing function's (m, face width) candidates for one tooth pair at its load, checked."""
         fn = _SIZING[0]
