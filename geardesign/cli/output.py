@@ -6,8 +6,6 @@ import shutil
 import sys
 import textwrap
 
-import pandas as pd
-
 from ..results import plain
 
 
@@ -30,6 +28,7 @@ def terminal_width() -> int:
 
 def print_frame(frame: pd.DataFrame, title: str | None = None, float_format="{:.6g}") -> None:
     """A table folded to the terminal's width: columns that do not fit continue below, long text cut."""
+    import pandas as pd   # here: pandas costs ~0.2 s to import, and `--help` or a plain `pair` prints no frame
     if title:
         print(title)
     width = max(terminal_width(), 40)

@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import GearDesignError
+from ..catalogs.tables import catalog_dir
 from ..results import Result
 from ..validate import one_number, require_choice, require_range
 from .geometry import min_center_distance, require_module, x_sum_from_center_distance
@@ -267,7 +268,6 @@ def allowances_for_backlash(pair, jbn_min_mm: float, center_distance_allowance_m
 def _gost_table():
     import pandas as pd
 
-    from ..catalogs.tables import catalog_dir   # here: the catalogs layer loads pandas
 
     with (catalog_dir() / "gost1643_backlash.csv").open("r", encoding="utf-8") as fh:
         return pd.read_csv(fh)

@@ -7,7 +7,6 @@ from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 
 from ...catalogs.tables import BUNDLED, chain_catalog, load_catalog
 from ...errors import GearDesignError

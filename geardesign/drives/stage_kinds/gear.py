@@ -26,6 +26,12 @@ from ...errors import GearDesignError
 from ...gears.geometry import M_RANGE_MM, X_ABS_MAX, require_module
 from ...gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
 from ...validate import one_number, require_range
+from ...catalogs.tables import module_series
+from ...gears.checks import resolve_checks
+from ...gears.pair import GearPair
+from ...shifts.centres import margin_centres
+from ...shifts.objectives import OBJECTIVES
+from ...shifts.optimize import optimize_shifts
 from ..limits import LOOK_AHEAD, MARGIN_AHEAD, MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
 from .base import ToothedKind
@@ -80,9 +86,6 @@ def shift_solution(key: tuple) -> dict:
 
 
 def _solve_shifts(m, z1, z2, checks_key, beta_deg, face_width_mm, objective) -> dict:
-    from ...gears.pair import GearPair   # here: the pair's checks and the solvers load pandas and scipy
-    from ...shifts.optimize import optimize_shifts
-
     checks = dict(checks_key) or None
     try:
         r = optimize_shifts(int(z1), int(z2), objective, checks, "exact", m=m, beta_deg=beta_deg, face_width_mm=face_width_mm)
@@ -101,8 +104,6 @@ def margin_solutions(stage: GearStage, pairs: list) -> None:
     (:func:`geardesign.shifts.centres.margin_centres`: each pair's solution bit for bit the one
     :func:`shift_solution` gives alone) into the cache; a pair the batch does not certify is left for
     :func:`shift_solution` to solve alone."""
-    from ...shifts.centres import margin_centres   # here: the shifts layer loads pandas
-
     todo = list(dict.fromkeys(k for k in (_pair_key(stage, z1, z2, "max_margin") for z1, z2 in pairs)
                               if _SOLVED.get(k) is None))
     if len(todo) < 2:
@@ -165,7 +166,6 @@ def set_sizing(fn):
 @lru_cache(maxsize=1)
 def _series() -> np.ndarray:
     """The ISO 54 modules (read once: the catalog lookup costs ~3 ms, the search asks per tooth pair)."""
-    from ...catalogs.tables import module_series   # here: catalogs load pandas
     series = np.array(module_series(), dtype=float)
     series.flags.writeable = False
     return series
@@ -181,7 +181,6 @@ def _shifts_scale_free(stage: GearStage) -> bool:
 
 @lru_cache(maxsize=64)
 def _scale_free_checks(checks_key: tuple, helical: bool) -> bool:
-    from ...gears.checks import resolve_checks   # here: the check registry loads pandas
     from ...gears.checks.external import (ContactRatio, Interference, Jamming, TipThickness, TotalContactRatio,
                                           Undercut)
 
@@ -399,8 +398,6 @@ class GearKind(ToothedKind):
     def analyse(self, stage, flow, objective: str) -> dict:
         """A gear stage at its tooth counts (free shifts solved; a free module sized at the flow): its
         checks (with a material, its strength at the flow too), size and mass."""
-        from ...gears.pair import GearPair   # here: the pair's checks load pandas
-
         st = stage
         if st.m is None:
             sol = self._sized(st, st.z1, st.z2, objective, flow)
@@ -438,8 +435,6 @@ class GearKind(ToothedKind):
 
     # -- scenes
     def scene_keys(self) -> dict:
-        from ...shifts.objectives import OBJECTIVES   # here: the shifts layer loads pandas
-
         f, i = "float", "int"
         from ...gears.strength.load import APPLICATION_FACTOR_RANGE, LIFE_RANGE_H
 
