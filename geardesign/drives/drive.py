@@ -211,8 +211,9 @@ class Drive:
         The total ratio must hold within ``ratio_tol`` (relative). ``top`` alternatives are listed.
         ``progress(done, total)`` is called after each group of designs sharing their gear tooth pairs
         (the walk may stop well before ``total``). ``client=`` (a ``dask.distributed.Client``) or
-        ``workers=N`` solve every group's tooth pairs on a cluster first, in chunks (the walk then finds them
-        solved: the same optimum as here, bit for bit; docs/scale.md).
+        ``workers=N`` solve the tooth pairs the walk takes together on a cluster, in chunks sharing one cache
+        of solved pairs (:mod:`geardesign.drives.spread`): the same shift solves and the same optimum as
+        here, bit for bit; docs/scale.md.
         """
         t0 = time.perf_counter()
         U = one_number("total_ratio", require_range("total_ratio", total_ratio, *TOTAL_RATIO_RANGE))

@@ -16,6 +16,7 @@ checks hold. A stage with ``m=None`` needs a material or such a function.
 from __future__ import annotations
 
 import math
+import threading
 from dataclasses import replace
 from collections import OrderedDict
 from functools import lru_cache
@@ -42,10 +43,12 @@ __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution", "margin_
 
 class _Solved:
     """Solved tooth pairs by their key (m, z1, z2, checks, β, b, shift objective), the last SHIFT_CACHE kept
-    between calls; ``misses`` counts the solves (one by one or in a batch)."""
+    between calls; ``misses`` counts the solves (one by one or in a batch). On a Dask worker, what a chunk
+    solves is also noted in its thread's ``journal`` (sent back to the caller's cache: :meth:`GearKind.absorb`)."""
 
     def __init__(self, size: int):
         self.size, self.data, self.misses = size, OrderedDict(), 0
+        self.local = threading.local()     # a worker may run chunks side by side in its threads
 
     def get(self, key):
         sol = self.data.get(key)
@@ -55,10 +58,17 @@ class _Solved:
 
     def put(self, key, sol: dict) -> dict:
         self.misses += 1
+        self.keep(key, sol)
+        journal = getattr(self.local, "journal", None)
+        if journal is not None:
+            journal[key] = sol
+        return sol
+
+    def keep(self, key, sol: dict) -> None:
+        """``sol`` remembered, not counted as a solve (one made elsewhere)."""
         self.data[key] = sol
         if len(self.data) > self.size:
             self.data.popitem(last=False)
-        return sol
 
     def clear(self) -> None:
         self.data.clear()
@@ -342,6 +352,26 @@ class GearKind(ToothedKind):
 
     def solve_count(self) -> int:
         return _SOLVED.misses
+
+    def solved_for(self, options: list) -> dict:
+        pairs = {(int(o["z1"]), int(o["z2"])) for o in options}
+        return {key: sol for key, sol in _SOLVED.data.items() if key[1:3] in pairs}
+
+    def shared_by(self, option: dict):
+        return int(option["z1"]), int(option["z2"])      # every module and flow of a tooth pair
+
+    def solve_shared(self, stage, options: list, objective: str, flows: list, known: dict) -> tuple:
+        for key, sol in known.items():
+            _SOLVED.keep(key, sol)
+        _SOLVED.local.journal = journal = {}
+        try:
+            return self.solve_many(stage, options, objective, flows), journal
+        finally:
+            _SOLVED.local.journal = None
+
+    def absorb(self, solved: dict) -> None:
+        for key, sol in solved.items():     # each one a solve made on a worker: counted here
+            _SOLVED.put(key, sol)
 
     @staticmethod
     def _width(stage, sol) -> float:
