@@ -48,7 +48,8 @@ def main():
         df = atlas.shift_atlas(z1, z2)
         per = (time.process_time() - t) / n
         ref = ref or per
-        print(f"{n:>7,} pairs (z1 {z1.start}..{z1.stop - 1} x z2 {z2.start}..{z2.stop - 1}): {per * 1e3:6.3f} ms CPU a pair,"
+        print(f"{n:>7,} pairs (z1 {z1.start}..{z1.stop - 1} x z2 {z2.start}..{z2.stop - 1}): "
+              f"{per * 1e3:6.3f} ms CPU a pair,"
               f" {per / ref:4.2f}x the 10^3 atlas's; feasible {int(df.feasible.sum()):,}; one by one {len(alone):,}"
               f" ({sum(alone):,} of them feasible); load average {os.getloadavg()[0]:.1f}")
 

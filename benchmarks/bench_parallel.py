@@ -4,8 +4,8 @@ Run from the repository root:  python benchmarks/bench_parallel.py [--repeats 3]
 Needs the Dask extra (pip install "geardesign[dask]"). Each round runs the same atlas serially,
 on 1 worker and on 2 workers (the clusters started once, before the rounds; their start is
 reported on its own), and on a user's own cluster made as Dask's docs make one
-(``LocalCluster(n_workers=2, threads_per_worker=1)`` and ``Client``, default settings: issue 36 §3), checks that every table is the serial one bit for bit, and prints each
-time, the best and the spread. Then the per-pair cost, the scheduling cost of one task (a round
+(``LocalCluster(n_workers=2, threads_per_worker=1)`` and ``Client``, default settings: issue 36 §3),
+checks that every table is the serial one bit for bit, and prints each time, the best and the spread. Then the per-pair cost, the scheduling cost of one task (a round
 trip of a task that does nothing) and, from them, an estimate for a 10^7-pair atlas on 64 workers.
 The machine's load average is printed beside the figures: on a shared machine they move with it.
 """

@@ -44,7 +44,7 @@ def add_parser(sub):
 
 
 def run(args) -> int:
-    from ..shifts.atlas import ATLAS_PAIRS_MAX, atlas_size, shift_atlas   # here: it imports pandas (~0.3 s), which `geardesign --help` never needs
+    from ..shifts.atlas import ATLAS_PAIRS_MAX, atlas_size, shift_atlas   # here: it loads pandas (not for --help)
 
     z1 = parse_range(args.z1, "--z1")
     z2 = parse_range(args.z2, "--z2")

@@ -56,7 +56,7 @@ def add_parser(sub):
 
 
 def run(args) -> int:
-    from ..shifts.region import feasible_region   # here: it imports pandas (~0.3 s), which `geardesign --help` never needs
+    from ..shifts.region import feasible_region   # here: it loads pandas (not for --help)
 
     if (args.x1 is None) != (args.x2 is None):
         raise GearDesignError("--x1 and --x2 go together: give both to check a proposed pair")

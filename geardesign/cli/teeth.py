@@ -58,7 +58,7 @@ def add_parser(subparsers):
 
 
 def run(args) -> int:
-    from ..shifts.teeth import select_teeth   # here: it imports pandas (~0.3 s), which `geardesign --help` never needs
+    from ..shifts.teeth import select_teeth   # here: it loads pandas (not for --help)
 
     m = None if args.module is None else _number_or_series(args.module, "--module")
     a_w = None if args.center_distance is None else _number_or_series(args.center_distance, "--center-distance")

@@ -4,9 +4,9 @@ The search's walk (:mod:`geardesign.drives.search`) decides which options it sol
 a cluster as without: only the options it hands :meth:`~geardesign.drives.stage_kinds.StageKind.solve_many`
 together go to the workers, in chunks. Each chunk carries what the calling process has already solved for
 its options (:meth:`StageKind.solved_for`) and brings back what the worker newly solved
-(:meth:`StageKind.solve_shared`), which joins the caller's cache (:meth:`StageKind.absorb`). The options that
-share solved work (one tooth pair's: :meth:`StageKind.shared_by`) go to one chunk, so that no two workers solve the same pair. A drive on two workers thus
-makes the serial run's shift solves, no more (issue 35 §5: every worker had kept its own cache, and the
+(:meth:`StageKind.solve_shared`), which joins the caller's cache (:meth:`StageKind.absorb`). The options
+that share solved work (one tooth pair's: :meth:`StageKind.shared_by`) go to one chunk, so that no two workers
+solve the same pair. A drive on two workers thus makes the serial run's shift solves, no more (issue 35 §5: every worker had kept its own cache, and the
 walk's whole list of groups was solved up front: 7,769 shift solves instead of 412), and finds the serial
 run's table bit for bit.
 """

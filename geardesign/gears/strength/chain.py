@@ -368,8 +368,8 @@ def _field_names(fields) -> tuple:
     """``fields`` of :func:`pair_strength`: a name or names (text)."""
     names = (fields,) if isinstance(fields, str) else tuple(fields) if hasattr(fields, "__iter__") else None
     if not names or not all(isinstance(f, str) for f in names):
-        raise GearDesignError(f"fields must be names of pair_strength's result (such as {', '.join(STRENGTH_FIELDS[:4])}),"
-                              f" got {fields!r}")
+        raise GearDesignError(f"fields must be names of pair_strength's result (such as "
+                              f"{', '.join(STRENGTH_FIELDS[:4])}), got {fields!r}")
     return names
 
 
