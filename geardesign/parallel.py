@@ -51,8 +51,8 @@ CHUNKS_PER_WORKER = 4
 
 # A cluster made here starts its workers without the stack sampler of Dask's dashboard, which interrupts
 # these Python-heavy solves every 10 ms. (Dask's worker environment, MALLOC_TRIM_THRESHOLD_ and BLAS pinned to
-# one thread, reaches every worker whatever this config says, a user's cluster's too: each chunk undoes what
-# slows the solves, see _SameBlas and _heap_as_here.)
+# one thread, reaches every worker whatever this config says, a user's cluster's too: the BLAS threads are set
+# per chunk (_SameBlas); the malloc threshold is left, see docs/scale.md.)
 _LOCAL_CONFIG = {"distributed.worker.profile.enabled": False}
 
 _INSTALL = 'install Dask with: pip install "geardesign[dask]"'
@@ -237,38 +237,8 @@ class _SameBlas:
     def __call__(self, chunk):
         from threadpoolctl import threadpool_limits
 
-        _heap_as_here()
         threadpool_limits(limits=self.limits)
         return self.fn(chunk)
-
-
-_HEAP_SET = []
-
-
-def _heap_as_here() -> None:
-    """glibc's malloc on a Dask worker set back to its usual thresholds, once per worker process.
-
-    Dask starts every worker (a user's ``LocalCluster`` too) with MALLOC_TRIM_THRESHOLD_=65536, and a
-    threshold set by the environment turns off glibc's sliding mmap threshold: each array of more than 128 kB
-    (the solvers' blocks of 16 384 designs make many) is then mapped and unmapped afresh, its pages faulted in
-    again, ~24× the cost of an allocation from the heap (measured: 2,000 arrays of 160 kB in 0.36 s against
-    0.015 s). That made an atlas on two workers of a default cluster slower than the serial run (issue 36 §3).
-    The thresholds set here are glibc's own upper values (mmap above 32 MB, heap trimmed above 64 MB free).
-    Elsewhere (no glibc) nothing is done."""
-    if _HEAP_SET:
-        return
-    _HEAP_SET.append(True)
-    import ctypes
-    import ctypes.util
-
-    try:
-        libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6")
-        mallopt = libc.mallopt
-    except (OSError, AttributeError):
-        return
-    M_TRIM_THRESHOLD, M_MMAP_THRESHOLD = -1, -3       # glibc's malloc.h
-    mallopt(M_MMAP_THRESHOLD, 32 << 20)
-    mallopt(M_TRIM_THRESHOLD, 64 << 20)
 
 
 def _blas_threads() -> dict:
