@@ -3,7 +3,8 @@
 * vectorised geometry + the seven default check margins against a plain straight-line numpy
   version of the same seven margins (textbook formulas, arccos and all), and that plain version
   evaluated in the library's cache-sized blocks (what blocking alone gives a numpy kernel doing its work);
-* one pair's GearPair(...).geometry() against a plain-Python evaluation of a few fields;
+* one pair's GearPair(...).geometry() against a plain-Python evaluation of a few fields, and
+  ``gd.pair_geometry`` on single numbers against GearPair(...).geometry();
 * ``import geardesign`` (and the first GearPair) against ``import numpy``;
 * helical (β = 15°) and internal pairs against spur pairs with the same tooth counts and shifts
   (vectorised and one design), the ratios issue 12 asks to keep within 1.3x;
@@ -168,6 +169,18 @@ def main(n=1_000_000, repeat=5):
     ref = best_of(lambda: [plain_scalar(17, 26, 0.898, 0.517, 8.0) for _ in range(k)]) / k
     print(f"  GearPair(...).geometry(), all {len(gd.GEOMETRY_FIELDS)} fields, validated: {lat * 1e6:7.1f} us; "
           f"plain Python, 5 fields: {ref * 1e6:5.1f} us (ratio {lat / ref:4.1f})")
+    # CPU time, the two interleaved: on a shared machine the wall clock of a 20 µs call drifts 10x
+    cpu = {"pair": [], "one": []}
+    for _ in range(7):
+        for name, fn in (("pair", lambda: gd.GearPair(8, 17, 26, 0.898, 0.517).geometry()),
+                         ("one", lambda: gd.pair_geometry(8, 17, 26, 0.898, 0.517))):
+            t0 = time.process_time()
+            for _ in range(k):
+                fn()
+            cpu[name].append((time.process_time() - t0) / k)
+    one, lat_cpu = min(cpu["one"]), min(cpu["pair"])
+    print(f"  gd.pair_geometry on single numbers: {one * 1e6:7.1f} us CPU, {one / lat_cpu:4.2f}x "
+          f"GearPair(...).geometry() ({lat_cpu * 1e6:.1f} us CPU; issue 36 goal <= 1.5x)")
     kinds(min(n, 200_000), repeat)
     region_grid(repeat)
     t_np = import_cpu_s("import numpy")

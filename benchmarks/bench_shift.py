@@ -32,6 +32,14 @@ def pairs(n, seed=7, z2_max=120):
     return sorted(out)
 
 
+def ring_pairs(n, seed=1):
+    """The sample of issue 36 §3: z1 14..40, z2 drawn from z1 + 12..150 (pairs() draws z2 from z1..z2_max and
+    kinds() lifts it to z1 + 10: fewer large rings)."""
+    rng = np.random.default_rng(seed)
+    z1 = rng.integers(14, 41, n)
+    return [(int(a), int(rng.integers(a + 12, 151))) for a in z1]
+
+
 def main(n=200):
     ps = pairs(n)
     exact = {}
@@ -86,6 +94,7 @@ def main(n=200):
     print(f"  balanced_sliding, a_w fixed (1 variable): {np.median(times) * 1e3:.2f} ms median (100 pairs)")
     kinds(ps[:60])
     kinds(pairs(30, seed=29, z2_max=150))   # larger rings, where the ring's own checks decide more often
+    kinds(ring_pairs(30))                    # issue 36 §3's sample: every ring at least 12 teeth larger
     t0 = time.perf_counter()
     df = gd.shift_atlas(range(8, 41), range(8, 121))
     dt = time.perf_counter() - t0

@@ -6,6 +6,7 @@
 * the vectorised chain over N, 5N and 10N designs (every factor, both gears, both methods' work for method B; the
   first call at each size), in designs/s, against a straight-line numpy evaluation of the same contact side over the
   same designs;
+* the peak memory of one large call in a fresh process, every field against ``fields=`` the four safety factors;
 * the shift solvers' call: ``pair_strength`` on the 5 designs of a finite-difference stencil with their geometry
   given (``geometry=``, as geardesign.gears.checks.strength does once per solver iteration).
 
@@ -118,6 +119,37 @@ def main(n=200_000):
               f"({t_vec / t_np:5.1f}x the plain numpy contact side, {size / t_np / 1e6:.2f} M designs/s); "
               f"goal 1 M/s -> {'met' if size / t_vec >= 1e6 else 'not met'}; contact side only (root=False): "
               f"{size / t_contact / 1e6:.3f} M designs/s")
+    for size in (10 * n, 50 * n):
+        for fields in (None, ("S_H1", "S_H2", "S_F1", "S_F2")):
+            rate, peak = fresh_peak(size, fields)
+            print(f"vectorised, {size:,} designs in a fresh process, fields={fields}: {rate / 1e6:6.3f} M designs/s, "
+                  f"peak resident memory {peak / 2 ** 30:5.2f} GiB")
+
+
+PEAK = """
+import resource, sys, time
+import numpy as np
+from geardesign.gears.strength import Load, material, pair_strength
+size, fields = int(sys.argv[1]), eval(sys.argv[2])
+rng = np.random.default_rng(0)
+z1 = rng.integers(14, 40, size); z2 = z1 + rng.integers(5, 80, size)
+x1 = rng.uniform(0.0, 0.6, size); x2 = rng.uniform(0.0, 0.6, size); m = rng.choice([2.0, 3.0, 4.0, 5.0], size)
+mat, load = material("42CrMo4"), Load(torque_nm=200, n_rpm=1000, life_h=20_000)
+base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+t = time.process_time()
+out = pair_strength(m, z1, z2, x1, x2, load=load, material1=mat, face_width_mm=10 * m, fields=fields)
+t = time.process_time() - t
+print(size / t, (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - base) * 1024)
+"""
+
+
+def fresh_peak(size, fields):
+    """(designs/s, peak resident bytes above the inputs) of one vectorised call in a fresh process (``fields``:
+    pair_strength's option, None for every field)."""
+    import subprocess
+    out = subprocess.run([sys.executable, "-c", PEAK, str(size), repr(fields)], capture_output=True, text=True,
+                         check=True).stdout.split()
+    return float(out[0]), float(out[1])
 
 
 if __name__ == "__main__":

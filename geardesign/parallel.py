@@ -49,12 +49,11 @@ CONNECT_TIMEOUT_S = 10        # seconds to reach a scheduler before the address 
 # by one) does not leave the other workers idle at the end, and progress moves in steps.
 CHUNKS_PER_WORKER = 4
 
-# A cluster made here starts its workers with this process's environment, not Dask's worker
-# environment (which pins BLAS to one thread and sets MALLOC_TRIM_THRESHOLD_), so that the solves run
-# there as they do here (the BLAS threads are set per chunk as well), and without the stack sampler
-# of Dask's dashboard, which interrupts these Python-heavy solves every 10 ms. A user's cluster
-# keeps its own settings.
-_LOCAL_CONFIG = {"distributed.nanny.pre-spawn-environ": {}, "distributed.worker.profile.enabled": False}
+# A cluster made here starts its workers without the stack sampler of Dask's dashboard, which interrupts
+# these Python-heavy solves every 10 ms. (Dask's worker environment, MALLOC_TRIM_THRESHOLD_ and BLAS pinned to
+# one thread, reaches every worker whatever this config says, a user's cluster's too: the BLAS threads are set
+# per chunk (_SameBlas); the malloc threshold is left, see docs/scale.md.)
+_LOCAL_CONFIG = {"distributed.worker.profile.enabled": False}
 
 _INSTALL = 'install Dask with: pip install "geardesign[dask]"'
 

@@ -9,6 +9,10 @@ import pytest
 @pytest.mark.parametrize("code, absent", [
     ("import geardesign", ("pandas", "scipy", "matplotlib", "cvxpy")),
     ("import geardesign as gd; gd.GearPair(8, 17, 26, 0.898, 0.517).geometry()", ("pandas", "scipy", "matplotlib")),
+    # `geardesign --help` builds every subcommand's parser: it must not pay for pandas (~0.3 s) or the
+    # solvers (scipy.optimize ~0.3 s), which made it 7x `import numpy` (issue 36 §3)
+    ("import geardesign.cli", ("pandas", "scipy", "matplotlib", "cvxpy", "dask")),
+    ("from geardesign.cli import build_parser; build_parser()", ("pandas", "scipy", "matplotlib", "cvxpy", "dask")),
 ])
 def test_imports_load_only_what_is_used(code, absent):
     out = subprocess.run([sys.executable, "-c", f"{code}; import sys; print(sorted(sys.modules))"],

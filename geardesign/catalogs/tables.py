@@ -19,9 +19,13 @@ from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 
 from ..errors import CatalogError, GearDesignError
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:       # pandas is imported where a table is made (start-up cost)
+    import pandas as pd
 
 __all__ = [
     "catalog_dir",
@@ -279,6 +283,8 @@ def _text_column(raw: pd.Series, col: Column, path, lines) -> pd.Series:
 def _number_column(raw: pd.Series, col: Column, path, lines) -> np.ndarray:
     """A number column as floats (int64 for a whole-number column without blanks), each cell checked:
     a number, present if required, finite, > 0 if positive, whole if an int."""
+    import pandas as pd   # here: pandas costs ~0.3 s to import; `geardesign --help` reads this module's constants only
+
     values = pd.to_numeric(raw, errors="coerce")
     bad_type = values.isna() & raw.notna() & (raw.astype(str).str.strip() != "")
     if bad_type.any():
@@ -406,6 +412,8 @@ def _read_cached(path_text: str, mtime_ns: int, kind: str | None, bundled: bool,
         raise CatalogError(f"{path}: not a regular file (a catalog is a CSV text file)")
     if path.stat().st_size > CATALOG_BYTES_MAX:
         raise CatalogError(f"{path}: larger than {CATALOG_BYTES_MAX >> 20} MiB; a catalog is a table of standard sizes")
+    import pandas as pd   # here: pandas costs ~0.3 s to import; `geardesign --help` reads this module's constants only
+
     try:
         raw = pd.read_csv(path, dtype=str, keep_default_na=False, na_values=[""], comment=None)
     except pd.errors.EmptyDataError:

@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import re
 
-from ..shifts.atlas import ATLAS_PAIRS_MAX, atlas_size, shift_atlas
 from ..files import check_output_path, write_file_atomic
 from ..errors import GearDesignError
 from .options import add_cluster_args, add_output_file, add_solver_args, cluster_from_args, local_workers
@@ -47,6 +46,8 @@ def add_parser(sub):
 
 
 def run(args) -> int:
+    from ..shifts.atlas import ATLAS_PAIRS_MAX, atlas_size, shift_atlas   # here: it loads pandas (not for --help)
+
     z1 = parse_range(args.z1, "--z1")
     z2 = parse_range(args.z2, "--z2")
     n = atlas_size(z1, z2, internal=args.internal)

@@ -6,10 +6,13 @@ import shutil
 import sys
 import textwrap
 
-import pandas as pd
-
 from ..progress import Bar
 from ..results import plain
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:       # pandas is imported where a table is made (start-up cost)
+    import pandas as pd
 
 
 def print_json(obj) -> None:
@@ -33,6 +36,7 @@ def print_frame(frame: pd.DataFrame, title: str | None = None, float_format="{:.
     """A table folded to the terminal's width: long text cut (the first column, the rows' names, down to
     :data:`KEY_MIN` characters when that makes the table fit), then the columns that still do not fit continue
     below in blocks that each repeat the first column."""
+    import pandas as pd   # here: pandas costs ~0.2 s to import, and `--help` or a plain `pair` prints no frame
     if title:
         print(title)
     width = max(terminal_width(), 40)
@@ -51,6 +55,8 @@ KEY_MIN = 30   # characters of a table's first (name) column kept when it is cut
 
 
 def _is_text(column: pd.Series) -> bool:
+    import pandas as pd   # loaded already: a frame is being printed
+
     return column.dtype == object or pd.api.types.is_string_dtype(column)
 
 

@@ -123,7 +123,7 @@ def _check(args) -> int:
     ok = bool(table["ok"].all())
     with all_or_nothing():      # every file of the command, or none
         if args.plot:           # the region, the given shifts marked on it
-            from ..shifts.planetary import planetary_region   # here: the solvers load scipy
+            from ..shifts.planetary import planetary_region   # here: it loads pandas (not for --help)
             reg = planetary_region(*sizes[1:], sizes[0], checks=_checks(args), rack=rack_from_args(args),
                                    beta_deg=args.beta)
             _save(args.plot, reg.plot(proposed=(s.x_sun, s.x_planet)), args.overwrite)
@@ -142,7 +142,7 @@ def _check(args) -> int:
 
 
 def _optimize(args) -> int:
-    from ..shifts.planetary import optimize_planetary_shifts, planetary_region   # here: the solvers load scipy
+    from ..shifts.planetary import optimize_planetary_shifts, planetary_region   # here: loads pandas
 
     kw = dict(rack=rack_from_args(args), beta_deg=args.beta)
     r = optimize_planetary_shifts(args.z_sun, args.z_planet, args.z_ring, args.planets, args.module,
@@ -182,7 +182,7 @@ def _optimize(args) -> int:
 
 
 def _teeth(args) -> int:
-    from ..shifts.planetary_teeth import DEFAULT_OBJECTIVE, select_planetary_teeth   # here: it loads scipy
+    from ..shifts.planetary_teeth import DEFAULT_OBJECTIVE, select_planetary_teeth   # here: loads pandas
 
     with cluster_from_args(args) as client:
         sel = select_planetary_teeth(args.ratio, args.planets, args.module, ratio_tol=args.ratio_tol,

@@ -6,7 +6,6 @@ from ..files import check_output_path, write_file_atomic
 from ..gears.pair import GearPair
 from ..shifts.objectives import OBJECTIVES
 from ..shifts.optimize import DEFAULT_TOL, METHODS, optimize_shifts
-from ..shifts.region import feasible_region
 from .options import add_check_args, add_output_file, checks_from_args
 from .output import (add_json_flag, check_details, failing_margins, frame_records, print_frame, print_json,
                      print_verdict, print_verdict_line, print_wrapped)
@@ -57,6 +56,8 @@ def add_parser(sub):
 
 
 def run(args) -> int:
+    from ..shifts.region import feasible_region   # here: it loads pandas (not for --help)
+
     if (args.x1 is None) != (args.x2 is None):
         raise GearDesignError("--x1 and --x2 go together: give both to check a proposed pair")
     if args.plot:

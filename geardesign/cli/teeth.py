@@ -7,7 +7,6 @@ from __future__ import annotations
 
 
 from ..errors import GearDesignError
-from ..shifts.teeth import select_teeth
 from ..files import check_output_path, write_file_atomic
 from .options import (add_check_args, add_cluster_args, add_output_file, add_solver_args, checks_from_args,
                       cluster_from_args)
@@ -70,6 +69,8 @@ def add_parser(subparsers):
 
 
 def run(args) -> int:
+    from ..shifts.teeth import select_teeth   # here: it loads pandas (not for --help)
+
     m = None if args.module is None else _number_or_series(args.module, "--module")
     a_w = None if args.center_distance is None else _number_or_series(args.center_distance, "--center-distance")
     if args.top < 0:

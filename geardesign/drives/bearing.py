@@ -19,11 +19,12 @@ Sources (docs/references.md, docs/bearings.md):
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import math
 from dataclasses import dataclass
 
 import numpy as np
-import pandas as pd
 
 from ..catalogs.tables import load_catalog
 from ..errors import GearDesignError
@@ -37,6 +38,9 @@ __all__ = ["SERIES", "BEARING_KINDS", "LIFE_EXPONENT", "RELIABILITY_FACTORS", "A
            "BearingCheck", "BearingSelection"]
 
 # series -> (catalog table, bearing kind); the kind says which life exponent and which X/Y rule apply
+if TYPE_CHECKING:       # pandas is imported where a catalog is read (the command's start-up stays light)
+    import pandas as pd
+
 SERIES = {
     "62": ("bearings_deep_groove", "deep_groove_ball"),
     "63": ("bearings_deep_groove", "deep_groove_ball"),
@@ -227,6 +231,8 @@ def bearing_catalog(series) -> pd.DataFrame:
         table, kind = SERIES[name]
         frame = load_catalog(table)
         frames.append(frame[frame["series"] == name].assign(kind=BEARING_KINDS[kind], bearing_type=kind))
+    import pandas as pd
+
     return pd.concat(frames, ignore_index=True)
 
 

@@ -217,9 +217,10 @@ class Drive:
         The total ratio must hold within ``ratio_tol`` (relative). ``top`` alternatives are listed.
         ``progress``: None shows a bar on stderr when it is a terminal (tqdm, once the search has run a
         few seconds), True always, False never; a callable ``progress(done, total)`` is called instead after
-        each group of designs sharing their gear tooth pairs (the walk may stop well before ``total``). ``client=`` (a ``dask.distributed.Client``) or
-        ``workers=N`` solve every group's tooth pairs on a cluster first, in chunks (the walk then finds them
-        solved: the same optimum as here, bit for bit; docs/scale.md); a split too large to enumerate whole
+        each group of designs sharing their gear tooth pairs (the walk may stop well before ``total``).
+        ``client=`` (a ``dask.distributed.Client``) or ``workers=N`` solve the tooth pairs the walk takes together
+        on a cluster, in chunks sharing one cache of solved pairs (:mod:`geardesign.drives.spread`): the same shift
+        solves and the same optimum as here, bit for bit (docs/scale.md); a split too large to enumerate whole
         (built under a cost limit, docs/drive_train.md "Large splits") is solved here.
         """
         t0 = time.perf_counter()

@@ -19,12 +19,16 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import pandas as pd
 
 from ..catalogs.tables import key_lengths_mm, load_catalog
 from ..errors import GearDesignError
 from ..results import Result
 from ..validate import one_number, require_count, require_positive, require_range
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:       # pandas is imported where a table is made (start-up cost)
+    import pandas as pd
 
 __all__ = ["KeySelection", "select", "capacity", "section", "crushing_stress_mpa", "shear_stress_mpa",
            "working_length_mm", "DEFAULT_CRUSH_MPA", "DEFAULT_SHEAR_MPA", "TWO_KEY_FACTOR"]
@@ -215,6 +219,8 @@ def _candidates(sec, d, torque, l_fit, s_cr, s_sh, end, max_keys):
         lp_pos = np.where(lp > 0, lp, np.nan)
         sig = crushing_stress_mpa(torque, d, h, t1, lp_pos, N)
         tau = shear_stress_mpa(torque, d, b, lp_pos, N)
+    import pandas as pd   # here: pandas costs ~0.3 s to import; `geardesign --help` reads this module's constants only
+
     cand = pd.DataFrame({"n_keys": N, "length_mm": L, "working_length_mm": lp, "fits_hub": fits,
                          "crush_mpa": sig, "shear_mpa": tau, "margin_crush": 1.0 - sig / s_cr,
                          "margin_shear": 1.0 - tau / s_sh})

@@ -18,7 +18,6 @@ knows a kind by name.
 """
 from __future__ import annotations
 
-import functools
 import heapq
 import math
 import time
@@ -36,6 +35,7 @@ from .limits import (CANDIDATES_MAX, COMBINATION_BLOCK, COMBINATIONS_MAX, INFEAS
                      LOAD_CELL, MARGIN_TOL, PLAIN_DESIGNS_MAX, PRUNE_GROWTH)
 from .pruning import StageBounds, pruned_combinations
 from .stage_kinds import Designs, StageFlow, kind_of   # Designs: re-exported here, where it was defined before
+from .spread import solve_spread
 from .stages import Shaft
 
 __all__ = ["Search", "Designs", "min_margin", "WALK_LABEL"]
@@ -56,21 +56,6 @@ def min_margin(margins: dict):
     return (0.0 if abs(v) <= MARGIN_TOL else v), name
 
 
-def _solve_options(kinds, stages, objective, items) -> list:
-    """The solves of one chunk of (stage index, option, flow), what a worker runs: each stage's options
-    together where its kind solves them together (:meth:`StageKind.solve_ahead`), in the chunk's order."""
-    out = [None] * len(items)
-    for k in dict.fromkeys(k for k, _, _ in items):
-        at = [i for i, item in enumerate(items) if item[0] == k]
-        if kinds[k].solve_ahead(stages[k], objective):
-            sols = kinds[k].solve_many(stages[k], [items[i][1] for i in at], objective, [items[i][2] for i in at])
-        else:
-            sols = [kinds[k].solve(stages[k], items[i][1], objective, items[i][2]) for i in at]
-        for i, sol in zip(at, sols):
-            out[i] = sol
-    return out
-
-
 class Search:
     """One :meth:`Drive.optimize` call: the designs (one option per stage × rows) as index arrays,
     their flow and batch margins, and what the branch and bound has evaluated (``ex``)."""
@@ -87,8 +72,8 @@ class Search:
 
     def run(self, progress=None, where=None) -> DriveOptimum:
         """The search; ``progress(label, done, total)`` is told how far each long step is (None: nothing);
-        ``where``: client= / workers= of :func:`geardesign.parallel.map_chunks` for the solved stages'
-        solves (empty: here, one by one as the walk needs them)."""
+        ``where``: client= / workers= of :func:`geardesign.parallel.cluster` for the
+        options the walk solves together (:func:`geardesign.drives.spread.solve_spread`; empty: here)."""
         self.report = progress or (lambda label, done, total: None)
         self.n_pruned, self._bounds = 0, None
         why = self._stage_options()          # 1: options per stage
@@ -101,7 +86,8 @@ class Search:
             return self.no_split(why)
         self._designs()                      # 3: the combinations times the rows, their flow
         self.batch_checks()                  # 4: every batch margin, key and motor check at once
-        self.branch_and_bound(where or {})   # 5: the solved stages, best bound first
+        with parallel.cluster(**(where or {})) as self.client:
+            self.branch_and_bound()      # 5: the solved stages, best bound first
         return self.result()                 # 6: ranked table, the closest failing designs, the best
 
     def _prunable(self) -> bool:
@@ -128,9 +114,9 @@ class Search:
                 self.idx, self.n_comb, self.n_pruned = idx, idx.shape[0], pruned
                 self._designs(with_rows)
                 self.batch_checks()
-                # here, not on the cluster: presolving every group of ~10⁵-10⁶ designs would solve far more than
-                # the walk (a few hundred groups); the bounds' solves are batched per torque cell already
-                self.branch_and_bound({})
+                # here, not on the cluster: the bounds' solves are batched per torque cell already
+                self.client = None
+                self.branch_and_bound()
                 cost = np.sort(self.ex["cost"][self.ex["feas"]])
                 if pruned == 0 or (cost.size >= self.top and cost[self.top - 1] <= limit):
                     return self.result()
@@ -316,8 +302,8 @@ class Search:
                 continue
             kind, load = self.kinds[k], k in self.flow_group
             before = kind.solve_count()
-            sols = kind.solve_many(self.stages[k], [self.option_at(k, c) for c in todo.values()], self.objective,
-                                   [self.flow_at(k, c) if load else None for c in todo.values()])
+            sols = solve_spread(self.client, kind, self.stages[k], [self.option_at(k, c) for c in todo.values()],
+                                self.objective, [self.flow_at(k, c) if load else None for c in todo.values()])
             self._solved.update(zip(todo, sols))
             self.n_solves += kind.solve_count() - before
 
@@ -414,26 +400,7 @@ class Search:
         glb = np.minimum.reduceat(self._lower_bounds()[order], starts) if order.size else np.zeros(0)
         return order, starts, np.r_[starts[1:], order.size], glb
 
-    def _presolve(self, firsts, where: dict) -> None:
-        """Every group's solved options at once on the cluster ``where`` names, in bound order: the walk
-        then finds them solved (the same solves a serial walk makes, bit for bit, and the ones it skips)."""
-        items, keys = [], []
-        for c in firsts:
-            for k in self.solved_k:
-                key = self._key(k, c)
-                if key not in self._solved and key not in keys:
-                    keys.append(key)
-                    items.append((k, self.option_at(k, c), self.flow_at(k, c) if k in self.flow_group else None))
-        if not items:
-            return
-        chunks = [items[s] for s in parallel.chunk_slices(len(items), parallel.slots(**where), 20, 200)]
-        solved = parallel.map_chunks(functools.partial(_solve_options, self.kinds, self.stages, self.objective),
-                                     chunks, **where)
-        for key, sol in zip(keys, (sol for chunk in solved for sol in chunk)):
-            self._solved[key] = sol
-        self.n_solves += len(keys)
-
-    def branch_and_bound(self, where=None) -> None:
+    def branch_and_bound(self) -> None:
         """Groups of designs sharing their solved options, solved best bound first while a bound can
         still enter the ``top`` list; what each evaluated design costs is kept in ``self.ex``."""
         n_cand, top = self.n_cand, self.top
@@ -445,8 +412,6 @@ class Search:
                             done=np.zeros(n_cand, dtype=bool), lim=self.batch_arg.astype(np.int64),
                             why=np.full(n_cand, -1, dtype=np.int64), labels=labels, reasons=[])
         order, starts, ends, glb = self._groups()
-        if where and parallel.requested(**where):
-            self._presolve(order[starts[np.argsort(glb, kind="stable")]], where)
         heap: list = []          # the `top` best costs so far, as a max-heap of −cost
         walk = np.argsort(glb, kind="stable")
         for i, g in enumerate(walk):

@@ -22,6 +22,15 @@ from ..gears.geometry import require_module
 from ..gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
 from ..results import compact_repr
 from ..validate import _show, ndim, one_number, require_count, require_range
+from . import key
+from ..catalogs.tables import catalog_dir
+from ..gears.checks import resolve_checks
+from ..gears.pair import GearPair
+from ..gears.strength import Load
+from ..shifts.objectives import OBJECTIVES
+from .chain.formulas import recommended_z1
+from .chain.inputs import RATIO_RANGE, Z1_RANGE, validate_inputs
+from .chain.tables import load_chains
 
 __all__ = ["GivenStage", "GearStage", "ChainStage", "Shaft", "EFFICIENCY_RANGE", "GIVEN_RATIO_RANGE",
            "GEAR_PAIRS_MAX", "STEEL_DENSITY_KG_M3", "FACE_WIDTH_PITCHES", "stage_area_mm2", "disc_mass_kg",
@@ -206,7 +215,6 @@ class GearStage:
         if self.checks is not None and not isinstance(self.checks, dict):
             raise GearDesignError(f"checks must be a dict of limits (eps_alpha_min, sa_min, undercut, interference, "
                                   f"eps_gamma_min), got {type(self.checks).__name__}")
-        from ..gears.checks import resolve_checks   # here: the check registry loads pandas
         resolve_checks(self.checks)    # unknown keys are refused here, not mid-search
         if self.material is not None:   # an unknown material is refused here, not mid-search
             stage_material(self.material)
@@ -237,7 +245,6 @@ class GearStage:
                 raise GearDesignError(f"mating_type must be one of {', '.join(GOST1643_TYPES)} (GOST 1643-81) or "
                                       f"'none', got {self.mating_type!r}")
         if self.shift_objective is not None:
-            from ..shifts.objectives import OBJECTIVES   # here: the shifts layer loads pandas
             if self.shift_objective not in OBJECTIVES:
                 raise GearDesignError(f"shift_objective must be one of {', '.join(OBJECTIVES)}, "
                                       f"got {self.shift_objective!r}")
@@ -288,7 +295,6 @@ class GearStage:
     def load(self, torque_nm: float, n_rpm: float):
         """The strength checks' load case: ``torque_nm`` on the pinion at ``n_rpm`` (``speed_rpm=`` is its old
         name), with the stage's life and application factor."""
-        from ..gears.strength import Load   # here: the strength model loads pandas
         return Load(torque_nm=float(torque_nm), n_rpm=float(n_rpm), life_h=self.life_h,
                     application_factor=self.application_factor)
 
@@ -312,7 +318,6 @@ class GearStage:
 
     def fixed_pair(self):
         """The GearPair of fixed tooth counts and shifts."""
-        from ..gears.pair import GearPair   # here: the pair's checks load pandas
         return GearPair(self.m, self.z1, self.z2, self.x1, self.x2, beta_deg=self.beta_deg,
                         face_width_mm=self.face_width_mm)
 
@@ -352,8 +357,6 @@ class ChainStage:
     __repr__ = compact_repr     # only what differs from the defaults
 
     def __post_init__(self):
-        from .chain.inputs import RATIO_RANGE, validate_inputs   # here: the chain package loads pandas
-
         object.__setattr__(self, "efficiency", _efficiency(self.efficiency))
         object.__setattr__(self, "name", _name(self.name, "chain"))
         if self.strands is not None and ndim(self.strands) not in (0, 1):
@@ -366,7 +369,6 @@ class ChainStage:
                               self.center_distance_mm, self.objective, self.method, self.sag_factor, self.z2_max, 40.0)
         object.__setattr__(self, "_inputs", inp)
         if self.z2 is not None:
-            from .chain.inputs import Z1_RANGE   # here: the chain package loads pandas
             require_count("z2", self.z2, Z1_RANGE[0], self.z2_max)
             if self.z1 is None:
                 raise GearDesignError("a fixed z2 needs a fixed z1 (the chain stage's ratio is z2/z1)")
@@ -379,8 +381,6 @@ class ChainStage:
 
     def table(self):
         """The validated chain catalog (read once per file version)."""
-        from ..catalogs.tables import catalog_dir   # here: catalogs and the chain package load pandas
-        from .chain.tables import load_chains
         return load_chains(self._inputs, catalog_dir())
 
     def rows(self) -> np.ndarray:
@@ -394,7 +394,6 @@ class ChainStage:
     def pairs(self, ratio_lo: float, ratio_hi: float):
         """(z1, z2) sprocket teeth with z2/z1 in [ratio_lo, ratio_hi] ∩ ``ratio_range``; without a
         given z1, the odd counts 13 … max(29 − 2u, 13) of chain.design's rule for that u."""
-        from .chain.formulas import recommended_z1   # here: the chain package loads pandas
 
         lo, hi = max(ratio_lo, self.ratio_range[0]), min(ratio_hi, self.ratio_range[1])
         z1 = np.arange(13, 28, 2) if self.z1 is None else np.array([int(self.z1)])
@@ -436,8 +435,6 @@ class Shaft:
     __repr__ = compact_repr     # only what differs from the defaults
 
     def __post_init__(self):
-        from . import key   # here: the key tables load pandas
-
         object.__setattr__(self, "at", require_count("at (shaft number)", self.at, 0, 64))
         object.__setattr__(self, "name", _name(self.name, f"shaft {self.at}"))
         if self.allowable_crush_mpa is None:
@@ -450,6 +447,5 @@ class Shaft:
 
     def select(self, torque_nm):
         """key.select for this hub at ``torque_nm`` [N·m]."""
-        from . import key   # here: the key tables load pandas
         return key.select(self.d_mm, torque_nm, self.hub_length_mm, self.allowable_crush_mpa,
                           self.allowable_shear_mpa, self.end, self.max_keys)

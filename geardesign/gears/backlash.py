@@ -31,6 +31,7 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..renamed import renamed_keywords
+from ..catalogs.tables import catalog_dir
 from ..results import Result
 from ..validate import one_number, require_choice, require_range
 from .geometry import min_center_distance, require_module, x_sum_from_center_distance
@@ -273,7 +274,6 @@ def _gost_columns() -> dict:
     """The GOST 1643 table's columns as read-only arrays (read once: a drive's sizing asks per design)."""
     import pandas as pd
 
-    from ..catalogs.tables import catalog_dir   # here: the catalogs layer loads pandas
 
     with (catalog_dir() / "gost1643_backlash.csv").open("r", encoding="utf-8") as fh:
         table = pd.read_csv(fh)

@@ -133,7 +133,10 @@ def _first_kkt_point(prob: Problem, ev: Evaluator, w0, near_p, near_m, max_move:
     Returns (w, act_p, act_m, newton iterations) or None.
     """
     nv = prob.nvar
-    t0 = w0[nv]
+    # no worse than the start, when the start holds every check: a start node that misses one (a region's piece
+    # seen on the coarse grid) may score above the optimum, which would then be refused here for SLSQP to find
+    M0 = ev(w0[:nv])[1]
+    t0 = w0[nv] if not (M0.size and M0.min() < -FEASIBILITY_TOL) else -math.inf
     nit = 0
     # Newton reads the active rows alone: where no costly check is active it walks without them, and the
     # point it reaches is checked against every check below

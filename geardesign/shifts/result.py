@@ -10,6 +10,7 @@ import numpy as np
 from ..gears.mesh import kind_text
 from ..inline import html_view
 from ..results import Result
+from .looks import margin_bars
 
 __all__ = ["ShiftResult", "Outcome"]
 
@@ -90,7 +91,6 @@ class ShiftResult(Result):
         """Bars of every check's margin at the optimum (≥ 0 holds; active checks outlined, their
         curves pass through the optimum). Returns the Axes."""
         import matplotlib.pyplot as plt
-        from .looks import margin_bars   # here: looks reads the check registry, which loads pandas
 
         if ax is None:
             _, ax = plt.subplots(figsize=(6.4, 1.3 + 0.3 * len(self.margins)))

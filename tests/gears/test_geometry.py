@@ -37,6 +37,35 @@ def test_scalar_in_scalar_out_and_broadcast():
 
 @SETTINGS
 @given(designs())
+def test_pair_geometry_of_single_numbers_is_the_array_paths(d):
+    """Single plain numbers take the float path (issue 36 §3: 7.6x GearPair(...).geometry() on one-element arrays);
+    the values are the array path's, ``fields`` keeps its meaning."""
+    one = gd.pair_geometry(d["m"], d["z1"], d["z2"], d["x1"], d["x2"], d["rack"], d["ts"])
+    arr = gd.pair_geometry(np.array([d["m"]]), d["z1"], d["z2"], d["x1"], d["x2"], d["rack"], d["ts"])
+    assert one.names == arr.names
+    for k in one.names:
+        assert isinstance(one[k], float), k
+        v = float(arr[k][0])
+        flt = mesh_geometry_float(Mesh(d["z1"], d["z2"], d["rack"], d["ts"]), d["m"], d["x1"], d["x2"])
+        assert abs(one[k] - v) <= 1e-13 * max(1.0, abs(v)) * _conditioning(k, flt), k
+    some = gd.pair_geometry(d["m"], d["z1"], d["z2"], d["x1"], d["x2"], d["rack"], d["ts"], fields=["a_w", "sa1"])
+    assert some.names == ["a_w", "sa1"] and some.a_w == one.a_w and some.eps_alpha is None
+
+
+def test_pair_geometry_of_single_numbers_refuses_and_returns_as_the_array_path():
+    """A design whose geometry does not exist is refused by name; gears whose tips do not reach across the
+    line of action are returned with g_alpha <= 0 (the regions need them), as on the array path."""
+    with pytest.raises(GearDesignError, match="too negative"):
+        gd.pair_geometry(1.0, 10, 10, -2.0, -2.0)
+    with pytest.raises(GearDesignError, match="tip circle of gear 1"):
+        gd.pair_geometry(1.0, 10, 40, -1.5, 3.0)
+    apart = gd.pair_geometry(1.0, 5, 5, 3, 3)
+    arr = gd.pair_geometry(np.array([1.0]), 5, 5, 3, 3)
+    assert apart.g_alpha == pytest.approx(float(arr.g_alpha[0]), rel=1e-12) and apart.g_alpha <= 0
+
+
+@SETTINGS
+@given(designs())
 def test_float_core_equals_array_core(d):
     mesh = Mesh(d["z1"], d["z2"], d["rack"], d["ts"])
     arr, flt = mesh_geometry(mesh, d["m"], d["x1"], d["x2"]), mesh_geometry_float(mesh, d["m"], d["x1"], d["x2"])

@@ -36,6 +36,25 @@ def test_atlas_thin_regions_agree_with_one_by_one_solves():
     assert thin >= 3   # the case exercised: regions thinner than the grid
 
 
+def test_feasible_pairs_with_a_large_wheel_are_settled_in_the_batch(monkeypatch):
+    """Only infeasible pairs go one by one (the docstring's promise): pairs with a large wheel, whose optimum
+    lies on the window's edge x2 = 3 (issue 36 §3: 36 % of the feasible pairs of z1 12..184 × z2 185..357 went
+    one by one), are settled by the batched Newton, each at the single-pair optimum."""
+    from geardesign.shifts import atlas
+
+    alone = []
+    solve = atlas._row_solved
+    monkeypatch.setattr(atlas, "_row_solved", lambda z1, z2, *a: alone.append((z1, z2)) or solve(z1, z2, *a))
+    df = gd.shift_atlas([18, 32, 60, 104], [231, 286, 302, 347])
+    assert df.feasible.all() and alone == []
+    on_edge = 0
+    for _, row in df.iterrows():
+        r = gd.optimize_shifts(int(row.z1), int(row.z2))
+        assert abs(row.x1 - r.x1) < 1e-9 and abs(row.x2 - r.x2) < 1e-9
+        on_edge += r.x2 == 3.0
+    assert on_edge >= 8      # the case exercised: optima on the window's edge
+
+
 def test_grid_areas_of_a_disc_an_annulus_and_two_pieces():
     """The atlas's area against plane geometry: a disc (π r²), an annulus (its hole subtracted) and
     two separate squares (added), each grid at once; the error of the interpolated contour ~ h²."""

@@ -4,7 +4,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-import pandas as pd
 
 from ...catalogs.tables import catalog_dir
 from ...results import Result, plain
@@ -13,6 +12,11 @@ from .checks import evaluate
 from .inputs import FACTOR_NAMES, OBJECTIVE_KEYS, Inputs, validate_inputs
 from .tables import ReferenceTables, load_chains, reference_tables, strand_index
 from .formulas import pitch_estimate_mm, recommended_z1
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:       # pandas is imported where a table is made (start-up cost)
+    import pandas as pd
 
 
 @dataclass(frozen=True, eq=False)
@@ -142,6 +146,8 @@ def _result_table(c: Candidates, order: np.ndarray, checks: list) -> dict:
 
 def _frame(table: dict, index, attrs: dict) -> pd.DataFrame:
     """A DataFrame of some rows (``index``, or all) of a column table, with the catalog's attrs."""
+    import pandas as pd   # here: pandas costs ~0.3 s to import; `geardesign --help` reads this module's constants only
+
     frame = pd.DataFrame({k: v if index is None else v[index] for k, v in table.items()}, copy=False)
     frame.attrs = dict(attrs)
     return frame

@@ -4,9 +4,13 @@ from __future__ import annotations
 
 
 import numpy as np
-import pandas as pd
 
 from ...catalogs.tables import load_catalog
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:       # pandas is imported where a table is made (start-up cost)
+    import pandas as pd
 
 
 HP_TO_KW = 0.745699872  # 1 mechanical horsepower in kW

@@ -7,11 +7,15 @@ from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 
 from ...catalogs.tables import BUNDLED, chain_catalog, load_catalog
 from ...errors import GearDesignError
 from .inputs import Inputs
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:       # pandas is imported where a table is made (start-up cost)
+    import pandas as pd
 
 
 @dataclass(frozen=True)

@@ -149,6 +149,24 @@ class StageKind:
         """How many costly solves the kind has done so far (for the optimum's count)."""
         return 0
 
+    # -- one cache of solved work across Dask workers (geardesign.drives.spread)
+    def solved_for(self, options: list) -> dict:
+        """What this process has solved that :meth:`solve_many` of ``options`` may reuse, to send along
+        with them to a worker ({} for a kind that keeps nothing)."""
+        return {}
+
+    def shared_by(self, option: dict):
+        """What options that share solved work have in common (they go to one worker), None for nothing."""
+        return None
+
+    def solve_shared(self, stage, options: list, objective: str, flows: list, known: dict) -> tuple:
+        """On a worker: :meth:`solve_many` with ``known`` (:meth:`solved_for` of the caller) reused;
+        returns (solutions, what was newly solved here, for :meth:`absorb`)."""
+        return self.solve_many(stage, options, objective, flows), {}
+
+    def absorb(self, solved: dict) -> None:
+        """Take what a worker newly solved into this process's cache (counted in :meth:`solve_count`)."""
+
     def solved_cost(self, stage, sol: dict) -> tuple:
         """(size mm², mass kg) of a feasible solved option."""
         return 0.0, 0.0

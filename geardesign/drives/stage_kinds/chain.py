@@ -9,6 +9,9 @@ from pathlib import Path
 import numpy as np
 
 from ..limits import BATCH_BLOCK
+from .. import chain as c
+from ...catalogs.tables import catalog_dir
+from ..chain import design as chain_design
 from ..stages import EFFICIENCY_RANGE, ChainStage, disc_mass_kg, stage_area_mm2
 from .base import Batch, ToothedKind
 
@@ -25,7 +28,6 @@ def _check_names(stage: ChainStage) -> list:
 
 def _batch(stage: ChainStage, rows, z1, z2, n1_rpm, torque_nm) -> dict:
     """Every margin, size and mass of chain candidates that each carry their own load."""
-    from ...catalogs.tables import catalog_dir   # here: catalogs and the chain package load pandas
     from ..chain.candidates import Candidates
     from ..chain.checks import evaluate
     from ..chain.inputs import with_loads
@@ -85,8 +87,6 @@ class ChainKind(ToothedKind):
 
     def analyse(self, stage, flow, objective: str) -> dict:
         """A chain stage by chain.design with the flow's load (its designation, when fixed, picks the row)."""
-        from ..chain import design as chain_design   # here: the chain package loads pandas
-
         st = stage
         res = chain_design(torque_nm=float(flow.torque_in_nm), n1_rpm=float(flow.n_in_rpm), ratio=st.z2 / st.z1,
                            z1=st.z1, **st.design_kwargs())
@@ -105,8 +105,6 @@ class ChainKind(ToothedKind):
 
     # -- scenes
     def scene_keys(self) -> dict:
-        from .. import chain as c   # here: the chain package loads pandas
-
         f = "float"
         return {"catalog": dict(kind="str", default="gost13568"), "z1": dict(kind="int", lo=c.Z1_RANGE[0], hi=c.Z1_RANGE[1]),
                 "z2": dict(kind="int", lo=c.Z1_RANGE[0], hi=c.Z2_MAX_LIMIT), "designation": dict(kind="str"),

@@ -16,6 +16,7 @@ checks hold. A stage with ``m=None`` needs a material or such a function.
 from __future__ import annotations
 
 import math
+import threading
 from dataclasses import replace
 from collections import OrderedDict
 from functools import lru_cache
@@ -26,6 +27,12 @@ from ...errors import GearDesignError
 from ...gears.geometry import M_RANGE_MM, X_ABS_MAX, require_module
 from ...gears.mesh import BETA_RANGE_DEG, FACE_WIDTH_RANGE_MM, Z_MAX, Z_MIN
 from ...validate import one_number, require_range
+from ...catalogs.tables import module_series
+from ...gears.checks import resolve_checks
+from ...gears.pair import GearPair
+from ...shifts.centres import margin_centres
+from ...shifts.objectives import OBJECTIVES
+from ...shifts.optimize import optimize_shifts
 from ..limits import LOOK_AHEAD, MARGIN_AHEAD, MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
 from .base import ToothedKind
@@ -37,10 +44,12 @@ __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution", "margin_
 
 class _Solved:
     """Solved tooth pairs by their key (m, z1, z2, checks, β, b, shift objective), the last SHIFT_CACHE kept
-    between calls; ``misses`` counts the solves (one by one or in a batch)."""
+    between calls; ``misses`` counts the solves (one by one or in a batch). On a Dask worker, what a chunk
+    solves is also noted in its thread's ``journal`` (sent back to the caller's cache: :meth:`GearKind.absorb`)."""
 
     def __init__(self, size: int):
         self.size, self.data, self.misses = size, OrderedDict(), 0
+        self.local = threading.local()     # a worker may run chunks side by side in its threads
 
     def get(self, key):
         sol = self.data.get(key)
@@ -50,10 +59,17 @@ class _Solved:
 
     def put(self, key, sol: dict) -> dict:
         self.misses += 1
+        self.keep(key, sol)
+        journal = getattr(self.local, "journal", None)
+        if journal is not None:
+            journal[key] = sol
+        return sol
+
+    def keep(self, key, sol: dict) -> None:
+        """``sol`` remembered, not counted as a solve (one made elsewhere)."""
         self.data[key] = sol
         if len(self.data) > self.size:
             self.data.popitem(last=False)
-        return sol
 
     def clear(self) -> None:
         self.data.clear()
@@ -99,8 +115,6 @@ def shift_solution(key: tuple) -> dict:
 
 def _solve_shifts(m, z1, z2, checks_key, beta_deg, face_width_mm, objective, a_w=None, bounds=None,
                   fit=None) -> dict:
-    from ...gears.pair import GearPair   # here: the pair's checks and the solvers load pandas and scipy
-    from ...shifts.optimize import optimize_shifts
     from ...shifts.problem import DEFAULT_BOUNDS
 
     checks = dict(checks_key) or None
@@ -151,8 +165,6 @@ def margin_solutions(stage: GearStage, pairs: list) -> None:
     (:func:`geardesign.shifts.centres.margin_centres`: each pair's solution bit for bit the one
     :func:`shift_solution` gives alone) into the cache; a pair the batch does not certify is left for
     :func:`shift_solution` to solve alone."""
-    from ...shifts.centres import margin_centres   # here: the shifts layer loads pandas
-
     if stage.housing != "free" or stage.bounds is not None or stage.fit is not None:
         return    # the batch solves free shifts in the default window: these pairs are solved one by one
     todo = list(dict.fromkeys(k for k in (_pair_key(stage, z1, z2, "max_margin") for z1, z2 in pairs)
@@ -218,7 +230,6 @@ def set_sizing(fn):
 @lru_cache(maxsize=1)
 def _series() -> np.ndarray:
     """The ISO 54 modules (read once: the catalog lookup costs ~3 ms, the search asks per tooth pair)."""
-    from ...catalogs.tables import module_series   # here: catalogs load pandas
     series = np.array(module_series(), dtype=float)
     series.flags.writeable = False
     return series
@@ -234,7 +245,6 @@ def _shifts_scale_free(stage: GearStage) -> bool:
 
 @lru_cache(maxsize=64)
 def _scale_free_checks(checks_key: tuple, helical: bool) -> bool:
-    from ...gears.checks import resolve_checks   # here: the check registry loads pandas
     from ...gears.checks.external import (ContactRatio, Interference, Jamming, TipThickness, TotalContactRatio,
                                           Undercut)
 
@@ -560,6 +570,26 @@ class GearKind(ToothedKind):
     def solve_count(self) -> int:
         return _SOLVED.misses
 
+    def solved_for(self, options: list) -> dict:
+        pairs = {(int(o["z1"]), int(o["z2"])) for o in options}
+        return {key: sol for key, sol in _SOLVED.data.items() if key[1:3] in pairs}
+
+    def shared_by(self, option: dict):
+        return int(option["z1"]), int(option["z2"])      # every module and flow of a tooth pair
+
+    def solve_shared(self, stage, options: list, objective: str, flows: list, known: dict) -> tuple:
+        for key, sol in known.items():
+            _SOLVED.keep(key, sol)
+        _SOLVED.local.journal = journal = {}
+        try:
+            return self.solve_many(stage, options, objective, flows), journal
+        finally:
+            _SOLVED.local.journal = None
+
+    def absorb(self, solved: dict) -> None:
+        for key, sol in solved.items():     # each one a solve made on a worker: counted here
+            _SOLVED.put(key, sol)
+
     @staticmethod
     def _width(stage, sol) -> float:
         if stage.m is not None:
@@ -616,8 +646,6 @@ class GearKind(ToothedKind):
         """A gear stage at its tooth counts (free shifts solved; a free module sized at the flow): its
         checks (at the manufactured state too, with a mating type; with a material, its load checks at the
         flow, through the check registry), size and mass."""
-        from ...gears.pair import GearPair   # here: the pair's checks load pandas
-
         st = stage
         if st.m is None:
             sol = self._sized(st, st.z1, st.z2, objective, flow)
@@ -676,8 +704,6 @@ class GearKind(ToothedKind):
 
     # -- scenes
     def scene_keys(self) -> dict:
-        from ...shifts.objectives import OBJECTIVES   # here: the shifts layer loads pandas
-
         f, i = "float", "int"
         from ...gears.strength.load import APPLICATION_FACTOR_RANGE, LIFE_RANGE_H
         from ...gears.backlash import GOST1643_TYPES
