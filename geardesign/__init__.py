@@ -52,6 +52,9 @@ _NAMES = {
     "mesh_forces": "gears.forces", "pair_forces": "gears.forces", "planetary_forces": "gears.forces",
     "MeshForces": "gears.forces", "check_bearing": "drives.bearing", "select_bearing": "drives.bearing",
     "chain_pull": "drives.chain.pull",
+    "ShaftModel": "drives.shaft_beam", "ShaftLoad": "drives.shaft_beam", "analyse_shaft": "drives.shaft_beam",
+    "ShaftNotch": "drives.din743", "Notch": "drives.din743", "din743_safety": "drives.din743",
+    "shaft_safety": "drives.din743", "least_shaft_scale": "drives.din743", "plot_shaft": "drives.shaft_plot",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {
@@ -60,6 +63,7 @@ _MODULES = {
     "studies": "sensitivity.sweeps",    # the module's name before it was sweeps.py; kept for old scripts
     "gears": "gears", "shifts": "shifts", "drives": "drives", "sensitivity": "sensitivity", "profiles": "profiles",
     "motor": "drives.motor", "bearing": "drives.bearing", "forces": "gears.forces",
+    "din743": "drives.din743", "shaft_beam": "drives.shaft_beam",
 }
 
 __all__ = sorted(_NAMES) + sorted(_MODULES)

@@ -43,7 +43,7 @@ from ..validate import one_number, require_choice, require_range
 __all__ = ["MATERIAL_KINDS", "NOTCH_KINDS", "S_MIN", "shaft_material", "K1", "K2", "K3", "surface_factor",
            "key_seat_beta", "press_fit_beta", "stress_concentration", "support_number", "total_factor",
            "amplitude_strength", "Notch", "din743_safety", "Din743Result", "ShaftNotch", "shaft_safety",
-           "ShaftSafety", "least_diameter_mm"]
+           "ShaftSafety", "least_diameter_mm", "least_shaft_scale"]
 
 MATERIAL_KINDS = ("quenched_tempered", "case_hardening")
 NOTCH_KINDS = ("smooth", "key", "press_fit", "shoulder", "groove", "given")
@@ -540,3 +540,31 @@ def shaft_safety(analysis, notches, material, *, peak_factor=1.0, torque_amplitu
     msg = (f"least safety {min(worst['S_D'], worst['S_F']):.4g} at {worst['name']} "
            f"(S_D {worst['S_D']:.4g}, S_F {worst['S_F']:.4g}; S_min {S_min:g})")
     return ShaftSafety(ok, msg, float(S_min), table, tuple(results))
+
+
+def least_shaft_scale(model, notches, material, *, S_min=S_MIN, tol=1e-4, **kw) -> float:
+    """The least factor on every diameter of ``model`` (with the notches' radii and depths, and d_eff, in
+    proportion) at which every section of ``notches`` reaches S_min (bisection; the safety rises with the
+    scale). ``kw``: the options of :func:`shaft_safety`. Multiply the section diameters by it for the least
+    shaft of this shape."""
+    from .shaft_beam import analyse_shaft
+
+    def least(s):
+        m = model.with_diameters(s)
+        sn = [ShaftNotch(n.x_mm, Notch(n.notch.kind, None if n.notch.r_mm is None else n.notch.r_mm * s,
+                                       None if n.notch.t_mm is None else n.notch.t_mm * s, n.notch.keys,
+                                       n.notch.beta_sigma, n.notch.beta_tau, n.notch.alpha_sigma), n.name)
+              for n in notches]
+        t = shaft_safety(analyse_shaft(m, points=20, shaft_mass=False), sn, material, S_min=S_min, **kw).table
+        return float(np.minimum(t["S_D"], t["S_F"]).min())
+
+    dmax, dmin = max(s[1] for s in model.sections), min(s[1] for s in model.sections)
+    lo, hi = 2.0 / dmin, D_EFF_MAX_MM / dmax   # the thinnest section at 2 mm … d_eff at DIN 743's limit
+    if least(hi) < S_min:
+        raise GearDesignError(f"no scale up to {hi:.4g} (d_eff <= {D_EFF_MAX_MM:g} mm) reaches S_min = {S_min:g}")
+    if least(lo) >= S_min:
+        return lo
+    while hi - lo > tol * hi:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if least(mid) >= S_min else (mid, hi)
+    return hi
