@@ -1,0 +1,124 @@
+"""DIN 743 safety: the exam cases with printed safeties (tests/data/din743_exam_cases.md), the factor formulas
+against hand arithmetic, a thicker shaft never less safe (hypothesis), the least diameter, the CLI."""
+import json
+import math
+import subprocess
+import sys
+
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from geardesign.drives import din743
+from geardesign.drives.din743 import Notch, ShaftNotch, din743_safety, least_diameter_mm, shaft_safety
+from geardesign.drives.shaft_beam import ShaftLoad, ShaftModel, analyse_shaft
+from geardesign.errors import GearDesignError
+
+
+def test_exam_2024W_1_shoulder_load_case_1():
+    """MEL1 2024W task 1 (tests/data/din743_exam_cases.md): S_D = 2.373, S_F = 1.464."""
+    r = din743_safety("50CrMo4", Notch("shoulder", r_mm=4.0), d_mm=84.0, D_mm=100.0, d_eff_mm=100.0, Rz_um=10.0,
+                      load_case=1, F_zdm=443341.5553, F_zdmax=443341.5553, M_bm=23275.43165, M_ba=2909.428956,
+                      M_bmax=26184.86061, T_m=13965.25899, T_max=13965.25899)
+    assert round(r.S_D, 3) == 2.373
+    assert round(r.S_F, 3) == 1.464
+
+
+def test_exam_2024W_2_key_seat_load_case_2():
+    """MEL1 2024W task 2: S_D = 1.472, S_F = 2.568."""
+    r = din743_safety("C50", Notch("key"), d_mm=60.0, d_eff_mm=80.0, Rz_um=25.0, hard_surface=True,
+                      M_ba=1402.294, T_m=1336.902, M_bmax=1.8 * 1402.294, T_max=1.8 * 1336.902)
+    assert round(r.S_D, 3) == 1.472
+    assert round(r.S_F, 3) == 2.568
+
+
+def test_key_seat_by_hand():
+    """The key-seat chain by hand (DIN 743-2 Table 1, eqs. (10), (16), (17); DIN 743-1 eqs. (6), (7)) for a
+    pure reversed bending: S_D = σ_bWK/σ_ba."""
+    d = 40.0
+    r = din743_safety("42CrMo4", Notch("key"), d_mm=d, d_eff_mm=16.0, M_ba=300.0)
+    sB = 1100.0                                          # K1 = 1 at d_eff = d_B = 16 mm
+    beta = 3.0 * (sB / 1000) ** 0.38                     # at d_BK = 40 = d: K3 ratio 1
+    K2 = 1 - 0.2 * math.log10(d / 7.5) / math.log10(20)
+    K = beta / K2                                        # K_F = 1 for key seats, K_V = 1
+    sigma_bWK = 0.5 * sB / K
+    sigma_ba = 300e3 / (math.pi * d ** 3 / 32)
+    assert r.S_D == pytest.approx(sigma_bWK / sigma_ba, rel=1e-12)
+    # static: σ_bFK = K1S K2F γF σ_S = 1 · 1.2 · 1 · 900
+    assert r.S_F == pytest.approx(1.2 * 900.0 / sigma_ba, rel=1e-12)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.floats(15, 120), st.floats(1.01, 1.6), st.sampled_from(["smooth", "key", "press_fit", "shoulder"]),
+       st.floats(0, 2000), st.floats(0, 3000), st.floats(0, 50000), st.sampled_from([1, 2]))
+def test_thicker_is_never_less_safe(d, grow, kind, M, T, N, case):
+    notch = Notch(kind, r_mm=1.5 if kind == "shoulder" else None)
+
+    def s(dd):
+        kw = dict(D_mm=dd * 1.2) if kind == "shoulder" else {}
+        r = din743_safety("C45", notch, d_mm=dd, d_eff_mm=200.0, M_ba=M, T_m=T, F_zdm=N, load_case=case, **kw)
+        return r.S_D, r.S_F
+
+    (a_d, a_f), (b_d, b_f) = s(d), s(d * grow)
+    assert b_d >= a_d * (1 - 1e-12) and b_f >= a_f * (1 - 1e-12)
+
+
+def test_least_diameter_reaches_s_min():
+    d = least_diameter_mm("42CrMo4", Notch("key"), M_ba=500.0, T_m=800.0)
+    at = din743_safety("42CrMo4", Notch("key"), d_mm=d, M_ba=500.0, T_m=800.0)
+    below = din743_safety("42CrMo4", Notch("key"), d_mm=d - 0.01, M_ba=500.0, T_m=800.0)
+    assert min(at.S_D, at.S_F) >= 1.2 > min(below.S_D, below.S_F)
+
+
+def _shaft():
+    return ShaftModel([(40.0, 35.0), (40.0, 40.0), (120.0, 45.0), (40.0, 40.0), (40.0, 35.0)], [20.0, 260.0],
+                      [ShaftLoad(140.0, fy_n=-3000.0, fz_n=1100.0, fx_n=800.0, y_mm=60.0, torque_nm=120.0),
+                       ShaftLoad(280.0, fz_n=-1500.0, torque_nm=-120.0)])
+
+
+def test_shaft_safety_and_least_scale():
+    an = analyse_shaft(_shaft())
+    notches = [ShaftNotch(140.0, Notch("key")), ShaftNotch(80.0, Notch("shoulder", r_mm=1.6))]
+    s = shaft_safety(an, notches, "42CrMo4")
+    row = s.table.iloc[0]
+    assert row["d_mm"] == 45.0 and row["T_nm"] == pytest.approx(120.0)
+    # the moment there is the diagram's resultant at x = 140
+    assert row["M_nm"] == pytest.approx(an.diagrams.loc[an.diagrams["x_mm"] == 140.0, "M_nm"].max())
+    k = din743.least_shaft_scale(_shaft(), notches, "42CrMo4")
+    m = _shaft().with_diameters(k)
+    sn = [ShaftNotch(140.0, Notch("key")), ShaftNotch(80.0, Notch("shoulder", r_mm=1.6 * k))]
+    t = shaft_safety(analyse_shaft(m), sn, "42CrMo4").table
+    assert (t[["S_D", "S_F"]].min(axis=1).min()) == pytest.approx(1.2, rel=2e-3)
+
+
+def test_bad_inputs():
+    with pytest.raises(GearDesignError, match="material"):
+        din743_safety("unobtainium", d_mm=40.0)
+    with pytest.raises(GearDesignError, match="beta_sigma"):
+        Notch("given")
+    with pytest.raises(GearDesignError, match="d/D <= 0.98"):
+        din743_safety("C45", Notch("shoulder", r_mm=1.0), d_mm=40.0, D_mm=40.5)
+
+
+def _cli(*args):
+    return subprocess.run([sys.executable, "-m", "geardesign", "shaft", *args], capture_output=True, text=True)
+
+
+BASE = ["--sections", "40x35,40x40,120x45,40x40,40x35", "--supports", "20,260",
+        "--load", "x=140,fy=-3000,fz=1100,fx=800,y=60,torque=120", "--load", "x=280,fz=-1500,torque=-120"]
+
+
+def test_cli_verdict_json_and_errors(tmp_path):
+    ok = _cli(*BASE, "--notch", "x=140,kind=key")
+    assert ok.returncode == 0 and ok.stdout.startswith("OK:")
+    fails = _cli(*BASE, "--notch", "x=140,kind=key", "--s-min", "20")
+    assert fails.returncode == 1 and fails.stdout.startswith("FAILS:")
+    js = json.loads(_cli(*BASE, "--notch", "x=140,kind=key", "--json").stdout)
+    assert js["ok"] is True and js["safety"]["table"][0]["notch"] == "key"
+    bad = _cli("--sections", "40x35", "--supports", "0")
+    assert bad.returncode == 2 and "--supports" in bad.stderr and "Traceback" not in bad.stderr
+    bad = _cli(*BASE, "--notch", "x=140,kind=spline")
+    assert bad.returncode == 2 and "--notch" in bad.stderr
+    png = tmp_path / "s.png"
+    assert _cli(*BASE, "--plot", str(png)).returncode == 0 and png.stat().st_size > 1000
+    again = _cli(*BASE, "--plot", str(png))
+    assert again.returncode == 2 and "--overwrite" in again.stderr
