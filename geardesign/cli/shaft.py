@@ -156,8 +156,8 @@ def run(args) -> int:
         print_wrapped(("OK: " if ok else "FAILS: din743_safety (") + safety.message + ("" if ok else ")"))
     for line in repr(analysis).splitlines()[1:]:
         print_wrapped(line.strip())
-    print_wrapped(f"first bending critical speed: {analysis.critical_speed_rpm:.5g} rpm (Rayleigh, upper estimate), "
-                  f"{analysis.critical_speed_dunkerley_rpm:.5g} rpm (Dunkerley, lower); mass {analysis.mass_kg:.4g} kg")
+    print_wrapped(f"first bending critical speed: {analysis.critical_speed_rpm:.0f} rpm (Rayleigh, upper estimate), "
+                  f"{analysis.critical_speed_dunkerley_rpm:.0f} rpm (Dunkerley, lower); mass {analysis.mass_kg:.4g} kg")
     if len(analysis.elements):
         print()
         print_frame(analysis.elements, title="deflection and slope at each load:")

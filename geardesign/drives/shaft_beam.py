@@ -389,7 +389,7 @@ def analyse_shaft(model: ShaftModel, points: int = POINTS_DEFAULT, shaft_mass: b
     planes = tuple(_Plane(x, kappa[k], theta[k], w[k]) for k in range(2))
     act = _active(x, right, xf) if loads else np.zeros((x.size, 0), bool)
     T = act @ np.array([ld.torque_nm for ld in loads], dtype=float) if loads else np.zeros(x.size)
-    Rx = -fx.sum()
+    Rx = -fx.sum() + 0.0     # + 0.0: no negative zero in the output
     N = -(act @ fx if loads else np.zeros(x.size)) - Rx * _active(x, right, [supports[model.axial_support]])[:, 0]
     Mz, My = M[0] / 1000.0, M[1] / 1000.0
     diagrams = pd.DataFrame({

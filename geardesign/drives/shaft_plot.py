@@ -58,7 +58,7 @@ def plot_shaft(analysis, path=None, *, overwrite: bool = False):
     strip.axis("off")
     fig.suptitle(f"shaft: L = {model.length_mm:g} mm, max M = {d['M_nm'].max():.4g} N·m, "
                  f"max deflection {1000 * analysis.max_deflection_mm:.4g} µm, "
-                 f"n_crit ≈ {analysis.critical_speed_rpm:.5g} rpm", fontsize=10)
+                 f"n_crit ≈ {analysis.critical_speed_rpm:.0f} rpm (Rayleigh)", fontsize=10)
     if path is not None:
         from ..files import check_output_path, write_file_atomic
 
