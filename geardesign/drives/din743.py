@@ -501,16 +501,18 @@ def shaft_safety(analysis, notches, material, *, peak_factor=1.0, torque_amplitu
         if not isinstance(sn, ShaftNotch):
             raise GearDesignError(f"notches[{i}] must be a ShaftNotch, got {type(sn).__name__}")
         require_range(f"notches[{i}].x_mm", sn.x_mm, 0.0, model.length_mm, unit="mm")
-        at = np.flatnonzero(np.isclose(x, sn.x_mm, rtol=0, atol=1e-9))
+        at = np.flatnonzero(x == sn.x_mm)
         if at.size == 0:
-            sub = analysis.deflection_at(sn.x_mm)    # x between nodes: interpolate the linear diagrams
-            del sub
-            j = np.searchsorted(x, sn.x_mm)
-            at = np.array([j - 1, j])
-        Mb = float(np.max(np.interp([sn.x_mm], x, diag["M_nm"]) if at.size == 2 and x[at[0]] != x[at[1]]
-                          else diag["M_nm"].to_numpy()[at]))
-        T = float(np.max(np.abs(diag["T_nm"].to_numpy()[at])))
-        N = float(diag["N_n"].to_numpy()[at][np.argmax(np.abs(diag["N_n"].to_numpy()[at]))])
+            # between nodes the diagrams are linear: interpolate (exact)
+            Mb = float(np.interp(sn.x_mm, x, diag["M_nm"].to_numpy()))
+            T = abs(float(np.interp(sn.x_mm, x, diag["T_nm"].to_numpy())))
+            N = float(np.interp(sn.x_mm, x, diag["N_n"].to_numpy()))
+        else:
+            # at a node (a load, a step) the larger of its left and right limits
+            Mb = float(diag["M_nm"].to_numpy()[at].max())
+            T = float(np.abs(diag["T_nm"].to_numpy()[at]).max())
+            n_at = diag["N_n"].to_numpy()[at]
+            N = float(n_at[np.argmax(np.abs(n_at))])
         (dl, bl), (dr, br) = model.diameter_at(sn.x_mm, "left"), model.diameter_at(sn.x_mm, "right")
         dl, dr, bl, br = float(dl), float(dr), float(bl), float(br)
         nt = sn.notch

@@ -122,3 +122,24 @@ def test_cli_verdict_json_and_errors(tmp_path):
     assert _cli(*BASE, "--plot", str(png)).returncode == 0 and png.stat().st_size > 1000
     again = _cli(*BASE, "--plot", str(png))
     assert again.returncode == 2 and "--overwrite" in again.stderr
+
+
+def test_notch_between_nodes_takes_the_exact_moment():
+    """Simply supported, F at a: M(x) = F (l − a) x / l left of the load (Shigley Table A-9-6); the key seat at
+    an x that is no node of the diagrams gets that moment, and the stress σ_ba = 32 M/(π d³)."""
+    F, l, a, d = 5000.0, 300.0, 200.0, 40.0
+    an = analyse_shaft(ShaftModel([(l, d)], [0.0, l], [ShaftLoad(a, fy_n=-F)]), points=10)
+    x = 123.456
+    s = shaft_safety(an, [ShaftNotch(x, Notch("key"))], "C45")
+    assert s.table["M_nm"].iloc[0] == pytest.approx(F * (l - a) * x / l / 1000, rel=1e-12)
+
+
+def test_hollow_shaft_stress_and_deflection():
+    """A bore lowers I to π(d⁴ − d_i⁴)/64 (deflection F L³/(48 E I), Shigley Table A-9-5) and raises the stress."""
+    F, L, d, di = 2000.0, 400.0, 50.0, 30.0
+    an = analyse_shaft(ShaftModel([(L, d, di)], [0.0, L], [ShaftLoad(L / 2, fz_n=F)]))
+    I = math.pi * (d ** 4 - di ** 4) / 64
+    assert an.max_deflection_mm == pytest.approx(F * L ** 3 / (48 * 210000.0 * I), rel=1e-9)
+    solid = din743_safety("C45", d_mm=d, M_ba=100.0)
+    hollow = din743_safety("C45", d_mm=d, bore_mm=di, M_ba=100.0)
+    assert hollow.S_D < solid.S_D

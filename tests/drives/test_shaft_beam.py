@@ -150,3 +150,33 @@ def test_bad_inputs_are_named():
     with pytest.raises(GearDesignError, match="bore_mm"):
         ShaftModel([(100.0, 30.0, 30.0)], [0.0, 100.0])
     assert gd.ShaftModel is ShaftModel
+
+
+IN, LBF = 25.4, 4.4482216152605
+E_30MPSI = 30e6 * LBF / IN ** 2        # N/mm²
+
+
+def test_shigley_problem_7_8_printed_slopes():
+    """tests/data/shigley_shaft_examples.md, item 1: slopes 0.0002823 (left), 4.342e-4 (right), 0.000304
+    (gear) rad, printed to 4 and 3 digits."""
+    model = ShaftModel([(11 * IN, 1.875 * IN)], [0.0, 11 * IN], [ShaftLoad(9 * IN, fy_n=-1449 * LBF)], E_mpa=E_30MPSI)
+    th = analyse_shaft(model).deflection_at([0.0, 11 * IN, 9 * IN])["th_rad"].tolist()
+    assert th[0] == pytest.approx(0.0002823, abs=0.5e-7)
+    assert th[1] == pytest.approx(4.342e-4, abs=0.5e-7)
+    assert th[2] == pytest.approx(0.000304, abs=0.5e-6)
+
+
+def test_shigley_example_7_5_equivalent_loads():
+    """tests/data/shigley_shaft_examples.md, item 2: w_1c = 35·δ11/δcc = 17.1 lbf, w_2c = 55·δ22/δcc = 46.1 lbf
+    (influence coefficients from unit loads on the model)."""
+    L = 31 * IN
+
+    def delta(at, of):
+        m = ShaftModel([(L, IN)], [0.0, L], [ShaftLoad(of, fy_n=-1.0)], E_mpa=E_30MPSI)
+        return -analyse_shaft(m, points=20).deflection_at(at)["wy_mm"].iloc[0]
+
+    x1, x2, xc = 7 * IN, 20 * IN, L / 2
+    dcc = delta(xc, xc)
+    assert 35 * delta(x1, x1) / dcc == pytest.approx(17.1, abs=0.05)
+    assert 55 * delta(x2, x2) / dcc == pytest.approx(46.1, abs=0.05)
+    assert 6 * E_30MPSI * float(second_moment_mm4(IN)) * L / (LBF * IN ** 3) == pytest.approx(0.2739e9, rel=2e-4)
