@@ -6,6 +6,8 @@ line names it), 2 on bad input (one line on stderr naming the option).
 """
 from __future__ import annotations
 
+import re
+
 from ..drives import din743
 from ..drives.shaft_beam import ShaftLoad, ShaftModel, analyse_shaft
 from ..errors import GearDesignError
@@ -97,8 +99,16 @@ def _pairs(text, keys, option):
     return out
 
 
+# the library's argument names -> this command's options, for the one-line error
+_OPTIONS = {"Rz_um": "--rz", "peak_factor": "--peak-factor", "torque_amplitude": "--torque-amplitude",
+            "S_min": "--s-min", "axial_support": "--axial-support", "load_case": "--load-case"}
+
+
 def _with_option(exc, option):
     text = str(exc)
+    for name, opt in _OPTIONS.items():
+        if re.search(rf"(?<![\w-]){re.escape(name)}\b", text):
+            return GearDesignError(re.sub(rf"(?<![\w-]){re.escape(name)}\b", opt, text))
     return GearDesignError(text if text.startswith("--") else f"{option}: {text}")
 
 
@@ -112,8 +122,8 @@ def run(args) -> int:
     try:
         model = ShaftModel(sections, supports, loads, axial_support=args.axial_support)
     except GearDesignError as exc:
-        option = ("--sections" if "section" in str(exc) else "--supports" if "support" in str(exc)
-                  else "--load")
+        option = ("--sections" if "section" in str(exc) else "--load" if "load" in str(exc) or "torque" in str(exc)
+                  else "--supports")
         raise _with_option(exc, option) from None
     notches = []
     for t in args.notch:
@@ -130,6 +140,8 @@ def run(args) -> int:
     analysis = analyse_shaft(model)
     kw = dict(Rz_um=args.rz, peak_factor=args.peak_factor, torque_amplitude=args.torque_amplitude,
               load_case=args.load_case, S_min=args.s_min)
+    if not 0.0 < args.s_min <= 100.0 or args.s_min != args.s_min:
+        raise GearDesignError(f"--s-min must be in (0, 100], got {args.s_min!r}")
     safety, scale = None, None
     if notches:
         try:

@@ -38,7 +38,7 @@ import pandas as pd
 from ..catalogs.tables import load_catalog
 from ..errors import GearDesignError
 from ..results import Result
-from ..validate import one_number, require_choice, require_range
+from ..validate import one_number, require_bool, require_choice, require_range
 
 __all__ = ["MATERIAL_KINDS", "NOTCH_KINDS", "S_MIN", "shaft_material", "K1", "K2", "K3", "surface_factor",
            "key_seat_beta", "press_fit_beta", "stress_concentration", "support_number", "total_factor",
@@ -65,6 +65,26 @@ def shaft_material(name: str) -> dict:
     row = table.loc[table["material"] == name].iloc[0]
     return {k: (float(row[k]) if k.endswith(("_mpa", "_mm")) else row[k]) for k in
             ("material", "kind", "sigma_B_mpa", "sigma_S_mpa", "d_B_mm", "source")}
+
+
+def _material(material) -> dict:
+    """A material by its name in the bundled table, or a dict with kind, sigma_B_mpa, sigma_S_mpa, d_B_mm."""
+    if isinstance(material, str):
+        return shaft_material(material)
+    if not isinstance(material, dict):
+        raise GearDesignError(f"material must be a name of the shaft_materials_din743 table or a dict, got "
+                              f"{type(material).__name__}")
+    missing = [k for k in ("kind", "sigma_B_mpa", "sigma_S_mpa", "d_B_mm") if k not in material]
+    if missing:
+        raise GearDesignError(f"material needs {', '.join(missing)} (kind, sigma_B_mpa, sigma_S_mpa, d_B_mm)")
+    out = dict(material)
+    out["kind"] = require_choice("material kind", out["kind"], MATERIAL_KINDS)
+    for k, hi in (("sigma_B_mpa", 3000.0), ("sigma_S_mpa", 3000.0), ("d_B_mm", D_EFF_MAX_MM)):
+        out[k] = float(one_number(k, require_range(k, out[k], 0.0, hi, lo_open=True)))
+    if out["sigma_S_mpa"] >= out["sigma_B_mpa"]:
+        raise GearDesignError(f"material sigma_S_mpa must be below sigma_B_mpa, got {out['sigma_S_mpa']:g} >= "
+                              f"{out['sigma_B_mpa']:g}")
+    return out
 
 
 def K1(d_eff_mm, kind: str = "quenched_tempered", strength: str = "tensile", d_B_mm: float = 16.0):
@@ -299,10 +319,14 @@ def din743_safety(material, notch: Notch | None = None, *, d_mm, D_mm=None, bore
     >>> round(r.S_D, 3), round(r.S_F, 3)
     (1.472, 2.568)
     """
-    mat = shaft_material(material) if isinstance(material, str) else dict(material)
-    notch = notch or Notch()
-    kind = require_choice("material kind", mat.get("kind"), MATERIAL_KINDS)
-    sB, sS, dB = (float(mat[k]) for k in ("sigma_B_mpa", "sigma_S_mpa", "d_B_mm"))
+    mat = _material(material)
+    notch = Notch() if notch is None else notch
+    if not isinstance(notch, Notch):
+        raise GearDesignError(f"notch must be a Notch, got {type(notch).__name__}")
+    hard_surface = require_bool("hard_surface", hard_surface)
+    S_min = float(one_number("S_min", require_range("S_min", S_min, 0.0, 100.0, lo_open=True)))
+    kind = mat["kind"]
+    sB, sS, dB = (mat[k] for k in ("sigma_B_mpa", "sigma_S_mpa", "d_B_mm"))
     d = float(one_number("d_mm", require_range("d_mm", d_mm, 1.0, D_EFF_MAX_MM, unit="mm")))
     bore = float(one_number("bore_mm", require_range("bore_mm", bore_mm, 0.0, d, hi_open=True, unit="mm")))
     if notch.kind == "groove" and D_mm is None:

@@ -143,3 +143,22 @@ def test_hollow_shaft_stress_and_deflection():
     solid = din743_safety("C45", d_mm=d, M_ba=100.0)
     hollow = din743_safety("C45", d_mm=d, bore_mm=di, M_ba=100.0)
     assert hollow.S_D < solid.S_D
+
+
+@pytest.mark.parametrize("extra, option", [(["--rz", "0"], "--rz"), (["--peak-factor", "0.5"], "--peak-factor"),
+                                           (["--s-min", "nan"], "--s-min"), (["--axial-support", "5"], "--axial-support"),
+                                           (["--material", "foo"], "--material"),
+                                           (["--notch", "x=150,kind=shoulder,r=1"], "--notch"),
+                                           (["--load", "x=10,torque=5"], "--load"), (["--sections", "40x0"], "--sections")])
+def test_cli_errors_name_the_option(extra, option):
+    r = _cli(*BASE, "--notch", "x=140,kind=key", *extra)
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and option in r.stderr and "Traceback" not in r.stderr
+
+
+def test_material_as_a_dict_is_checked():
+    mine = {"kind": "quenched_tempered", "sigma_B_mpa": 700.0, "sigma_S_mpa": 490.0, "d_B_mm": 16.0}
+    assert din743_safety(mine, d_mm=40, M_ba=100).S_D == din743_safety("C45", d_mm=40, M_ba=100).S_D
+    with pytest.raises(GearDesignError, match="d_B_mm"):
+        din743_safety({"kind": "quenched_tempered", "sigma_B_mpa": 700.0, "sigma_S_mpa": 490.0}, d_mm=40)
+    with pytest.raises(GearDesignError, match="sigma_S_mpa must be below"):
+        din743_safety({**mine, "sigma_S_mpa": 800.0}, d_mm=40)
