@@ -27,16 +27,20 @@ def add_parser(subparsers):
                     "deflection and slope at each load, the first bending critical speed (Rayleigh, Dunkerley), "
                     "and the DIN 743 fatigue and static safety at each --notch. The first line is the verdict. "
                     "Exit status 0 when every notch reaches --s-min, 1 when one fails, 2 on bad input.")
-    p.add_argument("--sections", required=True, metavar="LxD,...",
+    p.add_argument("file", nargs="?", default=None, metavar="TOML",
+                   help="a shaft described in TOML: a [shaft] table with sections = [[length, d], ...], "
+                        "supports = [x, ...], material, and [[shaft.load]] / [[shaft.notch]] tables with the keys of "
+                        "--load and --notch (options given too are added: loads and notches, or replace: the rest)")
+    p.add_argument("--sections", default=None, metavar="LxD,...",
                    help="consecutive sections from x = 0 as length x diameter [x bore], mm, e.g. 40x35,120x45,40x35")
-    p.add_argument("--supports", required=True, metavar="X,X[,...]", help="support (bearing) positions x, mm")
+    p.add_argument("--supports", default=None, metavar="X,X[,...]", help="support (bearing) positions x, mm")
     p.add_argument("--load", action="append", default=[], metavar="KEY=V,...",
                    help="a load: x (mm), fy, fz, fx (N), y, z (mm: where fx acts), torque (N·m, input +, "
                         "output −), my, mz (N·m), mass (kg), name; repeat for each element")
     p.add_argument("--notch", action="append", default=[], metavar="KEY=V,...",
                    help="a section to check: x (mm), kind (smooth, key, press_fit, shoulder, groove, given), r, t "
                         "(mm), keys (1 or 2), beta_sigma, beta_tau (for kind=given), name")
-    p.add_argument("--material", default="42CrMo4",
+    p.add_argument("--material", default=None,
                    help="shaft material of catalogs/shaft_materials_din743.csv (default 42CrMo4)")
     p.add_argument("--rz", type=float, default=6.3, metavar="UM", help="surface roughness Rz, µm (default 6.3)")
     p.add_argument("--peak-factor", dest="peak_factor", type=float, default=1.0, metavar="K",
@@ -112,12 +116,74 @@ def _with_option(exc, option):
     return GearDesignError(text if text.startswith("--") else f"{option}: {text}")
 
 
+_FILE_KEYS = ("sections", "supports", "material", "load", "notch")
+FILE_BYTES_MAX = 1 << 20
+
+
+def _from_file(path):
+    """The [shaft] table of a TOML file: sections, supports, material, and the load and notch tables as the
+    key=value texts of --load and --notch (one parser for both ways in)."""
+    import tomllib
+    from pathlib import Path
+
+    p = Path(path)
+    if not p.is_file():
+        raise GearDesignError(f"TOML file {str(p)!r} does not exist")
+    if p.stat().st_size > FILE_BYTES_MAX:
+        raise GearDesignError(f"TOML file {str(p)!r} is larger than {FILE_BYTES_MAX} bytes")
+    try:
+        raw = tomllib.loads(p.read_bytes().decode("utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise GearDesignError(f"TOML file {str(p)!r}: {exc}") from None
+    shaft = raw.get("shaft")
+    if not isinstance(shaft, dict) or set(raw) - {"shaft"}:
+        raise GearDesignError(f"TOML file {str(p)!r} must hold one [shaft] table (and nothing else)")
+    unknown = set(shaft) - set(_FILE_KEYS)
+    if unknown:
+        raise GearDesignError(f"TOML file [shaft]: unknown key(s) {', '.join(sorted(unknown))} "
+                              f"(keys: {', '.join(_FILE_KEYS)})")
+
+    def text(items, what):
+        if not isinstance(items, list) or not all(isinstance(i, dict) for i in items):
+            raise GearDesignError(f"TOML file [[shaft.{what}]]: each must be a table of key = value")
+        for i in items:
+            for k, v in i.items():
+                if isinstance(v, str) and ("," in v or "=" in v):
+                    raise GearDesignError(f"TOML file [[shaft.{what}]] {k} = {v!r}: no ',' or '=' in a value")
+                if not isinstance(v, (str, int, float)) or isinstance(v, bool):
+                    raise GearDesignError(f"TOML file [[shaft.{what}]] {k}: a number or a name, got {v!r}")
+        return [",".join(f"{k}={v}" for k, v in i.items()) for i in items]
+
+    out = {"loads": text(shaft.get("load", []), "load"), "notches": text(shaft.get("notch", []), "notch")}
+    sec = shaft.get("sections")
+    if sec is not None:
+        if not isinstance(sec, list) or not all(isinstance(v, list) for v in sec):
+            raise GearDesignError("TOML file [shaft] sections must be a list of [length, d] or [length, d, bore]")
+        out["sections"] = ",".join("x".join(str(x) for x in v) for v in sec)
+    sup = shaft.get("supports")
+    if sup is not None:
+        if not isinstance(sup, list):
+            raise GearDesignError("TOML file [shaft] supports must be a list of positions")
+        out["supports"] = ",".join(str(x) for x in sup)
+    if "material" in shaft:
+        out["material"] = str(shaft["material"])
+    return out
+
+
 def run(args) -> int:
     if args.plot is not None:
         from ..files import check_output_path
         check_output_path(args.plot, overwrite=args.overwrite)
-    sections = _sections(args.sections)
-    supports = _numbers(args.supports, "--supports")
+    spec = _from_file(args.file) if args.file is not None else {"loads": [], "notches": []}
+    sections_text = args.sections if args.sections is not None else spec.get("sections")
+    supports_text = args.supports if args.supports is not None else spec.get("supports")
+    if sections_text is None or supports_text is None:
+        raise GearDesignError("--sections and --supports are required (or a TOML file giving them)")
+    args.material = args.material or spec.get("material") or "42CrMo4"
+    args.load = spec["loads"] + args.load
+    args.notch = spec["notches"] + args.notch
+    sections = _sections(sections_text)
+    supports = _numbers(supports_text, "--supports")
     loads = [ShaftLoad(**_pairs(t, _LOAD_KEYS, "--load")) for t in args.load]
     try:
         model = ShaftModel(sections, supports, loads, axial_support=args.axial_support)

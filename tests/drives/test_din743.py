@@ -162,3 +162,21 @@ def test_material_as_a_dict_is_checked():
         din743_safety({"kind": "quenched_tempered", "sigma_B_mpa": 700.0, "sigma_S_mpa": 490.0}, d_mm=40)
     with pytest.raises(GearDesignError, match="sigma_S_mpa must be below"):
         din743_safety({**mine, "sigma_S_mpa": 800.0}, d_mm=40)
+
+
+def test_cli_toml_file_equals_options(tmp_path):
+    """studies/shafts/pinion_shaft.toml describes the shaft of docs/shafts.md's command: the same JSON."""
+    from pathlib import Path
+
+    toml = Path(__file__).resolve().parents[2] / "studies" / "shafts" / "pinion_shaft.toml"
+    by_file = json.loads(_cli(str(toml), "--peak-factor", "2", "--json").stdout)
+    by_options = json.loads(_cli(
+        "--sections", "40x35,40x40,110x48,40x40,50x32", "--supports", "20,210",
+        "--load", "x=110,fy=-1386.55,fz=3726.28,fx=792.05,y=32.2037,torque=120,mass=1.5,name=pinion",
+        "--load", "x=280,torque=-120,name=coupling", "--notch", "x=110,kind=key",
+        "--notch", "x=80,kind=shoulder,r=1.6", "--material", "C45", "--peak-factor", "2", "--json").stdout)
+    assert by_file == by_options and by_file["ok"] is True
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[shaft]\nsections = [[40, 35]]\nsupports = [0, 40]\nspeed = 3\n')
+    r = _cli(str(bad))
+    assert r.returncode == 2 and "unknown key" in r.stderr and "speed" in r.stderr
