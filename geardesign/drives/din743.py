@@ -432,35 +432,41 @@ def din743_safety(material, notch: Notch | None = None, *, d_mm, D_mm=None, bore
     return Din743Result(S_D, S_F, float(S_min), bool(ok), msg, factors)
 
 
-def least_diameter_mm(material, notch: Notch | None = None, *, S_min=S_MIN, D_over_d=None, d_lo=5.0,
-                      d_hi=D_EFF_MAX_MM, tol_mm=1e-3, **loads) -> float:
+def least_diameter_mm(material, notch: Notch | None = None, *, S_min=S_MIN, D_over_d=None, r_over_d=None,
+                      d_lo=5.0, d_hi=D_EFF_MAX_MM, tol_mm=1e-3, **loads) -> float:
     """The least diameter d (mm) at which the section reaches S_D and S_F >= S_min (bisection over d; the
-    safety rises with d). ``D_over_d``: a shoulder's or groove's D/d kept as d varies (and r/d kept too);
-    ``loads``: the forces and moments of :func:`din743_safety`. d_eff follows d unless given.
+    safety rises with d). A shoulder or groove keeps its shape: ``D_over_d`` (D/d) and ``r_over_d`` (r/d;
+    a groove's depth follows from D/d); ``loads``: the forces and moments of :func:`din743_safety`. d_eff
+    follows the section (the larger of d and D) unless given.
 
     >>> d = least_diameter_mm("42CrMo4", M_ba=500.0, T_m=800.0)
     >>> r = din743_safety("42CrMo4", d_mm=d, M_ba=500.0, T_m=800.0)
     >>> round(min(r.S_D, r.S_F), 3)
     1.2
     """
-    notch = notch or Notch()
-    base_r = notch.r_mm
+    notch = Notch() if notch is None else notch
+    if notch.kind in ("shoulder", "groove") and (D_over_d is None or r_over_d is None):
+        raise GearDesignError(f"a {notch.kind} keeps its shape as d varies: give D_over_d and r_over_d")
+    if D_over_d is not None:
+        require_range("D_over_d", D_over_d, 1.0, 10.0, lo_open=True)
+    if r_over_d is not None:
+        require_range("r_over_d", r_over_d, 0.0, 10.0, lo_open=True)
 
     def safety(d):
         kw = dict(loads)
         nt = notch
-        if D_over_d is not None:
+        if notch.kind in ("shoulder", "groove"):
             kw["D_mm"] = d * D_over_d
-        if base_r is not None and D_over_d is not None:
-            nt = Notch(notch.kind, notch.r_mm * d / d_lo, notch.t_mm, notch.keys, notch.beta_sigma,
-                       notch.beta_tau, notch.alpha_sigma)
+            nt = Notch(notch.kind, r_over_d * d, (D_over_d - 1.0) * d / 2.0 if notch.kind == "groove" else None,
+                       notch.keys, notch.beta_sigma, notch.beta_tau, notch.alpha_sigma)
         r = din743_safety(material, nt, d_mm=d, S_min=S_min, **kw)
         return min(r.S_D, r.S_F)
 
-    if safety(d_hi) < S_min:
-        raise GearDesignError(f"no diameter up to {d_hi:g} mm reaches S_min = {S_min:g} (DIN 743 holds to "
+    top = d_hi / (D_over_d or 1.0)
+    if safety(top) < S_min:
+        raise GearDesignError(f"no diameter up to {top:g} mm reaches S_min = {S_min:g} (DIN 743 holds to "
                               f"d_eff = {D_EFF_MAX_MM:g} mm)")
-    lo, hi = d_lo, d_hi
+    lo, hi = d_lo, top
     if safety(lo) >= S_min:
         return lo
     while hi - lo > tol_mm:

@@ -180,3 +180,11 @@ def test_cli_toml_file_equals_options(tmp_path):
     bad.write_text('[shaft]\nsections = [[40, 35]]\nsupports = [0, 40]\nspeed = 3\n')
     r = _cli(str(bad))
     assert r.returncode == 2 and "unknown key" in r.stderr and "speed" in r.stderr
+
+
+def test_least_diameter_of_a_shoulder_keeps_its_shape():
+    d = least_diameter_mm("C45", Notch("shoulder", r_mm=1.0), D_over_d=1.2, r_over_d=0.05, M_ba=400.0, T_m=300.0)
+    at = din743_safety("C45", Notch("shoulder", r_mm=0.05 * d), d_mm=d, D_mm=1.2 * d, M_ba=400.0, T_m=300.0)
+    assert min(at.S_D, at.S_F) == pytest.approx(1.2, abs=1e-3)
+    with pytest.raises(GearDesignError, match="D_over_d and r_over_d"):
+        least_diameter_mm("C45", Notch("shoulder", r_mm=1.0), M_ba=400.0)
