@@ -233,7 +233,7 @@ def _solve_plane(x, right, EI, supports, xf, F, xc, C):
     th0, w0 = _integrate(M0 / EI, x)
     ths, ws = _integrate(As.T / EI, x)                                            # (S, N)
     S = supports.size
-    idx = np.array([np.flatnonzero(x == s)[0] for s in supports])
+    idx = np.searchsorted(x, supports, side="left")          # a support's left-limit node (w is continuous)
     L = x[-1]
     # unknowns: R_1..R_S, c0, c1 (w = w0 + R·ws + c0 + c1 x)
     K = np.zeros((S + 2, S + 2))
@@ -340,7 +340,7 @@ def _critical_speeds(model, shaft_mass: bool):
     lumped = np.zeros(x.size)
     for ld in model.loads:
         if ld.mass_kg > 0:
-            lumped[np.flatnonzero((x == ld.x_mm) & right)[0]] += ld.mass_kg
+            lumped[np.searchsorted(x, ld.x_mm, side="right") - 1] += ld.mass_kg   # its right-limit node
     shaft_kg = 0.0
     if shaft_mass and model.density_kg_m3 > 0:
         h = np.diff(x)
@@ -359,7 +359,7 @@ def _critical_speeds(model, shaft_mass: bool):
     # weights m·g (N with m in kg, g in m/s²), all in one direction
     F = (m * G_MM_S2 / 1000.0)[None, :]
     _, _, _, _, w = _solve_plane(x, right, EI, supports, xm, F, np.zeros(0), none)
-    cols = np.array([np.flatnonzero((x == v) & right)[0] for v in xm])
+    cols = np.searchsorted(x, xm, side="right") - 1             # the masses' (right-limit) nodes
     y = w[0][cols]
     num, den = (m * np.abs(y)).sum(), (m * y * y).sum()
     omega_r = math.sqrt(G_MM_S2 * num / den) if den > 0 else math.inf

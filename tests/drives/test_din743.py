@@ -188,3 +188,16 @@ def test_least_diameter_of_a_shoulder_keeps_its_shape():
     assert min(at.S_D, at.S_F) == pytest.approx(1.2, abs=1e-3)
     with pytest.raises(GearDesignError, match="D_over_d and r_over_d"):
         least_diameter_mm("C45", Notch("shoulder", r_mm=1.0), M_ba=400.0)
+
+
+def test_key_seat_torsion_by_hand():
+    """Alternating torsion alone (the exam cases have no torsion amplitude): S_D = τ_tWK/τ_ta with
+    β_τ = 0.56·β_σ + 0.1 (DIN 743-2 Table 1), K_τ = β_τ/K_2, τ_tWK = 0.3·σ_B/K_τ; d = d_BK = 40 mm, d_eff = 16 mm."""
+    d, T = 40.0, 400.0
+    r = din743_safety("34CrNiMo6", Notch("key"), d_mm=d, d_eff_mm=16.0, T_a=T)
+    sB = 1200.0
+    beta_t = 0.56 * 3.0 * (sB / 1000) ** 0.38 + 0.1
+    K2 = 1 - 0.2 * math.log10(d / 7.5) / math.log10(20)
+    tau_WK = 0.3 * sB / (beta_t / K2)
+    tau_a = T * 1000 / (math.pi * d ** 3 / 16)
+    assert r.S_D == pytest.approx(tau_WK / tau_a, rel=1e-12)
