@@ -36,6 +36,9 @@ _NAMES = {
     "shift_atlas": "shifts.atlas", "select_teeth": "shifts.teeth", "TeethSelection": "shifts.teeth",
     "sweep": "sensitivity.sweeps", "load_scene": "scene", "run_scene": "scene", "pair_report": "scene.html",
     "drive_report": "scene.html",
+    "ShaftModel": "drives.shaft_beam", "ShaftLoad": "drives.shaft_beam", "analyse_shaft": "drives.shaft_beam",
+    "ShaftNotch": "drives.din743", "Notch": "drives.din743", "din743_safety": "drives.din743",
+    "shaft_safety": "drives.din743", "least_shaft_scale": "drives.din743", "plot_shaft": "drives.shaft_plot",
     "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth", "plot_mesh": "profiles.drawing",
     "plot_diagrams": "profiles.drawing", "export_profiles": "profiles.mesh",
     "pair_profiles": "profiles.mesh", "ring_profile": "profiles.ring", "RingProfile": "profiles.ring",
@@ -52,9 +55,6 @@ _NAMES = {
     "mesh_forces": "gears.forces", "pair_forces": "gears.forces", "planetary_forces": "gears.forces",
     "MeshForces": "gears.forces", "check_bearing": "drives.bearing", "select_bearing": "drives.bearing",
     "chain_pull": "drives.chain.pull",
-    "ShaftModel": "drives.shaft_beam", "ShaftLoad": "drives.shaft_beam", "analyse_shaft": "drives.shaft_beam",
-    "ShaftNotch": "drives.din743", "Notch": "drives.din743", "din743_safety": "drives.din743",
-    "shaft_safety": "drives.din743", "least_shaft_scale": "drives.din743", "plot_shaft": "drives.shaft_plot",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {
