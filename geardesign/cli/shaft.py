@@ -11,7 +11,7 @@ import re
 from ..drives import din743
 from ..drives.shaft_beam import ShaftLoad, ShaftModel, analyse_shaft
 from ..errors import GearDesignError
-from .output import add_json_flag, frame_records, print_frame, print_json, print_wrapped
+from .output import add_json_flag, print_frame, print_json, print_wrapped
 
 _LOAD_KEYS = {"x": "x_mm", "fy": "fy_n", "fz": "fz_n", "fx": "fx_n", "y": "y_mm", "z": "z_mm", "torque": "torque_nm",
               "my": "my_nm", "mz": "mz_nm", "mass": "mass_kg", "name": "name"}

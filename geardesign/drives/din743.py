@@ -411,7 +411,9 @@ def din743_safety(material, notch: Notch | None = None, *, d_mm, D_mm=None, bore
     ADK = {k: amplitude_strength(WK[k], FK[k], psi[k], mv[k], a[k], load_case) for k in loadings}
 
     def _safety(num, den):
-        q = lambda k: 0.0 if num[k] == 0 else (num[k] / den[k] if den[k] > 0 else math.inf)
+        def q(k):     # a stress over its strength; no stress: no share, whatever the strength
+            return 0.0 if num[k] == 0 else (num[k] / den[k] if den[k] > 0 else math.inf)
+
         s = math.hypot(q("tension") + q("bending"), q("torsion"))
         return math.inf if s == 0 else 1.0 / s
 

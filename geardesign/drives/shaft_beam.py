@@ -33,7 +33,7 @@ import pandas as pd
 
 from ..errors import GearDesignError
 from ..results import Result
-from ..validate import one_number, require_count, require_finite, require_positive, require_range
+from ..validate import one_number, require_count, require_finite, require_range
 
 __all__ = ["ShaftLoad", "ShaftModel", "ShaftAnalysis", "analyse_shaft", "second_moment_mm4", "E_STEEL_MPA",
            "DENSITY_STEEL_KG_M3", "G_MM_S2"]

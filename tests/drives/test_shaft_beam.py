@@ -90,7 +90,7 @@ def test_stepped_shaft_against_unit_load_integration():
     for xq in (80.0, 180.0, 130.0):
         unit = [(xq, 1.0)]
         # virtual work: δ(xq) = ∫ M(x) m(x) / EI dx — then w(xq) on the support line
-        integral = sum(quad(lambda x: moment(x, applied) * moment(x, unit) / EI(x), lo, hi, epsabs=0,
+        integral = sum(quad(lambda x, unit=unit: moment(x, applied) * moment(x, unit) / EI(x), lo, hi, epsabs=0,
                             epsrel=1e-12, limit=200)[0] for lo, hi in zip(brk[:-1], brk[1:]))
         got = float(an.deflection_at(xq)["wy_mm"].iloc[0])
         assert got == pytest.approx(integral, rel=1e-9)
