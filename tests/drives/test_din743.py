@@ -1,9 +1,6 @@
 """DIN 743 safety: the exam cases with printed safeties (tests/data/din743_exam_cases.md), the factor formulas
-against hand arithmetic, a thicker shaft never less safe (hypothesis), the least diameter, the CLI."""
-import json
+against hand arithmetic, a thicker shaft never less safe (hypothesis), the least diameter (the command: tests/cli/test_shaft.py)."""
 import math
-import subprocess
-import sys
 
 import pytest
 from hypothesis import given, settings, strategies as st
@@ -99,62 +96,6 @@ def test_bad_inputs():
         din743_safety("C45", Notch("shoulder", r_mm=1.0), d_mm=40.0, D_mm=40.5)
 
 
-def _cli(*args):
-    return subprocess.run([sys.executable, "-m", "geardesign", "shaft", *args], capture_output=True, text=True)
-
-
-BASE = ["--sections", "40x35,40x40,120x45,40x40,40x35", "--supports", "20,260",
-        "--load", "x=140,fy=-3000,fz=1100,fx=800,y=60,torque=120", "--load", "x=280,fz=-1500,torque=-120"]
-
-
-def test_cli_verdict_json_and_errors(tmp_path):
-    ok = _cli(*BASE, "--notch", "x=140,kind=key")
-    assert ok.returncode == 0 and ok.stdout.startswith("OK:")
-    fails = _cli(*BASE, "--notch", "x=140,kind=key", "--s-min", "20")
-    assert fails.returncode == 1 and fails.stdout.startswith("FAILS:")
-    js = json.loads(_cli(*BASE, "--notch", "x=140,kind=key", "--json").stdout)
-    assert js["ok"] is True and js["safety"]["table"][0]["notch"] == "key"
-    bad = _cli("--sections", "40x35", "--supports", "0")
-    assert bad.returncode == 2 and "--supports" in bad.stderr and "Traceback" not in bad.stderr
-    bad = _cli(*BASE, "--notch", "x=140,kind=spline")
-    assert bad.returncode == 2 and "--notch" in bad.stderr
-    png = tmp_path / "s.png"
-    assert _cli(*BASE, "--plot", str(png)).returncode == 0 and png.stat().st_size > 1000
-    again = _cli(*BASE, "--plot", str(png))
-    assert again.returncode == 2 and "--overwrite" in again.stderr
-
-
-def test_notch_between_nodes_takes_the_exact_moment():
-    """Simply supported, F at a: M(x) = F (l − a) x / l left of the load (Shigley Table A-9-6); the key seat at
-    an x that is no node of the diagrams gets that moment, and the stress σ_ba = 32 M/(π d³)."""
-    F, l, a, d = 5000.0, 300.0, 200.0, 40.0
-    an = analyse_shaft(ShaftModel([(l, d)], [0.0, l], [ShaftLoad(a, fy_n=-F)]), points=10)
-    x = 123.456
-    s = shaft_safety(an, [ShaftNotch(x, Notch("key"))], "C45")
-    assert s.table["M_nm"].iloc[0] == pytest.approx(F * (l - a) * x / l / 1000, rel=1e-12)
-
-
-def test_hollow_shaft_stress_and_deflection():
-    """A bore lowers I to π(d⁴ − d_i⁴)/64 (deflection F L³/(48 E I), Shigley Table A-9-5) and raises the stress."""
-    F, L, d, di = 2000.0, 400.0, 50.0, 30.0
-    an = analyse_shaft(ShaftModel([(L, d, di)], [0.0, L], [ShaftLoad(L / 2, fz_n=F)]))
-    I = math.pi * (d ** 4 - di ** 4) / 64
-    assert an.max_deflection_mm == pytest.approx(F * L ** 3 / (48 * 210000.0 * I), rel=1e-9)
-    solid = din743_safety("C45", d_mm=d, M_ba=100.0)
-    hollow = din743_safety("C45", d_mm=d, bore_mm=di, M_ba=100.0)
-    assert hollow.S_D < solid.S_D
-
-
-@pytest.mark.parametrize("extra, option", [(["--rz", "0"], "--rz"), (["--peak-factor", "0.5"], "--peak-factor"),
-                                           (["--s-min", "nan"], "--s-min"), (["--axial-support", "5"], "--axial-support"),
-                                           (["--material", "foo"], "--material"),
-                                           (["--notch", "x=150,kind=shoulder,r=1"], "--notch"),
-                                           (["--load", "x=10,torque=5"], "--load"), (["--sections", "40x0"], "--sections")])
-def test_cli_errors_name_the_option(extra, option):
-    r = _cli(*BASE, "--notch", "x=140,kind=key", *extra)
-    assert r.returncode == 2 and r.stderr.count("\n") == 1 and option in r.stderr and "Traceback" not in r.stderr
-
-
 def test_material_as_a_dict_is_checked():
     mine = {"kind": "quenched_tempered", "sigma_B_mpa": 700.0, "sigma_S_mpa": 490.0, "d_B_mm": 16.0}
     assert din743_safety(mine, d_mm=40, M_ba=100).S_D == din743_safety("C45", d_mm=40, M_ba=100).S_D
@@ -162,24 +103,6 @@ def test_material_as_a_dict_is_checked():
         din743_safety({"kind": "quenched_tempered", "sigma_B_mpa": 700.0, "sigma_S_mpa": 490.0}, d_mm=40)
     with pytest.raises(GearDesignError, match="sigma_S_mpa must be below"):
         din743_safety({**mine, "sigma_S_mpa": 800.0}, d_mm=40)
-
-
-def test_cli_toml_file_equals_options(tmp_path):
-    """studies/shafts/pinion_shaft.toml describes the shaft of docs/shafts.md's command: the same JSON."""
-    from pathlib import Path
-
-    toml = Path(__file__).resolve().parents[2] / "studies" / "shafts" / "pinion_shaft.toml"
-    by_file = json.loads(_cli(str(toml), "--peak-factor", "2", "--json").stdout)
-    by_options = json.loads(_cli(
-        "--sections", "40x35,40x40,110x48,40x40,50x32", "--supports", "20,210",
-        "--load", "x=110,fy=-1386.55,fz=3726.28,fx=792.05,y=32.2037,torque=120,mass=1.5,name=pinion",
-        "--load", "x=280,torque=-120,name=coupling", "--notch", "x=110,kind=key",
-        "--notch", "x=80,kind=shoulder,r=1.6", "--material", "C45", "--peak-factor", "2", "--json").stdout)
-    assert by_file == by_options and by_file["ok"] is True
-    bad = tmp_path / "bad.toml"
-    bad.write_text('[shaft]\nsections = [[40, 35]]\nsupports = [0, 40]\nspeed = 3\n')
-    r = _cli(str(bad))
-    assert r.returncode == 2 and "unknown key" in r.stderr and "speed" in r.stderr
 
 
 def test_least_diameter_of_a_shoulder_keeps_its_shape():
@@ -201,3 +124,24 @@ def test_key_seat_torsion_by_hand():
     tau_WK = 0.3 * sB / (beta_t / K2)
     tau_a = T * 1000 / (math.pi * d ** 3 / 16)
     assert r.S_D == pytest.approx(tau_WK / tau_a, rel=1e-12)
+
+
+def test_notch_between_nodes_takes_the_exact_moment():
+    """Simply supported, F at a: M(x) = F (l − a) x / l left of the load (Shigley Table A-9-6); the key seat at
+    an x that is no node of the diagrams gets that moment, and the stress σ_ba = 32 M/(π d³)."""
+    F, span, a, d = 5000.0, 300.0, 200.0, 40.0
+    an = analyse_shaft(ShaftModel([(span, d)], [0.0, span], [ShaftLoad(a, fy_n=-F)]), points=10)
+    x = 123.456
+    s = shaft_safety(an, [ShaftNotch(x, Notch("key"))], "C45")
+    assert s.table["M_nm"].iloc[0] == pytest.approx(F * (span - a) * x / span / 1000, rel=1e-12)
+
+
+def test_hollow_shaft_stress_and_deflection():
+    """A bore lowers I to π(d⁴ − d_i⁴)/64 (deflection F L³/(48 E I), Shigley Table A-9-5) and raises the stress."""
+    F, L, d, di = 2000.0, 400.0, 50.0, 30.0
+    an = analyse_shaft(ShaftModel([(L, d, di)], [0.0, L], [ShaftLoad(L / 2, fz_n=F)]))
+    I_mm4 = math.pi * (d ** 4 - di ** 4) / 64
+    assert an.max_deflection_mm == pytest.approx(F * L ** 3 / (48 * 210000.0 * I_mm4), rel=1e-9)
+    solid = din743_safety("C45", d_mm=d, M_ba=100.0)
+    hollow = din743_safety("C45", d_mm=d, bore_mm=di, M_ba=100.0)
+    assert hollow.S_D < solid.S_D
