@@ -145,3 +145,31 @@ def test_hollow_shaft_stress_and_deflection():
     solid = din743_safety("C45", d_mm=d, M_ba=100.0)
     hollow = din743_safety("C45", d_mm=d, bore_mm=di, M_ba=100.0)
     assert hollow.S_D < solid.S_D
+
+
+def test_press_fit_and_given_notch_by_hand():
+    """Press fit at d = d_BK = 40 mm (DIN 743-2 Table 1: β_σ = 2.7·(σ_B/1000)^0.43, K_F = 1) and a notch whose β
+    the user gives: S_D = σ_bWK/σ_ba with K = β/K_2 (+ 1/K_F − 1 for the given notch, R_z = 1: K_F = 1)."""
+    d, M = 40.0, 250.0
+    K2 = 1 - 0.2 * math.log10(d / 7.5) / math.log10(20)
+    sigma_ba = M * 1000 / (math.pi * d ** 3 / 32)
+    r = din743_safety("42CrMo4", Notch("press_fit"), d_mm=d, d_eff_mm=16.0, M_ba=M)
+    beta = 2.7 * 1.1 ** 0.43
+    assert r.S_D == pytest.approx(0.5 * 1100 / (beta / K2) / sigma_ba, rel=1e-12)
+    g = din743_safety("42CrMo4", Notch("given", beta_sigma=2.2, beta_tau=1.6), d_mm=d, d_eff_mm=16.0, Rz_um=1.0,
+                      M_ba=M)
+    assert g.S_D == pytest.approx(0.5 * 1100 / (2.2 / K2) / sigma_ba, rel=1e-12)
+
+
+def test_round_groove_by_hand():
+    """Round groove (DIN 743-2 Table 2, bending: A = 0.2, B = 2.75, C = 0; G' = 2(1 + φ)/r with φ = 1/(4√(t/r) + 2)
+    for d/D > 0.67; n = 1 + √G'·10^−(0.33 + σ_S(d)/712)): β = α/n."""
+    d, D, r = 45.0, 50.0, 1.0
+    t = (D - d) / 2
+    alpha = 1 + 1 / math.sqrt(0.2 * r / t + 2 * 2.75 * r / d * (1 + 2 * r / d) ** 2)
+    assert din743.stress_concentration("groove", d, D, r, "bending") == pytest.approx(alpha, rel=1e-14)
+    phi = 1 / (4 * math.sqrt(t / r) + 2)
+    n = 1 + math.sqrt(2 * (1 + phi) / r) * 10 ** -(0.33 + 490.0 / 712)     # C45, d_eff = 16: σ_S(d) = 490
+    res = din743_safety("C45", Notch("groove", r_mm=r, t_mm=t), d_mm=d, d_eff_mm=16.0, M_ba=100.0)
+    beta_b = res.factors.set_index("symbol").loc["beta", "bending"]
+    assert beta_b == pytest.approx(alpha / n, rel=1e-12)
