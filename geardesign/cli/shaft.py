@@ -212,10 +212,13 @@ def run(args) -> int:
     if notches:
         try:
             safety = din743.shaft_safety(analysis, notches, args.material, **kw)
-            if args.least:
-                scale = din743.least_shaft_scale(model, notches, args.material, **kw)
         except GearDesignError as exc:
             raise _with_option(exc, "--notch") from None
+        if args.least:
+            try:
+                scale = din743.least_shaft_scale(model, notches, args.material, **kw)
+            except GearDesignError as exc:
+                raise _with_option(exc, "--least") from None
     ok = safety is None or safety.ok
     if args.plot is not None:
         from ..drives.shaft_plot import plot_shaft

@@ -58,3 +58,8 @@ def test_cli_toml_file_equals_options(tmp_path):
     bad.write_text('[shaft]\nsections = [[40, 35]]\nsupports = [0, 40]\nspeed = 3\n')
     r = _cli(str(bad))
     assert r.returncode == 2 and "unknown key" in r.stderr and "speed" in r.stderr
+
+
+def test_least_beyond_din743s_range_is_bad_input():
+    r = _cli("--sections", "100x10", "--supports", "0,100", "--load", "x=50,fy=-1e9", "--notch", "x=50", "--least")
+    assert r.returncode == 2 and "no scale up to" in r.stderr and "--s-min" in r.stderr
