@@ -39,6 +39,9 @@ _NAMES = {
     "shift_atlas": "shifts.atlas", "select_teeth": "shifts.teeth", "TeethSelection": "shifts.teeth",
     "sweep": "sensitivity.sweeps", "load_scene": "scene", "run_scene": "scene", "pair_report": "scene.html",
     "drive_report": "scene.html",
+    "ShaftModel": "drives.shaft_beam", "ShaftLoad": "drives.shaft_beam", "analyse_shaft": "drives.shaft_beam",
+    "ShaftNotch": "drives.din743", "Notch": "drives.din743", "din743_safety": "drives.din743",
+    "shaft_safety": "drives.din743", "least_shaft_scale": "drives.din743", "plot_shaft": "drives.shaft_plot",
     "tooth_profile": "profiles.tooth", "ToothProfile": "profiles.tooth", "plot_mesh": "profiles.drawing",
     "plot_diagrams": "profiles.drawing", "export_profiles": "profiles.mesh",
     "pair_profiles": "profiles.mesh", "ring_profile": "profiles.ring", "RingProfile": "profiles.ring",
@@ -65,6 +68,7 @@ _MODULES = {
     "studies": "sensitivity.sweeps",    # the module's name before it was sweeps.py; kept for old scripts
     "gears": "gears", "shifts": "shifts", "drives": "drives", "sensitivity": "sensitivity", "profiles": "profiles",
     "motor": "drives.motor", "bearing": "drives.bearing", "forces": "gears.forces",
+    "din743": "drives.din743", "shaft_beam": "drives.shaft_beam",
 }
 
 __all__ = sorted(_NAMES) + sorted(_MODULES)

@@ -52,7 +52,16 @@ def _examples():
         "ChainPull": gd.chain_pull(380, 31.75, 13, 120, 3.8, 1270.0),
         "BearingCheck": gd.check_bearing("6208", 3200, 1800, 650),
         "BearingSelection": gd.select_bearing(["62", "63"], 40, 3200, 1800, 650, life_h=20000),
+        **_shaft_examples(),
     }
+
+
+def _shaft_examples():
+    model = gd.ShaftModel([(40, 35), (160, 45), (40, 35)], [20, 220],
+                          [gd.ShaftLoad(120, fy_n=-3000, torque_nm=100), gd.ShaftLoad(240, fz_n=500, torque_nm=-100)])
+    a = gd.analyse_shaft(model)
+    return {"ShaftAnalysis": a, "ShaftSafety": gd.shaft_safety(a, [gd.ShaftNotch(120, gd.Notch("key"))], "C45"),
+            "Din743Result": gd.din743_safety("C45", gd.Notch("key"), d_mm=45, M_ba=300, T_m=100)}
 
 
 def _scene_path():
@@ -96,7 +105,8 @@ def test_scene_report_repr(tmp_path):
     "Geometry", "Geometry (arrays)", "checks table", "ToothProfile", "RingProfile", "pair_profiles", "ShiftResult",
     "ShiftResult (failed)", "Region", "TeethSelection", "PlanetarySet", "PlanetaryShiftResult",
     "PlanetaryTeethSelection", "ChainDesign", "KeySelection", "KeyCapacity", "MotorSelection", "Drive",
-    "DriveAnalysis", "GearStage", "MeshForces", "ChainPull", "BearingCheck", "BearingSelection"])
+    "DriveAnalysis", "GearStage", "MeshForces", "ChainPull", "BearingCheck", "BearingSelection", "ShaftAnalysis",
+    "ShaftSafety", "Din743Result"])
 def test_repr_is_short_and_never_an_array_dump(name, examples):
     text = repr(examples[name])
     lines = text.splitlines()
@@ -106,7 +116,8 @@ def test_repr_is_short_and_never_an_array_dump(name, examples):
 
 
 @pytest.mark.parametrize("name", ["Geometry", "ShiftResult", "TeethSelection", "ChainDesign", "KeySelection",
-                                  "DriveAnalysis", "PlanetaryShiftResult", "checks table", "BearingSelection"])
+                                  "DriveAnalysis", "PlanetaryShiftResult", "checks table", "BearingSelection",
+                                  "ShaftAnalysis", "ShaftSafety", "Din743Result"])
 def test_tabular_results_have_an_html_view(name, examples):
     html = examples[name]._repr_html_()
     assert "<table" in html and "array([" not in html

@@ -166,6 +166,10 @@ SCHEMAS: dict[str, Schema] = {
         (_f("f0_fa_c0r"), _f("e"), _f("X"), _f("Y")),
         increasing=("f0_fa_c0r",), trend=(("e", "nondecreasing"), ("Y", "nonincreasing")),
         description="e, X and Y of the equivalent dynamic load P = X Fr + Y Fa against f0 Fa/C0r (ISO 281)"),
+    "shaft_materials": Schema(
+        "shaft_materials",
+        (Column("material", "str"), Column("kind", "str"), _f("sigma_B_mpa"), _f("sigma_S_mpa"), _f("d_B_mm")),
+        description="shaft steels (DIN 743-3): tensile strength and yield point at the reference diameter d_B"),
 }
 
 # Bundled tables: name -> (file, schema kind, row filter on the "series" column or None)
@@ -193,6 +197,7 @@ BUNDLED: dict[str, tuple[str, str, str | None]] = {
     "bearings_angular_contact": ("bearings_angular_contact.csv", "bearings", None),
     "bearings_cylindrical_roller": ("bearings_cylindrical_roller.csv", "bearings", None),
     "bearing_factors_deep_groove": ("bearing_factors_deep_groove.csv", "bearing_factors", None),
+    "shaft_materials_din743": ("shaft_materials_din743.csv", "shaft_materials", None),
 }
 CHAIN_CATALOGS = ("gost13568", "iso606", "iso606a", "iso606b", "ansi_b29")
 

@@ -25,7 +25,11 @@ KEY = ["key", "--d", "60", "--length", "32", "--crush", "300", "--shear", "120"]
 LOADED = ("[drive]\npower_kw = 7.5\nn_in_rpm = 1450\n[[drive.stage]]\nkind = 'given'\nratio = 2\nefficiency = 0.95\n"
           "[[drive.stage]]\nkind = 'gear'\nmodule = 4\nz1 = 20\nz2 = 60\nface_width_mm = 40\n")
 
+SHAFT = ["shaft", "--sections", "40x35,40x40,120x45,40x40,40x35", "--supports", "20,260", "--load",
+         "x=140,fy=-3000,fz=1100,fx=800,y=60,torque=120", "--load", "x=280,fz=-1500,torque=-120", "--notch", "x=140,kind=key"]
 CASES = [
+    (SHAFT, 0, "OK: least safety"),
+    (SHAFT + ["--s-min", "9"], 1, "FAILS: din743_safety"),
     (["bearing", "--designation", "6208", "--fr", "3200", "--fa", "1800", "--speed", "650"], 0, "OK"),
     (["bearing", "--designation", "6208", "--fr", "3200", "--fa", "1800", "--speed", "650", "--life-h", "100000"], 1,
      "FAILS: life"),
