@@ -281,16 +281,24 @@ class _SameBlas:
     def __call__(self, chunk):
         from threadpoolctl import threadpool_limits
 
+        _load_blas()
         threadpool_limits(limits=self.limits)
         return self.fn(chunk)
 
 
+def _load_blas() -> None:
+    """Load scipy's BLAS now (SLSQP runs on it): a library loaded after the thread counts are read or set keeps its
+    own default, and SLSQP's last bits then differed between the caller and a worker (a planetary search)."""
+    import scipy.linalg  # noqa: F401
+
+
 def _blas_threads() -> dict:
-    """{library prefix: threads} of the BLAS libraries loaded in this process."""
+    """{library prefix: threads} of the BLAS libraries loaded in this process (scipy's loaded first)."""
     try:
         from threadpoolctl import threadpool_info
     except ImportError:
         raise GearDesignError(f"client= / workers= need threadpoolctl (part of the Dask extra): {_INSTALL}") from None
+    _load_blas()
     return {lib["prefix"]: lib["num_threads"] for lib in threadpool_info()}
 
 

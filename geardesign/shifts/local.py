@@ -88,7 +88,7 @@ def slsqp(prob: Problem, v0, bounds, ftol=1e-15, maxiter=200, pieces_only=False,
             return top
         return np.vstack([top, np.hstack([GM, np.zeros((GM.shape[0], 1))])])
 
-    from scipy.optimize import minimize   # here: ~0.3 s to import; the CLI's help and pair never solve
+    from scipy.optimize import minimize   # here: scipy.optimize costs ~0.3 s to import; the CLI's help and pair never solve
 
     lo, hi = window_box(prob, bounds) if box is None else box
     res = minimize(lambda w: -w[nv], w0, jac=lambda w: np.append(np.zeros(nv), -1.0),
