@@ -254,6 +254,7 @@ def _scale_free_checks(checks_key: tuple, helical: bool) -> bool:
 
 CONTACT_SCREEN = 0.1   # a module whose contact margin at the even split is below −0.1 is not solved
 STANDARD_TRIES = 1     # modules per pair and round of the standard-housing sizing
+SCREEN_WINDOW = 0.4    # modules whose contact margin is estimated below −0.4 are not screened
 
 
 _STANDARD_CACHE: dict = {}
@@ -476,18 +477,40 @@ class GearKind(ToothedKind):
 
     @staticmethod
     def _contact_screen(stage, pairs, cands, flow) -> list:
-        """Per pair, which of its modules pass the contact screen (one strength call for all)."""
+        """Per pair, which of its modules pass the contact screen. Two strength calls for all pairs: each pair's
+        middle module first, whose S_H scales the others' by (m/m_ref)^1.5 (σ_H ∝ √(F_t/(b·d1)) with b and d1 ∝ m
+        at the widest width: the estimate only picks the modules worth screening, :data:`SCREEN_WINDOW` wide), then
+        the screen itself on those."""
         sizes = [c[0].size for c in cands]
         if not sum(sizes):
             return [np.zeros(0, dtype=bool) for _ in pairs]
-        M = np.concatenate([c[0] for c in cands])
-        B = np.concatenate([c[3] for c in cands])
-        X = np.concatenate([c[4] for c in cands]) / 2
-        Z1 = np.concatenate([np.full(n, z1) for n, (z1, _) in zip(sizes, pairs)])
-        Z2 = np.concatenate([np.full(n, z2) for n, (_, z2) in zip(sizes, pairs)])
+        ref = [n // 2 for n in sizes]
+        have = [i for i, n in enumerate(sizes) if n]
+        pick = lambda col, f=lambda v: v: np.array([f(cands[i][col][ref[i]]) for i in have], dtype=float)  # noqa: E731
+        s_ref = 1.0 + strength_margins(stage, pick(0), pick(3), np.array([pairs[i][0] for i in have]),
+                                       np.array([pairs[i][1] for i in have]), pick(4, lambda v: v / 2),
+                                       pick(4, lambda v: v / 2), flow.torque_in_nm, flow.n_in_rpm,
+                                       root=False)["contact_strength"]
+        worth = [np.zeros(n, dtype=bool) for n in sizes]
+        for i, s in zip(have, s_ref):
+            ms = cands[i][0]
+            est = s * (ms / ms[ref[i]]) ** 1.5 - 1.0
+            worth[i] = (est >= -SCREEN_WINDOW) if np.isfinite(s) else np.ones(ms.size, dtype=bool)
+        at = [np.flatnonzero(w) for w in worth]
+        n_at = [a.size for a in at]
+        out = [np.zeros(n, dtype=bool) for n in sizes]
+        if not sum(n_at):
+            return out
+        M = np.concatenate([cands[i][0][a] for i, a in enumerate(at)])
+        B = np.concatenate([cands[i][3][a] for i, a in enumerate(at)])
+        X = np.concatenate([cands[i][4][a] for i, a in enumerate(at)]) / 2
+        Z1 = np.concatenate([np.full(a.size, pairs[i][0]) for i, a in enumerate(at)])
+        Z2 = np.concatenate([np.full(a.size, pairs[i][1]) for i, a in enumerate(at)])
         contact = strength_margins(stage, M, B, Z1, Z2, X, X, flow.torque_in_nm, flow.n_in_rpm,
                                    root=False)["contact_strength"]
-        return np.split(contact >= -CONTACT_SCREEN, np.cumsum(sizes)[:-1])
+        for i, (a, ok) in enumerate(zip(at, np.split(contact >= -CONTACT_SCREEN, np.cumsum(n_at)[:-1]))):
+            out[i][a] = ok
+        return out
 
     @classmethod
     def _unsized(cls, ref: dict, m: float, b: float, strength: dict) -> dict:
