@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 from ..errors import GearDesignError
 from ..results import compact_repr
-from .backlash import GOST1643_TYPES, allowances_for_backlash, gost1643_jn_min
+from .backlash import GOST1643_TYPES, _pair_of, allowances_for_backlash, gost1643_jn_min
 from .measurement_formulas import generating_shift
 
 __all__ = ["ShopAllowances", "shop_allowances", "manufactured_margins", "MANUFACTURED_CHECKS",
@@ -96,25 +96,17 @@ def shop_allowances(pair, mating_type: str = DEFAULT_MATING_TYPE, center_distanc
     if center_distance_allowance_mm is None:
         f = _it8_half_um(a_w) / 1000.0
         ai, ae, fa_src = -f, f, "±IT8/2 (ISO 286-1 js8, our assumption)"
-    else:
-        try:
-            ai, ae = (float(v) for v in center_distance_allowance_mm)
-        except (TypeError, ValueError):
-            raise GearDesignError(f"center_distance_allowance_mm must be (A_ai, A_ae) in mm, got "
-                                  f"{center_distance_allowance_mm!r}") from None
+    else:       # one number f: ±|f| (as pair_backlash reads it)
+        ai, ae = _pair_of("center_distance_allowance_mm", center_distance_allowance_mm)
+        if not isinstance(center_distance_allowance_mm, (tuple, list)):
+            ai, ae = -abs(ai), abs(ai)
         fa_src = "given"
     jn = float(gost1643_jn_min(mating_type, a_w))
     up = allowances_for_backlash(pair, jn, (ai, ae))
     if thickness_tolerance_mm is None:
         t1, t2, t_src = abs(up["a_sne1"]), abs(up["a_sne2"]), "T_sn = |A_sne| (our assumption)"
     else:
-        try:
-            t1, t2 = (float(v) for v in thickness_tolerance_mm)
-        except (TypeError, ValueError):
-            raise GearDesignError(f"thickness_tolerance_mm must be (T_sn1, T_sn2) in mm, got "
-                                  f"{thickness_tolerance_mm!r}") from None
-        if not (t1 >= 0 and t2 >= 0):
-            raise GearDesignError(f"thickness_tolerance_mm must be >= 0 mm, got {thickness_tolerance_mm!r}")
+        t1, t2 = _pair_of("thickness_tolerance_mm", thickness_tolerance_mm, 0.0, 1e4)
         t_src = "given"
     return ShopAllowances(a_ai=ai, a_ae=ae, a_sne1=up["a_sne1"], a_sne2=up["a_sne2"], a_sni1=up["a_sne1"] - t1,
                           a_sni2=up["a_sne2"] - t2, mating_type=mating_type, jn_min_mm=jn,

@@ -63,3 +63,14 @@ def test_shop_allowances_follow_gost1643_and_leave_its_least_backlash():
     assert a.a_sni1 == pytest.approx(2 * a.a_sne1) and a.a_sne1 < 0
     with pytest.raises(GearDesignError, match="mating_type"):
         shop_allowances(pair, "Z")
+
+
+def test_given_allowances_are_taken_and_bad_ones_refused_by_name():
+    pair = gd.GearPair(3, 20, 61, 0.3, 0.2)
+    a = shop_allowances(pair, center_distance_allowance_mm=0.03, thickness_tolerance_mm=(0.05, 0.06))
+    assert (a.a_ai, a.a_ae) == (-0.03, 0.03)                      # one number f: ±f, as pair_backlash reads it
+    assert a.a_sne1 - a.a_sni1 == pytest.approx(0.05, abs=1e-15) and a.a_sne2 - a.a_sni2 == pytest.approx(0.06, abs=1e-15)
+    with pytest.raises(GearDesignError, match="thickness_tolerance_mm must be in"):
+        shop_allowances(pair, thickness_tolerance_mm=(-1, 0))
+    with pytest.raises(GearDesignError, match="center_distance_allowance_mm"):
+        shop_allowances(pair, center_distance_allowance_mm="wide")
