@@ -36,7 +36,7 @@ from ...shifts.optimize import optimize_shifts
 from ..limits import LOOK_AHEAD, MARGIN_AHEAD, MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
 from .base import ToothedKind
-from .gear_strength import _widths, strength_margins, strength_sizes, strength_sizes_many, widest_width
+from .gear_strength import _widths, safety_limits, strength_margins, strength_sizes, strength_sizes_many, widest_width
 from ...gears.center_distance import x_sum_from_center_distance
 
 __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution", "margin_solutions", "clear_shift_cache"]
@@ -87,11 +87,16 @@ def clear_shift_cache() -> None:
 def _pair_key(stage: GearStage, z1: int, z2: int, objective: str) -> tuple:
     """What a tooth pair's shift solution depends on: (m, z1, z2, checks, β, b, shift objective, a_w of the
     housing or None, the shift window or None, the mating type of the manufactured state or None)."""
-    a_w = housing_center_distance(stage, z1, z2)
+    return _solution_key(stage, stage.m, z1, z2, housing_center_distance(stage, z1, z2), objective,
+                         stage.face_width_mm)
+
+
+def _solution_key(stage: GearStage, m, z1: int, z2: int, a_w, objective: str, face_width_mm) -> tuple:
+    """:func:`_pair_key` at module m and housing a_w (a sized stage's candidates, without building each stage)."""
     if a_w is not None and objective in ("max_x_sum", "min_specific_pressure"):
         objective = "balanced_sliding"     # a housing fixes the x-sum: the objective splits it (optimize_shifts)
-    return (stage.m, int(z1), int(z2), stage.checks_key(), stage.beta_deg, stage.face_width_mm, objective, a_w,
-            stage.bounds, stage.fit)
+    return (m, int(z1), int(z2), stage.checks_key(), stage.beta_deg, face_width_mm, objective, a_w, stage.bounds,
+            stage.fit)
 
 
 def housing_center_distance(stage: GearStage, z1: int, z2: int):
@@ -280,16 +285,6 @@ def _standard_modules(stage: GearStage, z1: int, z2: int) -> tuple:
     return hit
 
 
-def _housing_key(stage: GearStage, m: float, z1: int, z2: int, a_w: float, objective: str, b_ref) -> tuple:
-    """The solution key of a sized stage's pair at module m on the standard a_w (as :func:`_pair_key` builds it
-    for the stage at that module and housing, without building the stage)."""
-    obj = _shift_objective(stage, objective)
-    if obj in ("max_x_sum", "min_specific_pressure"):
-        obj = "balanced_sliding"
-    return (float(m), int(z1), int(z2), stage.checks_key(), stage.beta_deg, b_ref, obj, float(a_w), stage.bounds,
-            stage.fit)
-
-
 def _strength_first_fits(stage, pairs, batch, flow):
     """(pair index, m, solution, b, {check: margin}) of each batch item's first width holding every strength
     check (else its closest), all items' widths in one strength call."""
@@ -445,7 +440,8 @@ class GearKind(ToothedKind):
                 while out[i] is None and todo[i] and took < STANDARD_TRIES:
                     k = todo[i].pop(0)
                     m, a_w, b_ref = cands[i][0][k], cands[i][1][k], cands[i][2][k]
-                    sol = shift_solution(_housing_key(stage, m, z1, z2, a_w, objective, b_ref))
+                    sol = shift_solution(_solution_key(stage, float(m), z1, z2, float(a_w), _shift_objective(stage, objective),
+                                                      b_ref))
                     if "x1" in sol and sol["feasible"]:
                         batch.append((i, float(m), sol))
                         took += 1
@@ -486,10 +482,12 @@ class GearKind(ToothedKind):
             return [np.zeros(0, dtype=bool) for _ in pairs]
         ref = [n // 2 for n in sizes]
         have = [i for i, n in enumerate(sizes) if n]
-        pick = lambda col, f=lambda v: v: np.array([f(cands[i][col][ref[i]]) for i in have], dtype=float)  # noqa: E731
+        def pick(col, scale=1.0):      # each pair's value of a candidate column at its middle module
+            return np.array([cands[i][col][ref[i]] * scale for i in have], dtype=float)
+
         s_ref = 1.0 + strength_margins(stage, pick(0), pick(3), np.array([pairs[i][0] for i in have]),
-                                       np.array([pairs[i][1] for i in have]), pick(4, lambda v: v / 2),
-                                       pick(4, lambda v: v / 2), flow.torque_in_nm, flow.n_in_rpm,
+                                       np.array([pairs[i][1] for i in have]), pick(4, 0.5), pick(4, 0.5),
+                                       flow.torque_in_nm, flow.n_in_rpm,
                                        root=False)["contact_strength"]
         worth = [np.zeros(n, dtype=bool) for n in sizes]
         for i, s in zip(have, s_ref):
@@ -705,9 +703,8 @@ class GearKind(ToothedKind):
     def _load_context(st, flow) -> dict:
         """The load case of the stage's checks at ``flow``, as make_checks takes it (the single route)."""
         opts = dict(st.strength or {})
-        limits = {k: opts[k] for k in ("S_Hmin", "S_Fmin") if k in opts}    # the checks' limits and the chain's
         return dict(load=st.load(flow.torque_in_nm, flow.n_in_rpm), material=stage_material(st.material),
-                    face_width_mm=st.width_mm, strength=opts or None, **limits)
+                    face_width_mm=st.width_mm, strength=opts or None, **safety_limits(opts))
 
     @staticmethod
     def _strength_result(st, pair, load: dict):

@@ -37,7 +37,7 @@ import numpy as np
 
 from ..stages import stage_material
 
-__all__ = ["STRENGTH_CHECKS", "load_checks", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
+__all__ = ["STRENGTH_CHECKS", "load_checks", "safety_limits", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
            "strength_sizes", "strength_sizes_many", "widest_width"]
 
 STRENGTH_CHECKS = ("contact_strength", "root_strength1", "root_strength2")
@@ -74,6 +74,12 @@ def _strength_options(stage) -> tuple:
                         for k, v in (stage.strength or {}).items()))
 
 
+def safety_limits(options: dict) -> dict:
+    """The S_Hmin, S_Fmin among a stage's strength options, as make_checks' limits: the checks' limits, and (left in
+    the options too) the chain's (its permissible stresses and the result's S_min)."""
+    return {k: options[k] for k in ("S_Hmin", "S_Fmin") if k in options}
+
+
 def _thawed(options: tuple) -> dict:
     return {k: dict(v[1]) if isinstance(v, tuple) and len(v) == 2 and v[0] == "dict" else v for k, v in options}
 
@@ -93,8 +99,7 @@ def _load_checks(material, life_h, application_factor, options: tuple, checks: t
     from ...gears.strength import Load
 
     opts = _thawed(options)
-    # S_Hmin, S_Fmin: the checks' limits, and the chain's too (its permissible stresses and the result's S_min)
-    limits = {k: opts[k] for k in ("S_Hmin", "S_Fmin") if k in opts}
+    limits = safety_limits(opts)
     if not root:
         opts["root"] = False
         limits["S_Fmin"] = None
