@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from ..errors import GearDesignError
-from . import centres, grid, kkt, scp
+from . import balance, centres, grid, kkt, scp
 from .starts import feasible_starts, start_nodes
 
 __all__ = ["Method", "register_method", "METHOD_TABLE", "METHODS", "DEFAULT_TOL", "ACCURACY"]
@@ -56,6 +56,10 @@ def _solve_convex(prob, bounds, tol, grid_n=None, start=None):
 def _solve_exact(prob, bounds, tol, grid_n=None, start=None):
     if start is None and centres.serves(prob):     # one pair's Chebyshev centre, as a drive solves many
         out = centres.solve(prob, bounds)
+        if out is not None:
+            return out
+    if start is None and balance.serves(prob):     # equal root sliding on a fixed-a_w line, a housing's pair
+        out = balance.solve(prob, bounds)
         if out is not None:
             return out
     starts, infeasible = feasible_starts(prob, bounds, start)
