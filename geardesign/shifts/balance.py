@@ -59,8 +59,11 @@ def solve(prob: Problem, bounds):
         return None        # no crossing inside the window, or the pair does not exist at an end of it
     # pieces are −|ϑ1|, −|ϑ2|: the difference rises with x1 where |ϑ1| falls and |ϑ2| rises
     x_lo, x_hi = (lo, hi) if a[0] < 0.0 else (hi, lo)
-    x = 0.5 * (lo + hi)
-    for it in range(1, _MAXIT + 1):
+    x, it = 0.5 * (lo + hi), 0
+    while True:
+        it += 1
+        if it > _MAXIT:
+            return None
         g = _gap(prob, x)
         if g is None:
             return None
@@ -79,8 +82,6 @@ def solve(prob: Problem, bounds):
             x = nxt
             break
         x = nxt
-    else:
-        return None
     P, M, GP, _ = prob.evaluate_point(np.array([x]))
     if not (np.isfinite(P).all() and np.isfinite(M).all()):
         return None

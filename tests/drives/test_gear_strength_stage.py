@@ -222,3 +222,19 @@ def test_a_helical_stage_with_a_total_contact_ratio_check_is_sized():
 
     assert b in np.ceil(PSI * m * 21 / math.cos(math.radians(15)) - 1e-9)
     assert holds(b)
+
+
+def test_strength_margins_at_a_flow_per_design_equal_one_flow_each():
+    # issue 35 §5: a search meets most flows into a stage with one new tooth pair each; the sizing checks them all
+    # in one call with a torque and speed per design, which must give each design's own margins bit for bit
+    import numpy as np
+    from geardesign.drives.stage_kinds.gear_strength import strength_margins
+
+    st = gd.GearStage(None, material="42CrMo4", life_h=10000.0)
+    M, B = np.array([3.0, 4.0, 5.0]), np.array([40.0, 50.0, 60.0])
+    Z1, Z2, X = np.array([20.0, 21.0, 22.0]), np.array([80.0, 70.0, 60.0]), np.array([0.2, 0.1, 0.0])
+    T, N = np.array([300.0, 500.0, 900.0]), np.array([1400.0, 900.0, 500.0])
+    many = strength_margins(st, M, B, Z1, Z2, X, X, T, N)
+    for i in range(3):
+        one = strength_margins(st, M[i], B[i], Z1[i], Z2[i], X[i], X[i], T[i], N[i])
+        assert {k: float(v[i]) for k, v in many.items()} == {k: float(v) for k, v in one.items()}

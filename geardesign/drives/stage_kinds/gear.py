@@ -285,9 +285,9 @@ def _standard_modules(stage: GearStage, z1: int, z2: int) -> tuple:
     return hit
 
 
-def _strength_first_fits(stage, pairs, batch, flow):
+def _strength_first_fits(stage, pairs, batch, flows):
     """(pair index, m, solution, b, {check: margin}) of each batch item's first width holding every strength
-    check (else its closest), all items' widths in one strength call."""
+    check (else its closest) at its pair's flow, all items' widths in one strength call."""
     grids = [_widths(stage, np.array([m]), pairs[i][0])[1].ravel() for i, m, _ in batch]
     sizes = [g.size for g in grids]
     def rep(f):      # one value per batch item, repeated over its widths
@@ -297,7 +297,8 @@ def _strength_first_fits(stage, pairs, batch, flow):
     M = rep(lambda it: it[1])
     Z1, Z2 = rep(lambda it: pairs[it[0]][0]), rep(lambda it: pairs[it[0]][1])
     X1, X2 = rep(lambda it: it[2]["x1"]), rep(lambda it: it[2]["x2"])
-    margins = strength_margins(stage, M, B, Z1, Z2, X1, X2, flow.torque_in_nm, flow.n_in_rpm)
+    T, N = rep(lambda it: flows[it[0]].torque_in_nm), rep(lambda it: flows[it[0]].n_in_rpm)
+    margins = strength_margins(stage, M, B, Z1, Z2, X1, X2, T, N)
     worst = np.minimum.reduce(list(margins.values()))
     worst = np.where(np.isnan(worst), -np.inf, worst)
     start = 0
@@ -417,10 +418,12 @@ class GearKind(ToothedKind):
 
     def _standard_sized(self, stage, z1, z2, objective, flow) -> dict:
         """:meth:`_standard_sized_many` of one tooth pair."""
-        return self._standard_sized_many(stage, [(z1, z2)], objective, flow)[0]
+        return self._standard_sized_many(stage, [(z1, z2)], objective, [flow])[0]
 
-    def _standard_sized_many(self, stage, pairs: list, objective: str, flow) -> list:
-        """Module and width of tooth pairs of a stage whose housing is standard, at one flow: for each module of
+    def _standard_sized_many(self, stage, pairs: list, objective: str, flows: list) -> list:
+        """Module and width of tooth pairs of a stage whose housing is standard, each at its flow (``flows``, one
+        per pair; the strength calls take a load per design, so pairs at different flows share them: a search
+        walking a drive meets most flows with one new pair each): for each module of
         the series (smallest first) the smallest standard a_w whose x-sum lies in the reducer window, the shifts
         that split it (with the manufactured state), then every width checked by the strength checks; each
         pair's first (m, b) holding every check. The shifts depend on the module (x_Σ follows from a_w/m), so
@@ -429,7 +432,7 @@ class GearKind(ToothedKind):
         less). The strength checks run in one vectorised call per round over all pairs, each round taking every
         unsettled pair's next :data:`STANDARD_TRIES` modules."""
         cands = [_standard_modules(stage, z1, z2) for z1, z2 in pairs]
-        screen = self._contact_screen(stage, pairs, cands, flow)
+        screen = self._contact_screen(stage, pairs, cands, flows)
         todo = [list(np.flatnonzero(ok)) for ok in screen]
         out: list = [None] * len(pairs)
         closest: list = [None] * len(pairs)
@@ -447,7 +450,7 @@ class GearKind(ToothedKind):
                         took += 1
             if not batch:
                 break
-            for i, m, sol, b, margins in _strength_first_fits(stage, pairs, batch, flow):
+            for i, m, sol, b, margins in _strength_first_fits(stage, pairs, batch, flows):
                 if out[i] is not None:
                     continue
                 full = dict(sol, margins={**sol["margins"], **margins}, m=m, face_width_mm=b)
@@ -472,7 +475,7 @@ class GearKind(ToothedKind):
         return out
 
     @staticmethod
-    def _contact_screen(stage, pairs, cands, flow) -> list:
+    def _contact_screen(stage, pairs, cands, flows) -> list:
         """Per pair, which of its modules pass the contact screen. Two strength calls for all pairs: each pair's
         middle module first, whose S_H scales the others' by (m/m_ref)^1.5 (σ_H ∝ √(F_t/(b·d1)) with b and d1 ∝ m
         at the widest width: the estimate only picks the modules worth screening, :data:`SCREEN_WINDOW` wide), then
@@ -487,8 +490,8 @@ class GearKind(ToothedKind):
 
         s_ref = 1.0 + strength_margins(stage, pick(0), pick(3), np.array([pairs[i][0] for i in have]),
                                        np.array([pairs[i][1] for i in have]), pick(4, 0.5), pick(4, 0.5),
-                                       flow.torque_in_nm, flow.n_in_rpm,
-                                       root=False)["contact_strength"]
+                                       np.array([flows[i].torque_in_nm for i in have]),
+                                       np.array([flows[i].n_in_rpm for i in have]), root=False)["contact_strength"]
         worth = [np.zeros(n, dtype=bool) for n in sizes]
         for i, s in zip(have, s_ref):
             ms = cands[i][0]
@@ -504,8 +507,9 @@ class GearKind(ToothedKind):
         X = np.concatenate([cands[i][4][a] for i, a in enumerate(at)]) / 2
         Z1 = np.concatenate([np.full(a.size, pairs[i][0]) for i, a in enumerate(at)])
         Z2 = np.concatenate([np.full(a.size, pairs[i][1]) for i, a in enumerate(at)])
-        contact = strength_margins(stage, M, B, Z1, Z2, X, X, flow.torque_in_nm, flow.n_in_rpm,
-                                   root=False)["contact_strength"]
+        T = np.concatenate([np.full(a.size, flows[i].torque_in_nm) for i, a in enumerate(at)])
+        N = np.concatenate([np.full(a.size, flows[i].n_in_rpm) for i, a in enumerate(at)])
+        contact = strength_margins(stage, M, B, Z1, Z2, X, X, T, N, root=False)["contact_strength"]
         for i, (a, ok) in enumerate(zip(at, np.split(contact >= -CONTACT_SCREEN, np.cumsum(n_at)[:-1]))):
             out[i][a] = ok
         return out
@@ -558,14 +562,7 @@ class GearKind(ToothedKind):
         strength sizing in one vectorised call per input flow; the same solutions as one by one."""
         pairs = [(int(o["z1"]), int(o["z2"])) for o in options]
         if self._standard_together(stage):
-            out = [None] * len(options)
-            by_flow: dict = {}
-            for i, flow in enumerate(flows):
-                by_flow.setdefault((flow.torque_in_nm, flow.n_in_rpm), (flow, []))[1].append(i)
-            for flow, idx in by_flow.values():
-                for i, sol in zip(idx, self._standard_sized_many(stage, [pairs[i] for i in idx], objective, flow)):
-                    out[i] = sol
-            return out
+            return self._standard_sized_many(stage, pairs, objective, list(flows))
         margin = _shift_objective(stage, objective) == "max_margin" and stage.free_shifts
         if not self._sized_together(stage):
             if margin and stage.m is not None:

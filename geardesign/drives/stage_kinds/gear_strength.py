@@ -45,19 +45,26 @@ WIDTH_TO_DIAMETER_RANGE = (0.2, 1.0)
 WIDTH_TO_DIAMETER_STEP = 0.05
 
 
-def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm: float, speed_rpm: float,
-                     root: bool = True) -> dict:
+def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm, speed_rpm, root: bool = True) -> dict:
     """{check: margin array} of the stage's load checks for its pairs (m, b broadcast) carrying ``torque_nm`` on
     the pinion at ``speed_rpm`` (with the stage's life, application factor and strength options): the checks the
     check registry builds for that load case (:func:`load_checks`; the built-in :data:`STRENGTH_CHECKS`, and any
     load model registered there), evaluated on the arrays in one call each; ``root=False``: ``contact_strength``
-    alone (the strength model skips the root side)."""
+    alone (the strength model skips the root side). A torque and speed per design (arrays broadcast with the
+    designs) check many flows in one call (:meth:`~geardesign.gears.strength.Load.per_design`)."""
     from ...gears.geometry import mesh_geometry
     from ...gears.mesh import Mesh
 
-    checks = load_checks(stage, float(torque_nm), float(speed_rpm), root)
-    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, face_width_mm, z1, z2, x1, x2)))
-    M, B, Z1, Z2, X1, X2 = arrays
+    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, face_width_mm, z1, z2, x1, x2,
+                                                                       torque_nm, speed_rpm)))
+    M, B, Z1, Z2, X1, X2, T, N = arrays
+    if np.ndim(torque_nm) or np.ndim(speed_rpm):
+        from ...gears.strength import Load
+
+        load = Load.per_design(T, N, stage.application_factor, stage.life_h)
+        checks = _built_checks(_strength_options(stage), stage.material, stage.checks_key(), load, root)
+    else:
+        checks = load_checks(stage, float(torque_nm), float(speed_rpm), root)
     mesh = Mesh(20, 60, None, True, stage.beta_deg).unchecked(Z1, Z2)
     if all(c.costly for c in checks):   # the chain computes the geometry it needs itself
         geo = {"_mesh": mesh, "_m": M, "_z1": Z1, "_z2": Z2, "_x1": X1, "_x2": X2}
@@ -95,15 +102,21 @@ def load_checks(stage, torque_nm: float, speed_rpm: float, root: bool = True) ->
 @lru_cache(maxsize=256)
 def _load_checks(material, life_h, application_factor, options: tuple, checks: tuple, torque_nm, speed_rpm,
                  root) -> tuple:
-    from ...gears.checks import make_checks   # here: the check registry loads pandas
     from ...gears.strength import Load
+
+    load = Load(torque_nm=torque_nm, n_rpm=speed_rpm, life_h=life_h, application_factor=application_factor)
+    return _built_checks(options, material, checks, load, root)
+
+
+def _built_checks(options: tuple, material, checks: tuple, load, root: bool) -> tuple:
+    """What the check registry adds to a stage's geometric checks for ``load`` (the load case's checks)."""
+    from ...gears.checks import make_checks   # here: the check registry loads pandas
 
     opts = _thawed(options)
     limits = safety_limits(opts)
     if not root:
         opts["root"] = False
         limits["S_Fmin"] = None
-    load = Load(torque_nm=torque_nm, n_rpm=speed_rpm, life_h=life_h, application_factor=application_factor)
     geometric = dict(checks)
     plain = {c.name for c in make_checks(**geometric)}
     built = make_checks(**geometric, load=load, material=stage_material(material), strength=opts or None, **limits)

@@ -477,7 +477,7 @@ def _evaluate_batch(designs, G, o) -> dict:
     values = [*designs, *(o.geometry[k] for k in geo_keys)]
     shape = batch_shape(values)
     if (shape is None or not BLOCK < math.prod(shape) <= DESIGNS_MAX or np.ndim(o.grade)
-            or any(np.ndim(v) for v in G.values())):
+            or any(np.ndim(v) for v in G.values()) or np.ndim(o.load.torque_nm)):   # a load per design: whole
         return _finite(_evaluate(designs, G, o, ArrayOps), designs, o)
     finite = [True]
 

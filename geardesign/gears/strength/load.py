@@ -4,6 +4,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from ...errors import GearDesignError
 from ...validate import hint_unknown_arguments, one_number, require_range
 
@@ -76,6 +78,25 @@ class Load:
             object.__setattr__(self, "life_h", one_number("life_h", require_range(
                 "life_h", self.life_h, *LIFE_RANGE_H, lo_open=True, unit="h")))
 
+    @classmethod
+    def per_design(cls, torque_nm, n_rpm, application_factor: float = 1.0, life_h: float | None = None) -> "Load":
+        """A torque and speed per design (arrays broadcast with the designs of a :func:`pair_strength` call, on
+        gear 1): many load cases in one vectorised call, as a drive search sizes a stage at each flow into it.
+        Each element is validated as :class:`Load` validates one.
+
+        >>> L = Load.per_design([400.0, 800.0], [1000.0, 500.0])
+        >>> L.power_kw.round(3).tolist()
+        [41.888, 41.888]
+        """
+        T = np.array(require_range("torque_nm", torque_nm, *TORQUE_RANGE_NM, lo_open=True, unit="N·m"), dtype=float)
+        n = np.array(require_range("n_rpm", n_rpm, *SPEED_RANGE_RPM, lo_open=True, unit="rpm"), dtype=float)
+        T, n = np.broadcast_arrays(T, n)
+        one = _PerDesign(torque_nm=1.0, n_rpm=1.0, application_factor=application_factor, life_h=life_h)
+        for name, value in (("torque_nm", T), ("n_rpm", n), ("power_kw", T * n * math.pi / 30.0 / 1e3)):
+            value.flags.writeable = False
+            object.__setattr__(one, name, value)
+        return one
+
     @property
     def omega(self) -> float:
         """Angular speed of the gear the load is given on, rad/s."""
@@ -85,6 +106,13 @@ class Load:
     def given(self) -> str:
         """"torque" or "power": which of the two was given (the other is derived)."""
         return object.__getattribute__(self, "_given")
+
+
+class _PerDesign(Load):
+    """A :meth:`Load.per_design`: its arrays make it one object, equal to itself alone (a check's memo keys on it)."""
+
+    __eq__ = object.__eq__
+    __hash__ = object.__hash__
 
 
 # Names a user may reach for: the hint the error gives (each quantity's name carries its unit).

@@ -63,3 +63,39 @@ def test_the_right_keywords_still_make_a_load():
     assert gd.Load(torque_nm=100, n_rpm=1000).power_kw == pytest.approx(100 * 2 * 3.141592653589793 * 1000 / 60e3,
                                                                        rel=1e-15)
     assert gd.Load(100, None, 1000).torque_nm == 100.0
+
+
+# --- a load per design (issue 35 §5: a drive search checks many flows into a stage in one strength call)
+
+@pytest.mark.parametrize("life_h", [None, 20000.0])
+def test_per_design_load_equals_one_load_each(life_h):
+    # bit for bit at endurance; with a life, Z_NT and Y_NT take the logarithm of each design's own cycles (numpy's
+    # on an array, the float path's on a number): to 1e-14
+    import numpy as np
+    from geardesign.gears.strength import Load, pair_strength
+
+    T = np.array([300.0, 500.0, 900.0, 40.0])
+    n = np.array([1400.0, 900.0, 500.0, 3000.0])
+    m, z1, z2 = np.array([3.0, 4.0, 5.0, 2.0]), np.array([20, 21, 22, 30]), np.array([80, 70, 60, 31])
+    x1, x2, b = np.array([0.2, 0.1, 0.0, 0.4]), np.array([0.1, 0.0, 0.3, -0.2]), np.array([40.0, 50.0, 60.0, 20.0])
+    both = pair_strength(m, z1, z2, x1, x2, load=Load.per_design(T, n, life_h=life_h), material1="42CrMo4",
+                         face_width_mm=b)
+    for i in range(T.size):
+        j = slice(i, i + 1)      # one design as an array: the same (array) path of the chain
+        one = pair_strength(m[j], z1[j], z2[j], x1[j], x2[j], load=Load(torque_nm=T[i], n_rpm=n[i], life_h=life_h),
+                            material1="42CrMo4", face_width_mm=b[j])
+        for k in ("S_H1", "S_H2", "S_F1", "S_F2", "K_v", "K_Hbeta", "Z_NT1", "sigma_H1", "sigma_F2"):
+            got, want = float(np.ravel(both[k])[i]), float(np.ravel(one[k])[0])
+            assert got == want if life_h is None else got == pytest.approx(want, rel=1e-14), k
+
+
+def test_per_design_load_validates_each_element():
+    from geardesign.gears.strength import Load
+
+    with pytest.raises(GearDesignError, match="torque_nm"):
+        Load.per_design([100.0, -1.0], [1000.0, 1000.0])
+    with pytest.raises(GearDesignError, match="n_rpm"):
+        Load.per_design([100.0, 1.0], [1000.0, float("nan")])
+    L = Load.per_design([400.0, 800.0], [1000.0, 500.0])
+    assert L == L and L != Load.per_design([400.0, 800.0], [1000.0, 500.0])   # one object: a memo's key
+    assert L.power_kw.tolist() == pytest.approx([400 * 1000 * math.pi / 30e3] * 2, rel=1e-15)
