@@ -166,7 +166,8 @@ SCHEMAS: dict[str, Schema] = {
         (Column("designation", "str"), Column("series", "str"), Column("type", "str"), _f("d_mm"), _f("D_mm"),
          _f("B_mm"), _f("T_mm"), _f("a_mm"), _f("C_kn"), _f("C0_kn"), _f("Cu_kn", required=False),
          _f("f0", required=False), _f("speed_grease_rpm", required=False), _f("speed_oil_rpm", required=False),
-         _f("e"), _f("Y"), _f("Y0")),
+         _f("speed_reference_rpm", required=False), _f("speed_limiting_rpm", required=False),
+         _f("e"), _f("Y"), _f("Y0"), Column("iso355", "str", required=False)),
         increasing=("d_mm",), increasing_within=("series",),
         trend=(("D_mm", "nondecreasing"),),
         description="single row tapered roller bearings: as bearings (B the inner ring's width) with the overall "
