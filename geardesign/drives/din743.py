@@ -423,7 +423,8 @@ def _chain(mat, notches, d, D, bore, d_eff, Rz_um, K_V, hard_surface, load_case,
         raise GearDesignError(f"load_case must be 1 (mean stress constant) or 2 (mean/amplitude constant), "
                               f"got {load_case!r}")
     for name, v in loads.items():
-        require_range(name, v, -1e12, 1e12)
+        if not np.all(np.abs(v) <= 1e12):      # NaN fails too: then the one check that names it
+            require_range(name, v, -1e12, 1e12)
     K1B = K1(d_eff, kind, "tensile", dB)
     K1S = K1(d_eff, kind, "yield", dB)
     sB_d, sS_d = K1B * sB, K1S * sS
@@ -441,8 +442,10 @@ def _chain(mat, notches, d, D, bore, d_eff, Rz_um, K_V, hard_surface, load_case,
         key = kinds == "key"
         bs, bt = np.where(key, bs_k, bs_p), np.where(key, bt_k, bt_p)
         d_BK = 40.0
-        for k, b in zip(LOADINGS, (bs, bs, bt)):
-            beta[k] = np.where(fits, b * K3(d_BK, b) / K3(d, b), beta[k])
+        b_sigma = np.where(fits, bs * K3(d_BK, bs) / K3(d, bs), 1.0)
+        b_tau = np.where(fits, bt * K3(d_BK, bt) / K3(d, bt), 1.0)
+        for k, b in zip(LOADINGS, (b_sigma, b_sigma, b_tau)):
+            beta[k] = np.where(fits, b, beta[k])
             alpha[k] = np.where(fits, 1.0, alpha[k])
     round_notch = (kinds == "shoulder") | (kinds == "groove")
     if round_notch.any():
@@ -478,7 +481,8 @@ def _chain(mat, notches, d, D, bore, d_eff, Rz_um, K_V, hard_surface, load_case,
     kfs, kft = surface_factor(Rz_um, sB_d)
     KF = {"tension": np.where(fits, 1.0, kfs), "bending": np.where(fits, 1.0, kfs),   # DIN 743-2 Table 1: in β
           "torsion": np.where(fits, 1.0, kft)}
-    K2d = {k: np.broadcast_to(K2(d, k), (n,)) for k in LOADINGS}
+    K2_bending = K2(d, "bending")            # K_2 of torsion is that of bending (DIN 743-2 eq. (16))
+    K2d = {"tension": np.ones(n), "bending": K2_bending, "torsion": K2_bending}
     K = {k: total_factor(beta[k], K2d[k], KF[k], K_V) for k in LOADINGS}
     WK = {"tension": 0.4 * sB_d / K["tension"], "bending": 0.5 * sB_d / K["bending"],
           "torsion": 0.3 * sB_d / K["torsion"]}

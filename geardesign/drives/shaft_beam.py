@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -180,20 +181,24 @@ class ShaftModel:
     def length_mm(self) -> float:
         return float(sum(s[0] for s in self.sections))
 
+    @cached_property
+    def _section_arrays(self):
+        """(section ends 0 … L, outside diameters, bores) as arrays, made once (the model is frozen)."""
+        return (np.concatenate([[0.0], np.cumsum([s[0] for s in self.sections])]),
+                np.array([s[1] for s in self.sections]), np.array([s[2] for s in self.sections]))
+
     @property
     def section_ends_mm(self) -> np.ndarray:
         """x of every section boundary, 0 … L."""
-        return np.concatenate([[0.0], np.cumsum([s[0] for s in self.sections])])
+        return self._section_arrays[0].copy()
 
     def diameter_at(self, x_mm, side: str = "right"):
         """Outside diameter and bore (mm) at x; at a step, the section to the ``side`` of it."""
-        ends = self.section_ends_mm
+        ends, d, b = self._section_arrays
         x = np.asarray(x_mm, dtype=float)
         i = np.searchsorted(ends, x, side=side) - 1
-        i = np.clip(i, 0, len(self.sections) - 1)
-        d = np.array([s[1] for s in self.sections])[i]
-        b = np.array([s[2] for s in self.sections])[i]
-        return d, b
+        i = np.minimum(np.maximum(i, 0), len(self.sections) - 1)
+        return d[i], b[i]
 
     def with_diameters(self, scale: float) -> "ShaftModel":
         """The same shaft with every diameter (and bore) times ``scale``."""
