@@ -415,3 +415,20 @@ def test_system_life_by_hand_and_bad_input():
         b.system_life([1000.0, -1.0], "ball")
     with pytest.raises(GearDesignError, match="kind"):
         b.system_life([1000.0], "needle")
+
+
+def test_reference_viscosity():
+    """ν1 of ISO 281 (NTN CAT. 2203/E eqs. (3.10), (3.11)) written out here, on both sides of 1 000 min⁻¹;
+    SKF 17000 C.2 (p. 224) reads "close to 12 mm²/s" off its diagram at d_m = 53.5 mm, 2 450 r/min. (Its C.3
+    reads 7 mm²/s at d_m = 87.5 mm, 3 000 r/min where the formula gives 8.8: SKF's diagram 14 is its own chart,
+    docs/bearings.md.)"""
+    rng = np.random.default_rng(2811)
+    for n, dpw in zip(rng.uniform(1, 10000, 200), rng.uniform(5, 1000, 200)):
+        want = (45000 * n ** -0.83 if n < 1000 else 4500 * n ** -0.5) / math.sqrt(dpw)
+        assert float(b.reference_viscosity(n, dpw)) == pytest.approx(want, rel=1e-12)
+    assert float(b.reference_viscosity(2450, 0.5 * (35 + 72))) == pytest.approx(12, rel=0.05)
+    # faster or larger: a thinner oil is enough
+    grid = b.reference_viscosity(np.array([10.0, 100.0, 999.0, 1000.0, 5000.0]), 50.0)
+    assert (np.diff(grid) < 0).all()
+    with pytest.raises(GearDesignError, match="n_rpm"):
+        b.reference_viscosity(0.0, 50.0)
