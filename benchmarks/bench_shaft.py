@@ -3,7 +3,7 @@
 and slope at the gears (drives/shaft_beam.py) and the DIN 743 safety at the seats (drives/din743.py: key
 seats under the gears and the couplings, shoulders beside the bearings). Printed as the median time of one
 whole reducer and as a ratio to a reference timed in the same run, interleaved: one
-``GearPair(...).geometry()`` (a cost the other benchmarks also quote).
+``GearPair(...).geometry()`` (a cost the other benchmarks also quote). CPU times (time.process_time).
 
 Run: python benchmarks/bench_shaft.py [REPEATS]
 Prints figures; asserts nothing (speed is measured, not tested).
@@ -70,9 +70,10 @@ def reference():
 
 
 def timed(fn):
-    t = time.perf_counter()
+    """CPU time of one call (the machine is shared: wall time measures the neighbours too)."""
+    t = time.process_time()
     fn()
-    return time.perf_counter() - t
+    return time.process_time() - t
 
 
 def main(repeats: int = 200):
