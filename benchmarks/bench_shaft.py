@@ -61,8 +61,8 @@ def reducer():
 
 def reducer_with_tables():
     """The same, and every table and the critical speeds asked for (what a report shows)."""
-    for analysis, safety in reducer():
-        analysis.reactions, analysis.diagrams, analysis.elements, analysis.critical_speed_rpm, safety.table
+    return [(analysis.reactions, analysis.diagrams, analysis.elements, analysis.critical_speed_rpm, safety.table)
+            for analysis, safety in reducer()]
 
 
 def reference():
