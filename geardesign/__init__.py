@@ -57,7 +57,8 @@ _NAMES = {
     "data_block": "gears.data_block",
     "mesh_forces": "gears.forces", "pair_forces": "gears.forces", "planetary_forces": "gears.forces",
     "MeshForces": "gears.forces", "check_bearing": "drives.bearing", "select_bearing": "drives.bearing",
-    "chain_pull": "drives.chain.pull",
+    "chain_pull": "drives.chain.pull", "tapered_axial_loads": "drives.bearing", "system_life": "drives.bearing",
+    "reference_viscosity": "drives.bearing",
     "Lubricant": "gears.efficiency", "mesh_loss": "gears.efficiency", "stage_efficiency": "drives.efficiency",
     "BearingLoad": "drives.efficiency", "bearing_friction": "drives.bearing_friction",
 }

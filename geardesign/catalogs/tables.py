@@ -161,6 +161,17 @@ SCHEMAS: dict[str, Schema] = {
         trend=(("D_mm", "nondecreasing"),),
         description="rolling bearings: bore d, outside diameter D, width B, basic dynamic and static load ratings C, "
                     "C0 and fatigue load limit Cu in kN, the deep groove ball bearing factor f0, allowable speeds"),
+    "tapered_bearings": Schema(
+        "tapered_bearings",
+        (Column("designation", "str"), Column("series", "str"), Column("type", "str"), _f("d_mm"), _f("D_mm"),
+         _f("B_mm"), _f("T_mm"), _f("a_mm"), _f("C_kn"), _f("C0_kn"), _f("Cu_kn", required=False),
+         _f("f0", required=False), _f("speed_grease_rpm", required=False), _f("speed_oil_rpm", required=False),
+         _f("speed_reference_rpm", required=False), _f("speed_limiting_rpm", required=False),
+         _f("e"), _f("Y"), _f("Y0"), Column("iso355", "str", required=False)),
+        increasing=("d_mm",), increasing_within=("series",),
+        trend=(("D_mm", "nondecreasing"),),
+        description="single row tapered roller bearings: as bearings (B the inner ring's width) with the overall "
+                    "width T, the pressure centre's distance a from the back face, and e, Y, Y0 of ISO 281/ISO 76"),
     "bearing_factors": Schema(
         "bearing_factors",
         (_f("f0_fa_c0r"), _f("e"), _f("X"), _f("Y")),
@@ -196,6 +207,7 @@ BUNDLED: dict[str, tuple[str, str, str | None]] = {
     "bearings_deep_groove": ("bearings_deep_groove.csv", "bearings", None),
     "bearings_angular_contact": ("bearings_angular_contact.csv", "bearings", None),
     "bearings_cylindrical_roller": ("bearings_cylindrical_roller.csv", "bearings", None),
+    "bearings_tapered_roller": ("bearings_tapered_roller.csv", "tapered_bearings", None),
     "bearing_factors_deep_groove": ("bearing_factors_deep_groove.csv", "bearing_factors", None),
     "shaft_materials_din743": ("shaft_materials_din743.csv", "shaft_materials", None),
 }
@@ -379,7 +391,7 @@ def _row_rules(frame: pd.DataFrame, schema: Schema, path, lines) -> None:
         fail(frame["efficiency_pct"].to_numpy() >= 100.0, "efficiency_pct", "efficiency must be below 100 %")
         for col, top in (("max_torque_ratio", MOTOR_TORQUE_RATIO_MAX), ("start_torque_ratio", MOTOR_TORQUE_RATIO_MAX)):
             fail(frame[col].to_numpy() > top, col, f"a torque ratio above {top:g} is not a catalogue motor's")
-    elif schema.kind == "bearings":
+    elif schema.kind in ("bearings", "tapered_bearings"):
         d, D, B = (frame[c].to_numpy(dtype=float) for c in ("d_mm", "D_mm", "B_mm"))
         fail(D <= d, "D_mm", "the outside diameter must exceed the bore")
         fail(B >= D - d, "B_mm", "the width must be less than D - d (a radial bearing)")
@@ -387,6 +399,12 @@ def _row_rules(frame: pd.DataFrame, schema: Schema, path, lines) -> None:
              "C0 above 3 C is not a radial bearing's rating (a slip of the decimal point)")
         fail(frame["Cu_kn"].to_numpy(dtype=float) >= frame["C0_kn"].to_numpy(), "Cu_kn",
              "the fatigue load limit must be below C0")
+        if schema.kind == "tapered_bearings":
+            fail(frame["T_mm"].to_numpy(dtype=float) < B, "T_mm", "the overall width T must be at least B")
+            # ISO 281: e = 1.5 tan α, Y = 0.4 cot α, so e·Y = 0.6 but for the rounding of the printed e and Y
+            eY = frame["e"].to_numpy(dtype=float) * frame["Y"].to_numpy(dtype=float)
+            fail(np.abs(eY - 0.6) > 0.05, "e", "e·Y must be 0.6 within the printed rounding (e = 1.5 tan α, "
+                 "Y = 0.4 cot α, ISO 281): e or Y of another row")
     elif schema.kind in ("modules", "center_distances"):
         fail(~frame["series"].isin([1, 2]).to_numpy(), "series", "series must be 1 or 2")
     elif schema.kind == "preferred_numbers":

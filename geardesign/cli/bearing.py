@@ -14,7 +14,7 @@ from .output import add_json_flag, frame_records, print_frame, print_json, print
 # the library's argument names -> this command's options, for the one-line error
 _OPTIONS = {"fr_n": "--fr", "fa_n": "--fa", "n_rpm": "--speed", "life_h": "--life-h", "bore_mm": "--bore",
             "reliability": "--reliability", "kappa": "--kappa", "e_c": "--ec", "series": "--series",
-            "designation": "--designation", "s0_min": "--s0-min", "lubrication": "--lubrication"}
+            "designation": "--designation", "bearing_type": "--type", "s0_min": "--s0-min", "lubrication": "--lubrication"}
 SHOW = ["rank", "designation", "d_mm", "D_mm", "B_mm", "C_kn", "C0_kn", "P_n", "L10h", "Lnmh", "s0",
         "speed_limit_rpm", "min_margin", "limiting_check", "feasible"]
 
@@ -23,13 +23,18 @@ def add_parser(subparsers):
     p = subparsers.add_parser(
         "bearing", help="select or check a rolling bearing (ISO 281 life, static safety, speed)",
         description="The smallest bearing of the series (NTN CAT. 2203/E tables: 62, 63 deep groove, 72B, 73B "
-                    "angular contact 40 deg, NU2, NU3 cylindrical roller) whose bore fits a seat of at least --bore "
+                    "angular contact 40 deg, NU2, NU3 cylindrical roller; SKF 17000 tables: 302, 303, 320X, 322, 323 "
+                    "tapered roller) whose bore fits a seat of at least --bore "
                     "and that reaches --life-h under --fr and --fa at --speed, with its static safety and allowable "
                     "speed checked; with --designation, the checks of that bearing instead. The first line is the "
                     "verdict. Exit status 0 when the bearing passes, 1 when it fails a check or no bearing of the "
                     "series passes, 2 on bad input.")
-    p.add_argument("--series", default="62",
-                   help=f"series to choose from, comma separated: {', '.join(bearing.SERIES)} (default 62)")
+    p.add_argument("--series", default=None,
+                   help=f"series to choose from, comma separated: {', '.join(bearing.SERIES)} (default 62, or "
+                        f"every series of --type)")
+    p.add_argument("--type", dest="bearing_type", default=None, choices=tuple(bearing.BEARING_TYPES),
+                   help="bearing type: choose from all its series (with --series: check they are of it); for a "
+                        "tapered roller bearing --fa is its whole axial load, the induced 0.5 Fr/Y included")
     p.add_argument("--designation", default=None, metavar="NAME",
                    help="check this catalog bearing (e.g. 6208, 7310B, NU210EA) instead of selecting one")
     p.add_argument("--bore", type=float, default=None, metavar="MM",
@@ -68,15 +73,36 @@ def _verdict(check: bearing.BearingCheck) -> str:
     return f"FAILS: {check.limiting_check} ({check.message.split(': ', 1)[1]})"
 
 
+def _series(names, bearing_type) -> list[str]:
+    """The series to choose from: --series, or every series of --type, or 62."""
+    if names is None:
+        if bearing_type is None:
+            return ["62"]
+        kind = bearing.BEARING_TYPES[bearing_type]
+        return [s for s, (_, k) in bearing.SERIES.items() if k == kind]
+    series = [s.strip() for s in names.split(",") if s.strip()]
+    if bearing_type is not None:
+        kind = bearing.BEARING_TYPES[bearing_type]
+        other = [s for s in series if s in bearing.SERIES and bearing.SERIES[s][1] != kind]
+        if other:
+            raise GearDesignError(f"--series {', '.join(other)} is not of --type {bearing_type} (its series: "
+                                  f"{', '.join(s for s, (_, k) in bearing.SERIES.items() if k == kind)})")
+    return series
+
+
 def run(args) -> int:
     if args.top < 0:
         raise GearDesignError(f"--top must be >= 0, got {args.top}")
-    series = [s.strip() for s in args.series.split(",") if s.strip()]
+    series = _series(args.series, args.bearing_type)
     kw = dict(fr_n=args.fr, fa_n=args.fa, n_rpm=args.speed, life_h=args.life_h, reliability=args.reliability,
               kappa=args.kappa, e_c=args.e_c, lubrication=args.lubrication, s0_min=args.s0_min)
     try:
         if args.designation is not None:
             check = bearing.check_bearing(args.designation, **kw)
+            if args.bearing_type is not None and \
+                    bearing.SERIES[check.series][1] != bearing.BEARING_TYPES[args.bearing_type]:
+                raise GearDesignError(f"--designation {args.designation} is a {bearing.SERIES[check.series][1]} "
+                                      f"bearing, not of --type {args.bearing_type}")
             selection = None
         else:
             if args.bore is None:

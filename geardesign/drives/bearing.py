@@ -12,6 +12,12 @@ Sources (docs/references.md, docs/bearings.md):
   f0 Fa/C0r (the ISO 281 table, normal clearance) and of 40° angular contact ball bearings (e = 1.14,
   X = 0.35, Y = 0.57), the static load P0 and the minimum static safety s0: NTN *Ball and Roller Bearings*
   CAT. No. 2203/E, pp. B-27 (deep groove), B-61 (angular contact), A-31 Table 3.6 (s0);
+- single row tapered roller bearings: P = Fr when Fa/Fr <= e, else 0.4 Fr + Y Fa; P0 = 0.5 Fr + Y0 Fa, not
+  below Fr; e, Y, Y0 from the product table; the axial load a radial load induces, 0.5 Fr/Y, and the axial
+  loads of two bearings adjusted against each other (SKF 17000/1 EN pp. 680-682, Table 7; NTN CAT. 2203/E
+  Example 4, p. A-44);
+- the life of a system of bearings, L = (Σ L_i^-e)^(-1/e), e = 10/9 ball, 9/8 roller (NTN CAT. 2203/E
+  eq. (3.3), p. A-19);
 - the reliability factor a1: SKF 17000/1 EN Table 3, p. 90 (values of ISO 281:2007);
 - the life modification factor a_ISO (ISO 281:2007 clause 9.3, ball bearings) as printed in IBC *High
   Precision Bearings* TI-I-5050.0/E (2010), p. 158, eqs. (5.37)-(5.39). For roller bearings see
@@ -34,8 +40,9 @@ from ..validate import one_number, require_choice, require_range
 __all__ = ["SERIES", "BEARING_KINDS", "LIFE_EXPONENT", "RELIABILITY_FACTORS", "ANGULAR_CONTACT_40",
            "S0_MIN_NORMAL", "basic_rating_life", "rating_life_hours", "deep_groove_factors",
            "equivalent_dynamic_load", "equivalent_static_load", "static_safety", "reliability_factor",
-           "life_modification_factor", "bearing_catalog", "bearing_loads", "check_bearing", "select_bearing",
-           "BearingCheck", "BearingSelection"]
+           "life_modification_factor", "reference_viscosity", "induced_axial_force", "tapered_axial_loads", "system_life",
+           "bearing_catalog", "bearing_loads", "check_bearing", "select_bearing", "BearingCheck",
+           "BearingSelection", "TAPERED_X", "BEARING_TYPES"]
 
 # series -> (catalog table, bearing kind); the kind says which life exponent and which X/Y rule apply
 if TYPE_CHECKING:       # pandas is imported where a catalog is read (the command's start-up stays light)
@@ -48,8 +55,17 @@ SERIES = {
     "73B": ("bearings_angular_contact", "angular_contact_ball"),
     "NU2": ("bearings_cylindrical_roller", "cylindrical_roller"),
     "NU3": ("bearings_cylindrical_roller", "cylindrical_roller"),
+    "302": ("bearings_tapered_roller", "tapered_roller"),
+    "303": ("bearings_tapered_roller", "tapered_roller"),
+    "320X": ("bearings_tapered_roller", "tapered_roller"),
+    "322": ("bearings_tapered_roller", "tapered_roller"),
+    "323": ("bearings_tapered_roller", "tapered_roller"),
 }
-BEARING_KINDS = {"deep_groove_ball": "ball", "angular_contact_ball": "ball", "cylindrical_roller": "roller"}
+BEARING_KINDS = {"deep_groove_ball": "ball", "angular_contact_ball": "ball", "cylindrical_roller": "roller",
+                 "tapered_roller": "roller"}
+# the short names of the command line's --type -> bearing type
+BEARING_TYPES = {"deep_groove": "deep_groove_ball", "angular_contact": "angular_contact_ball",
+                 "cylindrical_roller": "cylindrical_roller", "tapered": "tapered_roller"}
 LIFE_EXPONENT = {"ball": 3.0, "roller": 10.0 / 3.0}   # ISO 281:2007 eq. for L10 (SKF 17000 p. 88)
 
 # a1 by reliability in % (SKF 17000/1 EN, Table 3, p. 90; the values of ISO 281:2007 Table 1)
@@ -61,6 +77,13 @@ ANGULAR_CONTACT_40 = {"e": 1.14, "X": 0.35, "Y": 0.57, "X0": 0.5, "Y0": 0.26}
 # deep groove ball bearings: X = 0.56 when Fa/Fr > e; static P0 = 0.6 Fr + 0.5 Fa, not below Fr (NTN p. B-27)
 DEEP_GROOVE_X = 0.56
 DEEP_GROOVE_STATIC = {"X0": 0.6, "Y0": 0.5}
+# single row tapered roller bearing (SKF 17000/1 EN p. 680): Fa/Fr > e: P = 0.4 Fr + Y Fa; P0 = 0.5 Fr + Y0 Fa
+# (e, Y, Y0 per bearing from the product table); a radial load induces the axial load 0.5 Fr/Y (p. 681-682)
+TAPERED_X = 0.4
+TAPERED_X0 = 0.5
+INDUCED_AXIAL_FACTOR = 0.5
+# Weibull slopes of the system life (NTN CAT. 2203/E eq. (3.3)): 10/9 ball, 9/8 roller bearings
+SYSTEM_LIFE_SLOPE = {"ball": 10.0 / 9.0, "roller": 9.0 / 8.0}
 # least static safety s0 for normal rotation (NTN CAT. 2203/E Table 3.6, p. A-31): ball 1, roller 1.5
 S0_MIN_NORMAL = {"ball": 1.0, "roller": 1.5}
 
@@ -219,9 +242,87 @@ def life_modification_factor(kind, kappa, ec_cu_over_p):
     return np.minimum(a, A_ISO_MAX)
 
 
+def induced_axial_force(fr_n, Y):
+    """The axial load a radial load Fr induces in a single row tapered roller bearing, 0.5·Fr/Y (N; SKF
+    17000/1 EN Table 7, p. 682; NTN CAT. 2203/E Example 4, p. A-44: 0.5 × 5.98/2.06 = 1.45 kN).
+
+    >>> round(float(induced_axial_force(5.98, 2.06)), 2)
+    1.45
+    """
+    return INDUCED_AXIAL_FACTOR * np.asarray(fr_n, dtype=float) / np.asarray(Y, dtype=float)
+
+
+def tapered_axial_loads(fr_a_n, fr_b_n, Y_a, Y_b, ka_n=0.0):
+    """The axial loads (Fa_A, Fa_B) in N of two single row tapered roller bearings A and B adjusted against
+    each other to zero clearance without preload (back-to-back or face-to-face), under their radial loads
+    Fr_A, Fr_B and an external axial force Ka on the shaft. ``ka_n`` >= 0 acts toward the bearing B, that is,
+    B takes it (SKF's load cases 1a-1c); a negative Ka acts toward A (cases 2a-2c).
+
+    SKF *Rolling bearings* 17000/1 EN, Table 7, p. 682: with Ka toward B, when 0.5 Fr_A/Y_A + Ka >=
+    0.5 Fr_B/Y_B, Fa_A = 0.5 Fr_A/Y_A and Fa_B = Fa_A + Ka; otherwise Fa_B = 0.5 Fr_B/Y_B and Fa_A = Fa_B − Ka.
+    Each bearing so carries at least its own induced load. NTN writes only the load one bearing passes to the
+    other (its Example 4 has Fa_I = 0 where SKF's table gives 0.5 Fr_I/Y_I); the equivalent loads agree, since
+    a bearing's own induced load 0.5/Y·Fr stays below e·Fr (e·Y = 0.6) and leaves P = Fr.
+
+    NTN CAT. 2203/E Example 4 (p. A-44): Fr = 5.98 and 4.18 kN, Y = 2.06 and 2.07, Ka = 0: bearing II
+    carries 1.45 kN:
+
+    >>> fa = tapered_axial_loads(5.98, 4.18, 2.06, 2.07)
+    >>> [round(float(v), 2) for v in fa]
+    [1.45, 1.45]
+    """
+    fa_ind = induced_axial_force(fr_a_n, Y_a)
+    fb_ind = induced_axial_force(fr_b_n, Y_b)
+    ka = np.asarray(ka_n, dtype=float)
+    # with Ka toward B (k >= 0): A sets the loads when its induced load plus Ka is at least B's; toward A the
+    # same with the roles swapped
+    toward_b = ka >= 0
+    k = np.abs(ka)
+    first, second = np.where(toward_b, fa_ind, fb_ind), np.where(toward_b, fb_ind, fa_ind)
+    first_rules = first + k >= second
+    fa_first = np.where(first_rules, first, second - k)
+    fa_second = np.where(first_rules, first + k, second)
+    return np.where(toward_b, fa_first, fa_second), np.where(toward_b, fa_second, fa_first)
+
+
+def system_life(lives, kind):
+    """The life of a set of bearings that fails when the first one fails (the rating life of a shaft or a
+    gearbox), L = (Σ L_i^(−e))^(−1/e) with the Weibull slope e = 10/9 for ball and 9/8 for roller bearings
+    (NTN CAT. 2203/E eq. (3.3), p. A-19), in the unit of the lives. NTN's Example 4 (p. A-44): 1 900 h and
+    7 550 h give "1 600 hours":
+
+    >>> round(float(system_life([1900.0, 7550.0], "roller")), -2)
+    1600.0
+    """
+    kind = require_choice("kind", kind, tuple(SYSTEM_LIFE_SLOPE))
+    L = np.asarray(lives, dtype=float)
+    if L.ndim == 0 or L.size == 0 or np.any(~np.isfinite(L)) or np.any(L <= 0):
+        raise GearDesignError(f"lives must be one or more finite lives > 0, got {lives!r}")
+    e = SYSTEM_LIFE_SLOPE[kind]
+    return np.sum(L ** -e, axis=-1) ** (-1.0 / e)
+
+
+def reference_viscosity(n_rpm, dpw_mm):
+    """The reference kinematic viscosity ν1 (mm²/s) a bearing needs at its speed, for the viscosity ratio
+    κ = ν/ν1 of :func:`life_modification_factor`: ν1 = 45 000·n^−0.83·D_pw^−0.5 below 1 000 min⁻¹ and
+    4 500·n^−0.5·D_pw^−0.5 from 1 000 min⁻¹ on (ISO 281:2007 as printed by NTN CAT. 2203/E eqs. (3.10),
+    (3.11), pp. A-24/A-25), n in rpm and D_pw the pitch diameter of the rolling elements, about (d + D)/2, in mm.
+
+    SKF's rope sheave (17000/1 EN C.2, p. 224): d_m = 53.5 mm at 2 450 r/min, "ν1 is close to 12 mm²/s" (read off
+    SKF's diagram 14):
+
+    >>> round(float(reference_viscosity(2450, 53.5)), 1)
+    12.4
+    """
+    n = np.asarray(require_range("n_rpm", n_rpm, 0.0, SPEED_MAX_RPM, lo_open=True, unit="rpm"), dtype=float)
+    dpw = np.asarray(require_range("dpw_mm", dpw_mm, 0.0, 1e4, lo_open=True, unit="mm"), dtype=float)
+    return np.where(n < 1000.0, 45000.0 * n ** -0.83, 4500.0 * n ** -0.5) / np.sqrt(dpw)
+
+
 def bearing_catalog(series) -> pd.DataFrame:
     """The catalog rows of one or more series (``"62"``, ``"63"``, ``"72B"``, ``"73B"``, ``"NU2"``, ``"NU3"``,
-    or a list of them), with a column ``kind`` ("ball" or "roller")."""
+    the tapered roller ``"302"``, ``"303"``, ``"320X"``, ``"322"``, ``"323"``, or a list of them), with a column
+    ``kind`` ("ball" or "roller")."""
     names = [series] if isinstance(series, str) else list(series)
     if not names:
         raise GearDesignError(f"series must name at least one of {', '.join(SERIES)}")
@@ -239,7 +340,8 @@ def bearing_catalog(series) -> pd.DataFrame:
 def bearing_loads(rows: pd.DataFrame, fr_n, fa_n):
     """e, X, Y, P and P0 of each catalog row under Fr and Fa (N), by the row's bearing type, as a dict of
     arrays; ``axial_ok`` is False where the type cannot take the axial load (a cylindrical roller bearing
-    of type NU carries none; a deep groove ball bearing beyond the end of the e/X/Y table)."""
+    of type NU carries none; a deep groove ball bearing beyond the end of the e/X/Y table). For a tapered
+    roller bearing ``fa_n`` is its whole axial load, the induced part included (:func:`tapered_axial_loads`)."""
     n = len(rows)
     Fr = np.broadcast_to(np.asarray(fr_n, dtype=float), (n,))
     Fa = np.broadcast_to(np.asarray(fa_n, dtype=float), (n,))
@@ -258,6 +360,11 @@ def bearing_loads(rows: pd.DataFrame, fr_n, fa_n):
     ac = t == "angular_contact_ball"
     e[ac], X[ac], Y[ac] = ANGULAR_CONTACT_40["e"], ANGULAR_CONTACT_40["X"], ANGULAR_CONTACT_40["Y"]
     X0[ac], Y0[ac] = ANGULAR_CONTACT_40["X0"], ANGULAR_CONTACT_40["Y0"]
+    tr = t == "tapered_roller"
+    if tr.any():
+        e[tr] = rows["e"].to_numpy(dtype=float)[tr]
+        X[tr], Y[tr] = TAPERED_X, rows["Y"].to_numpy(dtype=float)[tr]
+        X0[tr], Y0[tr] = TAPERED_X0, rows["Y0"].to_numpy(dtype=float)[tr]
     nu = t == "cylindrical_roller"
     e[nu] = np.inf                                     # P = Fr; any axial load is refused below
     axial_ok = np.isfinite(e) | (nu & (Fa == 0))
@@ -446,8 +553,8 @@ def check_bearing(designation: str, fr_n, fa_n=0.0, n_rpm=None, life_h=None, rel
 
 def select_bearing(series, bore_mm, fr_n, fa_n=0.0, n_rpm=None, life_h=None, reliability=90.0, kappa=None,
                    e_c=None, lubrication="grease", s0_min=None) -> BearingSelection:
-    """The smallest bearing of ``series`` (one or a list: "62", "63", "72B", "73B", "NU2", "NU3") whose bore
-    fits a seat of at least ``bore_mm`` and that passes every check (life, static safety, speed, axial
+    """The smallest bearing of ``series`` (one or a list: "62", "63", "72B", "73B", "NU2", "NU3", the tapered
+    roller "302", "303", "320X", "322", "323") whose bore fits a seat of at least ``bore_mm`` and that passes every check (life, static safety, speed, axial
     load): all candidates are evaluated in one vectorised pass and ranked feasible first, then by outside
     diameter and bore. Arguments otherwise as :func:`check_bearing`; ``life_h`` is required here.
 

@@ -163,7 +163,7 @@ def key_seat_beta(sigma_B_d_mpa, keys: int = 1):
     [3.0, 1.78]
     """
     b = 3.0 * (np.asarray(sigma_B_d_mpa, dtype=float) / 1000.0) ** 0.38
-    f = 1.15 if keys == 2 else 1.0
+    f = np.where(np.asarray(keys) == 2, 1.15, 1.0)
     return b * f, (0.56 * b + 0.1) * f
 
 
@@ -200,16 +200,28 @@ def stress_concentration(kind: str, d_mm, D_mm, r_mm, loading: str):
     """
     kind = require_choice("kind", kind, ("shoulder", "groove"))
     A, B, C, z = _ALPHA[kind][require_choice("loading", loading, ("tension", "bending", "torsion"))]
-    d, D, r = float(d_mm), float(D_mm), float(r_mm)
+    scalar = np.ndim(d_mm) == 0 and np.ndim(D_mm) == 0 and np.ndim(r_mm) == 0
+    out = _alpha(kind, np.asarray(d_mm, dtype=float), np.asarray(D_mm, dtype=float), np.asarray(r_mm, dtype=float),
+                 A, B, C, z)
+    return float(out) if scalar else out
+
+
+def _alpha(kind, d, D, r, A, B, C, z):
+    """α of Table 2 on arrays (the constants per element or shared), with the table's range checked."""
     t = (D - d) / 2.0
-    if t <= 0 or d / D > 0.98:
-        raise GearDesignError(f"the {kind} must have d/D <= 0.98 (DIN 743-2 Table 2), got d = {d:g} mm, "
-                              f"D = {D:g} mm")
-    if r / t < 0.03:
-        raise GearDesignError(f"the {kind}'s radius must be r >= 0.03·t (DIN 743-2 Table 2), got r = {r:g} mm, "
-                              f"t = {t:g} mm")
-    return 1.0 + 1.0 / math.sqrt(A * r / t + 2.0 * B * r / d * (1.0 + 2.0 * r / d) ** 2
-                                 + C * (r / t) ** z * d / D)
+    bad = (t <= 0) | (d / D > 0.98)
+    if np.any(bad):
+        i = np.flatnonzero(np.broadcast_to(bad, np.broadcast(d, D).shape).ravel())[0]
+        dd, DD = np.broadcast_to(d, bad.shape).ravel()[i], np.broadcast_to(D, bad.shape).ravel()[i]
+        raise GearDesignError(f"the {kind} must have d/D <= 0.98 (DIN 743-2 Table 2), got d = {dd:g} mm, "
+                              f"D = {DD:g} mm")
+    small = r / t < 0.03
+    if np.any(small):
+        i = np.flatnonzero(np.broadcast_to(small, np.broadcast(r, t).shape).ravel())[0]
+        rr, tt = np.broadcast_to(r, small.shape).ravel()[i], np.broadcast_to(t, small.shape).ravel()[i]
+        raise GearDesignError(f"the {kind}'s radius must be r >= 0.03·t (DIN 743-2 Table 2), got r = {rr:g} mm, "
+                              f"t = {tt:g} mm")
+    return 1.0 + 1.0 / np.sqrt(A * r / t + 2.0 * B * r / d * (1.0 + 2.0 * r / d) ** 2 + C * (r / t) ** z * d / D)
 
 
 def support_number(G_per_mm, sigma_S_d_mpa, hard_surface: bool = False):
@@ -243,12 +255,18 @@ def amplitude_strength(WK, FK, psi, mean, amplitude, load_case: int = 2):
     >>> round(float(amplitude_strength(300.0, 600.0, 0.25, 0.0, 100.0)), 6)
     300.0
     """
-    if load_case == 1:
-        limit = (FK - WK) / (1.0 - psi)
-        return WK - psi * mean if mean <= limit else FK - mean
-    ratio = mean / amplitude if amplitude > 0 else (math.inf if mean > 0 else 0.0)
-    limit = (FK - WK) / (WK - FK * psi)
-    return WK / (1.0 + psi * ratio) if ratio <= limit else FK / (1.0 + ratio)
+    scalar = all(np.ndim(v) == 0 for v in (WK, FK, psi, mean, amplitude))
+    WK, FK, psi, mean, amplitude = (np.asarray(v, dtype=float) for v in (WK, FK, psi, mean, amplitude))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        if load_case == 1:
+            limit = (FK - WK) / (1.0 - psi)
+            out = np.where(mean <= limit, WK - psi * mean, FK - mean)
+        else:
+            ratio = np.where(amplitude > 0, mean / np.where(amplitude > 0, amplitude, 1.0),
+                             np.where(mean > 0, np.inf, 0.0))
+            limit = (FK - WK) / (WK - FK * psi)
+            out = np.where(ratio <= limit, WK / (1.0 + psi * ratio), FK / (1.0 + ratio))
+    return float(out) if scalar else out
 
 
 @dataclass(frozen=True)
@@ -289,7 +307,8 @@ class Notch:
 
 def _gamma_F(alpha):
     """Increase factor γ_F of the yield point at a circumferential notch (DIN 743-1:2012 Table 2)."""
-    return 1.0 if alpha < 1.5 else 1.05 if alpha < 2.0 else 1.1 if alpha < 3.0 else 1.15
+    a = np.asarray(alpha, dtype=float)
+    return np.where(a < 1.5, 1.0, np.where(a < 2.0, 1.05, np.where(a < 3.0, 1.1, 1.15)))
 
 
 @dataclass(repr=False)
@@ -302,9 +321,23 @@ class Din743Result(Result):
     S_min: float
     ok: bool
     message: str
-    factors: pd.DataFrame
+    _rows: list = field(default_factory=list, repr=False)     # the factor table's rows, made a table when asked
+    _cache: dict = field(default_factory=dict, repr=False)
     _success_field = "ok"
     _table_fields = ("factors",)
+
+    @property
+    def factors(self) -> pd.DataFrame:
+        if "factors" not in self._cache:
+            self._cache["factors"] = _pandas().DataFrame(self._rows, columns=["quantity", "symbol", "tension",
+                                                                              "bending", "torsion"])
+        return self._cache["factors"]
+
+    def to_dict(self):
+        from ..results import plain
+
+        return {"S_D": plain(self.S_D), "S_F": plain(self.S_F), "S_min": plain(self.S_min), "ok": self.ok,
+                "message": self.message, "factors": plain(self.factors), "status": self.status}
 
     def __repr__(self):
         return f"Din743Result(S_D={self.S_D:.4g}, S_F={self.S_F:.4g}, S_min={self.S_min:g}, ok={self.ok})"
@@ -336,113 +369,156 @@ def din743_safety(material, notch: Notch | None = None, *, d_mm, D_mm=None, bore
         raise GearDesignError(f"notch must be a Notch, got {type(notch).__name__}")
     hard_surface = require_bool("hard_surface", hard_surface)
     S_min = float(one_number("S_min", require_range("S_min", S_min, 0.0, 100.0, lo_open=True)))
-    kind = mat["kind"]
-    sB, sS, dB = (mat[k] for k in ("sigma_B_mpa", "sigma_S_mpa", "d_B_mm"))
     d = float(one_number("d_mm", require_range("d_mm", d_mm, 1.0, D_EFF_MAX_MM, unit="mm")))
     bore = float(one_number("bore_mm", require_range("bore_mm", bore_mm, 0.0, d, hi_open=True, unit="mm")))
     if notch.kind == "groove" and D_mm is None:
         D_mm = d + 2.0 * notch.t_mm
     D = d if D_mm is None else float(one_number("D_mm", require_range("D_mm", D_mm, d, 2 * D_EFF_MAX_MM, unit="mm")))
     d_eff = max(d, D) if d_eff_mm is None else float(d_eff_mm)
+    F_zdmax = abs(F_zdm) + abs(F_zda) if F_zdmax is None else F_zdmax
+    M_bmax = abs(M_bm) + abs(M_ba) if M_bmax is None else M_bmax
+    T_max = abs(T_m) + abs(T_a) if T_max is None else T_max
+    loads = {"F_zdm": F_zdm, "F_zda": F_zda, "M_bm": M_bm, "M_ba": M_ba, "T_m": T_m, "T_a": T_a,
+             "F_zdmax": F_zdmax, "M_bmax": M_bmax, "T_max": T_max}
+    c = _chain(mat, [notch], np.array([d]), np.array([D]), np.array([bore]), d_eff, Rz_um, K_V, hard_surface,
+               load_case, {k: np.array([float(one_number(k, v))]) for k, v in loads.items()})
+    return _result(c, 0, S_min)
+
+
+def _result(c, i, S_min) -> Din743Result:
+    """Section ``i`` of a :func:`_chain` as a :class:`Din743Result`."""
+    S_D, S_F = float(c["S_D"][i]), float(c["S_F"][i])
+    ok = S_D >= S_min and S_F >= S_min
+    worst = "fatigue" if S_D <= S_F else "static"
+    msg = (f"S_D = {S_D:.4g}, S_F = {S_F:.4g} {'>=' if ok else 'not both >='} S_min = {S_min:g}"
+           + ("" if ok else f" ({worst} safety {min(S_D, S_F):.4g} < {S_min:g})"))
+    one = lambda v: float(v[i])     # noqa: E731
+    rows = [("K_1 (tensile, yield)", "K1", c["K1B"], c["K1B"], c["K1S"]),
+            ("strength at size", "sigma_B(d)", c["sB_d"], c["sB_d"], c["sS_d"]),
+            ("stress concentration", "alpha", *(c["alpha"][k] for k in LOADINGS))]
+    for label, sym in (("notch factor", "beta"), ("size factor", "K2"), ("surface factor", "K_F"),
+                       ("total factor", "K"), ("fatigue limit", "WK"), ("mean stress sensitivity", "psi"),
+                       ("component yield", "FK"), ("mean stress", "m"), ("equivalent mean", "mv"),
+                       ("amplitude", "a"), ("amplitude strength", "ADK"), ("maximum stress", "max")):
+        rows.append((label, sym, *(c[sym][k] for k in LOADINGS)))
+    rows = [(label, sym, one(t), one(b), one(tor)) for label, sym, t, b, tor in rows]
+    return Din743Result(S_D, S_F, float(S_min), bool(ok), msg, _rows=rows)
+
+
+LOADINGS = ("tension", "bending", "torsion")
+
+
+def _chain(mat, notches, d, D, bore, d_eff, Rz_um, K_V, hard_surface, load_case, loads) -> dict:
+    """The DIN 743 chain (module docstring) for n sections at once: ``notches`` a list of n :class:`Notch`,
+    ``d``, ``D``, ``bore`` arrays (n,) (D = d where the notch has none), ``d_eff`` a number or (n,), ``loads``
+    the nine loads of :func:`din743_safety` as arrays (n,). Every factor as an array per loading, S_D, S_F."""
+    n = d.size
+    kind = mat["kind"]
+    sB, sS, dB = (mat[k] for k in ("sigma_B_mpa", "sigma_S_mpa", "d_B_mm"))
+    d_eff = np.broadcast_to(np.asarray(d_eff, dtype=float), (n,))
     require_range("d_eff_mm", d_eff, 1.0, D_EFF_MAX_MM, unit="mm")
     require_range("Rz_um", Rz_um, 1.0, 200.0, unit="µm")
     require_range("K_V", K_V, 0.5, 3.0)
     if load_case not in (1, 2):
         raise GearDesignError(f"load_case must be 1 (mean stress constant) or 2 (mean/amplitude constant), "
                               f"got {load_case!r}")
-    K1B = float(K1(d_eff, kind, "tensile", dB))
-    K1S = float(K1(d_eff, kind, "yield", dB))
+    for name, v in loads.items():
+        if not np.all(np.abs(v) <= 1e12):      # NaN fails too: then the one check that names it
+            require_range(name, v, -1e12, 1e12)
+    K1B = K1(d_eff, kind, "tensile", dB)
+    K1S = K1(d_eff, kind, "yield", dB)
     sB_d, sS_d = K1B * sB, K1S * sS
-    loadings = ("tension", "bending", "torsion")
+    kinds = np.array([nt.kind for nt in notches])
+    ones = np.ones(n)
     # notch factors β and stress concentration α (for γ_F) per loading
-    alpha = {k: notch.alpha_sigma for k in loadings}
-    alpha["torsion"] = 1.0
-    if notch.kind == "smooth":
-        beta = {k: 1.0 for k in loadings}
-    elif notch.kind in ("key", "press_fit"):
-        bs, bt = key_seat_beta(sB_d, notch.keys) if notch.kind == "key" else press_fit_beta(sB_d)
+    alpha_sigma = np.array([nt.alpha_sigma for nt in notches], dtype=float)
+    alpha = {"tension": alpha_sigma.copy(), "bending": alpha_sigma.copy(), "torsion": ones.copy()}
+    beta = {k: ones.copy() for k in LOADINGS}
+    fits = (kinds == "key") | (kinds == "press_fit")
+    if fits.any():
+        keys = np.array([nt.keys for nt in notches])
+        bs_k, bt_k = key_seat_beta(sB_d, keys)
+        bs_p, bt_p = press_fit_beta(sB_d)
+        key = kinds == "key"
+        bs, bt = np.where(key, bs_k, bs_p), np.where(key, bt_k, bt_p)
         d_BK = 40.0
-        beta = {k: float(b * K3(d_BK, b) / K3(d, b)) for k, b in zip(loadings, (bs, bs, bt))}
-        alpha = {k: 1.0 for k in loadings}
-    elif notch.kind in ("shoulder", "groove"):
-        if D <= d:
-            raise GearDesignError(f"a {notch.kind} needs D_mm > d_mm, got d = {d:g}, D = {D:g} mm")
-        t = (D - d) / 2.0
-        r = float(notch.r_mm)
-        phi = 1.0 / (4.0 * math.sqrt(t / r) + 2.0) if d / D > 0.67 else 0.0
-        g, g_t = _GRADIENT[notch.kind]
-        beta = {}
-        for k in loadings:
-            a = stress_concentration(notch.kind, d, D, r, k)
+        b_sigma = np.where(fits, bs * K3(d_BK, bs) / K3(d, bs), 1.0)
+        b_tau = np.where(fits, bt * K3(d_BK, bt) / K3(d, bt), 1.0)
+        for k, b in zip(LOADINGS, (b_sigma, b_sigma, b_tau)):
+            beta[k] = np.where(fits, b, beta[k])
+            alpha[k] = np.where(fits, 1.0, alpha[k])
+    round_notch = (kinds == "shoulder") | (kinds == "groove")
+    if round_notch.any():
+        thin = round_notch & (D <= d)
+        if thin.any():
+            i = int(np.flatnonzero(thin)[0])
+            raise GearDesignError(f"a {kinds[i]} needs D_mm > d_mm, got d = {d[i]:g}, D = {D[i]:g} mm")
+        j = np.flatnonzero(round_notch)
+        dj, Dj = d[j], D[j]
+        r = np.array([float(notches[i].r_mm) for i in j])
+        t = (Dj - dj) / 2.0
+        phi = np.where(dj / Dj > 0.67, 1.0 / (4.0 * np.sqrt(t / r) + 2.0), 0.0)
+        shoulder = kinds[j] == "shoulder"
+        g = np.where(shoulder, _GRADIENT["shoulder"][0], _GRADIENT["groove"][0])
+        g_t = np.where(shoulder, _GRADIENT["shoulder"][1], _GRADIENT["groove"][1])
+        for k in LOADINGS:
+            consts = np.where(shoulder[:, None], _ALPHA["shoulder"][k], _ALPHA["groove"][k])
+            a = np.empty(j.size)
+            for name, rows in (("shoulder", shoulder), ("groove", ~shoulder)):
+                if rows.any():
+                    A, B, C, z = (consts[rows, m] for m in range(4))
+                    a[rows] = _alpha(name, dj[rows], Dj[rows], r[rows], A, B, C, z)
             G = g_t / r if k == "torsion" else g * (1.0 + phi) / r
-            n = min(float(support_number(G, sS_d, hard_surface)), a)
-            beta[k] = a / n
-            alpha[k] = a
-        alpha["torsion"] = 1.0
-    else:
-        beta = {"tension": float(notch.beta_sigma), "bending": float(notch.beta_sigma),
-                "torsion": float(notch.beta_tau)}
-    if notch.kind != "given" and notch.beta_sigma is not None:
-        beta["tension"] = beta["bending"] = float(notch.beta_sigma)
-    if notch.kind != "given" and notch.beta_tau is not None:
-        beta["torsion"] = float(notch.beta_tau)
-    if notch.kind in ("key", "press_fit"):
-        KF = {k: 1.0 for k in loadings}                      # DIN 743-2 Table 1: included in β
-    else:
-        kfs, kft = (float(v) for v in surface_factor(Rz_um, sB_d))
-        KF = {"tension": kfs, "bending": kfs, "torsion": kft}
-    K2d = {k: float(K2(d, k)) for k in loadings}
-    K = {k: float(total_factor(beta[k], K2d[k], KF[k], K_V)) for k in loadings}
+            nn = np.minimum(support_number(G, sS_d[j], hard_surface), a)
+            beta[k][j] = a / nn
+            alpha[k][j] = a
+        alpha["torsion"][j] = 1.0
+    bsig = np.array([np.nan if nt.beta_sigma is None else nt.beta_sigma for nt in notches], dtype=float)
+    btau = np.array([np.nan if nt.beta_tau is None else nt.beta_tau for nt in notches], dtype=float)
+    # kind "given": the user's β; for the other kinds a given β overrides the computed one
+    for k, b in zip(LOADINGS, (bsig, bsig, btau)):
+        beta[k] = np.where(~np.isnan(b), b, beta[k])
+    kfs, kft = surface_factor(Rz_um, sB_d)
+    KF = {"tension": np.where(fits, 1.0, kfs), "bending": np.where(fits, 1.0, kfs),   # DIN 743-2 Table 1: in β
+          "torsion": np.where(fits, 1.0, kft)}
+    K2_bending = K2(d, "bending")            # K_2 of torsion is that of bending (DIN 743-2 eq. (16))
+    K2d = {"tension": np.ones(n), "bending": K2_bending, "torsion": K2_bending}
+    K = {k: total_factor(beta[k], K2d[k], KF[k], K_V) for k in LOADINGS}
     WK = {"tension": 0.4 * sB_d / K["tension"], "bending": 0.5 * sB_d / K["bending"],
           "torsion": 0.3 * sB_d / K["torsion"]}
-    psi = {k: WK[k] / (2.0 * sB_d - WK[k]) for k in loadings}
+    psi = {k: WK[k] / (2.0 * sB_d - WK[k]) for k in LOADINGS}
     hollow = bore > 0
-    K2F = ({"tension": 1.0, "bending": 1.0, "torsion": 1.0} if hard_surface else
-           {"tension": 1.0, "bending": 1.1 if hollow else 1.2, "torsion": 1.0 if hollow else 1.2})
-    circumferential = notch.kind in ("shoulder", "groove", "smooth", "given")
-    gF = {k: (1.0 if (hard_surface or not circumferential or k == "torsion") else _gamma_F(alpha[k]))
-          for k in loadings}
-    FK = {k: K1S * K2F[k] * gF[k] * sS for k in loadings}
-    FK["torsion"] /= math.sqrt(3.0)
+    K2F = ({"tension": ones, "bending": ones, "torsion": ones} if hard_surface else
+           {"tension": ones, "bending": np.where(hollow, 1.1, 1.2), "torsion": np.where(hollow, 1.0, 1.2)})
+    circumferential = np.isin(kinds, ("shoulder", "groove", "smooth", "given"))
+    gF = {k: (ones if (hard_surface or k == "torsion") else np.where(circumferential, _gamma_F(alpha[k]), 1.0))
+          for k in LOADINGS}
+    FK = {k: K1S * K2F[k] * gF[k] * sS for k in LOADINGS}
+    FK["torsion"] = FK["torsion"] / math.sqrt(3.0)
     # nominal stresses
     area = math.pi / 4.0 * (d * d - bore * bore)
     Wb = math.pi / 32.0 * (d ** 4 - bore ** 4) / d
     Wt = 2.0 * Wb
-    F_zdmax = abs(F_zdm) + abs(F_zda) if F_zdmax is None else F_zdmax
-    M_bmax = abs(M_bm) + abs(M_ba) if M_bmax is None else M_bmax
-    T_max = abs(T_m) + abs(T_a) if T_max is None else T_max
-    for name, v in (("F_zdm", F_zdm), ("F_zda", F_zda), ("M_bm", M_bm), ("M_ba", M_ba), ("T_m", T_m),
-                    ("T_a", T_a), ("F_zdmax", F_zdmax), ("M_bmax", M_bmax), ("T_max", T_max)):
-        require_range(name, v, -1e12, 1e12)
-    m = {"tension": F_zdm / area, "bending": 1000.0 * M_bm / Wb, "torsion": 1000.0 * T_m / Wt}
-    a = {"tension": abs(F_zda) / area, "bending": 1000.0 * abs(M_ba) / Wb, "torsion": 1000.0 * abs(T_a) / Wt}
-    mx = {"tension": abs(F_zdmax) / area, "bending": 1000.0 * abs(M_bmax) / Wb, "torsion": 1000.0 * abs(T_max) / Wt}
-    s_mv = math.sqrt((m["tension"] + m["bending"]) ** 2 + 3.0 * m["torsion"] ** 2)
+    L = loads
+    m = {"tension": L["F_zdm"] / area, "bending": 1000.0 * L["M_bm"] / Wb, "torsion": 1000.0 * L["T_m"] / Wt}
+    a = {"tension": np.abs(L["F_zda"]) / area, "bending": 1000.0 * np.abs(L["M_ba"]) / Wb,
+         "torsion": 1000.0 * np.abs(L["T_a"]) / Wt}
+    mx = {"tension": np.abs(L["F_zdmax"]) / area, "bending": 1000.0 * np.abs(L["M_bmax"]) / Wb,
+          "torsion": 1000.0 * np.abs(L["T_max"]) / Wt}
+    s_mv = np.sqrt((m["tension"] + m["bending"]) ** 2 + 3.0 * m["torsion"] ** 2)
     mv = {"tension": s_mv, "bending": s_mv, "torsion": s_mv / math.sqrt(3.0)}
-    ADK = {k: amplitude_strength(WK[k], FK[k], psi[k], mv[k], a[k], load_case) for k in loadings}
+    ADK = {k: amplitude_strength(WK[k], FK[k], psi[k], mv[k], a[k], load_case) for k in LOADINGS}
 
     def _safety(num, den):
-        def q(k):     # a stress over its strength; no stress: no share, whatever the strength
-            return 0.0 if num[k] == 0 else (num[k] / den[k] if den[k] > 0 else math.inf)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            # a stress over its strength; no stress: no share, whatever the strength
+            q = {k: np.where(num[k] == 0, 0.0, np.where(den[k] > 0, num[k] / den[k], np.inf)) for k in LOADINGS}
+            s = np.hypot(q["tension"] + q["bending"], q["torsion"])
+            return np.where(s == 0, np.inf, 1.0 / s)
 
-        s = math.hypot(q("tension") + q("bending"), q("torsion"))
-        return math.inf if s == 0 else 1.0 / s
-
-    S_D, S_F = _safety(a, ADK), _safety(mx, FK)
-    ok = S_D >= S_min and S_F >= S_min
-    worst = "fatigue" if S_D <= S_F else "static"
-    msg = (f"S_D = {S_D:.4g}, S_F = {S_F:.4g} {'>=' if ok else 'not both >='} S_min = {S_min:g}"
-           + ("" if ok else f" ({worst} safety {min(S_D, S_F):.4g} < {S_min:g})"))
-    rows = [("K_1 (tensile, yield)", "K1", K1B, K1B, K1S), ("strength at size", "sigma_B(d)", sB_d, sB_d, sS_d),
-            ("stress concentration", "alpha", alpha["tension"], alpha["bending"], alpha["torsion"])]
-    for label, sym, dct in (("notch factor", "beta", beta), ("size factor", "K2", K2d), ("surface factor", "K_F", KF),
-                            ("total factor", "K", K), ("fatigue limit", "WK", WK),
-                            ("mean stress sensitivity", "psi", psi), ("component yield", "FK", FK),
-                            ("mean stress", "m", m), ("equivalent mean", "mv", mv), ("amplitude", "a", a),
-                            ("amplitude strength", "ADK", ADK), ("maximum stress", "max", mx)):
-        rows.append((label, sym, dct["tension"], dct["bending"], dct["torsion"]))
-    factors = _pandas().DataFrame(rows, columns=["quantity", "symbol", "tension", "bending", "torsion"])
-    return Din743Result(S_D, S_F, float(S_min), bool(ok), msg, factors)
+    return {"K1B": K1B, "K1S": K1S, "sB_d": sB_d, "sS_d": sS_d, "alpha": alpha, "beta": beta, "K2": K2d,
+            "K_F": KF, "K": K, "WK": WK, "psi": psi, "FK": FK, "m": m, "mv": mv, "a": a, "ADK": ADK, "max": mx,
+            "S_D": _safety(a, ADK), "S_F": _safety(mx, FK)}
 
 
 def least_diameter_mm(material, notch: Notch | None = None, *, S_min=S_MIN, D_over_d=None, r_over_d=None,
@@ -502,23 +578,41 @@ class ShaftNotch:
 class ShaftSafety(Result):
     """DIN 743 safeties at each checked section of an analysed shaft: ``table`` one row per section
     (x, notch, d, D, the moment, torque and axial force there, S_D, S_F, ok); ``ok`` when every section
-    reaches S_min; ``results`` the :class:`Din743Result` of each."""
+    reaches S_min; ``results`` the :class:`Din743Result` of each (both made when first asked for)."""
 
     ok: bool
     message: str
     S_min: float
-    table: pd.DataFrame
-    results: tuple = ()
+    _columns: dict = field(default_factory=dict, repr=False)     # the table's columns
+    _chain: dict = field(default_factory=dict, repr=False)       # every factor of every section
+    _cache: dict = field(default_factory=dict, repr=False)
     _success_field = "ok"
     _table_fields = ("table",)
 
+    @property
+    def table(self) -> pd.DataFrame:
+        if "table" not in self._cache:
+            self._cache["table"] = _pandas().DataFrame(self._columns, columns=list(_TABLE_COLUMNS))
+        return self._cache["table"]
+
+    @property
+    def results(self) -> tuple:
+        if "results" not in self._cache:
+            self._cache["results"] = tuple(_result(self._chain, i, self.S_min)
+                                           for i in range(len(self._columns["x_mm"])))
+        return self._cache["results"]
+
     def to_dict(self):
-        out = super().to_dict()
-        out.pop("results", None)
-        return out
+        from ..results import plain
+
+        return {"ok": self.ok, "message": self.message, "S_min": plain(self.S_min), "table": plain(self.table),
+                "status": self.status}
 
     def __repr__(self):
         return f"ShaftSafety(ok={self.ok}, {self.message})"
+
+
+_TABLE_COLUMNS = ("name", "x_mm", "notch", "d_mm", "D_mm", "M_nm", "T_nm", "N_n", "S_D", "S_F", "ok")
 
 
 def shaft_safety(analysis, notches, material, *, peak_factor=1.0, torque_amplitude=0.0, Rz_um=6.3,
@@ -528,63 +622,68 @@ def shaft_safety(analysis, notches, material, *, peak_factor=1.0, torque_amplitu
     The shaft rotates under fixed loads: the bending stress is fully reversed (amplitude = the resultant
     moment, mean 0); the torque is steady with the amplitude ``torque_amplitude``·T; the axial force is a
     steady mean. Maximum loads for the static proof: ``peak_factor`` × (mean + amplitude). d_eff defaults to
-    the shaft's largest diameter (a shaft turned from one bar)."""
+    the shaft's largest diameter (a shaft turned from one bar). All sections go through the chain in one
+    vectorised pass."""
     from .shaft_beam import ShaftAnalysis
 
     if not isinstance(analysis, ShaftAnalysis):
         raise GearDesignError(f"analysis must be a ShaftAnalysis, got {type(analysis).__name__}")
     require_range("peak_factor", peak_factor, 1.0, 100.0)
     require_range("torque_amplitude", torque_amplitude, 0.0, 10.0)
+    mat = _material(material)
+    hard_surface = require_bool("hard_surface", hard_surface)
+    S_min = float(one_number("S_min", require_range("S_min", S_min, 0.0, 100.0, lo_open=True)))
     model = analysis.model
-    diag = analysis.diagrams
-    x = diag["x_mm"].to_numpy()
-    d_eff = max(s[1] for s in model.sections) if d_eff_mm is None else d_eff_mm
-    rows, results = [], []
+    notches = list(notches)
+    if not notches:
+        raise GearDesignError("notches must list at least one section to check")
     for i, sn in enumerate(notches):
         if not isinstance(sn, ShaftNotch):
             raise GearDesignError(f"notches[{i}] must be a ShaftNotch, got {type(sn).__name__}")
         require_range(f"notches[{i}].x_mm", sn.x_mm, 0.0, model.length_mm, unit="mm")
-        at = np.flatnonzero(x == sn.x_mm)
-        if at.size == 0:
-            # between nodes the diagrams are linear: interpolate (exact)
-            Mb = float(np.interp(sn.x_mm, x, diag["M_nm"].to_numpy()))
-            T = abs(float(np.interp(sn.x_mm, x, diag["T_nm"].to_numpy())))
-            N = float(np.interp(sn.x_mm, x, diag["N_n"].to_numpy()))
-        else:
-            # at a node (a load, a step) the larger of its left and right limits
-            Mb = float(diag["M_nm"].to_numpy()[at].max())
-            T = float(np.abs(diag["T_nm"].to_numpy()[at]).max())
-            n_at = diag["N_n"].to_numpy()[at]
-            N = float(n_at[np.argmax(np.abs(n_at))])
-        (dl, bl), (dr, br) = model.diameter_at(sn.x_mm, "left"), model.diameter_at(sn.x_mm, "right")
-        dl, dr, bl, br = float(dl), float(dr), float(bl), float(br)
-        nt = sn.notch
-        if nt.kind == "shoulder":
-            d, D, bore = min(dl, dr), max(dl, dr), (bl if dl <= dr else br)
-            if D == d:
-                raise GearDesignError(f"notches[{i}]: no diameter step at x = {sn.x_mm:g} mm for a shoulder")
-        elif nt.kind == "groove":
-            D, bore = dr, br
-            d = D - 2.0 * nt.t_mm
-        else:
-            d, D, bore = min(dl, dr), None, (bl if dl <= dr else br)
-        r = din743_safety(material, nt, d_mm=d, D_mm=D, bore_mm=bore, d_eff_mm=d_eff, Rz_um=Rz_um, K_V=K_V,
-                          hard_surface=hard_surface, load_case=load_case, F_zdm=N, M_ba=Mb, T_m=T,
-                          T_a=torque_amplitude * T, F_zdmax=peak_factor * abs(N), M_bmax=peak_factor * Mb,
-                          T_max=peak_factor * T * (1.0 + torque_amplitude), S_min=S_min)
-        results.append(r)
-        rows.append({"name": sn.name or f"{nt.kind} at {sn.x_mm:g}", "x_mm": sn.x_mm, "notch": nt.kind, "d_mm": d,
-                     "D_mm": D if D is not None else d, "M_nm": Mb, "T_nm": T, "N_n": N, "S_D": r.S_D, "S_F": r.S_F,
-                     "ok": r.ok})
-    table = _pandas().DataFrame(rows, columns=["name", "x_mm", "notch", "d_mm", "D_mm", "M_nm", "T_nm", "N_n", "S_D",
-                                        "S_F", "ok"])
-    if table.empty:
-        raise GearDesignError("notches must list at least one section to check")
-    ok = bool(table["ok"].all())
-    worst = table.assign(s=np.minimum(table["S_D"], table["S_F"])).sort_values("s").iloc[0]
-    msg = (f"least safety {min(worst['S_D'], worst['S_F']):.4g} at {worst['name']} "
-           f"(S_D {worst['S_D']:.4g}, S_F {worst['S_F']:.4g}; S_min {S_min:g})")
-    return ShaftSafety(ok, msg, float(S_min), table, tuple(results))
+    diag = analysis._arrays["diagrams"]
+    x = diag["x_mm"]
+    xs = np.array([float(sn.x_mm) for sn in notches])
+    M_all, T_all, N_all = diag["M_nm"], np.abs(diag["T_nm"]), diag["N_n"]
+    # between nodes the diagrams are linear: interpolate (exact); at a node (a load, a step) the larger of its
+    # left and right limits (the axial force: the one of larger magnitude)
+    Mb, T, N = np.interp(xs, x, M_all), np.abs(np.interp(xs, x, diag["T_nm"])), np.interp(xs, x, N_all)
+    at = x[:, None] == xs[None, :]
+    node = at.any(axis=0)
+    if node.any():
+        Mb = np.where(node, np.where(at, M_all[:, None], -np.inf).max(axis=0), Mb)
+        T = np.where(node, np.where(at, T_all[:, None], -np.inf).max(axis=0), T)
+        pick = np.where(at, np.abs(N_all)[:, None], -1.0).argmax(axis=0)
+        N = np.where(node, N_all[pick], N)
+    (dl, bl), (dr, br) = model.diameter_at(xs, "left"), model.diameter_at(xs, "right")
+    kinds = np.array([sn.notch.kind for sn in notches])
+    shoulder, groove = kinds == "shoulder", kinds == "groove"
+    flat = shoulder & (dl == dr)
+    if flat.any():
+        i = int(np.flatnonzero(flat)[0])
+        raise GearDesignError(f"notches[{i}]: no diameter step at x = {xs[i]:g} mm for a shoulder")
+    t_groove = np.array([sn.notch.t_mm if sn.notch.kind == "groove" else 0.0 for sn in notches], dtype=float)
+    thin = np.minimum(dl, dr)
+    bore_thin = np.where(dl <= dr, bl, br)
+    d = np.where(groove, dr - 2.0 * t_groove, thin)
+    D = np.where(shoulder, np.maximum(dl, dr), np.where(groove, dr, d))
+    bore = np.where(groove, br, bore_thin)
+    d_eff = max(s[1] for s in model.sections) if d_eff_mm is None else d_eff_mm
+    require_range("d_mm", d, 1.0, D_EFF_MAX_MM, unit="mm")
+    loads = {"F_zdm": N, "F_zda": np.zeros_like(N), "M_bm": np.zeros_like(N), "M_ba": Mb, "T_m": T,
+             "T_a": torque_amplitude * T, "F_zdmax": peak_factor * np.abs(N), "M_bmax": peak_factor * Mb,
+             "T_max": peak_factor * T * (1.0 + torque_amplitude)}
+    c = _chain(mat, [sn.notch for sn in notches], d, D, bore, d_eff, Rz_um, K_V, hard_surface, load_case, loads)
+    S_D, S_F = c["S_D"], c["S_F"]
+    ok_rows = (S_D >= S_min) & (S_F >= S_min)
+    names = [sn.name or f"{sn.notch.kind} at {sn.x_mm:g}" for sn in notches]
+    columns = {"name": names, "x_mm": xs, "notch": kinds, "d_mm": d, "D_mm": D, "M_nm": Mb, "T_nm": T, "N_n": N,
+               "S_D": S_D, "S_F": S_F, "ok": ok_rows}
+    ok = bool(ok_rows.all())
+    w = int(np.argmin(np.minimum(S_D, S_F)))
+    msg = (f"least safety {min(S_D[w], S_F[w]):.4g} at {names[w]} "
+           f"(S_D {S_D[w]:.4g}, S_F {S_F[w]:.4g}; S_min {S_min:g})")
+    return ShaftSafety(ok, msg, float(S_min), _columns=columns, _chain=c)
 
 
 def least_shaft_scale(model, notches, material, *, S_min=S_MIN, tol=1e-4, **kw) -> float:
@@ -600,7 +699,7 @@ def least_shaft_scale(model, notches, material, *, S_min=S_MIN, tol=1e-4, **kw) 
                                        None if n.notch.t_mm is None else n.notch.t_mm * s, n.notch.keys,
                                        n.notch.beta_sigma, n.notch.beta_tau, n.notch.alpha_sigma), n.name)
               for n in notches]
-        t = shaft_safety(analyse_shaft(m, points=20, shaft_mass=False), sn, material, S_min=S_min, **kw).table
+        t = shaft_safety(analyse_shaft(m, points=20, shaft_mass=False), sn, material, S_min=S_min, **kw)._columns
         return float(np.minimum(t["S_D"], t["S_F"]).min())
 
     dmax, dmin = max(s[1] for s in model.sections), min(s[1] for s in model.sections)

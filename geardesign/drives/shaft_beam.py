@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -180,20 +181,24 @@ class ShaftModel:
     def length_mm(self) -> float:
         return float(sum(s[0] for s in self.sections))
 
+    @cached_property
+    def _section_arrays(self):
+        """(section ends 0 … L, outside diameters, bores) as arrays, made once (the model is frozen)."""
+        return (np.concatenate([[0.0], np.cumsum([s[0] for s in self.sections])]),
+                np.array([s[1] for s in self.sections]), np.array([s[2] for s in self.sections]))
+
     @property
     def section_ends_mm(self) -> np.ndarray:
         """x of every section boundary, 0 … L."""
-        return np.concatenate([[0.0], np.cumsum([s[0] for s in self.sections])])
+        return self._section_arrays[0].copy()
 
     def diameter_at(self, x_mm, side: str = "right"):
         """Outside diameter and bore (mm) at x; at a step, the section to the ``side`` of it."""
-        ends = self.section_ends_mm
+        ends, d, b = self._section_arrays
         x = np.asarray(x_mm, dtype=float)
         i = np.searchsorted(ends, x, side=side) - 1
-        i = np.clip(i, 0, len(self.sections) - 1)
-        d = np.array([s[1] for s in self.sections])[i]
-        b = np.array([s[2] for s in self.sections])[i]
-        return d, b
+        i = np.minimum(np.maximum(i, 0), len(self.sections) - 1)
+        return d[i], b[i]
 
     def with_diameters(self, scale: float) -> "ShaftModel":
         """The same shaft with every diameter (and bore) times ``scale``."""
@@ -295,20 +300,58 @@ class ShaftAnalysis(Result):
     twice (left and right limit). ``reactions``: per support, Ry_n, Rz_n, Rx_n, R_n (the radial resultant).
     ``elements``: per load, its deflection and slope (resultant and per plane).
     ``critical_speed_rpm`` is Rayleigh's (upper) estimate, ``critical_speed_dunkerley_rpm`` Dunkerley's
-    (lower)."""
+    (lower).
+
+    The tables are made from the solution's arrays when first asked for, and the critical speeds (a solve of
+    their own) computed then too: a drive that needs only the reactions and moments does not pay for them."""
 
     model: ShaftModel
-    reactions: pd.DataFrame
-    diagrams: pd.DataFrame
-    elements: pd.DataFrame
     max_deflection_mm: float
-    critical_speed_rpm: float
-    critical_speed_dunkerley_rpm: float
-    mass_kg: float
     success: bool = True
     message: str = "analysed"
     _planes: tuple = field(default=(), repr=False)
+    _arrays: dict = field(default_factory=dict, repr=False)     # the solution: diagram, reaction, element columns
+    _shaft_mass: bool = True
+    _cache: dict = field(default_factory=dict, repr=False)
     _table_fields = ("diagrams", "reactions", "elements")
+
+    def _table(self, name):
+        if name not in self._cache:
+            self._cache[name] = _pandas().DataFrame(self._arrays[name])
+        return self._cache[name]
+
+    @property
+    def diagrams(self) -> pd.DataFrame:
+        return self._table("diagrams")
+
+    @property
+    def reactions(self) -> pd.DataFrame:
+        return self._table("reactions")
+
+    @property
+    def elements(self) -> pd.DataFrame:
+        if "elements" not in self._cache and not self.model.loads:
+            self._cache["elements"] = _pandas().DataFrame(
+                columns=["name", "x_mm", "wy_mm", "wz_mm", "w_mm", "thy_rad", "thz_rad", "th_rad"])
+        return self._table("elements")
+
+    def _critical(self):
+        if "critical" not in self._cache:
+            n_r, n_d, shaft_kg = _critical_speeds(self.model, self._shaft_mass)
+            self._cache["critical"] = (n_r, n_d, shaft_kg + sum(ld.mass_kg for ld in self.model.loads))
+        return self._cache["critical"]
+
+    @property
+    def critical_speed_rpm(self) -> float:
+        return self._critical()[0]
+
+    @property
+    def critical_speed_dunkerley_rpm(self) -> float:
+        return self._critical()[1]
+
+    @property
+    def mass_kg(self) -> float:
+        return self._critical()[2]
 
     def deflection_at(self, x_mm) -> pd.DataFrame:
         """Deflection (mm) and slope (rad) at any positions x, per plane and resultant."""
@@ -318,10 +361,14 @@ class ShaftAnalysis(Result):
                              "thy_rad": thy, "thz_rad": thz, "th_rad": np.hypot(thy, thz)})
 
     def to_dict(self) -> dict:
-        out = super().to_dict()
-        out.pop("model", None)
-        out.pop("diagrams", None)     # hundreds of rows: to_frame() has them
-        return out
+        # the diagrams (hundreds of rows) are left out: to_frame() has them
+        from ..results import plain
+
+        return {"reactions": plain(self.reactions), "elements": plain(self.elements),
+                "max_deflection_mm": plain(self.max_deflection_mm), "critical_speed_rpm": plain(self.critical_speed_rpm),
+                "critical_speed_dunkerley_rpm": plain(self.critical_speed_dunkerley_rpm),
+                "mass_kg": plain(self.mass_kg), "success": self.success, "message": self.message,
+                "status": self.status}
 
     def __repr__(self) -> str:
         r = self.reactions
@@ -430,25 +477,21 @@ def analyse_shaft(model: ShaftModel, points: int = POINTS_DEFAULT, shaft_mass: b
     Rx = -fx.sum() + 0.0     # + 0.0: no negative zero in the output
     N = -(act @ fx if loads else np.zeros(x.size)) - Rx * _active(x, right, [supports[model.axial_support]])[:, 0]
     Mz, My = M[0] / 1000.0, M[1] / 1000.0
-    diagrams = _pandas().DataFrame({
+    diagrams = {
         "x_mm": x, "My_nm": My, "Mz_nm": Mz, "M_nm": np.hypot(My, Mz), "T_nm": T, "N_n": N,
         "wy_mm": w[0], "wz_mm": w[1], "w_mm": np.hypot(w[0], w[1]),
-        "thy_rad": theta[0], "thz_rad": theta[1], "th_rad": np.hypot(theta[0], theta[1]), "d_mm": d})
+        "thy_rad": theta[0], "thz_rad": theta[1], "th_rad": np.hypot(theta[0], theta[1]), "d_mm": d}
     rx = np.zeros(supports.size)
     rx[model.axial_support] = Rx
-    reactions = _pandas().DataFrame({"x_mm": supports, "Ry_n": R[0], "Rz_n": R[1], "Rx_n": rx,
-                              "R_n": np.hypot(R[0], R[1])})
+    reactions = {"x_mm": supports, "Ry_n": R[0], "Rz_n": R[1], "Rx_n": rx, "R_n": np.hypot(R[0], R[1])}
+    arrays = {"diagrams": diagrams, "reactions": reactions}
     if loads:
         (thy, wy), (thz, wz) = (p.at(xf) for p in planes)
-        elements = _pandas().DataFrame({"name": [ld.name or f"load {i}" for i, ld in enumerate(loads)], "x_mm": xf,
-                                 "wy_mm": wy, "wz_mm": wz, "w_mm": np.hypot(wy, wz), "thy_rad": thy,
-                                 "thz_rad": thz, "th_rad": np.hypot(thy, thz)})
-    else:
-        elements = _pandas().DataFrame(columns=["name", "x_mm", "wy_mm", "wz_mm", "w_mm", "thy_rad", "thz_rad", "th_rad"])
-    n_r, n_d, shaft_kg = _critical_speeds(model, shaft_mass)
-    mass = shaft_kg + sum(ld.mass_kg for ld in loads)
-    return ShaftAnalysis(model, reactions, diagrams, elements, float(np.hypot(w[0], w[1]).max()), n_r, n_d, mass,
-                         _planes=planes)
+        arrays["elements"] = {"name": [ld.name or f"load {i}" for i, ld in enumerate(loads)], "x_mm": xf,
+                              "wy_mm": wy, "wz_mm": wz, "w_mm": np.hypot(wy, wz), "thy_rad": thy,
+                              "thz_rad": thz, "th_rad": np.hypot(thy, thz)}
+    return ShaftAnalysis(model, float(diagrams["w_mm"].max()), _planes=planes, _arrays=arrays,
+                         _shaft_mass=shaft_mass)
 
 
 def _to_right(x, right, values):

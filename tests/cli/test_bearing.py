@@ -46,8 +46,27 @@ def test_nothing_passes(capsys):
     (["--bore", "40", "--fr", "3", "--speed", "100"], "--life-h"),
     (["--designation", "6208", "--fr", "3", "--speed", "100", "--kappa", "1"], "--kappa"),
     (["--designation", "6208", "--fr", "3", "--speed", "100", "--kappa", "1", "--ec", "2"], "--ec"),
+    (["--type", "tapered", "--series", "62", "--bore", "40", "--fr", "3", "--speed", "100", "--life-h", "100"],
+     "--series"),
+    (["--type", "tapered", "--designation", "6208", "--fr", "3", "--speed", "100"], "--type"),
 ])
 def test_bad_input_names_the_option(argv, option, capsys):
     assert main(["bearing", *argv]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and option in err[0] and "Traceback" not in err[0]
+
+
+def test_tapered_type_selects_from_every_tapered_series(capsys):
+    """--type tapered: all of 302, 303, 320X, 322, 323 (SKF 17000 tables); 30206 (C = 50 kN, e = 0.37, Y = 1.6)
+    under Fr 4 kN, Fa 2 kN: Fa/Fr = 0.5 > e, P = 0.4 Fr + 1.6 Fa = 4 800 N, L10h = 10^6 (50/4.8)^(10/3)/60 000."""
+    assert main(["bearing", "--type", "tapered", "--designation", "30206", "--fr", "4000", "--fa", "2000",
+                 "--speed", "1000", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["P_n"] == pytest.approx(0.4 * 4000 + 1.6 * 2000, rel=1e-12)
+    assert data["L10h"] == pytest.approx(1e6 * (50 / 4.8) ** (10 / 3) / 60000, rel=1e-12)
+    assert main(["bearing", "--type", "tapered", "--bore", "30", "--fr", "8000", "--fa", "3000", "--speed", "1000",
+                 "--life-h", "20000", "--json", "--top", "0"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    series = {c["series"] for c in data["candidates"]}
+    assert series == {"302", "303", "320X", "322", "323"}
+    assert data["bearing"]["series"] in series and data["bearing"]["d_mm"] >= 30

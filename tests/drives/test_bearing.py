@@ -283,3 +283,152 @@ def test_modified_life_and_bad_inputs():
         b.select_bearing("64", 40, 1000, 0, 100, life_h=1000)
     with pytest.raises(GearDesignError, match="bore_mm"):
         b.select_bearing("62", 500, 1000, 0, 100, life_h=1000)
+
+
+# --- tapered roller bearings ------------------------------------------------------------------------------
+
+def _axial_loads_by_table_7(FrA, FrB, YA, YB, Ka):
+    """SKF 17000/1 EN Table 7 (p. 682), its six load cases typed out one by one; Ka >= 0 toward B (cases 1),
+    Ka < 0 toward A (cases 2, with K = |Ka|)."""
+    if Ka >= 0:
+        if FrA / YA >= FrB / YB:                                   # case 1a
+            FaA = 0.5 * FrA / YA
+            return FaA, FaA + Ka
+        if Ka >= 0.5 * (FrB / YB - FrA / YA):                      # case 1b
+            FaA = 0.5 * FrA / YA
+            return FaA, FaA + Ka
+        FaB = 0.5 * FrB / YB                                       # case 1c
+        return FaB - Ka, FaB
+    K = -Ka
+    if FrA / YA <= FrB / YB:                                       # case 2a
+        FaB = 0.5 * FrB / YB
+        return FaB + K, FaB
+    if K >= 0.5 * (FrA / YA - FrB / YB):                           # case 2b
+        FaB = 0.5 * FrB / YB
+        return FaB + K, FaB
+    FaA = 0.5 * FrA / YA                                           # case 2c
+    return FaA, FaA - K
+
+
+def test_ntn_example_4_tapered_roller_pair():
+    """NTN CAT. 2203/E Example 4 (p. A-44): 32907XU and 32908XU around a spur gear. The shaft's reactions
+    (printed 5.98 and 4.18 kN) by our beam, the induced load 1.45 kN passed to bearing II, PrII = 4.67 kN,
+    the lives 1 900 h and 7 550 h (nomogram: 1 %) and the pair's 1 600 h."""
+    from geardesign.drives.shaft_beam import ShaftLoad, ShaftModel, analyse_shaft
+
+    one, two = EXAMPLES.loc["ntn_example_4_bearing_I"], EXAMPLES.loc["ntn_example_4_bearing_II"]
+    Kt = 19.1e6 * 150 / (150 * 2000) / 1000                        # kN, NTN's eq. (4.3), H = 150 kW
+    Kr = math.hypot(Kt, Kt * math.tan(math.radians(20)))
+    assert round(Kr, 2) == 10.16
+    shaft = analyse_shaft(ShaftModel([(170.0, 40.0)], [0.0, 170.0], [ShaftLoad(70.0, fy_n=-1000 * Kr)]))
+    Fr = shaft.reactions["Ry_n"].to_numpy() / 1000
+    assert [round(float(v), 2) for v in Fr] == [one.Fr_kn, two.Fr_kn]
+    FaI, FaII = b.tapered_axial_loads(one.Fr_kn, two.Fr_kn, 2.06, two.printed_Y)
+    assert round(float(FaII), 2) == two.Fa_kn
+    # NTN writes FaI = 0 (it counts only the load passed on); SKF's table gives bearing I its own induced load:
+    # below e·Fr either way, so PrI = FrI
+    assert float(FaI) / one.Fr_kn < one.printed_e
+    P = b.equivalent_dynamic_load([one.Fr_kn, two.Fr_kn], [float(FaI), float(FaII)], one.printed_e,
+                                  b.TAPERED_X, [2.06, two.printed_Y])
+    assert float(P[0]) == one.printed_P_kn
+    assert float(P[1]) == pytest.approx(two.printed_P_kn, abs=0.01)
+    lives = b.rating_life_hours(b.basic_rating_life([one.C_kn, two.C_kn], 1000 * P, b.LIFE_EXPONENT["roller"]),
+                                2000)
+    assert lives.tolist() == pytest.approx([one.printed_L10h, two.printed_L10h], rel=0.01)
+    assert round(float(b.system_life([one.printed_L10h, two.printed_L10h], "roller")), -2) == 1600
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(0.0, 1e5), st.floats(0.0, 1e5), st.floats(0.7, 2.5), st.floats(0.7, 2.5), st.floats(-5e4, 5e4))
+def test_tapered_axial_loads_against_skf_table_7(FrA, FrB, YA, YB, Ka):
+    got = b.tapered_axial_loads(FrA, FrB, YA, YB, Ka)
+    want = _axial_loads_by_table_7(FrA, FrB, YA, YB, Ka)
+    assert [float(g) for g in got] == pytest.approx(list(want), rel=1e-9, abs=1e-9)
+    # the shaft's axial balance: the bearings' loads differ by the external force; neither is below its own
+    # induced load
+    assert float(got[1] - got[0]) == pytest.approx(Ka, rel=1e-9, abs=1e-7)
+    assert float(got[0]) >= 0.5 * FrA / YA - 1e-9 and float(got[1]) >= 0.5 * FrB / YB - 1e-9
+
+
+def test_tapered_check_matches_a_hand_calculation_on_random_cases():
+    """check_bearing on 200 random tapered cases against P = Fr or 0.4 Fr + Y Fa, P0 = max(0.5 Fr + Y0 Fa, Fr),
+    L10h with p = 10/3 and the row's e, Y, Y0 read here from the CSV file itself (to 1e-9)."""
+    rng = np.random.default_rng(355)
+    cat = pd.read_csv(Path(__file__).resolve().parents[2] / "catalogs" / "bearings_tapered_roller.csv",
+                      dtype={"designation": str})
+    for _ in range(200):
+        row = cat.iloc[rng.integers(len(cat))]
+        Fr = float(rng.uniform(0, 0.3)) * 1000 * row["C_kn"]
+        Fa = float(rng.uniform(0, 0.3)) * 1000 * row["C_kn"]
+        if Fr == 0 and Fa == 0:
+            continue
+        n = float(rng.uniform(10, 3000))
+        got = b.check_bearing(row["designation"], Fr, Fa, n)
+        P = Fr if Fa <= row["e"] * Fr else 0.4 * Fr + row["Y"] * Fa
+        P0 = max(0.5 * Fr + row["Y0"] * Fa, Fr)
+        assert got.P_n == pytest.approx(P, rel=1e-9)
+        assert got.L10h == pytest.approx(math.exp(10 / 3 * math.log(1000 * row["C_kn"] / P)) * 1e6 / (60 * n),
+                                         rel=1e-9)
+        assert got.s0 == pytest.approx(1000 * row["C0_kn"] / P0, rel=1e-9)
+        assert got.s0_min == 1.5 and got.speed_limit_rpm == min(row["speed_reference_rpm"],
+                                                                row["speed_limiting_rpm"])
+
+
+def test_tapered_catalog_rows():
+    """Every row cites SKF 17000's product table page; the bore follows the ISO 15 code; e = 1.5 tan α and
+    Y = 0.4 cot α (e·Y = 0.6 within the printed digits) with α inside the angle series of the row's ISO 355
+    code (2: 10°…13°52', 3: …15°59', 4: …18°55', 5: …23°; ISO 355 Table 1): the facing page's e and Y
+    belong to the row they were paired with."""
+    t = load_catalog("bearings_tapered_roller")
+    assert t["source"].str.contains(r"17000/1 EN .* pp\. 69\d/69\d|17000/1 EN .* pp\. 7\d\d/7\d\d").all()
+    c = t["designation"].str.extract(r"^3\d\d(\d\d)", expand=False).astype(int)
+    assert (t["d_mm"] == np.where(c >= 4, 5 * c, c.map({2: 15, 3: 17}))).all()
+    assert set(t["series"]) == {"302", "303", "320X", "322", "323"}
+    assert ((t["e"] * t["Y"] - 0.6).abs() <= 0.05).all()
+    alpha = np.degrees(np.arctan(t["e"] / 1.5))
+    series = t["iso355"].str[0].astype(int).map({2: (10.0, 13 + 52 / 60), 3: (13 + 52 / 60, 15 + 59 / 60),
+                                                 4: (15 + 59 / 60, 18 + 55 / 60), 5: (18 + 55 / 60, 23.0)})
+    lo, hi = np.array([s[0] for s in series]), np.array([s[1] for s in series])
+    # e is printed to 2 digits: ±0.005 in e is ±0.2° in α
+    assert ((alpha >= lo - 0.25) & (alpha <= hi + 0.25)).all()
+    assert (t["T_mm"] >= t["B_mm"]).all() and (t["speed_grease_rpm"] <= t["speed_limiting_rpm"]).all()
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from(["30208", "32310", "32012 X"]), st.floats(100.0, 20000.0), st.floats(1.01, 5.0),
+       st.floats(0.0, 1.0))
+def test_tapered_life_falls_with_load_with_exponent_ten_thirds(designation, Fr, k, axial):
+    """Scaling both loads by k divides the life by k^(10/3) exactly (e is a ratio: the branch stays)."""
+    one = b.check_bearing(designation, Fr, axial * Fr, 1000.0)
+    more = b.check_bearing(designation, k * Fr, k * axial * Fr, 1000.0)
+    assert one.L10h / more.L10h == pytest.approx(k ** (10 / 3), rel=1e-12)
+
+
+def test_system_life_by_hand_and_bad_input():
+    lives = [1200.0, 5000.0, 30000.0]
+    for kind, e in (("ball", 10 / 9), ("roller", 9 / 8)):
+        want = sum(L ** -e for L in lives) ** (-1 / e)
+        assert float(b.system_life(lives, kind)) == pytest.approx(want, rel=1e-12)
+        assert float(b.system_life(lives, kind)) < min(lives)
+    assert float(b.system_life([800.0], "ball")) == pytest.approx(800.0, rel=1e-12)
+    with pytest.raises(GearDesignError, match="lives"):
+        b.system_life([1000.0, -1.0], "ball")
+    with pytest.raises(GearDesignError, match="kind"):
+        b.system_life([1000.0], "needle")
+
+
+def test_reference_viscosity():
+    """ν1 of ISO 281 (NTN CAT. 2203/E eqs. (3.10), (3.11)) written out here, on both sides of 1 000 min⁻¹;
+    SKF 17000 C.2 (p. 224) reads "close to 12 mm²/s" off its diagram at d_m = 53.5 mm, 2 450 r/min. (Its C.3
+    reads 7 mm²/s at d_m = 87.5 mm, 3 000 r/min where the formula gives 8.8: SKF's diagram 14 is its own chart,
+    docs/bearings.md.)"""
+    rng = np.random.default_rng(2811)
+    for n, dpw in zip(rng.uniform(1, 10000, 200), rng.uniform(5, 1000, 200)):
+        want = (45000 * n ** -0.83 if n < 1000 else 4500 * n ** -0.5) / math.sqrt(dpw)
+        assert float(b.reference_viscosity(n, dpw)) == pytest.approx(want, rel=1e-12)
+    assert float(b.reference_viscosity(2450, 0.5 * (35 + 72))) == pytest.approx(12, rel=0.05)
+    # faster or larger: a thinner oil is enough
+    grid = b.reference_viscosity(np.array([10.0, 100.0, 999.0, 1000.0, 5000.0]), 50.0)
+    assert (np.diff(grid) < 0).all()
+    with pytest.raises(GearDesignError, match="n_rpm"):
+        b.reference_viscosity(0.0, 50.0)

@@ -173,3 +173,49 @@ def test_round_groove_by_hand():
     res = din743_safety("C45", Notch("groove", r_mm=r, t_mm=t), d_mm=d, d_eff_mm=16.0, M_ba=100.0)
     beta_b = res.factors.set_index("symbol").loc["beta", "bending"]
     assert beta_b == pytest.approx(alpha / n, rel=1e-12)
+
+
+def test_one_pass_over_a_shaft_equals_one_section_at_a_time():
+    """shaft_safety runs the chain over all sections at once (mixed kinds: key seat, press fit, shoulder, groove,
+    smooth, given β); each row must equal din743_safety of that section alone, with the loads read here from the
+    diagrams at x (their larger limit at a node), to 1e-12, on random shafts and options."""
+    import numpy as np
+
+    rng = np.random.default_rng(743)
+    for k in range(25):
+        secs = [(60.0, 40.0), (90.0, 52.0), (60.0, 40.0), (40.0, 34.0)]
+        loads = [ShaftLoad(105.0, fy_n=float(rng.normal(0, 4000)), fz_n=float(rng.normal(0, 4000)),
+                           fx_n=float(rng.normal(0, 900)), y_mm=60.0, torque_nm=200.0),
+                 ShaftLoad(230.0, fy_n=float(rng.normal(0, 500)), torque_nm=-200.0)]
+        an = analyse_shaft(ShaftModel(secs, [30.0, 180.0], loads), points=30)
+        notches = [ShaftNotch(105.0, Notch("key", keys=int(rng.integers(1, 3)))),
+                   ShaftNotch(60.0, Notch("shoulder", r_mm=float(rng.uniform(0.8, 3.0)))),
+                   ShaftNotch(150.0, Notch("shoulder", r_mm=1.2)),
+                   ShaftNotch(210.0, Notch("shoulder", r_mm=1.0)),
+                   ShaftNotch(230.0, Notch("press_fit")),
+                   ShaftNotch(80.0, Notch("groove", r_mm=1.0, t_mm=1.5)),
+                   ShaftNotch(125.0, Notch("smooth")),
+                   ShaftNotch(40.0, Notch("given", beta_sigma=2.1, beta_tau=1.6, alpha_sigma=2.4))]
+        opts = dict(peak_factor=float(rng.uniform(1, 2.5)), torque_amplitude=float(rng.uniform(0, 0.5)),
+                    hard_surface=bool(k % 3 == 0), load_case=1 + k % 2, Rz_um=float(rng.uniform(1, 25)))
+        s = shaft_safety(an, notches, ["C45", "42CrMo4", "16MnCr5"][k % 3], **opts)
+        d = an.diagrams
+        for row, sn in zip(s.table.itertuples(), notches):
+            at = d[d["x_mm"] == sn.x_mm]
+            if len(at):
+                M, T = at["M_nm"].max(), at["T_nm"].abs().max()
+                N = at["N_n"].to_numpy()[np.argmax(np.abs(at["N_n"].to_numpy()))]
+            else:
+                M, T, N = (np.interp(sn.x_mm, d["x_mm"], d[c]) for c in ("M_nm", "T_nm", "N_n"))
+                T = abs(T)
+            dl, dr = an.model.diameter_at(sn.x_mm, "left")[0], an.model.diameter_at(sn.x_mm, "right")[0]
+            kind = sn.notch.kind
+            dd = dr - 2 * sn.notch.t_mm if kind == "groove" else min(dl, dr)
+            D = max(dl, dr) if kind == "shoulder" else (dr if kind == "groove" else None)
+            one = din743_safety(["C45", "42CrMo4", "16MnCr5"][k % 3], sn.notch, d_mm=dd, D_mm=D, d_eff_mm=52.0,
+                                Rz_um=opts["Rz_um"], hard_surface=opts["hard_surface"], load_case=opts["load_case"],
+                                F_zdm=N, M_ba=M, T_m=T, T_a=opts["torque_amplitude"] * T,
+                                F_zdmax=opts["peak_factor"] * abs(N), M_bmax=opts["peak_factor"] * M,
+                                T_max=opts["peak_factor"] * T * (1 + opts["torque_amplitude"]))
+            assert row.S_D == pytest.approx(one.S_D, rel=1e-12) and row.S_F == pytest.approx(one.S_F, rel=1e-12)
+            assert s.results[row.Index].factors.equals(one.factors)

@@ -231,3 +231,25 @@ def test_iso_vg_grades():
     assert Lubricant.iso_vg(320, 24.0).nu40 == 320.0
     with pytest.raises(GearDesignError, match="ISO 3448"):
         Lubricant.iso_vg(300, 24.0)
+
+
+def test_gearpie_c14_mesh_loss():
+    """GEARpie's report C14 (commit 40fc512e, tests/data/efficiency_examples.md): the whole load-dependent loss
+    of the FZG type C pair at 200 N·m, 1 500 rpm, M32 oil at 60 °C, with the tolerances that note explains."""
+    row = next(pd.read_csv(DATA / "efficiency_loss_examples.csv").itertuples())
+    pair = GearPair(row.m_n_mm, int(row.z1), int(row.z2), row.x1, row.x2, beta_deg=row.beta_deg,
+                    face_width_mm=row.b_mm, tip_shortening=bool(row.tip_shortening))
+    loss = mesh_loss(pair, row.torque1_nm, row.n1_rpm, row.eta_mpas, (row.Ra1_um + row.Ra2_um) / 2,
+                     row.lubricant_factor)
+    assert round(loss.power_w, 1) == row.printed_P_in_w
+    assert round(loss.v_t_m_s, 2) == row.printed_v_t_m_s
+    assert round(loss.F_bt_n, 1) == row.printed_F_bt_n
+    assert round(loss.H_V_ohlendorf, 4) == row.printed_H_V_ohlendorf
+    assert loss.H_V == pytest.approx(loss.H_V_ohlendorf, rel=1e-9)      # spur: the integral is Ohlendorf's
+    # GEARpie's own arithmetic: P_VZP = P_in·μ_mZ·H_VL from its printed factors (μ printed to 3 digits)
+    assert row.printed_P_in_w * row.printed_mu_mz * row.printed_H_V_grid == pytest.approx(row.printed_P_VZP_w,
+                                                                                         rel=0.002)
+    assert loss.mu_mz == pytest.approx(row.printed_mu_mz, rel=0.005)
+    assert loss.loss_w == pytest.approx(row.printed_P_VZP_w, rel=0.03)
+    eta_printed = 1 - row.printed_P_VZP_w / row.printed_P_in_w
+    assert 1 - loss.loss_w / loss.power_w == pytest.approx(eta_printed, abs=3e-4)
