@@ -240,8 +240,9 @@ class EngineTorque(Result):
         if self.effective_torque_nm is not None:
             lines.append(f"effective torque M_e = η_m·M_i = {e.mechanical_efficiency:g} × {self.mean_torque_nm:.6g} "
                          f"= {self.effective_torque_nm:.6g} N·m")
-        lines.append(f"torque {self.min_torque_nm:.6g} … {self.max_torque_nm:.6g} N·m, unevenness "
-                     f"μ = (M_max − M_min)/M_mean = {self.unevenness:.4g}")
+        mu = (f"unevenness μ = (M_max − M_min)/M_mean = {self.unevenness:.4g}" if self.success else
+              "no unevenness: the mean torque is not positive (the engine does no work over the cycle)")
+        lines.append(f"torque {self.min_torque_nm:.6g} … {self.max_torque_nm:.6g} N·m, {mu}")
         rev = self.reversal_angles_deg
         lines.append("the torque reverses at " + ", ".join(f"{a:.1f}" for a in rev) + " deg" if rev.size
                      else "the torque keeps its sign over the cycle")

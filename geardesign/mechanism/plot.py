@@ -49,8 +49,8 @@ def plot_torque(result, ax=None, journals: bool = False):
     ax.set_xlabel("crank angle φ of cylinder 1, deg")
     ax.set_ylabel("torque on the crankshaft, N·m")
     mu = f", μ = {result.unevenness:.3g}" if np.isfinite(result.unevenness) else ""
-    ax.set_title(f"{e.name + ': ' if e.name else ''}{e.cylinders}-cylinder {e.diagram.strokes}-stroke, "
-                 f"{e.n_rpm:g} rpm{mu}; dotted: torque reversals")
+    ax.set_title(f"{e.name + chr(10) if e.name else ''}{e.cylinders}-cylinder {e.diagram.strokes}-stroke, "
+                 f"{e.n_rpm:g} rpm{mu}; dotted: torque reversals", fontsize=10)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="upper right")
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, frameon=False)
     return ax
