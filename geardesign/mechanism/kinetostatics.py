@@ -94,7 +94,7 @@ class JointForces(Result):
                 f"phi {short_value(np.atleast_1d(self.crank_angle_deg))})")
 
 
-def joint_forces(mech: SliderCrank, crank_angle_deg, n_rpm, gas_force_n=0.0, *, gravity_m_s2=GRAVITY_M_S2,
+def joint_forces(mechanism: SliderCrank, crank_angle_deg, n_rpm, gas_force_n=0.0, *, gravity_m_s2=GRAVITY_M_S2,
                  axis_tilt_deg=0.0) -> JointForces:
     """The force in every joint and the driving torque of one slider-crank by kinetostatics (the force plans of
     seed 000 §5.2 and seed 003 §2.6, as equations): first the Assur group rod + piston (5 equations: the piston's
@@ -114,13 +114,13 @@ def joint_forces(mech: SliderCrank, crank_angle_deg, n_rpm, gas_force_n=0.0, *, 
     ...                                                                        gravity_m_s2=0)[0]), 6)
     True
     """
-    phi_deg, fg, st, gx, gy = _inputs(mech, crank_angle_deg, n_rpm, gas_force_n, gravity_m_s2, axis_tilt_deg)
-    return forces_from_state(mech, phi_deg, st, fg, gx, gy)
+    phi_deg, fg, st, gx, gy = _inputs(mechanism, crank_angle_deg, n_rpm, gas_force_n, gravity_m_s2, axis_tilt_deg)
+    return forces_from_state(mechanism, phi_deg, st, fg, gx, gy)
 
 
 def _inputs(mech, crank_angle_deg, n_rpm, gas_force_n, gravity_m_s2, axis_tilt_deg):
     if not isinstance(mech, SliderCrank):
-        raise GearDesignError(f"mech must be a SliderCrank, got {type(mech).__name__}")
+        raise GearDesignError(f"mechanism must be a SliderCrank, got {type(mech).__name__}")
     phi_deg = require_finite("crank_angle_deg", crank_angle_deg).astype(float)
     fg = np.broadcast_to(require_finite("gas_force_n", gas_force_n), phi_deg.shape).astype(float)
     gx, gy = _gravity(gravity_m_s2, axis_tilt_deg)
@@ -157,7 +157,7 @@ def forces_from_state(mech: SliderCrank, phi_deg, st: State, fg, gx: float, gy: 
     return JointForces(phi_deg, fg, phi_p, rix, riy, rim, r03, r23x, r23y, r12x, r12y, r01x, r01y, torque)
 
 
-def virtual_power_torque(mech: SliderCrank, crank_angle_deg, n_rpm, gas_force_n=0.0, *, gravity_m_s2=GRAVITY_M_S2,
+def virtual_power_torque(mechanism: SliderCrank, crank_angle_deg, n_rpm, gas_force_n=0.0, *, gravity_m_s2=GRAVITY_M_S2,
                          axis_tilt_deg=0.0) -> np.ndarray:
     """The driving torque M (N·m) by virtual power, the analytic form of Zhukovsky's lever (seed 003 §2.7;
     Artobolevsky 1988 §15): M·ω + T_y·ω = 0 and
@@ -167,6 +167,7 @@ def virtual_power_torque(mech: SliderCrank, crank_angle_deg, n_rpm, gas_force_n=
     summed over the piston (at B), the rod (at S, and its inertia couple at the rod's angular velocity ω_r) and the
     crank's weight at its centre of gravity — no joint force appears. Vectorised over the crank angles (degrees).
     """
+    mech = mechanism
     phi_deg, fg, st, gx, gy = _inputs(mech, crank_angle_deg, n_rpm, gas_force_n, gravity_m_s2, axis_tilt_deg)
     r = mech.crank_radius_mm * MM
     mp, mr, mc, js = mech.piston_mass_kg, mech.rod_mass_kg, mech.crank_mass_kg, mech.rod_inertia_kg_m2

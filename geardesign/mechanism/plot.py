@@ -8,15 +8,17 @@ from ..validate import require_axes, require_bool
 
 __all__ = ["plot_torque"]
 
+_FIELDS = ("engine", "crank_angle_deg", "torque_nm", "cylinder_torque_nm", "journal_torque_nm", "mean_torque_nm",
+           "reversal_angles_deg", "unevenness")
+
 
 def plot_torque(result, ax=None, journals: bool = False):
     """The crankshaft's torque over the cycle of an :class:`~geardesign.mechanism.engine.EngineTorque`: each
     cylinder's curve (thin), the resultant (thick) with its mean M_i and the angles where it reverses; with
     ``journals``, seed 004's journal torques M_z1 … M_z(n+1) instead of the cylinders. Returns the Axes.
     """
-    from .engine import EngineTorque
-
-    if not isinstance(result, EngineTorque):
+    # the result's fields, not its class: engine.py imports this module (EngineTorque.plot), not the other way
+    if not all(hasattr(result, a) for a in _FIELDS):
         raise GearDesignError(f"result must be an EngineTorque (Engine.analyse()), got {type(result).__name__}")
     journals = require_bool("journals", journals)
     if ax is None:

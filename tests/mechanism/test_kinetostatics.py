@@ -207,5 +207,5 @@ def test_bad_inputs_are_refused_by_name():
         joint_forces(mech, [0, 1], 1000, [0, float("nan")])
     with pytest.raises(GearDesignError, match="gravity_m_s2 must be in"):
         joint_forces(mech, 0, 1000, 0, gravity_m_s2=-1)
-    with pytest.raises(GearDesignError, match="mech must be a SliderCrank"):
+    with pytest.raises(GearDesignError, match="mechanism must be a SliderCrank"):
         virtual_power_torque("crank", 0, 1000)
