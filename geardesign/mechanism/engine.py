@@ -129,15 +129,14 @@ class Engine:
         step = cycle / points
         phi = np.arange(points) * step
         shift = self._phases / step
-        on_grid = np.allclose(shift, np.round(shift), rtol=0, atol=1e-9)
+        on_grid = bool(np.all(np.abs(shift - np.round(shift)) <= 1e-9))
         # identical cylinders: with every phase on the grid, one cylinder's curve rolled by its phase is each
         # cylinder's (the same numbers at the same angles); otherwise each is evaluated at its own angles
         own = phi[None, :] if on_grid else phi[None, :] - self._phases[:, None]
         gas, torque = self._torques(own)
-        if on_grid:
-            k = np.round(shift).astype(int)
-            per_cyl = np.stack([np.roll(torque[0], j) for j in k])
-            gas = np.stack([np.roll(gas[0], j) for j in k])
+        if on_grid:         # cylinder c at sample j is the one curve at sample j − k_c (round the cycle)
+            idx = (np.arange(points)[None, :] - np.round(shift).astype(int)[:, None]) % points
+            per_cyl, gas = torque[0][idx], gas[0][idx]
         else:
             per_cyl = torque
         gas = gas.sum(axis=0)
