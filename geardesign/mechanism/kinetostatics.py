@@ -74,7 +74,6 @@ class JointForces(Result):
         """T_y = −M: the torque the load (the gear) puts on the crank (seed 000 §5.2.3)."""
         return -self.torque_nm
 
-    @property
     def table(self):
         """One row per crank angle, a column per force (N) and torque (N·m)."""
         import pandas as pd
@@ -85,7 +84,7 @@ class JointForces(Result):
         return out
 
     def to_frame(self):
-        return self.table
+        return self.table()
 
     def __repr__(self) -> str:
         t = np.atleast_1d(self.torque_nm)

@@ -123,7 +123,7 @@ def test_every_joint_holds_its_links_in_equilibrium():
 def test_balancing_torque_is_the_driving_torques_negative():
     f = joint_forces(MECHS[0], [30.0, 200.0], 1700, 1e4)
     np.testing.assert_array_equal(f.balancing_torque_nm, -f.torque_nm)
-    assert list(f.table.columns)[-1] == "balancing_torque_nm" and len(f.table) == 2
+    assert list(f.table().columns)[-1] == "balancing_torque_nm" and len(f.table()) == 2
     assert "JointForces(2 crank angles" in repr(f)
 
 
