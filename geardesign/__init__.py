@@ -73,7 +73,7 @@ _MODULES = {
     "gears": "gears", "shifts": "shifts", "drives": "drives", "sensitivity": "sensitivity", "profiles": "profiles",
     "motor": "drives.motor", "bearing": "drives.bearing", "forces": "gears.forces",
     "din743": "drives.din743", "shaft_beam": "drives.shaft_beam",
-    "mechanism": "mechanism", "kinematics": "mechanism.kinematics", "cylinders": "mechanism.cylinders",
+    "mechanism": "mechanism", "kinematics": "mechanism.kinematics",
 }
 
 __all__ = sorted(_NAMES) + sorted(_MODULES)

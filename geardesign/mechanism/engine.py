@@ -8,8 +8,6 @@ four-stroke engine (firing at 360°), from the firing top dead centre for a two-
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import NamedTuple
-
 import numpy as np
 
 from ..errors import GearDesignError
@@ -28,12 +26,22 @@ POINTS_RANGE = (8, 1_000_000)       # samples over the cycle
 SPEED_RANGE_RPM = (0.0, 1e5)
 
 
-class TorqueCurve(NamedTuple):
-    """The crankshaft's torque over one working cycle: what a load spectrum counts (``angle, torque, n = curve``)."""
+@dataclass(frozen=True, eq=False)
+class TorqueCurve:
+    """The crankshaft's torque over one working cycle: what a load spectrum counts. It unpacks as three,
+    ``angle, torque, n = curve``: ``crank_angle_deg`` evenly spaced over [0, cycle), ``torque_nm`` the resultant on
+    the last journal (driving: positive in the power stroke), ``n_rpm`` the crankshaft's mean speed."""
 
-    crank_angle_deg: np.ndarray     # evenly spaced over [0, cycle)
-    torque_nm: np.ndarray           # the resultant on the last journal, driving (positive in the power stroke)
-    n_rpm: float                    # the crankshaft's mean speed
+    crank_angle_deg: np.ndarray
+    torque_nm: np.ndarray
+    n_rpm: float
+
+    def __iter__(self):
+        return iter((self.crank_angle_deg, self.torque_nm, self.n_rpm))
+
+    def __repr__(self) -> str:
+        return (f"TorqueCurve({self.crank_angle_deg.size} points, torque {self.torque_nm.min():.6g} … "
+                f"{self.torque_nm.max():.6g} N·m, {self.n_rpm:g} rpm)")
 
 
 @dataclass(frozen=True)

@@ -21,7 +21,7 @@ exact and the approximate piston kinematics); J. B. Heywood, *Internal Combustio
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -62,7 +62,8 @@ def crank_speed(n_rpm) -> np.ndarray:
     return math.pi * require_positive("n_rpm", n_rpm, "rpm") / 30.0
 
 
-class State(NamedTuple):
+@dataclass(frozen=True, slots=True)
+class State:
     """Every kinematic quantity of the slider-crank at the crank angles, from one pass (SI units: m, m/s, m/s²,
     rad/s, rad/s²)."""
 
