@@ -8,11 +8,12 @@ four-stroke engine (firing at 360°), from the firing top dead centre for a two-
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+
 import numpy as np
 
 from ..errors import GearDesignError
 from ..results import Result, compact_repr
-from ..validate import hint_unknown_arguments, require_count, require_finite, require_range
+from ..validate import hint_unknown_arguments, one_number, require_count, require_finite, require_range
 from .cylinders import (CYLINDERS_MAX, crank_pin_torques, even_phases, excess_work, firing_phases,
                         fluctuation_coefficient, journal_torques, reversal_angles)
 from .kinematics import crank_speed, state
@@ -77,7 +78,9 @@ class Engine:
         if not isinstance(self.diagram, IndicatorDiagram):
             raise GearDesignError(f"diagram must be an IndicatorDiagram, got {type(self.diagram).__name__}")
         self.mechanism.need_bore()
-        require_range("n_rpm", self.n_rpm, *SPEED_RANGE_RPM, lo_open=True, unit="rpm")
+        one_number("n_rpm", require_range("n_rpm", self.n_rpm, *SPEED_RANGE_RPM, lo_open=True, unit="rpm"))
+        if not isinstance(self.name, str):
+            raise GearDesignError(f"name must be text, got {self.name!r}")
         n = require_count("cylinders", self.cylinders, 1, CYLINDERS_MAX)
         cycle = self.diagram.cycle_deg
         if self.phases_deg is not None:
@@ -99,12 +102,15 @@ class Engine:
         else:
             phases = even_phases(n, cycle, self.firing_order)
         if self.mechanical_efficiency is not None:
-            require_range("mechanical_efficiency", self.mechanical_efficiency, 0.0, 1.0, lo_open=True)
+            one_number("mechanical_efficiency", require_range("mechanical_efficiency", self.mechanical_efficiency,
+                                                              0.0, 1.0, lo_open=True))
         if self.flywheel_inertia_kg_m2 is not None:
-            require_range("flywheel_inertia_kg_m2", self.flywheel_inertia_kg_m2, 0.0, INERTIA_MAX_KG_M2,
-                          lo_open=True, unit="kg·m²")
-        require_range("crankcase_pressure_mpa", self.crankcase_pressure_mpa, *PRESSURE_RANGE_MPA, unit="MPa")
-        require_range("gravity_m_s2", self.gravity_m_s2, 0.0, 100.0, unit="m/s²")
+            one_number("flywheel_inertia_kg_m2", require_range(
+                "flywheel_inertia_kg_m2", self.flywheel_inertia_kg_m2, 0.0, INERTIA_MAX_KG_M2, lo_open=True,
+                unit="kg·m²"))
+        one_number("crankcase_pressure_mpa", require_range("crankcase_pressure_mpa", self.crankcase_pressure_mpa,
+                                                           *PRESSURE_RANGE_MPA, unit="MPa"))
+        one_number("gravity_m_s2", require_range("gravity_m_s2", self.gravity_m_s2, 0.0, 100.0, unit="m/s²"))
         object.__setattr__(self, "_phases", phases)
 
     @property

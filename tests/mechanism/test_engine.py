@@ -143,6 +143,11 @@ def test_summary_repr_and_json():
     (dict(mechanical_efficiency=1.2), "mechanical_efficiency must be in \\(0, 1\\]"),
     (dict(flywheel_inertia_kg_m2=0), "flywheel_inertia_kg_m2 must be in \\(0, 100000\\]"),
     (dict(speed_rpm=3000), "the crankshaft's speed is n_rpm"),
+    (dict(n_rpm=[1000, 2000]), "n_rpm must be one number"),
+    (dict(gravity_m_s2=(9.81, 0)), "gravity_m_s2 must be one number"),
+    (dict(name=3), "name must be text"),
+    (dict(mechanism="crank"), "mechanism must be a SliderCrank"),
+    (dict(diagram=[0, 1]), "diagram must be an IndicatorDiagram"),
 ])
 def test_bad_engines_are_refused_by_name(kw, match):
     args = dict(mechanism=MECH, diagram=_diagram(720), n_rpm=3000) | kw
@@ -169,3 +174,9 @@ def test_cylinders_sum_to_the_resultant_and_inertia_averages_out(n, cyl, points)
                                atol=1e-9 * np.abs(res.torque_nm).max())
     assert res.excess_work_j >= 0
     assert np.all((res.reversal_angles_deg >= 0) & (res.reversal_angles_deg < 720))
+
+
+def test_two_stroke_throws_give_the_firing_order():
+    """A two-stroke cylinder fires at each top dead centre: its phase is its throw (the order follows)."""
+    e = Engine(MECH, _diagram(720, strokes=2), 3000, cylinders=3, throws_deg=(0, 240, 120))
+    assert e.phases.tolist() == [0.0, 240.0, 120.0] and e.cycle_deg == 360.0
