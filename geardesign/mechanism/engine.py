@@ -23,7 +23,7 @@ from .slider_crank import INERTIA_MAX_KG_M2, SliderCrank
 
 __all__ = ["Engine", "EngineTorque", "TorqueCurve", "engine_torque", "POINTS_RANGE", "SPEED_RANGE_RPM"]
 
-POINTS_RANGE = (8, 1_000_000)       # samples over the cycle
+POINTS_RANGE = (8, 100_000)         # samples over the cycle (100 000: 0.0072° steps over 720°)
 SPEED_RANGE_RPM = (0.0, 1e5)
 
 
@@ -146,13 +146,14 @@ class Engine:
         on_grid = bool(np.all(np.abs(shift - np.round(shift)) <= 1e-9))
         # identical cylinders: with every phase on the grid, one cylinder's curve rolled by its phase is each
         # cylinder's (the same numbers at the same angles); otherwise each is evaluated at its own angles
-        own = phi[None, :] if on_grid else phi[None, :] - self._phases[:, None]
-        gas, torque = self._torques(own)
         if on_grid:         # cylinder c at sample j is the one curve at sample j − k_c (round the cycle)
+            gas, torque = self._torques(phi)
             idx = (np.arange(points)[None, :] - np.round(shift).astype(int)[:, None]) % points
-            per_cyl, gas = torque[0][idx], gas[0][idx]
-        else:
-            per_cyl = torque
+            per_cyl, gas = torque[idx], gas[idx]
+        else:               # one cylinder at a time: the temporaries stay one curve long
+            both = [self._torques(phi - p) for p in self._phases]
+            gas = np.stack([g for g, _ in both])
+            per_cyl = np.stack([m for _, m in both])
         gas = gas.sum(axis=0)
         total = per_cyl.sum(axis=0)
         mean = float(total.mean())

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import require_finite, require_positive, require_range
+from ..validate import require_count, require_finite, require_positive, require_range
 from .kinematics import check_lengths, piston_displacement
 
 __all__ = ["IndicatorDiagram", "gas_force", "piston_area", "otto_pressure", "cycle_volume", "STROKES",
@@ -120,6 +120,7 @@ class IndicatorDiagram:
         """The parametric cycle of :func:`otto_pressure` tabulated at ``points`` angles over the cycle."""
         strokes = kw.get("strokes", 4)
         cycle = _strokes(strokes)
+        points = require_count("points", points, 8, 1_000_000)
         phi = np.arange(points) * (cycle / points)
         p = otto_pressure(phi, crank_radius_mm, rod_length_mm, compression_ratio, offset_mm=offset_mm, **kw)
         return cls(phi, p, strokes, source="otto_pressure")

@@ -53,7 +53,7 @@ def test_json(capsys):
 
 
 @pytest.mark.parametrize("extra, text", [
-    (["--points", "3"], "--points must be a whole number in [8, 1e+06], got 3"),
+    (["--points", "3"], "--points must be a whole number in [8, 100000], got 3"),
 ])
 def test_bad_options_are_named(extra, text, capsys):
     assert main(["engine", str(EXAMPLE), *extra]) == 2
