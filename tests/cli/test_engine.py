@@ -70,7 +70,7 @@ def test_a_bad_scene_names_the_key(tmp_path, capsys):
     assert len(err) == 1 and f"{scene}: [engine.mechanism]: rod_length_mm must exceed" in err[0]
 
 
-def test_interrupt_and_no_traceback_in_a_subprocess(tmp_path):
+def test_a_missing_scene_is_one_line_in_a_subprocess(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "geardesign", "engine", str(tmp_path / "none.toml")],
                           capture_output=True, text=True)
     assert proc.returncode == 2 and proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
