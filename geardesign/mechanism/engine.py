@@ -54,8 +54,10 @@ class Engine:
     ``throws_deg`` and ``firing_order`` (:func:`~geardesign.mechanism.cylinders.firing_phases`), or even firing
     along ``firing_order`` (cylinder order by default). Cylinders are numbered from the front (timing-gear) end.
     ``mechanical_efficiency`` η_m gives the effective torque M_e = η_m·M_i; ``flywheel_inertia_kg_m2`` (everything
-    turning with the crankshaft) the coefficient of fluctuation. Weights act along each cylinder's axis towards the
-    crank (upright cylinders; ``gravity_m_s2`` = 0 leaves them out).
+    turning with the crankshaft) the coefficient of fluctuation. ``axis_tilts_deg`` tilts each cylinder's axis from the
+    upward vertical in the sense of rotation (a V engine's banks; default upright), which turns its weights
+    (``gravity_m_s2`` = 0 leaves them out); a V engine's bank angle also goes into its throws (cylinder 1's crank
+    angle when that cylinder is at top dead centre).
     """
 
     mechanism: SliderCrank
@@ -69,8 +71,10 @@ class Engine:
     flywheel_inertia_kg_m2: float | None = None
     crankcase_pressure_mpa: float = ATMOSPHERE_MPA
     gravity_m_s2: float = GRAVITY_M_S2
+    axis_tilts_deg: tuple | None = None
     name: str = ""
     _phases: np.ndarray = field(init=False, repr=False, compare=False, default=None)
+    _tilts: np.ndarray = field(init=False, repr=False, compare=False, default=None)
 
     def __post_init__(self):
         if not isinstance(self.mechanism, SliderCrank):
@@ -111,7 +115,13 @@ class Engine:
         one_number("crankcase_pressure_mpa", require_range("crankcase_pressure_mpa", self.crankcase_pressure_mpa,
                                                            *PRESSURE_RANGE_MPA, unit="MPa"))
         one_number("gravity_m_s2", require_range("gravity_m_s2", self.gravity_m_s2, 0.0, 100.0, unit="m/s²"))
+        tilts = np.zeros(n)
+        if self.axis_tilts_deg is not None:
+            tilts = np.asarray(require_range("axis_tilts_deg", self.axis_tilts_deg, -180.0, 180.0), float).ravel()
+            if tilts.size != n:
+                raise GearDesignError(f"axis_tilts_deg must give one tilt per cylinder ({n}), got {tilts.size}")
         object.__setattr__(self, "_phases", phases)
+        object.__setattr__(self, "_tilts", tilts)
 
     @property
     def cycle_deg(self) -> float:
@@ -122,17 +132,21 @@ class Engine:
         """The firing phase of each cylinder 1..n (degrees of cylinder 1's cycle)."""
         return self._phases.copy()
 
-    def cylinder_torque(self, crank_angle_deg) -> np.ndarray:
-        """One cylinder's driving torque (N·m) at its own cycle angles (degrees): gas, inertia and weights."""
-        return self._torques(require_finite("crank_angle_deg", crank_angle_deg))[1]
+    def cylinder_torque(self, crank_angle_deg, cylinder: int = 1) -> np.ndarray:
+        """The driving torque (N·m) of cylinder ``cylinder`` (1..n: its axis's tilt) at its own cycle angles
+        (degrees): gas, inertia and weights."""
+        c = int(require_count("cylinder", cylinder, 1, self.cylinders))
+        return self._torques(require_finite("crank_angle_deg", crank_angle_deg), self._tilts[c - 1])[1]
 
-    def _torques(self, own_deg):
+    def _torques(self, own_deg, tilt_deg=0.0):
         """(gas torque, whole torque) of one cylinder at its own cycle angles (N·m): the kinematics once."""
         mech = self.mechanism
         fg = gas_force(self.diagram.pressure(own_deg), mech.cylinder_bore_mm, self.crankcase_pressure_mpa)
         st = state(np.radians(own_deg), mech.crank_radius_mm, mech.rod_length_mm, mech.offset_mm,
                    crank_speed(self.n_rpm))
-        forces = forces_from_state(mech, own_deg, st, fg, 0.0, -self.gravity_m_s2)
+        tau = np.radians(tilt_deg)       # gravity in the cylinder's frame (kinetostatics._gravity)
+        g = self.gravity_m_s2
+        forces = forces_from_state(mech, own_deg, st, fg, -g * np.sin(tau), -g * np.cos(tau))
         return fg * st.v / st.omega, forces.torque_nm      # the gas torque F_g·v_B/ω (virtual power)
 
     def analyse(self, points: int = 720) -> EngineTorque:
@@ -143,15 +157,16 @@ class Engine:
         step = cycle / points
         phi = np.arange(points) * step
         shift = self._phases / step
-        on_grid = bool(np.all(np.abs(shift - np.round(shift)) <= 1e-9))
+        same = self.gravity_m_s2 == 0 or bool(np.all(self._tilts == self._tilts[0]))
+        on_grid = same and bool(np.all(np.abs(shift - np.round(shift)) <= 1e-9))
         # identical cylinders: with every phase on the grid, one cylinder's curve rolled by its phase is each
         # cylinder's (the same numbers at the same angles); otherwise each is evaluated at its own angles
         if on_grid:         # cylinder c at sample j is the one curve at sample j − k_c (round the cycle)
-            gas, torque = self._torques(phi)
+            gas, torque = self._torques(phi, self._tilts[0])
             idx = (np.arange(points)[None, :] - np.round(shift).astype(int)[:, None]) % points
             per_cyl, gas = torque[idx], gas[idx]
         else:               # one cylinder at a time: the temporaries stay one curve long
-            both = [self._torques(phi - p) for p in self._phases]
+            both = [self._torques(phi - p, t) for p, t in zip(self._phases, self._tilts)]
             gas = np.stack([g for g, _ in both])
             per_cyl = np.stack([m for _, m in both])
         gas = gas.sum(axis=0)

@@ -51,7 +51,7 @@ def engine_schema() -> dict:
         "cylinders": _I(default=1, lo=1, hi=CYLINDERS_MAX),
         "strokes": _I(default=4, lo=2, hi=4),
         "firing_order": _Key("ints", lo=1, hi=CYLINDERS_MAX), "throws_deg": _Key("floats", lo=-720.0, hi=720.0),
-        "phases_deg": _Key("floats", lo=0.0, hi=720.0),
+        "phases_deg": _Key("floats", lo=0.0, hi=720.0), "axis_tilts_deg": _Key("floats", lo=-180.0, hi=180.0),
         "mechanical_efficiency": _F(lo=0.0, hi=1.0, lo_open=True),
         "flywheel_inertia_kg_m2": _F(lo=0.0, hi=INERTIA_MAX_KG_M2, lo_open=True),
         "crankcase_pressure_mpa": _F(default=ATMOSPHERE_MPA, lo=p_lo, hi=p_hi),
@@ -164,7 +164,7 @@ def load_engine(path) -> EngineScene:
     kw = {k: e[k] for k in ("cylinders", "mechanical_efficiency", "flywheel_inertia_kg_m2", "crankcase_pressure_mpa",
                             "gravity_m_s2") if k in e}
     kw["name"] = e.get("name", title)
-    for k in ("firing_order", "throws_deg", "phases_deg"):
+    for k in ("firing_order", "throws_deg", "phases_deg", "axis_tilts_deg"):
         if k in e:
             kw[k] = tuple(e[k])
     try:

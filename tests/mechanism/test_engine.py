@@ -180,3 +180,27 @@ def test_two_stroke_throws_give_the_firing_order():
     """A two-stroke cylinder fires at each top dead centre: its phase is its throw (the order follows)."""
     e = Engine(MECH, _diagram(720, strokes=2), 3000, cylinders=3, throws_deg=(0, 240, 120))
     assert e.phases.tolist() == [0.0, 240.0, 120.0] and e.cycle_deg == 360.0
+
+
+def test_seed003_as_a_v_twin_engine():
+    """Seed 003's V-twin through the Engine: cylinder 2's bank 80° after cylinder 1 (throws 0, 80; cylinder 2 fires
+    80° after cylinder 1), the banks tilted ∓40°, a table diagram giving P3 = 2376 N on piston 1 at 45° after its
+    firing and nothing on piston 2: at cylinder 1's cycle angle 405° the engine's torque over r is the lever's F_y."""
+    from tests.mechanism.test_kinetostatics import seed003_mechanism
+
+    mech, n, s = seed003_mechanism()
+    mech = SliderCrank(**{**{f: getattr(mech, f) for f in mech.__dataclass_fields__}, "cylinder_bore_mm": 76.0})
+    p0 = 0.101325
+    p3 = p0 + s["P3"] / float(piston_area(76.0))
+    diagram = IndicatorDiagram([0, 325, 405, 600], [p0, p0, p3, p0])
+    e = Engine(mech, diagram, n, cylinders=2, throws_deg=(0, 80), firing_order=(1, 2), axis_tilts_deg=(-40, 40),
+               gravity_m_s2=9.81)
+    assert e.phases.tolist() == [0.0, 80.0]
+    res = e.analyse(720)
+    assert res.torque_nm[405] / 0.044 == pytest.approx(s["F_y_lever"], rel=1e-3)
+    np.testing.assert_allclose(res.cylinder_torque_nm[1], e.cylinder_torque(res.crank_angle_deg - 80, cylinder=2),
+                               rtol=0, atol=1e-9 * np.abs(res.torque_nm).max())
+    upright = Engine(mech, diagram, n, cylinders=2, throws_deg=(0, 80), firing_order=(1, 2), gravity_m_s2=9.81)
+    assert not np.allclose(upright.analyse(720).torque_nm, res.torque_nm, rtol=0, atol=1e-6)   # the weights turned
+    with pytest.raises(GearDesignError, match="axis_tilts_deg must give one tilt per cylinder"):
+        Engine(mech, diagram, n, cylinders=2, axis_tilts_deg=(10,))

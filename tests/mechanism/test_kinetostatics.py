@@ -153,39 +153,49 @@ def _seed003():
         return {row["symbol"]: float(row["seed_value"]) for row in csv.DictReader(fh) if row["seed"] == "003"}
 
 
+def seed003_mechanism():
+    """Seed 003's slider-crank reconstructed from its own figures (see the test below): (mechanism, n_rpm, seed's
+    figures). r/l from the lever's pb/pa, the speed, the rod's centre of gravity and inertia from Φ_S3, Φ_S2, M_S2."""
+    from scipy.optimize import brentq
+
+    s = _seed003()
+    g = 9.81
+    r, l_ = 44.0, 176.0
+    m_piston, m_rod = s["G3"] / g, s["G2"] / g
+    w2 = s["Phi_S3"] / (m_piston * float(k.piston_acceleration(45, r, l_, 30 / math.pi)))
+    n = math.sqrt(w2) * 30 / math.pi
+
+    def a_s(cg, phi):
+        return math.hypot(*(float(x) for x in k.rod_cg_acceleration(phi, r, l_, cg, n)))
+
+    cg = brentq(lambda c: m_rod * a_s(c, 45) - s["Phi_S2"], 0, l_)
+    j = s["M_S2"] / abs(float(k.rod_angular_acceleration(45, r, l_, n)))
+    mech = SliderCrank(r, l_, rod_cg_mm=cg, piston_mass_kg=m_piston, rod_mass_kg=m_rod, rod_inertia_kg_m2=j)
+    return mech, n, s
+
+
 def test_seed003_two_cylinder_balancing_force():
     """Seed 003 §2.7 (an 80° V-twin, rods of 176 mm on one crank pin, φ1 = 45°). Its dimensions are on pages not
     included; they follow from the lever's own figures: pb/pa = 0.834 gives λ = 0.25 (r = 44 mm), the weights' arms
     ph/pb = pn/pc = cos 40° the 80° V. The speed, the rods' centre of gravity and inertia are fitted to Φ_S3, Φ_S2 and
     M_S2; Φ_S5, Φ_S4 and M_S4 are then predictions (0.3 %), and the balancing force F_y = M/r of the two cylinders
     reproduces the lever's 2080 N (0.1 %) and the force plans' 2073 N (0.4 %)."""
-    from scipy.optimize import brentq
-
-    s = _seed003()
+    mech, n, s = seed003_mechanism()
     g = 9.81
+    r, l_, cg, j = mech.crank_radius_mm, mech.rod_length_mm, mech.rod_cg_mm, mech.rod_inertia_kg_m2
     assert s["M_S2"] / s["M_S2/l_AB"] == pytest.approx(0.176, abs=5e-4)     # l_AB = M_S2/F'_и2
-    r, l_ = 44.0, 176.0
     assert float(k.piston_velocity(45, r, l_, 30 / math.pi)) / (r / 1000) == pytest.approx(s["pb"] / 100, abs=1e-3)
     assert abs(float(k.piston_velocity(-35, r, l_, 30 / math.pi))) / (r / 1000) == pytest.approx(s["pc"] / 100,
                                                                                                   abs=1e-3)
     assert s["ph"] / s["pb"] == pytest.approx(math.cos(math.radians(40)), abs=2e-3)
     assert s["pn"] / s["pc"] == pytest.approx(math.cos(math.radians(40)), abs=2e-3)
-    m_piston, m_rod = s["G3"] / g, s["G2"] / g
-    w2 = s["Phi_S3"] / (m_piston * float(k.piston_acceleration(45, r, l_, 30 / math.pi)))
-    n = math.sqrt(w2) * 30 / math.pi
     assert n == pytest.approx(2396, abs=1)
-    assert m_piston * float(k.piston_acceleration(-35, r, l_, n)) == pytest.approx(s["Phi_S5"], rel=3e-3)
-
-    def a_s(cg, phi):
-        return math.hypot(*(float(x) for x in k.rod_cg_acceleration(phi, r, l_, cg, n)))
-
-    cg = brentq(lambda c: m_rod * a_s(c, 45) - s["Phi_S2"], 0, l_)
+    assert mech.piston_mass_kg * float(k.piston_acceleration(-35, r, l_, n)) == pytest.approx(s["Phi_S5"], rel=3e-3)
     assert cg == pytest.approx(l_ / 3, rel=0.03)                  # the usual l/3
-    assert m_rod * a_s(cg, -35) == pytest.approx(s["Phi_S4"], rel=3e-3)
-    j = s["M_S2"] / abs(float(k.rod_angular_acceleration(45, r, l_, n)))
+    a_s4 = math.hypot(*(float(x) for x in k.rod_cg_acceleration(-35, r, l_, cg, n)))
+    assert mech.rod_mass_kg * a_s4 == pytest.approx(s["Phi_S4"], rel=3e-3)
     assert j * abs(float(k.rod_angular_acceleration(-35, r, l_, n))) == pytest.approx(s["M_S4"], rel=3e-3)
 
-    mech = SliderCrank(r, l_, rod_cg_mm=cg, piston_mass_kg=m_piston, rod_mass_kg=m_rod, rod_inertia_kg_m2=j)
     # cylinder 1 tilted 40° against the rotation, cylinder 2 (80° later) 40° with it; P3 on piston 1, P5 = 0
     m1 = joint_forces(mech, 45.0, n, s["P3"], gravity_m_s2=g, axis_tilt_deg=-40).torque_nm
     m2 = joint_forces(mech, -35.0, n, s["P5"], gravity_m_s2=g, axis_tilt_deg=40).torque_nm

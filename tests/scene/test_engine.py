@@ -80,3 +80,10 @@ def test_schema_ranges_come_from_the_library():
 
     s = engine_schema()
     assert s["cylinders"].hi == CYLINDERS_MAX and s["mechanism"]["cylinder_bore_mm"].required
+
+
+def test_v_banks_from_the_scene(tmp_path):
+    text = BASE.replace("cylinders = 2", "cylinders = 2\nthrows_deg = [0, 90]\nfiring_order = [1, 2]\n"
+                                         "axis_tilts_deg = [-45, 45]") + OTTO
+    e = load_engine(_scene(tmp_path, text)).engine
+    assert e.phases.tolist() == [0.0, 90.0] and e.axis_tilts_deg == (-45.0, 45.0)
