@@ -10,7 +10,8 @@ The package is layered; each layer imports only the ones before it:
 - :mod:`geardesign.errors`, :mod:`geardesign.validate`, :mod:`geardesign.results`, :mod:`geardesign.files`,
   :mod:`geardesign.inline` (a result's picture in a notebook), :mod:`geardesign.renamed` (old keywords, for one
   release)
-- :mod:`geardesign.catalogs` — CSV tables and standard series
+- :mod:`geardesign.catalogs` — CSV tables and standard series; :mod:`geardesign.mechanism` — the engine's
+  slider-crank: kinematics, kinetostatics, the crankshaft's torque over the cycle
 - :mod:`geardesign.gears` — involute, rack, mesh, geometry, checks, :class:`GearPair`
 - :mod:`geardesign.shifts` — the shift problem, its methods, region, atlas, tooth counts
 - :mod:`geardesign.profiles` — tooth profiles as the cutter generates them
@@ -61,6 +62,9 @@ _NAMES = {
     "reference_viscosity": "drives.bearing",
     "Lubricant": "gears.efficiency", "mesh_loss": "gears.efficiency", "stage_efficiency": "drives.efficiency",
     "BearingLoad": "drives.efficiency", "bearing_friction": "drives.bearing_friction",
+    "SliderCrank": "mechanism.slider_crank", "IndicatorDiagram": "mechanism.pressure", "Engine": "mechanism.engine",
+    "EngineTorque": "mechanism.engine", "engine_torque": "mechanism.engine", "joint_forces": "mechanism.kinetostatics",
+    "virtual_power_torque": "mechanism.kinetostatics", "plot_torque": "mechanism.plot",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {
@@ -70,6 +74,7 @@ _MODULES = {
     "gears": "gears", "shifts": "shifts", "drives": "drives", "sensitivity": "sensitivity", "profiles": "profiles",
     "motor": "drives.motor", "bearing": "drives.bearing", "forces": "gears.forces",
     "din743": "drives.din743", "shaft_beam": "drives.shaft_beam",
+    "mechanism": "mechanism", "kinematics": "mechanism.kinematics",
 }
 
 __all__ = sorted(_NAMES) + sorted(_MODULES)

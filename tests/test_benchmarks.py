@@ -46,3 +46,20 @@ def test_margin_bound_witness_beats_the_max_margin_solution():
     assert abs(table["margin"].astype(float).min() - value) <= 1e-9
     solved = gd.optimize_shifts(25, 116, "max_margin", m=3.0)
     assert value > min(solved.margins.values()) + 0.05
+
+
+def test_plain_torque_of_bench_engine_is_the_librarys():
+    """bench_engine's plain reference, (F_g − m_j·a)·r·sin(φ + β)/cos β over four cylinders, is the library's torque
+    for the same engine with a massless rod and no weights (the library's full model then reduces to it)."""
+    import bench_engine as b
+
+    from geardesign.mechanism.engine import Engine
+    from geardesign.mechanism.slider_crank import SliderCrank
+
+    full = b.engine()
+    mech = SliderCrank(b.R, b.L, piston_mass_kg=0.6, crank_mass_kg=2.0, crank_cg_mm=10, cylinder_bore_mm=b.BORE)
+    e = Engine(mech, full.diagram, b.N_RPM, cylinders=4, phases_deg=tuple(b.PHASES), gravity_m_s2=0.0)
+    ours = e.analyse(720).torque_nm
+    plain = b.plain_torque(full.diagram.crank_angle_deg, full.diagram.pressure_mpa, 0.6)
+    np.testing.assert_allclose(ours, plain, rtol=0, atol=1e-9 * np.abs(plain).max())
+    assert np.array_equal(full.phases, b.PHASES)

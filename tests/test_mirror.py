@@ -14,6 +14,7 @@ PURE_REEXPORTS = {
     "geardesign/drives/__init__.py",        # a docstring only
     "geardesign/drives/chain/__init__.py",  # chain.inputs, .design and .formulas names
     "geardesign/gears/__init__.py",         # a docstring only
+    "geardesign/mechanism/__init__.py",     # a docstring only
     "geardesign/gears/strength/__init__.py",  # the strength modules' names, loaded on first use (PEP 562)
     "geardesign/profiles/__init__.py",      # a docstring only
     "geardesign/scene/__init__.py",         # scene.load, .report, .schema, .sections names

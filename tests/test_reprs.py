@@ -53,7 +53,16 @@ def _examples():
         "BearingCheck": gd.check_bearing("6208", 3200, 1800, 650),
         "BearingSelection": gd.select_bearing(["62", "63"], 40, 3200, 1800, 650, life_h=20000),
         **_shaft_examples(),
+        **_engine_examples(),
     }
+
+
+def _engine_examples():
+    mech = gd.SliderCrank(70, 250, rod_cg_mm=75, piston_mass_kg=2.5, rod_mass_kg=4.7, cylinder_bore_mm=100)
+    engine = gd.Engine(mech, gd.IndicatorDiagram.otto(70, 250, 6.0, peak_pressure_mpa=3.2), 1700, cylinders=2,
+                       mechanical_efficiency=0.8, flywheel_inertia_kg_m2=1.0)
+    return {"JointForces": gd.joint_forces(mech, [0.0, 90.0, 300.0], 1700, 5000.0),
+            "EngineTorque": engine.analyse(720)}
 
 
 def _shaft_examples():
@@ -106,7 +115,7 @@ def test_scene_report_repr(tmp_path):
     "ShiftResult (failed)", "Region", "TeethSelection", "PlanetarySet", "PlanetaryShiftResult",
     "PlanetaryTeethSelection", "ChainDesign", "KeySelection", "KeyCapacity", "MotorSelection", "Drive",
     "DriveAnalysis", "GearStage", "MeshForces", "ChainPull", "BearingCheck", "BearingSelection", "ShaftAnalysis",
-    "ShaftSafety", "Din743Result"])
+    "ShaftSafety", "Din743Result", "JointForces", "EngineTorque"])
 def test_repr_is_short_and_never_an_array_dump(name, examples):
     text = repr(examples[name])
     lines = text.splitlines()
@@ -117,7 +126,7 @@ def test_repr_is_short_and_never_an_array_dump(name, examples):
 
 @pytest.mark.parametrize("name", ["Geometry", "ShiftResult", "TeethSelection", "ChainDesign", "KeySelection",
                                   "DriveAnalysis", "PlanetaryShiftResult", "checks table", "BearingSelection",
-                                  "ShaftAnalysis", "ShaftSafety", "Din743Result"])
+                                  "ShaftAnalysis", "ShaftSafety", "Din743Result", "JointForces", "EngineTorque"])
 def test_tabular_results_have_an_html_view(name, examples):
     html = examples[name]._repr_html_()
     assert "<table" in html and "array([" not in html

@@ -14,7 +14,7 @@ import sys
 
 # Subcommand modules, in the order ``geardesign --help`` lists them.
 SUBCOMMANDS = ("pair", "measure", "mesh", "shift", "atlas", "teeth", "planetary", "chain", "key", "bearing", "shaft",
-               "drive", "run")
+               "engine", "drive", "run")
 
 
 def build_parser():

@@ -18,10 +18,15 @@ import pytest
 from geardesign.cli import main
 
 SCENES = Path(__file__).resolve().parents[2] / "studies" / "scenes"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 ENGINE = ["--module", "8", "--z1", "17", "--z2", "26"]
 SEED = ENGINE + ["--x1", "0.898", "--x2", "0.517"]
 LECAD = ["planetary", "--module", "1.75", "--planets", "3", "--z-sun", "21", "--z-planet", "43", "--z-ring", "108"]
 KEY = ["key", "--d", "60", "--length", "32", "--crush", "300", "--shear", "120"]
+# an engine turned by its load: the cylinder's pressure higher while compressing than while expanding (negative work)
+MOTORED = ("[engine]\nn_rpm = 1500\n[engine.mechanism]\ncrank_radius_mm = 40\nrod_length_mm = 140\n"
+           "cylinder_bore_mm = 80\n[engine.pressure]\nkind = 'table'\ncrank_angle_deg = [0, 180, 270, 360, 450, 540]\n"
+           "pressure_mpa = [0.1, 0.1, 1.0, 2.0, 0.2, 0.1]\n")
 LOADED = ("[drive]\npower_kw = 7.5\nn_in_rpm = 1450\n[[drive.stage]]\nkind = 'given'\nratio = 2\nefficiency = 0.95\n"
           "[[drive.stage]]\nkind = 'gear'\nmodule = 4\nz1 = 20\nz2 = 60\nface_width_mm = 40\n")
 
@@ -58,6 +63,8 @@ CASES = [
     ([*KEY, "--torque", "505"], 1, "FAILS: 504.0 N·m < the torque 505 N·m"),
     (["drive", str(SCENES / "seed002_drive.toml")], 0, "OK"),
     (["drive", "LOADED", "--material", "C45", "--power", "40"], 1, "FAILS: gear:contact_strength (margin -"),
+    (["engine", str(EXAMPLES / "seed000_engine.toml")], 0, "OK: seed 000 engine"),
+    (["engine", "MOTORED"], 1, "FAILS: motored: the engine does no work over the cycle"),
     (["run", str(SCENES / "seed002_chain.toml"), "--out", "OUT"], 0, "OK: every design of the scene passes."),
     (["run", str(SCENES / "seed000_gear.toml"), "--out", "OUT"], 1,
      "FAILS: gear: the given shifts fail contact_ratio"),
@@ -67,7 +74,10 @@ CASES = [
 def _argv(argv, tmp_path):
     loaded = tmp_path / "loaded.toml"
     loaded.write_text(LOADED)
-    return [str(loaded) if a == "LOADED" else str(tmp_path / "out") if a == "OUT" else a for a in argv]
+    motored = tmp_path / "motored.toml"
+    motored.write_text(MOTORED)
+    files = {"LOADED": str(loaded), "MOTORED": str(motored), "OUT": str(tmp_path / "out")}
+    return [files.get(a, a) for a in argv]
 
 
 @pytest.mark.parametrize("argv, code, first", CASES, ids=[" ".join(c[0][:3]) + f" -> {c[1]}" for c in CASES])

@@ -1,0 +1,76 @@
+"""`geardesign engine`: the torque summary of the example scene (seed 000's engine), the CSV and plot written whole and
+never over an existing file, --json, errors naming the option or the scene's key."""
+import csv
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from geardesign.cli import main
+from geardesign.scene.engine import load_engine
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "seed000_engine.toml"
+
+
+def test_summary_of_the_example(capsys):
+    assert main(["engine", str(EXAMPLE)]) == 0
+    out = capsys.readouterr().out
+    res = load_engine(EXAMPLE).engine.analyse(720)
+    assert out.splitlines()[0].startswith("OK: seed 000 engine: two cylinders at 1700 rpm: the engine does work")
+    assert f"M_i = {res.mean_torque_nm:.6g} N·m" in out and "unevenness μ" in out
+    assert "the torque reverses at " + ", ".join(f"{a:.1f}" for a in res.reversal_angles_deg) in out.replace("\n  ", " ")
+
+
+def test_csv_and_plot_are_written_and_never_silently_replaced(tmp_path, capsys):
+    table, png = tmp_path / "torque.csv", tmp_path / "torque.png"
+    assert main(["engine", str(EXAMPLE), "--csv", str(table), "--plot", str(png), "--points", "360"]) == 0
+    capsys.readouterr()
+    with open(table, encoding="utf-8") as fh:
+        rows = list(csv.DictReader(fh))
+    res = load_engine(EXAMPLE).engine.analyse(360)
+    assert len(rows) == 360 and float(rows[1]["crank_angle_deg"]) == 2.0
+    np.testing.assert_allclose([float(r["torque_nm"]) for r in rows], res.torque_nm, rtol=1e-9, atol=1e-9)
+    assert png.stat().st_size > 10_000
+    before = table.read_bytes()
+    assert main(["engine", str(EXAMPLE), "--csv", str(table)]) == 2
+    assert "--csv" in capsys.readouterr().err and table.read_bytes() == before
+    # a bad plot path stops the command before anything is written, the CSV included
+    other = tmp_path / "other.csv"
+    assert main(["engine", str(EXAMPLE), "--csv", str(other), "--plot", str(tmp_path / "t.txt")]) == 2
+    assert "--plot" in capsys.readouterr().err and not other.exists()
+    assert main(["engine", str(EXAMPLE), "--csv", str(table), "--overwrite", "--points", "720"]) == 0
+    assert table.read_bytes() != before
+
+
+def test_json(capsys):
+    assert main(["engine", str(EXAMPLE), "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["ok"] is True and d["cylinders"] == 2 and d["phases_deg"] == [0.0, 540.0] and d["points"] == 720
+    assert d["effective_torque_nm"] == pytest.approx(0.8 * d["mean_torque_nm"])
+
+
+@pytest.mark.parametrize("extra, text", [
+    (["--points", "3"], "--points must be a whole number in [8, 100000], got 3"),
+])
+def test_bad_options_are_named(extra, text, capsys):
+    assert main(["engine", str(EXAMPLE), *extra]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == f"geardesign engine: error: {text}"
+
+
+def test_a_bad_scene_names_the_key(tmp_path, capsys):
+    scene = tmp_path / "e.toml"
+    scene.write_text(EXAMPLE.read_text(encoding="utf-8").replace("rod_length_mm = 250", "rod_length_mm = 60"),
+                     encoding="utf-8")
+    assert main(["engine", str(scene)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"{scene}: [engine.mechanism]: rod_length_mm must exceed" in err[0]
+
+
+def test_a_missing_scene_is_one_line_in_a_subprocess(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "geardesign", "engine", str(tmp_path / "none.toml")],
+                          capture_output=True, text=True)
+    assert proc.returncode == 2 and proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
