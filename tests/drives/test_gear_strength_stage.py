@@ -19,6 +19,11 @@ ISO54 = (1, 1.125, 1.25, 1.375, 1.5, 1.75, 2, 2.25, 2.5, 2.75, 3, 3.5, 4, 4.5, 5
 PSI = np.round(np.arange(0.2, 1.0 + 1e-9, 0.05), 10)
 
 
+def _grid_widths(m, z1, beta_deg=0.0):
+    """The documented widths at module m: b = ψ_d·d1 rounded up, none below three circular pitches (3·π·m)."""
+    return np.maximum(np.ceil(PSI * m * z1 / math.cos(math.radians(beta_deg)) - 1e-9), math.ceil(3 * math.pi * m - 1e-9))
+
+
 def _omega(n_rpm):
     return 2 * math.pi * n_rpm / 60
 
@@ -71,14 +76,14 @@ def test_a_stage_without_module_takes_the_smallest_module_and_width_that_carry_t
     s = a.stages[0]["summary"]
     m, b = s["m"], s["face_width_mm"]
     assert a.success and m in ISO54
-    assert b in np.ceil(PSI * m * 20 - 1e-9)
+    assert b in _grid_widths(m, 20)
     assert min(_pair_margins(m, b, s["x1"], s["x2"], t_in, 1450).values()) >= -1e-9
-    narrower = [w for w in np.ceil(PSI * m * 20 - 1e-9) if w < b]
+    narrower = [w for w in _grid_widths(m, 20) if w < b]
     if narrower:     # the next narrower width of the range fails
         assert min(_pair_margins(m, max(narrower), s["x1"], s["x2"], t_in, 1450).values()) < 0
     assert m > ISO54[0]
     smaller = ISO54[ISO54.index(m) - 1]           # no width of the range holds at the next smaller module
-    for w in np.ceil(PSI * smaller * 20 - 1e-9):
+    for w in _grid_widths(smaller, 20):
         assert min(_pair_margins(smaller, w, s["x1"], s["x2"], t_in, 1450).values()) < 0
 
 
@@ -220,7 +225,7 @@ def test_a_helical_stage_with_a_total_contact_ratio_check_is_sized():
         res = pair.strength(Load(torque_nm=t_in, n_rpm=1450), "42CrMo4")
         return eps_gamma >= 1.3 - 1e-9 and min(_margins(res).values()) >= -1e-9
 
-    assert b in np.ceil(PSI * m * 21 / math.cos(math.radians(15)) - 1e-9)
+    assert b in _grid_widths(m, 21, 15)
     assert holds(b)
 
 
@@ -238,3 +243,12 @@ def test_strength_margins_at_a_flow_per_design_equal_one_flow_each():
     for i in range(3):
         one = strength_margins(st, M[i], B[i], Z1[i], Z2[i], X[i], X[i], T[i], N[i])
         assert {k: float(v[i]) for k, v in many.items()} == {k: float(v) for k, v in one.items()}
+
+
+def test_a_sized_stage_is_no_narrower_than_three_circular_pitches():
+    # issue 35: 19/95 at 15 kW came out m 5.5, b 21 mm (b/m 3.8: b = 0.2·d1); the textbook range of spur face widths
+    # is 3p <= b <= 5p (Shigley, Standard Handbook of Machine Design, ch. 9), so b >= 3·π·m
+    d = gd.Drive(power_kw=15, n_in_rpm=1460, stages=[gd.GearStage(None, z1=19, z2=95, material="42CrMo4")])
+    pair = d.analyse().stages[0]["pair"]
+    assert pair.face_width_mm >= 3 * math.pi * pair.m
+    assert pair.face_width_mm < 3 * math.pi * pair.m + 1 or pair.face_width_mm > 0.2 * 19 * pair.m   # whole mm

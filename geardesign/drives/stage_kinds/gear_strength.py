@@ -18,7 +18,11 @@ from: b/d1 ≥ 0.2 is the lower end VDI 2736 Sheet 2 (2014) allows (as quoted by
 documentation, attribute "Ratio of facewidth to pinion diameter",
 https://adoc.fva-service.de/help/8.0/en/attr/PMID_10677.htm); b/d1 ≤ 1.0 follows the rule that the width
 stay below the pinion diameter, as the load distribution over a wider face suffers (GearCalc manual 12.7
-"Face width", http://www.gearcalc.com/downloads/manual/manualse47.html).
+"Face width", http://www.gearcalc.com/downloads/manual/manualse47.html). No width is narrower than
+:data:`FACE_WIDTH_PITCHES_MIN` circular pitches, b >= 3·π·m: the lower end of the textbook range 3p <= b <= 5p
+for spur gears (J. E. Shigley, Standard Handbook of Machine Design, 3rd ed., ch. 9 "Spur gears"; Budynas and
+Nisbett, Shigley's Mechanical Engineering Design, ch. 14). Without it, a pinion of few teeth on a large module got
+b = 0.2·d1, i.e. b/m = 0.2·z1 (19 teeth: b/m 3.8), a disc no reducer designer draws (issue 35).
 
 The answer is that of every design checked in full, with less work, nothing assumed of how the
 margins vary with m and b: a design is computed once however many ψ_d round to its width (small
@@ -37,12 +41,13 @@ import numpy as np
 
 from ..stages import stage_material
 
-__all__ = ["STRENGTH_CHECKS", "load_checks", "safety_limits", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "strength_margins",
+__all__ = ["STRENGTH_CHECKS", "load_checks", "safety_limits", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "FACE_WIDTH_PITCHES_MIN", "strength_margins",
            "strength_sizes", "strength_sizes_many", "widest_width"]
 
 STRENGTH_CHECKS = ("contact_strength", "root_strength1", "root_strength2")
 WIDTH_TO_DIAMETER_RANGE = (0.2, 1.0)
 WIDTH_TO_DIAMETER_STEP = 0.05
+FACE_WIDTH_PITCHES_MIN = 3.0      # b >= 3 circular pitches (π·m each)
 
 
 def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm, speed_rpm, root: bool = True) -> dict:
@@ -130,7 +135,9 @@ def _widths(stage, modules: np.ndarray, z1: int) -> tuple:
     lo, hi = WIDTH_TO_DIAMETER_RANGE
     psi = np.arange(lo, hi + 1e-9, WIDTH_TO_DIAMETER_STEP)
     d1 = modules[:, None] * z1 / math.cos(math.radians(stage.beta_deg))
-    return np.broadcast_to(modules[:, None], (modules.size, psi.size)), np.ceil(psi[None, :] * d1 - 1e-9)
+    least = np.ceil(FACE_WIDTH_PITCHES_MIN * math.pi * modules[:, None] - 1e-9)
+    return (np.broadcast_to(modules[:, None], (modules.size, psi.size)),
+            np.maximum(np.ceil(psi[None, :] * d1 - 1e-9), least))
 
 
 def widest_width(stage, z1: int, m: float = 1.0) -> float:

@@ -18,13 +18,15 @@ from geardesign.gears.strength import Load, pair_strength
 
 TOL = 1e-9
 PSI = np.round(np.arange(0.2, 1.0 + 1e-9, 0.05), 10)     # the documented ψ_d = b/d1 range and step
+PITCHES_MIN = 3          # and no width below three circular pitches (Shigley's 3p <= b <= 5p)
 
 
 def _grid(stage, torque_nm, n_rpm, z1, z2, x1, x2):
     """(M, B, {check: margin}) of the whole grid, every design with every check."""
     modules = np.asarray(_series())
     if stage.face_width_mm is None:
-        grid = [(m, math.ceil(p * m * z1 - 1e-9)) for m in modules for p in PSI]
+        grid = [(m, max(math.ceil(p * m * z1 - 1e-9), math.ceil(PITCHES_MIN * math.pi * m - 1e-9)))
+                for m in modules for p in PSI]
     else:
         grid = [(m, stage.face_width_mm) for m in modules]
     M, B = np.array(grid).T
