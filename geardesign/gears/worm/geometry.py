@@ -23,7 +23,7 @@ from ...validate import broadcast_inputs, require_choice
 from ..involute import inv_from_tan
 from ..rack import STANDARD_RACK, BasicRack, require_rack
 
-__all__ = ["FLANK_FORMS", "WORM_FIELDS", "lead_angle", "axial_pressure_angle", "normal_pressure_angle",
+__all__ = ["FLANK_FORMS", "WORM_FIELDS", "FIELD_INFO", "lead_angle", "axial_pressure_angle", "normal_pressure_angle",
            "center_distance", "x2_from_center_distance", "wheel_outside_diameter", "worm_length_min",
            "wheel_width_max", "wheel_width_working", "wheel_x_min", "mid_plane_contact_ratio",
            "wheel_tip_thickness", "worm_tip_thickness", "worm_chordal_height", "wheel_chordal_thickness",
@@ -39,6 +39,47 @@ WORM_FIELDS = ("m_x", "z1", "z2", "q", "x2", "alpha_x_deg", "alpha_n_deg", "gamm
                "d_f1", "d_w1", "d_2", "d_a2", "d_e2", "d_f2", "a", "b_1", "b_2", "p_x", "p_z", "u",
                "eps_alpha", "x_min2", "san1", "sa2", "b_1_min", "b_2_max", "b_2_h",
                "s_x1", "s_n1", "s_chord1", "h_chord1", "z_v2", "s_chord2", "h_chord2")
+
+# symbol, unit and meaning of each field (the result's table and the glossary say the same)
+FIELD_INFO = {
+    "m_x": ("m_x", "mm", "axial module of the worm (transverse module of the wheel)"),
+    "z1": ("z_1", "-", "number of threads (starts) of the worm"),
+    "z2": ("z_2", "-", "number of teeth of the wheel"),
+    "q": ("q", "-", "diameter quotient d_m1/m_x"),
+    "x2": ("x_2", "-", "profile shift coefficient of the wheel"),
+    "alpha_x_deg": ("α_x", "deg", "axial pressure angle at the worm's reference cylinder"),
+    "alpha_n_deg": ("α_n", "deg", "normal pressure angle at the worm's reference cylinder"),
+    "gamma_m_deg": ("γ_m", "deg", "lead angle at the worm's reference cylinder"),
+    "m_n": ("m_n", "mm", "normal module m_x cos γ_m"),
+    "d_m1": ("d_m1", "mm", "reference diameter of the worm q·m_x"),
+    "d_a1": ("d_a1", "mm", "tip diameter of the worm"),
+    "d_f1": ("d_f1", "mm", "root diameter of the worm"),
+    "d_w1": ("d_w1", "mm", "working (rolling) diameter of the worm d_m1 + 2 x2 m_x"),
+    "d_2": ("d_2", "mm", "reference diameter of the wheel z2·m_x"),
+    "d_a2": ("d_a2", "mm", "throat (tip) diameter of the wheel in its mid-plane"),
+    "d_e2": ("d_e2", "mm", "outside diameter of the wheel (GOST 19650's largest d_aM2)"),
+    "d_f2": ("d_f2", "mm", "root diameter of the wheel"),
+    "a": ("a", "mm", "centre distance (d_m1 + d_2)/2 + x2 m_x"),
+    "b_1": ("b_1", "mm", "threaded length of the worm (given, or what the mesh needs)"),
+    "b_2": ("b_2", "mm", "face width of the wheel (given, or the working width b_2H)"),
+    "p_x": ("p_x", "mm", "axial pitch π m_x"),
+    "p_z": ("p_z", "mm", "lead z1 p_x"),
+    "u": ("u", "-", "gear ratio z2/z1"),
+    "eps_alpha": ("ε_α", "-", "contact ratio of the mid-plane mesh"),
+    "x_min2": ("x_min2", "-", "smallest x2 without undercut of the wheel"),
+    "san1": ("s_an1", "mm", "thread thickness on the worm's tip cylinder, normal section"),
+    "sa2": ("s_a2", "mm", "tooth thickness on the wheel's throat circle, mid-plane"),
+    "b_1_min": ("b_1min", "mm", "worm length the mesh needs π m_x (4.5 + 0.02 z2)"),
+    "b_2_max": ("b_2max", "mm", "widest wheel the worm embraces 0.75 d_a1"),
+    "b_2_h": ("b_2H", "mm", "working width of the wheel 2 m_x √(h_a*(q + h_a*))"),
+    "s_x1": ("s_x1", "mm", "axial thread thickness of the worm at d_m1 (drawing)"),
+    "s_n1": ("s_n1", "mm", "normal thread thickness of the worm at d_m1"),
+    "s_chord1": ("s̄_1", "mm", "normal chordal thread thickness of the worm (drawing)"),
+    "h_chord1": ("h̄_a1", "mm", "chordal height of the worm's thread (drawing)"),
+    "z_v2": ("z_v2", "-", "virtual tooth count of the wheel z2/cos³γ_m"),
+    "s_chord2": ("s̄_2", "mm", "normal chordal tooth thickness of the wheel (drawing)"),
+    "h_chord2": ("h̄_a2", "mm", "chordal height of the wheel's tooth (drawing)"),
+}
 
 
 # --- formulas, one per function ------------------------------------------------------------------------
@@ -232,12 +273,12 @@ def wheel_chordal_thickness(m_x, z2, x2, alpha_x, gamma_m, h_a):
 # --- every field at once -------------------------------------------------------------------------------
 
 def worm_geometry(m_x, z1, z2, q, x2=0.0, flank_form: str = "ZA", rack: BasicRack | None = None,
-                  b_1=None, b_2=None) -> dict:
+                  worm_length_mm=None, face_width_mm=None) -> dict:
     """Every field of :data:`WORM_FIELDS` for the worm pairs of axial module ``m_x`` (mm), ``z1`` starts, ``z2``
     wheel teeth, diameter quotient ``q`` and wheel shift ``x2`` (all broadcast), flank form ``flank_form``
     (``"ZA"``, ``"ZN"``, ``"ZI"``, ``"ZK"``) and basic rack ``rack`` (its ``alpha_deg`` is the flank form's
     defining pressure angle, axial for ZA and normal otherwise; ``ha``, ``c``, ``rho_f`` as for spur gears).
-    ``b_1`` (worm length) and ``b_2`` (wheel width), mm, default to what the mesh needs (:func:`worm_length_min`,
+    ``worm_length_mm`` (b_1) and ``face_width_mm`` (the wheel's b_2) default to what the mesh needs (:func:`worm_length_min`,
     :func:`wheel_width_working`). No validation here (:class:`~geardesign.gears.worm.pair.WormPair` validates):
     designs that do not exist give NaN. Lengths in mm, angles in degrees.
 
@@ -251,22 +292,24 @@ def worm_geometry(m_x, z1, z2, q, x2=0.0, flank_form: str = "ZA", rack: BasicRac
     rack = require_rack(rack)
     arrays = broadcast_inputs(m_x=np.asarray(m_x, float), z1=np.asarray(z1, float), z2=np.asarray(z2, float),
                               q=np.asarray(q, float), x2=np.asarray(x2, float),
-                              b_1=np.asarray(np.nan if b_1 is None else b_1, float),
-                              b_2=np.asarray(np.nan if b_2 is None else b_2, float))
+                              worm_length_mm=np.asarray(np.nan if worm_length_mm is None else worm_length_mm, float),
+                              face_width_mm=np.asarray(np.nan if face_width_mm is None else face_width_mm, float))
     with np.errstate(invalid="ignore", divide="ignore"):
         return _fields(_ARRAY, flank_form, rack, *arrays)
 
 
 def worm_geometry_float(m_x: float, z1: int, z2: int, q: float, x2: float, flank_form: str = "ZA",
-                        rack: BasicRack = STANDARD_RACK, b_1=None, b_2=None) -> dict:
+                        rack: BasicRack = STANDARD_RACK, worm_length_mm=None, face_width_mm=None) -> dict:
     """:func:`worm_geometry` of one design in Python floats (the same fields, several times faster than a
     one-element array call; a pair and a drive stage use it). No validation."""
     nan = math.nan
     try:
         return _fields(_FLOAT, flank_form, rack, float(m_x), float(z1), float(z2), float(q), float(x2),
-                       nan if b_1 is None else float(b_1), nan if b_2 is None else float(b_2))
+                       nan if worm_length_mm is None else float(worm_length_mm),
+                       nan if face_width_mm is None else float(face_width_mm))
     except (ValueError, ZeroDivisionError, OverflowError):   # a design that does not exist: NaN by name
-        return {k: float(v) for k, v in worm_geometry(m_x, z1, z2, q, x2, flank_form, rack, b_1, b_2).items()}
+        return {k: float(v) for k, v in worm_geometry(m_x, z1, z2, q, x2, flank_form, rack, worm_length_mm,
+                                                      face_width_mm).items()}
 
 
 def _float_inv(t: float) -> float:
