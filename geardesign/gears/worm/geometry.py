@@ -331,7 +331,8 @@ def _fields(ops, flank_form, rack, m_x, z1, z2, q, x2, b_1, b_2) -> dict:
     alpha0 = math.radians(rack.alpha_deg)
     gamma = ops.atan2(z1, q)
     cos_g, sin_g = ops.cos(gamma), ops.sin(gamma)
-    if FLANK_FORMS[flank_form] == "axial":
+    axial = FLANK_FORMS[flank_form] == "axial"
+    if axial:
         alpha_x = alpha0 + 0.0 * gamma
         alpha_n = ops.atan(math.tan(alpha0) * cos_g)
     else:
@@ -364,7 +365,10 @@ def _fields(ops, flank_form, rack, m_x, z1, z2, q, x2, b_1, b_2) -> dict:
     b_2_h = 2.0 * m_x * ops.sqrt(h_a * (q + h_a))
     return {
         "m_x": m_x, "z1": z1, "z2": z2, "q": q, "x2": x2,
-        "alpha_x_deg": ops.degrees(alpha_x), "alpha_n_deg": ops.degrees(alpha_n), "gamma_m_deg": ops.degrees(gamma),
+        # the defining angle as given (no round trip through radians), the other from it
+        "alpha_x_deg": rack.alpha_deg + 0.0 * gamma if axial else ops.degrees(alpha_x),
+        "alpha_n_deg": ops.degrees(alpha_n) if axial else rack.alpha_deg + 0.0 * gamma,
+        "gamma_m_deg": ops.degrees(gamma),
         "m_n": m_n, "d_m1": d_m1, "d_a1": d_a1, "d_f1": d_m1 - 2.0 * (h_a + c) * m_x, "d_w1": d_m1 + 2.0 * x2 * m_x,
         "d_2": d_2, "d_a2": d_a2, "d_e2": d_a2 + 6.0 * m_x / (z1 + 2.0), "d_f2": d_2 - 2.0 * (h_a + c - x2) * m_x,
         "a": (d_m1 + d_2) / 2.0 + x2 * m_x, "b_1": ops.pick(b_1, b_1_min), "b_2": ops.pick(b_2, b_2_h),
