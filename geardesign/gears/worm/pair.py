@@ -118,7 +118,7 @@ class WormPair:
     def checks(self, **limits):
         """Table of checks ``check, margin, ok, value, limit, label`` (margins dimensionless, >= 0 holds):
         ``limits`` are the worm's options of :func:`~geardesign.gears.checks.make_checks` (``undercut``,
-        ``sa_min``, ``eps_alpha_min``, ``x2_abs_max``, ``worm_length``, ``wheel_width``).
+        ``sa_min``, ``eps_alpha_min``, ``x2_abs_max``, ``worm_length_min``, ``wheel_width_max``).
 
         >>> t = WormPair(3, 2, 30, 44 / 3, x2=1.5).checks()
         >>> bool(t.set_index("check").loc["x2_range", "ok"])

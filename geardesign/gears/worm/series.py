@@ -115,7 +115,8 @@ def select_worm(ratio: float | None = None, a: float | None = None, *, z1=None, 
     :func:`default_q_values`) × ``z1`` (default 1 … 4) × ``z2`` (default: the z2 nearest ``ratio``·z1; or given).
     With ``a`` the wheel's shift is x2 = a/m_x − (q + z2)/2 for each, exactly and all at once; without it each
     candidate's x2 is the ``objective`` of :meth:`WormPair.optimize_x2` ("min_abs_x2" or "max_margin") and ``m_x``
-    is required. ``checks`` are the worm's :func:`~geardesign.gears.checks.make_checks` options. Candidates whose
+    is required. ``checks`` are the worm's :func:`~geardesign.gears.checks.make_checks` options (the worm length
+    check is off: each candidate's worm is as long as its mesh needs). Candidates whose
     ratio misses ``ratio`` by more than ``ratio_tol`` (relative) are left out.
 
     >>> s = select_worm(12.5, 125, z1=2)               # seed 002's gear motor: u = 12.5 (z2 = 25)
@@ -154,6 +155,8 @@ def select_worm(ratio: float | None = None, a: float | None = None, *, z1=None, 
         raise GearDesignError(f"{len(rows)} candidates is too many (at most {CANDIDATES_MAX}): give fewer m_x, q, z1 or z2")
     cand = np.array(rows, dtype=float)
     limits = dict(checks or {})
+    # every candidate's worm is as long as its mesh needs (b_1 = b_1min): that check holds by construction
+    limits.setdefault("worm_length_min", False)
     cs = _checks.make_checks(kind="worm", **limits)
     names = [c.name for c in cs]
     if a is not None:

@@ -90,7 +90,7 @@ def test_measurements_for_the_drawing():
 
 
 def test_min_abs_x2_is_the_undercut_limit_when_zero_undercuts():
-    p = WormPair(4, 1, 16, 10)                 # x_min2 = 1.25 − 0.38(1 − sin 20°) − 16 sin²20°/2 = 0.0644
+    p = WormPair(4, 1, 16, 10)                 # x_min2 = 1.25 − 0.38(1 − sin 20°) − 16 sin²20°/2 = 0.0641
     a = math.radians(20)
     x_min = 1.25 - 0.38 * (1 - math.sin(a)) - 16 * math.sin(a) ** 2 / 2
     r = p.optimize_x2()
