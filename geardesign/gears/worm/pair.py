@@ -179,7 +179,7 @@ class WormPair:
             x2 = _max_min_margin(self, checks, lo, hi)
         pair = self._with_x2(x2)
         margins = _margins(pair, checks)
-        active = [k for k, v in margins.items() if abs(v) <= 1e-9]
+        active = [k for k, v in margins.items() if k in _X2_SENSE and abs(v) <= 1e-9]   # the ones that fix x2
         # the checks that do not move with x2 cannot change the choice: max_margin is over those that do
         fun = abs(x2) if objective == "min_abs_x2" else min(v for k, v in margins.items() if k in _X2_SENSE)
         return WormShiftResult(x2=x2, fun=fun, objective=objective, success=True,
