@@ -21,15 +21,11 @@ from .. import checks as _checks
 from ..inputs import M_RANGE_MM, X_ABS_MAX
 from ..mesh import Z_MAX, Z_MIN
 from ..rack import STANDARD_RACK, BasicRack, require_rack
-from .geometry import FIELD_INFO, FLANK_FORMS, WORM_FIELDS, worm_geometry_float, x2_from_center_distance
+from .geometry import (FIELD_INFO, FLANK_FORMS, LENGTH_RANGE_MM, Q_MAX, WORM_FIELDS, Z1_RANGE,
+                       worm_geometry_float, x2_from_center_distance)
 
-__all__ = ["WormPair", "WormGeometry", "WormShiftResult", "Z1_RANGE", "Q_MAX", "X2_OBJECTIVES"]
+__all__ = ["WormPair", "WormGeometry", "WormShiftResult", "X2_OBJECTIVES"]
 
-# Worm starts: 1, 2 and 4 in GOST 2144's reducer table, up to 6 and more in DIN 3975's examples; 10 leaves room
-# and keeps the lead angle below 60° for q >= 6.
-Z1_RANGE = (1, 10)
-Q_MAX = 100.0          # d_m1 = 100 m_x: a shaft, not a worm, beyond; q must also exceed 2(h_a* + c*) (a root)
-FACE_RANGE_MM = (1e-4, 1e5)
 # The objectives of WormPair.optimize_x2: the smallest |x2| the checks allow (the designer's first wish: a
 # wheel cut by the worm's own hob at its nominal setting) or the largest smallest margin (the robust point).
 X2_OBJECTIVES = {"min_abs_x2": "the x2 nearest to 0 that every check allows",
@@ -81,7 +77,7 @@ class WormPair:
         lengths = {}
         for name in ("worm_length_mm", "face_width_mm"):
             v = getattr(self, name)
-            lengths[name] = None if v is None else one_number(name, require_range(name, v, *FACE_RANGE_MM,
+            lengths[name] = None if v is None else one_number(name, require_range(name, v, *LENGTH_RANGE_MM,
                                                                                   unit="mm"))
         for name, value in (("m_x", m_x), ("z1", z1), ("z2", z2), ("q", q), ("x2", x2), ("rack", rack), *lengths.items()):
             object.__setattr__(self, name, value)

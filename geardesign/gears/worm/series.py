@@ -21,8 +21,8 @@ from ...results import RankedTable
 from ...validate import _show, require_choice, require_int, require_positive, require_range
 from .. import checks as _checks
 from ..rack import require_rack
-from .geometry import FLANK_FORMS, worm_geometry
-from .pair import _X2_SENSE, X2_OBJECTIVES, Z1_RANGE, WormPair
+from .geometry import FLANK_FORMS, Z1_RANGE, worm_geometry
+from .pair import _X2_SENSE, X2_OBJECTIVES, WormPair
 
 __all__ = ["worm_module_series", "worm_center_distance_series", "default_q_values", "select_worm", "WormSelection",
            "Z1_DEFAULT", "RATIO_TOL_DEFAULT"]
@@ -162,7 +162,7 @@ def select_worm(ratio: float | None = None, a: float | None = None, *, z1=None, 
     if a is not None:
         m_, q_, z1_, z2_ = cand[:, 0], cand[:, 1], cand[:, 2], cand[:, 3]
         x2 = a / m_ - (q_ + z2_) / 2.0
-        geo = worm_geometry(m_, z1_, z2_, q_, x2, flank_form, rack)
+        geo = worm_geometry(m_, z1_, z2_, q_, x2, flank_form, rack, validate=False)
         margins = np.column_stack([np.nan_to_num(np.asarray(c.margin(geo), float) * np.ones(len(cand)), nan=-np.inf)
                                    for c in cs])
         exists = (geo["d_f2"] > 0) & np.isfinite(geo["sa2"]) & (geo["eps_alpha"] > 0) & (q_ > 2 * (rack.ha + rack.c))
