@@ -120,3 +120,16 @@ def test_scene_and_diagram(tmp_path):
     ax = plot_drive(a)
     texts = " ".join(t.get_text() for t in ax.texts)
     assert "gear motor: ZA worm, z 4/50" in texts
+
+
+def test_seed_002_scene_with_the_worm_computed():
+    from pathlib import Path
+
+    from geardesign.scene import load_scene
+    from geardesign.scene.drive import build_drive
+
+    scene = Path(__file__).resolve().parents[3] / "studies" / "scenes" / "seed002_worm_drive.toml"
+    drive, _ = build_drive(load_scene(str(scene)).sections["drive"])
+    a = drive.analyse()
+    assert a.success and a.flow["n_rpm"].iloc[1] == pytest.approx(120.0, rel=1e-15)
+    assert a.stages[0]["summary"]["kind"] == "worm" and a.stages[0]["summary"]["a"] == 125.0
