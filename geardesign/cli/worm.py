@@ -23,6 +23,10 @@ _FLAGS = {"m_x": "--module", "z1": "--z1", "z2": "--z2", "q": "--q", "x2": "--x2
           "worm_length_mm": "--worm-length", "face_width_mm": "--face-width", "a (center distance)": "--center-distance",
           "ratio": "--ratio", "objective": "--optimize-x2", "alpha_deg": "--alpha-deg", "rho_f": "--rho-f",
           "ha": "--ha", "c": "--c"}
+# the shared options' meaning for a worm pair (their spur-pair help speaks of two gears)
+_WORM_HELP = {"undercut": "no undercut of the wheel by its hob (x2 >= x_min2)",
+              "sa_min": "minimum tip thickness / m_x of the worm's thread and the wheel's teeth",
+              "eps_alpha_min": "minimum contact ratio of the mid-plane mesh"}
 _SELECT_SHOW = ["m_x", "q", "z1", "z2", "u", "x2", "a", "gamma_m_deg", "eps_alpha", "min_margin", "limiting_check",
                 "feasible"]
 
@@ -34,8 +38,8 @@ def add_parser(sub):
                     "the verdict first, then the checks (margins >= 0 hold), then the geometry. With "
                     "--center-distance the wheel's shift x2 is the one that gives it; --optimize-x2 picks the best x2 "
                     "for the checks; without --module, --ratio (and --center-distance) rank the standard modules "
-                    "(GOST 19672), q and starts. Exit status 0 when every check holds, 1 when one fails, 2 on bad "
-                    "input.")
+                    "(GOST 19672), q and starts. The rack's --alpha-deg is axial for ZA, normal for ZN, ZI, ZK. Exit status 0 "
+                    "when every check holds, 1 when one fails, 2 on bad input.")
     g = p.add_argument_group("the worm pair")
     g.add_argument("--module", type=float, default=None, metavar="MM", help="axial module m_x of the worm, mm")
     g.add_argument("--z1", type=float, default=None, help="worm starts z1 (1 … 10)")
@@ -62,10 +66,11 @@ def add_parser(sub):
         if opt.kind == "limit":
             lo, hi = opt.range
             c.add_argument(flag, dest=opt.name, type=_limit, default=opt.default, metavar="VALUE",
-                           help=f"{opt.help} ({opt.default:g}; {lo:g} to {hi:g}, or none to drop the check)")
+                           help=f"{_WORM_HELP.get(opt.name, opt.help)} ({opt.default:g}; {lo:g} to {hi:g}, or none "
+                                "to drop the check)")
         else:
             c.add_argument(flag, dest=opt.name, action=argparse.BooleanOptionalAction, default=opt.default,
-                           help=f"{opt.help} ({'on' if opt.default else 'off'} by default)")
+                           help=f"{_WORM_HELP.get(opt.name, opt.help)} ({'on' if opt.default else 'off'} by default)")
     add_json_flag(p)
     return p
 
