@@ -100,7 +100,7 @@ class WormSelection(RankedTable):
                     f"{self.table.iloc[0]['limiting_check']} least")
         return (f"m_x = {b['m_x']:g} mm, q = {b['q']:g}, z1/z2 = {int(b['z1'])}/{int(b['z2'])} (u = {b['u']:.6g}), "
                 f"x2 = {b['x2']:.6g}, a = {b['a']:.6g} mm: {int(self.table['feasible'].sum())} of {len(self.table)} "
-                f"candidates feasible; ranked by ratio error, then {self.objective}")
+                f"candidates feasible; ranked by ratio error, module series, then {self.objective}")
 
     def __repr__(self) -> str:
         return f"WormSelection({self.choice})"
@@ -115,7 +115,8 @@ def select_worm(ratio: float | None = None, a: float | None = None, *, z1=None, 
     :func:`default_q_values`) × ``z1`` (default 1 … 4) × ``z2`` (default: the z2 nearest ``ratio``·z1; or given).
     With ``a`` the wheel's shift is x2 = a/m_x − (q + z2)/2 for each, exactly and all at once; without it each
     candidate's x2 is the ``objective`` of :meth:`WormPair.optimize_x2` ("min_abs_x2" or "max_margin") and ``m_x``
-    is required. ``checks`` are the worm's :func:`~geardesign.gears.checks.make_checks` options (the worm length
+    is required. Ranked: feasible first, then the smallest ratio error, then the module's row of the series (the
+    first preferred), then the objective, then the largest smallest margin. ``checks`` are the worm's :func:`~geardesign.gears.checks.make_checks` options (the worm length
     check is off: each candidate's worm is as long as its mesh needs). Candidates whose
     ratio misses ``ratio`` by more than ``ratio_tol`` (relative) are left out.
 
@@ -198,9 +199,14 @@ def _ranked(cand, x2, margins, names, exists, a_col, eps, gam, ratio, a, objecti
         table[f"margin_{n}"] = margins[:, j]
     moving = [f"margin_{n}" for n in names if n in _X2_SENSE]   # the margins x2 moves (the objective's)
     goal = np.abs(table["x2"]) if objective == "min_abs_x2" else -table[moving].min(axis=1)
-    table = (table.assign(_f=~table["feasible"], _e=table["ratio_error"].abs().round(12), _g=goal,
-                          _w=-table["min_margin"])
-             .sort_values(["_f", "_e", "_g", "_w"], kind="stable").drop(columns=["_f", "_e", "_g", "_w"])
+    # the module's row of the series (1 preferred to 2: "При выборе m 1-й ряд следует предпочитать 2-му", the
+    # course-design guide the catalog cites); 3: a module outside the series
+    frame = load_catalog("worm_modules")
+    rows = dict(zip(frame["module_mm"].round(9), frame["series"]))
+    table.insert(1, "module_series", [int(rows.get(round(float(v), 9), 3)) for v in table["m_x"]])
+    table = (table.assign(_f=~table["feasible"], _e=table["ratio_error"].abs().round(12), _s=table["module_series"],
+                          _g=goal, _w=-table["min_margin"])
+             .sort_values(["_f", "_e", "_s", "_g", "_w"], kind="stable").drop(columns=["_f", "_e", "_s", "_g", "_w"])
              .reset_index(drop=True))
     return WormSelection(table=table, ratio=ratio, a=a, objective=objective, checks=names, n_candidates=len(table),
                          time_s=time.perf_counter() - t0)
