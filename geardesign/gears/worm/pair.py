@@ -141,7 +141,8 @@ class WormPair:
     def x2_limits(self, **limits) -> tuple[float, float]:
         """The interval of x2 (this pair's m_x, z1, z2, q) where every check that depends on x2 holds, exact
         (each margin is monotone in x2: undercut rises, the wheel's tip thickness and the contact ratio fall;
-        their roots by Brent's method to 1e-14). (nan, nan) when no x2 satisfies them all."""
+        their roots by Brent's method to 1e-14), searched over x2 >= −h_a* (the throat at or above the reference
+        circle: below it the contact ratio is not monotone). (nan, nan) when no x2 satisfies them all."""
         lo, hi, _ = _x2_interval(self, _worm_checks(limits))
         return lo, hi
 
@@ -237,11 +238,12 @@ def _root(f, lo, hi) -> float:
 
 
 def _x2_window(pair: WormPair) -> tuple[float, float]:
-    """The x2 where the wheel exists (a root, a throat above its base circle) and meshes with the worm
-    (ε_α > 0), within |x2| <= X_ABS_MAX: the window every search of x2 stays in."""
+    """The x2 where the wheel exists (a root), its throat circle is at or above its reference circle (x2 >= −h_a*)
+    and it meshes with the worm (ε_α > 0), within |x2| <= X_ABS_MAX: the window every search of x2 stays in.
+    Below x2 = −h_a* the throat angle α_a2 falls under α_x and the contact ratio no longer falls with x2 (its
+    slope m_x(1/sin α_a2 − 1/sin α_x)/p_bx changes sign); no wheel is made so."""
     ha, c, z2 = pair.rack.ha, pair.rack.c, pair.z2
-    cos_x = math.cos(math.radians(pair._geo["alpha_x_deg"]))
-    lo = max(-X_ABS_MAX, -ha - z2 * (1.0 - cos_x) / 2.0, -(z2 / 2.0 - ha - c)) + 1e-9
+    lo = max(-X_ABS_MAX, -ha, -(z2 / 2.0 - ha - c) + 1e-9)
     hi = X_ABS_MAX
     if not _geo_at(pair, hi)["eps_alpha"] > 0:
         hi = _root(lambda x2: _geo_at(pair, x2)["eps_alpha"] - 1e-9, lo, hi)

@@ -125,3 +125,27 @@ def test_no_feasible_x2_says_which_checks_conflict():
     r = WormPair(4, 1, 16, 10).optimize_x2(eps_alpha_min=1.9)
     assert not r.success and "contact_ratio" in r.conflict and "no x2 satisfies" in r.message
     assert r.to_dict()["status"] == "failed"
+
+
+@settings(max_examples=60, deadline=None)
+@given(z1=st.integers(1, 4), z2=st.integers(14, 90), q=st.sampled_from([6.3, 8.0, 10.0, 12.5, 16.0, 20.0]),
+       eps_min=st.floats(1.0, 1.8), sa_min=st.floats(0.0, 0.45))
+def test_the_feasible_x2_interval_and_the_optimum_are_exact(z1, z2, q, eps_min, sa_min):
+    p = WormPair(2.5, z1, z2, q)
+    limits = dict(eps_alpha_min=eps_min, sa_min=sa_min)
+    lo, hi = p.x2_limits(**limits)
+    r = p.optimize_x2(**limits)
+    xs = np.linspace(-1.0, 1.0, 2001)
+    g = worm_geometry(2.5, z1, z2, q, xs, validate=False)
+    cs = gd.checks.make_checks(kind="worm", **limits)
+    ok = np.all([np.nan_to_num(np.asarray(c.margin(g), float) * np.ones_like(xs), nan=-1.0) >= -1e-12 for c in cs],
+                axis=0)
+    if not math.isfinite(lo):
+        assert not ok.any() and not r.success
+        return
+    assert r.success and lo - 1e-12 <= r.x2 <= hi + 1e-12
+    inside = (xs > lo + 1e-9) & (xs < hi - 1e-9)
+    outside = (xs < lo - 1e-9) | (xs > hi + 1e-9)
+    assert ok[inside].all() and not ok[outside].any()
+    # the x2 nearest 0 in the interval: no scanned feasible x2 is nearer
+    assert abs(r.x2) <= np.abs(xs[ok]).min() + 1e-12
