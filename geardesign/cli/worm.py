@@ -116,7 +116,7 @@ def _run(args) -> int:
     optimum = None
     if args.optimize_x2 is not None:
         optimum = pair.optimize_x2(args.optimize_x2, **checks)
-        pair = pair._with_x2(optimum.x2)
+        pair = pair.with_x2(optimum.x2)
     geo = pair.geometry()
     table = pair.checks(**checks)
     failed = table.loc[~table["ok"], "check"].tolist()

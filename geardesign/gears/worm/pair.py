@@ -162,7 +162,7 @@ class WormPair:
         lo, hi, nit = _x2_interval(self, checks)
         if not (math.isfinite(lo) and math.isfinite(hi)):
             x2 = _least_bad(self, checks)
-            pair = self._with_x2(x2)
+            pair = self.with_x2(x2)
             margins = _margins(pair, checks)
             conflict = sorted(k for k, v in margins.items() if v < -_checks.FEASIBILITY_TOL)
             return WormShiftResult(x2=x2, fun=min(margins.values()), objective=objective, success=False,
@@ -174,7 +174,7 @@ class WormPair:
             x2 = min(max(0.0, lo), hi)
         else:
             x2 = _max_min_margin(self, checks, lo, hi)
-        pair = self._with_x2(x2)
+        pair = self.with_x2(x2)
         margins = _margins(pair, checks)
         active = [k for k, v in margins.items() if k in _X2_SENSE and abs(v) <= 1e-9]   # the ones that fix x2
         # the checks that do not move with x2 cannot change the choice: max_margin is over those that do
@@ -185,7 +185,8 @@ class WormPair:
                                nit=nit, time_s=time.perf_counter() - t0, margins=margins, active=active,
                                conflict=[], **self._identity(pair))
 
-    def _with_x2(self, x2: float) -> "WormPair":
+    def with_x2(self, x2: float) -> "WormPair":
+        """The same worm and wheel with the wheel's shift ``x2``."""
         return WormPair(self.m_x, self.z1, self.z2, self.q, x2, self.flank_form, self.rack, self.worm_length_mm,
                         self.face_width_mm)
 

@@ -104,7 +104,7 @@ def test_x2_limits_are_where_the_margins_cross_zero():
     p = WormPair(4, 2, 30, 10)
     lo, hi = p.x2_limits(eps_alpha_min=1.5)
     for x2, name in ((lo, "undercut2"), (hi, "contact_ratio")):
-        t = p._with_x2(x2).checks(eps_alpha_min=1.5).set_index("check")
+        t = p.with_x2(x2).checks(eps_alpha_min=1.5).set_index("check")
         assert abs(float(np.asarray(t.loc[name, "value"])) - float(t.loc[name, "limit"])) < 1e-12
 
 
