@@ -177,7 +177,7 @@ class WormKind(StageKind):
         pair = stage.pair()
         g = pair.geometry()
         table = pair.checks(**stage.checks)
-        size, mass = _size_mass(pair._geo)
+        size, mass = _size_mass(g.to_dict())
         return dict(stage=stage, pair=pair, margins=dict(zip(table["check"], table["margin"].astype(float))),
                     size=float(size), mass=float(mass),
                     summary=dict(name=stage.name, kind="worm", ratio=g.u, efficiency=stage.efficiency, z1=stage.z1,
