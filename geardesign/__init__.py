@@ -65,6 +65,8 @@ _NAMES = {
     "SliderCrank": "mechanism.slider_crank", "IndicatorDiagram": "mechanism.pressure", "Engine": "mechanism.engine",
     "EngineTorque": "mechanism.engine", "engine_torque": "mechanism.engine", "joint_forces": "mechanism.kinetostatics",
     "virtual_power_torque": "mechanism.kinetostatics", "plot_torque": "mechanism.plot",
+    "WormPair": "gears.worm.pair", "worm_geometry": "gears.worm.geometry", "select_worm": "gears.worm.series",
+    "WormStage": "drives.stage_kinds.worm",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {
