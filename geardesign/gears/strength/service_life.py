@@ -1,0 +1,353 @@
+"""Service life under a load spectrum (ISO 6336-6:2019): each bin's stresses from the factor chain (its own K_v,
+K_Hβ, K_Hα: the chain run once over all bins), the S-N curves of ISO 6336-2 and -3 (the life factors Z_NT, Y_NT
+of :mod:`.life` and :mod:`.root_factors`), Miner's sum D = Σ n_i/N_i per gear, per flank and per tooth, the life in
+hours and the safety factor for a required life (the factor on every bin's stress that makes D = 1).
+
+The S-N curve of a gear is σ_lim(N) = σ_ref·f(N): σ_ref the stress limit with the life factor 1 (σ_HG, σ_FG of
+the chain without a required life, each bin's own Z_v), f the life factor's curve; as in the chain, Z_L, Z_v,
+Z_R, Z_W, Z_X (Y_δrelT, Y_RrelT, Y_X) scale the whole curve (the S-N curve of ISO 6336-6:2019 Figure C.1 does
+the same: its static level is 1.6 times its knee level). N_i = sup{N : f(N) >= σ_i/σ_ref}. Beyond the
+curve's knee four variants (``sn_curve``):
+
+* ``"iso"``: the curves of ISO 6336-2:2019 Table 2 and ISO 6336-3:2019 clause 12 as they are (the gentle line to
+  10^10 cycles, horizontal after it: no damage below the 10^10 strength);
+* ``"original"``: horizontal at the knee (f = 1): no damage below the endurance limit (Miner's original rule);
+* ``"elementary"``: the finite-life line continued beyond the knee without end (Miner's elementary rule);
+* ``"haibach"``: beyond the knee a line of exponent 2k − 1, k the finite-life exponent (Haibach's rule,
+  E. Haibach, *Betriebsfestigkeit*, 3rd ed., Springer 2006, §3.2).
+
+A stress above the curve's static level has no N on the standard's curve: its first sloped line is continued
+upward there and the result flags the bin (``static_exceeded``).
+
+Alternating bending: a tooth whose flanks are both loaded (a spectrum with negative torques) bends its root
+both ways; ISO 6336-3:2019 reduces its bending strength by a mean stress influence factor Y_M. Its formula was
+not found in a source we could read, so Y_M is the caller's (``mean_stress_factor``, one per gear) and a
+reversing spectrum without it is refused, never rated as one-sided.
+"""
+from __future__ import annotations
+
+import math
+import numpy as np
+
+from ...errors import GearDesignError
+from ...validate import require_choice, require_range
+from ..spectrum import LoadSpectrum
+from . import root_factors as rf
+from .life import contact_life_curve
+from .load import LIFE_RANGE_H, Load
+
+__all__ = ["SN_CURVES", "MODES", "life_curve", "torque_exponent", "cycles_to_failure", "miner_damage",
+           "safety_for_damage", "pair_life", "MEAN_STRESS_FACTOR_RANGE"]
+
+SN_CURVES = ("iso", "original", "elementary", "haibach")
+MODES = ("H1", "H2", "F1", "F2")            # pitting of gear 1, 2; root of gear 1, 2
+MEAN_STRESS_FACTOR_RANGE = (0.3, 1.0)       # Y_M: 1 one-sided; a fully alternating root far below 1
+# what each mode reads of the chain: the stress, and the stress limit without a life factor
+_CHAIN = {"H1": ("sigma_H1", "sigma_HG1"), "H2": ("sigma_H2", "sigma_HG2"),
+          "F1": ("sigma_F1", "sigma_FG1"), "F2": ("sigma_F2", "sigma_FG2")}
+_FIELDS = ("sigma_H1", "sigma_H2", "sigma_HG1", "sigma_HG2", "sigma_F1", "sigma_F2", "sigma_FG1", "sigma_FG2",
+           "K_v", "K_Hbeta", "K_Halpha", "K_Fbeta", "K_Falpha")
+
+
+def life_curve(mode: str, kind: str, pitting_permitted: bool = False, optimum: bool = False) -> tuple:
+    """The (N, f) points of a gear's S-N curve as life factors: contact (``mode`` "H") Z_NT of ISO 6336-2:2019
+    Table 2, root ("F") Y_NT of ISO 6336-3:2019 clause 12 (static value up to 10^4 or 10^3 cycles, 1.0 at
+    3·10^6, 0.85 at 10^10, or 1.0 with ``optimum``).
+
+    >>> life_curve("F", "Eh")
+    ((1000.0, 2.5), (3000000.0, 1.0), (10000000000.0, 0.85))
+    >>> life_curve("H", "Eh")
+    ((100000.0, 1.6), (50000000.0, 1.0), (10000000000.0, 0.85))
+    """
+    if mode == "H":
+        return contact_life_curve(kind, pitting_permitted, optimum)
+    if mode != "F":
+        raise GearDesignError(f"mode must be 'H' (contact) or 'F' (root), got {mode!r}")
+    n_static, y_static = rf._LIFE_BY_KIND[rf._kind(kind)]
+    return ((n_static, y_static), (rf.N_ENDURANCE, 1.0), (rf.N_LONG, 1.0 if optimum else 0.85))
+
+
+def _knee(points) -> int:
+    """The index of the curve's knee: the first point with f = 1."""
+    return next(j for j, (_, f) in enumerate(points) if f == 1.0)
+
+
+def torque_exponent(mode: str, kind: str, pitting_permitted: bool = False) -> float:
+    """The exponent p of the finite-life line of the S-N curve written in torque, N ∝ T^-p (ISO 6336-6:2019
+    Annex A's T_eq): the stress exponent k = ln(N_knee/N_static)/ln(f_static) halved for contact (σ_H ∝ √T),
+    itself for the root (σ_F ∝ T).
+
+    >>> round(torque_exponent("H", "Eh"), 2), round(torque_exponent("F", "Eh"), 2)   # the 6.6 and 8.7 in use
+    (6.61, 8.74)
+    """
+    pts = life_curve(mode, kind, pitting_permitted)
+    j = _knee(pts)
+    k = math.log(pts[j][0] / pts[j - 1][0]) / math.log(pts[j - 1][1] / pts[j][1])
+    return k / 2.0 if mode == "H" else k
+
+
+def _variant(points, sn_curve: str):
+    """(log N, log f) of the points and the tail's exponent beyond the last (None: horizontal)."""
+    require_choice("sn_curve", sn_curve, SN_CURVES)
+    pts = points if sn_curve == "iso" else points[:_knee(points) + 1]
+    x = np.log([p[0] for p in pts])
+    y = np.log([p[1] for p in pts])
+    j = _knee(points)
+    k = math.log(points[j][0] / points[j - 1][0]) / math.log(points[j - 1][1] / points[j][1])
+    tail = {"iso": None, "original": None, "elementary": k, "haibach": 2.0 * k - 1.0}[sn_curve]
+    return x, y, tail
+
+
+def cycles_to_failure(ratio, points, sn_curve: str = "iso"):
+    """N, the load cycles a gear endures at ``ratio`` = σ/σ_ref (stress over the stress limit with life factor 1)
+    on the S-N curve of the life-factor ``points`` (:func:`life_curve`): the largest N whose strength f(N) is
+    at least the ratio, straight lines in log-log between the points; beyond the last point by ``sn_curve``
+    (the module docstring); above the static level the first line continued (a stress the standard's curve
+    does not cover).
+
+    >>> pts = life_curve("H", "Eh")
+    >>> [round(float(cycles_to_failure(r, pts)) / 1e7, 6) for r in (1.0, 0.86, 0.85)]   # 0.85 holds for ever
+    [5.0, 682.969341, inf]
+    >>> round(float(cycles_to_failure(1.6 ** 0.5, pts)) / 1e6, 4)    # halfway in log-log: √(1e5·5e7)
+    2.2361
+    """
+    x, y, tail = _variant(points, sn_curve)
+    yr = np.log(np.asarray(ratio, dtype=float))
+    j = np.searchsorted(-y, -yr, side="right") - 1        # the last point with f_j >= ratio
+    last = len(x) - 1
+    jj = np.clip(j, 0, last - 1)
+    slope = (x[jj + 1] - x[jj]) / (y[jj + 1] - y[jj])     # d ln N / d ln f of the segment (finite: f falls there)
+    inside = x[jj] + (yr - y[jj]) * slope
+    beyond = np.inf if tail is None else x[last] + tail * (y[last] - yr)
+    with np.errstate(over="ignore"):
+        return np.exp(np.where(j >= last, beyond, inside))
+
+
+def miner_damage(cycles, N):
+    """Miner's sum D = Σ n_i/N_i (Palmgren 1924, Miner 1945; ISO 6336-6:2019 clause 5) over the last axis.
+
+    >>> round(float(miner_damage([1e6, 2e6], [1e7, 4e7])), 12)
+    0.15
+    """
+    n = np.asarray(cycles, dtype=float)
+    return np.sum(np.where(n > 0, n / np.asarray(N, dtype=float), 0.0), axis=-1)
+
+
+def safety_for_damage(damage_of, tol: float = 1e-10, lo: float = 1e-3, hi: float = 1e3, start: float = 1.0) -> float:
+    """S with ``damage_of(S)`` = 1: the factor on every stress of a spectrum that uses up the required life
+    (ISO 6336-6:2019: the safety factor for a required life). ``damage_of(S)`` returns D, or (D, d ln D/d ln S)
+    for Newton steps; it rises with S. Newton on ln D over ln S from ``start``, inside a bracket that bisection
+    keeps, to ``tol`` in ln S; S beyond [lo, hi]: that end.
+
+    >>> round(safety_for_damage(lambda s: 0.5 * s ** 4), 9)       # 0.5 S^4 = 1
+    1.189207115
+    >>> round(safety_for_damage(lambda s: (0.5 * s ** 4, 4.0)), 9)
+    1.189207115
+    """
+    a, b = math.log(lo), math.log(hi)
+    known_a = known_b = False            # whether D was seen below 1 at a, at least 1 at b
+    s = min(max(math.log(start), a), b)
+    for _ in range(200):
+        v = damage_of(math.exp(s))
+        d, slope = v if isinstance(v, tuple) else (v, None)
+        if d >= 1.0:
+            b, known_b = s, True
+        else:
+            a, known_a = s, True
+        if known_a and known_b and b - a <= tol:
+            break
+        step = None
+        if 0 < d < math.inf:
+            if slope is None:      # a secant slope from a nearby point
+                d2 = damage_of(math.exp(s + 1e-7))
+                d2 = d2[0] if isinstance(d2, tuple) else d2
+                slope = (math.log(d2) - math.log(d)) / 1e-7 if d2 > 0 else None
+            if slope:
+                step = s - math.log(d) / slope
+                if abs(step - s) <= tol and a <= step <= b:
+                    return math.exp(step)
+        if step is None or not a < step < b:
+            if known_a and known_b:
+                step = 0.5 * (a + b)
+            elif known_b:          # D >= 1 everywhere seen: go down
+                step = max(s - 1.0, a) if s > a else a
+            else:
+                step = min(s + 1.0, b) if s < b else b
+            if step == s:          # at an end of [lo, hi] with D on the same side of 1
+                return math.exp(s)
+        s = step
+    return math.exp(b)
+
+
+def _bins_load(spectrum: LoadSpectrum, sel) -> Load:
+    """A :class:`Load` whose torque and speed are the bins' arrays (the chain runs them in one call; a Load is one
+    case, so its fields are set past its one-number check: the bins were checked by the spectrum)."""
+    load = Load(torque_nm=1.0, n_rpm=1.0, on_gear=spectrum.on_gear)
+    object.__setattr__(load, "torque_nm", np.abs(spectrum.torque_nm[sel]))
+    object.__setattr__(load, "n_rpm", spectrum.n_rpm[sel])
+    return load
+
+
+def _mean_stress(value, reverses) -> tuple:
+    if value is None:
+        if reverses:
+            raise GearDesignError("the spectrum's torque reverses (negative bins load the other flank), so the roots "
+                                  "bend both ways: give mean_stress_factor=(Y_M1, Y_M2), the mean stress influence "
+                                  "factor of ISO 6336-3:2019 for alternating bending, in "
+                                  f"[{MEAN_STRESS_FACTOR_RANGE[0]:g}, {MEAN_STRESS_FACTOR_RANGE[1]:g}]")
+        return (1.0, 1.0)
+    pair = value if isinstance(value, (tuple, list)) else (value, value)
+    if len(pair) != 2:
+        raise GearDesignError(f"mean_stress_factor must be Y_M or (Y_M1, Y_M2), got {value!r}")
+    return tuple(float(require_range("mean_stress_factor", v, *MEAN_STRESS_FACTOR_RANGE)) for v in pair)
+
+
+def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2=None, face_width_mm,
+              life_h=None, sn_curve: str = "iso", mean_stress_factor=None, bins: bool = False, **options) -> dict:
+    """ISO 6336-6 service life of gear pairs under ``spectrum`` (a :class:`~geardesign.gears.spectrum.LoadSpectrum`),
+    vectorised over designs like :func:`~geardesign.gears.strength.chain.pair_strength` (m, z1, z2, x1, x2 and the
+    face width broadcast; ``options`` are its options: accuracy grade, lubricant, given factors, ``geometry``, ...).
+    The application factor is 1: the spectrum is the load.
+
+    ``life_h``: the required life in hours (the spectrum repeated over it); None: the spectrum's own duration.
+    ``sn_curve``: the variant beyond the knee (module docstring). ``mean_stress_factor``: Y_M of each gear for a
+    spectrum whose torque reverses. Returns, per design, ``D_H1, D_H2, D_F1, D_F2`` (Miner's sums over the
+    required life: the governing tooth and flank), ``life_h_H1`` … (hours to D = 1) and ``S_H1`` … (the safety
+    factors for the required life: the factor on the stresses that makes D = 1; one design only); ``bins=True``
+    adds the chain's per-bin fields (``bin_<field>``, shape designs × bins) and each bin's ``N_<mode>`` and
+    ``n<gear>`` cycles.
+    """
+    from .chain import _material, pair_strength
+
+    if not isinstance(spectrum, LoadSpectrum):
+        raise GearDesignError(f"spectrum must be a geardesign LoadSpectrum, got {type(spectrum).__name__}")
+    require_choice("sn_curve", sn_curve, SN_CURVES)
+    if life_h is not None:
+        life_h = float(require_range("life_h", life_h, *LIFE_RANGE_H, lo_open=True, unit="h"))
+    y_m = _mean_stress(mean_stress_factor, spectrum.reverses)
+    if options.get("root", True) is not True:
+        raise GearDesignError("pair_life rates pitting and root together: root=False is not an option here")
+    mats = (_material(material1, "material1"), _material(material1 if material2 is None else material2, "material2"))
+    life_opts = (bool(options.get("pitting_permitted", False)), bool(options.get("optimum_life", False)))
+    group = options.get("options")
+    if group is not None:
+        life_opts = (group.pitting_permitted, group.optimum_life)
+    cpr = options.get("cycles_per_rev", (1, 1)) if group is None else group.cycles_per_rev
+    loaded = np.flatnonzero(spectrum.torque_nm != 0.0)        # a bin of no torque does no damage
+    if loaded.size == 0:
+        raise GearDesignError("the spectrum has no bin with a torque: nothing to rate")
+    designs = [np.asarray(v, dtype=float) for v in (m, x1, x2)]
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (m, z1, z2, x1, x2, face_width_mm)))
+    expand = (lambda v: np.asarray(v, dtype=float)[..., None]) if shape else (lambda v: np.asarray(v, dtype=float))
+    geometry = options.pop("geometry", None)
+    if geometry is not None and shape:
+        geometry = {k: (expand(v) if k not in ("_z1", "_z2") else v) for k, v in geometry.items()}
+    width = face_width_mm if np.ndim(face_width_mm) == 0 else expand(face_width_mm)
+    out = pair_strength(expand(designs[0]), expand(z1) if np.ndim(z1) else z1, expand(z2) if np.ndim(z2) else z2,
+                        expand(designs[1]), expand(designs[2]), load=_bins_load(spectrum, loaded),
+                        material1=mats[0], material2=mats[1], face_width_mm=width, geometry=geometry, **options)
+    nb = loaded.size
+    zz = (int(np.max(z1)), int(np.max(z2)))          # cycles: the ratio of one pair (tooth counts of the designs)
+    if np.ndim(z1) or np.ndim(z2):
+        if np.unique(np.asarray(z1)).size > 1 or np.unique(np.asarray(z2)).size > 1:
+            raise GearDesignError("pair_life takes one pair of tooth counts per call (the spectrum's cycles depend "
+                                  "on the ratio); vary m, x1, x2 and the width")
+    scale = 1.0 if life_h is None else life_h / spectrum.duration_h
+    n = {g: spectrum.cycles(g, zz, cpr[g - 1])[loaded] * scale for g in (1, 2)}
+    sign = np.sign(spectrum.torque_nm[loaded])
+    groups = {g: _groups(spectrum, loaded, g, sign) for g in (1, 2)}
+    reversing = {g: _reversing_teeth(spectrum, loaded, g, sign) for g in (1, 2)}
+    res = {"required_life_h": spectrum.duration_h if life_h is None else life_h}
+    curves, ratio, static = {}, {}, {}
+    for mode in MODES:
+        g = int(mode[1])
+        sig, ref = (np.broadcast_to(np.asarray(out[k], dtype=float), shape + (nb,)) for k in _CHAIN[mode])
+        if mode[0] == "F":
+            ref = ref * np.where(reversing[g], y_m[g - 1], 1.0)
+        pts = life_curve(mode[0], mats[g - 1].kind, *(life_opts if mode[0] == "H" else (False, life_opts[1])))
+        curves[mode] = pts
+        ratio[mode] = sig / ref
+        N = cycles_to_failure(ratio[mode], pts, sn_curve)
+        static[mode] = ratio[mode] > pts[0][1]
+        D = _grouped_max(n[g] / N, groups[g])
+        res["D_" + mode] = D
+        with np.errstate(divide="ignore"):
+            res["life_h_" + mode] = np.where(D > 0, res["required_life_h"] / D, np.inf)
+        if bins:
+            res["N_" + mode] = N
+    res["static_exceeded"] = np.any(np.stack([np.any(v, axis=-1) for v in static.values()]), axis=0)
+    if not shape:
+        for mode in MODES:
+            g = int(mode[1])
+
+            curve = _variant(curves[mode], sn_curve)
+            lr = np.log(ratio[mode])
+
+            def damage(S, curve=curve, lr=lr, g=g):
+                return _damage_and_slope(curve, lr + math.log(S), n[g], groups[g])
+
+            # start where the largest stress reaches the curve's end (a horizontal tail: no damage below it)
+            start = 1.0 if curve[2] is not None else max(1.0, math.exp(curve[1][-1] - float(np.max(lr))) * 1.000001)
+            res["S_" + mode] = safety_for_damage(damage, start=start)
+        res = {k: (float(v) if np.ndim(v) == 0 and k.startswith(("D_", "life_h_", "static")) else v)
+               for k, v in res.items()}
+    if bins:
+        res.update({"bin_" + k: np.broadcast_to(np.asarray(out[k], dtype=float), shape + (nb,)) for k in _FIELDS})
+        res.update(bin_index=loaded, n1=n[1], n2=n[2], bin_reversing1=reversing[1], bin_reversing2=reversing[2],
+                   curves=curves, ratio=ratio, mean_stress_factor=y_m)
+    return res
+
+
+def _damage_and_slope(curve, yr, n, groups) -> tuple:
+    """(D, d ln D/d ln S) of the governing group at the log stress ratios ``yr`` on ``curve`` (:func:`_variant`'s):
+    on each line N ∝ f^slope, so n/N grows as S^(−slope)."""
+    x, y, tail = curve
+    j = np.searchsorted(-y, -yr, side="right") - 1
+    last = len(x) - 1
+    jj = np.clip(j, 0, last - 1)
+    slope = (x[jj + 1] - x[jj]) / (y[jj + 1] - y[jj])
+    beyond = j >= last
+    lnN = np.where(beyond, np.inf if tail is None else x[last] + (tail or 0.0) * (y[last] - yr),
+                   x[jj] + (yr - y[jj]) * slope)
+    k = np.where(beyond, 0.0 if tail is None else tail, -slope)        # −d ln N/d ln S
+    with np.errstate(over="ignore"):
+        d = np.where(n > 0, n * np.exp(-lnN), 0.0)
+    if groups.max() == 0:
+        D = float(d.sum())
+        return D, (float(d @ k) / D if D > 0 else None)
+    sums = np.bincount(groups, weights=d)
+    g = int(np.argmax(sums))
+    D = float(sums[g])
+    sel = groups == g
+    return D, (float(d[sel] @ k[sel]) / D if D > 0 else None)
+
+
+def _groups(spectrum: LoadSpectrum, loaded, gear: int, sign) -> np.ndarray:
+    """Each loaded bin's group: one flank of one tooth of ``gear`` (every tooth alike: one group per flank)."""
+    tooth = np.zeros(loaded.size, dtype=np.int64) if not spectrum.per_tooth else \
+        (spectrum.tooth1 if gear == 1 else spectrum.tooth2)[loaded]
+    return tooth * 2 + (sign < 0)
+
+
+def _reversing_teeth(spectrum: LoadSpectrum, loaded, gear: int, sign) -> np.ndarray:
+    """True for the bins of a tooth of ``gear`` whose flanks are both loaded in the spectrum (its root bends both
+    ways)."""
+    tooth = np.zeros(loaded.size, dtype=np.int64) if not spectrum.per_tooth else \
+        (spectrum.tooth1 if gear == 1 else spectrum.tooth2)[loaded]
+    pos = np.zeros(int(tooth.max()) + 1, dtype=bool)
+    neg = pos.copy()
+    pos[tooth[sign > 0]] = True
+    neg[tooth[sign < 0]] = True
+    return (pos & neg)[tooth]
+
+
+def _grouped_max(d, groups) -> np.ndarray:
+    """The largest of the groups' damage sums (over the last axis, bins)."""
+    if groups.max() == 0:
+        return np.sum(d, axis=-1)
+    onehot = np.zeros((groups.size, int(groups.max()) + 1))
+    onehot[np.arange(groups.size), groups] = 1.0
+    inf = np.isinf(d)
+    if not inf.any():
+        return np.max(d @ onehot, axis=-1)
+    return np.max(np.where((inf @ onehot) > 0, np.inf, np.where(inf, 0.0, d) @ onehot), axis=-1)
