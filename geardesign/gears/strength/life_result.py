@@ -67,8 +67,10 @@ class LifeResult(Result):
         return self._bins.copy()
 
     def to_dict(self) -> dict:
+        from ...results import plain
+
         out = super().to_dict()
-        out["ok"] = self.ok
+        out.update(ok=self.ok, governing=self.governing[0], bins=plain(self._bins))
         return out
 
     def __repr__(self) -> str:

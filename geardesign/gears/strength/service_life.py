@@ -173,8 +173,8 @@ def safety_for_damage(damage_of, tol: float = 1e-10, lo: float = 1e-3, hi: float
                 step = max(s - 1.0, a) if s > a else a
             else:
                 step = min(s + 1.0, b) if s < b else b
-            if step == s:          # at an end of [lo, hi] with D on the same side of 1
-                return math.exp(s)
+            if step == s:          # at an end of [lo, hi] with D on the same side of 1: that end
+                return hi if d < 1.0 else lo
         s = step
     return math.exp(b)
 
