@@ -30,7 +30,7 @@ BINS_MAX = 100_000                  # rows of a spectrum: a measured history's l
 SPECTRUM_COLUMNS = ("torque_nm", "n_rpm", "time_h", "cycles", "share")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)      # arrays: compared by identity (== of two spectra would be element-wise)
 class LoadSpectrum:
     """Bins of a load spectrum: ``torque_nm`` (N·m, signed: negative loads the other flank) at ``n_rpm`` (rpm),
     both of the gear ``on_gear`` (1 or 2) they are given on, for ``time_h`` hours each. ``tooth1``, ``tooth2``:
