@@ -26,6 +26,7 @@ reversing spectrum without it is refused, never rated as one-sided.
 """
 from __future__ import annotations
 
+import functools
 import math
 import numpy as np
 
@@ -86,8 +87,10 @@ def torque_exponent(mode: str, kind: str, pitting_permitted: bool = False) -> fl
     return k / 2.0 if mode == "H" else k
 
 
+@functools.lru_cache(maxsize=256)
 def _variant(points, sn_curve: str):
-    """(log N, log f) of the points and the tail's exponent beyond the last (None: horizontal)."""
+    """(log N, log f) of the points and the tail's exponent beyond the last (None: horizontal); once per curve
+    (read-only arrays)."""
     require_choice("sn_curve", sn_curve, SN_CURVES)
     pts = points if sn_curve == "iso" else points[:_knee(points) + 1]
     x = np.log([p[0] for p in pts])
@@ -95,6 +98,8 @@ def _variant(points, sn_curve: str):
     j = _knee(points)
     k = math.log(points[j][0] / points[j - 1][0]) / math.log(points[j - 1][1] / points[j][1])
     tail = {"iso": None, "original": None, "elementary": k, "haibach": 2.0 * k - 1.0}[sn_curve]
+    x.setflags(write=False)
+    y.setflags(write=False)
     return x, y, tail
 
 
