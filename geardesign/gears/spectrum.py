@@ -34,8 +34,8 @@ SPECTRUM_COLUMNS = ("torque_nm", "n_rpm", "time_h", "cycles", "share")
 class LoadSpectrum:
     """Bins of a load spectrum: ``torque_nm`` (N·m, signed: negative loads the other flank) at ``n_rpm`` (rpm),
     both of the gear ``on_gear`` (1 or 2) they are given on, for ``time_h`` hours each. ``tooth1``, ``tooth2``:
-    the tooth of each gear a bin belongs to (-1: every tooth; a spectrum counted per tooth, see
-    :meth:`from_curve`), with ``meshes`` the load cycles of that tooth in the bin.
+    the tooth of each gear a bin belongs to (a spectrum counted per tooth, see :meth:`from_curve`), with
+    ``meshes`` the load cycles of that tooth in the bin and ``teeth`` the pair's (z1, z2) they were counted for.
 
     Build one with ``LoadSpectrum.from_bins`` (cycles, time or time shares), :meth:`from_curve` or
     :meth:`from_csv`; the arrays are checked by name.
@@ -54,6 +54,7 @@ class LoadSpectrum:
     tooth1: np.ndarray | None = field(default=None, repr=False)
     tooth2: np.ndarray | None = field(default=None, repr=False)
     meshes: np.ndarray | None = field(default=None, repr=False)
+    teeth: tuple | None = None
 
     def __post_init__(self):
         t = require_range("torque_nm", self.torque_nm, *TORQUE_RANGE_NM, unit="N·m").astype(float).ravel()
@@ -82,7 +83,12 @@ class LoadSpectrum:
             m = require_range("meshes", self.meshes, 0.0, 1e18).astype(float).ravel()
             if m.shape != t.shape:
                 raise GearDesignError(f"meshes must be one per bin ({t.size}), got {m.size}")
-            for name, v in (("tooth1", t1), ("tooth2", t2), ("meshes", m)):
+            if self.teeth is None:
+                raise GearDesignError("a spectrum counted per tooth needs teeth=(z1, z2), the pair it was counted for")
+            z = _teeth(self.teeth)
+            if t1.min() < 0 or t2.min() < 0 or t1.max() >= z[0] or t2.max() >= z[1]:
+                raise GearDesignError(f"tooth1 and tooth2 must be in [0, z) of teeth={z}")
+            for name, v in (("tooth1", t1), ("tooth2", t2), ("meshes", m), ("teeth", z)):
                 object.__setattr__(self, name, v)
         for name, v in (("torque_nm", t), ("n_rpm", n), ("time_h", h)):
             v.setflags(write=False)
@@ -226,7 +232,7 @@ class LoadSpectrum:
         keys, counts = np.unique(np.stack([level_T, t1, t2]), axis=1, return_counts=True)
         run_h = run * pitch / (6.0 * n) / 3600.0      # hours of the run at n rpm
         return cls(keys[0], n, counts * run_h / run, on_gear, keys[1].astype(np.int64), keys[2].astype(np.int64),
-                   counts.astype(float))
+                   counts.astype(float), z)
 
     # -- quantities -----------------------------------------------------------------------------------------
     @property

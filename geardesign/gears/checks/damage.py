@@ -114,32 +114,39 @@ class DamageSpec:
         X1 = np.stack([np.broadcast_to(x1 + a, shape) for a, _ in offsets]).reshape(n_pts, -1)
         X2 = np.stack([np.broadcast_to(x2 + b, shape) for _, b in offsets]).reshape(n_pts, -1)
         M = np.broadcast_to(np.asarray(geo["_m"], dtype=float), shape).reshape(1, -1)
-        z1, z2 = mesh.z1, mesh.z2
+        # a tooth search batches several pairs in one geometry: the spectrum's cycles depend on each pair's ratio,
+        # so pair_life runs once per pair of tooth counts
+        Z1, Z2 = (np.broadcast_to(np.broadcast_to(np.asarray(geo[k], dtype=float), shape).reshape(1, -1), X1.shape)
+                  for k in ("_z1", "_z2"))
         D = {k: np.full(X1.size, np.nan) for k in _MODES}
         with np.errstate(all="ignore"):
-            g = mesh_geometry(mesh.unchecked(z1, z2), M, X1, X2, full=False)
+            g = mesh_geometry(mesh.unchecked(Z1[:1], Z2[:1]), M, X1, X2, full=False)
             idx = np.flatnonzero(np.broadcast_to(_in_range(g, X1, X2), X1.shape))
             if idx.size:
                 flat = {k: np.broadcast_to(g[k], X1.shape).ravel()[idx] for k in CHAIN_GEOMETRY_FIELDS}
                 b = width if np.ndim(width) == 0 else np.broadcast_to(
                     np.broadcast_to(np.asarray(width, dtype=float), shape).reshape(1, -1), X1.shape).ravel()[idx]
-                geometry = {**flat, "_z1": z1, "_z2": z2}
                 m_at = np.broadcast_to(M, X1.shape).ravel()[idx]
                 x1_at, x2_at = X1.ravel()[idx], X2.ravel()[idx]
+                z_at = np.stack([Z1.ravel()[idx], Z2.ravel()[idx]])
+                for z1, z2 in np.unique(z_at, axis=1).T:
+                    mine = np.flatnonzero((z_at[0] == z1) & (z_at[1] == z2))
+                    z1, z2 = int(z1), int(z2)
 
-                def call(sel):
-                    out = pair_life(m_at[sel], z1, z2, x1_at[sel], x2_at[sel], spectrum=self.spectrum,
-                                    material1=self.material1, material2=self.material2,
-                                    face_width_mm=b if np.ndim(b) == 0 else b[sel], life_h=self.life_h,
-                                    sn_curve=self.sn_curve, mean_stress_factor=self.mean_stress_factor,
-                                    beta_deg=mesh.beta_deg, internal=mesh.internal, rack=mesh.rack,
-                                    tip_shortening=mesh.tip_shortening,
-                                    geometry={k: (v[sel] if k not in ("_z1", "_z2") else v)
-                                              for k, v in geometry.items()}, **dict(self.options))
-                    return {k: np.asarray(out["D_" + k], dtype=float) for k in _MODES}
+                    def call(sel, mine=mine, z1=z1, z2=z2):
+                        at = mine[sel]
+                        out = pair_life(m_at[at], z1, z2, x1_at[at], x2_at[at], spectrum=self.spectrum,
+                                        material1=self.material1, material2=self.material2,
+                                        face_width_mm=b if np.ndim(b) == 0 else b[at], life_h=self.life_h,
+                                        sn_curve=self.sn_curve, mean_stress_factor=self.mean_stress_factor,
+                                        beta_deg=mesh.beta_deg, internal=mesh.internal, rack=mesh.rack,
+                                        tip_shortening=mesh.tip_shortening,
+                                        geometry={**{k: v[at] for k, v in flat.items()}, "_z1": z1, "_z2": z2},
+                                        **dict(self.options))
+                        return {k: np.asarray(out["D_" + k], dtype=float) for k in _MODES}
 
-                for k, v in _where_it_holds(call, idx.size).items():
-                    D[k][idx] = v
+                    for k, v in _where_it_holds(call, mine.size).items():
+                        D[k][idx[mine]] = v
         return {k: v.reshape((n_pts,) + shape) for k, v in D.items()}
 
 

@@ -257,6 +257,9 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
         if np.unique(np.asarray(z1)).size > 1 or np.unique(np.asarray(z2)).size > 1:
             raise GearDesignError("pair_life takes one pair of tooth counts per call (the spectrum's cycles depend "
                                   "on the ratio); vary m, x1, x2 and the width")
+    if spectrum.per_tooth and spectrum.teeth != zz:
+        raise GearDesignError(f"the spectrum was counted per tooth for teeth {spectrum.teeth}, the pair has {zz}: count "
+                              f"the curve again for this pair (LoadSpectrum.from_curve(..., teeth={zz}))")
     scale = 1.0 if life_h is None else life_h / spectrum.duration_h
     n = {g: spectrum.cycles(g, zz, cpr[g - 1])[loaded] * scale for g in (1, 2)}
     sign = np.sign(spectrum.torque_nm[loaded])
