@@ -143,14 +143,14 @@ class LoadSpectrum:
             raise GearDesignError(f"spectrum file {str(path)!r}: unknown column {unknown[0]!r}; allowed: "
                                   f"{', '.join(SPECTRUM_COLUMNS)}")
         if "torque_nm" not in header:
-            raise GearDesignError(f"spectrum file {str(path)!r} needs a torque_nm column")
+            raise GearDesignError(f"spectrum file {str(path)!r} needs a 'torque_nm' column")
         amounts = [h for h in header if h in ("time_h", "cycles", "share")]
         if len(amounts) != 1:
-            raise GearDesignError(f"spectrum file {str(path)!r} needs exactly one of the columns time_h, cycles, "
-                                  f"share, got {amounts or 'none'}")
+            raise GearDesignError(f"spectrum file {str(path)!r} needs exactly one of the columns 'time_h', 'cycles', "
+                                  f"'share', got {amounts or 'none'}")
         if ("n_rpm" in header) == (n_rpm is not None):
-            raise GearDesignError(f"spectrum file {str(path)!r}: give the speed either as an n_rpm column or as "
-                                  f"n_rpm=, not {'both' if n_rpm is not None else 'neither'}")
+            raise GearDesignError(f"spectrum file {str(path)!r}: give the speed either as an 'n_rpm' column or "
+                                  f"apart (n_rpm=), not {'both' if n_rpm is not None else 'neither'}")
         cols = {h: [] for h in header}
         limits = {"torque_nm": TORQUE_RANGE_NM, "n_rpm": SPEED_RANGE_RPM, "time_h": TIME_RANGE_H,
                   "cycles": (0.0, 1e18), "share": (0.0, 1.0)}
@@ -162,11 +162,11 @@ class LoadSpectrum:
                 try:
                     v = float(cell)
                 except ValueError:
-                    raise GearDesignError(f"spectrum file {str(path)!r} row {i}, column {h}: {cell.strip()!r} is "
+                    raise GearDesignError(f"spectrum file {str(path)!r} row {i}, column {h!r}: {cell.strip()!r} is "
                                           f"not a number") from None
                 lo, hi = limits[h]
                 if not (math.isfinite(v) and lo <= v <= hi) or (h == "n_rpm" and v <= 0):
-                    raise GearDesignError(f"spectrum file {str(path)!r} row {i}, column {h}: {v:g} is outside "
+                    raise GearDesignError(f"spectrum file {str(path)!r} row {i}, column {h!r}: {v:g} is outside "
                                           f"{'(' if h == 'n_rpm' else '['}{lo:g}, {hi:g}]")
                 cols[h].append(v)
         speed = cols["n_rpm"] if n_rpm is None else n_rpm

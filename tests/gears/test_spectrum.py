@@ -81,13 +81,13 @@ def test_csv_spectrum(tmp_path):
 
 
 @pytest.mark.parametrize("text, words", [
-    ("torque_nm,n_rpm,time_h\n400,1500,10\n200,abc,2\n", "row 3, column n_rpm: 'abc' is not a number"),
-    ("torque_nm,n_rpm,time_h\n400,1500,-1\n", "row 2, column time_h: -1 is outside"),
-    ("torque_nm,n_rpm,time_h\n400,0,1\n", "row 2, column n_rpm: 0 is outside"),
+    ("torque_nm,n_rpm,time_h\n400,1500,10\n200,abc,2\n", "row 3, column 'n_rpm': 'abc' is not a number"),
+    ("torque_nm,n_rpm,time_h\n400,1500,-1\n", "row 2, column 'time_h': -1 is outside"),
+    ("torque_nm,n_rpm,time_h\n400,0,1\n", "row 2, column 'n_rpm': 0 is outside"),
     ("torque_nm,n_rpm,time_h\n400,1500\n", "row 2: 2 cells, the header has 3"),
     ("torque_nm,n_rpm,hours\n400,1500,1\n", "unknown column 'hours'"),
-    ("torque_nm,n_rpm\n400,1500\n", "exactly one of the columns time_h, cycles, share"),
-    ("n_rpm,time_h\n1500,1\n", "needs a torque_nm column"),
+    ("torque_nm,n_rpm\n400,1500\n", "exactly one of the columns 'time_h', 'cycles', 'share'"),
+    ("n_rpm,time_h\n1500,1\n", "needs a 'torque_nm' column"),
     ("torque_nm,n_rpm,time_h\n", "needs a header and at least one row"),
 ])
 def test_bad_csv_names_the_row_and_column(tmp_path, text, words):
