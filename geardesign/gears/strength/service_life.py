@@ -285,18 +285,9 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
             res["N_" + mode] = N
     res["static_exceeded"] = np.any(np.stack([np.any(v, axis=-1) for v in static.values()]), axis=0)
     if not shape:
-        for mode in MODES:
-            g = int(mode[1])
-
-            curve = _variant(curves[mode], sn_curve)
-            lr = np.log(ratio[mode])
-
-            def damage(S, curve=curve, lr=lr, g=g):
-                return _damage_and_slope(curve, lr + math.log(S), n[g], groups[g])
-
-            # start where the largest stress reaches the curve's end (a horizontal tail: no damage below it)
-            start = 1.0 if curve[2] is not None else max(1.0, math.exp(curve[1][-1] - float(np.max(lr))) * 1.000001)
-            res["S_" + mode] = safety_for_damage(damage, start=start)
+        S = _safeties([_variant(curves[m], sn_curve) for m in MODES], np.stack([np.log(ratio[m]) for m in MODES]),
+                      np.stack([n[int(m[1])] for m in MODES]), [groups[int(m[1])] for m in MODES])
+        res.update({"S_" + m: float(v) for m, v in zip(MODES, S)})
         res = {k: (float(v) if np.ndim(v) == 0 and k.startswith(("D_", "life_h_", "static")) else v)
                for k, v in res.items()}
     if bins:
@@ -306,28 +297,84 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     return res
 
 
-def _damage_and_slope(curve, yr, n, groups) -> tuple:
-    """(D, d ln D/d ln S) of the governing group at the log stress ratios ``yr`` on ``curve`` (:func:`_variant`'s):
-    on each line N ∝ f^slope, so n/N grows as S^(−slope)."""
-    x, y, tail = curve
-    j = np.searchsorted(-y, -yr, side="right") - 1
-    last = len(x) - 1
-    jj = np.clip(j, 0, last - 1)
-    slope = (x[jj + 1] - x[jj]) / (y[jj + 1] - y[jj])
-    beyond = j >= last
-    lnN = np.where(beyond, np.inf if tail is None else x[last] + (tail or 0.0) * (y[last] - yr),
-                   x[jj] + (yr - y[jj]) * slope)
-    k = np.where(beyond, 0.0 if tail is None else tail, -slope)        # −d ln N/d ln S
-    with np.errstate(over="ignore"):
-        d = np.where(n > 0, n * np.exp(-lnN), 0.0)
-    if groups.max() == 0:
-        D = float(d.sum())
-        return D, (float(d @ k) / D if D > 0 else None)
-    sums = np.bincount(groups, weights=d)
-    g = int(np.argmax(sums))
-    D = float(sums[g])
-    sel = groups == g
-    return D, (float(d[sel] @ k[sel]) / D if D > 0 else None)
+_PAD = 5.0   # ln-units between the padding points of a curve (any positive step: they lie on its first line)
+
+
+def _padded(curves) -> tuple:
+    """The curves (:func:`_variant`'s) as rows of one length: each padded at its front with points on its first
+    sloped line (what a stress above the static level reads anyway), the last point last in every row; and the
+    rows' tail exponents (NaN: horizontal)."""
+    P = max(len(c[0]) for c in curves)
+    X, Y = np.empty((len(curves), P)), np.empty((len(curves), P))
+    for r, (x, y, _) in enumerate(curves):
+        extra = P - len(x)
+        slope = (x[1] - x[0]) / (y[1] - y[0])
+        dy = _PAD * np.arange(extra, 0, -1)
+        X[r] = np.concatenate([x[0] + slope * dy, x])
+        Y[r] = np.concatenate([y[0] + dy, y])
+    tails = np.array([np.nan if c[2] is None else c[2] for c in curves])
+    return X, Y, tails
+
+
+def _safeties(curves, lr, n, groups, tol: float = 1e-10, lo: float = 1e-3, hi: float = 1e3) -> np.ndarray:
+    """S of each row (a gear and mode): the factor on its log stress ratios ``lr`` (rows × bins) that makes its
+    Miner sum over ``n`` cycles (rows × bins; the governing group of ``groups``) equal 1. Newton on ln D over ln S
+    for every row at once, kept inside each row's bracket by bisection; :func:`safety_for_damage` of one row."""
+    X, Y, tails = _padded(curves)
+    R, P = X.shape
+    rows = np.arange(R)[:, None]
+    grouped = [g.max() > 0 for g in groups]
+    horizontal = np.isnan(tails)
+    tail = np.where(horizontal, 0.0, tails)[:, None]
+    last_x, last_y = X[:, -1:], Y[:, -1:]
+
+    def at(s):
+        yr = lr + s[:, None]
+        j = (Y[:, :, None] >= yr[:, None, :]).sum(axis=1) - 1
+        jj = np.clip(j, 0, P - 2)
+        x0, y0 = X[rows, jj], Y[rows, jj]
+        slope = (X[rows, jj + 1] - x0) / (Y[rows, jj + 1] - y0)
+        beyond = j >= P - 1
+        with np.errstate(invalid="ignore", over="ignore"):
+            lnN = np.where(beyond, np.where(horizontal[:, None], np.inf, last_x + tail * (last_y - yr)),
+                           x0 + (yr - y0) * slope)
+            k = np.where(beyond, tail, -slope)
+            d = np.where(n > 0, n * np.exp(-lnN), 0.0)
+        D, dk = d.sum(axis=1), (d * k).sum(axis=1)
+        for r in np.flatnonzero(grouped):            # per tooth or flank: the governing group's sum
+            sums = np.bincount(groups[r], weights=d[r])
+            g = int(np.argmax(sums))
+            sel = groups[r] == g
+            D[r], dk[r] = sums[g], d[r, sel] @ k[r, sel]
+        return D, dk
+
+    a, b = np.full(R, math.log(lo)), np.full(R, math.log(hi))
+    seen_a, seen_b = np.zeros(R, bool), np.zeros(R, bool)
+    # start at S = 1, or where the largest stress reaches a horizontal curve's end (no damage below it)
+    s = np.where(horizontal, np.maximum(0.0, last_y[:, 0] - lr.max(axis=1) + 1e-9), 0.0)
+    s = np.clip(s, a, b)
+    done = np.zeros(R, bool)
+    out = np.exp(s)
+    for _ in range(200):
+        D, dk = at(s)
+        below = D < 1.0
+        a, seen_a = np.where(below, s, a), seen_a | below
+        b, seen_b = np.where(below, b, s), seen_b | ~below
+        with np.errstate(divide="ignore", invalid="ignore"):
+            newton = s - np.log(D) / (dk / D)
+        ok = np.isfinite(newton) & (newton >= a) & (newton <= b) & (D > 0) & (dk > 0)
+        conv = ok & (np.abs(newton - s) <= tol) | (seen_a & seen_b & (b - a <= tol))
+        fallback = np.where(seen_a & seen_b, 0.5 * (a + b), np.where(below, np.minimum(s + 1.0, b),
+                                                                     np.maximum(s - 1.0, a)))
+        stuck = ~ok & (fallback == s)                # at an end of [lo, hi] with D on one side of 1
+        new = ~done & (conv | stuck)
+        out[new] = np.where(conv, np.where(ok, np.exp(newton), np.exp(b)), np.where(below, hi, lo))[new]
+        done |= new
+        if done.all():
+            break
+        s = np.where(ok & ~((newton == a) | (newton == b)), newton, fallback)
+    out[~done] = np.exp(b[~done])
+    return out
 
 
 def _groups(spectrum: LoadSpectrum, loaded, gear: int, sign) -> np.ndarray:

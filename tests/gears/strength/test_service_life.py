@@ -266,3 +266,25 @@ def test_annex_c_whole_chain_pitting_safety_of_the_pinion():
     top = r.bins.iloc[0]
     assert top["sigma_H1"] == pytest.approx(f["sigma_H2"].max(), rel=0.03)
     assert r.bins["n1"].sum() == pytest.approx(6.0e5, rel=0.01)
+
+
+@pytest.mark.parametrize("sn_curve", ["iso", "original", "elementary", "haibach"])
+def test_safety_factors_of_all_modes_at_once_are_each_modes_own(sn_curve):
+    """pair_life solves the four safety factors together; each equals the one-row solver's S on the damage sum
+    written from cycles_to_failure (per flank, a reversing spectrum with Y_M)."""
+    spec = LoadSpectrum.from_bins([300.0, 200.0, -150.0, 80.0], 1000.0, time_h=[500.0, 3000.0, 2000.0, 9000.0])
+    out = pair_life(np.float64(4.0), 20, 60, 0.3, 0.1, spectrum=spec, material1="42CrMo4", face_width_mm=40.0,
+                    sn_curve=sn_curve, mean_stress_factor=0.8, bins=True)
+    for mode in ("H1", "H2", "F1", "F2"):
+        g = int(mode[1])
+        r, n = out["ratio"][mode], out[f"n{g}"]
+        flank = spec.torque_nm[out["bin_index"]] < 0
+
+        def D(S, r=r, n=n, mode=mode):
+            d = n / cycles_to_failure(S * r, out["curves"][mode], sn_curve)
+            return max(d[~flank].sum(), d[flank].sum())
+
+        S = out["S_" + mode]
+        assert S == pytest.approx(safety_for_damage(D), rel=1e-8)
+        # D reaches 1 at S (or jumps over it there: a bin crossing a horizontal curve's knee or end)
+        assert D(S * (1 - 1e-7)) < 1.0 <= D(S * (1 + 1e-7))
