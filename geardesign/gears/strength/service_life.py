@@ -34,6 +34,7 @@ from ...errors import GearDesignError
 from ...validate import require_choice, require_range
 from ..spectrum import LoadSpectrum
 from . import root_factors as rf
+from .blocks import BLOCK
 from .life import contact_life_curve
 from .load import LIFE_RANGE_H, Load
 
@@ -241,8 +242,14 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     loaded = np.flatnonzero(spectrum.torque_nm != 0.0)        # a bin of no torque does no damage
     if loaded.size == 0:
         raise GearDesignError("the spectrum has no bin with a torque: nothing to rate")
-    designs = [np.asarray(v, dtype=float) for v in (m, x1, x2)]
     shape = np.broadcast_shapes(*(np.shape(v) for v in (m, z1, z2, x1, x2, face_width_mm)))
+    if (math.prod(shape) * loaded.size > _ELEMENTS or math.prod(shape) > BLOCK) and not bins:
+        # many designs: in chunks, so that the chain's per-bin fields stay small (and it never splits the designs
+        # into blocks of its own, which would part them from the bins)
+        return _in_chunks(shape, loaded.size, dict(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=face_width_mm),
+                          dict(spectrum=spectrum, material1=material1, material2=material2, life_h=life_h,
+                               sn_curve=sn_curve, mean_stress_factor=mean_stress_factor, **options))
+    designs = [np.asarray(v, dtype=float) for v in (m, x1, x2)]
     expand = (lambda v: np.asarray(v, dtype=float)[..., None]) if shape else (lambda v: np.asarray(v, dtype=float))
     geometry = options.pop("geometry", None)
     if geometry is not None and shape:
@@ -374,6 +381,30 @@ def _safeties(curves, lr, n, groups, tol: float = 1e-10, lo: float = 1e-3, hi: f
             break
         s = np.where(ok & ~((newton == a) | (newton == b)), newton, fallback)
     out[~done] = np.exp(b[~done])
+    return out
+
+
+_ELEMENTS = 65536     # designs × bins of one chain call: ~100 fields of 0.5 MB
+
+
+def _in_chunks(shape, nb, per_design: dict, rest: dict) -> dict:
+    """:func:`pair_life` of many designs, a chunk of them at a time (flattened), its arrays put back in ``shape``."""
+    flat = {k: np.broadcast_to(np.asarray(v), shape).ravel() for k, v in per_design.items()}
+    geometry = rest.pop("geometry", None)
+    if geometry is not None:
+        geometry = {k: (v if k in ("_z1", "_z2") else np.broadcast_to(np.asarray(v, dtype=float), shape).ravel())
+                    for k, v in geometry.items()}
+    step = max(1, min(BLOCK, _ELEMENTS // nb))
+    parts = []
+    for i in range(0, math.prod(shape), step):
+        part = {k: v[i:i + step] for k, v in flat.items()}
+        part["z1"], part["z2"] = int(part["z1"][0]), int(part["z2"][0])   # one pair of tooth counts per call
+        if geometry is not None:
+            rest["geometry"] = {k: (v if k in ("_z1", "_z2") else v[i:i + step]) for k, v in geometry.items()}
+        parts.append(pair_life(**part, **rest))
+    out = {}
+    for k, v in parts[0].items():
+        out[k] = np.concatenate([p[k] for p in parts]).reshape(shape) if np.ndim(v) == 1 else v
     return out
 
 
