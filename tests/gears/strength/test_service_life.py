@@ -288,3 +288,17 @@ def test_safety_factors_of_all_modes_at_once_are_each_modes_own(sn_curve):
         assert S == pytest.approx(safety_for_damage(D), rel=1e-8)
         # D reaches 1 at S (or jumps over it there: a bin crossing a horizontal curve's knee or end)
         assert D(S * (1 - 1e-7)) < 1.0 <= D(S * (1 + 1e-7))
+
+
+def test_many_designs_run_in_chunks_with_the_same_answers(monkeypatch):
+    from geardesign.gears.strength import service_life as sl
+
+    spec = LoadSpectrum.from_bins([300.0, 150.0, 75.0], 1000.0, time_h=[4000.0, 16000.0, 1.0])
+    x1 = np.linspace(0.1, 0.5, 7).reshape(7, 1)
+    x2 = np.array([0.0, 0.1])
+    whole = pair_life(4.0, 20, 60, x1, x2, spectrum=spec, material1="42CrMo4", face_width_mm=40.0)
+    monkeypatch.setattr(sl, "_ELEMENTS", 7)            # 2 designs (of 3 bins) a chunk
+    parts = pair_life(4.0, 20, 60, x1, x2, spectrum=spec, material1="42CrMo4", face_width_mm=40.0)
+    for mode in ("H1", "H2", "F1", "F2"):
+        assert parts["D_" + mode].shape == (7, 2)
+        assert np.allclose(parts["D_" + mode], whole["D_" + mode], rtol=1e-12, atol=0)
