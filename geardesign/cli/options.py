@@ -160,9 +160,6 @@ def add_load_args(p, planetary: bool = False, limits: bool = False) -> None:
     add_strength_args(g, limits=limits)
 
 
-SN_CURVE_CHOICES = ("iso", "original", "elementary", "haibach")   # service_life.SN_CURVES, without its import
-
-
 def add_spectrum_args(p) -> None:
     """A load spectrum (ISO 6336-6): --spectrum FILE (a CSV), the S-N curve beyond the knee, Y_M; given, the damage
     checks join the others (with --material, --life-h the required life)."""
@@ -172,7 +169,9 @@ def add_spectrum_args(p) -> None:
                    help="the load spectrum: a CSV with columns torque_nm, n_rpm (or --speed for all bins) and one of "
                         "time_h, cycles, share (share: with --life-h); torques of gear --on-gear, negative on the "
                         "other flank")
-    g.add_argument("--sn-curve", default="iso", choices=SN_CURVE_CHOICES,
+    from ..gears.spectrum import SN_CURVES   # a light module (numpy, csv)
+
+    g.add_argument("--sn-curve", default="iso", choices=SN_CURVES,
                    help="the S-N curve beyond its knee (iso: ISO 6336-2/-3 as tabled; docs/life.md)")
     g.add_argument("--mean-stress-factor", type=float, default=None, metavar="Y_M",
                    help="Y_M of both gears' roots for a spectrum whose torque reverses (ISO 6336-3:2019)")

@@ -20,7 +20,7 @@ from ..errors import GearDesignError
 from ..validate import require_finite, require_range
 
 __all__ = ["LoadSpectrum", "equivalent_torque", "application_factor_from_spectrum", "SPECTRUM_COLUMNS",
-           "TORQUE_RANGE_NM", "SPEED_RANGE_RPM", "BINS_MAX"]
+           "TORQUE_RANGE_NM", "SPEED_RANGE_RPM", "TIME_RANGE_H", "BINS_MAX", "SN_CURVES", "MEAN_STRESS_FACTOR_RANGE"]
 
 TORQUE_RANGE_NM = (-1e9, 1e9)       # as a Load's, signed (the other flank)
 SPEED_RANGE_RPM = (0.0, 1e6)        # open below (a Load's)
@@ -28,6 +28,10 @@ TIME_RANGE_H = (0.0, 1e9)
 BINS_MAX = 100_000                  # rows of a spectrum: a measured history's levels × teeth, with room to spare
 # the columns of a spectrum's CSV file: torque_nm and n_rpm, and one of time_h, cycles, share
 SPECTRUM_COLUMNS = ("torque_nm", "n_rpm", "time_h", "cycles", "share")
+# the S-N curve variants beyond the knee and the range of Y_M (their meaning: strength.service_life; here, where
+# the scene schema and the command line read them without loading the strength model)
+SN_CURVES = ("iso", "original", "elementary", "haibach")
+MEAN_STRESS_FACTOR_RANGE = (0.3, 1.0)       # Y_M: 1 one-sided; a fully alternating root far below 1
 
 
 @dataclass(frozen=True, eq=False)      # arrays: compared by identity (== of two spectra would be element-wise)

@@ -32,7 +32,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import require_choice, require_range
-from ..spectrum import LoadSpectrum
+from ..spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES, LoadSpectrum
 from . import root_factors as rf
 from .blocks import BLOCK
 from .life import contact_life_curve
@@ -41,9 +41,7 @@ from .load import LIFE_RANGE_H, Load
 __all__ = ["SN_CURVES", "MODES", "life_curve", "torque_exponent", "cycles_to_failure", "miner_damage",
            "safety_for_damage", "pair_life", "MEAN_STRESS_FACTOR_RANGE"]
 
-SN_CURVES = ("iso", "original", "elementary", "haibach")
 MODES = ("H1", "H2", "F1", "F2")            # pitting of gear 1, 2; root of gear 1, 2
-MEAN_STRESS_FACTOR_RANGE = (0.3, 1.0)       # Y_M: 1 one-sided; a fully alternating root far below 1
 # what each mode reads of the chain: the stress, and the stress limit without a life factor
 _CHAIN = {"H1": ("sigma_H1", "sigma_HG1"), "H2": ("sigma_H2", "sigma_HG2"),
           "F1": ("sigma_F1", "sigma_FG1"), "F2": ("sigma_F2", "sigma_FG2")}
