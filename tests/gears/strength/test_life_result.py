@@ -48,6 +48,8 @@ def test_plot_writes_a_png_and_refuses_to_overwrite(tmp_path):
     fig = r.plot(path)
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert len(fig.axes) == 4
-    with pytest.raises(GearDesignError):
+    with pytest.raises(GearDesignError):       # refused before anything is drawn
         r.plot(path)
-    r.plot(path, overwrite=True)
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
