@@ -100,3 +100,15 @@ def test_a_per_tooth_spectrum_is_for_its_pair_only():
 def test_the_classes_are_registered_with_one_option():
     assert PittingDamage.option is RootDamage.option
     assert PittingDamage.option.name == "damage_max" and PittingDamage.option.default == 1.0
+
+
+def test_an_atlas_carries_the_damage_margins():
+    """shift_atlas works per unit module (m = 1, face width b/m): its damage margins are pair_life's at m = 1."""
+    light = gd.LoadSpectrum.from_bins([0.5, 0.3], 1000, time_h=[2000.0, 8000.0])
+    a = gd.shift_atlas([20], [60], checks={"spectrum": light, "material": "42CrMo4", "face_width_mm": 10.0},
+                       face_width_mm=10.0)
+    row = a.iloc[0]
+    assert bool(row["feasible"])
+    d = pair_life(np.float64(1.0), 20, 60, float(row["x1"]), float(row["x2"]), spectrum=light, material1="42CrMo4",
+                  face_width_mm=10.0)
+    assert float(row["margin_pitting_damage1"]) == pytest.approx(1.0 - d["D_H1"], rel=1e-7, abs=1e-9)
