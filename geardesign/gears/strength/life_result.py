@@ -140,11 +140,9 @@ def _strength_factor(N, curve, sn_curve):
 
     x, y, tail = _variant(curve, sn_curve)
     lnN = np.log(N)
-    inside = np.interp(lnN, x, y)
-    if tail is not None:
+    inside = np.interp(lnN, x, y)           # the static level before the first point, the last after the last
+    if tail is not None:                    # a sloped tail: N ∝ f^-tail beyond the last point
         inside = np.where(lnN > x[-1], y[-1] - (lnN - x[-1]) / tail, inside)
-    first = (y[1] - y[0]) / (x[1] - x[0])
-    inside = np.where(lnN < x[0], y[0], inside) if first else inside
     return np.exp(inside)
 
 

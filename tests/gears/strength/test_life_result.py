@@ -3,6 +3,8 @@ from __future__ import annotations
 
 import json
 
+import numpy as np
+
 import pytest
 
 import geardesign as gd
@@ -53,3 +55,15 @@ def test_plot_writes_a_png_and_refuses_to_overwrite(tmp_path):
     import matplotlib.pyplot as plt
 
     plt.close(fig)
+
+
+@pytest.mark.parametrize("sn_curve", ["iso", "original", "elementary", "haibach"])
+def test_the_plotted_sn_curve_is_the_inverse_of_the_endured_cycles(sn_curve):
+    from geardesign.gears.strength.life_result import _strength_factor
+    from geardesign.gears.strength.service_life import cycles_to_failure, life_curve
+
+    pts = life_curve("H", "Eh")
+    for r in (1.5, 1.2, 1.0, 0.95, 0.9):
+        N = float(cycles_to_failure(r, pts, sn_curve))
+        if N != float("inf") and not (sn_curve == "original" and r == 1.0):   # the knee's flat end: any N beyond
+            assert float(_strength_factor(np.array([N]), pts, sn_curve)[0]) == pytest.approx(r, rel=1e-12)
