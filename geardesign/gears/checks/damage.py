@@ -255,6 +255,8 @@ class _Damage(Check):
     per_gear = {"external": (1, 2), "internal": (1, 2)}
     fd_gradient = True
     build = classmethod(_build_damage)
+    # −∂margin/∂limit at the boundary: margin 1 − D/D_max rises with D_max (D = D_max there), as a jamming margin does
+    margin_per_limit = property(lambda self: -1.0 / self.limit)
     # a check on the chain itself is costly (the solvers walk on its model); the same check on a DamageModel is not
     costly = property(lambda self: isinstance(self.spec, DamageSpec))
 

@@ -112,3 +112,11 @@ def test_an_atlas_carries_the_damage_margins():
     d = pair_life(np.float64(1.0), 20, 60, float(row["x1"]), float(row["x2"]), spectrum=light, material1="42CrMo4",
                   face_width_mm=10.0)
     assert float(row["margin_pitting_damage1"]) == pytest.approx(1.0 - d["D_H1"], rel=1e-7, abs=1e-9)
+
+
+def test_the_optimums_sensitivity_to_damage_max_is_a_finite_difference_of_the_optimum():
+    r = gd.optimize_shifts(20, 60, m=4, checks=CASE, objective="max_x_sum")
+    h = 1e-4
+    up = gd.optimize_shifts(20, 60, m=4, checks={**CASE, "damage_max": 1.0 + h}, objective="max_x_sum")
+    down = gd.optimize_shifts(20, 60, m=4, checks={**CASE, "damage_max": 1.0 - h}, objective="max_x_sum")
+    assert r.sensitivity["pitting_damage1"] == pytest.approx((up.fun - down.fun) / (2 * h), rel=1e-3)
