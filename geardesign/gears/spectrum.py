@@ -4,9 +4,9 @@ and application factor (ISO 6336-6:2019 Annex A).
 
 A bin's torque is signed: a negative torque loads the other flank (the coast flank), and a tooth whose root sees
 both signs bends alternately (see :mod:`geardesign.gears.strength.service_life`). A spectrum from a curve keeps
-which teeth meet at each mesh (``tooth1``, ``tooth2``; -1 in a bin that stands for every tooth alike): a gear on
-a crankshaft whose teeth meet the firing peak at the same mesh every cycle does not "hunt", and its most loaded
-tooth governs.
+which teeth meet at each mesh (``tooth1``, ``tooth2``, for the pair ``teeth`` it was counted for; a spectrum of
+bins stands for every tooth alike): a gear on a crankshaft whose teeth meet the firing peak at the same mesh
+every cycle does not "hunt", and its most loaded tooth governs.
 """
 from __future__ import annotations
 
