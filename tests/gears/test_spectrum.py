@@ -186,3 +186,15 @@ def test_gd_exports_the_spectrum():
     s = LoadSpectrum.from_bins([1.0], 1.0, time_h=[1.0])
     assert list(s.to_frame().columns) == ["torque_nm", "n_rpm", "time_h"]
     assert math.isclose(s.duration_h, 1.0)
+
+
+def test_per_tooth_bins_need_their_pair():
+    t = np.array([0, 1])
+    with pytest.raises(GearDesignError, match="go together"):
+        LoadSpectrum([1.0, 2.0], 100.0, [1.0, 1.0], 1, t, t)
+    with pytest.raises(GearDesignError, match="needs teeth"):
+        LoadSpectrum([1.0, 2.0], 100.0, [1.0, 1.0], 1, t, t, np.array([1.0, 1.0]))
+    with pytest.raises(GearDesignError, match=r"in \[0, z\)"):
+        LoadSpectrum([1.0, 2.0], 100.0, [1.0, 1.0], 1, t, np.array([0, 30]), np.array([1.0, 1.0]), (20, 30))
+    s = LoadSpectrum([1.0, 2.0], 100.0, [1.0, 1.0], 1, t, t, np.array([1.0, 1.0]), (20, 30))
+    assert s.per_tooth and s.teeth == (20, 30) and list(s.to_frame().columns)[-1] == "meshes"
