@@ -123,12 +123,12 @@ def cluster_from_args(args):
         yield client
 
 
-def add_load_args(p, planetary: bool = False, limits: bool = False) -> None:
+def add_load_args(p, planetary: bool = False, limits: bool = False, spectrum: bool = True) -> None:
     """The load case of the strength checks (ISO 6336): a torque or a power at a speed, the material(s),
     the life and the application factor; given, the strength checks join the others. ``planetary``: the
     sun's load of a planetary set, with the planet's and the ring's materials, K_γ and the face width; the
     strength model's options (:func:`add_strength_args`; ``limits``: with --sh-min and --sf-min, for a command
-    without the check options)."""
+    without the check options); ``spectrum``: a pair's load spectrum too (:func:`add_spectrum_args`)."""
     g = p.add_argument_group("load capacity (ISO 6336; any of these switches the strength checks on)")
     on = "the sun" if planetary else "gear 1 (--on-gear)"
     g.add_argument("--torque", type=float, default=None, metavar="NM", help=f"torque on {on}, N·m")
@@ -156,7 +156,8 @@ def add_load_args(p, planetary: bool = False, limits: bool = False) -> None:
     if not planetary:
         g.add_argument("--strength-width", type=float, default=None, metavar="MM",
                        help="face width for the strength checks, mm (default: --face-width)")
-        add_spectrum_args(p)
+        if spectrum:
+            add_spectrum_args(p)
     add_strength_args(g, limits=limits)
 
 
