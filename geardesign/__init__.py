@@ -52,6 +52,7 @@ _NAMES = {
     "GivenStage": "drives.stages", "Shaft": "drives.stages",
     "Load": "gears.strength", "Material": "gears.strength", "material": "gears.strength",
     "pair_strength": "gears.strength", "StrengthResult": "gears.strength", "StrengthOptions": "gears.strength",
+    "LoadSpectrum": "gears.spectrum", "pair_life": "gears.strength", "LifeResult": "gears.strength",
     "tooth_measurements": "gears.measurement", "ToothMeasurements": "gears.measurement",
     "pair_backlash": "gears.backlash", "Backlash": "gears.backlash", "x_sum_for_backlash": "gears.backlash",
     "gost1643_jn_min": "gears.backlash", "flank_tolerances": "gears.tolerances", "FlankTolerances": "gears.tolerances",

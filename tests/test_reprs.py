@@ -45,6 +45,8 @@ def _examples():
         "DriveAnalysis": drive.analyse(),
         "GearStage": gd.GearStage(3),
         "StrengthResult": pair.strength(gd.Load(torque_nm=900, n_rpm=1000), "42CrMo4", face_width_mm=60),
+        "LifeResult": pair.life(gd.LoadSpectrum.from_bins([900, 450], 1000, share=[0.2, 0.8], duration_h=20000),
+                                "42CrMo4", face_width_mm=60),
         "ToothMeasurements": gd.tooth_measurements(8, 17, 0.898),
         "Backlash": pair.backlash(-0.1, -0.12, 0.05),
         "FlankTolerances": gd.flank_tolerances(8, 17, 7, face_width_mm=60),

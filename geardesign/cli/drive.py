@@ -44,7 +44,7 @@ def add_parser(subparsers):
                    help="write a one-page report (checks, power flow, stages, gear geometry, keys, diagram) to this HTML file")
     add_json_flag(p)
     add_progress_flag(p)
-    add_load_args(p, limits=True)
+    add_load_args(p, limits=True, spectrum=False)   # a stage's spectrum: not yet (issue 38's GearStage(spectrum=))
     add_cluster_args(p)
     return p
 

@@ -123,12 +123,12 @@ def cluster_from_args(args):
         yield client
 
 
-def add_load_args(p, planetary: bool = False, limits: bool = False) -> None:
+def add_load_args(p, planetary: bool = False, limits: bool = False, spectrum: bool = True) -> None:
     """The load case of the strength checks (ISO 6336): a torque or a power at a speed, the material(s),
     the life and the application factor; given, the strength checks join the others. ``planetary``: the
     sun's load of a planetary set, with the planet's and the ring's materials, K_γ and the face width; the
     strength model's options (:func:`add_strength_args`; ``limits``: with --sh-min and --sf-min, for a command
-    without the check options)."""
+    without the check options); ``spectrum``: a pair's load spectrum too (:func:`add_spectrum_args`)."""
     g = p.add_argument_group("load capacity (ISO 6336; any of these switches the strength checks on)")
     on = "the sun" if planetary else "gear 1 (--on-gear)"
     g.add_argument("--torque", type=float, default=None, metavar="NM", help=f"torque on {on}, N·m")
@@ -156,7 +156,52 @@ def add_load_args(p, planetary: bool = False, limits: bool = False) -> None:
     if not planetary:
         g.add_argument("--strength-width", type=float, default=None, metavar="MM",
                        help="face width for the strength checks, mm (default: --face-width)")
+        if spectrum:
+            add_spectrum_args(p)
     add_strength_args(g, limits=limits)
+
+
+def add_spectrum_args(p) -> None:
+    """A load spectrum (ISO 6336-6): --spectrum FILE (a CSV), the S-N curve beyond the knee, Y_M; given, the damage
+    checks join the others (with --material, --life-h the required life)."""
+    g = p.add_argument_group("service life under a load spectrum (ISO 6336-6; --spectrum switches the damage "
+                             "checks on)")
+    g.add_argument("--spectrum", default=None, metavar="CSV",
+                   help="the load spectrum: a CSV with columns torque_nm, n_rpm (or --speed for all bins) and one of "
+                        "time_h, cycles, share (share: with --life-h); torques of gear --on-gear, negative on the "
+                        "other flank")
+    from ..gears.spectrum import SN_CURVES   # a light module (numpy, csv)
+
+    g.add_argument("--sn-curve", default="iso", choices=SN_CURVES,
+                   help="the S-N curve beyond its knee (iso: ISO 6336-2/-3 as tabled; docs/life.md)")
+    g.add_argument("--mean-stress-factor", type=float, default=None, metavar="Y_M",
+                   help="Y_M of both gears' roots for a spectrum whose torque reverses (ISO 6336-3:2019)")
+
+
+def spectrum_from_args(args) -> dict:
+    """The damage checks' context from --spectrum (empty without it); a bad file refused naming --spectrum."""
+    from ..errors import GearDesignError
+
+    path = getattr(args, "spectrum", None)
+    if path is None:
+        if getattr(args, "mean_stress_factor", None) is not None:
+            raise GearDesignError("--mean-stress-factor needs --spectrum")
+        return {}
+    from ..gears.spectrum import LoadSpectrum   # here: only a command with a spectrum reads it
+
+    try:
+        with open(path, encoding="utf-8") as f:
+            has_speed = "n_rpm" in next((line for line in f if line.strip() and not line.lstrip().startswith("#")),
+                                        "").split(",")
+        spec = LoadSpectrum.from_csv(path, n_rpm=None if has_speed else args.speed,
+                                     duration_h=args.life_h, on_gear=getattr(args, "on_gear", 1))
+    except (GearDesignError, OSError, UnicodeDecodeError) as exc:
+        text = str(exc) if isinstance(exc, GearDesignError) else f"{path!r} cannot be read: {getattr(exc, 'strerror', None) or exc}"
+        raise GearDesignError(f"--spectrum: {text}") from None
+    out = {"spectrum": spec, "sn_curve": args.sn_curve, "life_h": args.life_h}
+    if args.mean_stress_factor is not None:
+        out["mean_stress_factor"] = args.mean_stress_factor
+    return out
 
 
 def _factor(text: str) -> tuple:
@@ -227,14 +272,23 @@ _SET_LOAD = ("planet_material", "ring_material")
 
 
 def load_from_args(args) -> dict:
-    """The load case as :func:`~geardesign.gears.checks.make_checks` context keywords (empty without one)."""
+    """The load case as :func:`~geardesign.gears.checks.make_checks` context keywords (empty without one): a load,
+    a spectrum (:func:`spectrum_from_args`) or both."""
+    from ..errors import GearDesignError
+
     extra = {k: getattr(args, k) for k in _SET_LOAD if getattr(args, k, None) is not None}
     given = [args.torque, args.power, args.speed, args.material, getattr(args, "material2", None), args.life_h,
              *extra.values()]
     options = strength_from_args(args)
+    spectrum = spectrum_from_args(args)
+    if spectrum and args.torque is None and args.power is None:   # the damage checks alone
+        if args.material is None:
+            raise GearDesignError("--spectrum needs --material")
+        width = args.strength_width if args.strength_width is not None else getattr(args, "face_width_mm", None)
+        return {**spectrum, "material": args.material, "material2": getattr(args, "material2", None),
+                "face_width_mm": width, **({"strength": options} if options else {})}
     if all(v is None for v in given):
         if options:
-            from ..errors import GearDesignError
             from ..gears.strength.user_options import FACTORS_FLAG, strength_option
 
             flags = [FACTORS_FLAG if k == "factors" else strength_option(k).flag for k in options]
@@ -246,7 +300,7 @@ def load_from_args(args) -> dict:
     load = Load(torque_nm=args.torque, power_kw=args.power, n_rpm=args.speed, on_gear=getattr(args, "on_gear", 1),
                 application_factor=args.application_factor, life_h=args.life_h)
     width = args.strength_width if args.strength_width is not None else getattr(args, "face_width_mm", None)
-    out = {"load": load, "material": args.material, "face_width_mm": width, **extra}
+    out = {"load": load, "material": args.material, "face_width_mm": width, **extra, **spectrum}
     if hasattr(args, "k_gamma"):
         out["strength"] = {"K_gamma": args.k_gamma, **options}
     else:
@@ -291,7 +345,8 @@ _KEYWORD_FLAGS = {"torque_nm": "--torque", "power_kw": "--power", "n_rpm": "--sp
                   "face_width_mm": "--face-width", "n1_rpm": "--n1", "k_e": "--k-e", "beta_deg": "--beta",
                   "alpha_deg": "--alpha-deg", "rho_f": "--rho-f", "planet_material": "--planet-material",
                   "ring_material": "--ring-material", "center_distance_mm": "--center-distance",
-                  "allowable_pressure_mpa": "--p-allow", "allowable_safety_factor": "--s-allow"}
+                  "allowable_pressure_mpa": "--p-allow", "allowable_safety_factor": "--s-allow",
+                  "mean_stress_factor": "--mean-stress-factor", "sn_curve": "--sn-curve"}
 # plain words (not identifiers) are renamed only where they start what is said of them
 _PLAIN_WORD_AFTER = r"(?= must| given| is needed|: )"
 

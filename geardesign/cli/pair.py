@@ -164,6 +164,7 @@ def run(args) -> int:
     table = pair.checks(**checks, housing_a_w=housing)
     failed = table.loc[~table["ok"], "check"].tolist()
     strength = _strength(pair, checks)
+    life = _life(pair, checks)
     if args.json:
         print_json({
             "ok": not failed, "failing_checks": failed,
@@ -178,6 +179,7 @@ def run(args) -> int:
             **({"data_block": [frame_records(t) for t in _data_blocks(pair, args, allowances)]}
                if args.data_block is not None else {}),
             **({"strength": strength.to_dict()} if strength is not None else {}),
+            **({"life": life.to_dict()} if life is not None else {}),
         })
         return 1 if failed else 0
     print_verdict(failed, check_details(table))
@@ -194,7 +196,24 @@ def run(args) -> int:
     if strength is not None:
         print(f"\n{strength!r}")
         print_frame(strength.factors, "\nISO 6336 factors (gear 0: the pair)", float_format="{:.6g}")
+    if life is not None:
+        print(f"\n{life!r}")
+        for note in life.notes:
+            print(f"note: {note}")
+        cols = ["torque_nm", "n_rpm", "time_h", "n1", "K_v", "K_Hbeta", "sigma_H1", "sigma_F1", "D_H1", "D_H2",
+                "D_F1", "D_F2"]
+        print_frame(life.bins[cols], "\nISO 6336-6 bins (n1: load cycles of a pinion tooth over the required life; "
+                                     "D: the bin's n/N)", float_format="{:.5g}")
     return 1 if failed else 0
+
+
+def _life(pair, checks: dict):
+    """The pair's ISO 6336-6 service life under the command line's spectrum, or None without one."""
+    if "spectrum" not in checks:
+        return None
+    return pair.life(checks["spectrum"], checks["material"], material2=checks.get("material2"),
+                     face_width_mm=checks["face_width_mm"], life_h=checks.get("life_h"), sn_curve=checks["sn_curve"],
+                     mean_stress_factor=checks.get("mean_stress_factor"), **checks.get("strength", {}))
 
 
 def _strength(pair, checks: dict):

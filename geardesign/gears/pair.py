@@ -232,6 +232,14 @@ class GearPair:
         from .strength import strength   # here: the chain loads the materials catalog (pandas)
         return strength(self, load, material, **options)
 
+    def life(self, spectrum, material=None, **options):
+        """ISO 6336-6 service life of this pair under ``spectrum`` (a :class:`~geardesign.LoadSpectrum`):
+        :func:`geardesign.gears.strength.life_result.service_life` (``life_h`` the required life, ``sn_curve``,
+        ``mean_stress_factor``, the options of :func:`~geardesign.gears.strength.pair_strength`); a
+        :class:`~geardesign.gears.strength.life_result.LifeResult`."""
+        from .strength.life_result import service_life   # here: the chain loads the materials catalog (pandas)
+        return service_life(self, spectrum, material, **options)
+
     def forces(self, load, circle: str = "operating"):
         """The mesh forces F_t, F_r, F_a (N) and where they act (:func:`~geardesign.gears.forces.pair_forces`):
         ``load`` a :class:`~geardesign.gears.strength.Load` or gear 1's torque in N·m; ``circle`` "operating"

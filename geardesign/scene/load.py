@@ -167,6 +167,20 @@ _CROSS_CHECKS = {"gear": _cross_gear, "teeth": _cross_teeth, "planetary": _cross
                  "key": _cross_keys, "study": _cross_study}
 
 
+def _spectrum(where, path: Path, spec: dict) -> None:
+    """[gear.spectrum]'s file (relative to the scene) read into ``spec["_spectrum"]``; a bad file fails naming the
+    key."""
+    from ..gears.spectrum import LoadSpectrum
+
+    name = spec["file"]
+    csv = (path.parent / name) if not Path(name).is_absolute() else Path(name)
+    try:
+        spec["_spectrum"] = LoadSpectrum.from_csv(csv, n_rpm=spec.get("n_rpm"), duration_h=spec.get("duration_h",
+                                                  spec.get("life_h")), on_gear=spec["on_gear"])
+    except GearDesignError as exc:
+        where.fail("gear.spectrum", "file", str(exc))
+
+
 def _chain_catalog(where, path: Path, name: str) -> str:
     """A built-in chain catalog's name, or a user's CSV (relative to the scene file) as a path."""
     from ..catalogs.tables import CHAIN_CATALOGS
@@ -262,4 +276,6 @@ def load_scene(path) -> Scene:
     _cross_checks(where, sections)
     if "chain" in sections:
         sections["chain"]["catalog"] = _chain_catalog(where, path, sections["chain"]["catalog"])
+    if "spectrum" in sections.get("gear", {}):
+        _spectrum(where, path, sections["gear"]["spectrum"])
     return Scene(str(path), head.get("title", path.stem), head.get("description", ""), sections)

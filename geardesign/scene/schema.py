@@ -127,7 +127,24 @@ def _gear_schema() -> dict:
             "a_w": _F(lo=0.0, lo_open=True), "tip_shortening": _Key("bool", default=True),
             "bounds": _Key("floats", default=DEFAULT_BOUNDS, lo=-X_WINDOW_LIMIT, hi=X_WINDOW_LIMIT, length=2),
             "mesh_drawing": _Key("bool", default=False), "data_block": _Key("bool", default=False),
-            "accuracy_class": _I(lo=1, hi=11), **_shift_keys()}
+            "accuracy_class": _I(lo=1, hi=11), "spectrum": _spectrum_schema(), **_shift_keys()}
+
+
+def _spectrum_schema() -> dict:
+    """[gear.spectrum]: a load spectrum (ISO 6336-6) from a CSV file (relative to the scene; its columns:
+    :meth:`geardesign.LoadSpectrum.from_csv`), the required life, the S-N curve beyond the knee, Y_M, the materials;
+    the damage checks join the section's checks and the life is reported at the optimum (docs/life.md)."""
+    from ..gears.spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES, SPEED_RANGE_RPM, TIME_RANGE_H
+    from ..gears.strength.load import LIFE_RANGE_H
+
+    return {"file": _Key("str", required=True),
+            "n_rpm": _F(lo=SPEED_RANGE_RPM[0], hi=SPEED_RANGE_RPM[1], lo_open=True),
+            "duration_h": _F(lo=TIME_RANGE_H[0], hi=TIME_RANGE_H[1], lo_open=True),
+            "on_gear": _I(default=1, lo=1, hi=2),
+            "life_h": _F(lo=LIFE_RANGE_H[0], hi=LIFE_RANGE_H[1], lo_open=True),
+            "sn_curve": _Key("choice", default="iso", choices=SN_CURVES),
+            "mean_stress_factor": _F(lo=MEAN_STRESS_FACTOR_RANGE[0], hi=MEAN_STRESS_FACTOR_RANGE[1]),
+            "material": _Key("str", required=True), "material2": _Key("str")}
 
 
 def _teeth_schema() -> dict:

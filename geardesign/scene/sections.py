@@ -82,6 +82,14 @@ def _checks_dict(spec: dict | None, section: dict | None = None) -> dict | None:
                                                         "application_factor", "life_h")}),
                    material=load["material"], material2=load.get("material2"),
                    face_width_mm=section.get("face_width_mm"), **({"strength": strength} if strength else {}))
+    spectrum = (section or {}).get("spectrum")
+    if spectrum:   # the damage checks (ISO 6336-6): their own materials, the load's width and strength options
+        out.update(spectrum=spectrum["_spectrum"], life_h=spectrum.get("life_h"), sn_curve=spectrum["sn_curve"],
+                   **({"mean_stress_factor": spectrum["mean_stress_factor"]} if "mean_stress_factor" in spectrum
+                      else {}))
+        if not load:
+            out.update(material=spectrum["material"], material2=spectrum.get("material2"),
+                       face_width_mm=section.get("face_width_mm"))
     return out or None
 
 
@@ -104,6 +112,8 @@ def _run_gear(rep: SceneReport, g: dict):
     _gear_pictures(rep, g, res, reg, given, pair_kw)
     if checks and "load" in checks:
         _add_strength(rep, g, checks, res, given, pair_kw)
+    if checks and "spectrum" in checks:
+        _add_life(rep, g, checks, res, given, pair_kw)
 
 
 def _gear_solve(g: dict, checks, kind: dict):
@@ -208,6 +218,25 @@ def _add_strength(rep: SceneReport, g: dict, checks: dict, res, given, pair_kw: 
                          md_table(r.factors), ""]
         rep.summary.append(f"{tag} pair: S_H = {min(r.S_H1, r.S_H2):.3f}, S_F = {r.S_F1:.3f} / {r.S_F2:.3f}"
                            f" ({'holds' if r.ok else 'FAILS'} S_Hmin {r.S_Hmin:g}, S_Fmin {r.S_Fmin:g})")
+
+
+def _add_life(rep: SceneReport, g: dict, checks: dict, res, given, pair_kw: dict):
+    """ISO 6336-6 service life at the optimum and at the given shifts: the verdict, the bins and the S-N diagram."""
+    from ..gears.pair import GearPair
+
+    sp = g["spectrum"]
+    pairs = ([("optimum", res.x1, res.x2)] if res.success else []) + ([("given", *given)] if given else [])
+    for tag, x1, x2 in pairs:
+        r = GearPair(g["module"], g["z1"], g["z2"], x1, x2, **pair_kw).life(
+            checks["spectrum"], sp["material"], material2=sp.get("material2"), face_width_mm=checks["face_width_mm"],
+            life_h=sp.get("life_h"), sn_curve=sp["sn_curve"], mean_stress_factor=sp.get("mean_stress_factor"),
+            **checks.get("strength", {}))
+        rep.tables[f"gear_life_{tag}"] = r.bins
+        rep.figures[f"gear_life_{tag}"] = r.plot()
+        rep.markdown += [f"### Service life (ISO 6336-6) of the {tag} pair", "", "```", repr(r), "```", "",
+                         f"![S-N diagrams with the spectrum]({f'gear_life_{tag}'}.png)", ""]
+        rep.summary.append(f"{tag} pair: damage D_H = {r.D_H1:.3g} / {r.D_H2:.3g}, D_F = {r.D_F1:.3g} / {r.D_F2:.3g} "
+                           f"over {r.required_life_h:.6g} h ({'holds' if r.ok else 'FAILS'})")
 
 
 def _add_data_blocks(rep: SceneReport, pair, tag: str, accuracy_class):

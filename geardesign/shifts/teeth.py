@@ -381,7 +381,8 @@ def _solve(c: pd.DataFrame, a_w, objective, checks, method, rack, tip_shortening
         # the module changes the problem when ε_β (face width) or the ring's shaper cutter (its standard
         # size depends on the module) enters the checks: then each (pair, module) is solved on its own
         per_module = (kind["face_width_mm"] is not None or kind["internal"]
-                      or (isinstance(checks, dict) and checks.get("load") is not None))   # strength scales with m
+                      or (isinstance(checks, dict) and (checks.get("load") is not None
+                                                        or checks.get("spectrum") is not None)))   # strength scales with m
         keys = list(zip(c["z1"], c["z2"], *([c["module_mm"]] if per_module else [])))
     else:
         keys = list(zip(c["z1"], c["z2"], c["module_mm"], c["a_w_target_mm"]))

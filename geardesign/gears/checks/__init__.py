@@ -12,7 +12,8 @@ on the optimisers' single-design path, Python floats) to
 The modules: :mod:`.base` (the base class, the options and the registry every consumer reads:
 :func:`make_checks`, the CLI's limit options, the scene schema, the plots' colours, the sweeps),
 :mod:`.external` (an external pair and a ring pair's pinion), :mod:`.ring` (a ring pair's own
-checks), :mod:`.strength` (ISO 6336 contact and root safety, built when a load is given). A problem models only the checks asked for: build the list with :func:`make_checks`.
+checks), :mod:`.strength` (ISO 6336 contact and root safety, built when a load is given), :mod:`.damage` (ISO 6336-6
+Miner damage sums, built when a load spectrum is given). A problem models only the checks asked for: build the list with :func:`make_checks`.
 """
 from .base import (CONTEXT_KEYWORDS, FEASIBILITY_TOL, UNDEFINED, Check, Option, check_colour, evaluate, make_checks,
                    margins, option, options, register, register_context, registered, registry_version, resolve_checks,
@@ -22,13 +23,14 @@ from .external import (DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN, EPS_ALPHA_MIN_RANG
                        TotalContactRatio, Undercut)
 from .gradients import sliding_root_gradient
 from .strength import ContactStrength, RootStrength, StrengthSpec
+from .damage import DamageSpec, PittingDamage, RootDamage
 from .ring import (TOOTH_DIFFERENCE_RANGE, CutterInterference, CutterTrimming, RadialAssembly, RingInterference,
                    RingTip, TipInterference, ToothDifference)
 
 __all__ = [
     "Check", "Option", "Undercut", "Interference", "TipThickness", "ContactRatio", "TotalContactRatio", "Jamming",
     "RingInterference", "RingTip", "TipInterference", "RadialAssembly", "CutterTrimming", "CutterInterference",
-    "ToothDifference", "CenterDistance", "CustomCheck", "ContactStrength", "RootStrength", "StrengthSpec", "make_checks", "resolve_checks", "evaluate", "margins",
+    "ToothDifference", "CenterDistance", "CustomCheck", "ContactStrength", "RootStrength", "StrengthSpec", "PittingDamage", "RootDamage", "DamageSpec", "make_checks", "resolve_checks", "evaluate", "margins",
     "register", "unregister", "registered", "registry_version", "options", "option", "check_colour", "sliding_root_gradient",
     "DEFAULT_EPS_ALPHA_MIN", "DEFAULT_SA_MIN", "EPS_ALPHA_MIN_RANGE", "SA_MIN_RANGE", "EPS_GAMMA_MIN_RANGE",
     "TOOTH_DIFFERENCE_RANGE", "FEASIBILITY_TOL", "UNDEFINED", "CONTEXT_KEYWORDS", "register_context",

@@ -277,7 +277,7 @@ def strength_spec(context: dict) -> StrengthSpec | None:
     load = context.get("load")
     if load is None:
         given = [k for k in STRENGTH_CONTEXT[1:] if context.get(k) is not None]
-        if given:
+        if given and context.get("spectrum") is None:    # a spectrum's damage checks read them too
             raise GearDesignError(f"{', '.join(given)} given without a load: the strength checks need load= "
                                   f"(a geardesign Load)")
         return None

@@ -13,7 +13,7 @@ _NAMES = {"GIVEN_FACTORS": "chain", "STRENGTH_FIELDS": "chain", "pair_strength":
           "MIN_SAFETY_SOURCE": "defaults", "S_FMIN": "defaults", "S_HMIN": "defaults", "Load": "load",
           "MATERIAL_KINDS": "materials", "Material": "materials", "material": "materials",
           "material_names": "materials", "planetary_strength": "planetary_meshes", "StrengthResult": "result",
-          "StrengthOptions": "options"}
+          "StrengthOptions": "options", "pair_life": "service_life", "LifeResult": "life_result"}
 
 __all__ = sorted(_NAMES)
 

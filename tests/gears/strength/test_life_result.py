@@ -1,0 +1,69 @@
+"""LifeResult: the verdict, the per-bin table, its dict/JSON and the S-N plot (a PNG written whole or not at all)."""
+from __future__ import annotations
+
+import json
+
+import numpy as np
+
+import pytest
+
+import geardesign as gd
+from geardesign.errors import GearDesignError
+from geardesign.gears.strength.life_result import LifeResult, service_life
+
+PAIR = gd.GearPair(4, 20, 60, 0.3, 0.1, face_width_mm=40)
+SPEC = gd.LoadSpectrum.from_bins([300.0, 150.0, 0.0], 1000, share=[0.2, 0.7, 0.1], duration_h=20000)
+
+
+def test_result_reads_like_the_chain_dict():
+    r = PAIR.life(SPEC, "42CrMo4")
+    assert isinstance(r, LifeResult) and r.required_life_h == 20000.0
+    assert r.ok is all(getattr(r, "D_" + m) <= 1 for m in ("H1", "H2", "F1", "F2"))
+    mode, D = r.governing
+    assert D == max(r.D_H1, r.D_H2, r.D_F1, r.D_F2) and mode in ("H1", "H2", "F1", "F2")
+    b = r.bins
+    assert len(b) == 2                                   # the bin of no torque does no damage
+    for col in ("torque_nm", "n_rpm", "time_h", "n1", "n2", "K_v", "K_Hbeta", "K_Halpha", "sigma_H1", "N_H1", "D_F2"):
+        assert col in b.columns
+    # the bins' damages sum to the Miner sums (every tooth alike, one flank)
+    for m in ("H1", "H2", "F1", "F2"):
+        assert b["D_" + m].sum() == pytest.approx(getattr(r, "D_" + m), rel=1e-12, abs=1e-300)
+    text = repr(r)
+    assert "pitting, gear 1" in text and "<array" not in text and len(text.splitlines()) <= 6
+    d = json.loads(r.to_json())
+    assert d["ok"] is r.ok and isinstance(d["bins"], list) and d["status"] in ("success", "failed")
+    assert "<pre>" in r._repr_html_()
+
+
+def test_material_and_width_are_needed():
+    with pytest.raises(GearDesignError, match="material is needed"):
+        service_life(PAIR, SPEC)
+    with pytest.raises(GearDesignError, match="face_width_mm is needed"):
+        service_life(gd.GearPair(4, 20, 60, 0.3, 0.1), SPEC, "42CrMo4")
+    with pytest.raises(GearDesignError, match="unknown strength option"):
+        service_life(PAIR, SPEC, "42CrMo4", accuracy=6)
+
+
+def test_plot_writes_a_png_and_refuses_to_overwrite(tmp_path):
+    r = PAIR.life(SPEC, "42CrMo4")
+    path = tmp_path / "life.png"
+    fig = r.plot(path)
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert len(fig.axes) == 4
+    with pytest.raises(GearDesignError):       # refused before anything is drawn
+        r.plot(path)
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
+
+
+@pytest.mark.parametrize("sn_curve", ["iso", "original", "elementary", "haibach"])
+def test_the_plotted_sn_curve_is_the_inverse_of_the_endured_cycles(sn_curve):
+    from geardesign.gears.strength.life_result import _strength_factor
+    from geardesign.gears.strength.service_life import cycles_to_failure, life_curve
+
+    pts = life_curve("H", "Eh")
+    for r in (1.5, 1.2, 1.0, 0.95, 0.9):
+        N = float(cycles_to_failure(r, pts, sn_curve))
+        if N != float("inf") and not (sn_curve == "original" and r == 1.0):   # the knee's flat end: any N beyond
+            assert float(_strength_factor(np.array([N]), pts, sn_curve)[0]) == pytest.approx(r, rel=1e-12)
