@@ -20,6 +20,23 @@ def test_imports_load_only_what_is_used(code, absent):
     loaded = {m.split(".")[0] for m in eval(out)}
     assert not loaded & set(absent)
 
+@pytest.mark.parametrize("argv", [
+    ["pair", "--module", "8", "--z1", "17", "--z2", "26"],
+    ["pair", "--module", "8", "--z1", "17", "--z2", "26", "--x1", "0.898", "--x2", "0.517", "--json"],
+    ["pair", "--module", "3", "--z1", "20", "--z2", "60", "--internal", "--beta", "15", "--face-width", "30"],
+])
+def test_plain_pair_command_loads_no_pandas_and_no_solver(argv):
+    """Issue 36 §3: a plain ``geardesign pair`` cost 4x ``import numpy``, pandas' import most of it, for two
+    tables that plain rows print the same (tests/cli/test_output.py); its goal is <= 2x
+    (benchmarks/bench_startup.py measures it)."""
+    code = ("import contextlib, io, sys; from geardesign.cli import main\n"
+            f"with contextlib.redirect_stdout(io.StringIO()): main({argv!r})\n"
+            "print(sorted(sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    loaded = {m.split(".")[0] for m in eval(out)}
+    assert not loaded & {"pandas", "scipy", "matplotlib", "cvxpy", "dask"}
+
+
 def test_key_only_scene_loads_no_solver_and_no_plotting(tmp_path):
     f = tmp_path / "k.toml"
     f.write_text("[key]\nd_mm = 60\ntorque_nm = 503\nhub_length_mm = 50\n")

@@ -2,9 +2,11 @@
 from __future__ import annotations
 
 import json
+import math
 import shutil
 import sys
 import textwrap
+from typing import NamedTuple
 
 from ..progress import Bar
 from ..results import plain
@@ -19,8 +21,28 @@ def print_json(obj) -> None:
     print(json.dumps(plain(obj), indent=2, ensure_ascii=False))
 
 
-def frame_records(frame: pd.DataFrame) -> list[dict]:
+def frame_records(frame: pd.DataFrame | Rows) -> list[dict]:
+    if isinstance(frame, Rows):
+        return [plain(dict(zip(frame.columns, r))) for r in frame.rows]
     return [plain(r) for r in frame.to_dict(orient="records")]
+
+
+class Rows(NamedTuple):
+    """A table without pandas: column names and row tuples, each column all text, all numbers (``None`` or
+    NaN empty) or all booleans. :func:`print_frame` prints it as it prints the same DataFrame (a plain
+    ``geardesign pair`` then never imports pandas, ~0.2 s of its start)."""
+    columns: tuple
+    rows: list
+
+    def select(self, *names) -> Rows:
+        """The columns ``names``, in that order."""
+        at = [self.columns.index(n) for n in names]
+        return Rows(tuple(names), [tuple(r[i] for i in at) for r in self.rows])
+
+    def to_frame(self) -> pd.DataFrame:
+        import pandas as pd   # a table that the plain printer does not lay out (see _plain_columns)
+
+        return pd.DataFrame(self.rows, columns=list(self.columns))
 
 
 DEFAULT_WIDTH = 80     # columns when the output is not a terminal (a pipe, a file, a test)
@@ -32,10 +54,19 @@ def terminal_width() -> int:
     return shutil.get_terminal_size((DEFAULT_WIDTH, 24)).columns
 
 
-def print_frame(frame: pd.DataFrame, title: str | None = None, float_format="{:.6g}") -> None:
+def print_frame(frame: pd.DataFrame | Rows, title: str | None = None, float_format="{:.6g}") -> None:
     """A table folded to the terminal's width: long text cut (the first column, the rows' names, down to
     :data:`KEY_MIN` characters when that makes the table fit), then the columns that still do not fit continue
-    below in blocks that each repeat the first column."""
+    below in blocks that each repeat the first column. ``frame`` a DataFrame or :class:`Rows`."""
+    if isinstance(frame, Rows):
+        columns = _plain_columns(frame)
+        if columns is not None:
+            if title:
+                print(title)
+            for block in _plain_fold(columns, max(terminal_width(), 40), float_format):
+                print(block)
+            return
+        frame = frame.to_frame()
     import pandas as pd   # here: pandas costs ~0.2 s to import, and `--help` or a plain `pair` prints no frame
     if title:
         print(title)
@@ -88,7 +119,11 @@ def fold_columns(frame: pd.DataFrame, width: int, float_format="{:.6g}") -> list
     the columns in order, each block starting with the first column again, blocks apart by an empty line."""
     if frame.shape[1] == 0 or len(frame) == 0:
         return [frame.to_string(index=False)]
-    cols = [_column_lines(frame, i, float_format) for i in range(frame.shape[1])]
+    return _fold([_column_lines(frame, i, float_format) for i in range(frame.shape[1])], width)
+
+
+def _fold(cols: list[list[str]], width: int) -> list[str]:
+    """Columns' lines (each column's lines of one width) as :func:`fold_columns`' blocks."""
     key = cols[0]
     blocks, current, used = [], [key], len(key[0])
     for col in cols[1:]:
@@ -100,6 +135,69 @@ def fold_columns(frame: pd.DataFrame, width: int, float_format="{:.6g}") -> list
     blocks.append(current)
     return ["\n\n".join("\n".join(" ".join(col[i] for col in block).rstrip() for i in range(len(key)))
                         for block in blocks)]
+
+
+def _plain_columns(table: Rows) -> list | None:
+    """``[name, kind, values]`` per column of ``table`` (kind ``text``, ``float``, ``int`` or ``bool``, as
+    pandas' dtype would be), or None when a column mixes kinds or the table is empty (pandas prints those)."""
+    if not table.rows or not table.columns:
+        return None
+    out = []
+    for i, name in enumerate(table.columns):
+        values = [r[i] for r in table.rows]
+        if all(isinstance(v, str) for v in values):
+            kind = "text"
+        elif all(isinstance(v, bool) for v in values):
+            kind = "bool"
+        elif all(isinstance(v, int) and not isinstance(v, bool) for v in values):
+            kind = "int"
+        elif all(v is None or isinstance(v, (int, float)) and not isinstance(v, bool) for v in values) and \
+                any(v is not None for v in values):
+            kind = "float"
+        else:
+            return None
+        out.append([str(name), kind, values])
+    return out
+
+
+def _plain_cut_text(columns: list, limit: int) -> list:
+    """:func:`_cut_text` of plain columns."""
+    shown = []
+    for name, kind, values in columns:
+        if kind == "text":
+            values = [v if len(v) <= limit else v[:limit - 1] + "…" for v in values]
+            pad = max([len(name)] + [len(v) for v in values])
+            name, values = name.ljust(pad), [v.ljust(pad) for v in values]
+        shown.append([name, kind, values])
+    return shown
+
+
+_ESCAPES = str.maketrans({"\t": "\\t", "\n": "\\n", "\r": "\\r"})   # as pandas shows them in a table
+
+
+def _plain_column_lines(column: list, float_format) -> list[str]:
+    """:func:`_column_lines` of a plain column: pandas' layout of one column (``to_string(index=False)``): a
+    number's header one space in, NaN and None empty, text with its tabs and newlines escaped, all right-aligned."""
+    name, kind, values = column
+    if kind == "text":
+        lines = [name] + [v.translate(_ESCAPES) for v in values]
+    elif kind == "float":
+        lines = [" " + name] + ["" if v is None or math.isnan(v) else float_format.format(float(v)) for v in values]
+    else:
+        lines = [" " + name] + [str(v) for v in values]
+    n = max(map(len, lines))
+    return [line.rjust(n) for line in lines]
+
+
+def _plain_fold(columns: list, width: int, float_format) -> list[str]:
+    """:func:`print_frame`'s blocks of plain columns (the same steps as for a DataFrame)."""
+    shown = _plain_cut_text(columns, min(TEXT_MAX, width - 10))
+    if len(shown) > 1 and shown[0][1] == "text":
+        widths = [len(_plain_column_lines(c, float_format)[0]) for c in shown]
+        excess = sum(widths) + len(widths) - 1 - width
+        if excess > 0 and widths[0] - excess >= KEY_MIN:
+            shown[0] = _plain_cut_text(columns[:1], widths[0] - excess)[0]
+    return _fold([_plain_column_lines(c, float_format) for c in shown], width)
 
 
 def print_wrapped(text: str, indent: str = "  ") -> None:
@@ -131,10 +229,14 @@ def failing_margins(margins: dict, names=None) -> str:
     return "; ".join(f"{k} (margin {float(margins[k]) + 0.0:+.4g})" if k in margins else k for k in names)
 
 
-def check_details(table: pd.DataFrame) -> dict:
+def check_details(table: pd.DataFrame | Rows) -> dict:
     """``check -> "value 1.153 against limit 1.2"`` for a checks table's failing rows."""
     out = {}
-    for _, row in table.loc[~table["ok"]].iterrows():
+    rows = ([dict(zip(table.columns, r)) for r in table.rows] if isinstance(table, Rows)
+            else [r for _, r in table.iterrows()])
+    for row in rows:
+        if row["ok"]:
+            continue
         try:
             out[row["check"]] = f"value {float(row['value']) + 0.0:.4g}, limit {float(row['limit']) + 0.0:.4g}"
         except (TypeError, ValueError):

@@ -6,11 +6,12 @@ import sys
 from ..errors import GearDesignError
 from ..files import check_output_path
 from ..gears.checks.strength import STRENGTH_CONTEXT
-from ..gears.pair import GearPair
+from ..gears.pair import PAIR_CHECK_COLUMNS, GearPair
+from ..gears.quantities import GEOMETRY_COLUMNS, geometry_rows
 from ..scene.html import pair_report
 from .measure import ROWS
 from .options import add_check_args, add_output_file, add_rack_args, checks_from_args, rack_from_args
-from .output import (add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict,
+from .output import (Rows, add_json_flag, check_details, frame_records, print_frame, print_json, print_verdict,
                      print_wrapped)
 
 
@@ -161,8 +162,9 @@ def run(args) -> int:
         print(f"report written to {args.report}", file=sys.stderr)   # stderr: --json keeps stdout pure
     rack, shorten = pair.rack, not args.no_tip_shortening
     geo = pair.geometry()
-    table = pair.checks(**checks, housing_a_w=housing)
-    failed = table.loc[~table["ok"], "check"].tolist()
+    # plain rows, not pair.checks()'s DataFrame: a plain `pair` then never imports pandas (issue 36 §3)
+    table = Rows(PAIR_CHECK_COLUMNS, pair.check_rows(**checks, housing_a_w=housing))
+    failed = [name for name, margin, ok, *_ in table.rows if not ok]
     strength = _strength(pair, checks)
     life = _life(pair, checks)
     if args.json:
@@ -173,7 +175,7 @@ def run(args) -> int:
                       "tip_shortening": shorten, "beta_deg": pair.beta_deg, "internal": pair.internal,
                       "face_width_mm": pair.face_width_mm},
             "geometry": geo.to_dict(),
-            "checks": frame_records(table[["check", "value", "limit", "margin", "ok"]]),
+            "checks": frame_records(table.select("check", "value", "limit", "margin", "ok")),
             **({"measurements": _measurements(pair, True, allowances[:2])} if args.measurements else {}),
             **({"backlash": pair.backlash(*allowances).to_dict()} if args.backlash else {}),
             **({"data_block": [frame_records(t) for t in _data_blocks(pair, args, allowances)]}
@@ -184,8 +186,9 @@ def run(args) -> int:
         return 1 if failed else 0
     print_verdict(failed, check_details(table))
     print_wrapped(describe(pair, shorten))
-    print_frame(table[["check", "value", "limit", "margin", "ok", "label"]], "\nChecks (margin >= 0 holds)")
-    print_frame(geo.to_table(helical=bool(pair.beta_deg)), "\nGeometry", float_format="{:.8g}")
+    print_frame(table.select("check", "value", "limit", "margin", "ok", "label"), "\nChecks (margin >= 0 holds)")
+    print_frame(Rows(GEOMETRY_COLUMNS, geometry_rows(geo, helical=bool(pair.beta_deg))), "\nGeometry",
+                float_format="{:.8g}")
     if args.measurements:
         _measurements(pair, False, allowances[:2])
     if args.backlash:

@@ -18,7 +18,10 @@ from .inputs import plain_inputs_ok
 from .mesh import Mesh
 from .rack import STANDARD_RACK, BasicRack
 
-__all__ = ["GearPair", "balanced_sliding_split"]
+__all__ = ["GearPair", "balanced_sliding_split", "PAIR_CHECK_COLUMNS"]
+
+# the columns of GearPair.checks: margin and ok first, a plain session shows the columns that fit its width
+PAIR_CHECK_COLUMNS = ("check", "margin", "ok", "value", "limit", "label")
 
 def balanced_sliding_split(m, z1, z2, x_sum, rack: BasicRack = BasicRack(), tip_shortening: bool = True,
                            mesh: Mesh | None = None) -> float:
@@ -188,14 +191,25 @@ class GearPair:
         >>> round(float(row["value"]), 4), bool(row["ok"])   # a_w = 181.6016 mm (seed 000), not 180 mm
         (181.6016, False)
         """
+        rows = self.check_rows(housing_a_w=housing_a_w, housing_tol_mm=housing_tol_mm, extra=extra, cutter=cutter,
+                               **limits)
+        return _checks.check_table(rows, PAIR_CHECK_COLUMNS)
+
+    def check_rows(self, *, housing_a_w: float | None = None, housing_tol_mm: float | None = None, extra=(),
+                   cutter=None, **limits) -> list[tuple]:
+        """The rows of :meth:`checks` as tuples ``check, margin, ok, value, limit, label``
+        (:data:`PAIR_CHECK_COLUMNS`) of plain Python values, without pandas (what ``geardesign pair`` prints).
+
+        >>> [(name, ok) for name, margin, ok, *_ in GearPair(8, 17, 26, 0.898, 0.517).check_rows()][-1]
+        ('contact_ratio', False)
+        """
         extra = tuple(extra) if not isinstance(extra, _checks.Check) else (extra,)
         if housing_a_w is not None:
             extra += (self._housing_check(housing_a_w, housing_tol_mm),)
         cs = _checks.make_checks(**{"jamming": True, **limits}, extra=extra, cutter=cutter, internal=self.internal)
-        # margin and ok first: a plain session shows the columns that fit its width, the label last
-        table = _checks.evaluate(self._geo, cs)[["check", "margin", "ok", "value", "limit", "label"]]
-        table["margin"] = table["margin"].where(table["margin"].abs() > _checks.FEASIBILITY_TOL, 0.0)
-        return table
+        tol = _checks.FEASIBILITY_TOL
+        return [(name, margin if abs(margin) > tol else 0.0, ok, value, limit, label)
+                for name, label, value, limit, margin, ok in _checks.check_rows(self._geo, cs)]
 
     def _housing_check(self, housing_a_w, housing_tol_mm) -> _checks.CenterDistance:
         """The ``center_distance`` check against the housing's a_w, labelled with the x-sum it needs."""

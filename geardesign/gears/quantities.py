@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["PAIR_ROWS", "GEAR_ROWS", "geometry_table", "SUMMARY_PAIR", "SUMMARY_GEAR"]
+__all__ = ["PAIR_ROWS", "GEAR_ROWS", "geometry_table", "geometry_rows", "GEOMETRY_COLUMNS", "SUMMARY_PAIR", "SUMMARY_GEAR"]
 
 # (quantity, symbol, unit, field): one value for the pair
 PAIR_ROWS = (
@@ -67,12 +67,21 @@ def _value(geo, name):
     return None if v is None else float(v)
 
 
+GEOMETRY_COLUMNS = ("quantity", "symbol", "unit", "gear 1", "gear 2")
+
+
 def geometry_table(geo, helical: bool | None = None):
     """One pair's :class:`~geardesign.gears.geometry.Geometry` as a DataFrame ``quantity, symbol, unit,
     gear 1, gear 2`` (the pair's own quantities have gear 2 empty). ``helical=False`` leaves out the
     helical-only rows (ε_β, m_t, ...); by default they are shown when β ≠ 0."""
     import pandas as pd
 
+    return pd.DataFrame(geometry_rows(geo, helical), columns=list(GEOMETRY_COLUMNS))
+
+
+def geometry_rows(geo, helical: bool | None = None) -> list[tuple]:
+    """The rows of :func:`geometry_table` as tuples of plain Python values (gear 2 ``None`` for the pair's own
+    quantities), without pandas (what ``geardesign pair`` prints)."""
     if helical is None:
         beta = _value(geo, "beta_b_deg")
         helical = beta is not None and math.isfinite(beta) and beta != 0.0
@@ -85,7 +94,7 @@ def geometry_table(geo, helical: bool | None = None):
         if (f1 in _HELICAL_ONLY and not helical) or _value(geo, f1) is None:
             continue
         rows.append((quantity, symbol, unit, _value(geo, f1), _value(geo, f2)))
-    return pd.DataFrame(rows, columns=["quantity", "symbol", "unit", "gear 1", "gear 2"])
+    return rows
 
 
 def summary_lines(geo) -> list[str]:

@@ -62,6 +62,10 @@ class ShaperCutter:
         >>> [int(c.teeth(4.0, z2)) for c, z2 in ((ShaperCutter(), 90), (ShaperCutter(), 30), (ShaperCutter(z0=30), 90))]
         [25, 12, 30]
         """
+        return self._teeth(m, z2)
+
+    def _teeth(self, m, z2):
+        """:meth:`teeth` without its keyword check (the cutting mesh asks at every design a solver visits)."""
         one = type(z2) in (float, int) and type(m) in (float, int)   # no np.ndim on the optimisers' path
         if self.z0 is not None:
             return self.z0 if one else self.z0 + 0 * np.asarray(z2)
@@ -239,7 +243,7 @@ def _setup(m_n, z2, x2, r_a2, cutter: ShaperCutter, alpha_t, tan_n, cos_beta):
     cost would dominate the optimisers' path), one ring's parts cached, arrays over many rings as given."""
     scalar = (type(x2) is float and type(r_a2) is float and type(m_n) is float and type(z2) is float) or \
         all(type(v) in (float, int) or np.ndim(v) == 0 for v in (m_n, z2, x2, r_a2))
-    z0 = cutter.teeth(m_n, z2)
+    z0 = cutter._teeth(m_n, z2)
     if scalar or all(type(v) in (float, int) or np.ndim(v) == 0 for v in (m_n, z2, cos_beta)):   # one ring
         # all Python floats (a 0-d array's cos β would make numpy scalars, whose √ of a negative warns)
         m_n, z2 = float(m_n), float(z2)

@@ -143,7 +143,9 @@ def _first_kkt_point(prob: Problem, ev: Evaluator, w0, near_p, near_m, max_move:
     light, costly = ev.light(), getattr(prob, "costly_parts", set())
     for act_p, act_m in itertools.islice(_promising_first(prob, ev, w0, _active_sets(near_p, near_m, nv)), limit):
         walk = light if light is not None and costly.isdisjoint(act_m) else ev
-        out = _kkt_newton(walk, nv, act_p, act_m, w0, max_move, noisy=walk.prob.fd_gradients)
+        # on the active rows' checks alone (the same iterates: the rows are all it reads), the start and the end
+        # point in full (multipliers, feasibility)
+        out = _kkt_newton(walk.reading_only(act_m), nv, act_p, act_m, w0, max_move, noisy=walk.prob.fd_gradients)
         if out is None:
             continue
         w, it = out

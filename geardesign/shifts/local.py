@@ -32,6 +32,16 @@ class Evaluator:
             self._window_rows = np.concatenate((eye, -eye))
             self._lo, self._hi = [float(c) for c in window[0]], [float(c) for c in window[1]]
 
+    def reading_only(self, parts) -> "Evaluator":
+        """An evaluator of :meth:`Problem.reading_only` (only the checks of the margin ``parts`` evaluated), with the
+        same window, one per set of parts; itself where the problem has no such view."""
+        key = frozenset(parts)
+        views = self.__dict__.setdefault("_views", {})
+        if key not in views:
+            prob = self.prob.reading_only(key)
+            views[key] = self if prob is self.prob else Evaluator(prob, self.window)
+        return views[key]
+
     def light(self):
         """An evaluator of the problem without its costly checks (their margins −BIG: see Problem.light), with
         the same window, for steps that read only the others; None when the problem has no such view."""

@@ -67,6 +67,7 @@ class Problem:
 
     _recent = None   # key -> (evaluate_point's value, its geometry) of the last points evaluated
     _RECENT = 32     # points remembered: the best of several starts, evaluated again for the result
+    _geos = None     # key -> geometry of the last points, shared with the views of :meth:`reading_only`
 
     def __init__(self, mesh: Mesh, checks=None, objective="max_x_sum", m=1.0, x_sum=None, meshing: bool = True):
         if not isinstance(mesh, Mesh):
@@ -250,6 +251,23 @@ class Problem:
             return self
         return light
 
+    def reading_only(self, parts) -> "Problem":
+        """This problem with only the checks that own the margin ``parts`` evaluated (the others' margins NaN, as
+        :meth:`light` leaves its costly ones): for Newton on one active set, which reads those rows alone (a ring
+        pair's cutter checks cost more than the geometry). The view and this problem share the geometry of the
+        points they evaluate, so a point reached by the view and checked in full is computed once. Itself when
+        the objective reads the checks (``max_margin``, a load) or every check is among them."""
+        if self.objective.needs_load or self.objective.kind == "margin":
+            return self
+        keep = {self.part_check[k] for k in parts if k < len(self.part_check)}
+        if len(keep) == len(self.checks):
+            return self
+        if self._geos is None:
+            self._geos = {}
+        out = self.with_checks(c if i in keep else _Unread(c.name, n_parts=c.n_parts) for i, c in enumerate(self.checks))
+        out._geos = self._geos
+        return out
+
     def modelled_at(self, v) -> "Problem":
         """This problem with its costly checks replaced by their quadratic models around the point v (see
         Check.modelled_at): one evaluation of them, then a problem as cheap as one without them."""
@@ -326,6 +344,10 @@ class Problem:
         if len(self._recent) >= self._RECENT:
             self._recent.pop(next(iter(self._recent)))
         self._recent[key] = (out, geo)
+        if self._geos is not None:
+            if len(self._geos) >= self._RECENT:
+                self._geos.pop(next(iter(self._geos)))
+            self._geos[key] = geo
         return out
 
     def evaluate_design(self, x1: float, x2: float, parts: bool = False, grads: bool = True):
@@ -334,9 +356,11 @@ class Problem:
         arrays, which give inf/NaN as the vectorised path does. The geometry of a point
         :meth:`evaluate_point` saw lately (a solver's final iterate, usually) is reused. Without
         ``grads`` GP and GM are None (unless the objective is made of normalised margins)."""
-        seen = (self._recent or {}).get((x1, x2, self.x_sum))
+        key = (x1, x2, self.x_sum)
+        seen = (self._recent or {}).get(key)
+        geo = seen[1] if seen is not None else (self._geos or {}).get(key)
         try:
-            geo = seen[1] if seen is not None else mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
+            geo = geo if geo is not None else mesh_geometry_float(self.mesh, self.m, x1, x2, self.full)
             return geo, self.evaluate_geo(geo, parts, grads)
         except _FLOAT_FAULTS:
             geo = self._array_geo(x1, x2)
@@ -407,6 +431,24 @@ class _Unevaluated(_checks.Check):
 
     def part_gradients(self, geo) -> list:
         return [(math.nan, math.nan)] * self.n_parts
+
+
+@dataclass(frozen=True)
+class _Unread(_Unevaluated):
+    """A check a view of :meth:`Problem.reading_only` does not evaluate: margins 0 and gradients 0 (finite, so the
+    evaluator keeps the rows it reads as they are; NaN would make it replace every non-finite value)."""
+
+    def value(self, geo):
+        return 0.0
+
+    def gradient(self, geo):
+        return 0.0, 0.0
+
+    def part_margins(self, geo) -> list:
+        return [0.0] * self.n_parts
+
+    def part_gradients(self, geo) -> list:
+        return [(0.0, 0.0)] * self.n_parts
 
 
 def _stack(values, like) -> np.ndarray:

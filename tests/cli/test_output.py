@@ -147,3 +147,39 @@ def test_piped_output_fits_80_columns(argv):
     assert proc.returncode in (0, 1), proc.stderr
     long = [line for line in proc.stdout.splitlines() if len(line) > 80]
     assert not long, long[:3]
+
+
+def _printed(table, width, monkeypatch, capsys, float_format="{:.6g}"):
+    monkeypatch.setenv("COLUMNS", str(width))
+    print_frame(table, "t", float_format=float_format)
+    return capsys.readouterr().out
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_rows_print_as_pandas_prints_the_same_frame(seed, monkeypatch, capsys):
+    """Issue 36 §3: a plain `pair` prints its tables from plain rows (no pandas import); pandas' own layout of
+    the same DataFrame is the reference, character for character: text left-aligned and cut, numbers with NaN,
+    None, ±inf, -0 and tiny or huge values, booleans, the name column cut and the columns folded."""
+    from geardesign.cli.output import Rows
+
+    rng = np.random.default_rng(seed)
+    words = ["a", "contact_ratio", "tip thickness of gear 1: s_a1/m >= sa_min (normal section), a long label",
+             "ε_α", "ϑ_root", "x" * 45, "tab\there"]
+    specials = [None, float("nan"), float("inf"), -float("inf"), -0.0, 0.0, 1e-300, 5.1e-31, 1e16, -123456.789]
+    n = int(rng.integers(1, 12))
+    columns = ["name", "val", "ok", "other", "wide number", "label"]
+    rows = []
+    for _ in range(n):
+        rows.append((str(rng.choice(words)), float(rng.normal() * 10.0 ** rng.integers(-8, 8)),
+                     bool(rng.integers(2)),
+                     specials[int(rng.integers(len(specials)))] if rng.random() < 0.5 else float(rng.normal()),
+                     float(rng.normal() * 1e6), str(rng.choice(words))))
+    rows[0] = rows[0][:3] + (1.0,) + rows[0][4:]     # a column of numbers, not all None
+    table = Rows(tuple(columns), rows)
+    assert frame_records(table) == frame_records(table.to_frame())
+    for width in (40, 63, 80, 120, 250):
+        for fmt in ("{:.6g}", "{:.8g}", "{:.5f}"):
+            assert (_printed(table, width, monkeypatch, capsys, fmt)
+                    == _printed(table.to_frame(), width, monkeypatch, capsys, fmt))
+    ints = Rows(("k", "n"), [("a", 1), ("bb", -20)])
+    assert _printed(ints, 80, monkeypatch, capsys) == _printed(ints.to_frame(), 80, monkeypatch, capsys)

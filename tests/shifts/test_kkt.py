@@ -24,3 +24,44 @@ def test_a_start_node_that_misses_a_check_does_not_bar_the_kkt_point(monkeypatch
     r = gd.optimize_shifts(27, 89, internal=True)
     assert r.success and set(r.active) == {"undercut1", "interference2"}
     assert "best of 2 starts" in r.message
+
+
+def _solves(pairs, **kind):
+    return [(r.x1, r.x2, r.fun, r.active, r.message)
+            for r in (gd.optimize_shifts(z1, z2, method="exact", **kind) for z1, z2 in pairs)]
+
+
+def test_newton_on_the_active_checks_alone_gives_the_same_optimum_to_the_bit(monkeypatch):
+    """Issue 36 §3 (internal pairs slower than spur ones): Newton on one active set reads only the active checks'
+    rows, so it walks on a view that evaluates those checks alone (a ring pair's cutter checks cost more than its
+    geometry). The iterates are the same numbers: every optimum equals the one solved with every check
+    evaluated at every Newton step, bit for bit, on ring, spur and helical pairs and a fixed centre distance."""
+    from geardesign.shifts.problem import Problem
+
+    pairs = [(27, 89), (39, 64), (17, 68), (22, 147), (14, 73), (36, 78)]
+    cases = [dict(internal=True), dict(), dict(beta_deg=15.0, internal=True),
+             dict(internal=True, objective="balanced_sliding"), dict(objective="max_eps_alpha")]
+    fast = [_solves(pairs, **kind) for kind in cases]
+    fixed = gd.optimize_shifts(20, 70, internal=True, m=2.0, a_w=50.4, objective="balanced_sliding")
+    monkeypatch.setattr(Problem, "reading_only", lambda self, parts: self)   # every check at every step
+    assert fast == [_solves(pairs, **kind) for kind in cases]
+    again = gd.optimize_shifts(20, 70, internal=True, m=2.0, a_w=50.4, objective="balanced_sliding")
+    assert (fixed.x1, fixed.x2, fixed.fun) == (again.x1, again.x2, again.fun)
+
+
+def test_a_view_evaluates_only_the_checks_of_its_parts():
+    from geardesign.shifts.problem import Problem
+
+    prob = Problem(gd.Mesh(27, 89, internal=True), objective="max_x_sum")
+    names = prob.names
+    parts = [k for k, i in enumerate(prob.part_check) if names[i] in ("undercut1", "interference2")]
+    view = prob.reading_only(parts)
+    P, M, GP, GM = prob.evaluate_point((-0.4, 1.9))
+    Pv, Mv, GPv, GMv = view.evaluate_point((-0.4, 1.9))
+    assert np.array_equal(P, Pv) and np.array_equal(GP, GPv)
+    assert np.array_equal(M[parts], Mv[parts]) and np.array_equal(GM[parts], GMv[parts])
+    others = [k for k in range(M.size) if k not in parts]
+    assert not Mv[others].any() and not GMv[others].any() and M[others].all()
+    assert prob.reading_only(range(len(prob.part_check))) is prob
+    margin = Problem(gd.Mesh(27, 89, internal=True), objective="max_margin")
+    assert margin.reading_only(parts) is margin       # its objective reads every check

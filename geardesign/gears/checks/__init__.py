@@ -15,7 +15,8 @@ The modules: :mod:`.base` (the base class, the options and the registry every co
 checks), :mod:`.strength` (ISO 6336 contact and root safety, built when a load is given), :mod:`.damage` (ISO 6336-6
 Miner damage sums, built when a load spectrum is given). A problem models only the checks asked for: build the list with :func:`make_checks`.
 """
-from .base import (CONTEXT_KEYWORDS, FEASIBILITY_TOL, UNDEFINED, Check, Option, check_colour, evaluate, make_checks,
+from .base import (CHECK_COLUMNS, CONTEXT_KEYWORDS, FEASIBILITY_TOL, UNDEFINED, Check, Option, check_colour, check_rows,
+                   check_table, evaluate, make_checks,
                    margins, option, options, register, register_context, registered, registry_version, resolve_checks,
                    unregister)
 from .external import (DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN, EPS_ALPHA_MIN_RANGE, EPS_GAMMA_MIN_RANGE, SA_MIN_RANGE,
@@ -30,7 +31,9 @@ from .ring import (TOOTH_DIFFERENCE_RANGE, CutterInterference, CutterTrimming, R
 __all__ = [
     "Check", "Option", "Undercut", "Interference", "TipThickness", "ContactRatio", "TotalContactRatio", "Jamming",
     "RingInterference", "RingTip", "TipInterference", "RadialAssembly", "CutterTrimming", "CutterInterference",
-    "ToothDifference", "CenterDistance", "CustomCheck", "ContactStrength", "RootStrength", "StrengthSpec", "PittingDamage", "RootDamage", "DamageSpec", "make_checks", "resolve_checks", "evaluate", "margins",
+    "ToothDifference", "CenterDistance", "CustomCheck", "ContactStrength", "RootStrength", "StrengthSpec", "PittingDamage",
+    "RootDamage", "DamageSpec", "make_checks", "resolve_checks", "evaluate", "check_rows", "check_table", "CHECK_COLUMNS",
+    "margins",
     "register", "unregister", "registered", "registry_version", "options", "option", "check_colour", "sliding_root_gradient",
     "DEFAULT_EPS_ALPHA_MIN", "DEFAULT_SA_MIN", "EPS_ALPHA_MIN_RANGE", "SA_MIN_RANGE", "EPS_GAMMA_MIN_RANGE",
     "TOOTH_DIFFERENCE_RANGE", "FEASIBILITY_TOL", "UNDEFINED", "CONTEXT_KEYWORDS", "register_context",

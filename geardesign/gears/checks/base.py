@@ -27,7 +27,7 @@ from ...errors import GearDesignError
 from ...validate import _show, one_number, require_bool, require_range
 
 __all__ = ["Check", "Option", "register", "registered", "options", "option", "make_checks", "resolve_checks",
-           "evaluate", "margins", "check_colour", "registry_version", "unregister", "register_context", "FEASIBILITY_TOL", "UNDEFINED", "CONTEXT_KEYWORDS"]
+           "evaluate", "check_rows", "check_table", "CHECK_COLUMNS", "margins", "check_colour", "registry_version", "unregister", "register_context", "FEASIBILITY_TOL", "UNDEFINED", "CONTEXT_KEYWORDS"]
 
 # A margin >= −FEASIBILITY_TOL holds. The solvers land on a boundary to rounding (|margin| ~ 1e-15);
 # the result, the check table and ok() then agree on such a point (issue 29 §2): one tolerance, here.
@@ -332,11 +332,26 @@ def _check_table_class():
 UNDEFINED = " (undefined for this design: a quantity the check needs does not exist here, so it fails)"
 
 
+CHECK_COLUMNS = ("check", "label", "value", "limit", "margin", "ok")
+
+
 def evaluate(geo: dict, checks):
-    """Rows ``check, label, value, limit, margin, ok`` for one design (geo of 0-d arrays). A
-    margin that does not exist (NaN: e.g. no cutter–ring mesh at this ring shift) is −inf, a
-    failing check, and its label says so, as :func:`margins` treats it in the solvers. A margin
-    within :data:`FEASIBILITY_TOL` of zero holds."""
+    """Rows ``check, label, value, limit, margin, ok`` for one design (geo of 0-d arrays), a table: the
+    rows of :func:`check_rows`."""
+    return check_table(check_rows(geo, checks))
+
+
+def check_table(rows, columns=CHECK_COLUMNS):
+    """Rows of :func:`check_rows` (or the same columns in another order, ``columns``) as a table: a DataFrame
+    whose printout leaves out the ``label`` column."""
+    return _check_table_class()(rows, columns=list(columns))
+
+
+def check_rows(geo: dict, checks) -> list[tuple]:
+    """Tuples ``check, label, value, limit, margin, ok`` (:data:`CHECK_COLUMNS`) for one design (geo of 0-d
+    arrays), plain Python values (no pandas: what a plain command line prints). A margin that does not exist
+    (NaN: e.g. no cutter–ring mesh at this ring shift) is −inf, a failing check, and its label says so, as
+    :func:`margins` treats it in the solvers. A margin within :data:`FEASIBILITY_TOL` of zero holds."""
     rows = []
     for c in checks:
         value = float(np.asarray(c.value(geo)))
@@ -346,7 +361,7 @@ def evaluate(geo: dict, checks):
         if math.isnan(margin):
             margin, label = -math.inf, label + UNDEFINED
         rows.append((c.name, label, value, limit, margin, bool(margin >= -FEASIBILITY_TOL)))
-    return _check_table_class()(rows, columns=["check", "label", "value", "limit", "margin", "ok"])
+    return rows
 
 
 def margins(geo: dict, checks) -> dict[str, np.ndarray]:

@@ -14,6 +14,7 @@ they would otherwise call the chain hundreds of times.
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -38,6 +39,14 @@ _QUANTITIES = ("S_H1", "S_H2", "S_F1", "S_F2")
 _DICT_OPTIONS = ("factors", "shaft")   # the options of pair_strength that are dicts
 
 
+@functools.lru_cache(maxsize=64)
+def _keywords(items: tuple) -> dict:
+    """:meth:`StrengthSpec.keywords` of a spec's option items."""
+    from ..strength.options import gathered   # here: as the chain itself (see _evaluate)
+
+    return gathered({k: dict(v) if k in _DICT_OPTIONS and v is not None else v for k, v in items})
+
+
 @dataclass(frozen=True)
 class StrengthSpec:
     """A load case of the strength checks: the load, the materials, the face width and the options of
@@ -50,9 +59,11 @@ class StrengthSpec:
     options: tuple = ()
 
     def keywords(self) -> dict:
-        """The options as :func:`~geardesign.gears.strength.pair_strength` keywords: the dicts (``factors``,
-        ``shaft``) that were frozen into sorted items for the spec's hash, dicts again."""
-        return {k: dict(v) if k in _DICT_OPTIONS and v is not None else v for k, v in self.options}
+        """The options as :func:`~geardesign.gears.strength.pair_strength` keywords, those of the gears' making
+        and rating gathered into one ``options=`` StrengthOptions (made once per load case: the solvers call
+        the chain at every design); the dicts (``factors``, ``shaft``) that were frozen into sorted items for
+        the spec's hash, dicts again."""
+        return _keywords(self.options)
 
     def safety(self, geo: dict, gradients: bool = False) -> dict:
         """S_H (the smaller of both gears'), S_F1, S_F2 at the designs of ``geo`` and, with ``gradients``,

@@ -28,7 +28,8 @@ from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
 from .ops import ArrayOps, FloatOps, checked, once, per_load_case
-from .options import GROUPED, StrengthOptions, blank_option, grouped, shaft_option, transverse_option, validate_options
+from ...renamed import grouped_keywords
+from .options import DEFAULT_OPTIONS, GROUPED, StrengthOptions, blank_option, gathered, shaft_option, transverse_option, validate_options
 from .result import StrengthResult, from_chain, load_case
 from .root_chain import root_side
 
@@ -289,16 +290,11 @@ def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, 
                 hg: sigma_HG, sh: zc.contact_safety(sigma_HG, out[sigma_H])})
 
 
+@grouped_keywords("options", StrengthOptions, GROUPED)
 def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, face_width_mm, face_width2_mm=None,
                   beta_deg: float = 0.0, internal: bool = False, rack: BasicRack | None = None,
-                  tip_shortening: bool = True, accuracy_grade=dflt.ACCURACY_GRADE, nu40=dflt.NU40_MM2_S,
-                  Rz_flank_um=dflt.RZ_FLANK_UM, Rz_root_um=dflt.RZ_ROOT_UM, root_method: str = "B", factors=None,
-                  K_gamma: float = 1.0, tip_relief_um=None, bore_ratio=(0.0, 0.0), shaft=None,
-                  pitting_permitted: bool = False, optimum_life: bool = False, S_Hmin: float = dflt.S_HMIN,
-                  S_Fmin: float = dflt.S_FMIN, cycles_per_rev=(1, 1), rim_mm=(None, None), root: bool = True,
-                  geometry: dict | None = None, gear_blank=None,
-                  transverse_deviation: str = dflt.TRANSVERSE_DEVIATION, options: StrengthOptions | None = None,
-                  fields=None) -> dict:
+                  tip_shortening: bool = True, root: bool = True, geometry: dict | None = None,
+                  options: StrengthOptions | None = None, fields=None) -> dict:
     """ISO 6336 load capacity of gear pairs, vectorised: m (normal module, mm), z1, z2, x1, x2 and the face
     widths broadcast like :func:`~geardesign.gears.geometry.pair_geometry`, whose geometry (operating
     pressure angle, ε_α, diameters) is used as it is. Returns a dict of float arrays: the stresses and safety
@@ -337,15 +333,13 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     then keeps only those at full size (10⁷ designs: ~0.6 GB for two fields instead of ~5.7 GB for every one);
     a name the result does not have is refused with the list of those it has.
     """
-    if options is not None:   # the options grouped in one object (docs/glossary.md)
-        (accuracy_grade, nu40, Rz_flank_um, Rz_root_um, root_method, factors, K_gamma, tip_relief_um, bore_ratio, shaft,
-         pitting_permitted, optimum_life, S_Hmin, S_Fmin, cycles_per_rev, rim_mm, gear_blank,
-         transverse_deviation) = grouped(options, dict(
-            accuracy_grade=accuracy_grade, nu40=nu40, Rz_flank_um=Rz_flank_um, Rz_root_um=Rz_root_um,
-            root_method=root_method, factors=factors, K_gamma=K_gamma, tip_relief_um=tip_relief_um,
-            bore_ratio=bore_ratio, shaft=shaft, pitting_permitted=pitting_permitted, optimum_life=optimum_life,
-            S_Hmin=S_Hmin, S_Fmin=S_Fmin, cycles_per_rev=cycles_per_rev, rim_mm=rim_mm, gear_blank=gear_blank,
-            transverse_deviation=transverse_deviation), _GROUPED_DEFAULTS)
+    if options is None:
+        options = DEFAULT_OPTIONS
+    elif not isinstance(options, StrengthOptions):
+        raise GearDesignError(f"options must be a geardesign StrengthOptions, got {type(options).__name__}")
+    (accuracy_grade, nu40, Rz_flank_um, Rz_root_um, root_method, factors, K_gamma, tip_relief_um, bore_ratio, shaft,
+     pitting_permitted, optimum_life, S_Hmin, S_Fmin, cycles_per_rev, rim_mm, gear_blank,
+     transverse_deviation) = (getattr(options, k) for k in GROUPED)
     rack = STANDARD_RACK if rack is None else rack
     if not isinstance(load, Load):
         raise GearDesignError(f"load must be a geardesign Load, got {type(load).__name__}")
@@ -619,7 +613,7 @@ def strength(pair, load: Load, material=None, *, material2=None, face_width_mm=N
     options.setdefault("geometry", getattr(pair, "_geo", None))
     out = pair_strength(pair.m, pair.z1, pair.z2, pair.x1, pair.x2, load=load, material1=material,
                         material2=material2, face_width_mm=b, beta_deg=pair.beta_deg, internal=pair.internal,
-                        rack=pair.rack, tip_shortening=pair.tip_shortening, **options)
+                        rack=pair.rack, tip_shortening=pair.tip_shortening, **gathered(options))
     return from_chain(out, title=f"{pair.z1}/{pair.z2} m={pair.m:g}", case=strength_case(material, material2, **options))
 
 
@@ -637,12 +631,12 @@ def strength_case(material, material2=None, **options) -> dict:
 
 
 # the keywords of pair_strength a caller's options may set (the design and the load case are given apart)
-_OPTION_NAMES = tuple(k for k in inspect.signature(pair_strength).parameters
-                      if k not in ("m", "z1", "z2", "x1", "x2", "load", "material1", "material2", "face_width_mm",
-                                   "fields"))
+_OPTION_NAMES = GROUPED + tuple(k for k in inspect.signature(pair_strength).parameters
+                                if k not in ("m", "z1", "z2", "x1", "x2", "load", "material1", "material2",
+                                             "face_width_mm", "fields"))
 _OPTION_SET = frozenset(_OPTION_NAMES)
-# the defaults of the options validate_options checks, and their checked values
+# the defaults of the options validate_options checks (the very objects every default StrengthOptions holds), and
+# their checked values
 _VALIDATED = tuple(inspect.signature(validate_options).parameters)
-_DEFAULTS = tuple(inspect.signature(pair_strength).parameters[k].default for k in _VALIDATED)
+_DEFAULTS = tuple(getattr(DEFAULT_OPTIONS, k) for k in _VALIDATED)
 _DEFAULTS_CHECKED = validate_options(*_DEFAULTS)
-_GROUPED_DEFAULTS = {k: inspect.signature(pair_strength).parameters[k].default for k in GROUPED}

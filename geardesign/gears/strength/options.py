@@ -14,7 +14,8 @@ from .factors import TRANSVERSE_DEVIATIONS, gear_blank_factor
 from .ops import checked
 
 __all__ = ["validate_options", "shaft_option", "blank_option", "transverse_option", "TIP_RELIEF_RANGE_UM",
-           "SHAFT_RANGES", "BLANK_RANGES", "StrengthOptions", "GROUPED", "grouped"]
+           "SHAFT_RANGES", "BLANK_RANGES", "StrengthOptions", "GROUPED", "DEFAULT_OPTIONS",
+           "gathered"]
 
 TIP_RELIEF_RANGE_UM = (0.0, 1000.0)    # C_a given: from none to a millimetre (a relief of module size)
 # the pinion shaft of ISO 6336-1:2006 7.6.2.2, eq. (44) (factors.shaft_misalignment's keywords): K' is one of the
@@ -176,20 +177,24 @@ class StrengthOptions:
             raise GearDesignError(f"factors must be a dict of factor values, got {type(self.factors).__name__}")
 
 
-def grouped(options, loose: dict, defaults: dict) -> tuple:
-    """The values of :data:`GROUPED` from ``options`` (a :class:`StrengthOptions`), in that order; refused when
-    a keyword of ``loose`` was also given away from its default ``defaults``."""
-    if not isinstance(options, StrengthOptions):
-        raise GearDesignError(f"options must be a geardesign StrengthOptions, got {type(options).__name__}")
-    given = [k for k in GROUPED if loose[k] is not defaults[k] and not _same(loose[k], defaults[k])]
-    if given:
+def gathered(keywords: dict) -> dict:
+    """``keywords`` (of :func:`~geardesign.gears.strength.chain.pair_strength`) with the options among them
+    (:data:`GROUPED`, given one by one) gathered into ``options=`` one :class:`StrengthOptions`: how the callers
+    inside the package, which carry the options as a dict (a checks dict's ``strength``, a scene's, the command
+    line's), call it the one way. Both at once are refused by name."""
+    loose = [k for k in GROUPED if k in keywords]
+    if not loose:
+        return keywords
+    if keywords.get("options") is not None:
         raise GearDesignError(f"give the strength options either as options= or as keywords, not both: "
-                              f"{', '.join(given)}")
-    return tuple(getattr(options, k) for k in GROUPED)
+                              f"{', '.join(loose)}")
+    out = {k: v for k, v in keywords.items() if k not in GROUPED}
+    out["options"] = StrengthOptions(**{k: keywords[k] for k in loose})
+    return out
 
 
-def _same(a, b) -> bool:
-    try:
-        return bool(a == b)
-    except (ValueError, TypeError):   # arrays: compared element-wise, ambiguous
-        return False
+# every option at its default: what pair_strength uses without options= (its default objects are those of any
+# StrengthOptions() made elsewhere, which lets the chain skip checking them again)
+DEFAULT_OPTIONS = StrengthOptions()
+
+

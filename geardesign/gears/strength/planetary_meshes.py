@@ -2,6 +2,7 @@
 load factor K_γ (ISO 6336-1:2019 clause 6.4)."""
 from __future__ import annotations
 
+import dataclasses
 import math
 
 from ...errors import GearDesignError
@@ -10,6 +11,7 @@ from ..geometry import mesh_geometry_float
 from ..mesh import Mesh
 from .chain import CHAIN_GEOMETRY_FIELDS, check_options, pair_strength
 from .load import Load
+from .options import DEFAULT_OPTIONS, gathered
 from .result import StrengthResult, from_chain
 
 __all__ = ["planetary_strength", "mesh_loads", "set_tips", "TIPS"]
@@ -144,18 +146,22 @@ def planetary_strength(pset, load: Load, material=None, *, face_width_mm: float,
     check_options(options)
     (sp_load, sp_cycles), (pr_load, pr_cycles) = mesh_loads(pset.z_sun, pset.z_planet, pset.z_ring, pset.n_planets,
                                                              pset.arrangement, load).values()
-    common = dict(beta_deg=pset.beta_deg, rack=pset.rack, tip_shortening=False, face_width_mm=face_width_mm,
-                  K_gamma=K_gamma, **options)
+    common = gathered(dict(beta_deg=pset.beta_deg, rack=pset.rack, tip_shortening=False, face_width_mm=face_width_mm,
+                           **options))
+    group = common.pop("options", None) or DEFAULT_OPTIONS
+    if K_gamma != 1.0:    # the set's mesh load factor given: on the options of both meshes
+        group = dataclasses.replace(group, K_gamma=K_gamma)
     d = set_tips(pset, tips)
     geo = ({} if isinstance(tips, str) and tips == "unshortened" else
            {"sun-planet": _mesh_geometry(pset, "sun-planet", d["sun"], d["planet"]),
             "planet-ring": _mesh_geometry(pset, "planet-ring", d["planet"], d["ring"])})
     planet = planet_material or material
     sp = pair_strength(pset.m, pset.z_sun, pset.z_planet, pset.x_sun, pset.x_planet, load=sp_load,
-                       material1=material, material2=planet, cycles_per_rev=sp_cycles, geometry=geo.get("sun-planet"),
-                       **common)
+                       material1=material, material2=planet, geometry=geo.get("sun-planet"),
+                       options=dataclasses.replace(group, cycles_per_rev=sp_cycles), **common)
     pr = pair_strength(pset.m, pset.z_planet, pset.z_ring, pset.x_planet, pset.x_ring, load=pr_load,
                        material1=planet, material2=ring_material or material, internal=True,
-                       cycles_per_rev=pr_cycles, geometry=geo.get("planet-ring"), **common)
+                       geometry=geo.get("planet-ring"), options=dataclasses.replace(group, cycles_per_rev=pr_cycles),
+                       **common)
     return {"sun-planet": from_chain(sp, title=f"sun-planet {pset.z_sun}/{pset.z_planet}"),
             "planet-ring": from_chain(pr, title=f"planet-ring {pset.z_planet}/{pset.z_ring}")}

@@ -7,6 +7,7 @@ import pytest
 from geardesign.errors import GearDesignError
 from geardesign.gears.strength import Load, chain, pair_strength
 from geardesign.gears.strength import defaults as d
+from geardesign.gears.strength.options import StrengthOptions
 
 
 def test_each_default_is_inside_its_range():
@@ -19,7 +20,9 @@ def test_each_default_is_inside_its_range():
 
 
 def test_the_chain_uses_these_defaults():
-    sig = inspect.signature(chain.pair_strength).parameters
+    # the options' defaults: StrengthOptions' fields (pair_strength's options=, DEFAULT_OPTIONS without it)
+    sig = inspect.signature(StrengthOptions).parameters
+    assert chain.DEFAULT_OPTIONS == StrengthOptions()
     assert sig["S_Hmin"].default == d.S_HMIN and sig["S_Fmin"].default == d.S_FMIN
     assert sig["nu40"].default == d.NU40_MM2_S and sig["accuracy_grade"].default == d.ACCURACY_GRADE
     assert sig["Rz_flank_um"].default == d.RZ_FLANK_UM and sig["Rz_root_um"].default == d.RZ_ROOT_UM

@@ -1,5 +1,7 @@
 """The numeric options of pair_strength (geardesign.gears.strength.options): each checked by name against its
 range before any work, pairs (one value per gear) as pairs, and the pinion shaft of ISO 6336-1 eq. (44)."""
+import inspect
+
 import pytest
 
 from geardesign.errors import GearDesignError
@@ -49,7 +51,8 @@ def test_the_options_grouped_in_one_object_give_the_same_result():
                  bore_ratio=(0.3, 0.5), S_Fmin=1.5, cycles_per_rev=(1, 3), rim_mm=(None, 12.0))
     design = dict(load=Load(torque_nm=200, n_rpm=1000, life_h=20_000), material1="42CrMo4", face_width_mm=30)
     one = pair_strength(3, 20, 40, 0.2, 0.1, **design, options=StrengthOptions(**loose))
-    many = pair_strength(3, 20, 40, 0.2, 0.1, **design, **loose)
+    with pytest.warns(DeprecationWarning, match=r"options=StrengthOptions\(accuracy_grade=\.\.\., nu40="):
+        many = pair_strength(3, 20, 40, 0.2, 0.1, **design, **loose)   # the old way, for one release
     for key in ("S_H1", "S_H2", "S_F1", "S_F2", "K_v", "Z_L1", "Y_B2"):
         assert float(one[key]) == float(many[key])
     assert set(GROUPED) == set(StrengthOptions.__dataclass_fields__)
@@ -59,3 +62,35 @@ def test_the_options_grouped_in_one_object_give_the_same_result():
         pair_strength(3, 20, 40, 0.2, 0.1, **design, options=loose)
     with pytest.raises(GearDesignError, match="nu40"):
         StrengthOptions(nu40=-1.0)          # refused by name when made, before any work
+
+
+def test_pair_strength_takes_its_options_one_way():
+    """Issue 36 §4: pair_strength took its 18 options as keywords beside options=StrengthOptions (two ways to say
+    one thing). Its signature now has options= alone; the keywords one by one still work for one release with a
+    DeprecationWarning (geardesign.renamed.grouped_keywords), and the package's own callers (a pair's strength,
+    the strength checks of the solvers, a planetary set) pass options= and warn nothing."""
+    import warnings
+
+    import geardesign as gd
+    from geardesign.gears.strength import Load, StrengthOptions, pair_strength
+    from geardesign.gears.strength.options import GROUPED
+    from geardesign.gears.strength.planetary_meshes import planetary_strength
+
+    params = inspect.signature(pair_strength).parameters
+    assert not set(GROUPED) & set(params) and "options" in params
+    design = dict(load=Load(torque_nm=200, n_rpm=1000, life_h=20_000), material1="42CrMo4", face_width_mm=30)
+    with pytest.raises(GearDesignError, match="not both: nu40"):
+        pair_strength(3, 20, 40, 0.2, 0.1, **design, options=StrengthOptions(), nu40=100.0)
+    load = design["load"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", DeprecationWarning)
+        pair = gd.GearPair(3, 20, 40, 0.2, 0.1, face_width_mm=30)
+        r = pair.strength(load, "42CrMo4", nu40=320.0, accuracy_grade=6)
+        assert r.S_H1 == float(pair_strength(3, 20, 40, 0.2, 0.1, **design, options=StrengthOptions(
+            nu40=320.0, accuracy_grade=6))["S_H1"])
+        t = pair.checks(load=load, material="42CrMo4", strength={"nu40": 320.0, "accuracy_grade": 6})
+        assert float(t.set_index("check").loc["contact_strength", "value"]) == pytest.approx(min(r.S_H1, r.S_H2),
+                                                                                           rel=1e-12)
+        s = gd.PlanetarySet.coaxial(2, 20, 31, 82, 3)
+        planetary_strength(s, Load(torque_nm=100, n_rpm=1500, life_h=10000), "18CrNiMo7-6", face_width_mm=25,
+                              K_gamma=1.1, nu40=320.0)

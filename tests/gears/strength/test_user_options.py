@@ -7,12 +7,14 @@ import pytest
 from geardesign.errors import GearDesignError
 from geardesign.gears.strength import defaults as dflt
 from geardesign.gears.strength.chain import GIVEN_FACTORS, pair_strength
+from geardesign.gears.strength.options import GROUPED
 from geardesign.gears.strength.user_options import (STRENGTH_OPTIONS, options_from_table, scene_keys,
                                                     strength_option)
 
 
 def test_every_option_sets_a_keyword_or_a_given_factor_of_the_chain():
-    keywords = set(inspect.signature(pair_strength).parameters)
+    # pair_strength's keywords and the options it takes in one StrengthOptions (options=)
+    keywords = set(inspect.signature(pair_strength).parameters) | set(GROUPED)
     for o in STRENGTH_OPTIONS:
         assert (o.keyword in GIVEN_FACTORS) if o.factor else (o.keyword in keywords), o.keyword
         assert o.flag.startswith("--") and o.describe().startswith(o.help)
