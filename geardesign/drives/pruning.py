@@ -11,6 +11,13 @@ their strength, chains whose smallest feasible row grows with the load) is bound
 cell (cells :data:`LOAD_CELL` wide, by its cost at the cell's lower edge on the stage's power curve,
 n = P/ω); other stages by their load-free bound (:meth:`StageKind.bound`). The stages not chosen yet
 count with their cheapest option at the least torque they can carry.
+
+An option the stage cannot carry at a cell's lower edge (no module holds its checks there, or its tooth pair
+reaches no standard centre distance) is bounded by +inf in that cell and above: by the same premise, a larger
+torque does not make it feasible. Without this, a standard housing's many such pairs kept their load-free bound,
+the limit rose past them round after round, and the conveyor of issue 35 was refused with 4·10⁶ designs left.
+Where no option of a stage is feasible at all (every design infeasible), the bounds fall back to the load-free
+ones, so that the search still evaluates designs and names the checks that fail.
 """
 from __future__ import annotations
 
@@ -42,6 +49,13 @@ class StageBounds:
         self.free = [self._free(k) for k in range(N)]
         self.col = 0 if search.objective == "min_size" else 1     # the objective's column: size, mass
         self._least_of = [None] * N
+        self.prune_infeasible = True        # an option infeasible at a cell's edge: +inf (see the module's text)
+
+    def keep_infeasible(self) -> None:
+        """Bound infeasible options by their load-free bounds from now on (a job where none is feasible)."""
+        self.prune_infeasible = False
+        self.cache = [{} for _ in self.cache]
+        self._least_of = [None] * len(self._least_of)
 
     def least_of(self, k: int) -> np.ndarray:
         """Stage k's options' bounds at the least torque the stage can carry (the smallest ratios before it):
@@ -117,8 +131,8 @@ class StageBounds:
                 sols = kind.solve_many(st, options[a:a + step], s.objective, flows[a:a + step])
                 s.n_solves += kind.solve_count() - before
                 for key, j, sol in zip(keys[a:a + step], js[a:a + step], sols):
-                    self.cache[k][key] = (kind.solved_cost(st, sol) if sol["feasible"]
-                                          else tuple(self.free[k][j]))
+                    self.cache[k][key] = (kind.solved_cost(st, sol) if sol["feasible"] else
+                                          (math.inf, math.inf) if self.prune_infeasible else tuple(self.free[k][j]))
                 s.report(f"bounds of stage '{st.name}'", a + len(sols), len(keys))
             return
         self._fill_batch(k, keys, js, flows)

@@ -101,6 +101,9 @@ class Search:
         or nothing is left out."""
         self._bounds = bounds = StageBounds(self)
         limit = sum(bounds.least())          # every stage's cheapest option at the least torque it can carry
+        if not math.isfinite(limit):         # a stage none of whose options is feasible: the failing designs named
+            bounds.keep_infeasible()
+            limit = sum(bounds.least())
         while True:
             idx, pruned, with_rows = pruned_combinations(self, bounds, limit)
             n = with_rows[0].shape[0] if with_rows is not None else idx.shape[0] * self._rows_factor()
