@@ -1,0 +1,590 @@
+"""The drive's shafts analysed: the loads of its gears, sprockets and couplings on each shaft, bearing reactions,
+DIN 743 safeties at the seats, the least standard seat diameter of a default shaft, bearings chosen for the life,
+deflections and the mesh misalignment f_sh they cause, keys at the seats, and the gear stages' efficiencies.
+
+:func:`analyse_shafting` is what :meth:`~geardesign.drives.drive.Drive.analyse` calls when the drive has a
+:class:`~geardesign.drives.shafting.Shafting`; the layout rules are :mod:`geardesign.drives.shafting`'s.
+
+Method, per shaft (docs/shafts_in_drive.md):
+
+1. the elements' loads (:func:`element_loads`): a gear's mesh forces on the operating pitch circle
+   (:func:`geardesign.gears.forces.pair_forces`) at its pitch point, its torque; a sprocket's chain pull
+   F_t + 2 F_f along the line of centres (:func:`geardesign.drives.chain.pull.chain_pull`); a coupling's
+   torque (an elastic coupling: its radial force neglected);
+2. the reactions of the two bearings from statics (:func:`two_support_reactions`; they do not depend on the
+   diameters); bearing A (the locating one) takes the axial force;
+3. a default shaft's bearing-seat diameter d_b: the least bore of the bearing series at which every checked
+   section reaches S_min after DIN 743 (:func:`geardesign.drives.din743.shaft_safety`; sections: a key seat
+   under each gear and hub, a press fit at each bearing, a shoulder at each step); then the smallest bearing of
+   the series with bore >= d_b that reaches the life L10h (:func:`geardesign.drives.bearing.select_bearing`),
+   the seat taking its bore; a given shaft keeps its diameters and its bearings, and is checked;
+4. the beam's deflection (:func:`geardesign.drives.shaft_beam.analyse_shaft`) at each gear's face ends; the mesh
+   misalignment of a pair f_sh = |Δδ| over its face width, δ the pinion's deflection relative to the wheel's
+   along the tooth force, plus the pinion body's torsional wind-up across the face r_w1·T·b/(2·G·J)
+   (J of d_w1; the two added, a conservative choice): at the nominal load; the strength chain takes
+   f_sh·K_A·K_v, its value at F_m/b = K_A·K_v·F_t/b (ISO 6336-1:2006 7.6.2.2), and K_Hβ by method C from it.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from ..errors import GearDesignError
+from .shafting import FILLET_MM, STEP_MM, default_positions
+
+__all__ = ["Element", "element_loads", "two_support_reactions", "analyse_shafting", "mesh_misalignment_um",
+           "G_STEEL_MPA", "HUB_LENGTH_D"]
+
+G_STEEL_MPA = 81_000.0     # shear modulus of steel, N/mm² (E/(2(1 + ν)), E = 210 000, ν = 0.3: 80 770)
+HUB_LENGTH_D = 1.5         # a sprocket's or coupling's hub length over its seat diameter (its key's hub)
+UNLOADED_NM = 1e-6         # a section whose moment, torque (N·m) and axial force (kN) are all below this carries nothing
+
+
+@dataclass(frozen=True)
+class Element:
+    """One element on a shaft: ``name`` (its stage's name, or "coupling"), ``kind`` ("pinion", "wheel",
+    "sprocket", "coupling"), ``side`` ("left", "right": overhung; "plane": between the bearings in gear plane
+    ``plane``), ``width_mm`` (a gear's face width; None for a hub), forces (N) ``fy``, ``fz``, ``fx`` acting at
+    ``y_mm`` off the axis, ``torque_nm`` put into the shaft (+: in), ``mass_kg``."""
+
+    name: str
+    kind: str
+    side: str
+    plane: int
+    width_mm: float | None
+    fy: float
+    fz: float
+    fx: float
+    y_mm: float
+    torque_nm: float
+    mass_kg: float = 0.0
+
+
+def two_support_reactions(x_mm, fy_n, fz_n, fx_n, y_mm, x_a_mm, x_b_mm) -> dict:
+    """Reactions (N) of a shaft on two supports at x_a and x_b under forces (fy, fz) at x and axial forces fx
+    acting at y off the axis (their couple −y·fx bends the shaft in the x-y plane): statics, Σ F = 0 and
+    Σ M_A = 0 in each plane; the axial force taken at A.
+
+    >>> r = two_support_reactions([100.0], [-1000.0], [0.0], [0.0], [0.0], 0.0, 200.0)
+    >>> float(r["Ay"]), float(r["By"])
+    (500.0, 500.0)
+    """
+    x, fy, fz, fx, y = (np.asarray(v, dtype=float) for v in (x_mm, fy_n, fz_n, fx_n, y_mm))
+    L = float(x_b_mm) - float(x_a_mm)
+    arm = x - float(x_a_mm)
+    couple = -y * fx                       # N·mm about z (x-y plane)
+    By = -((fy * arm).sum() + couple.sum()) / L
+    Bz = -(fz * arm).sum() / L
+    return {"Ay": -fy.sum() - By, "By": By, "Az": -fz.sum() - Bz, "Bz": Bz, "Ax": -fx.sum()}
+
+
+def _rotation_senses(drive) -> list:
+    """+1/−1 per shaft: shaft 0 positive about +x, a gear mesh reverses the sense, other stages keep it."""
+    s = [1.0]
+    for st in drive.stages:
+        s.append(-s[-1] if getattr(st, "kind", "") == "gear" else s[-1])
+    return s
+
+
+def element_loads(drive, stages_out, T) -> dict:
+    """{shaft k: [Element, ...]} of every shaft carrying a gear (the layout's shafts), from the analysed
+    stages and the shafts' torques ``T`` (N·m)."""
+    from ..gears.forces import pair_forces
+    from .chain.pull import chain_pull
+    from .stages import disc_mass_kg
+
+    sense = _rotation_senses(drive)
+    N = len(drive.stages)
+    out: dict = {}
+    gear_shafts = set()
+    plane = 0
+    for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1):
+        if getattr(st, "kind", "") != "gear":
+            continue
+        pair, stage = res["pair"], res["stage"]
+        b = float(stage.width_mm)
+        f = pair_forces(pair, float(T[k - 1]))
+        s = sense[k - 1]
+        geo = pair.geometry()
+        m1, m2 = float(disc_mass_kg(geo.da1, b)), float(disc_mass_kg(geo.da2, b))
+        out.setdefault(k - 1, []).append(Element(st.name, "pinion", "plane", plane, b, -f.F_r_n, -s * f.F_t_n,
+                                                 f.F_a_n, f.r1_mm, -s * float(T[k - 1]), m1))
+        out.setdefault(k, []).append(Element(st.name, "wheel", "plane", plane, b, f.F_r_n, s * f.F_t_n, -f.F_a_n,
+                                             -f.r2_mm, sense[k] * float(T[k]), m2))
+        gear_shafts.update((k - 1, k))
+        plane += 1
+    for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1):
+        if getattr(st, "kind", "") != "chain":
+            continue
+        row = res["row"]
+        p = chain_pull(float(T[k - 1]), float(row["pitch_mm"]), int(st.z1), float(res["flow"].n_in_rpm),
+                       float(row["mass_kg_m"]), float(row["center_distance_mm"]))
+        if k - 1 in gear_shafts:       # the driving sprocket takes power out at the right end
+            out[k - 1].append(Element(st.name, "sprocket", "right", -1, None, p.shaft_load_n, 0.0, 0.0, 0.0,
+                                      -sense[k - 1] * float(T[k - 1])))
+        if k in gear_shafts:           # the driven sprocket brings it in at the left end
+            out[k].append(Element(st.name, "sprocket", "left", -1, None, -p.shaft_load_n, 0.0, 0.0, 0.0,
+                                  sense[k] * float(T[k])))
+    for k in sorted(gear_shafts):
+        els = out[k]
+        total = sum(e.torque_nm for e in els)
+        if k == 0 and not any(e.side == "left" for e in els):
+            els.append(Element("coupling", "coupling", "left", -1, None, 0.0, 0.0, 0.0, 0.0, -total))
+        elif k == N and not any(e.side == "right" for e in els):
+            els.append(Element("coupling", "coupling", "right", -1, None, 0.0, 0.0, 0.0, 0.0, -total))
+    return out
+
+
+# -- the shaft's geometry ------------------------------------------------------------------------------------
+
+@dataclass
+class _Geometry:
+    """One shaft's model inputs: sections, bearing positions, element positions and hub lengths, the sections
+    to check, and (default layout) the bearing-seat diameter it was built for."""
+
+    sections: tuple
+    supports: tuple
+    x: dict            # element name -> x_mm
+    hubs: dict         # element name -> (seat d, hub length)
+    notches: list
+    d_b: float | None
+    given: bool
+
+
+def _default_geometry(sh, elements, widths, d_b) -> _Geometry:
+    """The default shaft (module docstring of :mod:`geardesign.drives.shafting`) at bearing-seat diameter d_b."""
+    from .din743 import Notch, ShaftNotch
+
+    c = sh.clearance_mm
+    offsets, span = default_positions(widths, c, sh.gear_gap_mm)
+    left = [e for e in elements if e.side == "left"]
+    right = [e for e in elements if e.side == "right"]
+    x_a = max(sh.overhang_mm, c / 2.0 + 5.0) if left else c / 2.0
+    x_b = x_a + span
+    end = x_b + (max(sh.overhang_mm, c / 2.0 + 5.0) if right else c / 2.0)
+    d_e, d_g = d_b - STEP_MM, d_b + STEP_MM
+    secs = []
+    if left:
+        secs.append((x_a - c / 2.0, d_e))
+    secs += [(c if left else x_a + c / 2.0, d_b), (span - c, d_g), (c if right else end - x_b + c / 2.0, d_b)]
+    if right:
+        secs.append((end - x_b - c / 2.0, d_e))
+    x, hubs, notches = {}, {}, []
+    for e in elements:
+        if e.side == "plane":
+            x[e.name] = x_a + offsets[e.plane]
+            hubs[e.name] = (d_g, e.width_mm)
+        else:
+            x[e.name] = 0.0 if e.side == "left" else end
+            hubs[e.name] = (d_e, HUB_LENGTH_D * d_e)
+        notches.append(ShaftNotch(x[e.name], Notch("key"), f"key {e.name}"))
+    for tag, xs in (("A", x_a), ("B", x_b)):
+        notches.append(ShaftNotch(xs, Notch("press_fit"), f"bearing {tag}"))
+    steps = [x_a + c / 2.0, x_b - c / 2.0] + ([x_a - c / 2.0] if left else []) + ([x_b + c / 2.0] if right else [])
+    for xs in sorted(steps):
+        notches.append(ShaftNotch(xs, Notch("shoulder", r_mm=FILLET_MM), f"shoulder at {xs:.4g}"))
+    return _Geometry(tuple(secs), (x_a, x_b), x, hubs, notches, d_b, False)
+
+
+def _given_geometry(ds, elements) -> _Geometry:
+    """A DriveShaft: its sections and supports, its elements where it puts them; the sections to check: a key seat
+    under each element, a press fit at each bearing, a shoulder at each diameter step."""
+    from .din743 import Notch, ShaftNotch
+    from .shaft_beam import ShaftModel
+
+    names = {e.name for e in elements}
+    missing = sorted(names - set(ds.positions))
+    if missing:
+        raise GearDesignError(f"shaft {ds.at}: positions must place {', '.join(repr(m) for m in missing)} "
+                              f"(the elements this shaft carries)")
+    extra = sorted(set(ds.positions) - names)
+    if extra:
+        raise GearDesignError(f"shaft {ds.at}: positions name {', '.join(repr(m) for m in extra)}, which this "
+                              f"shaft does not carry (it carries {', '.join(sorted(names))})")
+    model = ShaftModel(ds.sections, ds.supports_mm)
+    x, hubs, notches = {}, {}, []
+    for e in elements:
+        x[e.name] = ds.positions[e.name]
+        d = float(model.diameter_at(x[e.name])[0])
+        hub = ds.widths.get(e.name, e.width_mm if e.width_mm is not None else HUB_LENGTH_D * d)
+        hubs[e.name] = (d, hub)
+        notches.append(ShaftNotch(x[e.name], Notch("key"), f"key {e.name}"))
+    for tag, xs in zip("AB", ds.supports_mm):
+        notches.append(ShaftNotch(xs, Notch("press_fit"), f"bearing {tag}"))
+    ends = model.section_ends_mm[1:-1]
+    ds_ = [s[1] for s in model.sections]
+    for i, xs in enumerate(ends):
+        if ds_[i] != ds_[i + 1]:
+            notches.append(ShaftNotch(float(xs), Notch("shoulder", r_mm=FILLET_MM), f"shoulder at {xs:.4g}"))
+    return _Geometry(model.sections, model.supports_mm, x, hubs, notches, None, True)
+
+
+def _model(geo: _Geometry, elements):
+    from .shaft_beam import ShaftLoad, ShaftModel
+
+    loads = [ShaftLoad(geo.x[e.name], fy_n=e.fy, fz_n=e.fz, fx_n=e.fx, y_mm=e.y_mm, torque_nm=e.torque_nm,
+                       mass_kg=e.mass_kg, name=e.name) for e in elements]
+    return ShaftModel(geo.sections, geo.supports, loads, axial_support=0)
+
+
+def _safety(geo, elements, sh):
+    """(ShaftSafety, ShaftAnalysis) of a shaft geometry (coarse beam grid: the diagrams are exact at the nodes)."""
+    from .din743 import shaft_safety
+    from .shaft_beam import analyse_shaft
+
+    a = analyse_shaft(_model(geo, elements), points=40)
+    return shaft_safety(a, geo.notches, sh._material, peak_factor=sh.peak_factor, S_min=sh.S_min), a
+
+
+def _least(table) -> float:
+    return float(np.minimum(table["S_D"], table["S_F"]).min())
+
+
+def _section_loads(geo, elements):
+    """The bending moment, torque and axial force at each section of ``geo`` to check (N·m, N·m, N): the larger
+    limit at a node, as :func:`~geardesign.drives.din743.shaft_safety` reads them. On two supports they do not
+    depend on the diameters (statics), so a default shaft's sizing reads them once."""
+    from .shaft_beam import analyse_shaft
+
+    d = analyse_shaft(_model(geo, elements), points=10, shaft_mass=False).diagrams
+    x, M, T, N = (d[c].to_numpy() for c in ("x_mm", "M_nm", "T_nm", "N_n"))
+    out = []
+    for sn in geo.notches:
+        at = np.flatnonzero(x == sn.x_mm)
+        if at.size:
+            out.append((float(M[at].max()), float(np.abs(T[at]).max()), float(N[at][np.argmax(np.abs(N[at]))])))
+        else:
+            out.append((float(np.interp(sn.x_mm, x, M)), abs(float(np.interp(sn.x_mm, x, T))),
+                        float(np.interp(sn.x_mm, x, N))))
+    return out
+
+
+def _default_sections(d_b) -> dict:
+    """{notch name prefix: (d, D)} of the default shaft's checked sections at bearing-seat diameter d_b."""
+    return {"key_plane": (d_b + STEP_MM, None), "key_hub": (d_b - STEP_MM, None), "bearing": (d_b, None),
+            "inner": (d_b, d_b + STEP_MM), "outer": (d_b - STEP_MM, d_b)}
+
+
+def _holds(sh, geo, loads, d_b) -> bool:
+    """Every section of the default shaft ``geo`` (laid out for any d_b) reaches S_min at bearing seat d_b."""
+    from .din743 import din743_safety
+
+    d_end, d_gear = d_b - STEP_MM, d_b + STEP_MM
+    x_a, x_b = geo.supports
+    for sn, (M, T, N) in zip(geo.notches, loads):
+        if M <= 0.0 and T <= 0.0 and N == 0.0:
+            continue
+        kind = sn.notch.kind
+        if kind == "key":
+            d, D = (d_gear if x_a < sn.x_mm < x_b else d_end), None
+        elif kind == "press_fit":
+            d, D = d_b, None
+        else:
+            d, D = (d_b, d_gear) if x_a < sn.x_mm < x_b else (d_end, d_b)
+        r = din743_safety(sh._material, sn.notch, d_mm=d, D_mm=D, d_eff_mm=d_gear, F_zdm=N, M_ba=M, T_m=T,
+                          F_zdmax=sh.peak_factor * abs(N), M_bmax=sh.peak_factor * M, T_max=sh.peak_factor * T,
+                          S_min=sh.S_min)
+        if min(r.S_D, r.S_F) < sh.S_min:
+            return False
+    return True
+
+
+def _sized_geometry(sh, elements, widths, bores, d_min):
+    """The default shaft at the least catalog bore >= d_min whose sections all reach S_min (bisection: the safety
+    never falls as the shaft thickens); the thickest when none does."""
+    cand = [d for d in bores if d >= d_min and d - STEP_MM >= 6.0]
+    if not cand:
+        raise GearDesignError(f"no bearing bore of series {', '.join(sh.series)} is >= {d_min:g} mm")
+    geo = _default_geometry(sh, elements, widths, cand[-1])
+    loads = _section_loads(geo, elements)
+
+    def ok(d):
+        return _holds(sh, geo, loads, d)
+
+    lo, hi = 0, len(cand) - 1
+    if not ok(cand[hi]):
+        return geo
+    while lo < hi:
+        mid = (lo + hi) // 2
+        lo, hi = (lo, mid) if ok(cand[mid]) else (mid + 1, hi)
+    return _default_geometry(sh, elements, widths, cand[lo])
+
+
+# -- bearings --------------------------------------------------------------------------------------------------
+
+@lru_cache(maxsize=16)
+def _catalog(series: tuple):
+    from .bearing import bearing_catalog
+
+    return bearing_catalog(list(series))
+
+
+def _bearings(sh, ds, reactions, n_rpm, bore):
+    """(designation, [BearingCheck A, B]) of a shaft: the given ones, else the smallest of the series whose bore
+    is >= ``bore`` reaching the life under each bearing's load (both bearings alike: the larger of the two picks),
+    as :func:`geardesign.drives.bearing.select_bearing` ranks them (one catalog read for every shaft)."""
+    from .bearing import _check_from_row, _evaluate, check_bearing, reliability_factor
+
+    loads = [(max(math.hypot(reactions["Ay"], reactions["Az"]), 1e-9), abs(reactions["Ax"])),
+             (max(math.hypot(reactions["By"], reactions["Bz"]), 1e-9), 0.0)]
+    if ds is not None and ds.bearings is not None:
+        names = ds.bearings
+        return names, [check_bearing(name, fr, fa, n_rpm=n_rpm, life_h=sh.life_h, reliability=sh.reliability)
+                       for name, (fr, fa) in zip(names, loads)]
+    rows = _catalog(sh.series)
+    rows = rows[rows["d_mm"] >= bore - 1e-9].reset_index(drop=True)
+    if rows.empty:
+        raise GearDesignError(f"no bearing of series {', '.join(sh.series)} has a bore >= {bore:g} mm")
+    a1 = reliability_factor(sh.reliability)
+    picks = []
+    for fr, fa in loads:
+        t = _evaluate(rows, fr, fa, n_rpm, sh.life_h, a1, None, None, "grease", None)
+        order = np.lexsort((t["d_mm"].to_numpy(), t["D_mm"].to_numpy(), ~t["feasible"].to_numpy()))
+        t = t.iloc[order]
+        if not bool(t["feasible"].iloc[0]):      # none reaches: the closest (the one nearest to holding)
+            t = t.sort_values("min_margin", ascending=False, kind="stable")
+        picks.append((float(t["D_mm"].iloc[0]), float(t["d_mm"].iloc[0]), int(t.index[0])))
+    j = max(picks)[2]
+    row = rows.iloc[[j]].reset_index(drop=True)
+    checks = [_check_from_row(_evaluate(row, fr, fa, n_rpm, sh.life_h, a1, None, None, "grease", None).iloc[0],
+                              fr, fa, n_rpm, sh.life_h) for fr, fa in loads]
+    name = checks[0].designation
+    return (name, name), checks
+
+
+# -- the mesh misalignment -------------------------------------------------------------------------------------
+
+def mesh_misalignment_um(pinion_w, wheel_w, direction, r_w1_mm, torque1_nm, b_mm, d_w1_mm, G_mpa=G_STEEL_MPA):
+    """f_sh (µm) of a gear pair from its shafts: ``pinion_w``, ``wheel_w`` the deflections (wy, wz) (mm) of the two
+    shafts at the two face ends (arrays (2, 2): end, plane); ``direction`` the unit tooth force on the pinion
+    (y, z): δ = (w_pinion − w_wheel)·n at each end, f_bend = |δ_2 − δ_1|; plus the pinion body's wind-up across
+    the face, r_w1·T·b/(2·G·J), J = π·d_w1⁴/32 (the torque fed in at one side and taken out uniformly over the
+    face: half the twist of the whole torque over b), added to it.
+
+    A pinion whose shafts do not bend: only the wind-up, T·b·r/(2GJ):
+
+    >>> z = [[0.0, 0.0], [0.0, 0.0]]
+    >>> f = mesh_misalignment_um(z, z, (0.0, 1.0), 30.0, 500.0, 60.0, 60.0)
+    >>> round(f, 6) == round(1000 * 30 * 500e3 * 60 / (2 * 81000 * math.pi * 60**4 / 32), 6)
+    True
+    """
+    pw, ww = np.asarray(pinion_w, dtype=float), np.asarray(wheel_w, dtype=float)
+    n = np.asarray(direction, dtype=float)
+    delta = (pw - ww) @ n
+    bend = abs(float(delta[1] - delta[0]))
+    J = math.pi * d_w1_mm ** 4 / 32.0
+    twist = r_w1_mm * 1000.0 * abs(torque1_nm) * b_mm / (2.0 * G_mpa * J)
+    return 1000.0 * (bend + twist)
+
+
+# -- the whole drive -------------------------------------------------------------------------------------------
+
+def _gear_planes(drive, stages_out) -> list:
+    return [float(res["stage"].width_mm) for st, res in zip(drive.stages, stages_out)
+            if getattr(st, "kind", "") == "gear"]
+
+
+def analyse_shafting(drive, stages_out, n, T) -> dict:
+    """Every shaft of the drive that carries a gear: its geometry (given, or the default one sized by DIN 743),
+    bearing reactions and bearings, safeties, deflections; each gear stage's nominal f_sh; the keys at the seats.
+
+    Returns dict(shafts, bearings, sections, seat_keys: DataFrames; rows: the checks table's rows (item, check,
+    margin); f_sh {stage name: µm at the nominal load}; bearing_loads {shaft k: [(designation, Fr, Fa), ...]};
+    analyses {shaft k: ShaftAnalysis}; models {shaft k: ShaftModel})."""
+    import pandas as pd
+
+    from . import key as keys
+
+    sh = drive.shafting
+    elements = element_loads(drive, stages_out, T)
+    widths = _gear_planes(drive, stages_out)
+    bores = sorted(set(float(v) for v in _catalog(sh.series)["d_mm"]))
+    shaft_rows, bearing_rows, section_rows, key_rows, rows = [], [], [], [], []
+    analyses, models, bearing_loads = {}, {}, {}
+    for k in sorted(elements):
+        els = elements[k]
+        ds = sh.given(k)
+        name = f"shaft {k}"
+        if ds is not None:
+            geo = _given_geometry(ds, els)
+        else:
+            geo = _sized_geometry(sh, els, widths, bores, bores[0])
+        model = _model(geo, els)
+        xs = np.array([ld.x_mm for ld in model.loads])
+        r = two_support_reactions(xs, [e.fy for e in els], [e.fz for e in els], [e.fx for e in els],
+                                  [e.y_mm for e in els], *geo.supports)
+        seat = geo.d_b if geo.d_b is not None else float(model.diameter_at(geo.supports[0])[0])
+        names, checks = _bearings(sh, ds, r, float(n[k]), seat)
+        if ds is None and checks[0].d_mm > geo.d_b:      # the bearing's bore is the seat: a thicker shaft
+            geo = _default_geometry(sh, els, widths, checks[0].d_mm)
+            model = _model(geo, els)
+        safety, analysis = _safety(geo, els, sh)
+        analyses[k], models[k] = analysis, model
+        d_seat = [float(v) for v in model.diameter_at(list(geo.supports))[0]]
+        for tag, chk, d_s in zip("AB", checks, d_seat):
+            item = f"bearing {k}{tag}"
+            bearing_rows.append(dict(name=item, shaft=k, x_mm=geo.supports["AB".index(tag)],
+                                     designation=chk.designation, seat_d_mm=d_s, bore_mm=chk.d_mm, D_mm=chk.D_mm,
+                                     B_mm=chk.B_mm, fr_n=chk.fr_n, fa_n=chk.fa_n, n_rpm=chk.n_rpm, P_n=chk.P_n,
+                                     L10h=chk.L10h, life_h=sh.life_h, s0=chk.s0, ok=chk.ok))
+            fit = chk.d_mm - d_s
+            if abs(fit) > 1e-9:       # a given bearing whose bore is not the seat's diameter
+                rows.append((item, "bore_fits_seat", -abs(fit) / d_s))
+            for c in ("life", "static_safety", "speed", "axial_load"):
+                v = chk.margins.get(c)
+                if v is not None and math.isfinite(v):
+                    rows.append((item, c, float(v)))
+        bearing_loads[k] = [(chk.designation, chk.fr_n, chk.fa_n) for chk in checks]
+        for _, srow in safety.table.iterrows():
+            if max(abs(srow["M_nm"]), abs(srow["T_nm"]), abs(srow["N_n"]) / 1000.0) < UNLOADED_NM:
+                continue          # a section that carries nothing (beyond the last element): nothing to check
+            s = min(srow["S_D"], srow["S_F"])
+            section_rows.append(dict(shaft=k, section=srow["name"], x_mm=srow["x_mm"], notch=srow["notch"],
+                                     d_mm=srow["d_mm"], M_nm=srow["M_nm"], T_nm=srow["T_nm"], S_D=srow["S_D"],
+                                     S_F=srow["S_F"], ok=bool(srow["ok"])))
+            rows.append((name, f"safety {srow['name']}", s / sh.S_min - 1.0))
+        for e in els:
+            d, hub = geo.hubs[e.name]
+            torque = abs(e.torque_nm)
+            sel = keys.select(d, torque, hub)
+            key_rows.append(dict(name=f"key {k} {e.name}", shaft=k, element=e.name, d_mm=d, hub_length_mm=hub,
+                                 torque_nm=torque, b_mm=sel.b_mm, h_mm=sel.h_mm, length_mm=sel.length_mm,
+                                 n_keys=sel.n_keys, margin_crush=sel.margin_crush, margin_shear=sel.margin_shear,
+                                 feasible=sel.feasible))
+            rows += [(f"key {k} {e.name}", "crushing", sel.margin_crush), (f"key {k} {e.name}", "shear",
+                                                                            sel.margin_shear)]
+        el = analysis.elements
+        gear_w = {e.name: (geo.x[e.name], e.width_mm) for e in els if e.width_mm is not None}
+        shaft_rows.append(dict(shaft=k, layout="given" if geo.given else "default", length_mm=model.length_mm,
+                               span_mm=geo.supports[1] - geo.supports[0],
+                               d_end_mm=None if geo.d_b is None else geo.d_b - STEP_MM,
+                               d_bearing_mm=d_seat[0], d_gear_mm=None if geo.d_b is None else geo.d_b + STEP_MM,
+                               bearings="/".join(names), least_safety=_least(safety.table),
+                               max_deflection_mm=analysis.max_deflection_mm,
+                               gear_deflection_mm=float(el.loc[el["name"].isin(list(gear_w)), "w_mm"].max()),
+                               gear_slope_rad=float(el.loc[el["name"].isin(list(gear_w)), "th_rad"].max()),
+                               critical_speed_rpm=analysis.critical_speed_rpm, mass_kg=analysis.mass_kg))
+        models[k] = (model, geo)
+    f_sh = {}
+    for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1):
+        if getattr(st, "kind", "") != "gear" or k - 1 not in analyses or k not in analyses:
+            continue
+        b = float(res["stage"].width_mm)
+        (mp, gp), (mw, gw) = models[k - 1], models[k]
+        xp, xw = gp.x[st.name], gw.x[st.name]
+        ends = lambda x0: np.clip([x0 - b / 2.0, x0 + b / 2.0], 0.0, None)   # noqa: E731
+        dp = analyses[k - 1].deflection_at(np.minimum(ends(xp), mp.length_mm))
+        dw = analyses[k].deflection_at(np.minimum(ends(xw), mw.length_mm))
+        pin = next(e for e in elements[k - 1] if e.name == st.name)
+        F = math.hypot(pin.fy, pin.fz)
+        geo_p = res["pair"].geometry()
+        f_sh[st.name] = mesh_misalignment_um(dp[["wy_mm", "wz_mm"]].to_numpy(), dw[["wy_mm", "wz_mm"]].to_numpy(),
+                                             (pin.fy / F, pin.fz / F), float(geo_p.dw1) / 2.0, float(T[k - 1]), b,
+                                             float(geo_p.dw1))
+    return dict(shafts=pd.DataFrame(shaft_rows), bearings=pd.DataFrame(bearing_rows),
+                sections=pd.DataFrame(section_rows), seat_keys=pd.DataFrame(key_rows), rows=rows, f_sh=f_sh,
+                bearing_loads=bearing_loads, analyses=analyses, elements=elements)
+
+
+# -- efficiencies and K_Hβ ----------------------------------------------------------------------------------------
+
+def _bearings_of_stages(drive, bearing_loads) -> dict:
+    """{stage index k (1-based): [(designation, shaft 1|2, Fr, Fa), ...]}: each shaft's bearings charged once, to
+    the gear stage whose wheel it carries, else (the input shaft, a shaft a chain drives) to the one whose pinion
+    it carries."""
+    out: dict = {}
+    gear = [getattr(st, "kind", "") == "gear" for st in drive.stages]
+    for k, rows in bearing_loads.items():
+        if k >= 1 and gear[k - 1]:
+            out.setdefault(k, []).extend((d, 2, fr, fa) for d, fr, fa in rows)
+        elif k < len(gear) and gear[k]:
+            out.setdefault(k + 1, []).extend((d, 1, fr, fa) for d, fr, fa in rows)
+    return out
+
+
+def stage_efficiencies(drive, stages_out, n, T, shafting) -> tuple:
+    """(η of every stage as the power flow takes it, the efficiency table): a gear stage whose efficiency was not
+    given, with the Shafting's lubricant, by :func:`geardesign.drives.efficiency.stage_efficiency` (mesh loss,
+    the given no-load loss, the SKF friction of its bearings of series 62/63: others' friction is not modelled,
+    the table says so); every other stage its own efficiency."""
+    import pandas as pd
+
+    from ..gears.pair import GearPair
+    from ..gears.strength import Load
+    from .bearing_friction import SKF_CONSTANTS
+    from .efficiency import BearingLoad, stage_efficiency
+
+    sh = drive.shafting
+    charged = _bearings_of_stages(drive, shafting["bearing_loads"])
+    eta, rows = [], []
+    for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1):
+        p_in = float(T[k - 1]) * float(n[k - 1]) * math.pi / 30.0
+        compute = getattr(st, "kind", "") == "gear" and not st.efficiency_given and sh.lubricant is not None
+        if not compute:
+            eta.append(st.efficiency)
+            rows.append(dict(stage=st.name, source="given" if getattr(st, "efficiency_given", True) else "default",
+                             efficiency=st.efficiency, power_in_w=p_in, mesh_loss_w=math.nan,
+                             bearing_loss_w=math.nan, no_load_loss_w=math.nan, loss_w=(1.0 - st.efficiency) * p_in,
+                             note=""))
+            continue
+        pair, stage = res["pair"], res["stage"]
+        pair = GearPair(pair.m, pair.z1, pair.z2, pair.x1, pair.x2, beta_deg=pair.beta_deg,
+                        face_width_mm=stage.width_mm)
+        mine = charged.get(k, [])
+        modelled = [BearingLoad(d, s, fr, fa) for d, s, fr, fa in mine if d[:2] in SKF_CONSTANTS]
+        left_out = [d for d, *_ in mine if d[:2] not in SKF_CONSTANTS]
+        r = stage_efficiency(pair, Load(torque_nm=float(T[k - 1]), n_rpm=float(n[k - 1])), sh.lubricant,
+                             sh.oil_temperature_c, sh.Ra_um, bearings=modelled, no_load_loss_w=sh.no_load_loss_w,
+                             lubrication=sh.lubrication)
+        eta.append(r.efficiency)
+        rows.append(dict(stage=st.name, source="computed", efficiency=r.efficiency, power_in_w=r.power_in_w,
+                         mesh_loss_w=r.mesh_loss_w, bearing_loss_w=r.bearing_loss_w, no_load_loss_w=r.no_load_loss_w,
+                         loss_w=r.loss_w, note=("friction not modelled for " + ", ".join(left_out)) if left_out else ""))
+    return np.array(eta), pd.DataFrame(rows)
+
+
+def _factor(result, symbol: str) -> float:
+    f = result.factors
+    return float(f.loc[(f["symbol"] == symbol) & (f["gear"] == 0), "value"].iloc[0])
+
+
+def with_shaft_misalignment(drive, kinds, stages_out, stage_rows, f_sh: dict, objective: str) -> tuple:
+    """The gear stages with a material analysed again with f_sh from their shafts: the chain's f_sh given as
+    f_sh,nominal·K_A·K_v (its load level F_m/b), K_Hβ by method C from it (unless the stage's strength options give
+    f_sh, K_Hbeta or K_Fbeta themselves: the user's value wins). Returns (stages, check rows, the table of f_sh and
+    K_Hβ with the ISO 6336-1 default beside the shafts')."""
+    import pandas as pd
+    from dataclasses import replace
+
+    stages_out = list(stages_out)
+    rows_by_stage: dict = {}
+    for item, check, margin in stage_rows:
+        rows_by_stage.setdefault(item, []).append((item, check, margin))
+    table = []
+    for i, (kind, st) in enumerate(zip(kinds, drive.stages)):
+        res = stages_out[i]
+        if st.name not in f_sh or res.get("strength") is None:
+            continue
+        stage = res["stage"]
+        factors = dict((stage.strength or {}).get("factors") or {})
+        before = _factor(res["strength"], "K_Hbeta")
+        K_v = _factor(res["strength"], "K_v")
+        value = f_sh[st.name] * stage.application_factor * K_v
+        own = any(k in factors for k in ("f_sh", "K_Hbeta"))
+        if not own:
+            factors["f_sh"] = value
+            new = replace(stage, strength={**(stage.strength or {}), "factors": factors})
+            out = kind.analyse(new, res["flow"], objective)
+            rows_by_stage[st.name] = [(st.name, k, v) for k, v in out.pop("margins").items()]
+            out.pop("size", None)
+            out.pop("mass", None)
+            stages_out[i] = dict(out, flow=res["flow"])
+        after = _factor(stages_out[i]["strength"], "K_Hbeta")
+        table.append(dict(stage=st.name, f_sh_nominal_um=f_sh[st.name], K_A=stage.application_factor, K_v=K_v,
+                          f_sh_um=value, K_Hbeta_default=before, K_Hbeta=after,
+                          source="given by the user" if own else "shafts"))
+    rows = [r for st in drive.stages for r in rows_by_stage.get(st.name, [])]
+    return stages_out, rows, pd.DataFrame(table)
