@@ -222,6 +222,8 @@ class Drive:
             stages_out, stage_rows, shafting["mesh_misalignment"] = with_shaft_misalignment(
                 self, kinds, stages_out, stage_rows, shafting["f_sh"], objective)
             shafting["efficiency"] = efficiency
+            for st, e in zip(stages_out, eta):      # the η the power flow took (computed where not given)
+                st["summary"]["efficiency"] = float(e)
         rows = [("motor", name, float(v)) for name, v in self._motor_margins(P[0]).items()] + stage_rows
         key_rows, key_results, key_checks = self._keys(T)
         rows += key_checks

@@ -91,6 +91,10 @@ class DriveShaft:
                 raise GearDesignError(f"shaft {self.at}: bearings must be two catalog designations, got "
                                       f"{self.bearings!r}")
             object.__setattr__(self, "bearings", b)
+        if self.material is not None:
+            from .din743 import _material
+
+            _material(self.material)      # an unknown steel is refused here, by name
 
     @property
     def length_mm(self) -> float:

@@ -230,13 +230,13 @@ def _model(geo: _Geometry, elements):
     return ShaftModel(geo.sections, geo.supports, loads, axial_support=0)
 
 
-def _safety(geo, elements, sh):
+def _safety(geo, elements, sh, mat):
     """(ShaftSafety, ShaftAnalysis) of a shaft geometry (coarse beam grid: the diagrams are exact at the nodes)."""
     from .din743 import shaft_safety
     from .shaft_beam import analyse_shaft
 
     a = analyse_shaft(_model(geo, elements), points=40)
-    return shaft_safety(a, geo.notches, sh._material, peak_factor=sh.peak_factor, S_min=sh.S_min), a
+    return shaft_safety(a, geo.notches, mat, peak_factor=sh.peak_factor, S_min=sh.S_min), a
 
 
 def _least(table) -> float:
@@ -268,7 +268,7 @@ def _default_sections(d_b) -> dict:
             "inner": (d_b, d_b + STEP_MM), "outer": (d_b - STEP_MM, d_b)}
 
 
-def _holds(sh, geo, loads, d_b) -> bool:
+def _holds(sh, mat, geo, loads, d_b, elements) -> bool:
     """Every section of the default shaft ``geo`` (laid out for any d_b) reaches S_min at bearing seat d_b."""
     from .din743 import din743_safety
 
@@ -284,7 +284,7 @@ def _holds(sh, geo, loads, d_b) -> bool:
             d, D = d_b, None
         else:
             d, D = (d_b, d_gear) if x_a < sn.x_mm < x_b else (d_end, d_b)
-        r = din743_safety(sh._material, sn.notch, d_mm=d, D_mm=D, d_eff_mm=d_gear, F_zdm=N, M_ba=M, T_m=T,
+        r = din743_safety(mat, sn.notch, d_mm=d, D_mm=D, d_eff_mm=d_gear, F_zdm=N, M_ba=M, T_m=T,
                           F_zdmax=sh.peak_factor * abs(N), M_bmax=sh.peak_factor * M, T_max=sh.peak_factor * T,
                           S_min=sh.S_min)
         if min(r.S_D, r.S_F) < sh.S_min:
@@ -292,9 +292,18 @@ def _holds(sh, geo, loads, d_b) -> bool:
     return True
 
 
-def _sized_geometry(sh, elements, widths, bores, d_min):
+def _key_fits(d, e) -> bool:
+    """The element's parallel key (:func:`geardesign.drives.key.select`, its hub the gear's face width or 1.5·d)
+    carries its torque on a seat of diameter d."""
+    from . import key as keys
+
+    hub = e.width_mm if e.width_mm is not None else HUB_LENGTH_D * d
+    return bool(keys.select(d, abs(e.torque_nm), hub).feasible) if abs(e.torque_nm) > 0 else True
+
+
+def _sized_geometry(sh, mat, elements, widths, bores, d_min):
     """The default shaft at the least catalog bore >= d_min whose sections all reach S_min (bisection: the safety
-    never falls as the shaft thickens); the thickest when none does."""
+    never falls as the shaft thickens; the thickest when none does), then the least from there whose keys hold."""
     cand = [d for d in bores if d >= d_min and d - STEP_MM >= 6.0]
     if not cand:
         raise GearDesignError(f"no bearing bore of series {', '.join(sh.series)} is >= {d_min:g} mm")
@@ -302,7 +311,7 @@ def _sized_geometry(sh, elements, widths, bores, d_min):
     loads = _section_loads(geo, elements)
 
     def ok(d):
-        return _holds(sh, geo, loads, d)
+        return _holds(sh, mat, geo, loads, d, elements)
 
     lo, hi = 0, len(cand) - 1
     if not ok(cand[hi]):
@@ -310,6 +319,11 @@ def _sized_geometry(sh, elements, widths, bores, d_min):
     while lo < hi:
         mid = (lo + hi) // 2
         lo, hi = (lo, mid) if ok(cand[mid]) else (mid + 1, hi)
+    # the keys: the next bores up while one does not fit (a key's margins rise with d until its section's
+    # shortest length outgrows a narrow hub: then no bore fits and the least safe one stays, its key failing)
+    for d in cand[lo:]:
+        if all(_key_fits(d + STEP_MM if e.side == "plane" else d - STEP_MM, e) for e in elements):
+            return _default_geometry(sh, elements, widths, d)
     return _default_geometry(sh, elements, widths, cand[lo])
 
 
@@ -324,7 +338,7 @@ def _catalog(series: tuple):
 
 def _bearings(sh, ds, reactions, n_rpm, bore):
     """(designation, [BearingCheck A, B]) of a shaft: the given ones, else the smallest of the series whose bore
-    is >= ``bore`` reaching the life under each bearing's load (both bearings alike: the larger of the two picks),
+    is >= ``bore`` (a given shaft: equal to its seat) reaching the life under each bearing's load (both bearings alike: the larger of the two picks),
     as :func:`geardesign.drives.bearing.select_bearing` ranks them (one catalog read for every shaft)."""
     from .bearing import _check_from_row, _evaluate, check_bearing, reliability_factor
 
@@ -335,9 +349,11 @@ def _bearings(sh, ds, reactions, n_rpm, bore):
         return names, [check_bearing(name, fr, fa, n_rpm=n_rpm, life_h=sh.life_h, reliability=sh.reliability)
                        for name, (fr, fa) in zip(names, loads)]
     rows = _catalog(sh.series)
-    rows = rows[rows["d_mm"] >= bore - 1e-9].reset_index(drop=True)
+    rows = rows[(rows["d_mm"] >= bore - 1e-9) & ((ds is None) | (rows["d_mm"] <= bore + 1e-9))].reset_index(drop=True)
     if rows.empty:
-        raise GearDesignError(f"no bearing of series {', '.join(sh.series)} has a bore >= {bore:g} mm")
+        what = f"a bore of {bore:g} mm (the seat of shaft {ds.at} as given)" if ds is not None else f"a bore >= {bore:g} mm"
+        raise GearDesignError(f"no bearing of series {', '.join(sh.series)} has {what}: give the shaft's bearings "
+                              f"or a seat of a catalog bore")
     a1 = reliability_factor(sh.reliability)
     picks = []
     for fr, fa in loads:
@@ -397,6 +413,7 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
     import pandas as pd
 
     from . import key as keys
+    from .din743 import _material
 
     sh = drive.shafting
     elements = element_loads(drive, stages_out, T)
@@ -408,10 +425,11 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
         els = elements[k]
         ds = sh.given(k)
         name = f"shaft {k}"
+        mat = sh._material if ds is None or ds.material is None else _material(ds.material)
         if ds is not None:
             geo = _given_geometry(ds, els)
         else:
-            geo = _sized_geometry(sh, els, widths, bores, bores[0])
+            geo = _sized_geometry(sh, mat, els, widths, bores, bores[0])
         model = _model(geo, els)
         xs = np.array([ld.x_mm for ld in model.loads])
         r = two_support_reactions(xs, [e.fy for e in els], [e.fz for e in els], [e.fx for e in els],
@@ -421,7 +439,7 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
         if ds is None and checks[0].d_mm > geo.d_b:      # the bearing's bore is the seat: a thicker shaft
             geo = _default_geometry(sh, els, widths, checks[0].d_mm)
             model = _model(geo, els)
-        safety, analysis = _safety(geo, els, sh)
+        safety, analysis = _safety(geo, els, sh, mat)
         analyses[k], models[k] = analysis, model
         d_seat = [float(v) for v in model.diameter_at(list(geo.supports))[0]]
         for tag, chk, d_s in zip("AB", checks, d_seat):
@@ -458,7 +476,8 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
                                                                             sel.margin_shear)]
         el = analysis.elements
         gear_w = {e.name: (geo.x[e.name], e.width_mm) for e in els if e.width_mm is not None}
-        shaft_rows.append(dict(shaft=k, layout="given" if geo.given else "default", length_mm=model.length_mm,
+        shaft_rows.append(dict(shaft=k, layout="given" if geo.given else "default", material=mat.get("material", "given"),
+                               length_mm=model.length_mm,
                                span_mm=geo.supports[1] - geo.supports[0],
                                d_end_mm=None if geo.d_b is None else geo.d_b - STEP_MM,
                                d_bearing_mm=d_seat[0], d_gear_mm=None if geo.d_b is None else geo.d_b + STEP_MM,
