@@ -84,7 +84,7 @@ def _stages(canvas, analysis, x0: float) -> tuple[list, list, list]:
         mid = 0.5 * (x + x_out)
         if text:
             above.append((mid, text, "k"))
-        below.append((mid, f"u {s['ratio']:.4g}, η {s['efficiency']:g}", "k"))
+        below.append((mid, f"u {s['ratio']:.4g}, η {s['efficiency']:.4g}", "k"))
     return xs, above, below
 
 
@@ -92,9 +92,12 @@ def _shaft_labels(ax, analysis, xs, y0: float) -> tuple[list, list]:
     """The shafts' dots and key marks; (shaft labels, key labels) as (x, text, colour)."""
     flow = analysis.flow
     shafts, keys = [], []
+    carried = _shaft_texts(ax, analysis, xs, y0)
     for k, x in enumerate(xs):
         ax.plot([x], [y0], "o", color="k", ms=4, zorder=5)
-        shafts.append((x, f"shaft {k}\n{flow['n_rpm'].iloc[k]:.4g} rpm\n{flow['torque_nm'].iloc[k]:.4g} N·m", "k"))
+        extra, colour = carried.get(k, ("", "k"))
+        shafts.append((x, f"shaft {k}\n{flow['n_rpm'].iloc[k]:.4g} rpm\n{flow['torque_nm'].iloc[k]:.4g} N·m{extra}",
+                       colour))
     for _, row in analysis.keys.reset_index(drop=True).iterrows():
         x = xs[int(row["at"])]
         size = f"{row['b_mm']:g}x{row['h_mm']:g}x{row['length_mm']:g}" if row["length_mm"] == row["length_mm"] else "none"
@@ -102,6 +105,31 @@ def _shaft_labels(ax, analysis, xs, y0: float) -> tuple[list, list]:
         ax.plot([x], [y0], "s", color=colour, ms=7, zorder=6)
         keys.append((x, f"key {size}" + (" (2)" if row["n_keys"] == 2 else ""), colour))
     return shafts, keys
+
+
+def _shaft_texts(ax, analysis, xs, y0: float) -> dict:
+    """A drive with shafting: each shaft on bearings drawn with a bearing ring about it (red when one of its
+    bearings or sections fails) and {shaft k: (its label's lines: bearing-seat d, bearings and their L10h, least
+    DIN 743 safety; colour)}."""
+    from matplotlib.patches import Circle
+
+    sh = getattr(analysis, "shafting", None)
+    if sh is None:
+        return {}
+    checks = analysis.checks
+    out = {}
+    bearings = sh["bearings"]
+    for _, r in sh["shafts"].iterrows():
+        k = int(r["shaft"])
+        mine = checks["item"].isin([f"shaft {k}", f"bearing {k}A", f"bearing {k}B"])
+        bad = bool((~checks.loc[mine, "ok"]).any())
+        colour = "red" if bad else "k"
+        for radius, fc in ((0.16, "white"), (0.1, "white")):
+            ax.add_patch(Circle((xs[k], y0), radius, fc=fc, ec=colour, lw=1.2, zorder=4))
+        lives = bearings.loc[bearings["shaft"] == k, "L10h"].to_numpy()
+        out[k] = (f"\nd {r['d_bearing_mm']:g} mm, {r['bearings'].split('/')[0]} x2\nL10h {lives.min():.3g} h, "
+                  f"S {r['least_safety']:.3g}", colour)
+    return out
 
 
 def _lay_out(ax, bands, top: float, bottom: float, scale_pt: float) -> tuple[float, float, float, float]:

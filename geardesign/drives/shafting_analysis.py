@@ -40,6 +40,7 @@ __all__ = ["Element", "element_loads", "two_support_reactions", "analyse_shaftin
 
 G_STEEL_MPA = 81_000.0     # shear modulus of steel, N/mm² (E/(2(1 + ν)), E = 210 000, ν = 0.3: 80 770)
 HUB_LENGTH_D = 1.5         # a sprocket's or coupling's hub length over its seat diameter (its key's hub)
+GEAR_HUB_D = 1.2           # a gear's hub: its face width, at least 1.2·d (Chernavsky's l_hub = (1.2 … 1.5)·d)
 UNLOADED_NM = 1e-6         # a section whose moment, torque (N·m) and axial force (kN) are all below this carries nothing
 
 
@@ -176,7 +177,7 @@ def _default_geometry(sh, elements, widths, d_b) -> _Geometry:
     for e in elements:
         if e.side == "plane":
             x[e.name] = x_a + offsets[e.plane]
-            hubs[e.name] = (d_g, e.width_mm)
+            hubs[e.name] = (d_g, max(e.width_mm, GEAR_HUB_D * d_g))
         else:
             x[e.name] = 0.0 if e.side == "left" else end
             hubs[e.name] = (d_e, HUB_LENGTH_D * d_e)
@@ -209,7 +210,7 @@ def _given_geometry(ds, elements) -> _Geometry:
     for e in elements:
         x[e.name] = ds.positions[e.name]
         d = float(model.diameter_at(x[e.name])[0])
-        hub = ds.widths.get(e.name, e.width_mm if e.width_mm is not None else HUB_LENGTH_D * d)
+        hub = ds.widths.get(e.name, max(e.width_mm, GEAR_HUB_D * d) if e.width_mm is not None else HUB_LENGTH_D * d)
         hubs[e.name] = (d, hub)
         notches.append(ShaftNotch(x[e.name], Notch("key"), f"key {e.name}"))
     for tag, xs in zip("AB", ds.supports_mm):
@@ -262,12 +263,6 @@ def _section_loads(geo, elements):
     return out
 
 
-def _default_sections(d_b) -> dict:
-    """{notch name prefix: (d, D)} of the default shaft's checked sections at bearing-seat diameter d_b."""
-    return {"key_plane": (d_b + STEP_MM, None), "key_hub": (d_b - STEP_MM, None), "bearing": (d_b, None),
-            "inner": (d_b, d_b + STEP_MM), "outer": (d_b - STEP_MM, d_b)}
-
-
 def _holds(sh, mat, geo, loads, d_b, elements) -> bool:
     """Every section of the default shaft ``geo`` (laid out for any d_b) reaches S_min at bearing seat d_b."""
     from .din743 import din743_safety
@@ -293,11 +288,12 @@ def _holds(sh, mat, geo, loads, d_b, elements) -> bool:
 
 
 def _key_fits(d, e) -> bool:
-    """The element's parallel key (:func:`geardesign.drives.key.select`, its hub the gear's face width or 1.5·d)
+    """The element's parallel key (:func:`geardesign.drives.key.select`, its hub the gear's face width, at least
+    1.2·d, or a hub's 1.5·d)
     carries its torque on a seat of diameter d."""
     from . import key as keys
 
-    hub = e.width_mm if e.width_mm is not None else HUB_LENGTH_D * d
+    hub = max(e.width_mm, GEAR_HUB_D * d) if e.width_mm is not None else HUB_LENGTH_D * d
     return bool(keys.select(d, abs(e.torque_nm), hub).feasible) if abs(e.torque_nm) > 0 else True
 
 

@@ -203,5 +203,15 @@ def run_drive(rep, section: dict) -> None:
     md += ["", "### Checks of the whole drive", "", md_table(an.checks), "", "### Keys", "",
            md_table(an.keys.drop(columns=["message"])), ""]
     md += [f"- {r['name']}: {r['message']}" for _, r in an.keys.iterrows()] + [""]
+    if an.shafting is not None:       # the shafts, bearings, sections, seat keys, efficiencies, K_Hβ
+        from ..drives.drive_results import SHAFTING_TABLES
+
+        md += ["### Shafts, bearings and efficiency", "", f"Overall efficiency {an.overall_efficiency:.5f}; heat to "
+               f"dissipate {1000 * an.heat_kw:.5g} W.", ""]
+        for name in SHAFTING_TABLES:
+            table = an.shafting.get(name)
+            if table is not None and len(table):
+                rep.tables[f"drive_{name}"] = table
+                md += [f"#### {name.replace('_', ' ')}", "", md_table(table), ""]
     if opt is None:
         rep.summary.append("drive: " + an.message)
