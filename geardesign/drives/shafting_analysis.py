@@ -490,9 +490,8 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
         b = float(res["stage"].width_mm)
         (mp, gp), (mw, gw) = models[k - 1], models[k]
         xp, xw = gp.x[st.name], gw.x[st.name]
-        ends = lambda x0: np.clip([x0 - b / 2.0, x0 + b / 2.0], 0.0, None)   # noqa: E731
-        dp = analyses[k - 1].deflection_at(np.minimum(ends(xp), mp.length_mm))
-        dw = analyses[k].deflection_at(np.minimum(ends(xw), mw.length_mm))
+        dp = analyses[k - 1].deflection_at(np.clip([xp - b / 2.0, xp + b / 2.0], 0.0, mp.length_mm))
+        dw = analyses[k].deflection_at(np.clip([xw - b / 2.0, xw + b / 2.0], 0.0, mw.length_mm))
         pin = next(e for e in elements[k - 1] if e.name == st.name)
         F = math.hypot(pin.fy, pin.fz)
         geo_p = res["pair"].geometry()
