@@ -56,7 +56,8 @@ _SHAFTING_OPTIONS = (("--shaft-material", "material", str, "STEEL",
                      ("--shaft-safety", "S_min", float, "S", "least DIN 743 safety of the shafts (1.2)"),
                      ("--bearing-life", "life_h", float, "H", "required bearing life L10h, h (20000)"),
                      ("--bearing-series", "bearing_series", str, "SERIES",
-                      "bearing series the bearings are chosen from: 62, 63, 72B, 73B, NU2, NU3 (62)"),
+                      "bearing series the bearings are chosen from: 62, 63, 72B, 73B, NU2, NU3, or several "
+                      "joined by commas (62,63,NU2,NU3)"),
                      ("--oil-temperature", "oil_temperature_c", float, "C",
                       "oil temperature for the computed efficiencies, °C (70; with --oil)"))
 
@@ -79,6 +80,8 @@ def _with_shafting(section: dict, args) -> dict:
 
     given = {key: getattr(args, "shafting_" + key) for _, key, *_ in _SHAFTING_OPTIONS
              if getattr(args, "shafting_" + key) is not None}
+    if "bearing_series" in given:
+        given["bearing_series"] = tuple(v.strip() for v in given["bearing_series"].split(","))
     for flag, key, *_ in _SHAFTING_OPTIONS:
         if key in given:
             try:

@@ -31,13 +31,17 @@ from dataclasses import dataclass, field
 from ..errors import GearDesignError
 from ..validate import one_number, require_choice, require_count, require_range
 
-__all__ = ["Shafting", "DriveShaft", "STEP_MM", "FILLET_MM", "PEAK_FACTOR", "SHAFT_LIFE_H", "default_positions"]
+__all__ = ["Shafting", "DriveShaft", "STEP_MM", "FILLET_MM", "PEAK_FACTOR", "SHAFT_LIFE_H", "BEARING_SERIES",
+           "default_positions"]
 
 STEP_MM = 5.0          # diameter step between the ends, the bearing seats and the gear seats (shoulder 2.5 mm)
 FILLET_MM = 1.0        # the shoulders' fillet radius
 PEAK_FACTOR = 2.0      # maximum/nominal load of DIN 743's static proof (a motor's starting torque): a choice
 SHAFT_LIFE_H = 20_000.0   # required bearing life, h (a reducer in one-shift service for about 10 years)
-EFFICIENCY_SOURCES = ("computed", "given")
+# the bearings a reducer designer reaches for: deep groove ball bearings (light and medium series), and cylindrical
+# roller bearings where the radial load is heavy and there is no axial force (the selection takes the smallest
+# outside diameter that carries the load; a type NU bearing is refused where an axial force acts)
+BEARING_SERIES = ("62", "63", "NU2", "NU3")
 
 
 @dataclass(frozen=True)
@@ -110,7 +114,7 @@ class Shafting:
     ``S_min``: the least DIN 743 safety (fatigue and static, DIN 743-1 clause 4.1: 1.2); ``peak_factor``: the
     maximum load of the static proof over the nominal one; ``life_h``: the required bearing life L10h (h),
     ``reliability`` (%, a1); ``bearing_series``: the catalog series the bearings are chosen from (the smallest
-    bearing whose bore fits the seat and that reaches the life); ``clearance_mm``, ``gear_gap_mm``,
+    bearing whose bore fits the seat and that reaches the life; default :data:`BEARING_SERIES`); ``clearance_mm``, ``gear_gap_mm``,
     ``overhang_mm``: the default layout's lengths; ``lubricant`` (a :class:`~geardesign.gears.efficiency.Lubricant`)
     with ``oil_temperature_c``, ``Ra_um`` and ``lubrication``: the gear stages' efficiencies computed (ISO/TR
     14179-2 mesh loss, SKF bearing friction) and used in the power flow where the stage's efficiency was not
@@ -123,7 +127,7 @@ class Shafting:
     peak_factor: float = PEAK_FACTOR
     life_h: float = SHAFT_LIFE_H
     reliability: float = 90.0
-    bearing_series: object = "62"
+    bearing_series: object = BEARING_SERIES
     clearance_mm: float = 20.0
     gear_gap_mm: float = 10.0
     overhang_mm: float = 60.0

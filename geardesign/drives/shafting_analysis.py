@@ -35,7 +35,8 @@ import numpy as np
 from ..errors import GearDesignError
 from .shafting import FILLET_MM, STEP_MM, default_positions
 
-__all__ = ["Element", "element_loads", "two_support_reactions", "analyse_shafting", "mesh_misalignment_um",
+__all__ = ["Element", "element_loads", "two_support_reactions", "shaft_deflections", "analyse_shafting",
+           "mesh_misalignment_um", "stage_efficiencies", "with_shaft_misalignment",
            "G_STEEL_MPA", "HUB_LENGTH_D"]
 
 G_STEEL_MPA = 81_000.0     # shear modulus of steel, N/mm² (E/(2(1 + ν)), E = 210 000, ν = 0.3: 80 770)
@@ -369,6 +370,32 @@ def _bearings(sh, ds, reactions, n_rpm, bore):
 
 # -- the mesh misalignment -------------------------------------------------------------------------------------
 
+def shaft_deflections(model, x_mm) -> tuple:
+    """(reactions (2, supports) in N: the x-y and x-z planes, deflections (2, len(x)) in mm at ``x_mm``) of a
+    :class:`~geardesign.drives.shaft_beam.ShaftModel`: the beam of :func:`~geardesign.drives.shaft_beam.analyse_shaft`
+    (the same exact segment-wise integration on the breakpoints alone), without its tables and critical speeds
+    (the drive's f_sh needs only these: ~0.1 ms a shaft).
+
+    >>> from geardesign.drives.shaft_beam import ShaftLoad, ShaftModel, second_moment_mm4
+    >>> R, w = shaft_deflections(ShaftModel([(200.0, 40.0)], [0.0, 200.0], [ShaftLoad(100.0, fy_n=-1000.0)]), [100.0])
+    >>> R[0].round(9).tolist(), round(float(w[0, 0] / (-1000 * 200**3 / (48 * 210000 * second_moment_mm4(40)))), 12)
+    ([500.0, 500.0], 1.0)
+    """
+    from .shaft_beam import _diameters, _nodes, _Plane, _solve_plane, second_moment_mm4
+
+    x, right = _nodes(model, 1)
+    d, bore = _diameters(model, x, right)
+    EI = model.E_mpa * second_moment_mm4(d, bore)
+    loads = model.loads
+    xf = np.array([ld.x_mm for ld in loads], dtype=float)
+    F = np.array([[ld.fy_n for ld in loads], [ld.fz_n for ld in loads]], dtype=float).reshape(2, len(loads))
+    C = np.array([[-ld.y_mm * ld.fx_n + 1000.0 * ld.mz_nm for ld in loads],
+                  [-ld.z_mm * ld.fx_n + 1000.0 * ld.my_nm for ld in loads]], dtype=float).reshape(2, len(loads))
+    R, _, kappa, theta, w = _solve_plane(x, right, EI, np.asarray(model.supports_mm), xf, F, xf, C)
+    xq = np.asarray(x_mm, dtype=float)
+    return R, np.vstack([_Plane(x, kappa[k], theta[k], w[k]).at(xq)[1] for k in range(2)])
+
+
 def mesh_misalignment_um(pinion_w, wheel_w, direction, r_w1_mm, torque1_nm, b_mm, d_w1_mm, G_mpa=G_STEEL_MPA):
     """f_sh (µm) of a gear pair from its shafts: ``pinion_w``, ``wheel_w`` the deflections (wy, wz) (mm) of the two
     shafts at the two face ends (arrays (2, 2): end, plane); ``direction`` the unit tooth force on the pinion
@@ -490,12 +517,12 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
         b = float(res["stage"].width_mm)
         (mp, gp), (mw, gw) = models[k - 1], models[k]
         xp, xw = gp.x[st.name], gw.x[st.name]
-        dp = analyses[k - 1].deflection_at(np.clip([xp - b / 2.0, xp + b / 2.0], 0.0, mp.length_mm))
-        dw = analyses[k].deflection_at(np.clip([xw - b / 2.0, xw + b / 2.0], 0.0, mw.length_mm))
+        wp = shaft_deflections(mp, np.clip([xp - b / 2.0, xp + b / 2.0], 0.0, mp.length_mm))[1].T
+        ww = shaft_deflections(mw, np.clip([xw - b / 2.0, xw + b / 2.0], 0.0, mw.length_mm))[1].T
         pin = next(e for e in elements[k - 1] if e.name == st.name)
         F = math.hypot(pin.fy, pin.fz)
         geo_p = res["pair"].geometry()
-        f_sh[st.name] = mesh_misalignment_um(dp[["wy_mm", "wz_mm"]].to_numpy(), dw[["wy_mm", "wz_mm"]].to_numpy(),
+        f_sh[st.name] = mesh_misalignment_um(wp, ww,
                                              (pin.fy / F, pin.fz / F), float(geo_p.dw1) / 2.0, float(T[k - 1]), b,
                                              float(geo_p.dw1))
     return dict(shafts=pd.DataFrame(shaft_rows), bearings=pd.DataFrame(bearing_rows),

@@ -270,7 +270,7 @@ def drive_schema(part: str = "") -> dict:
                 "peak_factor": _F(default=PEAK_FACTOR, lo=1.0, hi=10.0),
                 "life_h": _F(default=SHAFT_LIFE_H, lo=0.0, hi=1e7, lo_open=True),
                 "reliability": _F(default=90.0, lo=90.0, hi=99.0),
-                "bearing_series": _Key("choice", default="62", choices=tuple(SERIES)),
+                "bearing_series": _Key("choice", choices=tuple(SERIES)),      # none: Shafting's BEARING_SERIES
                 "clearance_mm": _F(default=20.0, lo=5.0, hi=500.0), "gear_gap_mm": _F(default=10.0, lo=0.0, hi=500.0),
                 "overhang_mm": _F(default=60.0, lo=10.0, hi=2000.0),
                 "nu40": _F(lo=1.0, hi=1e6), "nu100": _F(lo=1.0, hi=1e6),
