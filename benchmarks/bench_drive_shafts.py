@@ -2,7 +2,7 @@
 
 * forces and shaft analysis of a two-stage reducer: every element's load on its shaft (mesh forces on the
   operating circle, torques), the two bearings' reactions of each shaft and each shaft's deflection at its gears'
-  face ends (the beam, :func:`geardesign.drives.shafting_analysis.shaft_deflections`), three shafts; against a
+  face ends (the beam, :func:`geardesign.drives.shafting_analysis.beam_deflections`), three shafts; against a
   plain-Python statics of the same loads (sums of forces and moments, no beam) — the issue's goal: <= 1 ms;
 * the sized 75 kW drive of benchmarks/bench_reducer.py (job sized75) optimised with ``shafting=Shafting()``
   (the ranked designs re-analysed on their shafts: DIN 743 seat sizes, bearings for the life, K_Hβ from f_sh)
@@ -32,9 +32,8 @@ def best(fn, repeat=5, number=200):
 
 def shafts_of_a_reducer():
     import geardesign as gd
-    from geardesign.drives.shaft_beam import ShaftLoad, ShaftModel
     from geardesign.drives.shafting import Shafting
-    from geardesign.drives.shafting_analysis import element_loads, shaft_deflections, two_support_reactions
+    from geardesign.drives.shafting_analysis import beam_deflections, element_loads, two_support_reactions
 
     drive = gd.Drive(power_kw=15, n_in_rpm=1460, shafting=Shafting(), stages=[
         gd.GearStage(3, 20, 80, material="42CrMo4", face_width_mm=45, name="fast", beta_deg=12),
@@ -48,12 +47,11 @@ def shafts_of_a_reducer():
     def ours():
         for k, els in element_loads(drive, stages, T).items():
             sections, supports, xs = layout[k]
-            model = ShaftModel(sections, supports, [ShaftLoad(xs[e.name], fy_n=e.fy, fz_n=e.fz, fx_n=e.fx,
-                                                              y_mm=e.y_mm, torque_nm=e.torque_nm) for e in els])
-            two_support_reactions([xs[e.name] for e in els], [e.fy for e in els], [e.fz for e in els],
-                                  [e.fx for e in els], [e.y_mm for e in els], *supports)
+            x = [xs[e.name] for e in els]
+            fy, fz, fx, y = ([getattr(e, f) for e in els] for f in ("fy", "fz", "fx", "y_mm"))
+            two_support_reactions(x, fy, fz, fx, y, *supports)
             ends = [x for e in els if e.width_mm for x in (xs[e.name] - widths[e.name] / 2, xs[e.name] + widths[e.name] / 2)]
-            shaft_deflections(model, ends)
+            beam_deflections(sections, supports, x, fy, fz, [-a * b for a, b in zip(y, fx)], [0.0] * len(x), ends)
 
     loads = {k: [(layout[k][2][e.name], e.fy, e.fz, e.fx, e.y_mm) for e in els]
              for k, els in element_loads(drive, stages, T).items()}

@@ -33,9 +33,11 @@ from functools import lru_cache
 import numpy as np
 
 from ..errors import GearDesignError
+from .shaft_beam import E_STEEL_MPA
 from .shafting import FILLET_MM, STEP_MM, default_positions
 
-__all__ = ["Element", "element_loads", "two_support_reactions", "shaft_deflections", "analyse_shafting",
+__all__ = ["Element", "element_loads", "two_support_reactions", "shaft_deflections", "beam_deflections",
+           "analyse_shafting",
            "mesh_misalignment_um", "stage_efficiencies", "with_shaft_misalignment",
            "G_STEEL_MPA", "HUB_LENGTH_D"]
 
@@ -334,9 +336,9 @@ def _catalog(series: tuple):
 
 
 def _bearings(sh, ds, reactions, n_rpm, bore):
-    """(designation, [BearingCheck A, B]) of a shaft: the given ones, else the smallest of the series whose bore
-    is >= ``bore`` (a given shaft: equal to its seat) reaching the life under each bearing's load (both bearings alike: the larger of the two picks),
-    as :func:`geardesign.drives.bearing.select_bearing` ranks them (one catalog read for every shaft)."""
+    """(designation, [BearingCheck A, B]) of a shaft: the given ones, else the smallest (outside diameter, then
+    bore) of the series whose bore is >= ``bore`` (a given shaft: equal to its seat) that passes every check under
+    both bearings' loads (both bearings alike), as :func:`geardesign.drives.bearing.select_bearing` ranks them."""
     from .bearing import _check_from_row, _evaluate, check_bearing, reliability_factor
 
     loads = [(max(math.hypot(reactions["Ay"], reactions["Az"]), 1e-9), abs(reactions["Ax"])),
@@ -352,15 +354,13 @@ def _bearings(sh, ds, reactions, n_rpm, bore):
         raise GearDesignError(f"no bearing of series {', '.join(sh.series)} has {what}: give the shaft's bearings "
                               f"or a seat of a catalog bore")
     a1 = reliability_factor(sh.reliability)
-    picks = []
-    for fr, fa in loads:
-        t = _evaluate(rows, fr, fa, n_rpm, sh.life_h, a1, None, None, "grease", None)
-        order = np.lexsort((t["d_mm"].to_numpy(), t["D_mm"].to_numpy(), ~t["feasible"].to_numpy()))
-        t = t.iloc[order]
-        if not bool(t["feasible"].iloc[0]):      # none reaches: the closest (the one nearest to holding)
-            t = t.sort_values("min_margin", ascending=False, kind="stable")
-        picks.append((float(t["D_mm"].iloc[0]), float(t["d_mm"].iloc[0]), int(t.index[0])))
-    j = max(picks)[2]
+    ta, tb = (_evaluate(rows, fr, fa, n_rpm, sh.life_h, a1, None, None, "grease", None) for fr, fa in loads)
+    both = (ta["feasible"] & tb["feasible"]).to_numpy()
+    if both.any():          # the smallest outside diameter (then bore) that both bearings' loads allow
+        j = int(np.lexsort((rows["d_mm"].to_numpy(), rows["D_mm"].to_numpy(), ~both))[0])
+    else:                   # none: the one nearest to holding under the worse of its two loads
+        worst = np.fmin(ta["min_margin"].to_numpy(), tb["min_margin"].to_numpy())
+        j = int(np.argmax(np.where(np.isnan(worst), -np.inf, worst)))
     row = rows.iloc[[j]].reset_index(drop=True)
     checks = [_check_from_row(_evaluate(row, fr, fa, n_rpm, sh.life_h, a1, None, None, "grease", None).iloc[0],
                               fr, fa, n_rpm, sh.life_h) for fr, fa in loads]
@@ -372,27 +372,46 @@ def _bearings(sh, ds, reactions, n_rpm, bore):
 
 def shaft_deflections(model, x_mm) -> tuple:
     """(reactions (2, supports) in N: the x-y and x-z planes, deflections (2, len(x)) in mm at ``x_mm``) of a
-    :class:`~geardesign.drives.shaft_beam.ShaftModel`: the beam of :func:`~geardesign.drives.shaft_beam.analyse_shaft`
-    (the same exact segment-wise integration on the breakpoints alone), without its tables and critical speeds
-    (the drive's f_sh needs only these: ~0.1 ms a shaft).
+    :class:`~geardesign.drives.shaft_beam.ShaftModel`: :func:`beam_deflections` of its sections and loads.
 
     >>> from geardesign.drives.shaft_beam import ShaftLoad, ShaftModel, second_moment_mm4
     >>> R, w = shaft_deflections(ShaftModel([(200.0, 40.0)], [0.0, 200.0], [ShaftLoad(100.0, fy_n=-1000.0)]), [100.0])
     >>> R[0].round(9).tolist(), round(float(w[0, 0] / (-1000 * 200**3 / (48 * 210000 * second_moment_mm4(40)))), 12)
     ([500.0, 500.0], 1.0)
     """
-    from .shaft_beam import _diameters, _nodes, _Plane, _solve_plane, second_moment_mm4
-
-    x, right = _nodes(model, 1)
-    d, bore = _diameters(model, x, right)
-    EI = model.E_mpa * second_moment_mm4(d, bore)
     loads = model.loads
-    xf = np.array([ld.x_mm for ld in loads], dtype=float)
-    F = np.array([[ld.fy_n for ld in loads], [ld.fz_n for ld in loads]], dtype=float).reshape(2, len(loads))
-    C = np.array([[-ld.y_mm * ld.fx_n + 1000.0 * ld.mz_nm for ld in loads],
-                  [-ld.z_mm * ld.fx_n + 1000.0 * ld.my_nm for ld in loads]], dtype=float).reshape(2, len(loads))
-    R, _, kappa, theta, w = _solve_plane(x, right, EI, np.asarray(model.supports_mm), xf, F, xf, C)
-    xq = np.asarray(x_mm, dtype=float)
+    return beam_deflections(model.sections, model.supports_mm, [ld.x_mm for ld in loads], [ld.fy_n for ld in loads],
+                            [ld.fz_n for ld in loads],
+                            [-ld.y_mm * ld.fx_n + 1000.0 * ld.mz_nm for ld in loads],
+                            [-ld.z_mm * ld.fx_n + 1000.0 * ld.my_nm for ld in loads], x_mm, model.E_mpa)
+
+
+def beam_deflections(sections, supports_mm, x_mm, fy_n, fz_n, couple_xy_nmm, couple_xz_nmm, x_query_mm,
+                     E_mpa=E_STEEL_MPA) -> tuple:
+    """Reactions (2, supports) (N) and deflections (2, len(x_query)) (mm) in the x-y and x-z planes of a stepped
+    shaft (``sections`` (length, d[, bore]) from x = 0) on its supports under forces (fy, fz) at x and couples
+    (N·mm; an axial force's −y·F_x) there: the beam of :func:`~geardesign.drives.shaft_beam.analyse_shaft` (the
+    same exact segment-wise integration, on the breakpoints alone: curvature is linear between them), on plain
+    arrays, without its validation, tables and critical speeds (the drive's f_sh needs only these)."""
+    from .shaft_beam import _Plane, _solve_plane, second_moment_mm4
+
+    secs = np.asarray([tuple(s) + (0.0,) * (3 - len(s)) for s in sections], dtype=float)
+    ends = np.concatenate([[0.0], np.cumsum(secs[:, 0])])
+    xf = np.asarray(x_mm, dtype=float)
+    sup = np.asarray(supports_mm, dtype=float)
+    brk = np.unique(np.concatenate([ends, sup, xf]))
+    x = np.concatenate([brk, brk])
+    right = np.concatenate([np.zeros(brk.size, bool), np.ones(brk.size, bool)])
+    order = np.lexsort((right, x))
+    x, right = x[order], right[order]
+    i = np.clip(np.searchsorted(ends, x, side="right") - 1, 0, len(secs) - 1)      # right-limit sections
+    il = np.clip(np.searchsorted(ends, x, side="left") - 1, 0, len(secs) - 1)      # left-limit sections
+    j = np.where(right, i, il)
+    EI = E_mpa * second_moment_mm4(secs[j, 1], secs[j, 2])
+    F = np.vstack([np.asarray(fy_n, dtype=float), np.asarray(fz_n, dtype=float)]).reshape(2, xf.size)
+    C = np.vstack([np.asarray(couple_xy_nmm, dtype=float), np.asarray(couple_xz_nmm, dtype=float)]).reshape(2, xf.size)
+    R, _, kappa, theta, w = _solve_plane(x, right, EI, sup, xf, F, xf, C)
+    xq = np.asarray(x_query_mm, dtype=float)
     return R, np.vstack([_Plane(x, kappa[k], theta[k], w[k]).at(xq)[1] for k in range(2)])
 
 

@@ -234,3 +234,35 @@ def test_json_has_the_tables(two_stage):
     assert math.isfinite(out["overall_efficiency"])
     with pytest.raises(GearDesignError, match="table must be one of"):
         two_stage.table("nope")
+
+
+def test_beam_path_agrees_with_analyse_shaft(two_stage):
+    from geardesign.drives.shafting_analysis import shaft_deflections
+
+    for k, a in two_stage.shafting["analyses"].items():
+        xq = np.linspace(0.0, a.model.length_mm, 7)
+        R, w = shaft_deflections(a.model, xq)
+        ref = a.deflection_at(xq)
+        scale = np.abs(ref[["wy_mm", "wz_mm"]].to_numpy()).max()
+        np.testing.assert_allclose(w.T, ref[["wy_mm", "wz_mm"]].to_numpy(), rtol=0, atol=1e-10 * scale)
+        np.testing.assert_allclose(R[0], a.reactions["Ry_n"].to_numpy(), rtol=1e-10, atol=1e-8)
+        np.testing.assert_allclose(R[1], a.reactions["Rz_n"].to_numpy(), rtol=1e-10, atol=1e-8)
+
+
+def test_chosen_bearings_are_the_smallest_that_hold(two_stage):
+    # every catalog bearing of a smaller outside diameter on a seat this wide fails one of the shaft's two loads
+    # (gd.check_bearing, the standalone check, one by one)
+    from geardesign.drives.bearing import bearing_catalog
+    from geardesign.drives.shafting import BEARING_SERIES
+
+    cat = bearing_catalog(list(BEARING_SERIES))
+    b = two_stage.table("bearings")
+    for k in (1, 2):
+        mine = b[b["shaft"] == k]
+        D, seat = float(mine["D_mm"].iloc[0]), float(mine["seat_d_mm"].iloc[0])
+        assert mine["ok"].all()
+        n = float(mine["n_rpm"].iloc[0])
+        for _, row in cat[(cat["D_mm"] < D) & (cat["d_mm"] >= seat)].iterrows():
+            ok = [gd.check_bearing(row["designation"], max(fr, 1e-9), fa, n, life_h=20_000).ok
+                  for fr, fa in zip(mine["fr_n"], mine["fa_n"])]
+            assert not all(ok), row["designation"]
