@@ -118,7 +118,12 @@ class Shafting:
     ``overhang_mm``: the default layout's lengths; ``lubricant`` (a :class:`~geardesign.gears.efficiency.Lubricant`)
     with ``oil_temperature_c``, ``Ra_um`` and ``lubrication``: the gear stages' efficiencies computed (ISO/TR
     14179-2 mesh loss, SKF bearing friction) and used in the power flow where the stage's efficiency was not
-    given (None: the stages' efficiencies as they are); ``no_load_loss_w``: a churning loss per gear stage.
+    given (None: the stages' efficiencies as they are); ``no_load_loss_w``: a churning loss per gear stage;
+    ``stiff``: thicken a default shaft until the mesh misalignment f_sh of its gear pairs is at most ISO 6336-1
+    eq. (44)'s estimate, the one the gear's strength (and a stage sized by its load) assumed (the default False:
+    DIN 743, the keys and the bearings size it, and K_Hβ takes the f_sh it gives; eq. (44) models a pinion shaft
+    alone, and an intermediate shaft whose wheel sits beside a heavily loaded pinion tilts far more: True can ask
+    for shafts thicker than the pinion, docs/shafts_in_drive.md).
     """
 
     layout: tuple = ()
@@ -136,6 +141,7 @@ class Shafting:
     Ra_um: float = 0.5
     lubrication: str = "oil_bath"
     no_load_loss_w: float = 0.0
+    stiff: bool = False
     _material: dict = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self):
@@ -178,6 +184,9 @@ class Shafting:
         from .bearing_friction import K_RS
 
         require_choice("lubrication", self.lubrication, tuple(K_RS))
+        from ..validate import require_bool
+
+        object.__setattr__(self, "stiff", require_bool("stiff", self.stiff))
         object.__setattr__(self, "no_load_loss_w", one_number("no_load_loss_w", require_range(
             "no_load_loss_w", self.no_load_loss_w, 0.0, 1e9, unit="W")))
 

@@ -20,8 +20,8 @@ Method, per shaft (docs/shafts_in_drive.md):
    the seat taking its bore; a given shaft keeps its diameters and its bearings, and is checked;
 4. the beam's deflection (:func:`geardesign.drives.shaft_beam.analyse_shaft`) at each gear's face ends; the mesh
    misalignment of a pair f_sh = |Δδ| over its face width, δ the pinion's deflection relative to the wheel's
-   along the tooth force, plus the pinion body's torsional wind-up across the face r_w1·T·b/(2·G·J)
-   (J of d_w1; the two added, a conservative choice): at the nominal load; the strength chain takes
+   along the tooth force plus the pinion body's torsional wind-up across the face r_w1·T·b/(2·G·J) (J of d_w1),
+   each with its sign (:func:`mesh_misalignment_um`): at the nominal load; the strength chain takes
    f_sh·K_A·K_v, its value at F_m/b = K_A·K_v·F_t/b (ISO 6336-1:2006 7.6.2.2), and K_Hβ by method C from it.
 """
 from __future__ import annotations
@@ -37,7 +37,7 @@ from .shaft_beam import E_STEEL_MPA
 from .shafting import FILLET_MM, STEP_MM, default_positions
 
 __all__ = ["Element", "element_loads", "two_support_reactions", "shaft_deflections", "beam_deflections",
-           "analyse_shafting",
+           "analyse_shafting", "iso_f_sh_um", "cut_on_shaft",
            "mesh_misalignment_um", "stage_efficiencies", "with_shaft_misalignment",
            "G_STEEL_MPA", "HUB_LENGTH_D"]
 
@@ -65,6 +65,8 @@ class Element:
     y_mm: float
     torque_nm: float
     mass_kg: float = 0.0
+    root_mm: float | None = None      # a gear's root diameter d_f and module (whether it is cut on its shaft)
+    m_mm: float | None = None
 
 
 def two_support_reactions(x_mm, fy_n, fz_n, fx_n, y_mm, x_a_mm, x_b_mm) -> dict:
@@ -114,10 +116,11 @@ def element_loads(drive, stages_out, T) -> dict:
         s = sense[k - 1]
         geo = pair.geometry()
         m1, m2 = float(disc_mass_kg(geo.da1, b)), float(disc_mass_kg(geo.da2, b))
+        m_n = float(pair.m)
         out.setdefault(k - 1, []).append(Element(st.name, "pinion", "plane", plane, b, -f.F_r_n, -s * f.F_t_n,
-                                                 f.F_a_n, f.r1_mm, -s * float(T[k - 1]), m1))
+                                                 f.F_a_n, f.r1_mm, -s * float(T[k - 1]), m1, float(geo.df1), m_n))
         out.setdefault(k, []).append(Element(st.name, "wheel", "plane", plane, b, f.F_r_n, s * f.F_t_n, -f.F_a_n,
-                                             -f.r2_mm, sense[k] * float(T[k]), m2))
+                                             -f.r2_mm, sense[k] * float(T[k]), m2, float(geo.df2), m_n))
         gear_shafts.update((k - 1, k))
         plane += 1
     for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1):
@@ -158,8 +161,39 @@ class _Geometry:
     given: bool
 
 
+def cut_on_shaft(root_mm, m_mm, d_mm) -> bool:
+    """True when a gear of root diameter d_f and module m on a seat of diameter d is cut on its shaft (a pinion
+    shaft) rather than keyed: when the rim left over the keyway, (d_f − d)/2 − t_2 with the hub's keyway depth
+    t_2 ≈ 0.05·d, would be thinner than 2.5·m (the rule of thumb for a keyed gear's rim in reducer design
+    textbooks, e.g. Dunaev & Lelikov; a stated choice, see docs/shafts_in_drive.md).
+
+    >>> cut_on_shaft(52.5, 3.0, 45.0), cut_on_shaft(52.5, 3.0, 20.0)
+    (True, False)
+    """
+    return (root_mm - d_mm) / 2.0 - 0.05 * d_mm < 2.5 * m_mm
+
+
+BODY_FILLET_D = 0.1     # the fillet at a gear body cut on its shaft, over the seat diameter
+
+
+def _stepped(pieces) -> tuple:
+    """Sections (length, d) from pieces (x0, x1, d), a later piece over an earlier one where it is thicker."""
+    cuts = sorted({v for x0, x1, _ in pieces for v in (x0, x1)})
+    out = []
+    for a, b in zip(cuts, cuts[1:]):
+        mid = 0.5 * (a + b)
+        d = max(p[2] for p in pieces if p[0] <= mid <= p[1])
+        if out and out[-1][1] == d:
+            out[-1] = (out[-1][0] + b - a, d)
+        else:
+            out.append((b - a, d))
+    return tuple(out)
+
+
 def _default_geometry(sh, elements, widths, d_b) -> _Geometry:
-    """The default shaft (module docstring of :mod:`geardesign.drives.shafting`) at bearing-seat diameter d_b."""
+    """The default shaft (module docstring of :mod:`geardesign.drives.shafting`) at bearing-seat diameter d_b; a
+    gear whose keyed rim would be too thin (:func:`cut_on_shaft`) is cut on the shaft: its body, of its root
+    diameter over its face width, is part of the shaft (no key; shoulders at its sides)."""
     from .din743 import Notch, ShaftNotch
 
     c = sh.clearance_mm
@@ -170,27 +204,35 @@ def _default_geometry(sh, elements, widths, d_b) -> _Geometry:
     x_b = x_a + span
     end = x_b + (max(sh.overhang_mm, c / 2.0 + 5.0) if right else c / 2.0)
     d_e, d_g = d_b - STEP_MM, d_b + STEP_MM
-    secs = []
-    if left:
-        secs.append((x_a - c / 2.0, d_e))
-    secs += [(c if left else x_a + c / 2.0, d_b), (span - c, d_g), (c if right else end - x_b + c / 2.0, d_b)]
-    if right:
-        secs.append((end - x_b - c / 2.0, d_e))
-    x, hubs, notches = {}, {}, []
+    pieces = [(0.0, x_a - c / 2.0, d_e if left else d_b), (x_a - c / 2.0, x_a + c / 2.0, d_b),
+              (x_a + c / 2.0, x_b - c / 2.0, d_g), (x_b - c / 2.0, x_b + c / 2.0, d_b),
+              (x_b + c / 2.0, end, d_e if right else d_b)]
+    pieces = [p for p in pieces if p[1] > p[0]]
+    x, hubs, notches, steps = {}, {}, [], [x_a + c / 2.0, x_b - c / 2.0]
+    steps += ([x_a - c / 2.0] if left else []) + ([x_b + c / 2.0] if right else [])
+    bodies = []
     for e in elements:
         if e.side == "plane":
             x[e.name] = x_a + offsets[e.plane]
             hubs[e.name] = (d_g, max(e.width_mm, GEAR_HUB_D * d_g))
+            if e.root_mm is not None and cut_on_shaft(e.root_mm, e.m_mm, d_g):
+                if d_g <= 0.98 * e.root_mm:     # (a root within 2 % of the seat: the seat's section, no step)
+                    x0, x1 = x[e.name] - e.width_mm / 2.0, x[e.name] + e.width_mm / 2.0
+                    pieces.append((x0, x1, e.root_mm))
+                    bodies += [x0, x1]
+                hubs[e.name] = None          # no key: the gear is the shaft
+                continue
         else:
             x[e.name] = 0.0 if e.side == "left" else end
             hubs[e.name] = (d_e, HUB_LENGTH_D * d_e)
         notches.append(ShaftNotch(x[e.name], Notch("key"), f"key {e.name}"))
     for tag, xs in (("A", x_a), ("B", x_b)):
         notches.append(ShaftNotch(xs, Notch("press_fit"), f"bearing {tag}"))
-    steps = [x_a + c / 2.0, x_b - c / 2.0] + ([x_a - c / 2.0] if left else []) + ([x_b + c / 2.0] if right else [])
     for xs in sorted(steps):
         notches.append(ShaftNotch(xs, Notch("shoulder", r_mm=FILLET_MM), f"shoulder at {xs:.4g}"))
-    return _Geometry(tuple(secs), (x_a, x_b), x, hubs, notches, d_b, False)
+    for xs in bodies:
+        notches.append(ShaftNotch(xs, Notch("shoulder", r_mm=BODY_FILLET_D * d_g), f"gear body at {xs:.4g}"))
+    return _Geometry(_stepped(pieces), (x_a, x_b), x, hubs, notches, d_b, False)
 
 
 def _given_geometry(ds, elements) -> _Geometry:
@@ -247,42 +289,46 @@ def _least(table) -> float:
     return float(np.minimum(table["S_D"], table["S_F"]).min())
 
 
-def _section_loads(geo, elements):
-    """The bending moment, torque and axial force at each section of ``geo`` to check (N·m, N·m, N): the larger
-    limit at a node, as :func:`~geardesign.drives.din743.shaft_safety` reads them. On two supports they do not
+def _diagram(geo, elements) -> tuple:
+    """(x, M, T, N): the bending moment, torque (N·m) and axial force (N) along a shaft. On two supports they do not
     depend on the diameters (statics), so a default shaft's sizing reads them once."""
     from .shaft_beam import analyse_shaft
 
     d = analyse_shaft(_model(geo, elements), points=10, shaft_mass=False).diagrams
-    x, M, T, N = (d[c].to_numpy() for c in ("x_mm", "M_nm", "T_nm", "N_n"))
-    out = []
-    for sn in geo.notches:
-        at = np.flatnonzero(x == sn.x_mm)
-        if at.size:
-            out.append((float(M[at].max()), float(np.abs(T[at]).max()), float(N[at][np.argmax(np.abs(N[at]))])))
-        else:
-            out.append((float(np.interp(sn.x_mm, x, M)), abs(float(np.interp(sn.x_mm, x, T))),
-                        float(np.interp(sn.x_mm, x, N))))
-    return out
+    return tuple(d[c].to_numpy() for c in ("x_mm", "M_nm", "T_nm", "N_n"))
 
 
-def _holds(sh, mat, geo, loads, d_b, elements) -> bool:
-    """Every section of the default shaft ``geo`` (laid out for any d_b) reaches S_min at bearing seat d_b."""
+def _loads_at(diagram, x_mm) -> tuple:
+    """(M, |T|, N) at x, the larger limit at a node, as :func:`~geardesign.drives.din743.shaft_safety` reads them."""
+    x, M, T, N = diagram
+    at = np.flatnonzero(x == x_mm)
+    if at.size:
+        return float(M[at].max()), float(np.abs(T[at]).max()), float(N[at][np.argmax(np.abs(N[at]))])
+    return float(np.interp(x_mm, x, M)), abs(float(np.interp(x_mm, x, T))), float(np.interp(x_mm, x, N))
+
+
+def _diameters_at(geo, x_mm) -> tuple:
+    """(d left, d right) of the sections of ``geo`` at x."""
+    ends = np.concatenate([[0.0], np.cumsum([s[0] for s in geo.sections])])
+    ds = [s[1] for s in geo.sections]
+    i_r = min(max(int(np.searchsorted(ends, x_mm, side="right")) - 1, 0), len(ds) - 1)
+    i_l = min(max(int(np.searchsorted(ends, x_mm, side="left")) - 1, 0), len(ds) - 1)
+    return ds[i_l], ds[i_r]
+
+
+def _holds(sh, mat, geo, diagram) -> bool:
+    """Every section of the default shaft ``geo`` to check reaches S_min (DIN 743, as shaft_safety takes them: a
+    shoulder's d and D the two sides of its step, a key seat or press fit on the thinner side)."""
     from .din743 import din743_safety
 
-    d_end, d_gear = d_b - STEP_MM, d_b + STEP_MM
-    x_a, x_b = geo.supports
-    for sn, (M, T, N) in zip(geo.notches, loads):
+    d_eff = max(s[1] for s in geo.sections)
+    for sn in geo.notches:
+        M, T, N = _loads_at(diagram, sn.x_mm)
         if M <= 0.0 and T <= 0.0 and N == 0.0:
             continue
-        kind = sn.notch.kind
-        if kind == "key":
-            d, D = (d_gear if x_a < sn.x_mm < x_b else d_end), None
-        elif kind == "press_fit":
-            d, D = d_b, None
-        else:
-            d, D = (d_b, d_gear) if x_a < sn.x_mm < x_b else (d_end, d_b)
-        r = din743_safety(mat, sn.notch, d_mm=d, D_mm=D, d_eff_mm=d_gear, F_zdm=N, M_ba=M, T_m=T,
+        dl, dr = _diameters_at(geo, sn.x_mm)
+        d, D = min(dl, dr), (max(dl, dr) if sn.notch.kind == "shoulder" else None)
+        r = din743_safety(mat, sn.notch, d_mm=d, D_mm=D, d_eff_mm=d_eff, F_zdm=N, M_ba=M, T_m=T,
                           F_zdmax=sh.peak_factor * abs(N), M_bmax=sh.peak_factor * M, T_max=sh.peak_factor * T,
                           S_min=sh.S_min)
         if min(r.S_D, r.S_F) < sh.S_min:
@@ -290,39 +336,38 @@ def _holds(sh, mat, geo, loads, d_b, elements) -> bool:
     return True
 
 
-def _key_fits(d, e) -> bool:
-    """The element's parallel key (:func:`geardesign.drives.key.select`, its hub the gear's face width, at least
-    1.2·d, or a hub's 1.5·d)
-    carries its torque on a seat of diameter d."""
+def _keys_fit(geo, elements) -> bool:
+    """Every keyed element's parallel key (:func:`geardesign.drives.key.select`, on its seat, in its hub: a gear's
+    face width, at least 1.2·d; a sprocket's or coupling's 1.5·d) carries its torque."""
     from . import key as keys
 
-    hub = max(e.width_mm, GEAR_HUB_D * d) if e.width_mm is not None else HUB_LENGTH_D * d
-    return bool(keys.select(d, abs(e.torque_nm), hub).feasible) if abs(e.torque_nm) > 0 else True
+    return all(keys.select(geo.hubs[e.name][0], abs(e.torque_nm), geo.hubs[e.name][1]).feasible
+               for e in elements if geo.hubs[e.name] is not None and abs(e.torque_nm) > 0)
 
 
 def _sized_geometry(sh, mat, elements, widths, bores, d_min):
     """The default shaft at the least catalog bore >= d_min whose sections all reach S_min (bisection: the safety
-    never falls as the shaft thickens; the thickest when none does), then the least from there whose keys hold."""
+    rises as the shaft thickens; the thickest when none does), then the least from there whose keys hold."""
     cand = [d for d in bores if d >= d_min and d - STEP_MM >= 6.0]
     if not cand:
         raise GearDesignError(f"no bearing bore of series {', '.join(sh.series)} is >= {d_min:g} mm")
-    geo = _default_geometry(sh, elements, widths, cand[-1])
-    loads = _section_loads(geo, elements)
+    diagram = _diagram(_default_geometry(sh, elements, widths, cand[-1]), elements)
 
     def ok(d):
-        return _holds(sh, mat, geo, loads, d, elements)
+        return _holds(sh, mat, _default_geometry(sh, elements, widths, d), diagram)
 
     lo, hi = 0, len(cand) - 1
     if not ok(cand[hi]):
-        return geo
+        return _default_geometry(sh, elements, widths, cand[hi])
     while lo < hi:
         mid = (lo + hi) // 2
         lo, hi = (lo, mid) if ok(cand[mid]) else (mid + 1, hi)
     # the keys: the next bores up while one does not fit (a key's margins rise with d until its section's
     # shortest length outgrows a narrow hub: then no bore fits and the least safe one stays, its key failing)
     for d in cand[lo:]:
-        if all(_key_fits(d + STEP_MM if e.side == "plane" else d - STEP_MM, e) for e in elements):
-            return _default_geometry(sh, elements, widths, d)
+        geo = _default_geometry(sh, elements, widths, d)
+        if _keys_fit(geo, elements):
+            return geo
     return _default_geometry(sh, elements, widths, cand[lo])
 
 
@@ -415,12 +460,15 @@ def beam_deflections(sections, supports_mm, x_mm, fy_n, fz_n, couple_xy_nmm, cou
     return R, np.vstack([_Plane(x, kappa[k], theta[k], w[k]).at(xq)[1] for k in range(2)])
 
 
-def mesh_misalignment_um(pinion_w, wheel_w, direction, r_w1_mm, torque1_nm, b_mm, d_w1_mm, G_mpa=G_STEEL_MPA):
+def mesh_misalignment_um(pinion_w, wheel_w, direction, r_w1_mm, torque1_nm, b_mm, d_w1_mm, twist_sign=1.0,
+                         G_mpa=G_STEEL_MPA):
     """f_sh (µm) of a gear pair from its shafts: ``pinion_w``, ``wheel_w`` the deflections (wy, wz) (mm) of the two
-    shafts at the two face ends (arrays (2, 2): end, plane); ``direction`` the unit tooth force on the pinion
-    (y, z): δ = (w_pinion − w_wheel)·n at each end, f_bend = |δ_2 − δ_1|; plus the pinion body's wind-up across
-    the face, r_w1·T·b/(2·G·J), J = π·d_w1⁴/32 (the torque fed in at one side and taken out uniformly over the
-    face: half the twist of the whole torque over b), added to it.
+    shafts at the two face ends, left then right (arrays (2, 2): end, plane); ``direction`` the unit tooth force on
+    the pinion (y, z): δ = (w_pinion − w_wheel)·n at each end, their difference across the face Δδ_bend; and the
+    pinion body's wind-up across the face, r_w1·T·b/(2·G·J), J = π·d_w1⁴/32 (the torque fed in at one side of the
+    face and taken out evenly over it): its flank lags, along the tooth force, more at the side away from where the
+    torque comes in (``twist_sign`` +1: it comes in from the left, −1: from the right). f_sh = |Δδ_bend + Δδ_twist|,
+    the two signed as ISO 6336-1:2006 eq. (44) combines the pinion's bending and torsion.
 
     A pinion whose shafts do not bend: only the wind-up, T·b·r/(2GJ):
 
@@ -432,10 +480,9 @@ def mesh_misalignment_um(pinion_w, wheel_w, direction, r_w1_mm, torque1_nm, b_mm
     pw, ww = np.asarray(pinion_w, dtype=float), np.asarray(wheel_w, dtype=float)
     n = np.asarray(direction, dtype=float)
     delta = (pw - ww) @ n
-    bend = abs(float(delta[1] - delta[0]))
     J = math.pi * d_w1_mm ** 4 / 32.0
     twist = r_w1_mm * 1000.0 * abs(torque1_nm) * b_mm / (2.0 * G_mpa * J)
-    return 1000.0 * (bend + twist)
+    return 1000.0 * abs(float(delta[1] - delta[0]) + float(twist_sign) * twist)
 
 
 # -- the whole drive -------------------------------------------------------------------------------------------
@@ -445,44 +492,107 @@ def _gear_planes(drive, stages_out) -> list:
             if getattr(st, "kind", "") == "gear"]
 
 
+def _placed(sh, k, els, widths, bores, n_rpm, d_min):
+    """(geometry, model, bearing designations, BearingChecks, material) of shaft k: a drawn one as drawn, a default
+    one at the least bore >= d_min holding DIN 743 and its keys, then on the bearings chosen for it (their bore
+    the seat: a thicker shaft where the life needs a larger bearing)."""
+    from .din743 import _material
+
+    ds = sh.given(k)
+    mat = sh._material if ds is None or ds.material is None else _material(ds.material)
+    geo = _given_geometry(ds, els) if ds is not None else _sized_geometry(sh, mat, els, widths, bores, d_min)
+    model = _model(geo, els)
+    r = two_support_reactions([geo.x[e.name] for e in els], [e.fy for e in els], [e.fz for e in els],
+                              [e.fx for e in els], [e.y_mm for e in els], *geo.supports)
+    seat = geo.d_b if geo.d_b is not None else float(model.diameter_at(geo.supports[0])[0])
+    names, checks = _bearings(sh, ds, r, n_rpm, seat)
+    if ds is None and checks[0].d_mm > geo.d_b:      # the bearing's bore is the seat: a thicker shaft
+        geo = _default_geometry(sh, els, widths, checks[0].d_mm)
+        model = _model(geo, els)
+    return geo, model, names, checks, mat
+
+
+def _mesh_f_sh(drive, stages_out, T, elements, placed) -> dict:
+    """{stage name: f_sh at the nominal load, µm} of every gear pair whose two shafts are placed."""
+    out = {}
+    for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1):
+        if getattr(st, "kind", "") != "gear" or k - 1 not in placed or k not in placed:
+            continue
+        b = float(res["stage"].width_mm)
+        (gp, mp), (gw, mw) = placed[k - 1][:2], placed[k][:2]
+        xp, xw = gp.x[st.name], gw.x[st.name]
+        wp = shaft_deflections(mp, np.clip([xp - b / 2.0, xp + b / 2.0], 0.0, mp.length_mm))[1].T
+        ww = shaft_deflections(mw, np.clip([xw - b / 2.0, xw + b / 2.0], 0.0, mw.length_mm))[1].T
+        pin = next(e for e in elements[k - 1] if e.name == st.name)
+        F = math.hypot(pin.fy, pin.fz)
+        geo_p = res["pair"].geometry()
+        # where the pinion's torque comes from: the elements bringing torque into its shaft (opposite sign)
+        src = [gp.x[e.name] for e in elements[k - 1] if e.torque_nm * pin.torque_nm < 0]
+        sign = 1.0 if (sum(src) / len(src) if src else 0.0) < xp else -1.0
+        out[st.name] = mesh_misalignment_um(wp, ww, (pin.fy / F, pin.fz / F), float(geo_p.dw1) / 2.0,
+                                            float(T[k - 1]), b, float(geo_p.dw1), sign)
+    return out
+
+
+def iso_f_sh_um(stage, pair, torque1_nm) -> float:
+    """ISO 6336-1:2006 eq. (44)'s f_sh (µm) of a gear stage at the nominal load (F_m/b = F_t/b, F_t on the
+    reference circle), with the stage's ``shaft`` strength option if it gives one: the misalignment the strength
+    chain assumes when the shafts are not known (the default shafts are made at least this stiff)."""
+    from ..gears.strength.factors import shaft_misalignment
+
+    b = float(stage.width_mm)
+    d1 = float(pair.geometry().d1)
+    shaft = dict((stage.strength or {}).get("shaft") or {})
+    return float(shaft_misalignment(2000.0 * torque1_nm / d1 / b, b, d1, **shaft))
+
+
 def analyse_shafting(drive, stages_out, n, T) -> dict:
-    """Every shaft of the drive that carries a gear: its geometry (given, or the default one sized by DIN 743),
-    bearing reactions and bearings, safeties, deflections; each gear stage's nominal f_sh; the keys at the seats.
+    """Every shaft of the drive that carries a gear: its geometry (drawn, or the default one sized by DIN 743, its
+    keys, its bearings' life and, with ``Shafting(stiff=True)``, its stiffness), bearing reactions and bearings,
+    safeties, deflections; each gear stage's nominal f_sh; the keys at the seats.
+
+    Stiffness (default shafts): while a gear pair's f_sh from its shafts exceeds ISO 6336-1 eq. (44)'s estimate
+    (:func:`iso_f_sh_um`, what the gear's strength, and a stage sized by its load, assumed), each default shaft of
+    that pair goes to the next bearing bore (a drawn shaft stays as drawn); the table ``shafts`` says which shafts
+    were thickened so.
 
     Returns dict(shafts, bearings, sections, seat_keys: DataFrames; rows: the checks table's rows (item, check,
     margin); f_sh {stage name: µm at the nominal load}; bearing_loads {shaft k: [(designation, Fr, Fa), ...]};
-    analyses {shaft k: ShaftAnalysis}; models {shaft k: ShaftModel})."""
+    analyses {shaft k: ShaftAnalysis}; elements {shaft k: [Element]})."""
     import pandas as pd
 
     from . import key as keys
-    from .din743 import _material
 
     sh = drive.shafting
     elements = element_loads(drive, stages_out, T)
     widths = _gear_planes(drive, stages_out)
     bores = sorted(set(float(v) for v in _catalog(sh.series)["d_mm"]))
+    placed = {k: _placed(sh, k, elements[k], widths, bores, float(n[k]), bores[0]) for k in sorted(elements)}
+    stiffened = set()
+    if sh.stiff:
+        limits = {st.name: iso_f_sh_um(res["stage"], res["pair"], float(T[k - 1]))
+                  for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1)
+                  if getattr(st, "kind", "") == "gear"}
+        for _ in range(len(bores)):
+            f_sh = _mesh_f_sh(drive, stages_out, T, elements, placed)
+            grow = set()
+            for k, st in enumerate(drive.stages, start=1):
+                if st.name in f_sh and f_sh[st.name] > limits[st.name]:
+                    grow |= {j for j in (k - 1, k) if placed[j][0].d_b is not None and placed[j][0].d_b < bores[-1]}
+            if not grow:
+                break
+            for j in grow:
+                d_next = next(d for d in bores if d > placed[j][0].d_b)
+                placed[j] = _placed(sh, j, elements[j], widths, bores, float(n[j]), d_next)
+            stiffened |= grow
     shaft_rows, bearing_rows, section_rows, key_rows, rows = [], [], [], [], []
-    analyses, models, bearing_loads = {}, {}, {}
+    analyses, bearing_loads = {}, {}
     for k in sorted(elements):
         els = elements[k]
-        ds = sh.given(k)
+        geo, model, names, checks, mat = placed[k]
         name = f"shaft {k}"
-        mat = sh._material if ds is None or ds.material is None else _material(ds.material)
-        if ds is not None:
-            geo = _given_geometry(ds, els)
-        else:
-            geo = _sized_geometry(sh, mat, els, widths, bores, bores[0])
-        model = _model(geo, els)
-        xs = np.array([ld.x_mm for ld in model.loads])
-        r = two_support_reactions(xs, [e.fy for e in els], [e.fz for e in els], [e.fx for e in els],
-                                  [e.y_mm for e in els], *geo.supports)
-        seat = geo.d_b if geo.d_b is not None else float(model.diameter_at(geo.supports[0])[0])
-        names, checks = _bearings(sh, ds, r, float(n[k]), seat)
-        if ds is None and checks[0].d_mm > geo.d_b:      # the bearing's bore is the seat: a thicker shaft
-            geo = _default_geometry(sh, els, widths, checks[0].d_mm)
-            model = _model(geo, els)
         safety, analysis = _safety(geo, els, sh, mat)
-        analyses[k], models[k] = analysis, model
+        analyses[k] = analysis
         d_seat = [float(v) for v in model.diameter_at(list(geo.supports))[0]]
         for tag, chk, d_s in zip("AB", checks, d_seat):
             item = f"bearing {k}{tag}"
@@ -507,6 +617,8 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
                                      S_F=srow["S_F"], ok=bool(srow["ok"])))
             rows.append((name, f"safety {srow['name']}", s / sh.S_min - 1.0))
         for e in els:
+            if geo.hubs[e.name] is None:      # cut on its shaft: no key
+                continue
             d, hub = geo.hubs[e.name]
             torque = abs(e.torque_nm)
             sel = keys.select(d, torque, hub)
@@ -517,36 +629,21 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
             rows += [(f"key {k} {e.name}", "crushing", sel.margin_crush), (f"key {k} {e.name}", "shear",
                                                                             sel.margin_shear)]
         el = analysis.elements
-        gear_w = {e.name: (geo.x[e.name], e.width_mm) for e in els if e.width_mm is not None}
-        shaft_rows.append(dict(shaft=k, layout="given" if geo.given else "default", material=mat.get("material", "given"),
-                               length_mm=model.length_mm,
+        gears = el["name"].isin([e.name for e in els if e.width_mm is not None])
+        shaft_rows.append(dict(shaft=k, layout="given" if geo.given else "default",
+                               material=mat.get("material", "given"), length_mm=model.length_mm,
                                span_mm=geo.supports[1] - geo.supports[0],
                                d_end_mm=None if geo.d_b is None else geo.d_b - STEP_MM,
                                d_bearing_mm=d_seat[0], d_gear_mm=None if geo.d_b is None else geo.d_b + STEP_MM,
-                               bearings="/".join(names), least_safety=_least(safety.table),
+                               stiffened=k in stiffened, bearings="/".join(names), least_safety=_least(safety.table),
                                max_deflection_mm=analysis.max_deflection_mm,
-                               gear_deflection_mm=float(el.loc[el["name"].isin(list(gear_w)), "w_mm"].max()),
-                               gear_slope_rad=float(el.loc[el["name"].isin(list(gear_w)), "th_rad"].max()),
+                               gear_deflection_mm=float(el.loc[gears, "w_mm"].max()),
+                               gear_slope_rad=float(el.loc[gears, "th_rad"].max()),
                                critical_speed_rpm=analysis.critical_speed_rpm, mass_kg=analysis.mass_kg))
-        models[k] = (model, geo)
-    f_sh = {}
-    for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1):
-        if getattr(st, "kind", "") != "gear" or k - 1 not in analyses or k not in analyses:
-            continue
-        b = float(res["stage"].width_mm)
-        (mp, gp), (mw, gw) = models[k - 1], models[k]
-        xp, xw = gp.x[st.name], gw.x[st.name]
-        wp = shaft_deflections(mp, np.clip([xp - b / 2.0, xp + b / 2.0], 0.0, mp.length_mm))[1].T
-        ww = shaft_deflections(mw, np.clip([xw - b / 2.0, xw + b / 2.0], 0.0, mw.length_mm))[1].T
-        pin = next(e for e in elements[k - 1] if e.name == st.name)
-        F = math.hypot(pin.fy, pin.fz)
-        geo_p = res["pair"].geometry()
-        f_sh[st.name] = mesh_misalignment_um(wp, ww,
-                                             (pin.fy / F, pin.fz / F), float(geo_p.dw1) / 2.0, float(T[k - 1]), b,
-                                             float(geo_p.dw1))
     return dict(shafts=pd.DataFrame(shaft_rows), bearings=pd.DataFrame(bearing_rows),
-                sections=pd.DataFrame(section_rows), seat_keys=pd.DataFrame(key_rows), rows=rows, f_sh=f_sh,
-                bearing_loads=bearing_loads, analyses=analyses, elements=elements)
+                sections=pd.DataFrame(section_rows), seat_keys=pd.DataFrame(key_rows), rows=rows,
+                f_sh=_mesh_f_sh(drive, stages_out, T, elements, placed), bearing_loads=bearing_loads,
+                analyses=analyses, elements=elements)
 
 
 # -- efficiencies and K_Hβ ----------------------------------------------------------------------------------------

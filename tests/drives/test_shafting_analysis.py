@@ -111,7 +111,8 @@ def test_f_sh_and_K_Hbeta_method_C_from_uniform_shafts():
     # pinion and wheel pushed apart along the tooth force: the relative deflection is the sum of the two
     delta = [_point_deflection(F, a, L, x, EI1) + _point_deflection(F, a, L, x, EI2) for x in ends]
     twist = geo.dw1 / 2 * T1 * 1000 * b_face / (2 * G_STEEL_MPA * math.pi * geo.dw1 ** 4 / 32)
-    f_nominal = 1000 * (abs(delta[1] - delta[0]) + twist)
+    # the torque comes in from the coupling at x = 0, left of the gear: the far (right) end lags, along the force
+    f_nominal = 1000 * abs(delta[1] - delta[0] + twist)
     mm = r.table("mesh_misalignment").iloc[0]
     assert mm["f_sh_nominal_um"] == pytest.approx(f_nominal, rel=1e-9)
     # K_Hβ by method C (ISO 6336-1:2019 eq. (40); F_βx, y_β of the 2006 edition) from the f_sh it was given
@@ -266,3 +267,35 @@ def test_chosen_bearings_are_the_smallest_that_hold(two_stage):
             ok = [gd.check_bearing(row["designation"], max(fr, 1e-9), fa, n, life_h=20_000).ok
                   for fr, fa in zip(mine["fr_n"], mine["fa_n"])]
             assert not all(ok), row["designation"]
+
+
+def test_cut_on_shaft_rule_and_body_in_the_default_shaft():
+    from geardesign.drives.shafting_analysis import cut_on_shaft
+
+    # rim over the keyway (d_f − d)/2 − 0.05·d against 2.5·m, written out
+    for d_f, m, d in ((54.3, 3.0, 35.0), (54.3, 3.0, 45.0), (200.0, 4.0, 60.0)):
+        assert cut_on_shaft(d_f, m, d) == ((d_f - d) / 2 - 0.05 * d < 2.5 * m)
+    # a default shaft whose pinion is cut on it: the pinion body (its root diameter over its face width) is a section,
+    # it has no key, and its sides are checked as shoulders
+    r = _two_stage(Shafting(bearing_series="63")).analyse()
+    keys = set(r.table("seat_keys")["name"])
+    sections = r.table("sections")
+    shaft0 = r.table("shafts").set_index("shaft").loc[0]
+    pinion = next(s for s in r.stages if s["stage"].name == "fast")["pair"].geometry()
+    if cut_on_shaft(pinion.df1, 3.0, shaft0["d_gear_mm"]):
+        assert "key 0 fast" not in keys
+        assert sections["section"].str.startswith("gear body").any()
+    else:
+        assert "key 0 fast" in keys
+
+
+def test_stiff_shafts_meet_the_iso_estimate():
+    # Shafting(stiff=True): every gear pair's f_sh from its default shafts at most ISO 6336-1 eq. (44)'s
+    from geardesign.drives.shafting_analysis import iso_f_sh_um
+
+    d = gd.Drive(power_kw=4, n_in_rpm=1450, shafting=Shafting(stiff=True), stages=[
+        gd.GearStage(2.5, 22, 88, material="42CrMo4", face_width_mm=30, name="g")])
+    r = d.analyse()
+    st = r.stages[0]
+    mm = r.table("mesh_misalignment").iloc[0]
+    assert mm["f_sh_nominal_um"] <= iso_f_sh_um(st["stage"], st["pair"], st["flow"].torque_in_nm) * (1 + 1e-12)
