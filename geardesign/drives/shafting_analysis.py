@@ -135,13 +135,20 @@ def element_loads(drive, stages_out, T) -> dict:
         if k in gear_shafts:           # the driven sprocket brings it in at the left end
             out[k].append(Element(st.name, "sprocket", "left", -1, None, -p.shaft_load_n, 0.0, 0.0, 0.0,
                                   sense[k] * float(T[k])))
-    for k in sorted(gear_shafts):
+    for k in sorted(gear_shafts):     # what else brings power in or takes it out: a coupling, overhung
         els = out[k]
         total = sum(e.torque_nm for e in els)
-        if k == 0 and not any(e.side == "left" for e in els):
-            els.append(Element("coupling", "coupling", "left", -1, None, 0.0, 0.0, 0.0, 0.0, -total))
-        elif k == N and not any(e.side == "right" for e in els):
-            els.append(Element("coupling", "coupling", "right", -1, None, 0.0, 0.0, 0.0, 0.0, -total))
+        if abs(total) <= 1e-12 * max(abs(e.torque_nm) for e in els):
+            continue
+        incoming = -total * sense[k] > 0
+        side = "left" if incoming else "right"
+        if any(e.side == side for e in els):
+            raise GearDesignError(f"shaft {k} needs a coupling at its {side} end, where a sprocket sits already")
+        # a bought unit's (given stage's) shaft end, or the drive's input or output coupling
+        j = k if incoming else k + 1
+        name = drive.stages[j - 1].name if 1 <= j <= N and getattr(drive.stages[j - 1], "kind", "") == "given" \
+            else "coupling"
+        els.append(Element(name, "coupling", side, -1, None, 0.0, 0.0, 0.0, 0.0, -total))
     return out
 
 

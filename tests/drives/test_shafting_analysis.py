@@ -299,3 +299,16 @@ def test_stiff_shafts_meet_the_iso_estimate():
     st = r.stages[0]
     mm = r.table("mesh_misalignment").iloc[0]
     assert mm["f_sh_nominal_um"] <= iso_f_sh_um(st["stage"], st["pair"], st["flow"].torque_in_nm) * (1 + 1e-12)
+
+
+def test_a_bought_unit_feeds_the_gear_shaft_through_its_end():
+    # a belt (given stage) drives the pinion's shaft: its pulley is the overhung element bringing the torque in
+    d = gd.Drive(power_kw=7.5, n_in_rpm=1450, shafting=Shafting(), stages=[
+        gd.GivenStage(2, 0.95, "belt"), gd.GearStage(3, 20, 60, material="42CrMo4", face_width_mm=40, name="g")])
+    r = d.analyse()
+    els = r.shafting["elements"]
+    assert sorted(els) == [1, 2]                       # the motor shaft 0 carries no gear: not on the drive's shafts
+    belt = next(e for e in els[1] if e.name == "belt")
+    T = r.flow["torque_nm"].to_numpy()
+    assert belt.side == "left" and abs(belt.torque_nm) == pytest.approx(T[1], rel=1e-12)
+    assert next(e for e in els[2] if e.name == "coupling").side == "right"
