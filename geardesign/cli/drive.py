@@ -40,6 +40,8 @@ def add_parser(subparsers):
                "refused (each stage carries its own shaft's load, in one material).")
     p.add_argument("scene", help="a scene file (.toml) with a [drive] section")
     add_output_file(p, "--plot", "PNG", "the drive's diagram")
+    p.add_argument("--layout-plot", metavar="PNG", default=None,
+                   help="with shafts: write the shafts, gears and bearings seen from above, to scale, to this PNG file")
     p.add_argument("--report", metavar="HTML", default=None,
                    help="write a one-page report (checks, power flow, stages, gear geometry, keys, diagram) to this HTML file")
     add_json_flag(p)
@@ -176,6 +178,8 @@ def run(args) -> int:
     if "drive" not in scene:
         raise GearDesignError(f"{args.scene}: no [drive] section (this command runs only that section)")
     target = check_output_path(args.plot, overwrite=args.overwrite) if args.plot else None
+    layout_png = (check_output_path(args.layout_plot, overwrite=args.overwrite, what="--layout-plot")
+                  if args.layout_plot else None)
     if args.report:
         check_output_path(args.report, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--report")
     bar = Progress(1, "drive: designs", show=True if args.progress else None)
@@ -185,14 +189,19 @@ def run(args) -> int:
                                                    "_client": client}, bar.to)
     finally:
         bar.close()
-    if target is not None and an is not None:
+    if layout_png is not None and an is not None and an.shafting is None:
+        raise GearDesignError("--layout-plot: the drive has no shafts (give --shafts, a shafting option or "
+                              "[drive.shafting])")
+    for path, draw in ((target, "plot"), (layout_png, "plot_layout")):
+        if path is None or an is None:
+            continue
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
 
-        ax = an.plot()
+        ax = getattr(an, draw)()
         try:
-            write_file_atomic(target, lambda tmp: ax.figure.savefig(tmp, dpi=110, bbox_inches="tight", format="png"))
+            write_file_atomic(path, lambda tmp: ax.figure.savefig(tmp, dpi=110, bbox_inches="tight", format="png"))
         finally:
             plt.close(ax.figure)
     if args.report and an is not None:

@@ -92,6 +92,12 @@ class DriveAnalysis(Result):
         """The drive's diagram (input, stages, shafts with n and T, keys): a matplotlib Axes."""
         return plot_drive(self, ax=ax)
 
+    def plot_layout(self, ax=None):
+        """A drive with shafting: its shafts, gears and bearings seen from above, to scale (a matplotlib Axes)."""
+        from .diagram import plot_layout
+
+        return plot_layout(self, ax=ax)
+
 
 def _stage_dict(stage: dict) -> dict:
     """A stage's summary; a gear stage with a material also its ISO 6336 result (material with σ_Hlim, σ_Flim,

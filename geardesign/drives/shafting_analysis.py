@@ -197,14 +197,14 @@ def _stepped(pieces) -> tuple:
     return tuple(out)
 
 
-def _default_geometry(sh, elements, widths, d_b) -> _Geometry:
+def _default_geometry(sh, elements, planes, d_b) -> _Geometry:
     """The default shaft (module docstring of :mod:`geardesign.drives.shafting`) at bearing-seat diameter d_b; a
     gear whose keyed rim would be too thin (:func:`cut_on_shaft`) is cut on the shaft: its body, of its root
     diameter over its face width, is part of the shaft (no key; shoulders at its sides)."""
     from .din743 import Notch, ShaftNotch
 
     c = sh.clearance_mm
-    offsets, span = default_positions(widths, c, sh.gear_gap_mm)
+    offsets, span = planes
     left = [e for e in elements if e.side == "left"]
     right = [e for e in elements if e.side == "right"]
     x_a = max(sh.overhang_mm, c / 2.0 + 5.0) if left else c / 2.0
@@ -352,30 +352,30 @@ def _keys_fit(geo, elements) -> bool:
                for e in elements if geo.hubs[e.name] is not None and abs(e.torque_nm) > 0)
 
 
-def _sized_geometry(sh, mat, elements, widths, bores, d_min):
+def _sized_geometry(sh, mat, elements, planes, bores, d_min):
     """The default shaft at the least catalog bore >= d_min whose sections all reach S_min (bisection: the safety
     rises as the shaft thickens; the thickest when none does), then the least from there whose keys hold."""
     cand = [d for d in bores if d >= d_min and d - STEP_MM >= 6.0]
     if not cand:
         raise GearDesignError(f"no bearing bore of series {', '.join(sh.series)} is >= {d_min:g} mm")
-    diagram = _diagram(_default_geometry(sh, elements, widths, cand[-1]), elements)
+    diagram = _diagram(_default_geometry(sh, elements, planes, cand[-1]), elements)
 
     def ok(d):
-        return _holds(sh, mat, _default_geometry(sh, elements, widths, d), diagram)
+        return _holds(sh, mat, _default_geometry(sh, elements, planes, d), diagram)
 
     lo, hi = 0, len(cand) - 1
     if not ok(cand[hi]):
-        return _default_geometry(sh, elements, widths, cand[hi])
+        return _default_geometry(sh, elements, planes, cand[hi])
     while lo < hi:
         mid = (lo + hi) // 2
         lo, hi = (lo, mid) if ok(cand[mid]) else (mid + 1, hi)
     # the keys: the next bores up while one does not fit (a key's margins rise with d until its section's
     # shortest length outgrows a narrow hub: then no bore fits and the least safe one stays, its key failing)
     for d in cand[lo:]:
-        geo = _default_geometry(sh, elements, widths, d)
+        geo = _default_geometry(sh, elements, planes, d)
         if _keys_fit(geo, elements):
             return geo
-    return _default_geometry(sh, elements, widths, cand[lo])
+    return _default_geometry(sh, elements, planes, cand[lo])
 
 
 # -- bearings --------------------------------------------------------------------------------------------------
@@ -494,12 +494,30 @@ def mesh_misalignment_um(pinion_w, wheel_w, direction, r_w1_mm, torque1_nm, b_mm
 
 # -- the whole drive -------------------------------------------------------------------------------------------
 
-def _gear_planes(drive, stages_out) -> list:
-    return [float(res["stage"].width_mm) for st, res in zip(drive.stages, stages_out)
-            if getattr(st, "kind", "") == "gear"]
+def _gear_planes(drive, stages_out, elements) -> tuple:
+    """(offsets from bearing A of the gear planes, span) of the default layout (:func:`default_positions`), where a
+    drawn shaft carries a gear its plane where that shaft puts it (the default shafts beside it follow; the two
+    gears of a pair in one plane) and the span at least the drawn shafts' spans."""
+    sh = drive.shafting
+    widths = [float(res["stage"].width_mm) for st, res in zip(drive.stages, stages_out)
+              if getattr(st, "kind", "") == "gear"]
+    offsets, span = default_positions(widths, sh.clearance_mm, sh.gear_gap_mm)
+    drawn: dict = {}
+    for ds in sh.layout:
+        for e in elements.get(ds.at, ()):
+            if e.side != "plane" or e.name not in ds.positions:
+                continue
+            off = ds.positions[e.name] - ds.supports_mm[0]
+            if e.plane in drawn and abs(drawn[e.plane][0] - off) > 1e-6:
+                raise GearDesignError(f"stage '{e.name}': its two gears must be in one plane, {drawn[e.plane][0]:g} mm "
+                                      f"from bearing A on shaft {drawn[e.plane][1]} but {off:g} mm on shaft {ds.at}")
+            drawn[e.plane] = (off, ds.at)
+        span = max(span, ds.supports_mm[1] - ds.supports_mm[0])
+    offsets = [drawn[p][0] if p in drawn else o for p, o in enumerate(offsets)]
+    return offsets, span
 
 
-def _placed(sh, k, els, widths, bores, n_rpm, d_min):
+def _placed(sh, k, els, planes, bores, n_rpm, d_min):
     """(geometry, model, bearing designations, BearingChecks, material) of shaft k: a drawn one as drawn, a default
     one at the least bore >= d_min holding DIN 743 and its keys, then on the bearings chosen for it (their bore
     the seat: a thicker shaft where the life needs a larger bearing)."""
@@ -507,14 +525,14 @@ def _placed(sh, k, els, widths, bores, n_rpm, d_min):
 
     ds = sh.given(k)
     mat = sh._material if ds is None or ds.material is None else _material(ds.material)
-    geo = _given_geometry(ds, els) if ds is not None else _sized_geometry(sh, mat, els, widths, bores, d_min)
+    geo = _given_geometry(ds, els) if ds is not None else _sized_geometry(sh, mat, els, planes, bores, d_min)
     model = _model(geo, els)
     r = two_support_reactions([geo.x[e.name] for e in els], [e.fy for e in els], [e.fz for e in els],
                               [e.fx for e in els], [e.y_mm for e in els], *geo.supports)
     seat = geo.d_b if geo.d_b is not None else float(model.diameter_at(geo.supports[0])[0])
     names, checks = _bearings(sh, ds, r, n_rpm, seat)
     if ds is None and checks[0].d_mm > geo.d_b:      # the bearing's bore is the seat: a thicker shaft
-        geo = _default_geometry(sh, els, widths, checks[0].d_mm)
+        geo = _default_geometry(sh, els, planes, checks[0].d_mm)
         model = _model(geo, els)
     return geo, model, names, checks, mat
 
@@ -572,9 +590,9 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
 
     sh = drive.shafting
     elements = element_loads(drive, stages_out, T)
-    widths = _gear_planes(drive, stages_out)
+    planes = _gear_planes(drive, stages_out, elements)
     bores = sorted(set(float(v) for v in _catalog(sh.series)["d_mm"]))
-    placed = {k: _placed(sh, k, elements[k], widths, bores, float(n[k]), bores[0]) for k in sorted(elements)}
+    placed = {k: _placed(sh, k, elements[k], planes, bores, float(n[k]), bores[0]) for k in sorted(elements)}
     stiffened = set()
     if sh.stiff:
         limits = {st.name: iso_f_sh_um(res["stage"], res["pair"], float(T[k - 1]))
@@ -590,7 +608,7 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
                 break
             for j in grow:
                 d_next = next(d for d in bores if d > placed[j][0].d_b)
-                placed[j] = _placed(sh, j, elements[j], widths, bores, float(n[j]), d_next)
+                placed[j] = _placed(sh, j, elements[j], planes, bores, float(n[j]), d_next)
             stiffened |= grow
     shaft_rows, bearing_rows, section_rows, key_rows, rows = [], [], [], [], []
     analyses, bearing_loads = {}, {}

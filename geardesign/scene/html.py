@@ -480,6 +480,12 @@ def drive_report_html(result, pictures: bool = True) -> str:
                   "<figcaption>The drive seen end-on: each dot a shaft with its speed and torque, black squares "
                   "keyed hubs, rings the bearings of a shaft on bearings (red: one of its checks fails)."
                   "</figcaption></figure>"]
+        if getattr(an, "shafting", None) is not None:
+            layout = _png(an.plot_layout().figure)
+            parts += [f'<figure id="layout"><img alt="shafts and bearings seen from above" src="{layout}" '
+                      'style="width:auto;max-width:100%"><figcaption>The shafts seen from above, to scale: '
+                      "sections, gears (tip diameter × face width), bearings in the housing walls (dashed)."
+                      "</figcaption></figure>"]
     return _page(f"Drive u = {an.total_ratio:.5g}", parts)
 
 

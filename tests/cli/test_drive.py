@@ -243,3 +243,13 @@ def test_bad_shafting_scene_one_line_exit_2(tmp_path, capsys, extra, words):
     code = main(["drive", _scene(tmp_path, REDUCER + extra)])
     err = capsys.readouterr().err.strip().splitlines()
     assert code == 2 and len(err) == 1 and words in err[0]
+
+
+def test_layout_plot_needs_shafts_and_is_written_whole(tmp_path, capsys):
+    path = _scene(tmp_path, REDUCER)
+    png = tmp_path / "layout.png"
+    assert main(["drive", path, "--layout-plot", str(png)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--layout-plot" in err[0] and not png.exists()
+    assert main(["drive", path, "--shafts", "--layout-plot", str(png)]) in (0, 1)
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
