@@ -201,7 +201,8 @@ def run(args) -> int:
 
         ax = getattr(an, draw)()
         try:
-            write_file_atomic(path, lambda tmp: ax.figure.savefig(tmp, dpi=110, bbox_inches="tight", format="png"))
+            write_file_atomic(path, lambda tmp, fig=ax.figure: fig.savefig(tmp, dpi=110, bbox_inches="tight",
+                                                                          format="png"))
         finally:
             plt.close(ax.figure)
     if args.report and an is not None:
