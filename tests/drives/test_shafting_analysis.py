@@ -312,3 +312,29 @@ def test_a_bought_unit_feeds_the_gear_shaft_through_its_end():
     T = r.flow["torque_nm"].to_numpy()
     assert belt.side == "left" and abs(belt.torque_nm) == pytest.approx(T[1], rel=1e-12)
     assert next(e for e in els[2] if e.name == "coupling").side == "right"
+
+
+# ---------------------------------------------------------------------------------------------- the search
+
+def _small_search(**kw):
+    return gd.Drive(power_kw=4, n_in_rpm=1450, shafting=Shafting(**kw), stages=[
+        gd.GearStage(3, z1_range=(18, 20), ratio_range=(3.2, 3.8), material="42CrMo4", face_width_mm=30)])
+
+
+def test_search_returns_its_best_on_shafts_and_bearings():
+    r = _small_search().optimize(total_ratio=3.5, ratio_tol=0.05, top=3)
+    assert r.success and r.best.shafting is not None and r.best.success
+    ranked = r.table[r.table["rank"].notna()]
+    assert ranked["shafts"].iloc[0] == "holds"
+    assert {"bearing 0A", "shaft 1"} <= set(r.best.checks["item"])
+
+
+def test_search_whose_ranked_designs_fail_on_their_bearings_says_so():
+    # the input shaft drawn on 6204 bearings, a life of 10^6 h: every ranked design fails on its bearings
+    lay = (DriveShaft(0, [(200.0, 20.0)], (20.0, 180.0), {"gear": 60.0, "coupling": 0.0}, bearings=("6204", "6204")),)
+    r = _small_search(life_h=1e6, layout=lay).optimize(total_ratio=3.5, ratio_tol=0.05, top=2)
+    assert not r.success and r.best is None
+    assert "fail with their shafts" in r.message
+    assert any("life" in c for c in r.conflict)
+    ranked = r.table[r.table["rank"].notna()]
+    assert ranked["shafts"].head(2).str.startswith("fails").all()
