@@ -253,3 +253,16 @@ def test_layout_plot_needs_shafts_and_is_written_whole(tmp_path, capsys):
     assert len(err) == 1 and "--layout-plot" in err[0] and not png.exists()
     assert main(["drive", path, "--shafts", "--layout-plot", str(png)]) in (0, 1)
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_reports_carry_the_shafting(tmp_path, capsys):
+    scene = str(SCENES / "reducer_shafts.toml")
+    out = tmp_path / "out"
+    assert main(["run", scene, "--out", str(out)]) == 0
+    text = (out / "report.md").read_text()
+    assert "### Shafts, bearings and efficiency" in text and "#### mesh misalignment" in text
+    assert (out / "drive_bearings.csv").is_file()
+    html = tmp_path / "r.html"
+    assert main(["drive", scene, "--report", str(html)]) == 0
+    page = html.read_text()
+    assert "Shafts, bearings and efficiency" in page and 'id="layout"' in page and "6311" in page
