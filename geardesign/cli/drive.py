@@ -251,7 +251,9 @@ def _print_shafting(an) -> None:
     print_wrapped(f"overall efficiency {an.overall_efficiency:.5f}; heat to dissipate {1000 * an.heat_kw:.5g} W")
     for name, title in (("shafts", "shafts (DIN 743; d at the ends, bearing seats, gear seats):"),
                         ("bearings", "bearings (ISO 281):"), ("sections", "checked sections (DIN 743):"),
-                        ("seat_keys", "keys at the seats:"), ("efficiency", "efficiency of each stage:"),
+                        ("seat_keys", "keys at the seats:"),
+                        ("gear_deflections", "deflection and slope of the shafts at each gear:"),
+                        ("efficiency", "efficiency of each stage:"),
                         ("mesh_misalignment", "K_Hβ from the shafts (ISO 6336-1 method C with the shafts' f_sh):")):
         table = an.shafting.get(name)
         if table is not None and len(table):

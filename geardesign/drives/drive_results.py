@@ -13,7 +13,8 @@ from .diagram import plot_drive
 __all__ = ["DriveAnalysis", "DriveOptimum", "SHAFTING_TABLES"]
 
 # the tables a drive with shafting adds (Drive(shafting=...)): DriveAnalysis.table(name), to_dict's keys
-SHAFTING_TABLES = ("shafts", "bearings", "sections", "seat_keys", "efficiency", "mesh_misalignment")
+SHAFTING_TABLES = ("shafts", "bearings", "sections", "seat_keys", "gear_deflections", "efficiency",
+                   "mesh_misalignment")
 
 
 @dataclass(frozen=True, eq=False)
@@ -61,7 +62,7 @@ class DriveAnalysis(Result):
 
     def table(self, name: str) -> pd.DataFrame:
         """One of the shafting's tables by name (:data:`SHAFTING_TABLES`: shafts, bearings, sections, seat_keys,
-        efficiency, mesh_misalignment); a drive without shafting has none."""
+        gear_deflections, efficiency, mesh_misalignment); a drive without shafting has none."""
         from ..errors import GearDesignError
 
         if name not in SHAFTING_TABLES:

@@ -581,7 +581,7 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
     that pair goes to the next bearing bore (a drawn shaft stays as drawn); the table ``shafts`` says which shafts
     were thickened so.
 
-    Returns dict(shafts, bearings, sections, seat_keys: DataFrames; rows: the checks table's rows (item, check,
+    Returns dict(shafts, bearings, sections, seat_keys, gear_deflections: DataFrames; rows: the checks table's rows (item, check,
     margin); f_sh {stage name: µm at the nominal load}; bearing_loads {shaft k: [(designation, Fr, Fa), ...]};
     analyses {shaft k: ShaftAnalysis}; elements {shaft k: [Element]})."""
     import pandas as pd
@@ -610,7 +610,7 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
                 d_next = next(d for d in bores if d > placed[j][0].d_b)
                 placed[j] = _placed(sh, j, elements[j], planes, bores, float(n[j]), d_next)
             stiffened |= grow
-    shaft_rows, bearing_rows, section_rows, key_rows, rows = [], [], [], [], []
+    shaft_rows, bearing_rows, section_rows, key_rows, rows, deflection_rows = [], [], [], [], [], []
     analyses, bearing_loads = {}, {}
     for k in sorted(elements):
         els = elements[k]
@@ -655,6 +655,10 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
                                                                             sel.margin_shear)]
         el = analysis.elements
         gears = el["name"].isin([e.name for e in els if e.width_mm is not None])
+        for _, g in el.loc[gears].iterrows():
+            kind = next(e.kind for e in els if e.name == g["name"])
+            deflection_rows.append(dict(shaft=k, gear=f"{g['name']} {kind}", x_mm=g["x_mm"], w_mm=g["w_mm"],
+                                        wy_mm=g["wy_mm"], wz_mm=g["wz_mm"], slope_rad=g["th_rad"]))
         shaft_rows.append(dict(shaft=k, layout="given" if geo.given else "default",
                                material=mat.get("material", "given"), length_mm=model.length_mm,
                                span_mm=geo.supports[1] - geo.supports[0],
@@ -666,7 +670,8 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
                                gear_slope_rad=float(el.loc[gears, "th_rad"].max()),
                                critical_speed_rpm=analysis.critical_speed_rpm, mass_kg=analysis.mass_kg))
     return dict(shafts=pd.DataFrame(shaft_rows), bearings=pd.DataFrame(bearing_rows),
-                sections=pd.DataFrame(section_rows), seat_keys=pd.DataFrame(key_rows), rows=rows,
+                sections=pd.DataFrame(section_rows), seat_keys=pd.DataFrame(key_rows),
+                gear_deflections=pd.DataFrame(deflection_rows), rows=rows,
                 f_sh=_mesh_f_sh(drive, stages_out, T, elements, placed), bearing_loads=bearing_loads,
                 analyses=analyses, elements=elements)
 

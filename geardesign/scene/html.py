@@ -491,7 +491,8 @@ def drive_report_html(result, pictures: bool = True) -> str:
 
 _SHAFTING_SECTIONS = (("shafts", "Shafts (DIN 743; the default layout: docs/shafts_in_drive.md)"),
                       ("bearings", "Bearings (ISO 281 L10h)"), ("sections", "Checked sections (DIN 743 S_D, S_F)"),
-                      ("seat_keys", "Keys at the seats"), ("efficiency", "Efficiency of each stage (ISO/TR 14179-2, SKF)"),
+                      ("seat_keys", "Keys at the seats"), ("gear_deflections", "Deflection and slope at each gear"),
+                      ("efficiency", "Efficiency of each stage (ISO/TR 14179-2, SKF)"),
                       ("mesh_misalignment", "K_Hβ from the shafts (ISO 6336-1 method C with their f_sh)"))
 
 

@@ -338,3 +338,12 @@ def test_search_whose_ranked_designs_fail_on_their_bearings_says_so():
     assert any("life" in c for c in r.conflict)
     ranked = r.table[r.table["rank"].notna()]
     assert ranked["shafts"].head(2).str.startswith("fails").all()
+
+
+def test_gear_deflections_are_the_beams(two_stage):
+    # each gear's deflection and slope: the beam's at the gear's place (shaft_beam.ShaftAnalysis.deflection_at)
+    t = two_stage.table("gear_deflections")
+    assert len(t) == 4
+    for _, g in t.iterrows():
+        d = two_stage.shafting["analyses"][g["shaft"]].deflection_at([g["x_mm"]]).iloc[0]
+        assert g["w_mm"] == pytest.approx(d["w_mm"], rel=1e-12) and g["slope_rad"] == pytest.approx(d["th_rad"], rel=1e-9)
