@@ -206,8 +206,10 @@ def run_drive(rep, section: dict) -> None:
     if an.shafting is not None:       # the shafts, bearings, sections, seat keys, efficiencies, K_Hβ
         from ..drives.drive_results import SHAFTING_TABLES
 
+        rep.figures["drive_layout"] = an.plot_layout().figure
         md += ["### Shafts, bearings and efficiency", "", f"Overall efficiency {an.overall_efficiency:.5f}; heat to "
-               f"dissipate {1000 * an.heat_kw:.5g} W.", ""]
+               f"dissipate {1000 * an.heat_kw:.5g} W.", "", "![shafts and bearings seen from above](drive_layout.png)",
+               ""]
         for name in SHAFTING_TABLES:
             table = an.shafting.get(name)
             if table is not None and len(table):

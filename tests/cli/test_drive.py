@@ -261,7 +261,7 @@ def test_reports_carry_the_shafting(tmp_path, capsys):
     assert main(["run", scene, "--out", str(out)]) == 0
     text = (out / "report.md").read_text()
     assert "### Shafts, bearings and efficiency" in text and "#### mesh misalignment" in text
-    assert (out / "drive_bearings.csv").is_file()
+    assert (out / "drive_bearings.csv").is_file() and (out / "drive_layout.png").is_file()
     html = tmp_path / "r.html"
     assert main(["drive", scene, "--report", str(html)]) == 0
     page = html.read_text()
