@@ -590,6 +590,10 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
 
     sh = drive.shafting
     elements = element_loads(drive, stages_out, T)
+    for ds in sh.layout:
+        if ds.at not in elements:
+            raise GearDesignError(f"layout: shaft {ds.at} carries no gear of the drive (the shafts on bearings are "
+                                  f"{', '.join(map(str, sorted(elements))) or 'none'})")
     planes = _gear_planes(drive, stages_out, elements)
     bores = sorted(set(float(v) for v in _catalog(sh.series)["d_mm"]))
     placed = {k: _placed(sh, k, elements[k], planes, bores, float(n[k]), bores[0]) for k in sorted(elements)}

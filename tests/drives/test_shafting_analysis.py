@@ -347,3 +347,11 @@ def test_gear_deflections_are_the_beams(two_stage):
     for _, g in t.iterrows():
         d = two_stage.shafting["analyses"][g["shaft"]].deflection_at([g["x_mm"]]).iloc[0]
         assert g["w_mm"] == pytest.approx(d["w_mm"], rel=1e-12) and g["slope_rad"] == pytest.approx(d["th_rad"], rel=1e-9)
+
+
+def test_a_drawn_shaft_must_carry_a_gear():
+    d = gd.Drive(power_kw=4, n_in_rpm=1450, shafting=Shafting(layout=(
+        DriveShaft(2, [(200.0, 40.0)], (20.0, 180.0), {"chain": 10.0}),)), stages=[
+        gd.GearStage(3, 20, 60, material="42CrMo4", face_width_mm=30, name="g"), gd.ChainStage(z1=17, z2=34)])
+    with pytest.raises(GearDesignError, match="shaft 2 carries no gear"):
+        d.analyse()
