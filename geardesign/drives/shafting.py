@@ -18,7 +18,10 @@ draws for a horizontal, unfolded parallel-axis reducer (docs/shafts_in_drive.md)
   it out at the right end;
 - the shaft has three diameters stepping by :data:`STEP_MM`: the ends d_b − 5 (the overhung hubs), the
   bearing seats d_b (a bearing bore of the catalog series) over ``clearance_mm``/2 each side of the
-  bearing's centre, and the gear seats d_b + 5 between them; shoulders with fillets of :data:`FILLET_MM`.
+  bearing's centre, and the gear seats d_b + 5 between them; shoulders with fillets of :data:`FILLET_MM`; a gear
+  whose keyed rim would be too thin is cut on the shaft (its body a section:
+  :func:`geardesign.drives.shafting_analysis.cut_on_shaft`);
+- a drawn shaft (:class:`DriveShaft`) sets the planes of the gears it carries and the default shafts follow.
 
 Forces (:mod:`geardesign.gears.forces`, operating pitch circle; :mod:`geardesign.drives.chain.pull`): shaft 0
 turns positive about +x, each gear mesh reverses the sense, a chain keeps it; the pinion's axial force points

@@ -15,10 +15,14 @@ Method, per shaft (docs/shafts_in_drive.md):
    diameters); bearing A (the locating one) takes the axial force;
 3. a default shaft's bearing-seat diameter d_b: the least bore of the bearing series at which every checked
    section reaches S_min after DIN 743 (:func:`geardesign.drives.din743.shaft_safety`; sections: a key seat
-   under each gear and hub, a press fit at each bearing, a shoulder at each step); then the smallest bearing of
-   the series with bore >= d_b that reaches the life L10h (:func:`geardesign.drives.bearing.select_bearing`),
-   the seat taking its bore; a given shaft keeps its diameters and its bearings, and is checked;
-4. the beam's deflection (:func:`geardesign.drives.shaft_beam.analyse_shaft`) at each gear's face ends; the mesh
+   under each keyed gear and hub, a press fit at each bearing, a shoulder at each step and gear body; a gear whose
+   keyed rim would be too thin is cut on the shaft, :func:`cut_on_shaft`), then the least from there whose keys
+   fit; then the smallest bearing of the series with bore >= d_b passing every check under both of the shaft's
+   bearing loads (ranked as :func:`geardesign.drives.bearing.select_bearing` ranks them), the seat taking its
+   bore; with ``Shafting(stiff=True)`` the default shafts of a pair are thickened until its f_sh is at most
+   ISO 6336-1 eq. (44)'s (:func:`iso_f_sh_um`); a drawn shaft keeps its diameters and bearings, and is checked;
+4. the beam's deflection (:func:`beam_deflections`, the beam of :func:`geardesign.drives.shaft_beam.analyse_shaft`)
+   at each gear's face ends; the mesh
    misalignment of a pair f_sh = |Δδ| over its face width, δ the pinion's deflection relative to the wheel's
    along the tooth force plus the pinion body's torsional wind-up across the face r_w1·T·b/(2·G·J) (J of d_w1),
    each with its sign (:func:`mesh_misalignment_um`): at the nominal load; the strength chain takes
