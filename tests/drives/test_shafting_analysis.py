@@ -355,3 +355,25 @@ def test_a_drawn_shaft_must_carry_a_gear():
         gd.GearStage(3, 20, 60, material="42CrMo4", face_width_mm=30, name="g"), gd.ChainStage(z1=17, z2=34)])
     with pytest.raises(GearDesignError, match="shaft 2 carries no gear"):
         d.analyse()
+
+
+def test_thicker_drawn_shaft_never_less_safe_property(two_stage):
+    # random diameters of the intermediate shaft, its loads those of the two-stage drive: the least DIN 743 safety
+    # of every checked section never falls as every diameter grows
+    from hypothesis import given, settings, strategies as st
+
+    from geardesign.drives.shafting_analysis import _given_geometry, _least, _safety
+
+    els = two_stage.shafting["elements"][1]
+    sh = two_stage.drive.shafting
+
+    def least(d):
+        ds = DriveShaft(1, [(40.0, d), (170.0, d + 5), (40.0, d)], (20.0, 230.0), {"fast": 72.5, "slow": 152.5})
+        return _least(_safety(_given_geometry(ds, els), els, sh, sh._material)[0].table)
+
+    @settings(max_examples=12, deadline=None)
+    @given(st.floats(18.0, 90.0), st.floats(0.5, 20.0))
+    def check(d, step):
+        assert least(d + step) >= least(d) * (1 - 1e-12)
+
+    check()
