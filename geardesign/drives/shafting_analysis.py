@@ -449,7 +449,7 @@ def beam_deflections(sections, supports_mm, x_mm, fy_n, fz_n, couple_xy_nmm, cou
     (N·mm; an axial force's −y·F_x) there: the beam of :func:`~geardesign.drives.shaft_beam.analyse_shaft` (the
     same exact segment-wise integration, on the breakpoints alone: curvature is linear between them), on plain
     arrays, without its validation, tables and critical speeds (the drive's f_sh needs only these)."""
-    from .shaft_beam import _Plane, _solve_plane, second_moment_mm4
+    from .shaft_beam import _solve_plane, second_moment_mm4
 
     secs = np.asarray([tuple(s) + (0.0,) * (3 - len(s)) for s in sections], dtype=float)
     ends = np.concatenate([[0.0], np.cumsum(secs[:, 0])])
@@ -467,8 +467,14 @@ def beam_deflections(sections, supports_mm, x_mm, fy_n, fz_n, couple_xy_nmm, cou
     F = np.vstack([np.asarray(fy_n, dtype=float), np.asarray(fz_n, dtype=float)]).reshape(2, xf.size)
     C = np.vstack([np.asarray(couple_xy_nmm, dtype=float), np.asarray(couple_xz_nmm, dtype=float)]).reshape(2, xf.size)
     R, _, kappa, theta, w = _solve_plane(x, right, EI, sup, xf, F, xf, C)
+    # the exact cubic of the segment holding each query point, both planes at once (shaft_beam._Plane.at)
     xq = np.asarray(x_query_mm, dtype=float)
-    return R, np.vstack([_Plane(x, kappa[k], theta[k], w[k]).at(xq)[1] for k in range(2)])
+    i = np.clip(np.searchsorted(x, xq, side="right") - 1, 0, x.size - 2)
+    h = x[i + 1] - x[i]
+    s = xq - x[i]
+    k0, k1 = kappa[:, i], kappa[:, i + 1]
+    dk = np.where(h > 0, (k1 - k0) / np.where(h > 0, h, 1.0), 0.0)
+    return R, w[:, i] + theta[:, i] * s + k0 * s * s / 2.0 + dk * s ** 3 / 6.0
 
 
 def mesh_misalignment_um(pinion_w, wheel_w, direction, r_w1_mm, torque1_nm, b_mm, d_w1_mm, twist_sign=1.0,
