@@ -448,8 +448,10 @@ def beam_deflections(sections, supports_mm, x_mm, fy_n, fz_n, couple_xy_nmm, cou
     shaft (``sections`` (length, d[, bore]) from x = 0) on its supports under forces (fy, fz) at x and couples
     (N·mm; an axial force's −y·F_x) there: the beam of :func:`~geardesign.drives.shaft_beam.analyse_shaft` (the
     same exact segment-wise integration, on the breakpoints alone: curvature is linear between them), on plain
-    arrays, without its validation, tables and critical speeds (the drive's f_sh needs only these)."""
-    from .shaft_beam import _solve_plane, second_moment_mm4
+    arrays, without its validation, tables and critical speeds (the drive's f_sh needs only these). On two
+    supports the reactions come from statics and the two integration constants from w = 0 at both (no linear
+    system); on more, the beam's own solve."""
+    from .shaft_beam import _active, _integrate, _solve_plane, second_moment_mm4
 
     secs = np.asarray([tuple(s) + (0.0,) * (3 - len(s)) for s in sections], dtype=float)
     ends = np.concatenate([[0.0], np.cumsum(secs[:, 0])])
@@ -466,7 +468,21 @@ def beam_deflections(sections, supports_mm, x_mm, fy_n, fz_n, couple_xy_nmm, cou
     EI = E_mpa * second_moment_mm4(secs[j, 1], secs[j, 2])
     F = np.vstack([np.asarray(fy_n, dtype=float), np.asarray(fz_n, dtype=float)]).reshape(2, xf.size)
     C = np.vstack([np.asarray(couple_xy_nmm, dtype=float), np.asarray(couple_xz_nmm, dtype=float)]).reshape(2, xf.size)
-    R, _, kappa, theta, w = _solve_plane(x, right, EI, sup, xf, F, xf, C)
+    if sup.size == 2:       # statically determinate: the reactions by statics, the beam's constants by w = 0 at both
+        a, b = sup
+        Rb = (C.sum(axis=1) + F @ (xf - a)) / (a - b)
+        R = np.column_stack([-F.sum(axis=1) - Rb, Rb])
+        xs = np.concatenate([xf, sup])
+        M = np.hstack([F, R]) @ (_active(x, right, xs) * (x[:, None] - xs[None, :])).T - C @ _active(x, right, xf).T
+        kappa = M / EI
+        theta, w = _integrate(kappa, x)
+        ia, ib = np.searchsorted(x, sup, side="left")       # a support's left-limit node (w is continuous)
+        c1 = -(w[:, ib] - w[:, ia]) / (b - a)
+        c0 = -w[:, ia] - c1 * a
+        w = w + c0[:, None] + c1[:, None] * x[None, :]
+        theta = theta + c1[:, None]
+    else:
+        R, _, kappa, theta, w = _solve_plane(x, right, EI, sup, xf, F, xf, C)
     # the exact cubic of the segment holding each query point, both planes at once (shaft_beam._Plane.at)
     xq = np.asarray(x_query_mm, dtype=float)
     i = np.clip(np.searchsorted(x, xq, side="right") - 1, 0, x.size - 2)

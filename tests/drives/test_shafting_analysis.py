@@ -377,3 +377,22 @@ def test_thicker_drawn_shaft_never_less_safe_property(two_stage):
         assert least(d + step) >= least(d) * (1 - 1e-12)
 
     check()
+
+
+@pytest.mark.parametrize("supports", [(10.0, 230.0), (0.0, 120.0, 240.0)])
+def test_beam_deflections_on_two_and_three_supports(supports):
+    # the lean beam against shaft_beam.analyse_shaft (its own linear system), a stepped shaft, forces and a couple
+    from geardesign.drives.shafting_analysis import beam_deflections
+
+    secs = [(60.0, 30.0), (120.0, 40.0, 10.0), (60.0, 30.0)]
+    loads = [ShaftLoad(50.0, fy_n=-2000.0, fz_n=800.0), ShaftLoad(170.0, fy_n=1500.0, fx_n=900.0, y_mm=40.0),
+             ShaftLoad(235.0, fz_n=-600.0)]
+    a = analyse_shaft(ShaftModel(secs, supports, loads))
+    xq = np.linspace(0.0, 240.0, 9)
+    R, w = beam_deflections(secs, supports, [ld.x_mm for ld in loads], [ld.fy_n for ld in loads],
+                            [ld.fz_n for ld in loads], [-ld.y_mm * ld.fx_n for ld in loads], [0.0] * 3, xq)
+    ref = a.deflection_at(xq)
+    scale = np.abs(ref[["wy_mm", "wz_mm"]].to_numpy()).max()
+    np.testing.assert_allclose(w.T, ref[["wy_mm", "wz_mm"]].to_numpy(), rtol=0, atol=1e-10 * scale)
+    np.testing.assert_allclose(R[0], a.reactions["Ry_n"].to_numpy(), rtol=1e-10, atol=1e-8)
+    np.testing.assert_allclose(R[1], a.reactions["Rz_n"].to_numpy(), rtol=1e-10, atol=1e-8)
