@@ -68,6 +68,7 @@ _NAMES = {
     "virtual_power_torque": "mechanism.kinetostatics", "plot_torque": "mechanism.plot",
     "WormPair": "gears.worm.pair", "worm_geometry": "gears.worm.geometry", "select_worm": "gears.worm.series",
     "WormStage": "drives.stage_kinds.worm",
+    "Shafting": "drives.shafting", "DriveShaft": "drives.shafting",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {

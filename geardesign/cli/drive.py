@@ -40,13 +40,71 @@ def add_parser(subparsers):
                "refused (each stage carries its own shaft's load, in one material).")
     p.add_argument("scene", help="a scene file (.toml) with a [drive] section")
     add_output_file(p, "--plot", "PNG", "the drive's diagram")
+    p.add_argument("--layout-plot", metavar="PNG", default=None,
+                   help="with shafts: write the shafts, gears and bearings seen from above, to scale, to this PNG file")
     p.add_argument("--report", metavar="HTML", default=None,
                    help="write a one-page report (checks, power flow, stages, gear geometry, keys, diagram) to this HTML file")
     add_json_flag(p)
     add_progress_flag(p)
     add_load_args(p, limits=True, spectrum=False)   # a stage's spectrum: not yet (issue 38's GearStage(spectrum=))
+    _add_shafting_args(p)
     add_cluster_args(p)
     return p
+
+
+# option -> Shafting keyword (docs/shafts_in_drive.md); any of them puts the drive's gears on shafts
+_SHAFTING_OPTIONS = (("--shaft-material", "material", str, "STEEL",
+                      "the shafts' steel (catalogs/shaft_materials_din743.csv; default 42CrMo4)"),
+                     ("--shaft-safety", "S_min", float, "S", "least DIN 743 safety of the shafts (1.2)"),
+                     ("--bearing-life", "life_h", float, "H", "required bearing life L10h, h (20000)"),
+                     ("--bearing-series", "bearing_series", str, "SERIES",
+                      "bearing series the bearings are chosen from: 62, 63, 72B, 73B, NU2, NU3, or several "
+                      "joined by commas (62,63,NU2,NU3)"),
+                     ("--oil-temperature", "oil_temperature_c", float, "C",
+                      "oil temperature for the computed efficiencies, °C (70; with --oil)"))
+
+
+def _add_shafting_args(p) -> None:
+    g = p.add_argument_group("shafts, bearings and efficiency (docs/shafts_in_drive.md)")
+    g.add_argument("--shafts", action="store_true",
+                   help="put the gear stages on shafts: bearing reactions, DIN 743 seat sizes, bearings for the life, "
+                        "seat keys, K_Hβ from the shafts' deflection (also on with [drive.shafting] or any option here)")
+    for flag, key, kind, metavar, text in _SHAFTING_OPTIONS:
+        g.add_argument(flag, dest="shafting_" + key, type=kind, default=None, metavar=metavar, help=text)
+    g.add_argument("--oil", default=None, metavar="NU40,NU100",
+                   help="the oil's kinematic viscosities at 40 and 100 °C, mm²/s: the gear stages' efficiencies are "
+                        "then computed (ISO/TR 14179-2, SKF bearing friction) where a stage gives none")
+
+
+def _with_shafting(section: dict, args) -> dict:
+    """The [drive] section with the shafting options (each checked by its option's name)."""
+    from ..drives.shafting import Shafting
+
+    given = {key: getattr(args, "shafting_" + key) for _, key, *_ in _SHAFTING_OPTIONS
+             if getattr(args, "shafting_" + key) is not None}
+    if "bearing_series" in given:
+        given["bearing_series"] = tuple(v.strip() for v in given["bearing_series"].split(","))
+    for flag, key, *_ in _SHAFTING_OPTIONS:
+        if key in given:
+            try:
+                Shafting(**{key: given[key]})
+            except GearDesignError as exc:      # the keyword's message, said of the option
+                text = str(exc)
+                raise GearDesignError(f"{flag} must {text.split(' must ', 1)[1]}" if " must " in text
+                                      else f"{flag}: {text}") from None
+    if args.oil is not None:
+        try:
+            nu40, nu100 = (float(v) for v in args.oil.split(","))
+            from ..gears.efficiency import Lubricant
+
+            Lubricant(nu40, nu100)
+        except (ValueError, GearDesignError) as exc:
+            why = str(exc) if isinstance(exc, GearDesignError) else f"expected two numbers NU40,NU100, got {args.oil!r}"
+            raise GearDesignError(f"--oil: {why}") from None
+        given.update(nu40=nu40, nu100=nu100)
+    if not (given or args.shafts):
+        return section
+    return dict(section, shafting={**(section.get("shafting") or {}), **given})
 
 
 _STAGE_LOAD = (("material", "material"), ("life_h", "life_h"), ("application_factor", "application_factor"),
@@ -120,23 +178,31 @@ def run(args) -> int:
     if "drive" not in scene:
         raise GearDesignError(f"{args.scene}: no [drive] section (this command runs only that section)")
     target = check_output_path(args.plot, overwrite=args.overwrite) if args.plot else None
+    layout_png = (check_output_path(args.layout_plot, overwrite=args.overwrite, what="--layout-plot")
+                  if args.layout_plot else None)
     if args.report:
         check_output_path(args.report, overwrite=args.overwrite, suffixes=(".html", ".htm"), what="--report")
     bar = Progress(1, "drive: designs", show=True if args.progress else None)
     try:
         with cluster_from_args(args) as client:
-            drive, motor, opt, an = compute_drive({**_with_load(scene.sections["drive"], args), "_client": client},
-                                                  bar.to)
+            drive, motor, opt, an = compute_drive({**_with_shafting(_with_load(scene.sections["drive"], args), args),
+                                                   "_client": client}, bar.to)
     finally:
         bar.close()
-    if target is not None and an is not None:
+    if layout_png is not None and an is not None and an.shafting is None:
+        raise GearDesignError("--layout-plot: the drive has no shafts (give --shafts, a shafting option or "
+                              "[drive.shafting])")
+    for path, draw in ((target, "plot"), (layout_png, "plot_layout")):
+        if path is None or an is None:
+            continue
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
 
-        ax = an.plot()
+        ax = getattr(an, draw)()
         try:
-            write_file_atomic(target, lambda tmp: ax.figure.savefig(tmp, dpi=110, bbox_inches="tight", format="png"))
+            write_file_atomic(path, lambda tmp, fig=ax.figure: fig.savefig(tmp, dpi=110, bbox_inches="tight",
+                                                                          format="png"))
         finally:
             plt.close(ax.figure)
     if args.report and an is not None:
@@ -173,7 +239,26 @@ def run(args) -> int:
         if len(an.keys):
             print()
             print_frame(an.keys.drop(columns=["message"]), title="keys:")
+        _print_shafting(an)
     return 0 if ok else 1
+
+
+def _print_shafting(an) -> None:
+    """The shafts, bearings, checked sections, seat keys, efficiencies and K_Hβ of a drive with shafting."""
+    if an.shafting is None:
+        return
+    print()
+    print_wrapped(f"overall efficiency {an.overall_efficiency:.5f}; heat to dissipate {1000 * an.heat_kw:.5g} W")
+    for name, title in (("shafts", "shafts (DIN 743; d at the ends, bearing seats, gear seats):"),
+                        ("bearings", "bearings (ISO 281):"), ("sections", "checked sections (DIN 743):"),
+                        ("seat_keys", "keys at the seats:"),
+                        ("gear_deflections", "deflection and slope of the shafts at each gear:"),
+                        ("efficiency", "efficiency of each stage:"),
+                        ("mesh_misalignment", "K_Hβ from the shafts (ISO 6336-1 method C with the shafts' f_sh):")):
+        table = an.shafting.get(name)
+        if table is not None and len(table):
+            print()
+            print_frame(table, title=title)
 
 
 def factor_columns(result):

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from .stage_kinds import kind_named
 
-__all__ = ["plot_drive", "Canvas", "SCALE_PT"]
+__all__ = ["plot_drive", "plot_layout", "Canvas", "SCALE_PT"]
 
 _INPUT_COLOR = "#c7e9c0"
 SCALE_PT = 54.0      # points per diagram unit at the default size (a gear's large wheel has radius 0.9)
@@ -84,7 +84,7 @@ def _stages(canvas, analysis, x0: float) -> tuple[list, list, list]:
         mid = 0.5 * (x + x_out)
         if text:
             above.append((mid, text, "k"))
-        below.append((mid, f"u {s['ratio']:.4g}, η {s['efficiency']:g}", "k"))
+        below.append((mid, f"u {s['ratio']:.4g}, η {s['efficiency']:.4g}", "k"))
     return xs, above, below
 
 
@@ -92,9 +92,12 @@ def _shaft_labels(ax, analysis, xs, y0: float) -> tuple[list, list]:
     """The shafts' dots and key marks; (shaft labels, key labels) as (x, text, colour)."""
     flow = analysis.flow
     shafts, keys = [], []
+    carried = _shaft_texts(ax, analysis, xs, y0)
     for k, x in enumerate(xs):
         ax.plot([x], [y0], "o", color="k", ms=4, zorder=5)
-        shafts.append((x, f"shaft {k}\n{flow['n_rpm'].iloc[k]:.4g} rpm\n{flow['torque_nm'].iloc[k]:.4g} N·m", "k"))
+        extra, colour = carried.get(k, ("", "k"))
+        shafts.append((x, f"shaft {k}\n{flow['n_rpm'].iloc[k]:.4g} rpm\n{flow['torque_nm'].iloc[k]:.4g} N·m{extra}",
+                       colour))
     for _, row in analysis.keys.reset_index(drop=True).iterrows():
         x = xs[int(row["at"])]
         size = f"{row['b_mm']:g}x{row['h_mm']:g}x{row['length_mm']:g}" if row["length_mm"] == row["length_mm"] else "none"
@@ -102,6 +105,31 @@ def _shaft_labels(ax, analysis, xs, y0: float) -> tuple[list, list]:
         ax.plot([x], [y0], "s", color=colour, ms=7, zorder=6)
         keys.append((x, f"key {size}" + (" (2)" if row["n_keys"] == 2 else ""), colour))
     return shafts, keys
+
+
+def _shaft_texts(ax, analysis, xs, y0: float) -> dict:
+    """A drive with shafting: each shaft on bearings drawn with a bearing ring about it (red when one of its
+    bearings or sections fails) and {shaft k: (its label's lines: bearing-seat d, bearings and their L10h, least
+    DIN 743 safety; colour)}."""
+    from matplotlib.patches import Circle
+
+    sh = getattr(analysis, "shafting", None)
+    if sh is None:
+        return {}
+    checks = analysis.checks
+    out = {}
+    bearings = sh["bearings"]
+    for _, r in sh["shafts"].iterrows():
+        k = int(r["shaft"])
+        mine = checks["item"].isin([f"shaft {k}", f"bearing {k}A", f"bearing {k}B"])
+        bad = bool((~checks.loc[mine, "ok"]).any())
+        colour = "red" if bad else "k"
+        for radius, fc in ((0.16, "white"), (0.1, "white")):
+            ax.add_patch(Circle((xs[k], y0), radius, fc=fc, ec=colour, lw=1.2, zorder=4))
+        lives = bearings.loc[bearings["shaft"] == k, "L10h"].to_numpy()
+        out[k] = (f"\nd {r['d_bearing_mm']:g} mm, {r['bearings'].split('/')[0]} x2\nL10h {lives.min():.3g} h, "
+                  f"S {r['least_safety']:.3g}", colour)
+    return out
 
 
 def _lay_out(ax, bands, top: float, bottom: float, scale_pt: float) -> tuple[float, float, float, float]:
@@ -204,4 +232,90 @@ def plot_drive(analysis, ax=None):
         x0, x1, ya, yb = _limits(ax, canvas, bands, scale, title_pt / scale)
         ax.set_xlim(x0, x1)
         ax.set_ylim(ya, yb)
+    return ax
+
+
+def plot_layout(analysis, ax=None):
+    """The drive's shafts seen from above, to scale (mm): a :class:`~geardesign.drives.drive.DriveAnalysis` with
+    shafting. Each shaft on its bearings at y = Σ a_w of the gear stages before it, its sections stepped, the
+    bearings aligned in the two housing walls (crossed boxes, d × D × B, red when a check of theirs fails), each
+    gear as its tip diameter over its face width, overhung sprockets and couplings as their hubs; returns the Axes.
+    """
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+
+    sh = getattr(analysis, "shafting", None)
+    if sh is None:
+        from ..errors import GearDesignError
+
+        raise GearDesignError("plot_layout needs a drive analysed with shafting (Drive(shafting=Shafting()))")
+    if ax is None:
+        _, ax = plt.subplots(figsize=(7.0, 5.0))
+    stages = analysis.stages
+    y, ys = 0.0, {}
+    for k, st in enumerate(stages, start=1):       # the shafts' places across the reducer
+        s = st["summary"]
+        ys.setdefault(k - 1, y)
+        if s["kind"] == "gear":
+            y += s["a_w_mm"]
+        elif s["kind"] == "chain":
+            y += s["center_distance_mm"]
+        ys[k] = y
+    tips = {}
+    for st in stages:
+        if st["summary"]["kind"] == "gear":
+            geo = st["pair"].geometry()
+            tips[st["summary"]["name"]] = (geo.da1, geo.da2, st["stage"].width_mm)
+    bearings = sh["bearings"]
+    failing = set(analysis.checks.loc[~analysis.checks["ok"], "item"])
+    colours = {s["summary"]["name"]: kind_named(s["summary"]["kind"]).colour for s in stages}
+    x_lo = x_hi = 0.0
+    for k, a in sh["analyses"].items():
+        m = a.model
+        x0 = m.supports_mm[0]                      # bearing A in the wall at x = 0
+        yk = ys[k]
+        ends = m.section_ends_mm
+        for (length, d, _), xa in zip(m.sections, ends[:-1]):
+            ax.add_patch(Rectangle((xa - x0, yk - d / 2), length, d, fc="#bdbdbd", ec="k", lw=0.6, zorder=2))
+        x_lo, x_hi = min(x_lo, -x0), max(x_hi, ends[-1] - x0)
+        for ld in m.loads:
+            e = next(e for e in sh["elements"][k] if e.name == ld.name)
+            if e.kind in ("pinion", "wheel"):
+                da1, da2, b = tips[e.name]
+                dia = da1 if e.kind == "pinion" else da2
+                ax.add_patch(Rectangle((ld.x_mm - x0 - b / 2, yk - dia / 2), b, dia, fc=colours[e.name], ec="k",
+                                       lw=0.8, alpha=0.85, zorder=3))
+            else:
+                d = float(m.diameter_at(ld.x_mm)[0])
+                hub, w = 2.0 * d, 1.5 * d
+                x_lo, x_hi = min(x_lo, ld.x_mm - x0 - w / 2), max(x_hi, ld.x_mm - x0 + w / 2)
+                ax.add_patch(Rectangle((ld.x_mm - x0 - w / 2, yk - hub / 2), w, hub,
+                                       fc=colours.get(e.name, _INPUT_COLOR), ec="k", lw=0.8, zorder=3))
+                ax.text(ld.x_mm - x0, yk + hub / 2 + 4, e.name, ha="center", va="bottom", fontsize=6.5)
+        for _, b in bearings[bearings["shaft"] == k].iterrows():
+            colour = "red" if b["name"] in failing else "k"
+            h = (b["D_mm"] - b["bore_mm"]) / 2
+            for sign in (1, -1):
+                yb = yk + sign * (b["bore_mm"] / 2 + h / 2)
+                xb = b["x_mm"] - x0
+                ax.add_patch(Rectangle((xb - b["B_mm"] / 2, yb - h / 2), b["B_mm"], h, fc="white", ec=colour, lw=1.0,
+                                       zorder=4))
+                ax.plot([xb - b["B_mm"] / 2, xb + b["B_mm"] / 2], [yb - h / 2, yb + h / 2], color=colour, lw=0.7, zorder=5)
+                ax.plot([xb - b["B_mm"] / 2, xb + b["B_mm"] / 2], [yb + h / 2, yb - h / 2], color=colour, lw=0.7, zorder=5)
+    for k in sh["analyses"]:          # each shaft's name and bearings right of the drawing
+        yk = ys[k]
+        bb = bearings[bearings["shaft"] == k]
+        ax.text(x_hi + 10, yk, f"shaft {k}\n{bb['designation'].iloc[0]} x2", ha="left", va="center", fontsize=7,
+                color="red" if f"shaft {k}" in failing or set(bb["name"]) & failing else "k")
+    span = max(float(r["span_mm"]) for _, r in sh["shafts"].iterrows())
+    y_all = [ys[k] for k in sh["analyses"]]
+    for xw in (0.0, span):                          # the housing walls through the bearings
+        ax.plot([xw, xw], [min(y_all) - 60, max(y_all) + 60], color="#636363", lw=1.0, ls="--", zorder=1)
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    ax.set_xlim(x_lo - 20, x_hi + 100)
+    ax.set_xlabel("x, mm (bearing A of each shaft at 0)")
+    ax.set_ylabel("y, mm (the line of centres)")
+    verdict = "every check holds" if analysis.success else "FAILS"
+    ax.set_title(f"shafts and bearings seen from above: {verdict}", fontsize=_TITLE_PT)
     return ax

@@ -68,6 +68,11 @@ class Drive:
     ``motor`` (a :class:`~geardesign.drives.motor.MotorSelection` or its ``.motor`` row) sets the
     input speed to its rated speed and, when no load is given, the power to its rated power; the
     motor then has a check ``power``: 1 − P_in/P_rated (when the load is given, not taken from it).
+
+    ``shafting`` (a :class:`~geardesign.drives.shafting.Shafting`, None: none) puts the gear stages on shafts
+    (the default layout, or the shafts it gives) and adds to :meth:`analyse` the bearing reactions, DIN 743
+    safeties, seat sizes, bearings and their lives, keys at the seats, K_Hβ from the shafts' deflection and,
+    with a lubricant, the gear stages' computed efficiencies (docs/shafts_in_drive.md).
     """
 
     stages: tuple
@@ -76,6 +81,7 @@ class Drive:
     output_torque_nm: float | None = None
     shafts: tuple = ()
     motor: object = None
+    shafting: object = None
     _load_from_motor: bool = field(default=False, init=False, repr=False, compare=False)
 
     def __repr__(self) -> str:
@@ -130,6 +136,16 @@ class Drive:
                 raise GearDesignError(f"shaft '{s.name}': at = {s.at} must be in [0, {len(stages)}] "
                                       f"(0 the input shaft, k the output shaft of stage k)")
         object.__setattr__(self, "shafts", shafts)
+        if self.shafting is not None:
+            from .shafting import Shafting
+
+            if not isinstance(self.shafting, Shafting):
+                raise GearDesignError(f"shafting must be a Shafting (geardesign.drives.shafting), got "
+                                      f"{type(self.shafting).__name__}")
+            for ds in self.shafting.layout:
+                if ds.at > len(stages):
+                    raise GearDesignError(f"shafting layout: shaft {ds.at} is beyond the drive's shafts 0 … "
+                                          f"{len(stages)}")
 
     # -- helpers
     def _efficiencies(self) -> np.ndarray:
@@ -158,19 +174,9 @@ class Drive:
         return key_rows, key_results, rows
 
     # -- analyse
-    def analyse(self, objective: str = "min_size") -> DriveAnalysis:
-        """The power flow, every stage's checks and margins, every key, the smallest margin.
-
-        Every stage needs its tooth counts; free gear shifts are solved (``objective`` only picks
-        the shift rule, as in :meth:`optimize`), a free chain row is chosen by chain.design. To re-analyse
-        an optimum, take ``best.drive`` (its shifts fixed); tooth counts alone are solved again for
-        ``objective``, which must then be the optimum's to give the same shifts.
-        """
-        kinds = [kind_of(s) for s in self.stages]
-        ratios = np.array([kind.fixed_ratio(s) for kind, s in zip(kinds, self.stages)])
-        n, T, P = (a.ravel() for a in self._flow(ratios))
-        rows = [("motor", name, float(v)) for name, v in self._motor_margins(P[0]).items()]
-        stages_out = []
+    def _stage_pass(self, kinds, n, T, objective) -> tuple:
+        """(stage results, their check rows, size, mass) of every stage at the flow n, T."""
+        rows, stages_out = [], []
         size = mass = 0.0
         for i, (kind, st) in enumerate(zip(kinds, self.stages)):
             flow = StageFlow(float(n[i]), float(T[i]), float(n[i + 1]), float(T[i + 1]))
@@ -179,8 +185,50 @@ class Drive:
             size += out.pop("size", 0.0)
             mass += out.pop("mass", 0.0)
             stages_out.append(dict(out, flow=flow))
+        return stages_out, rows, size, mass
+
+    def analyse(self, objective: str = "min_size") -> DriveAnalysis:
+        """The power flow, every stage's checks and margins, every key, the smallest margin.
+
+        Every stage needs its tooth counts; free gear shifts are solved (``objective`` only picks
+        the shift rule, as in :meth:`optimize`), a free chain row is chosen by chain.design. To re-analyse
+        an optimum, take ``best.drive`` (its shifts fixed); tooth counts alone are solved again for
+        ``objective``, which must then be the optimum's to give the same shifts.
+
+        With ``shafting``: the shafts, bearings, seat keys and (with a lubricant) the computed efficiencies
+        too; the power flow is solved again with the computed efficiencies until they change by less than
+        :data:`EFFICIENCY_TOL`, then the gear stages' strength is checked with K_Hβ from the shafts' f_sh.
+        """
+        kinds = [kind_of(s) for s in self.stages]
+        ratios = np.array([kind.fixed_ratio(s) for kind, s in zip(kinds, self.stages)])
+        eta = self._efficiencies()
+        shafting = efficiency = None
+        for _ in range(EFFICIENCY_PASSES):
+            n, T, P = (a.ravel() for a in power_flow(self.n_in_rpm, ratios, eta, self.power_kw,
+                                                     self.output_torque_nm))
+            stages_out, stage_rows, size, mass = self._stage_pass(kinds, n, T, objective)
+            if self.shafting is None:
+                break
+            from .shafting_analysis import analyse_shafting, stage_efficiencies
+
+            shafting = analyse_shafting(self, stages_out, n, T)
+            computed, efficiency = stage_efficiencies(self, stages_out, n, T, shafting)
+            if float(np.max(np.abs(computed - eta))) <= EFFICIENCY_TOL:
+                break
+            eta = computed
+        if shafting is not None:
+            from .shafting_analysis import with_shaft_misalignment
+
+            stages_out, stage_rows, shafting["mesh_misalignment"] = with_shaft_misalignment(
+                self, kinds, stages_out, stage_rows, shafting["f_sh"], objective)
+            shafting["efficiency"] = efficiency
+            for st, e in zip(stages_out, eta):      # the η the power flow took (computed where not given)
+                st["summary"]["efficiency"] = float(e)
+        rows = [("motor", name, float(v)) for name, v in self._motor_margins(P[0]).items()] + stage_rows
         key_rows, key_results, key_checks = self._keys(T)
         rows += key_checks
+        if shafting is not None:
+            rows += shafting["rows"]
         checks = _checks_table(rows)
         flow = pd.DataFrame({"shaft": np.arange(len(n)),
                              "after": ["input" if self.motor is None else f"motor {self.motor['designation']}"]
@@ -201,7 +249,8 @@ class Drive:
                                        .itertuples(index=False))))
         return DriveAnalysis(success=ok, message=msg, flow=flow, checks=checks, keys=keys, stages=tuple(stages_out),
                              min_margin=mm, limiting=lim, total_ratio=float(np.prod(ratios)), size_mm2=size,
-                             mass_kg=mass, drive=self, key_results=tuple(key_results))
+                             mass_kg=mass, drive=self, key_results=tuple(key_results),
+                             overall_efficiency=float(P[-1] / P[0]), heat_kw=float(P[0] - P[-1]), shafting=shafting)
 
     # -- optimize
     def optimize(self, total_ratio, ratio_tol=0.03, objective="min_size", top=10, progress=None, *, client=None,
@@ -246,6 +295,8 @@ def _checks_table(rows) -> pd.DataFrame:
     return checks
 
 
+EFFICIENCY_TOL = 1e-6   # the computed efficiencies' fixed point: passes stop when no η moves by more
+EFFICIENCY_PASSES = 6   # ... or after this many power flows (the losses change little with the torque)
 AT_LIMIT = 1e-6     # a margin this close to 0 holds with no reserve: the message says so
 
 

@@ -10,7 +10,11 @@ from ..inline import html_view
 from ..results import Result, plain
 from .diagram import plot_drive
 
-__all__ = ["DriveAnalysis", "DriveOptimum"]
+__all__ = ["DriveAnalysis", "DriveOptimum", "SHAFTING_TABLES"]
+
+# the tables a drive with shafting adds (Drive(shafting=...)): DriveAnalysis.table(name), to_dict's keys
+SHAFTING_TABLES = ("shafts", "bearings", "sections", "seat_keys", "gear_deflections", "efficiency",
+                   "mesh_misalignment")
 
 
 @dataclass(frozen=True, eq=False)
@@ -40,19 +44,44 @@ class DriveAnalysis(Result):
     mass_kg: float
     drive: object = field(repr=False, default=None)
     key_results: tuple = field(repr=False, default=())
+    overall_efficiency: float = float("nan")
+    heat_kw: float = float("nan")
+    shafting: dict | None = field(repr=False, default=None)
 
     _table_fields = ("flow", "checks", "keys")
 
     def to_dict(self) -> dict:
-        return plain({"status": self.status, "success": self.success, "message": self.message,
-                      "total_ratio": self.total_ratio, "min_margin": self.min_margin, "limiting": self.limiting,
-                      "size_mm2": self.size_mm2, "mass_kg": self.mass_kg, "flow": self.flow, "checks": self.checks,
-                      "keys": self.keys, "stages": [_stage_dict(s) for s in self.stages]})
+        out = {"status": self.status, "success": self.success, "message": self.message,
+               "total_ratio": self.total_ratio, "min_margin": self.min_margin, "limiting": self.limiting,
+               "size_mm2": self.size_mm2, "mass_kg": self.mass_kg, "overall_efficiency": self.overall_efficiency,
+               "heat_kw": self.heat_kw, "flow": self.flow, "checks": self.checks, "keys": self.keys,
+               "stages": [_stage_dict(s) for s in self.stages]}
+        if self.shafting is not None:
+            out.update({k: self.shafting[k] for k in SHAFTING_TABLES if self.shafting.get(k) is not None})
+        return plain(out)
+
+    def table(self, name: str) -> pd.DataFrame:
+        """One of the shafting's tables by name (:data:`SHAFTING_TABLES`: shafts, bearings, sections, seat_keys,
+        gear_deflections, efficiency, mesh_misalignment); a drive without shafting has none."""
+        from ..errors import GearDesignError
+
+        if name not in SHAFTING_TABLES:
+            raise GearDesignError(f"table must be one of {', '.join(SHAFTING_TABLES)}, got {name!r}")
+        if self.shafting is None or self.shafting.get(name) is None:
+            raise GearDesignError(f"this drive has no {name} table (give Drive(shafting=Shafting(...)))")
+        return self.shafting[name]
 
     def __repr__(self) -> str:
         with pd.option_context("display.width", 160, "display.max_columns", 20):
             flow = self.flow.to_string(index=False, float_format=lambda v: f"{v:.5g}")
-        return f"DriveAnalysis: {self.message}\n{flow}"
+        text = f"DriveAnalysis: {self.message}\n{flow}"
+        if self.shafting is not None:
+            text += (f"\noverall efficiency {self.overall_efficiency:.5f}, heat to dissipate "
+                     f"{1000 * self.heat_kw:.4g} W")
+            for _, r in self.shafting["shafts"].iterrows():
+                text += (f"\n  shaft {r['shaft']} ({r['layout']}): d_bearing {r['d_bearing_mm']:g} mm, bearings "
+                         f"{r['bearings']}, least DIN 743 safety {r['least_safety']:.3g}")
+        return text
 
     def _repr_html_(self) -> str:
         """Jupyter's view: the text, and the drive's diagram inline."""
@@ -63,6 +92,12 @@ class DriveAnalysis(Result):
     def plot(self, ax=None):
         """The drive's diagram (input, stages, shafts with n and T, keys): a matplotlib Axes."""
         return plot_drive(self, ax=ax)
+
+    def plot_layout(self, ax=None):
+        """A drive with shafting: its shafts, gears and bearings seen from above, to scale (a matplotlib Axes)."""
+        from .diagram import plot_layout
+
+        return plot_layout(self, ax=ax)
 
 
 def _stage_dict(stage: dict) -> dict:

@@ -543,13 +543,22 @@ class Search:
         table = pd.DataFrame(self._ranked_rows(feas) + failing)
         if len(table):
             table["rank"] = table["rank"].astype("Int64")     # failing designs have no rank
-        if feas.size:
+        shafts_note = ""
+        if feas.size and self.drive.shafting is not None:      # the ranked designs on their shafts
+            c, best, shafts_note = self._with_shafts(feas, table)
+        elif feas.size:
             c = feas[0]
             best = self._fixed(c).analyse(self.objective)
+        if feas.size and best is not None:
             msg = (f"u = {float(np.prod(self.ratios[c])):.6g} ({100 * float(err[c]):.3g} % off): size "
                    f"{ex['size'][c]:.6g} mm², mass {ex['mass'][c]:.4g} kg, smallest margin {ex['mm'][c]:+.4f} "
-                   f"({ex['labels'][ex['lim'][c]]}); {int(ex['done'].sum())} of {self.n_cand} designs evaluated in full")
+                   f"({ex['labels'][ex['lim'][c]]}); {int(ex['done'].sum())} of {self.n_cand} designs evaluated in full"
+                   + shafts_note)
             conflict = ()
+        elif feas.size:     # every ranked design fails on its shafts
+            msg = "no ranked design holds on its shafts and bearings" + shafts_note
+            conflict = tuple(f"{a}: {b}" for a, b in self._shaft_fails)
+            feas = feas[:0]
         else:
             best = None
             msg = ("no design passes every check; the closest fails " + "; ".join(conflict)) if conflict else \
@@ -559,6 +568,26 @@ class Search:
                             ratio_tol=self.tol, table=table, best=best, conflict=conflict,
                             n_combinations=int(self.n_comb), n_candidates=int(self.n_cand),
                             n_shift_solves=int(self.n_solves), time_s=time.perf_counter() - self.t0)
+
+    def _with_shafts(self, feas, table) -> tuple:
+        """(design, its analysis or None, a note): the ranked designs analysed with their shafts, bearings and K_Hβ
+        from the shafts (Drive(shafting=...)) in rank order, the first that holds every check taken; the table's
+        column ``shafts`` says for each one analysed whether it held or which checks failed."""
+        table["shafts"] = "not analysed"
+        self._shaft_fails = ()
+        for rank, c in enumerate(feas[:self.top]):
+            an = self._fixed(c).analyse(self.objective)
+            bad = an.checks.loc[~an.checks["ok"], ["item", "check"]]
+            table.loc[table["rank"] == rank + 1, "shafts"] = ("holds" if an.success else "fails " + "; ".join(
+                f"{a}: {b}" for a, b in bad.itertuples(index=False)))
+            if an.success:
+                note = "" if rank == 0 else (f"; ranks 1 to {rank} fail with their shafts, bearings or K_Hβ from the "
+                                             f"shafts (column shafts), rank {rank + 1} holds")
+                return c, an, note
+            if rank == 0:
+                self._shaft_fails = tuple(bad.itertuples(index=False))
+        return feas[0], None, (f"; the {min(self.top, feas.size)} ranked designs each fail with their shafts, "
+                               f"bearings or K_Hβ from the shafts (column shafts)")
 
     def _closest_solved(self) -> str:
         """When the closest failing design was stopped by its batch checks (its solved stages never

@@ -32,11 +32,12 @@ from .chain.formulas import recommended_z1
 from .chain.inputs import RATIO_RANGE, Z1_RANGE, validate_inputs
 from .chain.tables import load_chains
 
-__all__ = ["GivenStage", "GearStage", "ChainStage", "Shaft", "EFFICIENCY_RANGE", "GIVEN_RATIO_RANGE",
+__all__ = ["GivenStage", "GearStage", "ChainStage", "Shaft", "EFFICIENCY_RANGE", "GEAR_EFFICIENCY", "GIVEN_RATIO_RANGE",
            "GEAR_PAIRS_MAX", "STEEL_DENSITY_KG_M3", "FACE_WIDTH_PITCHES", "stage_area_mm2", "disc_mass_kg",
            "stage_material"]
 
-EFFICIENCY_RANGE = (0.3, 1.0)     # a stage that loses more than 70 % is a brake, not a transmission
+EFFICIENCY_RANGE = (0.3, 1.0)
+GEAR_EFFICIENCY = 0.98            # a gear stage's efficiency when neither given nor computed (Drive shafting)     # a stage that loses more than 70 % is a brake, not a transmission
 GIVEN_RATIO_RANGE = (1e-3, 1e4)   # a bought unit may step up (u < 1) or be a worm gear (u to ~100s)
 GEAR_PAIRS_MAX = 5000             # tooth pairs one gear stage may enumerate (each may need a shift solve)
 STEEL_DENSITY_KG_M3 = 7850.0      # gear blanks and sprockets as steel discs
@@ -163,6 +164,11 @@ class GearStage:
     ``strength`` is a dict of :func:`~geardesign.gears.strength.pair_strength` options for the strength checks
     (``accuracy_grade``, ``nu40``, ``Rz_flank_um``, ``Rz_root_um``, ``S_Hmin``, ``S_Fmin``, ``factors``, ...;
     None: the model's defaults).
+
+    ``efficiency``: None (the default) takes :data:`GEAR_EFFICIENCY` (0.98), or the efficiency computed from the
+    stage's losses when the drive has a :class:`~geardesign.drives.shafting.Shafting` with a lubricant; a given
+    number always wins (``efficiency_given`` records which: it is set from ``efficiency`` and carried over by
+    ``dataclasses.replace``).
     """
 
     m: float | None = None
@@ -170,7 +176,7 @@ class GearStage:
     z2: int | None = None
     x1: float | None = None
     x2: float | None = None
-    efficiency: float = 0.98
+    efficiency: float | None = None
     checks: dict | None = None
     beta_deg: float = 0.0
     face_width_mm: float | None = None
@@ -186,15 +192,24 @@ class GearStage:
     shift_bounds: tuple | None = None
     mating_type: str | None = None
     strength: dict | None = None
+    efficiency_given: bool | None = field(default=None, repr=False)
 
     kind = "gear"
 
-    __repr__ = compact_repr     # only what differs from the defaults
+    def __repr__(self) -> str:
+        """Only what differs from the defaults (an efficiency only when given)."""
+        text = compact_repr(self)
+        if self.efficiency_given:
+            return text
+        return text.replace(f"efficiency={self.efficiency:g}, ", "").replace(f", efficiency={self.efficiency:g})", ")")
 
     def __post_init__(self):
         if self.m is not None:    # None: sized by the load (see the class docstring)
             object.__setattr__(self, "m", one_number("m (module)", require_module(self.m)))
-        object.__setattr__(self, "efficiency", _efficiency(self.efficiency))
+        if self.efficiency_given is None:   # resolved once; a replace() carries it over with the number
+            object.__setattr__(self, "efficiency_given", self.efficiency is not None)
+        object.__setattr__(self, "efficiency", _efficiency(GEAR_EFFICIENCY if self.efficiency is None
+                                                          else self.efficiency))
         object.__setattr__(self, "name", _name(self.name, "gear"))
         object.__setattr__(self, "beta_deg", one_number("beta_deg", require_range("beta_deg", self.beta_deg,
                                                                                    *BETA_RANGE_DEG, unit="deg")))

@@ -2,7 +2,14 @@
 ``[drive.motor]`` chosen from the catalog), ``[[drive.stage]]`` entries (``kind`` = a registered stage
 kind: "given", "gear", "chain", "worm", with the keywords of gd.GivenStage / GearStage / ChainStage / WormStage, or one
 added by :func:`geardesign.drives.stage_kinds.register`) and ``[[drive.shaft]]`` keyed hubs.
-With ``total_ratio`` the drive is optimised; without it, analysed as given::
+With ``total_ratio`` the drive is optimised; without it, analysed as given.
+
+``[drive.shafting]`` (the keys of :class:`geardesign.drives.shafting.Shafting`; ``nu40`` with ``nu100`` give the
+lubricant of the computed efficiencies) puts the gear stages on shafts with bearings; a ``[[drive.shaft]]`` with
+``lengths_mm`` is a shaft as drawn (:class:`~geardesign.drives.shafting.DriveShaft`: ``at``, ``lengths_mm`` and
+``diameters_mm`` of its sections from the left end, ``supports_mm``, its elements' places in a table
+``[drive.shaft.positions]`` {stage name or "coupling": x_mm}, ``bearing_a``/``bearing_b``, ``material``), and
+switches the shafting on (docs/shafts_in_drive.md)::
 
     [drive]
     power_kw = 4
@@ -46,7 +53,7 @@ def load_drive(where: Where, scene_path, raw) -> dict:
 
     if not isinstance(raw, dict):
         where.fail("drive", None, f"expected a table [drive], got {_short(raw)} ({type_name(raw)})")
-    head = validate_table(where, "drive", {k: v for k, v in raw.items() if k not in ("stage", "shaft")},
+    head = validate_table(where, "drive", {k: v for k, v in raw.items() if k not in ("stage", "shaft", "shafting")},
                           drive_schema(""))
     if "stage" not in raw:
         where.fail("drive", "stage", "missing; expected one or more tables [[drive.stage]]")
@@ -58,14 +65,60 @@ def load_drive(where: Where, scene_path, raw) -> dict:
             where.fail(label, "kind", f"expected one of {', '.join(repr(k) for k in stage_kinds())}, got {_short(kind)}")
         spec = validate_table(where, label, t, drive_schema(kind))
         stages.append(kind_named(kind).scene_spec(spec, Path(scene_path).parent))
-    shafts = [validate_table(where, f"drive.shaft #{i + 1}", t, drive_schema("shaft"))
-              for i, t in enumerate(_tables(where, raw.get("shaft", []), "shaft"))] if "shaft" in raw else []
-    section = dict(head, stages=stages, shafts=shafts)
+    shafts, layout = [], []
+    for i, t in enumerate(_tables(where, raw["shaft"], "shaft") if "shaft" in raw else []):
+        label = f"drive.shaft #{i + 1}"
+        if "lengths_mm" in t:
+            layout.append(_layout_shaft(where, label, t))
+        else:
+            shafts.append(validate_table(where, label, t, drive_schema("shaft")))
+    section = dict(head, stages=stages, shafts=shafts, layout=layout)
+    if "shafting" in raw:
+        if not isinstance(raw["shafting"], dict):
+            where.fail("drive", "shafting", f"expected a table [drive.shafting], got {_short(raw['shafting'])}")
+        section["shafting"] = validate_table(where, "drive.shafting", raw["shafting"], drive_schema("shafting"))
+        if ("nu40" in section["shafting"]) != ("nu100" in section["shafting"]):
+            where.fail("drive.shafting", "nu100" if "nu40" in section["shafting"] else "nu40",
+                       "missing; nu40 and nu100 give the lubricant together")
     try:
         build_drive(section)
     except GearDesignError as exc:
         where.fail("drive", None, str(exc))
     return section
+
+
+def _layout_shaft(where: Where, label: str, t: dict) -> dict:
+    """A validated [[drive.shaft]] with lengths_mm (a shaft as drawn); its [drive.shaft.positions] by hand: its keys
+    are the user's stage names."""
+    pos = t.get("positions")
+    if not isinstance(pos, dict) or not pos:
+        where.fail(label, "positions", "missing; expected a table [drive.shaft.positions] {stage name or 'coupling' "
+                                       "= x_mm}")
+    for k, v in pos.items():
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            where.fail(f"{label}.positions", k, f"expected a number (x in mm), got {_short(v)} ({type_name(v)})")
+    spec = validate_table(where, label, {k: v for k, v in t.items() if k != "positions"}, drive_schema("shaft_layout"))
+    if len(spec["lengths_mm"]) != len(spec["diameters_mm"]):
+        where.fail(label, "diameters_mm", f"expected one diameter per length ({len(spec['lengths_mm'])}), got "
+                                          f"{len(spec['diameters_mm'])}")
+    if ("bearing_a" in spec) != ("bearing_b" in spec):
+        where.fail(label, "bearing_b" if "bearing_a" in spec else "bearing_a", "missing; give both bearings or neither")
+    return dict(spec, positions={str(k): float(v) for k, v in pos.items()})
+
+
+def _shafting(section: dict):
+    """The Shafting of a validated [drive] section, or None (no [drive.shafting], no drawn shaft)."""
+    if "shafting" not in section and not section.get("layout"):
+        return None
+    from ..drives.shafting import DriveShaft, Shafting
+    from ..gears.efficiency import Lubricant
+
+    kw = dict(section.get("shafting") or {})
+    nu40, nu100 = kw.pop("nu40", None), kw.pop("nu100", None)
+    layout = [DriveShaft(s["at"], tuple(zip(s["lengths_mm"], s["diameters_mm"])), tuple(s["supports_mm"]),
+                         s["positions"], bearings=(s["bearing_a"], s["bearing_b"]) if "bearing_a" in s else None,
+                         material=s.get("material")) for s in section.get("layout", ())]
+    return Shafting(layout=tuple(layout), lubricant=None if nu40 is None else Lubricant(nu40, nu100), **kw)
 
 
 def _stage(spec: dict):
@@ -90,7 +143,7 @@ def build_drive(section: dict):
     shafts = [Shaft(**{k: v for k, v in s.items()}) for s in section["shafts"]]
     drive = Drive(stages=[_stage(s) for s in section["stages"]], n_in_rpm=section.get("n_in_rpm"),
                   power_kw=section.get("power_kw"), output_torque_nm=section.get("output_torque_nm"),
-                  shafts=shafts, motor=motor)
+                  shafts=shafts, motor=motor, shafting=_shafting(section))
     return drive, motor
 
 
@@ -150,5 +203,17 @@ def run_drive(rep, section: dict) -> None:
     md += ["", "### Checks of the whole drive", "", md_table(an.checks), "", "### Keys", "",
            md_table(an.keys.drop(columns=["message"])), ""]
     md += [f"- {r['name']}: {r['message']}" for _, r in an.keys.iterrows()] + [""]
+    if an.shafting is not None:       # the shafts, bearings, sections, seat keys, efficiencies, K_Hβ
+        from ..drives.drive_results import SHAFTING_TABLES
+
+        rep.figures["drive_layout"] = an.plot_layout().figure
+        md += ["### Shafts, bearings and efficiency", "", f"Overall efficiency {an.overall_efficiency:.5f}; heat to "
+               f"dissipate {1000 * an.heat_kw:.5g} W.", "", "![shafts and bearings seen from above](drive_layout.png)",
+               ""]
+        for name in SHAFTING_TABLES:
+            table = an.shafting.get(name)
+            if table is not None and len(table):
+                rep.tables[f"drive_{name}"] = table
+                md += [f"#### {name.replace('_', ' ')}", "", md_table(table), ""]
     if opt is None:
         rep.summary.append("drive: " + an.message)

@@ -468,6 +468,7 @@ def drive_report_html(result, pictures: bool = True) -> str:
         parts += ["<h2>Keys</h2>", _frame(keys, {"d_mm": "{:.4g}", "hub_length_mm": "{:.4g}", "torque_nm": "{:.4g}",
                                                  "crush_mpa": "{:.4g}", "shear_mpa": "{:.4g}",
                                                  "margin_crush": "{:+.4f}", "margin_shear": "{:+.4f}"})]
+    parts += _shafting_parts(an)
     from .. import __version__
     parts.append(f'<p class="small">geardesign {__version__}. Geometry: ISO 21771:2007; strength: ISO 6336-1, -2, -3:2019 '
                  "(each factor with its clause); data block: ISO 1340:1976, GOST 2.403-75. Margins are dimensionless, "
@@ -477,8 +478,37 @@ def drive_report_html(result, pictures: bool = True) -> str:
         parts += ['<h2 class="pictures">Diagram</h2>',
                   f'<figure id="diagram"><img alt="drive diagram" src="{diagram}" style="width:auto;max-width:100%">'
                   "<figcaption>The drive seen end-on: each dot a shaft with its speed and torque, black squares "
-                  "keyed hubs.</figcaption></figure>"]
+                  "keyed hubs, rings the bearings of a shaft on bearings (red: one of its checks fails)."
+                  "</figcaption></figure>"]
+        if getattr(an, "shafting", None) is not None:
+            layout = _png(an.plot_layout().figure)
+            parts += [f'<figure id="layout"><img alt="shafts and bearings seen from above" src="{layout}" '
+                      'style="width:auto;max-width:100%"><figcaption>The shafts seen from above, to scale: '
+                      "sections, gears (tip diameter × face width), bearings in the housing walls (dashed)."
+                      "</figcaption></figure>"]
     return _page(f"Drive u = {an.total_ratio:.5g}", parts)
+
+
+_SHAFTING_SECTIONS = (("shafts", "Shafts (DIN 743; the default layout: docs/shafts_in_drive.md)"),
+                      ("bearings", "Bearings (ISO 281 L10h)"), ("sections", "Checked sections (DIN 743 S_D, S_F)"),
+                      ("seat_keys", "Keys at the seats"), ("gear_deflections", "Deflection and slope at each gear"),
+                      ("efficiency", "Efficiency of each stage (ISO/TR 14179-2, SKF)"),
+                      ("mesh_misalignment", "K_Hβ from the shafts (ISO 6336-1 method C with their f_sh)"))
+
+
+def _shafting_parts(an) -> list:
+    """A drive with shafting: its overall efficiency and heat, and a table per shafting result."""
+    sh = getattr(an, "shafting", None)
+    if sh is None:
+        return []
+    parts = ["<h2>Shafts, bearings and efficiency</h2>",
+             f"<p>Overall efficiency {an.overall_efficiency:.5f}; heat to dissipate {1000 * an.heat_kw:.5g} W.</p>"]
+    for name, title in _SHAFTING_SECTIONS:
+        table = sh.get(name)
+        if table is not None and len(table):
+            fmt = {c: "{:.5g}" for c in table.columns if table[c].dtype.kind == "f"}
+            parts += [f"<h3>{html.escape(title)}</h3>", _frame(table, fmt)]
+    return parts
 
 
 def drive_report(result, path, overwrite: bool = False):

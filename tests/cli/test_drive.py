@@ -182,3 +182,87 @@ def test_drive_progress_never_touches_the_json(capsys):
     captured = capsys.readouterr()
     assert json.loads(captured.out)["ok"] is True
     assert "{" not in captured.err
+
+
+# -- the drive's shafts (docs/shafts_in_drive.md): options, scene tables, output, bad input by option name
+
+REDUCER = ("[drive]\npower_kw = 11\nn_in_rpm = 960\n"
+           "[[drive.stage]]\nkind = 'gear'\nname = 'fast'\nmodule = 3\nz1 = 20\nz2 = 80\nx1 = 0.3\nx2 = 0.1\n"
+           "material = '42CrMo4-IF'\nface_width_mm = 45\n"
+           "[[drive.stage]]\nkind = 'gear'\nname = 'slow'\nmodule = 4\nz1 = 21\nz2 = 84\nx1 = 0.3\nx2 = 0.1\n"
+           "material = '42CrMo4-IF'\nface_width_mm = 65\n")
+
+
+def test_drive_shafts_tables_and_json(tmp_path, capsys):
+    path = _scene(tmp_path, REDUCER)
+    code = main(["drive", path, "--shafts", "--oil", "220,19", "--json"])
+    data = json.loads(capsys.readouterr().out)
+    an = data["analysis"]
+    assert code == (0 if data["ok"] else 1)
+    assert [r["shaft"] for r in an["shafts"]] == [0, 1, 2]
+    assert {r["source"] for r in an["efficiency"]} == {"computed"}
+    assert {r["item"] for r in an["checks"]} >= {"shaft 1", "bearing 1A", "key 2 slow"}
+    assert 0.95 < an["overall_efficiency"] < 1 and an["heat_kw"] > 0
+    main(["drive", path, "--shafts"])
+    out = capsys.readouterr().out
+    assert "bearings (ISO 281):" in out and "K_Hβ from the shafts" in out
+
+
+@pytest.mark.parametrize("args, option", [(["--bearing-life", "-3"], "--bearing-life"),
+                                          (["--shaft-material", "cheese"], "--shaft-material"),
+                                          (["--bearing-series", "64"], "--bearing-series"),
+                                          (["--shaft-safety", "0"], "--shaft-safety"),
+                                          (["--oil", "220"], "--oil"), (["--oil", "19,220"], "--oil"),
+                                          (["--oil-temperature", "900"], "--oil-temperature")])
+def test_drive_shaft_options_bad_input_one_line_exit_2(tmp_path, capsys, args, option):
+    code = main(["drive", _scene(tmp_path, REDUCER)] + args)
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(err) == 1 and option in err[0]
+
+
+def test_drawn_shaft_in_a_scene_fails_by_name(tmp_path, capsys):
+    # shaft 1 drawn 16 mm thick with 6202 bearings: its key seat under 'slow' is too weak (DIN 743), exit 1
+    body = REDUCER + ("[[drive.shaft]]\nat = 1\nlengths_mm = [40, 170, 40]\ndiameters_mm = [15, 16, 15]\n"
+                      "supports_mm = [20, 230]\nbearing_a = '6202'\nbearing_b = '6202'\n"
+                      "[drive.shaft.positions]\nfast = 72.5\nslow = 152.5\n")
+    assert main(["drive", _scene(tmp_path, body)]) == 1
+    out = capsys.readouterr().out
+    assert "shaft 1:safety key slow" in out.split("\n\n")[0]       # on the verdict line(s)
+
+
+@pytest.mark.parametrize("extra, words", [
+    ("[[drive.shaft]]\nat = 1\nlengths_mm = [250]\ndiameters_mm = [40, 45]\nsupports_mm = [20, 230]\n"
+     "[drive.shaft.positions]\nfast = 72.5\nslow = 152.5\n", "diameters_mm"),
+    ("[[drive.shaft]]\nat = 1\nlengths_mm = [250]\ndiameters_mm = [40]\nsupports_mm = [20, 230]\n", "positions"),
+    ("[[drive.shaft]]\nat = 1\nlengths_mm = [250]\ndiameters_mm = [40]\nsupports_mm = [20, 230]\n"
+     "[drive.shaft.positions]\nfast = 'left'\n", "fast"),
+    ("[drive.shafting]\nnu40 = 220\n", "nu100"),
+    ("[drive.shafting]\nlife_h = -1\n", "life_h"),
+])
+def test_bad_shafting_scene_one_line_exit_2(tmp_path, capsys, extra, words):
+    code = main(["drive", _scene(tmp_path, REDUCER + extra)])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(err) == 1 and words in err[0]
+
+
+def test_layout_plot_needs_shafts_and_is_written_whole(tmp_path, capsys):
+    path = _scene(tmp_path, REDUCER)
+    png = tmp_path / "layout.png"
+    assert main(["drive", path, "--layout-plot", str(png)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--layout-plot" in err[0] and not png.exists()
+    assert main(["drive", path, "--shafts", "--layout-plot", str(png)]) in (0, 1)
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_reports_carry_the_shafting(tmp_path, capsys):
+    scene = str(SCENES / "reducer_shafts.toml")
+    out = tmp_path / "out"
+    assert main(["run", scene, "--out", str(out)]) == 0
+    text = (out / "report.md").read_text()
+    assert "### Shafts, bearings and efficiency" in text and "#### mesh misalignment" in text
+    assert (out / "drive_bearings.csv").is_file() and (out / "drive_layout.png").is_file()
+    html = tmp_path / "r.html"
+    assert main(["drive", scene, "--report", str(html)]) == 0
+    page = html.read_text()
+    assert "Shafts, bearings and efficiency" in page and 'id="layout"' in page and "6311" in page

@@ -104,3 +104,37 @@ def test_no_label_overlaps_at_the_default_size(make):
     # the figure holds its content (nothing cut at the edges)
     fig_box = ax.figure.bbox
     assert all(fig_box.x0 <= e.x0 and e.x1 <= fig_box.x1 and fig_box.y0 <= e.y0 and e.y1 <= fig_box.y1 for _, e in labels)
+
+
+def test_layout_plot_draws_every_shaft_gear_and_bearing(tmp_path):
+    # the top view of a drive with shafting: a rectangle per section, per gear (tip diameter × face width, at its
+    # plane), per hub, two per bearing (above and below the shaft), at the sizes of the analysis' tables
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Rectangle
+
+    import geardesign as gd
+
+    an = gd.Drive(power_kw=11, n_in_rpm=960, shafting=gd.Shafting(), stages=[
+        gd.GearStage(3, 20, 80, 0.3, 0.1, material="42CrMo4-IF", face_width_mm=45, name="fast"),
+        gd.GearStage(4, 21, 84, 0.3, 0.1, material="42CrMo4-IF", face_width_mm=65, name="slow")]).analyse()
+    ax = an.plot_layout()
+    rects = [p for p in ax.patches if isinstance(p, Rectangle)]
+    sections = sum(len(a.model.sections) for a in an.shafting["analyses"].values())
+    hubs = sum(1 for es in an.shafting["elements"].values() for e in es if e.width_mm is None)
+    assert len(rects) == sections + 4 + hubs + 2 * len(an.table("bearings"))
+    widths = sorted(round(p.get_width(), 9) for p in rects)
+    for st in an.stages:        # each gear at its face width and tip diameter
+        geo = st["pair"].geometry()
+        for da in (geo.da1, geo.da2):
+            assert any(abs(p.get_width() - st["stage"].width_mm) < 1e-9 and abs(p.get_height() - da) < 1e-9
+                       for p in rects)
+    for _, b in an.table("bearings").iterrows():
+        assert widths.count(round(b["B_mm"], 9)) >= 2
+    path = tmp_path / "layout.png"
+    ax.figure.savefig(path)
+    plt.close(ax.figure)
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    with pytest.raises(gd.GearDesignError, match="shafting"):
+        gd.Drive(power_kw=11, n_in_rpm=960, stages=[gd.GearStage(3, 20, 80, face_width_mm=45)]).analyse().plot_layout()

@@ -734,7 +734,7 @@ class GearKind(ToothedKind):
                 "application_factor": dict(kind=f, lo=APPLICATION_FACTOR_RANGE[0], hi=APPLICATION_FACTOR_RANGE[1]),
                 "z1": dict(kind=i, lo=Z_MIN, hi=Z_MAX), "z2": dict(kind=i, lo=Z_MIN, hi=Z_MAX),
                 "x1": dict(kind=f, lo=-X_ABS_MAX, hi=X_ABS_MAX), "x2": dict(kind=f, lo=-X_ABS_MAX, hi=X_ABS_MAX),
-                "efficiency": dict(kind=f, default=0.98, lo=EFFICIENCY_RANGE[0], hi=EFFICIENCY_RANGE[1], lo_open=True),
+                "efficiency": dict(kind=f, lo=EFFICIENCY_RANGE[0], hi=EFFICIENCY_RANGE[1], lo_open=True),
                 "beta_deg": dict(kind=f, default=0.0, lo=BETA_RANGE_DEG[0], hi=BETA_RANGE_DEG[1]),
                 "face_width_mm": dict(kind=f, lo=FACE_WIDTH_RANGE_MM[0], hi=FACE_WIDTH_RANGE_MM[1], lo_open=True),
                 "z1_range": dict(kind="ints", lo=Z_MIN, hi=Z_MAX, length=2), "z2_max": dict(kind=i, lo=Z_MIN, hi=Z_MAX),

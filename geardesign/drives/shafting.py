@@ -1,0 +1,218 @@
+"""The shafts of a drive: what carries its gears, sprockets and couplings, where they sit, and the options of
+the shaft, bearing and efficiency analysis (:mod:`geardesign.drives.shafting_analysis` runs it).
+
+:class:`Shafting` switches the analysis on (``Drive(..., shafting=Shafting())``) and holds its options;
+:class:`DriveShaft` describes one shaft the user has drawn (a *given* layout); every shaft that carries a gear
+of the drive and is not given gets the *default layout* of :func:`default_layout`, the one a reducer designer
+draws for a horizontal, unfolded parallel-axis reducer (docs/shafts_in_drive.md):
+
+- the shafts lie in one horizontal plane, shaft k at y = Σ a_w of the stages before it (a chain's line of
+  centres horizontal too, leaving in +y); the axes are x; every shaft sits in the same two housing walls,
+  so each has two bearings, A at x_A and B at x_A + span;
+- the gear stages sit side by side between the walls, each pair in its own plane, in the order of the power
+  flow: the first one ``clearance_mm`` from bearing A (bearing centre to the gear's face), the next
+  ``gear_gap_mm`` beyond the previous one's face, the last ``clearance_mm`` from bearing B; so
+  span = Σ b + (N − 1)·gap + 2·clearance;
+- a coupling (on the input shaft, and on the output shaft when the last stage is a gear pair) or a sprocket
+  sits overhung ``overhang_mm`` beyond a bearing: what brings power in at the left end (x < x_A), what takes
+  it out at the right end;
+- the shaft has three diameters stepping by :data:`STEP_MM`: the ends d_b − 5 (the overhung hubs), the
+  bearing seats d_b (a bearing bore of the catalog series) over ``clearance_mm``/2 each side of the
+  bearing's centre, and the gear seats d_b + 5 between them; shoulders with fillets of :data:`FILLET_MM`; a gear
+  whose keyed rim would be too thin is cut on the shaft (its body a section:
+  :func:`geardesign.drives.shafting_analysis.cut_on_shaft`);
+- a drawn shaft (:class:`DriveShaft`) sets the planes of the gears it carries and the default shafts follow.
+
+Forces (:mod:`geardesign.gears.forces`, operating pitch circle; :mod:`geardesign.drives.chain.pull`): shaft 0
+turns positive about +x, each gear mesh reverses the sense, a chain keeps it; the pinion's axial force points
+toward +x (its helix hand chosen so; the wheel's toward −x), taken by bearing A (the locating bearing).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ..errors import GearDesignError
+from ..validate import one_number, require_choice, require_count, require_range
+
+__all__ = ["Shafting", "DriveShaft", "STEP_MM", "FILLET_MM", "PEAK_FACTOR", "SHAFT_LIFE_H", "BEARING_SERIES",
+           "default_positions"]
+
+STEP_MM = 5.0          # diameter step between the ends, the bearing seats and the gear seats (shoulder 2.5 mm)
+FILLET_MM = 1.0        # the shoulders' fillet radius
+PEAK_FACTOR = 2.0      # maximum/nominal load of DIN 743's static proof (a motor's starting torque): a choice
+SHAFT_LIFE_H = 20_000.0   # required bearing life, h (a reducer in one-shift service for about 10 years)
+# the bearings a reducer designer reaches for: deep groove ball bearings (light and medium series), and cylindrical
+# roller bearings where the radial load is heavy and there is no axial force (the selection takes the smallest
+# outside diameter that carries the load; a type NU bearing is refused where an axial force acts)
+BEARING_SERIES = ("62", "63", "NU2", "NU3")
+
+
+@dataclass(frozen=True)
+class DriveShaft:
+    """A shaft of the drive as the user drew it: shaft ``at`` (0: input, k: output of stage k); ``sections``
+    (length_mm, d_mm[, bore_mm]) from its left end x = 0; ``supports_mm`` the two bearing positions (the first
+    the locating one); ``positions`` {stage name or "coupling": x_mm} of every element it carries (a gear
+    stage's pinion or wheel, a chain stage's sprocket, the coupling at the drive's input or output);
+    ``widths`` {name: hub length mm} for the key checks (default: a gear's face width, 1.5·d for a hub);
+    ``bearings`` the two bearings' catalog designations (None: chosen from the series for the seat and the
+    life); ``material`` (None: the Shafting's).
+
+    >>> DriveShaft(1, ((200.0, 40.0),), (20.0, 180.0), {"fast": 60.0, "slow": 130.0}).at
+    1
+    """
+
+    at: int
+    sections: tuple
+    supports_mm: tuple
+    positions: dict
+    widths: dict | None = None
+    bearings: tuple | None = None
+    material: object = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "at", require_count("at (shaft number)", self.at, 0, 64))
+        from .shaft_beam import ShaftModel
+
+        model = ShaftModel(self.sections, self.supports_mm)    # sections and supports checked there
+        if len(model.supports_mm) != 2:
+            raise GearDesignError(f"shaft {self.at}: supports_mm must give the two bearing positions, got "
+                                  f"{list(self.supports_mm)}")
+        object.__setattr__(self, "sections", model.sections)
+        object.__setattr__(self, "supports_mm", model.supports_mm)
+        if not isinstance(self.positions, dict) or not self.positions:
+            raise GearDesignError(f"shaft {self.at}: positions must be a dict {{stage name or 'coupling': x_mm}}, "
+                                  f"got {self.positions!r}")
+        pos = {}
+        for name, x in self.positions.items():
+            pos[str(name)] = float(one_number(f"shaft {self.at} position of {name!r}", require_range(
+                f"shaft {self.at} position of {name!r}", x, 0.0, model.length_mm, unit="mm")))
+        object.__setattr__(self, "positions", pos)
+        widths = {}
+        for name, w in (self.widths or {}).items():
+            widths[str(name)] = float(one_number(f"shaft {self.at} width of {name!r}", require_range(
+                f"shaft {self.at} width of {name!r}", w, 0.0, 1e4, lo_open=True, unit="mm")))
+        object.__setattr__(self, "widths", widths)
+        if self.bearings is not None:
+            b = tuple(self.bearings)
+            if len(b) != 2 or not all(isinstance(v, str) for v in b):
+                raise GearDesignError(f"shaft {self.at}: bearings must be two catalog designations, got "
+                                      f"{self.bearings!r}")
+            object.__setattr__(self, "bearings", b)
+        if self.material is not None:
+            from .din743 import _material
+
+            _material(self.material)      # an unknown steel is refused here, by name
+
+    @property
+    def length_mm(self) -> float:
+        return float(sum(s[0] for s in self.sections))
+
+
+@dataclass(frozen=True)
+class Shafting:
+    """Options of the drive's shafts, bearings and computed efficiencies (the default layout: module docstring).
+
+    ``layout``: :class:`DriveShaft` items for the shafts the user draws (the others get the default layout);
+    ``material``: the shafts' steel (a name of ``catalogs/shaft_materials_din743.csv`` or a dict, DIN 743-3);
+    ``S_min``: the least DIN 743 safety (fatigue and static, DIN 743-1 clause 4.1: 1.2); ``peak_factor``: the
+    maximum load of the static proof over the nominal one; ``life_h``: the required bearing life L10h (h),
+    ``reliability`` (%, a1); ``bearing_series``: the catalog series the bearings are chosen from (the smallest
+    bearing whose bore fits the seat and that reaches the life; default :data:`BEARING_SERIES`); ``clearance_mm``, ``gear_gap_mm``,
+    ``overhang_mm``: the default layout's lengths; ``lubricant`` (a :class:`~geardesign.gears.efficiency.Lubricant`)
+    with ``oil_temperature_c``, ``Ra_um`` and ``lubrication``: the gear stages' efficiencies computed (ISO/TR
+    14179-2 mesh loss, SKF bearing friction) and used in the power flow where the stage's efficiency was not
+    given (None: the stages' efficiencies as they are); ``no_load_loss_w``: a churning loss per gear stage;
+    ``stiff``: thicken a default shaft until the mesh misalignment f_sh of its gear pairs is at most ISO 6336-1
+    eq. (44)'s estimate, the one the gear's strength (and a stage sized by its load) assumed (the default False:
+    DIN 743, the keys and the bearings size it, and K_Hβ takes the f_sh it gives; eq. (44) models a pinion shaft
+    alone, and an intermediate shaft whose wheel sits beside a heavily loaded pinion tilts far more: True can ask
+    for shafts thicker than the pinion, docs/shafts_in_drive.md).
+    """
+
+    layout: tuple = ()
+    material: object = "42CrMo4"
+    S_min: float = 1.2
+    peak_factor: float = PEAK_FACTOR
+    life_h: float = SHAFT_LIFE_H
+    reliability: float = 90.0
+    bearing_series: object = BEARING_SERIES
+    clearance_mm: float = 20.0
+    gear_gap_mm: float = 10.0
+    overhang_mm: float = 60.0
+    lubricant: object = None
+    oil_temperature_c: float = 70.0
+    Ra_um: float = 0.5
+    lubrication: str = "oil_bath"
+    no_load_loss_w: float = 0.0
+    stiff: bool = False
+    _material: dict = field(default=None, init=False, repr=False, compare=False)
+
+    def __post_init__(self):
+        from .bearing import SERIES, reliability_factor
+        from .din743 import _material
+
+        layout = tuple(self.layout or ())
+        for s in layout:
+            if not isinstance(s, DriveShaft):
+                raise GearDesignError(f"layout must hold DriveShaft items, got {type(s).__name__}")
+        ats = [s.at for s in layout]
+        if len(set(ats)) != len(ats):
+            raise GearDesignError(f"layout gives shaft(s) {sorted({a for a in ats if ats.count(a) > 1})} twice")
+        object.__setattr__(self, "layout", layout)
+        object.__setattr__(self, "_material", _material(self.material))
+        object.__setattr__(self, "S_min", one_number("S_min", require_range("S_min", self.S_min, 0.5, 10.0)))
+        object.__setattr__(self, "peak_factor", one_number("peak_factor", require_range(
+            "peak_factor", self.peak_factor, 1.0, 10.0)))
+        object.__setattr__(self, "life_h", one_number("life_h", require_range(
+            "life_h", self.life_h, 0.0, 1e7, lo_open=True, unit="h")))
+        reliability_factor(self.reliability)
+        series = (self.bearing_series,) if isinstance(self.bearing_series, str) else tuple(self.bearing_series)
+        if not series:
+            raise GearDesignError(f"bearing_series must name one of {', '.join(SERIES)}")
+        for s in series:
+            require_choice("bearing_series", s, tuple(SERIES))
+        object.__setattr__(self, "bearing_series", series[0] if len(series) == 1 else series)
+        for name, lo, hi in (("clearance_mm", 5.0, 500.0), ("gear_gap_mm", 0.0, 500.0), ("overhang_mm", 10.0, 2000.0)):
+            object.__setattr__(self, name, one_number(name, require_range(name, getattr(self, name), lo, hi,
+                                                                          unit="mm")))
+        if self.lubricant is not None:
+            from ..gears.efficiency import Lubricant
+
+            if not isinstance(self.lubricant, Lubricant):
+                raise GearDesignError(f"lubricant must be a geardesign Lubricant (nu40, nu100), got {self.lubricant!r}")
+        object.__setattr__(self, "oil_temperature_c", one_number("oil_temperature_c", require_range(
+            "oil_temperature_c", self.oil_temperature_c, -40.0, 200.0, unit="°C")))
+        object.__setattr__(self, "Ra_um", one_number("Ra_um", require_range("Ra_um", self.Ra_um, 0.01, 10.0,
+                                                                            unit="µm")))
+        from .bearing_friction import K_RS
+
+        require_choice("lubrication", self.lubrication, tuple(K_RS))
+        from ..validate import require_bool
+
+        object.__setattr__(self, "stiff", require_bool("stiff", self.stiff))
+        object.__setattr__(self, "no_load_loss_w", one_number("no_load_loss_w", require_range(
+            "no_load_loss_w", self.no_load_loss_w, 0.0, 1e9, unit="W")))
+
+    @property
+    def series(self) -> tuple:
+        return (self.bearing_series,) if isinstance(self.bearing_series, str) else tuple(self.bearing_series)
+
+    def given(self, at: int):
+        """The DriveShaft the user gave for shaft ``at``, or None."""
+        return next((s for s in self.layout if s.at == at), None)
+
+
+def default_positions(widths: list, clearance_mm: float, gap_mm: float) -> tuple:
+    """(plane positions from bearing A, span) of gear planes of face widths ``widths`` (mm) side by side between
+    two bearings: the first plane clearance + b1/2 from A, each next gap + (b_prev + b)/2 further, B clearance +
+    b_last/2 beyond the last; span = Σb + (N − 1)·gap + 2·clearance.
+
+    >>> default_positions([40.0, 60.0], 20.0, 10.0)
+    ([40.0, 100.0], 150.0)
+    """
+    xs, x = [], clearance_mm
+    for i, b in enumerate(widths):
+        x += (gap_mm if i else 0.0) + b / 2.0
+        xs.append(x)
+        x += b / 2.0
+    return xs, x + clearance_mm

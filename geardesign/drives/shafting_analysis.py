@@ -1,0 +1,807 @@
+"""The drive's shafts analysed: the loads of its gears, sprockets and couplings on each shaft, bearing reactions,
+DIN 743 safeties at the seats, the least standard seat diameter of a default shaft, bearings chosen for the life,
+deflections and the mesh misalignment f_sh they cause, keys at the seats, and the gear stages' efficiencies.
+
+:func:`analyse_shafting` is what :meth:`~geardesign.drives.drive.Drive.analyse` calls when the drive has a
+:class:`~geardesign.drives.shafting.Shafting`; the layout rules are :mod:`geardesign.drives.shafting`'s.
+
+Method, per shaft (docs/shafts_in_drive.md):
+
+1. the elements' loads (:func:`element_loads`): a gear's mesh forces on the operating pitch circle
+   (:func:`geardesign.gears.forces.pair_forces`) at its pitch point, its torque; a sprocket's chain pull
+   F_t + 2 F_f along the line of centres (:func:`geardesign.drives.chain.pull.chain_pull`); a coupling's
+   torque (an elastic coupling: its radial force neglected);
+2. the reactions of the two bearings from statics (:func:`two_support_reactions`; they do not depend on the
+   diameters); bearing A (the locating one) takes the axial force;
+3. a default shaft's bearing-seat diameter d_b: the least bore of the bearing series at which every checked
+   section reaches S_min after DIN 743 (:func:`geardesign.drives.din743.shaft_safety`; sections: a key seat
+   under each keyed gear and hub, a press fit at each bearing, a shoulder at each step and gear body; a gear whose
+   keyed rim would be too thin is cut on the shaft, :func:`cut_on_shaft`), then the least from there whose keys
+   fit; then the smallest bearing of the series with bore >= d_b passing every check under both of the shaft's
+   bearing loads (ranked as :func:`geardesign.drives.bearing.select_bearing` ranks them), the seat taking its
+   bore; with ``Shafting(stiff=True)`` the default shafts of a pair are thickened until its f_sh is at most
+   ISO 6336-1 eq. (44)'s (:func:`iso_f_sh_um`); a drawn shaft keeps its diameters and bearings, and is checked;
+4. the beam's deflection (:func:`beam_deflections`, the beam of :func:`geardesign.drives.shaft_beam.analyse_shaft`)
+   at each gear's face ends; the mesh
+   misalignment of a pair f_sh = |Δδ| over its face width, δ the pinion's deflection relative to the wheel's
+   along the tooth force plus the pinion body's torsional wind-up across the face r_w1·T·b/(2·G·J) (J of d_w1),
+   each with its sign (:func:`mesh_misalignment_um`): at the nominal load; the strength chain takes
+   f_sh·K_A·K_v, its value at F_m/b = K_A·K_v·F_t/b (ISO 6336-1:2006 7.6.2.2), and K_Hβ by method C from it.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from ..errors import GearDesignError
+from .shaft_beam import E_STEEL_MPA
+from .shafting import FILLET_MM, STEP_MM, default_positions
+
+__all__ = ["Element", "element_loads", "two_support_reactions", "shaft_deflections", "beam_deflections",
+           "analyse_shafting", "iso_f_sh_um", "cut_on_shaft",
+           "mesh_misalignment_um", "stage_efficiencies", "with_shaft_misalignment",
+           "G_STEEL_MPA", "HUB_LENGTH_D"]
+
+G_STEEL_MPA = 81_000.0     # shear modulus of steel, N/mm² (E/(2(1 + ν)), E = 210 000, ν = 0.3: 80 770)
+HUB_LENGTH_D = 1.5         # a sprocket's or coupling's hub length over its seat diameter (its key's hub)
+GEAR_HUB_D = 1.2           # a gear's hub: its face width, at least 1.2·d (Chernavsky's l_hub = (1.2 … 1.5)·d)
+UNLOADED_NM = 1e-6         # a section whose moment, torque (N·m) and axial force (kN) are all below this carries nothing
+
+
+@dataclass(frozen=True)
+class Element:
+    """One element on a shaft: ``name`` (its stage's name, or "coupling"), ``kind`` ("pinion", "wheel",
+    "sprocket", "coupling"), ``side`` ("left", "right": overhung; "plane": between the bearings in gear plane
+    ``plane``), ``width_mm`` (a gear's face width; None for a hub), forces (N) ``fy``, ``fz``, ``fx`` acting at
+    ``y_mm`` off the axis, ``torque_nm`` put into the shaft (+: in), ``mass_kg``."""
+
+    name: str
+    kind: str
+    side: str
+    plane: int
+    width_mm: float | None
+    fy: float
+    fz: float
+    fx: float
+    y_mm: float
+    torque_nm: float
+    mass_kg: float = 0.0
+    root_mm: float | None = None      # a gear's root diameter d_f and module (whether it is cut on its shaft)
+    m_mm: float | None = None
+
+
+def two_support_reactions(x_mm, fy_n, fz_n, fx_n, y_mm, x_a_mm, x_b_mm) -> dict:
+    """Reactions (N) of a shaft on two supports at x_a and x_b under forces (fy, fz) at x and axial forces fx
+    acting at y off the axis (their couple −y·fx bends the shaft in the x-y plane): statics, Σ F = 0 and
+    Σ M_A = 0 in each plane; the axial force taken at A.
+
+    >>> r = two_support_reactions([100.0], [-1000.0], [0.0], [0.0], [0.0], 0.0, 200.0)
+    >>> float(r["Ay"]), float(r["By"])
+    (500.0, 500.0)
+    """
+    x, fy, fz, fx, y = (np.asarray(v, dtype=float) for v in (x_mm, fy_n, fz_n, fx_n, y_mm))
+    L = float(x_b_mm) - float(x_a_mm)
+    arm = x - float(x_a_mm)
+    couple = -y * fx                       # N·mm about z (x-y plane)
+    By = -((fy * arm).sum() + couple.sum()) / L
+    Bz = -(fz * arm).sum() / L
+    return {"Ay": -fy.sum() - By, "By": By, "Az": -fz.sum() - Bz, "Bz": Bz, "Ax": -fx.sum()}
+
+
+def _rotation_senses(drive) -> list:
+    """+1/−1 per shaft: shaft 0 positive about +x, a gear mesh reverses the sense, other stages keep it."""
+    s = [1.0]
+    for st in drive.stages:
+        s.append(-s[-1] if getattr(st, "kind", "") == "gear" else s[-1])
+    return s
+
+
+def element_loads(drive, stages_out, T) -> dict:
+    """{shaft k: [Element, ...]} of every shaft carrying a gear (the layout's shafts), from the analysed
+    stages and the shafts' torques ``T`` (N·m)."""
+    from ..gears.forces import pair_forces
+    from .chain.pull import chain_pull
+    from .stages import disc_mass_kg
+
+    sense = _rotation_senses(drive)
+    N = len(drive.stages)
+    out: dict = {}
+    gear_shafts = set()
+    plane = 0
+    for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1):
+        if getattr(st, "kind", "") != "gear":
+            continue
+        pair, stage = res["pair"], res["stage"]
+        b = float(stage.width_mm)
+        f = pair_forces(pair, float(T[k - 1]))
+        s = sense[k - 1]
+        geo = pair.geometry()
+        m1, m2 = float(disc_mass_kg(geo.da1, b)), float(disc_mass_kg(geo.da2, b))
+        m_n = float(pair.m)
+        out.setdefault(k - 1, []).append(Element(st.name, "pinion", "plane", plane, b, -f.F_r_n, -s * f.F_t_n,
+                                                 f.F_a_n, f.r1_mm, -s * float(T[k - 1]), m1, float(geo.df1), m_n))
+        out.setdefault(k, []).append(Element(st.name, "wheel", "plane", plane, b, f.F_r_n, s * f.F_t_n, -f.F_a_n,
+                                             -f.r2_mm, sense[k] * float(T[k]), m2, float(geo.df2), m_n))
+        gear_shafts.update((k - 1, k))
+        plane += 1
+    for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1):
+        if getattr(st, "kind", "") != "chain":
+            continue
+        row = res["row"]
+        p = chain_pull(float(T[k - 1]), float(row["pitch_mm"]), int(st.z1), float(res["flow"].n_in_rpm),
+                       float(row["mass_kg_m"]), float(row["center_distance_mm"]))
+        if k - 1 in gear_shafts:       # the driving sprocket takes power out at the right end
+            out[k - 1].append(Element(st.name, "sprocket", "right", -1, None, p.shaft_load_n, 0.0, 0.0, 0.0,
+                                      -sense[k - 1] * float(T[k - 1])))
+        if k in gear_shafts:           # the driven sprocket brings it in at the left end
+            out[k].append(Element(st.name, "sprocket", "left", -1, None, -p.shaft_load_n, 0.0, 0.0, 0.0,
+                                  sense[k] * float(T[k])))
+    for k in sorted(gear_shafts):     # what else brings power in or takes it out: a coupling, overhung
+        els = out[k]
+        total = sum(e.torque_nm for e in els)
+        if abs(total) <= 1e-12 * max(abs(e.torque_nm) for e in els):
+            continue
+        incoming = -total * sense[k] > 0
+        side = "left" if incoming else "right"
+        if any(e.side == side for e in els):
+            raise GearDesignError(f"shaft {k} needs a coupling at its {side} end, where a sprocket sits already")
+        # a bought unit's (given stage's) shaft end, or the drive's input or output coupling
+        j = k if incoming else k + 1
+        name = drive.stages[j - 1].name if 1 <= j <= N and getattr(drive.stages[j - 1], "kind", "") == "given" \
+            else "coupling"
+        els.append(Element(name, "coupling", side, -1, None, 0.0, 0.0, 0.0, 0.0, -total))
+    return out
+
+
+# -- the shaft's geometry ------------------------------------------------------------------------------------
+
+@dataclass
+class _Geometry:
+    """One shaft's model inputs: sections, bearing positions, element positions and hub lengths, the sections
+    to check, and (default layout) the bearing-seat diameter it was built for."""
+
+    sections: tuple
+    supports: tuple
+    x: dict            # element name -> x_mm
+    hubs: dict         # element name -> (seat d, hub length)
+    notches: list
+    d_b: float | None
+    given: bool
+
+
+def cut_on_shaft(root_mm, m_mm, d_mm) -> bool:
+    """True when a gear of root diameter d_f and module m on a seat of diameter d is cut on its shaft (a pinion
+    shaft) rather than keyed: when the rim left over the keyway, (d_f − d)/2 − t_2 with the hub's keyway depth
+    t_2 ≈ 0.05·d, would be thinner than 2.5·m (the rule of thumb for a keyed gear's rim in reducer design
+    textbooks, e.g. Dunaev & Lelikov; a stated choice, see docs/shafts_in_drive.md).
+
+    >>> cut_on_shaft(52.5, 3.0, 45.0), cut_on_shaft(52.5, 3.0, 20.0)
+    (True, False)
+    """
+    return (root_mm - d_mm) / 2.0 - 0.05 * d_mm < 2.5 * m_mm
+
+
+BODY_FILLET_D = 0.1     # the fillet at a gear body cut on its shaft, over the seat diameter
+
+
+def _stepped(pieces) -> tuple:
+    """Sections (length, d) from pieces (x0, x1, d), a later piece over an earlier one where it is thicker."""
+    cuts = sorted({v for x0, x1, _ in pieces for v in (x0, x1)})
+    out = []
+    for a, b in zip(cuts, cuts[1:]):
+        mid = 0.5 * (a + b)
+        d = max(p[2] for p in pieces if p[0] <= mid <= p[1])
+        if out and out[-1][1] == d:
+            out[-1] = (out[-1][0] + b - a, d)
+        else:
+            out.append((b - a, d))
+    return tuple(out)
+
+
+def _default_geometry(sh, elements, planes, d_b) -> _Geometry:
+    """The default shaft (module docstring of :mod:`geardesign.drives.shafting`) at bearing-seat diameter d_b; a
+    gear whose keyed rim would be too thin (:func:`cut_on_shaft`) is cut on the shaft: its body, of its root
+    diameter over its face width, is part of the shaft (no key; shoulders at its sides)."""
+    from .din743 import Notch, ShaftNotch
+
+    c = sh.clearance_mm
+    offsets, span = planes
+    left = [e for e in elements if e.side == "left"]
+    right = [e for e in elements if e.side == "right"]
+    x_a = max(sh.overhang_mm, c / 2.0 + 5.0) if left else c / 2.0
+    x_b = x_a + span
+    end = x_b + (max(sh.overhang_mm, c / 2.0 + 5.0) if right else c / 2.0)
+    d_e, d_g = d_b - STEP_MM, d_b + STEP_MM
+    pieces = [(0.0, x_a - c / 2.0, d_e if left else d_b), (x_a - c / 2.0, x_a + c / 2.0, d_b),
+              (x_a + c / 2.0, x_b - c / 2.0, d_g), (x_b - c / 2.0, x_b + c / 2.0, d_b),
+              (x_b + c / 2.0, end, d_e if right else d_b)]
+    pieces = [p for p in pieces if p[1] > p[0]]
+    x, hubs, notches, steps = {}, {}, [], [x_a + c / 2.0, x_b - c / 2.0]
+    steps += ([x_a - c / 2.0] if left else []) + ([x_b + c / 2.0] if right else [])
+    bodies = []
+    for e in elements:
+        if e.side == "plane":
+            x[e.name] = x_a + offsets[e.plane]
+            hubs[e.name] = (d_g, max(e.width_mm, GEAR_HUB_D * d_g))
+            if e.root_mm is not None and cut_on_shaft(e.root_mm, e.m_mm, d_g):
+                if d_g <= 0.98 * e.root_mm:     # (a root within 2 % of the seat: the seat's section, no step)
+                    x0, x1 = x[e.name] - e.width_mm / 2.0, x[e.name] + e.width_mm / 2.0
+                    pieces.append((x0, x1, e.root_mm))
+                    bodies += [x0, x1]
+                hubs[e.name] = None          # no key: the gear is the shaft
+                continue
+        else:
+            x[e.name] = 0.0 if e.side == "left" else end
+            hubs[e.name] = (d_e, HUB_LENGTH_D * d_e)
+        notches.append(ShaftNotch(x[e.name], Notch("key"), f"key {e.name}"))
+    for tag, xs in (("A", x_a), ("B", x_b)):
+        notches.append(ShaftNotch(xs, Notch("press_fit"), f"bearing {tag}"))
+    for xs in sorted(steps):
+        notches.append(ShaftNotch(xs, Notch("shoulder", r_mm=FILLET_MM), f"shoulder at {xs:.4g}"))
+    for xs in bodies:
+        notches.append(ShaftNotch(xs, Notch("shoulder", r_mm=BODY_FILLET_D * d_g), f"gear body at {xs:.4g}"))
+    return _Geometry(_stepped(pieces), (x_a, x_b), x, hubs, notches, d_b, False)
+
+
+def _given_geometry(ds, elements) -> _Geometry:
+    """A DriveShaft: its sections and supports, its elements where it puts them; the sections to check: a key seat
+    under each element, a press fit at each bearing, a shoulder at each diameter step."""
+    from .din743 import Notch, ShaftNotch
+    from .shaft_beam import ShaftModel
+
+    names = {e.name for e in elements}
+    missing = sorted(names - set(ds.positions))
+    if missing:
+        raise GearDesignError(f"shaft {ds.at}: positions must place {', '.join(repr(m) for m in missing)} "
+                              f"(the elements this shaft carries)")
+    extra = sorted(set(ds.positions) - names)
+    if extra:
+        raise GearDesignError(f"shaft {ds.at}: positions name {', '.join(repr(m) for m in extra)}, which this "
+                              f"shaft does not carry (it carries {', '.join(sorted(names))})")
+    model = ShaftModel(ds.sections, ds.supports_mm)
+    x, hubs, notches = {}, {}, []
+    for e in elements:
+        x[e.name] = ds.positions[e.name]
+        d = float(model.diameter_at(x[e.name])[0])
+        hub = ds.widths.get(e.name, max(e.width_mm, GEAR_HUB_D * d) if e.width_mm is not None else HUB_LENGTH_D * d)
+        hubs[e.name] = (d, hub)
+        notches.append(ShaftNotch(x[e.name], Notch("key"), f"key {e.name}"))
+    for tag, xs in zip("AB", ds.supports_mm):
+        notches.append(ShaftNotch(xs, Notch("press_fit"), f"bearing {tag}"))
+    ends = model.section_ends_mm[1:-1]
+    ds_ = [s[1] for s in model.sections]
+    for i, xs in enumerate(ends):
+        if ds_[i] != ds_[i + 1]:
+            notches.append(ShaftNotch(float(xs), Notch("shoulder", r_mm=FILLET_MM), f"shoulder at {xs:.4g}"))
+    return _Geometry(model.sections, model.supports_mm, x, hubs, notches, None, True)
+
+
+def _model(geo: _Geometry, elements):
+    from .shaft_beam import ShaftLoad, ShaftModel
+
+    loads = [ShaftLoad(geo.x[e.name], fy_n=e.fy, fz_n=e.fz, fx_n=e.fx, y_mm=e.y_mm, torque_nm=e.torque_nm,
+                       mass_kg=e.mass_kg, name=e.name) for e in elements]
+    return ShaftModel(geo.sections, geo.supports, loads, axial_support=0)
+
+
+def _safety(geo, elements, sh, mat):
+    """(ShaftSafety, ShaftAnalysis) of a shaft geometry (coarse beam grid: the diagrams are exact at the nodes)."""
+    from .din743 import shaft_safety
+    from .shaft_beam import analyse_shaft
+
+    a = analyse_shaft(_model(geo, elements), points=40)
+    return shaft_safety(a, geo.notches, mat, peak_factor=sh.peak_factor, S_min=sh.S_min), a
+
+
+def _least(table) -> float:
+    return float(np.minimum(table["S_D"], table["S_F"]).min())
+
+
+def _diagram(geo, elements) -> tuple:
+    """(x, M, T, N): the bending moment, torque (N·m) and axial force (N) along a shaft. On two supports they do not
+    depend on the diameters (statics), so a default shaft's sizing reads them once."""
+    from .shaft_beam import analyse_shaft
+
+    d = analyse_shaft(_model(geo, elements), points=10, shaft_mass=False).diagrams
+    return tuple(d[c].to_numpy() for c in ("x_mm", "M_nm", "T_nm", "N_n"))
+
+
+def _loads_at(diagram, x_mm) -> tuple:
+    """(M, |T|, N) at x, the larger limit at a node, as :func:`~geardesign.drives.din743.shaft_safety` reads them."""
+    x, M, T, N = diagram
+    at = np.flatnonzero(x == x_mm)
+    if at.size:
+        return float(M[at].max()), float(np.abs(T[at]).max()), float(N[at][np.argmax(np.abs(N[at]))])
+    return float(np.interp(x_mm, x, M)), abs(float(np.interp(x_mm, x, T))), float(np.interp(x_mm, x, N))
+
+
+def _diameters_at(geo, x_mm) -> tuple:
+    """(d left, d right) of the sections of ``geo`` at x."""
+    ends = np.concatenate([[0.0], np.cumsum([s[0] for s in geo.sections])])
+    ds = [s[1] for s in geo.sections]
+    i_r = min(max(int(np.searchsorted(ends, x_mm, side="right")) - 1, 0), len(ds) - 1)
+    i_l = min(max(int(np.searchsorted(ends, x_mm, side="left")) - 1, 0), len(ds) - 1)
+    return ds[i_l], ds[i_r]
+
+
+def _holds(sh, mat, geo, diagram) -> bool:
+    """Every section of the default shaft ``geo`` to check reaches S_min (DIN 743, as shaft_safety takes them: a
+    shoulder's d and D the two sides of its step, a key seat or press fit on the thinner side)."""
+    from .din743 import din743_safety
+
+    d_eff = max(s[1] for s in geo.sections)
+    for sn in geo.notches:
+        M, T, N = _loads_at(diagram, sn.x_mm)
+        if M <= 0.0 and T <= 0.0 and N == 0.0:
+            continue
+        dl, dr = _diameters_at(geo, sn.x_mm)
+        d, D = min(dl, dr), (max(dl, dr) if sn.notch.kind == "shoulder" else None)
+        r = din743_safety(mat, sn.notch, d_mm=d, D_mm=D, d_eff_mm=d_eff, F_zdm=N, M_ba=M, T_m=T,
+                          F_zdmax=sh.peak_factor * abs(N), M_bmax=sh.peak_factor * M, T_max=sh.peak_factor * T,
+                          S_min=sh.S_min)
+        if min(r.S_D, r.S_F) < sh.S_min:
+            return False
+    return True
+
+
+def _keys_fit(geo, elements) -> bool:
+    """Every keyed element's parallel key (:func:`geardesign.drives.key.select`, on its seat, in its hub: a gear's
+    face width, at least 1.2·d; a sprocket's or coupling's 1.5·d) carries its torque."""
+    from . import key as keys
+
+    return all(keys.select(geo.hubs[e.name][0], abs(e.torque_nm), geo.hubs[e.name][1]).feasible
+               for e in elements if geo.hubs[e.name] is not None and abs(e.torque_nm) > 0)
+
+
+def _sized_geometry(sh, mat, elements, planes, bores, d_min):
+    """The default shaft at the least catalog bore >= d_min whose sections all reach S_min (bisection: the safety
+    rises as the shaft thickens; the thickest when none does), then the least from there whose keys hold."""
+    cand = [d for d in bores if d >= d_min and d - STEP_MM >= 6.0]
+    if not cand:
+        raise GearDesignError(f"no bearing bore of series {', '.join(sh.series)} is >= {d_min:g} mm")
+    diagram = _diagram(_default_geometry(sh, elements, planes, cand[-1]), elements)
+
+    def ok(d):
+        return _holds(sh, mat, _default_geometry(sh, elements, planes, d), diagram)
+
+    lo, hi = 0, len(cand) - 1
+    if not ok(cand[hi]):
+        return _default_geometry(sh, elements, planes, cand[hi])
+    while lo < hi:
+        mid = (lo + hi) // 2
+        lo, hi = (lo, mid) if ok(cand[mid]) else (mid + 1, hi)
+    # the keys: the next bores up while one does not fit (a key's margins rise with d until its section's
+    # shortest length outgrows a narrow hub: then no bore fits and the least safe one stays, its key failing)
+    for d in cand[lo:]:
+        geo = _default_geometry(sh, elements, planes, d)
+        if _keys_fit(geo, elements):
+            return geo
+    return _default_geometry(sh, elements, planes, cand[lo])
+
+
+# -- bearings --------------------------------------------------------------------------------------------------
+
+@lru_cache(maxsize=16)
+def _catalog(series: tuple):
+    from .bearing import bearing_catalog
+
+    return bearing_catalog(list(series))
+
+
+def _bearings(sh, ds, reactions, n_rpm, bore):
+    """(designation, [BearingCheck A, B]) of a shaft: the given ones, else the smallest (outside diameter, then
+    bore) of the series whose bore is >= ``bore`` (a given shaft: equal to its seat) that passes every check under
+    both bearings' loads (both bearings alike), as :func:`geardesign.drives.bearing.select_bearing` ranks them."""
+    from .bearing import _check_from_row, _evaluate, check_bearing, reliability_factor
+
+    loads = [(max(math.hypot(reactions["Ay"], reactions["Az"]), 1e-9), abs(reactions["Ax"])),
+             (max(math.hypot(reactions["By"], reactions["Bz"]), 1e-9), 0.0)]
+    if ds is not None and ds.bearings is not None:
+        names = ds.bearings
+        return names, [check_bearing(name, fr, fa, n_rpm=n_rpm, life_h=sh.life_h, reliability=sh.reliability)
+                       for name, (fr, fa) in zip(names, loads)]
+    rows = _catalog(sh.series)
+    rows = rows[(rows["d_mm"] >= bore - 1e-9) & ((ds is None) | (rows["d_mm"] <= bore + 1e-9))].reset_index(drop=True)
+    if rows.empty:
+        what = f"a bore of {bore:g} mm (the seat of shaft {ds.at} as given)" if ds is not None else f"a bore >= {bore:g} mm"
+        raise GearDesignError(f"no bearing of series {', '.join(sh.series)} has {what}: give the shaft's bearings "
+                              f"or a seat of a catalog bore")
+    a1 = reliability_factor(sh.reliability)
+    ta, tb = (_evaluate(rows, fr, fa, n_rpm, sh.life_h, a1, None, None, "grease", None) for fr, fa in loads)
+    both = (ta["feasible"] & tb["feasible"]).to_numpy()
+    if both.any():          # the smallest outside diameter (then bore) that both bearings' loads allow
+        j = int(np.lexsort((rows["d_mm"].to_numpy(), rows["D_mm"].to_numpy(), ~both))[0])
+    else:                   # none: the one nearest to holding under the worse of its two loads
+        worst = np.fmin(ta["min_margin"].to_numpy(), tb["min_margin"].to_numpy())
+        j = int(np.argmax(np.where(np.isnan(worst), -np.inf, worst)))
+    row = rows.iloc[[j]].reset_index(drop=True)
+    checks = [_check_from_row(_evaluate(row, fr, fa, n_rpm, sh.life_h, a1, None, None, "grease", None).iloc[0],
+                              fr, fa, n_rpm, sh.life_h) for fr, fa in loads]
+    name = checks[0].designation
+    return (name, name), checks
+
+
+# -- the mesh misalignment -------------------------------------------------------------------------------------
+
+def shaft_deflections(model, x_mm) -> tuple:
+    """(reactions (2, supports) in N: the x-y and x-z planes, deflections (2, len(x)) in mm at ``x_mm``) of a
+    :class:`~geardesign.drives.shaft_beam.ShaftModel`: :func:`beam_deflections` of its sections and loads.
+
+    >>> from geardesign.drives.shaft_beam import ShaftLoad, ShaftModel, second_moment_mm4
+    >>> R, w = shaft_deflections(ShaftModel([(200.0, 40.0)], [0.0, 200.0], [ShaftLoad(100.0, fy_n=-1000.0)]), [100.0])
+    >>> R[0].round(9).tolist(), round(float(w[0, 0] / (-1000 * 200**3 / (48 * 210000 * second_moment_mm4(40)))), 12)
+    ([500.0, 500.0], 1.0)
+    """
+    loads = model.loads
+    return beam_deflections(model.sections, model.supports_mm, [ld.x_mm for ld in loads], [ld.fy_n for ld in loads],
+                            [ld.fz_n for ld in loads],
+                            [-ld.y_mm * ld.fx_n + 1000.0 * ld.mz_nm for ld in loads],
+                            [-ld.z_mm * ld.fx_n + 1000.0 * ld.my_nm for ld in loads], x_mm, model.E_mpa)
+
+
+def beam_deflections(sections, supports_mm, x_mm, fy_n, fz_n, couple_xy_nmm, couple_xz_nmm, x_query_mm,
+                     E_mpa=E_STEEL_MPA) -> tuple:
+    """Reactions (2, supports) (N) and deflections (2, len(x_query)) (mm) in the x-y and x-z planes of a stepped
+    shaft (``sections`` (length, d[, bore]) from x = 0) on its supports under forces (fy, fz) at x and couples
+    (N·mm; an axial force's −y·F_x) there: the beam of :func:`~geardesign.drives.shaft_beam.analyse_shaft` (the
+    same exact segment-wise integration, on the breakpoints alone: curvature is linear between them), on plain
+    arrays, without its validation, tables and critical speeds (the drive's f_sh needs only these). On two
+    supports the reactions come from statics and the two integration constants from w = 0 at both (no linear
+    system); on more, the beam's own solve."""
+    from .shaft_beam import _active, _integrate, _solve_plane, second_moment_mm4
+
+    secs = np.asarray([tuple(s) + (0.0,) * (3 - len(s)) for s in sections], dtype=float)
+    ends = np.concatenate([[0.0], np.cumsum(secs[:, 0])])
+    xf = np.asarray(x_mm, dtype=float)
+    sup = np.asarray(supports_mm, dtype=float)
+    brk = np.unique(np.concatenate([ends, sup, xf]))
+    x = np.concatenate([brk, brk])
+    right = np.concatenate([np.zeros(brk.size, bool), np.ones(brk.size, bool)])
+    order = np.lexsort((right, x))
+    x, right = x[order], right[order]
+    i = np.clip(np.searchsorted(ends, x, side="right") - 1, 0, len(secs) - 1)      # right-limit sections
+    il = np.clip(np.searchsorted(ends, x, side="left") - 1, 0, len(secs) - 1)      # left-limit sections
+    j = np.where(right, i, il)
+    EI = E_mpa * second_moment_mm4(secs[j, 1], secs[j, 2])
+    F = np.vstack([np.asarray(fy_n, dtype=float), np.asarray(fz_n, dtype=float)]).reshape(2, xf.size)
+    C = np.vstack([np.asarray(couple_xy_nmm, dtype=float), np.asarray(couple_xz_nmm, dtype=float)]).reshape(2, xf.size)
+    if sup.size == 2:       # statically determinate: the reactions by statics, the beam's constants by w = 0 at both
+        a, b = sup
+        Rb = (C.sum(axis=1) + F @ (xf - a)) / (a - b)
+        R = np.column_stack([-F.sum(axis=1) - Rb, Rb])
+        xs = np.concatenate([xf, sup])
+        M = np.hstack([F, R]) @ (_active(x, right, xs) * (x[:, None] - xs[None, :])).T - C @ _active(x, right, xf).T
+        kappa = M / EI
+        theta, w = _integrate(kappa, x)
+        ia, ib = np.searchsorted(x, sup, side="left")       # a support's left-limit node (w is continuous)
+        c1 = -(w[:, ib] - w[:, ia]) / (b - a)
+        c0 = -w[:, ia] - c1 * a
+        w = w + c0[:, None] + c1[:, None] * x[None, :]
+        theta = theta + c1[:, None]
+    else:
+        R, _, kappa, theta, w = _solve_plane(x, right, EI, sup, xf, F, xf, C)
+    # the exact cubic of the segment holding each query point, both planes at once (shaft_beam._Plane.at)
+    xq = np.asarray(x_query_mm, dtype=float)
+    i = np.clip(np.searchsorted(x, xq, side="right") - 1, 0, x.size - 2)
+    h = x[i + 1] - x[i]
+    s = xq - x[i]
+    k0, k1 = kappa[:, i], kappa[:, i + 1]
+    dk = np.where(h > 0, (k1 - k0) / np.where(h > 0, h, 1.0), 0.0)
+    return R, w[:, i] + theta[:, i] * s + k0 * s * s / 2.0 + dk * s ** 3 / 6.0
+
+
+def mesh_misalignment_um(pinion_w, wheel_w, direction, r_w1_mm, torque1_nm, b_mm, d_w1_mm, twist_sign=1.0,
+                         G_mpa=G_STEEL_MPA):
+    """f_sh (µm) of a gear pair from its shafts: ``pinion_w``, ``wheel_w`` the deflections (wy, wz) (mm) of the two
+    shafts at the two face ends, left then right (arrays (2, 2): end, plane); ``direction`` the unit tooth force on
+    the pinion (y, z): δ = (w_pinion − w_wheel)·n at each end, their difference across the face Δδ_bend; and the
+    pinion body's wind-up across the face, r_w1·T·b/(2·G·J), J = π·d_w1⁴/32 (the torque fed in at one side of the
+    face and taken out evenly over it): its flank lags, along the tooth force, more at the side away from where the
+    torque comes in (``twist_sign`` +1: it comes in from the left, −1: from the right). f_sh = |Δδ_bend + Δδ_twist|,
+    the two signed as ISO 6336-1:2006 eq. (44) combines the pinion's bending and torsion.
+
+    A pinion whose shafts do not bend: only the wind-up, T·b·r/(2GJ):
+
+    >>> z = [[0.0, 0.0], [0.0, 0.0]]
+    >>> f = mesh_misalignment_um(z, z, (0.0, 1.0), 30.0, 500.0, 60.0, 60.0)
+    >>> round(f, 6) == round(1000 * 30 * 500e3 * 60 / (2 * 81000 * math.pi * 60**4 / 32), 6)
+    True
+    """
+    pw, ww = np.asarray(pinion_w, dtype=float), np.asarray(wheel_w, dtype=float)
+    n = np.asarray(direction, dtype=float)
+    delta = (pw - ww) @ n
+    J = math.pi * d_w1_mm ** 4 / 32.0
+    twist = r_w1_mm * 1000.0 * abs(torque1_nm) * b_mm / (2.0 * G_mpa * J)
+    return 1000.0 * abs(float(delta[1] - delta[0]) + float(twist_sign) * twist)
+
+
+# -- the whole drive -------------------------------------------------------------------------------------------
+
+def _gear_planes(drive, stages_out, elements) -> tuple:
+    """(offsets from bearing A of the gear planes, span) of the default layout (:func:`default_positions`), where a
+    drawn shaft carries a gear its plane where that shaft puts it (the default shafts beside it follow; the two
+    gears of a pair in one plane) and the span at least the drawn shafts' spans."""
+    sh = drive.shafting
+    widths = [float(res["stage"].width_mm) for st, res in zip(drive.stages, stages_out)
+              if getattr(st, "kind", "") == "gear"]
+    offsets, span = default_positions(widths, sh.clearance_mm, sh.gear_gap_mm)
+    drawn: dict = {}
+    for ds in sh.layout:
+        for e in elements.get(ds.at, ()):
+            if e.side != "plane" or e.name not in ds.positions:
+                continue
+            off = ds.positions[e.name] - ds.supports_mm[0]
+            if e.plane in drawn and abs(drawn[e.plane][0] - off) > 1e-6:
+                raise GearDesignError(f"stage '{e.name}': its two gears must be in one plane, {drawn[e.plane][0]:g} mm "
+                                      f"from bearing A on shaft {drawn[e.plane][1]} but {off:g} mm on shaft {ds.at}")
+            drawn[e.plane] = (off, ds.at)
+        span = max(span, ds.supports_mm[1] - ds.supports_mm[0])
+    offsets = [drawn[p][0] if p in drawn else o for p, o in enumerate(offsets)]
+    return offsets, span
+
+
+def _placed(sh, k, els, planes, bores, n_rpm, d_min):
+    """(geometry, model, bearing designations, BearingChecks, material) of shaft k: a drawn one as drawn, a default
+    one at the least bore >= d_min holding DIN 743 and its keys, then on the bearings chosen for it (their bore
+    the seat: a thicker shaft where the life needs a larger bearing)."""
+    from .din743 import _material
+
+    ds = sh.given(k)
+    mat = sh._material if ds is None or ds.material is None else _material(ds.material)
+    geo = _given_geometry(ds, els) if ds is not None else _sized_geometry(sh, mat, els, planes, bores, d_min)
+    model = _model(geo, els)
+    r = two_support_reactions([geo.x[e.name] for e in els], [e.fy for e in els], [e.fz for e in els],
+                              [e.fx for e in els], [e.y_mm for e in els], *geo.supports)
+    seat = geo.d_b if geo.d_b is not None else float(model.diameter_at(geo.supports[0])[0])
+    names, checks = _bearings(sh, ds, r, n_rpm, seat)
+    if ds is None and checks[0].d_mm > geo.d_b:      # the bearing's bore is the seat: a thicker shaft
+        geo = _default_geometry(sh, els, planes, checks[0].d_mm)
+        model = _model(geo, els)
+    return geo, model, names, checks, mat
+
+
+def _mesh_f_sh(drive, stages_out, T, elements, placed) -> dict:
+    """{stage name: f_sh at the nominal load, µm} of every gear pair whose two shafts are placed."""
+    out = {}
+    for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1):
+        if getattr(st, "kind", "") != "gear" or k - 1 not in placed or k not in placed:
+            continue
+        b = float(res["stage"].width_mm)
+        (gp, mp), (gw, mw) = placed[k - 1][:2], placed[k][:2]
+        xp, xw = gp.x[st.name], gw.x[st.name]
+        wp = shaft_deflections(mp, np.clip([xp - b / 2.0, xp + b / 2.0], 0.0, mp.length_mm))[1].T
+        ww = shaft_deflections(mw, np.clip([xw - b / 2.0, xw + b / 2.0], 0.0, mw.length_mm))[1].T
+        pin = next(e for e in elements[k - 1] if e.name == st.name)
+        F = math.hypot(pin.fy, pin.fz)
+        geo_p = res["pair"].geometry()
+        # where the pinion's torque comes from: the elements bringing torque into its shaft (opposite sign)
+        src = [gp.x[e.name] for e in elements[k - 1] if e.torque_nm * pin.torque_nm < 0]
+        sign = 1.0 if (sum(src) / len(src) if src else 0.0) < xp else -1.0
+        out[st.name] = mesh_misalignment_um(wp, ww, (pin.fy / F, pin.fz / F), float(geo_p.dw1) / 2.0,
+                                            float(T[k - 1]), b, float(geo_p.dw1), sign)
+    return out
+
+
+def iso_f_sh_um(stage, pair, torque1_nm) -> float:
+    """ISO 6336-1:2006 eq. (44)'s f_sh (µm) of a gear stage at the nominal load (F_m/b = F_t/b, F_t on the
+    reference circle), with the stage's ``shaft`` strength option if it gives one: the misalignment the strength
+    chain assumes when the shafts are not known (the default shafts are made at least this stiff)."""
+    from ..gears.strength.factors import shaft_misalignment
+
+    b = float(stage.width_mm)
+    d1 = float(pair.geometry().d1)
+    shaft = dict((stage.strength or {}).get("shaft") or {})
+    return float(shaft_misalignment(2000.0 * torque1_nm / d1 / b, b, d1, **shaft))
+
+
+def analyse_shafting(drive, stages_out, n, T) -> dict:
+    """Every shaft of the drive that carries a gear: its geometry (drawn, or the default one sized by DIN 743, its
+    keys, its bearings' life and, with ``Shafting(stiff=True)``, its stiffness), bearing reactions and bearings,
+    safeties, deflections; each gear stage's nominal f_sh; the keys at the seats.
+
+    Stiffness (default shafts): while a gear pair's f_sh from its shafts exceeds ISO 6336-1 eq. (44)'s estimate
+    (:func:`iso_f_sh_um`, what the gear's strength, and a stage sized by its load, assumed), each default shaft of
+    that pair goes to the next bearing bore (a drawn shaft stays as drawn); the table ``shafts`` says which shafts
+    were thickened so.
+
+    Returns dict(shafts, bearings, sections, seat_keys, gear_deflections: DataFrames; rows: the checks table's rows (item, check,
+    margin); f_sh {stage name: µm at the nominal load}; bearing_loads {shaft k: [(designation, Fr, Fa), ...]};
+    analyses {shaft k: ShaftAnalysis}; elements {shaft k: [Element]})."""
+    import pandas as pd
+
+    from . import key as keys
+
+    sh = drive.shafting
+    elements = element_loads(drive, stages_out, T)
+    for ds in sh.layout:
+        if ds.at not in elements:
+            raise GearDesignError(f"layout: shaft {ds.at} carries no gear of the drive (the shafts on bearings are "
+                                  f"{', '.join(map(str, sorted(elements))) or 'none'})")
+    planes = _gear_planes(drive, stages_out, elements)
+    bores = sorted(set(float(v) for v in _catalog(sh.series)["d_mm"]))
+    placed = {k: _placed(sh, k, elements[k], planes, bores, float(n[k]), bores[0]) for k in sorted(elements)}
+    stiffened = set()
+    if sh.stiff:
+        limits = {st.name: iso_f_sh_um(res["stage"], res["pair"], float(T[k - 1]))
+                  for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1)
+                  if getattr(st, "kind", "") == "gear"}
+        for _ in range(len(bores)):
+            f_sh = _mesh_f_sh(drive, stages_out, T, elements, placed)
+            grow = set()
+            for k, st in enumerate(drive.stages, start=1):
+                if st.name in f_sh and f_sh[st.name] > limits[st.name]:
+                    grow |= {j for j in (k - 1, k) if placed[j][0].d_b is not None and placed[j][0].d_b < bores[-1]}
+            if not grow:
+                break
+            for j in grow:
+                d_next = next(d for d in bores if d > placed[j][0].d_b)
+                placed[j] = _placed(sh, j, elements[j], planes, bores, float(n[j]), d_next)
+            stiffened |= grow
+    shaft_rows, bearing_rows, section_rows, key_rows, rows, deflection_rows = [], [], [], [], [], []
+    analyses, bearing_loads = {}, {}
+    for k in sorted(elements):
+        els = elements[k]
+        geo, model, names, checks, mat = placed[k]
+        name = f"shaft {k}"
+        safety, analysis = _safety(geo, els, sh, mat)
+        analyses[k] = analysis
+        d_seat = [float(v) for v in model.diameter_at(list(geo.supports))[0]]
+        for tag, chk, d_s in zip("AB", checks, d_seat):
+            item = f"bearing {k}{tag}"
+            bearing_rows.append(dict(name=item, shaft=k, x_mm=geo.supports["AB".index(tag)],
+                                     designation=chk.designation, seat_d_mm=d_s, bore_mm=chk.d_mm, D_mm=chk.D_mm,
+                                     B_mm=chk.B_mm, fr_n=chk.fr_n, fa_n=chk.fa_n, n_rpm=chk.n_rpm, P_n=chk.P_n,
+                                     L10h=chk.L10h, life_h=sh.life_h, s0=chk.s0, ok=chk.ok))
+            fit = chk.d_mm - d_s
+            if abs(fit) > 1e-9:       # a given bearing whose bore is not the seat's diameter
+                rows.append((item, "bore_fits_seat", -abs(fit) / d_s))
+            for c in ("life", "static_safety", "speed", "axial_load"):
+                v = chk.margins.get(c)
+                if v is not None and math.isfinite(v):
+                    rows.append((item, c, float(v)))
+        bearing_loads[k] = [(chk.designation, chk.fr_n, chk.fa_n) for chk in checks]
+        for _, srow in safety.table.iterrows():
+            if max(abs(srow["M_nm"]), abs(srow["T_nm"]), abs(srow["N_n"]) / 1000.0) < UNLOADED_NM:
+                continue          # a section that carries nothing (beyond the last element): nothing to check
+            s = min(srow["S_D"], srow["S_F"])
+            section_rows.append(dict(shaft=k, section=srow["name"], x_mm=srow["x_mm"], notch=srow["notch"],
+                                     d_mm=srow["d_mm"], M_nm=srow["M_nm"], T_nm=srow["T_nm"], S_D=srow["S_D"],
+                                     S_F=srow["S_F"], ok=bool(srow["ok"])))
+            rows.append((name, f"safety {srow['name']}", s / sh.S_min - 1.0))
+        for e in els:
+            if geo.hubs[e.name] is None:      # cut on its shaft: no key
+                continue
+            d, hub = geo.hubs[e.name]
+            torque = abs(e.torque_nm)
+            sel = keys.select(d, torque, hub)
+            key_rows.append(dict(name=f"key {k} {e.name}", shaft=k, element=e.name, d_mm=d, hub_length_mm=hub,
+                                 torque_nm=torque, b_mm=sel.b_mm, h_mm=sel.h_mm, length_mm=sel.length_mm,
+                                 n_keys=sel.n_keys, margin_crush=sel.margin_crush, margin_shear=sel.margin_shear,
+                                 feasible=sel.feasible))
+            rows += [(f"key {k} {e.name}", "crushing", sel.margin_crush), (f"key {k} {e.name}", "shear",
+                                                                            sel.margin_shear)]
+        el = analysis.elements
+        gears = el["name"].isin([e.name for e in els if e.width_mm is not None])
+        for _, g in el.loc[gears].iterrows():
+            kind = next(e.kind for e in els if e.name == g["name"])
+            deflection_rows.append(dict(shaft=k, gear=f"{g['name']} {kind}", x_mm=g["x_mm"], w_mm=g["w_mm"],
+                                        wy_mm=g["wy_mm"], wz_mm=g["wz_mm"], slope_rad=g["th_rad"]))
+        shaft_rows.append(dict(shaft=k, layout="given" if geo.given else "default",
+                               material=mat.get("material", "given"), length_mm=model.length_mm,
+                               span_mm=geo.supports[1] - geo.supports[0],
+                               d_end_mm=None if geo.d_b is None else geo.d_b - STEP_MM,
+                               d_bearing_mm=d_seat[0], d_gear_mm=None if geo.d_b is None else geo.d_b + STEP_MM,
+                               stiffened=k in stiffened, bearings="/".join(names), least_safety=_least(safety.table),
+                               max_deflection_mm=analysis.max_deflection_mm,
+                               gear_deflection_mm=float(el.loc[gears, "w_mm"].max()),
+                               gear_slope_rad=float(el.loc[gears, "th_rad"].max()),
+                               critical_speed_rpm=analysis.critical_speed_rpm, mass_kg=analysis.mass_kg))
+    return dict(shafts=pd.DataFrame(shaft_rows), bearings=pd.DataFrame(bearing_rows),
+                sections=pd.DataFrame(section_rows), seat_keys=pd.DataFrame(key_rows),
+                gear_deflections=pd.DataFrame(deflection_rows), rows=rows,
+                f_sh=_mesh_f_sh(drive, stages_out, T, elements, placed), bearing_loads=bearing_loads,
+                analyses=analyses, elements=elements)
+
+
+# -- efficiencies and K_Hβ ----------------------------------------------------------------------------------------
+
+def _bearings_of_stages(drive, bearing_loads) -> dict:
+    """{stage index k (1-based): [(designation, shaft 1|2, Fr, Fa), ...]}: each shaft's bearings charged once, to
+    the gear stage whose wheel it carries, else (the input shaft, a shaft a chain drives) to the one whose pinion
+    it carries."""
+    out: dict = {}
+    gear = [getattr(st, "kind", "") == "gear" for st in drive.stages]
+    for k, rows in bearing_loads.items():
+        if k >= 1 and gear[k - 1]:
+            out.setdefault(k, []).extend((d, 2, fr, fa) for d, fr, fa in rows)
+        elif k < len(gear) and gear[k]:
+            out.setdefault(k + 1, []).extend((d, 1, fr, fa) for d, fr, fa in rows)
+    return out
+
+
+def stage_efficiencies(drive, stages_out, n, T, shafting) -> tuple:
+    """(η of every stage as the power flow takes it, the efficiency table): a gear stage whose efficiency was not
+    given, with the Shafting's lubricant, by :func:`geardesign.drives.efficiency.stage_efficiency` (mesh loss,
+    the given no-load loss, the SKF friction of its bearings of series 62/63: others' friction is not modelled,
+    the table says so); every other stage its own efficiency."""
+    import pandas as pd
+
+    from ..gears.pair import GearPair
+    from ..gears.strength import Load
+    from .bearing_friction import SKF_CONSTANTS
+    from .efficiency import BearingLoad, stage_efficiency
+
+    sh = drive.shafting
+    charged = _bearings_of_stages(drive, shafting["bearing_loads"])
+    eta, rows = [], []
+    for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1):
+        p_in = float(T[k - 1]) * float(n[k - 1]) * math.pi / 30.0
+        compute = getattr(st, "kind", "") == "gear" and not st.efficiency_given and sh.lubricant is not None
+        if not compute:
+            eta.append(st.efficiency)
+            rows.append(dict(stage=st.name, source="given" if getattr(st, "efficiency_given", True) else "default",
+                             efficiency=st.efficiency, power_in_w=p_in, mesh_loss_w=math.nan,
+                             bearing_loss_w=math.nan, no_load_loss_w=math.nan, loss_w=(1.0 - st.efficiency) * p_in,
+                             note=""))
+            continue
+        pair, stage = res["pair"], res["stage"]
+        pair = GearPair(pair.m, pair.z1, pair.z2, pair.x1, pair.x2, beta_deg=pair.beta_deg,
+                        face_width_mm=stage.width_mm)
+        mine = charged.get(k, [])
+        modelled = [BearingLoad(d, s, fr, fa) for d, s, fr, fa in mine if d[:2] in SKF_CONSTANTS]
+        left_out = [d for d, *_ in mine if d[:2] not in SKF_CONSTANTS]
+        r = stage_efficiency(pair, Load(torque_nm=float(T[k - 1]), n_rpm=float(n[k - 1])), sh.lubricant,
+                             sh.oil_temperature_c, sh.Ra_um, bearings=modelled, no_load_loss_w=sh.no_load_loss_w,
+                             lubrication=sh.lubrication)
+        eta.append(r.efficiency)
+        rows.append(dict(stage=st.name, source="computed", efficiency=r.efficiency, power_in_w=r.power_in_w,
+                         mesh_loss_w=r.mesh_loss_w, bearing_loss_w=r.bearing_loss_w, no_load_loss_w=r.no_load_loss_w,
+                         loss_w=r.loss_w, note=("friction not modelled for " + ", ".join(left_out)) if left_out else ""))
+    return np.array(eta), pd.DataFrame(rows)
+
+
+def _factor(result, symbol: str) -> float:
+    f = result.factors
+    return float(f.loc[(f["symbol"] == symbol) & (f["gear"] == 0), "value"].iloc[0])
+
+
+def with_shaft_misalignment(drive, kinds, stages_out, stage_rows, f_sh: dict, objective: str) -> tuple:
+    """The gear stages with a material analysed again with f_sh from their shafts: the chain's f_sh given as
+    f_sh,nominal·K_A·K_v (its load level F_m/b), K_Hβ by method C from it (unless the stage's strength options give
+    f_sh, K_Hbeta or K_Fbeta themselves: the user's value wins). Returns (stages, check rows, the table of f_sh and
+    K_Hβ with the ISO 6336-1 default beside the shafts')."""
+    import pandas as pd
+    from dataclasses import replace
+
+    stages_out = list(stages_out)
+    rows_by_stage: dict = {}
+    for item, check, margin in stage_rows:
+        rows_by_stage.setdefault(item, []).append((item, check, margin))
+    table = []
+    for i, (kind, st) in enumerate(zip(kinds, drive.stages)):
+        res = stages_out[i]
+        if st.name not in f_sh or res.get("strength") is None:
+            continue
+        stage = res["stage"]
+        factors = dict((stage.strength or {}).get("factors") or {})
+        before = _factor(res["strength"], "K_Hbeta")
+        K_v = _factor(res["strength"], "K_v")
+        value = f_sh[st.name] * stage.application_factor * K_v
+        own = any(k in factors for k in ("f_sh", "K_Hbeta"))
+        if not own:
+            factors["f_sh"] = value
+            new = replace(stage, strength={**(stage.strength or {}), "factors": factors})
+            out = kind.analyse(new, res["flow"], objective)
+            rows_by_stage[st.name] = [(st.name, k, v) for k, v in out.pop("margins").items()]
+            out.pop("size", None)
+            out.pop("mass", None)
+            stages_out[i] = dict(out, flow=res["flow"])
+        after = _factor(stages_out[i]["strength"], "K_Hbeta")
+        table.append(dict(stage=st.name, f_sh_nominal_um=f_sh[st.name], K_A=stage.application_factor, K_v=K_v,
+                          f_sh_um=value, K_Hbeta_default=before, K_Hbeta=after,
+                          source="given by the user" if own else "shafts"))
+    rows = [r for st in drive.stages for r in rows_by_stage.get(st.name, [])]
+    return stages_out, rows, pd.DataFrame(table)

@@ -1,0 +1,398 @@
+"""geardesign.drives.shafting_analysis: the drive's shafts, bearings, efficiencies and K_Hβ from the shafts.
+
+Independent checks written here: statics of a shaft on two bearings (every load balanced, 1e-9), the beam's
+closed-form deflection under a point load (Gere & Goodno, *Mechanics of Materials*, Table H-2 case 5:
+w = F·b·x·(L² − b² − x²)/(6·L·E·I) for x <= a) for the mesh misalignment f_sh, K_Hβ of ISO 6336-1:2019
+eq. (40) with F_βx = 1.33·f_sh + f_ma (ISO 6336-1:2006 7.6.2.1) and y_β = 320/σ_Hlim·F_βx (7.6.3, through
+hardened steel below 5 m/s), the power flow with the computed efficiencies; and that a too-thin seat or a
+short-lived bearing fails the design naming its check.
+"""
+import math
+
+import numpy as np
+import pytest
+
+import geardesign as gd
+from geardesign.drives.shaft_beam import E_STEEL_MPA, ShaftLoad, ShaftModel, analyse_shaft
+from geardesign.drives.shafting import DriveShaft, Shafting
+from geardesign.drives.shafting_analysis import (G_STEEL_MPA, element_loads, mesh_misalignment_um,
+                                                  two_support_reactions)
+from geardesign.errors import GearDesignError
+from geardesign.gears.strength import material
+
+
+def _two_stage(shafting=None, n_in=960.0, **kw):
+    return gd.Drive(power_kw=11, n_in_rpm=n_in, stages=[
+        gd.GearStage(3, 20, 80, material="42CrMo4", face_width_mm=45, name="fast", beta_deg=12, **kw),
+        gd.GearStage(4, 21, 84, material="42CrMo4", face_width_mm=65, name="slow")],
+        shafting=Shafting() if shafting is None else shafting)
+
+
+@pytest.fixture(scope="module")
+def two_stage():
+    return _two_stage().analyse()
+
+
+# ---------------------------------------------------------------------------------------------- statics
+
+def test_reactions_balance_random_loads():
+    rng = np.random.default_rng(7)
+    for _ in range(200):
+        m = int(rng.integers(1, 6))
+        xa, xb = sorted(rng.uniform(0, 500, 2))
+        x = rng.uniform(0, 600, m)
+        fy, fz, fx, y = (rng.normal(0, 5000, m) for _ in range(4))
+        r = two_support_reactions(x, fy, fz, fx, y, xa, xb)
+        scale = 1 + np.abs(np.concatenate([fy, fz, fx])).max() * 600
+        # Σ F = 0 in y and z, Σ F_x = 0 with A locating
+        assert abs(fy.sum() + r["Ay"] + r["By"]) <= 1e-9 * scale
+        assert abs(fz.sum() + r["Az"] + r["Bz"]) <= 1e-9 * scale
+        assert abs(fx.sum() + r["Ax"]) <= 1e-9 * scale
+        # Σ M about B (not the point the function takes moments about): x-y plane with the axial couples −y·fx
+        assert abs((fy * (x - xb)).sum() + r["Ay"] * (xa - xb) - (y * fx).sum()) <= 1e-9 * scale
+        assert abs((fz * (x - xb)).sum() + r["Az"] * (xa - xb)) <= 1e-9 * scale
+
+
+def test_reactions_agree_with_the_beam(two_stage):
+    # the beam of shaft_beam (its own linear system) gives the bearing loads the statics give
+    bearings = two_stage.table("bearings")
+    for k, a in two_stage.shafting["analyses"].items():
+        R = a.reactions
+        got = bearings[bearings["shaft"] == k]
+        np.testing.assert_allclose(got["fr_n"].to_numpy(), R["R_n"].to_numpy(), rtol=1e-9)
+        assert got["fa_n"].iloc[0] == pytest.approx(abs(R["Rx_n"].iloc[0]), rel=1e-9, abs=1e-9)
+
+
+def test_element_loads_action_reaction_and_torque_balance(two_stage):
+    d = two_stage.drive
+    T = two_stage.flow["torque_nm"].to_numpy()
+    els = element_loads(d, list(two_stage.stages), T)
+    for name in ("fast", "slow"):
+        on = [e for es in els.values() for e in es if e.name == name]
+        p, w = (next(e for e in on if e.kind == kind) for kind in ("pinion", "wheel"))
+        assert (p.fy + w.fy, p.fz + w.fz, p.fx + w.fx) == pytest.approx((0, 0, 0), abs=1e-9)
+        st = next(s for s in two_stage.stages if s["stage"].name == name)
+        geo = st["pair"].geometry()
+        # the operating pitch circle's F_t = 2000·T1/d_w1 and F_r = F_t·tan α_wt (gears/forces.py's convention)
+        F_t = 2000 * st["flow"].torque_in_nm / geo.dw1
+        assert abs(p.fz) == pytest.approx(F_t, rel=1e-12)
+        assert abs(p.fy) == pytest.approx(F_t * math.tan(math.radians(geo.alpha_w_deg)), rel=1e-12)
+    for k, es in els.items():
+        assert abs(sum(e.torque_nm for e in es)) <= 1e-9 * max(T)
+
+
+# ------------------------------------------------------------------------------------------- f_sh, K_Hβ
+
+def _point_deflection(F, a, L, x, EI):
+    """Simply supported beam, point load F at a: deflection at x (Gere & Goodno Table H-2 case 5)."""
+    b = L - a
+    if x <= a:
+        return F * b * x * (L * L - b * b - x * x) / (6 * L * EI)
+    xr, ar = L - x, b
+    return F * a * xr * (L * L - a * a - xr * xr) / (6 * L * EI)
+
+
+def test_f_sh_and_K_Hbeta_method_C_from_uniform_shafts():
+    # a spur stage on two uniform shafts, the gears off centre at 0.35 L: f_sh by the closed-form beam
+    L, a, b_face, d1, d2 = 240.0, 84.0, 50.0, 40.0, 55.0
+    lay = (DriveShaft(0, [(L, d1)], [0.0, L], {"g": a, "coupling": 0.0}),
+           DriveShaft(1, [(L, d2)], [0.0, L], {"g": a, "coupling": L}))
+    drive = gd.Drive(power_kw=7.5, n_in_rpm=700, stages=[gd.GearStage(3, 22, 77, 0.2, 0.1, material="42CrMo4",
+                                                                         face_width_mm=b_face, name="g")],
+                     shafting=Shafting(layout=lay))
+    r = drive.analyse()
+    st = r.stages[0]
+    geo = st["pair"].geometry()
+    T1 = st["flow"].torque_in_nm
+    F_t = 2000 * T1 / geo.dw1
+    F = F_t / math.cos(math.radians(geo.alpha_w_deg))           # the transverse tooth force (β = 0)
+    EI1, EI2 = E_STEEL_MPA * math.pi * d1 ** 4 / 64, E_STEEL_MPA * math.pi * d2 ** 4 / 64
+    ends = (a - b_face / 2, a + b_face / 2)
+    # pinion and wheel pushed apart along the tooth force: the relative deflection is the sum of the two
+    delta = [_point_deflection(F, a, L, x, EI1) + _point_deflection(F, a, L, x, EI2) for x in ends]
+    twist = geo.dw1 / 2 * T1 * 1000 * b_face / (2 * G_STEEL_MPA * math.pi * geo.dw1 ** 4 / 32)
+    # the torque comes in from the coupling at x = 0, left of the gear: the far (right) end lags, along the force
+    f_nominal = 1000 * abs(delta[1] - delta[0] + twist)
+    mm = r.table("mesh_misalignment").iloc[0]
+    assert mm["f_sh_nominal_um"] == pytest.approx(f_nominal, rel=1e-9)
+    # K_Hβ by method C (ISO 6336-1:2019 eq. (40); F_βx, y_β of the 2006 edition) from the f_sh it was given
+    res = st["strength"]
+    fac = res.factors.set_index("symbol")
+    K_v, c_gb, f_ma, F_beta = (float(fac.loc[s, "value"]) for s in ("K_v", "c_gamma_beta", "f_ma", "F_beta"))
+    f_sh = f_nominal * 1.0 * K_v                                 # K_A = 1
+    assert float(fac.loc["f_sh", "value"]) == pytest.approx(f_sh, rel=1e-9)
+    w_m = 2000 * T1 / geo.d1 * K_v / b_face                      # F_m/b, F_t on the reference circle (eq. (1))
+    F_bx = max(1.33 * f_sh + f_ma, 0.005 * w_m, 0.5 * F_beta)
+    v = math.pi * geo.d1 * 700 / 60000
+    assert v < 5
+    sigma_Hlim = material("42CrMo4").sigma_Hlim_mpa
+    y_b = min(320 / sigma_Hlim * F_bx, 25600 / sigma_Hlim, F_bx)
+    ratio = c_gb * (F_bx - y_b) / w_m
+    K_Hb = 1 + ratio / 2 if ratio <= 2 else math.sqrt(2 * ratio)
+    assert mm["K_Hbeta"] == pytest.approx(K_Hb, rel=1e-9)
+    assert float(fac.loc["K_Hbeta", "value"]) == pytest.approx(K_Hb, rel=1e-9)
+
+
+def test_mesh_misalignment_is_a_difference_along_the_force():
+    w = [[0.001, 0.0], [0.004, 0.0]]                 # the pinion tilts 3 µm in y over the face
+    assert mesh_misalignment_um(w, [[0, 0], [0, 0]], (1.0, 0.0), 30, 0.0, 40, 60) == pytest.approx(3.0)
+    assert mesh_misalignment_um(w, [[0, 0], [0, 0]], (0.0, 1.0), 30, 0.0, 40, 60) == pytest.approx(0.0)
+    assert mesh_misalignment_um(w, w, (1.0, 0.0), 30, 0.0, 40, 60) == pytest.approx(0.0)
+
+
+def test_user_given_f_sh_wins():
+    r = _two_stage(strength={"factors": {"f_sh": 7.0}}).analyse()
+    mm = r.table("mesh_misalignment").set_index("stage")
+    assert mm.loc["fast", "source"] == "given by the user"
+    fac = next(s for s in r.stages if s["stage"].name == "fast")["strength"].factors.set_index("symbol")
+    assert float(fac.loc["f_sh", "value"]) == 7.0
+
+
+# ------------------------------------------------------------------------------------------- efficiency
+
+def test_computed_efficiencies_in_the_power_flow():
+    oil = gd.Lubricant(220, 19)
+    sh = Shafting(lubricant=oil)
+    r = gd.Drive(power_kw=11, n_in_rpm=960, stages=[
+        gd.GearStage(3, 20, 80, material="42CrMo4", face_width_mm=45, name="fast"),
+        gd.GearStage(4, 21, 84, material="42CrMo4", face_width_mm=65, name="slow", efficiency=0.95)],
+        shafting=sh).analyse()
+    eff = r.table("efficiency").set_index("stage")
+    assert eff.loc["fast", "source"] == "computed" and eff.loc["slow", "source"] == "given"
+    assert eff.loc["slow", "efficiency"] == 0.95                     # a given efficiency wins
+    assert 0.97 < eff.loc["fast", "efficiency"] < 1.0
+    # the flow: T_k = T_{k−1}·u_k·η_k with the computed η (its fixed point to 1e-6)
+    T = r.flow["torque_nm"].to_numpy()
+    assert T[1] == pytest.approx(T[0] * 4 * eff.loc["fast", "efficiency"], rel=1e-5)
+    assert T[2] == pytest.approx(T[1] * 4 * 0.95, rel=1e-12)
+    P = r.flow["power_kw"].to_numpy()
+    assert r.overall_efficiency == pytest.approx(P[-1] / P[0], rel=1e-12)
+    assert r.heat_kw == pytest.approx(P[0] - P[-1], rel=1e-12)
+    # the stage's losses: mesh + bearings (both shafts' bearings charged once: shaft 0 and 1 to fast, 2 to slow)
+    assert eff.loc["fast", "loss_w"] == pytest.approx(eff.loc["fast", "mesh_loss_w"] + eff.loc["fast", "bearing_loss_w"])
+
+
+def test_without_lubricant_efficiencies_stay(two_stage):
+    eff = two_stage.table("efficiency")
+    assert (eff["efficiency"] == 0.98).all() and (eff["source"] == "default").all()
+
+
+# ------------------------------------------------------------------------------------ checks that fail
+
+def test_checks_appear(two_stage):
+    c = two_stage.checks
+    items = set(c["item"])
+    assert {"shaft 0", "shaft 1", "shaft 2", "bearing 0A", "bearing 2B", "key 1 slow"} <= items
+    assert set(c.loc[c["item"] == "bearing 1B", "check"]) >= {"life", "static_safety", "speed"}
+    # the bearings reach the required life, the seats S_min, the keys sit on the seat diameters
+    assert (two_stage.table("bearings")["L10h"] >= 20_000).all()
+    assert (two_stage.table("sections")[["S_D", "S_F"]].min(axis=1) >= 1.2).all()
+    shafts = two_stage.table("shafts").set_index("shaft")
+    keys = two_stage.table("seat_keys").set_index("name")
+    assert keys.loc["key 1 slow", "d_mm"] == shafts.loc[1, "d_gear_mm"]
+    assert shafts.loc[1, "d_bearing_mm"] == float(two_stage.table("bearings").set_index("name").loc["bearing 1A",
+                                                                                                      "bore_mm"])
+
+
+def test_too_thin_shaft_fails_by_name():
+    lay = (DriveShaft(1, [(40.0, 14.0), (170.0, 16.0), (40.0, 14.0)], [20.0, 230.0],
+                      {"fast": 72.5, "slow": 152.5}, bearings=("6202", "6202")),)
+    r = _two_stage(Shafting(layout=lay)).analyse()
+    assert not r.success
+    bad = r.checks[~r.checks["ok"]]
+    assert ("shaft 1", "safety key slow") in set(zip(bad["item"], bad["check"]))
+    assert "shaft 1: safety key slow" in r.message
+
+
+def test_short_bearing_life_fails_by_name():
+    lay = (DriveShaft(0, [(260.0, 30.0)], [70.0, 250.0], {"fast": 112.5, "coupling": 0.0},
+                      bearings=("6206", "6206")),)
+    r = _two_stage(Shafting(layout=lay, life_h=200_000)).analyse()
+    bad = r.checks[~r.checks["ok"]]
+    assert ("bearing 0A", "life") in set(zip(bad["item"], bad["check"]))
+    assert "bearing 0A: life" in r.message
+
+
+def test_thicker_shaft_is_never_less_safe():
+    least = []
+    for d in (20.0, 25.0, 30.0, 40.0, 55.0):
+        lay = (DriveShaft(1, [(250.0, d)], [20.0, 230.0], {"fast": 72.5, "slow": 152.5}),)
+        r = _two_stage(Shafting(layout=lay)).analyse()
+        least.append(float(r.table("shafts").set_index("shaft").loc[1, "least_safety"]))
+    assert all(b >= a for a, b in zip(least, least[1:]))
+
+
+def test_given_layout_names_what_it_misses():
+    lay = (DriveShaft(1, [(250.0, 40.0)], [20.0, 230.0], {"fast": 72.5}),)
+    with pytest.raises(GearDesignError, match="'slow'"):
+        _two_stage(Shafting(layout=lay)).analyse()
+
+
+def test_json_has_the_tables(two_stage):
+    out = two_stage.to_dict()
+    for k in ("shafts", "bearings", "sections", "seat_keys", "efficiency", "mesh_misalignment"):
+        assert k in out
+    assert math.isfinite(out["overall_efficiency"])
+    with pytest.raises(GearDesignError, match="table must be one of"):
+        two_stage.table("nope")
+
+
+def test_beam_path_agrees_with_analyse_shaft(two_stage):
+    from geardesign.drives.shafting_analysis import shaft_deflections
+
+    for k, a in two_stage.shafting["analyses"].items():
+        xq = np.linspace(0.0, a.model.length_mm, 7)
+        R, w = shaft_deflections(a.model, xq)
+        ref = a.deflection_at(xq)
+        scale = np.abs(ref[["wy_mm", "wz_mm"]].to_numpy()).max()
+        np.testing.assert_allclose(w.T, ref[["wy_mm", "wz_mm"]].to_numpy(), rtol=0, atol=1e-10 * scale)
+        np.testing.assert_allclose(R[0], a.reactions["Ry_n"].to_numpy(), rtol=1e-10, atol=1e-8)
+        np.testing.assert_allclose(R[1], a.reactions["Rz_n"].to_numpy(), rtol=1e-10, atol=1e-8)
+
+
+def test_chosen_bearings_are_the_smallest_that_hold(two_stage):
+    # every catalog bearing of a smaller outside diameter on a seat this wide fails one of the shaft's two loads
+    # (gd.check_bearing, the standalone check, one by one)
+    from geardesign.drives.bearing import bearing_catalog
+    from geardesign.drives.shafting import BEARING_SERIES
+
+    cat = bearing_catalog(list(BEARING_SERIES))
+    b = two_stage.table("bearings")
+    for k in (1, 2):
+        mine = b[b["shaft"] == k]
+        D, seat = float(mine["D_mm"].iloc[0]), float(mine["seat_d_mm"].iloc[0])
+        assert mine["ok"].all()
+        n = float(mine["n_rpm"].iloc[0])
+        for _, row in cat[(cat["D_mm"] < D) & (cat["d_mm"] >= seat)].iterrows():
+            ok = [gd.check_bearing(row["designation"], max(fr, 1e-9), fa, n, life_h=20_000).ok
+                  for fr, fa in zip(mine["fr_n"], mine["fa_n"])]
+            assert not all(ok), row["designation"]
+
+
+def test_cut_on_shaft_rule_and_body_in_the_default_shaft():
+    from geardesign.drives.shafting_analysis import cut_on_shaft
+
+    # rim over the keyway (d_f − d)/2 − 0.05·d against 2.5·m, written out
+    for d_f, m, d in ((54.3, 3.0, 35.0), (54.3, 3.0, 45.0), (200.0, 4.0, 60.0)):
+        assert cut_on_shaft(d_f, m, d) == ((d_f - d) / 2 - 0.05 * d < 2.5 * m)
+    # a default shaft whose pinion is cut on it: the pinion body (its root diameter over its face width) is a section,
+    # it has no key, and its sides are checked as shoulders
+    r = _two_stage(Shafting(bearing_series="63")).analyse()
+    keys = set(r.table("seat_keys")["name"])
+    sections = r.table("sections")
+    shaft0 = r.table("shafts").set_index("shaft").loc[0]
+    pinion = next(s for s in r.stages if s["stage"].name == "fast")["pair"].geometry()
+    if cut_on_shaft(pinion.df1, 3.0, shaft0["d_gear_mm"]):
+        assert "key 0 fast" not in keys
+        assert sections["section"].str.startswith("gear body").any()
+    else:
+        assert "key 0 fast" in keys
+
+
+def test_stiff_shafts_meet_the_iso_estimate():
+    # Shafting(stiff=True): every gear pair's f_sh from its default shafts at most ISO 6336-1 eq. (44)'s
+    from geardesign.drives.shafting_analysis import iso_f_sh_um
+
+    d = gd.Drive(power_kw=4, n_in_rpm=1450, shafting=Shafting(stiff=True), stages=[
+        gd.GearStage(2.5, 22, 88, material="42CrMo4", face_width_mm=30, name="g")])
+    r = d.analyse()
+    st = r.stages[0]
+    mm = r.table("mesh_misalignment").iloc[0]
+    assert mm["f_sh_nominal_um"] <= iso_f_sh_um(st["stage"], st["pair"], st["flow"].torque_in_nm) * (1 + 1e-12)
+
+
+def test_a_bought_unit_feeds_the_gear_shaft_through_its_end():
+    # a belt (given stage) drives the pinion's shaft: its pulley is the overhung element bringing the torque in
+    d = gd.Drive(power_kw=7.5, n_in_rpm=1450, shafting=Shafting(), stages=[
+        gd.GivenStage(2, 0.95, "belt"), gd.GearStage(3, 20, 60, material="42CrMo4", face_width_mm=40, name="g")])
+    r = d.analyse()
+    els = r.shafting["elements"]
+    assert sorted(els) == [1, 2]                       # the motor shaft 0 carries no gear: not on the drive's shafts
+    belt = next(e for e in els[1] if e.name == "belt")
+    T = r.flow["torque_nm"].to_numpy()
+    assert belt.side == "left" and abs(belt.torque_nm) == pytest.approx(T[1], rel=1e-12)
+    assert next(e for e in els[2] if e.name == "coupling").side == "right"
+
+
+# ---------------------------------------------------------------------------------------------- the search
+
+def _small_search(**kw):
+    return gd.Drive(power_kw=4, n_in_rpm=1450, shafting=Shafting(**kw), stages=[
+        gd.GearStage(3, z1_range=(18, 20), ratio_range=(3.2, 3.8), material="42CrMo4", face_width_mm=30)])
+
+
+def test_search_returns_its_best_on_shafts_and_bearings():
+    r = _small_search().optimize(total_ratio=3.5, ratio_tol=0.05, top=3)
+    assert r.success and r.best.shafting is not None and r.best.success
+    ranked = r.table[r.table["rank"].notna()]
+    assert ranked["shafts"].iloc[0] == "holds"
+    assert {"bearing 0A", "shaft 1"} <= set(r.best.checks["item"])
+
+
+def test_search_whose_ranked_designs_fail_on_their_bearings_says_so():
+    # the input shaft drawn on 6204 bearings, a life of 10^6 h: every ranked design fails on its bearings
+    lay = (DriveShaft(0, [(200.0, 20.0)], (20.0, 180.0), {"gear": 60.0, "coupling": 0.0}, bearings=("6204", "6204")),)
+    r = _small_search(life_h=1e6, layout=lay).optimize(total_ratio=3.5, ratio_tol=0.05, top=2)
+    assert not r.success and r.best is None
+    assert "fail with their shafts" in r.message
+    assert any("life" in c for c in r.conflict)
+    ranked = r.table[r.table["rank"].notna()]
+    assert ranked["shafts"].head(2).str.startswith("fails").all()
+
+
+def test_gear_deflections_are_the_beams(two_stage):
+    # each gear's deflection and slope: the beam's at the gear's place (shaft_beam.ShaftAnalysis.deflection_at)
+    t = two_stage.table("gear_deflections")
+    assert len(t) == 4
+    for _, g in t.iterrows():
+        d = two_stage.shafting["analyses"][g["shaft"]].deflection_at([g["x_mm"]]).iloc[0]
+        assert g["w_mm"] == pytest.approx(d["w_mm"], rel=1e-12) and g["slope_rad"] == pytest.approx(d["th_rad"], rel=1e-9)
+
+
+def test_a_drawn_shaft_must_carry_a_gear():
+    d = gd.Drive(power_kw=4, n_in_rpm=1450, shafting=Shafting(layout=(
+        DriveShaft(2, [(200.0, 40.0)], (20.0, 180.0), {"chain": 10.0}),)), stages=[
+        gd.GearStage(3, 20, 60, material="42CrMo4", face_width_mm=30, name="g"), gd.ChainStage(z1=17, z2=34)])
+    with pytest.raises(GearDesignError, match="shaft 2 carries no gear"):
+        d.analyse()
+
+
+def test_thicker_drawn_shaft_never_less_safe_property(two_stage):
+    # random diameters of the intermediate shaft, its loads those of the two-stage drive: the least DIN 743 safety
+    # of every checked section never falls as every diameter grows
+    from hypothesis import given, settings, strategies as st
+
+    from geardesign.drives.shafting_analysis import _given_geometry, _least, _safety
+
+    els = two_stage.shafting["elements"][1]
+    sh = two_stage.drive.shafting
+
+    def least(d):
+        ds = DriveShaft(1, [(40.0, d), (170.0, d + 5), (40.0, d)], (20.0, 230.0), {"fast": 72.5, "slow": 152.5})
+        return _least(_safety(_given_geometry(ds, els), els, sh, sh._material)[0].table)
+
+    @settings(max_examples=12, deadline=None)
+    @given(st.floats(18.0, 90.0), st.floats(0.5, 20.0))
+    def check(d, step):
+        assert least(d + step) >= least(d) * (1 - 1e-12)
+
+    check()
+
+
+@pytest.mark.parametrize("supports", [(10.0, 230.0), (0.0, 120.0, 240.0)])
+def test_beam_deflections_on_two_and_three_supports(supports):
+    # the lean beam against shaft_beam.analyse_shaft (its own linear system), a stepped shaft, forces and a couple
+    from geardesign.drives.shafting_analysis import beam_deflections
+
+    secs = [(60.0, 30.0), (120.0, 40.0, 10.0), (60.0, 30.0)]
+    loads = [ShaftLoad(50.0, fy_n=-2000.0, fz_n=800.0), ShaftLoad(170.0, fy_n=1500.0, fx_n=900.0, y_mm=40.0),
+             ShaftLoad(235.0, fz_n=-600.0)]
+    a = analyse_shaft(ShaftModel(secs, supports, loads))
+    xq = np.linspace(0.0, 240.0, 9)
+    R, w = beam_deflections(secs, supports, [ld.x_mm for ld in loads], [ld.fy_n for ld in loads],
+                            [ld.fz_n for ld in loads], [-ld.y_mm * ld.fx_n for ld in loads], [0.0] * 3, xq)
+    ref = a.deflection_at(xq)
+    scale = np.abs(ref[["wy_mm", "wz_mm"]].to_numpy()).max()
+    np.testing.assert_allclose(w.T, ref[["wy_mm", "wz_mm"]].to_numpy(), rtol=0, atol=1e-10 * scale)
+    np.testing.assert_allclose(R[0], a.reactions["Ry_n"].to_numpy(), rtol=1e-10, atol=1e-8)
+    np.testing.assert_allclose(R[1], a.reactions["Rz_n"].to_numpy(), rtol=1e-10, atol=1e-8)
