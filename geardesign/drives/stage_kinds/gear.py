@@ -189,9 +189,14 @@ def margin_solutions(stage: GearStage, pairs: list) -> None:
 
 
 def _shift_objective(stage: GearStage, objective: str) -> str:
-    """The objective a stage's free shifts are solved for: its own, else max_margin for a max_margin drive and
-    max_x_sum (the contact-strength choice) for the others."""
-    return stage.shift_objective or ("max_margin" if objective == "max_margin" else "max_x_sum")
+    """The objective a stage's free shifts are solved for: its own, else max_margin for a max_margin drive or a
+    stage checked at its manufactured state in a free housing (max_x_sum puts such a pair on its ε_α boundary,
+    which the shop's thinner teeth then cross: every design failed contact_ratio_manufactured), and max_x_sum
+    (the contact-strength choice) for the others."""
+    if stage.shift_objective:
+        return stage.shift_objective
+    robust = objective == "max_margin" or (stage.fit is not None and stage.housing == "free")
+    return "max_margin" if robust else "max_x_sum"
 
 
 def gear_solution(stage: GearStage, z1: int, z2: int, objective: str) -> dict:
@@ -244,8 +249,10 @@ def _shifts_scale_free(stage: GearStage) -> bool:
     """True when the pair's shift solution does not depend on its module and face width: each of its
     checks is a built-in geometric one, a margin in units of the module; the face width enters only
     ε_β, i.e. the ε_γ check of a helical pair. (A registered check or a strength check in ``checks``
-    may depend on lengths in mm: such a stage is solved at each module.)"""
-    return _scale_free_checks(stage.checks_key(), stage.beta_deg != 0.0)
+    may depend on lengths in mm: such a stage is solved at each module. So is a stage checked at its manufactured
+    state, ``fit``: GOST 1643's thickness allowances are µm that grow slower than m, so a design holding at m = 1
+    may fail at its own module: a sized stage in a free housing was returned failing interference2_manufactured.)"""
+    return stage.fit is None and _scale_free_checks(stage.checks_key(), stage.beta_deg != 0.0)
 
 
 @lru_cache(maxsize=64)
@@ -308,6 +315,15 @@ def _strength_first_fits(stage, pairs, batch, flows):
         j = start + (ok[0] if ok.size else int(np.argmax(w)))
         yield i, m, sol, float(B[j]), {k: float(v[j]) for k, v in margins.items()}
         start += n
+
+
+def _at_module(stage: GearStage, m: float, face_width_mm) -> GearStage:
+    """A sized stage at module m and width b with the rules it is sized under kept (its housing, shift window and
+    mating type): a stage given m falls back to a free housing, the default window and no manufactured state,
+    so ``replace(stage, m=m)`` alone solved a sized stage's candidates by other rules than the stage's (a free
+    housing's sized stage came out with x2 = 2.18 and failed its manufactured state when analysed)."""
+    return replace(stage, m=m, face_width_mm=face_width_mm, center_distance=stage.housing, shift_bounds=stage.bounds,
+                   mating_type=stage.fit or "none")
 
 
 def _sized_stage(stage: GearStage, sol: dict) -> GearStage:
@@ -375,7 +391,7 @@ class GearKind(ToothedKind):
         return out
 
     def _candidate(self, stage, m, b, z1, z2, objective, flow) -> dict:
-        st = replace(stage, m=m, face_width_mm=b)
+        st = _at_module(stage, m, b)
         return dict(self._with_strength(st, gear_solution(st, z1, z2, objective), z1, z2, flow), m=m, face_width_mm=b)
 
     def _sized(self, stage, z1, z2, objective, flow) -> dict:
@@ -399,7 +415,7 @@ class GearKind(ToothedKind):
             return self._standard_sized(stage, z1, z2, objective, flow)
         free = _shifts_scale_free(stage)
         b_ref = stage.face_width_mm if free or stage.face_width_mm is not None else widest_width(stage, z1)
-        ref = gear_solution(replace(stage, m=1.0, face_width_mm=b_ref), z1, z2, objective)
+        ref = gear_solution(_at_module(stage, 1.0, b_ref), z1, z2, objective)
         if "x1" not in ref:
             return dict(ref, m=math.nan, face_width_mm=None)
         cands, best = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
@@ -568,7 +584,7 @@ class GearKind(ToothedKind):
             if margin and stage.m is not None:
                 margin_solutions(stage, pairs)
             return super().solve_many(stage, options, objective, flows)
-        unit = replace(stage, m=1.0)      # one stage for all (building one validates it: ~50 µs)
+        unit = _at_module(stage, 1.0, stage.face_width_mm)   # one stage for all (building one validates it: ~50 µs)
         if margin:
             margin_solutions(unit, pairs)
         refs = [gear_solution(unit, z1, z2, objective) for z1, z2 in pairs]

@@ -53,8 +53,17 @@ def test_a_stage_without_module_is_accepted_and_refused_without_a_sizing_functio
         st.width_mm
 
 
+def test_a_sizing_function_s_candidates_keep_the_stage_s_housing(sizing):
+    # round 12: a candidate of the sizing function was solved as a stage of given module, i.e. in a free housing;
+    # on the default GOST 2185-66 housing 20/60 at m 3 needs a_w 125 mm, x_Σ = (125 − 120)/3 = 1.67 above the
+    # reducer window's 1.0 (a_w 112: −2.7), so the next candidate, m 3.5, a_w 140 mm (x_Σ = 0), is taken
+    a = gd.Drive(power_kw=4, n_in_rpm=1500, stages=[gd.GivenStage(2, 0.95), gd.GearStage(z1=20, z2=60)]).analyse()
+    s = a.stages[1]["summary"]
+    assert s["m"] == 3.5 and a.stages[1]["pair"].geometry().a_w == pytest.approx(140.0, abs=1e-9)
+
+
 def test_analyse_sizes_the_stage_at_the_torque_it_carries(sizing):
-    st = gd.GearStage(z1=20, z2=60, name="C45 pair")
+    st = gd.GearStage(z1=20, z2=60, name="C45 pair", center_distance="free")     # every module a candidate
     a = gd.Drive(power_kw=4, n_in_rpm=1500, stages=[gd.GivenStage(2, 0.95), st]).analyse()
     t_in = 4000 / _omega(1500) * 2 * 0.95                  # 48.38 N·m into the gear at 750 rpm
     assert SEEN[0][:4] == pytest.approx((t_in, 750, 20, 60), rel=1e-14)
@@ -101,7 +110,8 @@ def _exhaustive(objective):
 @pytest.mark.parametrize("objective", ["min_size", "min_mass"])
 def test_the_search_sizes_each_design_at_its_own_load(sizing, objective):
     stages = [gd.GearStage(2, z1_range=(17, 17), ratio_range=(3, 4.5), name="g1"),
-              gd.GearStage(None, z1_range=(17, 17), ratio_range=(2.5, 4), name="g2")]
+              gd.GearStage(None, z1_range=(17, 17), ratio_range=(2.5, 4), name="g2", center_distance="free",
+                           shift_bounds=(-1.5, 3.0), mating_type="none")]     # the rules _exhaustive solves by
     r = gd.Drive(power_kw=3, n_in_rpm=1450, stages=stages).optimize(12, 0.03, objective, top=10)
     ok = r.table[r.table["feasible"]]
     for _, row in ok.iterrows():       # every listed design sized at the torque of its own split
