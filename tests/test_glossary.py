@@ -14,7 +14,8 @@ GLOSSARY = Path(__file__).resolve().parents[1] / "docs" / "glossary.md"
 
 # The deprecated aliases, explicitly: (old, new) -> where. Each is a row of the glossary's last table and is
 # tested below to warn and to give the new name's result.
-DEPRECATED = {("speed_rpm", "n_rpm"), ("m_n", "m"), ("m_mm", "m"), ("a_w_mm", "a_w"), ("color", "colour")}
+DEPRECATED = {("speed_rpm", "n_rpm"), ("m_n", "m"), ("m_mm", "m"), ("a_w_mm", "a_w"), ("color", "colour"),
+              ("fr_n", "F_r_n"), ("fa_n", "F_a_n")}
 # An old keyword that stays as a result's field (a key of its to_dict() and of a command's JSON; the glossary's
 # "What stays" says why): where it may still appear.
 FIELDS_THAT_STAY = {"m_n": {"FlankTolerances", "ToothMeasurements"}}

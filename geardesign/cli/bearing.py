@@ -12,7 +12,7 @@ from ..errors import GearDesignError
 from .output import add_json_flag, frame_records, print_frame, print_json, print_wrapped
 
 # the library's argument names -> this command's options, for the one-line error
-_OPTIONS = {"fr_n": "--fr", "fa_n": "--fa", "n_rpm": "--speed", "life_h": "--life-h", "bore_mm": "--bore",
+_OPTIONS = {"F_r_n": "--fr", "F_a_n": "--fa", "n_rpm": "--speed", "life_h": "--life-h", "bore_mm": "--bore",
             "reliability": "--reliability", "kappa": "--kappa", "e_c": "--ec", "series": "--series",
             "designation": "--designation", "bearing_type": "--type", "s0_min": "--s0-min", "lubrication": "--lubrication"}
 SHOW = ["rank", "designation", "d_mm", "D_mm", "B_mm", "C_kn", "C0_kn", "P_n", "L10h", "Lnmh", "s0",
@@ -94,7 +94,7 @@ def run(args) -> int:
     if args.top < 0:
         raise GearDesignError(f"--top must be >= 0, got {args.top}")
     series = _series(args.series, args.bearing_type)
-    kw = dict(fr_n=args.fr, fa_n=args.fa, n_rpm=args.speed, life_h=args.life_h, reliability=args.reliability,
+    kw = dict(F_r_n=args.fr, F_a_n=args.fa, n_rpm=args.speed, life_h=args.life_h, reliability=args.reliability,
               kappa=args.kappa, e_c=args.e_c, lubrication=args.lubrication, s0_min=args.s0_min)
     try:
         if args.designation is not None:

@@ -35,6 +35,7 @@ import numpy as np
 from ..catalogs.tables import load_catalog
 from ..errors import GearDesignError
 from ..results import RankedTable, Result
+from ..renamed import renamed_keywords
 from ..validate import one_number, require_choice, require_range
 
 __all__ = ["SERIES", "BEARING_KINDS", "LIFE_EXPONENT", "RELIABILITY_FACTORS", "ANGULAR_CONTACT_40",
@@ -145,7 +146,8 @@ def deep_groove_factors(f0_fa_c0r):
     return e, Y
 
 
-def equivalent_dynamic_load(fr_n, fa_n, e, X, Y):
+@renamed_keywords(fr_n="F_r_n", fa_n="F_a_n")
+def equivalent_dynamic_load(F_r_n, F_a_n, e, X, Y):
     """Equivalent dynamic load P = Fr when Fa/Fr <= e, else X·Fr + Y·Fa (ISO 281; NTN CAT. 2203/E eq. (4.28)),
     in the unit of the forces. Written as Fa <= e·Fr so that a pure axial load (Fr = 0) takes X Fr + Y Fa.
 
@@ -155,18 +157,19 @@ def equivalent_dynamic_load(fr_n, fa_n, e, X, Y):
     >>> round(float(equivalent_dynamic_load(3.2, 1.8, 0.30, 0.56, 1.44)), 2)
     4.38
     """
-    Fr, Fa = np.asarray(fr_n, dtype=float), np.asarray(fa_n, dtype=float)
+    Fr, Fa = np.asarray(F_r_n, dtype=float), np.asarray(F_a_n, dtype=float)
     return np.where(Fa <= np.asarray(e) * Fr, Fr, np.asarray(X) * Fr + np.asarray(Y) * Fa)
 
 
-def equivalent_static_load(fr_n, fa_n, X0, Y0):
+@renamed_keywords(fr_n="F_r_n", fa_n="F_a_n")
+def equivalent_static_load(F_r_n, F_a_n, X0, Y0):
     """Equivalent static load P0 = X0·Fr + Y0·Fa, not below Fr (NTN CAT. 2203/E pp. B-27, B-61: "when
     P0r < Fr use P0r = Fr"); deep groove X0 = 0.6, Y0 = 0.5, 40° angular contact 0.5 and 0.26.
 
     >>> float(equivalent_static_load(1000.0, 2000.0, 0.6, 0.5))
     1600.0
     """
-    Fr, Fa = np.asarray(fr_n, dtype=float), np.asarray(fa_n, dtype=float)
+    Fr, Fa = np.asarray(F_r_n, dtype=float), np.asarray(F_a_n, dtype=float)
     return np.maximum(np.asarray(X0) * Fr + np.asarray(Y0) * Fa, Fr)
 
 
@@ -242,14 +245,15 @@ def life_modification_factor(kind, kappa, ec_cu_over_p):
     return np.minimum(a, A_ISO_MAX)
 
 
-def induced_axial_force(fr_n, Y):
+@renamed_keywords(fr_n="F_r_n")
+def induced_axial_force(F_r_n, Y):
     """The axial load a radial load Fr induces in a single row tapered roller bearing, 0.5·Fr/Y (N; SKF
     17000/1 EN Table 7, p. 682; NTN CAT. 2203/E Example 4, p. A-44: 0.5 × 5.98/2.06 = 1.45 kN).
 
     >>> round(float(induced_axial_force(5.98, 2.06)), 2)
     1.45
     """
-    return INDUCED_AXIAL_FACTOR * np.asarray(fr_n, dtype=float) / np.asarray(Y, dtype=float)
+    return INDUCED_AXIAL_FACTOR * np.asarray(F_r_n, dtype=float) / np.asarray(Y, dtype=float)
 
 
 def tapered_axial_loads(fr_a_n, fr_b_n, Y_a, Y_b, ka_n=0.0):
@@ -337,14 +341,15 @@ def bearing_catalog(series) -> pd.DataFrame:
     return pd.concat(frames, ignore_index=True)
 
 
-def bearing_loads(rows: pd.DataFrame, fr_n, fa_n):
+@renamed_keywords(fr_n="F_r_n", fa_n="F_a_n")
+def bearing_loads(rows: pd.DataFrame, F_r_n, F_a_n):
     """e, X, Y, P and P0 of each catalog row under Fr and Fa (N), by the row's bearing type, as a dict of
     arrays; ``axial_ok`` is False where the type cannot take the axial load (a cylindrical roller bearing
     of type NU carries none; a deep groove ball bearing beyond the end of the e/X/Y table). For a tapered
-    roller bearing ``fa_n`` is its whole axial load, the induced part included (:func:`tapered_axial_loads`)."""
+    roller bearing ``F_a_n`` is its whole axial load, the induced part included (:func:`tapered_axial_loads`)."""
     n = len(rows)
-    Fr = np.broadcast_to(np.asarray(fr_n, dtype=float), (n,))
-    Fa = np.broadcast_to(np.asarray(fa_n, dtype=float), (n,))
+    Fr = np.broadcast_to(np.asarray(F_r_n, dtype=float), (n,))
+    Fa = np.broadcast_to(np.asarray(F_a_n, dtype=float), (n,))
     t = rows["bearing_type"].to_numpy()
     C0 = rows["C0_kn"].to_numpy(dtype=float)
     f0 = rows["f0"].to_numpy(dtype=float)
@@ -376,11 +381,11 @@ def bearing_loads(rows: pd.DataFrame, fr_n, fa_n):
             "axial_ok": axial_ok}
 
 
-def _inputs(fr_n, fa_n, n_rpm, life_h, reliability, kappa, e_c, lubrication):
-    fr = one_number("fr_n", require_range("fr_n", fr_n, 0.0, FORCE_MAX_N, unit="N"))
-    fa = one_number("fa_n", require_range("fa_n", fa_n, 0.0, FORCE_MAX_N, unit="N"))
+def _inputs(F_r_n, F_a_n, n_rpm, life_h, reliability, kappa, e_c, lubrication):
+    fr = one_number("F_r_n", require_range("F_r_n", F_r_n, 0.0, FORCE_MAX_N, unit="N"))
+    fa = one_number("F_a_n", require_range("F_a_n", F_a_n, 0.0, FORCE_MAX_N, unit="N"))
     if fr == 0.0 and fa == 0.0:
-        raise GearDesignError("fr_n and fa_n are both 0: a bearing needs a load to have a life")
+        raise GearDesignError("F_r_n and F_a_n are both 0: a bearing needs a load to have a life")
     n = one_number("n_rpm", require_range("n_rpm", n_rpm, 0.0, SPEED_MAX_RPM, lo_open=True, unit="rpm"))
     life = None if life_h is None else one_number(
         "life_h", require_range("life_h", life_h, 0.0, LIFE_MAX_H, lo_open=True, unit="h"))
@@ -451,8 +456,8 @@ class BearingCheck(Result):
     B_mm: float
     C_kn: float
     C0_kn: float
-    fr_n: float
-    fa_n: float
+    F_r_n: float
+    F_a_n: float
     n_rpm: float
     e: float
     X: float
@@ -514,16 +519,17 @@ def _check_from_row(row, fr, fa, n, life) -> BearingCheck:
 
     return BearingCheck(ok=ok, message=msg, designation=str(row["designation"]), series=str(row["series"]),
                         d_mm=f("d_mm"), D_mm=f("D_mm"), B_mm=f("B_mm"), C_kn=f("C_kn"), C0_kn=f("C0_kn"),
-                        fr_n=fr, fa_n=fa, n_rpm=n, e=f("e"), X=f("X"), Y=f("Y"), P_n=f("P_n"), P0_n=f("P0_n"),
+                        F_r_n=fr, F_a_n=fa, n_rpm=n, e=f("e"), X=f("X"), Y=f("Y"), P_n=f("P_n"), P0_n=f("P0_n"),
                         L10_mrev=f("L10_mrev"), L10h=f("L10h"), a1=f("a1"), a_iso=f("a_iso"), Lnmh=f("Lnmh"),
                         life_h=life, s0=f("s0"), s0_min=f("s0_min"), speed_limit_rpm=f("speed_limit_rpm"),
                         margins=margins, limiting_check=limiting)
 
 
-def check_bearing(designation: str, fr_n, fa_n=0.0, n_rpm=None, life_h=None, reliability=90.0, kappa=None,
+@renamed_keywords(fr_n="F_r_n", fa_n="F_a_n")
+def check_bearing(designation: str, F_r_n, F_a_n=0.0, n_rpm=None, life_h=None, reliability=90.0, kappa=None,
                   e_c=None, lubrication="grease", s0_min=None) -> BearingCheck:
     """The lives, static safety and checks of the catalog bearing ``designation`` (e.g. ``"6208"``,
-    ``"7310B"``, ``"NU210EA"``) under a radial load ``fr_n`` and an axial load ``fa_n`` (N) at ``n_rpm``.
+    ``"7310B"``, ``"NU210EA"``) under a radial load ``F_r_n`` and an axial load ``F_a_n`` (N) at ``n_rpm``.
 
     ``life_h``: the required life (None: no life check); ``reliability`` 90 … 99 % (a1); ``kappa`` and
     ``e_c``: viscosity ratio and contamination factor for the modified life Lnm = a1·a_ISO·L10 (None: a_ISO
@@ -541,7 +547,7 @@ def check_bearing(designation: str, fr_n, fa_n=0.0, n_rpm=None, life_h=None, rel
         raise GearDesignError(f"designation must be a catalog designation such as '6208', got {designation!r}")
     if n_rpm is None:
         raise GearDesignError("n_rpm (the bearing's speed) is needed, got None")
-    fr, fa, n, life, a1, kappa, e_c = _inputs(fr_n, fa_n, n_rpm, life_h, reliability, kappa, e_c, lubrication)
+    fr, fa, n, life, a1, kappa, e_c = _inputs(F_r_n, F_a_n, n_rpm, life_h, reliability, kappa, e_c, lubrication)
     rows = bearing_catalog(tuple(SERIES))
     rows = rows[rows["designation"] == designation.strip()]
     if rows.empty:
@@ -551,7 +557,8 @@ def check_bearing(designation: str, fr_n, fa_n=0.0, n_rpm=None, life_h=None, rel
     return _check_from_row(table.iloc[0], fr, fa, n, life)
 
 
-def select_bearing(series, bore_mm, fr_n, fa_n=0.0, n_rpm=None, life_h=None, reliability=90.0, kappa=None,
+@renamed_keywords(fr_n="F_r_n", fa_n="F_a_n")
+def select_bearing(series, bore_mm, F_r_n, F_a_n=0.0, n_rpm=None, life_h=None, reliability=90.0, kappa=None,
                    e_c=None, lubrication="grease", s0_min=None) -> BearingSelection:
     """The smallest bearing of ``series`` (one or a list: "62", "63", "72B", "73B", "NU2", "NU3", the tapered
     roller "302", "303", "320X", "322", "323") whose bore fits a seat of at least ``bore_mm`` and that passes every check (life, static safety, speed, axial
@@ -566,7 +573,7 @@ def select_bearing(series, bore_mm, fr_n, fa_n=0.0, n_rpm=None, life_h=None, rel
         raise GearDesignError("n_rpm (the bearing's speed) is needed, got None")
     if life_h is None:
         raise GearDesignError("life_h (the required life, h) is needed to select a bearing")
-    fr, fa, n, life, a1, kappa, e_c = _inputs(fr_n, fa_n, n_rpm, life_h, reliability, kappa, e_c, lubrication)
+    fr, fa, n, life, a1, kappa, e_c = _inputs(F_r_n, F_a_n, n_rpm, life_h, reliability, kappa, e_c, lubrication)
     rows = bearing_catalog(series)
     d_max = float(rows["d_mm"].max())
     bore = one_number("bore_mm", require_range("bore_mm", bore_mm, 0.0, d_max, lo_open=True, unit="mm"))

@@ -31,6 +31,7 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..results import Result
+from ..renamed import renamed_keywords
 from ..validate import one_number, require_choice, require_range
 
 __all__ = ["SKF_CONSTANTS", "K_RS", "K_Z_DEEP_GROOVE", "inlet_shear_heating_factor", "replenishment_factor",
@@ -70,38 +71,40 @@ def replenishment_factor(n_rpm, nu_mm2s, d_mm, D_mm, K_rs=3e-8, K_z=K_Z_DEEP_GRO
     return np.exp(-np.asarray(K_rs, dtype=float) * nu * n * (d + D) * np.sqrt(np.asarray(K_z) / (2.0 * (D - d))))
 
 
-def load_angle_deg(fa_n, C0_n):
+def load_angle_deg(F_a_n, C0_n):
     """α_F = 24.6·(F_a/C_0)^0.24 degrees, the load angle of a deep groove ball bearing under an axial load
     (SKF 10000/1 EN Table 2a).
 
     >>> round(float(load_angle_deg(1.0, 1.0)), 9)
     24.6
     """
-    return 24.6 * (np.asarray(fa_n, dtype=float) / np.asarray(C0_n, dtype=float)) ** 0.24
+    return 24.6 * (np.asarray(F_a_n, dtype=float) / np.asarray(C0_n, dtype=float)) ** 0.24
 
 
-def rolling_frictional_variable(R1, R2, dm_mm, fr_n, fa_n=0.0, C0_n=None):
+@renamed_keywords(fr_n="F_r_n", fa_n="F_a_n")
+def rolling_frictional_variable(R1, R2, dm_mm, F_r_n, F_a_n=0.0, C0_n=None):
     """G_rr of a deep groove ball bearing (SKF 10000/1 EN Table 2a): R1·d_m^1.96·F_r^0.54 without axial load,
     R1·d_m^1.96·(F_r + R2/sin α_F·F_a)^0.54 with it.
 
     >>> round(float(rolling_frictional_variable(1.0, 1.7, 1.0, 1.0)), 9)
     1.0
     """
-    dm, Fr, Fa = (np.asarray(v, dtype=float) for v in (dm_mm, fr_n, fa_n))
+    dm, Fr, Fa = (np.asarray(v, dtype=float) for v in (dm_mm, F_r_n, F_a_n))
     with np.errstate(divide="ignore", invalid="ignore"):
         s = np.sin(np.radians(load_angle_deg(Fa, C0_n))) if C0_n is not None else np.ones_like(Fa)
         extra = np.where(Fa > 0, R2 / s * Fa, 0.0)
     return R1 * dm ** 1.96 * (Fr + extra) ** 0.54
 
 
-def sliding_frictional_variable(S1, S2, dm_mm, fr_n, fa_n=0.0, C0_n=None):
+@renamed_keywords(fr_n="F_r_n", fa_n="F_a_n")
+def sliding_frictional_variable(S1, S2, dm_mm, F_r_n, F_a_n=0.0, C0_n=None):
     """G_sl of a deep groove ball bearing (SKF 10000/1 EN Table 2a): S1·d_m^−0.26·F_r^(5/3) without axial
     load, S1·d_m^−0.145·(F_r^5 + S2·d_m^1.5/sin α_F·F_a^4)^(1/3) with it.
 
     >>> round(float(sliding_frictional_variable(1.0, 36.5, 1.0, 8.0)), 9)
     32.0
     """
-    dm, Fr, Fa = (np.asarray(v, dtype=float) for v in (dm_mm, fr_n, fa_n))
+    dm, Fr, Fa = (np.asarray(v, dtype=float) for v in (dm_mm, F_r_n, F_a_n))
     with np.errstate(divide="ignore", invalid="ignore"):
         s = np.sin(np.radians(load_angle_deg(Fa, C0_n))) if C0_n is not None else np.ones_like(Fa)
         axial = S1 * dm ** -0.145 * (Fr ** 5 + S2 * dm ** 1.5 / s * Fa ** 4) ** (1.0 / 3.0)
@@ -146,8 +149,8 @@ class BearingFriction(Result):
 
     designation: str
     n_rpm: float
-    fr_n: float
-    fa_n: float
+    F_r_n: float
+    F_a_n: float
     nu_mm2s: float
     dm_mm: float
     M_rr_nmm: float
@@ -188,7 +191,8 @@ def _catalog_row(designation: str):
     return rows[str(designation)]
 
 
-def bearing_friction(designation, fr_n, fa_n, n_rpm, nu_mm2s, lubrication="oil_jet", mu_bl=MU_BL,
+@renamed_keywords(fr_n="F_r_n", fa_n="F_a_n")
+def bearing_friction(designation, F_r_n, F_a_n, n_rpm, nu_mm2s, lubrication="oil_jet", mu_bl=MU_BL,
                      mu_ehl=MU_EHL) -> BearingFriction:
     """Frictional moment and power loss of the catalog bearing ``designation`` (a deep groove ball bearing of
     series 62 or 63; d, D and C0 from its catalog row) under F_r and F_a (N) at ``n_rpm`` with the oil's
@@ -201,10 +205,10 @@ def bearing_friction(designation, fr_n, fa_n, n_rpm, nu_mm2s, lubrication="oil_j
     True
     """
     lubrication = require_choice("lubrication", lubrication, tuple(K_RS))
-    Fr = one_number("fr_n", require_range("fr_n", fr_n, 0.0, 1e8, unit="N"))
-    Fa = one_number("fa_n", require_range("fa_n", fa_n, 0.0, 1e8, unit="N"))
+    Fr = one_number("F_r_n", require_range("F_r_n", F_r_n, 0.0, 1e8, unit="N"))
+    Fa = one_number("F_a_n", require_range("F_a_n", F_a_n, 0.0, 1e8, unit="N"))
     if Fr == 0.0 and Fa == 0.0:
-        raise GearDesignError("fr_n and fa_n must not both be 0 (the SKF model needs a load), got 0 and 0")
+        raise GearDesignError("F_r_n and F_a_n must not both be 0 (the SKF model needs a load), got 0 and 0")
     n = one_number("n_rpm", require_range("n_rpm", n_rpm, 0.0, 1e6, lo_open=True, unit="rpm"))
     nu = one_number("nu_mm2s", require_range("nu_mm2s", nu_mm2s, 1.0, 1e5, unit="mm²/s"))
     for name, v in (("mu_bl", mu_bl), ("mu_ehl", mu_ehl)):
@@ -218,6 +222,6 @@ def bearing_friction(designation, fr_n, fa_n, n_rpm, nu_mm2s, lubrication="oil_j
                                            replenishment_factor(n, nu, d, D, K_RS[lubrication])))
     M_sl = float(G_sl * sliding_friction_coefficient(n, nu, dm, mu_bl, mu_ehl))
     M = M_rr + M_sl
-    return BearingFriction(designation=str(designation), n_rpm=n, fr_n=Fr, fa_n=Fa, nu_mm2s=nu, dm_mm=dm,
+    return BearingFriction(designation=str(designation), n_rpm=n, F_r_n=Fr, F_a_n=Fa, nu_mm2s=nu, dm_mm=dm,
                            M_rr_nmm=M_rr, M_sl_nmm=M_sl, M_nmm=M, power_loss_w=float(frictional_power_w(M, n)),
                            lubrication=lubrication)

@@ -29,8 +29,8 @@ class BearingLoad:
 
     designation: str
     shaft: int
-    fr_n: float
-    fa_n: float = 0.0
+    F_r_n: float
+    F_a_n: float = 0.0
 
     def __post_init__(self):
         if self.shaft not in (1, 2) or isinstance(self.shaft, bool):
@@ -133,8 +133,8 @@ def stage_efficiency(pair, load, lubricant: Lubricant, oil_temperature_c: float,
     frictions = []
     for b in bearings or ():
         if not isinstance(b, BearingLoad):
-            raise GearDesignError(f"bearings must hold BearingLoad items (designation, shaft, fr_n, fa_n), got {b!r}")
-        frictions.append(bearing_friction(b.designation, b.fr_n, b.fa_n, n_shaft[b.shaft], nu, lubrication))
+            raise GearDesignError(f"bearings must hold BearingLoad items (designation, shaft, F_r_n, F_a_n), got {b!r}")
+        frictions.append(bearing_friction(b.designation, b.F_r_n, b.F_a_n, n_shaft[b.shaft], nu, lubrication))
     frictions = tuple(frictions)
     p_bearings = sum(f.power_loss_w for f in frictions)
     p_in = mesh.power_w

@@ -653,7 +653,7 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
             item = f"bearing {k}{tag}"
             bearing_rows.append(dict(name=item, shaft=k, x_mm=geo.supports["AB".index(tag)],
                                      designation=chk.designation, seat_d_mm=d_s, bore_mm=chk.d_mm, D_mm=chk.D_mm,
-                                     B_mm=chk.B_mm, fr_n=chk.fr_n, fa_n=chk.fa_n, n_rpm=chk.n_rpm, P_n=chk.P_n,
+                                     B_mm=chk.B_mm, F_r_n=chk.F_r_n, F_a_n=chk.F_a_n, n_rpm=chk.n_rpm, P_n=chk.P_n,
                                      L10h=chk.L10h, life_h=sh.life_h, s0=chk.s0, ok=chk.ok))
             fit = chk.d_mm - d_s
             if abs(fit) > 1e-9:       # a given bearing whose bore is not the seat's diameter
@@ -662,7 +662,7 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
                 v = chk.margins.get(c)
                 if v is not None and math.isfinite(v):
                     rows.append((item, c, float(v)))
-        bearing_loads[k] = [(chk.designation, chk.fr_n, chk.fa_n) for chk in checks]
+        bearing_loads[k] = [(chk.designation, chk.F_r_n, chk.F_a_n) for chk in checks]
         for _, srow in safety.table.iterrows():
             if max(abs(srow["M_nm"]), abs(srow["T_nm"]), abs(srow["N_n"]) / 1000.0) < UNLOADED_NM:
                 continue          # a section that carries nothing (beyond the last element): nothing to check

@@ -269,9 +269,9 @@ def test_modified_life_and_bad_inputs():
     x = 0.5 * 1240.0 / 3200.0                              # e_C C_u / P with C_u = 1.24 kN (NTN p. B-26)
     assert c.a_iso == pytest.approx(_a_iso_ball_by_hand(2.0, x), rel=1e-9)
     assert c.Lnmh == pytest.approx(c.a_iso * c.L10h, rel=1e-12)
-    for kwargs, name in ((dict(fr_n=-1.0), "fr_n"), (dict(n_rpm=0.0), "n_rpm"), (dict(kappa=1.0), "kappa"),
+    for kwargs, name in ((dict(F_r_n=-1.0), "F_r_n"), (dict(n_rpm=0.0), "n_rpm"), (dict(kappa=1.0), "kappa"),
                          (dict(life_h=float("nan")), "life_h"), (dict(lubrication="water"), "lubrication")):
-        args = dict(fr_n=3200.0, fa_n=0.0, n_rpm=650.0)
+        args = dict(F_r_n=3200.0, F_a_n=0.0, n_rpm=650.0)
         args.update(kwargs)
         with pytest.raises(GearDesignError, match=name):
             b.check_bearing("6208", **args)
@@ -432,3 +432,19 @@ def test_reference_viscosity():
     assert (np.diff(grid) < 0).all()
     with pytest.raises(GearDesignError, match="n_rpm"):
         b.reference_viscosity(0.0, 50.0)
+
+
+def test_the_old_load_names_still_work_for_one_release():
+    # issue 36 §4: one name per quantity: the bearing loads are F_r_n, F_a_n as the mesh forces (gears/forces.py)
+    import warnings
+
+    import geardesign as gd
+
+    new = gd.check_bearing("6208", F_r_n=3000.0, F_a_n=500.0, n_rpm=1000, life_h=10000)
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        old = gd.check_bearing("6208", fr_n=3000.0, fa_n=500.0, n_rpm=1000, life_h=10000)
+    assert any(issubclass(x.category, DeprecationWarning) and "F_r_n" in str(x.message) for x in w)
+    assert old.L10h == new.L10h and old.F_r_n == 3000.0
+    with pytest.raises(gd.GearDesignError, match="not both"):
+        gd.check_bearing("6208", F_r_n=3000.0, fr_n=3000.0, n_rpm=1000)

@@ -65,5 +65,5 @@ def test_bearing_friction_refuses_what_it_does_not_model():
         bearing_friction("6208", 1000.0, 0.0, 1500.0, 68.0, lubrication="mist")
     with pytest.raises(GearDesignError, match="n_rpm"):
         bearing_friction("6208", 1000.0, 0.0, 0.0, 68.0)
-    with pytest.raises(GearDesignError, match="fr_n and fa_n"):
+    with pytest.raises(GearDesignError, match="F_r_n and F_a_n"):
         bearing_friction("6208", 0.0, 0.0, 1500.0, 68.0)

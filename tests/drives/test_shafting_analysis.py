@@ -59,8 +59,8 @@ def test_reactions_agree_with_the_beam(two_stage):
     for k, a in two_stage.shafting["analyses"].items():
         R = a.reactions
         got = bearings[bearings["shaft"] == k]
-        np.testing.assert_allclose(got["fr_n"].to_numpy(), R["R_n"].to_numpy(), rtol=1e-9)
-        assert got["fa_n"].iloc[0] == pytest.approx(abs(R["Rx_n"].iloc[0]), rel=1e-9, abs=1e-9)
+        np.testing.assert_allclose(got["F_r_n"].to_numpy(), R["R_n"].to_numpy(), rtol=1e-9)
+        assert got["F_a_n"].iloc[0] == pytest.approx(abs(R["Rx_n"].iloc[0]), rel=1e-9, abs=1e-9)
 
 
 def test_element_loads_action_reaction_and_torque_balance(two_stage):
@@ -265,7 +265,7 @@ def test_chosen_bearings_are_the_smallest_that_hold(two_stage):
         n = float(mine["n_rpm"].iloc[0])
         for _, row in cat[(cat["D_mm"] < D) & (cat["d_mm"] >= seat)].iterrows():
             ok = [gd.check_bearing(row["designation"], max(fr, 1e-9), fa, n, life_h=20_000).ok
-                  for fr, fa in zip(mine["fr_n"], mine["fa_n"])]
+                  for fr, fa in zip(mine["F_r_n"], mine["F_a_n"])]
             assert not all(ok), row["designation"]
 
 
