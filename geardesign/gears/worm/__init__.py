@@ -1,0 +1,1 @@
+"""Cylindrical worm gear pairs: efficiency (worm.efficiency) and load capacity (worm.rating)."""
