@@ -134,8 +134,8 @@ def worm_deflection(F_t1, F_r, l_1, d_f1, E_1=E_STEEL_MPA):
     0.10865
     """
     F = np.hypot(require_range("F_t1", F_t1, 0.0, 1e12, unit="N"), require_range("F_r", F_r, 0.0, 1e12, unit="N"))
-    I = math.pi * require_positive("d_f1", d_f1, unit="mm") ** 4 / 64.0
-    return F * require_positive("l_1", l_1, unit="mm") ** 3 / (48.0 * require_positive("E_1", E_1, unit="MPa") * I)
+    inertia = math.pi * require_positive("d_f1", d_f1, unit="mm") ** 4 / 64.0
+    return F * require_positive("l_1", l_1, unit="mm") ** 3 / (48.0 * require_positive("E_1", E_1, unit="MPa") * inertia)
 
 
 def deflection_limit(m_x, hardened=True):
