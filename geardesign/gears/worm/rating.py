@@ -40,7 +40,7 @@ from . import temperature as temp
 __all__ = ["MIN_SAFETY", "E_STEEL_MPA", "worm_reference_diameter", "wheel_reference_diameter",
            "mean_lead_angle_deg", "centre_distance", "worm_root_diameter", "mesh_forces", "reduced_modulus",
            "mean_contact_stress", "root_shear_stress", "worm_deflection", "deflection_limit", "WormRating",
-           "worm_rating", "load_capacity"]
+           "worm_rating", "rate_geometry", "load_capacity"]
 
 # Niemann-Winter III Beispiel 3's required safeties (DSoftCon report, tests/data/worm_efficiency_examples.md)
 MIN_SAFETY = {"S_H": 1.0, "S_F": 1.4, "S_delta": 1.0, "S_T": 1.0, "S_W": 1.0}
@@ -259,9 +259,7 @@ def _scalar(name, value):
 
 
 def worm_rating(T2, n1, m_x, z1, z2, q, *, x2=0.0, alpha_n_deg=20.0, b_2=None, l_1=None, d_f1=None,
-                mu=None, mu_static=None, E_1=E_STEEL_MPA, worm_hardened=True, p_m_star=None, E_red=None,
-                sigma_HG=None, Y_root=None, tau_FG=None, k_heat=None, A_housing=None, theta_0=20.0,
-                theta_lim=90.0, P_V0=0.0, P_VL=0.0, P_VD=0.0, minimums=None) -> WormRating:
+                **options) -> WormRating:
     """Efficiency and load capacity of one worm pair (worm driving) at the wheel torque T2 (N·m) and worm speed
     n1 (rpm): geometry from the axial module m_x (mm), starts z1, wheel teeth z2, diameter quotient q, the
     wheel's profile shift x2 and the normal pressure angle α_n.
@@ -273,14 +271,37 @@ def worm_rating(T2, n1, m_x, z1, z2, q, *, x2=0.0, alpha_n_deg=20.0, b_2=None, l
     deflection ``l_1`` (bearing span, mm; ``d_f1`` defaults to the DIN 3975 root diameter with c* = 0.25);
     the temperature ``k_heat`` (W/(m²·K)) and ``A_housing`` (m², e.g.
     :func:`~geardesign.gears.worm.temperature.housing_area_estimate`); wear is never computed (not found).
-    ``minimums`` overrides :data:`MIN_SAFETY` entries.
+    ``minimums`` overrides :data:`MIN_SAFETY` entries. The options are those of :func:`rate_geometry`.
     """
-    T2 = one_number("T2", require_range("T2", T2, 0.0, 1e9, lo_open=True, unit="N·m"))
-    n1 = one_number("n1", require_positive("n1", n1, unit="rpm"))
     m_x = one_number("m_x", require_positive("m_x", m_x, unit="mm"))
     z1 = one_number("z1", require_range("z1", z1, 1, 10))
     z2 = one_number("z2", require_range("z2", z2, 10, 1000))
     q = one_number("q", require_range("q", q, 2.0, 40.0))
+    geo = {"m_x": m_x, "z1": z1, "z2": z2,
+           "d_m1": (float(worm_reference_diameter(m_x, q)), "DIN 3975: q·m_x"),
+           "d_2": (float(wheel_reference_diameter(m_x, z2)), "DIN 3975: z2·m_x"),
+           "a": (float(centre_distance(m_x, q, z2, x2)), "DIN 3975: m_x(q + z2 + 2 x2)/2"),
+           "gamma_m_deg": (float(mean_lead_angle_deg(z1, q)), "DIN 3975: arctan(z1/q)"),
+           "alpha_n_deg": (one_number("alpha_n_deg", eff._alpha(alpha_n_deg)), "given by the caller")}
+    if d_f1 is not None:
+        geo["d_f1"] = (one_number("d_f1", require_positive("d_f1", d_f1, unit="mm")), "given by the caller")
+    else:
+        geo["d_f1"] = (float(worm_root_diameter(m_x, q)), "DIN 3975 (c* = 0.25)")
+    if b_2 is not None:
+        geo["b_2"] = (one_number("b_2", require_positive("b_2", b_2, unit="mm")), "given by the caller")
+    return rate_geometry(T2, n1, geo, l_1=l_1, **options)
+
+
+def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E_STEEL_MPA, worm_hardened=True,
+                  p_m_star=None, E_red=None, sigma_HG=None, Y_root=None, tau_FG=None, k_heat=None, A_housing=None,
+                  theta_0=20.0, theta_lim=90.0, P_V0=0.0, P_VL=0.0, P_VD=0.0, minimums=None) -> WormRating:
+    """:func:`worm_rating` on a pair's geometry ``geo``: ``m_x``, ``z1``, ``z2`` as numbers and ``d_m1``, ``d_2``,
+    ``a``, ``gamma_m_deg``, ``alpha_n_deg``, ``d_f1`` and (optionally) ``b_2`` as ``(value, source)`` pairs (the
+    factor table names each source), as a :class:`~geardesign.gears.worm.pair.WormPair` gives them."""
+    T2 = one_number("T2", require_range("T2", T2, 0.0, 1e9, lo_open=True, unit="N·m"))
+    n1 = one_number("n1", require_positive("n1", n1, unit="rpm"))
+    m_x, z1, z2 = float(geo["m_x"]), float(geo["z1"]), float(geo["z2"])
+    alpha_n_deg = geo["alpha_n_deg"][0]
     mins = dict(MIN_SAFETY)
     if minimums:
         for k, v in minimums.items():
@@ -293,10 +314,11 @@ def worm_rating(T2, n1, m_x, z1, z2, q, *, x2=0.0, alpha_n_deg=20.0, b_2=None, l
         rows.append((symbol, float(value), unit, method))
         return float(value)
 
-    d_m1 = row("d_m1", worm_reference_diameter(m_x, q), "mm", "DIN 3975: q·m_x")
-    d_2 = row("d_2", wheel_reference_diameter(m_x, z2), "mm", "DIN 3975: z2·m_x")
-    a = row("a", centre_distance(m_x, q, z2, x2), "mm", "DIN 3975: m_x(q + z2 + 2 x2)/2")
-    gamma = row("gamma_m", mean_lead_angle_deg(z1, q), "deg", "DIN 3975: arctan(z1/q)")
+    d_m1 = row("d_m1", *geo["d_m1"][:1], "mm", geo["d_m1"][1])
+    d_2 = row("d_2", geo["d_2"][0], "mm", geo["d_2"][1])
+    a = row("a", geo["a"][0], "mm", geo["a"][1])
+    gamma = row("gamma_m", geo["gamma_m_deg"][0], "deg", geo["gamma_m_deg"][1])
+    row("alpha_n", alpha_n_deg, "deg", geo["alpha_n_deg"][1])
     u = z2 / z1
     v_g = row("v_g", eff.sliding_speed(d_m1, n1, gamma), "m/s", "ISO/TS 14521 6.3: d_m1 n1 π/(60000 cos γ_m)")
     if mu is None:
@@ -333,14 +355,14 @@ def worm_rating(T2, n1, m_x, z1, z2, q, *, x2=0.0, alpha_n_deg=20.0, b_2=None, l
     else:
         notes.append("S_H not computed: give p_m_star, E_red and sigma_HG (ISO/TS 14521's p_m* formula and "
                      "sigma_Hlim table were not found in a public text)")
-    if b_2 is not None and Y_root is not None and tau_FG is not None:
+    if "b_2" in geo and Y_root is not None and tau_FG is not None:
+        b_2 = row("b_2", geo["b_2"][0], "mm", geo["b_2"][1])
         tau_F = row("tau_F", root_shear_stress(F_t2, b_2, m_x, Y_root), "MPa", "F_t2/(b_2 m_x)·Y_root (Y given)")
         S_F = row("S_F", require_positive("tau_FG", tau_FG, unit="MPa") / tau_F, "", "tau_FG (given)/tau_F")
     else:
         notes.append("S_F not computed: give b_2, Y_root (= Y_eps Y_F Y_gamma Y_K) and tau_FG")
     if l_1 is not None:
-        df1 = worm_root_diameter(m_x, q) if d_f1 is None else d_f1
-        row("d_f1", df1, "mm", "DIN 3975 (c* = 0.25)" if d_f1 is None else "given")
+        df1 = row("d_f1", geo["d_f1"][0], "mm", geo["d_f1"][1])
         delta = row("delta_m", worm_deflection(F_t1, F_r, l_1, df1, E_1), "mm", "F l_1³/(48 E I), I = π d_f1⁴/64")
         delta_lim = row("delta_lim", deflection_limit(m_x, worm_hardened), "mm",
                         "Autodesk/CSN: 0.004 m_x hardened, 0.01 m_x heat-treated worm")
