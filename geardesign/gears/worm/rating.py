@@ -314,7 +314,7 @@ def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E
         rows.append((symbol, float(value), unit, method))
         return float(value)
 
-    d_m1 = row("d_m1", *geo["d_m1"][:1], "mm", geo["d_m1"][1])
+    d_m1 = row("d_m1", geo["d_m1"][0], "mm", geo["d_m1"][1])
     d_2 = row("d_2", geo["d_2"][0], "mm", geo["d_2"][1])
     a = row("a", geo["a"][0], "mm", geo["a"][1])
     gamma = row("gamma_m", geo["gamma_m_deg"][0], "deg", geo["gamma_m_deg"][1])
