@@ -15,7 +15,6 @@ PURE_REEXPORTS = {
     "geardesign/drives/chain/__init__.py",  # chain.inputs, .design and .formulas names
     "geardesign/gears/__init__.py",         # a docstring only
     "geardesign/gears/strength/__init__.py",  # the strength modules' names, loaded on first use (PEP 562)
-    "geardesign/gears/worm/__init__.py",    # a docstring only (branch wormrate; wormgeo's pair may replace it)
     "geardesign/profiles/__init__.py",      # a docstring only
     "geardesign/scene/__init__.py",         # scene.load, .report, .schema, .sections names
     "geardesign/sensitivity/__init__.py",   # a docstring only

@@ -198,6 +198,8 @@ BUNDLED: dict[str, tuple[str, str, str | None]] = {
     "bearings_cylindrical_roller": ("bearings_cylindrical_roller.csv", "bearings", None),
     "bearing_factors_deep_groove": ("bearing_factors_deep_groove.csv", "bearing_factors", None),
     "shaft_materials_din743": ("shaft_materials_din743.csv", "shaft_materials", None),
+    "worm_modules": ("worm_modules_gost19672.csv", "modules", None),
+    "worm_center_distances": ("worm_center_distances_gost2144.csv", "center_distances", None),
 }
 CHAIN_CATALOGS = ("gost13568", "iso606", "iso606a", "iso606b", "ansi_b29")
 

@@ -33,3 +33,7 @@ __all__ = [
     "DEFAULT_EPS_ALPHA_MIN", "DEFAULT_SA_MIN", "EPS_ALPHA_MIN_RANGE", "SA_MIN_RANGE", "EPS_GAMMA_MIN_RANGE",
     "TOOTH_DIFFERENCE_RANGE", "FEASIBILITY_TOL", "UNDEFINED", "CONTEXT_KEYWORDS", "register_context",
 ]
+
+# the worm pair's checks register themselves (pair kind "worm"): imported here so that the registry, and every
+# consumer of it (options, CLI, scene schema), is the same whichever module a program imports first
+from ..worm import checks as _worm_checks  # noqa: E402,F401

@@ -32,6 +32,8 @@ __all__ = ["Check", "Option", "register", "registered", "options", "option", "ma
 # A margin >= −FEASIBILITY_TOL holds. The solvers land on a boundary to rounding (|margin| ~ 1e-15);
 # the result, the check table and ok() then agree on such a point (issue 29 §2): one tolerance, here.
 FEASIBILITY_TOL = 1e-12
+# The kinds of pair a check class may be built for (its ``pair_kinds``).
+PAIR_KINDS = ("external", "internal", "worm")
 
 
 @dataclass(frozen=True)
@@ -90,7 +92,7 @@ class Check:
     def build(cls, value, context: dict) -> list:
         """The checks this class adds for its option's ``value`` (a limit, or True) in ``context``
         (``internal``, ``cutter``, and what higher layers pass)."""
-        kind = "internal" if context["internal"] else "external"
+        kind = context.get("kind") or ("internal" if context["internal"] else "external")
         limit = {} if cls.option is None or cls.option.kind == "flag" else {"limit": value}
         if cls.per_gear is None:
             return [cls(**limit)]
@@ -195,11 +197,10 @@ def check_colour(name: str):
 @functools.cache
 def _names_cached(cls: type, version: int) -> frozenset:
     names = set()
-    for internal in (False, True):
-        if ("internal" if internal else "external") in cls.pair_kinds:
-            value = True if cls.option.kind == "flag" else (cls.option.default if cls.option.default is not None
-                                                            else cls.option.range[0])
-            names |= {c.name for c in cls.build(value, _context(internal=internal))}
+    for kind in cls.pair_kinds:
+        value = True if cls.option.kind == "flag" else (cls.option.default if cls.option.default is not None
+                                                        else cls.option.range[0])
+        names |= {c.name for c in cls.build(value, _context(internal=kind == "internal", kind=kind))}
     return frozenset(names | {n.rstrip("12") for n in names})
 
 
@@ -228,7 +229,8 @@ def _context(internal=False, cutter=None, **more) -> dict:
     return context
 
 
-def make_checks(*, internal: bool = False, cutter=None, extra=(), **opts) -> tuple[Check, ...]:
+def make_checks(*, internal: bool = False, cutter=None, extra=(), kind: str | None = None,
+                **opts) -> tuple[Check, ...]:
     """The checks a case asks for: each registered check whose option is on (defaults: no
     undercut, no interference, s_a >= 0.25·m, ε_α >= 1.2; a ring pair's own checks).
 
@@ -236,7 +238,8 @@ def make_checks(*, internal: bool = False, cutter=None, extra=(), **opts) -> tup
     ``False`` drops its checks. ``internal``: the checks of a ring pair; ``cutter`` the
     :class:`~geardesign.gears.ring.ShaperCutter` of the ring checks (standard size for the module
     by default); ``extra`` adds :class:`Check` objects (e.g. a
-    :class:`~geardesign.gears.checks.external.CustomCheck`).
+    :class:`~geardesign.gears.checks.external.CustomCheck`). ``kind`` names the pair kind whose checks are built
+    where it is neither "external" nor "internal" (``"worm"``: :mod:`geardesign.gears.worm.checks`).
 
     >>> [c.name for c in make_checks(sa_min=0.4, undercut=False)]
     ['interference1', 'interference2', 'tip_thickness1', 'tip_thickness2', 'contact_ratio']
@@ -251,8 +254,10 @@ def make_checks(*, internal: bool = False, cutter=None, extra=(), **opts) -> tup
         raise GearDesignError(f"checks: unknown option {', '.join(map(repr, unknown))}; allowed: "
                               f"{', '.join(list(known) + list(CONTEXT_KEYWORDS))}")
     values = {name: opt.value(opts.get(name, opt.default)) for name, opt in known.items()}
-    context = _context(internal=internal, cutter=cutter, **more)
-    kind = "internal" if internal else "external"
+    if kind is not None and kind not in PAIR_KINDS:
+        raise GearDesignError(f"kind must be one of {list(PAIR_KINDS)} or None, got {_show(kind)}")
+    kind = kind or ("internal" if internal else "external")
+    context = _context(internal=internal, cutter=cutter, kind=kind, **more)
     out: list[Check] = []
     for cls in _REGISTRY:
         value = values[cls.option.name]

@@ -1,1 +1,1 @@
-"""Cylindrical worm gear pairs: efficiency (worm.efficiency) and load capacity (worm.rating)."""
+"""Cylindrical worm pairs: DIN 3975 geometry, checks, the pair object and standard series."""
