@@ -136,3 +136,22 @@ def test_bad_input_is_refused_by_name(kw, name):
     T2, n1, m_x, z1, z2, q = (args.pop(k) for k in ("T2", "n1", "m_x", "z1", "z2", "q"))
     with pytest.raises(GearDesignError, match=name):
         rt.worm_rating(T2, n1, m_x, z1, z2, q, **args)
+
+
+def test_worm_pair_rates_on_its_own_geometry():
+    import geardesign as gd
+    # ZN: the rack's α is the normal one, so the pair's α_n, d_f1 are worm_rating's defaults (c* = 0.25)
+    pair = gd.WormPair(6.3, 2, 41, 10.0, flank_form="ZN")
+    kw = dict(l_1=260.0, k_heat=28.0, A_housing=1.1, P_V0=60.0)
+    a = pair.rating(600.0, 1500.0, **kw)
+    b = rt.worm_rating(600.0, 1500.0, 6.3, 2, 41, 10.0, **kw)
+    for k in ("v_g", "mu", "rho_deg", "eta_z", "eta_z_reverse", "F_t1", "F_r", "delta_m", "S_delta", "S_T"):
+        assert getattr(a, k) == pytest.approx(getattr(b, k), rel=1e-13), k
+    assert set(a.factors.set_index("symbol").loc[["d_m1", "a", "d_f1"], "method"]) == {"WormPair geometry (DIN 3975)"}
+    e = pair.efficiency(1500.0)
+    assert e["eta_z"] == pytest.approx(a.eta_z, rel=1e-15) and e["self_locking_static"] == a.self_locking_static
+    # ZA: α is axial, the pair's α_n = arctan(tan 20° cos γ_m) goes into the friction angle and the forces
+    za = gd.WormPair(6.3, 2, 41, 10.0, flank_form="ZA").efficiency(1500.0, mu=0.05)
+    g = math.atan(0.2)
+    alpha_n = math.degrees(math.atan(math.tan(math.radians(20.0)) * math.cos(g)))
+    assert za["eta_z"] == pytest.approx(float(eff.efficiency_worm_driving(math.degrees(g), 0.05, alpha_n)), rel=1e-14)
