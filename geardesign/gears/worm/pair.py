@@ -199,8 +199,8 @@ class WormPair:
         >>> r.factors.set_index("symbol").loc["d_f1", "method"]
         'WormPair geometry (DIN 3975)'
         """
-        from .rating import rate_geometry
-        return rate_geometry(T2, n1, self._rating_geometry(), **options)
+        from .rating import check_options, rate_geometry
+        return rate_geometry(T2, n1, self._rating_geometry(), **check_options(options))
 
     def efficiency(self, n1, mu=None, mu_static=None) -> dict:
         """The worm-driving and wheel-driving mesh efficiency at the worm speed ``n1`` (rpm): ``v_g`` (m/s),

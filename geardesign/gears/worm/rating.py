@@ -289,7 +289,17 @@ def worm_rating(T2, n1, m_x, z1, z2, q, *, x2=0.0, alpha_n_deg=20.0, b_2=None, l
         geo["d_f1"] = (float(worm_root_diameter(m_x, q)), "DIN 3975 (c* = 0.25)")
     if b_2 is not None:
         geo["b_2"] = (one_number("b_2", require_positive("b_2", b_2, unit="mm")), "given by the caller")
-    return rate_geometry(T2, n1, geo, l_1=l_1, **options)
+    return rate_geometry(T2, n1, geo, l_1=l_1, **check_options(options))
+
+
+def check_options(options: dict) -> dict:
+    """``options`` if every key is a keyword of :func:`rate_geometry`; else one GearDesignError naming the
+    unknown keyword and the accepted ones (a misspelt option must not pass silently or as a TypeError)."""
+    allowed = _RATE_OPTIONS
+    bad = [k for k in options if k not in allowed]
+    if bad:
+        raise GearDesignError(f"unknown rating option {bad[0]!r}: the options are {', '.join(allowed)}")
+    return options
 
 
 def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E_STEEL_MPA, worm_hardened=True,
@@ -384,6 +394,10 @@ def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E
                       F_t2=F_t2, F_t1=F_t1, F_r=F_r, sigma_Hm=sigma_Hm, tau_F=tau_F, delta_m=delta,
                       delta_lim=delta_lim, theta_S=theta_S, P_V=P_V, S_H=S_H, S_F=S_F, S_delta=S_d, S_T=S_T,
                       S_W=nan, minimums=mins, _rows=tuple(rows), notes=tuple(notes))
+
+
+_RATE_OPTIONS = ("l_1", "mu", "mu_static", "E_1", "worm_hardened", "p_m_star", "E_red", "sigma_HG", "Y_root",
+                 "tau_FG", "k_heat", "A_housing", "theta_0", "theta_lim", "P_V0", "P_VL", "P_VD", "minimums")
 
 
 def load_capacity(rating: WormRating, P_const=0.0) -> dict:

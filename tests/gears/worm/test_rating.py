@@ -155,3 +155,15 @@ def test_worm_pair_rates_on_its_own_geometry():
     g = math.atan(0.2)
     alpha_n = math.degrees(math.atan(math.tan(math.radians(20.0)) * math.cos(g)))
     assert za["eta_z"] == pytest.approx(float(eff.efficiency_worm_driving(math.degrees(g), 0.05, alpha_n)), rel=1e-14)
+
+
+def test_an_unknown_rating_option_is_refused_by_name():
+    import geardesign as gd
+    with pytest.raises(GearDesignError, match="unknown rating option 'k_heta'.*k_heat"):
+        rt.worm_rating(300.0, 1000.0, 4.0, 1, 30, 10.0, k_heta=15.0)
+    with pytest.raises(GearDesignError, match="unknown rating option 'b_2'"):
+        gd.WormPair(4.0, 1, 30, 10.0).rating(300.0, 1000.0, b_2=40.0)     # the pair's width is face_width_mm
+    # the list of options is rate_geometry's keywords
+    import inspect
+    assert rt._RATE_OPTIONS == tuple(p for p in inspect.signature(rt.rate_geometry).parameters
+                                     if p not in ("T2", "n1", "geo"))
