@@ -144,3 +144,14 @@ def test_total_efficiency_is_output_over_input():
 def test_bad_input_is_refused_by_name(call, name):
     with pytest.raises(GearDesignError, match=name):
         call()
+
+
+def test_efficiency_at_speed_is_its_parts_over_arrays():
+    d, n, g = np.array([40.0, 80.0, 120.0]), np.array([300.0, 1500.0, 3000.0]), np.array([3.0, 11.3, 21.8])
+    v, mu, eta = eff.efficiency_at_speed(d, n, g, 20.0)
+    assert np.array_equal(v, eff.sliding_speed(d, n, g))
+    assert np.array_equal(mu, eff.friction_coefficient_agma(v))
+    assert np.array_equal(eta, eff.efficiency_worm_driving(g, mu, 20.0))
+    v2, mu2, eta2 = eff.efficiency_at_speed(d, n, g, 0.0, mu=0.03)
+    assert mu2.shape == (3,) and np.all(mu2 == 0.03)
+    assert np.array_equal(eta2, eff.efficiency_worm_driving(g, 0.03, 0.0))
