@@ -10,12 +10,13 @@ What each check rests on (docs/worm_rating.md says the same, per factor):
   tangential and radial force, δ = F·l_1³/(48·E·I), I = π·d_f1⁴/64 (Roark, simply supported beam, centre load;
   Autodesk Inventor's worm check uses the same symmetric mounting); the limit δ_lim ≈ 0.004·m_x for a hardened
   worm, 0.01·m_x for a through-hardened one (Autodesk Inventor help, *Strength calculation of worm gears*);
-- contact: ISO/TS 14521 / DIN 3996 mean Hertzian stress σ_Hm = (4/π)·√(p_m*·T2·10³·E_red/a³) (for a line
-  contact the peak pressure is 4/π of the mean one); the standard's formula for the mean Hertzian stress
-  parameter p_m* and its permissible stress σ_HG (σ_Hlim with Z_h, Z_v, Z_s, Z_u, Z_oil) could not be read in a
-  public text: both are the caller's;
+- contact: the mean Hertzian stress σ_Hm = (4/π)·√(p_m*·T2·10³·E_red/a³) in the form ISO/TS 14521 / DIN 3996
+  are known by (for a line contact the peak pressure is 4/π of the mean one). The standard's text could not be
+  read, so this form is **not checked against it**; its formula for the mean Hertzian stress parameter p_m* and
+  the permissible stress σ_HG (σ_Hlim with its life, speed, size, ratio and oil factors) are the caller's;
 - root: the nominal shear stress of the wheel's teeth F_t2/(b_2·m_x) times the product of ISO/TS 14521's
-  factors Y_ε·Y_F·Y_γ·Y_K, given by the caller (their formulas were not found either), against τ_FG;
+  factors Y_ε·Y_F·Y_γ·Y_K (the structure as the standard is known by, not checked against its text), the
+  product and τ_FG given by the caller (their formulas were not found either);
 - temperature: :mod:`geardesign.gears.worm.temperature`;
 - wear (S_W): not computed — ISO/TS 14521's wear intensity J_0T against the lubricant film parameter and
   its material/lubricant factors could not be read in a public text.
@@ -95,8 +96,9 @@ def mesh_forces(T2, d_2, gamma_m_deg, alpha_n_deg, rho_deg):
 
 
 def reduced_modulus(E1, nu1, E2, nu2):
-    """Reduced modulus of the contact E_red = 2/((1 − ν1²)/E1 + (1 − ν2²)/E2) (MPa): the convention of
-    ISO/TS 14521 and DIN 3996 (twice Hertz's contact modulus E*). Steel on steel (206 GPa, 0.3): 226 374 MPa.
+    """Reduced modulus of the contact E_red = 2/((1 − ν1²)/E1 + (1 − ν2²)/E2) (MPa), twice Hertz's contact modulus
+    E* (the convention DIN 3996 is known by; not checked against its text). Steel on steel (206 GPa, 0.3):
+    226 374 MPa.
 
     >>> round(float(reduced_modulus(206000.0, 0.3, 206000.0, 0.3)))
     226374
