@@ -362,14 +362,14 @@ def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E
     S_H = S_F = S_d = S_T = nan
     if p_m_star is not None and E_red is not None and sigma_HG is not None:
         sigma_Hm = row("sigma_Hm", mean_contact_stress(T2, a, p_m_star, E_red), "MPa",
-                       "ISO/TS 14521 (4/π)√(p_m* T2 E_red/a³), p_m* and E_red given")
+                       "(4/π)√(p_m* T2 E_red/a³) (ISO/TS 14521 form, not checked against its text); p_m*, E_red given")
         S_H = row("S_H", require_positive("sigma_HG", sigma_HG, unit="MPa") / sigma_Hm, "", "sigma_HG (given)/sigma_Hm")
     else:
         notes.append("S_H not computed: give p_m_star, E_red and sigma_HG (ISO/TS 14521's p_m* formula and "
                      "sigma_Hlim table were not found in a public text)")
     if "b_2" in geo and Y_root is not None and tau_FG is not None:
         b_2 = row("b_2", geo["b_2"][0], "mm", geo["b_2"][1])
-        tau_F = row("tau_F", root_shear_stress(F_t2, b_2, m_x, Y_root), "MPa", "F_t2/(b_2 m_x)·Y_root (Y given)")
+        tau_F = row("tau_F", root_shear_stress(F_t2, b_2, m_x, Y_root), "MPa", "F_t2/(b_2 m_x)·Y_root (ISO/TS 14521 structure, not checked; Y given)")
         S_F = row("S_F", require_positive("tau_FG", tau_FG, unit="MPa") / tau_F, "", "tau_FG (given)/tau_F")
     else:
         notes.append("S_F not computed: give b_2, Y_root (= Y_eps Y_F Y_gamma Y_K) and tau_FG")
