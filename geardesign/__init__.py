@@ -61,6 +61,7 @@ _NAMES = {
     "Lubricant": "gears.efficiency", "mesh_loss": "gears.efficiency", "stage_efficiency": "drives.efficiency",
     "BearingLoad": "drives.efficiency", "bearing_friction": "drives.bearing_friction",
     "WormPair": "gears.worm.pair", "worm_geometry": "gears.worm.geometry", "select_worm": "gears.worm.series",
+    "WormStage": "drives.stage_kinds.worm",
 }
 # modules reachable as attributes, under their short names (gd.chain.design, gd.key.select, ...)
 _MODULES = {

@@ -5,6 +5,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 import geardesign as gd
 from geardesign import checks
@@ -46,3 +47,26 @@ def test_margin_bound_witness_beats_the_max_margin_solution():
     assert abs(table["margin"].astype(float).min() - value) <= 1e-9
     solved = gd.optimize_shifts(25, 116, "max_margin", m=3.0)
     assert value > min(solved.margins.values()) + 0.05
+
+
+def test_bench_worm_reference_computes_the_librarys_quantities():
+    """bench_worm's plain reference (a few of a worm pair's quantities) is the library's, for one design and an
+    array of them, so its ratios compare like with like."""
+    from bench_worm import plain_worm, plain_worm_arrays
+
+    import math
+
+    from geardesign.gears.worm.geometry import worm_geometry, worm_geometry_float
+
+    names = ["gamma_m_deg", "d_a1", "d_f1", "d_a2", "d_f2", "a", "eps_alpha"]
+    g = worm_geometry_float(5.0, 2, 25, 10.0, 0.1)
+    ref = plain_worm(5.0, 2, 25, 10.0, 0.1)
+    ref = (math.degrees(ref[0]),) + tuple(ref[1:])
+    for n, v in zip(names, ref):
+        assert g[n] == pytest.approx(v, rel=1e-14), n
+    args = [np.array(v) for v in ([2.0, 4.0], [1.0, 4.0], [30.0, 61.0], [8.0, 12.5], [-0.3, 0.4])]
+    ga = worm_geometry(*args)
+    ra = plain_worm_arrays(*args)
+    ra = (np.degrees(ra[0]),) + tuple(ra[1:])
+    for n, v in zip(names, ra):
+        np.testing.assert_allclose(ga[n], v, rtol=1e-14, err_msg=n)

@@ -13,7 +13,7 @@ import sys
 # print a traceback. main() imports them inside its own Ctrl-C handler instead.
 
 # Subcommand modules, in the order ``geardesign --help`` lists them.
-SUBCOMMANDS = ("pair", "measure", "mesh", "shift", "atlas", "teeth", "planetary", "chain", "key", "bearing", "shaft",
+SUBCOMMANDS = ("pair", "measure", "mesh", "shift", "atlas", "teeth", "planetary", "worm", "chain", "key", "bearing", "shaft",
                "drive", "run")
 
 

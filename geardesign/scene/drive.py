@@ -1,6 +1,6 @@
 """The scene's ``[drive]`` section: an input (``power_kw`` or ``output_torque_nm`` at ``n_in_rpm``, or a
 ``[drive.motor]`` chosen from the catalog), ``[[drive.stage]]`` entries (``kind`` = a registered stage
-kind: "given", "gear", "chain", with the keywords of gd.GivenStage / GearStage / ChainStage, or one
+kind: "given", "gear", "chain", "worm", with the keywords of gd.GivenStage / GearStage / ChainStage / WormStage, or one
 added by :func:`geardesign.drives.stage_kinds.register`) and ``[[drive.shaft]]`` keyed hubs.
 With ``total_ratio`` the drive is optimised; without it, analysed as given::
 

@@ -5,8 +5,8 @@ needs, and the mid-plane contact ratio. Each reads the dict of
 :func:`~geardesign.gears.worm.geometry.worm_geometry`; lengths are divided by the axial module m_x.
 
 Build them with ``make_checks(kind="worm", ...)``; the options the spur pair has already (``undercut``,
-``sa_min``, ``eps_alpha_min``) mean the same here, the worm's own (``x2_abs_max``, ``worm_length``,
-``wheel_width``) are built for worm pairs only.
+``sa_min``, ``eps_alpha_min``) mean the same here, the worm's own (``x2_abs_max``, ``worm_length_min``,
+``wheel_width_max``) are built for worm pairs only.
 """
 from __future__ import annotations
 
@@ -28,11 +28,11 @@ X2_ABS_MAX = Option("x2_abs_max", "limit", DEFAULT_X2_ABS_MAX, "largest |x2| of 
                     source="|x2| <= 1: the range a GOST-based worm generator accepts (Dmitry-Lisitsyn/"
                            "WormGearGenerator, Helpers/DataValidation.cs); GOST 19650's own clause not retrieved",
                     range=X2_ABS_MAX_RANGE, cli=False)
-WORM_LENGTH = Option("worm_length", "flag", True,
+WORM_LENGTH = Option("worm_length_min", "flag", True,
                      "the worm's threaded length b_1 >= pi m_x (4.5 + 0.02 z2) (a worm pair)",
                      source="SDP/SI-KHK, Elements of Metric Gear Technology (D785), worm gear mesh geometry",
                      cli=False)
-WHEEL_WIDTH = Option("wheel_width", "flag", True, "the wheel's face width b_2 <= 0.75 d_a1 (a worm pair)",
+WHEEL_WIDTH = Option("wheel_width_max", "flag", True, "the wheel's face width b_2 <= 0.75 d_a1 (a worm pair)",
                      source="the GOST-based course-design rule b_2 <= 0.75 d_a1 (course project 'Proektuvannya "
                             "cherv'yachnoyi peredachi reduktora', ukrbukva.net)", cli=False)
 

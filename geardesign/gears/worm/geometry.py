@@ -19,20 +19,30 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ...validate import broadcast_inputs, require_choice
+from ...errors import GearDesignError
+from ...validate import broadcast_inputs, require_choice, require_int, require_positive, require_range
+from ..inputs import M_RANGE_MM, X_ABS_MAX
 from ..involute import inv_from_tan
+from ..mesh import Z_MAX, Z_MIN
 from ..rack import STANDARD_RACK, BasicRack, require_rack
 
-__all__ = ["FLANK_FORMS", "WORM_FIELDS", "FIELD_INFO", "lead_angle", "axial_pressure_angle", "normal_pressure_angle",
-           "center_distance", "x2_from_center_distance", "wheel_outside_diameter", "worm_length_min",
-           "wheel_width_max", "wheel_width_working", "wheel_x_min", "mid_plane_contact_ratio",
-           "wheel_tip_thickness", "worm_tip_thickness", "worm_chordal_height", "wheel_chordal_thickness",
-           "worm_geometry", "worm_geometry_float"]
+__all__ = ["FLANK_FORMS", "WORM_FIELDS", "FIELD_INFO", "Z1_RANGE", "Q_MAX", "LENGTH_RANGE_MM", "lead_angle",
+           "axial_pressure_angle", "normal_pressure_angle", "center_distance", "x2_from_center_distance",
+           "wheel_outside_diameter", "worm_length_min", "wheel_width_max", "wheel_width_working", "wheel_x_min",
+           "mid_plane_contact_ratio", "wheel_tip_thickness", "worm_tip_thickness", "worm_chordal_height",
+           "wheel_chordal_thickness", "validate_worm_inputs", "require_wheel_exists", "worm_geometry",
+           "worm_geometry_float"]
 
 # The flank forms of DIN 3975 / ISO/TR 10828 and the section in which the rack's pressure angle α0 is
 # straight (the defining section): ZA axial; ZN normal (thread or space); ZI the involute helicoid, α0 its
 # normal pressure angle at the reference cylinder; ZK the normal-section profile angle of the grinding tool.
 FLANK_FORMS = {"ZA": "axial", "ZN": "normal", "ZI": "normal", "ZK": "normal"}
+
+# Worm starts: 1, 2 and 4 are the power worms' usual counts, DIN 3975's examples run to 6; 10 leaves room and keeps
+# the lead angle below 60° for q >= 6.
+Z1_RANGE = (1, 10)
+Q_MAX = 100.0          # d_m1 = 100 m_x: a shaft, not a worm, beyond; q must also exceed 2(h_a* + c*) (a root)
+LENGTH_RANGE_MM = (1e-4, 1e5)   # a worm length or a wheel width
 
 # The geometry dict's public fields (names agreed with efficiency.py/rating.py; docs/glossary.md).
 WORM_FIELDS = ("m_x", "z1", "z2", "q", "x2", "alpha_x_deg", "alpha_n_deg", "gamma_m_deg", "m_n", "d_m1", "d_a1",
@@ -272,15 +282,49 @@ def wheel_chordal_thickness(m_x, z2, x2, alpha_x, gamma_m, h_a):
 
 # --- every field at once -------------------------------------------------------------------------------
 
+def validate_worm_inputs(m_x, z1, z2, q, x2, rack: BasicRack = STANDARD_RACK, worm_length_mm=None,
+                         face_width_mm=None) -> list:
+    """The inputs as float arrays, broadcast, each checked against its range (the first bad element named with
+    its index): m_x in :data:`~geardesign.gears.inputs.M_RANGE_MM`, z1 whole in :data:`Z1_RANGE`, z2 whole in
+    [Z_MIN, Z_MAX], 2(h_a* + c*) < q <= :data:`Q_MAX` (the worm has a root), |x2| <= X_ABS_MAX, the lengths in
+    :data:`LENGTH_RANGE_MM` (or None)."""
+    m_x = require_range("m_x", require_positive("m_x", m_x, unit="mm"), *M_RANGE_MM, unit="mm")
+    z1 = require_int("z1", z1, *Z1_RANGE)
+    z2 = require_int("z2", z2, Z_MIN, Z_MAX)
+    q = require_range("q", q, 2.0 * (rack.ha + rack.c), Q_MAX, lo_open=True)
+    x2 = require_range("x2", x2, -X_ABS_MAX, X_ABS_MAX)
+    lengths = [np.nan if v is None else require_range(name, v, *LENGTH_RANGE_MM, unit="mm")
+               for name, v in (("worm_length_mm", worm_length_mm), ("face_width_mm", face_width_mm))]
+    return broadcast_inputs(m_x=np.asarray(m_x, float), z1=np.asarray(z1, float), z2=np.asarray(z2, float),
+                            q=np.asarray(q, float), x2=np.asarray(x2, float),
+                            worm_length_mm=np.asarray(lengths[0], float), face_width_mm=np.asarray(lengths[1], float))
+
+
+def require_wheel_exists(geo: dict) -> None:
+    """Refuse designs whose wheel has no root (d_f2 <= 0) or whose throat circle lies inside its base circle (no
+    involute to mesh), naming the first one by its x2, z2 and index. A pair whose worm does not reach the wheel
+    (ε_α <= 0) is reported by its contact ratio (a grid of shifts needs every design), and refused by
+    :class:`~geardesign.gears.worm.pair.WormPair`."""
+    for bad, why in ((~(np.asarray(geo["d_f2"]) > 0), "the wheel's root diameter d_f2 is not positive"),
+                     (~np.isfinite(np.asarray(geo["sa2"])), "the wheel's throat circle lies inside its base circle")):
+        if bad.any():
+            i = tuple(int(k) for k in np.argwhere(bad)[0]) if bad.ndim else ()
+            x2 = float(np.broadcast_to(geo["x2"], bad.shape)[i])
+            z2 = float(np.broadcast_to(geo["z2"], bad.shape)[i])
+            where = f" (at index {i if len(i) > 1 else i[0]})" if i else ""
+            raise GearDesignError(f"x2 = {x2:g}{where} is too small for z2 = {z2:g}: {why}")
+
+
 def worm_geometry(m_x, z1, z2, q, x2=0.0, flank_form: str = "ZA", rack: BasicRack | None = None,
-                  worm_length_mm=None, face_width_mm=None) -> dict:
+                  worm_length_mm=None, face_width_mm=None, validate: bool = True) -> dict:
     """Every field of :data:`WORM_FIELDS` for the worm pairs of axial module ``m_x`` (mm), ``z1`` starts, ``z2``
     wheel teeth, diameter quotient ``q`` and wheel shift ``x2`` (all broadcast), flank form ``flank_form``
     (``"ZA"``, ``"ZN"``, ``"ZI"``, ``"ZK"``) and basic rack ``rack`` (its ``alpha_deg`` is the flank form's
     defining pressure angle, axial for ZA and normal otherwise; ``ha``, ``c``, ``rho_f`` as for spur gears).
     ``worm_length_mm`` (b_1) and ``face_width_mm`` (the wheel's b_2) default to what the mesh needs (:func:`worm_length_min`,
-    :func:`wheel_width_working`). No validation here (:class:`~geardesign.gears.worm.pair.WormPair` validates):
-    designs that do not exist give NaN. Lengths in mm, angles in degrees.
+    :func:`wheel_width_working`). Every input is checked (:func:`validate_worm_inputs`) and a wheel that does
+    not exist refused (:func:`require_wheel_exists`); ``validate=False`` skips both (the batch searches: designs that
+    do not exist give NaN). Lengths in mm, angles in degrees.
 
     >>> g = worm_geometry(3.0, 2, 30, 44 / 3)      # SDP/SI-KHK axial-module example, x2 = 0
     >>> float(g["a"]), float(g["d_a2"]), float(g["d_f1"]), round(float(g["gamma_m_deg"]), 5)
@@ -290,12 +334,19 @@ def worm_geometry(m_x, z1, z2, q, x2=0.0, flank_form: str = "ZA", rack: BasicRac
     """
     require_choice("flank_form", flank_form, FLANK_FORMS)
     rack = require_rack(rack)
-    arrays = broadcast_inputs(m_x=np.asarray(m_x, float), z1=np.asarray(z1, float), z2=np.asarray(z2, float),
-                              q=np.asarray(q, float), x2=np.asarray(x2, float),
-                              worm_length_mm=np.asarray(np.nan if worm_length_mm is None else worm_length_mm, float),
-                              face_width_mm=np.asarray(np.nan if face_width_mm is None else face_width_mm, float))
+    if validate:
+        arrays = validate_worm_inputs(m_x, z1, z2, q, x2, rack, worm_length_mm, face_width_mm)
+    else:
+        arrays = broadcast_inputs(
+            m_x=np.asarray(m_x, float), z1=np.asarray(z1, float), z2=np.asarray(z2, float), q=np.asarray(q, float),
+            x2=np.asarray(x2, float),
+            worm_length_mm=np.asarray(np.nan if worm_length_mm is None else worm_length_mm, float),
+            face_width_mm=np.asarray(np.nan if face_width_mm is None else face_width_mm, float))
     with np.errstate(invalid="ignore", divide="ignore"):
-        return _fields(_ARRAY, flank_form, rack, *arrays)
+        geo = _fields(_ARRAY, flank_form, rack, *arrays)
+    if validate:
+        require_wheel_exists(geo)
+    return geo
 
 
 def worm_geometry_float(m_x: float, z1: int, z2: int, q: float, x2: float, flank_form: str = "ZA",
@@ -307,9 +358,9 @@ def worm_geometry_float(m_x: float, z1: int, z2: int, q: float, x2: float, flank
         return _fields(_FLOAT, flank_form, rack, float(m_x), float(z1), float(z2), float(q), float(x2),
                        nan if worm_length_mm is None else float(worm_length_mm),
                        nan if face_width_mm is None else float(face_width_mm))
-    except (ValueError, ZeroDivisionError, OverflowError):   # a design that does not exist: NaN by name
+    except (ValueError, ZeroDivisionError, OverflowError):   # a design that does not exist: NaN, field by field
         return {k: float(v) for k, v in worm_geometry(m_x, z1, z2, q, x2, flank_form, rack, worm_length_mm,
-                                                      face_width_mm).items()}
+                                                      face_width_mm, validate=False).items()}
 
 
 def _float_inv(t: float) -> float:

@@ -21,15 +21,11 @@ from .. import checks as _checks
 from ..inputs import M_RANGE_MM, X_ABS_MAX
 from ..mesh import Z_MAX, Z_MIN
 from ..rack import STANDARD_RACK, BasicRack, require_rack
-from .geometry import FIELD_INFO, FLANK_FORMS, WORM_FIELDS, worm_geometry_float, x2_from_center_distance
+from .geometry import (FIELD_INFO, FLANK_FORMS, LENGTH_RANGE_MM, Q_MAX, WORM_FIELDS, Z1_RANGE,
+                       worm_geometry_float, x2_from_center_distance)
 
-__all__ = ["WormPair", "WormGeometry", "WormShiftResult", "Z1_RANGE", "Q_MAX", "X2_OBJECTIVES"]
+__all__ = ["WormPair", "WormGeometry", "WormShiftResult", "X2_OBJECTIVES"]
 
-# Worm starts: 1, 2 and 4 in GOST 2144's reducer table, up to 6 and more in DIN 3975's examples; 10 leaves room
-# and keeps the lead angle below 60° for q >= 6.
-Z1_RANGE = (1, 10)
-Q_MAX = 100.0          # d_m1 = 100 m_x: a shaft, not a worm, beyond; q must also exceed 2(h_a* + c*) (a root)
-FACE_RANGE_MM = (1e-4, 1e5)
 # The objectives of WormPair.optimize_x2: the smallest |x2| the checks allow (the designer's first wish: a
 # wheel cut by the worm's own hob at its nominal setting) or the largest smallest margin (the robust point).
 X2_OBJECTIVES = {"min_abs_x2": "the x2 nearest to 0 that every check allows",
@@ -81,7 +77,7 @@ class WormPair:
         lengths = {}
         for name in ("worm_length_mm", "face_width_mm"):
             v = getattr(self, name)
-            lengths[name] = None if v is None else one_number(name, require_range(name, v, *FACE_RANGE_MM,
+            lengths[name] = None if v is None else one_number(name, require_range(name, v, *LENGTH_RANGE_MM,
                                                                                   unit="mm"))
         for name, value in (("m_x", m_x), ("z1", z1), ("z2", z2), ("q", q), ("x2", x2), ("rack", rack), *lengths.items()):
             object.__setattr__(self, name, value)
@@ -118,7 +114,7 @@ class WormPair:
     def checks(self, **limits):
         """Table of checks ``check, margin, ok, value, limit, label`` (margins dimensionless, >= 0 holds):
         ``limits`` are the worm's options of :func:`~geardesign.gears.checks.make_checks` (``undercut``,
-        ``sa_min``, ``eps_alpha_min``, ``x2_abs_max``, ``worm_length``, ``wheel_width``).
+        ``sa_min``, ``eps_alpha_min``, ``x2_abs_max``, ``worm_length_min``, ``wheel_width_max``).
 
         >>> t = WormPair(3, 2, 30, 44 / 3, x2=1.5).checks()
         >>> bool(t.set_index("check").loc["x2_range", "ok"])
@@ -145,7 +141,8 @@ class WormPair:
     def x2_limits(self, **limits) -> tuple[float, float]:
         """The interval of x2 (this pair's m_x, z1, z2, q) where every check that depends on x2 holds, exact
         (each margin is monotone in x2: undercut rises, the wheel's tip thickness and the contact ratio fall;
-        their roots by Brent's method to 1e-14). (nan, nan) when no x2 satisfies them all."""
+        their roots by Brent's method to 1e-14), searched over x2 >= −h_a* (the throat at or above the reference
+        circle: below it the contact ratio is not monotone). (nan, nan) when no x2 satisfies them all."""
         lo, hi, _ = _x2_interval(self, _worm_checks(limits))
         return lo, hi
 
@@ -165,7 +162,7 @@ class WormPair:
         lo, hi, nit = _x2_interval(self, checks)
         if not (math.isfinite(lo) and math.isfinite(hi)):
             x2 = _least_bad(self, checks)
-            pair = self._with_x2(x2)
+            pair = self.with_x2(x2)
             margins = _margins(pair, checks)
             conflict = sorted(k for k, v in margins.items() if v < -_checks.FEASIBILITY_TOL)
             return WormShiftResult(x2=x2, fun=min(margins.values()), objective=objective, success=False,
@@ -177,9 +174,9 @@ class WormPair:
             x2 = min(max(0.0, lo), hi)
         else:
             x2 = _max_min_margin(self, checks, lo, hi)
-        pair = self._with_x2(x2)
+        pair = self.with_x2(x2)
         margins = _margins(pair, checks)
-        active = [k for k, v in margins.items() if abs(v) <= 1e-9]
+        active = [k for k, v in margins.items() if k in _X2_SENSE and abs(v) <= 1e-9]   # the ones that fix x2
         # the checks that do not move with x2 cannot change the choice: max_margin is over those that do
         fun = abs(x2) if objective == "min_abs_x2" else min(v for k, v in margins.items() if k in _X2_SENSE)
         return WormShiftResult(x2=x2, fun=fun, objective=objective, success=True,
@@ -217,7 +214,8 @@ class WormPair:
         out.update({k: (float(g[k]), src) for k in ("d_m1", "d_2", "a", "gamma_m_deg", "alpha_n_deg", "d_f1", "b_2")})
         return out
 
-    def _with_x2(self, x2: float) -> "WormPair":
+    def with_x2(self, x2: float) -> "WormPair":
+        """The same worm and wheel with the wheel's shift ``x2``."""
         return WormPair(self.m_x, self.z1, self.z2, self.q, x2, self.flank_form, self.rack, self.worm_length_mm,
                         self.face_width_mm)
 
@@ -270,11 +268,12 @@ def _root(f, lo, hi) -> float:
 
 
 def _x2_window(pair: WormPair) -> tuple[float, float]:
-    """The x2 where the wheel exists (a root, a throat above its base circle) and meshes with the worm
-    (ε_α > 0), within |x2| <= X_ABS_MAX: the window every search of x2 stays in."""
+    """The x2 where the wheel exists (a root), its throat circle is at or above its reference circle (x2 >= −h_a*)
+    and it meshes with the worm (ε_α > 0), within |x2| <= X_ABS_MAX: the window every search of x2 stays in.
+    Below x2 = −h_a* the throat angle α_a2 falls under α_x and the contact ratio no longer falls with x2 (its
+    slope m_x(1/sin α_a2 − 1/sin α_x)/p_bx changes sign); no wheel is made so."""
     ha, c, z2 = pair.rack.ha, pair.rack.c, pair.z2
-    cos_x = math.cos(math.radians(pair._geo["alpha_x_deg"]))
-    lo = max(-X_ABS_MAX, -ha - z2 * (1.0 - cos_x) / 2.0, -(z2 / 2.0 - ha - c)) + 1e-9
+    lo = max(-X_ABS_MAX, -ha, -(z2 / 2.0 - ha - c) + 1e-9)
     hi = X_ABS_MAX
     if not _geo_at(pair, hi)["eps_alpha"] > 0:
         hi = _root(lambda x2: _geo_at(pair, x2)["eps_alpha"] - 1e-9, lo, hi)

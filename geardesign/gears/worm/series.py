@@ -21,8 +21,8 @@ from ...results import RankedTable
 from ...validate import _show, require_choice, require_int, require_positive, require_range
 from .. import checks as _checks
 from ..rack import require_rack
-from .geometry import FLANK_FORMS, worm_geometry
-from .pair import _X2_SENSE, X2_OBJECTIVES, Z1_RANGE, WormPair
+from .geometry import FLANK_FORMS, Z1_RANGE, worm_geometry
+from .pair import _X2_SENSE, X2_OBJECTIVES, WormPair
 
 __all__ = ["worm_module_series", "worm_center_distance_series", "default_q_values", "select_worm", "WormSelection",
            "Z1_DEFAULT", "RATIO_TOL_DEFAULT"]
@@ -100,7 +100,7 @@ class WormSelection(RankedTable):
                     f"{self.table.iloc[0]['limiting_check']} least")
         return (f"m_x = {b['m_x']:g} mm, q = {b['q']:g}, z1/z2 = {int(b['z1'])}/{int(b['z2'])} (u = {b['u']:.6g}), "
                 f"x2 = {b['x2']:.6g}, a = {b['a']:.6g} mm: {int(self.table['feasible'].sum())} of {len(self.table)} "
-                f"candidates feasible; ranked by ratio error, then {self.objective}")
+                f"candidates feasible; ranked by ratio error, module series, then {self.objective}")
 
     def __repr__(self) -> str:
         return f"WormSelection({self.choice})"
@@ -115,7 +115,9 @@ def select_worm(ratio: float | None = None, a: float | None = None, *, z1=None, 
     :func:`default_q_values`) × ``z1`` (default 1 … 4) × ``z2`` (default: the z2 nearest ``ratio``·z1; or given).
     With ``a`` the wheel's shift is x2 = a/m_x − (q + z2)/2 for each, exactly and all at once; without it each
     candidate's x2 is the ``objective`` of :meth:`WormPair.optimize_x2` ("min_abs_x2" or "max_margin") and ``m_x``
-    is required. ``checks`` are the worm's :func:`~geardesign.gears.checks.make_checks` options. Candidates whose
+    is required. Ranked: feasible first, then the smallest ratio error, then the module's row of the series (the
+    first preferred), then the objective, then the largest smallest margin. ``checks`` are the worm's :func:`~geardesign.gears.checks.make_checks` options (the worm length
+    check is off: each candidate's worm is as long as its mesh needs). Candidates whose
     ratio misses ``ratio`` by more than ``ratio_tol`` (relative) are left out.
 
     >>> s = select_worm(12.5, 125, z1=2)               # seed 002's gear motor: u = 12.5 (z2 = 25)
@@ -154,12 +156,14 @@ def select_worm(ratio: float | None = None, a: float | None = None, *, z1=None, 
         raise GearDesignError(f"{len(rows)} candidates is too many (at most {CANDIDATES_MAX}): give fewer m_x, q, z1 or z2")
     cand = np.array(rows, dtype=float)
     limits = dict(checks or {})
+    # every candidate's worm is as long as its mesh needs (b_1 = b_1min): that check holds by construction
+    limits.setdefault("worm_length_min", False)
     cs = _checks.make_checks(kind="worm", **limits)
     names = [c.name for c in cs]
     if a is not None:
         m_, q_, z1_, z2_ = cand[:, 0], cand[:, 1], cand[:, 2], cand[:, 3]
         x2 = a / m_ - (q_ + z2_) / 2.0
-        geo = worm_geometry(m_, z1_, z2_, q_, x2, flank_form, rack)
+        geo = worm_geometry(m_, z1_, z2_, q_, x2, flank_form, rack, validate=False)
         margins = np.column_stack([np.nan_to_num(np.asarray(c.margin(geo), float) * np.ones(len(cand)), nan=-np.inf)
                                    for c in cs])
         exists = (geo["d_f2"] > 0) & np.isfinite(geo["sa2"]) & (geo["eps_alpha"] > 0) & (q_ > 2 * (rack.ha + rack.c))
@@ -195,9 +199,14 @@ def _ranked(cand, x2, margins, names, exists, a_col, eps, gam, ratio, a, objecti
         table[f"margin_{n}"] = margins[:, j]
     moving = [f"margin_{n}" for n in names if n in _X2_SENSE]   # the margins x2 moves (the objective's)
     goal = np.abs(table["x2"]) if objective == "min_abs_x2" else -table[moving].min(axis=1)
-    table = (table.assign(_f=~table["feasible"], _e=table["ratio_error"].abs().round(12), _g=goal,
-                          _w=-table["min_margin"])
-             .sort_values(["_f", "_e", "_g", "_w"], kind="stable").drop(columns=["_f", "_e", "_g", "_w"])
+    # the module's row of the series (1 preferred to 2: "При выборе m 1-й ряд следует предпочитать 2-му", the
+    # course-design guide the catalog cites); 3: a module outside the series
+    frame = load_catalog("worm_modules")
+    rows = dict(zip(frame["module_mm"].round(9), frame["series"]))
+    table.insert(1, "module_series", [int(rows.get(round(float(v), 9), 3)) for v in table["m_x"]])
+    table = (table.assign(_f=~table["feasible"], _e=table["ratio_error"].abs().round(12), _s=table["module_series"],
+                          _g=goal, _w=-table["min_margin"])
+             .sort_values(["_f", "_e", "_s", "_g", "_w"], kind="stable").drop(columns=["_f", "_e", "_s", "_g", "_w"])
              .reset_index(drop=True))
     return WormSelection(table=table, ratio=ratio, a=a, objective=objective, checks=names, n_candidates=len(table),
                          time_s=time.perf_counter() - t0)

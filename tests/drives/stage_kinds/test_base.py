@@ -120,7 +120,7 @@ def _omega(n_rpm):
 
 
 def test_an_unregistered_stage_is_refused_naming_the_kinds():
-    with pytest.raises(GearDesignError, match="stages must be GivenStage, GearStage or ChainStage, got BeltStage"):
+    with pytest.raises(GearDesignError, match="stages must be GivenStage, GearStage, ChainStage or WormStage, got BeltStage"):
         gd.Drive(power_kw=4, n_in_rpm=1450, stages=[BeltStage(100, 250)])
 
 
@@ -202,7 +202,7 @@ def test_the_kind_leaves_with_unregister():
     register(BeltKind())
     assert "belt" in kind_names()
     unregister("belt")
-    assert kind_names() == ("given", "gear", "chain")
+    assert kind_names() == ("given", "gear", "chain", "worm")
 
 
 def test_the_extending_guide_runs_this_files_kind():

@@ -19,17 +19,17 @@ def test_built_for_worms_only_and_registered():
     for cls in (wc.WheelUndercut, wc.WormTipThickness, wc.WheelTipThickness, wc.WheelShiftRange, wc.WormLength,
                 wc.WheelWidth, wc.WormContactRatio):
         assert cls in ck.registered()
-    assert set(wc.worm_options()) == {"undercut", "sa_min", "x2_abs_max", "worm_length", "wheel_width",
+    assert set(wc.worm_options()) == {"undercut", "sa_min", "x2_abs_max", "worm_length_min", "wheel_width_max",
                                       "eps_alpha_min"}
 
 
 def test_worm_only_options_stay_off_the_spur_commands():
-    for name in ("x2_abs_max", "worm_length", "wheel_width"):
+    for name in ("x2_abs_max", "worm_length_min", "wheel_width_max"):
         assert ck.option(name).cli is False
 
 
 def test_options_switch_and_limit_the_worm_checks():
-    names = [c.name for c in ck.make_checks(kind="worm", undercut=False, eps_alpha_min=None, worm_length=False)]
+    names = [c.name for c in ck.make_checks(kind="worm", undercut=False, eps_alpha_min=None, worm_length_min=False)]
     assert names == ["tip_thickness1", "tip_thickness2", "x2_range", "wheel_width"]
     with pytest.raises(GearDesignError, match="x2_abs_max must be in"):
         ck.make_checks(kind="worm", x2_abs_max=5)

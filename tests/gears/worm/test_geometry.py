@@ -154,7 +154,7 @@ def test_flank_forms_differ_only_by_the_section_of_the_pressure_angle():
 def test_shift_for_a_center_distance_reproduces_it(a, m_x, z2, q):
     x2 = wg.x2_from_center_distance(a, m_x, z2, q)
     assert wg.center_distance(m_x, z2, q, x2) == pytest.approx(a, rel=1e-14)
-    assert float(wg.worm_geometry(m_x, 1, z2, q, x2)["a"]) == pytest.approx(a, rel=1e-13)
+    assert float(wg.worm_geometry(m_x, 1, z2, q, x2, validate=False)["a"]) == pytest.approx(a, rel=1e-13)
 
 
 def test_contact_ratio_and_wheel_tip_fall_as_x2_rises():
@@ -163,10 +163,34 @@ def test_contact_ratio_and_wheel_tip_fall_as_x2_rises():
     assert np.all(np.diff(g["eps_alpha"]) < 0) and np.all(np.diff(g["sa2"]) < 0)
 
 
-def test_nonexistent_designs_are_nan_not_numbers():
-    # the throat inside the base circle: x2 far below −h_a* − z2(1 − cos α)/2
-    g = wg.worm_geometry(1.0, 1, 20, 10.0, -2.0)
+def test_a_wheel_that_does_not_exist_is_refused_or_nan_unvalidated():
+    from geardesign.errors import GearDesignError
+
+    # the throat inside the base circle: x2 far below −h_a* − z2(1 − cos α)/2 = −1.60
+    with pytest.raises(GearDesignError, match=r"x2 = -2 \(at index 1\) is too small for z2 = 20: the wheel's throat"):
+        wg.worm_geometry(1.0, 1, 20, 10.0, [0.0, -2.0])
+    g = wg.worm_geometry(1.0, 1, 20, 10.0, -2.0, validate=False)
     assert math.isnan(float(g["sa2"])) and math.isnan(float(g["eps_alpha"]))
+
+
+@pytest.mark.parametrize("kwargs,words", [
+    (dict(m_x=[1.0, -1.0]), ["m_x must be > 0 mm", "-1.0 (at index 1)"]),
+    (dict(z1=[1, 11]), ["z1 must be a whole number in [1, 10]", "11"]),
+    (dict(z2=40.5), ["z2 must be a whole number", "40.5"]),
+    (dict(q=2.0), ["q must be in (2.5, 100]", "2.0"]),
+    (dict(x2=float("nan")), ["x2 must be finite"]),
+    (dict(worm_length_mm=0.0), ["worm_length_mm must be in"]),
+    (dict(m_x=[1.0, 2.0], z1=[1, 2, 3]), ["do not broadcast"]),
+])
+def test_bad_array_inputs_are_refused_by_name(kwargs, words):
+    from geardesign.errors import GearDesignError
+
+    args = dict(m_x=1.0, z1=1, z2=40, q=10.0, x2=0.0)
+    args.update(kwargs)
+    with pytest.raises(GearDesignError) as info:
+        wg.worm_geometry(**args)
+    for w in words:
+        assert w in str(info.value), (w, str(info.value))
 
 
 def test_bad_flank_form_is_refused_by_name():

@@ -90,7 +90,7 @@ def test_measurements_for_the_drawing():
 
 
 def test_min_abs_x2_is_the_undercut_limit_when_zero_undercuts():
-    p = WormPair(4, 1, 16, 10)                 # x_min2 = 1.25 − 0.38(1 − sin 20°) − 16 sin²20°/2 = 0.0644
+    p = WormPair(4, 1, 16, 10)                 # x_min2 = 1.25 − 0.38(1 − sin 20°) − 16 sin²20°/2 = 0.0641
     a = math.radians(20)
     x_min = 1.25 - 0.38 * (1 - math.sin(a)) - 16 * math.sin(a) ** 2 / 2
     r = p.optimize_x2()
@@ -104,7 +104,7 @@ def test_x2_limits_are_where_the_margins_cross_zero():
     p = WormPair(4, 2, 30, 10)
     lo, hi = p.x2_limits(eps_alpha_min=1.5)
     for x2, name in ((lo, "undercut2"), (hi, "contact_ratio")):
-        t = p._with_x2(x2).checks(eps_alpha_min=1.5).set_index("check")
+        t = p.with_x2(x2).checks(eps_alpha_min=1.5).set_index("check")
         assert abs(float(np.asarray(t.loc[name, "value"])) - float(t.loc[name, "limit"])) < 1e-12
 
 
@@ -125,3 +125,27 @@ def test_no_feasible_x2_says_which_checks_conflict():
     r = WormPair(4, 1, 16, 10).optimize_x2(eps_alpha_min=1.9)
     assert not r.success and "contact_ratio" in r.conflict and "no x2 satisfies" in r.message
     assert r.to_dict()["status"] == "failed"
+
+
+@settings(max_examples=60, deadline=None)
+@given(z1=st.integers(1, 4), z2=st.integers(14, 90), q=st.sampled_from([6.3, 8.0, 10.0, 12.5, 16.0, 20.0]),
+       eps_min=st.floats(1.0, 1.8), sa_min=st.floats(0.0, 0.45))
+def test_the_feasible_x2_interval_and_the_optimum_are_exact(z1, z2, q, eps_min, sa_min):
+    p = WormPair(2.5, z1, z2, q)
+    limits = dict(eps_alpha_min=eps_min, sa_min=sa_min)
+    lo, hi = p.x2_limits(**limits)
+    r = p.optimize_x2(**limits)
+    xs = np.linspace(-1.0, 1.0, 2001)
+    g = worm_geometry(2.5, z1, z2, q, xs, validate=False)
+    cs = gd.checks.make_checks(kind="worm", **limits)
+    ok = np.all([np.nan_to_num(np.asarray(c.margin(g), float) * np.ones_like(xs), nan=-1.0) >= -1e-12 for c in cs],
+                axis=0)
+    if not math.isfinite(lo):
+        assert not ok.any() and not r.success
+        return
+    assert r.success and lo - 1e-12 <= r.x2 <= hi + 1e-12
+    inside = (xs > lo + 1e-9) & (xs < hi - 1e-9)
+    outside = (xs < lo - 1e-9) | (xs > hi + 1e-9)
+    assert ok[inside].all() and not ok[outside].any()
+    # the x2 nearest 0 in the interval: no scanned feasible x2 is nearer
+    assert abs(r.x2) <= np.abs(xs[ok]).min() + 1e-12

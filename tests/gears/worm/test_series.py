@@ -62,3 +62,10 @@ def test_bad_select_input(kwargs, words):
         gd.select_worm(**kwargs)
     for w in words:
         assert w in str(info.value), (w, str(info.value))
+
+
+def test_first_row_modules_rank_before_second_row_ones():
+    t = gd.select_worm(12.5, 125, z1=(2, 4)).table
+    f = t[t["feasible"]]
+    assert np.all(np.diff(f["module_series"].to_numpy()) >= 0)     # equal ratio errors here: the series decides
+    assert set(t["module_series"]) <= {1, 2}

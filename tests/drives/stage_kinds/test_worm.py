@@ -1,0 +1,135 @@
+"""A worm gear stage (geardesign.drives.stage_kinds.worm): seed 002's gear motor (u = 12.5, η = 0.87, 4 kW at
+1500 rpm) as a computed worm pair; the search choosing the wheel's teeth in a ratio range with every margin the
+pair's own; the efficiency given, or taken from the installed function; scenes and the diagram."""
+import math
+
+import numpy as np
+import pytest
+
+import geardesign as gd
+from geardesign.drives.stage_kinds import Designs, kind_named, kind_of, set_worm_efficiency
+from geardesign.drives.stage_kinds.worm import WormKind, WormStage
+
+GEAR_MOTOR = dict(m_x=4, q=12.5, z1=4, z2=50, a=125, efficiency=0.87, name="gear motor")
+
+
+def test_the_kind_and_its_ratio_span():
+    s = WormStage(**GEAR_MOTOR)
+    kind = kind_of(s)
+    assert isinstance(kind, WormKind) and kind_named("worm") is kind and gd.WormStage is WormStage
+    assert kind.ratio_span(s) == (12.5, 12.5) and kind.fixed_ratio(s) == 12.5
+    free = WormStage(m_x=4, q=10, z1=2, ratio_range=(10, 20), efficiency=0.8)
+    assert kind.ratio_span(free) == (10.0, 20.0)
+    with pytest.raises(gd.GearDesignError, match="free wheel teeth"):
+        kind.fixed_ratio(free)
+    opts = kind.options(free, 12.0, 14.0)
+    assert opts["z2"].tolist() == [24, 25, 26, 27, 28] and np.allclose(opts["ratio"], opts["z2"] / 2)
+
+
+def test_seed_002_gear_motor_in_a_drive():
+    a = gd.Drive(power_kw=4, n_in_rpm=1500, stages=[WormStage(**GEAR_MOTOR)]).analyse()
+    t_out = 4000 / (1500 * math.pi / 30) * 12.5 * 0.87          # 276.93 N·m, seed 002's gear motor
+    assert a.flow["n_rpm"].iloc[-1] == pytest.approx(120.0, rel=1e-15)
+    assert a.flow["torque_nm"].iloc[-1] == pytest.approx(t_out, rel=1e-14)
+    pair = gd.WormPair(4, 4, 50, 12.5, 0.0)
+    want = pair.checks(worm_length_min=False).set_index("check")["margin"]
+    got = a.checks.set_index("check")["margin"]
+    for name in want.index:
+        assert got[name] == pytest.approx(want[name], abs=1e-15)
+    assert "worm_length" not in got.index and a.success
+
+
+def test_the_batch_margins_are_the_pairs():
+    s = WormStage(m_x=3.15, q=10, z1=1, a=80, ratio_range=(20, 60), efficiency=0.7)
+    kind = kind_of(s)
+    z2 = kind.options(s, 20, 60)["z2"]
+    n = np.ones(z2.shape)
+    b = kind.batch(s, Designs(option=dict(z2=z2, ratio=z2), rows=None, n_in_rpm=n, torque_in_nm=n, n_out_rpm=n,
+                              torque_out_nm=n))
+    for i in (0, len(z2) // 2, len(z2) - 1):
+        x2 = 80 / 3.15 - (10 + z2[i]) / 2
+        try:
+            table = gd.WormPair(3.15, 1, int(z2[i]), 10, x2).checks(worm_length_min=False).set_index("check")
+        except gd.GearDesignError:          # the wheel does not exist: every margin fails
+            assert all(v[i] == -np.inf for v in b.margins.values())
+            continue
+        for name, v in b.margins.items():
+            assert v[i] == pytest.approx(table.loc[name, "margin"], abs=1e-12), (z2[i], name)
+
+
+def test_the_search_picks_the_wheel_teeth():
+    st = [WormStage(m_x=4, q=12.5, z1=2, a=125, ratio_range=(8, 40), efficiency=0.85, name="worm"),
+          gd.ChainStage(name="chain", ratio_range=(1, 3))]
+    o = gd.Drive(power_kw=4, n_in_rpm=1500, stages=st).optimize(25, progress=False)
+    row = o.table.iloc[0]
+    assert bool(row["feasible"]) and abs(row["total_ratio"] / 25 - 1) <= 0.03
+    z2 = int(row["worm.z2"])
+    assert row["worm.x2"] == pytest.approx(125 / 4 - (12.5 + z2) / 2, abs=1e-12)
+    assert o.best.success and o.best.stages[0]["summary"]["z2"] == z2
+
+
+def test_efficiency_given_or_from_the_installed_function():
+    with pytest.raises(gd.GearDesignError, match="efficiency is needed"):
+        WormStage(m_x=4, q=12.5, z1=4, z2=50)
+    with pytest.raises(gd.GearDesignError, match="efficiency is needed when z2 is free"):
+        WormStage(m_x=4, q=12.5, z1=4)
+
+    def screw(pair, mu=0.05):
+        # a stand-in model (the screw's η = tan γ / tan(γ + ρ'), ρ' = atan(μ/cos α_n)): any function of the pair
+        g = pair.geometry()
+        gamma, rho = math.radians(g.gamma_m_deg), math.atan(mu / math.cos(math.radians(g.alpha_n_deg)))
+        return math.tan(gamma) / math.tan(gamma + rho)
+
+    before = set_worm_efficiency(screw)
+    try:
+        s = WormStage(m_x=4, q=12.5, z1=4, z2=50)
+        assert s.efficiency == pytest.approx(screw(gd.WormPair(4, 4, 50, 12.5)), rel=1e-15)
+        assert WormStage(m_x=4, q=12.5, z1=4, z2=50, efficiency=0.8).efficiency == 0.8
+    finally:
+        set_worm_efficiency(before)
+    with pytest.raises(gd.GearDesignError, match="must be callable"):
+        set_worm_efficiency(0.9)
+
+
+@pytest.mark.parametrize("kwargs,words", [
+    (dict(m_x=0, q=10, z1=1, z2=40, efficiency=0.8), ["m_x", "> 0"]),
+    (dict(m_x=2, q=10, z1=0, z2=40, efficiency=0.8), ["z1", "[1, 10]"]),
+    (dict(m_x=2, q=10, z1=1, z2=40, efficiency=1.5), ["efficiency", "1.5"]),
+    (dict(m_x=2, q=10, z1=1, ratio_range=(50, 10), efficiency=0.8), ["ratio_range", "min <= max"]),
+    (dict(m_x=2, q=10, z1=1, z2=40, efficiency=0.8, flank_form="ZX"), ["flank_form"]),
+    (dict(m_x=2, q=10, z1=1, z2=40, efficiency=0.8, checks={"sa_mn": 0.3}), ["unknown option 'sa_mn'"]),
+])
+def test_bad_stage_input(kwargs, words):
+    with pytest.raises(gd.GearDesignError) as info:
+        WormStage(**kwargs)
+    for w in words:
+        assert w in str(info.value), (w, str(info.value))
+
+
+def test_scene_and_diagram(tmp_path):
+    import matplotlib
+    matplotlib.use("Agg")
+    from geardesign.drives.diagram import plot_drive
+
+    kind = kind_named("worm")
+    s = kind.from_scene(dict(m_x=4.0, q=12.5, z1=4, z2=50, a=125.0, efficiency=0.87, name="gear motor",
+                             ratio_range=[8.0, 80.0]))
+    assert s == WormStage(**GEAR_MOTOR)
+    assert set(kind.scene_keys()) >= {"m_x", "q", "z1", "z2", "x2", "a", "efficiency", "flank_form"}
+    a = gd.Drive(power_kw=4, n_in_rpm=1500, stages=[s, gd.ChainStage(z1=13, z2=13, name="chain")]).analyse()
+    ax = plot_drive(a)
+    texts = " ".join(t.get_text() for t in ax.texts)
+    assert "gear motor: ZA worm, z 4/50" in texts
+
+
+def test_seed_002_scene_with_the_worm_computed():
+    from pathlib import Path
+
+    from geardesign.scene import load_scene
+    from geardesign.scene.drive import build_drive
+
+    scene = Path(__file__).resolve().parents[3] / "studies" / "scenes" / "seed002_worm_drive.toml"
+    drive, _ = build_drive(load_scene(str(scene)).sections["drive"])
+    a = drive.analyse()
+    assert a.success and a.flow["n_rpm"].iloc[1] == pytest.approx(120.0, rel=1e-15)
+    assert a.stages[0]["summary"]["kind"] == "worm" and a.stages[0]["summary"]["a"] == 125.0
