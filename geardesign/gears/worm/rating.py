@@ -239,8 +239,7 @@ class WormRating(Result):
                  f"dynamic {'yes' if self.self_locking_dynamic else 'no'}"]
         for k in _CHECKS:
             s = getattr(self, k)
-            val = f"{s:.3f}" if math.isfinite(s) else "not computed"
-            lines.append(f"  {k:8}{val:>14}   (min {self.minimums[k]:g})")
+            lines.append(f"  {k:8}{_shown(s):>14}   (min {self.minimums[k]:g})")
         lines.extend(f"  note: {n}" for n in self.notes[:3])
         if len(self.notes) > 3:
             lines.append(f"  ... {len(self.notes) - 3} more notes (.notes)")
@@ -249,11 +248,15 @@ class WormRating(Result):
     def _repr_html_(self) -> str:
         rows = "".join(f"<tr><td>{html.escape(str(r[0]))}</td><td>{r[1]:.6g}</td><td>{html.escape(r[2])}</td>"
                        f"<td>{html.escape(r[3])}</td></tr>" for r in self._rows)
-        safeties = "".join(f"<tr><td>{k}</td><td>{getattr(self, k):.3f}</td><td>{self.minimums[k]:g}</td></tr>"
+        safeties = "".join(f"<tr><td>{k}</td><td>{_shown(getattr(self, k))}</td><td>{self.minimums[k]:g}</td></tr>"
                            for k in _CHECKS)
         return (f"<div><b>WormRating: {'OK' if self.ok else 'FAILS'}</b><table><tr><th>safety</th><th>value</th>"
                 f"<th>minimum</th></tr>{safeties}</table><details><summary>factors</summary><table>{rows}</table>"
                 f"</details></div>")
+
+
+def _shown(value: float) -> str:
+    return f"{value:.3f}" if math.isfinite(value) else "not computed"
 
 
 def _scalar(name, value):

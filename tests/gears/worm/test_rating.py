@@ -167,3 +167,9 @@ def test_an_unknown_rating_option_is_refused_by_name():
     import inspect
     assert rt._RATE_OPTIONS == tuple(p for p in inspect.signature(rt.rate_geometry).parameters
                                      if p not in ("T2", "n1", "geo"))
+
+
+def test_html_view_says_which_checks_were_not_computed():
+    r = rt.worm_rating(300.0, 1000.0, 4.0, 1, 30, 10.0, l_1=200.0)
+    html = r._repr_html_()
+    assert "not computed" in html and "nan" not in html and f"{r.S_delta:.3f}" in html
