@@ -1,5 +1,6 @@
 """``geardesign worm``: a cylindrical worm pair's geometry and checks (DIN 3975), the wheel's shift for a centre
-distance, its best shift, the measuring sizes for the drawing, or (without --module) the ranked choice of module,
+distance, its best shift, the measuring sizes for the drawing, with --speed its efficiency and with --torque its
+rating (docs/worm_rating.md), or (without --module) the ranked choice of module,
 q and starts for a ratio and centre distance from the standard series.
 
 Exit status 0 when every check holds (or a feasible candidate exists), 1 when one fails (the first line names it),
@@ -22,7 +23,13 @@ from .output import (add_json_flag, check_details, frame_records, print_frame, p
 _FLAGS = {"m_x": "--module", "z1": "--z1", "z2": "--z2", "q": "--q", "x2": "--x2", "flank_form": "--flank-form",
           "worm_length_mm": "--worm-length", "face_width_mm": "--face-width", "a (center distance)": "--center-distance",
           "ratio": "--ratio", "objective": "--optimize-x2", "alpha_deg": "--alpha-deg", "rho_f": "--rho-f",
-          "ha": "--ha", "c": "--c"}
+          "ha": "--ha", "c": "--c", "n1": "--speed", "T2": "--torque", "mu": "--mu", "mu_static": "--mu-static",
+          "l_1": "--bearing-span", "k_heat": "--heat-transfer", "A_housing": "--housing-area", "theta_0": "--ambient",
+          "theta_lim": "--oil-limit", "P_V0": "--no-load-loss"}
+# the rating's options by the flag that sets them (a flag left out leaves its check out of the rating)
+_RATING_FLAGS = (("mu", "mu"), ("mu_static", "mu_static"), ("bearing_span", "l_1"), ("heat_transfer", "k_heat"),
+                 ("housing_area", "A_housing"), ("ambient", "theta_0"), ("oil_limit", "theta_lim"),
+                 ("no_load_loss", "P_V0"))
 # the shared options' meaning for a worm pair (their spur-pair help speaks of two gears)
 _WORM_HELP = {"undercut": "no undercut of the wheel by its hob (x2 >= x_min2)",
               "sa_min": "minimum tip thickness / m_x of the worm's thread and the wheel's teeth",
@@ -59,6 +66,25 @@ def add_parser(sub):
     s = p.add_argument_group("choice from the series (without --module)")
     s.add_argument("--ratio", type=float, default=None, help="gear ratio u = z2/z1 to select for")
     s.add_argument("--top", type=int, default=10, help="rows of the ranking shown (10)")
+    r = p.add_argument_group("efficiency and load capacity (docs/worm_rating.md; with --module)")
+    r.add_argument("--speed", type=float, default=None, metavar="RPM",
+                   help="worm speed n1, rpm: adds the efficiency (sliding speed, friction, worm- and wheel-driving "
+                        "efficiency, self-locking)")
+    r.add_argument("--torque", type=float, default=None, metavar="NM",
+                   help="wheel torque T2, N·m (with --speed): adds the rating and the torque the pair carries")
+    r.add_argument("--mu", type=float, default=None, help="measured coefficient of friction (default: AGMA 6034 at "
+                                                             "the sliding speed)")
+    r.add_argument("--mu-static", type=float, default=None, help="starting friction for static self-locking (0.15)")
+    r.add_argument("--bearing-span", type=float, default=None, metavar="MM",
+                   help="the worm's bearing span l_1, mm: adds the deflection check")
+    r.add_argument("--heat-transfer", type=float, default=None, metavar="W/M2K",
+                   help="housing heat transfer coefficient k, W/(m²·K): adds the temperature check")
+    r.add_argument("--housing-area", type=float, default=None, metavar="M2",
+                   help="heat-shedding housing area A, m² (default with --heat-transfer: 9e-5·a^1.85, a ribbed "
+                        "housing)")
+    r.add_argument("--ambient", type=float, default=20.0, metavar="C", help="ambient temperature, °C (20)")
+    r.add_argument("--oil-limit", type=float, default=90.0, metavar="C", help="highest oil temperature, °C (90)")
+    r.add_argument("--no-load-loss", type=float, default=0.0, metavar="W", help="no-load (churning) loss, W (0)")
     add_rack_args(p)
     c = p.add_argument_group("checks of a worm pair (limits and switches)")
     for opt in worm_options().values():
@@ -120,6 +146,9 @@ def _run(args) -> int:
     geo = pair.geometry()
     table = pair.checks(**checks)
     failed = table.loc[~table["ok"], "check"].tolist()
+    efficiency, rating, capacity = _rating(args, pair)
+    if rating is not None:
+        failed += [f"rating {k}" for k, v in rating.margins.items() if v < 0]
     if args.json:
         print_json({"ok": not failed and (optimum is None or optimum.success), "failing_checks": failed,
                     "input": {"m_x": pair.m_x, "z1": pair.z1, "z2": pair.z2, "q": pair.q, "x2": pair.x2,
@@ -129,7 +158,9 @@ def _run(args) -> int:
                     "geometry": geo.to_dict(),
                     "checks": frame_records(table[["check", "value", "limit", "margin", "ok"]]),
                     **({"measurements": frame_records(pair.measurements())} if args.measurements else {}),
-                    **({"optimum": optimum.to_dict()} if optimum is not None else {})})
+                    **({"optimum": optimum.to_dict()} if optimum is not None else {}),
+                    **({"efficiency": efficiency} if efficiency is not None else {}),
+                    **({"rating": rating.to_dict(), "load_capacity": capacity} if rating is not None else {})})
         return 1 if failed or (optimum is not None and not optimum.success) else 0
     print_verdict(failed, check_details(table))
     print_wrapped(repr(pair))
@@ -139,7 +170,40 @@ def _run(args) -> int:
     print_frame(geo.table()[["quantity", "symbol", "value", "unit"]], "\nGeometry", float_format="{:.8g}")
     if args.measurements:
         print_frame(pair.measurements(), "\nMeasuring sizes (zero backlash)", float_format="{:.5f}")
+    if rating is not None:
+        print(f"\n{rating!r}")
+        if capacity:
+            print(f"  carries T2 = {capacity['T2_max']:.6g} N·m at the minimum safeties (governing: "
+                  f"{capacity['governing']})")
+    elif efficiency is not None:
+        print(f"\nEfficiency at n1 = {args.speed:g} rpm (worm driving unless said)")
+        for key in ("v_g", "mu", "friction_method", "rho_deg", "eta_z", "eta_z_reverse", "self_locking_static",
+                    "self_locking_dynamic"):
+            value = efficiency[key]
+            print(f"  {key:22}{value:.6g}" if isinstance(value, float) else f"  {key:22}{value}")
     return 1 if failed or (optimum is not None and not optimum.success) else 0
+
+
+def _rating(args, pair):
+    """(efficiency dict, WormRating, load capacity dict) the options ask for: None where they do not."""
+    if args.speed is None:
+        for flag, name in (("--torque", "torque"), ("--mu", "mu"), ("--bearing-span", "bearing_span"),
+                           ("--heat-transfer", "heat_transfer"), ("--housing-area", "housing_area")):
+            if getattr(args, name) is not None:
+                raise GearDesignError(f"{flag} needs --speed (the worm speed, rpm)")
+        return None, None, None
+    efficiency = pair.efficiency(args.speed, mu=args.mu, mu_static=args.mu_static)
+    if args.torque is None:
+        return efficiency, None, None
+    from ..gears.worm.rating import load_capacity
+    from ..gears.worm.temperature import housing_area_estimate
+
+    options = {name: getattr(args, flag) for flag, name in _RATING_FLAGS if getattr(args, flag) is not None}
+    if args.heat_transfer is not None and args.housing_area is None:
+        options["A_housing"] = float(housing_area_estimate(pair.geometry().a))
+    rating = pair.rating(args.torque, args.speed, **options)
+    capacity = load_capacity(rating, P_const=args.no_load_loss) if rating.margins else None
+    return efficiency, rating, capacity
 
 
 def _select(args, rack, checks) -> int:

@@ -185,6 +185,35 @@ class WormPair:
                                nit=nit, time_s=time.perf_counter() - t0, margins=margins, active=active,
                                conflict=[], **self._identity(pair))
 
+    def rating(self, T2, n1, **options):
+        """Efficiency and load capacity of this pair (worm driving) at the wheel torque ``T2`` (N·m) and worm speed
+        ``n1`` (rpm), on its own DIN 3975 geometry (d_m1, d_2, a, γ_m, α_n, d_f1, b_2): a
+        :class:`~geardesign.gears.worm.rating.WormRating`. ``options`` are those of
+        :func:`~geardesign.gears.worm.rating.rate_geometry` (``l_1``, ``mu``, ``k_heat``, ``A_housing``, ...;
+        docs/worm_rating.md).
+
+        >>> r = WormPair(8, 2, 25, 10).rating(842.0, 1500.0, l_1=250.0)
+        >>> r.factors.set_index("symbol").loc["d_f1", "method"]
+        'WormPair geometry (DIN 3975)'
+        """
+        from .rating import check_options, rate_geometry
+        return rate_geometry(T2, n1, self._rating_geometry(), **check_options(options))
+
+    def efficiency(self, n1, mu=None, mu_static=None) -> dict:
+        """The worm-driving and wheel-driving mesh efficiency at the worm speed ``n1`` (rpm): ``v_g`` (m/s),
+        ``mu`` (given, else the AGMA 6034 curve at v_g) and ``mu_static`` (at rest), the friction angle
+        ``rho_deg``, ``eta_z``, ``eta_z_reverse`` and the static and dynamic self-locking (docs/worm_rating.md).
+        The mesh efficiency does not depend on the load."""
+        r = self.rating(1.0, n1, mu=mu, mu_static=mu_static)
+        return {k: getattr(r, k) for k in ("v_g", "mu", "mu_static", "friction_method", "rho_deg", "eta_z",
+                                           "eta_z_reverse", "self_locking_static", "self_locking_dynamic")}
+
+    def _rating_geometry(self) -> dict:
+        g, src = self._geo, "WormPair geometry (DIN 3975)"
+        out = {"m_x": self.m_x, "z1": self.z1, "z2": self.z2}
+        out.update({k: (float(g[k]), src) for k in ("d_m1", "d_2", "a", "gamma_m_deg", "alpha_n_deg", "d_f1", "b_2")})
+        return out
+
     def with_x2(self, x2: float) -> "WormPair":
         """The same worm and wheel with the wheel's shift ``x2``."""
         return WormPair(self.m_x, self.z1, self.z2, self.q, x2, self.flank_form, self.rack, self.worm_length_mm,
