@@ -128,6 +128,7 @@ class Drive:
         else:
             object.__setattr__(self, "output_torque_nm", one_number("output_torque_nm", require_range(
                 "output_torque_nm", self.output_torque_nm, *TORQUE_RANGE_NM, unit="N·m")))
+        object.__setattr__(self, "stages", self._computed_efficiencies(self.stages))
         shafts = tuple(self.shafts or ())
         for s in shafts:
             if not isinstance(s, Shaft):
@@ -146,6 +147,24 @@ class Drive:
                 if ds.at > len(stages):
                     raise GearDesignError(f"shafting layout: shaft {ds.at} is beyond the drive's shafts 0 … "
                                           f"{len(stages)}")
+
+    def _computed_efficiencies(self, stages: tuple) -> tuple:
+        """The stages with ``efficiency='computed'`` (a worm stage's) given their number at the speed into them:
+        n_in over the ratios before them, which must be fixed (a stage whose ratio the search chooses would give
+        the worm a speed per design, and the power flow holds one efficiency per stage)."""
+        out, n = [], self.n_in_rpm
+        for k, s in enumerate(stages):
+            if getattr(s, "efficiency", None) == "computed":
+                if n is None:
+                    raise GearDesignError(f"stage '{s.name}': efficiency='computed' needs the speed into it fixed: the "
+                                          f"stages before it must have fixed ratios (or put the worm first)")
+                s = s.at_speed(n)
+            out.append(s)
+            try:
+                n = None if n is None else n / kind_of(s).fixed_ratio(s)
+            except GearDesignError:      # a ratio the search chooses
+                n = None
+        return tuple(out)
 
     # -- helpers
     def _efficiencies(self) -> np.ndarray:

@@ -49,7 +49,9 @@ def set_worm_efficiency(fn):
 class WormStage:
     """A cylindrical worm gear stage: axial module ``m_x`` (mm), diameter quotient ``q``, ``z1`` starts and ``z2``
     wheel teeth (None: chosen in ``ratio_range``), the wheel's shift ``x2`` or the centre distance ``a`` (mm) that
-    fixes it, the flank form and basic rack, ``efficiency`` (None: from :func:`set_worm_efficiency`'s function),
+    fixes it, the flank form and basic rack, ``efficiency`` (a number; ``"computed"``: the mesh efficiency at the
+    speed its drive gives it, :meth:`at_speed`, recorded in ``efficiency_n1_rpm``; None: from
+    :func:`set_worm_efficiency`'s function),
     the worm's check options ``checks`` (a dict of :func:`~geardesign.gears.checks.make_checks` options; the worm
     length check is off by default: the stage's worm is as long as its mesh needs).
 
@@ -66,11 +68,12 @@ class WormStage:
     x2: float = 0.0
     a: float | None = None
     ratio_range: tuple = (8.0, 80.0)
-    efficiency: float | None = None
+    efficiency: float | str | None = None
     name: str = "worm"
     flank_form: str = "ZA"
     rack: BasicRack = STANDARD_RACK
     checks: dict | None = None
+    efficiency_n1_rpm: float | None = None
 
     kind = "worm"
 
@@ -93,7 +96,14 @@ class WormStage:
         # the worm is as long as its mesh needs (b_1 = b_1min): that check holds by construction unless asked for
         object.__setattr__(self, "checks", {"worm_length_min": False, **(self.checks or {})})
         _checks.make_checks(kind="worm", **self.checks)      # the options checked now, by name
-        if self.efficiency is not None:
+        if isinstance(self.efficiency, str):
+            if self.efficiency != "computed":
+                raise GearDesignError(f"worm stage '{self.name}': efficiency must be a number in (0, 1] or "
+                                      f"'computed', got {self.efficiency!r}")
+            if self.z2 is None:
+                raise GearDesignError(f"worm stage '{self.name}': efficiency='computed' needs z2 (the wheel it is "
+                                      "computed for)")
+        elif self.efficiency is not None:
             object.__setattr__(self, "efficiency", _efficiency(self.efficiency))
         elif self.z2 is None:
             raise GearDesignError(f"worm stage '{self.name}': efficiency is needed when z2 is free (each wheel would "
@@ -103,6 +113,14 @@ class WormStage:
                                   "efficiency model is installed (geardesign.drives.stage_kinds.set_worm_efficiency)")
         else:
             object.__setattr__(self, "efficiency", _efficiency(_EFFICIENCY[0](self.pair())))
+
+    def at_speed(self, n1_rpm: float) -> "WormStage":
+        """The stage with ``efficiency='computed'`` given its number: the worm-driving mesh efficiency η_z of its
+        pair at the worm speed ``n1_rpm`` (:meth:`WormPair.efficiency`: the sliding speed's friction, AGMA 6034 as
+        Shigley prints it; docs/worm_rating.md). A drive does this with the speed its power flow gives the stage;
+        the mesh efficiency does not depend on the load, and the speeds do not depend on the efficiencies."""
+        eta = float(self.pair().efficiency(n1_rpm)["eta_z"])
+        return replace(self, efficiency=eta, efficiency_n1_rpm=float(n1_rpm))
 
     def x2_for(self, z2):
         """The wheel's shift at ``z2`` teeth: the one ``a`` fixes, else the given x2."""
@@ -193,7 +211,8 @@ class WormKind(StageKind):
                 "z2": dict(kind="int", lo=3, hi=Z2_MAX), "x2": dict(kind=f, default=0.0, lo=-10.0, hi=10.0),
                 "a": dict(kind=f, lo=0.0, lo_open=True),
                 "ratio_range": dict(kind="floats", lo=WORM_RATIO_RANGE[0], hi=WORM_RATIO_RANGE[1], length=2),
-                "efficiency": dict(kind=f, lo=EFFICIENCY_RANGE[0], hi=EFFICIENCY_RANGE[1], lo_open=True),
+                "efficiency": dict(kind="float_or_str", lo=EFFICIENCY_RANGE[0], hi=EFFICIENCY_RANGE[1], lo_open=True,
+                                   choices=("computed",)),
                 "flank_form": dict(kind="choice", default="ZA", choices=tuple(FLANK_FORMS))}
 
     def from_scene(self, spec: dict):

@@ -133,3 +133,29 @@ def test_seed_002_scene_with_the_worm_computed():
     a = drive.analyse()
     assert a.success and a.flow["n_rpm"].iloc[1] == pytest.approx(120.0, rel=1e-15)
     assert a.stages[0]["summary"]["kind"] == "worm" and a.stages[0]["summary"]["a"] == 125.0
+
+
+def test_a_computed_worm_efficiency_is_the_mesh_efficiency_at_the_speed_into_the_stage():
+    # issue 39 §3, §5: the efficiency used in the power flow; worm-driving η = tan γ / tan(γ + ρ'),
+    # ρ' = arctan(μ / cos α_n) (Niemann-Winter III, worm gears), μ the pair's own at the sliding speed
+    import math
+
+    import geardesign as gd
+
+    w = gd.WormStage(m_x=4, q=12.5, z1=4, z2=50, a=125, efficiency="computed", name="gear motor")
+    d = gd.Drive(power_kw=3, n_in_rpm=1500, stages=[gd.GivenStage(1.0, 1.0, "coupling"), w])
+    st = d.stages[1]
+    e = st.pair().efficiency(1500.0)
+    g = st.pair().geometry()
+    rho = math.atan(e["mu"] / math.cos(math.radians(g.alpha_n_deg)))
+    gamma = math.radians(g.gamma_m_deg)
+    assert st.efficiency == pytest.approx(math.tan(gamma) / math.tan(gamma + rho), rel=1e-12)
+    assert st.efficiency_n1_rpm == 1500.0
+    a = d.analyse()
+    P = a.flow["power_kw"].to_numpy()
+    assert P[2] == pytest.approx(P[1] * st.efficiency, rel=1e-12)
+    # behind a stage whose ratio the search chooses, the speed is not fixed: refused by name
+    with pytest.raises(gd.GearDesignError, match="efficiency='computed' needs the speed"):
+        gd.Drive(power_kw=3, n_in_rpm=1500, stages=[gd.ChainStage(z1=13), w])
+    with pytest.raises(gd.GearDesignError, match="'computed'"):
+        gd.WormStage(m_x=4, q=12.5, z1=4, z2=50, efficiency="auto")
