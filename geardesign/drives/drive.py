@@ -153,7 +153,7 @@ class Drive:
         n_in over the ratios before them, which must be fixed (a stage whose ratio the search chooses would give
         the worm a speed per design, and the power flow holds one efficiency per stage)."""
         out, n = [], self.n_in_rpm
-        for k, s in enumerate(stages):
+        for s in stages:
             if getattr(s, "efficiency", None) == "computed":
                 if n is None:
                     raise GearDesignError(f"stage '{s.name}': efficiency='computed' needs the speed into it fixed: the "
