@@ -20,14 +20,11 @@ import sys
 import time
 
 
-def best(fn, repeat=5, number=200):
-    times = []
-    for _ in range(repeat):
-        t = time.process_time()
-        for _ in range(number):
-            fn()
-        times.append((time.process_time() - t) / number)
-    return min(times)
+from functools import partial
+
+import timing
+
+best = partial(timing.best, repeat=5, number=200)    # CPU time per call, the best of several rounds (benchmarks/timing.py)
 
 
 def shafts_of_a_reducer():

@@ -18,7 +18,6 @@ Prints figures; asserts nothing (speed is measured, not tested).
 from __future__ import annotations
 
 import sys
-import time
 
 import numpy as np
 
@@ -56,22 +55,19 @@ def plain_torque(phi_table, p_table, m_j, points=720, crankcase=0.101325):
     return ((fg - m_j * a) * R / 1000 * (sp * cb + cp * sb) / cb).sum(axis=0)
 
 
-def best(fn, repeat=7, number=50) -> float:
-    times = []
-    for _ in range(repeat):
-        t = time.process_time()
-        for _ in range(number):
-            fn()
-        times.append((time.process_time() - t) / number)
-    return min(times)
+from functools import partial
+
+import timing
+
+best = partial(timing.best, repeat=7, number=50)    # CPU time per call, the best of several rounds (benchmarks/timing.py)
 
 
 def main(repeat: int = 7) -> None:
     e = engine()
     d = e.diagram
     m_j = e.mechanism.piston_mass_kg
-    lib = best(lambda: engine_torque(e, 720), repeat)
-    ref = best(lambda: plain_torque(d.crank_angle_deg, d.pressure_mpa, m_j), repeat)
+    lib = best(lambda: engine_torque(e, 720), repeat=repeat)
+    ref = best(lambda: plain_torque(d.crank_angle_deg, d.pressure_mpa, m_j), repeat=repeat)
     print(f"engine_torque, 4 cylinders, 720 points: {lib * 1e6:8.1f} µs CPU  (goal ≤ 1000 µs: "
           f"{'met' if lib <= 1e-3 else 'NOT met'})")
     print(f"plain reference (gas + piston inertia, no checks): {ref * 1e6:8.1f} µs CPU")

@@ -21,14 +21,7 @@ from geardesign.gears.strength import Load, pair_strength
 from geardesign.gears.strength.service_life import _bins_load, pair_life
 
 
-def best(fn, repeat=5, number=20):
-    times = []
-    for _ in range(repeat):
-        t = time.process_time()
-        for _ in range(number):
-            fn()
-        times.append((time.process_time() - t) / number)
-    return min(times)
+from timing import best    # CPU time per call, the best of several rounds (benchmarks/timing.py)
 
 
 def main():

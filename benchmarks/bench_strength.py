@@ -30,14 +30,7 @@ from geardesign.gears.strength import Load, material, pair_strength, strength
 from geardesign.gears.strength.chain import CHAIN_GEOMETRY_FIELDS
 
 
-def best(fn, repeat=5, number=20):
-    times = []
-    for _ in range(repeat):
-        t = time.process_time()
-        for _ in range(number):
-            fn()
-        times.append((time.process_time() - t) / number)
-    return min(times)
+from timing import best    # CPU time per call, the best of several rounds (benchmarks/timing.py)
 
 
 def once(fn):

@@ -25,14 +25,11 @@ from geardesign.gears.worm.geometry import worm_geometry, worm_geometry_float
 from geardesign.gears.worm.pair import WormPair
 
 
-def best(fn, repeat=5, number=200):
-    times = []
-    for _ in range(repeat):
-        t = time.process_time()
-        for _ in range(number):
-            fn()
-        times.append((time.process_time() - t) / number)
-    return min(times)
+from functools import partial
+
+import timing
+
+best = partial(timing.best, repeat=5, number=200)    # CPU time per call, the best of several rounds (benchmarks/timing.py)
 
 
 def plain_worm(m_x, z1, z2, q, x2, alpha_deg=20.0, ha=1.0, c=0.25):

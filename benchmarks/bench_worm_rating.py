@@ -23,14 +23,11 @@ from geardesign.gears.worm import efficiency as eff
 from geardesign.gears.worm.rating import load_capacity, worm_rating
 
 
-def best(fn, repeat=5, number=200):
-    times = []
-    for _ in range(repeat):
-        t = time.process_time()
-        for _ in range(number):
-            fn()
-        times.append((time.process_time() - t) / number)
-    return min(times)
+from functools import partial
+
+import timing
+
+best = partial(timing.best, repeat=5, number=200)    # CPU time per call, the best of several rounds (benchmarks/timing.py)
 
 
 def plain_pair(T2=600.0, n1=1500.0, m_x=6.3, z1=2, z2=41, q=10.0, alpha=20.0, l_1=260.0, k=28.0, A=1.1, p0=60.0):
