@@ -32,7 +32,7 @@ from ..errors import GearDesignError
 from ..validate import _short
 from .schema import Where, _F, _I, _Key, type_name, validate_table
 
-__all__ = ["engine_schema", "load_engine", "EngineScene"]
+__all__ = ["engine_schema", "load_engine", "engine_section", "EngineScene"]
 
 
 def engine_schema() -> dict:
@@ -123,8 +123,6 @@ def _diagram(where: Where, path: Path, p: dict, mech: dict, strokes: int):
 def load_engine(path) -> EngineScene:
     """Read a scene file's ``[engine]`` table (and its ``title``) and build the engine; one GearDesignError naming
     the file and the key on the first problem."""
-    from ..mechanism.engine import Engine
-    from ..mechanism.slider_crank import SliderCrank
     from .load import _check_values, _read_bounded
 
     path = Path(path)
@@ -145,7 +143,17 @@ def load_engine(path) -> EngineScene:
     title = raw.get("title", path.stem)
     if not isinstance(title, str):
         where.fail("", "title", f"expected a string, got {_short(title)} ({type_name(title)})")
-    e = validate_table(where, "engine", raw["engine"], engine_schema())
+    return engine_section(where, path, raw["engine"], title)
+
+
+def engine_section(where: Where, path: Path, table: dict, title: str) -> EngineScene:
+    """The scene's ``[engine]`` table (``table``, as read from the file at ``path``) validated and built; the
+    engine's name defaults to the scene's ``title``. Shared by ``geardesign engine`` and ``geardesign run``."""
+    from ..mechanism.engine import Engine
+    from ..mechanism.slider_crank import SliderCrank
+
+    path = Path(path)
+    e = validate_table(where, "engine", table, engine_schema())
     for sub in ("mechanism", "pressure"):
         if sub not in e:
             where.fail("engine", sub, f"missing; expected a table [engine.{sub}]")

@@ -167,11 +167,18 @@ _CROSS_CHECKS = {"gear": _cross_gear, "teeth": _cross_teeth, "planetary": _cross
                  "key": _cross_keys, "study": _cross_study}
 
 
-def _spectrum(where, path: Path, spec: dict) -> None:
-    """[gear.spectrum]'s file (relative to the scene) read into ``spec["_spectrum"]``; a bad file fails naming the
-    key."""
+def _spectrum(where, path: Path, gear: dict, engine) -> None:
+    """[gear.spectrum]'s load read into ``spec["_spectrum"]``: its ``file`` (relative to the scene), or without one
+    the scene's [engine] torque curve counted per tooth and flank for the section's pair; a bad file fails naming
+    the key."""
     from ..gears.spectrum import LoadSpectrum
 
+    spec = gear["spectrum"]
+    if "file" not in spec:
+        _engine_spectrum(where, gear, engine)
+        return
+    if "levels" in spec:
+        where.fail("gear.spectrum", "levels", "not used with file (it counts the [engine]'s torque curve)")
     name = spec["file"]
     csv = (path.parent / name) if not Path(name).is_absolute() else Path(name)
     try:
@@ -179,6 +186,36 @@ def _spectrum(where, path: Path, spec: dict) -> None:
                                                   spec.get("life_h")), on_gear=spec["on_gear"])
     except GearDesignError as exc:
         where.fail("gear.spectrum", "file", str(exc))
+
+
+SPECTRUM_LEVELS = 48      # classes per sign of the engine's torque counted per tooth (as LoadSpectrum.from_curve)
+
+
+def _engine_spectrum(where, gear: dict, engine) -> None:
+    """[gear.spectrum] without a file: the [engine]'s torque curve (the crankshaft carries gear ``on_gear``)
+    counted at the mesh instants of the section's pair, per tooth and flank, over one period of the cycle."""
+    from ..gears.spectrum import LoadSpectrum
+
+    spec = gear["spectrum"]
+    if engine is None:
+        where.fail("gear.spectrum", "file", "missing; give a spectrum file, or an [engine] section whose torque "
+                                            "curve the gear carries")
+    for key in ("n_rpm", "duration_h"):
+        if key in spec:
+            where.fail("gear.spectrum", key, "not used with the [engine]'s torque curve (its speed and cycle give "
+                                             "them); give life_h, the required life")
+    if "life_h" not in spec:
+        where.fail("gear.spectrum", "life_h", "missing; the [engine]'s spectrum is one run of its cycle, so the "
+                                             "required life (hours) is needed")
+    angle, torque, n_rpm = engine.engine.analyse(engine.points).curve()
+    try:
+        spec["_spectrum"] = LoadSpectrum.from_curve(torque, angle_deg=angle, n_rpm=n_rpm,
+                                                    teeth=(gear["z1"], gear["z2"]), on_gear=spec["on_gear"],
+                                                    levels=spec.get("levels", SPECTRUM_LEVELS),
+                                                    period_deg=engine.engine.cycle_deg)
+    except GearDesignError as exc:
+        where.fail("gear.spectrum", None, f"the [engine]'s torque curve cannot be counted on this pair: {exc}")
+    spec["_engine"] = True
 
 
 def _chain_catalog(where, path: Path, name: str) -> str:
@@ -257,6 +294,12 @@ def load_scene(path) -> Scene:
         if name not in raw:
             continue
         v = raw[name]
+        if name == "engine":
+            from .engine import engine_section
+            if not isinstance(v, dict):
+                where.fail(name, None, f"expected a table [{name}], got {_short(v)} ({type_name(v)})")
+            sections["engine"] = engine_section(where, path, v, head.get("title", path.stem))
+            continue
         if name == "drive":
             from .drive import load_drive
             sections["drive"] = load_drive(where, path, v)
@@ -277,5 +320,5 @@ def load_scene(path) -> Scene:
     if "chain" in sections:
         sections["chain"]["catalog"] = _chain_catalog(where, path, sections["chain"]["catalog"])
     if "spectrum" in sections.get("gear", {}):
-        _spectrum(where, path, sections["gear"]["spectrum"])
+        _spectrum(where, path, sections["gear"], sections.get("engine"))
     return Scene(str(path), head.get("title", path.stem), head.get("description", ""), sections)

@@ -14,7 +14,7 @@ from ..validate import _short
 
 __all__ = ["SECTIONS", "section_schema", "validate_table", "Where", "type_name"]
 
-SECTIONS = ("gear", "teeth", "planetary", "chain", "key", "study", "drive")
+SECTIONS = ("engine", "gear", "teeth", "planetary", "chain", "key", "study", "drive")
 
 
 @dataclass(frozen=True)
@@ -132,12 +132,15 @@ def _gear_schema() -> dict:
 
 def _spectrum_schema() -> dict:
     """[gear.spectrum]: a load spectrum (ISO 6336-6) from a CSV file (relative to the scene; its columns:
-    :meth:`geardesign.LoadSpectrum.from_csv`), the required life, the S-N curve beyond the knee, Y_M, the materials;
-    the damage checks join the section's checks and the life is reported at the optimum (docs/life.md)."""
+    :meth:`geardesign.LoadSpectrum.from_csv`) or, without ``file`` in a scene with an ``[engine]``, the engine's
+    torque curve counted per tooth and flank in ``levels`` classes (:meth:`geardesign.LoadSpectrum.from_curve`);
+    the required life, the S-N curve beyond the knee, Y_M, the materials; the damage checks join the section's
+    checks and the life is reported at the optimum (docs/life.md, docs/engine.md)."""
     from ..gears.spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES, SPEED_RANGE_RPM, TIME_RANGE_H
     from ..gears.strength.load import LIFE_RANGE_H
 
-    return {"file": _Key("str", required=True),
+    return {"file": _Key("str"),
+            "levels": _I(lo=1, hi=10_000),
             "n_rpm": _F(lo=SPEED_RANGE_RPM[0], hi=SPEED_RANGE_RPM[1], lo_open=True),
             "duration_h": _F(lo=TIME_RANGE_H[0], hi=TIME_RANGE_H[1], lo_open=True),
             "on_gear": _I(default=1, lo=1, hi=2),
@@ -281,9 +284,15 @@ def _drive_schema() -> dict:
     return drive_schema("")
 
 
+def _engine_schema() -> dict:
+    from .engine import engine_schema   # the [engine] table's keys live beside its loader
+
+    return engine_schema()
+
+
 _BUILDERS = {"": lambda: {"title": _Key("str"), "description": _Key("str")}, "gear": _gear_schema,
              "teeth": _teeth_schema, "planetary": _planetary_schema, "chain": _chain_schema, "key": _key_schema,
-             "study": _study_schema, "drive": _drive_schema}
+             "study": _study_schema, "drive": _drive_schema, "engine": _engine_schema}
 
 
 def section_schema(name: str) -> dict:
