@@ -52,7 +52,7 @@ def run(args) -> int:
         require_count("--points", args.points, *POINTS_RANGE)
     gear = None
     if scene.has_gear:        # the engine's gear: its spectrum, life and best shifts (the whole scene checked first)
-        from ..scene.engine import engine_gear
+        from ..scene.engine_gear import engine_gear
         from ..scene.load import load_scene
 
         full = load_scene(args.scene)

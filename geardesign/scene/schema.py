@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from ..errors import GearDesignError
 from ..validate import _short
 
-__all__ = ["SECTIONS", "section_schema", "validate_table", "Where", "type_name"]
+__all__ = ["SECTIONS", "section_schema", "validate_table", "Where", "type_name", "engine_schema"]
 
 SECTIONS = ("engine", "gear", "teeth", "planetary", "chain", "key", "study", "drive")
 
@@ -284,9 +284,53 @@ def _drive_schema() -> dict:
     return drive_schema("")
 
 
-def _engine_schema() -> dict:
-    from .engine import engine_schema   # the [engine] table's keys live beside its loader
+def engine_schema() -> dict:
+    """The keys of ``[engine]``, ``[engine.mechanism]`` and ``[engine.pressure]``, from the library's ranges."""
+    from ..mechanism.cylinders import CYLINDERS_MAX
+    from ..mechanism.engine import POINTS_RANGE, SPEED_RANGE_RPM
+    from ..mechanism.kinetostatics import GRAVITY_M_S2
+    from ..mechanism.pressure import ATMOSPHERE_MPA, PRESSURE_RANGE_MPA
+    from ..mechanism.slider_crank import INERTIA_MAX_KG_M2, MASS_MAX_KG
 
+    p_lo, p_hi = PRESSURE_RANGE_MPA
+    mass = dict(default=0.0, lo=0.0, hi=MASS_MAX_KG)
+    pos = dict(lo=0.0, lo_open=True)
+    return {
+        "n_rpm": _F(required=True, lo=SPEED_RANGE_RPM[0], hi=SPEED_RANGE_RPM[1], lo_open=True),
+        "cylinders": _I(default=1, lo=1, hi=CYLINDERS_MAX),
+        "strokes": _I(default=4, lo=2, hi=4),
+        "firing_order": _Key("ints", lo=1, hi=CYLINDERS_MAX), "throws_deg": _Key("floats", lo=-720.0, hi=720.0),
+        "phases_deg": _Key("floats", lo=0.0, hi=720.0), "axis_tilts_deg": _Key("floats", lo=-180.0, hi=180.0),
+        "mechanical_efficiency": _F(lo=0.0, hi=1.0, lo_open=True),
+        "flywheel_inertia_kg_m2": _F(lo=0.0, hi=INERTIA_MAX_KG_M2, lo_open=True),
+        "crankcase_pressure_mpa": _F(default=ATMOSPHERE_MPA, lo=p_lo, hi=p_hi),
+        "gravity_m_s2": _F(default=GRAVITY_M_S2, lo=0.0, hi=100.0),
+        "points": _I(default=720, lo=POINTS_RANGE[0], hi=POINTS_RANGE[1]),
+        "name": _Key("str"),
+        "mechanism": {
+            "crank_radius_mm": _F(required=True, **pos), "rod_length_mm": _F(required=True, **pos),
+            "rod_cg_mm": _F(default=0.0, lo=0.0), "offset_mm": _F(default=0.0),
+            "piston_mass_kg": _F(**mass), "rod_mass_kg": _F(**mass),
+            "rod_inertia_kg_m2": _F(default=0.0, lo=0.0, hi=INERTIA_MAX_KG_M2),
+            "crank_mass_kg": _F(**mass), "crank_cg_mm": _F(default=0.0),
+            "cylinder_bore_mm": _F(required=True, **pos)},
+        "pressure": {
+            "kind": _Key("choice", required=True, choices=("otto", "table", "csv")),
+            # kind = "otto": the parametric cycle (mechanism.pressure.otto_pressure)
+            "compression_ratio": _F(lo=1.0, hi=40.0, lo_open=True),
+            "intake_pressure_mpa": _F(default=0.09, lo=p_lo, hi=p_hi, lo_open=True),
+            "exhaust_pressure_mpa": _F(default=0.11, lo=p_lo, hi=p_hi, lo_open=True),
+            "peak_pressure_mpa": _F(lo=p_lo, hi=p_hi, lo_open=True),
+            "polytropic_compression": _F(default=1.37, lo=1.0, hi=1.7),
+            "polytropic_expansion": _F(default=1.25, lo=1.0, hi=1.7),
+            "table_points": _I(default=1440, lo=POINTS_RANGE[0], hi=POINTS_RANGE[1]),
+            # kind = "table": absolute pressures at cycle angles
+            "crank_angle_deg": _Key("floats", lo=0.0, hi=720.0), "pressure_mpa": _Key("floats", lo=p_lo, hi=p_hi),
+            # kind = "csv": a file with the columns crank_angle_deg, pressure_mpa (relative to the scene)
+            "csv": _Key("str")}}
+
+
+def _engine_schema() -> dict:
     return engine_schema()
 
 

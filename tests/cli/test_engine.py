@@ -92,7 +92,7 @@ def _variant(tmp_path, *changes):
 
 def test_the_seed_gear_prints_spectrum_life_and_shifts_and_fails(capsys):
     """Exit 1: the seed's shifts fail eps_alpha >= 1.2 and no shifts give 40Cr's pinion 5000 h."""
-    from geardesign.scene.engine import engine_gear
+    from geardesign.scene.engine_gear import engine_gear
     from geardesign.scene.load import load_scene
 
     assert main(["engine", str(GEAR_EXAMPLE)]) == 1

@@ -213,7 +213,7 @@ def test_run_the_seed_engine_end_to_end(tmp_path, capsys):
     """examples/seed000_engine_gear.toml through `run`: the torque curve, the spectrum's histogram, the S-N diagrams
     and the damage tables in the report; exit 1 (the seed's shifts fail eps_alpha >= 1.2); the life at the given
     shifts is the engine command's."""
-    from geardesign.scene.engine import engine_gear
+    from geardesign.scene.engine_gear import engine_gear
     from geardesign.scene.load import load_scene
 
     out = tmp_path / "out"
