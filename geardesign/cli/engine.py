@@ -30,7 +30,10 @@ def add_parser(subparsers):
     p.add_argument("--plot", default=None, metavar="PNG", help="write the torque curves' plot to this PNG file")
     p.add_argument("--journals", action="store_true",
                    help="plot the journal torques M_z1 ... (seed 004) instead of the cylinders' torques")
-    p.add_argument("--overwrite", action="store_true", help="replace existing --csv and --plot files")
+    p.add_argument("--html", default=None, metavar="HTML",
+                   help="with a [gear] in the scene: write the engine's gear report (torque, spectrum, life, S-N "
+                        "diagrams, damage tables, optimal shifts) to this self-contained HTML page")
+    p.add_argument("--overwrite", action="store_true", help="replace existing --csv, --plot and --html files")
     add_json_flag(p)
     return p
 
@@ -44,7 +47,17 @@ def run(args) -> int:
     if args.plot and args.csv and targets["plot"].resolve() == targets["csv"].resolve():
         from ..errors import GearDesignError
         raise GearDesignError("--csv and --plot name the same file")
+    if args.html:
+        targets["html"] = check_output_path(args.html, overwrite=args.overwrite, suffixes=(".html", ".htm"),
+                                            what="--html")
+    if len({t.resolve() for t in targets.values()}) < len(targets):
+        from ..errors import GearDesignError
+        raise GearDesignError("--csv, --plot and --html name the same file")
     scene = load_engine(args.scene)
+    if args.html and not scene.has_gear:
+        from ..errors import GearDesignError
+        raise GearDesignError("--html is the report of the engine's gear: the scene has no [gear] (--plot draws the "
+                              "torque)")
     points = scene.points if args.points is None else args.points
     if args.points is not None:
         from ..mechanism.engine import POINTS_RANGE
@@ -75,6 +88,13 @@ def run(args) -> int:
                                   lambda tmp: ax.figure.savefig(tmp, dpi=110, bbox_inches="tight", format="png"))
             finally:
                 plt.close(ax.figure)
+        if "html" in targets:
+            import matplotlib
+
+            matplotlib.use("Agg", force=False)
+            from ..scene.engine_gear import engine_gear_report
+
+            engine_gear_report(gear, targets["html"], overwrite=args.overwrite)
     if gear is not None:
         return _report_gear(args, gear, res, targets)
     if args.json:
@@ -125,5 +145,8 @@ def _report_gear(args, gear, res, targets) -> int:
                   f"{g['z1']}/{g['z2']} m = {g['module']:g}, a_w = {o.a_w:.4f} mm, eps_alpha = {o.eps_alpha:.4f}, "
                   f"active {', '.join(o.active) or '-'}): {o.message}", indent="  ")
     for what, path in targets.items():
-        print(f"wrote {path} ({'the torque curves' if what == 'csv' else 'the plot'})")
+        print(f"wrote {path} ({_WHAT[what]})")
     return 1 if failures else 0
+
+
+_WHAT = {"csv": "the torque curves", "plot": "the plot", "html": "the engine's gear report"}

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from .schema import Where
 
-__all__ = ["EngineGear", "engine_gear"]
+__all__ = ["EngineGear", "engine_gear", "engine_gear_report_html", "engine_gear_report"]
 
 
 class EngineGear:
@@ -100,3 +100,58 @@ def engine_gear(scene) -> EngineGear:
             table = pair.checks(**checks, housing_a_w=g.get("a_w"))
             given_failed = table.loc[~table["ok"], "check"].tolist()
     return EngineGear(scene, torque, spectrum, opt, life, given_failed)
+
+
+def engine_gear_report_html(gear: EngineGear) -> str:
+    """The engine's gear as one self-contained HTML page: the verdict, the torque over the cycle (summary and
+    plot), the spectrum on the gear (histogram and its classes), the life at the scene's shifts and at the optimum
+    (damage table and S-N diagrams with the spectrum on the governing tooth flank) and the optimal shifts."""
+    import html
+
+    from .html import _frame, _page, _png, _td
+
+    failures = gear.failures
+    o = gear.optimum
+    verdict = (f'<div class="verdict ok">OK: the best shifts ({html.escape(o.objective)}) give '
+               f"{gear.life['optimum'].life_h:.4g} h, the required life holds.</div>" if not failures else
+               f'<div class="verdict fail">FAILS: {html.escape("; ".join(failures))}</div>')
+    parts = [f"<h1>{html.escape(gear.scene.title)}</h1>", verdict, "<h2>The engine's torque over the cycle</h2>",
+             "<ul>" + "".join(f"<li>{html.escape(line)}</li>" for line in gear.torque.summary()) + "</ul>",
+             f'<figure><img alt="torque over the cycle" src="{_png(gear.torque.plot().figure)}"></figure>']
+    s = gear.spectrum
+    parts += ["<h2>Load spectrum on the gear (ISO 6336-6)</h2>",
+              f"<p>{html.escape(repr(s))}: the torque counted at the mesh instants of gear {s.on_gear}, per tooth and "
+              "flank; a negative class loads the coast flank.</p>",
+              f'<figure><img alt="spectrum histogram" src="{_png(s.plot().figure)}"></figure>',
+              _frame(s.histogram(), {"torque_nm": "{:.5g}", "time_h": "{:.4g}", "share": "{:.4f}"})]
+    for tag, (x, r) in gear._lives().items():
+        what = "the scene's shifts" if tag == "given" else f"the optimal shifts ({o.objective})"
+        fails = (f" — they fail {html.escape(', '.join(gear.given_failed))}" if tag == "given" and gear.given_failed
+                 else "")
+        parts += [f"<h2>Service life at {what}: x<sub>1</sub> = {x[0]:.4f}, x<sub>2</sub> = {x[1]:.4f}</h2>",
+                  f"<p>{r.life_h:.4g} h of {r.required_life_h:.6g} h required ({'holds' if r.ok else 'FAILS'}); "
+                  f"S-N curve {html.escape(r.sn_curve)}; Y<sub>M</sub> = "
+                  f"{'/'.join(f'{v:g}' for v in r.mean_stress_factor)}{fails}.</p>",
+                  _frame(r.damage_table(), {"D": "{:.4g}", "life_h": "{:.4g}", "S": "{:.4g}"}),
+                  f'<figure><img alt="S-N diagrams" src="{_png(r.plot())}"></figure>']
+    g = gear.scene.sections["gear"]
+    rows = [("objective", o.objective), ("x1, x2", f"{o.x1:.6f}, {o.x2:.6f}"), ("fun = ln(L/L_req)" if
+            o.objective == "max_life" else "fun", f"{o.fun:.6g}"), ("a_w, mm", f"{o.a_w:.4f}"),
+            ("eps_alpha", f"{o.eps_alpha:.4f}"), ("active checks", ", ".join(o.active) or "-"),
+            ("message", o.message)]
+    parts += [f"<h2>Optimal shifts of {g['z1']}/{g['z2']}, m = {g['module']:g} mm</h2>",
+              "<table><tbody>" + "".join(f"<tr>{_td(html.escape(a))}{_td(html.escape(str(b)))}</tr>" for a, b in rows)
+              + "</tbody></table>"]
+    return _page(gear.scene.title, parts)
+
+
+def engine_gear_report(gear: EngineGear, path, overwrite: bool = False):
+    """Write :func:`engine_gear_report_html` to ``path`` (.html), whole or not at all; an existing file is replaced
+    only with ``overwrite``. Returns the path."""
+    from pathlib import Path
+
+    from ..files import check_output_path, write_file_atomic
+
+    p = check_output_path(path, overwrite=overwrite, suffixes=(".html", ".htm"), what="--html")
+    page = engine_gear_report_html(gear)
+    return write_file_atomic(p, lambda tmp: Path(tmp).write_text(page, encoding="utf-8"))

@@ -141,3 +141,23 @@ def test_without_a_spectrum_table_the_key_is_named(tmp_path, capsys):
     assert main(["engine", str(path)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "[gear] spectrum: missing; the engine's gear needs [gear.spectrum]" in err[0], err
+
+
+def test_html_report_of_the_engines_gear(tmp_path, capsys):
+    page = tmp_path / "r.html"
+    assert main(["engine", str(GEAR_EXAMPLE), "--html", str(page)]) == 1
+    assert f"wrote {page} (the engine's gear report)" in capsys.readouterr().out
+    text = page.read_text(encoding="utf-8")
+    for part in ("The engine's torque over the cycle", "Load spectrum on the gear (ISO 6336-6)",
+                 "Service life at the scene's shifts", "Service life at the optimal shifts (max_life)",
+                 "<th>mode</th><th>gear</th><th>D</th><th>life_h</th><th>S</th><th>ok</th>", "Optimal shifts of 17/26"):
+        assert part in text, part
+    # torque, histogram, two S-N diagrams, each inline: the page fetches nothing
+    assert text.count('src="data:image/png;base64,') == 4 and 'src="http' not in text
+    before = page.read_bytes()
+    assert main(["engine", str(GEAR_EXAMPLE), "--html", str(page)]) == 2      # never over a file unasked
+    assert "--html" in capsys.readouterr().err and page.read_bytes() == before
+    assert main(["engine", str(EXAMPLE), "--html", str(tmp_path / "e.html")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--html is the report of the engine's gear: the scene has no [gear]" in err[0]
+    assert not (tmp_path / "e.html").exists()
