@@ -68,9 +68,7 @@ def run(args) -> int:
         from ..scene.engine_gear import engine_gear
         from ..scene.load import load_scene
 
-        full = load_scene(args.scene)
-        full.sections["engine"].points = points
-        gear = engine_gear(full)
+        gear = engine_gear(load_scene(args.scene), points)
     res = scene.engine.analyse(points)
     with all_or_nothing():      # every file of the command, or none
         if "csv" in targets:

@@ -61,11 +61,12 @@ class EngineGear:
         return {tag: (at[tag], r) for tag, r in self.life.items()}
 
 
-def engine_gear(scene) -> EngineGear:
+def engine_gear(scene, points: int | None = None) -> EngineGear:
     """A loaded scene (:func:`geardesign.scene.load.load_scene`) with ``[engine]`` and ``[gear]`` whose
     ``[gear.spectrum]`` counts the engine's torque: the torque over the cycle, the spectrum on the pair, the shifts
     of the section's objective (``max_life``, the longest life, unless it names another) under its checks and the
-    damage checks, and the life at the scene's shifts and at the optimum (ISO 6336-6)."""
+    damage checks, and the life at the scene's shifts and at the optimum (ISO 6336-6). ``points``: the crank angles
+    over the cycle (None: the scene's), the torque and the spectrum counted from them."""
     from ..gears.pair import GearPair
     from ..shifts.optimize import optimize_shifts
     from .load import scene_kind
@@ -81,6 +82,11 @@ def engine_gear(scene) -> EngineGear:
         where.fail("gear.spectrum", "file", "the engine command counts the [engine]'s torque on the gear: drop the "
                                             "file (geardesign run rates a file's spectrum)")
     e = scene.sections["engine"]
+    if points is not None and points != e.points:      # the spectrum counted again from the curve at these points
+        from .load import _engine_spectrum
+
+        e.points = points
+        _engine_spectrum(where, g, e)
     torque = e.engine.analyse(e.points)
     checks = _checks_dict(g.get("checks"), g)
     kind = scene_kind(g)

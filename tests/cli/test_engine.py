@@ -161,3 +161,17 @@ def test_html_report_of_the_engines_gear(tmp_path, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "--html is the report of the engine's gear: the scene has no [gear]" in err[0]
     assert not (tmp_path / "e.html").exists()
+
+
+def test_points_count_the_gears_spectrum_too(capsys):
+    """--points samples the curve the spectrum is counted from as well (360 points: every 2°)."""
+    import geardesign as gd
+    from geardesign.scene.engine import load_engine
+
+    assert main(["engine", str(GEAR_EXAMPLE), "--points", "360", "--json"]) == 1
+    d = json.loads(capsys.readouterr().out)
+    angle, torque, n = gd.engine_torque(load_engine(GEAR_EXAMPLE).engine, 360)
+    spec = gd.LoadSpectrum.from_curve(torque, angle_deg=angle, n_rpm=n, teeth=(17, 26), period_deg=720)
+    assert d["engine"]["points"] == 360
+    assert d["spectrum"]["max_torque_nm"] == pytest.approx(float(spec.torque_nm.max()), rel=1e-12)
+    assert d["spectrum"]["min_torque_nm"] == pytest.approx(float(spec.torque_nm.min()), rel=1e-12)
