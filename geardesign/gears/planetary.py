@@ -371,23 +371,43 @@ def _mesh_options(opts: dict, meshes: PlanetaryMeshes, arrangement: str) -> tupl
         raise GearDesignError("material2 is a pair's; a planetary set takes material (every gear) and "
                               "planet_material, ring_material")
     own = {k: opts.pop(k) for k in SET_MATERIALS if k in opts}
-    if opts.get("load") is None:
+    if opts.get("load") is None and opts.get("spectrum") is None:
         if any(v is not None for v in own.values()):
             raise GearDesignError(f"{', '.join(k for k, v in own.items() if v is not None)} given without a load: "
                                   f"the strength checks need load= (a geardesign Load on the sun)")
         return opts, opts
     # here: the strength package loads pandas and the materials catalog, which a set without a load never needs
-    from .strength.planetary_meshes import mesh_loads
+    from .strength.planetary_meshes import mesh_loads, mesh_spectra
 
-    cases = mesh_loads(meshes.z_sun, meshes.z_planet, meshes.z_ring, meshes.n_planets, arrangement, opts["load"])
+    z = (meshes.z_sun, meshes.z_planet, meshes.z_ring, meshes.n_planets, arrangement)
+    cases = mesh_loads(*z, opts["load"]) if opts.get("load") is not None else None
+    # a spectrum on the sun (the damage checks, ISO 6336-6): each mesh's bins as the load's case, its own cycles
+    spectra = None
+    if opts.get("spectrum") is not None:
+        given = opts["spectrum"]
+        spectra = [mesh_spectra(*z, s) for s in (given if isinstance(given, (list, tuple)) else [given])]
+        cycles = {tag: spectra[0][tag][1] for tag in MESH_NAMES}
+        if cases is not None and any(cases[tag][1] != cycles[tag] for tag in MESH_NAMES):
+            raise GearDesignError("the load and the spectrum give the meshes different load cycles")
+    else:
+        cycles = {tag: cases[tag][1] for tag in MESH_NAMES}
     sun = opts.get("material")
     planet = own.get("planet_material") or sun
     materials = {"sun-planet": (sun, planet), "planet-ring": (planet, own.get("ring_material") or sun)}
     strength = opts.get("strength") or {}
     if not isinstance(strength, dict):
         raise GearDesignError(f"strength must be a dict of pair_strength options, got {type(strength).__name__}")
-    return tuple({**opts, "load": cases[tag][0], "material": materials[tag][0], "material2": materials[tag][1],
-                  "strength": {**strength, "cycles_per_rev": cases[tag][1]}} for tag in MESH_NAMES)
+    out = []
+    for tag in MESH_NAMES:
+        mesh = {**opts, "material": materials[tag][0], "material2": materials[tag][1],
+                "strength": {**strength, "cycles_per_rev": cycles[tag]}}
+        if cases is not None:
+            mesh["load"] = cases[tag][0]
+        if spectra is not None:
+            parts = [s[tag][0] for s in spectra]
+            mesh["spectrum"] = parts if isinstance(opts["spectrum"], (list, tuple)) else parts[0]
+        out.append(mesh)
+    return tuple(out)
 
 
 @dataclass(frozen=True)

@@ -283,6 +283,49 @@ class LoadSpectrum:
             cols.update(tooth1=self.tooth1, tooth2=self.tooth2, meshes=self.meshes)
         return pd.DataFrame(cols)
 
+    def histogram(self):
+        """The time share of each torque class, summed over the teeth (a DataFrame: ``torque_nm`` signed, the
+        class's value; ``time_h``; ``share`` of the duration; ``flank`` "drive" or "coast"), largest torque
+        first."""
+        import pandas as pd
+
+        levels, inverse = np.unique(self.torque_nm, return_inverse=True)
+        hours = np.bincount(inverse.ravel(), weights=self.time_h, minlength=levels.size)
+        out = pd.DataFrame({"torque_nm": levels, "time_h": hours, "share": hours / hours.sum(),
+                            "flank": np.where(levels < 0, "coast", "drive")})
+        return out.iloc[::-1].reset_index(drop=True)
+
+    def plot(self, ax=None):
+        """The spectrum as a histogram: each torque class's share of the time (%), summed over the teeth, the
+        drive flank's classes (positive torque) and the coast flank's (negative: the torque reversed) in two
+        colours. Returns the Axes."""
+        from ..validate import require_axes
+
+        if ax is None:
+            import matplotlib.pyplot as plt
+
+            _, ax = plt.subplots(figsize=(8, 4.2), constrained_layout=True)
+        else:
+            require_axes("ax", ax)
+        h = self.histogram()
+        T = h["torque_nm"].to_numpy()
+        gaps = np.diff(np.unique(T))
+        width = 0.8 * (float(gaps.min()) if gaps.size else max(abs(float(T[0])), 1.0) * 0.05)
+        for flank, colour, label in (("drive", "tab:blue", "drive flank (T > 0)"),
+                                     ("coast", "tab:orange", "coast flank (T < 0: the torque reversed)")):
+            sel = (h["flank"] == flank).to_numpy()
+            if sel.any():
+                ax.bar(T[sel], 100.0 * h["share"].to_numpy()[sel], width=width, color=colour, label=label)
+        ax.axvline(0.0, color="grey", lw=0.6)
+        ax.set_xlabel(f"torque on gear {self.on_gear}, N·m (class value: its end farthest from zero)")
+        ax.set_ylabel("share of the time, %")
+        kind = "counted per tooth at the mesh instants" if self.per_tooth else "bins"
+        span = f"{self.duration_h:.4g} h" if self.duration_h >= 0.1 else f"{3600.0 * self.duration_h:.4g} s"
+        ax.set_title(f"load spectrum: {self.torque_nm.size} bins ({kind}), {span}", fontsize=10)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+        return ax
+
     def __repr__(self) -> str:
         t = np.abs(self.torque_nm)
         kind = ", per tooth" if self.per_tooth else ""

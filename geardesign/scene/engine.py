@@ -25,68 +25,23 @@ the key and what was expected (the scene schema's language, :mod:`geardesign.sce
 """
 from __future__ import annotations
 
-import tomllib
 from pathlib import Path
 
 from ..errors import GearDesignError
 from ..validate import _short
-from .schema import Where, _F, _I, _Key, type_name, validate_table
+from .schema import Where, engine_schema, type_name, validate_table
+from .toml_file import read_scene_toml
 
-__all__ = ["engine_schema", "load_engine", "EngineScene"]
-
-
-def engine_schema() -> dict:
-    """The keys of ``[engine]``, ``[engine.mechanism]`` and ``[engine.pressure]``, from the library's ranges."""
-    from ..mechanism.cylinders import CYLINDERS_MAX
-    from ..mechanism.engine import POINTS_RANGE, SPEED_RANGE_RPM
-    from ..mechanism.kinetostatics import GRAVITY_M_S2
-    from ..mechanism.pressure import ATMOSPHERE_MPA, PRESSURE_RANGE_MPA
-    from ..mechanism.slider_crank import INERTIA_MAX_KG_M2, MASS_MAX_KG
-
-    p_lo, p_hi = PRESSURE_RANGE_MPA
-    mass = dict(default=0.0, lo=0.0, hi=MASS_MAX_KG)
-    pos = dict(lo=0.0, lo_open=True)
-    return {
-        "n_rpm": _F(required=True, lo=SPEED_RANGE_RPM[0], hi=SPEED_RANGE_RPM[1], lo_open=True),
-        "cylinders": _I(default=1, lo=1, hi=CYLINDERS_MAX),
-        "strokes": _I(default=4, lo=2, hi=4),
-        "firing_order": _Key("ints", lo=1, hi=CYLINDERS_MAX), "throws_deg": _Key("floats", lo=-720.0, hi=720.0),
-        "phases_deg": _Key("floats", lo=0.0, hi=720.0), "axis_tilts_deg": _Key("floats", lo=-180.0, hi=180.0),
-        "mechanical_efficiency": _F(lo=0.0, hi=1.0, lo_open=True),
-        "flywheel_inertia_kg_m2": _F(lo=0.0, hi=INERTIA_MAX_KG_M2, lo_open=True),
-        "crankcase_pressure_mpa": _F(default=ATMOSPHERE_MPA, lo=p_lo, hi=p_hi),
-        "gravity_m_s2": _F(default=GRAVITY_M_S2, lo=0.0, hi=100.0),
-        "points": _I(default=720, lo=POINTS_RANGE[0], hi=POINTS_RANGE[1]),
-        "name": _Key("str"),
-        "mechanism": {
-            "crank_radius_mm": _F(required=True, **pos), "rod_length_mm": _F(required=True, **pos),
-            "rod_cg_mm": _F(default=0.0, lo=0.0), "offset_mm": _F(default=0.0),
-            "piston_mass_kg": _F(**mass), "rod_mass_kg": _F(**mass),
-            "rod_inertia_kg_m2": _F(default=0.0, lo=0.0, hi=INERTIA_MAX_KG_M2),
-            "crank_mass_kg": _F(**mass), "crank_cg_mm": _F(default=0.0),
-            "cylinder_bore_mm": _F(required=True, **pos)},
-        "pressure": {
-            "kind": _Key("choice", required=True, choices=("otto", "table", "csv")),
-            # kind = "otto": the parametric cycle (mechanism.pressure.otto_pressure)
-            "compression_ratio": _F(lo=1.0, hi=40.0, lo_open=True),
-            "intake_pressure_mpa": _F(default=0.09, lo=p_lo, hi=p_hi, lo_open=True),
-            "exhaust_pressure_mpa": _F(default=0.11, lo=p_lo, hi=p_hi, lo_open=True),
-            "peak_pressure_mpa": _F(lo=p_lo, hi=p_hi, lo_open=True),
-            "polytropic_compression": _F(default=1.37, lo=1.0, hi=1.7),
-            "polytropic_expansion": _F(default=1.25, lo=1.0, hi=1.7),
-            "table_points": _I(default=1440, lo=POINTS_RANGE[0], hi=POINTS_RANGE[1]),
-            # kind = "table": absolute pressures at cycle angles
-            "crank_angle_deg": _Key("floats", lo=0.0, hi=720.0), "pressure_mpa": _Key("floats", lo=p_lo, hi=p_hi),
-            # kind = "csv": a file with the columns crank_angle_deg, pressure_mpa (relative to the scene)
-            "csv": _Key("str")}}
+__all__ = ["engine_schema", "load_engine", "engine_section", "EngineScene"]
 
 
 class EngineScene:
     """A loaded ``[engine]`` table: the :class:`~geardesign.mechanism.engine.Engine`, the points to sample and the
     scene's title."""
 
-    def __init__(self, path: str, title: str, engine, points: int):
+    def __init__(self, path: str, title: str, engine, points: int, has_gear: bool = False):
         self.path, self.title, self.engine, self.points = path, title, engine, points
+        self.has_gear = has_gear      # the file has a [gear] section too: the engine's gear (engine_gear)
 
     def __repr__(self) -> str:
         return f"EngineScene({self.path!r}, {self.title!r}, {self.engine.cylinders} cylinders, {self.points} points)"
@@ -123,20 +78,9 @@ def _diagram(where: Where, path: Path, p: dict, mech: dict, strokes: int):
 def load_engine(path) -> EngineScene:
     """Read a scene file's ``[engine]`` table (and its ``title``) and build the engine; one GearDesignError naming
     the file and the key on the first problem."""
-    from ..mechanism.engine import Engine
-    from ..mechanism.slider_crank import SliderCrank
-    from .load import _check_values, _read_bounded
-
     path = Path(path)
     where = Where(path)
-    text = _read_bounded(path)
-    try:
-        raw = tomllib.loads(text.decode("utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise GearDesignError(f"{path}: not a valid TOML file: {' '.join(str(exc).split())}") from None
-    except RecursionError:
-        raise GearDesignError(f"{path}: nested too deep for a scene file") from None
-    _check_values(path, raw)
+    raw = read_scene_toml(path)
     if "engine" not in raw:
         where.fail("", None, "expected an [engine] section (the engine whose torque the command computes)")
     if not isinstance(raw["engine"], dict):
@@ -145,7 +89,19 @@ def load_engine(path) -> EngineScene:
     title = raw.get("title", path.stem)
     if not isinstance(title, str):
         where.fail("", "title", f"expected a string, got {_short(title)} ({type_name(title)})")
-    e = validate_table(where, "engine", raw["engine"], engine_schema())
+    out = engine_section(where, path, raw["engine"], title)
+    out.has_gear = "gear" in raw
+    return out
+
+
+def engine_section(where: Where, path: Path, table: dict, title: str) -> EngineScene:
+    """The scene's ``[engine]`` table (``table``, as read from the file at ``path``) validated and built; the
+    engine's name defaults to the scene's ``title``. Shared by ``geardesign engine`` and ``geardesign run``."""
+    from ..mechanism.engine import Engine
+    from ..mechanism.slider_crank import SliderCrank
+
+    path = Path(path)
+    e = validate_table(where, "engine", table, engine_schema())
     for sub in ("mechanism", "pressure"):
         if sub not in e:
             where.fail("engine", sub, f"missing; expected a table [engine.{sub}]")
@@ -172,3 +128,4 @@ def load_engine(path) -> EngineScene:
     except GearDesignError as exc:
         where.fail("engine", None, str(exc))
     return EngineScene(str(path), title, engine, e["points"])
+

@@ -26,13 +26,13 @@ directory moved into place, so a failed run leaves nothing behind.
 """
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import GearDesignError
 from ..validate import _short
 from .schema import SECTIONS, Where, section_schema, type_name, validate_table
+from .toml_file import SCENE_BYTES_MAX, SCENE_DEPTH_MAX, SCENE_INT_MAX, read_scene_toml
 
 __all__ = ["Scene", "load_scene", "SCENE_BYTES_MAX", "SCENE_DEPTH_MAX", "SCENE_INT_MAX"]
 
@@ -167,11 +167,18 @@ _CROSS_CHECKS = {"gear": _cross_gear, "teeth": _cross_teeth, "planetary": _cross
                  "key": _cross_keys, "study": _cross_study}
 
 
-def _spectrum(where, path: Path, spec: dict) -> None:
-    """[gear.spectrum]'s file (relative to the scene) read into ``spec["_spectrum"]``; a bad file fails naming the
-    key."""
+def _spectrum(where, path: Path, gear: dict, engine) -> None:
+    """[gear.spectrum]'s load read into ``spec["_spectrum"]``: its ``file`` (relative to the scene), or without one
+    the scene's [engine] torque curve counted per tooth and flank for the section's pair; a bad file fails naming
+    the key."""
     from ..gears.spectrum import LoadSpectrum
 
+    spec = gear["spectrum"]
+    if "file" not in spec:
+        _engine_spectrum(where, gear, engine)
+        return
+    if "levels" in spec:
+        where.fail("gear.spectrum", "levels", "not used with file (it counts the [engine]'s torque curve)")
     name = spec["file"]
     csv = (path.parent / name) if not Path(name).is_absolute() else Path(name)
     try:
@@ -179,6 +186,36 @@ def _spectrum(where, path: Path, spec: dict) -> None:
                                                   spec.get("life_h")), on_gear=spec["on_gear"])
     except GearDesignError as exc:
         where.fail("gear.spectrum", "file", str(exc))
+
+
+SPECTRUM_LEVELS = 48      # classes per sign of the engine's torque counted per tooth (as LoadSpectrum.from_curve)
+
+
+def _engine_spectrum(where, gear: dict, engine) -> None:
+    """[gear.spectrum] without a file: the [engine]'s torque curve (the crankshaft carries gear ``on_gear``)
+    counted at the mesh instants of the section's pair, per tooth and flank, over one period of the cycle."""
+    from ..gears.spectrum import LoadSpectrum
+
+    spec = gear["spectrum"]
+    if engine is None:
+        where.fail("gear.spectrum", "file", "missing; give a spectrum file, or an [engine] section whose torque "
+                                            "curve the gear carries")
+    for key in ("n_rpm", "duration_h"):
+        if key in spec:
+            where.fail("gear.spectrum", key, "not used with the [engine]'s torque curve (its speed and cycle give "
+                                             "them); give life_h, the required life")
+    if "life_h" not in spec:
+        where.fail("gear.spectrum", "life_h", "missing; the [engine]'s spectrum is one run of its cycle, so the "
+                                             "required life (hours) is needed")
+    angle, torque, n_rpm = engine.engine.analyse(engine.points).curve()
+    try:
+        spec["_spectrum"] = LoadSpectrum.from_curve(torque, angle_deg=angle, n_rpm=n_rpm,
+                                                    teeth=(gear["z1"], gear["z2"]), on_gear=spec["on_gear"],
+                                                    levels=spec.get("levels", SPECTRUM_LEVELS),
+                                                    period_deg=engine.engine.cycle_deg)
+    except GearDesignError as exc:
+        where.fail("gear.spectrum", None, f"the [engine]'s torque curve cannot be counted on this pair: {exc}")
+    spec["_engine"] = True
 
 
 def _chain_catalog(where, path: Path, name: str) -> str:
@@ -195,57 +232,11 @@ def _chain_catalog(where, path: Path, name: str) -> str:
     where.fail("chain", "catalog", f"expected one of {', '.join(CHAIN_CATALOGS)} or a .csv file of chains "
                                    f"(relative to the scene file), got {_short(name)}")
 
-SCENE_BYTES_MAX = 1 << 20    # 1 MiB: a scene is a page of settings, not data
-
-SCENE_DEPTH_MAX = 8          # sections, tables of tables, lists: a few levels at most
-
-SCENE_INT_MAX = 10**15       # integers beyond this are typing slips (and overflow floats)
-
-
-def _read_bounded(path: Path) -> bytes:
-    """The scene file's bytes: a regular file of at most SCENE_BYTES_MAX (a device such as
-    /dev/zero, a folder or a huge file is refused before it is read)."""
-    try:
-        if not path.exists():
-            raise GearDesignError(f"{path}: cannot read the scene file (no such file)")
-        if not path.is_file():
-            raise GearDesignError(f"{path}: not a regular file (a scene is a .toml text file)")
-        with open(path, "rb") as fh:
-            text = fh.read(SCENE_BYTES_MAX + 1)
-    except OSError as exc:
-        raise GearDesignError(f"{path}: cannot read the scene file ({exc.strerror or exc})") from None
-    if len(text) > SCENE_BYTES_MAX:
-        raise GearDesignError(f"{path}: larger than {SCENE_BYTES_MAX // 1024} KiB; a scene file is a page of settings")
-    return text
-
-
-def _check_values(path: Path, value, key: str = "", depth: int = 0) -> None:
-    """Refuse nesting deeper than SCENE_DEPTH_MAX and integers beyond SCENE_INT_MAX, by key."""
-    if depth > SCENE_DEPTH_MAX:
-        raise GearDesignError(f"{path}: {key or 'the file'} is nested deeper than {SCENE_DEPTH_MAX} levels")
-    if isinstance(value, dict):
-        for k, v in value.items():
-            _check_values(path, v, f"{key}.{k}" if key else str(k), depth + 1)
-    elif isinstance(value, list):
-        for v in value:
-            _check_values(path, v, key, depth + 1)
-    elif isinstance(value, int) and not isinstance(value, bool) and abs(value) > SCENE_INT_MAX:
-        raise GearDesignError(f"{path}: {key} = an integer of {len(str(abs(value)))} digits; "
-                              f"whole numbers must be within ±{SCENE_INT_MAX:.0e}")
-
-
 def load_scene(path) -> Scene:
     """Read and validate a scene file; raise one :class:`GearDesignError` on the first problem."""
     path = Path(path)
     where = Where(path)
-    text = _read_bounded(path)
-    try:
-        raw = tomllib.loads(text.decode("utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise GearDesignError(f"{path}: not a valid TOML file: {' '.join(str(exc).split())}") from None
-    except RecursionError:
-        raise GearDesignError(f"{path}: nested deeper than a scene can be (at most {SCENE_DEPTH_MAX} levels)") from None
-    _check_values(path, raw)
+    raw = read_scene_toml(path)
     top = {k: v for k, v in raw.items() if not isinstance(v, (dict, list)) or k not in SECTIONS}
     for k in top:
         if k not in section_schema(""):
@@ -257,6 +248,12 @@ def load_scene(path) -> Scene:
         if name not in raw:
             continue
         v = raw[name]
+        if name == "engine":
+            from .engine import engine_section
+            if not isinstance(v, dict):
+                where.fail(name, None, f"expected a table [{name}], got {_short(v)} ({type_name(v)})")
+            sections["engine"] = engine_section(where, path, v, head.get("title", path.stem))
+            continue
         if name == "drive":
             from .drive import load_drive
             sections["drive"] = load_drive(where, path, v)
@@ -277,5 +274,5 @@ def load_scene(path) -> Scene:
     if "chain" in sections:
         sections["chain"]["catalog"] = _chain_catalog(where, path, sections["chain"]["catalog"])
     if "spectrum" in sections.get("gear", {}):
-        _spectrum(where, path, sections["gear"]["spectrum"])
+        _spectrum(where, path, sections["gear"], sections.get("engine"))
     return Scene(str(path), head.get("title", path.stem), head.get("description", ""), sections)

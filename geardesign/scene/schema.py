@@ -12,9 +12,9 @@ from dataclasses import dataclass
 from ..errors import GearDesignError
 from ..validate import _short
 
-__all__ = ["SECTIONS", "section_schema", "validate_table", "Where", "type_name"]
+__all__ = ["SECTIONS", "section_schema", "validate_table", "Where", "type_name", "engine_schema"]
 
-SECTIONS = ("gear", "teeth", "planetary", "chain", "key", "study", "drive")
+SECTIONS = ("engine", "gear", "teeth", "planetary", "chain", "key", "study", "drive")
 
 
 @dataclass(frozen=True)
@@ -132,12 +132,15 @@ def _gear_schema() -> dict:
 
 def _spectrum_schema() -> dict:
     """[gear.spectrum]: a load spectrum (ISO 6336-6) from a CSV file (relative to the scene; its columns:
-    :meth:`geardesign.LoadSpectrum.from_csv`), the required life, the S-N curve beyond the knee, Y_M, the materials;
-    the damage checks join the section's checks and the life is reported at the optimum (docs/life.md)."""
+    :meth:`geardesign.LoadSpectrum.from_csv`) or, without ``file`` in a scene with an ``[engine]``, the engine's
+    torque curve counted per tooth and flank in ``levels`` classes (:meth:`geardesign.LoadSpectrum.from_curve`);
+    the required life, the S-N curve beyond the knee, Y_M, the materials; the damage checks join the section's
+    checks and the life is reported at the optimum (docs/life.md, docs/engine.md)."""
     from ..gears.spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES, SPEED_RANGE_RPM, TIME_RANGE_H
     from ..gears.strength.load import LIFE_RANGE_H
 
-    return {"file": _Key("str", required=True),
+    return {"file": _Key("str"),
+            "levels": _I(lo=1, hi=10_000),
             "n_rpm": _F(lo=SPEED_RANGE_RPM[0], hi=SPEED_RANGE_RPM[1], lo_open=True),
             "duration_h": _F(lo=TIME_RANGE_H[0], hi=TIME_RANGE_H[1], lo_open=True),
             "on_gear": _I(default=1, lo=1, hi=2),
@@ -303,9 +306,59 @@ def _drive_schema() -> dict:
     return drive_schema("")
 
 
+def engine_schema() -> dict:
+    """The keys of ``[engine]``, ``[engine.mechanism]`` and ``[engine.pressure]``, from the library's ranges."""
+    from ..mechanism.cylinders import CYLINDERS_MAX
+    from ..mechanism.engine import POINTS_RANGE, SPEED_RANGE_RPM
+    from ..mechanism.kinetostatics import GRAVITY_M_S2
+    from ..mechanism.pressure import ATMOSPHERE_MPA, PRESSURE_RANGE_MPA
+    from ..mechanism.slider_crank import INERTIA_MAX_KG_M2, MASS_MAX_KG
+
+    p_lo, p_hi = PRESSURE_RANGE_MPA
+    mass = dict(default=0.0, lo=0.0, hi=MASS_MAX_KG)
+    pos = dict(lo=0.0, lo_open=True)
+    return {
+        "n_rpm": _F(required=True, lo=SPEED_RANGE_RPM[0], hi=SPEED_RANGE_RPM[1], lo_open=True),
+        "cylinders": _I(default=1, lo=1, hi=CYLINDERS_MAX),
+        "strokes": _I(default=4, lo=2, hi=4),
+        "firing_order": _Key("ints", lo=1, hi=CYLINDERS_MAX), "throws_deg": _Key("floats", lo=-720.0, hi=720.0),
+        "phases_deg": _Key("floats", lo=0.0, hi=720.0), "axis_tilts_deg": _Key("floats", lo=-180.0, hi=180.0),
+        "mechanical_efficiency": _F(lo=0.0, hi=1.0, lo_open=True),
+        "flywheel_inertia_kg_m2": _F(lo=0.0, hi=INERTIA_MAX_KG_M2, lo_open=True),
+        "crankcase_pressure_mpa": _F(default=ATMOSPHERE_MPA, lo=p_lo, hi=p_hi),
+        "gravity_m_s2": _F(default=GRAVITY_M_S2, lo=0.0, hi=100.0),
+        "points": _I(default=720, lo=POINTS_RANGE[0], hi=POINTS_RANGE[1]),
+        "name": _Key("str"),
+        "mechanism": {
+            "crank_radius_mm": _F(required=True, **pos), "rod_length_mm": _F(required=True, **pos),
+            "rod_cg_mm": _F(default=0.0, lo=0.0), "offset_mm": _F(default=0.0),
+            "piston_mass_kg": _F(**mass), "rod_mass_kg": _F(**mass),
+            "rod_inertia_kg_m2": _F(default=0.0, lo=0.0, hi=INERTIA_MAX_KG_M2),
+            "crank_mass_kg": _F(**mass), "crank_cg_mm": _F(default=0.0),
+            "cylinder_bore_mm": _F(required=True, **pos)},
+        "pressure": {
+            "kind": _Key("choice", required=True, choices=("otto", "table", "csv")),
+            # kind = "otto": the parametric cycle (mechanism.pressure.otto_pressure)
+            "compression_ratio": _F(lo=1.0, hi=40.0, lo_open=True),
+            "intake_pressure_mpa": _F(default=0.09, lo=p_lo, hi=p_hi, lo_open=True),
+            "exhaust_pressure_mpa": _F(default=0.11, lo=p_lo, hi=p_hi, lo_open=True),
+            "peak_pressure_mpa": _F(lo=p_lo, hi=p_hi, lo_open=True),
+            "polytropic_compression": _F(default=1.37, lo=1.0, hi=1.7),
+            "polytropic_expansion": _F(default=1.25, lo=1.0, hi=1.7),
+            "table_points": _I(default=1440, lo=POINTS_RANGE[0], hi=POINTS_RANGE[1]),
+            # kind = "table": absolute pressures at cycle angles
+            "crank_angle_deg": _Key("floats", lo=0.0, hi=720.0), "pressure_mpa": _Key("floats", lo=p_lo, hi=p_hi),
+            # kind = "csv": a file with the columns crank_angle_deg, pressure_mpa (relative to the scene)
+            "csv": _Key("str")}}
+
+
+def _engine_schema() -> dict:
+    return engine_schema()
+
+
 _BUILDERS = {"": lambda: {"title": _Key("str"), "description": _Key("str")}, "gear": _gear_schema,
              "teeth": _teeth_schema, "planetary": _planetary_schema, "chain": _chain_schema, "key": _key_schema,
-             "study": _study_schema, "drive": _drive_schema}
+             "study": _study_schema, "drive": _drive_schema, "engine": _engine_schema}
 
 
 def section_schema(name: str) -> dict:

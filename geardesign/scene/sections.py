@@ -31,6 +31,9 @@ class SceneReport(Result):
         shift region, a given pair or planetary set failing a check, no tooth counts, no chain, a key
         that does not fit, a failing drive. The ``run`` command exits 1 when there is one."""
         out = []
+        engine = self.results.get("engine")
+        if engine is not None and not engine.success:
+            out.append("engine: no work over the cycle")
         gear = self.results.get("gear")
         if gear is not None and not gear["optimum"].success:
             out.append("gear: no feasible shifts")
@@ -133,7 +136,8 @@ def _gear_heading(rep: SceneReport, g: dict, checks, kind: dict, reg) -> None:
 
     md = rep.markdown
     md += [f"## Gear pair z1/z2 = {g['z1']}/{g['z2']}{kind_text(kind['beta_deg'], kind['internal'])}, m = {g['module']:g} mm", ""]
-    limits = {k: v for k, v in (checks or {}).items()}
+    # the limits and the load's names (a spectrum or a Load object shows in its own section)
+    limits = {k: v for k, v in (checks or {}).items() if isinstance(v, (bool, int, float, str))}
     md += [f"Checks: {', '.join(reg.checks)}" + (f" (limits: {', '.join(f'{k} = {v}' for k, v in limits.items())})"
                                                   if limits else " (default limits: ε_α >= 1.2, s_a >= 0.25 m)"), ""]
     if reg.feasible:
@@ -225,15 +229,30 @@ def _add_life(rep: SceneReport, g: dict, checks: dict, res, given, pair_kw: dict
     from ..gears.pair import GearPair
 
     sp = g["spectrum"]
+    spectrum = checks["spectrum"]
+    rep.tables["gear_spectrum"] = spectrum.histogram()
+    fig = spectrum.plot().figure
+    rep.figures["gear_spectrum"] = fig
+    source = ("the [engine]'s torque curve counted at the mesh instants, per tooth and flank"
+              if sp.get("_engine") else f"`{sp['file']}`")
+    rep.markdown += ["### Load spectrum (ISO 6336-6)", "",
+                     f"From {source}: {spectrum!r}; required life {sp.get('life_h', spectrum.duration_h):.6g} h, "
+                     f"S-N curve {sp['sn_curve']!r}"
+                     + (f", mean stress factor Y_M = {sp['mean_stress_factor']:g} on the teeth loaded on both flanks"
+                        if "mean_stress_factor" in sp else "") + ".", "",
+                     "![load spectrum: time share of each torque class](gear_spectrum.png)", ""]
     pairs = ([("optimum", res.x1, res.x2)] if res.success else []) + ([("given", *given)] if given else [])
     for tag, x1, x2 in pairs:
         r = GearPair(g["module"], g["z1"], g["z2"], x1, x2, **pair_kw).life(
             checks["spectrum"], sp["material"], material2=sp.get("material2"), face_width_mm=checks["face_width_mm"],
             life_h=sp.get("life_h"), sn_curve=sp["sn_curve"], mean_stress_factor=sp.get("mean_stress_factor"),
             **checks.get("strength", {}))
+        rep.results.setdefault("life", {})[tag] = r
         rep.tables[f"gear_life_{tag}"] = r.bins
+        rep.tables[f"gear_damage_{tag}"] = r.damage_table()
         rep.figures[f"gear_life_{tag}"] = r.plot()
-        rep.markdown += [f"### Service life (ISO 6336-6) of the {tag} pair", "", "```", repr(r), "```", "",
+        rep.markdown += [f"### Service life (ISO 6336-6) of the {tag} pair (x1/x2 = {x1:.4f}/{x2:.4f})", "",
+                         "```", repr(r), "```", "", md_table(r.damage_table()), "",
                          f"![S-N diagrams with the spectrum]({f'gear_life_{tag}'}.png)", ""]
         rep.summary.append(f"{tag} pair: damage D_H = {r.D_H1:.3g} / {r.D_H2:.3g}, D_F = {r.D_F1:.3g} / {r.D_F2:.3g} "
                            f"over {r.required_life_h:.6g} h ({'holds' if r.ok else 'FAILS'})")
@@ -259,6 +278,22 @@ def _add_mesh_drawing(rep: SceneReport, pair, tag: str):
     rep.markdown += [f"### The {tag} pair in mesh (x1/x2 = {pair.x1:.4f}/{pair.x2:.4f})", "",
                      f"![{tag} pair in mesh](gear_mesh_{tag}.png)", "",
                      f"![specific sliding and pressure along the line of action](gear_diagrams_{tag}.png)", ""]
+
+
+def _run_engine(rep: SceneReport, e):
+    """The [engine] section: the crankshaft's torque over the cycle (summary, table, plot)."""
+    res = e.engine.analyse(e.points)
+    rep.results["engine"] = res
+    rep.tables["engine_torque"] = res.table()
+    pyplot()
+    rep.figures["engine_torque"] = res.plot().figure
+    rep.markdown += [f"## Engine: {e.engine.cylinders} cylinder(s), {e.engine.n_rpm:g} rpm", "",
+                     *[f"- {line}" for line in res.summary()], "",
+                     "![the crankshaft's torque over the cycle](engine_torque.png)", ""]
+    rep.summary.append(f"engine: mean torque M_i = {res.mean_torque_nm:.6g} N·m, "
+                       f"{float(res.torque_nm.min()):.6g} … {float(res.torque_nm.max()):.6g} N·m, "
+                       f"{len(res.reversal_angles_deg)} reversals per cycle"
+                       + ("" if res.success else " (the engine does no work over the cycle)"))
 
 
 def _run_teeth(rep: SceneReport, t: dict):
@@ -458,5 +493,5 @@ def _run_drive(rep: SceneReport, d: dict):
 
 
 # the sections in the order they run; [study] runs last, over the others
-RUNNERS = (("gear", _run_gear), ("teeth", _run_teeth), ("planetary", _run_planetary), ("chain", _run_chain),
+RUNNERS = (("engine", _run_engine), ("gear", _run_gear), ("teeth", _run_teeth), ("planetary", _run_planetary), ("chain", _run_chain),
            ("key", _run_keys), ("drive", _run_drive))

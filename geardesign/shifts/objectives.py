@@ -6,7 +6,7 @@ piece for a smooth objective and two for balanced sliding (max |ϑ| is the large
 problem builds itself (``kind = "margin"``).
 
 >>> sorted(OBJECTIVES)[:5]
-['balanced_root_strength', 'balanced_sliding', 'max_eps_alpha', 'max_margin', 'max_min_safety']
+['balanced_root_strength', 'balanced_sliding', 'max_eps_alpha', 'max_life', 'max_margin']
 >>> OBJECTIVES["max_x_sum"].pieces({"_x1": 0.5, "_x2": 0.25})
 (0.75,)
 """
@@ -18,9 +18,10 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..gears.checks import ContactRatio, sliding_root_gradient
+from ..gears.checks.damage import PittingDamage, RootDamage
 from ..validate import _short
 
-__all__ = ["Objective", "CustomObjective", "OBJECTIVES", "register_objective", "unregister_objective",
+__all__ = ["Objective", "CustomObjective", "MaxLife", "DAMAGE_FLOOR", "OBJECTIVES", "register_objective", "unregister_objective",
            "resolve_objective", "default_objective"]
 
 
@@ -153,6 +154,47 @@ class MaxMinSafety(_StrengthObjective):
     _names = ("contact_strength", "root_strength1", "root_strength2")
 
 
+# D below this counts as no damage: ln D stays finite (a piece of ~690, never the smallest where some gear is
+# damaged) and its gradient is taken as 0 (the S-N curve's horizontal end, where the life is unbounded)
+DAMAGE_FLOOR = 1e-300
+
+
+class MaxLife(Objective):
+    """The longest service life under the load spectrum (ISO 6336-6): the largest smallest
+    ln(L_k/L_req) = −ln D_k over the damage checks (pitting and root of both gears, every load case; D_k
+    Miner's sum over the required life L_req), so fun = ln(L/L_req) of the governing gear and mode and the life
+    is L = L_req·e^fun; a problem has it only with a spectrum (the damage checks,
+    :mod:`geardesign.gears.checks.damage`, whose D <= D_max still hold)."""
+
+    name, sense, kind, needs_load = "max_life", +1, "minimax", True
+    description = ("longest service life under the spectrum: largest min ln(L/L_req) = −ln D over the "
+                   "damage checks (ISO 6336-6)")
+    checks: tuple = ()
+
+    def bound(self, checks):
+        found = tuple(c for c in checks if isinstance(c, (PittingDamage, RootDamage)))
+        if not found:
+            raise GearDesignError(f"objective {self.name!r} needs a load spectrum: give the checks spectrum=, "
+                                  f"material= and face_width_mm= (e.g. checks={{'spectrum': gd.LoadSpectrum(...), "
+                                  f"'material': '42CrMo4', 'face_width_mm': 40}})")
+        out = type(self)()
+        out.checks = found
+        return out
+
+    def pieces(self, geo):
+        return tuple(-np.log(np.maximum(np.asarray(c.value(geo), dtype=float)[()], DAMAGE_FLOOR))
+                     for c in self.checks)
+
+    def piece_gradients(self, geo):
+        out = []
+        for c in self.checks:      # ∂(−ln D)/∂x = −(∂D/∂x)/D; 0 where there is no damage
+            D = np.asarray(c.value(geo), dtype=float)[()]
+            g1, g2 = c.spec.damage(geo, gradients=True)[f"dD_{c.mode}{c.gear}"]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                out.append(tuple(np.where(D > DAMAGE_FLOOR, -np.asarray(g) / D, 0.0)[()] for g in (g1, g2)))
+        return [tuple(float(v) if np.ndim(v) == 0 else v for v in g) for g in out]
+
+
 class CustomObjective(Objective):
     """A user's own goal: ``func(geo) -> value`` (geo holds the
     :data:`~geardesign.gears.geometry.GEOMETRY_FIELDS` names, floats or arrays), maximised with
@@ -181,7 +223,7 @@ class CustomObjective(Objective):
 
 OBJECTIVES: dict[str, Objective] = {o.name: o for o in (MaxXSum(), MaxEpsAlpha(), BalancedSliding(),
                                                           MinSpecificPressure(), MaxMargin(), BalancedRootStrength(),
-                                                          MaxMinSafety())}
+                                                          MaxMinSafety(), MaxLife())}
 
 
 def register_objective(objective: Objective) -> Objective:

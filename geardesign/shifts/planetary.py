@@ -142,7 +142,9 @@ class PlanetaryProblem(Problem):
             return geo, self.evaluate_geo(geo, parts, grads)
 
     def subproblem(self, indices) -> "PlanetaryProblem":
-        return PlanetaryProblem(self.meshes, self.m, objective=self.objective, x_sum=self.x_sum,
+        # the conflict search maximises the subset's margins: its objective is immaterial, and one that reads a
+        # load (the strength or damage checks) may find none of its checks in the subset (as Problem.subproblem)
+        return PlanetaryProblem(self.meshes, self.m, objective="max_x_sum", x_sum=self.x_sum,
                                 check_list=[self.checks[j] for j in indices])
 
 

@@ -186,7 +186,7 @@ class Problem:
         G = _stack_pairs(self._margin_gradient_values(geo, parts=True), geo["_x1"])
         with np.errstate(invalid="ignore", divide="ignore"):
             P = M / np.sqrt(G[:, 0] ** 2 + G[:, 1] ** 2)
-        return np.where(np.isfinite(P), P, -np.inf)
+        return _defined(P, M)
 
     def _normalised(self, geo) -> np.ndarray:
         """(K, ...) each check's first-order distance in x to its boundary: the smallest over its
@@ -472,7 +472,18 @@ def _normalise(M, G) -> np.ndarray:
     """margin/‖∇margin‖ for (K,) margins and (K, 2) gradients of one design; −inf where undefined."""
     with np.errstate(invalid="ignore", divide="ignore"):
         P = M / np.hypot(G[:, 0], G[:, 1])
-    return np.where(np.isfinite(P), P, -np.inf)
+    return _defined(P, M)
+
+
+# the distance of a check that holds and does not move at all (a flat margin: a damage sum that is 0 wherever the
+# stresses stay below the S-N curve's end): no boundary near, as far as any window reaches
+FLAT_DISTANCE = 1e3
+
+
+def _defined(P, M) -> np.ndarray:
+    """The distances P = M/‖∇M‖ where finite; FLAT_DISTANCE where a holding margin has no gradient (M > 0 over 0);
+    −inf where undefined (a failing or undefined margin)."""
+    return np.where(np.isfinite(P), P, np.where(np.isinf(P) & (M > 0), FLAT_DISTANCE, -np.inf))
 
 
 # The x window searched: [−1.5, 3] covers every shift used in practice (handbook blocking

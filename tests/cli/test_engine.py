@@ -74,3 +74,104 @@ def test_a_missing_scene_is_one_line_in_a_subprocess(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "geardesign", "engine", str(tmp_path / "none.toml")],
                           capture_output=True, text=True)
     assert proc.returncode == 2 and proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
+
+
+# ---- the engine's gear end to end (issue 38 §5) ----------------------------------------------------------------
+GEAR_EXAMPLE = EXAMPLE.parent / "seed000_engine_gear.toml"
+
+
+def _variant(tmp_path, *changes):
+    text = GEAR_EXAMPLE.read_text(encoding="utf-8")
+    for old, new in changes:
+        assert old in text
+        text = text.replace(old, new)
+    path = tmp_path / "g.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_the_seed_gear_prints_spectrum_life_and_shifts_and_fails(capsys):
+    """Exit 1: the seed's shifts fail eps_alpha >= 1.2 and no shifts give 40Cr's pinion 5000 h."""
+    from geardesign.scene.engine_gear import engine_gear
+    from geardesign.scene.load import load_scene
+
+    assert main(["engine", str(GEAR_EXAMPLE)]) == 1
+    out = capsys.readouterr().out
+    g = engine_gear(load_scene(GEAR_EXAMPLE))
+    best, given = g.life["optimum"], g.life["given"]
+    first = out.replace("\n  ", " ").splitlines()[0]
+    assert first.startswith("FAILS: seed 000 engine and its gear pair") and "the given shifts fail contact_ratio" in first
+    assert f"at the best shifts the gear's life is {best.life_h:.4g} h < 5000 h (pitting, gear 1)" in first
+    flat = out.replace("\n  ", " ")
+    assert "the torque reverses at" in flat and "LoadSpectrum(442 bins, per tooth" in flat and "coast flank" in out
+    assert f"life at the given shifts x1 = 0.8980, x2 = 0.5170 (they fail contact_ratio): {given.life_h:.4g} h" in flat
+    assert f"optimal shifts: x1 = {g.optimum.x1:.6f}, x2 = {g.optimum.x2:.6f} (max_life" in flat
+    assert out.count("pitting  gear 1  D = ") == 2
+
+
+def test_a_gear_that_reaches_its_life_passes(tmp_path, capsys):
+    path = _variant(tmp_path, ("x1 = 0.898 ", "#"), ("x2 = 0.517", "#"), ("life_h = 5000", "life_h = 3000"))
+    assert main(["engine", str(path), "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["ok"] is True and d["failures"] == [] and list(d["life"]) == ["optimum"]
+    life = d["life"]["optimum"]
+    assert life["ok"] and life["life_h"] >= 3000 and life["required_life_h"] == 3000
+    assert [r["mode"] for r in life["damage"]] == ["pitting", "pitting", "root", "root"]
+    assert d["optimum"]["objective"] == "max_life" and d["spectrum"]["reverses"] is True
+
+
+@pytest.mark.parametrize("changes, text", [
+    ((("[gear.spectrum]", "[gear.notspectrum]"),), "notspectrum: unknown key"),
+    ((("life_h = 5000 ", ""),), "[gear.spectrum] life_h: missing"),
+    ((("material = \"40Cr\"", "material = \"40Cr\"\nfile = \"s.csv\""),), "[gear.spectrum] file"),
+])
+def test_a_bad_gear_table_is_one_line_naming_the_key(tmp_path, capsys, changes, text):
+    if changes[0][1] == "material = \"40Cr\"\nfile = \"s.csv\"":
+        (tmp_path / "s.csv").write_text("torque_nm,n_rpm,time_h\n100,1700,10\n", encoding="utf-8")
+    path = _variant(tmp_path, *changes)
+    assert main(["engine", str(path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and text in err[0] and str(path) in err[0], err
+
+
+def test_without_a_spectrum_table_the_key_is_named(tmp_path, capsys):
+    path = _variant(tmp_path, ("[gear.spectrum] ", "[gear.load]"), ("material = \"40Cr\" ", "material = \"40Cr\"\n"
+                                                                                          "n_rpm = 1700\ntorque_nm = 90 "),
+                    ("life_h = 5000 ", ""), ("mean_stress_factor = 0.7 ", ""), ("objective = \"max_life\"", ""))
+    assert main(["engine", str(path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "[gear] spectrum: missing; the engine's gear needs [gear.spectrum]" in err[0], err
+
+
+def test_html_report_of_the_engines_gear(tmp_path, capsys):
+    page = tmp_path / "r.html"
+    assert main(["engine", str(GEAR_EXAMPLE), "--html", str(page)]) == 1
+    assert f"wrote {page} (the engine's gear report)" in capsys.readouterr().out
+    text = page.read_text(encoding="utf-8")
+    for part in ("The engine's torque over the cycle", "Load spectrum on the gear (ISO 6336-6)",
+                 "Service life at the scene's shifts", "Service life at the optimal shifts (max_life)",
+                 "<th>mode</th><th>gear</th><th>D</th><th>life_h</th><th>S</th><th>ok</th>", "Optimal shifts of 17/26"):
+        assert part in text, part
+    # torque, histogram, two S-N diagrams, each inline: the page fetches nothing
+    assert text.count('src="data:image/png;base64,') == 4 and 'src="http' not in text
+    before = page.read_bytes()
+    assert main(["engine", str(GEAR_EXAMPLE), "--html", str(page)]) == 2      # never over a file unasked
+    assert "--html" in capsys.readouterr().err and page.read_bytes() == before
+    assert main(["engine", str(EXAMPLE), "--html", str(tmp_path / "e.html")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--html is the report of the engine's gear: the scene has no [gear]" in err[0]
+    assert not (tmp_path / "e.html").exists()
+
+
+def test_points_count_the_gears_spectrum_too(capsys):
+    """--points samples the curve the spectrum is counted from as well (360 points: every 2°)."""
+    import geardesign as gd
+    from geardesign.scene.engine import load_engine
+
+    assert main(["engine", str(GEAR_EXAMPLE), "--points", "360", "--json"]) == 1
+    d = json.loads(capsys.readouterr().out)
+    angle, torque, n = gd.engine_torque(load_engine(GEAR_EXAMPLE).engine, 360)
+    spec = gd.LoadSpectrum.from_curve(torque, angle_deg=angle, n_rpm=n, teeth=(17, 26), period_deg=720)
+    assert d["engine"]["points"] == 360
+    assert d["spectrum"]["max_torque_nm"] == pytest.approx(float(spec.torque_nm.max()), rel=1e-12)
+    assert d["spectrum"]["min_torque_nm"] == pytest.approx(float(spec.torque_nm.min()), rel=1e-12)

@@ -190,3 +190,47 @@ def test_out_as_a_link_to_a_folder_keeps_the_link(tmp_path, capsys):
     assert rc == 0, capsys.readouterr().err
     assert link.is_symlink() and (real / "report.md").is_file() and not (real / "stale.txt").exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["link", "real"]
+
+
+ENGINE_EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+
+def test_run_models_an_engine_section(tmp_path, capsys):
+    """[engine] was refused as an unknown section; now it is the torque curve's table, plot and summary."""
+    from geardesign.scene.engine import load_engine
+
+    out = tmp_path / "out"
+    assert main(["run", str(ENGINE_EXAMPLES / "seed000_engine.toml"), "--out", str(out)]) == 0
+    text = capsys.readouterr().out
+    res = load_engine(ENGINE_EXAMPLES / "seed000_engine.toml").engine.analyse(720)
+    assert f"engine: mean torque M_i = {res.mean_torque_nm:.6g} N·m" in text and "8 reversals per cycle" in text
+    table = pd.read_csv(out / "engine_torque.csv")
+    np.testing.assert_allclose(table["torque_nm"], res.torque_nm, rtol=1e-9, atol=1e-9)
+    assert (out / "engine_torque.png").stat().st_size > 10_000 and "engine_torque.png" in (out / "report.md").read_text()
+
+
+def test_run_the_seed_engine_end_to_end(tmp_path, capsys):
+    """examples/seed000_engine_gear.toml through `run`: the torque curve, the spectrum's histogram, the S-N diagrams
+    and the damage tables in the report; exit 1 (the seed's shifts fail eps_alpha >= 1.2); the life at the given
+    shifts is the engine command's."""
+    from geardesign.scene.engine_gear import engine_gear
+    from geardesign.scene.load import load_scene
+
+    out = tmp_path / "out"
+    assert main(["run", str(ENGINE_EXAMPLES / "seed000_engine_gear.toml"), "--out", str(out)]) == 1
+    text = capsys.readouterr().out
+    assert text.startswith("FAILS: gear: the given shifts fail contact_ratio")
+    for name in ("engine_torque", "gear_spectrum", "gear_life_given", "gear_life_optimum", "gear_region"):
+        assert (out / f"{name}.png").stat().st_size > 10_000, name
+    report = (out / "report.md").read_text(encoding="utf-8")
+    for part in ("## Engine: 2 cylinder(s), 1700 rpm", "### Load spectrum (ISO 6336-6)", "counted at the mesh instants",
+                 "Y_M = 0.7", "| mode | gear | D | life_h | S | ok |", "![S-N diagrams with the spectrum]"):
+        assert part in report, part
+    g = engine_gear(load_scene(ENGINE_EXAMPLES / "seed000_engine_gear.toml"))
+    damage = pd.read_csv(out / "gear_damage_given.csv")
+    np.testing.assert_allclose(damage["D"], g.life["given"].damage_table()["D"], rtol=1e-12)
+    opt = pd.read_csv(out / "gear_optimum.csv")
+    assert opt["objective"][0] == "max_life"
+    assert opt["x1"][0] == pytest.approx(g.optimum.x1, abs=1e-9) and opt["x2"][0] == pytest.approx(g.optimum.x2, abs=1e-9)
+    hist = pd.read_csv(out / "gear_spectrum.csv")
+    assert hist["share"].sum() == pytest.approx(1.0) and set(hist["flank"]) == {"drive", "coast"}

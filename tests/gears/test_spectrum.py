@@ -198,3 +198,31 @@ def test_per_tooth_bins_need_their_pair():
         LoadSpectrum([1.0, 2.0], 100.0, [1.0, 1.0], 1, t, np.array([0, 30]), np.array([1.0, 1.0]), (20, 30))
     s = LoadSpectrum([1.0, 2.0], 100.0, [1.0, 1.0], 1, t, t, np.array([1.0, 1.0]), (20, 30))
     assert s.per_tooth and s.teeth == (20, 30) and list(s.to_frame().columns)[-1] == "meshes"
+
+
+def test_histogram_sums_the_time_of_each_torque_class_over_the_teeth():
+    """Three meshes a period at 100, -50, 100 N·m on a 3-tooth pinion (a 360° curve, 120° a pitch): two thirds of
+    the time at +100 (drive flank), one third at -50 (coast flank), whatever the teeth."""
+    s = LoadSpectrum.from_curve([100.0, -50.0, 100.0], angle_deg=[0.0, 120.0, 240.0], n_rpm=60, teeth=(3, 6),
+                                period_deg=360.0, levels=1)
+    h = s.histogram()
+    assert h["torque_nm"].tolist() == [100.0, -50.0] and h["flank"].tolist() == ["drive", "coast"]
+    assert h["share"].tolist() == pytest.approx([2 / 3, 1 / 3], rel=1e-12)
+    assert h["time_h"].sum() == pytest.approx(s.duration_h, rel=1e-12)
+
+
+def test_plot_draws_both_flanks(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    s = LoadSpectrum.from_bins([120, -60, 90], 1000, time_h=[1, 2, 3])
+    ax = s.plot()
+    heights = sorted(round(p.get_height(), 9) for p in ax.patches)
+    assert heights == pytest.approx([100 / 6, 100 / 3, 50.0])
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == ["drive flank (T > 0)",
+                                                                    "coast flank (T < 0: the torque reversed)"]
+    plt.close(ax.figure)
+    with pytest.raises(GearDesignError, match="ax"):
+        s.plot(ax="not axes")

@@ -87,3 +87,4 @@ def test_v_banks_from_the_scene(tmp_path):
                                          "axis_tilts_deg = [-45, 45]") + OTTO
     e = load_engine(_scene(tmp_path, text)).engine
     assert e.phases.tolist() == [0.0, 90.0] and e.axis_tilts_deg == (-45.0, 45.0)
+

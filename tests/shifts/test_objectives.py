@@ -38,8 +38,39 @@ def test_custom_objective_beats_every_feasible_grid_node():
 
 def test_objective_registry_and_refusals():
     assert set(OBJECTIVES) == {"max_x_sum", "max_eps_alpha", "balanced_sliding", "min_specific_pressure", "max_margin",
-                               "balanced_root_strength", "max_min_safety"}
+                               "balanced_root_strength", "max_min_safety", "max_life"}
     with pytest.raises(GearDesignError, match="objective must be one of"):
         gd.optimize_shifts(17, 26, objective="fastest")
     with pytest.raises(GearDesignError, match="sense must be 'max' or 'min'"):
         CustomObjective("x", lambda g: g["a"], sense="up")
+
+
+def test_max_life_needs_a_spectrum():
+    with pytest.raises(GearDesignError, match="objective 'max_life' needs a load spectrum: give the checks spectrum="):
+        gd.optimize_shifts(20, 60, objective="max_life")
+
+
+def test_max_life_is_the_longest_life_of_a_spectrum():
+    """A one-bin spectrum (docs/life.md's pair): fun = ln(L/L_req) with L = L_req/max D of pair_life at the optimum,
+    and no feasible node of a grid lives longer."""
+    spec = gd.LoadSpectrum.from_bins([120.0], 1000, time_h=[20000.0])
+    case = {"spectrum": spec, "material": "42CrMo4", "face_width_mm": 40.0, "damage_max": 10.0}
+    res = gd.optimize_shifts(20, 60, m=4, checks=case, objective="max_life")
+    assert res.success
+    D = gd.pair_life(4.0, 20, 60, res.x1, res.x2, spectrum=spec, material1="42CrMo4", face_width_mm=40.0)
+    worst = max(D[f"D_{m}"] for m in ("H1", "H2", "F1", "F2"))
+    assert res.fun == pytest.approx(-np.log(worst), rel=1e-9)
+    grid = np.linspace(-0.4, 1.6, 21)
+    X1, X2 = (v.ravel() for v in np.meshgrid(grid, grid))
+    ok = np.array([_holds(a, b) for a, b in zip(X1, X2)])
+    out = gd.pair_life(4.0, 20, 60, X1[ok], X2[ok], spectrum=spec, material1="42CrMo4", face_width_mm=40.0)
+    nodes = np.max([out[f"D_{m}"] for m in ("H1", "H2", "F1", "F2")], axis=0)
+    assert ok.sum() > 20 and np.all(-np.log(nodes) <= res.fun + 1e-9)
+
+
+def _holds(x1, x2) -> bool:
+    """The default checks (a subset of the nodes the optimiser may reach: the table adds jamming)."""
+    try:
+        return bool(gd.GearPair(4, 20, 60, x1, x2).checks()["ok"].all())
+    except GearDesignError:
+        return False

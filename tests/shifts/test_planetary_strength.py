@@ -158,3 +158,28 @@ def test_planetary_cli_strength_objective(capsys):
     assert "(max_min_safety)" in capsys.readouterr().out
     assert cli_main(args) == 2
     assert "needs a load" in capsys.readouterr().err
+
+
+def test_max_life_of_a_set_under_a_spectrum():
+    """The damage checks of both meshes (a spectrum on the sun, reversing) in the set's solver: max_life's optimum
+    holds every check, its fun is −ln of the largest damage of the set's checks there, and the max_x_sum optimum
+    (another feasible point) lives no longer."""
+    import numpy as np
+
+    import geardesign as gd
+    from geardesign.shifts.planetary import optimize_planetary_shifts
+
+    spec = gd.LoadSpectrum.from_bins([20.0, 12.0, -6.0], 1500, time_h=[2000, 6000, 2000])
+    checks = {"spectrum": spec, "material": "42CrMo4", "face_width_mm": 25.0, "mean_stress_factor": 0.7,
+              "damage_max": 10.0}
+    best = optimize_planetary_shifts(20, 31, 82, 3, 2, checks=checks, objective="max_life")
+    other = optimize_planetary_shifts(20, 31, 82, 3, 2, checks=checks, objective="max_x_sum")
+    assert best.success and other.success
+
+    def worst(r):
+        t = gd.PlanetarySet.coaxial(2, 20, 31, 82, 3, r.x_sun, r.x_planet).checks(checks)
+        assert t["ok"].all()
+        return float(t.loc[t["check"].str.contains("damage"), "value"].max())
+
+    assert 0 < worst(best) <= worst(other)
+    assert best.fun == pytest.approx(-np.log(worst(best)), rel=1e-9)

@@ -114,3 +114,19 @@ def test_central_differences_turn_one_sided_at_a_domain_edge():
         _, (_, _, _, GM) = prob.evaluate_design(x1, 0.2)
         k = prob.names.index("edge")
         assert GM[k] == pytest.approx([2.0, 3.0], rel=1e-6)
+
+
+def test_a_flat_holding_margin_is_far_from_its_boundary():
+    """Regression: a check that holds with no gradient (a root damage sum of 0 wherever the stress stays below the
+    S-N curve's end) had distance −inf, so max_margin with the damage checks stopped with "no finite result"; it
+    is FLAT_DISTANCE away (the other checks decide), and the optimum is the max_margin of the checks that move."""
+    import geardesign as gd
+    from geardesign.shifts.problem import FLAT_DISTANCE, _normalise
+
+    P = _normalise(np.array([0.5, 1.0, -0.2, 0.0]), np.array([[1.0, 0.0], [0.0, 0.0], [0.0, 0.0], [0.0, 0.0]]))
+    assert P.tolist() == [0.5, FLAT_DISTANCE, -np.inf, -np.inf]
+    spec = gd.LoadSpectrum.from_bins([120, 90, 60], 1000, time_h=[2000, 8000, 10000])
+    r = gd.optimize_shifts(20, 60, m=4, checks={"spectrum": spec, "material": "42CrMo4", "face_width_mm": 40.0},
+                           objective="max_margin")
+    assert r.success and r.margins["root_damage1"] == 1.0 and r.margins["root_damage2"] == 1.0
+    assert r.fun < FLAT_DISTANCE and min(r.margins.values()) > 0

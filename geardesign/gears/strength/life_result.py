@@ -54,6 +54,11 @@ class LifeResult(Result):
         return all(getattr(self, "D_" + m) <= 1.0 for m in MODES)
 
     @property
+    def life_h(self) -> float:
+        """The pair's life (hours): the shortest of its gears' and modes' lives (the governing one's)."""
+        return min(getattr(self, "life_h_" + m) for m in MODES)
+
+    @property
     def governing(self) -> tuple:
         """(mode, D) of the largest damage sum: mode "H1", "H2" (pitting) or "F1", "F2" (root)."""
         mode = max(MODES, key=lambda m: getattr(self, "D_" + m))
@@ -65,6 +70,15 @@ class LifeResult(Result):
         required life), K_v, K_Hbeta, K_Halpha, K_Fbeta, K_Falpha, sigma_H1, sigma_H2, sigma_F1, sigma_F2 (MPa),
         N_H1 … N_F2 (cycles endured at the bin's stress) and D_H1 … D_F2 (the bin's n/N)."""
         return self._bins.copy()
+
+    def damage_table(self):
+        """One row per gear and mode: ``mode`` (pitting or root), ``gear``, Miner's sum ``D`` over the required
+        life, ``life_h`` (hours to D = 1), the safety factor ``S`` for the required life and ``ok`` (D <= 1)."""
+        import pandas as pd
+
+        return pd.DataFrame([{"mode": "pitting" if m[0] == "H" else "root", "gear": int(m[1]),
+                              "D": getattr(self, "D_" + m), "life_h": getattr(self, "life_h_" + m),
+                              "S": getattr(self, "S_" + m), "ok": getattr(self, "D_" + m) <= 1.0} for m in MODES])
 
     def to_dict(self) -> dict:
         from ...results import plain
@@ -100,9 +114,9 @@ class LifeResult(Result):
 
             target = check_output_path(path, overwrite=overwrite, suffixes=(".png", ".svg", ".pdf"))
         fig, axes = plt.subplots(2, 2, figsize=(10, 7), sharex=True)
-        b = self._bins
         for ax, mode in zip(axes.ravel(), MODES):
             g = int(mode[1])
+            b, which = self._governing_bins(mode)
             sigma = np.abs(b[f"sigma_{mode[0]}{g}"].to_numpy())
             ref = b[f"sigma_ref_{mode}"].to_numpy()
             n = b[f"n{g}"].to_numpy()
@@ -118,7 +132,7 @@ class LifeResult(Result):
             S = getattr(self, "S_" + mode)
             if math.isfinite(S):
                 ax.stairs(S * sigma[order], stairs, color="tab:red", lw=1.2, ls="--", label=f"spectrum × S = {S:.3g}")
-            ax.set_title(f"{_MODE_NAMES[mode]}: D = {getattr(self, 'D_' + mode):.3g}")
+            ax.set_title(f"{_MODE_NAMES[mode]}{which}: D = {getattr(self, 'D_' + mode):.3g}", fontsize=10)
             ax.set_ylabel("σ_H, MPa" if mode[0] == "H" else "σ_F, MPa")
             ax.grid(True, which="both", alpha=0.3)
             ax.set_xlim(1e2, 1e11)
@@ -132,6 +146,32 @@ class LifeResult(Result):
 
             write_file_atomic(target, lambda tmp: fig.savefig(tmp, dpi=110))
         return fig
+
+
+    def _governing_bins(self, mode: str) -> tuple:
+        """The bins whose cycles sum on one tooth flank of the mode's gear, and a phrase naming it: for a spectrum
+        counted per tooth, the tooth and flank whose damage governs D (where none has damage, the one that governs
+        at the stresses times the safety factor S, which reach D = 1 there); otherwise every bin (each stands for
+        every tooth)."""
+        from .service_life import cycles_to_failure
+
+        b = self._bins
+        g = int(mode[1])
+        if f"tooth{g}" not in b.columns:
+            return b, ""
+        coast = (b["torque_nm"] < 0).to_numpy()
+        group = b[f"tooth{g}"].to_numpy() * 2 + coast
+        d = b["D_" + mode].to_numpy()
+        S = getattr(self, "S_" + mode)
+        if not d.max() > 0 and math.isfinite(S):
+            ratio = S * np.abs(b[f"sigma_{mode[0]}{g}"].to_numpy()) / b["sigma_ref_" + mode].to_numpy()
+            d = b[f"n{g}"].to_numpy() / cycles_to_failure(ratio, self._curves[mode], self.sn_curve)
+        if d.max() > 0:
+            top = int(np.argmax(np.bincount(group, weights=d)))
+        else:
+            top = int(group[np.argmax(np.abs(b[f"sigma_{mode[0]}{g}"].to_numpy()))])
+        sel = group == top
+        return b.loc[sel], f" (tooth {top // 2}, {'coast' if top % 2 else 'drive'} flank)"
 
 
 def _strength_factor(N, curve, sn_curve):

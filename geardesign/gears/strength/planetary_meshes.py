@@ -5,6 +5,8 @@ from __future__ import annotations
 import dataclasses
 import math
 
+import numpy as np
+
 from ...errors import GearDesignError
 from ...validate import one_number, require_range
 from ..geometry import mesh_geometry_float
@@ -14,7 +16,7 @@ from .load import Load
 from .options import DEFAULT_OPTIONS, gathered
 from .result import StrengthResult, from_chain
 
-__all__ = ["planetary_strength", "mesh_loads", "set_tips", "TIPS"]
+__all__ = ["planetary_strength", "mesh_loads", "mesh_spectra", "set_tips", "TIPS"]
 
 # the tips planetary_strength may take: the set's unshortened tips, or the sun and planet shortened by the sun-planet
 # mesh's k·m (ISO 21771: tip alteration, as a pair's tips are); a dict of diameters gives them as made
@@ -55,6 +57,38 @@ def mesh_loads(z_sun: int, z_planet: int, z_ring: int, n_planets: int, arrangeme
     kept = dict(on_gear=1, application_factor=load.application_factor, life_h=load.life_h)
     return {"sun-planet": (Load(torque_nm=t_mesh, n_rpm=n_sun_rel, **kept), (n_planets, 1)),
             "planet-ring": (Load(torque_nm=t_mesh * z_planet / z_sun, n_rpm=n_sun_rel * z_sun / z_planet, **kept),
+                            (1, n_planets))}
+
+
+def mesh_spectra(z_sun: int, z_planet: int, z_ring: int, n_planets: int, arrangement: str, spectrum) -> dict:
+    """The load spectrum of each mesh of a planetary set whose sun carries ``spectrum`` (a
+    :class:`~geardesign.gears.spectrum.LoadSpectrum` of bins given on the sun, ``on_gear`` 1), bin by bin as
+    :func:`mesh_loads` loads one case: {"sun-planet": (spectrum on the sun, cycles_per_rev), "planet-ring":
+    (spectrum on the planet, cycles_per_rev)}, each mesh T_sun/N (signed: a reversed bin stays reversed) at the
+    speeds relative to the carrier, the bins' hours kept. A spectrum counted per tooth is refused: its teeth are
+    a pair's, and a set's sun meets N planets.
+
+    >>> from geardesign.gears.spectrum import LoadSpectrum
+    >>> s = LoadSpectrum.from_bins([300, -150], 1020, time_h=[10, 5])
+    >>> sp, pr = mesh_spectra(20, 31, 82, 3, "ring_fixed", s).values()
+    >>> sp[0].torque_nm.tolist(), sp[0].n_rpm.tolist(), sp[1], pr[0].torque_nm.tolist(), pr[1]
+    ([100.0, -50.0], [820.0, 820.0], (3, 1), [155.0, -77.5], (1, 3))
+    """
+    from ..spectrum import LoadSpectrum
+
+    if not isinstance(spectrum, LoadSpectrum) or spectrum.on_gear != 1:
+        raise GearDesignError("a planetary set's spectrum must be a geardesign LoadSpectrum given on the sun "
+                              "(on_gear=1)")
+    if spectrum.per_tooth:
+        raise GearDesignError("a spectrum counted per tooth belongs to the pair it was counted for: give a planetary "
+                              "set a spectrum of bins (LoadSpectrum.from_bins or from_csv) on the sun")
+    carrier = np.array([_carrier_speed(arrangement, z_sun, z_ring, float(n)) for n in spectrum.n_rpm])
+    n_rel = np.abs(spectrum.n_rpm - carrier)
+    if not np.all(n_rel > 0.0):
+        raise GearDesignError("the sun turns with the carrier: no mesh is loaded cyclically")
+    t_mesh = spectrum.torque_nm / n_planets
+    return {"sun-planet": (LoadSpectrum(t_mesh, n_rel, spectrum.time_h, 1), (n_planets, 1)),
+            "planet-ring": (LoadSpectrum(t_mesh * z_planet / z_sun, n_rel * z_sun / z_planet, spectrum.time_h, 1),
                             (1, n_planets))}
 
 

@@ -67,3 +67,39 @@ def test_the_plotted_sn_curve_is_the_inverse_of_the_endured_cycles(sn_curve):
         N = float(cycles_to_failure(r, pts, sn_curve))
         if N != float("inf") and not (sn_curve == "original" and r == 1.0):   # the knee's flat end: any N beyond
             assert float(_strength_factor(np.array([N]), pts, sn_curve)[0]) == pytest.approx(r, rel=1e-12)
+
+
+def test_damage_table_and_life_read_the_result():
+    r = service_life(PAIR, SPEC, "42CrMo4")
+    t = r.damage_table()
+    assert t[["mode", "gear"]].values.tolist() == [["pitting", 1], ["pitting", 2], ["root", 1], ["root", 2]]
+    assert t["D"].tolist() == [r.D_H1, r.D_H2, r.D_F1, r.D_F2] and t["S"].tolist() == [r.S_H1, r.S_H2, r.S_F1, r.S_F2]
+    assert t["ok"].tolist() == [d <= 1 for d in t["D"]]
+    assert r.life_h == min(r.life_h_H1, r.life_h_H2, r.life_h_F1, r.life_h_F2)
+
+
+def test_a_per_tooth_spectrum_is_plotted_on_its_governing_tooth_flank():
+    """The S-N panel of a spectrum counted per tooth shows the cycles of one tooth flank (the one whose damage is
+    D), not the sum over every tooth: its last stair ends at that flank's cycles."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    phi = np.linspace(0, 720, 721)
+    T = 300 + 500 * np.exp(-((phi - 20) / 15) ** 2) - 150 * np.exp(-((phi - 380) / 30) ** 2)
+    spec = gd.LoadSpectrum.from_curve(T, angle_deg=phi, n_rpm=1700, teeth=(17, 26), levels=24)
+    r = gd.GearPair(8, 17, 26, 0.5, 0.3, face_width_mm=30).life(spec, "42CrMo4", life_h=5000,
+                                                                 mean_stress_factor=0.7)
+    fig = r.plot()
+    b = r.bins
+    group = b["tooth1"] * 2 + (b["torque_nm"] < 0)
+    D = b.groupby(group)["D_H1"].sum()
+    assert D.max() == pytest.approx(r.D_H1, rel=1e-9)
+    top = int(D.idxmax())
+    ax = fig.axes[0]
+    assert f"tooth {top // 2}, {'coast' if top % 2 else 'drive'} flank" in ax.get_title()
+    edges = ax.patches[0].get_data().edges
+    assert edges[-1] == pytest.approx(b.loc[group == top, "n1"].sum(), rel=1e-12)
+    assert edges[-1] < b["n1"].sum() / 10           # one flank of 17 teeth, not all of them
+    plt.close(fig)

@@ -47,3 +47,34 @@ def test_each_mesh_is_the_pairs_own_strength():
 def test_refusals_name_the_input(call, words):
     with pytest.raises(GearDesignError, match=words):
         call(PlanetarySet.coaxial(2, 20, 31, 82, 3), Load(torque_nm=100, n_rpm=1500))
+
+
+# ---- a load spectrum on the sun: each mesh's damage checks (ISO 6336-6) ----------------------------------------
+def test_a_one_bin_spectrum_gives_each_mesh_the_life_its_strength_has():
+    """A one-bin spectrum on the sun: the set's damage checks give each gear's life L = t/D; planetary_strength with
+    that required life (its own route: the torque shared over the planets, the speeds relative to the carrier,
+    a sun tooth meeting 3 planets a turn, Z_NT at the life's cycles) finds S_H = 1 there."""
+    import geardesign as gd
+
+    s = PlanetarySet.coaxial(2, 20, 31, 82, 3, 0.3, 0.1)
+    spec = gd.LoadSpectrum.from_bins([40.0], 1500, time_h=[10000.0])
+    t = s.checks({"spectrum": spec, "material": "42CrMo4", "face_width_mm": 25.0}).set_index("check")["value"]
+    for gear, name in ((1, "sun-planet:pitting_damage_sun"), (2, "sun-planet:pitting_damage_planet")):
+        D = float(t[name])
+        assert 1.0 < D < 1e4
+        r = planetary_strength(s, Load(torque_nm=40, n_rpm=1500, life_h=10000.0 / D), "42CrMo4", face_width_mm=25)
+        assert getattr(r["sun-planet"], f"S_H{gear}") == pytest.approx(1.0, rel=1e-6), name
+
+
+def test_mesh_spectra_refuse_what_a_set_cannot_take():
+    import numpy as np
+
+    import geardesign as gd
+    from geardesign.gears.strength.planetary_meshes import mesh_spectra
+
+    phi = np.linspace(0, 360, 361)
+    curve = gd.LoadSpectrum.from_curve(100 + 0 * phi, angle_deg=phi, n_rpm=1000, teeth=(20, 31))
+    with pytest.raises(GearDesignError, match="a spectrum counted per tooth belongs to the pair"):
+        mesh_spectra(20, 31, 82, 3, "ring_fixed", curve)
+    with pytest.raises(GearDesignError, match="given on the sun"):
+        mesh_spectra(20, 31, 82, 3, "ring_fixed", gd.LoadSpectrum.from_bins([10.0], 100, time_h=[1.0], on_gear=2))
