@@ -254,7 +254,8 @@ BAD_NUMBER = {"pair": ["--module", "x"], "measure": ["--module", "x"], "mesh": [
               "shift": ["--z1", "x"], "atlas": ["--z1", "17", "--z2", "20", "--method", "x"],
               "teeth": ["--ratio", "x"], "planetary": ["--module", "x"], "chain": ["--n1", "x"],
               "key": ["--d", "x"], "drive": ["s.toml", "--speed", "x"], "run": ["s.toml", "--out", "o", "--workers"],
-              "bearing": ["--fr", "x"], "shaft": ["--rz", "x"], "engine": ["s.toml", "--points", "x"]}
+              "bearing": ["--fr", "x"], "shaft": ["--rz", "x"], "engine": ["s.toml", "--points", "x"],
+              "worm": ["--module", "x"]}
 
 
 @pytest.mark.parametrize("command", sorted(BAD_NUMBER))
