@@ -152,6 +152,8 @@ class Drive:
         """The stages with ``efficiency='computed'`` (a worm stage's) given their number at the speed into them:
         n_in over the ratios before them, which must be fixed (a stage whose ratio the search chooses would give
         the worm a speed per design, and the power flow holds one efficiency per stage)."""
+        if not any(getattr(s, "efficiency", None) == "computed" for s in stages):
+            return stages
         out, n = [], self.n_in_rpm
         for s in stages:
             if getattr(s, "efficiency", None) == "computed":

@@ -107,5 +107,6 @@ INTERNAL_FIELDS: dict[str, str] = {
     "_gap2": "r_a2 − r_b2 (mm)",
     "_mesh": "the Mesh the geometry was computed for (rack, helix angle, kind, face width)",
     "_strength": "memo of the strength checks' safety factors of this design by load case",
+    "_damage": "memo of the damage checks' Miner sums of this design by load case (gears/checks/damage.py)",
     "_cutting_meshes": "memo of the cutter–ring meshes of this design by cutter (the ring checks add it)",
 }
