@@ -175,7 +175,8 @@ class Engine:
         _, swing = excess_work(total, cycle)
         delta = (fluctuation_coefficient(swing, self.flywheel_inertia_kg_m2, self.n_rpm)
                  if self.flywheel_inertia_kg_m2 is not None else None)
-        mu = float((total.max() - total.min()) / mean) if mean > 0 else float("nan")
+        # no unevenness without work over the cycle (μ's mean would be <= 0): None, as the summary says
+        mu = float((total.max() - total.min()) / mean) if mean > 0 else None
         eta = self.mechanical_efficiency
         return EngineTorque(
             engine=self, crank_angle_deg=phi, cylinder_torque_nm=per_cyl, torque_nm=total, gas_torque_nm=gas,
@@ -205,8 +206,8 @@ class EngineTorque(Result):
     ``torque_nm`` is the resultant (the last journal's, driving the load), ``cylinder_torque_nm`` (cylinders ×
     points) each cylinder's, ``journal_torque_nm`` (cylinders + 1 × points) and ``crank_pin_torque_nm`` seed 004's
     M_zi and M_qi; ``gas_torque_nm`` + ``inertia_torque_nm`` = ``torque_nm`` (inertia including the weights). The mean
-    is the indicated torque M_i, ``unevenness`` μ = (M_max − M_min)/M_mean, ``excess_work_j`` the swing ΔE of the
-    excess work, ``fluctuation`` δ = ΔE/(J·ω²) when the engine has a flywheel inertia.
+    is the indicated torque M_i, ``unevenness`` μ = (M_max − M_min)/M_mean (None when M_mean <= 0), ``excess_work_j``
+    the swing ΔE of the excess work, ``fluctuation`` δ = ΔE/(J·ω²) when the engine has a flywheel inertia.
     """
 
     engine: Engine
@@ -221,7 +222,7 @@ class EngineTorque(Result):
     effective_torque_nm: float | None
     max_torque_nm: float
     min_torque_nm: float
-    unevenness: float
+    unevenness: float | None
     reversal_angles_deg: np.ndarray
     excess_work_j: float
     fluctuation: float | None
