@@ -35,7 +35,7 @@ import numpy as np
 from ..catalogs.tables import load_catalog
 from ..errors import GearDesignError
 from ..results import RankedTable, Result
-from ..validate import one_number, require_choice, require_range
+from ..validate import broadcast_inputs, one_number, require_choice, require_range
 
 __all__ = ["SERIES", "BEARING_KINDS", "LIFE_EXPONENT", "RELIABILITY_FACTORS", "ANGULAR_CONTACT_40",
            "S0_MIN_NORMAL", "basic_rating_life", "rating_life_hours", "deep_groove_factors",
@@ -90,6 +90,7 @@ S0_MIN_NORMAL = {"ball": 1.0, "roller": 1.5}
 A_ISO_MAX = 50.0          # ISO 281:2007 limits a_ISO to 50
 KAPPA_RANGE = (0.1, 4.0)  # the a_ISO formulas hold for 0.1 <= κ <= 4; above 4 the value at 4 is used
 FORCE_MAX_N = 1e8
+TAPERED_Y_MAX = 10.0     # a tapered roller bearing's axial load factor Y (0.4·cot α > 10 is α < 2.3°)
 SPEED_MAX_RPM = 1e6
 LIFE_MAX_H = 1e7
 LUBRICATIONS = ("grease", "oil")
@@ -271,9 +272,16 @@ def tapered_axial_loads(fr_a_n, fr_b_n, Y_a, Y_b, ka_n=0.0):
     >>> [round(float(v), 2) for v in fa]
     [1.45, 1.45]
     """
+    fr_a_n, fr_b_n, Y_a, Y_b, ka = broadcast_inputs(
+        fr_a_n=require_range("fr_a_n", fr_a_n, 0.0, FORCE_MAX_N, unit="N"),
+        fr_b_n=require_range("fr_b_n", fr_b_n, 0.0, FORCE_MAX_N, unit="N"),
+        # Y = 0.4·cot α: 0.69 … 2.3 for the contact angles 10° … 30° of the catalogs; 0 would divide by zero
+        Y_a=require_range("Y_a", Y_a, 0.0, TAPERED_Y_MAX, lo_open=True),
+        Y_b=require_range("Y_b", Y_b, 0.0, TAPERED_Y_MAX, lo_open=True),
+        ka_n=require_range("ka_n", ka_n, -FORCE_MAX_N, FORCE_MAX_N, unit="N"))
     fa_ind = induced_axial_force(fr_a_n, Y_a)
     fb_ind = induced_axial_force(fr_b_n, Y_b)
-    ka = np.asarray(ka_n, dtype=float)
+    ka = ka.astype(float)
     # with Ka toward B (k >= 0): A sets the loads when its induced load plus Ka is at least B's; toward A the
     # same with the roles swapped
     toward_b = ka >= 0
@@ -368,7 +376,8 @@ def bearing_loads(rows: pd.DataFrame, fr_n, fa_n):
     nu = t == "cylindrical_roller"
     e[nu] = np.inf                                     # P = Fr; any axial load is refused below
     axial_ok = np.isfinite(e) | (nu & (Fa == 0))
-    P = np.where(axial_ok, equivalent_dynamic_load(Fr, Fa, np.where(np.isfinite(e), e, np.inf), X, Y), np.nan)
+    with np.errstate(invalid="ignore"):      # inf·0 (an NU row under a pure axial load) is masked by axial_ok
+        P = np.where(axial_ok, equivalent_dynamic_load(Fr, Fa, np.where(np.isfinite(e), e, np.inf), X, Y), np.nan)
     P0 = np.where(axial_ok, equivalent_static_load(Fr, Fa, X0, Y0), np.nan)
     with np.errstate(invalid="ignore", over="ignore"):
         below = np.isinf(e) | (Fa <= np.nan_to_num(e, nan=np.inf) * Fr)   # P = Fr: the X and Y in use are 1 and 0

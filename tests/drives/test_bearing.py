@@ -432,3 +432,26 @@ def test_reference_viscosity():
     assert (np.diff(grid) < 0).all()
     with pytest.raises(GearDesignError, match="n_rpm"):
         b.reference_viscosity(0.0, 50.0)
+
+
+@pytest.mark.parametrize("args, match", [
+    ((4000.0, 2500.0, 1.6, 0.0, -1200.0), r"Y_b must be in \(0, 10\], got 0"),     # was NaN (0.5·Fr/0)
+    ((5980.0, 4180.0, float("nan"), 2.07), r"Y_a must be finite"),
+    ((-5980.0, 4180.0, 2.06, 2.07), r"fr_a_n must be in \[0, 1e\+08\] N, got -5980"),    # was a negative load
+    ((5980.0, 4180.0, 2.06, 2.07, float("inf")), r"ka_n must be finite"),
+    (([1.0, 2.0], [1.0, 2.0, 3.0], 1.6, 1.6), "do not broadcast"),
+])
+def test_tapered_axial_loads_refuse_bad_input_by_name(args, match):
+    """Fuzzing found NaN axial loads for Y = 0 and negative loads passed through: each input is refused by name."""
+    with pytest.raises(GearDesignError, match=match):
+        b.tapered_axial_loads(*args)
+
+
+def test_a_pure_axial_load_on_a_cylindrical_roller_bearing_warns_nothing():
+    """Fuzzing found a RuntimeWarning (inf·0) escaping check_bearing for an NU bearing with Fr = 0: it fails its
+    axial check quietly."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = b.check_bearing("NU210EA", 0.0, 1800.0, 1000.0)
+    assert not r.ok and r.limiting_check == "axial_load"
