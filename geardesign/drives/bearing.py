@@ -331,6 +331,9 @@ def bearing_catalog(series) -> pd.DataFrame:
     """The catalog rows of one or more series (``"62"``, ``"63"``, ``"72B"``, ``"73B"``, ``"NU2"``, ``"NU3"``,
     the tapered roller ``"302"``, ``"303"``, ``"320X"``, ``"322"``, ``"323"``, or a list of them), with a column
     ``kind`` ("ball" or "roller")."""
+    if not isinstance(series, (str, list, tuple)) and np.ndim(series) == 0:
+        raise GearDesignError(f"series must be a series name or a list of them ({', '.join(SERIES)}), got "
+                              f"{series!r}")
     names = [series] if isinstance(series, str) else list(series)
     if not names:
         raise GearDesignError(f"series must name at least one of {', '.join(SERIES)}")

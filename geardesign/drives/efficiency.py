@@ -131,6 +131,8 @@ def stage_efficiency(pair, load, lubricant: Lubricant, oil_temperature_c: float,
     eta = float(lubricant.dynamic_viscosity_mpas(t_oil))
     mesh = mesh_loss(pair, T1, n1, eta, Ra_um, lubricant.lubricant_factor, method=method)
     frictions = []
+    if bearings is not None and not isinstance(bearings, (list, tuple)):
+        raise GearDesignError(f"bearings must be a list of BearingLoad items, got {type(bearings).__name__}")
     for b in bearings or ():
         if not isinstance(b, BearingLoad):
             raise GearDesignError(f"bearings must hold BearingLoad items (designation, shaft, fr_n, fa_n), got {b!r}")

@@ -128,6 +128,8 @@ class ShaftModel:
     density_kg_m3: float = DENSITY_STEEL_KG_M3
 
     def __post_init__(self):
+        if not isinstance(self.sections, (list, tuple)) and np.ndim(self.sections) == 0:
+            raise GearDesignError(f"sections must be a list of (length_mm, d_mm[, bore_mm]), got {self.sections!r}")
         secs = list(self.sections)
         require_count("number of sections", len(secs), 1, SECTIONS_MAX)
         clean = []

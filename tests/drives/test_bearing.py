@@ -455,3 +455,10 @@ def test_a_pure_axial_load_on_a_cylindrical_roller_bearing_warns_nothing():
         warnings.simplefilter("error")
         r = b.check_bearing("NU210EA", 0.0, 1800.0, 1000.0)
     assert not r.ok and r.limiting_check == "axial_load"
+
+
+@pytest.mark.parametrize("series", [np.array(float("nan")), 62, None])
+def test_select_bearing_refuses_a_series_that_is_no_name_by_name(series):
+    """Fuzzing found 'TypeError: iteration over a 0-d array' for a numpy scalar as the series."""
+    with pytest.raises(GearDesignError, match="series must be a series name or a list of them"):
+        b.select_bearing(series, 40.0, 3200.0, 1800.0, 650.0, life_h=20000)

@@ -180,3 +180,10 @@ def test_shigley_example_7_5_equivalent_loads():
     assert 35 * delta(x1, x1) / dcc == pytest.approx(17.1, abs=0.05)
     assert 55 * delta(x2, x2) / dcc == pytest.approx(46.1, abs=0.05)
     assert 6 * E_30MPSI * float(second_moment_mm4(IN)) * L / (LBF * IN ** 3) == pytest.approx(0.2739e9, rel=2e-4)
+
+
+@pytest.mark.parametrize("sections", [-1e308, 40, None])
+def test_sections_that_are_no_list_are_refused_by_name(sections):
+    """Fuzzing found "TypeError: 'float' object is not iterable" for sections=-1e308."""
+    with pytest.raises(GearDesignError, match=r"sections must be a list of \(length_mm, d_mm\[, bore_mm\]\)"):
+        ShaftModel(sections=sections, supports_mm=[10.0, 50.0])

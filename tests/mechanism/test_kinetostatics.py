@@ -219,3 +219,19 @@ def test_bad_inputs_are_refused_by_name():
         joint_forces(mech, 0, 1000, 0, gravity_m_s2=-1)
     with pytest.raises(GearDesignError, match="mechanism must be a SliderCrank"):
         virtual_power_torque("crank", 0, 1000)
+
+
+def test_one_angle_with_several_gas_forces_broadcasts():
+    """Fuzzing found 'ValueError: cannot broadcast a non-scalar to a scalar array' for one crank angle with several
+    gas forces; they broadcast together (as the docstring says), each the same as its own call, and shapes that do
+    not broadcast are refused by name."""
+    mech = MECHS[0]
+    gas = [0.0, 1e3, 5e4]
+    f = joint_forces(mech, 30.0, 1700, gas)
+    assert f.torque_nm.shape == (3,)
+    for i, g in enumerate(gas):
+        one = joint_forces(mech, [30.0], 1700, g)
+        assert f.torque_nm[i] == pytest.approx(one.torque_nm[0], rel=1e-12, abs=1e-9)
+        assert f.crank_pin_x_n[i] == pytest.approx(one.crank_pin_x_n[0], rel=1e-12, abs=1e-9)
+    with pytest.raises(GearDesignError, match="do not broadcast"):
+        joint_forces(mech, [0.0, 30.0], 1700, gas)

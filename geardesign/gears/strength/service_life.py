@@ -31,7 +31,7 @@ import math
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import require_choice, require_range
+from ...validate import require_choice, require_finite, require_range
 from ..spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES, LoadSpectrum
 from . import root_factors as rf
 from .blocks import BLOCK
@@ -240,7 +240,15 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     loaded = np.flatnonzero(spectrum.torque_nm != 0.0)        # a bin of no torque does no damage
     if loaded.size == 0:
         raise GearDesignError("the spectrum has no bin with a torque: nothing to rate")
-    shape = np.broadcast_shapes(*(np.shape(v) for v in (m, z1, z2, x1, x2, face_width_mm)))
+    # the designs' numbers by name before their shapes are read (a dict or a ragged list has none);
+    # pair_strength checks their ranges
+    shapes = {k: require_finite(k, v).shape for k, v in dict(m=m, z1=z1, z2=z2, x1=x1, x2=x2,
+                                                              face_width_mm=face_width_mm).items()}
+    try:
+        shape = np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        raise GearDesignError("input shapes do not broadcast together: "
+                              + ", ".join(f"{k} {s}" for k, s in shapes.items())) from None
     if (math.prod(shape) * loaded.size > _ELEMENTS or math.prod(shape) > BLOCK) and not bins:
         # many designs: in chunks, so that the chain's per-bin fields stay small (and it never splits the designs
         # into blocks of its own, which would part them from the bins)

@@ -18,7 +18,7 @@ import numpy as np
 from ...catalogs.tables import load_catalog, preferred_numbers
 from ...errors import GearDesignError
 from ...results import RankedTable
-from ...validate import _show, require_choice, require_int, require_positive, require_range
+from ...validate import _show, one_number, require_choice, require_int, require_positive, require_range
 from .. import checks as _checks
 from ..rack import require_rack
 from .geometry import FLANK_FORMS, Z1_RANGE, worm_geometry
@@ -132,12 +132,12 @@ def select_worm(ratio: float | None = None, a: float | None = None, *, z1=None, 
     if ratio is None and z2 is None:
         raise GearDesignError("select_worm needs ratio or z2")
     if ratio is not None:
-        ratio = float(require_range("ratio", ratio, 1.0, 1000.0))
+        ratio = one_number("ratio", require_range("ratio", ratio, 1.0, 1000.0))
     if a is not None:
-        a = float(require_positive("a (center distance)", a, unit="mm"))
+        a = one_number("a (center distance)", require_positive("a (center distance)", a, unit="mm"))
     elif m_x is None:
         raise GearDesignError("select_worm needs m_x when no centre distance a is given (the size is free)")
-    ratio_tol = float(require_range("ratio_tol", ratio_tol, 0.0, 1.0))
+    ratio_tol = one_number("ratio_tol", require_range("ratio_tol", ratio_tol, 0.0, 1.0))
     z1s = _values("z1", Z1_DEFAULT if z1 is None else z1, integer=True, lo=Z1_RANGE[0], hi=Z1_RANGE[1])
     ms = worm_module_series() if m_x is None else _values("m_x", m_x, lo=1e-4, hi=1e4)
     qs = default_q_values() if q is None else _values("q", q, lo=1.0, hi=100.0)

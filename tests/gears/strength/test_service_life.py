@@ -302,3 +302,14 @@ def test_many_designs_run_in_chunks_with_the_same_answers(monkeypatch):
     for mode in ("H1", "H2", "F1", "F2"):
         assert parts["D_" + mode].shape == (7, 2)
         assert np.allclose(parts["D_" + mode], whole["D_" + mode], rtol=1e-12, atol=0)
+
+
+@pytest.mark.parametrize("m, match", [({"a": 1}, r"m must be a number, got \{'a': 1\}"),
+                                      ([[1], [2, 3]], r"m must be a number, got \[\[1\], \[2, 3\]\]"),
+                                      ([4.0, 5.0, 6.0], "do not broadcast")])
+def test_pair_life_refuses_designs_without_a_shape_by_name(m, match):
+    """Fuzzing found TypeError / ValueError tracebacks for a dict or a ragged list as the module (read for its
+    shape before any check) and for designs whose shapes do not broadcast."""
+    spec = LoadSpectrum.from_bins([241.0], 1000.0, time_h=[100.0])
+    with pytest.raises(GearDesignError, match=match):
+        pair_life(m, [20, 21], 80, 0.3, 0.1, spectrum=spec, material1="42CrMo4", face_width_mm=20.0)

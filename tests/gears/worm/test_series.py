@@ -69,3 +69,12 @@ def test_first_row_modules_rank_before_second_row_ones():
     f = t[t["feasible"]]
     assert np.all(np.diff(f["module_series"].to_numpy()) >= 0)     # equal ratio errors here: the series decides
     assert set(t["module_series"]) <= {1, 2}
+
+
+@pytest.mark.parametrize("kw, match", [(dict(ratio=[1, 2], m_x=6.3), "ratio must be one number"),
+                                       (dict(ratio=12.5, a=[100, 125]), r"a \(center distance\) must be one number"),
+                                       (dict(ratio=12.5, a=125, ratio_tol=[0.1]), "ratio_tol must be one number")])
+def test_select_worm_refuses_a_list_where_one_number_belongs(kw, match):
+    """Fuzzing found 'TypeError: only 0-dimensional arrays can be converted' for select_worm([1, 2], ...)."""
+    with pytest.raises(gd.GearDesignError, match=match):
+        gd.select_worm(**kw)
