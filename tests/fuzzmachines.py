@@ -45,7 +45,7 @@ def _pick(rng: random.Random, valid, invalid=()):
 
 # fields where +inf is an answer, not a fault: an infinite life (no damage), the safety of an unloaded
 # section, a bearing's e where the axial load never counts (to_dict shows None for it)
-_INF_OK = ("life_h", "life_inf", "L10", "Lnm", "S_D", "S_F", "s0", "e", "least_safety", "safety")
+_INF_OK = ("life", "life_h", "life_inf", "L10", "Lnm", "S_D", "S_F", "s0", "e", "least_safety", "safety")
 
 
 def _inf_allowed(name: str, inf_ok) -> bool:
@@ -358,7 +358,7 @@ def _damage_optimize(rng):
     def call():
         s = make() if rng.random() < 0.95 else "not a spectrum"
         return gd.optimize_shifts(z1, z2, checks={"spectrum": s, **case}, **kw)
-    return f"optimize_shifts({z1}, {z2}, checks=spectrum {desc[:80]} + {case}, **{kw})", call
+    return f"optimize_shifts({z1}, {z2}, checks=spectrum {desc} + {case}, **{kw})", call
 
 
 # --- worm pairs -----------------------------------------------------------------------------
@@ -769,7 +769,7 @@ def _cli_machines(rng):
             if "--overwrite" not in argv and any(before[p] == hash(b"precious") and p in changed for p in want):
                 raise HalfWritten("an existing file was overwritten without --overwrite")
             text = out.getvalue()
-            if code in (0, 1) and any(w in ("nan", "inf", "-inf", "NaN") for w in text.replace(",", " ").split()):
+            if code in (0, 1) and any(w in ("nan", "-inf", "NaN") for w in text.replace(",", " ").split()):
                 return float("nan")
             return code
     return "geardesign " + " ".join(repr(a) if not a or " " in a else a for a in args) + \

@@ -255,6 +255,7 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
         return _in_chunks(shape, loaded.size, dict(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=face_width_mm),
                           dict(spectrum=spectrum, material1=material1, material2=material2, life_h=life_h,
                                sn_curve=sn_curve, mean_stress_factor=mean_stress_factor, **options))
+    zz = _teeth(spectrum, z1, z2)      # before the chain: a wrong spectrum costs nothing
     designs = [np.asarray(v, dtype=float) for v in (m, x1, x2)]
     expand = (lambda v: np.asarray(v, dtype=float)[..., None]) if shape else (lambda v: np.asarray(v, dtype=float))
     geometry = options.pop("geometry", None)
@@ -265,14 +266,6 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
                         expand(designs[1]), expand(designs[2]), load=_bins_load(spectrum, loaded),
                         material1=mats[0], material2=mats[1], face_width_mm=width, geometry=geometry, **options)
     nb = loaded.size
-    zz = (int(np.max(z1)), int(np.max(z2)))          # cycles: the ratio of one pair (tooth counts of the designs)
-    if np.ndim(z1) or np.ndim(z2):
-        if np.unique(np.asarray(z1)).size > 1 or np.unique(np.asarray(z2)).size > 1:
-            raise GearDesignError("pair_life takes one pair of tooth counts per call (the spectrum's cycles depend "
-                                  "on the ratio); vary m, x1, x2 and the width")
-    if spectrum.per_tooth and spectrum.teeth != zz:
-        raise GearDesignError(f"the spectrum was counted per tooth for teeth {spectrum.teeth}, the pair has {zz}: count "
-                              f"the curve again for this pair (LoadSpectrum.from_curve(..., teeth={zz}))")
     scale = 1.0 if life_h is None else life_h / spectrum.duration_h
     n = {g: spectrum.cycles(g, zz, cpr[g - 1])[loaded] * scale for g in (1, 2)}
     sign = np.sign(spectrum.torque_nm[loaded])
@@ -419,6 +412,25 @@ def _groups(spectrum: LoadSpectrum, loaded, gear: int, sign) -> np.ndarray:
     tooth = np.zeros(loaded.size, dtype=np.int64) if not spectrum.per_tooth else \
         (spectrum.tooth1 if gear == 1 else spectrum.tooth2)[loaded]
     return tooth * 2 + (sign < 0)
+
+
+def _teeth(spectrum: LoadSpectrum, z1, z2) -> tuple:
+    """The one pair of tooth counts (z1, z2) of the designs, which the spectrum's cycles depend on (the ratio) and,
+    counted per tooth, its bins (the teeth they were counted for)."""
+    zz = (int(np.max(z1)), int(np.max(z2)))
+    if np.ndim(z1) or np.ndim(z2):
+        if np.unique(np.asarray(z1)).size > 1 or np.unique(np.asarray(z2)).size > 1:
+            raise GearDesignError("pair_life takes one pair of tooth counts per call (the spectrum's cycles depend "
+                                  "on the ratio); vary m, x1, x2 and the width")
+    require_teeth_of(spectrum, zz)
+    return zz
+
+
+def require_teeth_of(spectrum: LoadSpectrum, teeth: tuple) -> None:
+    """A spectrum counted per tooth rates only the pair it was counted for."""
+    if spectrum.per_tooth and spectrum.teeth != teeth:
+        raise GearDesignError(f"the spectrum was counted per tooth for teeth {spectrum.teeth}, the pair has {teeth}: "
+                              f"count the curve again for this pair (LoadSpectrum.from_curve(..., teeth={teeth}))")
 
 
 def _reversing_teeth(spectrum: LoadSpectrum, loaded, gear: int, sign) -> np.ndarray:
