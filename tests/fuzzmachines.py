@@ -138,7 +138,7 @@ def _diagram(rng, spec):
     n = _pick(rng, [4, 16, 2], [1, 0])
     n = n if isinstance(n, int) and 0 <= n < 10**6 and not isinstance(n, bool) else 4
     strokes = _pick(rng, [4, 2], [3, 1, None])
-    cyc = 720 if strokes == 4 else 360
+    cyc = 720 if isinstance(strokes, int) and strokes == 4 else 360
     phi = [cyc * i / max(n, 1) for i in range(n)]
     p = [_pick(rng, lambda g: round(g.uniform(0.05, 8), 3), [-0.1, 0.0, 1e6]) for _ in range(n)]
     if rng.random() < 0.1:
@@ -245,6 +245,7 @@ def _spectrum(rng):
     kind = rng.choice(["bins", "bins", "csv", "curve"])
     if kind == "bins":
         which = _pick(rng, ["time_h", "cycles", "share"], ["both", "none"])
+        which = which if isinstance(which, str) else "none"
         kw = dict(torque_nm=_pick(rng, lambda g: _bins(g, n), [[], [float("nan")] * n, "abc"]),
                   n_rpm=_pick(rng, lambda g: g.choice([1000.0, 1e-3, 1e4, [1450.0] * n]), [[1.0] * (n + 1), 0.0]))
         if which in ("time_h", "both"):
@@ -541,7 +542,8 @@ def _shaft(rng):
             return a
         ns = []
         for x, kind, r in notches:
-            notch = gd.Notch(kind, r_mm=r) if kind in ("shoulder", "groove") else gd.Notch(kind)
+            notch = gd.Notch(kind, r_mm=r) if isinstance(kind, str) and kind in ("shoulder", "groove") else \
+                gd.Notch(kind)
             ns.append(gd.ShaftNotch(min(x, model.length_mm) if isinstance(x, float) else x, notch))
         s = gd.shaft_safety(a, ns, mat, **kw)
         s.table, s.to_dict()
@@ -590,6 +592,10 @@ def _num(rng, valid, invalid=()):
 
 
 _ENGINE_TOML = """[engine]
+n_rpm = {n}
+cylinders = {cyl}
+{extra}
+[engine.mechanism]
 crank_radius_mm = {r}
 rod_length_mm = {l}
 rod_cg_mm = 75
@@ -597,11 +603,16 @@ piston_mass_kg = 2.5
 rod_mass_kg = 4.7
 rod_inertia_kg_m2 = 0.0617
 cylinder_bore_mm = {bore}
-n_rpm = {n}
-cylinders = {cyl}
-compression_ratio = {eps}
-peak_pressure_mpa = {p}
+
+[engine.pressure]
+{pressure}
 """
+_PRESSURES = ['kind = "otto"\ncompression_ratio = {eps}\npeak_pressure_mpa = {p}',
+              'kind = "table"\ncrank_angle_deg = [0, 180, 360, 540]\npressure_mpa = [0.1, 0.1, {p}, 0.3]',
+              'kind = "csv"\ncsv = "diagram.csv"', 'kind = "csv"\ncsv = "missing.csv"', 'kind = "bogus"',
+              'kind = "table"\ncrank_angle_deg = []\npressure_mpa = []', 'kind = "otto"']
+_DIAGRAM_CSVS = ["crank_angle_deg,pressure_mpa\n0,0.1\n180,0.1\n360,3.0\n540,0.3\n", "", "a,b\n1,2\n",
+                 "crank_angle_deg,pressure_mpa\n0,nan\n", "crank_angle_deg,pressure_mpa\n0,1\n0,2\n", "\x80\x81"]
 
 
 def _cli_machines(rng):
@@ -611,12 +622,17 @@ def _cli_machines(rng):
     files = {}
     wanted = []
     if cmd == "engine":
+        pressure = rng.choice(_PRESSURES).format(eps=_num(rng, [6.0, 10]), p=_num(rng, [3.2, 7.0]))
+        extra = rng.choice(["", "", "mechanical_efficiency = " + _num(rng, [0.8, 1]),
+                            "flywheel_inertia_kg_m2 = " + _num(rng, [1.0, 0.1]), "phases_deg = [0, 540]",
+                            "points = " + _num(rng, [720, 36]), "strokes = " + _num(rng, [2, 4]),
+                            'firing_order = [1, 2]', "throws_deg = [0, 180]\nfiring_order = [1, 2]"])
         text = rng.choice([_ENGINE_TOML.format(
             r=_num(rng, [70, 45.0]), l=_num(rng, [250, 150.0]), bore=_num(rng, [100, 86]), n=_num(rng, [1700, 3000]),
-            cyl=_num(rng, [1, 2, 4]), eps=_num(rng, [6.0, 10]), p=_num(rng, [3.2, 7.0])),
-            "[engine\n", "", "[engine]\n", "[engine]\ncrank_radius_mm = 70\n", "[other]\nx = 1\n",
-            '[engine]\ncrank_radius_mm = "70"\n', "[engine]\nbogus = 1\n", "\x00\x01"])
+            cyl=_num(rng, [1, 2, 2, 4]), extra=extra, pressure=pressure)] * 6 +
+            ["[engine\n", "", "[engine]\n", "[other]\nx = 1\n", '[engine]\nn_rpm = "70"\n', "\x00\x01"])
         files["scene.toml"] = text
+        files["diagram.csv"] = rng.choice(_DIAGRAM_CSVS)
         args = ["engine", "{tmp}/scene.toml" if rng.random() < 0.95 else "{tmp}/missing.toml"]
         if rng.random() < 0.3:
             args += ["--points", _num(rng, ["720", "36", "2"], ["1", "1e9", "10000000000"])]
@@ -721,7 +737,7 @@ def _cli_machines(rng):
                     "--spectrum", spec]
         for opt, v in (("--material", ["42CrMo4", "C45"]), ("--face-width", [40, 20]), ("--speed", [1000, 1450]),
                        ("--life-h", [2e4, 1000]), ("--sn-curve", ["iso", "haibach"])):
-            if rng.random() < (0.8 if opt in ("--material", "--face-width") else 0.25):
+            if rng.random() < (0.8 if opt in ("--material", "--face-width", "--speed") else 0.25):
                 args += [opt, _num(rng, v, ["bogus"])]
         if rng.random() < 0.2:
             args += ["--json"]
@@ -768,6 +784,8 @@ def _cli_machines(rng):
                 raise HalfWritten(f"exit 2 but wrote {changed}")
             if "--overwrite" not in argv and any(before[p] == hash(b"precious") and p in changed for p in want):
                 raise HalfWritten("an existing file was overwritten without --overwrite")
+            if code == 2:           # a clean refusal: counted as one
+                raise gd.GearDesignError(lines[0])
             text = out.getvalue()
             if code in (0, 1) and any(w in ("nan", "-inf", "NaN") for w in text.replace(",", " ").split()):
                 return float("nan")
