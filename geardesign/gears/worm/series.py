@@ -214,13 +214,16 @@ def _ranked(cand, x2, margins, names, exists, a_col, eps, gam, ratio, a, objecti
 
 def _values(name, value, integer=False, lo=None, hi=None) -> list:
     """One number or a list of them, each checked (integers for tooth counts), as a sorted list."""
-    items = [value] if np.ndim(value) == 0 else list(np.ravel(np.asarray(value, dtype=object)))
+    try:
+        items = [value] if np.ndim(value) == 0 else list(np.ravel(np.asarray(value, dtype=object)))
+    except ValueError:          # a ragged list: no shape to read
+        raise GearDesignError(f"{name} must be a number or a flat list of them, got {_show(value)}") from None
     if not items:
         raise GearDesignError(f"{name} must be a number or a non-empty list, got {_show(value)}")
     out = []
     for v in items:
         if integer:
-            out.append(int(require_int(name, v, lo, hi)))
+            out.append(int(one_number(name, require_int(name, v, lo, hi))))
         else:
-            out.append(float(require_range(name, v, lo, hi)))
+            out.append(one_number(name, require_range(name, v, lo, hi)))
     return sorted(set(out))

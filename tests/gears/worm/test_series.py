@@ -78,3 +78,12 @@ def test_select_worm_refuses_a_list_where_one_number_belongs(kw, match):
     """Fuzzing found 'TypeError: only 0-dimensional arrays can be converted' for select_worm([1, 2], ...)."""
     with pytest.raises(gd.GearDesignError, match=match):
         gd.select_worm(**kw)
+
+
+@pytest.mark.parametrize("kw, match", [(dict(q=[[1], [2, 3]]), "q must be a number or a flat list of them"),
+                                       (dict(q=[[10.0], [12.5, 14.0]]), "q must be a number or a flat list of them"),
+                                       (dict(z1=[[1, 2], [2]]), "z1 must be a number or a flat list of them")])
+def test_select_worm_refuses_a_ragged_list_by_name(kw, match):
+    """Fuzzing found 'ValueError: setting an array element with a sequence' for q=[[1], [2, 3]]."""
+    with pytest.raises(gd.GearDesignError, match=match):
+        gd.select_worm(12.5, None, m_x=[3.15, 4.0], **kw)
