@@ -111,7 +111,7 @@ def _mech_spec(rng) -> dict:
                 rod_mass_kg=_pick(rng, [4.7, 0.0, 0.7], [-1.0]),
                 rod_inertia_kg_m2=_pick(rng, [0.0617, 0.0, 0.003], [-1.0]),
                 crank_mass_kg=_pick(rng, [10.5, 0.0], [-1.0]),
-                crank_cg_mm=_pick(rng, [25.0, 0.0, -20.0], [1e9]),
+                crank_cg_mm=_pick(rng, lambda g: round(rf * g.choice([0.35, 0.0, -0.3, 10.0]), 6), [1e9, 11 * rf]),
                 cylinder_bore_mm=_pick(rng, [100.0, 86.0, 1.0, 2e3], [0.0, -1.0, None]))
     if rng.random() < 0.2:
         spec["offset_mm"] = _pick(rng, [0.0, 5.0, -5.0, 0.99 * rf], [1e9, rf * 10])
@@ -198,7 +198,7 @@ def _engine(rng):
         kw["axis_tilts_deg"] = _pick(rng, lambda g: tuple(g.uniform(-180, 180) for _ in range(ni)), [(200.0,) * ni])
     if rng.random() < 0.1:
         kw["gravity_m_s2"] = _pick(rng, [0.0, 9.81], [-1.0, 1e3])
-    points = _pick(rng, [720, 36, 2, 7200], [0, 1, -5, 10**8, 2.5])
+    points = _pick(rng, [720, 36, 8, 7200], [0, 2, -5, 10**8, 2.5])
     how = rng.choice(["analyse", "analyse", "engine_torque", "curve", "summary"])
 
     def call():
@@ -219,7 +219,7 @@ def _joint_forces(rng):
     spec = _mech_spec(rng)
     phi = _pick(rng, lambda g: g.choice([[0.0, 90.0, 300.0], list(np.linspace(0, 720, 37)), 45.0, [1e6]]),
                 [[], [float("nan")], "90", [[1, 2], [3]]])
-    kw = dict(n_rpm=_pick(rng, [1700.0, 0.0, 1e-3, 1e4], [-1.0, 1e9]),
+    kw = dict(n_rpm=_pick(rng, [1700.0, 1e-3, 1e4], [0.0, -1.0, 1e9]),
               gas_force_n=_pick(rng, [0.0, 1e4, -500.0, 1e7], [[1.0, 2.0, 3.0, 4.0, 5.0]]))
     if rng.random() < 0.3:
         kw["gravity_m_s2"] = _pick(rng, [0.0, 9.81], [-1.0])
@@ -236,7 +236,8 @@ def _joint_forces(rng):
 # --- spectra and service life ---------------------------------------------------------------
 
 def _bins(rng, n):
-    return [_pick(rng, lambda g: round(g.choice([1, -1, 1, 1]) * g.uniform(1, 3000), 1), [0.0]) for _ in range(n)]
+    sign = rng.choice([1, 1, 1, -1])        # a quarter of the spectra reverse (they need a mean stress factor)
+    return [_pick(rng, lambda g: round(g.choice([1, sign]) * g.uniform(1, 3000), 1), [0.0]) for _ in range(n)]
 
 
 def _spectrum(rng):
@@ -285,7 +286,7 @@ def _spectrum(rng):
                 return gd.LoadSpectrum.from_csv(path, **kw)
         return f"LoadSpectrum.from_csv({text[:100]!r}, **{kw})", make
     pts = rng.choice([721, 361, 50, 2])
-    span = rng.choice([720.0, 360.0, 100.0])
+    span = rng.choice([720.0, 360.0, 720.0, 360.0, 100.0])
     kw = dict(n_rpm=_pick(rng, [1700.0, 1e-3, 1e4], [0.0]),
               teeth=_pick(rng, [(17, 26), (20, 60), (13, 13), (101, 103)], [(0, 26), (17,), (17.5, 26), "x"]))
     if rng.random() < 0.3:
@@ -326,7 +327,7 @@ def _pair_life(rng):
         kw["life_h"] = _pick(rng, [None, 2e4, 1e-3, 1e7], [0.0, -1.0, 1e30])
     if rng.random() < 0.3:
         kw["sn_curve"] = _pick(rng, ["iso", "original", "elementary", "haibach"], ["", "nope"])
-    if rng.random() < 0.2:
+    if rng.random() < 0.6:
         kw["mean_stress_factor"] = _pick(rng, [0.7, 1.0], [0.0, 2.0, -1.0])
     mat = _pick(rng, ["42CrMo4", "18CrNiMo7-6", "C45", "16MnCr5"], ["", "nope", 42])
     how = rng.choice(["life", "life", "pair_life"])
@@ -350,7 +351,9 @@ def _damage_optimize(rng):
     if rng.random() < 0.3:
         case["life_h"] = _pick(rng, [2e4, 1.0, 1e6], [0.0, -1.0])
     if rng.random() < 0.2:
-        case["D_max"] = _pick(rng, [1.0, 0.5, 10.0], [0.0, -1.0])
+        case["damage_max"] = _pick(rng, [1.0, 0.5, 10.0], [0.0, -1.0, 11.0])
+    if rng.random() < 0.6:
+        case["mean_stress_factor"] = _pick(rng, [0.7, 1.0], [0.0, 2.0])
     if rng.random() < 0.1:
         case["bogus"] = 1
     kw = dict(m=_pick(rng, [4.0, 2.0, 8.0], [0.0]), objective=rng.choice(["max_x_sum", "balanced_sliding", None]),
@@ -509,6 +512,9 @@ def _shaft_model(rng):
                   fx_n=_pick(rng, [0.0, 500.0], []), y_mm=_pick(rng, [0.0, 70.0], []),
                   torque_nm=_pick(rng, [0.0, 120.0, -120.0], []), mass_kg=_pick(rng, [0.0, 1.5], [-1.0]))
              for _ in range(rng.choice([0, 1, 2, 3]))]
+    torque = sum(ld["torque_nm"] for ld in loads if isinstance(ld["torque_nm"], float))
+    if loads and torque and rng.random() < 0.9:        # the output torque where the shaft leaves it
+        loads.append(dict(x_mm=L, torque_nm=-torque))
     axial = _pick(rng, [0, 1], [5, -1, 1.5]) if rng.random() < 0.2 else 0
     return sections, supports, loads, axial
 
@@ -542,8 +548,9 @@ def _shaft(rng):
             return a
         ns = []
         for x, kind, r in notches:
-            notch = gd.Notch(kind, r_mm=r) if isinstance(kind, str) and kind in ("shoulder", "groove") else \
-                gd.Notch(kind)
+            named = kind if isinstance(kind, str) else ""
+            notch = (gd.Notch(kind, r_mm=r) if named == "shoulder" else gd.Notch(kind, r_mm=r, t_mm=2 * r)
+                     if named == "groove" else gd.Notch(kind))
             ns.append(gd.ShaftNotch(min(x, model.length_mm) if isinstance(x, float) else x, notch))
         s = gd.shaft_safety(a, ns, mat, **kw)
         s.table, s.to_dict()
@@ -556,13 +563,15 @@ def _stage_efficiency(rng):
     _set_rate(rng)
     pair = dict(m=_pick(rng, [3.0, 1.0, 10.0]), z1=_pick(rng, [21, 17, 40]), z2=_pick(rng, [64, 26, 100]),
                 x1=0.3, x2=0.2, beta_deg=_pick(rng, [0.0, 12.0, 30.0]),
-                face_width_mm=_pick(rng, [40.0, 5.0, 300.0, None], [0.0, -1.0]))
+                face_width_mm=_pick(rng, [40.0, 5.0, 300.0], [0.0, -1.0, None]))
     load = dict(power_kw=_pick(rng, [15.0, 1e-3, 1e3], [0.0, -1.0]), n_rpm=_pick(rng, [1450.0, 1.0, 1e4], [0.0]))
-    oil = (_pick(rng, [100.0, 32.0, 680.0], [0.0, -1.0]), _pick(rng, [11.1, 5.4, 40.0], [0.0, 200.0]))
+    oil = _pick(rng, [(100.0, 11.1), (32.0, 5.4), (680.0, 40.0)], [(0.0, 11.1), (-1.0, 5.4), (100.0, 200.0),
+                                                                    (100.0, 0.0), (float("nan"), 5.0)])
+    oil = oil if isinstance(oil, tuple) else (oil, 10.0)
     temp = _pick(rng, [60.0, 20.0, 120.0, -20.0], [-300.0, 1e4])
     kw = dict(Ra_um=_pick(rng, [0.5, 0.1, 3.0], [0.0, -1.0]))
     if rng.random() < 0.4:
-        kw["bearings"] = _pick(rng, lambda g: [("6307", 1, g.choice([1700.0, 0.0, 1e5])), ("6310", 2, 1700.0)],
+        kw["bearings"] = _pick(rng, lambda g: [("6307", 1, g.choice([1700.0, 1.0, 1e5])), ("6310", 2, 1700.0)],
                                [[("bogus", 1, 100.0)], [("6307", 3, 1.0)], [("6307", 1, -1.0)], "6307"])
     if rng.random() < 0.2:
         kw["no_load_loss_w"] = _pick(rng, [0.0, 100.0], [-1.0])

@@ -16,7 +16,7 @@ from ..results import Result, compact_repr
 from ..validate import hint_unknown_arguments, one_number, require_count, require_finite, require_range
 from .cylinders import (CYLINDERS_MAX, crank_pin_torques, even_phases, excess_work, firing_phases,
                         fluctuation_coefficient, journal_torques, reversal_angles)
-from .kinematics import crank_speed, state
+from .kinematics import SPEED_RANGE_RPM, crank_speed, state
 from .kinetostatics import GRAVITY_M_S2, forces_from_state
 from .pressure import ATMOSPHERE_MPA, PRESSURE_RANGE_MPA, IndicatorDiagram, gas_force
 from .slider_crank import INERTIA_MAX_KG_M2, SliderCrank
@@ -24,7 +24,6 @@ from .slider_crank import INERTIA_MAX_KG_M2, SliderCrank
 __all__ = ["Engine", "EngineTorque", "TorqueCurve", "engine_torque", "POINTS_RANGE", "SPEED_RANGE_RPM"]
 
 POINTS_RANGE = (8, 100_000)         # samples over the cycle (100 000: 0.0072° steps over 720°)
-SPEED_RANGE_RPM = (0.0, 1e5)
 
 
 @dataclass(frozen=True, eq=False)

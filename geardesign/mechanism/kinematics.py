@@ -33,6 +33,7 @@ __all__ = ["crank_speed", "rod_angle_deg", "piston_position", "piston_displaceme
            "rod_cg_acceleration", "check_lengths", "State", "state", "cg_acceleration"]
 
 MM = 1e-3   # mm -> m: lengths come in mm, speeds go out in m/s
+SPEED_RANGE_RPM = (0.0, 1e5)     # a crankshaft's speed, rpm (above, ω² overflows nothing but is no engine)
 
 
 def check_lengths(crank_radius_mm, rod_length_mm, offset_mm=0.0) -> tuple[float, float, float]:
@@ -59,7 +60,7 @@ def crank_speed(n_rpm) -> np.ndarray:
     >>> round(float(crank_speed(1700)), 3)       # seed 000 §5.3.3 prints 177.9 (with π = 3.14)
     178.024
     """
-    return math.pi * require_positive("n_rpm", n_rpm, "rpm") / 30.0
+    return math.pi * require_range("n_rpm", n_rpm, *SPEED_RANGE_RPM, lo_open=True, unit="rpm") / 30.0
 
 
 @dataclass(frozen=True, slots=True)

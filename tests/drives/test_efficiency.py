@@ -72,3 +72,10 @@ def test_bearings_that_are_no_list_are_refused_by_name(bearings):
     """Fuzzing found 'TypeError: iteration over a 0-d array' for bearings=np.array(100.0)."""
     with pytest.raises(GearDesignError, match="bearings must be a list of BearingLoad items"):
         stage_efficiency(PAIR, Load(power_kw=15, n_rpm=1450), Lubricant(100, 11.1), 60.0, bearings=bearings)
+
+
+@pytest.mark.parametrize("lubrication", [__import__("numpy").array([]), ["oil_bath"], "water"])
+def test_a_lubrication_that_is_no_name_is_refused_by_name(lubrication):
+    """Fuzzing found 'TypeError: unhashable type' for lubrication=np.array([])."""
+    with pytest.raises(GearDesignError, match="lubrication must be one of"):
+        stage_efficiency(PAIR, Load(power_kw=15, n_rpm=1450), Lubricant(100, 11.1), 60.0, lubrication=lubrication)

@@ -235,3 +235,14 @@ def test_one_angle_with_several_gas_forces_broadcasts():
         assert f.crank_pin_x_n[i] == pytest.approx(one.crank_pin_x_n[0], rel=1e-12, abs=1e-9)
     with pytest.raises(GearDesignError, match="do not broadcast"):
         joint_forces(mech, [0.0, 30.0], 1700, gas)
+
+
+@pytest.mark.parametrize("n_rpm", [1e308, 1e6, float("inf"), 0.0])
+def test_a_speed_beyond_the_range_is_refused_by_name(n_rpm):
+    """Fuzzing found NaN torques from virtual_power_torque at n_rpm = 1e308 (ω² overflows): the crank's speed is
+    checked against (0, 100000] rpm, the engine's range, by every kinematic function."""
+    for fn in (joint_forces, virtual_power_torque):
+        with pytest.raises(GearDesignError, match=r"n_rpm must be (in \(0, 100000\] rpm|finite)"):
+            fn(MECHS[0], [0.0, 90.0], n_rpm)
+    with pytest.raises(GearDesignError, match=r"n_rpm must be (in \(0, 100000\] rpm|finite)"):
+        k.piston_velocity(90.0, 70, 250, n_rpm)
