@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import require_finite, require_range
+from ..validate import one_number, require_finite, require_range
 
 __all__ = ["LoadSpectrum", "equivalent_torque", "application_factor_from_spectrum", "SPECTRUM_COLUMNS",
            "TORQUE_RANGE_NM", "SPEED_RANGE_RPM", "TIME_RANGE_H", "BINS_MAX", "SN_CURVES", "MEAN_STRESS_FACTOR_RANGE"]
@@ -123,7 +123,7 @@ class LoadSpectrum:
                 raise GearDesignError(f"share must sum to 1, got {float(q.sum()):.9g}")
             if duration_h is None:
                 raise GearDesignError("share needs duration_h (the hours the shares divide)")
-            d = float(require_range("duration_h", duration_h, *TIME_RANGE_H, lo_open=True, unit="h"))
+            d = one_number("duration_h", require_range("duration_h", duration_h, *TIME_RANGE_H, lo_open=True, unit="h"))
             time_h = q * d
         return cls(t, n, time_h, on_gear)
 
@@ -199,7 +199,7 @@ class LoadSpectrum:
         T = require_finite("torque_nm", torque_nm).ravel()
         if T.size < 2:
             raise GearDesignError(f"torque_nm must have at least 2 points of the curve, got {T.size}")
-        n = float(require_range("n_rpm", n_rpm, *SPEED_RANGE_RPM, lo_open=True, unit="rpm"))
+        n = one_number("n_rpm", require_range("n_rpm", n_rpm, *SPEED_RANGE_RPM, lo_open=True, unit="rpm"))
         if (angle_deg is None) == (time_s is None):
             raise GearDesignError("give the curve over angle_deg or over time_s, one of them")
         x = require_finite("angle_deg" if time_s is None else "time_s",
@@ -216,7 +216,7 @@ class LoadSpectrum:
         z_on = z[on_gear - 1] if on_gear in (1, 2) else None
         if z_on is None:
             raise GearDesignError(f"on_gear must be 1 or 2, got {on_gear!r}")
-        levels = int(require_range("levels", levels, 1, 10_000))
+        levels = int(one_number("levels", require_range("levels", levels, 1, 10_000)))
         pitch = 360.0 / z_on
         per_period = span / pitch             # meshes in one period of the curve
         m_per = round(per_period)
@@ -325,7 +325,7 @@ def equivalent_torque(torque_nm, cycles, p: float) -> float:
     """
     T = require_range("torque_nm", torque_nm, 0.0, 1e9, unit="N·m").ravel()
     n = require_range("cycles", cycles, 0.0, 1e18).ravel()
-    p = float(require_range("p", p, 0.0, 100.0, lo_open=True))
+    p = one_number("p", require_range("p", p, 0.0, 100.0, lo_open=True))
     if T.shape != n.shape or not n.sum() > 0:
         raise GearDesignError(f"torque_nm and cycles must be one per bin with some cycles, got {T.size} and {n.size}")
     top = float(T.max())
@@ -341,5 +341,5 @@ def application_factor_from_spectrum(equivalent_torque_nm: float, torque_nm: flo
     >>> round(application_factor_from_spectrum(715.0, 500.0), 4)
     1.43
     """
-    T_n = float(require_range("torque_nm", torque_nm, 0.0, 1e9, lo_open=True, unit="N·m"))
-    return float(require_range("equivalent_torque_nm", equivalent_torque_nm, 0.0, 1e9, unit="N·m")) / T_n
+    T_n = one_number("torque_nm", require_range("torque_nm", torque_nm, 0.0, 1e9, lo_open=True, unit="N·m"))
+    return one_number("equivalent_torque_nm", require_range("equivalent_torque_nm", equivalent_torque_nm, 0.0, 1e9, unit="N·m")) / T_n

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import require_finite, require_positive, require_range
+from ..validate import one_number, require_finite, require_positive, require_range
 
 __all__ = ["crank_speed", "rod_angle_deg", "piston_position", "piston_displacement", "piston_velocity",
            "piston_acceleration", "rod_angular_velocity", "rod_angular_acceleration", "crank_pin_acceleration",
@@ -45,9 +45,9 @@ def check_lengths(crank_radius_mm, rod_length_mm, offset_mm=0.0) -> tuple[float,
     ...
     geardesign.errors.GearDesignError: rod_length_mm must exceed crank_radius_mm + |offset_mm| = 70 mm (l/r > 1), got 60
     """
-    r = float(require_positive("crank_radius_mm", crank_radius_mm, "mm"))
-    l_ = float(require_positive("rod_length_mm", rod_length_mm, "mm"))
-    e = float(require_finite("offset_mm", offset_mm))
+    r = one_number("crank_radius_mm", require_positive("crank_radius_mm", crank_radius_mm, "mm"))
+    l_ = one_number("rod_length_mm", require_positive("rod_length_mm", rod_length_mm, "mm"))
+    e = one_number("offset_mm", require_finite("offset_mm", offset_mm))
     if not l_ > r + abs(e):
         raise GearDesignError(f"rod_length_mm must exceed crank_radius_mm + |offset_mm| = {r + abs(e):g} mm "
                               f"(l/r > 1), got {l_:g}")
@@ -177,7 +177,7 @@ def rod_angular_acceleration(crank_angle_deg, crank_radius_mm, rod_length_mm, n_
 def crank_pin_acceleration(crank_angle_deg, crank_radius_mm, n_rpm) -> tuple[np.ndarray, np.ndarray]:
     """(x, y) acceleration of a point of the crank at radius r, −ω²·r·(−sin φ, cos φ) (m/s²; centripetal at
     constant ω)."""
-    r = float(require_positive("crank_radius_mm", crank_radius_mm, "mm"))
+    r = one_number("crank_radius_mm", require_positive("crank_radius_mm", crank_radius_mm, "mm"))
     phi = np.radians(require_finite("crank_angle_deg", crank_angle_deg))
     w = crank_speed(n_rpm)
     return w * w * r * MM * np.sin(phi), -w * w * r * MM * np.cos(phi)
@@ -194,7 +194,7 @@ def rod_cg_acceleration(crank_angle_deg, crank_radius_mm, rod_length_mm, rod_cg_
     -1.0
     """
     r, l_, e = check_lengths(crank_radius_mm, rod_length_mm, offset_mm)
-    k = float(require_range("rod_cg_mm", rod_cg_mm, 0.0, l_, unit="mm")) / l_
+    k = one_number("rod_cg_mm", require_range("rod_cg_mm", rod_cg_mm, 0.0, l_, unit="mm")) / l_
     st = _state(crank_angle_deg, r, l_, e, n_rpm)
     return cg_acceleration(st, r, k)
 

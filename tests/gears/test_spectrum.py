@@ -198,3 +198,17 @@ def test_per_tooth_bins_need_their_pair():
         LoadSpectrum([1.0, 2.0], 100.0, [1.0, 1.0], 1, t, np.array([0, 30]), np.array([1.0, 1.0]), (20, 30))
     s = LoadSpectrum([1.0, 2.0], 100.0, [1.0, 1.0], 1, t, t, np.array([1.0, 1.0]), (20, 30))
     assert s.per_tooth and s.teeth == (20, 30) and list(s.to_frame().columns)[-1] == "meshes"
+
+
+@pytest.mark.parametrize("make, match", [
+    (lambda: LoadSpectrum.from_curve([100.0, 120.0], angle_deg=[0.0, 360.0], n_rpm=[1, 2], teeth=(20, 40)),
+     "n_rpm must be one number"),
+    (lambda: LoadSpectrum.from_curve([100.0, 120.0], angle_deg=[0.0, 360.0], n_rpm=600, teeth=(20, 40),
+                                     levels=np.array([1.0])), "levels must be one number"),
+    (lambda: LoadSpectrum.from_bins([100.0, 50.0], 1000, share=[0.5, 0.5], duration_h=[1, 2]),
+     "duration_h must be one number"),
+])
+def test_a_list_where_one_number_belongs_is_refused_by_name(make, match):
+    """Fuzzing found 'TypeError: only 0-dimensional arrays can be converted to Python scalars' for these."""
+    with pytest.raises(GearDesignError, match=match):
+        make()

@@ -246,3 +246,11 @@ def test_a_speed_beyond_the_range_is_refused_by_name(n_rpm):
             fn(MECHS[0], [0.0, 90.0], n_rpm)
     with pytest.raises(GearDesignError, match=r"n_rpm must be (in \(0, 100000\] rpm|finite)"):
         k.piston_velocity(90.0, 70, 250, n_rpm)
+
+
+def test_one_axis_tilt_as_a_list_is_refused_by_name():
+    """Fuzzing found 'TypeError: only 0-dimensional arrays can be converted' for axis_tilt_deg=np.array([1.0])."""
+    with pytest.raises(GearDesignError, match="axis_tilt_deg must be one number"):
+        virtual_power_torque(MECHS[0], [0.0, 90.0], 1700, axis_tilt_deg=np.array([1.0]))
+    with pytest.raises(GearDesignError, match="gravity_m_s2 must be one number"):
+        joint_forces(MECHS[0], [0.0, 90.0], 1700, gravity_m_s2=[9.81, 0.0])

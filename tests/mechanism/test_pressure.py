@@ -98,3 +98,12 @@ def test_otto_refuses_a_peak_below_the_end_of_compression():
         otto_pressure(0, 70, 250, 1.0)
     d = IndicatorDiagram.otto(70, 250, 7.0, points=360)
     assert d.crank_angle_deg.size == 360 and d.source == "otto_pressure"
+
+
+@pytest.mark.parametrize("strokes", [np.array(100.0), np.array([4]), [4], "4"])
+def test_strokes_that_are_no_number_are_refused_by_name(strokes):
+    """Fuzzing found 'TypeError: unhashable type' for strokes=np.array(100.0) (a dict lookup before any check)."""
+    with pytest.raises(GearDesignError, match="strokes must be 2 or 4"):
+        IndicatorDiagram.otto(45, 150, 10.0, peak_pressure_mpa=7.0, strokes=strokes)
+    with pytest.raises(GearDesignError, match="strokes must be 2 or 4"):
+        IndicatorDiagram([0, 180], [0.1, 1.0], strokes)

@@ -31,7 +31,7 @@ import math
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import require_choice, require_finite, require_range
+from ...validate import one_number, require_choice, require_finite, require_range
 from ..spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES, LoadSpectrum
 from . import root_factors as rf
 from .blocks import BLOCK
@@ -203,7 +203,7 @@ def _mean_stress(value, reverses) -> tuple:
     pair = value if isinstance(value, (tuple, list)) else (value, value)
     if len(pair) != 2:
         raise GearDesignError(f"mean_stress_factor must be Y_M or (Y_M1, Y_M2), got {value!r}")
-    return tuple(float(require_range("mean_stress_factor", v, *MEAN_STRESS_FACTOR_RANGE)) for v in pair)
+    return tuple(one_number("mean_stress_factor", require_range("mean_stress_factor", v, *MEAN_STRESS_FACTOR_RANGE)) for v in pair)
 
 
 def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2=None, face_width_mm,
@@ -227,7 +227,7 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
         raise GearDesignError(f"spectrum must be a geardesign LoadSpectrum, got {type(spectrum).__name__}")
     require_choice("sn_curve", sn_curve, SN_CURVES)
     if life_h is not None:
-        life_h = float(require_range("life_h", life_h, *LIFE_RANGE_H, lo_open=True, unit="h"))
+        life_h = one_number("life_h", require_range("life_h", life_h, *LIFE_RANGE_H, lo_open=True, unit="h"))
     y_m = _mean_stress(mean_stress_factor, spectrum.reverses)
     if options.get("root", True) is not True:
         raise GearDesignError("pair_life rates pitting and root together: root=False is not an option here")
