@@ -412,7 +412,7 @@ def _evaluate(rows, fr, fa, n, life, a1, kappa, e_c, lubrication, s0_min):
     kind = rows["kind"].to_numpy()
     p = np.where(kind == "ball", LIFE_EXPONENT["ball"], LIFE_EXPONENT["roller"])
     C, C0 = rows["C_kn"].to_numpy(dtype=float), rows["C0_kn"].to_numpy(dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):   # a tiny load: an infinite life
         L10 = basic_rating_life(C, loads["P_n"], p)
         L10h = rating_life_hours(L10, n)
         if kappa is not None:

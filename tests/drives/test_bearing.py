@@ -462,3 +462,14 @@ def test_select_bearing_refuses_a_series_that_is_no_name_by_name(series):
     """Fuzzing found 'TypeError: iteration over a 0-d array' for a numpy scalar as the series."""
     with pytest.raises(GearDesignError, match="series must be a series name or a list of them"):
         b.select_bearing(series, 40.0, 3200.0, 1800.0, 650.0, life_h=20000)
+
+
+def test_a_vanishing_load_has_an_infinite_life_without_a_warning():
+    """Fuzzing found a RuntimeWarning (overflow in (C/P)^p) escaping select_bearing at Fr = 1e-300 N: the life is
+    infinite (L10 = (C/P)^p grows without bound as P falls), quietly."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = b.check_bearing("6208", 1e-300, 0.0, 100.0, life_h=1e4)
+        s = b.select_bearing(["NU2", "72B"], 5.0, 1e-300, 0.0, 0.001, life_h=1e6, reliability=99)
+    assert r.ok and r.L10h == math.inf and s.checked.L10h == math.inf
