@@ -116,7 +116,14 @@ class LoadSpectrum:
             c = require_range("cycles", cycles, 0.0, 1e18).ravel()
             if c.size != t.size:
                 raise GearDesignError(f"cycles must be one per bin ({t.size}), got {c.size}")
-            time_h = c / (60.0 * np.asarray(n, dtype=float))
+            with np.errstate(over="ignore"):     # a vanishing speed: hours beyond the range, refused by name
+                time_h = c / (60.0 * np.asarray(n, dtype=float))
+            long = ~(time_h <= TIME_RANGE_H[1])
+            if long.any():
+                i = int(np.flatnonzero(long)[0])
+                raise GearDesignError(f"cycles at n_rpm must give time_h = cycles/(60·n_rpm) in [0, {TIME_RANGE_H[1]:g}] "
+                                      f"h, got {time_h[i]:g} h ({c[i]:g} cycles at {n[min(i, n.size - 1)]:g} rpm, "
+                                      f"bin {i})")
         elif share is not None:
             q = require_range("share", share, 0.0, 1.0).ravel()
             if not math.isclose(float(q.sum()), 1.0, rel_tol=1e-6):

@@ -212,3 +212,15 @@ def test_a_list_where_one_number_belongs_is_refused_by_name(make, match):
     """Fuzzing found 'TypeError: only 0-dimensional arrays can be converted to Python scalars' for these."""
     with pytest.raises(GearDesignError, match=match):
         make()
+
+
+def test_cycles_at_a_vanishing_speed_are_refused_by_name_without_a_warning():
+    """Fuzzing found a RuntimeWarning (overflow in cycles/(60·n)) escaping from_bins at n_rpm = 5e-324."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(GearDesignError, match=r"cycles at n_rpm must give time_h = cycles/\(60·n_rpm\) in "
+                                                  r"\[0, 1e\+09\] h, got inf h \(1 cycles at 4.94066e-324 rpm, bin 0\)"):
+            LoadSpectrum.from_bins([1410.5, 2972.2], 5e-324, cycles=[1.0, 1e9])
+        with pytest.raises(GearDesignError, match=r"got 1\.66667e\+13 h \(1e\+18 cycles at 1000 rpm, bin 1\)"):
+            LoadSpectrum.from_bins([100.0, 50.0], 1000, cycles=[1e6, 1e18])
