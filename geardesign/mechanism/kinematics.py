@@ -33,6 +33,8 @@ __all__ = ["crank_speed", "rod_angle_deg", "piston_position", "piston_displaceme
            "rod_cg_acceleration", "check_lengths", "State", "state", "cg_acceleration"]
 
 MM = 1e-3   # mm -> m: lengths come in mm, speeds go out in m/s
+LENGTH_RANGE_MM = (1e-3, 1e5)    # a crank's and a rod's length, mm: 1 µm to 100 m (a rod of 1e38 mm is as long as
+# the crank's stroke is lost in its last bit: s(φ) = r + l − x rounds to 0 and the cycle's volumes to 0/0)
 SPEED_RANGE_RPM = (0.0, 1e5)     # a crankshaft's speed, rpm (above, ω² overflows nothing but is no engine)
 
 
@@ -45,9 +47,10 @@ def check_lengths(crank_radius_mm, rod_length_mm, offset_mm=0.0) -> tuple[float,
     ...
     geardesign.errors.GearDesignError: rod_length_mm must exceed crank_radius_mm + |offset_mm| = 70 mm (l/r > 1), got 60
     """
-    r = one_number("crank_radius_mm", require_positive("crank_radius_mm", crank_radius_mm, "mm"))
-    l_ = one_number("rod_length_mm", require_positive("rod_length_mm", rod_length_mm, "mm"))
-    e = one_number("offset_mm", require_finite("offset_mm", offset_mm))
+    r = one_number("crank_radius_mm", require_range("crank_radius_mm", crank_radius_mm, *LENGTH_RANGE_MM, unit="mm"))
+    l_ = one_number("rod_length_mm", require_range("rod_length_mm", rod_length_mm, *LENGTH_RANGE_MM, unit="mm"))
+    e = one_number("offset_mm", require_range("offset_mm", offset_mm, -LENGTH_RANGE_MM[1], LENGTH_RANGE_MM[1],
+                                              unit="mm"))
     if not l_ > r + abs(e):
         raise GearDesignError(f"rod_length_mm must exceed crank_radius_mm + |offset_mm| = {r + abs(e):g} mm "
                               f"(l/r > 1), got {l_:g}")
