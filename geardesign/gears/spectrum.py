@@ -73,7 +73,7 @@ class LoadSpectrum:
                                   f"{np.size(self.n_rpm)} and {np.size(self.time_h)}") from None
         if not h.sum() > 0:
             raise GearDesignError("time_h (or cycles, share) must give the spectrum some time: all bins are 0")
-        if self.on_gear not in (1, 2) or isinstance(self.on_gear, bool):
+        if not _gear_number(self.on_gear):
             raise GearDesignError(f"on_gear must be 1 or 2 (the gear the torque and speed are given on), "
                                   f"got {self.on_gear!r}")
         teeth = (self.tooth1, self.tooth2, self.meshes)
@@ -220,7 +220,7 @@ class LoadSpectrum:
         span = float(phi[-1] - phi[0]) if period_deg is None else float(require_range(
             "period_deg", period_deg, 0.0, 1e7, lo_open=True, unit="°"))
         z = _teeth(teeth)
-        z_on = z[on_gear - 1] if on_gear in (1, 2) else None
+        z_on = z[int(on_gear) - 1] if _gear_number(on_gear) else None
         if z_on is None:
             raise GearDesignError(f"on_gear must be 1 or 2, got {on_gear!r}")
         levels = int(one_number("levels", require_range("levels", levels, 1, 10_000)))
@@ -317,6 +317,12 @@ def _upper_levels(T, levels: int) -> np.ndarray:
             width = top / levels
             out[sel] = sign * np.minimum(np.ceil(sign * T[sel] / width), levels) * width
     return out
+
+
+def _gear_number(value) -> bool:
+    """True for the gear 1 or 2 (an int, or a float 1.0 or 2.0), False for anything else (an array, a bool)."""
+    return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool) \
+        and value in (1, 2)
 
 
 def equivalent_torque(torque_nm, cycles, p: float) -> float:

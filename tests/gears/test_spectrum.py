@@ -224,3 +224,13 @@ def test_cycles_at_a_vanishing_speed_are_refused_by_name_without_a_warning():
             LoadSpectrum.from_bins([1410.5, 2972.2], 5e-324, cycles=[1.0, 1e9])
         with pytest.raises(GearDesignError, match=r"got 1\.66667e\+13 h \(1e\+18 cycles at 1000 rpm, bin 1\)"):
             LoadSpectrum.from_bins([100.0, 50.0], 1000, cycles=[1e6, 1e18])
+
+
+@pytest.mark.parametrize("on_gear", [np.array([]), np.array([1.0]), [1], True, "1", 3])
+def test_on_gear_that_is_no_gear_number_is_refused_by_name(on_gear):
+    """Fuzzing found 'truth value of an empty array is ambiguous' (from_bins) and 'only integer scalar arrays can
+    be converted to a scalar index' (from_curve) for on_gear given as an array."""
+    with pytest.raises(GearDesignError, match="on_gear must be 1 or 2"):
+        LoadSpectrum.from_bins([100.0, 50.0], 1000, time_h=[1.0, 2.0], on_gear=on_gear)
+    with pytest.raises(GearDesignError, match="on_gear must be 1 or 2"):
+        LoadSpectrum.from_curve([100.0, 120.0], angle_deg=[0.0, 360.0], n_rpm=600, teeth=(20, 40), on_gear=on_gear)
