@@ -86,6 +86,7 @@ INDUCED_AXIAL_FACTOR = 0.5
 SYSTEM_LIFE_SLOPE = {"ball": 10.0 / 9.0, "roller": 9.0 / 8.0}
 # least static safety s0 for normal rotation (NTN CAT. 2203/E Table 3.6, p. A-31): ball 1, roller 1.5
 S0_MIN_NORMAL = {"ball": 1.0, "roller": 1.5}
+S0_MIN_MAX = 100.0        # a least static safety asked for (NTN's table: 0.5 … 3; 0 would divide by zero)
 
 A_ISO_MAX = 50.0          # ISO 281:2007 limits a_ISO to 50
 KAPPA_RANGE = (0.1, 4.0)  # the a_ISO formulas hold for 0.1 <= κ <= 4; above 4 the value at 4 is used
@@ -425,7 +426,7 @@ def _evaluate(rows, fr, fa, n, life, a1, kappa, e_c, lubrication, s0_min):
         Lnmh = a1 * a_iso * L10h
         s0 = static_safety(C0, loads["P0_n"])
     s0_need = np.where(kind == "ball", S0_MIN_NORMAL["ball"], S0_MIN_NORMAL["roller"]) if s0_min is None \
-        else np.full(len(rows), float(s0_min))
+        else np.full(len(rows), one_number("s0_min", require_range("s0_min", s0_min, 0.0, S0_MIN_MAX, lo_open=True)))
     speed = rows[f"speed_{lubrication}_rpm"].to_numpy(dtype=float)
     table = rows[["designation", "series", "bearing_type", "d_mm", "D_mm", "B_mm", "C_kn", "C0_kn", "Cu_kn", "f0"]].copy()
     table = table.assign(e=loads["e"], X=loads["X"], Y=loads["Y"], P_n=loads["P_n"], P0_n=loads["P0_n"],

@@ -473,3 +473,15 @@ def test_a_vanishing_load_has_an_infinite_life_without_a_warning():
         r = b.check_bearing("6208", 1e-300, 0.0, 100.0, life_h=1e4)
         s = b.select_bearing(["NU2", "72B"], 5.0, 1e-300, 0.0, 0.001, life_h=1e6, reliability=99)
     assert r.ok and r.L10h == math.inf and s.checked.L10h == math.inf
+
+
+@pytest.mark.parametrize("s0_min, match", [(0, r"s0_min must be in \(0, 100\], got 0"), (-1.0, r"got -1.0"),
+                                           (float("nan"), "s0_min must be finite"), ("abc", "s0_min must be a number"),
+                                           ([1.0, 2.0], "s0_min must be one number")])
+def test_a_least_static_safety_out_of_range_is_refused_by_name(s0_min, match):
+    """Fuzzing found a RuntimeWarning (divide by zero) escaping check_bearing for s0_min = 0: s0_min was not
+    checked at all ("abc" was a ValueError traceback)."""
+    for call in (lambda: b.check_bearing("30206", 0.001, 1800.0, 1000.0, s0_min=s0_min),
+                 lambda: b.select_bearing("62", 40, 3200.0, 0.0, 650.0, life_h=1e4, s0_min=s0_min)):
+        with pytest.raises(GearDesignError, match=match):
+            call()

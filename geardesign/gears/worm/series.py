@@ -18,10 +18,10 @@ import numpy as np
 from ...catalogs.tables import load_catalog, preferred_numbers
 from ...errors import GearDesignError
 from ...results import RankedTable
-from ...validate import _show, one_number, require_choice, require_int, require_positive, require_range
+from ...validate import _show, one_number, require_choice, require_int, require_range
 from .. import checks as _checks
 from ..rack import require_rack
-from .geometry import FLANK_FORMS, Z1_RANGE, worm_geometry
+from .geometry import FLANK_FORMS, LENGTH_RANGE_MM, Z1_RANGE, worm_geometry
 from .pair import _X2_SENSE, X2_OBJECTIVES, WormPair
 
 __all__ = ["worm_module_series", "worm_center_distance_series", "default_q_values", "select_worm", "WormSelection",
@@ -134,7 +134,9 @@ def select_worm(ratio: float | None = None, a: float | None = None, *, z1=None, 
     if ratio is not None:
         ratio = one_number("ratio", require_range("ratio", ratio, 1.0, 1000.0))
     if a is not None:
-        a = one_number("a (center distance)", require_positive("a (center distance)", a, unit="mm"))
+        # at most the largest worm the lengths allow (a of 1e308 mm overflowed the wheel's diameters)
+        a = one_number("a (center distance)", require_range("a (center distance)", a, 0.0, LENGTH_RANGE_MM[1],
+                                                            lo_open=True, unit="mm"))
     elif m_x is None:
         raise GearDesignError("select_worm needs m_x when no centre distance a is given (the size is free)")
     ratio_tol = one_number("ratio_tol", require_range("ratio_tol", ratio_tol, 0.0, 1.0))

@@ -52,7 +52,7 @@ def test_select_without_a_center_distance_optimises_x2():
     (dict(), ["needs ratio or z2"]),
     (dict(ratio=12.5), ["needs m_x"]),
     (dict(ratio=0.5, a=100), ["ratio", "[1, 1000]"]),
-    (dict(ratio=12.5, a=-1), ["a (center distance)", "> 0"]),
+    (dict(ratio=12.5, a=-1), ["a (center distance)", "(0, 100000] mm", "-1"]),
     (dict(ratio=12.5, a=100, z1=0), ["z1", "[1, 10]"]),
     (dict(ratio=12.5, a=100, objective="fast"), ["objective", "min_abs_x2"]),
     (dict(ratio=12.5, a=100, z1=3, ratio_tol=0.001), ["no z1/z2 within ratio_tol"]),
@@ -87,3 +87,12 @@ def test_select_worm_refuses_a_ragged_list_by_name(kw, match):
     """Fuzzing found 'ValueError: setting an array element with a sequence' for q=[[1], [2, 3]]."""
     with pytest.raises(gd.GearDesignError, match=match):
         gd.select_worm(12.5, None, m_x=[3.15, 4.0], **kw)
+
+
+def test_a_centre_distance_beyond_the_lengths_is_refused_by_name():
+    """Fuzzing found overflow RuntimeWarnings escaping select_worm(12.5, 1e308): a is checked against (0, 1e5] mm."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(gd.GearDesignError, match=r"a \(center distance\) must be in \(0, 100000\] mm, got 1e\+308"):
+            gd.select_worm(12.5, 1e308, ratio_tol=0.05)
