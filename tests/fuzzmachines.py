@@ -298,7 +298,8 @@ def _spectrum(rng):
 
     def make():
         phi = np.linspace(0, span, pts)
-        T = 300 + amp * np.exp(-((phi - 20) / 15) ** 2) if isinstance(amp, float) else amp
+        with np.errstate(invalid="ignore"):      # inf·0 makes a NaN for the curve to refuse
+            T = 300 + amp * np.exp(-((phi - 20) / 15) ** 2) if isinstance(amp, float) else amp
         if use_time:
             return gd.LoadSpectrum.from_curve(T, time_s=phi / 1e4, **kw)
         return gd.LoadSpectrum.from_curve(T, angle_deg=phi, **kw)
@@ -796,7 +797,8 @@ def _cli_machines(rng):
             if code == 2:           # a clean refusal: counted as one
                 raise gd.GearDesignError(lines[0])
             text = out.getvalue()
-            if code in (0, 1) and any(w in ("nan", "-inf", "NaN") for w in text.replace(",", " ").split()):
+            # NaN only: an infinite life is an answer, and worm's ranking shows -inf for a wheel that does not exist
+            if code in (0, 1) and any(w in ("nan", "NaN") for w in text.replace(",", " ").split()):
                 return float("nan")
             return code
     return "geardesign " + " ".join(repr(a) if not a or " " in a else a for a in args) + \
