@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import GearDesignError
+from ..files import read_text_bounded
 from ..validate import one_number, require_finite, require_range
 
 __all__ = ["LoadSpectrum", "equivalent_torque", "application_factor_from_spectrum", "SPECTRUM_COLUMNS",
@@ -25,6 +26,7 @@ __all__ = ["LoadSpectrum", "equivalent_torque", "application_factor_from_spectru
 TORQUE_RANGE_NM = (-1e9, 1e9)       # as a Load's, signed (the other flank)
 SPEED_RANGE_RPM = (0.0, 1e6)        # open below (a Load's)
 TIME_RANGE_H = (0.0, 1e9)
+SPECTRUM_BYTES_MAX = 16 << 20       # a spectrum file: BINS_MAX rows of a few numbers, with room to spare
 BINS_MAX = 100_000                  # rows of a spectrum: a measured history's levels × teeth, with room to spare
 # the columns of a spectrum's CSV file: torque_nm and n_rpm, and one of time_h, cycles, share
 SPECTRUM_COLUMNS = ("torque_nm", "n_rpm", "time_h", "cycles", "share")
@@ -139,13 +141,8 @@ class LoadSpectrum:
         """A spectrum from a CSV file with a header: ``torque_nm``, ``n_rpm`` (or the ``n_rpm`` argument for
         all bins) and one of ``time_h``, ``cycles``, ``share`` (with ``duration_h``). A bad cell is refused
         naming its row (the header is row 1) and column."""
-        try:
-            with open(path, newline="", encoding="utf-8") as f:
-                rows = list(csv.reader(line for line in f if line.strip() and not line.lstrip().startswith("#")))
-        except OSError as e:
-            raise GearDesignError(f"spectrum file {str(path)!r} cannot be read: {e.strerror}") from None
-        except UnicodeDecodeError:
-            raise GearDesignError(f"spectrum file {str(path)!r} is not UTF-8 text") from None
+        text = read_text_bounded(path, "spectrum file", SPECTRUM_BYTES_MAX)
+        rows = list(csv.reader(line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")))
         if len(rows) < 2:
             raise GearDesignError(f"spectrum file {str(path)!r} needs a header and at least one row")
         header = [h.strip() for h in rows[0]]

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import GearDesignError
+from ..files import read_text_bounded
 from ..validate import one_number, require_count, require_finite, require_positive, require_range
 from .kinematics import check_lengths, piston_displacement
 
@@ -23,6 +24,7 @@ __all__ = ["IndicatorDiagram", "gas_force", "piston_area", "otto_pressure", "cyc
 STROKES = {2: 360.0, 4: 720.0}    # strokes per cycle -> the cycle's crank angle, degrees
 ATMOSPHERE_MPA = 0.101325         # standard atmosphere (ISO 2533): the crankcase pressure by default
 PRESSURE_RANGE_MPA = (0.0, 100.0)  # absolute; 100 MPa is beyond any firing pressure (diesels reach ~25 MPa)
+DIAGRAM_BYTES_MAX = 16 << 20   # an indicator diagram: a measured cycle of some 10^5 points at most
 
 
 def piston_area(cylinder_bore_mm) -> np.ndarray:
@@ -99,11 +101,8 @@ class IndicatorDiagram:
         """Read a CSV file with the columns ``crank_angle_deg`` and ``pressure_mpa`` (absolute)."""
         import csv
 
-        try:
-            with open(path, newline="", encoding="utf-8") as fh:
-                rows = list(csv.DictReader(fh))
-        except OSError as exc:
-            raise GearDesignError(f"indicator diagram {str(path)!r}: cannot read it ({exc.strerror})") from None
+        text = read_text_bounded(path, "indicator diagram", DIAGRAM_BYTES_MAX)
+        rows = list(csv.DictReader(text.splitlines()))
         if not rows or not {"crank_angle_deg", "pressure_mpa"} <= set(rows[0]):
             raise GearDesignError(f"indicator diagram {str(path)!r}: expected the columns crank_angle_deg, "
                                   f"pressure_mpa, got {', '.join(rows[0]) if rows else 'no rows'}")

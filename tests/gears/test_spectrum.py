@@ -234,3 +234,19 @@ def test_on_gear_that_is_no_gear_number_is_refused_by_name(on_gear):
         LoadSpectrum.from_bins([100.0, 50.0], 1000, time_h=[1.0, 2.0], on_gear=on_gear)
     with pytest.raises(GearDesignError, match="on_gear must be 1 or 2"):
         LoadSpectrum.from_curve([100.0, 120.0], angle_deg=[0.0, 360.0], n_rpm=600, teeth=(20, 40), on_gear=on_gear)
+
+
+def test_a_spectrum_that_is_no_text_file_is_refused_by_name(tmp_path):
+    """Fuzzing found `geardesign pair --spectrum /dev/zero` reading without end (unbounded work): a device, a folder
+    or a file beyond SPECTRUM_BYTES_MAX is refused before it is read whole."""
+    from geardesign.gears import spectrum as sp
+    for path in ("/dev/zero", tmp_path):
+        with pytest.raises(GearDesignError, match="spectrum file .* is not a regular file"):
+            LoadSpectrum.from_csv(path, n_rpm=1000)
+    big = tmp_path / "big.csv"
+    with open(big, "wb") as fh:
+        fh.write(b"torque_nm,time_h\n")
+        fh.seek(sp.SPECTRUM_BYTES_MAX)
+        fh.write(b"1,1\n")
+    with pytest.raises(GearDesignError, match="is larger than 16 MiB"):
+        LoadSpectrum.from_csv(big, n_rpm=1000)
