@@ -550,7 +550,8 @@ def _shaft(rng):
         ns = []
         for x, kind, r in notches:
             named = kind if isinstance(kind, str) else ""
-            notch = (gd.Notch(kind, r_mm=r) if named == "shoulder" else gd.Notch(kind, r_mm=r, t_mm=2 * r)
+            t = 2 * r if isinstance(r, float) else r
+            notch = (gd.Notch(kind, r_mm=r) if named == "shoulder" else gd.Notch(kind, r_mm=r, t_mm=t)
                      if named == "groove" else gd.Notch(kind))
             ns.append(gd.ShaftNotch(min(x, model.length_mm) if isinstance(x, float) else x, notch))
         s = gd.shaft_safety(a, ns, mat, **kw)

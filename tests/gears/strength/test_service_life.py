@@ -313,3 +313,10 @@ def test_pair_life_refuses_designs_without_a_shape_by_name(m, match):
     spec = LoadSpectrum.from_bins([241.0], 1000.0, time_h=[100.0])
     with pytest.raises(GearDesignError, match=match):
         pair_life(m, [20, 21], 80, 0.3, 0.1, spectrum=spec, material1="42CrMo4", face_width_mm=20.0)
+
+
+def test_pair_life_refuses_an_empty_list_of_teeth_by_name():
+    """Fuzzing found 'ValueError: zero-size array to reduction operation maximum' for z1=[]."""
+    spec = LoadSpectrum.from_bins([241.0], 1000.0, time_h=[100.0])
+    with pytest.raises(GearDesignError, match="z1 and z2 must each give a tooth count, got 0 and 1 values"):
+        pair_life(20.0, [], 26, 0.3, 0.1, spectrum=spec, material1="42CrMo4", face_width_mm=40.0)
