@@ -16,7 +16,7 @@ from pathlib import Path
 from .errors import GearDesignError
 
 __all__ = ["check_output_path", "check_output_dir", "write_file_atomic", "write_dir_atomic", "all_or_nothing",
-           "parents_made", "NAME_MAX_BYTES"]
+           "parents_made", "NAME_MAX_BYTES", "read_text_bounded"]
 
 # The longest file name (one path component) the common file systems take: ext4, XFS, APFS, NTFS
 # (255 UTF-16 units there); the temporary names below are kept within it too.
@@ -242,3 +242,26 @@ def write_dir_atomic(path, write) -> Path:
     if old is not None:
         shutil.rmtree(old, ignore_errors=True)
     return given
+
+
+def read_text_bounded(path, what: str, max_bytes: int) -> str:
+    """The UTF-8 text of the regular file ``path`` of at most ``max_bytes`` (``what`` names it in the errors): a
+    device such as /dev/zero, a folder or a larger file is refused before it is read whole (no unbounded read)."""
+    shown = repr(str(path))
+    try:
+        if os.path.exists(path) and not os.path.isfile(path):
+            raise GearDesignError(f"{what} {shown} is not a regular file (a CSV text file is expected)")
+        with open(path, "rb") as fh:
+            raw = fh.read(max_bytes + 1)
+    except GearDesignError:                 # a ValueError too: not the one below
+        raise
+    except OSError as e:
+        raise GearDesignError(f"{what} {shown} cannot be read: {e.strerror or e}") from None
+    except (TypeError, ValueError):         # not a path at all (None, a number, a NUL in the name)
+        raise GearDesignError(f"{what} must be a file path, got {path!r}") from None
+    if len(raw) > max_bytes:
+        raise GearDesignError(f"{what} {shown} is larger than {max_bytes >> 20} MiB")
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError:
+        raise GearDesignError(f"{what} {shown} is not UTF-8 text") from None

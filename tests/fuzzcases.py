@@ -478,12 +478,15 @@ TARGETS = {
 
 def _surfaces():
     """The targets of tests/fuzzsurfaces.py (files, links, a command's outputs, Ctrl-C) and of
-    tests/fuzzstrength.py (the load-capacity surfaces, ISO 6336), added here
+    tests/fuzzstrength.py (the load-capacity surfaces, ISO 6336) and of tests/fuzzmachines.py (the engine,
+    spectra and life, worms, bearings, shafts, efficiency and their commands), added here
     so that one TARGETS lists every surface; imported late, as they use this module's helpers."""
+    from tests.fuzzmachines import MACHINES
     from tests.fuzzstrength import STRENGTH
     from tests.fuzzsurfaces import SURFACES
     TARGETS.update(SURFACES)
     TARGETS.update(STRENGTH)
+    TARGETS.update(MACHINES)
 
 
 # --- judging a result -----------------------------------------------------------------------

@@ -227,7 +227,15 @@ def _pair_strength(rng):
     def call():
         # without geometry= every design is validated: a NaN in any array is one passed off as a result,
         # but for the load cycles N_L, NaN by design (not applicable) when no life is given
-        out = pair_strength(load=Load(**load), material1=_make_material(mat), face_width_mm=width, **a, **opts)
+        # the options one way (findings36): the StrengthOptions' fields in options=, the rest as keywords
+        from dataclasses import fields as _fields
+        from geardesign.gears.strength.options import StrengthOptions
+        names = {f.name for f in _fields(StrengthOptions)}
+        grouped = {k: v for k, v in opts.items() if k in names}
+        rest = {k: v for k, v in opts.items() if k not in names}
+        if grouped:
+            rest["options"] = StrengthOptions(**grouped)
+        out = pair_strength(load=Load(**load), material1=_make_material(mat), face_width_mm=width, **a, **rest)
         return {k: v for k, v in out.items() if not (k in ("N_L1", "N_L2") and load.get("life_h") is None)}
     shown = width if np.ndim(width) == 0 else "array"
     return f"pair_strength(**{what}, width={shown}, Load(**{load}), {mat}, **{opts})", call

@@ -186,13 +186,22 @@ sys.argv = ["geardesign"] + argv
 runpy.run_module("geardesign", run_name="__main__", alter_sys=True)
 """
 _MODULES = ["numpy", "pandas", "scipy", "matplotlib", "geardesign.cli.pair", "geardesign.cli.shift",
-            "geardesign.gears.geometry", "geardesign.errors", "argparse", "cvxpy"]
+            "geardesign.gears.geometry", "geardesign.errors", "argparse", "cvxpy", "geardesign.cli.engine",
+            "geardesign.cli.worm", "geardesign.cli.bearing", "geardesign.cli.shaft", "geardesign.mechanism.engine",
+            "geardesign.drives.bearing", "geardesign.drives.shaft_beam", "geardesign.gears.worm.series"]
 
 
 def _ctrl_c(rng):
     """Ctrl-C at start-up: while a given module imports (deterministic) or after a random delay."""
     argv = rng.choice([["pair", "--module", "2", "--z1", "17", "--z2", "26"], ["shift", "--z1", "17", "--z2", "26"],
-                       ["teeth", "--ratio", "2", "--module", "2", "--z1-min", "20", "--z1-max", "21"]])
+                       ["teeth", "--ratio", "2", "--module", "2", "--z1-min", "20", "--z1-max", "21"],
+                       ["engine", os.path.join(_ROOT, "examples", "seed000_engine.toml"), "--csv", "t.csv", "--plot",
+                        "t.png"], ["worm", "--ratio", "12.5", "--center-distance", "125"],
+                       ["bearing", "--series", "62,63", "--bore", "40", "--fr", "3200", "--speed", "650",
+                        "--life-h", "20000"],
+                       ["shaft", "--sections", "40x35,120x45,40x35", "--supports", "20,180", "--load",
+                        "x=100,fy=-1000,torque=120", "--load", "x=200,torque=-120", "--notch", "x=100,kind=key",
+                        "--plot", "s.png"]])
     at = rng.choice(_MODULES + ["delay"] * 3)
     delay = round(rng.uniform(0.05, 1.0), 3)
 

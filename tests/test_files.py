@@ -153,3 +153,20 @@ def test_a_link_to_a_file_stays_a_link(tmp_path):
     write_file_atomic(link, write)
     assert link.is_symlink() and real.read_text() == "new"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["link.csv", "real.csv"]
+
+
+def test_read_text_bounded_refuses_devices_folders_big_files_and_non_text(tmp_path):
+    from geardesign.files import read_text_bounded
+    ok = tmp_path / "a.csv"
+    ok.write_text("x\n1\n", encoding="utf-8")
+    assert read_text_bounded(ok, "table", 1 << 20) == "x\n1\n"
+    for path, match in (("/dev/zero", "not a regular file"), (tmp_path, "not a regular file"),
+                        (tmp_path / "none.csv", "cannot be read: No such file"), (None, "must be a file path")):
+        with pytest.raises(GearDesignError, match=match):
+            read_text_bounded(path, "table", 1 << 20)
+    ok.write_bytes(b"\xff\xfe")
+    with pytest.raises(GearDesignError, match="is not UTF-8 text"):
+        read_text_bounded(ok, "table", 1 << 20)
+    ok.write_bytes(b"x" * (2 << 20) + b"\n")
+    with pytest.raises(GearDesignError, match="larger than 1 MiB"):
+        read_text_bounded(ok, "table", 1 << 20)

@@ -17,10 +17,12 @@ from hypothesis import given, settings, strategies as st
 
 import geardesign as gd
 from tests.fuzzcases import TARGETS, run_case
+from tests.fuzzmachines import MACHINES
 from tests.fuzzstrength import STRENGTH
 
 _SLOW = ("scene", "cli", "shift_atlas", "feasible_region", "profile_files", "cli_files", "ctrl_c")
-_FAST = [t for t in TARGETS if t not in _SLOW and t not in STRENGTH]     # the load-capacity ones: their own sample
+# the load-capacity and machine-element ones: their own samples
+_FAST = [t for t in TARGETS if t not in _SLOW and t not in STRENGTH and t not in MACHINES]
 
 
 def _assert_good(target, seed):
@@ -54,6 +56,18 @@ def test_strength_surfaces_answer_or_refuse_cleanly(target, seed):
     atlases, planetary sets, drives, reports and commands with a load are left to tools/fuzz.py, being
     slow): a result with finite numbers or one clean refusal, every case (the classes the first runs found
     are fixed; their reproducers are tests/test_strength_defects.py)."""
+    outcome, desc, detail = run_case(target, seed, time_limit_s=60.0)
+    assert outcome in ("ok", "clean_error"), f"{outcome}: {desc}\n  -> {detail}"
+
+
+@settings(max_examples=150, deadline=None, derandomize=True, database=None)
+@given(target=st.sampled_from(sorted(MACHINES)), seed=st.integers(0, 10**9))
+def test_machine_elements_answer_or_refuse_cleanly(target, seed):
+    """The machine-element surfaces (tests/fuzzmachines.py): the engine and slider-crank, load spectra and service
+    life (with the damage checks of optimize_shifts), worm pairs, bearings, shafts, stage efficiency and the commands
+    engine, worm, bearing, shaft, pair/shift --spectrum: a result with finite numbers (an infinite life or safety
+    where nothing loads them) or one clean refusal, every case (the classes the first runs found are fixed, each with
+    its regression test in the mirror test file of the module)."""
     outcome, desc, detail = run_case(target, seed, time_limit_s=60.0)
     assert outcome in ("ok", "clean_error"), f"{outcome}: {desc}\n  -> {detail}"
 

@@ -5,11 +5,16 @@
 prints the count of each outcome (ok, clean_error, traceback, nan_result, hang, half_written,
 fails_checks, feasibility_tol, warning, link_replaced; see tests/fuzzcases.py) per target and
 overall, and the first reproducers of every failure. The generator and the rule are in
-tests/fuzzcases.py, tests/fuzzsurfaces.py and tests/fuzzstrength.py (the CI sample is
-tests/test_fuzz.py); the load-capacity targets alone:
+tests/fuzzcases.py, tests/fuzzsurfaces.py, tests/fuzzstrength.py and tests/fuzzmachines.py (the CI
+sample is tests/test_fuzz.py); the load-capacity targets alone:
 
     python tools/fuzz.py --targets strength_pair,pair_strength,strength_solvers,strength_planetary,\
 strength_cli,strength_drive,strength_report
+
+the machine elements (engine, spectra and life, worms, bearings, shafts, efficiency, their commands):
+
+    python tools/fuzz.py --targets engine,joint_forces,load_spectrum,pair_life,damage_optimize,worm,\
+select_worm,bearing,shaft,stage_efficiency,cli_machines
 
 Every file a case writes goes into a temporary folder: the run makes a private one, points the
 temporary directory of this process and its children (TMPDIR) at it, and counts a case that

@@ -189,10 +189,14 @@ def spectrum_from_args(args) -> dict:
         return {}
     from ..gears.spectrum import LoadSpectrum   # here: only a command with a spectrum reads it
 
+    from ..files import read_text_bounded
+    from ..gears.spectrum import SPECTRUM_BYTES_MAX
+
     try:
-        with open(path, encoding="utf-8") as f:
-            has_speed = "n_rpm" in next((line for line in f if line.strip() and not line.lstrip().startswith("#")),
-                                        "").split(",")
+        # bounded: a device such as /dev/zero is one endless line
+        text = read_text_bounded(path, "spectrum file", SPECTRUM_BYTES_MAX)
+        has_speed = "n_rpm" in next((line for line in text.splitlines() if line.strip()
+                                     and not line.lstrip().startswith("#")), "").split(",")
         spec = LoadSpectrum.from_csv(path, n_rpm=None if has_speed else args.speed,
                                      duration_h=args.life_h, on_gear=getattr(args, "on_gear", 1))
     except (GearDesignError, OSError, UnicodeDecodeError) as exc:

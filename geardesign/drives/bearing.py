@@ -36,7 +36,7 @@ from ..catalogs.tables import load_catalog
 from ..errors import GearDesignError
 from ..results import RankedTable, Result
 from ..renamed import renamed_keywords
-from ..validate import one_number, require_choice, require_range
+from ..validate import broadcast_inputs, one_number, require_choice, require_range
 
 __all__ = ["SERIES", "BEARING_KINDS", "LIFE_EXPONENT", "RELIABILITY_FACTORS", "ANGULAR_CONTACT_40",
            "S0_MIN_NORMAL", "basic_rating_life", "rating_life_hours", "deep_groove_factors",
@@ -87,10 +87,12 @@ INDUCED_AXIAL_FACTOR = 0.5
 SYSTEM_LIFE_SLOPE = {"ball": 10.0 / 9.0, "roller": 9.0 / 8.0}
 # least static safety s0 for normal rotation (NTN CAT. 2203/E Table 3.6, p. A-31): ball 1, roller 1.5
 S0_MIN_NORMAL = {"ball": 1.0, "roller": 1.5}
+S0_MIN_MAX = 100.0        # a least static safety asked for (NTN's table: 0.5 … 3; 0 would divide by zero)
 
 A_ISO_MAX = 50.0          # ISO 281:2007 limits a_ISO to 50
 KAPPA_RANGE = (0.1, 4.0)  # the a_ISO formulas hold for 0.1 <= κ <= 4; above 4 the value at 4 is used
 FORCE_MAX_N = 1e8
+TAPERED_Y_MAX = 10.0     # a tapered roller bearing's axial load factor Y (0.4·cot α > 10 is α < 2.3°)
 SPEED_MAX_RPM = 1e6
 LIFE_MAX_H = 1e7
 LUBRICATIONS = ("grease", "oil")
@@ -275,9 +277,16 @@ def tapered_axial_loads(fr_a_n, fr_b_n, Y_a, Y_b, ka_n=0.0):
     >>> [round(float(v), 2) for v in fa]
     [1.45, 1.45]
     """
+    fr_a_n, fr_b_n, Y_a, Y_b, ka = broadcast_inputs(
+        fr_a_n=require_range("fr_a_n", fr_a_n, 0.0, FORCE_MAX_N, unit="N"),
+        fr_b_n=require_range("fr_b_n", fr_b_n, 0.0, FORCE_MAX_N, unit="N"),
+        # Y = 0.4·cot α: 0.69 … 2.3 for the contact angles 10° … 30° of the catalogs; 0 would divide by zero
+        Y_a=require_range("Y_a", Y_a, 0.0, TAPERED_Y_MAX, lo_open=True),
+        Y_b=require_range("Y_b", Y_b, 0.0, TAPERED_Y_MAX, lo_open=True),
+        ka_n=require_range("ka_n", ka_n, -FORCE_MAX_N, FORCE_MAX_N, unit="N"))
     fa_ind = induced_axial_force(fr_a_n, Y_a)
     fb_ind = induced_axial_force(fr_b_n, Y_b)
-    ka = np.asarray(ka_n, dtype=float)
+    ka = ka.astype(float)
     # with Ka toward B (k >= 0): A sets the loads when its induced load plus Ka is at least B's; toward A the
     # same with the roles swapped
     toward_b = ka >= 0
@@ -327,6 +336,9 @@ def bearing_catalog(series) -> pd.DataFrame:
     """The catalog rows of one or more series (``"62"``, ``"63"``, ``"72B"``, ``"73B"``, ``"NU2"``, ``"NU3"``,
     the tapered roller ``"302"``, ``"303"``, ``"320X"``, ``"322"``, ``"323"``, or a list of them), with a column
     ``kind`` ("ball" or "roller")."""
+    if not isinstance(series, (str, list, tuple)) and np.ndim(series) == 0:
+        raise GearDesignError(f"series must be a series name or a list of them ({', '.join(SERIES)}), got "
+                              f"{series!r}")
     names = [series] if isinstance(series, str) else list(series)
     if not names:
         raise GearDesignError(f"series must name at least one of {', '.join(SERIES)}")
@@ -373,7 +385,8 @@ def bearing_loads(rows: pd.DataFrame, F_r_n, F_a_n):
     nu = t == "cylindrical_roller"
     e[nu] = np.inf                                     # P = Fr; any axial load is refused below
     axial_ok = np.isfinite(e) | (nu & (Fa == 0))
-    P = np.where(axial_ok, equivalent_dynamic_load(Fr, Fa, np.where(np.isfinite(e), e, np.inf), X, Y), np.nan)
+    with np.errstate(invalid="ignore"):      # inf·0 (an NU row under a pure axial load) is masked by axial_ok
+        P = np.where(axial_ok, equivalent_dynamic_load(Fr, Fa, np.where(np.isfinite(e), e, np.inf), X, Y), np.nan)
     P0 = np.where(axial_ok, equivalent_static_load(Fr, Fa, X0, Y0), np.nan)
     with np.errstate(invalid="ignore", over="ignore"):
         below = np.isinf(e) | (Fa <= np.nan_to_num(e, nan=np.inf) * Fr)   # P = Fr: the X and Y in use are 1 and 0
@@ -405,7 +418,7 @@ def _evaluate(rows, fr, fa, n, life, a1, kappa, e_c, lubrication, s0_min):
     kind = rows["kind"].to_numpy()
     p = np.where(kind == "ball", LIFE_EXPONENT["ball"], LIFE_EXPONENT["roller"])
     C, C0 = rows["C_kn"].to_numpy(dtype=float), rows["C0_kn"].to_numpy(dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):   # a tiny load: an infinite life
         L10 = basic_rating_life(C, loads["P_n"], p)
         L10h = rating_life_hours(L10, n)
         if kappa is not None:
@@ -418,7 +431,7 @@ def _evaluate(rows, fr, fa, n, life, a1, kappa, e_c, lubrication, s0_min):
         Lnmh = a1 * a_iso * L10h
         s0 = static_safety(C0, loads["P0_n"])
     s0_need = np.where(kind == "ball", S0_MIN_NORMAL["ball"], S0_MIN_NORMAL["roller"]) if s0_min is None \
-        else np.full(len(rows), float(s0_min))
+        else np.full(len(rows), one_number("s0_min", require_range("s0_min", s0_min, 0.0, S0_MIN_MAX, lo_open=True)))
     speed = rows[f"speed_{lubrication}_rpm"].to_numpy(dtype=float)
     table = rows[["designation", "series", "bearing_type", "d_mm", "D_mm", "B_mm", "C_kn", "C0_kn", "Cu_kn", "f0"]].copy()
     table = table.assign(e=loads["e"], X=loads["X"], Y=loads["Y"], P_n=loads["P_n"], P0_n=loads["P0_n"],

@@ -628,8 +628,13 @@ def shaft_safety(analysis, notches, material, *, peak_factor=1.0, torque_amplitu
 
     if not isinstance(analysis, ShaftAnalysis):
         raise GearDesignError(f"analysis must be a ShaftAnalysis, got {type(analysis).__name__}")
-    require_range("peak_factor", peak_factor, 1.0, 100.0)
-    require_range("torque_amplitude", torque_amplitude, 0.0, 10.0)
+    # one number each for the whole shaft (an array would broadcast against the notches, or not at all)
+    peak_factor = one_number("peak_factor", require_range("peak_factor", peak_factor, 1.0, 100.0))
+    torque_amplitude = one_number("torque_amplitude", require_range("torque_amplitude", torque_amplitude, 0.0, 10.0))
+    Rz_um = one_number("Rz_um", require_range("Rz_um", Rz_um, 1.0, 200.0, unit="µm"))
+    K_V = one_number("K_V", require_range("K_V", K_V, 0.5, 3.0))
+    if d_eff_mm is not None:
+        d_eff_mm = one_number("d_eff_mm", require_range("d_eff_mm", d_eff_mm, 1.0, D_EFF_MAX_MM, unit="mm"))
     mat = _material(material)
     hard_surface = require_bool("hard_surface", hard_surface)
     S_min = float(one_number("S_min", require_range("S_min", S_min, 0.0, 100.0, lo_open=True)))

@@ -16,7 +16,7 @@ import pandas as pd
 from ..errors import GearDesignError
 from ..gears.efficiency import Lubricant, MeshLoss, mesh_loss
 from ..results import Result
-from ..validate import one_number, require_range
+from ..validate import one_number, require_choice, require_range
 from .bearing_friction import K_RS, bearing_friction
 
 __all__ = ["BearingLoad", "StageEfficiency", "stage_efficiency"]
@@ -119,8 +119,7 @@ def stage_efficiency(pair, load, lubricant: Lubricant, oil_temperature_c: float,
     t_oil = one_number("oil_temperature_c", require_range("oil_temperature_c", oil_temperature_c, -40.0, 200.0,
                                                           unit="°C"))
     p0 = one_number("no_load_loss_w", require_range("no_load_loss_w", no_load_loss_w, 0.0, 1e9, unit="W"))
-    if lubrication not in K_RS:
-        raise GearDesignError(f"lubrication must be one of {', '.join(K_RS)}, got {lubrication!r}")
+    require_choice("lubrication", lubrication, tuple(K_RS))
     z1, z2 = pair.z1, pair.z2
     if load.on_gear == 1:
         T1, n1 = load.torque_nm, load.n_rpm
@@ -131,6 +130,8 @@ def stage_efficiency(pair, load, lubricant: Lubricant, oil_temperature_c: float,
     eta = float(lubricant.dynamic_viscosity_mpas(t_oil))
     mesh = mesh_loss(pair, T1, n1, eta, Ra_um, lubricant.lubricant_factor, method=method)
     frictions = []
+    if bearings is not None and not isinstance(bearings, (list, tuple)):
+        raise GearDesignError(f"bearings must be a list of BearingLoad items, got {type(bearings).__name__}")
     for b in bearings or ():
         if not isinstance(b, BearingLoad):
             raise GearDesignError(f"bearings must hold BearingLoad items (designation, shaft, F_r_n, F_a_n), got {b!r}")

@@ -128,6 +128,8 @@ class ShaftModel:
     density_kg_m3: float = DENSITY_STEEL_KG_M3
 
     def __post_init__(self):
+        if not isinstance(self.sections, (list, tuple)) and np.ndim(self.sections) == 0:
+            raise GearDesignError(f"sections must be a list of (length_mm, d_mm[, bore_mm]), got {self.sections!r}")
         secs = list(self.sections)
         require_count("number of sections", len(secs), 1, SECTIONS_MAX)
         clean = []
@@ -158,14 +160,18 @@ class ShaftModel:
         loads = tuple(_as_load(item, i) for i, item in enumerate(self.loads))
         require_count("number of loads", len(loads), 0, LOADS_MAX)
         for i, ld in enumerate(loads):
-            require_range(f"loads[{i}].x_mm", ld.x_mm, 0.0, L, unit="mm")
+            # one number each (a list, or an empty tuple, is refused by name, not met later as a ragged array)
+            one_number(f"loads[{i}].x_mm", require_range(f"loads[{i}].x_mm", ld.x_mm, 0.0, L, unit="mm"))
             for name in ("fy_n", "fz_n", "fx_n"):
-                require_range(f"loads[{i}].{name}", getattr(ld, name), -FORCE_MAX_N, FORCE_MAX_N, unit="N")
+                one_number(f"loads[{i}].{name}", require_range(f"loads[{i}].{name}", getattr(ld, name), -FORCE_MAX_N,
+                                                               FORCE_MAX_N, unit="N"))
             for name in ("y_mm", "z_mm"):
-                require_range(f"loads[{i}].{name}", getattr(ld, name), -LENGTH_MAX_MM, LENGTH_MAX_MM, unit="mm")
+                one_number(f"loads[{i}].{name}", require_range(f"loads[{i}].{name}", getattr(ld, name),
+                                                               -LENGTH_MAX_MM, LENGTH_MAX_MM, unit="mm"))
             for name in ("torque_nm", "my_nm", "mz_nm"):
-                require_range(f"loads[{i}].{name}", getattr(ld, name), -FORCE_MAX_N, FORCE_MAX_N, unit="N·m")
-            require_range(f"loads[{i}].mass_kg", ld.mass_kg, 0.0, 1e7, unit="kg")
+                one_number(f"loads[{i}].{name}", require_range(f"loads[{i}].{name}", getattr(ld, name), -FORCE_MAX_N,
+                                                               FORCE_MAX_N, unit="N·m"))
+            one_number(f"loads[{i}].mass_kg", require_range(f"loads[{i}].mass_kg", ld.mass_kg, 0.0, 1e7, unit="kg"))
         object.__setattr__(self, "loads", loads)
         if not isinstance(self.axial_support, (int, np.integer)) or not 0 <= self.axial_support < sup.size:
             raise GearDesignError(f"axial_support must be a support index in [0, {sup.size - 1}], "

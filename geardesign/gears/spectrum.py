@@ -17,7 +17,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import require_finite, require_range
+from ..files import read_text_bounded
+from ..validate import one_number, require_finite, require_range
 
 __all__ = ["LoadSpectrum", "equivalent_torque", "application_factor_from_spectrum", "SPECTRUM_COLUMNS",
            "TORQUE_RANGE_NM", "SPEED_RANGE_RPM", "TIME_RANGE_H", "BINS_MAX", "SN_CURVES", "MEAN_STRESS_FACTOR_RANGE"]
@@ -25,6 +26,7 @@ __all__ = ["LoadSpectrum", "equivalent_torque", "application_factor_from_spectru
 TORQUE_RANGE_NM = (-1e9, 1e9)       # as a Load's, signed (the other flank)
 SPEED_RANGE_RPM = (0.0, 1e6)        # open below (a Load's)
 TIME_RANGE_H = (0.0, 1e9)
+SPECTRUM_BYTES_MAX = 16 << 20       # a spectrum file: BINS_MAX rows of a few numbers, with room to spare
 BINS_MAX = 100_000                  # rows of a spectrum: a measured history's levels × teeth, with room to spare
 # the columns of a spectrum's CSV file: torque_nm and n_rpm, and one of time_h, cycles, share
 SPECTRUM_COLUMNS = ("torque_nm", "n_rpm", "time_h", "cycles", "share")
@@ -73,7 +75,7 @@ class LoadSpectrum:
                                   f"{np.size(self.n_rpm)} and {np.size(self.time_h)}") from None
         if not h.sum() > 0:
             raise GearDesignError("time_h (or cycles, share) must give the spectrum some time: all bins are 0")
-        if self.on_gear not in (1, 2) or isinstance(self.on_gear, bool):
+        if not _gear_number(self.on_gear):
             raise GearDesignError(f"on_gear must be 1 or 2 (the gear the torque and speed are given on), "
                                   f"got {self.on_gear!r}")
         teeth = (self.tooth1, self.tooth2, self.meshes)
@@ -116,14 +118,21 @@ class LoadSpectrum:
             c = require_range("cycles", cycles, 0.0, 1e18).ravel()
             if c.size != t.size:
                 raise GearDesignError(f"cycles must be one per bin ({t.size}), got {c.size}")
-            time_h = c / (60.0 * np.asarray(n, dtype=float))
+            with np.errstate(over="ignore"):     # a vanishing speed: hours beyond the range, refused by name
+                time_h = c / (60.0 * np.asarray(n, dtype=float))
+            long = ~(time_h <= TIME_RANGE_H[1])
+            if long.any():
+                i = int(np.flatnonzero(long)[0])
+                raise GearDesignError(f"cycles at n_rpm must give time_h = cycles/(60·n_rpm) in [0, {TIME_RANGE_H[1]:g}] "
+                                      f"h, got {time_h[i]:g} h ({c[i]:g} cycles at {n[min(i, n.size - 1)]:g} rpm, "
+                                      f"bin {i})")
         elif share is not None:
             q = require_range("share", share, 0.0, 1.0).ravel()
             if not math.isclose(float(q.sum()), 1.0, rel_tol=1e-6):
                 raise GearDesignError(f"share must sum to 1, got {float(q.sum()):.9g}")
             if duration_h is None:
                 raise GearDesignError("share needs duration_h (the hours the shares divide)")
-            d = float(require_range("duration_h", duration_h, *TIME_RANGE_H, lo_open=True, unit="h"))
+            d = one_number("duration_h", require_range("duration_h", duration_h, *TIME_RANGE_H, lo_open=True, unit="h"))
             time_h = q * d
         return cls(t, n, time_h, on_gear)
 
@@ -132,13 +141,8 @@ class LoadSpectrum:
         """A spectrum from a CSV file with a header: ``torque_nm``, ``n_rpm`` (or the ``n_rpm`` argument for
         all bins) and one of ``time_h``, ``cycles``, ``share`` (with ``duration_h``). A bad cell is refused
         naming its row (the header is row 1) and column."""
-        try:
-            with open(path, newline="", encoding="utf-8") as f:
-                rows = list(csv.reader(line for line in f if line.strip() and not line.lstrip().startswith("#")))
-        except OSError as e:
-            raise GearDesignError(f"spectrum file {str(path)!r} cannot be read: {e.strerror}") from None
-        except UnicodeDecodeError:
-            raise GearDesignError(f"spectrum file {str(path)!r} is not UTF-8 text") from None
+        text = read_text_bounded(path, "spectrum file", SPECTRUM_BYTES_MAX)
+        rows = list(csv.reader(line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")))
         if len(rows) < 2:
             raise GearDesignError(f"spectrum file {str(path)!r} needs a header and at least one row")
         header = [h.strip() for h in rows[0]]
@@ -199,7 +203,7 @@ class LoadSpectrum:
         T = require_finite("torque_nm", torque_nm).ravel()
         if T.size < 2:
             raise GearDesignError(f"torque_nm must have at least 2 points of the curve, got {T.size}")
-        n = float(require_range("n_rpm", n_rpm, *SPEED_RANGE_RPM, lo_open=True, unit="rpm"))
+        n = one_number("n_rpm", require_range("n_rpm", n_rpm, *SPEED_RANGE_RPM, lo_open=True, unit="rpm"))
         if (angle_deg is None) == (time_s is None):
             raise GearDesignError("give the curve over angle_deg or over time_s, one of them")
         x = require_finite("angle_deg" if time_s is None else "time_s",
@@ -213,10 +217,10 @@ class LoadSpectrum:
         span = float(phi[-1] - phi[0]) if period_deg is None else float(require_range(
             "period_deg", period_deg, 0.0, 1e7, lo_open=True, unit="°"))
         z = _teeth(teeth)
-        z_on = z[on_gear - 1] if on_gear in (1, 2) else None
+        z_on = z[int(on_gear) - 1] if _gear_number(on_gear) else None
         if z_on is None:
             raise GearDesignError(f"on_gear must be 1 or 2, got {on_gear!r}")
-        levels = int(require_range("levels", levels, 1, 10_000))
+        levels = int(one_number("levels", require_range("levels", levels, 1, 10_000)))
         pitch = 360.0 / z_on
         per_period = span / pitch             # meshes in one period of the curve
         m_per = round(per_period)
@@ -355,6 +359,12 @@ def _upper_levels(T, levels: int) -> np.ndarray:
     return out
 
 
+def _gear_number(value) -> bool:
+    """True for the gear 1 or 2 (an int, or a float 1.0 or 2.0), False for anything else (an array, a bool)."""
+    return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool) \
+        and value in (1, 2)
+
+
 def equivalent_torque(torque_nm, cycles, p: float) -> float:
     """The equivalent torque T_eq = (Σ n_i T_i^p / Σ n_i)^(1/p) (N·m) of torques ``torque_nm`` (magnitudes) with
     ``cycles`` n_i each, for the exponent ``p`` of the S-N curve written in torque (ISO 6336-6:2019 Annex A):
@@ -368,7 +378,7 @@ def equivalent_torque(torque_nm, cycles, p: float) -> float:
     """
     T = require_range("torque_nm", torque_nm, 0.0, 1e9, unit="N·m").ravel()
     n = require_range("cycles", cycles, 0.0, 1e18).ravel()
-    p = float(require_range("p", p, 0.0, 100.0, lo_open=True))
+    p = one_number("p", require_range("p", p, 0.0, 100.0, lo_open=True))
     if T.shape != n.shape or not n.sum() > 0:
         raise GearDesignError(f"torque_nm and cycles must be one per bin with some cycles, got {T.size} and {n.size}")
     top = float(T.max())
@@ -384,5 +394,5 @@ def application_factor_from_spectrum(equivalent_torque_nm: float, torque_nm: flo
     >>> round(application_factor_from_spectrum(715.0, 500.0), 4)
     1.43
     """
-    T_n = float(require_range("torque_nm", torque_nm, 0.0, 1e9, lo_open=True, unit="N·m"))
-    return float(require_range("equivalent_torque_nm", equivalent_torque_nm, 0.0, 1e9, unit="N·m")) / T_n
+    T_n = one_number("torque_nm", require_range("torque_nm", torque_nm, 0.0, 1e9, lo_open=True, unit="N·m"))
+    return one_number("equivalent_torque_nm", require_range("equivalent_torque_nm", equivalent_torque_nm, 0.0, 1e9, unit="N·m")) / T_n

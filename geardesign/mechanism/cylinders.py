@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import require_finite, require_positive
+from ..validate import one_number, require_finite, require_positive
 from .kinematics import crank_speed
 
 __all__ = ["firing_phases", "even_phases", "journal_torques", "crank_pin_torques", "unevenness", "excess_work",
@@ -145,8 +145,8 @@ def fluctuation_coefficient(excess_work_j, inertia_kg_m2, n_rpm) -> float:
     >>> round(fluctuation_coefficient(1000.0, 1.0, 3000 / 3.141592653589793), 12)    # ω = 100 rad/s
     0.1
     """
-    de = float(require_finite("excess_work_j", excess_work_j))
-    j = float(require_positive("inertia_kg_m2", inertia_kg_m2, "kg·m²"))
+    de = one_number("excess_work_j", require_finite("excess_work_j", excess_work_j))
+    j = one_number("inertia_kg_m2", require_positive("inertia_kg_m2", inertia_kg_m2, "kg·m²"))
     w = float(crank_speed(n_rpm))
     return de / (j * w * w)
 

@@ -16,7 +16,7 @@ from ..results import Result, compact_repr
 from ..validate import hint_unknown_arguments, one_number, require_count, require_finite, require_range
 from .cylinders import (CYLINDERS_MAX, crank_pin_torques, even_phases, excess_work, firing_phases,
                         fluctuation_coefficient, journal_torques, reversal_angles)
-from .kinematics import crank_speed, state
+from .kinematics import SPEED_RANGE_RPM, crank_speed, state
 from .kinetostatics import GRAVITY_M_S2, forces_from_state
 from .pressure import ATMOSPHERE_MPA, PRESSURE_RANGE_MPA, IndicatorDiagram, gas_force
 from .slider_crank import INERTIA_MAX_KG_M2, SliderCrank
@@ -24,7 +24,6 @@ from .slider_crank import INERTIA_MAX_KG_M2, SliderCrank
 __all__ = ["Engine", "EngineTorque", "TorqueCurve", "engine_torque", "POINTS_RANGE", "SPEED_RANGE_RPM"]
 
 POINTS_RANGE = (8, 100_000)         # samples over the cycle (100 000: 0.0072° steps over 720°)
-SPEED_RANGE_RPM = (0.0, 1e5)
 
 
 @dataclass(frozen=True, eq=False)
@@ -175,7 +174,8 @@ class Engine:
         _, swing = excess_work(total, cycle)
         delta = (fluctuation_coefficient(swing, self.flywheel_inertia_kg_m2, self.n_rpm)
                  if self.flywheel_inertia_kg_m2 is not None else None)
-        mu = float((total.max() - total.min()) / mean) if mean > 0 else float("nan")
+        # no unevenness without work over the cycle (μ's mean would be <= 0): None, as the summary says
+        mu = float((total.max() - total.min()) / mean) if mean > 0 else None
         eta = self.mechanical_efficiency
         return EngineTorque(
             engine=self, crank_angle_deg=phi, cylinder_torque_nm=per_cyl, torque_nm=total, gas_torque_nm=gas,
@@ -205,8 +205,8 @@ class EngineTorque(Result):
     ``torque_nm`` is the resultant (the last journal's, driving the load), ``cylinder_torque_nm`` (cylinders ×
     points) each cylinder's, ``journal_torque_nm`` (cylinders + 1 × points) and ``crank_pin_torque_nm`` seed 004's
     M_zi and M_qi; ``gas_torque_nm`` + ``inertia_torque_nm`` = ``torque_nm`` (inertia including the weights). The mean
-    is the indicated torque M_i, ``unevenness`` μ = (M_max − M_min)/M_mean, ``excess_work_j`` the swing ΔE of the
-    excess work, ``fluctuation`` δ = ΔE/(J·ω²) when the engine has a flywheel inertia.
+    is the indicated torque M_i, ``unevenness`` μ = (M_max − M_min)/M_mean (None when M_mean <= 0), ``excess_work_j``
+    the swing ΔE of the excess work, ``fluctuation`` δ = ΔE/(J·ω²) when the engine has a flywheel inertia.
     """
 
     engine: Engine
@@ -221,7 +221,7 @@ class EngineTorque(Result):
     effective_torque_nm: float | None
     max_torque_nm: float
     min_torque_nm: float
-    unevenness: float
+    unevenness: float | None
     reversal_angles_deg: np.ndarray
     excess_work_j: float
     fluctuation: float | None

@@ -26,13 +26,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import require_finite, require_positive, require_range
+from ..validate import one_number, require_finite, require_positive, require_range
 
 __all__ = ["crank_speed", "rod_angle_deg", "piston_position", "piston_displacement", "piston_velocity",
            "piston_acceleration", "rod_angular_velocity", "rod_angular_acceleration", "crank_pin_acceleration",
            "rod_cg_acceleration", "check_lengths", "State", "state", "cg_acceleration"]
 
 MM = 1e-3   # mm -> m: lengths come in mm, speeds go out in m/s
+LENGTH_RANGE_MM = (1e-3, 1e5)    # a crank's and a rod's length, mm: 1 µm to 100 m (a rod of 1e38 mm is as long as
+# the crank's stroke is lost in its last bit: s(φ) = r + l − x rounds to 0 and the cycle's volumes to 0/0)
+SPEED_RANGE_RPM = (0.0, 1e5)     # a crankshaft's speed, rpm (above, ω² overflows nothing but is no engine)
 
 
 def check_lengths(crank_radius_mm, rod_length_mm, offset_mm=0.0) -> tuple[float, float, float]:
@@ -44,9 +47,10 @@ def check_lengths(crank_radius_mm, rod_length_mm, offset_mm=0.0) -> tuple[float,
     ...
     geardesign.errors.GearDesignError: rod_length_mm must exceed crank_radius_mm + |offset_mm| = 70 mm (l/r > 1), got 60
     """
-    r = float(require_positive("crank_radius_mm", crank_radius_mm, "mm"))
-    l_ = float(require_positive("rod_length_mm", rod_length_mm, "mm"))
-    e = float(require_finite("offset_mm", offset_mm))
+    r = one_number("crank_radius_mm", require_range("crank_radius_mm", crank_radius_mm, *LENGTH_RANGE_MM, unit="mm"))
+    l_ = one_number("rod_length_mm", require_range("rod_length_mm", rod_length_mm, *LENGTH_RANGE_MM, unit="mm"))
+    e = one_number("offset_mm", require_range("offset_mm", offset_mm, -LENGTH_RANGE_MM[1], LENGTH_RANGE_MM[1],
+                                              unit="mm"))
     if not l_ > r + abs(e):
         raise GearDesignError(f"rod_length_mm must exceed crank_radius_mm + |offset_mm| = {r + abs(e):g} mm "
                               f"(l/r > 1), got {l_:g}")
@@ -59,7 +63,7 @@ def crank_speed(n_rpm) -> np.ndarray:
     >>> round(float(crank_speed(1700)), 3)       # seed 000 §5.3.3 prints 177.9 (with π = 3.14)
     178.024
     """
-    return math.pi * require_positive("n_rpm", n_rpm, "rpm") / 30.0
+    return math.pi * require_range("n_rpm", n_rpm, *SPEED_RANGE_RPM, lo_open=True, unit="rpm") / 30.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -176,7 +180,7 @@ def rod_angular_acceleration(crank_angle_deg, crank_radius_mm, rod_length_mm, n_
 def crank_pin_acceleration(crank_angle_deg, crank_radius_mm, n_rpm) -> tuple[np.ndarray, np.ndarray]:
     """(x, y) acceleration of a point of the crank at radius r, −ω²·r·(−sin φ, cos φ) (m/s²; centripetal at
     constant ω)."""
-    r = float(require_positive("crank_radius_mm", crank_radius_mm, "mm"))
+    r = one_number("crank_radius_mm", require_positive("crank_radius_mm", crank_radius_mm, "mm"))
     phi = np.radians(require_finite("crank_angle_deg", crank_angle_deg))
     w = crank_speed(n_rpm)
     return w * w * r * MM * np.sin(phi), -w * w * r * MM * np.cos(phi)
@@ -193,7 +197,7 @@ def rod_cg_acceleration(crank_angle_deg, crank_radius_mm, rod_length_mm, rod_cg_
     -1.0
     """
     r, l_, e = check_lengths(crank_radius_mm, rod_length_mm, offset_mm)
-    k = float(require_range("rod_cg_mm", rod_cg_mm, 0.0, l_, unit="mm")) / l_
+    k = one_number("rod_cg_mm", require_range("rod_cg_mm", rod_cg_mm, 0.0, l_, unit="mm")) / l_
     st = _state(crank_angle_deg, r, l_, e, n_rpm)
     return cg_acceleration(st, r, k)
 

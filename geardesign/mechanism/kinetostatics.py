@@ -29,7 +29,7 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..results import Result, short_value
-from ..validate import require_finite, require_range
+from ..validate import broadcast_inputs, one_number, require_finite, require_range
 from .kinematics import MM, State, cg_acceleration, crank_speed, piston_velocity, state
 from .slider_crank import SliderCrank
 
@@ -42,8 +42,8 @@ GRAVITY_M_S2 = 9.80665     # standard gravity (ISO 80000-3)
 def _gravity(gravity_m_s2, axis_tilt_deg):
     """The gravity vector (x, y) in the cylinder's frame: the cylinder axis tilted ``axis_tilt_deg`` from the
     upward vertical in the sense of rotation (0: an upright cylinder, weights along −y)."""
-    g = float(require_range("gravity_m_s2", gravity_m_s2, 0.0, 100.0, unit="m/s²"))
-    tau = np.radians(float(require_range("axis_tilt_deg", axis_tilt_deg, -360.0, 360.0)))
+    g = one_number("gravity_m_s2", require_range("gravity_m_s2", gravity_m_s2, 0.0, 100.0, unit="m/s²"))
+    tau = np.radians(one_number("axis_tilt_deg", require_range("axis_tilt_deg", axis_tilt_deg, -360.0, 360.0)))
     return -g * np.sin(tau), -g * np.cos(tau)
 
 
@@ -121,7 +121,8 @@ def _inputs(mech, crank_angle_deg, n_rpm, gas_force_n, gravity_m_s2, axis_tilt_d
     if not isinstance(mech, SliderCrank):
         raise GearDesignError(f"mechanism must be a SliderCrank, got {type(mech).__name__}")
     phi_deg = require_finite("crank_angle_deg", crank_angle_deg).astype(float)
-    fg = np.broadcast_to(require_finite("gas_force_n", gas_force_n), phi_deg.shape).astype(float)
+    phi_deg, fg = (a.astype(float) for a in broadcast_inputs(crank_angle_deg=phi_deg,
+                                                              gas_force_n=require_finite("gas_force_n", gas_force_n)))
     gx, gy = _gravity(gravity_m_s2, axis_tilt_deg)
     st = state(np.radians(phi_deg), mech.crank_radius_mm, mech.rod_length_mm, mech.offset_mm, crank_speed(n_rpm))
     return phi_deg, fg, st, gx, gy

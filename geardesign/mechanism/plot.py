@@ -50,7 +50,7 @@ def plot_torque(result, ax=None, journals: bool = False):
     ax.set_xticks(np.arange(0, e.cycle_deg + 1, 90 if e.cycle_deg > 360 else 45))
     ax.set_xlabel("crank angle φ of cylinder 1, deg")
     ax.set_ylabel("torque on the crankshaft, N·m")
-    mu = f", μ = {result.unevenness:.3g}" if np.isfinite(result.unevenness) else ""
+    mu = f", μ = {result.unevenness:.3g}" if result.unevenness is not None else ""
     ax.set_title(f"{e.name + chr(10) if e.name else ''}{e.cylinders}-cylinder {e.diagram.strokes}-stroke, "
                  f"{e.n_rpm:g} rpm{mu}; dotted: torque reversals", fontsize=10)
     ax.grid(True, alpha=0.3)

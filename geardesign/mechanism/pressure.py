@@ -14,7 +14,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import require_count, require_finite, require_positive, require_range
+from ..files import read_text_bounded
+from ..validate import one_number, require_count, require_finite, require_positive, require_range
 from .kinematics import check_lengths, piston_displacement
 
 __all__ = ["IndicatorDiagram", "gas_force", "piston_area", "otto_pressure", "cycle_volume", "STROKES",
@@ -23,6 +24,7 @@ __all__ = ["IndicatorDiagram", "gas_force", "piston_area", "otto_pressure", "cyc
 STROKES = {2: 360.0, 4: 720.0}    # strokes per cycle -> the cycle's crank angle, degrees
 ATMOSPHERE_MPA = 0.101325         # standard atmosphere (ISO 2533): the crankcase pressure by default
 PRESSURE_RANGE_MPA = (0.0, 100.0)  # absolute; 100 MPa is beyond any firing pressure (diesels reach ~25 MPa)
+DIAGRAM_BYTES_MAX = 16 << 20   # an indicator diagram: a measured cycle of some 10^5 points at most
 
 
 def piston_area(cylinder_bore_mm) -> np.ndarray:
@@ -48,7 +50,8 @@ def gas_force(pressure_mpa, cylinder_bore_mm, crankcase_pressure_mpa=ATMOSPHERE_
 
 
 def _strokes(strokes) -> float:
-    if strokes not in STROKES or isinstance(strokes, bool):
+    if isinstance(strokes, bool) or not isinstance(strokes, (int, float, np.integer, np.floating)) \
+            or strokes not in STROKES:
         raise GearDesignError(f"strokes must be 2 or 4 (a two- or four-stroke cycle), got {strokes!r}")
     return STROKES[int(strokes)]
 
@@ -98,11 +101,8 @@ class IndicatorDiagram:
         """Read a CSV file with the columns ``crank_angle_deg`` and ``pressure_mpa`` (absolute)."""
         import csv
 
-        try:
-            with open(path, newline="", encoding="utf-8") as fh:
-                rows = list(csv.DictReader(fh))
-        except OSError as exc:
-            raise GearDesignError(f"indicator diagram {str(path)!r}: cannot read it ({exc.strerror})") from None
+        text = read_text_bounded(path, "indicator diagram", DIAGRAM_BYTES_MAX)
+        rows = list(csv.DictReader(text.splitlines()))
         if not rows or not {"crank_angle_deg", "pressure_mpa"} <= set(rows[0]):
             raise GearDesignError(f"indicator diagram {str(path)!r}: expected the columns crank_angle_deg, "
                                   f"pressure_mpa, got {', '.join(rows[0]) if rows else 'no rows'}")
@@ -134,7 +134,7 @@ def cycle_volume(crank_angle_deg, crank_radius_mm, rod_length_mm, compression_ra
     """Cylinder volume per unit piston area, V/A = s(φ) + S/(ε − 1) (mm; S the stroke, ε the compression ratio):
     the clearance volume V_c = V_h/(ε − 1) above the piston at top dead centre (Heywood 1988 eq. 2.4)."""
     r, l_, e = check_lengths(crank_radius_mm, rod_length_mm, offset_mm)
-    eps = float(require_range("compression_ratio", compression_ratio, 1.0, 40.0, lo_open=True))
+    eps = one_number("compression_ratio", require_range("compression_ratio", compression_ratio, 1.0, 40.0, lo_open=True))
     top = math.sqrt((l_ + r) ** 2 - e * e)
     stroke = top - math.sqrt((l_ - r) ** 2 - e * e)
     return piston_displacement(crank_angle_deg, r, l_, e) + stroke / (eps - 1.0)
@@ -161,15 +161,15 @@ def otto_pressure(crank_angle_deg, crank_radius_mm, rod_length_mm, compression_r
     (0.1, 1.7268, 5.0)
     """
     cycle = _strokes(strokes)
-    pa = float(require_range("intake_pressure_mpa", intake_pressure_mpa, *PRESSURE_RANGE_MPA, lo_open=True,
+    pa = one_number("intake_pressure_mpa", require_range("intake_pressure_mpa", intake_pressure_mpa, *PRESSURE_RANGE_MPA, lo_open=True,
                              unit="MPa"))
-    pr = float(require_range("exhaust_pressure_mpa", exhaust_pressure_mpa, *PRESSURE_RANGE_MPA, lo_open=True,
+    pr = one_number("exhaust_pressure_mpa", require_range("exhaust_pressure_mpa", exhaust_pressure_mpa, *PRESSURE_RANGE_MPA, lo_open=True,
                              unit="MPa"))
-    pz = float(require_range("peak_pressure_mpa", peak_pressure_mpa, *PRESSURE_RANGE_MPA, lo_open=True,
+    pz = one_number("peak_pressure_mpa", require_range("peak_pressure_mpa", peak_pressure_mpa, *PRESSURE_RANGE_MPA, lo_open=True,
                              unit="MPa"))
-    n1 = float(require_range("polytropic_compression", polytropic_compression, 1.0, 1.7))
-    n2 = float(require_range("polytropic_expansion", polytropic_expansion, 1.0, 1.7))
-    eps = float(require_range("compression_ratio", compression_ratio, 1.0, 40.0, lo_open=True))
+    n1 = one_number("polytropic_compression", require_range("polytropic_compression", polytropic_compression, 1.0, 1.7))
+    n2 = one_number("polytropic_expansion", require_range("polytropic_expansion", polytropic_expansion, 1.0, 1.7))
+    eps = one_number("compression_ratio", require_range("compression_ratio", compression_ratio, 1.0, 40.0, lo_open=True))
     if not pz > pa * eps ** n1:
         raise GearDesignError(f"peak_pressure_mpa must exceed the end of compression p_a·ε^n1 = "
                               f"{pa * eps ** n1:.6g} MPa, got {pz:g}")

@@ -5,8 +5,8 @@ from dataclasses import dataclass
 
 from ..errors import GearDesignError
 from ..results import compact_repr
-from ..validate import hint_unknown_arguments, one_number, require_finite, require_positive, require_range
-from .kinematics import check_lengths
+from ..validate import hint_unknown_arguments, one_number, require_finite, require_range
+from .kinematics import LENGTH_RANGE_MM, check_lengths
 
 __all__ = ["SliderCrank", "MASS_MAX_KG", "INERTIA_MAX_KG_M2"]
 
@@ -53,7 +53,9 @@ class SliderCrank:
         require_range("rod_inertia_kg_m2", self.rod_inertia_kg_m2, 0.0, INERTIA_MAX_KG_M2, unit="kg·m²")
         require_range("crank_cg_mm", self.crank_cg_mm, -10 * r, 10 * r, unit="mm")
         if self.cylinder_bore_mm is not None:
-            one_number("cylinder_bore_mm", require_positive("cylinder_bore_mm", self.cylinder_bore_mm, "mm"))
+            # at most the lengths' range (a bore of 1e308 mm overflowed the gas force)
+            one_number("cylinder_bore_mm", require_range("cylinder_bore_mm", self.cylinder_bore_mm, 0.0,
+                                                         LENGTH_RANGE_MM[1], lo_open=True, unit="mm"))
 
     @property
     def ratio(self) -> float:

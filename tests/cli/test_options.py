@@ -51,3 +51,18 @@ def test_existing_output_refused_without_overwrite_and_kept(tmp_path, capsys):
     assert out.read_text() == "keep me\n"
     assert main(argv + ["--overwrite"]) == 0
     assert out.read_text() != "keep me\n"
+
+
+@pytest.mark.parametrize("command", [["pair", "--module", "4", "--z1", "20", "--z2", "60"],
+                                     ["shift", "--module", "4", "--z1", "20", "--z2", "60"]])
+def test_a_spectrum_that_is_a_device_is_refused_naming_the_option(command, tmp_path):
+    """Fuzzing found `--spectrum /dev/zero` reading one endless line (the header's peek for n_rpm): unbounded work.
+    Run in a subprocess with a time limit, so that the old behaviour fails rather than hangs the suite."""
+    import subprocess
+    import sys
+    proc = subprocess.run([sys.executable, "-m", "geardesign", *command, "--spectrum", "/dev/zero", "--material",
+                           "C45", "--face-width", "20", "--speed", "1000"], capture_output=True, text=True,
+                          cwd=tmp_path, timeout=120)
+    lines = proc.stderr.strip().splitlines()
+    assert proc.returncode == 2 and len(lines) == 1, proc.stderr
+    assert "--spectrum: spectrum file '/dev/zero' is not a regular file" in lines[0]

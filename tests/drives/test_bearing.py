@@ -448,3 +448,56 @@ def test_the_old_load_names_still_work_for_one_release():
     assert old.L10h == new.L10h and old.F_r_n == 3000.0
     with pytest.raises(gd.GearDesignError, match="not both"):
         gd.check_bearing("6208", F_r_n=3000.0, fr_n=3000.0, n_rpm=1000)
+
+
+@pytest.mark.parametrize("args, match", [
+    ((4000.0, 2500.0, 1.6, 0.0, -1200.0), r"Y_b must be in \(0, 10\], got 0"),     # was NaN (0.5·Fr/0)
+    ((5980.0, 4180.0, float("nan"), 2.07), r"Y_a must be finite"),
+    ((-5980.0, 4180.0, 2.06, 2.07), r"fr_a_n must be in \[0, 1e\+08\] N, got -5980"),    # was a negative load
+    ((5980.0, 4180.0, 2.06, 2.07, float("inf")), r"ka_n must be finite"),
+    (([1.0, 2.0], [1.0, 2.0, 3.0], 1.6, 1.6), "do not broadcast"),
+])
+def test_tapered_axial_loads_refuse_bad_input_by_name(args, match):
+    """Fuzzing found NaN axial loads for Y = 0 and negative loads passed through: each input is refused by name."""
+    with pytest.raises(GearDesignError, match=match):
+        b.tapered_axial_loads(*args)
+
+
+def test_a_pure_axial_load_on_a_cylindrical_roller_bearing_warns_nothing():
+    """Fuzzing found a RuntimeWarning (inf·0) escaping check_bearing for an NU bearing with Fr = 0: it fails its
+    axial check quietly."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = b.check_bearing("NU210EA", 0.0, 1800.0, 1000.0)
+    assert not r.ok and r.limiting_check == "axial_load"
+
+
+@pytest.mark.parametrize("series", [np.array(float("nan")), 62, None])
+def test_select_bearing_refuses_a_series_that_is_no_name_by_name(series):
+    """Fuzzing found 'TypeError: iteration over a 0-d array' for a numpy scalar as the series."""
+    with pytest.raises(GearDesignError, match="series must be a series name or a list of them"):
+        b.select_bearing(series, 40.0, 3200.0, 1800.0, 650.0, life_h=20000)
+
+
+def test_a_vanishing_load_has_an_infinite_life_without_a_warning():
+    """Fuzzing found a RuntimeWarning (overflow in (C/P)^p) escaping select_bearing at Fr = 1e-300 N: the life is
+    infinite (L10 = (C/P)^p grows without bound as P falls), quietly."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = b.check_bearing("6208", 1e-300, 0.0, 100.0, life_h=1e4)
+        s = b.select_bearing(["NU2", "72B"], 5.0, 1e-300, 0.0, 0.001, life_h=1e6, reliability=99)
+    assert r.ok and r.L10h == math.inf and s.checked.L10h == math.inf
+
+
+@pytest.mark.parametrize("s0_min, match", [(0, r"s0_min must be in \(0, 100\], got 0"), (-1.0, r"got -1.0"),
+                                           (float("nan"), "s0_min must be finite"), ("abc", "s0_min must be a number"),
+                                           ([1.0, 2.0], "s0_min must be one number")])
+def test_a_least_static_safety_out_of_range_is_refused_by_name(s0_min, match):
+    """Fuzzing found a RuntimeWarning (divide by zero) escaping check_bearing for s0_min = 0: s0_min was not
+    checked at all ("abc" was a ValueError traceback)."""
+    for call in (lambda: b.check_bearing("30206", 0.001, 1800.0, 1000.0, s0_min=s0_min),
+                 lambda: b.select_bearing("62", 40, 3200.0, 0.0, 650.0, life_h=1e4, s0_min=s0_min)):
+        with pytest.raises(GearDesignError, match=match):
+            call()

@@ -219,3 +219,17 @@ def test_one_pass_over_a_shaft_equals_one_section_at_a_time():
                                 T_max=opts["peak_factor"] * T * (1 + opts["torque_amplitude"]))
             assert row.S_D == pytest.approx(one.S_D, rel=1e-12) and row.S_F == pytest.approx(one.S_F, rel=1e-12)
             assert s.results[row.Index].factors.equals(one.factors)
+
+
+@pytest.mark.parametrize("kw, match", [(dict(Rz_um=__import__("numpy").array([])), "Rz_um must be one number"),
+                                       (dict(Rz_um=[6.3, 6.3]), "Rz_um must be one number"),
+                                       (dict(peak_factor=[1.0, 2.0]), "peak_factor must be one number"),
+                                       (dict(torque_amplitude=[0.1]), "torque_amplitude must be one number"),
+                                       (dict(K_V=[1.0, 1.1]), "K_V must be one number"),
+                                       (dict(d_eff_mm=[45.0, 50.0]), "d_eff_mm must be one number")])
+def test_shaft_safety_takes_one_number_per_shaft(kw, match):
+    """Fuzzing found 'ValueError: operands could not be broadcast together with shapes (0,) (2,)' for Rz_um=[]."""
+    an = analyse_shaft(_shaft())
+    notches = [ShaftNotch(140.0, Notch("key")), ShaftNotch(80.0, Notch("shoulder", r_mm=1.6))]
+    with pytest.raises(GearDesignError, match=match):
+        shaft_safety(an, notches, "42CrMo4", **kw)

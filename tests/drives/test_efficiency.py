@@ -65,3 +65,17 @@ def test_stage_efficiency_bad_inputs():
         BearingLoad("6307", 3, 100.0)
     with pytest.raises(GearDesignError, match="no_load_loss_w"):
         _stage(100.0, OILS[1], no_load_loss_w=-1.0)
+
+
+@pytest.mark.parametrize("bearings", [__import__("numpy").array(100.0), 5, "6307"])
+def test_bearings_that_are_no_list_are_refused_by_name(bearings):
+    """Fuzzing found 'TypeError: iteration over a 0-d array' for bearings=np.array(100.0)."""
+    with pytest.raises(GearDesignError, match="bearings must be a list of BearingLoad items"):
+        stage_efficiency(PAIR, Load(power_kw=15, n_rpm=1450), Lubricant(100, 11.1), 60.0, bearings=bearings)
+
+
+@pytest.mark.parametrize("lubrication", [__import__("numpy").array([]), ["oil_bath"], "water"])
+def test_a_lubrication_that_is_no_name_is_refused_by_name(lubrication):
+    """Fuzzing found 'TypeError: unhashable type' for lubrication=np.array([])."""
+    with pytest.raises(GearDesignError, match="lubrication must be one of"):
+        stage_efficiency(PAIR, Load(power_kw=15, n_rpm=1450), Lubricant(100, 11.1), 60.0, lubrication=lubrication)

@@ -180,3 +180,18 @@ def test_shigley_example_7_5_equivalent_loads():
     assert 35 * delta(x1, x1) / dcc == pytest.approx(17.1, abs=0.05)
     assert 55 * delta(x2, x2) / dcc == pytest.approx(46.1, abs=0.05)
     assert 6 * E_30MPSI * float(second_moment_mm4(IN)) * L / (LBF * IN ** 3) == pytest.approx(0.2739e9, rel=2e-4)
+
+
+@pytest.mark.parametrize("sections", [-1e308, 40, None])
+def test_sections_that_are_no_list_are_refused_by_name(sections):
+    """Fuzzing found "TypeError: 'float' object is not iterable" for sections=-1e308."""
+    with pytest.raises(GearDesignError, match=r"sections must be a list of \(length_mm, d_mm\[, bore_mm\]\)"):
+        ShaftModel(sections=sections, supports_mm=[10.0, 50.0])
+
+
+@pytest.mark.parametrize("field, value", [("fz_n", ()), ("fy_n", [1.0, 2.0]), ("x_mm", [10.0]), ("mass_kg", [])])
+def test_a_load_value_that_is_not_one_number_is_refused_by_name(field, value):
+    """Fuzzing found 'ValueError: setting an array element with a sequence' from analyse_shaft for fz_n=()."""
+    load = dict(x_mm=20.0, fy_n=100.0) | {field: value}
+    with pytest.raises(GearDesignError, match=rf"loads\[0\]\.{field} must be one number"):
+        ShaftModel(sections=[(40.0, 30.0)], supports_mm=[0.0, 40.0], loads=[ShaftLoad(**load)])

@@ -226,3 +226,55 @@ def test_plot_draws_both_flanks(tmp_path):
     plt.close(ax.figure)
     with pytest.raises(GearDesignError, match="ax"):
         s.plot(ax="not axes")
+
+
+@pytest.mark.parametrize("make, match", [
+    (lambda: LoadSpectrum.from_curve([100.0, 120.0], angle_deg=[0.0, 360.0], n_rpm=[1, 2], teeth=(20, 40)),
+     "n_rpm must be one number"),
+    (lambda: LoadSpectrum.from_curve([100.0, 120.0], angle_deg=[0.0, 360.0], n_rpm=600, teeth=(20, 40),
+                                     levels=np.array([1.0])), "levels must be one number"),
+    (lambda: LoadSpectrum.from_bins([100.0, 50.0], 1000, share=[0.5, 0.5], duration_h=[1, 2]),
+     "duration_h must be one number"),
+])
+def test_a_list_where_one_number_belongs_is_refused_by_name(make, match):
+    """Fuzzing found 'TypeError: only 0-dimensional arrays can be converted to Python scalars' for these."""
+    with pytest.raises(GearDesignError, match=match):
+        make()
+
+
+def test_cycles_at_a_vanishing_speed_are_refused_by_name_without_a_warning():
+    """Fuzzing found a RuntimeWarning (overflow in cycles/(60·n)) escaping from_bins at n_rpm = 5e-324."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(GearDesignError, match=r"cycles at n_rpm must give time_h = cycles/\(60·n_rpm\) in "
+                                                  r"\[0, 1e\+09\] h, got inf h \(1 cycles at 4.94066e-324 rpm, bin 0\)"):
+            LoadSpectrum.from_bins([1410.5, 2972.2], 5e-324, cycles=[1.0, 1e9])
+        with pytest.raises(GearDesignError, match=r"got 1\.66667e\+13 h \(1e\+18 cycles at 1000 rpm, bin 1\)"):
+            LoadSpectrum.from_bins([100.0, 50.0], 1000, cycles=[1e6, 1e18])
+
+
+@pytest.mark.parametrize("on_gear", [np.array([]), np.array([1.0]), [1], True, "1", 3])
+def test_on_gear_that_is_no_gear_number_is_refused_by_name(on_gear):
+    """Fuzzing found 'truth value of an empty array is ambiguous' (from_bins) and 'only integer scalar arrays can
+    be converted to a scalar index' (from_curve) for on_gear given as an array."""
+    with pytest.raises(GearDesignError, match="on_gear must be 1 or 2"):
+        LoadSpectrum.from_bins([100.0, 50.0], 1000, time_h=[1.0, 2.0], on_gear=on_gear)
+    with pytest.raises(GearDesignError, match="on_gear must be 1 or 2"):
+        LoadSpectrum.from_curve([100.0, 120.0], angle_deg=[0.0, 360.0], n_rpm=600, teeth=(20, 40), on_gear=on_gear)
+
+
+def test_a_spectrum_that_is_no_text_file_is_refused_by_name(tmp_path):
+    """Fuzzing found `geardesign pair --spectrum /dev/zero` reading without end (unbounded work): a device, a folder
+    or a file beyond SPECTRUM_BYTES_MAX is refused before it is read whole."""
+    from geardesign.gears import spectrum as sp
+    for path in ("/dev/zero", tmp_path):
+        with pytest.raises(GearDesignError, match="spectrum file .* is not a regular file"):
+            LoadSpectrum.from_csv(path, n_rpm=1000)
+    big = tmp_path / "big.csv"
+    with open(big, "wb") as fh:
+        fh.write(b"torque_nm,time_h\n")
+        fh.seek(sp.SPECTRUM_BYTES_MAX)
+        fh.write(b"1,1\n")
+    with pytest.raises(GearDesignError, match="is larger than 16 MiB"):
+        LoadSpectrum.from_csv(big, n_rpm=1000)

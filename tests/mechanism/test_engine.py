@@ -204,3 +204,14 @@ def test_seed003_as_a_v_twin_engine():
     assert not np.allclose(upright.analyse(720).torque_nm, res.torque_nm, rtol=0, atol=1e-6)   # the weights turned
     with pytest.raises(GearDesignError, match="axis_tilts_deg must give one tilt per cylinder"):
         Engine(mech, diagram, n, cylinders=2, axis_tilts_deg=(10,))
+
+
+def test_no_unevenness_without_work_over_the_cycle():
+    """Fuzzing found μ = NaN in the result (and in its JSON) when the mean torque is not positive: a cylinder
+    compressing gas it never burns does negative work over the cycle; μ is None then, like the summary says."""
+    motored = IndicatorDiagram([0, 180, 350, 360, 370, 540], [0.1, 0.1, 2.0, 0.1, 0.1, 0.1])
+    res = Engine(MECH, motored, 3000).analyse(720)
+    assert res.mean_torque_nm < 0 and not res.success
+    assert res.unevenness is None and json.loads(res.to_json())["unevenness"] is None
+    assert "no unevenness" in "\n".join(res.summary())
+    res.plot()

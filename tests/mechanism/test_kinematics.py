@@ -121,7 +121,7 @@ def test_displacement_stays_inside_the_stroke(phi, lam, e_frac):
 @pytest.mark.parametrize("kw, match", [
     (dict(crank_radius_mm=70, rod_length_mm=70), "rod_length_mm must exceed"),
     (dict(crank_radius_mm=70, rod_length_mm=100, offset_mm=31), "crank_radius_mm \\+ \\|offset_mm\\| = 101"),
-    (dict(crank_radius_mm=-1, rod_length_mm=100), "crank_radius_mm must be > 0"),
+    (dict(crank_radius_mm=-1, rod_length_mm=100), r"crank_radius_mm must be in \[0.001, 100000\] mm, got -1"),
     (dict(crank_radius_mm=70, rod_length_mm=float("nan")), "rod_length_mm must be finite"),
 ])
 def test_bad_lengths_are_refused_by_name(kw, match):
@@ -132,7 +132,23 @@ def test_bad_lengths_are_refused_by_name(kw, match):
 def test_bad_angles_and_speeds_are_refused_by_name():
     with pytest.raises(GearDesignError, match="crank_angle_deg must be finite"):
         k.piston_velocity([0, float("inf")], 70, 250, 1000)
-    with pytest.raises(GearDesignError, match="n_rpm must be > 0"):
+    with pytest.raises(GearDesignError, match=r"n_rpm must be in \(0, 100000\] rpm"):
         k.piston_velocity(0, 70, 250, 0)
     with pytest.raises(GearDesignError, match="rod_cg_mm must be in \\[0, 250\\]"):
         k.rod_cg_acceleration(0, 70, 250, 260, 1000)
+
+
+def test_lengths_beyond_their_range_are_refused_by_name():
+    """Fuzzing found a RuntimeWarning (0/0) escaping IndicatorDiagram.otto for a rod of 1e38 mm (np.float32's
+    largest): the stroke rounds to 0 against it. Crank and rod lengths are checked against [0.001, 100000] mm."""
+    import warnings
+    from geardesign.mechanism.pressure import IndicatorDiagram
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(GearDesignError,
+                           match=r"rod_length_mm must be in \[0.001, 100000\] mm, got 9.99999968\d*e\+37"):
+            IndicatorDiagram.otto(45.0, np.float32(1e38), 25.0, peak_pressure_mpa=30.0)
+        with pytest.raises(GearDesignError, match=r"crank_radius_mm must be in \[0.001, 100000\] mm, got 5e-324"):
+            k.piston_velocity(90.0, 5e-324, 250, 1000)
+        with pytest.raises(GearDesignError, match=r"offset_mm must be in \[-100000, 100000\] mm"):
+            k.check_lengths(70, 250, 1e300)

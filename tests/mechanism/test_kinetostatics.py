@@ -219,3 +219,38 @@ def test_bad_inputs_are_refused_by_name():
         joint_forces(mech, 0, 1000, 0, gravity_m_s2=-1)
     with pytest.raises(GearDesignError, match="mechanism must be a SliderCrank"):
         virtual_power_torque("crank", 0, 1000)
+
+
+def test_one_angle_with_several_gas_forces_broadcasts():
+    """Fuzzing found 'ValueError: cannot broadcast a non-scalar to a scalar array' for one crank angle with several
+    gas forces; they broadcast together (as the docstring says), each the same as its own call, and shapes that do
+    not broadcast are refused by name."""
+    mech = MECHS[0]
+    gas = [0.0, 1e3, 5e4]
+    f = joint_forces(mech, 30.0, 1700, gas)
+    assert f.torque_nm.shape == (3,)
+    for i, g in enumerate(gas):
+        one = joint_forces(mech, [30.0], 1700, g)
+        assert f.torque_nm[i] == pytest.approx(one.torque_nm[0], rel=1e-12, abs=1e-9)
+        assert f.crank_pin_x_n[i] == pytest.approx(one.crank_pin_x_n[0], rel=1e-12, abs=1e-9)
+    with pytest.raises(GearDesignError, match="do not broadcast"):
+        joint_forces(mech, [0.0, 30.0], 1700, gas)
+
+
+@pytest.mark.parametrize("n_rpm", [1e308, 1e6, float("inf"), 0.0])
+def test_a_speed_beyond_the_range_is_refused_by_name(n_rpm):
+    """Fuzzing found NaN torques from virtual_power_torque at n_rpm = 1e308 (ω² overflows): the crank's speed is
+    checked against (0, 100000] rpm, the engine's range, by every kinematic function."""
+    for fn in (joint_forces, virtual_power_torque):
+        with pytest.raises(GearDesignError, match=r"n_rpm must be (in \(0, 100000\] rpm|finite)"):
+            fn(MECHS[0], [0.0, 90.0], n_rpm)
+    with pytest.raises(GearDesignError, match=r"n_rpm must be (in \(0, 100000\] rpm|finite)"):
+        k.piston_velocity(90.0, 70, 250, n_rpm)
+
+
+def test_one_axis_tilt_as_a_list_is_refused_by_name():
+    """Fuzzing found 'TypeError: only 0-dimensional arrays can be converted' for axis_tilt_deg=np.array([1.0])."""
+    with pytest.raises(GearDesignError, match="axis_tilt_deg must be one number"):
+        virtual_power_torque(MECHS[0], [0.0, 90.0], 1700, axis_tilt_deg=np.array([1.0]))
+    with pytest.raises(GearDesignError, match="gravity_m_s2 must be one number"):
+        joint_forces(MECHS[0], [0.0, 90.0], 1700, gravity_m_s2=[9.81, 0.0])

@@ -50,7 +50,7 @@ def test_diagram_from_csv(tmp_path):
     bad.write_text("crank_angle_deg,pressure_mpa\n0,x\n", encoding="utf-8")
     with pytest.raises(GearDesignError, match="needs a number"):
         IndicatorDiagram.from_csv(bad)
-    with pytest.raises(GearDesignError, match="cannot read it"):
+    with pytest.raises(GearDesignError, match="cannot be read"):
         IndicatorDiagram.from_csv(tmp_path / "none.csv")
 
 
@@ -98,3 +98,24 @@ def test_otto_refuses_a_peak_below_the_end_of_compression():
         otto_pressure(0, 70, 250, 1.0)
     d = IndicatorDiagram.otto(70, 250, 7.0, points=360)
     assert d.crank_angle_deg.size == 360 and d.source == "otto_pressure"
+
+
+@pytest.mark.parametrize("strokes", [np.array(100.0), np.array([4]), [4], "4"])
+def test_strokes_that_are_no_number_are_refused_by_name(strokes):
+    """Fuzzing found 'TypeError: unhashable type' for strokes=np.array(100.0) (a dict lookup before any check)."""
+    with pytest.raises(GearDesignError, match="strokes must be 2 or 4"):
+        IndicatorDiagram.otto(45, 150, 10.0, peak_pressure_mpa=7.0, strokes=strokes)
+    with pytest.raises(GearDesignError, match="strokes must be 2 or 4"):
+        IndicatorDiagram([0, 180], [0.1, 1.0], strokes)
+
+
+def test_a_diagram_that_is_no_text_file_is_refused_by_name(tmp_path):
+    """Fuzzing found from_csv reading /dev/zero without end (unbounded work) and a UnicodeDecodeError traceback for
+    bytes that are not UTF-8: a device, a folder or a larger file is refused before it is read whole."""
+    latin = tmp_path / "latin.csv"
+    latin.write_bytes(b"crank_angle_deg,pressure_mpa\n0,0.1\n\xe9\n")
+    with pytest.raises(GearDesignError, match="indicator diagram .* is not UTF-8 text"):
+        IndicatorDiagram.from_csv(latin)
+    for path in ("/dev/zero", tmp_path):
+        with pytest.raises(GearDesignError, match="is not a regular file"):
+            IndicatorDiagram.from_csv(path)

@@ -21,7 +21,7 @@ def test_stroke_and_ratio():
     (dict(piston_mass_kg=-0.1), "piston_mass_kg must be in \\[0, 100000\\] kg"),
     (dict(rod_inertia_kg_m2=float("nan")), "rod_inertia_kg_m2 must be finite"),
     (dict(crank_cg_mm=1e4), "crank_cg_mm must be in \\[-700, 700\\] mm"),
-    (dict(cylinder_bore_mm=0), "cylinder_bore_mm must be > 0"),
+    (dict(cylinder_bore_mm=0), r"cylinder_bore_mm must be in \(0, 100000\] mm, got 0"),
     (dict(rod_mass_kg=[1, 2]), "rod_mass_kg must be one number"),
     (dict(bore_mm=90), "SliderCrank has no argument 'bore_mm': the cylinder's bore is cylinder_bore_mm"),
 ])
@@ -35,3 +35,9 @@ def test_bore_is_asked_for_by_name_when_a_pressure_needs_it():
     with pytest.raises(GearDesignError, match="cylinder_bore_mm is needed"):
         SliderCrank(70, 250).need_bore()
     assert SliderCrank(70, 250, cylinder_bore_mm=100).need_bore() == 100.0
+
+
+def test_a_bore_beyond_the_lengths_is_refused_by_name():
+    """Fuzzing found an overflow RuntimeWarning escaping an engine with cylinder_bore_mm = 1e308."""
+    with pytest.raises(GearDesignError, match=r"cylinder_bore_mm must be in \(0, 100000\] mm, got 1e\+308"):
+        SliderCrank(45, 150, cylinder_bore_mm=1e308)

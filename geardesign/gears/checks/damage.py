@@ -102,7 +102,7 @@ class DamageSpec:
         """Miner's sums at the designs of ``geo`` moved by each offset: arrays (len(offsets), *shape)."""
         from ..geometry import mesh_geometry
         from ..strength.chain import CHAIN_GEOMETRY_FIELDS
-        from ..strength.service_life import pair_life
+        from ..strength.service_life import pair_life, require_teeth_of
 
         mesh = geo["_mesh"]
         width = self.width(geo)
@@ -132,6 +132,8 @@ class DamageSpec:
                 for z1, z2 in np.unique(z_at, axis=1).T:
                     mine = np.flatnonzero((z_at[0] == z1) & (z_at[1] == z2))
                     z1, z2 = int(z1), int(z2)
+                    # here, not in pair_life: the refusal below would be taken for a failing design, one by one
+                    require_teeth_of(self.spectrum, (z1, z2))
 
                     def call(sel, mine=mine, z1=z1, z2=z2):
                         at = mine[sel]

@@ -31,7 +31,7 @@ import math
 import numpy as np
 
 from ...errors import GearDesignError
-from ...validate import require_choice, require_range
+from ...validate import one_number, require_choice, require_finite, require_range
 from ..spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES, LoadSpectrum
 from . import root_factors as rf
 from .blocks import BLOCK
@@ -203,7 +203,7 @@ def _mean_stress(value, reverses) -> tuple:
     pair = value if isinstance(value, (tuple, list)) else (value, value)
     if len(pair) != 2:
         raise GearDesignError(f"mean_stress_factor must be Y_M or (Y_M1, Y_M2), got {value!r}")
-    return tuple(float(require_range("mean_stress_factor", v, *MEAN_STRESS_FACTOR_RANGE)) for v in pair)
+    return tuple(one_number("mean_stress_factor", require_range("mean_stress_factor", v, *MEAN_STRESS_FACTOR_RANGE)) for v in pair)
 
 
 def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2=None, face_width_mm,
@@ -227,7 +227,7 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
         raise GearDesignError(f"spectrum must be a geardesign LoadSpectrum, got {type(spectrum).__name__}")
     require_choice("sn_curve", sn_curve, SN_CURVES)
     if life_h is not None:
-        life_h = float(require_range("life_h", life_h, *LIFE_RANGE_H, lo_open=True, unit="h"))
+        life_h = one_number("life_h", require_range("life_h", life_h, *LIFE_RANGE_H, lo_open=True, unit="h"))
     y_m = _mean_stress(mean_stress_factor, spectrum.reverses)
     if options.get("root", True) is not True:
         raise GearDesignError("pair_life rates pitting and root together: root=False is not an option here")
@@ -240,13 +240,22 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     loaded = np.flatnonzero(spectrum.torque_nm != 0.0)        # a bin of no torque does no damage
     if loaded.size == 0:
         raise GearDesignError("the spectrum has no bin with a torque: nothing to rate")
-    shape = np.broadcast_shapes(*(np.shape(v) for v in (m, z1, z2, x1, x2, face_width_mm)))
+    # the designs' numbers by name before their shapes are read (a dict or a ragged list has none);
+    # pair_strength checks their ranges
+    shapes = {k: require_finite(k, v).shape for k, v in dict(m=m, z1=z1, z2=z2, x1=x1, x2=x2,
+                                                              face_width_mm=face_width_mm).items()}
+    try:
+        shape = np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        raise GearDesignError("input shapes do not broadcast together: "
+                              + ", ".join(f"{k} {s}" for k, s in shapes.items())) from None
     if (math.prod(shape) * loaded.size > _ELEMENTS or math.prod(shape) > BLOCK) and not bins:
         # many designs: in chunks, so that the chain's per-bin fields stay small (and it never splits the designs
         # into blocks of its own, which would part them from the bins)
         return _in_chunks(shape, loaded.size, dict(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=face_width_mm),
                           dict(spectrum=spectrum, material1=material1, material2=material2, life_h=life_h,
                                sn_curve=sn_curve, mean_stress_factor=mean_stress_factor, **options))
+    zz = _teeth(spectrum, z1, z2)      # before the chain: a wrong spectrum costs nothing
     designs = [np.asarray(v, dtype=float) for v in (m, x1, x2)]
     expand = (lambda v: np.asarray(v, dtype=float)[..., None]) if shape else (lambda v: np.asarray(v, dtype=float))
     geometry = options.pop("geometry", None)
@@ -257,14 +266,6 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
                         expand(designs[1]), expand(designs[2]), load=_bins_load(spectrum, loaded),
                         material1=mats[0], material2=mats[1], face_width_mm=width, geometry=geometry, **options)
     nb = loaded.size
-    zz = (int(np.max(z1)), int(np.max(z2)))          # cycles: the ratio of one pair (tooth counts of the designs)
-    if np.ndim(z1) or np.ndim(z2):
-        if np.unique(np.asarray(z1)).size > 1 or np.unique(np.asarray(z2)).size > 1:
-            raise GearDesignError("pair_life takes one pair of tooth counts per call (the spectrum's cycles depend "
-                                  "on the ratio); vary m, x1, x2 and the width")
-    if spectrum.per_tooth and spectrum.teeth != zz:
-        raise GearDesignError(f"the spectrum was counted per tooth for teeth {spectrum.teeth}, the pair has {zz}: count "
-                              f"the curve again for this pair (LoadSpectrum.from_curve(..., teeth={zz}))")
     scale = 1.0 if life_h is None else life_h / spectrum.duration_h
     n = {g: spectrum.cycles(g, zz, cpr[g - 1])[loaded] * scale for g in (1, 2)}
     sign = np.sign(spectrum.torque_nm[loaded])
@@ -411,6 +412,27 @@ def _groups(spectrum: LoadSpectrum, loaded, gear: int, sign) -> np.ndarray:
     tooth = np.zeros(loaded.size, dtype=np.int64) if not spectrum.per_tooth else \
         (spectrum.tooth1 if gear == 1 else spectrum.tooth2)[loaded]
     return tooth * 2 + (sign < 0)
+
+
+def _teeth(spectrum: LoadSpectrum, z1, z2) -> tuple:
+    """The one pair of tooth counts (z1, z2) of the designs, which the spectrum's cycles depend on (the ratio) and,
+    counted per tooth, its bins (the teeth they were counted for)."""
+    if np.size(z1) == 0 or np.size(z2) == 0:
+        raise GearDesignError(f"z1 and z2 must each give a tooth count, got {np.size(z1)} and {np.size(z2)} values")
+    zz = (int(np.max(z1)), int(np.max(z2)))
+    if np.ndim(z1) or np.ndim(z2):
+        if np.unique(np.asarray(z1)).size > 1 or np.unique(np.asarray(z2)).size > 1:
+            raise GearDesignError("pair_life takes one pair of tooth counts per call (the spectrum's cycles depend "
+                                  "on the ratio); vary m, x1, x2 and the width")
+    require_teeth_of(spectrum, zz)
+    return zz
+
+
+def require_teeth_of(spectrum: LoadSpectrum, teeth: tuple) -> None:
+    """A spectrum counted per tooth rates only the pair it was counted for."""
+    if spectrum.per_tooth and spectrum.teeth != teeth:
+        raise GearDesignError(f"the spectrum was counted per tooth for teeth {spectrum.teeth}, the pair has {teeth}: "
+                              f"count the curve again for this pair (LoadSpectrum.from_curve(..., teeth={teeth}))")
 
 
 def _reversing_teeth(spectrum: LoadSpectrum, loaded, gear: int, sign) -> np.ndarray:

@@ -99,7 +99,7 @@ class WormPair:
         a = one_number("a (center distance)", require_positive("a (center distance)", a, unit="mm"))
         m = one_number("m_x", require_range("m_x", require_positive("m_x", m_x, unit="mm"), *M_RANGE_MM, unit="mm"))
         qv = one_number("q", require_positive("q", q))
-        z2v = int(require_int("z2", z2, Z_MIN, Z_MAX))
+        z2v = int(one_number("z2", require_int("z2", z2, Z_MIN, Z_MAX)))
         x2 = x2_from_center_distance(a, m, z2v, qv)
         if not abs(x2) <= X_ABS_MAX:
             lo, hi = (m * (qv + z2v - 2 * X_ABS_MAX) / 2, m * (qv + z2v + 2 * X_ABS_MAX) / 2)

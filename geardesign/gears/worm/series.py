@@ -18,10 +18,10 @@ import numpy as np
 from ...catalogs.tables import load_catalog, preferred_numbers
 from ...errors import GearDesignError
 from ...results import RankedTable
-from ...validate import _show, require_choice, require_int, require_positive, require_range
+from ...validate import _show, one_number, require_choice, require_int, require_range
 from .. import checks as _checks
 from ..rack import require_rack
-from .geometry import FLANK_FORMS, Z1_RANGE, worm_geometry
+from .geometry import FLANK_FORMS, LENGTH_RANGE_MM, Z1_RANGE, worm_geometry
 from .pair import _X2_SENSE, X2_OBJECTIVES, WormPair
 
 __all__ = ["worm_module_series", "worm_center_distance_series", "default_q_values", "select_worm", "WormSelection",
@@ -132,12 +132,14 @@ def select_worm(ratio: float | None = None, a: float | None = None, *, z1=None, 
     if ratio is None and z2 is None:
         raise GearDesignError("select_worm needs ratio or z2")
     if ratio is not None:
-        ratio = float(require_range("ratio", ratio, 1.0, 1000.0))
+        ratio = one_number("ratio", require_range("ratio", ratio, 1.0, 1000.0))
     if a is not None:
-        a = float(require_positive("a (center distance)", a, unit="mm"))
+        # at most the largest worm the lengths allow (a of 1e308 mm overflowed the wheel's diameters)
+        a = one_number("a (center distance)", require_range("a (center distance)", a, 0.0, LENGTH_RANGE_MM[1],
+                                                            lo_open=True, unit="mm"))
     elif m_x is None:
         raise GearDesignError("select_worm needs m_x when no centre distance a is given (the size is free)")
-    ratio_tol = float(require_range("ratio_tol", ratio_tol, 0.0, 1.0))
+    ratio_tol = one_number("ratio_tol", require_range("ratio_tol", ratio_tol, 0.0, 1.0))
     z1s = _values("z1", Z1_DEFAULT if z1 is None else z1, integer=True, lo=Z1_RANGE[0], hi=Z1_RANGE[1])
     ms = worm_module_series() if m_x is None else _values("m_x", m_x, lo=1e-4, hi=1e4)
     qs = default_q_values() if q is None else _values("q", q, lo=1.0, hi=100.0)
@@ -214,13 +216,16 @@ def _ranked(cand, x2, margins, names, exists, a_col, eps, gam, ratio, a, objecti
 
 def _values(name, value, integer=False, lo=None, hi=None) -> list:
     """One number or a list of them, each checked (integers for tooth counts), as a sorted list."""
-    items = [value] if np.ndim(value) == 0 else list(np.ravel(np.asarray(value, dtype=object)))
+    try:
+        items = [value] if np.ndim(value) == 0 else list(np.ravel(np.asarray(value, dtype=object)))
+    except ValueError:          # a ragged list: no shape to read
+        raise GearDesignError(f"{name} must be a number or a flat list of them, got {_show(value)}") from None
     if not items:
         raise GearDesignError(f"{name} must be a number or a non-empty list, got {_show(value)}")
     out = []
     for v in items:
         if integer:
-            out.append(int(require_int(name, v, lo, hi)))
+            out.append(int(one_number(name, require_int(name, v, lo, hi))))
         else:
-            out.append(float(require_range(name, v, lo, hi)))
+            out.append(one_number(name, require_range(name, v, lo, hi)))
     return sorted(set(out))

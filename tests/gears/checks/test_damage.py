@@ -120,3 +120,15 @@ def test_the_optimums_sensitivity_to_damage_max_is_a_finite_difference_of_the_op
     up = gd.optimize_shifts(20, 60, m=4, checks={**CASE, "damage_max": 1.0 + h}, objective="max_x_sum")
     down = gd.optimize_shifts(20, 60, m=4, checks={**CASE, "damage_max": 1.0 - h}, objective="max_x_sum")
     assert r.sensitivity["pitting_damage1"] == pytest.approx((up.fun - down.fun) / (2 * h), rel=1e-3)
+
+
+@pytest.mark.parametrize("method", ["exact", "grid"])
+def test_a_spectrum_counted_for_other_teeth_is_refused_by_name(method):
+    """Fuzzing found optimize_shifts(17, 26) with a spectrum counted per tooth for (101, 103) running > 30 s and
+    ending in 'no finite result ... undefined at (-1.5, -1.5)': pair_life's refusal was taken for a failing design,
+    design by design, at every point of the solver. Now the spectrum's teeth are checked once, by name."""
+    phi = np.linspace(0.0, 720.0, 721)
+    curve = gd.LoadSpectrum.from_curve(300.0 + 0.0 * phi, angle_deg=phi, n_rpm=1700, teeth=(101, 103))
+    with pytest.raises(GearDesignError, match=r"counted per tooth for teeth \(101, 103\), the pair has \(17, 26\)"):
+        gd.optimize_shifts(17, 26, m=4.0, method=method,
+                           checks={"spectrum": curve, "material": "42CrMo4", "face_width_mm": 10.0})

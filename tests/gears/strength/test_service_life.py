@@ -317,3 +317,21 @@ def test_grouped_max_is_the_largest_group_sum():
     np.testing.assert_allclose(_grouped_max(d, groups), expected, rtol=1e-13)
     assert _grouped_max(d, groups)[2] == np.inf
     assert _grouped_max(d[0], np.zeros(30, dtype=np.int64)) == pytest.approx(d[0].sum(), rel=1e-13)
+
+
+@pytest.mark.parametrize("m, match", [({"a": 1}, r"m must be a number, got \{'a': 1\}"),
+                                      ([[1], [2, 3]], r"m must be a number, got \[\[1\], \[2, 3\]\]"),
+                                      ([4.0, 5.0, 6.0], "do not broadcast")])
+def test_pair_life_refuses_designs_without_a_shape_by_name(m, match):
+    """Fuzzing found TypeError / ValueError tracebacks for a dict or a ragged list as the module (read for its
+    shape before any check) and for designs whose shapes do not broadcast."""
+    spec = LoadSpectrum.from_bins([241.0], 1000.0, time_h=[100.0])
+    with pytest.raises(GearDesignError, match=match):
+        pair_life(m, [20, 21], 80, 0.3, 0.1, spectrum=spec, material1="42CrMo4", face_width_mm=20.0)
+
+
+def test_pair_life_refuses_an_empty_list_of_teeth_by_name():
+    """Fuzzing found 'ValueError: zero-size array to reduction operation maximum' for z1=[]."""
+    spec = LoadSpectrum.from_bins([241.0], 1000.0, time_h=[100.0])
+    with pytest.raises(GearDesignError, match="z1 and z2 must each give a tooth count, got 0 and 1 values"):
+        pair_life(20.0, [], 26, 0.3, 0.1, spectrum=spec, material1="42CrMo4", face_width_mm=40.0)

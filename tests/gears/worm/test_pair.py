@@ -149,3 +149,10 @@ def test_the_feasible_x2_interval_and_the_optimum_are_exact(z1, z2, q, eps_min, 
     assert ok[inside].all() and not ok[outside].any()
     # the x2 nearest 0 in the interval: no scanned feasible x2 is nearer
     assert abs(r.x2) <= np.abs(xs[ok]).min() + 1e-12
+
+
+def test_from_center_distance_refuses_an_array_of_teeth_by_name():
+    """Fuzzing found a TypeError traceback for z2 given as an (empty) array."""
+    for z2 in (np.array([]), [30, 31]):
+        with pytest.raises(gd.GearDesignError, match="z2 must be one number"):
+            WormPair.from_center_distance(67, 3, 2, z2, 44 / 3)

@@ -52,7 +52,7 @@ def test_select_without_a_center_distance_optimises_x2():
     (dict(), ["needs ratio or z2"]),
     (dict(ratio=12.5), ["needs m_x"]),
     (dict(ratio=0.5, a=100), ["ratio", "[1, 1000]"]),
-    (dict(ratio=12.5, a=-1), ["a (center distance)", "> 0"]),
+    (dict(ratio=12.5, a=-1), ["a (center distance)", "(0, 100000] mm", "-1"]),
     (dict(ratio=12.5, a=100, z1=0), ["z1", "[1, 10]"]),
     (dict(ratio=12.5, a=100, objective="fast"), ["objective", "min_abs_x2"]),
     (dict(ratio=12.5, a=100, z1=3, ratio_tol=0.001), ["no z1/z2 within ratio_tol"]),
@@ -69,3 +69,30 @@ def test_first_row_modules_rank_before_second_row_ones():
     f = t[t["feasible"]]
     assert np.all(np.diff(f["module_series"].to_numpy()) >= 0)     # equal ratio errors here: the series decides
     assert set(t["module_series"]) <= {1, 2}
+
+
+@pytest.mark.parametrize("kw, match", [(dict(ratio=[1, 2], m_x=6.3), "ratio must be one number"),
+                                       (dict(ratio=12.5, a=[100, 125]), r"a \(center distance\) must be one number"),
+                                       (dict(ratio=12.5, a=125, ratio_tol=[0.1]), "ratio_tol must be one number")])
+def test_select_worm_refuses_a_list_where_one_number_belongs(kw, match):
+    """Fuzzing found 'TypeError: only 0-dimensional arrays can be converted' for select_worm([1, 2], ...)."""
+    with pytest.raises(gd.GearDesignError, match=match):
+        gd.select_worm(**kw)
+
+
+@pytest.mark.parametrize("kw, match", [(dict(q=[[1], [2, 3]]), "q must be a number or a flat list of them"),
+                                       (dict(q=[[10.0], [12.5, 14.0]]), "q must be a number or a flat list of them"),
+                                       (dict(z1=[[1, 2], [2]]), "z1 must be a number or a flat list of them")])
+def test_select_worm_refuses_a_ragged_list_by_name(kw, match):
+    """Fuzzing found 'ValueError: setting an array element with a sequence' for q=[[1], [2, 3]]."""
+    with pytest.raises(gd.GearDesignError, match=match):
+        gd.select_worm(12.5, None, m_x=[3.15, 4.0], **kw)
+
+
+def test_a_centre_distance_beyond_the_lengths_is_refused_by_name():
+    """Fuzzing found overflow RuntimeWarnings escaping select_worm(12.5, 1e308): a is checked against (0, 1e5] mm."""
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(gd.GearDesignError, match=r"a \(center distance\) must be in \(0, 100000\] mm, got 1e\+308"):
+            gd.select_worm(12.5, 1e308, ratio_tol=0.05)
