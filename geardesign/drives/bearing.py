@@ -93,6 +93,7 @@ A_ISO_MAX = 50.0          # ISO 281:2007 limits a_ISO to 50
 KAPPA_RANGE = (0.1, 4.0)  # the a_ISO formulas hold for 0.1 <= κ <= 4; above 4 the value at 4 is used
 FORCE_MAX_N = 1e8
 TAPERED_Y_MAX = 10.0     # a tapered roller bearing's axial load factor Y (0.4·cot α > 10 is α < 2.3°)
+TAPERED_Y_MIN = 0.1      # and its least: 0.4·cot α < 0.1 is α > 76° (the catalog's Y: 1.3…2.1); a subnormal Y gave NaN
 SPEED_MAX_RPM = 1e6
 LIFE_MAX_H = 1e7
 LUBRICATIONS = ("grease", "oil")
@@ -281,8 +282,8 @@ def tapered_axial_loads(fr_a_n, fr_b_n, Y_a, Y_b, ka_n=0.0):
         fr_a_n=require_range("fr_a_n", fr_a_n, 0.0, FORCE_MAX_N, unit="N"),
         fr_b_n=require_range("fr_b_n", fr_b_n, 0.0, FORCE_MAX_N, unit="N"),
         # Y = 0.4·cot α: 0.69 … 2.3 for the contact angles 10° … 30° of the catalogs; 0 would divide by zero
-        Y_a=require_range("Y_a", Y_a, 0.0, TAPERED_Y_MAX, lo_open=True),
-        Y_b=require_range("Y_b", Y_b, 0.0, TAPERED_Y_MAX, lo_open=True),
+        Y_a=require_range("Y_a", Y_a, TAPERED_Y_MIN, TAPERED_Y_MAX),
+        Y_b=require_range("Y_b", Y_b, TAPERED_Y_MIN, TAPERED_Y_MAX),
         ka_n=require_range("ka_n", ka_n, -FORCE_MAX_N, FORCE_MAX_N, unit="N"))
     fa_ind = induced_axial_force(fr_a_n, Y_a)
     fb_ind = induced_axial_force(fr_b_n, Y_b)

@@ -451,7 +451,8 @@ def test_the_old_load_names_still_work_for_one_release():
 
 
 @pytest.mark.parametrize("args, match", [
-    ((4000.0, 2500.0, 1.6, 0.0, -1200.0), r"Y_b must be in \(0, 10\], got 0"),     # was NaN (0.5·Fr/0)
+    ((4000.0, 2500.0, 1.6, 0.0, -1200.0), r"Y_b must be in \[0.1, 10\], got 0"),     # was NaN (0.5·Fr/0)
+    ((4000.0, 2500.0, 1.6, 5e-324), r"Y_b must be in \[0.1, 10\], got 5e-324"),    # a subnormal: NaN (fuzz)
     ((5980.0, 4180.0, float("nan"), 2.07), r"Y_a must be finite"),
     ((-5980.0, 4180.0, 2.06, 2.07), r"fr_a_n must be in \[0, 1e\+08\] N, got -5980"),    # was a negative load
     ((5980.0, 4180.0, 2.06, 2.07, float("inf")), r"ka_n must be finite"),
