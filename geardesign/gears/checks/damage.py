@@ -19,7 +19,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 from .base import Check, Option, register, register_context
-from .strength import _GRADIENT_STENCIL, _HESSIAN_STENCIL, _HESSIAN_STEP, _difference, _hashable, _in_range
+from .strength import _GRADIENT_STENCIL, _HESSIAN_STENCIL, _HESSIAN_STEP, _difference, _in_range, pair_context
 
 __all__ = ["DamageSpec", "PittingDamage", "RootDamage", "damage_spec", "DAMAGE_CONTEXT", "DAMAGE_MAX"]
 
@@ -214,24 +214,11 @@ def damage_spec(context: dict) -> tuple:
     if not spectra or not all(isinstance(s, LoadSpectrum) for s in spectra):
         raise GearDesignError(f"spectrum must be a geardesign LoadSpectrum or a list of them, got "
                               f"{type(context['spectrum']).__name__}")
-    if context.get("material") is None:
-        raise GearDesignError("the damage checks need material= (a geardesign Material or a name such as '42CrMo4')")
     from ...validate import one_number, require_choice, require_range
-    from ..strength.chain import _material, check_options
-    from ..strength.defaults import FACE_WIDTH_RANGE_MM
     from ..strength.load import LIFE_RANGE_H
     from ..strength.service_life import SN_CURVES, _mean_stress
 
-    mat1 = _material(context["material"], "material")
-    mat2 = None if context.get("material2") is None else _material(context["material2"], "material2")
-    options = context.get("strength") or {}
-    if not isinstance(options, dict):
-        raise GearDesignError(f"strength must be a dict of pair_strength options, got {type(options).__name__}")
-    frozen = tuple(sorted((k, _hashable(v)) for k, v in check_options(options).items()))
-    width = context.get("face_width_mm")
-    if width is not None:
-        width = one_number("face_width_mm", require_range("face_width_mm", width, *FACE_WIDTH_RANGE_MM, lo_open=True,
-                                                          unit="mm"))
+    mat1, mat2, width, frozen = pair_context(context, "damage")
     life = context.get("life_h")
     if life is not None:
         life = one_number("life_h", require_range("life_h", life, *LIFE_RANGE_H, lo_open=True, unit="h"))

@@ -294,23 +294,27 @@ def strength_spec(context: dict) -> StrengthSpec | None:
         return None
     if not isinstance(load, Load):
         raise GearDesignError(f"load must be a geardesign Load, got {type(load).__name__}")
+    return StrengthSpec(load, *pair_context(context, "strength"))
+
+
+def pair_context(context: dict, what: str) -> tuple:
+    """(material 1, material 2 or None, the strength options frozen, face width or None) of make_checks' context,
+    each checked by name: what a load case's checks (``what``: "strength", "damage") share."""
     if context.get("material") is None:
-        raise GearDesignError("the strength checks need material= (a geardesign Material or a name such as '42CrMo4')")
-    from ..strength.chain import _material   # a name is looked up once here, not at every evaluation
+        raise GearDesignError(f"the {what} checks need material= (a geardesign Material or a name such as '42CrMo4')")
+    from ..strength.chain import _material, check_options   # a name is looked up once here, not at every evaluation
 
     mat1 = _material(context["material"], "material")
     mat2 = None if context.get("material2") is None else _material(context["material2"], "material2")
     options = context.get("strength") or {}
     if not isinstance(options, dict):
         raise GearDesignError(f"strength must be a dict of pair_strength options, got {type(options).__name__}")
-    from ..strength.chain import check_options
-
     frozen = tuple(sorted((k, _hashable(v)) for k, v in check_options(options).items()))
     width = context.get("face_width_mm")
     if width is not None:      # one number: the spec is hashed (its values are memoised per geometry)
         width = one_number("face_width_mm", require_range("face_width_mm", width, *FACE_WIDTH_RANGE_MM, lo_open=True,
                                                           unit="mm"))
-    return StrengthSpec(load, mat1, mat2, width, frozen)
+    return mat1, mat2, width, frozen
 
 
 def _hashable(value):
