@@ -122,10 +122,17 @@ def _built_checks(options: tuple, material, checks: tuple, load, root: bool) -> 
     if not root:
         opts["root"] = False
         limits["S_Fmin"] = None
-    geometric = dict(checks)
-    plain = {c.name for c in make_checks(**geometric)}
-    built = make_checks(**geometric, load=load, material=stage_material(material), strength=opts or None, **limits)
+    built = make_checks(**dict(checks), load=load, material=stage_material(material), strength=opts or None, **limits)
+    plain = _plain_names(checks)
     return tuple(c for c in built if c.name not in plain)   # what the load case adds: every registered load model
+
+
+@lru_cache(maxsize=64)
+def _plain_names(checks: tuple) -> frozenset:
+    """The names of a stage's geometric checks (built once per checks key: a search builds load cases per call)."""
+    from ...gears.checks import make_checks
+
+    return frozenset(c.name for c in make_checks(**dict(checks)))
 
 
 def _widths(stage, modules: np.ndarray, z1: int) -> tuple:
