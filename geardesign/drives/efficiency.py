@@ -140,6 +140,9 @@ def stage_efficiency(pair, load, lubricant: Lubricant, oil_temperature_c: float,
     p_bearings = sum(f.power_loss_w for f in frictions)
     p_in = mesh.power_w
     loss = mesh.loss_w + p0 + p_bearings
+    if not loss < p_in:         # no efficiency in (0, 1]: at a vanishing power it was −inf (fuzz)
+        raise GearDesignError(f"the stage's losses ({loss:.4g} W: mesh {mesh.loss_w:.4g}, bearings {p_bearings:.4g}, "
+                              f"no-load {p0:.4g}) reach its input power ({p_in:.4g} W): it does not run at this load")
     return StageEfficiency(power_in_w=p_in, mesh_loss_w=mesh.loss_w, no_load_loss_w=p0, bearing_loss_w=p_bearings,
                            loss_w=loss, efficiency=1.0 - loss / p_in, mesh_efficiency=1.0 - mesh.loss_w / p_in,
                            mesh=mesh, bearings=frictions, oil_temperature_c=t_oil, viscosity_mm2s=nu, eta_mpas=eta)

@@ -252,7 +252,8 @@ def gear_loss_factor_integrated(z1, u, beta_b_deg, eps1, eps2, eps_beta=0.0, int
     if not (e1 + e2 > 0 and eb >= 0):
         raise GearDesignError(f"eps1 + eps2 must be > 0 and eps_beta >= 0, got {e1!r}, {e2!r}, {eb!r}")
     # lengths in base pitches: p = 1, r_b1 = z1/(2π); the lines span ε_β pitches along the path
-    x_a, x_e, p, width = -e2, e1, 1.0, eb
+    # an overlap below 1e-9 is a spur pair's (its H_V differs by less): a helix of β = 1e-300 gave 0/0 here (fuzz)
+    x_a, x_e, p, width = -e2, e1, 1.0, (eb if eb >= 1e-9 else 0.0)
     k = np.arange(-math.ceil(e2 + eb) - 2, math.ceil(e1) + 3)
     events = np.concatenate([(x_a - k) % p, (x_e - k) % p, (-k) % p,
                              (x_a - width - k) % p, (x_e - width - k) % p, (-width - k) % p, [0.0, p]])
@@ -327,7 +328,8 @@ def mesh_loss(pair, torque1_nm, n1_rpm, eta_mpas, Ra_um=0.5, lubricant_factor=1.
     b = face_width_mm if face_width_mm is not None else pair.face_width_mm
     if b is None:
         raise GearDesignError("face_width_mm is needed for the mesh loss (give it to the pair or here), got None")
-    b = one_number("face_width_mm", require_positive("face_width_mm", b, "mm"))
+    # at least a micrometre: a subnormal width made the line load F_bt/b infinite and μ NaN (fuzz)
+    b = one_number("face_width_mm", require_range("face_width_mm", b, 1e-3, 1e5, unit="mm"))
     T1 = one_number("torque1_nm", require_positive("torque1_nm", torque1_nm, "N·m"))
     n1 = one_number("n1_rpm", require_positive("n1_rpm", n1_rpm, "rpm"))
     eta = one_number("eta_mpas", require_positive("eta_mpas", eta_mpas, "mPa·s"))

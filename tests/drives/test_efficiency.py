@@ -79,3 +79,13 @@ def test_a_lubrication_that_is_no_name_is_refused_by_name(lubrication):
     """Fuzzing found 'TypeError: unhashable type' for lubrication=np.array([])."""
     with pytest.raises(GearDesignError, match="lubrication must be one of"):
         stage_efficiency(PAIR, Load(power_kw=15, n_rpm=1450), Lubricant(100, 11.1), 60.0, lubrication=lubrication)
+
+
+def test_losses_reaching_the_input_power_are_refused_by_name():
+    # fuzzing: 5e-324 kW through a stage with bearings gave efficiency −inf; the stage does not run at such a load
+    pair = GearPair(1.0, 21, 26, 0.3, 0.2, face_width_mm=40.0)
+    with pytest.raises(GearDesignError, match=r"losses .* reach its input power"):
+        stage_efficiency(pair, Load(power_kw=5e-324, n_rpm=10000.0), Lubricant(680.0, 40.0), 20.0,
+                         bearings=[BearingLoad("6307", 1, 100.0, 0.0)])
+    with pytest.raises(GearDesignError, match=r"losses .* reach its input power"):
+        stage_efficiency(pair, Load(power_kw=0.001, n_rpm=1000.0), Lubricant(680.0, 40.0), 20.0, no_load_loss_w=2.0)

@@ -253,3 +253,21 @@ def test_gearpie_c14_mesh_loss():
     assert loss.loss_w == pytest.approx(row.printed_P_VZP_w, rel=0.03)
     eta_printed = 1 - row.printed_P_VZP_w / row.printed_P_in_w
     assert 1 - loss.loss_w / loss.power_w == pytest.approx(eta_printed, abs=3e-4)
+
+
+def test_a_vanishing_helix_or_width_gives_a_number_or_one_line():
+    # fuzzing: β = 1e-300 gave a NaN mesh loss (0/0 in the overlap's integration), a face width of 5e-324 mm an
+    # infinite line load and NaN μ; a vanishing helix is a spur pair (H_V to 1e-9), a sub-micrometre width refused
+    import math
+
+    from geardesign.errors import GearDesignError
+    from geardesign.gears.efficiency import gear_loss_factor_integrated, mesh_loss
+    from geardesign.gears.pair import GearPair
+
+    assert gear_loss_factor_integrated(21, 26 / 21, 0.0, 0.7, 0.8, 1e-302) == \
+        gear_loss_factor_integrated(21, 26 / 21, 0.0, 0.7, 0.8, 0.0)
+    spur = mesh_loss(GearPair(10, 21, 26, 0.3, 0.2, face_width_mm=40), 100.0, 1450, 50.0)
+    tiny = mesh_loss(GearPair(10, 21, 26, 0.3, 0.2, beta_deg=1e-300, face_width_mm=40), 100.0, 1450, 50.0)
+    assert math.isfinite(tiny.loss_w) and tiny.loss_w == pytest.approx(spur.loss_w, rel=1e-12)
+    with pytest.raises(GearDesignError, match="face_width_mm must be in"):
+        mesh_loss(GearPair(10, 21, 26, 0.3, 0.2, face_width_mm=5e-324), 100.0, 1450, 50.0)
