@@ -3,8 +3,9 @@
 (SKF model, :mod:`geardesign.drives.bearing_friction`): η = 1 − P_loss/P_in, P_loss = P_VZP + P_VZ0 + ΣP_VL.
 
 :func:`stage_efficiency` is what a drive calls for each gear stage; the heat to dissipate is P_loss.
-Not modelled (docs/efficiency.md): the gears' churning and windage (no formula of ISO/TR 14179 could be
-read; give a measured or estimated ``no_load_loss_w``), seals, the oil pump, the bearings' oil-bath drag.
+Not modelled (docs/efficiency.md): the gears' churning and windage (ISO/TR 14179-1's formula was read only
+without its units and coefficients, ISO/TR 14179-2's and Changenet-Velex's not at all; give a measured or
+estimated ``no_load_loss_w``), seals, the oil pump, the bearings' oil-bath drag.
 """
 from __future__ import annotations
 
