@@ -25,11 +25,12 @@ _FLAGS = {"m_x": "--module", "z1": "--z1", "z2": "--z2", "q": "--q", "x2": "--x2
           "ratio": "--ratio", "objective": "--optimize-x2", "alpha_deg": "--alpha-deg", "rho_f": "--rho-f",
           "ha": "--ha", "c": "--c", "n1": "--speed", "T2": "--torque", "mu": "--mu", "mu_static": "--mu-static",
           "l_1": "--bearing-span", "k_heat": "--heat-transfer", "A_housing": "--housing-area", "theta_0": "--ambient",
-          "theta_lim": "--oil-limit", "P_V0": "--no-load-loss", "casting": "--casting", "K_A": "--application-factor"}
+          "theta_lim": "--oil-limit", "P_V0": "--no-load-loss", "casting": "--casting",
+          "application_factor": "--application-factor"}
 # the rating's options by the flag that sets them (a flag left out leaves its check out of the rating)
 _RATING_FLAGS = (("mu", "mu"), ("mu_static", "mu_static"), ("bearing_span", "l_1"), ("heat_transfer", "k_heat"),
                  ("housing_area", "A_housing"), ("ambient", "theta_0"), ("oil_limit", "theta_lim"),
-                 ("no_load_loss", "P_V0"), ("casting", "casting"), ("application_factor", "K_A"))
+                 ("no_load_loss", "P_V0"), ("casting", "casting"), ("application_factor", "application_factor"))
 # the shared options' meaning for a worm pair (their spur-pair help speaks of two gears)
 _WORM_HELP = {"undercut": "no undercut of the wheel by its hob (x2 >= x_min2)",
               "sa_min": "minimum tip thickness / m_x of the worm's thread and the wheel's teeth",

@@ -417,7 +417,8 @@ class WormKind(StageKind):
         out = dict(stage=stage, pair=pair, margins=dict(zip(table["check"], table["margin"].astype(float))),
                    size=float(size), mass=float(mass), summary=summary)
         if load is not None:
-            r = pair.rating(flow.torque_out_nm, flow.n_in_rpm, casting=stage.casting, K_A=stage.application_factor,
+            r = pair.rating(flow.torque_out_nm, flow.n_in_rpm, casting=stage.casting,
+                            application_factor=stage.application_factor,
                             minimums={"S_AGMA": float(stage.checks.get("S_AGMAmin", 1.0))})
             out["rating"] = r
             summary.update(casting=stage.casting, S_AGMA=r.S_AGMA, T2_all_nm=flow.torque_out_nm * r.S_AGMA,

@@ -81,9 +81,9 @@ def ratio_correction_factor(u):
     0.772
     """
     u = require_range("u (gear ratio)", u, 3.0, _CM_U_MAX, hi_open=True)
-    with np.errstate(invalid="ignore"):
-        low = 0.02 * np.sqrt(np.maximum(-u ** 2 + 40.0 * u - 76.0, 0.0)) + 0.46
-        mid = 0.0107 * np.sqrt(np.maximum(-u ** 2 + 56.0 * u + 5145.0, 0.0))
+    # both radicands are >= 0 on their own branch; the maximum keeps the other branch's values real
+    low = 0.02 * np.sqrt(np.maximum(-u ** 2 + 40.0 * u - 76.0, 0.0)) + 0.46
+    mid = 0.0107 * np.sqrt(np.maximum(-u ** 2 + 56.0 * u + 5145.0, 0.0))
     return np.where(u <= 20.0, low, np.where(u <= 76.0, mid, 1.1483 - 0.00658 * u))
 
 
@@ -219,16 +219,16 @@ def design_tangential_load(T2, d_2, eta, K_A=1.0):
 CAPACITY_FIELDS = ("v_g", "mu", "eta_z", "C_s", "C_m", "C_v", "F_e", "W_t_all", "T2_all")
 
 
-def agma_capacity(geo: dict, n1, casting="sand", K_A=1.0) -> dict:
+def agma_capacity(geo: dict, n1, casting="sand", application_factor=1.0) -> dict:
     """The AGMA rating of worm pairs at worm speed ``n1`` (rpm), over arrays: ``geo`` a
     :func:`~geardesign.gears.worm.geometry.worm_geometry` dict (``a``, ``d_m1``, ``d_2``, ``b_2``, ``u``,
     ``gamma_m_deg``, ``alpha_n_deg``; broadcast with ``n1``). Returns :data:`CAPACITY_FIELDS`: the sliding
     speed, the AGMA friction μ and mesh efficiency η_z there, C_s, C_m, C_v, F_e (mm), W_t,all (N) and the
-    allowable output torque T2_all = W_t,all·η_z·d_2/(2000·K_A) (N·m), the wheel torque at which
-    :func:`design_tangential_load` reaches W_t,all (the load the pair carries at this speed for the lives
-    Shigley quotes, over 25 000 h). The efficiency is the sliding-speed friction's; the torque does not
+    allowable output torque T2_all = W_t,all·η_z·d_2/(2000·K_A) (N·m, K_A = ``application_factor``), the wheel
+    torque at which :func:`design_tangential_load` reaches W_t,all (the load the pair carries at this speed for
+    the lives Shigley quotes, over 25 000 h). The efficiency is the sliding-speed friction's; the torque does not
     change it (Shigley's friction depends on V_s only)."""
-    k = require_range("K_A", K_A, 1.0, 10.0)
+    k = require_range("application_factor", application_factor, 1.0, 10.0)
     v_g = sliding_speed(geo["d_m1"], n1, geo["gamma_m_deg"])
     mu = friction_coefficient_agma(v_g)
     eta = efficiency_worm_driving(geo["gamma_m_deg"], mu, geo["alpha_n_deg"])

@@ -8,7 +8,7 @@ Build them with ``make_checks(kind="worm", ...)``; the options the spur pair has
 ``sa_min``, ``eps_alpha_min``) mean the same here, the worm's own (``x2_abs_max``, ``worm_length_min``,
 ``wheel_width_max``) are built for worm pairs only.
 
-With a load (``make_checks(kind="worm", worm_load=WormLoad(T2_nm, n1_rpm, casting, K_A))``) the AGMA load check
+With a load (``make_checks(kind="worm", worm_load=WormLoad(T2_nm, n1_rpm, casting, application_factor))``) the AGMA load check
 ``agma_load`` joins them: S_AGMA = T2_all/T2 >= S_AGMAmin, T2_all the wheel torque ANSI/AGMA 6034-B92 allows at
 the worm speed (:func:`~geardesign.gears.worm.agma.agma_capacity`), over arrays (the drive's search hands one
 torque and speed per design).
@@ -190,19 +190,19 @@ AGMA_SAFETY = Option("S_AGMAmin", "limit", 1.0, "smallest AGMA 6034 load safety 
 class WormLoad:
     """The load case of the worm's AGMA check: the wheel (output) torque ``T2_nm`` (N·m) at the worm speed
     ``n1_rpm`` (rpm), the bronze wheel's ``casting`` ("sand", "chill", "centrifugal") and the application factor
-    ``K_A``. The torque and speed may be arrays (one per design, broadcast with the geometry)."""
+    ``application_factor`` (K_A). The torque and speed may be arrays (one per design, broadcast with the geometry)."""
 
     T2_nm: object
     n1_rpm: object
     casting: str = "sand"
-    K_A: float = 1.0
+    application_factor: float = 1.0
 
     def __post_init__(self):
         from .agma import _casting
         object.__setattr__(self, "T2_nm", require_range("T2_nm", self.T2_nm, 0.0, 1e9, lo_open=True, unit="N·m"))
         object.__setattr__(self, "n1_rpm", require_range("n1_rpm", self.n1_rpm, 0.0, 1e6, lo_open=True, unit="rpm"))
         _casting(self.casting)
-        require_range("K_A", self.K_A, 1.0, 10.0)
+        require_range("application_factor", self.application_factor, 1.0, 10.0)
 
 
 @register
@@ -232,7 +232,7 @@ class AgmaLoad(Check):
 
     def value(self, geo):
         from .agma import agma_capacity   # here: the rating's formulas load only with a load
-        return agma_capacity(geo, self.load.n1_rpm, self.load.casting, self.load.K_A)["T2_all"] / self.load.T2_nm
+        return agma_capacity(geo, self.load.n1_rpm, self.load.casting, self.load.application_factor)["T2_all"] / self.load.T2_nm
 
     def margin(self, geo):
         return self.value(geo) / self.limit - 1.0

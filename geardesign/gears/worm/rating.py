@@ -288,7 +288,8 @@ def worm_rating(T2, n1, m_x, z1, z2, q, *, x2=0.0, alpha_n_deg=20.0, b_2=None, l
     the temperature ``k_heat`` (W/(m²·K); ``"agma"``/``"agma_fan"``: Shigley's h̄_CR at n1 without/with a fan)
     and ``A_housing`` (m², e.g. :func:`~geardesign.gears.worm.temperature.housing_area_estimate`;
     ``"agma_min"``: AGMA's smallest case area); the AGMA load ``casting`` ("sand", "chill", "centrifugal":
-    the bronze wheel's, :mod:`~geardesign.gears.worm.agma`) and ``b_2``, with the application factor ``K_A``;
+    the bronze wheel's, :mod:`~geardesign.gears.worm.agma`) and ``b_2``, with the application factor
+    ``application_factor`` (K_A);
     wear is never computed (not found).
     ``minimums`` overrides :data:`MIN_SAFETY` entries. The options are those of :func:`rate_geometry`.
     """
@@ -323,7 +324,7 @@ def check_options(options: dict) -> dict:
 
 def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E_STEEL_MPA, worm_hardened=True,
                   p_m_star=None, E_red=None, sigma_HG=None, Y_root=None, tau_FG=None, k_heat=None, A_housing=None,
-                  theta_0=20.0, theta_lim=90.0, P_V0=0.0, P_VL=0.0, P_VD=0.0, casting=None, K_A=1.0,
+                  theta_0=20.0, theta_lim=90.0, P_V0=0.0, P_VL=0.0, P_VD=0.0, casting=None, application_factor=1.0,
                   minimums=None) -> WormRating:
     """:func:`worm_rating` on a pair's geometry ``geo``: ``m_x``, ``z1``, ``z2`` as numbers and ``d_m1``, ``d_2``,
     ``a``, ``gamma_m_deg``, ``alpha_n_deg``, ``d_f1`` and (optionally) ``b_2`` as ``(value, source)`` pairs (the
@@ -427,8 +428,8 @@ def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E
         F_e = row("F_e", agma.effective_face_width(b_2, d_m1), "mm", "min(b_2, 0.67 d_m1) (Shigley §15-6)")
         W_all = row("W_t_all", agma.allowable_tangential_load(C_s, d_2, F_e, C_m, C_v), "N",
                     f"C_s D_m^0.8 F_e C_m C_v ({src}, Eq. 15-28)")
-        W_t = row("W_t", agma.design_tangential_load(T2, d_2, eta, K_A), "N",
-                  "K_A F_t2/eta_z (Shigley Eq. 15-58 without its design factor; K_A given)")
+        W_t = row("W_t", agma.design_tangential_load(T2, d_2, eta, application_factor), "N",
+                  "K_A F_t2/eta_z (Shigley Eq. 15-58 without its design factor; K_A = application_factor given)")
         W_f = row("W_f", agma.friction_force(F_t2, mu_v, gamma, alpha_n_deg), "N", "mu W_t2/(cos α_n cos γ_m − mu sin γ_m) (Shigley §15-6)")
         row("P_f", agma.friction_power(W_f, v_g), "W", "|W_f| v_g (Shigley §15-6)")
         S_A = row("S_AGMA", W_all / W_t, "", "W_t_all/W_t (AGMA 6034-B92 load; lives over 25 000 h, Shigley §15-8)")
@@ -447,7 +448,8 @@ def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E
 
 
 _RATE_OPTIONS = ("l_1", "mu", "mu_static", "E_1", "worm_hardened", "p_m_star", "E_red", "sigma_HG", "Y_root",
-                 "tau_FG", "k_heat", "A_housing", "theta_0", "theta_lim", "P_V0", "P_VL", "P_VD", "casting", "K_A",
+                 "tau_FG", "k_heat", "A_housing", "theta_0", "theta_lim", "P_V0", "P_VL", "P_VD", "casting",
+                 "application_factor",
                  "minimums")
 
 

@@ -139,7 +139,7 @@ def test_example_15_4_heat_balance(pair):
 
 def test_the_rating_carries_the_agma_row_and_its_safety(pair):
     T2 = printed("H_0") * HP / (N1 / printed("m_G") * math.pi / 30.0)
-    r = pair.rating(T2, N1, casting="sand", K_A=printed("K_a"), minimums={"S_AGMA": printed("n_d")})
+    r = pair.rating(T2, N1, casting="sand", application_factor=printed("K_a"), minimums={"S_AGMA": printed("n_d")})
     f = r.factors.set_index("symbol")
     assert f.loc["W_t_all", "value"] / agma.N_PER_LBF == pytest.approx(printed("W_t_all"), rel=2e-3)
     assert "Eq. 15-28" in f.loc["W_t_all", "method"] and "sand" in f.loc["C_s", "method"]
@@ -149,7 +149,7 @@ def test_the_rating_carries_the_agma_row_and_its_safety(pair):
     assert r.margins["S_AGMA"] > 0 and r.ok
     cap = load_capacity(r)
     assert cap["S_AGMA"] == pytest.approx(T2 * r.S_AGMA / printed("n_d"), rel=1e-12)
-    at_cap = pair.rating(cap["S_AGMA"], N1, casting="sand", K_A=printed("K_a"), minimums={"S_AGMA": printed("n_d")})
+    at_cap = pair.rating(cap["S_AGMA"], N1, casting="sand", application_factor=printed("K_a"), minimums={"S_AGMA": printed("n_d")})
     assert at_cap.margins["S_AGMA"] == pytest.approx(0.0, abs=1e-12)
 
 
@@ -199,7 +199,7 @@ def test_capacity_over_arrays_is_the_scalar_chain():
     g = gd.gears.worm.geometry.worm_geometry(np.array([4.0, 5.0, 6.3]), 2, 40, 10.0)
     cap = agma.agma_capacity(g, 1450.0, "centrifugal", 1.25)
     for i, m in enumerate((4.0, 5.0, 6.3)):
-        r = worm_rating(100.0, 1450.0, m, 2, 40, 10.0, b_2=float(g["b_2"][i]), casting="centrifugal", K_A=1.25,
+        r = worm_rating(100.0, 1450.0, m, 2, 40, 10.0, b_2=float(g["b_2"][i]), casting="centrifugal", application_factor=1.25,
                         alpha_n_deg=float(g["alpha_n_deg"][i]))
         assert cap["W_t_all"][i] == pytest.approx(r.W_t_all, rel=1e-13)
         # T2_all is where S_AGMA = 1
