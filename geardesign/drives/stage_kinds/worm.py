@@ -468,5 +468,6 @@ class WormKind(StageKind):
         canvas.circle(xc, r_wheel, self.colour)
         canvas.box(x - r_worm, 2 * r_worm, 0.5, "#a1d99b", "")
         text = (f"{s['name']}: {s['flank_form']} worm, z {s['z1']}/{s['z2']}, m_x {s['m_x']:g}, q {s['q']:g}\n"
-                f"x2 {s['x2']:.3f}, a {s['a']:.1f} mm, γ {s['gamma_m_deg']:.2f}°")
+                f"x2 {s['x2']:.3f}, a {s['a']:.1f} mm, γ {s['gamma_m_deg']:.2f}°"
+                + (f", S_AGMA {s['S_AGMA']:.2f}" if "S_AGMA" in s else ""))
         return xc, text

@@ -220,3 +220,15 @@ def test_capacity_over_arrays_is_the_scalar_chain():
 def test_bad_input_is_refused_by_name(call, word):
     with pytest.raises(GearDesignError, match=word.replace("(", r"\(").replace(")", r"\)")):
         call()
+
+
+def test_the_torque_a_pair_carries_is_where_the_rating_reaches_its_minimum():
+    p = gd.WormPair(4, 4, 50, 12.5)        # seed 002's ratio at a = 125 mm
+    for casting in agma.CASTINGS:
+        T = p.allowable_torque(1500.0, casting, application_factor=1.25)
+        r = p.rating(T, 1500.0, casting=casting, application_factor=1.25)
+        assert r.S_AGMA == pytest.approx(1.0, rel=1e-12)
+    # chill and centrifugal share C_s = 1000 while D_m <= 8 in (d_2 = 200 mm): the same torque; sand-cast less
+    assert p.allowable_torque(1500.0, "chill") == p.allowable_torque(1500.0, "centrifugal") > p.allowable_torque(1500.0)
+    # slower, the velocity factor rises: more torque
+    assert p.allowable_torque(500.0) > p.allowable_torque(1500.0)
