@@ -25,11 +25,12 @@ _FLAGS = {"m_x": "--module", "z1": "--z1", "z2": "--z2", "q": "--q", "x2": "--x2
           "ratio": "--ratio", "objective": "--optimize-x2", "alpha_deg": "--alpha-deg", "rho_f": "--rho-f",
           "ha": "--ha", "c": "--c", "n1": "--speed", "T2": "--torque", "mu": "--mu", "mu_static": "--mu-static",
           "l_1": "--bearing-span", "k_heat": "--heat-transfer", "A_housing": "--housing-area", "theta_0": "--ambient",
-          "theta_lim": "--oil-limit", "P_V0": "--no-load-loss"}
+          "theta_lim": "--oil-limit", "P_V0": "--no-load-loss", "casting": "--casting",
+          "application_factor": "--application-factor"}
 # the rating's options by the flag that sets them (a flag left out leaves its check out of the rating)
 _RATING_FLAGS = (("mu", "mu"), ("mu_static", "mu_static"), ("bearing_span", "l_1"), ("heat_transfer", "k_heat"),
                  ("housing_area", "A_housing"), ("ambient", "theta_0"), ("oil_limit", "theta_lim"),
-                 ("no_load_loss", "P_V0"))
+                 ("no_load_loss", "P_V0"), ("casting", "casting"), ("application_factor", "application_factor"))
 # the shared options' meaning for a worm pair (their spur-pair help speaks of two gears)
 _WORM_HELP = {"undercut": "no undercut of the wheel by its hob (x2 >= x_min2)",
               "sa_min": "minimum tip thickness / m_x of the worm's thread and the wheel's teeth",
@@ -79,6 +80,11 @@ def add_parser(sub):
                    help="the worm's bearing span l_1, mm: adds the deflection check")
     r.add_argument("--heat-transfer", type=float, default=None, metavar="W/M2K",
                    help="housing heat transfer coefficient k, W/(m²·K): adds the temperature check")
+    r.add_argument("--casting", default=None, metavar="METHOD",
+                   help="the bronze wheel's casting, sand, chill or centrifugal: adds the AGMA 6034 load check "
+                        "(allowable tangential load, Shigley ch. 15)")
+    r.add_argument("--application-factor", type=float, default=None, metavar="K_A",
+                   help="application factor K_A of the AGMA load check (1)")
     r.add_argument("--housing-area", type=float, default=None, metavar="M2",
                    help="heat-shedding housing area A, m² (default with --heat-transfer: 9e-5·a^1.85, a ribbed "
                         "housing)")
@@ -188,7 +194,8 @@ def _rating(args, pair):
     """(efficiency dict, WormRating, load capacity dict) the options ask for: None where they do not."""
     if args.speed is None:
         for flag, name in (("--torque", "torque"), ("--mu", "mu"), ("--bearing-span", "bearing_span"),
-                           ("--heat-transfer", "heat_transfer"), ("--housing-area", "housing_area")):
+                           ("--heat-transfer", "heat_transfer"), ("--housing-area", "housing_area"),
+                           ("--casting", "casting"), ("--application-factor", "application_factor")):
             if getattr(args, name) is not None:
                 raise GearDesignError(f"{flag} needs --speed (the worm speed, rpm)")
         return None, None, None

@@ -7,6 +7,11 @@ needs, and the mid-plane contact ratio. Each reads the dict of
 Build them with ``make_checks(kind="worm", ...)``; the options the spur pair has already (``undercut``,
 ``sa_min``, ``eps_alpha_min``) mean the same here, the worm's own (``x2_abs_max``, ``worm_length_min``,
 ``wheel_width_max``) are built for worm pairs only.
+
+With a load (``make_checks(kind="worm", worm_load=WormLoad(T2_nm, n1_rpm, casting, application_factor))``) the AGMA load check
+``agma_load`` joins them: S_AGMA = T2_all/T2 >= S_AGMAmin, T2_all the wheel torque ANSI/AGMA 6034-B92 allows at
+the worm speed (:func:`~geardesign.gears.worm.agma.agma_capacity`), over arrays (the drive's search hands one
+torque and speed per design).
 """
 from __future__ import annotations
 
@@ -14,13 +19,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...errors import GearDesignError
 from ...validate import require_range
-from ..checks.base import Check, Option, register
+from ..checks.base import Check, Option, register, register_context
 from ..checks.external import (DEFAULT_EPS_ALPHA_MIN, DEFAULT_SA_MIN, EPS_ALPHA_MIN, EPS_ALPHA_MIN_RANGE, SA_MIN,
                                SA_MIN_RANGE, UNDERCUT)
 
 __all__ = ["WheelUndercut", "WormTipThickness", "WheelTipThickness", "WheelShiftRange", "WormLength", "WheelWidth",
-           "WormContactRatio", "X2_ABS_MAX_RANGE", "DEFAULT_X2_ABS_MAX", "worm_options"]
+           "WormContactRatio", "X2_ABS_MAX_RANGE", "DEFAULT_X2_ABS_MAX", "worm_options", "WormLoad", "AgmaLoad",
+           "AGMA_SAFETY_RANGE"]
 
 DEFAULT_X2_ABS_MAX = 1.0
 X2_ABS_MAX_RANGE = (0.0, 3.0)
@@ -173,12 +180,74 @@ class WormContactRatio(Check):
         return geo["eps_alpha"]
 
 
+AGMA_SAFETY_RANGE = (0.5, 10.0)
+AGMA_SAFETY = Option("S_AGMAmin", "limit", 1.0, "smallest AGMA 6034 load safety W_t,all/W_t of a worm pair, with a load",
+                     source="Shigley ch. 15: W_t,all >= W_t with the design factor n_d in the load (n_d = 1.2 in "
+                            "Example 15-4); 1.0 leaves n_d to the user", range=AGMA_SAFETY_RANGE, cli=False)
+
+
+@dataclass(frozen=True, eq=False)
+class WormLoad:
+    """The load case of the worm's AGMA check: the wheel (output) torque ``T2_nm`` (N·m) at the worm speed
+    ``n1_rpm`` (rpm), the bronze wheel's ``casting`` ("sand", "chill", "centrifugal") and the application factor
+    ``application_factor`` (K_A). The torque and speed may be arrays (one per design, broadcast with the geometry)."""
+
+    T2_nm: object
+    n1_rpm: object
+    casting: str = "sand"
+    application_factor: float = 1.0
+
+    def __post_init__(self):
+        from .agma import _casting
+        object.__setattr__(self, "T2_nm", require_range("T2_nm", self.T2_nm, 0.0, 1e9, lo_open=True, unit="N·m"))
+        object.__setattr__(self, "n1_rpm", require_range("n1_rpm", self.n1_rpm, 0.0, 1e6, lo_open=True, unit="rpm"))
+        _casting(self.casting)
+        require_range("application_factor", self.application_factor, 1.0, 10.0)
+
+
+@register
+@dataclass(frozen=True)
+class AgmaLoad(Check):
+    """The load a worm pair carries by ANSI/AGMA 6034-B92 (Shigley ch. 15): S_AGMA = T2_all/T2 >= S_AGMAmin,
+    margin S_AGMA/S_AGMAmin − 1. Built only with a ``worm_load`` (:class:`WormLoad`)."""
+
+    option, pair_kinds, colour, order = AGMA_SAFETY, ("worm",), "deeppink", 80
+
+    limit: float = 1.0
+    load: WormLoad | None = None
+
+    @classmethod
+    def build(cls, value, context: dict) -> list:
+        load = context.get("worm_load")
+        if load is None:
+            return []
+        if not isinstance(load, WormLoad):
+            raise GearDesignError(f"worm_load must be a geardesign.gears.worm.checks.WormLoad, got {type(load).__name__}")
+        return [cls(limit=value, load=load)]
+
+    def __post_init__(self):
+        require_range("S_AGMAmin", self.limit, *AGMA_SAFETY_RANGE)
+        object.__setattr__(self, "name", self.name or "agma_load")
+        object.__setattr__(self, "label", self.label or "AGMA 6034 load: T2_all/T2 >= S_AGMAmin (Shigley ch. 15)")
+
+    def value(self, geo):
+        from .agma import agma_capacity   # here: the rating's formulas load only with a load
+        return agma_capacity(geo, self.load.n1_rpm, self.load.casting, self.load.application_factor)["T2_all"] / self.load.T2_nm
+
+    def margin(self, geo):
+        return self.value(geo) / self.limit - 1.0
+
+
+register_context(("worm_load",), lambda context: {})
+
+
 def worm_options() -> dict:
-    """The registered options that build checks of a worm pair, by name (the worm command's check options)."""
+    """The registered options that build checks of a worm pair from its geometry alone, by name (the worm command's
+    check options; the AGMA load check's ``S_AGMAmin`` goes with a load: the rating's and the drive stage's)."""
     from ..checks.base import registered
 
     out = {}
     for cls in registered():
-        if "worm" in cls.pair_kinds:
+        if "worm" in cls.pair_kinds and cls is not AgmaLoad:
             out.setdefault(cls.option.name, cls.option)
     return out

@@ -208,6 +208,18 @@ class WormPair:
         return {k: getattr(r, k) for k in ("v_g", "mu", "mu_static", "friction_method", "rho_deg", "eta_z",
                                            "eta_z_reverse", "self_locking_static", "self_locking_dynamic")}
 
+    def allowable_torque(self, n1, casting="sand", application_factor=1.0) -> float:
+        """The wheel (output) torque T2 (N·m) this pair carries at the worm speed ``n1`` (rpm) by ANSI/AGMA
+        6034-B92 as Shigley ch. 15 prints it, for a bronze wheel cast ``casting`` ("sand", "chill",
+        "centrifugal"): W_t,all·η_z·d_2/(2000·K_A) (:func:`~geardesign.gears.worm.agma.agma_capacity`;
+        docs/worm_rating.md). Seed 002's worm of a = 125 mm at 1500 rpm, sand-cast wheel:
+
+        >>> round(WormPair(4, 4, 50, 12.5).allowable_torque(1500.0, "sand"))
+        431
+        """
+        from .agma import agma_capacity
+        return float(agma_capacity(self._geo, n1, casting, application_factor)["T2_all"])
+
     def _rating_geometry(self) -> dict:
         g, src = self._geo, "WormPair geometry (DIN 3975)"
         out = {"m_x": self.m_x, "z1": self.z1, "z2": self.z2}

@@ -19,10 +19,15 @@ What each check rests on (docs/worm_rating.md says the same, per factor):
   product and τ_FG given by the caller (their formulas were not found either);
 - temperature: :mod:`geardesign.gears.worm.temperature`;
 - wear (S_W): not computed — ISO/TS 14521's wear intensity J_0T against the lubricant film parameter and
-  its material/lubricant factors could not be read in a public text.
+  its material/lubricant factors could not be read in a public text;
+- the AGMA load (S_AGMA): ANSI/AGMA 6034-B92 as Shigley ch. 15 prints it (:mod:`geardesign.gears.worm.agma`),
+  the allowable tangential load W_t,all = C_s·D_m^0.8·F_e·C_m·C_v over the design load K_A·F_t2/η_z, when
+  the wheel's casting is given; with ``k_heat="agma"`` (``"agma_fan"``) the temperature takes Shigley's cooling
+  coefficient, with ``A_housing="agma_min"`` AGMA's smallest case area.
 
 Minimum safeties default to the ones Niemann-Winter III Beispiel 3 asks for (as the DSoftCon report of that
-example prints them: S_T 1.0, S_H 1.0, S_W 1.0, S_F 1.4, S_δ 1.0).
+example prints them: S_T 1.0, S_H 1.0, S_W 1.0, S_F 1.4, S_δ 1.0); S_AGMA's 1.0 leaves the design factor n_d of
+Shigley's examples to the caller (``minimums={"S_AGMA": 1.2}``).
 """
 from __future__ import annotations
 
@@ -35,6 +40,7 @@ import numpy as np
 from ...errors import GearDesignError
 from ...results import Result, plain
 from ...validate import one_number, require_positive, require_range
+from . import agma
 from . import efficiency as eff
 from . import temperature as temp
 
@@ -44,7 +50,7 @@ __all__ = ["MIN_SAFETY", "E_STEEL_MPA", "worm_reference_diameter", "wheel_refere
            "worm_rating", "rate_geometry", "load_capacity"]
 
 # Niemann-Winter III Beispiel 3's required safeties (DSoftCon report, tests/data/worm_efficiency_examples.md)
-MIN_SAFETY = {"S_H": 1.0, "S_F": 1.4, "S_delta": 1.0, "S_T": 1.0, "S_W": 1.0}
+MIN_SAFETY = {"S_H": 1.0, "S_F": 1.4, "S_delta": 1.0, "S_T": 1.0, "S_W": 1.0, "S_AGMA": 1.0}
 E_STEEL_MPA = 206000.0          # steel, as ISO 6336-2 takes it (Z_E = 189.8 √MPa)
 
 
@@ -147,9 +153,10 @@ def deflection_limit(m_x, hardened=True):
 
 
 # -- one pair's rating -----------------------------------------------------------------------------------
-_CHECKS = ("S_H", "S_F", "S_delta", "S_T", "S_W")
+_CHECKS = ("S_H", "S_F", "S_delta", "S_T", "S_W", "S_AGMA")
 _CHECK_NAMES = {"S_H": "pitting (mean contact stress)", "S_F": "tooth root of the wheel",
-                "S_delta": "worm deflection", "S_T": "temperature (oil sump)", "S_W": "wear"}
+                "S_delta": "worm deflection", "S_T": "temperature (oil sump)", "S_W": "wear",
+                "S_AGMA": "AGMA 6034 load (W_t,all/W_t)"}
 
 
 @dataclass(frozen=True)
@@ -160,7 +167,8 @@ class WormRating(Result):
     no-load, bearing and seal losses); ``self_locking_static`` (at rest, μ_static) and
     ``self_locking_dynamic`` (running, μ); forces ``F_t2, F_t1, F_r`` (N); stresses ``sigma_Hm``, ``tau_F``
     (MPa), deflection ``delta_m`` and its limit ``delta_lim`` (mm), oil temperature ``theta_S`` (°C), power
-    loss ``P_V`` (W); safeties ``S_H, S_F, S_delta, S_T, S_W`` (NaN: not computed, ``notes`` says why);
+    loss ``P_V`` (W); safeties ``S_H, S_F, S_delta, S_T, S_W, S_AGMA`` (NaN: not computed, ``notes`` says why),
+    ``W_t_all`` and ``W_t`` (N) the AGMA allowable and design tangential loads of the wheel;
     ``minimums`` the required ones; ``factors`` a table of every quantity with its method and source."""
 
     T2: float
@@ -188,6 +196,9 @@ class WormRating(Result):
     S_delta: float
     S_T: float
     S_W: float
+    S_AGMA: float
+    W_t_all: float
+    W_t: float
     minimums: dict
     _rows: tuple = field(repr=False, compare=False, default=())
     notes: tuple = ()
@@ -274,8 +285,12 @@ def worm_rating(T2, n1, m_x, z1, z2, q, *, x2=0.0, alpha_n_deg=20.0, b_2=None, l
     value at rest, 0.15). Each check runs when its inputs are given, else its safety is NaN with a note:
     pitting needs ``p_m_star``, ``E_red``, ``sigma_HG``; the root needs ``b_2``, ``Y_root``, ``tau_FG``; the
     deflection ``l_1`` (bearing span, mm; ``d_f1`` defaults to the DIN 3975 root diameter with c* = 0.25);
-    the temperature ``k_heat`` (W/(m²·K)) and ``A_housing`` (m², e.g.
-    :func:`~geardesign.gears.worm.temperature.housing_area_estimate`); wear is never computed (not found).
+    the temperature ``k_heat`` (W/(m²·K); ``"agma"``/``"agma_fan"``: Shigley's h̄_CR at n1 without/with a fan)
+    and ``A_housing`` (m², e.g. :func:`~geardesign.gears.worm.temperature.housing_area_estimate`;
+    ``"agma_min"``: AGMA's smallest case area); the AGMA load ``casting`` ("sand", "chill", "centrifugal":
+    the bronze wheel's, :mod:`~geardesign.gears.worm.agma`) and ``b_2``, with the application factor
+    ``application_factor`` (K_A);
+    wear is never computed (not found).
     ``minimums`` overrides :data:`MIN_SAFETY` entries. The options are those of :func:`rate_geometry`.
     """
     m_x = one_number("m_x", require_positive("m_x", m_x, unit="mm"))
@@ -309,7 +324,8 @@ def check_options(options: dict) -> dict:
 
 def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E_STEEL_MPA, worm_hardened=True,
                   p_m_star=None, E_red=None, sigma_HG=None, Y_root=None, tau_FG=None, k_heat=None, A_housing=None,
-                  theta_0=20.0, theta_lim=90.0, P_V0=0.0, P_VL=0.0, P_VD=0.0, minimums=None) -> WormRating:
+                  theta_0=20.0, theta_lim=90.0, P_V0=0.0, P_VL=0.0, P_VD=0.0, casting=None, application_factor=1.0,
+                  minimums=None) -> WormRating:
     """:func:`worm_rating` on a pair's geometry ``geo``: ``m_x``, ``z1``, ``z2`` as numbers and ``d_m1``, ``d_2``,
     ``a``, ``gamma_m_deg``, ``alpha_n_deg``, ``d_f1`` and (optionally) ``b_2`` as ``(value, source)`` pairs (the
     factor table names each source), as a :class:`~geardesign.gears.worm.pair.WormPair` gives them."""
@@ -361,8 +377,8 @@ def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E
     row("F_r", F_r, "N", "F_t2 tan α_n cos ρ'/cos(γ_m + ρ') (SDP/SI eq. 16-20)")
 
     nan = math.nan
-    sigma_Hm = tau_F = delta = delta_lim = theta_S = nan
-    S_H = S_F = S_d = S_T = nan
+    sigma_Hm = tau_F = delta = delta_lim = theta_S = W_all = W_t = nan
+    S_H = S_F = S_d = S_T = S_A = nan
     if p_m_star is not None and E_red is not None and sigma_HG is not None:
         sigma_Hm = row("sigma_Hm", mean_contact_stress(T2, a, p_m_star, E_red), "MPa",
                        "(4/π)√(p_m* T2 E_red/a³) (ISO/TS 14521 form, not checked against its text); p_m*, E_red given")
@@ -384,6 +400,17 @@ def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E
         S_d = row("S_delta", delta_lim / delta if delta > 0 else math.inf, "", "delta_lim/delta_m")
     else:
         notes.append("S_delta not computed: give l_1, the worm's bearing span")
+    if isinstance(k_heat, str):
+        fan = {"agma": False, "agma_fan": True}.get(k_heat)
+        if fan is None:
+            raise GearDesignError(f"k_heat must be a number (W/(m²·K)), 'agma' or 'agma_fan', got {k_heat!r}")
+        k_heat = row("k_heat", agma.heat_transfer_coefficient_agma(n1, fan), "W/(m²·K)",
+                     f"Shigley's h_CR = n1/{3939 if fan else 6494} + 0.13 ft·lbf/(min·in²·°F) (Eq. 15-50), "
+                     f"{'a fan' if fan else 'no fan'} on the worm shaft")
+    if isinstance(A_housing, str):
+        if A_housing != "agma_min":
+            raise GearDesignError(f"A_housing must be a number (m²) or 'agma_min', got {A_housing!r}")
+        A_housing = row("A_housing", agma.housing_area_min_agma(a), "m²", "AGMA's A_min = 43.2 C^1.7 in² (Shigley Eq. 15-52)")
     if k_heat is not None and A_housing is not None:
         theta_S = row("theta_S", temp.oil_sump_temperature(P_V, k_heat, A_housing, theta_0), "°C",
                       "theta_0 + P_V/(k A) (heat balance)")
@@ -391,6 +418,25 @@ def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E
                   "k A (theta_lim − theta_0)/P_V (Autodesk/CSN form)")
     else:
         notes.append("S_T not computed: give k_heat and A_housing")
+    if casting is not None and "b_2" in geo:
+        b_2 = float(geo["b_2"][0])
+        src = "ANSI/AGMA 6034-B92 as Shigley ch. 15 prints it"
+        C_s = row("C_s", agma.materials_factor(a, d_2, casting), "", f"materials factor, {casting}-cast bronze wheel "
+                  f"(lbf/in^1.8; {src}, Eqs. 15-32…15-35)")
+        C_m = row("C_m", agma.ratio_correction_factor(u), "", f"ratio correction factor ({src}, Eq. 15-36)")
+        C_v = row("C_v", agma.velocity_factor(v_g), "", f"velocity factor at v_g ({src}, Eq. 15-37)")
+        F_e = row("F_e", agma.effective_face_width(b_2, d_m1), "mm", "min(b_2, 0.67 d_m1) (Shigley §15-6)")
+        W_all = row("W_t_all", agma.allowable_tangential_load(C_s, d_2, F_e, C_m, C_v), "N",
+                    f"C_s D_m^0.8 F_e C_m C_v ({src}, Eq. 15-28)")
+        W_t = row("W_t", agma.design_tangential_load(T2, d_2, eta, application_factor), "N",
+                  "K_A F_t2/eta_z (Shigley Eq. 15-58 without its design factor; K_A = application_factor given)")
+        W_f = row("W_f", agma.friction_force(F_t2, mu_v, gamma, alpha_n_deg), "N", "mu W_t2/(cos α_n cos γ_m − mu sin γ_m) (Shigley §15-6)")
+        row("P_f", agma.friction_power(W_f, v_g), "W", "|W_f| v_g (Shigley §15-6)")
+        S_A = row("S_AGMA", W_all / W_t, "", "W_t_all/W_t (AGMA 6034-B92 load; lives over 25 000 h, Shigley §15-8)")
+    elif casting is not None:
+        notes.append("S_AGMA not computed: give the wheel's face width b_2 with the casting")
+    else:
+        notes.append("S_AGMA not computed: give the wheel's casting ('sand', 'chill' or 'centrifugal'; AGMA 6034-B92)")
     notes.append("S_W (wear) not computed: ISO/TS 14521's wear intensity curves were not found in a public text")
     if lock_d:
         notes.append("dynamically self-locking: the wheel cannot drive the worm even while it runs")
@@ -398,11 +444,13 @@ def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E
                       eta_z_reverse=eta_r, eta_total=eta_t, self_locking_static=lock_s, self_locking_dynamic=lock_d,
                       F_t2=F_t2, F_t1=F_t1, F_r=F_r, sigma_Hm=sigma_Hm, tau_F=tau_F, delta_m=delta,
                       delta_lim=delta_lim, theta_S=theta_S, P_V=P_V, S_H=S_H, S_F=S_F, S_delta=S_d, S_T=S_T,
-                      S_W=nan, minimums=mins, _rows=tuple(rows), notes=tuple(notes))
+                      S_W=nan, S_AGMA=S_A, W_t_all=W_all, W_t=W_t, minimums=mins, _rows=tuple(rows), notes=tuple(notes))
 
 
 _RATE_OPTIONS = ("l_1", "mu", "mu_static", "E_1", "worm_hardened", "p_m_star", "E_red", "sigma_HG", "Y_root",
-                 "tau_FG", "k_heat", "A_housing", "theta_0", "theta_lim", "P_V0", "P_VL", "P_VD", "minimums")
+                 "tau_FG", "k_heat", "A_housing", "theta_0", "theta_lim", "P_V0", "P_VL", "P_VD", "casting",
+                 "application_factor",
+                 "minimums")
 
 
 def load_capacity(rating: WormRating, P_const=0.0) -> dict:
@@ -410,10 +458,10 @@ def load_capacity(rating: WormRating, P_const=0.0) -> dict:
     at any load: friction depends on the sliding speed only, so the forces, τ_F and δ_m grow as T2, σ_Hm as
     √T2 and the mesh loss as T2 — every limit is closed-form (no root finding needed):
 
-        T2_H = T2·(S_H/S_Hmin)², T2_F = T2·S_F/S_Fmin, T2_δ = T2·S_δ/S_δmin,
+        T2_H = T2·(S_H/S_Hmin)², T2_F = T2·S_F/S_Fmin, T2_δ = T2·S_δ/S_δmin, T2_AGMA = T2·S_AGMA/S_AGMAmin,
         T2_T from S_T = Q/(P_VZ(T2) + P_const) = S_Tmin, P_const the load-independent losses (W) in P_V.
 
-    Returns ``{"S_H": …, "S_F": …, "S_delta": …, "S_T": …, "T2_max": …, "governing": …}`` (checks not
+    Returns ``{"S_H": …, "S_F": …, "S_delta": …, "S_T": …, "S_AGMA": …, "T2_max": …, "governing": …}`` (checks not
     computed left out). Load-dependent bearing losses given as a constant are taken as load-independent.
     """
     r = rating
@@ -424,6 +472,8 @@ def load_capacity(rating: WormRating, P_const=0.0) -> dict:
         out["S_F"] = r.T2 * r.S_F / r.minimums["S_F"]
     if math.isfinite(r.S_delta):
         out["S_delta"] = r.T2 * r.S_delta / r.minimums["S_delta"]
+    if math.isfinite(r.S_AGMA):
+        out["S_AGMA"] = r.T2 * r.S_AGMA / r.minimums["S_AGMA"]
     if math.isfinite(r.S_T):
         pc = one_number("P_const", require_range("P_const", P_const, 0.0, 1e9, unit="W"))
         q_heat = r.S_T * r.P_V                       # the heat the housing sheds at theta_lim

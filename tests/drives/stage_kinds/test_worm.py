@@ -159,3 +159,106 @@ def test_a_computed_worm_efficiency_is_the_mesh_efficiency_at_the_speed_into_the
         gd.Drive(power_kw=3, n_in_rpm=1500, stages=[gd.ChainStage(z1=13), w])
     with pytest.raises(gd.GearDesignError, match="'computed'"):
         gd.WormStage(m_x=4, q=12.5, z1=4, z2=50, efficiency="auto")
+
+
+# -- sized by its load (AGMA 6034-B92, tests/gears/worm/test_agma.py checks the formulas against Shigley) ------------
+SEED_T_OUT = 4000 / (1500 * math.pi / 30) * 12.5 * 0.87       # the gear motor's output torque, N·m
+
+
+def _failing(a, m_x, q, z2, load):
+    """The failing checks of the series pair (a, m_x, q) with z2 wheel teeth and z1 = 2 under ``load``."""
+    from geardesign.gears.worm.geometry import x2_from_center_distance
+    try:
+        pair = gd.WormPair(m_x, 2, z2, q, float(x2_from_center_distance(a, m_x, z2, q)))
+    except gd.GearDesignError:
+        return ["the wheel does not exist"]
+    t = pair.checks(worm_length_min=False, worm_load=load)
+    return t.loc[~t["ok"], "check"].tolist()
+
+
+def test_a_sized_stage_passes_every_check_and_the_next_smaller_series_size_fails_one():
+    from geardesign.drives.stage_kinds.worm import size_worm
+    from geardesign.gears.worm import agma
+    from geardesign.gears.worm.checks import WormLoad
+    from geardesign.gears.worm.series import default_q_values, worm_center_distance_series, worm_module_series
+
+    st = WormStage(None, None, z1=2, z2=25, efficiency=0.87, casting="centrifugal", name="gear motor")
+    sz = size_worm(st, 25, 1500.0, SEED_T_OUT)
+    load = WormLoad(SEED_T_OUT, 1500.0, "centrifugal")
+    assert sz.feasible and sz.a in worm_center_distance_series() and sz.m_x in worm_module_series()
+    pair = gd.WormPair.from_center_distance(sz.a, sz.m_x, 2, 25, sz.q)
+    table = pair.checks(worm_length_min=False, worm_load=load)
+    assert table["ok"].all(), table
+    # its capacity by hand from the AGMA factors on the pair's own geometry: W_t,all·η·d_2/2000
+    g = pair.geometry()
+    v = float(gd.gears.worm.efficiency.sliding_speed(g.d_m1, 1500.0, g.gamma_m_deg))
+    eta = float(gd.gears.worm.efficiency.efficiency_worm_driving(
+        g.gamma_m_deg, gd.gears.worm.efficiency.friction_coefficient_agma(v), g.alpha_n_deg))
+    W = agma.allowable_tangential_load(agma.materials_factor(g.a, g.d_2, "centrifugal"), g.d_2,
+                                       min(g.b_2, 0.67 * g.d_m1), agma.ratio_correction_factor(12.5),
+                                       agma.velocity_factor(v))
+    assert sz.T2_all == pytest.approx(float(W) * eta * g.d_2 / 2000.0, rel=1e-12)
+    # every module × q of the next smaller series centre distance fails a check, and each that exists fails the load
+    a_prev = float(worm_center_distance_series()[worm_center_distance_series() < sz.a].max())
+    failures = {(m, q): _failing(a_prev, m, q, 25, load) for m in worm_module_series() for q in default_q_values()}
+    assert all(failures.values())
+    # some hold every geometric check there: the load is what they fail
+    assert any(f == ["agma_load"] for f in failures.values())
+    # and the candidates ranked before it at its own centre distance fail the load (size_worm names the last one)
+    assert sz.smaller is not None and sz.smaller[1] == "agma_load"
+
+
+def test_the_drive_sizes_the_stage_by_the_load_its_flow_brings():
+    st = WormStage(None, None, z1=2, z2=25, efficiency=0.87, casting="centrifugal", name="gear motor")
+    a = gd.Drive(power_kw=4, n_in_rpm=1500, stages=[st]).analyse()
+    s = a.stages[0]["summary"]
+    assert a.success and s["m_x"] is not None and s["S_AGMA"] >= 1.0
+    assert s["T2_all_nm"] == pytest.approx(SEED_T_OUT * s["S_AGMA"], rel=1e-12)
+    # twice the power needs a larger worm; the same worm then fails its load check
+    b = gd.Drive(power_kw=8, n_in_rpm=1500, stages=[st]).analyse()
+    assert b.stages[0]["summary"]["a"] > s["a"]
+    fixed = WormStage(s["m_x"], s["q"], 2, 25, a=s["a"], efficiency=0.87, casting="centrifugal")
+    c = gd.Drive(power_kw=8, n_in_rpm=1500, stages=[fixed]).analyse()
+    assert not c.success and c.checks.set_index("check").loc["agma_load", "margin"] < 0
+
+
+def test_the_search_sizes_each_design_at_its_own_torque():
+    from geardesign.drives.stage_kinds.worm import size_worm
+
+    st = WormStage(None, None, z1=2, ratio_range=(8, 40), efficiency=0.85, casting="sand", name="worm")
+    drive = gd.Drive(power_kw=4, n_in_rpm=1500, stages=[st, gd.ChainStage(name="chain", k_e=2.148)])
+    r = drive.optimize(total_ratio=25, ratio_tol=0.03, objective="min_size")
+    assert r.success
+    best = r.best.drive.stages[0]
+    flow = r.best.stages[0]["flow"]
+    sz = size_worm(st, best.z2, flow.n_in_rpm, flow.torque_out_nm)
+    assert (best.m_x, best.q, best.a) == (sz.m_x, sz.q, sz.a)
+    again = gd.Drive(power_kw=4, n_in_rpm=1500, stages=r.best.drive.stages).analyse()
+    assert again.success and "agma_load" in set(again.checks["check"])
+    row = r.table.iloc[0]
+    assert row["worm.m_x"] == best.m_x and row["worm.a"] == best.a
+
+
+def test_the_sized_scene_runs_from_the_command_line(capsys):
+    import json
+    from pathlib import Path
+
+    from geardesign.cli import main
+
+    scene = Path(__file__).resolve().parents[3] / "studies" / "scenes" / "seed002_worm_sized.toml"
+    assert main(["drive", str(scene), "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    worm = out["analysis"]["stages"][0] if "analysis" in out else out["stages"][0]
+    assert worm["kind"] == "worm" and worm["casting"] == "centrifugal" and worm["S_AGMA"] >= 1.0
+
+
+@pytest.mark.parametrize("kw, word", [
+    (dict(m_x=None, q=None, z1=2, z2=25, efficiency=0.87), "casting"),
+    (dict(m_x=4, q=None, z1=2, z2=25, efficiency=0.87), "q is needed"),
+    (dict(m_x=None, q=None, z1=2, z2=25, efficiency="computed", casting="sand"), "efficiency"),
+    (dict(m_x=4, q=10, z1=2, z2=25, efficiency=0.87, casting="bronze"), "casting"),
+    (dict(m_x=4, q=10, z1=2, z2=25, efficiency=0.87, casting="sand", application_factor=0.5), "application_factor"),
+])
+def test_bad_sizing_input_is_refused_by_name(kw, word):
+    with pytest.raises(gd.GearDesignError, match=word):
+        WormStage(**kw)

@@ -2,6 +2,8 @@
 against its quantity computed here from the formulas (independently of geometry.py's dict), each able to fail."""
 import math
 
+import numpy as np
+
 import pytest
 
 from geardesign.errors import GearDesignError
@@ -79,3 +81,24 @@ def test_worm_tip_thickness_fails_for_a_steep_tall_thread():
     rack = BasicRack(alpha_deg=30.0, ha=1.3, c=0.25, rho_f=0.0)
     g = worm_geometry_float(2.0, 1, 40, 10.0, 0.0, "ZA", rack)
     assert _margins(g)["tip_thickness1"] < 0      # π/2 − 2·1.3·tan 30° = 0.070 < 0.25
+
+
+def test_the_agma_load_check_is_built_with_a_load_only_and_is_the_ratings_safety():
+    from geardesign.gears.worm.geometry import worm_geometry
+    from geardesign.gears.worm.rating import worm_rating
+
+    assert "agma_load" not in [c.name for c in ck.make_checks(kind="worm")]
+    T = np.array([150.0, 300.0, 600.0])
+    n1 = np.array([1500.0, 1000.0, 750.0])
+    load = wc.WormLoad(T, n1, "chill", 1.25)
+    (check,) = [c for c in ck.make_checks(kind="worm", worm_load=load, S_AGMAmin=1.2) if c.name == "agma_load"]
+    geo = worm_geometry(5.0, 2, 40, 10.0)
+    margins = check.margin(geo)
+    for i in range(3):
+        r = worm_rating(T[i], n1[i], 5.0, 2, 40, 10.0, alpha_n_deg=float(geo["alpha_n_deg"]), b_2=float(geo["b_2"]),
+                        casting="chill", application_factor=1.25)
+        assert margins[i] == pytest.approx(r.S_AGMA / 1.2 - 1.0, rel=1e-12)
+    with pytest.raises(GearDesignError, match="worm_load"):
+        ck.make_checks(kind="worm", worm_load=(300.0, 1500.0))
+    with pytest.raises(GearDesignError, match="S_AGMAmin"):
+        ck.make_checks(kind="worm", worm_load=load, S_AGMAmin=0.1)
