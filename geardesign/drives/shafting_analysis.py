@@ -48,6 +48,7 @@ __all__ = ["Element", "element_loads", "two_support_reactions", "shaft_deflectio
 G_STEEL_MPA = 81_000.0     # shear modulus of steel, N/mm² (E/(2(1 + ν)), E = 210 000, ν = 0.3: 80 770)
 HUB_LENGTH_D = 1.5         # a sprocket's or coupling's hub length over its seat diameter (its key's hub)
 GEAR_HUB_D = 1.2           # a gear's hub: its face width, at least 1.2·d (Chernavsky's l_hub = (1.2 … 1.5)·d)
+F_SH_MAX_UM = 1e4         # the largest f_sh the strength chain takes as a given factor (gears/strength/chain.py)
 UNLOADED_NM = 1e-6         # a section whose moment, torque (N·m) and axial force (kN) are all below this carries nothing
 
 
@@ -883,6 +884,14 @@ def with_shaft_misalignment(drive, kinds, stages_out, stage_rows, f_sh: dict, ob
         K_v = _factor(res["strength"], "K_v")
         value = f_sh[st.name] * stage.application_factor * K_v
         own = any(k in factors for k in ("f_sh", "K_Hbeta"))
+        if not own and value > F_SH_MAX_UM:
+            # shafts that tilt the mesh by more than the chain takes (10 mm, far past any gear): the stage fails by
+            # this check's name (an error stopped the analysis; K_Hβ stays the default's, the table says so)
+            rows_by_stage.setdefault(st.name, []).append((st.name, "shaft_misalignment", 1.0 - value / F_SH_MAX_UM))
+            table.append(dict(stage=st.name, f_sh_nominal_um=f_sh[st.name], K_A=stage.application_factor, K_v=K_v,
+                              f_sh_um=value, K_Hbeta_default=before, K_Hbeta=before,
+                              source=f"default (f_sh above {F_SH_MAX_UM:g} µm)"))
+            continue
         if not own:
             factors["f_sh"] = value
             new = replace(stage, strength={**(stage.strength or {}), "factors": factors})

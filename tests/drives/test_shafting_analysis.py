@@ -511,3 +511,44 @@ def test_given_tapered_bearings_are_a_pair(tapered_catalog):
                         bearings=("30206", "6206")),)
     with pytest.raises(GearDesignError, match="tapered roller bearing is mounted against another"):
         _two_stage(Shafting(layout=mixed)).analyse()
+
+
+# ------------------------------------------------------------------- the search re-sizes for the shafts' K_Hβ
+
+def test_search_resizes_a_stage_that_fails_with_its_shafts_k_hbeta():
+    # the input shaft drawn slender (25 mm, 360 mm between its bearings, the pinion 90 mm from A): the search's
+    # first design, sized with ISO 6336-1 eq. (44)'s f_sh, fails its contact strength with the f_sh of its shafts
+    # (and only that); the search sizes the stage again and returns a design that holds, as Drive.analyse() finds
+    lay = (DriveShaft(0, [(400.0, 25.0)], (20.0, 380.0), {"g": 110.0, "coupling": 0.0}),)
+    d = gd.Drive(power_kw=4, n_in_rpm=1450, shafting=Shafting(layout=lay), stages=[
+        gd.GearStage(None, material="42CrMo4", name="g", z1_range=(18, 20), ratio_range=(3.2, 3.8))])
+    r = d.optimize(total_ratio=3.5, ratio_tol=0.05, top=1)
+    first = r.table[r.table["rank"] == 1].iloc[0]
+    # rank 1 as the search sized it, analysed on its shafts: fails its contact strength alone, with K_Hβ from f_sh
+    as_sized = gd.Drive(power_kw=4, n_in_rpm=1450, shafting=Shafting(layout=lay), stages=[
+        gd.GearStage(first["g.m"], int(first["g.z1"]), int(first["g.z2"]), first["g.x1"], first["g.x2"],
+                     material="42CrMo4", name="g", face_width_mm=first["g.face_width_mm"])]).analyse()
+    bad = as_sized.checks[~as_sized.checks["ok"]]
+    assert list(zip(bad["item"], bad["check"])) == [("g", "contact_strength")]
+    mm = as_sized.table("mesh_misalignment").iloc[0]
+    assert mm["source"] == "shafts" and mm["K_Hbeta"] > mm["K_Hbeta_default"]
+    # the search's answer: the same teeth, a larger size, every check holding on the shafts
+    assert r.success and r.best.success and "re-sized" in r.message and first["shafts"].startswith("holds re-sized")
+    again = r.best.drive.analyse()
+    assert again.success and again.min_margin == pytest.approx(r.best.min_margin, rel=1e-9, abs=1e-12)
+    st = again.drive.stages[0]
+    assert (st.z1, st.z2) == (int(first["g.z1"]), int(first["g.z2"]))
+    assert (st.m, st.width_mm) > (first["g.m"], first["g.face_width_mm"])
+    assert again.table("mesh_misalignment").iloc[0]["source"] == "shafts"
+
+
+def test_a_mesh_tilted_past_the_chain_fails_by_name():
+    # a 10 mm input shaft 1.5 m long: f_sh beyond the 10 mm the strength chain takes stopped the analysis with an
+    # error (factors['f_sh'] must be in [0, 10000]); now the stage fails its check shaft_misalignment
+    lay = (DriveShaft(0, [(1500.0, 10.0)], (20.0, 1480.0), {"g": 400.0, "coupling": 0.0}),)
+    r = gd.Drive(power_kw=4, n_in_rpm=1450, shafting=Shafting(layout=lay), stages=[
+        gd.GearStage(3, 20, 70, material="42CrMo4", name="g", face_width_mm=30)]).analyse()
+    row = r.checks[(r.checks["item"] == "g") & (r.checks["check"] == "shaft_misalignment")].iloc[0]
+    mm = r.table("mesh_misalignment").iloc[0]
+    assert mm["f_sh_um"] > 1e4 and row["margin"] == pytest.approx(1 - mm["f_sh_um"] / 1e4, rel=1e-12)
+    assert not row["ok"] and "g: shaft_misalignment" in r.message
