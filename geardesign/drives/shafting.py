@@ -216,8 +216,9 @@ class Shafting:
         object.__setattr__(self, "bearing_type", types)
         for t in set(types.values()) if isinstance(types, dict) else {types}:
             if not self.series_for(t):
+                kinds = SHAFT_BEARING_TYPES[1:] if t == "auto" else (t,)
                 raise GearDesignError(f"bearing_series {', '.join(self.series)} holds no series of bearing type "
-                                      f"{t!r} (its series: {', '.join(self.series_for(t, all_series=True))})")
+                                      f"{t!r} (its series: {', '.join(s for k in kinds for s in series_of_type(k))})")
         require_choice("arrangement", self.arrangement, ARRANGEMENTS)
         for name, lo, hi in (("clearance_mm", 5.0, 500.0), ("gear_gap_mm", 0.0, 500.0), ("overhang_mm", 10.0, 2000.0)):
             object.__setattr__(self, name, one_number(name, require_range(name, getattr(self, name), lo, hi,
@@ -255,10 +256,10 @@ class Shafting:
             return self.bearing_type.get(at, "auto")
         return self.bearing_type
 
-    def series_for(self, bearing_type: str, all_series: bool = False) -> tuple:
+    def series_for(self, bearing_type: str) -> tuple:
         """The series a bearing type chooses from, in the order "auto" tries them (the radial ones, then the tapered
-        ones), restricted to ``bearing_series`` when given (``all_series``: not restricted)."""
-        given = None if all_series or self.bearing_series is None else (
+        ones), restricted to ``bearing_series`` when given."""
+        given = None if self.bearing_series is None else (
             (self.bearing_series,) if isinstance(self.bearing_series, str) else tuple(self.bearing_series))
         kinds = ("deep_groove", "cylindrical_roller", "tapered") if bearing_type == "auto" else (bearing_type,)
         return tuple(s for t in kinds for s in series_of_type(t, given))
