@@ -464,10 +464,8 @@ def _bearings(sh, k, ds, reactions, n_rpm, bore, supports, grid=None):
     else:                   # none: the one nearest to holding under the worse of its two loads
         worst = np.fmin(ta["min_margin"].to_numpy(), tb["min_margin"].to_numpy())
         j = int(np.argmax(np.where(np.isnan(worst), -np.inf, worst)))
-    row = rows.iloc[[j]].reset_index(drop=True)
-    checks = [_check_from_row(_evaluate(row, fr, fa, n_rpm, sh.life_h, a1, None, None, "grease", None).iloc[0],
-                              fr, float(fa), n_rpm, sh.life_h) for fr, fa in ((radial[0][0], fa_a[j]),
-                                                                              (radial[1][0], fa_b[j]))]
+    checks = [_check_from_row(t.iloc[j], fr, float(fa[j]), n_rpm, sh.life_h)     # row j was evaluated at its loads
+              for t, fr, fa in ((ta, radial[0][0], fa_a), (tb, radial[1][0], fa_b))]
     name = checks[0].designation
     return (name, name), checks
 
