@@ -17,9 +17,10 @@ Method, per shaft (docs/shafts_in_drive.md):
    section reaches S_min after DIN 743 (:func:`geardesign.drives.din743.shaft_safety`; sections: a key seat
    under each keyed gear and hub, a press fit at each bearing, a shoulder at each step and gear body; a gear whose
    keyed rim would be too thin is cut on the shaft, :func:`cut_on_shaft`), then the least from there whose keys
-   fit; then the smallest bearing of the series with bore >= d_b passing every check under both of the shaft's
-   bearing loads (ranked as :func:`geardesign.drives.bearing.select_bearing` ranks them), the seat taking its
-   bore; with ``Shafting(stiff=True)`` the default shafts of a pair are thickened until its f_sh is at most
+   fit; then the bearing of the shaft's type (:meth:`~geardesign.drives.shafting.Shafting.type_of`) of the least
+   bore >= d_b passing every check under both of the shaft's bearing loads (with "auto" a deep groove or
+   cylindrical roller bearing before a tapered roller pair, whose axial loads come from the loads its radial loads
+   induce, :func:`_pair_loads`; then the smallest outside diameter: :func:`_bearings`), the seat taking its bore; with ``Shafting(stiff=True)`` the default shafts of a pair are thickened until its f_sh is at most
    ISO 6336-1 eq. (44)'s (:func:`iso_f_sh_um`); a drawn shaft keeps its diameters and bearings, and is checked;
 4. the beam's deflection (:func:`beam_deflections`, the beam of :func:`geardesign.drives.shaft_beam.analyse_shaft`)
    at each gear's face ends; the mesh

@@ -8,8 +8,9 @@ With ``total_ratio`` the drive is optimised; without it, analysed as given.
 lubricant of the computed efficiencies) puts the gear stages on shafts with bearings; a ``[[drive.shaft]]`` with
 ``lengths_mm`` is a shaft as drawn (:class:`~geardesign.drives.shafting.DriveShaft`: ``at``, ``lengths_mm`` and
 ``diameters_mm`` of its sections from the left end, ``supports_mm``, its elements' places in a table
-``[drive.shaft.positions]`` {stage name or "coupling": x_mm}, ``bearing_a``/``bearing_b``, ``material``), and
-switches the shafting on (docs/shafts_in_drive.md)::
+``[drive.shaft.positions]`` {stage name or "coupling": x_mm}, ``bearing_a``/``bearing_b``, ``material``,
+``bearing_type``), and a ``[[drive.shaft]]`` with only ``at`` and ``bearing_type`` sets a default shaft's bearing
+type; each switches the shafting on (docs/shafts_in_drive.md)::
 
     [drive]
     power_kw = 4
