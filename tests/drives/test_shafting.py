@@ -47,6 +47,8 @@ def test_drive_refuses_what_is_not_a_shafting():
     st = [gd.GearStage(3, 20, 60, material="42CrMo4", face_width_mm=40)]
     with pytest.raises(GearDesignError, match="shafting must be a Shafting"):
         gd.Drive(power_kw=5, n_in_rpm=1000, stages=st, shafting="yes")
+    with pytest.raises(GearDesignError, match="bearing_type: shaft 4 is beyond"):
+        gd.Drive(power_kw=5, n_in_rpm=1000, stages=st, shafting=Shafting(bearing_type={4: "tapered"}))
     with pytest.raises(GearDesignError, match="shaft 5"):
         gd.Drive(power_kw=5, n_in_rpm=1000, stages=st, shafting=Shafting(
             layout=[DriveShaft(5, [(200.0, 40.0)], [20.0, 180.0], {"gear": 60.0})]))
