@@ -100,6 +100,18 @@ def _with_shafting(section: dict, args) -> dict:
                 text = str(exc)
                 raise GearDesignError(f"{flag} must {text.split(' must ', 1)[1]}" if " must " in text
                                       else f"{flag}: {text}") from None
+    if {"bearing_series", "bearing_type"} & set(given):   # the two together (a type none of the series holds)
+        merged = {**(section.get("shafting") or {}), **given}
+        try:
+            Shafting(**{k: merged[k] for k in ("bearing_series", "bearing_type") if k in merged})
+        except GearDesignError as exc:
+            flags = [f for f, k, *_ in _SHAFTING_OPTIONS if k in ("bearing_series", "bearing_type") and k in given]
+            raise GearDesignError(f"{' with '.join(flags)}: {exc}") from None
+        types = given.get("bearing_type")
+        beyond = sorted(k for k in types if k > len(section["stages"])) if isinstance(types, dict) else []
+        if beyond:
+            raise GearDesignError(f"--bearing-type: shaft {beyond[0]} is beyond the drive's shafts 0 … "
+                                  f"{len(section['stages'])}")
     if args.oil is not None:
         try:
             nu40, nu100 = (float(v) for v in args.oil.split(","))

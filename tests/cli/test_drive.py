@@ -219,7 +219,10 @@ def test_drive_shafts_tables_and_json(tmp_path, capsys):
                                           (["--bearing-type", "spherical"], "--bearing-type"),
                                           (["--bearing-type", "one=tapered"], "--bearing-type"),
                                           (["--bearing-type", "1=spherical"], "--bearing-type"),
-                                          (["--arrangement", "Y"], "--arrangement")])
+                                          (["--arrangement", "Y"], "--arrangement"),
+                                          (["--bearing-type", "3=tapered"], "--bearing-type"),
+                                          (["--bearing-series", "62,63", "--bearing-type", "tapered"],
+                                           "--bearing-series with --bearing-type")])
 def test_drive_shaft_options_bad_input_one_line_exit_2(tmp_path, capsys, args, option):
     code = main(["drive", _scene(tmp_path, REDUCER)] + args)
     err = capsys.readouterr().err.strip().splitlines()
