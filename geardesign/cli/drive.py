@@ -60,6 +60,12 @@ _SHAFTING_OPTIONS = (("--shaft-material", "material", str, "STEEL",
                      ("--bearing-series", "bearing_series", str, "SERIES",
                       "bearing series the bearings are chosen from: 62, 63, 72B, 73B, NU2, NU3, or several "
                       "joined by commas (62,63,NU2,NU3)"),
+                     ("--bearing-type", "bearing_type", str, "TYPE",
+                      "the shafts' bearings: auto (deep groove, else a tapered roller pair on the seat), deep_groove, "
+                      "cylindrical_roller or tapered for every shaft, or SHAFT=TYPE pairs joined by commas "
+                      "(1=tapered,2=tapered; the others auto)"),
+                     ("--arrangement", "arrangement", str, "X|O",
+                      "a tapered roller pair's mounting: X (face to face, default) or O (back to back)"),
                      ("--oil-temperature", "oil_temperature_c", float, "C",
                       "oil temperature for the computed efficiencies, °C (70; with --oil)"))
 
@@ -84,6 +90,8 @@ def _with_shafting(section: dict, args) -> dict:
              if getattr(args, "shafting_" + key) is not None}
     if "bearing_series" in given:
         given["bearing_series"] = tuple(v.strip() for v in given["bearing_series"].split(","))
+    if "bearing_type" in given and "=" in given["bearing_type"]:
+        given["bearing_type"] = _per_shaft(given["bearing_type"])
     for flag, key, *_ in _SHAFTING_OPTIONS:
         if key in given:
             try:
@@ -92,6 +100,18 @@ def _with_shafting(section: dict, args) -> dict:
                 text = str(exc)
                 raise GearDesignError(f"{flag} must {text.split(' must ', 1)[1]}" if " must " in text
                                       else f"{flag}: {text}") from None
+    if {"bearing_series", "bearing_type"} & set(given):   # the two together (a type none of the series holds)
+        merged = {**(section.get("shafting") or {}), **given}
+        try:
+            Shafting(**{k: merged[k] for k in ("bearing_series", "bearing_type") if k in merged})
+        except GearDesignError as exc:
+            flags = [f for f, k, *_ in _SHAFTING_OPTIONS if k in ("bearing_series", "bearing_type") and k in given]
+            raise GearDesignError(f"{' with '.join(flags)}: {exc}") from None
+        types = given.get("bearing_type")
+        beyond = sorted(k for k in types if k > len(section["stages"])) if isinstance(types, dict) else []
+        if beyond:
+            raise GearDesignError(f"--bearing-type: shaft {beyond[0]} is beyond the drive's shafts 0 … "
+                                  f"{len(section['stages'])}")
     if args.oil is not None:
         try:
             nu40, nu100 = (float(v) for v in args.oil.split(","))
@@ -105,6 +125,18 @@ def _with_shafting(section: dict, args) -> dict:
     if not (given or args.shafts):
         return section
     return dict(section, shafting={**(section.get("shafting") or {}), **given})
+
+
+def _per_shaft(text: str) -> dict:
+    """--bearing-type's SHAFT=TYPE pairs as {shaft: type} (refused by the option's name when not so)."""
+    out = {}
+    for part in text.split(","):
+        k, sep, v = part.partition("=")
+        if not sep or not k.strip().isdigit():
+            raise GearDesignError(f"--bearing-type must be a type or SHAFT=TYPE pairs joined by commas "
+                                  f"(e.g. 1=tapered,2=deep_groove), got {text!r}")
+        out[int(k)] = v.strip()
+    return out
 
 
 _STAGE_LOAD = (("material", "material"), ("life_h", "life_h"), ("application_factor", "application_factor"),

@@ -107,6 +107,12 @@ def _shaft_labels(ax, analysis, xs, y0: float) -> tuple[list, list]:
     return shafts, keys
 
 
+def _pair(row) -> str:
+    """' (X)' / ' (O)' after a tapered roller pair's designation (its arrangement), else ''."""
+    m = str(row.get("mounting", ""))
+    return f" {m[m.index('('):]}" if m.startswith("tapered pair") else ""
+
+
 def _shaft_texts(ax, analysis, xs, y0: float) -> dict:
     """A drive with shafting: each shaft on bearings drawn with a bearing ring about it (red when one of its
     bearings or sections fails) and {shaft k: (its label's lines: bearing-seat d, bearings and their L10h, least
@@ -121,13 +127,13 @@ def _shaft_texts(ax, analysis, xs, y0: float) -> dict:
     bearings = sh["bearings"]
     for _, r in sh["shafts"].iterrows():
         k = int(r["shaft"])
-        mine = checks["item"].isin([f"shaft {k}", f"bearing {k}A", f"bearing {k}B"])
+        mine = checks["item"].isin([f"shaft {k}", *bearings.loc[bearings["shaft"] == k, "name"]])
         bad = bool((~checks.loc[mine, "ok"]).any())
         colour = "red" if bad else "k"
         for radius, fc in ((0.16, "white"), (0.1, "white")):
             ax.add_patch(Circle((xs[k], y0), radius, fc=fc, ec=colour, lw=1.2, zorder=4))
         lives = bearings.loc[bearings["shaft"] == k, "L10h"].to_numpy()
-        out[k] = (f"\nd {r['d_bearing_mm']:g} mm, {r['bearings'].split('/')[0]} x2\nL10h {lives.min():.3g} h, "
+        out[k] = (f"\nd {r['d_bearing_mm']:g} mm, {r['bearings'].split('/')[0]} x2{_pair(r)}\nL10h {lives.min():.3g} h, "
                   f"S {r['least_safety']:.3g}", colour)
     return out
 
@@ -305,7 +311,8 @@ def plot_layout(analysis, ax=None):
     for k in sh["analyses"]:          # each shaft's name and bearings right of the drawing
         yk = ys[k]
         bb = bearings[bearings["shaft"] == k]
-        ax.text(x_hi + 10, yk, f"shaft {k}\n{bb['designation'].iloc[0]} x2", ha="left", va="center", fontsize=7,
+        ax.text(x_hi + 10, yk, f"shaft {k}\n{bb['designation'].iloc[0]} x2{_pair(bb.iloc[0])}", ha="left",
+                va="center", fontsize=7,
                 color="red" if f"shaft {k}" in failing or set(bb["name"]) & failing else "k")
     span = max(float(r["span_mm"]) for _, r in sh["shafts"].iterrows())
     y_all = [ys[k] for k in sh["analyses"]]

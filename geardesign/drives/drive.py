@@ -147,6 +147,11 @@ class Drive:
                 if ds.at > len(stages):
                     raise GearDesignError(f"shafting layout: shaft {ds.at} is beyond the drive's shafts 0 … "
                                           f"{len(stages)}")
+            types = self.shafting.bearing_type
+            beyond = sorted(k for k in types if k > len(stages)) if isinstance(types, dict) else []
+            if beyond:
+                raise GearDesignError(f"shafting bearing_type: shaft {beyond[0]} is beyond the drive's shafts 0 … "
+                                      f"{len(stages)}")
 
     def _computed_efficiencies(self, stages: tuple) -> tuple:
         """The stages with ``efficiency='computed'`` (a worm stage's) given their number at the speed into them:

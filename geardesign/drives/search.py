@@ -41,6 +41,7 @@ from .stages import Shaft
 __all__ = ["Search", "Designs", "min_margin", "WALK_LABEL"]
 
 WALK_LABEL = "drive: designs"     # the branch and bound's step, the one a progress(done, total) callback follows
+RESIZE_ROUNDS = 4     # a design's gear stages sized again for its shafts' K_Hβ at most this many times
 
 
 class _Large(Exception):
@@ -571,23 +572,69 @@ class Search:
 
     def _with_shafts(self, feas, table) -> tuple:
         """(design, its analysis or None, a note): the ranked designs analysed with their shafts, bearings and K_Hβ
-        from the shafts (Drive(shafting=...)) in rank order, the first that holds every check taken; the table's
-        column ``shafts`` says for each one analysed whether it held or which checks failed."""
+        from the shafts (Drive(shafting=...)) in rank order, the first that holds every check taken; a design whose
+        gear stage sized by its load fails with its shafts' K_Hβ is sized again first (:meth:`_resized`). The
+        table's column ``shafts`` says for each one analysed whether it held (re-sized how) or which checks failed."""
         table["shafts"] = "not analysed"
         self._shaft_fails = ()
         for rank, c in enumerate(feas[:self.top]):
-            an = self._fixed(c).analyse(self.objective)
+            an, steps = self._resized(c, self._fixed(c).analyse(self.objective))
             bad = an.checks.loc[~an.checks["ok"], ["item", "check"]]
-            table.loc[table["rank"] == rank + 1, "shafts"] = ("holds" if an.success else "fails " + "; ".join(
-                f"{a}: {b}" for a, b in bad.itertuples(index=False)))
+            done = "; ".join(steps)
+            table.loc[table["rank"] == rank + 1, "shafts"] = (("holds" + (f" re-sized: {done}" if steps else ""))
+                                                             if an.success else "fails " + "; ".join(
+                f"{a}: {b}" for a, b in bad.itertuples(index=False)) + (f" (re-sized: {done})" if steps else ""))
             if an.success:
                 note = "" if rank == 0 else (f"; ranks 1 to {rank} fail with their shafts, bearings or K_Hβ from the "
                                              f"shafts (column shafts), rank {rank + 1} holds")
+                if steps:
+                    note += (f"; rank {rank + 1} re-sized for the K_Hβ of its shafts: {done} (size "
+                             f"{an.size_mm2:.6g} mm², mass {an.mass_kg:.4g} kg)")
                 return c, an, note
             if rank == 0:
                 self._shaft_fails = tuple(bad.itertuples(index=False))
         return feas[0], None, (f"; the {min(self.top, feas.size)} ranked designs each fail with their shafts, "
                                f"bearings or K_Hβ from the shafts (column shafts)")
+
+    def _resized(self, c, an) -> tuple:
+        """(analysis, steps): design c's analysis on its shafts ``an``, and while a check of a gear stage sized by its
+        load fails with K_Hβ from its shafts, that stage sized again for the f_sh its shafts gave
+        (:meth:`StageKind.resize`: the first larger module and width of its sizing that holds with that f_sh scaled
+        to its size; f_sh per b/m the largest seen, so the size only grows), and the drive analysed again, at most
+        :data:`RESIZE_ROUNDS` times; ``steps`` says what was re-sized ("fast: m 3 → 3.5 mm, b 40 → 45 mm (f_sh
+        21.9 µm from its shafts)")."""
+        steps, per = [], {}        # per stage: the largest f_sh seen per b/m (GearKind.resize scales it so)
+        drive = an.drive
+        for _ in range(RESIZE_ROUNDS):
+            if an.success:
+                break
+            failing = set(an.checks.loc[~an.checks["ok"], "item"])
+            mm = an.shafting["mesh_misalignment"]
+            from_shafts = dict(zip(mm["stage"], mm["f_sh_um"])) if len(mm) else {}
+            src = dict(zip(mm["stage"], mm["source"])) if len(mm) else {}
+            new, changed = list(drive.stages), False
+            for k, (kind, st) in enumerate(zip(self.kinds, self.stages)):
+                if st.name not in failing or src.get(st.name) != "shafts":
+                    continue
+                scale = float(new[k].width_mm) / float(new[k].m)
+                per[k] = max(per.get(k, 0.0), float(from_shafts[st.name]) / scale)
+                sized = kind.resize(st, new[k], self.option_at(k, c), self.objective, self.flow_at(k, c),
+                                    per[k] * scale)
+                if sized is None:
+                    continue
+                steps.append(f"{st.name}: m {new[k].m:g} → {sized.m:g} mm, b {new[k].width_mm:g} → "
+                             f"{sized.width_mm:g} mm (f_sh {per[k] * scale:.3g} µm from its shafts)")
+                new[k], changed = sized, True
+            if not changed:
+                break
+            fixed = replace(drive, stages=tuple(new))
+            object.__setattr__(fixed, "_load_from_motor", self.drive._load_from_motor)
+            try:
+                drive, an = fixed, fixed.analyse(self.objective)
+            except GearDesignError as exc:       # e.g. a re-sized stage its shafts cannot take: keep the last
+                steps.append(f"stopped: {exc}")
+                break
+        return an, steps
 
     def _closest_solved(self) -> str:
         """When the closest failing design was stopped by its batch checks (its solved stages never

@@ -35,7 +35,7 @@ from ..errors import GearDesignError
 from ..validate import one_number, require_choice, require_count, require_range
 
 __all__ = ["Shafting", "DriveShaft", "STEP_MM", "FILLET_MM", "PEAK_FACTOR", "SHAFT_LIFE_H", "BEARING_SERIES",
-           "default_positions"]
+           "SHAFT_BEARING_TYPES", "ARRANGEMENTS", "default_positions", "series_of_type"]
 
 STEP_MM = 5.0          # diameter step between the ends, the bearing seats and the gear seats (shoulder 2.5 mm)
 FILLET_MM = 1.0        # the shoulders' fillet radius
@@ -45,6 +45,30 @@ SHAFT_LIFE_H = 20_000.0   # required bearing life, h (a reducer in one-shift ser
 # roller bearings where the radial load is heavy and there is no axial force (the selection takes the smallest
 # outside diameter that carries the load; a type NU bearing is refused where an axial force acts)
 BEARING_SERIES = ("62", "63", "NU2", "NU3")
+# the bearing types a drive's shaft can be given (Shafting.bearing_type), as the catalogs' types
+# (geardesign.drives.bearing.BEARING_TYPES); "auto" chooses (docs/shafts_in_drive.md): a deep groove ball bearing
+# (or a cylindrical roller bearing where no axial force acts) on the seat when one reaches the life, else a pair of
+# tapered roller bearings on the seat, else the same at the next bore up. Single angular contact ball bearings
+# are not offered: mounted in pairs they take induced axial loads whose factor the catalog rows do not give.
+SHAFT_BEARING_TYPES = ("auto", "deep_groove", "cylindrical_roller", "tapered")
+# a tapered pair's mounting: "X" face to face (each cup held by the housing's cover on its outer side: an axial
+# force on the shaft is taken by the bearing it points to), "O" back to back (by the other one)
+ARRANGEMENTS = ("X", "O")
+
+
+def series_of_type(bearing_type: str, series=None) -> tuple:
+    """The catalog series (:data:`geardesign.drives.bearing.SERIES`) of a shaft bearing type (one of
+    :data:`SHAFT_BEARING_TYPES` but "auto"), those of ``series`` alone when given.
+
+    >>> series_of_type("tapered")
+    ('302', '303', '320X', '322', '323')
+    >>> series_of_type("deep_groove", ("62", "NU2"))
+    ('62',)
+    """
+    from .bearing import BEARING_TYPES, SERIES
+
+    kind = BEARING_TYPES[bearing_type]
+    return tuple(s for s, (_, k) in SERIES.items() if k == kind and (series is None or s in series))
 
 
 @dataclass(frozen=True)
@@ -116,8 +140,13 @@ class Shafting:
     ``material``: the shafts' steel (a name of ``catalogs/shaft_materials_din743.csv`` or a dict, DIN 743-3);
     ``S_min``: the least DIN 743 safety (fatigue and static, DIN 743-1 clause 4.1: 1.2); ``peak_factor``: the
     maximum load of the static proof over the nominal one; ``life_h``: the required bearing life L10h (h),
-    ``reliability`` (%, a1); ``bearing_series``: the catalog series the bearings are chosen from (the smallest
-    bearing whose bore fits the seat and that reaches the life; default :data:`BEARING_SERIES`); ``clearance_mm``, ``gear_gap_mm``,
+    ``reliability`` (%, a1); ``bearing_type``: the shafts' bearings, one of :data:`SHAFT_BEARING_TYPES` for every
+    shaft or a dict {shaft k: type} (a shaft it does not name: "auto"); "auto" takes deep groove ball bearings (or
+    cylindrical roller bearings where no axial force acts) on the seat when one reaches the life, else a pair of
+    tapered roller bearings on it, else the same at the next bore up (docs/shafts_in_drive.md); ``arrangement``: a
+    tapered pair's mounting, "X" (face to face) or "O" (back to back); ``bearing_series``: the catalog series the
+    bearings may be chosen from (None: every series of the types in use; the smallest bearing of the least bore
+    that fits the seat and reaches the life is taken); ``clearance_mm``, ``gear_gap_mm``,
     ``overhang_mm``: the default layout's lengths; ``lubricant`` (a :class:`~geardesign.gears.efficiency.Lubricant`)
     with ``oil_temperature_c``, ``Ra_um`` and ``lubrication``: the gear stages' efficiencies computed (ISO/TR
     14179-2 mesh loss, SKF bearing friction) and used in the power flow where the stage's efficiency was not
@@ -135,7 +164,9 @@ class Shafting:
     peak_factor: float = PEAK_FACTOR
     life_h: float = SHAFT_LIFE_H
     reliability: float = 90.0
-    bearing_series: object = BEARING_SERIES
+    bearing_series: object = None
+    bearing_type: object = "auto"
+    arrangement: str = "X"
     clearance_mm: float = 20.0
     gear_gap_mm: float = 10.0
     overhang_mm: float = 60.0
@@ -166,12 +197,29 @@ class Shafting:
         object.__setattr__(self, "life_h", one_number("life_h", require_range(
             "life_h", self.life_h, 0.0, 1e7, lo_open=True, unit="h")))
         reliability_factor(self.reliability)
-        series = (self.bearing_series,) if isinstance(self.bearing_series, str) else tuple(self.bearing_series)
-        if not series:
-            raise GearDesignError(f"bearing_series must name one of {', '.join(SERIES)}")
-        for s in series:
-            require_choice("bearing_series", s, tuple(SERIES))
-        object.__setattr__(self, "bearing_series", series[0] if len(series) == 1 else series)
+        if self.bearing_series is not None:
+            series = (self.bearing_series,) if isinstance(self.bearing_series, str) else tuple(self.bearing_series)
+            if not series:
+                raise GearDesignError(f"bearing_series must name one of {', '.join(SERIES)}")
+            for s in series:
+                require_choice("bearing_series", s, tuple(SERIES))
+            object.__setattr__(self, "bearing_series", series[0] if len(series) == 1 else series)
+        types = self.bearing_type
+        if isinstance(types, dict):
+            checked = {}
+            for k, t in types.items():
+                k = require_count("bearing_type's shaft number", k, 0, 64)
+                checked[k] = require_choice(f"bearing_type of shaft {k}", t, SHAFT_BEARING_TYPES)
+            types = checked
+        else:
+            require_choice("bearing_type", types, SHAFT_BEARING_TYPES)
+        object.__setattr__(self, "bearing_type", types)
+        for t in set(types.values()) if isinstance(types, dict) else {types}:
+            if not self.series_for(t):
+                kinds = SHAFT_BEARING_TYPES[1:] if t == "auto" else (t,)
+                raise GearDesignError(f"bearing_series {', '.join(self.series)} holds no series of bearing type "
+                                      f"{t!r} (its series: {', '.join(s for k in kinds for s in series_of_type(k))})")
+        require_choice("arrangement", self.arrangement, ARRANGEMENTS)
         for name, lo, hi in (("clearance_mm", 5.0, 500.0), ("gear_gap_mm", 0.0, 500.0), ("overhang_mm", 10.0, 2000.0)):
             object.__setattr__(self, name, one_number(name, require_range(name, getattr(self, name), lo, hi,
                                                                           unit="mm")))
@@ -195,7 +243,26 @@ class Shafting:
 
     @property
     def series(self) -> tuple:
+        """The series the bearings may be chosen from (the given ones, else every series of the types in use)."""
+        if self.bearing_series is None:
+            types = set(self.bearing_type.values()) | {"auto"} if isinstance(self.bearing_type, dict) \
+                else {self.bearing_type}
+            return tuple(dict.fromkeys(s for t in SHAFT_BEARING_TYPES if t in types for s in self.series_for(t)))
         return (self.bearing_series,) if isinstance(self.bearing_series, str) else tuple(self.bearing_series)
+
+    def type_of(self, at: int) -> str:
+        """The bearing type of shaft ``at`` (one of :data:`SHAFT_BEARING_TYPES`)."""
+        if isinstance(self.bearing_type, dict):
+            return self.bearing_type.get(at, "auto")
+        return self.bearing_type
+
+    def series_for(self, bearing_type: str) -> tuple:
+        """The series a bearing type chooses from, in the order "auto" tries them (the radial ones, then the tapered
+        ones), restricted to ``bearing_series`` when given."""
+        given = None if self.bearing_series is None else (
+            (self.bearing_series,) if isinstance(self.bearing_series, str) else tuple(self.bearing_series))
+        kinds = ("deep_groove", "cylindrical_roller", "tapered") if bearing_type == "auto" else (bearing_type,)
+        return tuple(s for t in kinds for s in series_of_type(t, given))
 
     def given(self, at: int):
         """The DriveShaft the user gave for shaft ``at``, or None."""

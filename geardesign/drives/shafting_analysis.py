@@ -17,9 +17,10 @@ Method, per shaft (docs/shafts_in_drive.md):
    section reaches S_min after DIN 743 (:func:`geardesign.drives.din743.shaft_safety`; sections: a key seat
    under each keyed gear and hub, a press fit at each bearing, a shoulder at each step and gear body; a gear whose
    keyed rim would be too thin is cut on the shaft, :func:`cut_on_shaft`), then the least from there whose keys
-   fit; then the smallest bearing of the series with bore >= d_b passing every check under both of the shaft's
-   bearing loads (ranked as :func:`geardesign.drives.bearing.select_bearing` ranks them), the seat taking its
-   bore; with ``Shafting(stiff=True)`` the default shafts of a pair are thickened until its f_sh is at most
+   fit; then the bearing of the shaft's type (:meth:`~geardesign.drives.shafting.Shafting.type_of`) of the least
+   bore >= d_b passing every check under both of the shaft's bearing loads (with "auto" a deep groove or
+   cylindrical roller bearing before a tapered roller pair, whose axial loads come from the loads its radial loads
+   induce, :func:`_pair_loads`; then the smallest outside diameter: :func:`_bearings`), the seat taking its bore; with ``Shafting(stiff=True)`` the default shafts of a pair are thickened until its f_sh is at most
    ISO 6336-1 eq. (44)'s (:func:`iso_f_sh_um`); a drawn shaft keeps its diameters and bearings, and is checked;
 4. the beam's deflection (:func:`beam_deflections`, the beam of :func:`geardesign.drives.shaft_beam.analyse_shaft`)
    at each gear's face ends; the mesh
@@ -48,6 +49,7 @@ __all__ = ["Element", "element_loads", "two_support_reactions", "shaft_deflectio
 G_STEEL_MPA = 81_000.0     # shear modulus of steel, N/mm² (E/(2(1 + ν)), E = 210 000, ν = 0.3: 80 770)
 HUB_LENGTH_D = 1.5         # a sprocket's or coupling's hub length over its seat diameter (its key's hub)
 GEAR_HUB_D = 1.2           # a gear's hub: its face width, at least 1.2·d (Chernavsky's l_hub = (1.2 … 1.5)·d)
+F_SH_MAX_UM = 1e4         # the largest f_sh the strength chain takes as a given factor (gears/strength/chain.py)
 UNLOADED_NM = 1e-6         # a section whose moment, torque (N·m) and axial force (kN) are all below this carries nothing
 
 
@@ -391,37 +393,114 @@ def _catalog(series: tuple):
     return bearing_catalog(list(series))
 
 
-def _bearings(sh, ds, reactions, n_rpm, bore):
-    """(designation, [BearingCheck A, B]) of a shaft: the given ones, else the smallest (outside diameter, then
-    bore) of the series whose bore is >= ``bore`` (a given shaft: equal to its seat) that passes every check under
-    both bearings' loads (both bearings alike), as :func:`geardesign.drives.bearing.select_bearing` ranks them."""
-    from .bearing import _check_from_row, _evaluate, check_bearing, reliability_factor
+def _pair_loads(rows, loads, ka_n):
+    """Each catalog row's axial loads (Fa_A, Fa_B), N, as arrays, on a shaft's two bearings of that row under the
+    radial loads of ``loads`` and the external axial force ``ka_n`` (> 0: toward bearing B): a tapered roller pair
+    adjusted against each other (:func:`geardesign.drives.bearing.tapered_axial_loads`, SKF 17000/1 EN Table 7),
+    each bearing its share with the loads its neighbour's radial load induces; any other bearing: A, the locating
+    one, takes the whole axial force and B none."""
+    from .bearing import tapered_axial_loads
 
-    loads = [(max(math.hypot(reactions["Ay"], reactions["Az"]), 1e-9), abs(reactions["Ax"])),
-             (max(math.hypot(reactions["By"], reactions["Bz"]), 1e-9), 0.0)]
+    n = len(rows)
+    fa_a, fa_b = np.full(n, abs(ka_n)), np.zeros(n)
+    tr = (rows["bearing_type"] == "tapered_roller").to_numpy()
+    if tr.any():
+        Y = rows["Y"].to_numpy(dtype=float)[tr]
+        fa_a[tr], fa_b[tr] = tapered_axial_loads(loads[0][0], loads[1][0], Y, Y, ka_n)
+    return fa_a, fa_b
+
+
+def _toward_b(sh, reactions, supports) -> float:
+    """The external axial force on the shaft (N) as tapered_axial_loads takes it: > 0 toward the bearing that takes
+    it, B. Face to face ("X") each bearing takes what points toward it, back to back ("O") the other one."""
+    push = -float(reactions["Ax"]) * (1.0 if supports[1] >= supports[0] else -1.0)    # Σ F_x toward B's side
+    return push if sh.arrangement == "X" else -push
+
+
+def _bearings(sh, k, ds, reactions, n_rpm, bore, supports, grid=None):
+    """(designations, [BearingCheck A, B]) of shaft k: the given ones, else chosen from the series of the shaft's
+    bearing type (:meth:`~geardesign.drives.shafting.Shafting.type_of`) whose bore is >= ``bore`` (a drawn shaft:
+    equal to its seat; a default one: a bore of ``grid``, the seat sizing's bores), both bearings alike, passing
+    every check under both bearings' loads (a tapered pair's axial loads by :func:`_pair_loads`): the least bore
+    first; at that bore, with "auto", a deep groove (or cylindrical roller) bearing before a tapered pair; then the
+    smallest outside diameter. None holds: the one nearest to holding under the worse of its two loads."""
+    from .bearing import _check_from_row, _evaluate, bearing_catalog, check_bearing, reliability_factor
+
+    radial = [(max(math.hypot(reactions["Ay"], reactions["Az"]), 1e-9), abs(reactions["Ax"])),
+              (max(math.hypot(reactions["By"], reactions["Bz"]), 1e-9), 0.0)]
+    ka = _toward_b(sh, reactions, supports)
     if ds is not None and ds.bearings is not None:
         names = ds.bearings
+        rows = bearing_catalog(tuple(dict.fromkeys(_catalog_series_of(names))))
+        rows = rows.set_index("designation").loc[list(names)].reset_index()
+        tapered = (rows["bearing_type"] == "tapered_roller").to_numpy()
+        if tapered.any() and not tapered.all():
+            raise GearDesignError(f"shaft {k}: bearings {names[0]!r} and {names[1]!r}: a tapered roller bearing is "
+                                  f"mounted against another one (a pair adjusted against each other)")
+        if tapered.all():
+            fa = tapered_pair_axial(rows, radial, ka)
+            loads = [(radial[0][0], fa[0]), (radial[1][0], fa[1])]
+        else:
+            loads = radial
         return names, [check_bearing(name, fr, fa, n_rpm=n_rpm, life_h=sh.life_h, reliability=sh.reliability)
                        for name, (fr, fa) in zip(names, loads)]
-    rows = _catalog(sh.series)
-    rows = rows[(rows["d_mm"] >= bore - 1e-9) & ((ds is None) | (rows["d_mm"] <= bore + 1e-9))].reset_index(drop=True)
+    series = sh.series_for(sh.type_of(k))
+    rows = _catalog(series)
+    keep = (rows["d_mm"] >= bore - 1e-9) & ((ds is None) | (rows["d_mm"] <= bore + 1e-9))
+    if ds is None and grid is not None:
+        keep &= rows["d_mm"].isin(grid)
+    rows = rows[keep].reset_index(drop=True)
     if rows.empty:
         what = f"a bore of {bore:g} mm (the seat of shaft {ds.at} as given)" if ds is not None else f"a bore >= {bore:g} mm"
-        raise GearDesignError(f"no bearing of series {', '.join(sh.series)} has {what}: give the shaft's bearings "
+        raise GearDesignError(f"no bearing of series {', '.join(series)} has {what}: give the shaft's bearings "
                               f"or a seat of a catalog bore")
     a1 = reliability_factor(sh.reliability)
-    ta, tb = (_evaluate(rows, fr, fa, n_rpm, sh.life_h, a1, None, None, "grease", None) for fr, fa in loads)
+    fa_a, fa_b = _pair_loads(rows, radial, ka)
+    ta, tb = (_evaluate(rows, fr, fa, n_rpm, sh.life_h, a1, None, None, "grease", None)
+              for fr, fa in ((radial[0][0], fa_a), (radial[1][0], fa_b)))
     both = (ta["feasible"] & tb["feasible"]).to_numpy()
-    if both.any():          # the smallest outside diameter (then bore) that both bearings' loads allow
-        j = int(np.lexsort((rows["d_mm"].to_numpy(), rows["D_mm"].to_numpy(), ~both))[0])
+    if both.any():          # the least bore, at it radial before tapered (the series' order), the smallest D
+        step = rows["bearing_type"].eq("tapered_roller").to_numpy()
+        j = int(np.lexsort((np.arange(len(rows)), rows["D_mm"].to_numpy(), step, rows["d_mm"].to_numpy(), ~both))[0])
     else:                   # none: the one nearest to holding under the worse of its two loads
         worst = np.fmin(ta["min_margin"].to_numpy(), tb["min_margin"].to_numpy())
         j = int(np.argmax(np.where(np.isnan(worst), -np.inf, worst)))
-    row = rows.iloc[[j]].reset_index(drop=True)
-    checks = [_check_from_row(_evaluate(row, fr, fa, n_rpm, sh.life_h, a1, None, None, "grease", None).iloc[0],
-                              fr, fa, n_rpm, sh.life_h) for fr, fa in loads]
+    checks = [_check_from_row(t.iloc[j], fr, float(fa[j]), n_rpm, sh.life_h)     # row j was evaluated at its loads
+              for t, fr, fa in ((ta, radial[0][0], fa_a), (tb, radial[1][0], fa_b))]
     name = checks[0].designation
     return (name, name), checks
+
+
+def tapered_pair_axial(rows, radial, ka_n) -> tuple:
+    """(Fa_A, Fa_B), N, of the two given tapered roller bearings ``rows`` (A then B) under the radial loads of
+    ``radial`` [(Fr, ...), (Fr, ...)] and the external axial force ``ka_n`` toward B (SKF 17000/1 EN Table 7)."""
+    from .bearing import tapered_axial_loads
+
+    Y = rows["Y"].to_numpy(dtype=float)
+    fa = tapered_axial_loads(radial[0][0], radial[1][0], Y[0], Y[1], ka_n)
+    return float(fa[0]), float(fa[1])
+
+
+def _types_of(checks) -> list:
+    """The catalog bearing type of each BearingCheck (deep_groove_ball, tapered_roller, ...)."""
+    from .bearing import SERIES
+
+    return [SERIES[c.series][1] for c in checks]
+
+
+def _catalog_series_of(names) -> list:
+    """The catalog series holding each designation (an unknown one: refused by name, as check_bearing does)."""
+    from .bearing import SERIES, bearing_catalog
+
+    cat = bearing_catalog(tuple(SERIES))
+    out = []
+    for name in names:
+        hit = cat.loc[cat["designation"] == name, "series"]
+        if hit.empty:
+            raise GearDesignError(f"designation {name!r} is in none of the bearing catalogs (series "
+                                  f"{', '.join(SERIES)}); see geardesign.drives.bearing.bearing_catalog")
+        out.append(str(hit.iloc[0]))
+    return out
 
 
 # -- the mesh misalignment -------------------------------------------------------------------------------------
@@ -543,6 +622,15 @@ def _gear_planes(drive, stages_out, elements) -> tuple:
     return offsets, span
 
 
+def _seat_bores(sh, k) -> list:
+    """The bores a default shaft k's bearing seat is sized over: those of its bearing type's series ("auto": of
+    its deep groove and cylindrical roller series, the first it tries, when it has them)."""
+    series = sh.series_for(sh.type_of(k))
+    cat = _catalog(series)
+    first = cat[cat["bearing_type"] != "tapered_roller"]
+    return sorted(set(float(v) for v in (first if len(first) else cat)["d_mm"]))
+
+
 def _placed(sh, k, els, planes, bores, n_rpm, d_min):
     """(geometry, model, bearing designations, BearingChecks, material) of shaft k: a drawn one as drawn, a default
     one at the least bore >= d_min holding DIN 743 and its keys, then on the bearings chosen for it (their bore
@@ -556,7 +644,7 @@ def _placed(sh, k, els, planes, bores, n_rpm, d_min):
     r = two_support_reactions([geo.x[e.name] for e in els], [e.fy for e in els], [e.fz for e in els],
                               [e.fx for e in els], [e.y_mm for e in els], *geo.supports)
     seat = geo.d_b if geo.d_b is not None else float(model.diameter_at(geo.supports[0])[0])
-    names, checks = _bearings(sh, ds, r, n_rpm, seat)
+    names, checks = _bearings(sh, k, ds, r, n_rpm, seat, geo.supports, bores)
     if ds is None and checks[0].d_mm > geo.d_b:      # the bearing's bore is the seat: a thicker shaft
         geo = _default_geometry(sh, els, planes, checks[0].d_mm)
         model = _model(geo, els)
@@ -621,24 +709,24 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
             raise GearDesignError(f"layout: shaft {ds.at} carries no gear of the drive (the shafts on bearings are "
                                   f"{', '.join(map(str, sorted(elements))) or 'none'})")
     planes = _gear_planes(drive, stages_out, elements)
-    bores = sorted(set(float(v) for v in _catalog(sh.series)["d_mm"]))
-    placed = {k: _placed(sh, k, elements[k], planes, bores, float(n[k]), bores[0]) for k in sorted(elements)}
+    grids = {k: _seat_bores(sh, k) for k in elements}
+    placed = {k: _placed(sh, k, elements[k], planes, grids[k], float(n[k]), grids[k][0]) for k in sorted(elements)}
     stiffened = set()
     if sh.stiff:
         limits = {st.name: iso_f_sh_um(res["stage"], res["pair"], float(T[k - 1]))
                   for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1)
                   if getattr(st, "kind", "") == "gear"}
-        for _ in range(len(bores)):
+        for _ in range(max(len(g) for g in grids.values())):
             f_sh = _mesh_f_sh(drive, stages_out, T, elements, placed)
             grow = set()
             for k, st in enumerate(drive.stages, start=1):
                 if st.name in f_sh and f_sh[st.name] > limits[st.name]:
-                    grow |= {j for j in (k - 1, k) if placed[j][0].d_b is not None and placed[j][0].d_b < bores[-1]}
+                    grow |= {j for j in (k - 1, k) if placed[j][0].d_b is not None and placed[j][0].d_b < grids[j][-1]}
             if not grow:
                 break
             for j in grow:
-                d_next = next(d for d in bores if d > placed[j][0].d_b)
-                placed[j] = _placed(sh, j, elements[j], planes, bores, float(n[j]), d_next)
+                d_next = next(d for d in grids[j] if d > placed[j][0].d_b)
+                placed[j] = _placed(sh, j, elements[j], planes, grids[j], float(n[j]), d_next)
             stiffened |= grow
     shaft_rows, bearing_rows, section_rows, key_rows, rows, deflection_rows = [], [], [], [], [], []
     analyses, bearing_loads = {}, {}
@@ -649,10 +737,13 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
         safety, analysis = _safety(geo, els, sh, mat)
         analyses[k] = analysis
         d_seat = [float(v) for v in model.diameter_at(list(geo.supports))[0]]
-        for tag, chk, d_s in zip("AB", checks, d_seat):
-            item = f"bearing {k}{tag}"
+        kinds = _types_of(checks)
+        mounting = f"tapered pair ({sh.arrangement})" if set(kinds) == {"tapered_roller"} else "locating A, floating B"
+        for tag, chk, d_s, kind in zip("AB", checks, d_seat, kinds):
+            item = f"bearing {k}{tag} {chk.designation}"     # the checks table names the bearing chosen
             bearing_rows.append(dict(name=item, shaft=k, x_mm=geo.supports["AB".index(tag)],
-                                     designation=chk.designation, seat_d_mm=d_s, bore_mm=chk.d_mm, D_mm=chk.D_mm,
+                                     designation=chk.designation, bearing_type=kind, mounting=mounting,
+                                     seat_d_mm=d_s, bore_mm=chk.d_mm, D_mm=chk.D_mm,
                                      B_mm=chk.B_mm, F_r_n=chk.F_r_n, F_a_n=chk.F_a_n, n_rpm=chk.n_rpm, P_n=chk.P_n,
                                      L10h=chk.L10h, life_h=sh.life_h, s0=chk.s0, ok=chk.ok))
             fit = chk.d_mm - d_s
@@ -694,7 +785,8 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
                                span_mm=geo.supports[1] - geo.supports[0],
                                d_end_mm=None if geo.d_b is None else geo.d_b - STEP_MM,
                                d_bearing_mm=d_seat[0], d_gear_mm=None if geo.d_b is None else geo.d_b + STEP_MM,
-                               stiffened=k in stiffened, bearings="/".join(names), least_safety=_least(safety.table),
+                               stiffened=k in stiffened, bearings="/".join(names), bearing_type=kinds[0],
+                               mounting=mounting, least_safety=_least(safety.table),
                                max_deflection_mm=analysis.max_deflection_mm,
                                gear_deflection_mm=float(el.loc[gears, "w_mm"].max()),
                                gear_slope_rad=float(el.loc[gears, "th_rad"].max()),
@@ -791,6 +883,14 @@ def with_shaft_misalignment(drive, kinds, stages_out, stage_rows, f_sh: dict, ob
         K_v = _factor(res["strength"], "K_v")
         value = f_sh[st.name] * stage.application_factor * K_v
         own = any(k in factors for k in ("f_sh", "K_Hbeta"))
+        if not own and value > F_SH_MAX_UM:
+            # shafts that tilt the mesh by more than the chain takes (10 mm, far past any gear): the stage fails by
+            # this check's name (an error stopped the analysis; K_Hβ stays the default's, the table says so)
+            rows_by_stage.setdefault(st.name, []).append((st.name, "shaft_misalignment", 1.0 - value / F_SH_MAX_UM))
+            table.append(dict(stage=st.name, f_sh_nominal_um=f_sh[st.name], K_A=stage.application_factor, K_v=K_v,
+                              f_sh_um=value, K_Hbeta_default=before, K_Hbeta=before,
+                              source=f"default (f_sh above {F_SH_MAX_UM:g} µm)"))
+            continue
         if not own:
             factors["f_sh"] = value
             new = replace(stage, strength={**(stage.strength or {}), "factors": factors})

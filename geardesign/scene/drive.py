@@ -8,8 +8,9 @@ With ``total_ratio`` the drive is optimised; without it, analysed as given.
 lubricant of the computed efficiencies) puts the gear stages on shafts with bearings; a ``[[drive.shaft]]`` with
 ``lengths_mm`` is a shaft as drawn (:class:`~geardesign.drives.shafting.DriveShaft`: ``at``, ``lengths_mm`` and
 ``diameters_mm`` of its sections from the left end, ``supports_mm``, its elements' places in a table
-``[drive.shaft.positions]`` {stage name or "coupling": x_mm}, ``bearing_a``/``bearing_b``, ``material``), and
-switches the shafting on (docs/shafts_in_drive.md)::
+``[drive.shaft.positions]`` {stage name or "coupling": x_mm}, ``bearing_a``/``bearing_b``, ``material``,
+``bearing_type``), and a ``[[drive.shaft]]`` with only ``at`` and ``bearing_type`` sets a default shaft's bearing
+type; each switches the shafting on (docs/shafts_in_drive.md)::
 
     [drive]
     power_kw = 4
@@ -65,14 +66,16 @@ def load_drive(where: Where, scene_path, raw) -> dict:
             where.fail(label, "kind", f"expected one of {', '.join(repr(k) for k in stage_kinds())}, got {_short(kind)}")
         spec = validate_table(where, label, t, drive_schema(kind))
         stages.append(kind_named(kind).scene_spec(spec, Path(scene_path).parent))
-    shafts, layout = [], []
+    shafts, layout, types = [], [], []
     for i, t in enumerate(_tables(where, raw["shaft"], "shaft") if "shaft" in raw else []):
         label = f"drive.shaft #{i + 1}"
         if "lengths_mm" in t:
             layout.append(_layout_shaft(where, label, t))
+        elif "bearing_type" in t:      # a default shaft's bearing type: at and bearing_type alone
+            types.append(validate_table(where, label, t, drive_schema("shaft_bearings")))
         else:
             shafts.append(validate_table(where, label, t, drive_schema("shaft")))
-    section = dict(head, stages=stages, shafts=shafts, layout=layout)
+    section = dict(head, stages=stages, shafts=shafts, layout=layout, bearing_types=types)
     if "shafting" in raw:
         if not isinstance(raw["shafting"], dict):
             where.fail("drive", "shafting", f"expected a table [drive.shafting], got {_short(raw['shafting'])}")
@@ -108,7 +111,7 @@ def _layout_shaft(where: Where, label: str, t: dict) -> dict:
 
 def _shafting(section: dict):
     """The Shafting of a validated [drive] section, or None (no [drive.shafting], no drawn shaft)."""
-    if "shafting" not in section and not section.get("layout"):
+    if "shafting" not in section and not section.get("layout") and not section.get("bearing_types"):
         return None
     from ..drives.shafting import DriveShaft, Shafting
     from ..gears.efficiency import Lubricant
@@ -118,6 +121,13 @@ def _shafting(section: dict):
     layout = [DriveShaft(s["at"], tuple(zip(s["lengths_mm"], s["diameters_mm"])), tuple(s["supports_mm"]),
                          s["positions"], bearings=(s["bearing_a"], s["bearing_b"]) if "bearing_a" in s else None,
                          material=s.get("material")) for s in section.get("layout", ())]
+    per_shaft = {s["at"]: s["bearing_type"] for s in [*section.get("layout", ()), *section.get("bearing_types", ())]
+                 if "bearing_type" in s}
+    if per_shaft:       # [[drive.shaft]] bearing types over [drive.shafting]'s, which holds for the other shafts
+        every = kw.get("bearing_type", "auto")
+        given = every if isinstance(every, dict) else {}        # the command line's SHAFT=TYPE pairs win
+        every = "auto" if given else every
+        kw["bearing_type"] = {**{k: every for k in range(len(section["stages"]) + 1)}, **per_shaft, **given}
     return Shafting(layout=tuple(layout), lubricant=None if nu40 is None else Lubricant(nu40, nu100), **kw)
 
 

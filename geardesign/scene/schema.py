@@ -276,21 +276,31 @@ def drive_schema(part: str = "") -> dict:
         keys = {name: spec for name, spec in section_schema("key").items() if name != "torque_nm"}
         return {"at": _I(required=True, lo=0, hi=d.STAGES_MAX), **keys}
     if part == "shaft_layout":   # a [[drive.shaft]] with lengths_mm: a shaft as drawn (DriveShaft)
+        from ..drives.shafting import SHAFT_BEARING_TYPES
+
         return {"at": _I(required=True, lo=0, hi=d.STAGES_MAX),
                 "lengths_mm": _Key("floats", required=True, lo=0.0, lo_open=True),
                 "diameters_mm": _Key("floats", required=True, lo=0.0, lo_open=True),
                 "supports_mm": _Key("floats", required=True, lo=0.0, length=2),
-                "bearing_a": _Key("str"), "bearing_b": _Key("str"), "material": _Key("str")}
+                "bearing_a": _Key("str"), "bearing_b": _Key("str"), "material": _Key("str"),
+                "bearing_type": _Key("choice", choices=SHAFT_BEARING_TYPES)}
+    if part == "shaft_bearings":   # a [[drive.shaft]] with only at and bearing_type: a default shaft's bearing type
+        from ..drives.shafting import SHAFT_BEARING_TYPES
+
+        return {"at": _I(required=True, lo=0, hi=d.STAGES_MAX),
+                "bearing_type": _Key("choice", required=True, choices=SHAFT_BEARING_TYPES)}
     if part == "shafting":       # [drive.shafting]: the shafts, bearings and efficiencies (Shafting)
         from ..drives.bearing import SERIES
         from ..drives.bearing_friction import K_RS
-        from ..drives.shafting import PEAK_FACTOR, SHAFT_LIFE_H
+        from ..drives.shafting import ARRANGEMENTS, PEAK_FACTOR, SHAFT_BEARING_TYPES, SHAFT_LIFE_H
 
         return {"material": _Key("str", default="42CrMo4"), "S_min": _F(default=1.2, lo=0.5, hi=10.0),
                 "peak_factor": _F(default=PEAK_FACTOR, lo=1.0, hi=10.0),
                 "life_h": _F(default=SHAFT_LIFE_H, lo=0.0, hi=1e7, lo_open=True),
                 "reliability": _F(default=90.0, lo=90.0, hi=99.0),
-                "bearing_series": _Key("choice", choices=tuple(SERIES)),      # none: Shafting's BEARING_SERIES
+                "bearing_series": _Key("choice", choices=tuple(SERIES)),      # none: every series of the types
+                "bearing_type": _Key("choice", default="auto", choices=SHAFT_BEARING_TYPES),
+                "arrangement": _Key("choice", default="X", choices=ARRANGEMENTS),
                 "clearance_mm": _F(default=20.0, lo=5.0, hi=500.0), "gear_gap_mm": _F(default=10.0, lo=0.0, hi=500.0),
                 "overhang_mm": _F(default=60.0, lo=10.0, hi=2000.0),
                 "nu40": _F(lo=1.0, hi=1e6), "nu100": _F(lo=1.0, hi=1e6),

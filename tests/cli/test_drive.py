@@ -201,7 +201,9 @@ def test_drive_shafts_tables_and_json(tmp_path, capsys):
     assert code == (0 if data["ok"] else 1)
     assert [r["shaft"] for r in an["shafts"]] == [0, 1, 2]
     assert {r["source"] for r in an["efficiency"]} == {"computed"}
-    assert {r["item"] for r in an["checks"]} >= {"shaft 1", "bearing 1A", "key 2 slow"}
+    assert {r["item"] for r in an["checks"]} >= {"shaft 1", "key 2 slow"}
+    b1a = next(b for b in an["bearings"] if b["shaft"] == 1 and b["name"].startswith("bearing 1A"))
+    assert b1a["name"] == f"bearing 1A {b1a['designation']}" and b1a["name"] in {r["item"] for r in an["checks"]}
     assert 0.95 < an["overall_efficiency"] < 1 and an["heat_kw"] > 0
     main(["drive", path, "--shafts"])
     out = capsys.readouterr().out
@@ -213,7 +215,14 @@ def test_drive_shafts_tables_and_json(tmp_path, capsys):
                                           (["--bearing-series", "64"], "--bearing-series"),
                                           (["--shaft-safety", "0"], "--shaft-safety"),
                                           (["--oil", "220"], "--oil"), (["--oil", "19,220"], "--oil"),
-                                          (["--oil-temperature", "900"], "--oil-temperature")])
+                                          (["--oil-temperature", "900"], "--oil-temperature"),
+                                          (["--bearing-type", "spherical"], "--bearing-type"),
+                                          (["--bearing-type", "one=tapered"], "--bearing-type"),
+                                          (["--bearing-type", "1=spherical"], "--bearing-type"),
+                                          (["--arrangement", "Y"], "--arrangement"),
+                                          (["--bearing-type", "3=tapered"], "--bearing-type"),
+                                          (["--bearing-series", "62,63", "--bearing-type", "tapered"],
+                                           "--bearing-series with --bearing-type")])
 def test_drive_shaft_options_bad_input_one_line_exit_2(tmp_path, capsys, args, option):
     code = main(["drive", _scene(tmp_path, REDUCER)] + args)
     err = capsys.readouterr().err.strip().splitlines()
@@ -266,3 +275,28 @@ def test_reports_carry_the_shafting(tmp_path, capsys):
     assert main(["drive", scene, "--report", str(html)]) == 0
     page = html.read_text()
     assert "Shafts, bearings and efficiency" in page and 'id="layout"' in page and "6311" in page
+
+
+def _bearing_types(capsys, args) -> dict:
+    assert main(args + ["--json"]) in (0, 1)
+    an = json.loads(capsys.readouterr().out)["analysis"]
+    return {r["shaft"]: (r["bearing_type"], r["mounting"]) for r in an["shafts"]}
+
+
+def test_bearing_type_per_shaft_from_scene_and_options(tmp_path, capsys):
+    # [[drive.shaft]] with at and bearing_type (a default shaft), and one drawn with its bearing_type; the command
+    # line's --bearing-type SHAFT=TYPE wins over the scene's
+    body = REDUCER + ("[drive.shafting]\narrangement = 'O'\n[[drive.shaft]]\nat = 2\nbearing_type = 'tapered'\n"
+                      "[[drive.shaft]]\nat = 1\nlengths_mm = [25, 130, 25]\ndiameters_mm = [55, 60, 55]\n"
+                      "supports_mm = [15, 165]\nbearing_type = 'tapered'\n"
+                      "[drive.shaft.positions]\nfast = 57.5\nslow = 122.5\n")
+    path = _scene(tmp_path, body)
+    types = _bearing_types(capsys, ["drive", path])
+    assert types[1] == types[2] == ("tapered_roller", "tapered pair (O)")
+    assert types[0][0] != "tapered_roller"
+    types = _bearing_types(capsys, ["drive", path, "--bearing-type", "0=tapered,2=deep_groove", "--arrangement", "X"])
+    assert types[0] == types[1] == ("tapered_roller", "tapered pair (X)") and types[2][0] == "deep_groove_ball"
+    types = _bearing_types(capsys, ["drive", _scene(tmp_path, REDUCER), "--bearing-type", "tapered"])
+    assert {t for t, _ in types.values()} == {"tapered_roller"}
+    with pytest.raises(Exception, match="bearing_type"):
+        load_scene(_scene(tmp_path, REDUCER + "[[drive.shaft]]\nat = 1\nbearing_type = 'spherical'\n"))

@@ -19,7 +19,12 @@ def test_default_positions_rule():
                                       (dict(material="unobtainium"), "material"),
                                       (dict(clearance_mm=1.0), "clearance_mm"), (dict(lubricant=3), "lubricant"),
                                       (dict(lubrication="mist"), "lubrication"),
-                                      (dict(layout=[3]), "layout"), (dict(reliability=50), "reliab")])
+                                      (dict(layout=[3]), "layout"), (dict(reliability=50), "reliab"),
+                                      (dict(bearing_type="angular_contact"), "bearing_type"),
+                                      (dict(bearing_type={1: "spherical"}), "bearing_type of shaft 1"),
+                                      (dict(bearing_type={-1: "tapered"}), "shaft number"),
+                                      (dict(bearing_type="tapered", bearing_series=("62", "63")), "no series of"),
+                                      (dict(arrangement="Y"), "arrangement")])
 def test_bad_options_are_named(kw, name):
     with pytest.raises(GearDesignError, match=name):
         Shafting(**kw)
@@ -42,6 +47,20 @@ def test_drive_refuses_what_is_not_a_shafting():
     st = [gd.GearStage(3, 20, 60, material="42CrMo4", face_width_mm=40)]
     with pytest.raises(GearDesignError, match="shafting must be a Shafting"):
         gd.Drive(power_kw=5, n_in_rpm=1000, stages=st, shafting="yes")
+    with pytest.raises(GearDesignError, match="bearing_type: shaft 4 is beyond"):
+        gd.Drive(power_kw=5, n_in_rpm=1000, stages=st, shafting=Shafting(bearing_type={4: "tapered"}))
     with pytest.raises(GearDesignError, match="shaft 5"):
         gd.Drive(power_kw=5, n_in_rpm=1000, stages=st, shafting=Shafting(
             layout=[DriveShaft(5, [(200.0, 40.0)], [20.0, 180.0], {"gear": 60.0})]))
+
+
+def test_bearing_types_and_their_series():
+    # the types' series are the catalogs' (geardesign.drives.bearing.SERIES by type)
+    from geardesign.drives.bearing import SERIES
+
+    sh = Shafting(bearing_type={1: "tapered", 2: "deep_groove"})
+    assert sh.type_of(0) == "auto" and sh.type_of(1) == "tapered" and sh.type_of(2) == "deep_groove"
+    assert sh.series_for("tapered") == tuple(s for s, (_, t) in SERIES.items() if t == "tapered_roller")
+    assert sh.series_for("auto") == ("62", "63", "NU2", "NU3") + sh.series_for("tapered")
+    assert Shafting(bearing_series=("62", "302")).series_for("auto") == ("62", "302")
+    assert set(Shafting(bearing_type="deep_groove").series) == {"62", "63"}

@@ -205,6 +205,12 @@ class StageKind:
         """The stage with every free variable fixed at design ``c``."""
         return stage
 
+    def resize(self, stage, fixed, option: dict, objective: str, flow, f_sh_um: float):
+        """The stage sized again for a mesh misalignment f_sh (µm, at its load level F_m/b, as the strength chain
+        takes it) from its shafts, larger than ``fixed`` (the stage as the search fixed it), with the stage's
+        own strength options otherwise; None when the kind is not sized by its load or nothing larger holds."""
+        return None
+
     # -- analyse
     def analyse(self, stage, flow: StageFlow, objective: str) -> dict:
         """dict(stage, margins {check: float}, size, mass, summary {name, kind, ratio, efficiency, ...})."""

@@ -266,6 +266,7 @@ def _scale_free_checks(checks_key: tuple, helical: bool) -> bool:
 
 CONTACT_SCREEN = 0.1   # a module whose contact margin at the even split is below −0.1 is not solved
 STANDARD_TRIES = 1     # modules per pair and round of the standard-housing sizing
+RESIZE_FIXED_POINT = 6  # sizings of a stage re-sized for its shafts' f_sh (GearKind.resize) before it gives up
 SCREEN_WINDOW = 0.4    # modules whose contact margin is estimated below −0.4 are not screened
 
 
@@ -674,6 +675,36 @@ class GearKind(ToothedKind):
         if stage.m is None:
             stage = _sized_stage(stage, sol)
         return replace(stage, z1=z1, z2=z2, x1=sol["x1"], x2=sol["x2"])
+
+    def resize(self, stage, fixed, option: dict, objective: str, flow, f_sh_um: float):
+        """A stage sized by its load (no module given, a material) sized again for the misalignment f_sh its shafts
+        give it at the size ``fixed`` (ISO 6336-1 method C then takes K_Hβ from it): the first module and width of
+        its sizing's order that holds every check with f_sh scaled to that size as f_sh·(b/b_0)·(m_0/m) (the shafts'
+        tilt under a tooth force ∝ 1/m, over the face width b: our estimate, which the analysis on the shafts
+        checks), found as a fixed point (size for an f_sh, scale it to the size found, again while it grew); the
+        stage returned without the f_sh (the analysis computes it). None: a module was given, the stage's options
+        give f_sh or K_Hβ, or nothing larger than ``fixed`` holds."""
+        own = dict((stage.strength or {}).get("factors") or {})
+        if stage.m is not None or stage.material is None or "f_sh" in own or "K_Hbeta" in own:
+            return None
+        m0, b0 = float(fixed.m), float(fixed.width_mm)
+        per = float(f_sh_um) * m0 / b0            # f_sh per b/m at the fixed size
+        f = float(f_sh_um)
+        for _ in range(RESIZE_FIXED_POINT):
+            st = replace(stage, strength={**(stage.strength or {}), "factors": {**own, "f_sh": f}})
+            sol = self.solve(st, option, objective, flow)
+            if not sol["feasible"] or not math.isfinite(sol["m"]):
+                return None
+            m, b = float(sol["m"]), float(self._width(st, sol))
+            if per * b / m <= f * (1.0 + 1e-12):      # it holds at its own (smaller or equal) f_sh
+                break
+            f = per * b / m
+        else:
+            return None
+        if (m, b) <= (m0, b0):
+            return None
+        return replace(_sized_stage(st, sol), z1=int(option["z1"]), z2=int(option["z2"]), x1=sol["x1"],
+                       x2=sol["x2"], strength=stage.strength)
 
     # -- analyse
     def analyse(self, stage, flow, objective: str) -> dict:

@@ -126,3 +126,29 @@ def test_the_search_sizes_each_design_at_its_own_load(sizing, objective):
     assert r.best.stages[1]["summary"]["m"] == want[3]
     cost = r.best.size_mm2 if objective == "min_size" else r.best.mass_kg
     assert cost == pytest.approx(want[0][0], rel=1e-9)
+
+
+def test_resize_for_the_shafts_f_sh():
+    # GearKind.resize: a stage sized by its strength, sized again for an f_sh (µm): larger than the size it had,
+    # holding its contact with that f_sh scaled to the new size, f_sh·(b/b0)·(m0/m) (checked here with the strength
+    # margins of the stage given that f_sh); None where a module is given or the stage gives f_sh itself
+    from dataclasses import replace
+
+    from geardesign.drives.stage_kinds import kind_of
+    from geardesign.drives.stage_kinds.base import StageFlow
+    from geardesign.drives.stage_kinds.gear_strength import strength_margins
+
+    st = gd.GearStage(None, material="42CrMo4", name="g", z1_range=(19, 19), ratio_range=(3.5, 3.7))
+    kind = kind_of(st)
+    flow = StageFlow(1450.0, 26.34, 1450.0 / 3.6842, 26.34 * 3.6842)
+    option = {"z1": 19, "z2": 70}
+    fixed = kind.fix(st, option, None, 0, "min_size", flow)
+    new = kind.resize(st, fixed, option, "min_size", flow, 60.0)
+    assert new is not None and (new.m, new.width_mm) > (fixed.m, fixed.width_mm)
+    assert new.strength == st.strength and (new.z1, new.z2) == (19, 70)
+    f_new = 60.0 * (new.width_mm / fixed.width_mm) * (fixed.m / new.m)
+    with_f = replace(st, strength={"factors": {"f_sh": f_new}})
+    margins = strength_margins(with_f, new.m, new.width_mm, 19, 70, new.x1, new.x2, flow.torque_in_nm, flow.n_in_rpm)
+    assert min(float(v) for v in margins.values()) >= -1e-9
+    assert kind.resize(replace(st, strength={"factors": {"f_sh": 5.0}}), fixed, option, "min_size", flow, 60.0) is None
+    assert kind.resize(fixed, fixed, option, "min_size", flow, 60.0) is None      # a module given: not sized by load
