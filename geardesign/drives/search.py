@@ -551,9 +551,13 @@ class Search:
             c = feas[0]
             best = self._fixed(c).analyse(self.objective)
         if feas.size and best is not None:
+            # a design re-sized for its shafts is no longer the ranked one: its own figures, not the ranked ones
+            size, mass, mm, lim = ((best.size_mm2, best.mass_kg, best.min_margin, best.limiting) if "re-sized" in
+                                   shafts_note else (ex['size'][c], ex['mass'][c], ex['mm'][c],
+                                                     ex['labels'][ex['lim'][c]]))
             msg = (f"u = {float(np.prod(self.ratios[c])):.6g} ({100 * float(err[c]):.3g} % off): size "
-                   f"{ex['size'][c]:.6g} mm², mass {ex['mass'][c]:.4g} kg, smallest margin {ex['mm'][c]:+.4f} "
-                   f"({ex['labels'][ex['lim'][c]]}); {int(ex['done'].sum())} of {self.n_cand} designs evaluated in full"
+                   f"{size:.6g} mm², mass {mass:.4g} kg, smallest margin {mm:+.4f} "
+                   f"({lim}); {int(ex['done'].sum())} of {self.n_cand} designs evaluated in full"
                    + shafts_note)
             conflict = ()
         elif feas.size:     # every ranked design fails on its shafts
@@ -573,28 +577,42 @@ class Search:
     def _with_shafts(self, feas, table) -> tuple:
         """(design, its analysis or None, a note): the ranked designs analysed with their shafts, bearings and K_Hβ
         from the shafts (Drive(shafting=...)) in rank order, the first that holds every check taken; a design whose
-        gear stage sized by its load fails with its shafts' K_Hβ is sized again first (:meth:`_resized`). The
-        table's column ``shafts`` says for each one analysed whether it held (re-sized how) or which checks failed."""
+        gear stage sized by its load fails with its shafts' K_Hβ is sized again first (:meth:`_resized`). A re-sized
+        design grows, so for size and mass the ranks after it are analysed too while their ranked cost is below its
+        new cost, and the cheapest that holds is taken (a rank 2 that holds as sized beats a rank 1 that had to double
+        its module). The table's column ``shafts`` says for each one analysed whether it held (re-sized how) or which
+        checks failed."""
         table["shafts"] = "not analysed"
         self._shaft_fails = ()
+        held = None                    # (cost, rank, c, analysis, steps) of the cheapest re-sized design that holds
         for rank, c in enumerate(feas[:self.top]):
+            if held is not None and not self.ex["cost"][c] < held[0]:
+                break                  # re-sizing only grows a design: no later rank can be cheaper
             an, steps = self._resized(c, self._fixed(c).analyse(self.objective))
             bad = an.checks.loc[~an.checks["ok"], ["item", "check"]]
             done = "; ".join(steps)
             table.loc[table["rank"] == rank + 1, "shafts"] = (("holds" + (f" re-sized: {done}" if steps else ""))
                                                              if an.success else "fails " + "; ".join(
                 f"{a}: {b}" for a, b in bad.itertuples(index=False)) + (f" (re-sized: {done})" if steps else ""))
-            if an.success:
-                note = "" if rank == 0 else (f"; ranks 1 to {rank} fail with their shafts, bearings or K_Hβ from the "
-                                             f"shafts (column shafts), rank {rank + 1} holds")
-                if steps:
-                    note += (f"; rank {rank + 1} re-sized for the K_Hβ of its shafts: {done} (size "
-                             f"{an.size_mm2:.6g} mm², mass {an.mass_kg:.4g} kg)")
-                return c, an, note
-            if rank == 0:
+            if rank == 0 and not an.success:
                 self._shaft_fails = tuple(bad.itertuples(index=False))
-        return feas[0], None, (f"; the {min(self.top, feas.size)} ranked designs each fail with their shafts, "
-                               f"bearings or K_Hβ from the shafts (column shafts)")
+            if not an.success:
+                continue
+            cost = {"min_size": an.size_mm2, "min_mass": an.mass_kg}.get(self.objective)
+            if held is None or (cost is not None and cost < held[0]):
+                held = (cost, rank, c, an, steps)
+            if not steps or cost is None:
+                break                  # held as ranked (nothing later is cheaper), or an objective without a bound
+        if held is None:
+            return feas[0], None, (f"; the {min(self.top, feas.size)} ranked designs each fail with their shafts, "
+                                   f"bearings or K_Hβ from the shafts (column shafts)")
+        _, rank, c, an, steps = held
+        note = "" if rank == 0 else (f"; rank {rank + 1} taken: ranks 1 to {rank} fail with their shafts, bearings or "
+                                     f"K_Hβ from the shafts, or hold only re-sized to a larger design (column shafts)")
+        if steps:
+            note += (f"; rank {rank + 1} re-sized for the K_Hβ of its shafts: {'; '.join(steps)} (ranked at size "
+                     f"{self.ex['size'][c]:.6g} mm², mass {self.ex['mass'][c]:.4g} kg)")
+        return c, an, note
 
     def _resized(self, c, an) -> tuple:
         """(analysis, steps): design c's analysis on its shafts ``an``, and while a check of a gear stage sized by its

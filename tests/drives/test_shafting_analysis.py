@@ -542,6 +542,22 @@ def test_search_resizes_a_stage_that_fails_with_its_shafts_k_hbeta():
     assert again.table("mesh_misalignment").iloc[0]["source"] == "shafts"
 
 
+def test_a_re_sized_design_is_compared_with_the_ranks_after_it():
+    # re-sizing only grows a design: rank 1 re-sized to m 6 must not be taken while a later rank, smaller as
+    # ranked, was never analysed; the message's figures are the returned design's, not the ranked ones
+    lay = (DriveShaft(0, [(400.0, 25.0)], (20.0, 380.0), {"g": 110.0, "coupling": 0.0}),)
+    d = gd.Drive(power_kw=4, n_in_rpm=1450, shafting=Shafting(layout=lay), stages=[
+        gd.GearStage(None, material="42CrMo4", name="g", z1_range=(18, 20), ratio_range=(3.2, 3.8))])
+    r = d.optimize(total_ratio=3.5, ratio_tol=0.05, top=6)
+    ranked = r.table[r.table["rank"].notna()]
+    assert r.success and r.objective == "min_size"
+    smaller = ranked[ranked["size_mm2"] < r.best.size_mm2]
+    assert len(smaller) > 1 and (smaller["shafts"] != "not analysed").all()
+    held_as_ranked = ranked[ranked["shafts"] == "holds"]
+    assert (r.best.size_mm2 <= held_as_ranked["size_mm2"]).all()
+    assert f"size {r.best.size_mm2:.6g} mm², mass {r.best.mass_kg:.4g} kg" in r.message
+
+
 def test_a_mesh_tilted_past_the_chain_fails_by_name():
     # a 10 mm input shaft 1.5 m long: f_sh beyond the 10 mm the strength chain takes stopped the analysis with an
     # error (factors['f_sh'] must be in [0, 10000]); now the stage fails its check shaft_misalignment
