@@ -309,3 +309,17 @@ def test_two_support_reactions_closed_form(raw, ua, ub):
     Ra = -sum(ld.fy_n for ld in loads) - Rb
     scale = 1.0 + sum(abs(ld.fy_n) for ld in loads) * L / (b - a)
     assert abs(R[0] - Ra) <= 1e-9 * scale and abs(R[1] - Rb) <= 1e-9 * scale
+
+
+def test_a_support_at_the_end_of_a_shaft_in_inches_is_on_it():
+    """Found transcribing Shigley's Example 4-7: sections of 8.5 and 11.5 in sum to 507.99999999999994 mm, and a
+    bearing and a load at 20 in (508.00000000000006 mm) were refused as off the shaft. Within 1e-9 of its length
+    beyond an end, a position is that end; further, still refused by name."""
+    m = ShaftModel([(8.5 * IN, 1.5 * IN), (11.5 * IN, 1.75 * IN)], [0.0, 20 * IN],
+                   [ShaftLoad(8 * IN, fy_n=-600.0), ShaftLoad(20 * IN, fz_n=10.0)])
+    assert m.supports_mm[1] == m.length_mm and m.loads[1].x_mm == m.length_mm
+    assert analyse_shaft(m).reactions["Ry_n"].sum() == pytest.approx(600.0, rel=1e-12)
+    with pytest.raises(GearDesignError, match="supports_mm must lie on the shaft"):
+        ShaftModel([(100.0, 30.0)], [0.0, 100.001])
+    with pytest.raises(GearDesignError, match=r"loads\[0\].x_mm must be in"):
+        ShaftModel([(100.0, 30.0)], [0.0, 100.0], [ShaftLoad(-0.001, fy_n=1.0)])
