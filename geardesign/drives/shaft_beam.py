@@ -161,7 +161,8 @@ class ShaftModel:
         sup = require_finite("supports_mm", self.supports_mm)
         if sup.ndim != 1 or not 2 <= sup.size <= SUPPORTS_MAX:
             raise GearDesignError(f"supports_mm must list 2 to {SUPPORTS_MAX} positions, got {sup.size}")
-        sup = _onto_shaft(sup, L)
+        if (sup < 0).any() or (sup > L).any():
+            sup = _onto_shaft(sup, L)
         if (sup < 0).any() or (sup > L).any():
             raise GearDesignError(f"supports_mm must lie on the shaft, in [0, {L:g}] mm, got {sup.tolist()}")
         if np.unique(sup).size != sup.size:
@@ -170,7 +171,7 @@ class ShaftModel:
         loads = [_as_load(item, i) for i, item in enumerate(self.loads)]
         require_count("number of loads", len(loads), 0, LOADS_MAX)
         for i, ld in enumerate(loads):
-            if isinstance(ld.x_mm, (float, int, np.floating, np.integer)) and not isinstance(ld.x_mm, bool):
+            if isinstance(ld.x_mm, (float, int, np.floating, np.integer)) and not 0.0 <= ld.x_mm <= L:
                 x = float(_onto_shaft(np.asarray(float(ld.x_mm)), L))
                 if x != ld.x_mm:
                     loads[i] = ld = replace(ld, x_mm=x)
