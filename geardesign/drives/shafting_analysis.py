@@ -447,7 +447,7 @@ def shaft_deflections(model, x_mm) -> tuple:
                             [-ld.z_mm * ld.fx_n + 1000.0 * ld.my_nm for ld in loads], x_mm, model.E_mpa)
 
 
-SCALAR_BEAM_MAX = 4096     # breakpoints × loads up to which a two-support beam is solved in plain floats
+SCALAR_BEAM_MAX = 4096     # sections + loads² up to which a two-support beam is solved in plain floats (its cost)
 
 
 def _beam_two_supports(secs, a, b, xf, F, C, xq, E_mpa) -> tuple:
