@@ -3,7 +3,8 @@
 * forces and shaft analysis of a two-stage reducer: every element's load on its shaft (mesh forces on the
   operating circle, torques), the two bearings' reactions of each shaft and each shaft's deflection at its gears'
   face ends (the beam, :func:`geardesign.drives.shafting_analysis.beam_deflections`), three shafts; against a
-  plain-Python statics of the same loads (sums of forces and moments, no beam) — the issue's goal: <= 1 ms;
+  plain-Python statics of the same loads (sums of forces and moments, no beam) — the issue's goal: <= 1 ms; at
+  1.5, 15 and 45 kW (the seats and bearings, so the shafts' sections, are sized for each load);
 * the sized 75 kW drive of benchmarks/bench_reducer.py (job sized75) optimised with ``shafting=Shafting()``
   (the ranked designs re-analysed on their shafts: DIN 743 seat sizes, bearings for the life, K_Hβ from f_sh)
   against the same search without, each in a fresh process (CPU seconds) — the issue's goal: <= 2x.
@@ -24,15 +25,16 @@ from functools import partial
 
 import timing
 
-best = partial(timing.best, repeat=5, number=200)    # CPU time per call, the best of several rounds (benchmarks/timing.py)
+best = partial(timing.best, repeat=5, number=200)
+POWERS_KW = (1.5, 15.0, 45.0)     # the reducer's loads: its seats, bearings and so its shafts' sections change with them    # CPU time per call, the best of several rounds (benchmarks/timing.py)
 
 
-def shafts_of_a_reducer():
+def shafts_of_a_reducer(power_kw=15.0):
     import geardesign as gd
     from geardesign.drives.shafting import Shafting
     from geardesign.drives.shafting_analysis import beam_deflections, element_loads, two_support_reactions
 
-    drive = gd.Drive(power_kw=15, n_in_rpm=1460, shafting=Shafting(), stages=[
+    drive = gd.Drive(power_kw=power_kw, n_in_rpm=1460, shafting=Shafting(), stages=[
         gd.GearStage(3, 20, 80, material="42CrMo4", face_width_mm=45, name="fast", beta_deg=12),
         gd.GearStage(4, 21, 84, material="42CrMo4", face_width_mm=65, name="slow")])
     an = drive.analyse()
@@ -63,7 +65,7 @@ def shafts_of_a_reducer():
             _ = (-fy - by, by, -fz - bz, bz)
 
     t_ours, t_ref = best(ours), best(reference, number=2000)
-    print(f"forces and shaft analysis, two-stage reducer (3 shafts): {1e3 * t_ours:.3f} ms (goal <= 1 ms); "
+    print(f"forces and shaft analysis, two-stage reducer (3 shafts), {power_kw:g} kW: {1e3 * t_ours:.3f} ms (goal <= 1 ms); "
           f"plain-Python statics {1e6 * t_ref:.1f} us; ratio {t_ours / t_ref:.0f}")
 
 
@@ -98,6 +100,7 @@ def sized75():
 
 
 if __name__ == "__main__":
-    shafts_of_a_reducer()
+    for power in POWERS_KW:
+        shafts_of_a_reducer(power)
     if "--no-search" not in sys.argv:
         sized75()

@@ -28,7 +28,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import numpy as np
@@ -60,6 +60,7 @@ SUPPORTS_MAX = 20
 LOADS_MAX = 500
 POINTS_DEFAULT = 400
 CRITICAL_POINTS = 60         # interior nodes of the critical-speed grid
+END_TOL = 1e-9               # a position this far (relative to the length) beyond an end is at the end
 
 
 def second_moment_mm4(d_mm, bore_mm=0.0):
@@ -93,6 +94,14 @@ class ShaftLoad:
     mz_nm: float = 0.0
     mass_kg: float = 0.0
     name: str = ""
+
+
+def _onto_shaft(x, L):
+    """Positions within END_TOL of an end, outside the shaft, onto that end: a support or load given at the end
+    of a shaft whose length, the sum of its sections, rounded a few ulp the other way (25.4·8.5 + 25.4·11.5 is not
+    25.4·20) is at the end."""
+    tol = END_TOL * L
+    return np.where((x > L) & (x <= L + tol), L, np.where((x < 0.0) & (x >= -tol), 0.0, x))
 
 
 def _as_load(item, i) -> ShaftLoad:
@@ -153,13 +162,19 @@ class ShaftModel:
         if sup.ndim != 1 or not 2 <= sup.size <= SUPPORTS_MAX:
             raise GearDesignError(f"supports_mm must list 2 to {SUPPORTS_MAX} positions, got {sup.size}")
         if (sup < 0).any() or (sup > L).any():
+            sup = _onto_shaft(sup, L)
+        if (sup < 0).any() or (sup > L).any():
             raise GearDesignError(f"supports_mm must lie on the shaft, in [0, {L:g}] mm, got {sup.tolist()}")
         if np.unique(sup).size != sup.size:
             raise GearDesignError(f"supports_mm must be distinct, got {sup.tolist()}")
         object.__setattr__(self, "supports_mm", tuple(float(v) for v in sup))
-        loads = tuple(_as_load(item, i) for i, item in enumerate(self.loads))
+        loads = [_as_load(item, i) for i, item in enumerate(self.loads)]
         require_count("number of loads", len(loads), 0, LOADS_MAX)
         for i, ld in enumerate(loads):
+            if isinstance(ld.x_mm, (float, int, np.floating, np.integer)) and not 0.0 <= ld.x_mm <= L:
+                x = float(_onto_shaft(np.asarray(float(ld.x_mm)), L))
+                if x != ld.x_mm:
+                    loads[i] = ld = replace(ld, x_mm=x)
             # one number each (a list, or an empty tuple, is refused by name, not met later as a ragged array)
             one_number(f"loads[{i}].x_mm", require_range(f"loads[{i}].x_mm", ld.x_mm, 0.0, L, unit="mm"))
             for name in ("fy_n", "fz_n", "fx_n"):
@@ -172,6 +187,7 @@ class ShaftModel:
                 one_number(f"loads[{i}].{name}", require_range(f"loads[{i}].{name}", getattr(ld, name), -FORCE_MAX_N,
                                                                FORCE_MAX_N, unit="N·m"))
             one_number(f"loads[{i}].mass_kg", require_range(f"loads[{i}].mass_kg", ld.mass_kg, 0.0, 1e7, unit="kg"))
+        loads = tuple(loads)
         object.__setattr__(self, "loads", loads)
         if not isinstance(self.axial_support, (int, np.integer)) or not 0 <= self.axial_support < sup.size:
             raise GearDesignError(f"axial_support must be a support index in [0, {sup.size - 1}], "

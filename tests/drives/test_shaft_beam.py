@@ -195,3 +195,131 @@ def test_a_load_value_that_is_not_one_number_is_refused_by_name(field, value):
     load = dict(x_mm=20.0, fy_n=100.0) | {field: value}
     with pytest.raises(GearDesignError, match=rf"loads\[0\]\.{field} must be one number"):
         ShaftModel(sections=[(40.0, 30.0)], supports_mm=[0.0, 40.0], loads=[ShaftLoad(**load)])
+
+
+def _printed(example):
+    """tests/data/shigley_shaft_printed.csv: the printed figures of one example, {(quantity, x_in): value}."""
+    import csv
+    from pathlib import Path
+
+    with open(Path(__file__).parents[1] / "data" / "shigley_shaft_printed.csv", encoding="utf-8") as f:
+        rows = [r for r in csv.DictReader(f) if r["example"] == example]
+    out = {}
+    for r in rows:
+        out.setdefault((r["quantity"], float(r["x_in"]) if r["x_in"] else None), []).append(float(r["value"]))
+    return out
+
+
+def _example_4_7():
+    # the book's model: only the step at D (AB taken as 1.5 in and EF as 1.75 in); supports at the shaft's two
+    # ends (the length as the sum of its sections, so the right support is exactly on it)
+    secs = [(8.5 * IN, 1.5 * IN), (11.5 * IN, 1.75 * IN)]
+    L = secs[0][0] + secs[1][0]
+    return analyse_shaft(ShaftModel(secs, [0.0, L], [ShaftLoad(8 * IN, fy_n=-600 * LBF)], E_mpa=E_30MPSI))
+
+
+def test_shigley_example_4_7_reactions_moments_and_m_over_i():
+    """tests/data/shigley_shaft_examples.md, item 3 (Shigley 9th ed. Example 4-7): R1 = 360, R2 = 240 lbf; M = 2880
+    lbf·in at C and 2760 at D; M/I = 11 106.6 and 5 994.8 lbf/in³ either side of D (the book's I rounded to 0.2485 and
+    0.4604 in⁴: to its printed digits with those, to 3e-5 with ours)."""
+    p = _printed("4-7")
+    an = _example_4_7()
+    assert (an.reactions["Ry_n"] / LBF).tolist() == pytest.approx([p[("R1", 0.0)][0], p[("R2", 20.0)][0]], abs=1e-9)
+    d = an.diagrams
+    for x in (8.0, 8.5):
+        rows = d[np.isclose(d["x_mm"], x * IN)]
+        assert (rows["Mz_nm"] * 1000 / (LBF * IN)).to_numpy() == pytest.approx(p[("M", x)][0], abs=1e-9)
+    rows = d[np.isclose(d["x_mm"], 8.5 * IN)]          # left and right limits at the step D
+    I_in4 = second_moment_mm4(rows["d_mm"].to_numpy()) / IN ** 4
+    assert I_in4 == pytest.approx([p[("I_BC", None)][0], p[("I_DE", None)][0]], abs=0.5e-4)
+    M_lbf_in = rows["Mz_nm"].to_numpy() * 1000 / (LBF * IN)
+    assert M_lbf_in / np.round(I_in4, 4) == pytest.approx(p[("M_over_I", 8.5)], abs=0.05)
+    assert M_lbf_in / I_in4 == pytest.approx(p[("M_over_I", 8.5)], rel=3e-5)
+
+
+def test_shigley_example_4_7_deflection_curve():
+    """Item 3's deflections: the book's M/I, eq. (2), integrated twice with y = 0 at both bearings (the closed form
+    below, exact for its printed coefficients) bounds the deflection by the half-unit of each printed coefficient; the
+    beam's lies inside at every x. The book's eq. (4) rounds 1448.7/6 = 241.45 up to 241.5, which moves the deflection
+    by 0.04-0.11 %: against eq. (4) as printed, 0.15 %. Both the book and the beam ignore shear deformation."""
+    p = _printed("4-7")
+    xs = np.arange(0.5, 20.0, 0.5)                       # the book's ½-in steps
+    got = _example_4_7().deflection_at(xs * IN)["wy_mm"].to_numpy() / IN
+
+    def ramp(v, n):
+        return np.where(v > 0, v, 0.0) ** n
+
+    def basis(x):           # double integrals of x, <x−8>¹, <x−8.5>⁰, <x−8.5>¹ with y(0) = y(20) = 0
+        terms = [lambda x: x ** 3 / 6, lambda x: ramp(x - 8, 3) / 6, lambda x: ramp(x - 8.5, 2) / 2,
+                 lambda x: ramp(x - 8.5, 3) / 6]
+        return np.array([t(x) - t(20.0) * x / 20.0 for t in terms])
+
+    c = np.array([p[(k, None)][0] for k in ("eq2_x", "eq2_x8", "eq2_x85_0", "eq2_x85_1")])
+    G = basis(xs)
+    E_psi = 30e6
+    mid, half = c @ G / E_psi, 0.05 * np.abs(G).sum(axis=0) / E_psi
+    assert np.all(np.abs(got - mid) <= half)
+    c4 = [p[(k, None)][0] for k in ("eq4_x3", "eq4_x8_3", "eq4_x85_2", "eq4_x85_3")]
+
+    def eq4(x, C1):
+        return c4[0] * x ** 3 + c4[1] * ramp(x - 8, 3) + c4[2] * ramp(x - 8.5, 2) + c4[3] * ramp(x - 8.5, 3) + C1 * x
+
+    C1 = -eq4(20.0, 0.0) / 20.0                          # y(20) = 0 (C2 = 0 from y(0) = 0)
+    np.testing.assert_allclose(got, eq4(xs, C1) / E_psi, rtol=1.5e-3)
+
+
+def test_shigley_example_7_2_reactions_and_moments_in_two_planes():
+    """tests/data/shigley_shaft_examples.md, item 4 (Shigley 9th ed. Example 7-2): the countershaft's reactions in
+    both planes to the printed 0.1 lbf and its moments at G, I, J, K to the printed lbf·in (x-z plane: our My,
+    x-y plane: our Mz; the tangential forces W₂₃ᵗ = +540 lbf and W₅₄ᵗ = −2431 lbf along z, the radial ones −197 and
+    −885 lbf along y). On two bearings the diameters do not change reactions and moments: the sections here are
+    any, with steps at I and K (so that they are nodes of the diagrams)."""
+    p = _printed("7-2")
+    secs = [(7.5 * IN, 1.625 * IN), (1.0 * IN, 2.0 * IN), (2.0 * IN, 1.625 * IN), (1.0 * IN, 1.0 * IN)]
+    loads = [ShaftLoad(2.75 * IN, fy_n=-197 * LBF, fz_n=540 * LBF),
+             ShaftLoad(8.5 * IN, fy_n=-885 * LBF, fz_n=-2431 * LBF)]
+    an = analyse_shaft(ShaftModel(secs, [0.75 * IN, 10.75 * IN], loads, E_mpa=E_30MPSI))
+    R = an.reactions / LBF
+    assert R["Rz_n"].tolist() == pytest.approx([p[("R_Az", 0.75)][0], p[("R_Bz", 10.75)][0]], abs=0.05)
+    assert R["Ry_n"].tolist() == pytest.approx([p[("R_Ay", 0.75)][0], p[("R_By", 10.75)][0]], abs=0.05)
+    d = an.diagrams
+    to_lbf_in = 1000 / (LBF * IN)
+    for x in (2.75, 7.5, 8.5, 9.5):
+        rows = d[np.isclose(d["x_mm"], x * IN)]
+        for col, q in (("My_nm", "M_xz"), ("Mz_nm", "M_xy")):
+            assert rows[col].to_numpy() * to_lbf_in == pytest.approx(p[(q, x)][0], abs=0.5), (x, q)
+        # the book's totals are √(M_xz² + M_xy²) of its rounded components ("at J, √(3996² + 1632²) = 4316"): so to
+        # the printed digit from ours rounded as the book rounds them, to 1 lbf·in from ours as they are
+        M_xz, M_xy = (np.round(rows[c].to_numpy() * to_lbf_in) for c in ("My_nm", "Mz_nm"))
+        assert np.hypot(M_xz, M_xy) == pytest.approx(p[("M_tot", x)][0], abs=0.5), x
+        assert rows["M_nm"].to_numpy() * to_lbf_in == pytest.approx(p[("M_tot", x)][0], abs=1.0), x
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.floats(0, 1), st.floats(-5e3, 5e3)), min_size=1, max_size=8),
+       st.floats(0.0, 0.45), st.floats(0.55, 1.0))
+def test_two_support_reactions_closed_form(raw, ua, ub):
+    """Statics of a simply supported shaft (overhangs allowed) with point loads, closed form written here:
+    R_B = −Σ F_i (x_i − a)/(b − a), R_A = −Σ F_i − R_B (forces and reactions +y), to 1e-9."""
+    L = 300.0
+    a, b = ua * L, ub * L
+    loads = [ShaftLoad(u * L, fy_n=f) for u, f in raw]
+    R = analyse_shaft(ShaftModel([(L, 40.0)], [a, b], loads), points=20).reactions["Ry_n"].to_numpy()
+    Rb = -sum(ld.fy_n * (ld.x_mm - a) for ld in loads) / (b - a)
+    Ra = -sum(ld.fy_n for ld in loads) - Rb
+    scale = 1.0 + sum(abs(ld.fy_n) for ld in loads) * L / (b - a)
+    assert abs(R[0] - Ra) <= 1e-9 * scale and abs(R[1] - Rb) <= 1e-9 * scale
+
+
+def test_a_support_at_the_end_of_a_shaft_in_inches_is_on_it():
+    """Found transcribing Shigley's Example 4-7: sections of 8.5 and 11.5 in sum to 507.99999999999994 mm, and a
+    bearing and a load at 20 in (508.00000000000006 mm) were refused as off the shaft. Within 1e-9 of its length
+    beyond an end, a position is that end; further, still refused by name."""
+    m = ShaftModel([(8.5 * IN, 1.5 * IN), (11.5 * IN, 1.75 * IN)], [0.0, 20 * IN],
+                   [ShaftLoad(8 * IN, fy_n=-600.0), ShaftLoad(20 * IN, fz_n=10.0)])
+    assert m.supports_mm[1] == m.length_mm and m.loads[1].x_mm == m.length_mm
+    assert analyse_shaft(m).reactions["Ry_n"].sum() == pytest.approx(600.0, rel=1e-12)
+    with pytest.raises(GearDesignError, match="supports_mm must lie on the shaft"):
+        ShaftModel([(100.0, 30.0)], [0.0, 100.001])
+    with pytest.raises(GearDesignError, match=r"loads\[0\].x_mm must be in"):
+        ShaftModel([(100.0, 30.0)], [0.0, 100.0], [ShaftLoad(-0.001, fy_n=1.0)])

@@ -568,3 +568,68 @@ def test_a_mesh_tilted_past_the_chain_fails_by_name():
     mm = r.table("mesh_misalignment").iloc[0]
     assert mm["f_sh_um"] > 1e4 and row["margin"] == pytest.approx(1 - mm["f_sh_um"] / 1e4, rel=1e-12)
     assert not row["ok"] and "g: shaft_misalignment" in r.message
+
+
+def test_beam_deflections_many_loads_take_the_array_path():
+    # past SCALAR_BEAM_MAX a two-support shaft is solved by the array code: the same beam as analyse_shaft
+    from geardesign.drives import shafting_analysis as sa
+
+    secs = [(60.0, 30.0), (120.0, 40.0, 10.0), (60.0, 30.0)]
+    xs = np.linspace(1.0, 239.0, 70)
+    assert len(secs) + xs.size ** 2 > sa.SCALAR_BEAM_MAX
+    loads = [ShaftLoad(float(x), fy_n=100.0 * math.sin(x), fz_n=-50.0 * math.cos(x), fx_n=20.0, y_mm=25.0) for x in xs]
+    a = analyse_shaft(ShaftModel(secs, (10.0, 230.0), loads))
+    xq = np.linspace(0.0, 240.0, 9)
+    R, w = sa.beam_deflections(secs, (10.0, 230.0), xs, [ld.fy_n for ld in loads], [ld.fz_n for ld in loads],
+                               [-ld.y_mm * ld.fx_n for ld in loads], np.zeros(xs.size), xq)
+    ref = a.deflection_at(xq)[["wy_mm", "wz_mm"]].to_numpy()
+    np.testing.assert_allclose(w.T, ref, rtol=0, atol=1e-10 * np.abs(ref).max())
+    np.testing.assert_allclose(R[0], a.reactions["Ry_n"].to_numpy(), rtol=1e-10)
+
+
+def test_beam_deflections_plain_float_path_equals_the_array_path():
+    # a drive's two-support shaft is solved in plain floats (the speed of the drive's analysis, issue 37): the same
+    # beam as the array code to 1e-12 of F·L³/EI on random stepped, bored shafts with forces and couples, loads on
+    # section ends and on the supports, queries at the ends; and a scalar query gives a (2,) array
+    from hypothesis import assume, given, settings, strategies as st
+
+    from geardesign.drives import shafting_analysis as sa
+
+    @settings(max_examples=150, deadline=None)
+    @given(st.data())
+    def check(data):
+        n = data.draw(st.integers(1, 6))
+        secs = [(data.draw(st.floats(5.0, 100.0)), d, data.draw(st.sampled_from([0.0, 0.3, 0.6])) * d)
+                for d in (data.draw(st.floats(10.0, 80.0)) for _ in range(n))]
+        ends = np.concatenate([[0.0], np.cumsum([s[0] for s in secs])])
+        L = float(ends[-1])
+        where = st.one_of(st.floats(0.0, L), st.sampled_from(ends.tolist()))
+        a, b = sorted(data.draw(st.lists(where, min_size=2, max_size=2, unique=True)))
+        assume(b - a >= 1.0)        # (a span of a micrometre: the array code's own rounding dominates)
+        m = data.draw(st.integers(0, 6))
+        x = data.draw(st.lists(st.one_of(where, st.sampled_from([a, b])), min_size=m, max_size=m))
+        f = st.one_of(st.just(0.0), st.floats(-1e4, -1e-3), st.floats(1e-3, 1e4))
+        fy, fz, cy, cz = (data.draw(st.lists(f, min_size=m, max_size=m)) for _ in range(4))
+        xq = data.draw(st.lists(where, min_size=1, max_size=5)) + [0.0, L]
+        R1, w1 = sa.beam_deflections(secs, (a, b), x, fy, fz, cy, cz, xq)
+        old = sa.SCALAR_BEAM_MAX
+        try:
+            sa.SCALAR_BEAM_MAX = -1
+            R2, w2 = sa.beam_deflections(secs, (a, b), x, fy, fz, cy, cz, xq)
+        finally:
+            sa.SCALAR_BEAM_MAX = old
+        EI = E_STEEL_MPA * math.pi * min(s[1] ** 4 - s[2] ** 4 for s in secs) / 64.0
+        scale = (sum(map(abs, fy + fz)) * L + sum(map(abs, cy + cz))) * L * L / EI
+        assert w1.shape == w2.shape == (2, len(xq))
+        np.testing.assert_allclose(w1, w2, rtol=0, atol=1e-12 * scale + 1e-300)
+        np.testing.assert_allclose(R1, R2, rtol=0, atol=1e-12 * (sum(map(abs, fy + fz)) + sum(map(abs, cy + cz)) / L))
+
+    check()
+    R, w = sa.beam_deflections([(200.0, 40.0)], (0.0, 200.0), [100.0], [-1000.0], [0.0], [0.0], [0.0], 100.0)
+    assert w.shape == (2,) and R.shape == (2, 2)
+    assert w[0] == pytest.approx(-1000 * 200 ** 3 / (48 * E_STEEL_MPA * math.pi * 40 ** 4 / 64), rel=1e-12)
+
+
+def test_two_support_reactions_refuse_lists_of_different_lengths():
+    with pytest.raises(GearDesignError, match="must be of one length, got 2, 1"):
+        two_support_reactions([10.0, 20.0], [1.0], [0.0, 0.0], [0.0, 0.0], [0.0, 0.0], 0.0, 100.0)
