@@ -36,7 +36,7 @@ from ...shifts.optimize import optimize_shifts
 from ..limits import LOOK_AHEAD, MARGIN_AHEAD, MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
 from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
 from .base import ToothedKind
-from .gear_strength import _widths, check_names, safety_limits, strength_margins, strength_sizes, strength_sizes_many, widest_width
+from .gear_strength import _widths, check_names, life_options, safety_limits, strength_margins, strength_sizes, strength_sizes_many, widest_width
 from ...gears.center_distance import x_sum_from_center_distance
 
 __all__ = ["GearKind", "set_sizing", "shift_solution", "gear_solution", "margin_solutions", "clear_shift_cache"]
@@ -722,7 +722,7 @@ class GearKind(ToothedKind):
         checks as the sizing's, :func:`.gear_strength.damage_checks`), {} without one."""
         if st.spectrum is None:
             return {}
-        opts = dict(st.strength or {})
+        opts = life_options(dict(st.strength or {}))
         return dict(spectrum=st.spectrum_at(flow.torque_in_nm, flow.n_in_rpm), material=stage_material(st.material),
                     face_width_mm=st.width_mm, strength=opts or None, life_h=st.life_h, sn_curve=st.sn_curve,
                     mean_stress_factor=st.mean_stress_factor)
@@ -733,7 +733,8 @@ class GearKind(ToothedKind):
         required life and the per-bin table) under its spectrum at ``flow``."""
         spectrum = st.spectrum_at(flow.torque_in_nm, flow.n_in_rpm)
         return pair.life(spectrum, stage_material(st.material), face_width_mm=st.width_mm, life_h=st.life_h,
-                         sn_curve=st.sn_curve, mean_stress_factor=st.mean_stress_factor, **dict(st.strength or {}))
+                         sn_curve=st.sn_curve, mean_stress_factor=st.mean_stress_factor,
+                         **life_options(dict(st.strength or {})))
 
     @staticmethod
     def _strength_result(st, pair, load: dict):
@@ -758,6 +759,7 @@ class GearKind(ToothedKind):
         from ...gears.backlash import GOST1643_TYPES
         from ..housing import CENTER_DISTANCE_RANGE_MM, CENTER_DISTANCE_SERIES
         from ...gears.strength.user_options import scene_keys as strength_scene_keys
+        from ...gears.spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES
 
         # no module: sized by the stage's load (needs a material); see GearStage
         return {"module": dict(kind=f, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
@@ -777,7 +779,11 @@ class GearKind(ToothedKind):
                                         hi=CENTER_DISTANCE_RANGE_MM[1], choices=("free",) + tuple(CENTER_DISTANCE_SERIES)),
                 "shift_bounds": dict(kind="floats", lo=-3.0, hi=3.0, length=2),
                 "mating_type": dict(kind="choice", choices=GOST1643_TYPES + ("none",)),
-                "checks": dict(table="checks", without=("jamming",)), **strength_scene_keys()}
+                "checks": dict(table="checks", without=("jamming",)),
+                # the service life under the drive's [drive.spectrum] (GearStage: spectrum)
+                "single_load": dict(kind="bool"), "sn_curve": dict(kind="choice", choices=SN_CURVES),
+                "mean_stress_factor": dict(kind=f, lo=MEAN_STRESS_FACTOR_RANGE[0], hi=MEAN_STRESS_FACTOR_RANGE[1]),
+                **strength_scene_keys()}
 
     def from_scene(self, spec: dict):
         from ...gears.strength.user_options import options_from_table

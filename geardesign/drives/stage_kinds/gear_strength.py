@@ -41,7 +41,7 @@ import numpy as np
 
 from ..stages import stage_material
 
-__all__ = ["STRENGTH_CHECKS", "DAMAGE_CHECKS", "check_names", "damage_checks", "load_checks", "safety_limits", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "FACE_WIDTH_PITCHES_MIN", "strength_margins",
+__all__ = ["STRENGTH_CHECKS", "DAMAGE_CHECKS", "check_names", "damage_checks", "life_options", "load_checks", "safety_limits", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "FACE_WIDTH_PITCHES_MIN", "strength_margins",
            "strength_sizes", "strength_sizes_many", "widest_width"]
 
 STRENGTH_CHECKS = ("contact_strength", "root_strength1", "root_strength2")
@@ -110,6 +110,12 @@ def _damage_margins(stage, designs, T, N) -> dict:
     return out
 
 
+def life_options(options: dict) -> dict:
+    """A stage's strength options as the damage checks and the life take them: without S_Hmin and S_Fmin (the
+    single-load checks' limits; the damage checks' limit is D <= 1, the life's S is computed)."""
+    return {k: v for k, v in options.items() if k not in ("S_Hmin", "S_Fmin")}
+
+
 def check_names(stage) -> tuple:
     """The load checks a stage is sized by: :data:`STRENGTH_CHECKS` (``single_load``) and, with a spectrum,
     :data:`DAMAGE_CHECKS`."""
@@ -135,7 +141,7 @@ def _damage_checks(spectrum, material, life_h, options: tuple, sn_curve, mean_st
     from ...gears.checks import make_checks   # here: the check registry loads pandas
 
     spec = spectrum if torque_nm is None else spectrum.at(torque_nm, speed_rpm, life_h)
-    opts = _thawed(options)
+    opts = life_options(_thawed(options))
     built = make_checks(spectrum=spec, material=stage_material(material), strength=opts or None, life_h=life_h,
                         sn_curve=sn_curve, mean_stress_factor=mean_stress_factor)
     return tuple(c for c in built if c.name in DAMAGE_CHECKS)
