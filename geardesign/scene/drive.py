@@ -30,6 +30,7 @@ switches the shafting on (docs/shafts_in_drive.md)::
 """
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from ..errors import GearDesignError
@@ -146,10 +147,8 @@ def build_drive(section: dict):
             raise GearDesignError(f"[drive.motor]: {motor.message}")
     shafts = [Shaft(**{k: v for k, v in s.items()}) for s in section["shafts"]]
     specs = section["stages"]
-    if "spectrum" in section:      # each gear stage's duty cycle, relative to the input the drive resolves
-        head = Drive(stages=[_stage(s) for s in specs], n_in_rpm=section.get("n_in_rpm"),
-                     power_kw=section.get("power_kw"), output_torque_nm=section.get("output_torque_nm"), motor=motor)
-        specs = _with_duty_cycle(section["spectrum"], specs, head)
+    if "spectrum" in section:      # each gear stage's duty cycle, relative to the drive's nominal input
+        specs = _with_duty_cycle(section["spectrum"], specs, *_nominal_input(section, motor))
     drive = Drive(stages=[_stage(s) for s in specs], n_in_rpm=section.get("n_in_rpm"),
                   power_kw=section.get("power_kw"), output_torque_nm=section.get("output_torque_nm"),
                   shafts=shafts, motor=motor, shafting=_shafting(section))
@@ -169,7 +168,20 @@ def input_spectrum(path, n_in_rpm: float, life_h=None):
     return LoadSpectrum.from_csv(path, n_rpm=None if has_speed else n_in_rpm, duration_h=life_h)
 
 
-def _with_duty_cycle(spectrum: dict, specs: list, drive) -> list:
+def _nominal_input(section: dict, motor) -> tuple:
+    """(n_in_rpm, power_kw or None) of a [drive] section as gd.Drive resolves them: the section's, else the motor's
+    rated speed and (with no load given) its rated power."""
+    row = None if motor is None else motor.motor
+    n_in = section.get("n_in_rpm") or (None if row is None else float(row["rated_speed_rpm"]))
+    power = section.get("power_kw")
+    if power is None and section.get("output_torque_nm") is None and row is not None:
+        power = float(row["power_kw"])
+    if n_in is None:
+        raise GearDesignError("n_in_rpm is required (or a motor)")
+    return float(n_in), power
+
+
+def _with_duty_cycle(spectrum: dict, specs: list, n_in_rpm: float, power_kw) -> list:
     """The gear stages' tables with the drive's spectrum as their duty cycle (:class:`~geardesign.DutyCycle`: the
     file's bins over the drive's nominal input torque P/ω and speed), its required life, S-N curve and Y_M; a
     stage's own keys win. Errors name ``spectrum["_label"]`` (the scene's key or the command's option)."""
@@ -179,15 +191,13 @@ def _with_duty_cycle(spectrum: dict, specs: list, drive) -> list:
     gears = [i for i, st in enumerate(specs) if st["kind"] == "gear"]
     if not gears:
         raise GearDesignError(f"{label}: the drive has no gear stage to rate under a spectrum")
-    if drive.power_kw is None:
+    if power_kw is None:
         raise GearDesignError(f"{label}: a drive's spectrum is read relative to its nominal input torque, which needs "
                               f"the input power (power_kw, --power or a motor), not an output torque")
-    import math
-
-    torque = 1000.0 * drive.power_kw / (2.0 * math.pi * drive.n_in_rpm / 60.0)
+    torque = 1000.0 * power_kw / (2.0 * math.pi * n_in_rpm / 60.0)
     try:
-        spec = input_spectrum(spectrum["file"], drive.n_in_rpm, spectrum.get("life_h"))
-        duty = DutyCycle.from_spectrum(spec, torque, drive.n_in_rpm)
+        spec = input_spectrum(spectrum["file"], n_in_rpm, spectrum.get("life_h"))
+        duty = DutyCycle.from_spectrum(spec, torque, n_in_rpm)
     except (GearDesignError, OSError, UnicodeDecodeError) as exc:
         why = str(exc) if isinstance(exc, GearDesignError) else (f"{spectrum['file']!r} cannot be read: "
                                                                  f"{getattr(exc, 'strerror', None) or exc}")

@@ -100,3 +100,20 @@ def test_scene_drive_spectrum_beside_the_scene_and_the_report(tmp_path, capsys):
     assert main(["drive", scene]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "[drive.spectrum] file" in err[0] and "none.csv" in err[0]
+
+
+def test_a_scene_stage_sets_its_own_life_keys(tmp_path, capsys):
+    # single_load = false: the stage is rated by the spectrum alone (no single-load checks), its own S-N curve kept
+    body = (SCENE.replace("z2 = 60\n", "z2 = 60\nmaterial = '42CrMo4'\nsingle_load = false\nsn_curve = 'elementary'\n")
+            + "[drive.spectrum]\nfile = 'in.csv'\nsn_curve = 'original'\nlife_h = 25000\n")
+    scene, _ = _files(tmp_path, body)
+    assert main(["drive", scene, "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    stage = data["analysis"]["stages"][1]
+    checks = {c["check"] for c in data["analysis"]["checks"] if c["item"] == "gear"}
+    assert "contact_strength" not in checks and {"pitting_damage1", "root_damage2"} <= checks
+    assert stage["life"]["sn_curve"] == "elementary" and stage["life"]["required_life_h"] == 25000
+    assert "strength" not in stage
+    scene, _ = _files(tmp_path, body.replace("single_load = false", "single_load = 'no'"))
+    assert main(["drive", scene]) == 2
+    assert "single_load" in capsys.readouterr().err
