@@ -117,3 +117,21 @@ def test_a_scene_stage_sets_its_own_life_keys(tmp_path, capsys):
     scene, _ = _files(tmp_path, body.replace("single_load = false", "single_load = 'no'"))
     assert main(["drive", scene]) == 2
     assert "single_load" in capsys.readouterr().err
+
+
+def test_a_scene_stage_s_own_spectrum_is_its_pinions_loads(tmp_path, capsys):
+    # [drive.stage.spectrum]: the CSV's torques and speeds are the stage's pinion's, as they are (a LoadSpectrum);
+    # it wins over the drive's [drive.spectrum]
+    (tmp_path / "stage.csv").write_text("torque_nm,n_rpm,time_h\n300,725,200\n94,725,19800\n")
+    body = (SCENE.replace("z2 = 60\n", "z2 = 60\nmaterial = '42CrMo4'\n[drive.stage.spectrum]\nfile = 'stage.csv'\n")
+            + "[drive.spectrum]\nfile = 'in.csv'\n")
+    scene, _ = _files(tmp_path, body)
+    assert main(["drive", scene, "--json"]) == 0
+    stage = json.loads(capsys.readouterr().out)["analysis"]["stages"][1]
+    pair = gd.GearPair(stage["m"], 20, 60, stage["x1"], stage["x2"], face_width_mm=stage["face_width_mm"])
+    want = pair.life(gd.LoadSpectrum.from_bins([300.0, 94.0], 725.0, time_h=[200.0, 19800.0]), "42CrMo4")
+    assert stage["life"]["D_H1"] == pytest.approx(want.D_H1, rel=1e-12) and stage["life"]["required_life_h"] == 20000
+    scene, _ = _files(tmp_path, body.replace("'stage.csv'", "'gone.csv'"))
+    assert main(["drive", scene]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "[drive.stage.spectrum] file" in err[0] and "gone.csv" in err[0]

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import threading
+from pathlib import Path
 from dataclasses import replace
 from collections import OrderedDict
 from functools import lru_cache
@@ -759,7 +760,7 @@ class GearKind(ToothedKind):
         from ...gears.backlash import GOST1643_TYPES
         from ..housing import CENTER_DISTANCE_RANGE_MM, CENTER_DISTANCE_SERIES
         from ...gears.strength.user_options import scene_keys as strength_scene_keys
-        from ...gears.spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES
+        from ...gears.spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES, SPEED_RANGE_RPM, TIME_RANGE_H
 
         # no module: sized by the stage's load (needs a material); see GearStage
         return {"module": dict(kind=f, lo=M_RANGE_MM[0], hi=M_RANGE_MM[1]),
@@ -780,15 +781,34 @@ class GearKind(ToothedKind):
                 "shift_bounds": dict(kind="floats", lo=-3.0, hi=3.0, length=2),
                 "mating_type": dict(kind="choice", choices=GOST1643_TYPES + ("none",)),
                 "checks": dict(table="checks", without=("jamming",)),
-                # the service life under the drive's [drive.spectrum] (GearStage: spectrum)
+                # the service life (GearStage: spectrum): the stage's own [drive.stage.spectrum], its pinion's loads
+                # (a CSV beside the scene, as [gear.spectrum] reads it), or the drive's [drive.spectrum]
+                "spectrum": {"file": dict(kind="str", required=True),
+                             "n_rpm": dict(kind=f, lo=SPEED_RANGE_RPM[0], hi=SPEED_RANGE_RPM[1], lo_open=True),
+                             "duration_h": dict(kind=f, lo=TIME_RANGE_H[0], hi=TIME_RANGE_H[1], lo_open=True)},
                 "single_load": dict(kind="bool"), "sn_curve": dict(kind="choice", choices=SN_CURVES),
                 "mean_stress_factor": dict(kind=f, lo=MEAN_STRESS_FACTOR_RANGE[0], hi=MEAN_STRESS_FACTOR_RANGE[1]),
                 **strength_scene_keys()}
+
+    def scene_spec(self, spec: dict, folder) -> dict:
+        sp = spec.get("spectrum")
+        if isinstance(sp, dict) and not Path(sp["file"]).is_absolute():    # a stage's spectrum beside the scene
+            spec["spectrum"] = dict(sp, file=str(Path(folder) / sp["file"]))
+        return spec
 
     def from_scene(self, spec: dict):
         from ...gears.strength.user_options import options_from_table
 
         strength, kw = options_from_table(spec)     # the strength options' keys: the stage's strength dict
+        if isinstance(kw.get("spectrum"), dict):    # [drive.stage.spectrum]: the pinion's loads, as they are
+            from ...gears.spectrum import LoadSpectrum
+
+            sp = kw["spectrum"]
+            try:
+                kw["spectrum"] = LoadSpectrum.from_csv(sp["file"], n_rpm=sp.get("n_rpm"),
+                                                       duration_h=sp.get("duration_h", kw.get("life_h")))
+            except GearDesignError as exc:
+                raise GearDesignError(f"[drive.stage.spectrum] file: {exc}") from None
         kw["strength"] = strength or None
         kw["m"] = kw.pop("module", None)
         kw["checks"] = dict(kw["checks"]) if kw.get("checks") else None
