@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import GearDesignError
-from ..gears.spectrum import BINS_MAX, LoadSpectrum
+from ..gears.spectrum import BINS_MAX, LoadSpectrum, equivalent_torque
 from ..validate import one_number, require_range
 
 __all__ = ["DutyCycle", "FACTOR_RANGE"]
@@ -86,6 +86,16 @@ class DutyCycle:
         required life ``life_h`` (h): T_i = q_T,i·T_n, n_i = q_n,i·n_n, t_i = share_i·L_h."""
         return LoadSpectrum(self.torque_factor * float(torque_nm), self.speed_factor * float(n_rpm),
                             self.share * float(life_h))
+
+    def application_factor(self, p: float) -> float:
+        """K_A = T_eq/T_n the duty cycle stands for (ISO 6336-6:2019 Annex A): the equivalent of its torque factors'
+        magnitudes weighted by their load cycles (share × speed factor) for the S-N curve's exponent ``p`` written in
+        torque (:func:`~geardesign.gears.strength.service_life.torque_exponent`).
+
+        >>> round(DutyCycle([1.0, 0.5], [0.1, 0.9]).application_factor(6.6), 4)    # (0.1 + 0.9·0.5^6.6)^(1/6.6)
+        0.715
+        """
+        return equivalent_torque(np.abs(self.torque_factor), self.share * self.speed_factor, p)
 
     @property
     def reverses(self) -> bool:

@@ -18,6 +18,11 @@ def test_bins_at_a_nominal_load_are_the_factors_times_it():
     # ISO 6336-6 Annex A's T_eq of the bins scales with the nominal torque, K_A = T_eq/T_n does not
     k_a = [duty.at(T, 960.0, 25000.0).application_factor(T, 6.61) for T in (10.0, 150.0, 4000.0)]
     assert k_a == pytest.approx([k_a[0]] * 3, rel=1e-12)
+    # ... and is the duty cycle's own: Σ n_i q_i^p over Σ n_i with n_i ∝ share_i·q_n,i, by hand
+    n = np.array([0.01, 0.39, 0.6 * 0.5])
+    assert duty.application_factor(6.61) == pytest.approx(((n @ np.array([2.0, 1.0, 0.5]) ** 6.61) / n.sum())
+                                                          ** (1 / 6.61), rel=1e-14)
+    assert k_a[0] == pytest.approx(duty.application_factor(6.61), rel=1e-12)
 
 
 def test_a_spectrum_made_relative_and_scaled_back_is_the_spectrum():
