@@ -140,3 +140,20 @@ def test_the_search_sizes_by_life_and_its_best_reanalyses():
 def test_a_bad_life_case_is_refused_by_name(kw, words):
     with pytest.raises(GearDesignError, match=words):
         gd.GearStage(3, **kw)
+
+
+def test_one_duty_cycle_loads_each_stage_at_its_own_nominal():
+    # two fixed stages: the second's nominal is T_0·u_1·η_1 at n_0/u_1 (the power flow by hand), its bins the
+    # factors times that, over the same required life
+    q, share = [1.8, 1.0, 0.3], [0.1, 0.6, 0.3]
+    duty = gd.DutyCycle(q, share, speed_factor=[1.0, 1.0, 0.5])
+    stages = [gd.GearStage(3, 20, 60, material=MAT, life_h=LIFE, spectrum=duty, face_width_mm=40, name="fast"),
+              gd.GearStage(5, 19, 57, material=MAT, life_h=LIFE, spectrum=duty, face_width_mm=70, name="slow")]
+    an = gd.Drive(stages=stages, n_in_rpm=N_IN, power_kw=P_KW).analyse()
+    for k, (T, n) in enumerate([(T_IN, N_IN), (T_IN * 3 * 0.98, N_IN / 3)]):
+        s = an.stages[k]["summary"]
+        spec = gd.LoadSpectrum.from_bins(np.array(q) * T, np.array([1.0, 1.0, 0.5]) * n, share=share, duration_h=LIFE)
+        want = gd.GearPair(s["m"], s["z1"], s["z2"], s["x1"], s["x2"], face_width_mm=s["face_width_mm"]).life(spec, MAT)
+        got = an.stages[k]["life"]
+        assert [getattr(got, "D_" + m) for m in ("H1", "H2", "F1", "F2")] == pytest.approx(
+            [getattr(want, "D_" + m) for m in ("H1", "H2", "F1", "F2")], rel=1e-12)
