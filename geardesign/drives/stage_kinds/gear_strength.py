@@ -9,6 +9,12 @@ roughness, S_Hmin and S_Fmin, given factors; the defaults of :mod:`geardesign.ge
 - ``contact_strength``: min(S_H1, S_H2)/S_Hmin − 1;
 - ``root_strength1``, ``root_strength2``: S_F1/S_Fmin − 1, S_F2/S_Fmin − 1.
 
+With a ``spectrum`` (a :class:`~geardesign.drives.duty_cycle.DutyCycle` read at the stage's nominal load, or a
+LoadSpectrum as it is) the damage checks of ISO 6336-6 join them (:data:`DAMAGE_CHECKS`: ``pitting_damage1``,
+``pitting_damage2``, ``root_damage1``, ``root_damage2``, margin 1 − D, built by the check registry:
+:func:`damage_checks`); ``single_load=False`` leaves the three above out. The sizing holds every one of them: the
+damage checks are rated with the root checks, where they decide the answer.
+
 Sizing (``GearStage(m=None)``): every module of the ISO 54 series (``catalogs/modules_iso54.csv``)
 times face widths b = ψ_d·d1 (rounded up to whole mm) for ψ_d = b/d1 in :data:`WIDTH_TO_DIAMETER_RANGE`
 by steps of :data:`WIDTH_TO_DIAMETER_STEP` (or the stage's own ``face_width_mm``) is checked, vectorised
