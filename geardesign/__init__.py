@@ -49,7 +49,7 @@ _NAMES = {
     "PlanetarySet": "gears.planetary", "optimize_planetary_shifts": "shifts.planetary",
     "planetary_region": "shifts.planetary", "select_planetary_teeth": "shifts.planetary_teeth",
     "Drive": "drives.drive", "GearStage": "drives.stages", "ChainStage": "drives.stages",
-    "GivenStage": "drives.stages", "Shaft": "drives.stages",
+    "GivenStage": "drives.stages", "Shaft": "drives.stages", "DutyCycle": "drives.duty_cycle",
     "Load": "gears.strength", "Material": "gears.strength", "material": "gears.strength",
     "pair_strength": "gears.strength", "StrengthResult": "gears.strength", "StrengthOptions": "gears.strength",
     "LoadSpectrum": "gears.spectrum", "pair_life": "gears.strength", "LifeResult": "gears.strength",

@@ -10,7 +10,9 @@ flow brings each gear stage its own torque and speed), ``--material``, ``--life-
 ``--application-factor`` and ``--strength-width`` the load case of every gear stage that does not set
 its own in the scene (a stage without ``module`` is then sized by its load), and the strength options
 (``--accuracy-grade``, ``--factor``, ``--fma``, ``--nu40``, ``--rz-flank``, ``--rz-root``, ``--sh-min``,
-``--sf-min``) those of every gear stage that does not set its own. ``--on-gear 2`` and
+``--sf-min``) those of every gear stage that does not set its own. ``--spectrum CSV`` (``--sn-curve``,
+``--mean-stress-factor``) is the drive's load spectrum at its input shaft, as the scene's [drive.spectrum]: every
+gear stage's duty cycle relative to its own nominal load, sizing it by its life too. ``--on-gear 2`` and
 ``--material2`` have no meaning for a drive and are refused.
 """
 from __future__ import annotations
@@ -36,8 +38,11 @@ def add_parser(subparsers):
                     "when one fails (the output names the stage and check), 2 on bad input.",
         epilog="Load options for a drive: --power or --torque with --speed replace the scene's input; --material, "
                "--life-h, --application-factor and --strength-width apply to every gear stage that does not set "
-               "its own (a gear stage without module is then sized by its load); --on-gear 2 and --material2 are "
-               "refused (each stage carries its own shaft's load, in one material).")
+               "its own (a gear stage without module is then sized by its load); --spectrum CSV is the drive's load "
+               "spectrum at its input shaft (torque_nm, n_rpm as pair --spectrum takes them), read relative to the "
+               "nominal input torque P/ω as every gear stage's duty cycle: the stages are then sized and checked by "
+               "their service life too (ISO 6336-6); --on-gear 2 and --material2 are refused (each stage carries its "
+               "own shaft's load, in one material).")
     p.add_argument("scene", help="a scene file (.toml) with a [drive] section")
     add_output_file(p, "--plot", "PNG", "the drive's diagram")
     p.add_argument("--layout-plot", metavar="PNG", default=None,
@@ -46,7 +51,7 @@ def add_parser(subparsers):
                    help="write a one-page report (checks, power flow, stages, gear geometry, keys, diagram) to this HTML file")
     add_json_flag(p)
     add_progress_flag(p)
-    add_load_args(p, limits=True, spectrum=False)   # a stage's spectrum: not yet (issue 38's GearStage(spectrum=))
+    add_load_args(p, limits=True)     # --spectrum: the drive's, at its input shaft (every gear stage's duty cycle)
     _add_shafting_args(p)
     add_cluster_args(p)
     return p
@@ -171,6 +176,28 @@ def _input_from_args(section: dict, args) -> dict:
     return out
 
 
+def _spectrum_from_args(section: dict, args) -> dict:
+    """The [drive] section with ``--spectrum`` as its [drive.spectrum] (the CSV's torques and speeds at the drive's
+    input shaft, read relative to its nominal input: every gear stage's duty cycle; ``--life-h`` the required life
+    and the hours a ``share`` column divides), or the scene's with ``--sn-curve``/``--mean-stress-factor``."""
+    if args.spectrum is not None:
+        sp = {"file": args.spectrum, "life_h": args.life_h, "sn_curve": args.sn_curve, "_label": "--spectrum",
+              **({"mean_stress_factor": args.mean_stress_factor} if args.mean_stress_factor is not None else {})}
+        return dict(section, spectrum=sp)
+    if "spectrum" not in section:
+        for flag, value, unset in (("--mean-stress-factor", args.mean_stress_factor, None),
+                                   ("--sn-curve", args.sn_curve, "iso")):
+            if value != unset:
+                raise GearDesignError(f"{flag} needs --spectrum (or the scene's [drive.spectrum])")
+        return section
+    sp = dict(section["spectrum"])
+    if args.mean_stress_factor is not None:
+        sp["mean_stress_factor"] = args.mean_stress_factor
+    if args.sn_curve != "iso":
+        sp["sn_curve"] = args.sn_curve
+    return dict(section, spectrum=sp)
+
+
 def _with_load(section: dict, args) -> dict:
     """The [drive] section with the command's load options (see the module's docstring)."""
     if args.on_gear != 1:
@@ -179,18 +206,21 @@ def _with_load(section: dict, args) -> dict:
     if args.material2 is not None:
         raise GearDesignError(f"--material2: a drive's gear stages take one material for both gears (--material); "
                               f"got {args.material2!r}")
-    out = _input_from_args(section, args)
+    out = _spectrum_from_args(_input_from_args(section, args), args)
     given = {key: getattr(args, opt) for opt, key in _STAGE_LOAD
              if getattr(args, opt) is not None and not (opt == "application_factor" and args.application_factor == 1.0)}
     given.update(strength_from_args(args))   # the strength options, keys of a gear stage as in a scene
-    if not given:
-        return out
     gears = [i for i, st in enumerate(out["stages"]) if st["kind"] == "gear"]
-    if not gears:
+    if given and not gears:
         raise GearDesignError(f"{_flag(next(iter(given)))}: the scene's drive has no gear stage")
     stages = list(out["stages"])
     for i in gears:
         stages[i] = {**given, **stages[i]}     # the stage's own keys win
+    if args.spectrum is not None:      # the damage checks need each stage's S-N curves: said of the option
+        bare = [st.get("name", "gear") for st in stages if st["kind"] == "gear" and st.get("material") is None]
+        if bare:
+            raise GearDesignError(f"--spectrum: gear stage '{bare[0]}' has no material to rate its life in (give "
+                                  f"--material or the stage's material)")
     return dict(out, stages=stages)
 
 
@@ -266,6 +296,7 @@ def run(args) -> int:
             print_wrapped("  " + ", ".join(f"{k} = {v:.6g}" if isinstance(v, float) else f"{k} = {v}"
                                            for k, v in st["summary"].items()))
         _print_strength(an)
+        _print_life(an)
         print()
         print_frame(an.checks, title="checks:")
         if len(an.keys):
@@ -273,6 +304,21 @@ def run(args) -> int:
             print_frame(an.keys.drop(columns=["message"]), title="keys:")
         _print_shafting(an)
     return 0 if ok else 1
+
+
+def _print_life(an) -> None:
+    """Per gear stage with a spectrum: its ISO 6336-6 service life (damage sums, lives and safety factors for the
+    required life per gear and mode) under the spectrum at the flow into it."""
+    for st in an.stages:
+        r = st.get("life")
+        if r is None:
+            continue
+        print()
+        print_wrapped(f"service life of stage '{st['summary']['name']}' under its spectrum (ISO 6336-6; "
+                      f"{r.bins.shape[0]} bins, the bins: --json, --report):")
+        print(repr(r))
+        for note in r.notes:
+            print_wrapped(f"  note: {note}")
 
 
 def _print_shafting(an) -> None:

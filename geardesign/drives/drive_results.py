@@ -102,10 +102,14 @@ class DriveAnalysis(Result):
 
 def _stage_dict(stage: dict) -> dict:
     """A stage's summary; a gear stage with a material also its ISO 6336 result (material with σ_Hlim, σ_Flim,
-    S_H, S_F, σ_H, σ_F, the governing check, the factor table: :meth:`StrengthResult.to_dict`)."""
+    S_H, S_F, σ_H, σ_F, the governing check, the factor table: :meth:`StrengthResult.to_dict`) and, with a spectrum,
+    its ISO 6336-6 service life (damage sums, lives, safety factors for the required life, the bins:
+    :meth:`LifeResult.to_dict`)."""
     out = dict(stage["summary"])
     if stage.get("strength") is not None:
         out["strength"] = stage["strength"].to_dict()
+    if stage.get("life") is not None:
+        out["life"] = stage["life"].to_dict()
     return out
 
 

@@ -165,6 +165,15 @@ class GearStage:
     (``accuracy_grade``, ``nu40``, ``Rz_flank_um``, ``Rz_root_um``, ``S_Hmin``, ``S_Fmin``, ``factors``, ...;
     None: the model's defaults).
 
+    ``spectrum`` sizes and checks the stage by its service life (ISO 6336-6, :mod:`geardesign.gears.checks.damage`):
+    a :class:`~geardesign.drives.duty_cycle.DutyCycle` (relative to the stage's nominal load, the torque and speed the
+    power flow brings it, over the required life ``life_h``) or a :class:`~geardesign.LoadSpectrum` (the torques
+    in N·m and speeds of the stage's pinion as they are, whatever the flow; ``life_h`` None: its duration). The
+    damage checks ``pitting_damage1``, ``pitting_damage2``, ``root_damage1``, ``root_damage2`` (margin 1 − D) then
+    join the stage's checks, with ``sn_curve`` and ``mean_stress_factor`` (Y_M, needed when the torque reverses) as
+    :func:`~geardesign.gears.strength.service_life.pair_life` takes them. ``single_load`` (default True) keeps the
+    strength checks at the nominal load beside them; False sizes the stage by the spectrum alone.
+
     ``efficiency``: None (the default) takes :data:`GEAR_EFFICIENCY` (0.98), or the efficiency computed from the
     stage's losses when the drive has a :class:`~geardesign.drives.shafting.Shafting` with a lubricant; a given
     number always wins (``efficiency_given`` records which: it is set from ``efficiency`` and carried over by
@@ -192,6 +201,10 @@ class GearStage:
     shift_bounds: tuple | None = None
     mating_type: str | None = None
     strength: dict | None = None
+    spectrum: object = None
+    sn_curve: str = "iso"
+    mean_stress_factor: object = None
+    single_load: bool = True
     efficiency_given: bool | None = field(default=None, repr=False)
 
     kind = "gear"
@@ -245,6 +258,7 @@ class GearStage:
                                       f"{type(self.strength).__name__}")
             from ..gears.strength.chain import check_options   # here: the chain loads the materials catalog
             object.__setattr__(self, "strength", dict(check_options(self.strength)))
+        self._check_spectrum()
         if self.x1 is not None and self.m is not None:
             self.fixed_pair()          # a fixed pair that cannot be built is refused here
         from .housing import check_center_distance
@@ -263,6 +277,52 @@ class GearStage:
             if self.shift_objective not in OBJECTIVES:
                 raise GearDesignError(f"shift_objective must be one of {', '.join(OBJECTIVES)}, "
                                       f"got {self.shift_objective!r}")
+
+    def _check_spectrum(self) -> None:
+        """The service-life load case (``spectrum``, ``sn_curve``, ``mean_stress_factor``, ``single_load``) checked
+        here, not mid-search."""
+        from ..gears.spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES, LoadSpectrum
+        from ..validate import require_bool, require_choice
+        from .duty_cycle import DutyCycle
+
+        require_choice("sn_curve", self.sn_curve, SN_CURVES)
+        require_bool("single_load", self.single_load)
+        if self.mean_stress_factor is not None:
+            y_m = require_range("mean_stress_factor", self.mean_stress_factor, *MEAN_STRESS_FACTOR_RANGE).ravel()
+            if y_m.size not in (1, 2):
+                raise GearDesignError(f"mean_stress_factor must be Y_M or (Y_M1, Y_M2), got {self.mean_stress_factor!r}")
+            object.__setattr__(self, "mean_stress_factor", float(y_m[0]) if y_m.size == 1 else tuple(map(float, y_m)))
+        s = self.spectrum
+        if s is None:
+            if not self.single_load:
+                raise GearDesignError(f"gear stage '{self.name}': single_load=False needs a spectrum (the stage "
+                                      f"would have no load check)")
+            return
+        if not isinstance(s, (DutyCycle, LoadSpectrum)):
+            raise GearDesignError(f"gear stage '{self.name}': spectrum must be a DutyCycle (relative to the stage's "
+                                  f"nominal load) or a LoadSpectrum (its pinion's loads), got {type(s).__name__}")
+        if self.material is None:
+            raise GearDesignError(f"gear stage '{self.name}': a spectrum needs a material (the damage checks' S-N "
+                                  f"curves, ISO 6336-5)")
+        if isinstance(s, DutyCycle) and self.life_h is None:
+            raise GearDesignError(f"gear stage '{self.name}': a DutyCycle needs life_h, the required life its time "
+                                  f"shares divide (h)")
+        if isinstance(s, LoadSpectrum) and s.per_tooth:
+            raise GearDesignError(f"gear stage '{self.name}': a spectrum counted per tooth belongs to one pair's "
+                                  f"teeth; give a stage bins of torque, speed and time")
+        if s.reverses and self.mean_stress_factor is None:
+            raise GearDesignError(f"gear stage '{self.name}': the spectrum's torque reverses (a negative bin), so the "
+                                  f"roots bend both ways: give mean_stress_factor (Y_M in "
+                                  f"[{MEAN_STRESS_FACTOR_RANGE[0]:g}, {MEAN_STRESS_FACTOR_RANGE[1]:g}], ISO 6336-3:2019)")
+
+    def spectrum_at(self, torque_nm: float, n_rpm: float):
+        """The spectrum on the stage's pinion at the nominal ``torque_nm`` (N·m) and ``n_rpm`` (rpm) the flow brings
+        it (a DutyCycle scaled to them over ``life_h``; a LoadSpectrum as given); None without a spectrum."""
+        from .duty_cycle import DutyCycle
+
+        if isinstance(self.spectrum, DutyCycle):
+            return self.spectrum.at(torque_nm, n_rpm, self.life_h)
+        return self.spectrum
 
     @property
     def free_shifts(self) -> bool:

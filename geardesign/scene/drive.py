@@ -31,6 +31,7 @@ type; each switches the shafting on (docs/shafts_in_drive.md)::
 """
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from ..errors import GearDesignError
@@ -76,6 +77,10 @@ def load_drive(where: Where, scene_path, raw) -> dict:
         else:
             shafts.append(validate_table(where, label, t, drive_schema("shaft")))
     section = dict(head, stages=stages, shafts=shafts, layout=layout, bearing_types=types)
+    if "spectrum" in section:      # its file relative to the scene; read (and refused by name) by build_drive
+        name = section["spectrum"]["file"]
+        where_file = Path(name) if Path(name).is_absolute() else Path(scene_path).parent / name
+        section["spectrum"] = dict(section["spectrum"], file=str(where_file), _label="[drive.spectrum] file")
     if "shafting" in raw:
         if not isinstance(raw["shafting"], dict):
             where.fail("drive", "shafting", f"expected a table [drive.shafting], got {_short(raw['shafting'])}")
@@ -151,10 +156,68 @@ def build_drive(section: dict):
         if not motor.found:
             raise GearDesignError(f"[drive.motor]: {motor.message}")
     shafts = [Shaft(**{k: v for k, v in s.items()}) for s in section["shafts"]]
-    drive = Drive(stages=[_stage(s) for s in section["stages"]], n_in_rpm=section.get("n_in_rpm"),
+    specs = section["stages"]
+    if "spectrum" in section:      # each gear stage's duty cycle, relative to the drive's nominal input
+        specs = _with_duty_cycle(section["spectrum"], specs, *_nominal_input(section, motor))
+    drive = Drive(stages=[_stage(s) for s in specs], n_in_rpm=section.get("n_in_rpm"),
                   power_kw=section.get("power_kw"), output_torque_nm=section.get("output_torque_nm"),
                   shafts=shafts, motor=motor, shafting=_shafting(section))
     return drive, motor
+
+
+def input_spectrum(path, n_in_rpm: float, life_h=None):
+    """The LoadSpectrum of a drive's spectrum file: torques (N·m) and speeds (rpm) at the drive's input shaft; a file
+    without an ``n_rpm`` column is taken at the input speed ``n_in_rpm``; ``life_h`` the hours a ``share`` column
+    divides."""
+    from ..files import read_text_bounded
+    from ..gears.spectrum import SPECTRUM_BYTES_MAX, LoadSpectrum
+
+    text = read_text_bounded(path, "spectrum file", SPECTRUM_BYTES_MAX)   # bounded: /dev/zero is one endless line
+    header = next((line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")), "")
+    has_speed = "n_rpm" in (h.strip() for h in header.split(","))
+    return LoadSpectrum.from_csv(path, n_rpm=None if has_speed else n_in_rpm, duration_h=life_h)
+
+
+def _nominal_input(section: dict, motor) -> tuple:
+    """(n_in_rpm, power_kw or None) of a [drive] section as gd.Drive resolves them: the section's, else the motor's
+    rated speed and (with no load given) its rated power."""
+    row = None if motor is None else motor.motor
+    n_in = section.get("n_in_rpm") or (None if row is None else float(row["rated_speed_rpm"]))
+    power = section.get("power_kw")
+    if power is None and section.get("output_torque_nm") is None and row is not None:
+        power = float(row["power_kw"])
+    if n_in is None:
+        raise GearDesignError("n_in_rpm is required (or a motor)")
+    return float(n_in), power
+
+
+def _with_duty_cycle(spectrum: dict, specs: list, n_in_rpm: float, power_kw) -> list:
+    """The gear stages' tables with the drive's spectrum as their duty cycle (:class:`~geardesign.DutyCycle`: the
+    file's bins over the drive's nominal input torque P/ω and speed), its required life, S-N curve and Y_M; a
+    stage's own keys win. Errors name ``spectrum["_label"]`` (the scene's key or the command's option)."""
+    from ..drives.duty_cycle import DutyCycle
+
+    label = spectrum.get("_label", "[drive.spectrum] file")
+    gears = [i for i, st in enumerate(specs) if st["kind"] == "gear"]
+    if not gears:
+        raise GearDesignError(f"{label}: the drive has no gear stage to rate under a spectrum")
+    if power_kw is None:
+        raise GearDesignError(f"{label}: a drive's spectrum is read relative to its nominal input torque, which needs "
+                              f"the input power (power_kw, --power or a motor), not an output torque")
+    torque = 1000.0 * power_kw / (2.0 * math.pi * n_in_rpm / 60.0)
+    try:
+        spec = input_spectrum(spectrum["file"], n_in_rpm, spectrum.get("life_h"))
+        duty = DutyCycle.from_spectrum(spec, torque, n_in_rpm)
+    except (GearDesignError, OSError, UnicodeDecodeError) as exc:
+        why = str(exc) if isinstance(exc, GearDesignError) else (f"{spectrum['file']!r} cannot be read: "
+                                                                 f"{getattr(exc, 'strerror', None) or exc}")
+        raise GearDesignError(f"{label}: {why}") from None
+    given = {"spectrum": duty, "life_h": spectrum.get("life_h") or spec.duration_h,
+             **{k: spectrum[k] for k in ("sn_curve", "mean_stress_factor") if spectrum.get(k) is not None}}
+    out = list(specs)
+    for i in gears:
+        out[i] = {**given, **specs[i]}
+    return out
 
 
 def compute_drive(section: dict, progress=None):
@@ -210,6 +273,16 @@ def run_drive(rep, section: dict) -> None:
                f"(S_Hmin {r.S_Hmin:g}), S_F = {r.S_F1:.4g} / {r.S_F2:.4g} (S_Fmin {r.S_Fmin:g}); σ_H = {r.sigma_H1:.4g} / "
                f"{r.sigma_H2:.4g} MPa, σ_F = {r.sigma_F1:.4g} / {r.sigma_F2:.4g} MPa; governing {check} "
                f"(margin {margin:+.4f}).", "", md_table(r.factors)]
+    for st in an.stages:          # a gear stage with a spectrum: its service life at the flow into it
+        r = st.get("life")
+        if r is None:
+            continue
+        name = st["summary"]["name"]
+        rep.tables["drive_life_" + "".join(c if c.isalnum() else "_" for c in str(name))] = r.bins
+        mode, D = r.governing
+        md += ["", f"### Service life of stage '{name}' (ISO 6336-6:2019)", "",
+               f"{r.life_h:.4g} h of {r.required_life_h:.6g} h required ({'holds' if r.ok else 'FAILS'}; governing "
+               f"{mode}, D = {D:.4g}; S-N curve {r.sn_curve}).", "", md_table(r.damage_table())]
     md += ["", "### Checks of the whole drive", "", md_table(an.checks), "", "### Keys", "",
            md_table(an.keys.drop(columns=["message"])), ""]
     md += [f"- {r['name']}: {r['message']}" for _, r in an.keys.iterrows()] + [""]

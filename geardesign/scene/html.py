@@ -405,6 +405,16 @@ def _chain_part(st: dict) -> list:
                    [[_td(html.escape(a)), _td(b), _td(c), _td(html.escape(d), "num")] for a, b, c, d in items])]
 
 
+def life_html(r) -> list:
+    """A drive stage's service life under its spectrum (ISO 6336-6): the verdict, the damage table (D, life, S per
+    gear and mode) and the S-N diagrams with the spectrum on them."""
+    return ["<h3>Service life under the spectrum (ISO 6336-6:2019)</h3>",
+            f"<p>{r.life_h:.4g} h of {r.required_life_h:.6g} h required ({'holds' if r.ok else 'FAILS'}); S-N curve "
+            f"{html.escape(r.sn_curve)}; Y<sub>M</sub> = {'/'.join(f'{v:g}' for v in r.mean_stress_factor)}.</p>",
+            _frame(r.damage_table(), {"D": "{:.4g}", "life_h": "{:.4g}", "S": "{:.4g}"}),
+            f'<figure><img alt="S-N diagrams" src="{_png(r.plot())}"></figure>']
+
+
 def _stage_parts(k: int, st: dict) -> list:
     """The section of stage ``k`` of the reducer: a gear pair's geometry, strength and data block; a chain's
     design; a bought unit's ratio, efficiency and rating."""
@@ -421,8 +431,10 @@ def _stage_parts(k: int, st: dict) -> list:
         if r is not None:
             parts += ["<h3>Load capacity (ISO 6336:2019)</h3>",
                       *strength_html(r, st["stage"].load(flow.torque_in_nm, flow.n_in_rpm), level=4)]
-        else:
+        elif st.get("life") is None:
             parts.append("<p>No material given: the stage's strength is not checked.</p>")
+        if st.get("life") is not None:
+            parts += life_html(st["life"])
         shop = st.get("allowances")      # the manufactured state the analysis assumed, when it gives one
         what = (f"Control sizes with the allowances of the manufactured state the checks assumed: "
                 f"{html.escape(shop.describe())}" if shop is not None else

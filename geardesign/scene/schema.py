@@ -150,6 +150,22 @@ def _spectrum_schema() -> dict:
             "material": _Key("str", required=True), "material2": _Key("str")}
 
 
+def _drive_spectrum_schema() -> dict:
+    """[drive.spectrum]: the drive's load spectrum, a CSV file (relative to the scene; the columns of
+    :meth:`geardesign.LoadSpectrum.from_csv`) of torques and speeds at the drive's input shaft (no ``n_rpm`` column:
+    the input speed), read relative to its nominal input as every gear stage's duty cycle
+    (:class:`geardesign.DutyCycle`); ``life_h`` the required life (and the hours a ``share`` column divides; a stage's
+    own ``life_h`` wins; neither: the spectrum's duration), the S-N curve beyond the knee and Y_M of the stages that
+    do not set their own (docs/drive_train.md)."""
+    from ..gears.spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES
+    from ..gears.strength.load import LIFE_RANGE_H
+
+    return {"file": _Key("str", required=True),
+            "life_h": _F(lo=LIFE_RANGE_H[0], hi=LIFE_RANGE_H[1], lo_open=True),
+            "sn_curve": _Key("choice", choices=SN_CURVES),
+            "mean_stress_factor": _F(lo=MEAN_STRESS_FACTOR_RANGE[0], hi=MEAN_STRESS_FACTOR_RANGE[1])}
+
+
 def _teeth_schema() -> dict:
     from ..gears.geometry import M_RANGE_MM
     from ..gears.mesh import Z_MAX, Z_MIN
@@ -266,7 +282,8 @@ def drive_schema(part: str = "") -> dict:
                 "motor": {"power_kw": _F(required=True, lo=mo.POWER_RANGE_KW[0], hi=mo.POWER_RANGE_KW[1]),
                           "n_rpm": _F(required=True, lo=mo.SPEED_RANGE_RPM[0], hi=mo.SPEED_RANGE_RPM[1]),
                           "service_factor": _F(default=1.0, lo=mo.SERVICE_FACTOR_RANGE[0], hi=mo.SERVICE_FACTOR_RANGE[1]),
-                          "catalog": _Key("choice", default=mo.MOTOR_CATALOGS[0], choices=mo.MOTOR_CATALOGS)}}
+                          "catalog": _Key("choice", default=mo.MOTOR_CATALOGS[0], choices=mo.MOTOR_CATALOGS)},
+                "spectrum": _drive_spectrum_schema()}
     if part in stage_kinds():
         from ..drives.stage_kinds import kind_named
 

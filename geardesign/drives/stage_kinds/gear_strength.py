@@ -9,6 +9,12 @@ roughness, S_Hmin and S_Fmin, given factors; the defaults of :mod:`geardesign.ge
 - ``contact_strength``: min(S_H1, S_H2)/S_Hmin − 1;
 - ``root_strength1``, ``root_strength2``: S_F1/S_Fmin − 1, S_F2/S_Fmin − 1.
 
+With a ``spectrum`` (a :class:`~geardesign.drives.duty_cycle.DutyCycle` read at the stage's nominal load, or a
+LoadSpectrum as it is) the damage checks of ISO 6336-6 join them (:data:`DAMAGE_CHECKS`: ``pitting_damage1``,
+``pitting_damage2``, ``root_damage1``, ``root_damage2``, margin 1 − D, built by the check registry:
+:func:`damage_checks`); ``single_load=False`` leaves the three above out. The sizing holds every one of them: the
+damage checks are rated with the root checks, where they decide the answer.
+
 Sizing (``GearStage(m=None)``): every module of the ISO 54 series (``catalogs/modules_iso54.csv``)
 times face widths b = ψ_d·d1 (rounded up to whole mm) for ψ_d = b/d1 in :data:`WIDTH_TO_DIAMETER_RANGE`
 by steps of :data:`WIDTH_TO_DIAMETER_STEP` (or the stage's own ``face_width_mm``) is checked, vectorised
@@ -41,10 +47,11 @@ import numpy as np
 
 from ..stages import stage_material
 
-__all__ = ["STRENGTH_CHECKS", "load_checks", "safety_limits", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "FACE_WIDTH_PITCHES_MIN", "strength_margins",
+__all__ = ["STRENGTH_CHECKS", "DAMAGE_CHECKS", "check_names", "damage_checks", "life_options", "load_checks", "safety_limits", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "FACE_WIDTH_PITCHES_MIN", "strength_margins",
            "strength_sizes", "strength_sizes_many", "widest_width"]
 
 STRENGTH_CHECKS = ("contact_strength", "root_strength1", "root_strength2")
+DAMAGE_CHECKS = ("pitting_damage1", "pitting_damage2", "root_damage1", "root_damage2")
 WIDTH_TO_DIAMETER_RANGE = (0.2, 1.0)
 WIDTH_TO_DIAMETER_STEP = 0.05
 FACE_WIDTH_PITCHES_MIN = 3.0      # b >= 3 circular pitches (π·m each)
@@ -54,22 +61,34 @@ def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm, speed_r
     """{check: margin array} of the stage's load checks for its pairs (m, b broadcast) carrying ``torque_nm`` on
     the pinion at ``speed_rpm`` (with the stage's life, application factor and strength options): the checks the
     check registry builds for that load case (:func:`load_checks`; the built-in :data:`STRENGTH_CHECKS`, and any
-    load model registered there), evaluated on the arrays in one call each; ``root=False``: ``contact_strength``
-    alone (the strength model skips the root side). A torque and speed per design (arrays broadcast with the
-    designs) check many flows in one call (:meth:`~geardesign.gears.strength.Load.per_design`)."""
+    load model registered there; with a ``spectrum``, the damage checks :data:`DAMAGE_CHECKS` of
+    :func:`damage_checks`), evaluated on the arrays in one call each; ``root=False``: ``contact_strength``
+    alone (the strength model skips the root side; the damage checks rate both sides together, so they are left
+    out). A torque and speed per design (arrays broadcast with the designs) check many flows in one call
+    (:meth:`~geardesign.gears.strength.Load.per_design`; the damage checks one call per distinct flow)."""
+    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, face_width_mm, z1, z2, x1, x2,
+                                                                       torque_nm, speed_rpm)))
+    designs, (T, N) = arrays[:6], arrays[6:]
+    out = {}
+    if stage.single_load:
+        if np.ndim(torque_nm) or np.ndim(speed_rpm):
+            from ...gears.strength import Load
+
+            load = Load.per_design(T, N, stage.application_factor, stage.life_h)
+            checks = _built_checks(_strength_options(stage), stage.material, stage.checks_key(), load, root)
+        else:
+            checks = load_checks(stage, float(torque_nm), float(speed_rpm), root)
+        out.update(_evaluated(stage, checks, *designs))
+    if root and stage.spectrum is not None:
+        out.update(_damage_margins(stage, designs, T, N))
+    return out
+
+
+def _evaluated(stage, checks, M, B, Z1, Z2, X1, X2) -> dict:
+    """{check: margin array} of ``checks`` on the designs (arrays of one shape)."""
     from ...gears.geometry import mesh_geometry
     from ...gears.mesh import Mesh
 
-    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (m, face_width_mm, z1, z2, x1, x2,
-                                                                       torque_nm, speed_rpm)))
-    M, B, Z1, Z2, X1, X2, T, N = arrays
-    if np.ndim(torque_nm) or np.ndim(speed_rpm):
-        from ...gears.strength import Load
-
-        load = Load.per_design(T, N, stage.application_factor, stage.life_h)
-        checks = _built_checks(_strength_options(stage), stage.material, stage.checks_key(), load, root)
-    else:
-        checks = load_checks(stage, float(torque_nm), float(speed_rpm), root)
     mesh = Mesh(20, 60, None, True, stage.beta_deg).unchecked(Z1, Z2)
     if all(c.costly for c in checks):   # the chain computes the geometry it needs itself
         geo = {"_mesh": mesh, "_m": M, "_z1": Z1, "_z2": Z2, "_x1": X1, "_x2": X2}
@@ -78,6 +97,60 @@ def strength_margins(stage, m, face_width_mm, z1, z2, x1, x2, torque_nm, speed_r
             geo = mesh_geometry(mesh, M, X1, X2, full=False)
     geo["_face_width_mm"] = B           # a width per design (the sizing grid), read by the load checks
     return {c.name: np.asarray(c.margin(geo), dtype=float) for c in checks}
+
+
+def _damage_margins(stage, designs, T, N) -> dict:
+    """The damage checks' margins of the designs, each at its own flow (T, N arrays of the designs' shape): one
+    evaluation per distinct flow (a duty cycle's bins follow the flow; a LoadSpectrum's do not)."""
+    from ..duty_cycle import DutyCycle
+
+    if not isinstance(stage.spectrum, DutyCycle) or (np.all(T == T.flat[0]) and np.all(N == N.flat[0])):
+        return _evaluated(stage, damage_checks(stage, float(T.flat[0]), float(N.flat[0])), *designs)
+    out = {k: np.full(T.shape, np.nan) for k in DAMAGE_CHECKS}
+    flows, inverse = np.unique(np.stack([T.ravel(), N.ravel()]), axis=1, return_inverse=True)
+    inverse = inverse.reshape(T.shape)
+    for j, (t, n) in enumerate(flows.T):
+        sel = inverse == j
+        for k, v in _evaluated(stage, damage_checks(stage, float(t), float(n)), *(a[sel] for a in designs)).items():
+            out[k][sel] = v
+    return out
+
+
+def life_options(options: dict) -> dict:
+    """A stage's strength options as the damage checks and the life take them: without S_Hmin and S_Fmin (the
+    single-load checks' limits; the damage checks' limit is D <= 1, the life's S is computed)."""
+    return {k: v for k, v in options.items() if k not in ("S_Hmin", "S_Fmin")}
+
+
+def check_names(stage) -> tuple:
+    """The load checks a stage is sized by: :data:`STRENGTH_CHECKS` (``single_load``) and, with a spectrum,
+    :data:`DAMAGE_CHECKS`."""
+    return (STRENGTH_CHECKS if stage.single_load else ()) + (DAMAGE_CHECKS if stage.spectrum is not None else ())
+
+
+def damage_checks(stage, torque_nm: float, speed_rpm: float) -> tuple:
+    """The damage checks (ISO 6336-6, :mod:`geardesign.gears.checks.damage`) of a stage with a ``spectrum`` at the
+    nominal ``torque_nm`` (N·m) on its pinion and ``speed_rpm`` (rpm), as the check registry builds them: the
+    stage's spectrum at that load (:meth:`~geardesign.drives.stages.GearStage.spectrum_at`) over its ``life_h``,
+    with its material, strength options, ``sn_curve`` and ``mean_stress_factor``."""
+    from ..duty_cycle import DutyCycle
+
+    relative = isinstance(stage.spectrum, DutyCycle)
+    return _damage_checks(stage.spectrum, stage.material, stage.life_h, _strength_options(stage), stage.sn_curve,
+                          stage.mean_stress_factor, float(torque_nm) if relative else None,
+                          float(speed_rpm) if relative else None)
+
+
+@lru_cache(maxsize=256)
+def _damage_checks(spectrum, material, life_h, options: tuple, sn_curve, mean_stress_factor, torque_nm,
+                   speed_rpm) -> tuple:
+    from ...gears.checks import make_checks   # here: the check registry loads pandas
+
+    spec = spectrum if torque_nm is None else spectrum.at(torque_nm, speed_rpm, life_h)
+    opts = life_options(_thawed(options))
+    built = make_checks(spectrum=spec, material=stage_material(material), strength=opts or None, life_h=life_h,
+                        sn_curve=sn_curve, mean_stress_factor=mean_stress_factor)
+    return tuple(c for c in built if c.name in DAMAGE_CHECKS)
 
 
 def _strength_options(stage) -> tuple:
@@ -167,9 +240,13 @@ def strength_sizes_many(stage, torque_nm: float, speed_rpm: float, pairs, module
     whole grid, the root margins where they decide the candidates (:func:`_root_margins`)."""
     grid, first, same = _grid(stage, np.asarray(modules, dtype=float), pairs)
     load = (stage, torque_nm, speed_rpm, grid)
-    contact = np.take_along_axis(_margins_at(*load, first, root=False)["contact_strength"], same, axis=1)
     order = np.lexsort((grid["b"], grid["m"]), axis=1)
-    margins = {"contact_strength": contact, **_root_margins(load, first, same, contact, order, tol, tries)}
+    if "contact_strength" in check_names(stage):
+        contact = np.take_along_axis(_margins_at(*load, first, root=False)["contact_strength"], same, axis=1)
+        margins = {"contact_strength": contact}
+    else:       # sized by the spectrum alone: no single-load screen, every design is a candidate until checked
+        contact, margins = np.zeros(grid["m"].shape), {}
+    margins.update(_root_margins(load, first, same, contact, order, tol, tries))
     return [_first_size(grid["m"][i], grid["b"][i], {k: v[i] for k, v in margins.items()}, order[i], tol, tries)
             for i in range(len(pairs))]
 
@@ -193,7 +270,7 @@ def _grid(stage, modules: np.ndarray, pairs) -> tuple:
 
 def _margins_at(stage, torque_nm, speed_rpm, grid: dict, pick: np.ndarray, root: bool = True) -> dict:
     """{check: margins} of the designs ``pick`` (pairs × flat grid; NaN elsewhere), in one call."""
-    names = STRENGTH_CHECKS if root else STRENGTH_CHECKS[:1]
+    names = check_names(stage) if root else STRENGTH_CHECKS[:1]
     out = {k: np.full(pick.shape, np.nan) for k in names}
     if pick.any():
         at = {k: v[pick] for k, v in grid.items()}
@@ -205,8 +282,8 @@ def _margins_at(stage, torque_nm, speed_rpm, grid: dict, pick: np.ndarray, root:
 
 
 def _root_margins(load: tuple, first, same, contact: np.ndarray, order: np.ndarray, tol: float, tries: int) -> dict:
-    """The root margins (NaN where not computed) of the designs that decide each pair's sizing (pairs ×
-    flat grid). Round one: each pair's first ``tries`` contact-holding designs in (m, b) order (every
+    """The root margins, and the damage margins of a stage with a spectrum (NaN where not computed), of the designs
+    that decide each pair's sizing (pairs × flat grid). Round one: each pair's first ``tries`` contact-holding designs in (m, b) order (every
     design when none holds contact). A candidate must hold contact, so a pair is settled when ``tries``
     of the designs known hold every check (those known are a leading run of the contact-holding ones in
     that order), or when every contact-holding design is known and one holds. Round two: every design
@@ -219,9 +296,9 @@ def _root_margins(load: tuple, first, same, contact: np.ndarray, order: np.ndarr
         holders = o[ok_c[i, o]]
         want[i, holders[:tries] if holders.size else o] = True
     at = _margins_at(*load, want & first)
-    roots = {k: np.take_along_axis(at[k], same, axis=1) for k in STRENGTH_CHECKS[1:]}
+    roots = {k: np.take_along_axis(at[k], same, axis=1) for k in check_names(load[0]) if k != "contact_strength"}
     known = np.take_along_axis(want & first, same, axis=1)
-    held = (ok_c & (np.minimum(roots["root_strength1"], roots["root_strength2"]) >= -tol)).sum(axis=1)
+    held = (ok_c & (np.minimum.reduce(list(roots.values())) >= -tol)).sum(axis=1)
     unsettled = ((held < tries) & (ok_c & ~known).any(axis=1)) | (held == 0)
     more = unsettled[:, None] & ~known
     if more.any():
@@ -234,7 +311,7 @@ def _root_margins(load: tuple, first, same, contact: np.ndarray, order: np.ndarr
 def _first_size(M: np.ndarray, B: np.ndarray, margins: dict, order: np.ndarray, tol: float, tries: int) -> tuple:
     """(candidates, best) of one pair's flat (m, b) grid, its margins (root NaN where unchecked) and its
     (m, b) order, as :func:`strength_sizes` returns."""
-    worst = np.minimum.reduce([margins[k] for k in STRENGTH_CHECKS])
+    worst = np.minimum.reduce(list(margins.values()))
     worst = np.where(np.isnan(worst), -np.inf, worst)
     ok = worst[order] >= -tol
     first = order[ok][:tries]
