@@ -266,7 +266,10 @@ def test_nrel_stage3_backlash_names_against_the_kisssoft_report():
     # written out here (ISO 21771 involute function), reproduces the printed aControl and jrw
     an = math.radians(20.0)
     at = math.atan(math.tan(an) / math.cos(math.radians(beta)))
-    inv = lambda a: math.tan(a) - a
+
+    def inv(a):
+        return math.tan(a) - a
+
     a_ref = mn * (z1 + z2) / (2 * math.cos(math.radians(beta)))
 
     def zero_backlash_centre(x_sum):
