@@ -5,6 +5,7 @@ import re
 import warnings
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import geardesign as gd
@@ -161,6 +162,33 @@ def test_a_mesh_replaces_the_loose_keywords():
     assert gd.GearPair.from_mesh(8, mesh, 0.3, 0.2) == gd.GearPair(8, 17, 26, 0.3, 0.2, **loose)
     # the engine pair: a_w 181.6016 mm (README, seed 000's 17/26, m = 8, x = 0.898/0.517)
     assert round(gd.pair_geometry(8, x1=0.898, x2=0.517, mesh=gd.Mesh(17, 26)).a_w, 4) == 181.6016
+
+
+def test_pair_strength_takes_a_mesh_too():
+    # issue 36 §4: pair_strength restated the mesh keywords without taking a Mesh; the mesh's face width is the
+    # pair's, and its results are the loose call's bit for bit (spur and helical, one design and arrays)
+    load = gd.Load(torque_nm=200, n_rpm=1000)
+    for beta in (0.0, 12.0):
+        mesh = gd.Mesh(20, 60, beta_deg=beta, face_width_mm=30.0)
+        for m, x1 in ((3.0, 0.3), (np.array([2.5, 3.0]), np.array([0.2, 0.4]))):
+            loose = gd.pair_strength(m, 20, 60, x1, 0.1, load=load, material1="42CrMo4", face_width_mm=30.0,
+                                     beta_deg=beta)
+            meshed = gd.pair_strength(m, x1=x1, x2=0.1, load=load, material1="42CrMo4", mesh=mesh)
+            for k in ("S_H1", "S_H2", "S_F1", "S_F2", "K_Hbeta", "eps_beta" if beta else "eps_alpha"):
+                assert np.array_equal(np.asarray(meshed[k]), np.asarray(loose[k])), k
+
+
+@pytest.mark.parametrize("kw, words", [
+    (dict(mesh=gd.Mesh(20, 60)), "face_width_mm .* is needed"),
+    (dict(z1=20, z2=60), "face_width_mm .* is needed"),
+    (dict(mesh=gd.Mesh(20, 60, face_width_mm=30.0), face_width_mm=30.0), "face_width_mm, not both"),
+    (dict(mesh=gd.Mesh(20, 60, face_width_mm=30.0), beta_deg=10.0), "beta_deg, not both"),
+    (dict(mesh=(20, 60)), "mesh must be a geardesign.Mesh"),
+    (dict(face_width_mm=30.0), "z1 and z2"),
+])
+def test_pair_strength_mesh_refusals_name_the_input(kw, words):
+    with pytest.raises(GearDesignError, match=words):
+        gd.pair_strength(3.0, x1=0.3, x2=0.1, load=gd.Load(torque_nm=200, n_rpm=1000), material1="42CrMo4", **kw)
 
 
 @pytest.mark.parametrize("call, words", [

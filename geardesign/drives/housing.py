@@ -45,7 +45,7 @@ def series_values(series: str) -> np.ndarray:
     >>> series_values("gost2185")[:4].tolist()
     [40.0, 50.0, 63.0, 71.0]
     """
-    from ..catalogs.tables import center_distance_series, preferred_numbers   # here: catalogs load pandas
+    from ..catalogs.tables import center_distance_series, preferred_numbers   # here: the catalog module's import (~20 modules) is needed only for a named series
 
     if series == "gost2185":
         values = center_distance_series((1, 2))

@@ -346,7 +346,7 @@ def _stocked_ball(g, exact, notes: list):
     """The stocked ball (:func:`~geardesign.catalogs.tables.measuring_ball_series`) nearest the exact one that
     can measure the gear: the two sizes on either side of it, nearest first; where none of the four can (or the
     exact size is outside the series), the exact size, with a note."""
-    from ..catalogs.tables import measuring_ball_series   # here: the catalog loads pandas
+    from ..catalogs.tables import measuring_ball_series   # here: the catalog module's import (~20 modules) is needed only for a stocked ball
 
     series = measuring_ball_series()
     i = np.searchsorted(series, exact)

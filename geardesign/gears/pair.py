@@ -251,7 +251,7 @@ class GearPair:
         :func:`geardesign.gears.strength.life_result.service_life` (``life_h`` the required life, ``sn_curve``,
         ``mean_stress_factor``, the options of :func:`~geardesign.gears.strength.pair_strength`); a
         :class:`~geardesign.gears.strength.life_result.LifeResult`."""
-        from .strength.life_result import service_life   # here: the chain loads the materials catalog (pandas)
+        from .strength.life_result import service_life   # here: ~30 modules a pair without a spectrum never needs
         return service_life(self, spectrum, material, **options)
 
     def forces(self, load, circle: str = "operating"):

@@ -241,3 +241,46 @@ def test_ring_pair_backlash_equals_the_free_turn_of_the_generated_gears():
     theta = ring_free_turn(pair, x1e, x2e, a)
     j = backlash_from_shifts(pair.m, 20, 60, x1e, x2e, a, pair.rack, internal=True)
     assert abs(2 * theta * float(pair.geometry().db1) / 2 - j["jbt"]) < 1e-9 * pair.m
+
+
+def _printed(quantity):
+    rows = {r["quantity"]: r for r in csv.DictReader(
+        (Path(__file__).parent.parent / "data" / "backlash_nrel_stage3_kisssoft.csv").open(encoding="utf-8"))}
+    return tuple(float(v) for v in rows[quantity]["value"].split("/"))
+
+
+def test_nrel_stage3_backlash_names_against_the_kisssoft_report():
+    """docs/strength.md maps our backlash names onto a KISSsoft report's (issue 36 §2): checked here on the printed
+    section 6 of the NREL 5 MW stage 3 report (tests/data/iso6336_nrel_stage3_kisssoft.md, "Backlash")."""
+    mn, z1, z2, x1, x2, beta = 14.0, 24, 95, 0.48, 0.6691, 10.0
+    A1, A2, Aa = _printed("A_sn1"), _printed("A_sn2"), _printed("A_a")
+    b = gd.GearPair(mn, z1, z2, x1, x2, beta_deg=beta).backlash(A1, A2, (Aa[1], Aa[0]))
+    # [jtw] is our jt, to the printed digits
+    assert (round(b.jt_max, 3), round(b.jt_min, 3)) == _printed("j_tw")
+    # [jnw] is jtw cos α_n cos β (DIN 3967's normal backlash; the printed jtw's 3 decimals are too few to carry it
+    # to jnw's last digit, so our unrounded jt); our jbn (j_wt cos α'_wt cos β_b) is another quantity
+    cos_n_b = math.cos(math.radians(20)) * math.cos(math.radians(beta))
+    assert (round(b.jt_max * cos_n_b, 3), round(b.jt_min * cos_n_b, 3)) == _printed("j_nw")
+    assert abs(b.jbn_max - _printed("j_nw")[0]) > 0.005
+    # [jrw] is the exact closing of the centre distance: the zero-backlash centre distance of the thinned teeth,
+    # written out here (ISO 21771 involute function), reproduces the printed aControl and jrw
+    an = math.radians(20.0)
+    at = math.atan(math.tan(an) / math.cos(math.radians(beta)))
+
+    def inv(a):
+        return math.tan(a) - a
+
+    a_ref = mn * (z1 + z2) / (2 * math.cos(math.radians(beta)))
+
+    def zero_backlash_centre(x_sum):
+        alpha = brentq(lambda t: inv(t) - inv(at) - 2 * x_sum * math.tan(an) / (z1 + z2), 1e-6, 1.4, xtol=1e-15)
+        return a_ref * math.cos(at) / math.cos(alpha)
+
+    a_w = zero_backlash_centre(x1 + x2)
+    a_control = [zero_backlash_centre(x1 + x2 + (s1 + s2) / (2 * mn * math.tan(an))) for s1, s2 in zip(A1, A2)]
+    assert tuple(round(a, 3) for a in a_control) == _printed("a_control")
+    jr_exact = (a_w + Aa[0] - a_control[1], a_w + Aa[1] - a_control[0])     # largest: thinnest teeth, A_a max
+    assert tuple(round(j, 3) for j in jr_exact) == _printed("j_rw")
+    # our jr is ISO/TR 10064-2's first-order j_wt/(2 tan α'_wt): within 2 µm of the exact one, not equal to it
+    assert b.jr_max == pytest.approx(max(jr_exact), abs=2e-3) and round(b.jr_max, 3) != _printed("j_rw")[0]
+    assert b.jr_min == pytest.approx(min(jr_exact), abs=2e-3)

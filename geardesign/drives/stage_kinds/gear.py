@@ -144,7 +144,6 @@ def _solve_shifts(m, z1, z2, checks_key, beta_deg, face_width_mm, objective, a_w
 
 @lru_cache(maxsize=64)
 def _geometric_checks(checks_key: tuple) -> tuple:
-    from ...gears.checks import resolve_checks   # here: the check registry loads pandas
     return resolve_checks({"jamming": False, **dict(checks_key)})
 
 

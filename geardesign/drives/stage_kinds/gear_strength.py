@@ -45,6 +45,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from ...gears.checks import make_checks
 from ..stages import stage_material
 
 __all__ = ["STRENGTH_CHECKS", "DAMAGE_CHECKS", "check_names", "damage_checks", "life_options", "load_checks", "safety_limits", "WIDTH_TO_DIAMETER_RANGE", "WIDTH_TO_DIAMETER_STEP", "FACE_WIDTH_PITCHES_MIN", "strength_margins",
@@ -188,8 +189,6 @@ def _load_checks(material, life_h, application_factor, options: tuple, checks: t
 
 def _built_checks(options: tuple, material, checks: tuple, load, root: bool) -> tuple:
     """What the check registry adds to a stage's geometric checks for ``load`` (the load case's checks)."""
-    from ...gears.checks import make_checks   # here: the check registry loads pandas
-
     opts = _thawed(options)
     limits = safety_limits(opts)
     if not root:

@@ -21,6 +21,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import one_number, require_range
+from ..geometry import mesh_geometry, mesh_geometry_float
 from ..strength.defaults import FACE_WIDTH_RANGE_MM, MIN_SAFETY_SOURCE, S_FMIN, S_HMIN
 from .base import Check, Option, register, register_context
 
@@ -95,7 +96,6 @@ class StrengthSpec:
         """S_H1, S_H2, S_F1, S_F2 by the vectorised chain at the designs of ``geo`` moved by each (Δx1, Δx2) of
         ``offsets``, in one call: arrays (len(offsets), *shape of the designs)."""
         # here: the chain loads the materials catalog (pandas), which a pair without a load never needs
-        from ..geometry import mesh_geometry
         from ..strength.chain import CHAIN_GEOMETRY_FIELDS, pair_strength
 
         mesh = geo["_mesh"]
@@ -142,8 +142,6 @@ class StrengthSpec:
     def _chain_floats(self, geo: dict, offsets, width, pair_strength, fields) -> dict:
         """:meth:`_chain` of one design on the chain's float path (a design at a time: each ~5x cheaper than a
         small array call); a design outside the chain's range or refused by it gets NaN (a failing margin)."""
-        from ..geometry import mesh_geometry_float
-
         mesh, m = geo["_mesh"], geo["_m"]
         S = {k: np.full((len(offsets), 1), np.nan) for k in _QUANTITIES}
         for j, (a, b) in enumerate(offsets):

@@ -17,7 +17,7 @@ from ...validate import broadcast_inputs, one_number, require_bool
 from ..geometry import (DESIGNS_MAX, mesh_geometry, mesh_geometry_float, pair_geometry, validate_geometry,
                         validate_inputs)
 from ..inputs import plain_inputs_ok
-from ..mesh import Mesh, section_constants
+from ..mesh import Mesh, mesh_of, section_constants
 from ..rack import STANDARD_RACK, BasicRack
 from . import accuracy as acc
 from . import contact as zc
@@ -291,10 +291,10 @@ def _pitting(G, mat, i, n, life_h, nu40, Rz, v, rho_red, softer, life_opts, s0, 
 
 
 @grouped_keywords("options", StrengthOptions, GROUPED)
-def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, face_width_mm, face_width2_mm=None,
-                  beta_deg: float = 0.0, internal: bool = False, rack: BasicRack | None = None,
+def pair_strength(m, z1=None, z2=None, x1=0.0, x2=0.0, *, load: Load, material1, material2=None, face_width_mm=None,
+                  face_width2_mm=None, beta_deg: float = 0.0, internal: bool = False, rack: BasicRack | None = None,
                   tip_shortening: bool = True, root: bool = True, geometry: dict | None = None,
-                  options: StrengthOptions | None = None, fields=None) -> dict:
+                  options: StrengthOptions | None = None, fields=None, mesh: Mesh | None = None) -> dict:
     """ISO 6336 load capacity of gear pairs, vectorised: m (normal module, mm), z1, z2, x1, x2 and the face
     widths broadcast like :func:`~geardesign.gears.geometry.pair_geometry`, whose geometry (operating
     pressure angle, ε_α, diameters) is used as it is. Returns a dict of float arrays: the stresses and safety
@@ -332,7 +332,16 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     ``fields``: names of the result to return (with ``given`` and ``given_unused``), None for all: a large batch
     then keeps only those at full size (10⁷ designs: ~0.6 GB for two fields instead of ~5.7 GB for every one);
     a name the result does not have is refused with the list of those it has.
+    ``mesh``: a :class:`~geardesign.gears.mesh.Mesh` instead of z1, z2, ``rack``, ``tip_shortening``, ``beta_deg``,
+    ``internal`` and ``face_width_mm`` (its face width is the pair's; giving both ways is refused by name).
     """
+    if mesh is not None or z1 is None or z2 is None:
+        mesh = mesh_of(mesh, z1, z2, rack, tip_shortening, beta_deg, internal, face_width_mm)
+        z1, z2, rack, tip_shortening = mesh.z1, mesh.z2, mesh.rack, mesh.tip_shortening
+        beta_deg, internal, face_width_mm = mesh.beta_deg, mesh.internal, mesh.face_width_mm
+    if face_width_mm is None:
+        raise GearDesignError("face_width_mm (mm) is needed for the load capacity: give it, or a mesh= with its "
+                              "face_width_mm")
     if options is None:
         options = DEFAULT_OPTIONS
     elif not isinstance(options, StrengthOptions):

@@ -33,7 +33,7 @@ else:
     sys.exit(main(argv))
 """
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def _interruptible():
