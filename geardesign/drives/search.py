@@ -607,8 +607,9 @@ class Search:
             return feas[0], None, (f"; the {min(self.top, feas.size)} ranked designs each fail with their shafts, "
                                    f"bearings or K_Hβ from the shafts (column shafts)")
         _, rank, c, an, steps = held
-        note = "" if rank == 0 else (f"; rank {rank + 1} taken: ranks 1 to {rank} fail with their shafts, bearings or "
-                                     f"K_Hβ from the shafts, or hold only re-sized to a larger design (column shafts)")
+        before = "rank 1 fails" if rank == 1 else f"ranks 1 to {rank} fail"
+        note = "" if rank == 0 else (f"; rank {rank + 1} taken: {before} with their shafts, bearings or K_Hβ from "
+                                     f"the shafts, or hold only re-sized to a larger design (column shafts)")
         if steps:
             note += (f"; rank {rank + 1} re-sized for the K_Hβ of its shafts: {'; '.join(steps)} (ranked at size "
                      f"{self.ex['size'][c]:.6g} mm², mass {self.ex['mass'][c]:.4g} kg)")

@@ -516,10 +516,10 @@ def test_given_tapered_bearings_are_a_pair(tapered_catalog):
 # ------------------------------------------------------------------- the search re-sizes for the shafts' K_Hβ
 
 def test_search_resizes_a_stage_that_fails_with_its_shafts_k_hbeta():
-    # the input shaft drawn slender (25 mm, 360 mm between its bearings, the pinion 90 mm from A): the search's
+    # the input shaft drawn slender (30 mm, 360 mm between its bearings, the pinion 90 mm from A): the search's
     # first design, sized with ISO 6336-1 eq. (44)'s f_sh, fails its contact strength with the f_sh of its shafts
     # (and only that); the search sizes the stage again and returns a design that holds, as Drive.analyse() finds
-    lay = (DriveShaft(0, [(400.0, 25.0)], (20.0, 380.0), {"g": 110.0, "coupling": 0.0}),)
+    lay = (DriveShaft(0, [(400.0, 30.0)], (20.0, 380.0), {"g": 110.0, "coupling": 0.0}),)
     d = gd.Drive(power_kw=4, n_in_rpm=1450, shafting=Shafting(layout=lay), stages=[
         gd.GearStage(None, material="42CrMo4", name="g", z1_range=(18, 20), ratio_range=(3.2, 3.8))])
     r = d.optimize(total_ratio=3.5, ratio_tol=0.05, top=1)
