@@ -27,7 +27,7 @@ from .blocks import BLOCK, batch_shape, in_blocks
 from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
-from .ops import ArrayOps, FloatOps, checked, once, per_load_case
+from .ops import ArrayOps, FloatOps, MixedOps, checked, once, per_load_case
 from ...renamed import grouped_keywords
 from .options import DEFAULT_OPTIONS, GROUPED, StrengthOptions, blank_option, gathered, shaft_option, transverse_option, validate_options
 from .result import StrengthResult, from_chain, load_case
@@ -372,9 +372,12 @@ def pair_strength(m, z1, z2, x1, x2, *, load: Load, material1, material2=None, f
     G = _Given(factors)
     o.keep = None if fields is None else _field_names(fields)
     if plain and float_geometry:
-        # one design in Python floats: the formulas on math, not numpy (see .ops)
+        # one design in Python floats: the formulas on math, not numpy (see .ops); a load whose torque or speed is an
+        # array (the bins of a spectrum, service_life's) with the design's own factors on math and the bins' on numpy
+        bins = type(load.torque_nm) is np.ndarray or type(load.n_rpm) is np.ndarray
         try:
-            return _only(_finite(_evaluate(_floats(designs), G, o, FloatOps), designs, o, plain=True), o.keep)
+            return _only(_finite(_evaluate(_floats(designs), G, o, MixedOps if bins else FloatOps), designs, o,
+                                 plain=not bins), o.keep)
         except GearDesignError:
             raise
         except (ArithmeticError, ValueError):   # math's domain error where numpy gives NaN: the array path says why
@@ -505,7 +508,7 @@ def _evaluate(designs, G, o, xp, finish=True) -> dict:
     """The chain of :func:`pair_strength` on validated options ``o``, in floats (``xp`` :class:`FloatOps`, one
     design) or arrays; ``finish`` False: its fields as computed, before :func:`_finish`."""
     m, z1, z2, x1, x2, face_width_mm, face_width2_mm = designs
-    plain = xp is FloatOps
+    plain = xp is not ArrayOps        # the design in Python floats (MixedOps: with arrays of load cases)
     beta_deg = float(o.beta_deg) if plain and type(o.beta_deg) is int else o.beta_deg
     g = (_geometry(m, z1, z2, x1, x2, o.rack, beta_deg, o.internal, o.tip_shortening, plain) if o.geometry is None
          else chain_geometry(o.geometry, o.rack, beta_deg, xp))
@@ -534,7 +537,7 @@ def _evaluate(designs, G, o, xp, finish=True) -> dict:
     _permissible(out, *o.S_min)
     if not finish:
         return out
-    return _finish(out, () if plain else np.broadcast_shapes(np.shape(F_t), np.shape(b)), G, o.keep)
+    return _finish(out, () if xp is FloatOps else np.broadcast_shapes(np.shape(F_t), np.shape(b)), G, o.keep)
 
 
 def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:

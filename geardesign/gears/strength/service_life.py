@@ -261,11 +261,12 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
                                sn_curve=sn_curve, mean_stress_factor=mean_stress_factor, **options))
     zz = _teeth(spectrum, z1, z2)      # before the chain: a wrong spectrum costs nothing
     designs = [np.asarray(v, dtype=float) for v in (m, x1, x2)]
-    expand = (lambda v: np.asarray(v, dtype=float)[..., None]) if shape else (lambda v: np.asarray(v, dtype=float))
+    # designs × bins; one design in Python floats, which the chain runs on math with the bins' arrays on numpy
+    expand = (lambda v: np.asarray(v, dtype=float)[..., None]) if shape else float
     geometry = options.pop("geometry", None)
     if geometry is not None and shape:
         geometry = {k: (expand(v) if k not in ("_z1", "_z2") else v) for k, v in geometry.items()}
-    width = face_width_mm if np.ndim(face_width_mm) == 0 else expand(face_width_mm)
+    width = expand(face_width_mm) if shape or type(face_width_mm) is not int else face_width_mm
     # only the fields read below: the chain's other ~90 are left at their own shapes (fields=)
     out = pair_strength(expand(designs[0]), expand(z1) if np.ndim(z1) else z1, expand(z2) if np.ndim(z2) else z2,
                         expand(designs[1]), expand(designs[2]), load=prep.load, material1=mats[0],
