@@ -231,7 +231,8 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     require_choice("sn_curve", sn_curve, SN_CURVES)
     if life_h is not None:
         life_h = one_number("life_h", require_range("life_h", life_h, *LIFE_RANGE_H, lo_open=True, unit="h"))
-    y_m = _mean_stress(mean_stress_factor, spectrum.reverses)
+    prep = _prepared(spectrum)
+    y_m = _mean_stress(mean_stress_factor, prep.reverses)
     if options.get("root", True) is not True:
         raise GearDesignError("pair_life rates pitting and root together: root=False is not an option here")
     mats = (_material(material1, "material1"), _material(material1 if material2 is None else material2, "material2"))
@@ -240,16 +241,14 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     if group is not None:
         life_opts = (group.pitting_permitted, group.optimum_life)
     cpr = options.get("cycles_per_rev", (1, 1)) if group is None else group.cycles_per_rev
-    prep = _prepared(spectrum)
     loaded = prep.loaded                       # a bin of no torque does no damage
     if loaded.size == 0:
         raise GearDesignError("the spectrum has no bin with a torque: nothing to rate")
     # the designs' numbers by name before their shapes are read (a dict or a ragged list has none);
     # pair_strength checks their ranges
-    shapes = {k: require_finite(k, v).shape for k, v in dict(m=m, z1=z1, z2=z2, x1=x1, x2=x2,
-                                                              face_width_mm=face_width_mm).items()}
+    shapes = {k: _shape(k, v) for k, v in dict(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=face_width_mm).items()}
     try:
-        shape = np.broadcast_shapes(*shapes.values())
+        shape = () if not any(shapes.values()) else np.broadcast_shapes(*shapes.values())
     except ValueError:
         raise GearDesignError("input shapes do not broadcast together: "
                               + ", ".join(f"{k} {s}" for k, s in shapes.items())) from None
@@ -275,51 +274,60 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     nb = loaded.size
     full = shape + (nb,)
     scale = 1.0 if life_h is None else life_h / spectrum.duration_h
-    n = {g: prep.cycles(spectrum, g, zz, cpr[g - 1]) * scale for g in (1, 2)}
+    n = prep.cycles(spectrum, zz, cpr) * scale          # rows: the modes' gears (1, 2, 1, 2)
     required = spectrum.duration_h if life_h is None else life_h
     res = {"required_life_h": required}
-    curves, ratio, Ns = {}, {}, {}
-    for mode in MODES:
+    curves = {mode: _curve(mode[0], mats[int(mode[1]) - 1].kind, life_opts) for mode in MODES}
+    # rows: the modes; the stress over its limit with life factor 1 (a reversing tooth's root limit times Y_M)
+    ratio = np.empty((len(MODES),) + full)
+    for r, mode in enumerate(MODES):
         g = int(mode[1])
-        sig, ref = (np.asarray(out[k], dtype=float) for k in _CHAIN[mode])
+        sig, ref = (out[k] for k in _CHAIN[mode])
         if mode[0] == "F" and prep.reversing_any[g]:
             ref = ref * np.where(prep.reversing[g], y_m[g - 1], 1.0)
-        curves[mode] = _curve(mode[0], mats[g - 1].kind, life_opts)
-        ratio[mode] = np.broadcast_to(sig / ref, full)
+        np.divide(sig, ref, out=ratio[r])
     # N of the modes that share an S-N curve (both gears of one material) in one call
+    N = np.empty_like(ratio)
     for pts in dict.fromkeys(curves.values()):
-        same = [mode for mode in MODES if curves[mode] == pts]
-        N = cycles_to_failure(ratio[same[0]] if len(same) == 1 else np.stack([ratio[k] for k in same]), pts,
-                              sn_curve)
-        Ns.update(zip(same, [N] if len(same) == 1 else N))
-    static = False
-    for mode in MODES:
-        g = int(mode[1])
-        N = Ns[mode]
-        static = static | np.any(ratio[mode] > curves[mode][0][1], axis=-1)
-        d = n[g] / N
-        D = _grouped_max(d, prep.groups[g]) if prep.grouped[g] else np.sum(d, axis=-1)
-        res["D_" + mode] = D
-        if shape:
-            with np.errstate(divide="ignore"):
-                res["life_h_" + mode] = np.where(D > 0, required / D, np.inf)
-        else:
-            D = res["D_" + mode] = float(D)
-            res["life_h_" + mode] = required / D if D > 0 else math.inf
-        if bins:
-            res["N_" + mode] = N
-    res["static_exceeded"] = static
-    if not shape:
-        S = _safeties(tuple(curves[m] for m in MODES), sn_curve, np.log(np.stack([ratio[m] for m in MODES])),
-                      np.stack([n[int(m[1])] for m in MODES]), [prep.groups[int(m[1])] for m in MODES],
+        rows = [r for r, mode in enumerate(MODES) if curves[mode] == pts]
+        sel = slice(rows[0], rows[-1] + 1) if rows == list(range(rows[0], rows[-1] + 1)) else rows
+        N[sel] = cycles_to_failure(ratio[sel], pts, sn_curve)
+    static_level = np.array([curves[m][0][1] for m in MODES]).reshape((-1,) + (1,) * len(full))
+    static = np.any(ratio > static_level, axis=-1).any(axis=0)
+    d = n.reshape((len(MODES),) + (1,) * len(shape) + (nb,)) / N
+    D = np.sum(d, axis=-1)
+    for r, mode in enumerate(MODES):
+        if prep.grouped[int(mode[1])]:
+            D[r] = _grouped_max(d[r], prep.groups[int(mode[1])])
+    if shape:
+        with np.errstate(divide="ignore"):
+            life = np.where(D > 0, required / D, np.inf)
+        res.update(zip(("D_" + m for m in MODES), D))
+        res.update(zip(("life_h_" + m for m in MODES), life))
+        res["static_exceeded"] = static
+    else:
+        D = D.tolist()
+        res.update(zip(("D_" + m for m in MODES), D))
+        res.update(("life_h_" + m, required / v if v > 0 else math.inf) for m, v in zip(MODES, D))
+        S = _safeties(tuple(curves.values()), sn_curve, np.log(ratio), n, [prep.groups[int(m[1])] for m in MODES],
                       [prep.grouped[int(m[1])] for m in MODES])
         res.update(zip(("S_" + m for m in MODES), S.tolist()))
         res["static_exceeded"] = float(static)     # (a number, as D and the life)
     if bins:
+        res.update(("N_" + m, N[r]) for r, m in enumerate(MODES))
         res.update({"bin_" + k: np.broadcast_to(np.asarray(out[k], dtype=float), full) for k in _FIELDS})
-        res.update(bin_index=loaded, n1=n[1], n2=n[2], bin_reversing1=prep.reversing[1],
-                   bin_reversing2=prep.reversing[2], curves=curves, ratio=ratio, mean_stress_factor=y_m)
+        res.update(bin_index=loaded, n1=n[0], n2=n[1], bin_reversing1=prep.reversing[1],
+                   bin_reversing2=prep.reversing[2], curves=curves, ratio=dict(zip(MODES, ratio)),
+                   mean_stress_factor=y_m)
     return res
+
+
+def _shape(name: str, value) -> tuple:
+    """The shape of a design's number, refused by name when not finite (:func:`require_finite`; a float without
+    numpy)."""
+    if isinstance(value, float) and math.isfinite(value):
+        return ()
+    return require_finite(name, value).shape
 
 
 @functools.lru_cache(maxsize=256)
@@ -343,16 +351,19 @@ class _Prepared:
         self.reversing = {g: (_reversing_teeth(spectrum, self.loaded, g, sign) if self.loaded.size
                               else np.zeros(0, dtype=bool)) for g in (1, 2)}
         self.reversing_any = {g: bool(v.any()) for g, v in self.reversing.items()}
+        self.reverses = spectrum.reverses
         for v in (self.loaded, sign, *self.groups.values(), *self.reversing.values()) + (
                 (self.load.torque_nm, self.load.n_rpm) if self.load else ()):
             v.setflags(write=False)
         self._cycles = {}
 
-    def cycles(self, spectrum: LoadSpectrum, gear: int, teeth: tuple, cycles_per_rev) -> np.ndarray:
-        """:meth:`LoadSpectrum.cycles` of the loaded bins (read-only)."""
-        key = (gear, teeth, cycles_per_rev)
+    def cycles(self, spectrum: LoadSpectrum, teeth: tuple, cycles_per_rev) -> np.ndarray:
+        """:meth:`LoadSpectrum.cycles` of the loaded bins for the gear of each of :data:`MODES` (rows × bins,
+        read-only)."""
+        key = (teeth, tuple(cycles_per_rev))
         if key not in self._cycles:
-            v = spectrum.cycles(gear, teeth, cycles_per_rev)[self.loaded]
+            v = np.stack([spectrum.cycles(int(mode[1]), teeth, cycles_per_rev[int(mode[1]) - 1])[self.loaded]
+                          for mode in MODES])
             v.setflags(write=False)
             self._cycles[key] = v
         return self._cycles[key]
