@@ -535,6 +535,10 @@ def _groups(spectrum: LoadSpectrum, loaded, gear: int, sign) -> np.ndarray:
 def _teeth(spectrum: LoadSpectrum, z1, z2) -> tuple:
     """The one pair of tooth counts (z1, z2) of the designs, which the spectrum's cycles depend on (the ratio) and,
     counted per tooth, its bins (the teeth they were counted for)."""
+    if type(z1) is int and type(z2) is int:          # one pair in plain numbers (the spectrum checks their range)
+        zz = (z1, z2)
+        require_teeth_of(spectrum, zz)
+        return zz
     if np.size(z1) == 0 or np.size(z2) == 0:
         raise GearDesignError(f"z1 and z2 must each give a tooth count, got {np.size(z1)} and {np.size(z2)} values")
     zz = (int(np.max(z1)), int(np.max(z2)))
