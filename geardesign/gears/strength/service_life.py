@@ -118,16 +118,31 @@ def cycles_to_failure(ratio, points, sn_curve: str = "iso"):
     >>> round(float(cycles_to_failure(1.6 ** 0.5, pts)) / 1e6, 4)    # halfway in log-log: √(1e5·5e7)
     2.2361
     """
-    x, y, tail = _variant(points, sn_curve)
+    x, y, tail, slopes = _segments(points, sn_curve)
     yr = np.log(np.asarray(ratio, dtype=float))
-    j = np.searchsorted(-y, -yr, side="right") - 1        # the last point with f_j >= ratio
+    # the last point with f_j >= ratio: j = (points not below the ratio) - 1, counted as the points the ratio does
+    # not exceed (a NaN exceeds none: j = last, as numpy's sort puts NaN last); a comparison per point costs a
+    # tenth of a binary search per ratio over three or four points
     last = len(x) - 1
-    jj = np.clip(j, 0, last - 1)
-    slope = (x[jj + 1] - x[jj]) / (y[jj + 1] - y[jj])     # d ln N / d ln f of the segment (finite: f falls there)
-    inside = x[jj] + (yr - y[jj]) * slope
+    j = last - (yr > y[0]).astype(np.intp)
+    for y_p in y[1:]:
+        j -= yr > y_p
+    jj = np.minimum(np.maximum(j, 0), last - 1)
+    inside = x[jj] + (yr - y[jj]) * slopes[jj]
     beyond = np.inf if tail is None else x[last] + tail * (y[last] - yr)
     with np.errstate(over="ignore"):
         return np.exp(np.where(j >= last, beyond, inside))
+
+
+@functools.lru_cache(maxsize=256)
+def _segments(points, sn_curve: str):
+    """:func:`_variant`'s (log N, log f) and tail, with each segment's slope d ln N/d ln f between point j and j + 1
+    (at j; a flat segment's, where no ratio falls, infinite): once per curve (read-only arrays)."""
+    x, y, tail = _variant(points, sn_curve)
+    with np.errstate(divide="ignore"):
+        slopes = (x[1:] - x[:-1]) / (y[1:] - y[:-1])
+    slopes.setflags(write=False)
+    return x, y, tail, slopes
 
 
 def miner_damage(cycles, N):
