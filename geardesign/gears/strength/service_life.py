@@ -340,7 +340,7 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
 def _shape(name: str, value) -> tuple:
     """The shape of a design's number, refused by name when not finite (:func:`require_finite`; a float without
     numpy)."""
-    if isinstance(value, float) and math.isfinite(value):
+    if isinstance(value, float) and math.isfinite(value) or type(value) is int and -1e308 < value < 1e308:
         return ()
     return require_finite(name, value).shape
 
@@ -418,7 +418,7 @@ def _padded_curves(points: tuple, sn_curve: str) -> tuple:
     """What :func:`_safeties` reads of the rows' S-N curves (the life-factor ``points`` of each row), once per set
     of curves: :func:`_padded`'s X, Y and tails, each segment's slope d ln N/d ln f, the last point (ln N of a
     horizontal row's end: +inf, so that its tail line gives N = inf), the tail exponents (0: horizontal) and the
-    segment of a count of points at or above a stress (read-only arrays)."""
+    segment of a count of points at or above a stress, and the row numbers as a column (read-only arrays)."""
     X, Y, tails = _padded([_variant(p, sn_curve) for p in points])
     R, P = X.shape
     horizontal = np.isnan(tails)
@@ -429,8 +429,9 @@ def _padded_curves(points: tuple, sn_curve: str) -> tuple:
     tail = np.where(horizontal, 0.0, tails)[:, None]
     # a stress below c of a row's P points lies on segment c - 1 (the first for c = 0, the last for c = P):
     # its index in the rows' flattened points
-    segment = np.clip(np.arange(P + 1) - 1, 0, P - 2) + P * np.arange(R)[:, None]
-    out = (X.ravel(), Y, seg.ravel(), last_x, Y[:, -1:], tail, horizontal, segment)
+    rows = np.arange(R)[:, None]
+    segment = np.clip(np.arange(P + 1) - 1, 0, P - 2) + P * rows
+    out = (X.ravel(), Y, seg.ravel(), last_x, Y[:, -1:], tail, horizontal, segment, rows)
     for v in out:
         v.setflags(write=False)
     return out
@@ -443,10 +444,9 @@ def _safeties(points, sn_curve, lr, n, groups, grouped, tol: float = 1e-10, lo: 
     S-N curve of the life-factor ``points`` of each row (``sn_curve``). Newton on ln D over ln S for every row at
     once, kept inside each row's bracket by bisection; :func:`safety_for_damage` of one row. The sums over the
     bins in numpy, the steps of the four rows in Python floats (ln D from numpy, the arithmetic IEEE's in both)."""
-    Xf, Y, seg, last_x, last_y, tail, horizontal, segment = _padded_curves(tuple(points), sn_curve)
+    Xf, Y, seg, last_x, last_y, tail, horizontal, segment, rows = _padded_curves(points, sn_curve)
     R, P = Y.shape
     Yf = Y.ravel()
-    rows = np.arange(R)[:, None]
     loaded = n > 0
     every = bool(loaded.all())
     grouped_rows = [r for r in range(R) if grouped[r]]
@@ -476,7 +476,7 @@ def _safeties(points, sn_curve, lr, n, groups, grouped, tol: float = 1e-10, lo: 
     seen_a, seen_b = [False] * R, [False] * R
     # start at S = 1, or where the largest stress reaches a horizontal curve's end (no damage below it)
     s0 = np.where(horizontal, np.maximum(0.0, last_y[:, 0] - lr.max(axis=1) + 1e-9), 0.0)
-    s = np.clip(s0, la, lb).tolist()
+    s = np.minimum(np.maximum(s0, la), lb).tolist()
     done = [False] * R
     found = {}                   # row -> (ln S, None) or (None, S at an end of [lo, hi])
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
