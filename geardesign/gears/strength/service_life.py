@@ -377,6 +377,8 @@ class _Prepared:
         read-only)."""
         key = (teeth, tuple(cycles_per_rev))
         if key not in self._cycles:
+            if len(self._cycles) >= 256:       # a tooth search's many pairs: kept bounded
+                self._cycles.clear()
             v = np.stack([spectrum.cycles(int(mode[1]), teeth, cycles_per_rev[int(mode[1]) - 1])[self.loaded]
                           for mode in MODES])
             v.setflags(write=False)
