@@ -82,7 +82,7 @@ class LoadSpectrum:
         if any(v is not None for v in teeth):
             if any(v is None for v in teeth):
                 raise GearDesignError("tooth1, tooth2 and meshes go together (a spectrum counted per tooth)")
-            t1, t2 = (np.asarray(v).ravel() for v in teeth[:2])
+            t1, t2 = (np.array(v).ravel() for v in teeth[:2])     # copies: made read-only below, as the rest
             if t1.shape != t.shape or t2.shape != t.shape or not (np.issubdtype(t1.dtype, np.integer)
                                                                    and np.issubdtype(t2.dtype, np.integer)):
                 raise GearDesignError(f"tooth1 and tooth2 must be whole numbers, one per bin ({t.size})")
@@ -95,6 +95,8 @@ class LoadSpectrum:
             if t1.min() < 0 or t2.min() < 0 or t1.max() >= z[0] or t2.max() >= z[1]:
                 raise GearDesignError(f"tooth1 and tooth2 must be in [0, z) of teeth={z}")
             for name, v in (("tooth1", t1), ("tooth2", t2), ("meshes", m), ("teeth", z)):
+                if name != "teeth":
+                    v.setflags(write=False)
                 object.__setattr__(self, name, v)
         for name, v in (("torque_nm", t), ("n_rpm", n), ("time_h", h)):
             v.setflags(write=False)

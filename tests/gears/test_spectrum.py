@@ -278,3 +278,16 @@ def test_a_spectrum_that_is_no_text_file_is_refused_by_name(tmp_path):
         fh.write(b"1,1\n")
     with pytest.raises(GearDesignError, match="is larger than 16 MiB"):
         LoadSpectrum.from_csv(big, n_rpm=1000)
+
+
+def test_a_spectrums_arrays_are_read_only_copies():
+    """A spectrum is frozen (pair_life keeps what it derives from one, per spectrum): its arrays, the teeth of a
+    spectrum counted per tooth too, cannot be written, and writing the caller's arrays does not change them."""
+    teeth = np.array([0, 1, 2])
+    s = LoadSpectrum(np.array([100.0, 50.0, 80.0]), 1000.0, np.array([1.0, 2.0, 3.0]), tooth1=teeth,
+                     tooth2=np.array([0, 1, 3]), meshes=np.array([1.0, 1.0, 1.0]), teeth=(3, 4))
+    for name in ("torque_nm", "n_rpm", "time_h", "tooth1", "tooth2", "meshes"):
+        with pytest.raises(ValueError):
+            getattr(s, name)[0] = 7
+    teeth[0] = 2
+    assert s.tooth1.tolist() == [0, 1, 2]

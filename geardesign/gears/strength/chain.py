@@ -27,7 +27,7 @@ from .blocks import BLOCK, batch_shape, in_blocks
 from .life import contact_life_factor, load_cycles
 from .load import Load
 from .materials import Material, material as material_by_name
-from .ops import ArrayOps, FloatOps, checked, once, per_load_case
+from .ops import ArrayOps, FloatOps, MixedOps, checked, once, per_load_case
 from ...renamed import grouped_keywords
 from .options import DEFAULT_OPTIONS, GROUPED, StrengthOptions, blank_option, gathered, shaft_option, transverse_option, validate_options
 from .result import StrengthResult, from_chain, load_case
@@ -381,9 +381,12 @@ def pair_strength(m, z1=None, z2=None, x1=0.0, x2=0.0, *, load: Load, material1,
     G = _Given(factors)
     o.keep = None if fields is None else _field_names(fields)
     if plain and float_geometry:
-        # one design in Python floats: the formulas on math, not numpy (see .ops)
+        # one design in Python floats: the formulas on math, not numpy (see .ops); a load whose torque or speed is an
+        # array (the bins of a spectrum, service_life's) with the design's own factors on math and the bins' on numpy
+        bins = type(load.torque_nm) is np.ndarray or type(load.n_rpm) is np.ndarray
         try:
-            return _only(_finite(_evaluate(_floats(designs), G, o, FloatOps), designs, o, plain=True), o.keep)
+            return _only(_finite(_evaluate(_floats(designs), G, o, MixedOps if bins else FloatOps), designs, o,
+                                 plain=not bins), o.keep)
         except GearDesignError:
             raise
         except (ArithmeticError, ValueError):   # math's domain error where numpy gives NaN: the array path says why
@@ -424,16 +427,16 @@ def _finite(out: dict, designs, o, plain=False) -> dict:
     design in numbers, whose sum is finite when each is (a NaN or an infinity carries into it)."""
     if not o.refuse or plain and math.isfinite(sum(_PLAIN_STRESSES[o.root](out))):
         return out
-    bad = np.zeros(np.shape(out["S_H1"]), dtype=bool)
-    for k in STRENGTH_FIELDS:
-        if k in out:
-            bad |= ~np.isfinite(np.asarray(out[k], dtype=float))
+    # the fields as the chain left them where fields= was given (see _finish): a pair-wide one at its own shape
+    stresses = [np.asarray(out[k], dtype=float) for k in STRENGTH_FIELDS if k in out]
+    bad = np.zeros(np.broadcast_shapes(*(v.shape for v in stresses)), dtype=bool)
+    for v in stresses:
+        bad |= ~np.isfinite(v)
     if not bad.any():
         return out
     at = tuple(np.argwhere(bad)[0]) if bad.ndim else ()
-    factor = next((k for k in _DOMAIN_FACTORS if k in out and not np.all(np.isfinite(np.asarray(out[k])[at]
-                                                                                     if np.ndim(out[k]) else out[k]))),
-                  "a stress")
+    factor = next((k for k in _DOMAIN_FACTORS if k in out and not np.all(np.isfinite(
+        np.broadcast_to(np.asarray(out[k]), bad.shape)[at] if np.ndim(out[k]) else out[k]))), "a stress")
     values = ", ".join(f"{n}={np.asarray(v, dtype=float)[at] if np.ndim(v) else v}"
                        for n, v in zip(("m", "z1", "z2", "x1", "x2"), designs[:5]))
     raise GearDesignError(f"no ISO 6336 result for the design {values}: {factor} is not finite there (outside its "
@@ -514,7 +517,7 @@ def _evaluate(designs, G, o, xp, finish=True) -> dict:
     """The chain of :func:`pair_strength` on validated options ``o``, in floats (``xp`` :class:`FloatOps`, one
     design) or arrays; ``finish`` False: its fields as computed, before :func:`_finish`."""
     m, z1, z2, x1, x2, face_width_mm, face_width2_mm = designs
-    plain = xp is FloatOps
+    plain = xp is not ArrayOps        # the design in Python floats (MixedOps: with arrays of load cases)
     beta_deg = float(o.beta_deg) if plain and type(o.beta_deg) is int else o.beta_deg
     g = (_geometry(m, z1, z2, x1, x2, o.rack, beta_deg, o.internal, o.tip_shortening, plain) if o.geometry is None
          else chain_geometry(o.geometry, o.rack, beta_deg, xp))
@@ -543,7 +546,7 @@ def _evaluate(designs, G, o, xp, finish=True) -> dict:
     _permissible(out, *o.S_min)
     if not finish:
         return out
-    return _finish(out, () if plain else np.broadcast_shapes(np.shape(F_t), np.shape(b)), G)
+    return _finish(out, () if xp is FloatOps else np.broadcast_shapes(np.shape(F_t), np.shape(b)), G, o.keep)
 
 
 def _kinematics(load, g, b, m, beta_deg, K_gamma) -> dict:
@@ -575,13 +578,14 @@ def _permissible(out, S_Hmin, S_Fmin) -> dict:
     return out
 
 
-def _finish(out, shape, G) -> dict:
-    """Every field at the designs' shape, and the names of the given factors."""
+def _finish(out, shape, G, keep=None) -> dict:
+    """Every field at the designs' shape (``keep``: only those, the rest dropped by :func:`_only` after
+    :func:`_finite`, which reads them as they are), and the names of the given factors."""
     if shape:
         # the pair-wide fields at the designs' shape: read-only views of a large batch, copies of a small one
         # (np.full costs a quarter of np.broadcast_to there)
         small = math.prod(shape) <= _SMALL
-        for k, val in out.items():
+        for k, val in (out.items() if keep is None else [(k, out[k]) for k in keep if k in out]):
             if isinstance(val, np.ndarray) and val.shape != shape:
                 out[k] = np.full(shape, val) if small and val.ndim == 0 else np.broadcast_to(val, shape)
             elif isinstance(val, float):

@@ -43,7 +43,7 @@ class LifeResult(Result):
     mean_stress_factor: tuple = (1.0, 1.0)
     notes: tuple = ()
     title: str = ""
-    _bins: object = field(default=None, repr=False, compare=False)
+    _bins: object = field(default=None, repr=False, compare=False)   # the per-bin DataFrame, or what builds it
     _curves: dict = field(default=None, repr=False, compare=False)
     _success_field = "ok"
     _table_fields = ("bins",)
@@ -69,7 +69,13 @@ class LifeResult(Result):
         """Per loaded bin: torque_nm (signed), n_rpm, time_h, n1, n2 (load cycles of a tooth of each gear over the
         required life), K_v, K_Hbeta, K_Halpha, K_Fbeta, K_Falpha, sigma_H1, sigma_H2, sigma_F1, sigma_F2 (MPa),
         N_H1 … N_F2 (cycles endured at the bin's stress) and D_H1 … D_F2 (the bin's n/N)."""
-        return self._bins.copy()
+        return self._table().copy()
+
+    def _table(self):
+        """The per-bin DataFrame, built on first use (see :class:`_BinTable`) and kept."""
+        if callable(self._bins):
+            object.__setattr__(self, "_bins", self._bins())
+        return self._bins
 
     def damage_table(self):
         """One row per gear and mode: ``mode`` (pitting or root), ``gear``, Miner's sum ``D`` over the required
@@ -84,7 +90,7 @@ class LifeResult(Result):
         from ...results import plain
 
         out = super().to_dict()
-        out.update(ok=self.ok, governing=self.governing[0], bins=plain(self._bins))
+        out.update(ok=self.ok, governing=self.governing[0], bins=plain(self._table()))
         return out
 
     def __repr__(self) -> str:
@@ -97,7 +103,7 @@ class LifeResult(Result):
     def _repr_html_(self) -> str:
         import html
 
-        return f"<pre>{html.escape(repr(self))}</pre>" + frame_html(self._bins)
+        return f"<pre>{html.escape(repr(self))}</pre>" + frame_html(self._table())
 
     def plot(self, path=None, overwrite: bool = False):
         """The S-N diagram of each gear and mode with the spectrum on it (stress against the cumulative cycles of
@@ -155,7 +161,7 @@ class LifeResult(Result):
         every tooth)."""
         from .service_life import cycles_to_failure
 
-        b = self._bins
+        b = self._table()
         g = int(mode[1])
         if f"tooth{g}" not in b.columns:
             return b, ""
@@ -218,23 +224,37 @@ def service_life(pair, spectrum, material=None, *, material2=None, face_width_mm
     return _result(out, spectrum, sn_curve, title=f"{pair.z1}/{pair.z2} m={pair.m:g}")
 
 
-def _result(out: dict, spectrum, sn_curve, title) -> LifeResult:
-    import pandas as pd
+class _BinTable:
+    """The per-bin DataFrame of a :class:`LifeResult`, built when first read (a result the solvers, scenes and
+    commands only rank or print needs no pandas frame): the chain's per-bin arrays and the spectrum it came from."""
 
-    i = out["bin_index"]
-    cols = {"torque_nm": spectrum.torque_nm[i], "n_rpm": spectrum.n_rpm[i], "time_h": spectrum.time_h[i]}
-    if spectrum.per_tooth:
-        cols.update(tooth1=spectrum.tooth1[i], tooth2=spectrum.tooth2[i])
-    cols.update(n1=out["n1"], n2=out["n2"])
-    for k in ("K_v", "K_Hbeta", "K_Halpha", "K_Fbeta", "K_Falpha", "sigma_H1", "sigma_H2", "sigma_F1", "sigma_F2"):
-        cols[k] = out["bin_" + k]
-    for m in MODES:
-        cols["sigma_ref_" + m] = out["bin_" + ("sigma_HG" if m[0] == "H" else "sigma_FG") + m[1]] * (
-            1.0 if m[0] == "H" else np.where(out[f"bin_reversing{m[1]}"], out["mean_stress_factor"][int(m[1]) - 1], 1.0))
-    for m in MODES:
-        cols["N_" + m] = out["N_" + m]
-        with np.errstate(invalid="ignore"):
-            cols["D_" + m] = np.where(out[f"n{m[1]}"] > 0, out[f"n{m[1]}"] / out["N_" + m], 0.0)
+    def __init__(self, out: dict, spectrum):
+        self.out, self.spectrum = out, spectrum
+
+    def __call__(self):
+        import pandas as pd
+
+        out, spectrum = self.out, self.spectrum
+        i = out["bin_index"]
+        cols = {"torque_nm": spectrum.torque_nm[i], "n_rpm": spectrum.n_rpm[i], "time_h": spectrum.time_h[i]}
+        if spectrum.per_tooth:
+            cols.update(tooth1=spectrum.tooth1[i], tooth2=spectrum.tooth2[i])
+        cols.update(n1=out["n1"], n2=out["n2"])
+        for k in ("K_v", "K_Hbeta", "K_Halpha", "K_Fbeta", "K_Falpha", "sigma_H1", "sigma_H2", "sigma_F1",
+                  "sigma_F2"):
+            cols[k] = out["bin_" + k]
+        for m in MODES:
+            cols["sigma_ref_" + m] = out["bin_" + ("sigma_HG" if m[0] == "H" else "sigma_FG") + m[1]] * (
+                1.0 if m[0] == "H" else np.where(out[f"bin_reversing{m[1]}"], out["mean_stress_factor"][int(m[1]) - 1],
+                                                 1.0))
+        for m in MODES:
+            cols["N_" + m] = out["N_" + m]
+            with np.errstate(invalid="ignore"):
+                cols["D_" + m] = np.where(out[f"n{m[1]}"] > 0, out[f"n{m[1]}"] / out["N_" + m], 0.0)
+        return pd.DataFrame(cols)
+
+
+def _result(out: dict, spectrum, sn_curve, title) -> LifeResult:
     notes = []
     if out["static_exceeded"]:
         notes.append("a bin's stress exceeds the S-N curve's static level: its first line was continued upward "
@@ -244,4 +264,4 @@ def _result(out: dict, spectrum, sn_curve, title) -> LifeResult:
     return LifeResult(**{k: float(out[k]) for k in (*(f"{q}_{m}" for q in ("D", "life_h", "S") for m in MODES),
                                                     "required_life_h")},
                       sn_curve=sn_curve, mean_stress_factor=tuple(out["mean_stress_factor"]), notes=tuple(notes),
-                      title=title, _bins=pd.DataFrame(cols), _curves=out["curves"])
+                      title=title, _bins=_BinTable(out, spectrum), _curves=out["curves"])

@@ -12,7 +12,7 @@ import numpy as np
 
 from ...validate import require_range
 
-__all__ = ["FloatOps", "ArrayOps", "ops_of", "checked", "once", "per_load_case"]
+__all__ = ["FloatOps", "ArrayOps", "MixedOps", "ops_of", "checked", "once", "per_load_case"]
 
 
 def _any(a):
@@ -79,6 +79,54 @@ class FloatOps:
     @staticmethod
     def like(a, v):
         return v
+
+
+def _mixed(f_float, f_array):
+    """One argument: ``f_float`` of a Python float, ``f_array`` of anything else."""
+    return staticmethod(lambda v: f_float(v) if type(v) is float else f_array(v))
+
+
+def _mixed2(f_float, f_array):
+    """Two arguments: ``f_float`` of two Python floats, ``f_array`` where either is anything else."""
+    return staticmethod(lambda a, b: f_float(a, b) if type(a) is float and type(b) is float else f_array(a, b))
+
+
+class MixedOps:
+    """One design in Python floats carrying arrays of load cases (the bins of a load spectrum, whose torque and speed
+    are arrays): each operation on :mod:`math` where its operands are Python floats (the design's geometry and the
+    factors of the pair alone), on numpy where one is an array (the load-dependent factors and stresses). A
+    formula called from the chain picks its own with :func:`ops_of`, by the same rule."""
+    sin, cos, tan, sqrt = _mixed(math.sin, np.sin), _mixed(math.cos, np.cos), _mixed(math.tan, np.tan), \
+        _mixed(math.sqrt, np.sqrt)
+    cbrt, arccos, exp, log = _mixed(math.cbrt, np.cbrt), _mixed(math.acos, np.arccos), _mixed(math.exp, np.exp), \
+        _mixed(math.log, np.log)
+    exp2 = _mixed(lambda v: 2.0 ** v, np.exp2)
+    radians, degrees, abs = _mixed(math.radians, np.radians), _mixed(math.degrees, np.degrees), _mixed(abs, np.abs)
+    maximum, minimum = _mixed2(max, np.maximum), _mixed2(min, np.minimum)
+    any = staticmethod(lambda a: bool(a) if type(a) is bool else _any(a))
+    all = staticmethod(lambda a: bool(a) if type(a) is bool else _all(a))
+    errstate = np.errstate          # the arrays' warnings (math raises instead)
+
+    @staticmethod
+    def where(cond, a, b):
+        return (a if cond else b) if type(cond) is bool else np.where(cond, a, b)
+
+    @staticmethod
+    def clip(v, lo, hi):
+        return min(max(v, lo), hi) if type(v) is float and type(lo) is float and type(hi) is float else \
+            _clip(v, lo, hi)
+
+    @staticmethod
+    def interp(x, xs, ys):
+        return _interp(x, xs, ys) if type(x) is float else np.interp(x, xs, ys)
+
+    @staticmethod
+    def asarray(v):
+        return float(v) if type(v) is float or type(v) is int else np.asarray(v, dtype=float)
+
+    @staticmethod
+    def like(a, v):
+        return v if type(a) is float else np.full(np.shape(a), v)
 
 
 def ops_of(*values):

@@ -28,6 +28,8 @@ from __future__ import annotations
 
 import functools
 import math
+import weakref
+
 import numpy as np
 
 from ...errors import GearDesignError
@@ -47,6 +49,7 @@ _CHAIN = {"H1": ("sigma_H1", "sigma_HG1"), "H2": ("sigma_H2", "sigma_HG2"),
           "F1": ("sigma_F1", "sigma_FG1"), "F2": ("sigma_F2", "sigma_FG2")}
 _FIELDS = ("sigma_H1", "sigma_H2", "sigma_HG1", "sigma_HG2", "sigma_F1", "sigma_F2", "sigma_FG1", "sigma_FG2",
            "K_v", "K_Hbeta", "K_Halpha", "K_Fbeta", "K_Falpha")
+_STRESS_FIELDS = _FIELDS[:8]                # what the damage sums read of the chain
 
 
 def life_curve(mode: str, kind: str, pitting_permitted: bool = False, optimum: bool = False) -> tuple:
@@ -115,16 +118,31 @@ def cycles_to_failure(ratio, points, sn_curve: str = "iso"):
     >>> round(float(cycles_to_failure(1.6 ** 0.5, pts)) / 1e6, 4)    # halfway in log-log: √(1e5·5e7)
     2.2361
     """
-    x, y, tail = _variant(points, sn_curve)
+    x, y, tail, slopes = _segments(points, sn_curve)
     yr = np.log(np.asarray(ratio, dtype=float))
-    j = np.searchsorted(-y, -yr, side="right") - 1        # the last point with f_j >= ratio
+    # the last point with f_j >= ratio: j = (points not below the ratio) - 1, counted as the points the ratio does
+    # not exceed (a NaN exceeds none: j = last, as numpy's sort puts NaN last); a comparison per point costs a
+    # tenth of a binary search per ratio over three or four points
     last = len(x) - 1
-    jj = np.clip(j, 0, last - 1)
-    slope = (x[jj + 1] - x[jj]) / (y[jj + 1] - y[jj])     # d ln N / d ln f of the segment (finite: f falls there)
-    inside = x[jj] + (yr - y[jj]) * slope
+    j = last - (yr > y[0]).astype(np.intp)
+    for y_p in y[1:]:
+        j -= yr > y_p
+    jj = np.minimum(np.maximum(j, 0), last - 1)
+    inside = x[jj] + (yr - y[jj]) * slopes[jj]
     beyond = np.inf if tail is None else x[last] + tail * (y[last] - yr)
     with np.errstate(over="ignore"):
         return np.exp(np.where(j >= last, beyond, inside))
+
+
+@functools.lru_cache(maxsize=256)
+def _segments(points, sn_curve: str):
+    """:func:`_variant`'s (log N, log f) and tail, with each segment's slope d ln N/d ln f between point j and j + 1
+    (at j; a flat segment's, where no ratio falls, infinite): once per curve (read-only arrays)."""
+    x, y, tail = _variant(points, sn_curve)
+    with np.errstate(divide="ignore"):
+        slopes = (x[1:] - x[:-1]) / (y[1:] - y[:-1])
+    slopes.setflags(write=False)
+    return x, y, tail, slopes
 
 
 def miner_damage(cycles, N):
@@ -228,7 +246,8 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     require_choice("sn_curve", sn_curve, SN_CURVES)
     if life_h is not None:
         life_h = one_number("life_h", require_range("life_h", life_h, *LIFE_RANGE_H, lo_open=True, unit="h"))
-    y_m = _mean_stress(mean_stress_factor, spectrum.reverses)
+    prep = _prepared(spectrum)
+    y_m = _mean_stress(mean_stress_factor, prep.reverses)
     if options.get("root", True) is not True:
         raise GearDesignError("pair_life rates pitting and root together: root=False is not an option here")
     mats = (_material(material1, "material1"), _material(material1 if material2 is None else material2, "material2"))
@@ -237,15 +256,14 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     if group is not None:
         life_opts = (group.pitting_permitted, group.optimum_life)
     cpr = options.get("cycles_per_rev", (1, 1)) if group is None else group.cycles_per_rev
-    loaded = np.flatnonzero(spectrum.torque_nm != 0.0)        # a bin of no torque does no damage
+    loaded = prep.loaded                       # a bin of no torque does no damage
     if loaded.size == 0:
         raise GearDesignError("the spectrum has no bin with a torque: nothing to rate")
     # the designs' numbers by name before their shapes are read (a dict or a ragged list has none);
     # pair_strength checks their ranges
-    shapes = {k: require_finite(k, v).shape for k, v in dict(m=m, z1=z1, z2=z2, x1=x1, x2=x2,
-                                                              face_width_mm=face_width_mm).items()}
+    shapes = {k: _shape(k, v) for k, v in dict(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=face_width_mm).items()}
     try:
-        shape = np.broadcast_shapes(*shapes.values())
+        shape = () if not any(shapes.values()) else np.broadcast_shapes(*shapes.values())
     except ValueError:
         raise GearDesignError("input shapes do not broadcast together: "
                               + ", ".join(f"{k} {s}" for k, s in shapes.items())) from None
@@ -257,50 +275,125 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
                                sn_curve=sn_curve, mean_stress_factor=mean_stress_factor, **options))
     zz = _teeth(spectrum, z1, z2)      # before the chain: a wrong spectrum costs nothing
     designs = [np.asarray(v, dtype=float) for v in (m, x1, x2)]
-    expand = (lambda v: np.asarray(v, dtype=float)[..., None]) if shape else (lambda v: np.asarray(v, dtype=float))
+    # designs × bins; one design in Python floats, which the chain runs on math with the bins' arrays on numpy
+    expand = (lambda v: np.asarray(v, dtype=float)[..., None]) if shape else float
     geometry = options.pop("geometry", None)
     if geometry is not None and shape:
         geometry = {k: (expand(v) if k not in ("_z1", "_z2") else v) for k, v in geometry.items()}
-    width = face_width_mm if np.ndim(face_width_mm) == 0 else expand(face_width_mm)
+    width = expand(face_width_mm) if shape or type(face_width_mm) is not int else face_width_mm
+    # only the fields read below: the chain's other ~90 are left at their own shapes (fields=)
     out = pair_strength(expand(designs[0]), expand(z1) if np.ndim(z1) else z1, expand(z2) if np.ndim(z2) else z2,
-                        expand(designs[1]), expand(designs[2]), load=_bins_load(spectrum, loaded),
-                        material1=mats[0], material2=mats[1], face_width_mm=width, geometry=geometry, **options)
+                        expand(designs[1]), expand(designs[2]), load=prep.load, material1=mats[0],
+                        material2=mats[1], face_width_mm=width, geometry=geometry,
+                        fields=_FIELDS if bins else _STRESS_FIELDS, **options)
     nb = loaded.size
+    full = shape + (nb,)
     scale = 1.0 if life_h is None else life_h / spectrum.duration_h
-    n = {g: spectrum.cycles(g, zz, cpr[g - 1])[loaded] * scale for g in (1, 2)}
-    sign = np.sign(spectrum.torque_nm[loaded])
-    groups = {g: _groups(spectrum, loaded, g, sign) for g in (1, 2)}
-    reversing = {g: _reversing_teeth(spectrum, loaded, g, sign) for g in (1, 2)}
-    res = {"required_life_h": spectrum.duration_h if life_h is None else life_h}
-    curves, ratio, static = {}, {}, {}
-    for mode in MODES:
+    n = prep.cycles(spectrum, zz, cpr) * scale          # rows: the modes' gears (1, 2, 1, 2)
+    required = spectrum.duration_h if life_h is None else life_h
+    res = {"required_life_h": required}
+    curves = {mode: _curve(mode[0], mats[int(mode[1]) - 1].kind, life_opts) for mode in MODES}
+    # rows: the modes; the stress over its limit with life factor 1 (a reversing tooth's root limit times Y_M)
+    ratio = np.empty((len(MODES),) + full)
+    for r, mode in enumerate(MODES):
         g = int(mode[1])
-        sig, ref = (np.broadcast_to(np.asarray(out[k], dtype=float), shape + (nb,)) for k in _CHAIN[mode])
-        if mode[0] == "F":
-            ref = ref * np.where(reversing[g], y_m[g - 1], 1.0)
-        pts = life_curve(mode[0], mats[g - 1].kind, *(life_opts if mode[0] == "H" else (False, life_opts[1])))
-        curves[mode] = pts
-        ratio[mode] = sig / ref
-        N = cycles_to_failure(ratio[mode], pts, sn_curve)
-        static[mode] = ratio[mode] > pts[0][1]
-        D = _grouped_max(n[g] / N, groups[g])
-        res["D_" + mode] = D
+        sig, ref = (out[k] for k in _CHAIN[mode])
+        if mode[0] == "F" and prep.reversing_any[g]:
+            ref = ref * np.where(prep.reversing[g], y_m[g - 1], 1.0)
+        np.divide(sig, ref, out=ratio[r])
+    # N of the modes that share an S-N curve (both gears of one material) in one call
+    N = np.empty_like(ratio)
+    for pts in dict.fromkeys(curves.values()):
+        rows = [r for r, mode in enumerate(MODES) if curves[mode] == pts]
+        sel = slice(rows[0], rows[-1] + 1) if rows == list(range(rows[0], rows[-1] + 1)) else rows
+        N[sel] = cycles_to_failure(ratio[sel], pts, sn_curve)
+    static_level = np.array([curves[m][0][1] for m in MODES]).reshape((-1,) + (1,) * len(full))
+    static = np.any(ratio > static_level, axis=-1).any(axis=0)
+    d = n.reshape((len(MODES),) + (1,) * len(shape) + (nb,)) / N
+    D = np.sum(d, axis=-1)
+    for r, mode in enumerate(MODES):
+        if prep.grouped[int(mode[1])]:
+            D[r] = _grouped_max(d[r], prep.groups[int(mode[1])])
+    if shape:
         with np.errstate(divide="ignore"):
-            res["life_h_" + mode] = np.where(D > 0, res["required_life_h"] / D, np.inf)
-        if bins:
-            res["N_" + mode] = N
-    res["static_exceeded"] = np.any(np.stack([np.any(v, axis=-1) for v in static.values()]), axis=0)
-    if not shape:
-        S = _safeties([_variant(curves[m], sn_curve) for m in MODES], np.stack([np.log(ratio[m]) for m in MODES]),
-                      np.stack([n[int(m[1])] for m in MODES]), [groups[int(m[1])] for m in MODES])
-        res.update({"S_" + m: float(v) for m, v in zip(MODES, S)})
-        res = {k: (float(v) if np.ndim(v) == 0 and k.startswith(("D_", "life_h_", "static")) else v)
-               for k, v in res.items()}
+            life = np.where(D > 0, required / D, np.inf)
+        res.update(zip(("D_" + m for m in MODES), D))
+        res.update(zip(("life_h_" + m for m in MODES), life))
+        res["static_exceeded"] = static
+    else:
+        D = D.tolist()
+        res.update(zip(("D_" + m for m in MODES), D))
+        res.update(("life_h_" + m, required / v if v > 0 else math.inf) for m, v in zip(MODES, D))
+        S = _safeties(tuple(curves.values()), sn_curve, np.log(ratio), n, [prep.groups[int(m[1])] for m in MODES],
+                      [prep.grouped[int(m[1])] for m in MODES])
+        res.update(zip(("S_" + m for m in MODES), S.tolist()))
+        res["static_exceeded"] = float(static)     # (a number, as D and the life)
     if bins:
-        res.update({"bin_" + k: np.broadcast_to(np.asarray(out[k], dtype=float), shape + (nb,)) for k in _FIELDS})
-        res.update(bin_index=loaded, n1=n[1], n2=n[2], bin_reversing1=reversing[1], bin_reversing2=reversing[2],
-                   curves=curves, ratio=ratio, mean_stress_factor=y_m)
+        res.update(("N_" + m, N[r]) for r, m in enumerate(MODES))
+        res.update({"bin_" + k: np.broadcast_to(np.asarray(out[k], dtype=float), full) for k in _FIELDS})
+        res.update(bin_index=loaded, n1=n[0], n2=n[1], bin_reversing1=prep.reversing[1],
+                   bin_reversing2=prep.reversing[2], curves=curves, ratio=dict(zip(MODES, ratio)),
+                   mean_stress_factor=y_m)
     return res
+
+
+def _shape(name: str, value) -> tuple:
+    """The shape of a design's number, refused by name when not finite (:func:`require_finite`; a float without
+    numpy)."""
+    if isinstance(value, float) and math.isfinite(value) or type(value) is int and -1e308 < value < 1e308:
+        return ()
+    return require_finite(name, value).shape
+
+
+@functools.lru_cache(maxsize=256)
+def _curve(mode: str, kind: str, life_opts: tuple) -> tuple:
+    """:func:`life_curve` of a mode ("H" or "F") as the chain's options choose it (the root's curve has no
+    pitting_permitted), once per material kind and options."""
+    return life_curve(mode, kind, *(life_opts if mode == "H" else (False, life_opts[1])))
+
+
+class _Prepared:
+    """What :func:`pair_life` reads of a spectrum besides the chain, once per spectrum (whose arrays are read-only):
+    the loaded bins, the chain's load over them, each gear's groups of bins (tooth and flank) and its reversing
+    teeth, and the bins' cycles per pair of tooth counts."""
+
+    def __init__(self, spectrum: LoadSpectrum):
+        self.loaded = np.flatnonzero(spectrum.torque_nm != 0.0)
+        self.load = _bins_load(spectrum, self.loaded) if self.loaded.size else None
+        sign = np.sign(spectrum.torque_nm[self.loaded])
+        self.groups = {g: _groups(spectrum, self.loaded, g, sign) for g in (1, 2)}
+        self.grouped = {g: bool(v.size and v.max() > 0) for g, v in self.groups.items()}
+        self.reversing = {g: (_reversing_teeth(spectrum, self.loaded, g, sign) if self.loaded.size
+                              else np.zeros(0, dtype=bool)) for g in (1, 2)}
+        self.reversing_any = {g: bool(v.any()) for g, v in self.reversing.items()}
+        self.reverses = spectrum.reverses
+        for v in (self.loaded, sign, *self.groups.values(), *self.reversing.values()) + (
+                (self.load.torque_nm, self.load.n_rpm) if self.load else ()):
+            v.setflags(write=False)
+        self._cycles = {}
+
+    def cycles(self, spectrum: LoadSpectrum, teeth: tuple, cycles_per_rev) -> np.ndarray:
+        """:meth:`LoadSpectrum.cycles` of the loaded bins for the gear of each of :data:`MODES` (rows × bins,
+        read-only)."""
+        key = (teeth, tuple(cycles_per_rev))
+        if key not in self._cycles:
+            if len(self._cycles) >= 256:       # a tooth search's many pairs: kept bounded
+                self._cycles.clear()
+            v = np.stack([spectrum.cycles(int(mode[1]), teeth, cycles_per_rev[int(mode[1]) - 1])[self.loaded]
+                          for mode in MODES])
+            v.setflags(write=False)
+            self._cycles[key] = v
+        return self._cycles[key]
+
+
+_PREPARED = weakref.WeakKeyDictionary()      # spectrum -> _Prepared (a spectrum is frozen, hashed by identity)
+
+
+def _prepared(spectrum: LoadSpectrum) -> _Prepared:
+    prep = _PREPARED.get(spectrum)
+    if prep is None:
+        prep = _PREPARED[spectrum] = _Prepared(spectrum)
+    return prep
 
 
 _PAD = 5.0   # ln-units between the padding points of a curve (any positive step: they lie on its first line)
@@ -322,65 +415,107 @@ def _padded(curves) -> tuple:
     return X, Y, tails
 
 
-def _safeties(curves, lr, n, groups, tol: float = 1e-10, lo: float = 1e-3, hi: float = 1e3) -> np.ndarray:
-    """S of each row (a gear and mode): the factor on its log stress ratios ``lr`` (rows × bins) that makes its
-    Miner sum over ``n`` cycles (rows × bins; the governing group of ``groups``) equal 1. Newton on ln D over ln S
-    for every row at once, kept inside each row's bracket by bisection; :func:`safety_for_damage` of one row."""
-    X, Y, tails = _padded(curves)
+@functools.lru_cache(maxsize=256)
+def _padded_curves(points: tuple, sn_curve: str) -> tuple:
+    """What :func:`_safeties` reads of the rows' S-N curves (the life-factor ``points`` of each row), once per set
+    of curves: :func:`_padded`'s X, Y and tails, each segment's slope d ln N/d ln f, the last point (ln N of a
+    horizontal row's end: +inf, so that its tail line gives N = inf), the tail exponents (0: horizontal) and the
+    segment of a count of points at or above a stress, and the row numbers as a column (read-only arrays)."""
+    X, Y, tails = _padded([_variant(p, sn_curve) for p in points])
     R, P = X.shape
-    rows = np.arange(R)[:, None]
-    grouped = [g.max() > 0 for g in groups]
     horizontal = np.isnan(tails)
+    seg = np.full((R, P), np.nan)             # the segment from point j to j + 1 at j (the last column unused)
+    with np.errstate(divide="ignore"):         # a flat segment's (never read: no stress falls inside it)
+        seg[:, :-1] = (X[:, 1:] - X[:, :-1]) / (Y[:, 1:] - Y[:, :-1])
+    last_x = np.where(horizontal[:, None], np.inf, X[:, -1:])
     tail = np.where(horizontal, 0.0, tails)[:, None]
-    last_x, last_y = X[:, -1:], Y[:, -1:]
+    # a stress below c of a row's P points lies on segment c - 1 (the first for c = 0, the last for c = P):
+    # its index in the rows' flattened points
+    rows = np.arange(R)[:, None]
+    segment = np.clip(np.arange(P + 1) - 1, 0, P - 2) + P * rows
+    out = (X.ravel(), Y, seg.ravel(), last_x, Y[:, -1:], tail, horizontal, segment, rows)
+    for v in out:
+        v.setflags(write=False)
+    return out
+
+
+def _safeties(points, sn_curve, lr, n, groups, grouped, tol: float = 1e-10, lo: float = 1e-3,
+              hi: float = 1e3) -> np.ndarray:
+    """S of each row (a gear and mode): the factor on its log stress ratios ``lr`` (rows × bins) that makes its
+    Miner sum over ``n`` cycles (rows × bins; the governing group of ``groups``, where ``grouped``) equal 1, on the
+    S-N curve of the life-factor ``points`` of each row (``sn_curve``). Newton on ln D over ln S for every row at
+    once, kept inside each row's bracket by bisection; :func:`safety_for_damage` of one row. The sums over the
+    bins in numpy, the steps of the four rows in Python floats (ln D from numpy, the arithmetic IEEE's in both)."""
+    Xf, Y, seg, last_x, last_y, tail, horizontal, segment, rows = _padded_curves(points, sn_curve)
+    R, P = Y.shape
+    Yf = Y.ravel()
+    loaded = n > 0
+    every = bool(loaded.all())
+    grouped_rows = [r for r in range(R) if grouped[r]]
+    Ycol = Y[:, :, None]
 
     def at(s):
         yr = lr + s[:, None]
-        j = (Y[:, :, None] >= yr[:, None, :]).sum(axis=1) - 1
-        jj = np.clip(j, 0, P - 2)
-        x0, y0 = X[rows, jj], Y[rows, jj]
-        slope = (X[rows, jj + 1] - x0) / (Y[rows, jj + 1] - y0)
-        beyond = j >= P - 1
-        with np.errstate(invalid="ignore", over="ignore"):
-            lnN = np.where(beyond, np.where(horizontal[:, None], np.inf, last_x + tail * (last_y - yr)),
-                           x0 + (yr - y0) * slope)
-            k = np.where(beyond, tail, -slope)
-            d = np.where(n > 0, n * np.exp(-lnN), 0.0)
+        c = (Ycol >= yr[:, None, :]).sum(axis=1)        # points at or above the stress: its segment
+        i = segment[rows, c]
+        beyond = c >= P                                 # below the last point: the tail (inf: horizontal)
+        slope = seg[i]
+        lnN = np.where(beyond, last_x + tail * (last_y - yr), Xf[i] + (yr - Yf[i]) * slope)
+        k = np.where(beyond, tail, -slope)
+        d = n * np.exp(-lnN)
+        if not every:
+            d = np.where(loaded, d, 0.0)
         D, dk = d.sum(axis=1), (d * k).sum(axis=1)
-        for r in np.flatnonzero(grouped):            # per tooth or flank: the governing group's sum
+        for r in grouped_rows:            # per tooth or flank: the governing group's sum
             sums = np.bincount(groups[r], weights=d[r])
             g = int(np.argmax(sums))
             sel = groups[r] == g
             D[r], dk[r] = sums[g], d[r, sel] @ k[r, sel]
         return D, dk
 
-    a, b = np.full(R, math.log(lo)), np.full(R, math.log(hi))
-    seen_a, seen_b = np.zeros(R, bool), np.zeros(R, bool)
+    la, lb = math.log(lo), math.log(hi)
+    a, b = [la] * R, [lb] * R
+    seen_a, seen_b = [False] * R, [False] * R
     # start at S = 1, or where the largest stress reaches a horizontal curve's end (no damage below it)
-    s = np.where(horizontal, np.maximum(0.0, last_y[:, 0] - lr.max(axis=1) + 1e-9), 0.0)
-    s = np.clip(s, a, b)
-    done = np.zeros(R, bool)
-    out = np.exp(s)
-    for _ in range(200):
-        D, dk = at(s)
-        below = D < 1.0
-        a, seen_a = np.where(below, s, a), seen_a | below
-        b, seen_b = np.where(below, b, s), seen_b | ~below
-        with np.errstate(divide="ignore", invalid="ignore"):
-            newton = s - np.log(D) / (dk / D)
-        ok = np.isfinite(newton) & (newton >= a) & (newton <= b) & (D > 0) & (dk > 0)
-        conv = ok & (np.abs(newton - s) <= tol) | (seen_a & seen_b & (b - a <= tol))
-        fallback = np.where(seen_a & seen_b, 0.5 * (a + b), np.where(below, np.minimum(s + 1.0, b),
-                                                                     np.maximum(s - 1.0, a)))
-        stuck = ~ok & (fallback == s)                # at an end of [lo, hi] with D on one side of 1
-        new = ~done & (conv | stuck)
-        out[new] = np.where(conv, np.where(ok, np.exp(newton), np.exp(b)), np.where(below, hi, lo))[new]
-        done |= new
-        if done.all():
-            break
-        s = np.where(ok & ~((newton == a) | (newton == b)), newton, fallback)
-    out[~done] = np.exp(b[~done])
-    return out
+    s0 = np.where(horizontal, np.maximum(0.0, last_y[:, 0] - lr.max(axis=1) + 1e-9), 0.0)
+    s = np.minimum(np.maximum(s0, la), lb).tolist()
+    done = [False] * R
+    found = {}                   # row -> (ln S, None) or (None, S at an end of [lo, hi])
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for _ in range(200):
+            D, dk = at(np.array(s))
+            lnD = np.log(D).tolist()
+            D, dk = D.tolist(), dk.tolist()
+            nxt = list(s)
+            for r in range(R):
+                d, k, x = D[r], dk[r], s[r]
+                below = d < 1.0
+                if below:
+                    a[r], seen_a[r] = x, True
+                else:
+                    b[r], seen_b[r] = x, True
+                # Newton's step s - ln D/(dk/D), read only where D and dk are > 0 and it is finite (as numpy's float64
+                # gives it: a quotient dk/D that overflows reads ln D/inf = 0; one that underflows to 0 is no step)
+                ok = False
+                if 0.0 < d < math.inf and 0.0 < k:
+                    q = k / d                              # (a float quotient overflows to inf)
+                    if q != 0.0:
+                        newton = x - lnD[r] / q
+                        ok = math.isfinite(newton) and a[r] <= newton <= b[r]
+                both = seen_a[r] and seen_b[r]
+                conv = ok and abs(newton - x) <= tol or (both and b[r] - a[r] <= tol)
+                fallback = 0.5 * (a[r] + b[r]) if both else min(x + 1.0, b[r]) if below else max(x - 1.0, a[r])
+                stuck = not ok and fallback == x           # at an end of [lo, hi] with D on one side of 1
+                if not done[r] and (conv or stuck):
+                    found[r] = ((newton if ok else b[r]), None) if conv else (None, hi if below else lo)
+                    done[r] = True
+                nxt[r] = newton if ok and not (newton == a[r] or newton == b[r]) else fallback
+            if all(done):
+                break
+            s = nxt
+    found = [found.get(r, (b[r], None)) for r in range(R)]
+    S = np.exp(np.array([math.nan if v is None else v for v, _ in found]))     # the ln S found, in one call
+    return np.array([S[r] if v is not None else fixed for r, (v, fixed) in enumerate(found)])
 
 
 _ELEMENTS = 65536     # designs × bins of one chain call: ~100 fields of 0.5 MB
@@ -417,6 +552,10 @@ def _groups(spectrum: LoadSpectrum, loaded, gear: int, sign) -> np.ndarray:
 def _teeth(spectrum: LoadSpectrum, z1, z2) -> tuple:
     """The one pair of tooth counts (z1, z2) of the designs, which the spectrum's cycles depend on (the ratio) and,
     counted per tooth, its bins (the teeth they were counted for)."""
+    if type(z1) is int and type(z2) is int:          # one pair in plain numbers (the spectrum checks their range)
+        zz = (z1, z2)
+        require_teeth_of(spectrum, zz)
+        return zz
     if np.size(z1) == 0 or np.size(z2) == 0:
         raise GearDesignError(f"z1 and z2 must each give a tooth count, got {np.size(z1)} and {np.size(z2)} values")
     zz = (int(np.max(z1)), int(np.max(z2)))

@@ -53,3 +53,16 @@ def test_a_design_without_a_result_is_refused_as_without_fields():
     with pytest.raises(GearDesignError) as some:
         pair_strength(m, z1, z2, x1, x2, fields=("S_H1",), **kw)
     assert str(some.value) == str(full.value)
+
+
+def test_a_small_batchs_refusal_names_the_factor_as_without_fields():
+    """Below a block the chain leaves the fields not asked for at their own shapes (fields=): the refusal of a
+    design without a result still names the design and the factor the call with every field names."""
+    m, z1, z2, x1, x2 = _designs(7, 6)
+    x1[4] = 3.5
+    kw = dict(load=LOAD, material1=material("42CrMo4"), face_width_mm=10 * m)
+    with pytest.raises(GearDesignError) as full:
+        pair_strength(m, z1, z2, x1, x2, **kw)
+    with pytest.raises(GearDesignError) as some:
+        pair_strength(m, z1, z2, x1, x2, fields=("sigma_H1", "sigma_FG2"), **kw)
+    assert str(some.value) == str(full.value)

@@ -103,3 +103,17 @@ def test_a_per_tooth_spectrum_is_plotted_on_its_governing_tooth_flank():
     assert edges[-1] == pytest.approx(b.loc[group == top, "n1"].sum(), rel=1e-12)
     assert edges[-1] < b["n1"].sum() / 10           # one flank of 17 teeth, not all of them
     plt.close(fig)
+
+
+def test_a_result_pickled_before_its_table_is_read_keeps_the_table():
+    """The per-bin table is built when first read: a result sent elsewhere (pickled: a Dask worker's) before that
+    carries what builds it, and reads the same table; its D column sums to the result's D (one group per flank)."""
+    import pickle
+
+    pair = gd.GearPair(4, 20, 60, 0.3, 0.1, face_width_mm=40)
+    spec = gd.LoadSpectrum.from_bins([120, 90, 60], 1000, time_h=[2000, 8000, 10000])
+    r = pair.life(spec, "42CrMo4")
+    sent = pickle.loads(pickle.dumps(r))
+    assert sent.bins.equals(r.bins)
+    assert sent.bins["D_H1"].sum() == pytest.approx(sent.D_H1, rel=1e-12)
+    assert json.loads(sent.to_json())["bins"][0]["torque_nm"] == 120.0

@@ -335,3 +335,23 @@ def test_pair_life_refuses_an_empty_list_of_teeth_by_name():
     spec = LoadSpectrum.from_bins([241.0], 1000.0, time_h=[100.0])
     with pytest.raises(GearDesignError, match="z1 and z2 must each give a tooth count, got 0 and 1 values"):
         pair_life(20.0, [], 26, 0.3, 0.1, spectrum=spec, material1="42CrMo4", face_width_mm=40.0)
+
+
+def test_one_design_in_numbers_is_the_array_call_of_one_design():
+    """One design in Python floats (the chain's pair-wide factors on math, the bins' on numpy) against the same
+    design as a one-element array (numpy throughout): the damage sums, lives and bins agree to the last few ulps
+    (D ∝ σ^13: an ulp of σ is ~13 ulps of D), on a spectrum counted per tooth with both flanks loaded."""
+    phi = np.linspace(0, 720, 721)
+    T = 300 + 500 * np.exp(-((phi - 20) / 15) ** 2) - 150 * np.exp(-((phi - 380) / 30) ** 2)
+    spec = LoadSpectrum.from_curve(T, angle_deg=phi, n_rpm=1700, teeth=(20, 60), levels=24)
+    kw = dict(spectrum=spec, material1="42CrMo4", material2="C45", face_width_mm=40.0, sn_curve="haibach",
+              mean_stress_factor=0.7, life_h=4000.0, bins=True)
+    one = pair_life(4.0, 20, 60, 0.3, 0.1, **kw)
+    arr = pair_life(np.array([4.0]), 20, 60, np.array([0.3]), np.array([0.1]), **kw)
+    for mode in ("H1", "H2", "F1", "F2"):
+        assert one["D_" + mode] > 0
+        assert one["D_" + mode] == pytest.approx(float(arr["D_" + mode][0]), rel=1e-13)
+        assert one["life_h_" + mode] == pytest.approx(float(arr["life_h_" + mode][0]), rel=1e-13)
+        np.testing.assert_allclose(one["N_" + mode], arr["N_" + mode][0], rtol=1e-13)
+    for k in ("K_v", "K_Hbeta", "sigma_H1", "sigma_F2", "sigma_FG1"):
+        np.testing.assert_allclose(one["bin_" + k], arr["bin_" + k][0], rtol=1e-14)
