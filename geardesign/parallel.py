@@ -13,8 +13,8 @@ chunk is computed by the same code as a serial run, so the table is the serial o
 One more thing must match for that: the number of BLAS threads. OpenBLAS rounds a few of the small
 vector operations scipy's SLSQP makes (the least infeasible point of an infeasible pair) differently
 with one thread than with several, and Dask starts its workers with one; each chunk therefore runs
-with the BLAS thread counts of the calling process (threadpoolctl, part of the extra), which stay
-set on the worker after it. The workers
+with the BLAS thread counts of the calling process, library by library (threadpoolctl, part of the
+extra), which stay set on the worker after it. The workers
 must run the same versions of numpy, scipy and geardesign, as Dask itself requires.
 ``progress(done, total)`` is called as chunks finish. Ctrl-C (KeyboardInterrupt), or an error in
 one chunk, cancels every future; a cluster started here is closed and its scratch folder removed
@@ -52,7 +52,8 @@ CHUNKS_PER_WORKER = 4
 # A cluster made here starts its workers without the stack sampler of Dask's dashboard, which interrupts
 # these Python-heavy solves every 10 ms. (Dask's worker environment, MALLOC_TRIM_THRESHOLD_ and BLAS pinned to
 # one thread, reaches every worker whatever this config says, a user's cluster's too: the BLAS threads are set
-# per chunk (_SameBlas); the malloc threshold is left, see docs/scale.md.)
+# per chunk (_SameBlas), each library to the caller's count, and the heap's trim threshold raised once per worker
+# (_heap_kept), see docs/scale.md.)
 _LOCAL_CONFIG = {"distributed.worker.profile.enabled": False}
 
 _INSTALL = 'install Dask with: pip install "geardesign[dask]"'
@@ -271,7 +272,7 @@ def map_chunks(fn, chunks, *, client=None, workers=None, progress=None) -> list:
 
 
 class _SameBlas:
-    """``fn`` run with the BLAS thread counts ``limits`` ({library prefix: threads}) of the caller.
+    """``fn`` run with the BLAS thread counts ``limits`` ({library file name: threads}) of the caller.
     The counts are set on the worker and left so, not restored after the chunk: chunks that run side
     by side in the threads of one worker must not undo each other's setting half-way."""
 
@@ -279,11 +280,48 @@ class _SameBlas:
         self.fn, self.limits = fn, limits
 
     def __call__(self, chunk):
-        from threadpoolctl import threadpool_limits
+        from threadpoolctl import ThreadpoolController
 
         _load_blas()
-        threadpool_limits(limits=self.limits)
+        for lib in ThreadpoolController().lib_controllers:
+            threads = self.limits.get(_library_name(lib.filepath))
+            if threads is not None and lib.num_threads != threads:
+                lib.set_num_threads(threads)
+        _heap_kept()
         return self.fn(chunk)
+
+
+# glibc's heap is trimmed (given back to the system) when more than this is free at its top
+HEAP_TRIM_BYTES = 64 << 20
+_HEAP_KEPT = []
+
+
+def _heap_kept() -> None:
+    """On a worker started with Dask's MALLOC_TRIM_THRESHOLD_ (65536: every Dask worker, a user's default cluster's
+    too), glibc's trim threshold raised to HEAP_TRIM_BYTES, once per process; elsewhere nothing is done.
+
+    With 64 kB, the solvers' temporaries freed at the heap's top are given back to the system at every block and
+    their pages faulted in afresh by the next one: an atlas of 3 626 pairs made 21 079 brk calls (7 669 with
+    glibc's defaults) and cost 3.4 CPU s against 1.7 s with the threshold at 64 MB (issue 36 §3). Only the trim
+    threshold is set; the mapping threshold stays where Dask's environment fixed it (128 kB, above the solvers'
+    blocks: geometry.BLOCK)."""
+    if _HEAP_KEPT:
+        return
+    _HEAP_KEPT.append(True)
+    try:
+        if int(os.environ.get("MALLOC_TRIM_THRESHOLD_", "")) >= HEAP_TRIM_BYTES:
+            return
+    except ValueError:       # not set (not a Dask worker's environment), or not a number
+        return
+    import ctypes
+    import ctypes.util
+
+    try:
+        mallopt = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6").mallopt
+    except (OSError, AttributeError):      # not glibc
+        return
+    M_TRIM_THRESHOLD = -1                  # glibc's malloc.h
+    mallopt(M_TRIM_THRESHOLD, HEAP_TRIM_BYTES)
 
 
 def _load_blas() -> None:
@@ -292,14 +330,26 @@ def _load_blas() -> None:
     import scipy.linalg  # noqa: F401
 
 
+def _library_name(filepath) -> str:
+    """A BLAS library's file name (``libscipy_openblas64_-32a4b2a6.so``): the same build on the caller and a worker,
+    wherever each installed it."""
+    return os.path.basename(filepath or "")
+
+
 def _blas_threads() -> dict:
-    """{library prefix: threads} of the BLAS libraries loaded in this process (scipy's loaded first)."""
+    """{library file name: threads} of the BLAS libraries loaded in this process (scipy's loaded first).
+
+    By file, not by threadpoolctl's prefix: numpy's and scipy's OpenBLAS share the prefix ``libscipy_openblas``,
+    and once a Dask cluster has started in this process they differ (Dask puts OPENBLAS_NUM_THREADS=1 into this
+    process's environment, which scipy's library, loaded later, reads): keyed by prefix, whichever came last in
+    threadpoolctl's listing (an order that follows the hash seed) set both on the workers, and the infeasible pairs'
+    SLSQP points differed from the serial ones in the last bits in about half the runs."""
     try:
         from threadpoolctl import threadpool_info
     except ImportError:
         raise GearDesignError(f"client= / workers= need threadpoolctl (part of the Dask extra): {_INSTALL}") from None
     _load_blas()
-    return {lib["prefix"]: lib["num_threads"] for lib in threadpool_info()}
+    return {_library_name(lib["filepath"]): lib["num_threads"] for lib in threadpool_info()}
 
 
 def _size(chunk) -> int:

@@ -33,6 +33,6 @@ LOOK_AHEAD = 16                   # groups of the branch and bound whose options
                                   # at most 15 solved past the stop (none in the sized benchmark drive)
 MARGIN_AHEAD = 256                # groups whose max_margin shifts are solved in one batch (~3 ms fixed, 0.07 ms a
                                   # pair: 256 take ~20 ms, as much as seven pairs solved one by one)
-BATCH_BLOCK = 16_384              # designs per evaluation of a chain stage's checks: a drive's 10⁵-10⁶ designs in
+BATCH_BLOCK = 16_000              # designs per evaluation of a chain stage's checks: a drive's 10⁵-10⁶ designs in
                                   # blocks whose temporaries stay in the caches (491 319 designs: 0.165 s whole,
                                   # 0.115 s in blocks; the chain's formulas are elementwise, so the same values)

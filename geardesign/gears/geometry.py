@@ -79,8 +79,10 @@ _FLOAT_OPS = SimpleNamespace(
 
 # Designs per block of the vectorised path: ~60 temporaries of 16 k doubles stay in the caches,
 # where one pass over a million-element array goes to memory (measured 1.7x on 1 M designs
-# against unblocked, and 16 k 1.1-1.3x faster per design than 64 k).
-BLOCK = 16_384
+# against unblocked, and 16 k 1.1-1.3x faster per design than 64 k). Below 16 384 (128 kB of doubles, glibc's
+# mmap threshold): where that threshold is fixed (a Dask worker's MALLOC_TRIM_THRESHOLD_ fixes it) every
+# temporary of 16 384 doubles was mapped and unmapped afresh, and an atlas on a worker cost 2.4x its serial CPU.
+BLOCK = 16_000
 
 
 def mesh_geometry(mesh: Mesh, m, x1, x2, full: bool = True, then=None, contact: bool = True, tips: bool = True) -> dict:

@@ -274,11 +274,17 @@ def _first_pass(proto: Problem, Z1, Z2, bounds):
 
     def node_values(geo):
         """The smallest margin (-1 where a gear does not exist) and the objective where feasible."""
-        with np.errstate(all="ignore"):   # nodes where a gear does not exist: margin NaN → −inf
-            M = proto.margins(geo)
-        if not M.size:
+        if not proto.checks:
             return {"F": np.ones(geo["a"].shape), "score": proto.pieces(geo).min(axis=0)}
-        m_min = M.min(axis=0)
+        # the least margin check by check, as Problem.margins(geo).min(axis=0) (NaN → −inf first, then the same
+        # minimum in the same order): the (checks × block) stack was an array above glibc's 128 kB mmap threshold,
+        # mapped afresh at every block on a Dask worker (see geometry.BLOCK)
+        m_min = None
+        with np.errstate(all="ignore"):   # nodes where a gear does not exist: margin NaN → −inf
+            for v in proto._margin_values(geo):
+                v = np.fmax(v, -np.inf)
+                m_min = v if m_min is None else np.minimum(m_min, v)
+        m_min = np.broadcast_to(m_min, np.shape(geo["_x1"]))
         P = proto.pieces(geo).min(axis=0) if proto.objective.kind != "margin" else m_min
         return {"F": np.where(np.isfinite(m_min), m_min, -1.0), "score": np.where(m_min >= 0, P, -np.inf)}
 

@@ -60,14 +60,29 @@ class Evaluator:
                 GM = np.concatenate((GM, self._window_rows))
             if not (np.isfinite(M).all() and np.isfinite(P).all()):
                 self.missing += 1
-                P, M = np.nan_to_num(P, nan=-BIG, neginf=-BIG), np.nan_to_num(M, nan=-BIG, neginf=-BIG)
-                GP, GM = np.nan_to_num(GP), np.nan_to_num(GM)
+                P, M = _nan_to_num(P, nan=-BIG, neginf=-BIG), _nan_to_num(M, nan=-BIG, neginf=-BIG)
+                GP, GM = _nan_to_num(GP), _nan_to_num(GM)
             val = (P, M, GP, GM)
             if len(self.cache) >= self._CACHE:
                 self.cache.pop(next(iter(self.cache)))
             self.cache[key] = val
             self.nfev += 1
         return val
+
+
+_FLOAT_MAX = float(np.finfo(float).max)
+
+
+def _nan_to_num(a, nan: float = 0.0, neginf: float = -_FLOAT_MAX):
+    """``np.nan_to_num(a, nan=nan, neginf=neginf)`` of a float array, the same values: NaN → ``nan``, +inf → the
+    largest float, −inf → ``neginf``. numpy's general function costs ~10 µs on the few values of one design, and a
+    ring pair's solve calls it four times at every point where its cutter trimming is undefined (a quarter of them)."""
+    out = np.array(a, dtype=float)
+    out[np.isnan(out)] = nan
+    inf = np.isinf(out)
+    if inf.any():
+        out[inf] = np.where(out[inf] > 0, _FLOAT_MAX, neginf)
+    return out
 
 
 def window_box(prob: Problem, bounds):

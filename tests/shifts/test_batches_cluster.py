@@ -85,3 +85,45 @@ def test_a_users_cluster_with_dasks_own_settings_gives_the_serial_atlas(tmp_path
         assert set(user.run(lambda: __import__("os").environ.get("OPENBLAS_NUM_THREADS")).values()) == {"1"}
         kw = dict(z1_values=range(8, 12), z2_values=range(8, 20))
         assert_same_bits(gd.shift_atlas(**kw, client=user), gd.shift_atlas(**kw))
+
+
+@pytest.mark.parametrize("numpy_threads, scipy_threads", [(1, 2), (2, 1)])
+def test_atlas_on_a_cluster_follows_each_blas_library_of_the_caller(client, numpy_threads, scipy_threads):  # noqa: F811
+    """numpy's and scipy's OpenBLAS share threadpoolctl's prefix; once a Dask cluster has started in a process they
+    can run on different thread counts (Dask puts OPENBLAS_NUM_THREADS=1 into the caller's environment before scipy's
+    library loads). Keyed by prefix, one count reached the workers for both, and the infeasible pairs' SLSQP points
+    differed from the serial ones (in about half the runs: threadpoolctl's order followed the hash seed); each library
+    keeps its own count now, whichever of the two runs on more threads."""
+    import os
+
+    import scipy.linalg  # noqa: F401  (scipy's OpenBLAS loaded, as SLSQP loads it)
+    from threadpoolctl import ThreadpoolController
+
+    from geardesign import parallel
+    libs = {os.path.basename(lib.filepath): lib for lib in ThreadpoolController().lib_controllers}
+    numpy_lib = next((lib for name, lib in libs.items() if "openblas64" in name), None)
+    scipy_lib = next((lib for name, lib in libs.items() if "openblas" in name and "openblas64" not in name), None)
+    if numpy_lib is None or scipy_lib is None:
+        pytest.skip("needs numpy's and scipy's own OpenBLAS builds (the wheels')")
+    before = numpy_lib.num_threads, scipy_lib.num_threads
+    try:
+        numpy_lib.set_num_threads(numpy_threads)
+        scipy_lib.set_num_threads(scipy_threads)
+        assert len(parallel._blas_threads()) == len(libs)       # one count per library, not per prefix
+        kw = dict(z1_values=range(8, 12), z2_values=range(8, 25))
+        serial = gd.shift_atlas(**kw)
+        assert not serial.feasible.all()
+        assert_same_bits(gd.shift_atlas(**kw, client=client), serial)
+    finally:
+        numpy_lib.set_num_threads(before[0])
+        scipy_lib.set_num_threads(before[1])
+
+
+def test_a_dask_worker_keeps_its_heap(client):  # noqa: F811
+    """Dask starts its workers with MALLOC_TRIM_THRESHOLD_=65536, under which every block of temporaries was given
+    back to the system and faulted in again (an atlas cost a worker twice its serial CPU: benchmarks/bench_parallel.py);
+    a chunk raises the threshold once per worker process, and only where that environment set it."""
+    from geardesign import parallel
+    gd.shift_atlas(range(12, 14), range(30, 40), client=client)
+    assert set(client.run(lambda: __import__("os").environ.get("MALLOC_TRIM_THRESHOLD_")).values()) == {"65536"}
+    assert [True] in client.run(lambda: list(parallel._HEAP_KEPT)).values()   # the worker(s) that ran a chunk

@@ -17,7 +17,7 @@ import numpy as np
 
 __all__ = ["BLOCK", "batch_shape", "in_blocks"]
 
-BLOCK = 16_384     # designs per block: ~130 kB a temporary (as geometry.mesh_geometry's blocks)
+BLOCK = 16_000     # designs per block: 125 kB a temporary, under glibc's mmap threshold (as geometry.BLOCK)
 
 
 def batch_shape(values) -> tuple | None:

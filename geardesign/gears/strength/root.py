@@ -49,7 +49,8 @@ RHOFP_RANGE = (0.0, 1.0)               # basic rack root radius ρ_fP*/m_n
 SPR_RANGE = (0.0, 0.5)                 # protuberance residual s_pr*/m_n
 _NEWTON_STEPS = 40
 _FLOAT_MAX = float(np.finfo(float).max)
-BLOCK = 16_384                         # designs per block of a large array call (cache-sized temporaries)
+BLOCK = 16_000                         # designs per block of a large array call (cache-sized temporaries under
+                                       # glibc's 128 kB mmap threshold: see geometry.BLOCK)
 DESIGNS_MAX = 50_000_000               # designs in one call: ~20 output fields of 8 bytes each (~8 GB)
 
 
