@@ -145,7 +145,6 @@ def damage_checks(stage, torque_nm: float, speed_rpm: float) -> tuple:
 @lru_cache(maxsize=256)
 def _damage_checks(spectrum, material, life_h, options: tuple, sn_curve, mean_stress_factor, torque_nm,
                    speed_rpm) -> tuple:
-
     spec = spectrum if torque_nm is None else spectrum.at(torque_nm, speed_rpm, life_h)
     opts = life_options(_thawed(options))
     built = make_checks(spectrum=spec, material=stage_material(material), strength=opts or None, life_h=life_h,
