@@ -13,7 +13,9 @@ With the wheel's ``casting`` the stage carries the AGMA load check (ANSI/AGMA 60
 it, :mod:`geardesign.gears.worm.agma`) at the torque and speed its drive gives it, and ``m_x=None`` sizes it by
 that load, as ``GearStage(None, material=...)`` is sized: the smallest centre distance of GOST 2144-76 (then
 first-row modules of GOST 19672-74, then the smallest |x2|) whose module and q hold every worm check, the load
-check included, at the stage's own torque and speed (:func:`size_worm`).
+check included, at the stage's own torque and speed (:func:`size_worm`). Its efficiency is a number, or
+``"computed"``: then the drive finds its size and its efficiency together, a bounded fixed point
+(:func:`size_worm_computed`).
 """
 from __future__ import annotations
 
@@ -65,7 +67,8 @@ class WormStage:
     length check is off by default: the stage's worm is as long as its mesh needs; ``S_AGMAmin`` the load check's
     smallest safety). ``casting`` ("sand", "chill", "centrifugal": the bronze wheel's) adds the AGMA load check at
     the stage's own torque and speed, with the application factor ``application_factor`` (K_A); with it,
-    ``m_x=None`` sizes the stage (:func:`size_worm`; its efficiency must then be a number).
+    ``m_x=None`` sizes the stage (:func:`size_worm`; its efficiency a number, or ``"computed"`` with z2 given:
+    :func:`size_worm_computed` in the drive).
 
     >>> import geardesign as gd
     >>> s = gd.WormStage(m_x=4, q=12.5, z1=4, z2=50, a=125, efficiency=0.87, name="gear motor")   # seed 002's u
