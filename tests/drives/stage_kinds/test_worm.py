@@ -364,3 +364,25 @@ def test_a_size_that_cycles_or_does_not_settle_is_refused_by_name(monkeypatch):
     # at_speed of a sized stage needs the torque
     with pytest.raises(gd.GearDesignError, match="torque_out"):
         st.at_speed(1450.0)
+
+
+def test_a_scene_sizes_and_computes_the_worm_together_and_a_cycle_exits_2(tmp_path, capsys):
+    import json
+    from pathlib import Path
+
+    from geardesign.cli import main
+
+    text = (Path(__file__).resolve().parents[3] / "studies" / "scenes" / "seed002_worm_sized.toml").read_text()
+    scene = tmp_path / "computed.toml"
+    scene.write_text(text.replace("efficiency = 0.87", 'efficiency = "computed"'))
+    assert main(["drive", str(scene), "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    worm = out["analysis"]["stages"][0] if "analysis" in out else out["stages"][0]
+    st = WormStage(worm["m_x"], worm["q"], 2, 25, a=worm["a"], efficiency=0.5, casting="centrifugal")
+    assert worm["efficiency"] == pytest.approx(_own_efficiency(st, 1500.0), rel=1e-12) and worm["S_AGMA"] >= 1.0
+    cyc = tmp_path / "cycle.toml"
+    cyc.write_text('[drive]\npower_kw = 2.3\nn_in_rpm = 1450\n\n[[drive.stage]]\nkind = "worm"\nname = "hoist"\n'
+                   'z1 = 2\nz2 = 60\ncasting = "chill"\nefficiency = "computed"\n')
+    assert main(["drive", str(cyc)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "'hoist'" in err[0] and "does not settle" in err[0]
