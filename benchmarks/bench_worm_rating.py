@@ -6,6 +6,7 @@
   self-locking, forces, deflection, heat balance, the given-factor contact and root checks, the result object with
   its factor table rows) and ``load_capacity`` on it;
 * the vectorised efficiency functions over N designs (sliding speed, friction, η both ways), in designs/s;
+* the AGMA 6034 row alone: ``agma.agma_load_float`` (one design in floats) against the array functions chained;
 * reference: the same quantities for one pair in plain-Python floats (math module), no validation, no result.
 
 The issue's goal: one worm pair's geometry, efficiency and rating <= 200 µs.
@@ -15,7 +16,6 @@ Prints figures; asserts nothing (speed is measured, not tested).
 """
 import math
 import sys
-import time
 
 import numpy as np
 
@@ -75,6 +75,19 @@ def main(n=100_000):
             600.0, 1500.0, casting="centrifugal", **{k: v for k, v in kw.items() if k != "b_2"})
     t_agma = best(with_agma)
     print(f"  the same with the AGMA row (casting): {t_agma * 1e6:8.1f} µs   ratio {t_agma / t_ref:6.1f}")
+
+    from geardesign.gears.worm import agma
+    row = (160.0, 250.0, 62.5, 45.0, 12.5, 5.0, 17.7, 20.0, 0.03, 800.0, 0.9, "centrifugal", 1.0)
+
+    def array_row(a, d_2, d_m1, b_2, u, v_g, g, al, mu, T2, eta, casting, K_A):
+        C_s, C_m = agma.materials_factor(a, d_2, casting), agma.ratio_correction_factor(u)
+        C_v, F_e = agma.velocity_factor(v_g), agma.effective_face_width(b_2, d_m1)
+        W_f = agma.friction_force(2000.0 * T2 / d_2, mu, g, al)
+        return (agma.allowable_tangential_load(C_s, d_2, F_e, C_m, C_v), agma.design_tangential_load(T2, d_2, eta, K_A),
+                agma.friction_power(W_f, v_g))
+    t_row_f = best(lambda: agma.agma_load_float(*row), number=2000)
+    t_row_a = best(lambda: array_row(*row), number=2000)
+    print(f"  its AGMA row alone: float path {t_row_f * 1e6:6.1f} µs, the array functions {t_row_a * 1e6:6.1f} µs")
 
     rng = np.random.default_rng(1)
     d, n1, g = rng.uniform(20, 200, n), rng.uniform(100, 3000, n), rng.uniform(2, 30, n)

@@ -159,19 +159,53 @@ class Drive:
         the worm a speed per design, and the power flow holds one efficiency per stage)."""
         if not any(getattr(s, "efficiency", None) == "computed" for s in stages):
             return stages
-        out, n = [], self.n_in_rpm
+        out, n, speeds = [], self.n_in_rpm, []
         for s in stages:
+            speeds.append(n)
             if getattr(s, "efficiency", None) == "computed":
                 if n is None:
                     raise GearDesignError(f"stage '{s.name}': efficiency='computed' needs the speed into it fixed: the "
                                           f"stages before it must have fixed ratios (or put the worm first)")
-                s = s.at_speed(n)
+                if not getattr(s, "sized", False):
+                    s = s.at_speed(n)
             out.append(s)
             try:
                 n = None if n is None else n / kind_of(s).fixed_ratio(s)
             except GearDesignError:      # a ratio the search chooses
                 n = None
+        # a stage sized by its load: its size and efficiency together, at the torque the flow gives it (which
+        # depends on the efficiencies before it with the input power given, after it with the output torque)
+        order = range(len(out)) if self.power_kw is not None else reversed(range(len(out)))
+        for i in order:
+            if getattr(out[i], "efficiency", None) == "computed":
+                out[i] = out[i].at_speed(speeds[i], torque_out=self._torque_out_of(out, i))
         return tuple(out)
+
+    def _torque_out_of(self, stages: list, i: int):
+        """The torque out of stage i (N·m) as a function of its efficiency: with the input power given, from the
+        stages up to it (their ratios fixed: the speed into it is); with the output torque given, from the stages
+        after it, whose ratios and efficiencies must then be fixed."""
+        def ratio(s):
+            try:
+                return kind_of(s).fixed_ratio(s)
+            except GearDesignError:
+                raise GearDesignError(f"stage '{stages[i].name}': efficiency='computed' on a stage sized by its load "
+                                      f"needs the torque out of it fixed: with output_torque_nm the stages after "
+                                      f"it must have fixed ratios (or give power_kw)") from None
+
+        upto = stages if self.power_kw is None else stages[:i + 1]
+        ratios = [ratio(s) for s in upto]
+        effs = [s.efficiency for j, s in enumerate(upto) if j != i]
+        if any(isinstance(e, str) for e in effs):
+            raise GearDesignError(f"stage '{stages[i].name}': efficiency='computed' on a stage sized by its load "
+                                  f"needs the efficiencies of the stages {'after' if self.power_kw is None else 'before'}"
+                                  f" it as numbers")
+
+        def torque_out(eta):
+            _, T, _ = power_flow(self.n_in_rpm, ratios, effs[:i] + [eta] + effs[i:], self.power_kw,
+                                 self.output_torque_nm)
+            return float(np.ravel(T)[i + 1])
+        return torque_out
 
     # -- helpers
     def _efficiencies(self) -> np.ndarray:

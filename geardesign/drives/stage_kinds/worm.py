@@ -13,7 +13,9 @@ With the wheel's ``casting`` the stage carries the AGMA load check (ANSI/AGMA 60
 it, :mod:`geardesign.gears.worm.agma`) at the torque and speed its drive gives it, and ``m_x=None`` sizes it by
 that load, as ``GearStage(None, material=...)`` is sized: the smallest centre distance of GOST 2144-76 (then
 first-row modules of GOST 19672-74, then the smallest |x2|) whose module and q hold every worm check, the load
-check included, at the stage's own torque and speed (:func:`size_worm`).
+check included, at the stage's own torque and speed (:func:`size_worm`). Its efficiency is a number, or
+``"computed"``: then the drive finds its size and its efficiency together, a bounded fixed point
+(:func:`size_worm_computed`).
 """
 from __future__ import annotations
 
@@ -33,7 +35,8 @@ from ...validate import one_number, require_choice, require_int, require_positiv
 from ..stages import EFFICIENCY_RANGE, _efficiency, _name, _range, disc_mass_kg, stage_area_mm2
 from .base import Batch, StageKind
 
-__all__ = ["WormStage", "WormKind", "set_worm_efficiency", "WORM_RATIO_RANGE", "size_worm", "WormSizing"]
+__all__ = ["WormStage", "WormKind", "set_worm_efficiency", "WORM_RATIO_RANGE", "size_worm", "WormSizing",
+           "size_worm_computed", "SIZING_ROUNDS"]
 
 # the ratio span of one worm stage: 5 … 80 for power drives (issue 39: "one stage gives 5…80"), to 300 for
 # indexing drives; the range a stage may ask for
@@ -64,7 +67,8 @@ class WormStage:
     length check is off by default: the stage's worm is as long as its mesh needs; ``S_AGMAmin`` the load check's
     smallest safety). ``casting`` ("sand", "chill", "centrifugal": the bronze wheel's) adds the AGMA load check at
     the stage's own torque and speed, with the application factor ``application_factor`` (K_A); with it,
-    ``m_x=None`` sizes the stage (:func:`size_worm`; its efficiency must then be a number).
+    ``m_x=None`` sizes the stage (:func:`size_worm`; its efficiency a number, or ``"computed"`` with z2 given:
+    :func:`size_worm_computed` in the drive).
 
     >>> import geardesign as gd
     >>> s = gd.WormStage(m_x=4, q=12.5, z1=4, z2=50, a=125, efficiency=0.87, name="gear motor")   # seed 002's u
@@ -122,10 +126,10 @@ class WormStage:
         # the worm is as long as its mesh needs (b_1 = b_1min): that check holds by construction unless asked for
         object.__setattr__(self, "checks", {"worm_length_min": False, **(self.checks or {})})
         _checks.make_checks(kind="worm", **self.checks)      # the options checked now, by name
-        if self.m_x is None and not isinstance(self.efficiency, (int, float)):
+        if self.m_x is None and not isinstance(self.efficiency, (int, float)) and self.efficiency != "computed":
             raise GearDesignError(f"worm stage '{self.name}': a stage sized by its load (m_x=None) needs its "
-                                  f"efficiency as a number in (0, 1] (the size depends on the torque, the torque on "
-                                  f"the efficiency), got {self.efficiency!r}")
+                                  f"efficiency as a number in (0, 1] or 'computed' (sized and computed together, "
+                                  f"docs/worm_rating.md), got {self.efficiency!r}")
         if isinstance(self.efficiency, str):
             if self.efficiency != "computed":
                 raise GearDesignError(f"worm stage '{self.name}': efficiency must be a number in (0, 1] or "
@@ -144,11 +148,20 @@ class WormStage:
         else:
             object.__setattr__(self, "efficiency", _efficiency(_EFFICIENCY[0](self.pair())))
 
-    def at_speed(self, n1_rpm: float) -> "WormStage":
+    def at_speed(self, n1_rpm: float, torque_out=None) -> "WormStage":
         """The stage with ``efficiency='computed'`` given its number: the worm-driving mesh efficiency η_z of its
         pair at the worm speed ``n1_rpm`` (:meth:`WormPair.efficiency`: the sliding speed's friction, AGMA 6034 as
         Shigley prints it; docs/worm_rating.md). A drive does this with the speed its power flow gives the stage;
-        the mesh efficiency does not depend on the load, and the speeds do not depend on the efficiencies."""
+        the mesh efficiency does not depend on the load, and the speeds do not depend on the efficiencies.
+
+        A stage sized by its load (``m_x=None``) needs ``torque_out``, the wheel torque (N·m) its drive gives it
+        as a function of its efficiency: it is sized and its efficiency computed together
+        (:func:`size_worm_computed`), and the stage returned has its size and its efficiency."""
+        if self.m_x is None:
+            if torque_out is None:
+                raise GearDesignError(f"worm stage '{self.name}' is sized by its load (m_x=None): its computed "
+                                      "efficiency needs the torque out of it (torque_out, a function of η)")
+            return size_worm_computed(self, n1_rpm, torque_out)
         eta = float(self.pair().efficiency(n1_rpm)["eta_z"])
         return replace(self, efficiency=eta, efficiency_n1_rpm=float(n1_rpm))
 
@@ -295,6 +308,54 @@ def size_worm(stage: WormStage, z2: int, n1_rpm: float, torque_out_nm: float) ->
         smaller = (f"a {cand['a'][j]:g} mm, m_x {cand['m_x'][j]:g} mm, q {cand['q'][j]:g}", "agma_load")
     return WormSizing(feasible, float(cand["m_x"][i]), float(cand["q"][i]), float(cand["a"][i]), float(cand["x2"][i]),
                       float(cap[0]), S, smaller)
+
+
+SIZING_ROUNDS = 12     # rounds of size_worm_computed's fixed point before it gives up
+
+
+def size_worm_computed(stage: WormStage, n1_rpm: float, torque_out) -> WormStage:
+    """A stage sized by its load (``m_x=None``) with ``efficiency='computed'``: its size and its efficiency found
+    together, the size depending on the wheel torque and the torque (with the input power given) on the
+    efficiency. ``torque_out(eta)`` gives the wheel torque (N·m) at the stage's efficiency η (the drive's power
+    flow); ``n1_rpm`` the worm speed (the speeds do not depend on the efficiencies).
+
+    A bounded fixed point: the first round sizes the stage (:func:`size_worm`) at η = 1, the largest torque the
+    input power can give; each round then computes the mesh efficiency η_z of the size found at the stage's speed
+    (:meth:`WormStage.at_speed`) and sizes again at the torque that η_z gives, until the size (a, m_x, q) is the
+    one of the round before: that size carries the torque its own efficiency gives. A size seen before that is not
+    the last (a cycle), or no settled size in :data:`SIZING_ROUNDS` rounds, is refused by name (give the
+    efficiency as a number). Returns the stage with its size (``m_x``, ``q``, ``a``), ``efficiency`` (η_z of that
+    size at ``n1_rpm``) and ``efficiency_n1_rpm``."""
+    if stage.z2 is None:
+        raise GearDesignError(f"worm stage '{stage.name}': efficiency='computed' needs z2 (the wheel it is "
+                              "computed for)")
+    if not callable(torque_out):
+        raise GearDesignError(f"torque_out must be a function of the stage's efficiency, got "
+                              f"{type(torque_out).__name__}")
+    n1 = one_number("n1_rpm", require_positive("n1_rpm", n1_rpm, unit="rpm"))
+    s_min = float(stage.checks.get("S_AGMAmin", 1.0))
+    eta, seen, rated, holds = 1.0, [], None, {}
+    for _ in range(SIZING_ROUNDS):
+        sz = size_worm(stage, stage.z2, n1, torque_out(eta))
+        size = (sz.a, sz.m_x, sz.q)
+        if seen and size == seen[-1]:
+            return rated
+        if size in seen:
+            cycle = seen[seen.index(size):]
+            shown = " → ".join(f"a {a:g} mm (m_x {m:g}, q {q:g})" for a, m, q in cycle + [size])
+            good = [c for c in cycle if holds[c]]
+            hint = (f"; a {good[0][0]:g} mm (m_x {good[0][1]:g}, q {good[0][2]:g}) carries the torque its own "
+                    f"efficiency gives: give that size with efficiency='computed', or" if good else "; give")
+            raise GearDesignError(f"worm stage '{stage.name}': efficiency='computed' does not settle on one size: "
+                                  f"sized by its load at its own efficiency the size cycles {shown}{hint} the "
+                                  "efficiency as a number")
+        seen.append(size)
+        rated = replace(stage, m_x=sz.m_x, q=sz.q, a=sz.a).at_speed(n1)
+        eta = rated.efficiency
+        holds[size] = sz.T2_all >= s_min * torque_out(eta) * (1.0 - 1e-12)
+    raise GearDesignError(f"worm stage '{stage.name}': efficiency='computed' did not settle on one size in "
+                          f"{SIZING_ROUNDS} rounds (sizes a = {', '.join(f'{s[0]:g}' for s in seen)} mm); give the "
+                          "efficiency as a number")
 
 
 def _geometry(stage: WormStage, z2) -> dict:

@@ -421,17 +421,18 @@ def rate_geometry(T2, n1, geo: dict, *, l_1=None, mu=None, mu_static=None, E_1=E
     if casting is not None and "b_2" in geo:
         b_2 = float(geo["b_2"][0])
         src = "ANSI/AGMA 6034-B92 as Shigley ch. 15 prints it"
-        C_s = row("C_s", agma.materials_factor(a, d_2, casting), "", f"materials factor, {casting}-cast bronze wheel "
-                  f"(lbf/in^1.8; {src}, Eqs. 15-32…15-35)")
-        C_m = row("C_m", agma.ratio_correction_factor(u), "", f"ratio correction factor ({src}, Eq. 15-36)")
-        C_v = row("C_v", agma.velocity_factor(v_g), "", f"velocity factor at v_g ({src}, Eq. 15-37)")
-        F_e = row("F_e", agma.effective_face_width(b_2, d_m1), "mm", "min(b_2, 0.67 d_m1) (Shigley §15-6)")
-        W_all = row("W_t_all", agma.allowable_tangential_load(C_s, d_2, F_e, C_m, C_v), "N",
-                    f"C_s D_m^0.8 F_e C_m C_v ({src}, Eq. 15-28)")
-        W_t = row("W_t", agma.design_tangential_load(T2, d_2, eta, application_factor), "N",
+        load = agma.agma_load_float(a, d_2, d_m1, b_2, u, v_g, gamma, alpha_n_deg, mu_v, T2, eta, casting,
+                                    application_factor)
+        row("C_s", load["C_s"], "", f"materials factor, {casting}-cast bronze wheel (lbf/in^1.8; {src}, "
+            "Eqs. 15-32…15-35)")
+        row("C_m", load["C_m"], "", f"ratio correction factor ({src}, Eq. 15-36)")
+        row("C_v", load["C_v"], "", f"velocity factor at v_g ({src}, Eq. 15-37)")
+        row("F_e", load["F_e"], "mm", "min(b_2, 0.67 d_m1) (Shigley §15-6)")
+        W_all = row("W_t_all", load["W_t_all"], "N", f"C_s D_m^0.8 F_e C_m C_v ({src}, Eq. 15-28)")
+        W_t = row("W_t", load["W_t"], "N",
                   "K_A F_t2/eta_z (Shigley Eq. 15-58 without its design factor; K_A = application_factor given)")
-        W_f = row("W_f", agma.friction_force(F_t2, mu_v, gamma, alpha_n_deg), "N", "mu W_t2/(cos α_n cos γ_m − mu sin γ_m) (Shigley §15-6)")
-        row("P_f", agma.friction_power(W_f, v_g), "W", "|W_f| v_g (Shigley §15-6)")
+        row("W_f", load["W_f"], "N", "mu W_t2/(cos α_n cos γ_m − mu sin γ_m) (Shigley §15-6)")
+        row("P_f", load["P_f"], "W", "|W_f| v_g (Shigley §15-6)")
         S_A = row("S_AGMA", W_all / W_t, "", "W_t_all/W_t (AGMA 6034-B92 load; lives over 25 000 h, Shigley §15-8)")
     elif casting is not None:
         notes.append("S_AGMA not computed: give the wheel's face width b_2 with the casting")

@@ -255,10 +255,134 @@ def test_the_sized_scene_runs_from_the_command_line(capsys):
 @pytest.mark.parametrize("kw, word", [
     (dict(m_x=None, q=None, z1=2, z2=25, efficiency=0.87), "casting"),
     (dict(m_x=4, q=None, z1=2, z2=25, efficiency=0.87), "q is needed"),
-    (dict(m_x=None, q=None, z1=2, z2=25, efficiency="computed", casting="sand"), "efficiency"),
+    (dict(m_x=None, q=None, z1=2, z2=25, efficiency=None, casting="sand"), "efficiency"),
+    (dict(m_x=None, q=None, z1=2, z2=25, efficiency="auto", casting="sand"), "efficiency"),
+    (dict(m_x=None, q=None, z1=2, efficiency="computed", casting="sand"), "needs z2"),
     (dict(m_x=4, q=10, z1=2, z2=25, efficiency=0.87, casting="bronze"), "casting"),
     (dict(m_x=4, q=10, z1=2, z2=25, efficiency=0.87, casting="sand", application_factor=0.5), "application_factor"),
 ])
 def test_bad_sizing_input_is_refused_by_name(kw, word):
     with pytest.raises(gd.GearDesignError, match=word):
         WormStage(**kw)
+
+
+# -- sized by its load with its efficiency computed (a fixed point of size and efficiency) ----------------------------
+def _own_efficiency(stage, n1):
+    """η_z of the stage's own pair at the worm speed n1, by the efficiency functions called on its geometry
+    (tan γ_m/tan(γ_m + ρ'), μ from the AGMA curve at the sliding speed: tests/gears/worm/test_efficiency.py checks
+    them against an independent implementation)."""
+    from geardesign.gears.worm import efficiency as eff
+    g = stage.pair().geometry()
+    v = eff.sliding_speed(g.d_m1, n1, g.gamma_m_deg)
+    return float(eff.efficiency_worm_driving(g.gamma_m_deg, eff.friction_coefficient_agma(v), g.alpha_n_deg))
+
+
+def _capacity(stage, n1):
+    """The allowable wheel torque of the stage's own pair at n1 (AGMA 6034-B92, agma_capacity on its geometry)."""
+    from geardesign.gears.worm import agma
+    geo = stage.pair().geometry().to_dict()
+    return float(agma.agma_capacity(geo, n1, stage.casting, stage.application_factor)["T2_all"])
+
+
+# (moves: the size at η = 1, the first round's, is not the settled one: the fixed point took more than one step)
+@pytest.mark.parametrize("power_kw, casting, z1, z2, moves", [
+    (4.0, "centrifugal", 2, 25, False), (0.5, "centrifugal", 2, 25, True), (3.0, "chill", 2, 60, True),
+    (4.0, "sand", 4, 50, True), (45.0, "sand", 4, 50, False)])
+def test_a_sized_stage_with_computed_efficiency_carries_the_torque_its_own_efficiency_gives(power_kw, casting, z1, z2,
+                                                                                           moves):
+    from geardesign.drives.stage_kinds.worm import size_worm
+
+    st = WormStage(None, None, z1=z1, z2=z2, efficiency="computed", casting=casting, name="gear motor")
+    before = gd.GivenStage(2.0, 0.95, "belt")             # the worm at 725 rpm, 95 % of the power
+    d = gd.Drive(power_kw=power_kw, n_in_rpm=1450, stages=[before, st])
+    w = d.stages[1]
+    n1 = 1450 / 2.0
+    assert w.m_x is not None and w.efficiency_n1_rpm == n1
+    # its efficiency is its own pair's at its speed
+    assert w.efficiency == pytest.approx(_own_efficiency(w, n1), rel=1e-12)
+    # the torque that efficiency gives, by hand: P·η_belt/ω_worm·u·η
+    T_out = power_kw * 1000 * 0.95 / (n1 * math.pi / 30) * (z2 / z1) * w.efficiency
+    assert _capacity(w, n1) >= T_out
+    a = d.analyse()
+    assert a.flow["torque_nm"].iloc[-1] == pytest.approx(T_out, rel=1e-12)
+    margin = a.checks.set_index("check").loc["agma_load", "margin"]
+    assert margin >= 0 and margin == pytest.approx(_capacity(w, n1) / T_out - 1, rel=1e-9)
+    # a fixed point: sized again at that torque, the same size (the smallest series size that carries it)
+    sz = size_worm(st, z2, n1, T_out)
+    assert (sz.a, sz.m_x, sz.q) == (w.a, w.m_x, w.q)
+    first = size_worm(st, z2, n1, T_out / w.efficiency)     # the torque at η = 1
+    assert ((first.a, first.m_x, first.q) != (w.a, w.m_x, w.q)) == moves
+
+
+def test_with_the_output_torque_given_the_size_is_the_torques_and_the_efficiency_its_own():
+    from geardesign.drives.stage_kinds.worm import size_worm
+
+    st = WormStage(None, None, z1=2, z2=25, efficiency="computed", casting="sand", name="worm")
+    chain = gd.ChainStage(z1=13, z2=26, name="chain", efficiency=0.96)
+    d = gd.Drive(output_torque_nm=600.0, n_in_rpm=1500, stages=[st, chain])
+    w = d.stages[0]
+    T_worm = 600.0 / (2.0 * 0.96)                        # the chain's u = 2, η = 0.96: the worm's wheel torque
+    sz = size_worm(st, 25, 1500.0, T_worm)
+    assert (w.a, w.m_x, w.q) == (sz.a, sz.m_x, sz.q)
+    assert w.efficiency == pytest.approx(_own_efficiency(w, 1500.0), rel=1e-12)
+    # a free stage after it would give it a torque per design: refused by name
+    with pytest.raises(gd.GearDesignError, match="stages after it must have fixed ratios"):
+        gd.Drive(output_torque_nm=600.0, n_in_rpm=1500, stages=[st, gd.ChainStage(name="chain")])
+
+
+def test_the_search_takes_the_sized_stage_at_its_computed_efficiency():
+    st = WormStage(None, None, z1=2, z2=25, efficiency="computed", casting="centrifugal", name="worm")
+    drive = gd.Drive(power_kw=4, n_in_rpm=1500, stages=[st, gd.ChainStage(name="chain", k_e=2.148)])
+    r = drive.optimize(total_ratio=25, ratio_tol=0.03, objective="min_size")
+    assert r.success
+    w = r.best.drive.stages[0]
+    assert w.efficiency == pytest.approx(_own_efficiency(w, 1500.0), rel=1e-12)
+    T_out = r.best.stages[0]["flow"].torque_out_nm
+    assert T_out == pytest.approx(4000 / (1500 * math.pi / 30) * 12.5 * w.efficiency, rel=1e-12)
+    assert _capacity(w, 1500.0) >= T_out
+    assert r.best.checks.set_index(["item", "check"]).loc[("worm", "agma_load"), "margin"] >= 0
+
+
+def test_a_size_that_cycles_or_does_not_settle_is_refused_by_name(monkeypatch):
+    from geardesign.drives.stage_kinds import worm
+
+    # chill-cast 2/60 at 2.3 kW, 1450 rpm: a 125 mm worm (q 20, low lead angle) carries the torque its efficiency
+    # gives with room to spare, a 100 mm one (q 8) would carry that torque but not its own higher efficiency's
+    st = WormStage(None, None, z1=2, z2=60, efficiency="computed", casting="chill", name="hoist")
+    with pytest.raises(gd.GearDesignError, match="'hoist'.*does not settle.*cycles a 125 mm.*a 100 mm") as err:
+        gd.Drive(power_kw=2.3, n_in_rpm=1450, stages=[st])
+    # the size it names as carrying its own efficiency's torque does
+    assert "a 125 mm (m_x 3.15, q 20) carries" in str(err.value)
+    held = WormStage(3.15, 20, z1=2, z2=60, a=125, efficiency="computed", casting="chill", name="hoist")
+    a = gd.Drive(power_kw=2.3, n_in_rpm=1450, stages=[held]).analyse()
+    assert a.success and a.checks.set_index("check").loc["agma_load", "margin"] >= 0
+    # a bound on the rounds: with one round allowed, a stage that needs a second is refused
+    monkeypatch.setattr(worm, "SIZING_ROUNDS", 1)
+    with pytest.raises(gd.GearDesignError, match="did not settle on one size in 1 rounds"):
+        gd.Drive(power_kw=4, n_in_rpm=1500, stages=[WormStage(None, None, z1=2, z2=25, efficiency="computed",
+                                                             casting="centrifugal")])
+    # at_speed of a sized stage needs the torque
+    with pytest.raises(gd.GearDesignError, match="torque_out"):
+        st.at_speed(1450.0)
+
+
+def test_a_scene_sizes_and_computes_the_worm_together_and_a_cycle_exits_2(tmp_path, capsys):
+    import json
+    from pathlib import Path
+
+    from geardesign.cli import main
+
+    text = (Path(__file__).resolve().parents[3] / "studies" / "scenes" / "seed002_worm_sized.toml").read_text()
+    scene = tmp_path / "computed.toml"
+    scene.write_text(text.replace("efficiency = 0.87", 'efficiency = "computed"'))
+    assert main(["drive", str(scene), "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    worm = out["analysis"]["stages"][0] if "analysis" in out else out["stages"][0]
+    st = WormStage(worm["m_x"], worm["q"], 2, 25, a=worm["a"], efficiency=0.5, casting="centrifugal")
+    assert worm["efficiency"] == pytest.approx(_own_efficiency(st, 1500.0), rel=1e-12) and worm["S_AGMA"] >= 1.0
+    cyc = tmp_path / "cycle.toml"
+    cyc.write_text('[drive]\npower_kw = 2.3\nn_in_rpm = 1450\n\n[[drive.stage]]\nkind = "worm"\nname = "hoist"\n'
+                   'z1 = 2\nz2 = 60\ncasting = "chill"\nefficiency = "computed"\n')
+    assert main(["drive", str(cyc)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "'hoist'" in err[0] and "does not settle" in err[0]

@@ -232,3 +232,59 @@ def test_the_torque_a_pair_carries_is_where_the_rating_reaches_its_minimum():
     assert p.allowable_torque(1500.0, "chill") == p.allowable_torque(1500.0, "centrifugal") > p.allowable_torque(1500.0)
     # slower, the velocity factor rises: more torque
     assert p.allowable_torque(500.0) > p.allowable_torque(1500.0)
+
+
+# -- the one-design float path against the array functions ------------------------------------------------------
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+def _array_chain(a, d_2, d_m1, b_2, u, v_g, gamma, alpha, mu, T2, eta, casting, K_A):
+    """The AGMA row from the public array functions, one after another as the rating chained them before."""
+    C_s = agma.materials_factor(a, d_2, casting)
+    C_m = agma.ratio_correction_factor(u)
+    C_v = agma.velocity_factor(v_g)
+    F_e = agma.effective_face_width(b_2, d_m1)
+    F_t2 = mesh_forces(T2, d_2, gamma, alpha, 0.0)[0]
+    W_f = agma.friction_force(F_t2, mu, gamma, alpha)
+    return {"C_s": C_s, "C_m": C_m, "C_v": C_v, "F_e": F_e,
+            "W_t_all": agma.allowable_tangential_load(C_s, d_2, F_e, C_m, C_v),
+            "W_t": agma.design_tangential_load(T2, d_2, eta, K_A), "W_f": W_f, "P_f": agma.friction_power(W_f, v_g)}
+
+
+@settings(max_examples=300, deadline=None)
+@given(m_x=st.floats(0.5, 25.0), q=st.floats(5.0, 20.0), z1=st.integers(1, 4), u=st.floats(3.0, 170.0),
+       x2=st.floats(-1.0, 1.0), b_ratio=st.floats(0.3, 1.5), v_g=st.floats(0.001, 40.0),
+       alpha=st.floats(0.0, 30.0), mu=st.floats(0.0, 0.2), T2=st.floats(0.0, 1e5), eta=st.floats(0.3, 1.0),
+       casting=st.sampled_from(agma.CASTINGS), K_A=st.floats(1.0, 3.0))
+def test_the_float_path_is_the_array_path_on_random_designs(m_x, q, z1, u, x2, b_ratio, v_g, alpha, mu, T2, eta,
+                                                            casting, K_A):
+    """agma_load_float (math) and the public array functions (numpy) on one design agree to 1e-12 relative
+    (they share the factors' code; numpy's and the C library's exp/log10/cos may differ by an ulp), and a design
+    the array functions refuse the float path refuses by the same name."""
+    z2 = z1 * u
+    d_m1, d_2 = q * m_x, z2 * m_x
+    a = (d_m1 + d_2) / 2.0 + x2 * m_x
+    gamma = math.degrees(math.atan2(z1, q))
+    args = (a, d_2, d_m1, b_ratio * d_m1, u, v_g, gamma, alpha, mu, T2, eta, casting, K_A)
+    try:
+        want = _array_chain(*args)
+    except GearDesignError as refused:      # e.g. C_s <= 0 on a wheel of several metres: refused the same way
+        with pytest.raises(GearDesignError, match=str(refused).split(" must ")[0]):
+            agma.agma_load_float(*args)
+        return
+    got = agma.agma_load_float(*args)
+    assert set(got) == set(agma.LOAD_FIELDS) and all(type(v) is float for v in got.values())
+    for k in agma.LOAD_FIELDS:
+        assert got[k] == pytest.approx(float(want[k]), rel=1e-12, abs=1e-300), k
+
+
+@pytest.mark.parametrize("bad, word", [({"u": 2.0}, "u (gear ratio)"), ({"v_g": 0.0}, "v_g"),
+                                       ({"casting": "die"}, "casting"), ({"mu": 2.0}, "mu"),
+                                       ({"application_factor": 0.5}, "application_factor"),
+                                       ({"T2": math.nan}, "T2"), ({"a": -1.0}, "a (center distance)")])
+def test_the_float_path_refuses_what_the_array_functions_refuse(bad, word):
+    kw = dict(a=160.0, d_2=250.0, d_m1=62.5, b_2=45.0, u=12.5, v_g=5.0, gamma_m_deg=17.7, alpha_n_deg=20.0,
+              mu=0.03, T2=800.0, eta=0.9, casting="sand", application_factor=1.0) | bad
+    with pytest.raises(GearDesignError, match=word.replace("(", r"\(").replace(")", r"\)")):
+        agma.agma_load_float(**kw)
