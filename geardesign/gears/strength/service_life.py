@@ -34,6 +34,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import one_number, require_choice, require_finite, require_range
+from ..mesh import Mesh, mesh_of
 from ..spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES, LoadSpectrum
 from . import root_factors as rf
 from .blocks import BLOCK
@@ -224,8 +225,9 @@ def _mean_stress(value, reverses) -> tuple:
     return tuple(one_number("mean_stress_factor", require_range("mean_stress_factor", v, *MEAN_STRESS_FACTOR_RANGE)) for v in pair)
 
 
-def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2=None, face_width_mm,
-              life_h=None, sn_curve: str = "iso", mean_stress_factor=None, bins: bool = False, **options) -> dict:
+def pair_life(m, z1=None, z2=None, x1=0.0, x2=0.0, *, spectrum: LoadSpectrum, material1, material2=None,
+              face_width_mm=None, life_h=None, sn_curve: str = "iso", mean_stress_factor=None, bins: bool = False,
+              mesh: Mesh | None = None, **options) -> dict:
     """ISO 6336-6 service life of gear pairs under ``spectrum`` (a :class:`~geardesign.gears.spectrum.LoadSpectrum`),
     vectorised over designs like :func:`~geardesign.gears.strength.chain.pair_strength` (m, z1, z2, x1, x2 and the
     face width broadcast; ``options`` are its options: accuracy grade, lubricant, given factors, ``geometry``, ...).
@@ -238,8 +240,21 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     factors for the required life: the factor on the stresses that makes D = 1; one design only); ``bins=True``
     adds the chain's per-bin fields (``bin_<field>``, shape designs × bins) and each bin's ``N_<mode>`` and
     ``n<gear>`` cycles.
+    ``mesh``: a :class:`~geardesign.gears.mesh.Mesh` instead of z1, z2, ``rack``, ``tip_shortening``, ``beta_deg``,
+    ``internal`` and ``face_width_mm``, as :func:`~geardesign.gears.strength.chain.pair_strength` takes it (giving
+    both ways is refused by name).
     """
     from .chain import _material, pair_strength
+
+    if mesh is not None or z1 is None or z2 is None:
+        mesh = mesh_of(mesh, z1, z2, options.get("rack"), options.get("tip_shortening", True),
+                       options.get("beta_deg", 0.0), options.get("internal", False), face_width_mm)
+        z1, z2, face_width_mm = mesh.z1, mesh.z2, mesh.face_width_mm
+        options.update(rack=mesh.rack, tip_shortening=mesh.tip_shortening, beta_deg=mesh.beta_deg,
+                       internal=mesh.internal)
+    if face_width_mm is None:
+        raise GearDesignError("face_width_mm (mm) is needed for the service life: give it, or a mesh= with its "
+                              "face_width_mm")
 
     if not isinstance(spectrum, LoadSpectrum):
         raise GearDesignError(f"spectrum must be a geardesign LoadSpectrum, got {type(spectrum).__name__}")
