@@ -388,3 +388,20 @@ def test_pair_life_mesh_refusals_name_the_input(kw, words):
     spec = LoadSpectrum.from_bins([120, 60], 1000, time_h=[2000, 8000])
     with pytest.raises(GearDesignError, match=words):
         pair_life(3.0, x1=0.3, x2=0.1, spectrum=spec, material1="42CrMo4", **kw)
+
+
+def test_an_alternating_gear_bends_both_ways_in_every_bin():
+    # an idler or a planet: its teeth meet two mates on opposite flanks, so its root's limit is times Y_M
+    # (ISO 6336-3:2019's alternating bending) even under a one-sided spectrum; the other gear is rated one-sided
+    spec = LoadSpectrum.from_bins([800.0], 1000.0, time_h=[10000.0])
+    with pytest.raises(GearDesignError, match="gear 2's root bends both ways .*mean_stress_factor"):
+        _life(spec, alternating=(False, True))
+    with pytest.raises(GearDesignError, match="alternating must be two booleans"):
+        _life(spec, alternating=True, mean_stress_factor=0.7)
+    out = _life(spec, alternating=(False, True), mean_stress_factor=0.7)
+    ch = _chain(800.0)
+    n2 = 1000 * 60 * 10000 * 20 / 60                  # the wheel's revolutions
+    assert out["D_F2"] == pytest.approx(n2 / _root_N(ch["sigma_F2"] / (0.7 * ch["sigma_FG2"])), rel=1e-11)
+    assert out["D_F1"] == pytest.approx(60 * 1000 * 10000 / _root_N(ch["sigma_F1"] / ch["sigma_FG1"]), rel=1e-11)
+    # σ_F2/σ_FG2 ≈ 0.65 lies below the curve's end (0.85): no damage one-sided, some with the limit times 0.7
+    assert out["D_F2"] > 0.0 == _life(spec)["D_F2"]
