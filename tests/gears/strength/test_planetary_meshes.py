@@ -60,7 +60,8 @@ def test_a_one_bin_spectrum_gives_each_mesh_the_life_its_strength_has():
 
     s = PlanetarySet.coaxial(2, 20, 31, 82, 3, 0.3, 0.1)
     spec = gd.LoadSpectrum.from_bins([40.0], 1500, time_h=[10000.0])
-    t = s.checks({"spectrum": spec, "material": "42CrMo4", "face_width_mm": 25.0}).set_index("check")["value"]
+    t = s.checks({"spectrum": spec, "material": "42CrMo4", "face_width_mm": 25.0, "mean_stress_factor": 0.7}
+                 ).set_index("check")["value"]
     for gear, name in ((1, "sun-planet:pitting_damage_sun"), (2, "sun-planet:pitting_damage_planet")):
         D = float(t[name])
         assert 1.0 < D < 1e4
@@ -135,3 +136,22 @@ def test_planetary_life_refusals_name_the_input():
         planetary_life(s, spec, "18CrNiMo7-6", face_width_mm=25.0, mean_stress_factor=0.7, alternating=(1, 1))
     with pytest.raises(GearDesignError, match="material is needed"):
         planetary_life(s, spec, face_width_mm=25.0, mean_stress_factor=0.7)
+
+
+def test_the_sets_damage_checks_bend_the_planets_root_both_ways():
+    """The set's damage checks (the solvers' route): with a one-sided spectrum each mesh loads one flank of the planet,
+    so each mesh's root check is one fillet's sum, planetary_life's (alternating: the limit times Y_M); without Y_M
+    the checks are refused by name (the planet always bends both ways), and alternating is the set's, not the
+    caller's."""
+    s = PlanetarySet.coaxial(2, 20, 31, 82, 3)
+    spec = LoadSpectrum.from_bins([600.0, 450.0, 250.0], 1500.0, time_h=[2000.0, 5000.0, 3000.0])
+    case = {"spectrum": spec, "material": "18CrNiMo7-6", "face_width_mm": 25.0}
+    t = s.checks({**case, "mean_stress_factor": 0.7}).set_index("check")["value"]
+    want = planetary_life(s, spec, "18CrNiMo7-6", face_width_mm=25.0, mean_stress_factor=0.7)["planet_flanks"]
+    assert float(t["sun-planet:root_damage_planet"]) == pytest.approx(want["F"][0], rel=1e-9)
+    assert float(t["planet-ring:root_damage_planet"]) == pytest.approx(want["F"][1], rel=1e-9)
+    assert float(t["sun-planet:pitting_damage_planet"]) == pytest.approx(want["H"][0], rel=1e-9)
+    with pytest.raises(GearDesignError, match="gear 2's root bends both ways .*mean_stress_factor"):
+        s.checks(case)
+    with pytest.raises(GearDesignError, match="alternating is the set's own"):
+        s.checks({**case, "mean_stress_factor": 0.7, "alternating": (False, False)})
