@@ -22,7 +22,8 @@ upward there and the result flags the bin (``static_exceeded``).
 Alternating bending: a tooth whose flanks are both loaded (a spectrum with negative torques) bends its root
 both ways; ISO 6336-3:2019 reduces its bending strength by a mean stress influence factor Y_M. Its formula was
 not found in a source we could read, so Y_M is the caller's (``mean_stress_factor``, one per gear) and a
-reversing spectrum without it is refused, never rated as one-sided.
+reversing spectrum without it is refused, never rated as one-sided. A gear whose teeth meet two mates on opposite
+flanks (an idler, a planet) bends both ways whatever the spectrum's sign (``alternating``).
 """
 from __future__ import annotations
 
