@@ -371,6 +371,9 @@ def _mesh_options(opts: dict, meshes: PlanetaryMeshes, arrangement: str) -> tupl
         raise GearDesignError("material2 is a pair's; a planetary set takes material (every gear) and "
                               "planet_material, ring_material")
     own = {k: opts.pop(k) for k in SET_MATERIALS if k in opts}
+    if "alternating" in opts:
+        raise GearDesignError("alternating is the set's own: the planet's root bends both ways (it meets the sun on "
+                              "one flank and the ring on the other), the sun's and the ring's one way")
     if opts.get("load") is None and opts.get("spectrum") is None:
         if any(v is not None for v in own.values()):
             raise GearDesignError(f"{', '.join(k for k, v in own.items() if v is not None)} given without a load: "
@@ -406,6 +409,9 @@ def _mesh_options(opts: dict, meshes: PlanetaryMeshes, arrangement: str) -> tupl
         if spectra is not None:
             parts = [s[tag][0] for s in spectra]
             mesh["spectrum"] = parts if isinstance(opts["spectrum"], (list, tuple)) else parts[0]
+            # the planet is an idler between sun and ring: its root bends both ways once per relative revolution,
+            # so its limit is times Y_M (ISO 6336-3:2019's alternating bending) in both meshes' damage checks
+            mesh["alternating"] = (False, True) if tag == "sun-planet" else (True, False)
         out.append(mesh)
     return tuple(out)
 

@@ -188,6 +188,20 @@ def _spectrum(where, path: Path, gear: dict, engine) -> None:
         where.fail("gear.spectrum", "file", str(exc))
 
 
+def _planetary_spectrum(where, path: Path, spec: dict) -> None:
+    """[planetary.spectrum]'s file (relative to the scene) read into ``spec["_spectrum"]``, the sun's bins; a bad
+    file fails naming the key."""
+    from ..gears.spectrum import LoadSpectrum
+
+    name = spec["file"]
+    csv = (path.parent / name) if not Path(name).is_absolute() else Path(name)
+    try:
+        spec["_spectrum"] = LoadSpectrum.from_csv(csv, n_rpm=spec.get("n_rpm"), duration_h=spec.get("duration_h",
+                                                  spec.get("life_h")), on_gear=1)
+    except GearDesignError as exc:
+        where.fail("planetary.spectrum", "file", str(exc))
+
+
 SPECTRUM_LEVELS = 48      # classes per sign of the engine's torque counted per tooth (as LoadSpectrum.from_curve)
 
 
@@ -275,4 +289,6 @@ def load_scene(path) -> Scene:
         sections["chain"]["catalog"] = _chain_catalog(where, path, sections["chain"]["catalog"])
     if "spectrum" in sections.get("gear", {}):
         _spectrum(where, path, sections["gear"], sections.get("engine"))
+    if "spectrum" in sections.get("planetary", {}):
+        _planetary_spectrum(where, path, sections["planetary"]["spectrum"])
     return Scene(str(path), head.get("title", path.stem), head.get("description", ""), sections)

@@ -205,7 +205,25 @@ def _planetary_schema() -> dict:
             "z_sun_range": _Key("ints", default=(12, 40), lo=Z_SUN_RANGE_LIMIT[0], hi=Z_SUN_RANGE_LIMIT[1], length=2),
             "nonstandard_max": _I(default=2, lo=NONSTANDARD_MAX_RANGE[0], hi=NONSTANDARD_MAX_RANGE[1]),
             "drawing": _Key("bool", default=True), "top": _I(default=10, lo=1, hi=1000),
-            "checks": checks, "rack": _rack_schema()}
+            "checks": checks, "rack": _rack_schema(), "spectrum": _planetary_spectrum_schema()}
+
+
+def _planetary_spectrum_schema() -> dict:
+    """[planetary.spectrum]: a load spectrum on the sun (ISO 6336-6), spelled as [gear.spectrum] (a CSV ``file``
+    relative to the scene, ``n_rpm``, ``duration_h``, ``life_h``, ``sn_curve``, ``mean_stress_factor``), with the
+    set's materials (``material``, ``planet_material``, ``ring_material``) and the meshes' ``face_width_mm``; Y_M is
+    needed (the planet's root bends both ways). The damage checks of both meshes join the set's checks
+    (docs/life.md)."""
+    from ..gears.mesh import FACE_WIDTH_RANGE_MM
+
+    spec = _spectrum_schema()
+    for k in ("levels", "on_gear", "material2"):     # the sun carries it; no [engine] curve; a set's materials
+        spec.pop(k)
+    spec["file"] = _Key("str", required=True)
+    spec["mean_stress_factor"] = _F(required=True, lo=spec["mean_stress_factor"].lo, hi=spec["mean_stress_factor"].hi)
+    spec.update(planet_material=_Key("str"), ring_material=_Key("str"),
+                face_width_mm=_F(required=True, lo=FACE_WIDTH_RANGE_MM[0], hi=FACE_WIDTH_RANGE_MM[1], lo_open=True))
+    return spec
 
 
 def _chain_schema() -> dict:

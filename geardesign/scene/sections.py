@@ -321,6 +321,12 @@ def _run_planetary(rep: SceneReport, p: dict):
     from ..gears.planetary import PlanetarySet
 
     checks = dict(p.get("checks") or {})
+    spectrum = p.get("spectrum")
+    if spectrum:   # the damage checks of both meshes (ISO 6336-6), the sun's bins shared over the planets
+        checks.update(spectrum=spectrum["_spectrum"], material=spectrum["material"],
+                      face_width_mm=spectrum["face_width_mm"], life_h=spectrum.get("life_h"),
+                      sn_curve=spectrum["sn_curve"], mean_stress_factor=spectrum["mean_stress_factor"],
+                      **{k: spectrum[k] for k in ("planet_material", "ring_material") if k in spectrum})
     kw = dict(rack=p["_rack"], beta_deg=p["beta_deg"])
     if "ratio" in p:
         from ..shifts.planetary_teeth import DEFAULT_OBJECTIVE, select_planetary_teeth
@@ -364,6 +370,8 @@ def _run_planetary(rep: SceneReport, p: dict):
                      f"{p['n_planets']} planets, m = {p['module']:g} mm", "", head, "", md_table(table), ""]
     if "planetary_region" in rep.figures:
         rep.markdown += ["![feasible (x_sun, x_planet) region](planetary_region.png)", ""]
+    if spectrum and s is not None:
+        _planetary_life(rep, s, spectrum)
     if s is not None and p["drawing"]:
         from ..profiles.planetary import plot_planetary
 
@@ -371,6 +379,26 @@ def _run_planetary(rep: SceneReport, p: dict):
         rep.figures["planetary_set"] = plot_planetary(s).figure
         rep.markdown += ["![the set along its axis](planetary_set.png)", ""]
     rep.summary.append("planetary: " + head)
+
+
+def _planetary_life(rep: SceneReport, s, spectrum: dict):
+    """The set's life under [planetary.spectrum] (ISO 6336-6; the planet over both its meshes): a table of each
+    gear's damage sums and lives."""
+    import pandas as pd
+
+    from ..gears.strength.planetary_meshes import planetary_life
+
+    r = planetary_life(s, spectrum["_spectrum"], spectrum["material"], face_width_mm=spectrum["face_width_mm"],
+                       mean_stress_factor=spectrum["mean_stress_factor"], life_h=spectrum.get("life_h"),
+                       sn_curve=spectrum["sn_curve"], planet_material=spectrum.get("planet_material"),
+                       ring_material=spectrum.get("ring_material"))
+    table = pd.DataFrame([{"gear": gear, "mode": "pitting" if mode == "H" else "root", "D": r[f"D_{mode}_{gear}"],
+                           "life_h": r[f"life_h_{mode}_{gear}"]}
+                          for gear in ("sun", "planet", "ring") for mode in ("H", "F")])
+    rep.tables["planetary_life"] = table
+    rep.markdown += [f"### Service life under the sun's spectrum (ISO 6336-6), required {r['required_life_h']:.6g} h",
+                     "", "The planet's pitting summed per flank over both meshes, its root as alternating bending "
+                     f"(Y_M = {spectrum['mean_stress_factor']:g}).", "", md_table(table), ""]
 
 
 def chain_kwargs(c: dict) -> dict:

@@ -6,7 +6,8 @@ The spectrum travels in the context of ``make_checks`` (so in a ``checks`` dict 
 tooth-count search) with what :func:`~geardesign.gears.strength.service_life.pair_life` needs: ``spectrum`` (a
 :class:`~geardesign.gears.spectrum.LoadSpectrum`, or a list of them: several load cases, each of which must hold),
 ``material`` (and ``material2``), ``face_width_mm``, ``strength`` (the chain's options), ``life_h`` (the required
-life; None: each spectrum's duration), ``sn_curve`` and ``mean_stress_factor``. The damage comes from the chain run
+life; None: each spectrum's duration), ``sn_curve``, ``mean_stress_factor`` and ``alternating`` (a gear whose root
+bends both ways whatever the spectrum's sign: an idler, a planet). The damage comes from the chain run
 over the spectrum's bins at the solver's own geometry, the gradients in (x1, x2) from central differences evaluated
 in the same call.
 """
@@ -28,7 +29,7 @@ DAMAGE_MAX = Option("damage_max", "limit", 1.0, "largest Miner damage sum D of e
                     range=(1e-6, 10.0), sweep=True)
 # the keywords of make_checks that describe a spectrum's load case (besides the strength checks' material, width
 # and options, which they share)
-DAMAGE_CONTEXT = ("spectrum", "life_h", "sn_curve", "mean_stress_factor")
+DAMAGE_CONTEXT = ("spectrum", "life_h", "sn_curve", "mean_stress_factor", "alternating")
 _MODES = ("H1", "H2", "F1", "F2")
 _FD_STEP = 1e-6
 
@@ -46,6 +47,7 @@ class DamageSpec:
     sn_curve: str = "iso"
     mean_stress_factor: object = None
     case: int = 1
+    alternating: tuple = (False, False)
 
     def width(self, geo: dict):
         """The face width of the designs of ``geo`` (the load case's, a per-design width, or the mesh's)."""
@@ -141,6 +143,7 @@ class DamageSpec:
                                         material1=self.material1, material2=self.material2,
                                         face_width_mm=b if np.ndim(b) == 0 else b[at], life_h=self.life_h,
                                         sn_curve=self.sn_curve, mean_stress_factor=self.mean_stress_factor,
+                                        alternating=self.alternating,
                                         beta_deg=mesh.beta_deg, internal=mesh.internal, rack=mesh.rack,
                                         tip_shortening=mesh.tip_shortening,
                                         geometry={**{k: v[at] for k, v in flat.items()}, "_z1": z1, "_z2": z2},
@@ -216,7 +219,7 @@ def damage_spec(context: dict) -> tuple:
                               f"{type(context['spectrum']).__name__}")
     from ...validate import one_number, require_choice, require_range
     from ..strength.load import LIFE_RANGE_H
-    from ..strength.service_life import SN_CURVES, _mean_stress
+    from ..strength.service_life import SN_CURVES, _alternating, _mean_stress
 
     mat1, mat2, width, frozen = pair_context(context, "damage")
     life = context.get("life_h")
@@ -224,10 +227,15 @@ def damage_spec(context: dict) -> tuple:
         life = one_number("life_h", require_range("life_h", life, *LIFE_RANGE_H, lo_open=True, unit="h"))
     sn = require_choice("sn_curve", context.get("sn_curve") or "iso", SN_CURVES)
     y_m = context.get("mean_stress_factor")
+    alternating = _alternating(context.get("alternating") or (False, False))
+    if y_m is None and any(alternating):
+        raise GearDesignError(f"gear {alternating.index(True) + 1}'s root bends both ways (alternating: its teeth meet "
+                              f"two mates on opposite flanks, as a planet's do): give mean_stress_factor=Y_M, the mean "
+                              f"stress influence factor of ISO 6336-3:2019 for alternating bending")
     for s in spectra:          # a reversing spectrum without Y_M refused here, once, not at every design
         _mean_stress(y_m, s.reverses)
     return tuple(DamageSpec(s, mat1, mat2, width, frozen, life, sn, y_m if y_m is None else _mean_stress(y_m, True),
-                            case=i) for i, s in enumerate(spectra, start=1))
+                            case=i, alternating=alternating) for i, s in enumerate(spectra, start=1))
 
 
 def _build_damage(cls, value, context: dict) -> list:

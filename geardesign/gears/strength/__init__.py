@@ -3,7 +3,8 @@
 One function per formula in :mod:`.factors` (ISO 6336-1), :mod:`.contact` and :mod:`.life` (ISO 6336-2),
 :mod:`.root` and :mod:`.root_factors` (ISO 6336-3), :mod:`.materials` (ISO 6336-5); the chain of a pair,
 vectorised, in :func:`pair_strength`; one pair as a :class:`StrengthResult` with :func:`strength`; each mesh of
-a planetary set with :func:`planetary_strength`.
+a planetary set with :func:`planetary_strength`; service life under a spectrum (ISO 6336-6) with :func:`pair_life` and,
+a set's with the planet over both its meshes, :func:`planetary_life`.
 """
 import importlib
 
@@ -12,7 +13,8 @@ import importlib
 _NAMES = {"GIVEN_FACTORS": "chain", "STRENGTH_FIELDS": "chain", "pair_strength": "chain", "strength": "chain",
           "MIN_SAFETY_SOURCE": "defaults", "S_FMIN": "defaults", "S_HMIN": "defaults", "Load": "load",
           "MATERIAL_KINDS": "materials", "Material": "materials", "material": "materials",
-          "material_names": "materials", "planetary_strength": "planetary_meshes", "StrengthResult": "result",
+          "material_names": "materials", "planetary_strength": "planetary_meshes",
+          "planetary_life": "planetary_meshes", "StrengthResult": "result",
           "StrengthOptions": "options", "pair_life": "service_life", "LifeResult": "life_result"}
 
 __all__ = sorted(_NAMES)

@@ -16,7 +16,7 @@ from .load import Load
 from .options import DEFAULT_OPTIONS, gathered
 from .result import StrengthResult, from_chain
 
-__all__ = ["planetary_strength", "mesh_loads", "mesh_spectra", "set_tips", "TIPS"]
+__all__ = ["planetary_strength", "planetary_life", "mesh_loads", "mesh_spectra", "set_tips", "TIPS"]
 
 # the tips planetary_strength may take: the set's unshortened tips, or the sun and planet shortened by the sun-planet
 # mesh's k·m (ISO 21771: tip alteration, as a pair's tips are); a dict of diameters gives them as made
@@ -199,3 +199,65 @@ def planetary_strength(pset, load: Load, material=None, *, face_width_mm: float,
                        **common)
     return {"sun-planet": from_chain(sp, title=f"sun-planet {pset.z_sun}/{pset.z_planet}"),
             "planet-ring": from_chain(pr, title=f"planet-ring {pset.z_planet}/{pset.z_ring}")}
+
+
+def planetary_life(pset, spectrum, material=None, *, face_width_mm: float, mean_stress_factor, planet_material=None,
+                   ring_material=None, life_h=None, sn_curve: str = "iso", **options) -> dict:
+    """ISO 6336-6 service life of a :class:`~geardesign.gears.planetary.PlanetarySet` whose sun carries ``spectrum``
+    (bins on the sun, as :func:`mesh_spectra` shares them over the meshes), with the planet rated over **both** its
+    meshes. Returns ``D_<mode>_<gear>`` (Miner's sums over the required life), ``life_h_<mode>_<gear>`` for mode H
+    (pitting) and F (root) of the sun, the planet and the ring, ``planet_flanks`` ({"H": (flank A, flank B), "F":
+    (fillet A, fillet B)}: the planet's sums per flank) and ``required_life_h``.
+
+    The planet is an idler between sun and ring: with the sun's torque positive the sun loads one flank of a planet
+    tooth (A) and the ring the other (B); a reversed bin swaps them. ISO 6336-6 sums damage per flank, so flank A's
+    pitting sum is the sun mesh's positive bins with the ring mesh's negative ones (B the others), each bin on its
+    mesh's σ_H/σ_HG. Its root bends both ways once per relative revolution: the alternating bending the repo rates
+    a reversing tooth with (:func:`~geardesign.gears.strength.service_life.pair_life`: the root's limit times Y_M,
+    ``mean_stress_factor``, ISO 6336-3:2019's mean stress influence, 0.7 in older texts for an idler; each fillet
+    summing the bins that put it in tension, the same pairing as the flanks). D of each is the larger of its two
+    sums. The sun and the ring are each one mesh's gear (:func:`pair_life` of that mesh). ``options``: the chain's
+    (accuracy grade, lubricant, ...), as :func:`planetary_strength` takes them.
+
+    >>> from geardesign.gears.planetary import PlanetarySet
+    >>> from geardesign.gears.spectrum import LoadSpectrum
+    >>> s = PlanetarySet.coaxial(2, 20, 31, 82, 3)
+    >>> r = planetary_life(s, LoadSpectrum.from_bins([400, 250], 1500, time_h=[2000, 8000]), "18CrNiMo7-6",
+    ...                    face_width_mm=25, mean_stress_factor=0.7)
+    >>> r["D_F_planet"] == max(r["planet_flanks"]["F"])
+    True
+    """
+    from .service_life import pair_life
+
+    if material is None:
+        raise GearDesignError("material is needed (a geardesign Material or a name such as '18CrNiMo7-6')")
+    taken = sorted(set(options) & set(_SET_OWN + ("alternating", "bins", "mesh")))
+    if taken:
+        raise GearDesignError(f"{', '.join(taken)}: planetary_life takes these from the set, not as options")
+    meshes = mesh_spectra(pset.z_sun, pset.z_planet, pset.z_ring, pset.n_planets, pset.arrangement, spectrum)
+    planet = planet_material or material
+    common = dict(beta_deg=pset.beta_deg, rack=pset.rack, tip_shortening=False, face_width_mm=face_width_mm,
+                  life_h=life_h, sn_curve=sn_curve, mean_stress_factor=mean_stress_factor, bins=True, **options)
+    (sp_spec, sp_cycles), (pr_spec, pr_cycles) = meshes.values()
+    sp = pair_life(pset.m, pset.z_sun, pset.z_planet, pset.x_sun, pset.x_planet, spectrum=sp_spec,
+                   material1=material, material2=planet, alternating=(False, True), cycles_per_rev=sp_cycles,
+                   **common)
+    pr = pair_life(pset.m, pset.z_planet, pset.z_ring, pset.x_planet, pset.x_ring, spectrum=pr_spec,
+                   material1=planet, material2=ring_material or material, internal=True, alternating=(True, False),
+                   cycles_per_rev=pr_cycles, **common)
+    required = sp["required_life_h"]
+    out = {"required_life_h": required, "D_H_sun": sp["D_H1"], "D_F_sun": sp["D_F1"], "D_H_ring": pr["D_H2"],
+           "D_F_ring": pr["D_F2"], "planet_flanks": {}}
+    # flank A: the sun mesh's positive bins and the ring mesh's negative ones; flank B the others
+    sp_pos = sp_spec.torque_nm[sp["bin_index"]] > 0
+    pr_pos = pr_spec.torque_nm[pr["bin_index"]] > 0
+    for mode in ("H", "F"):
+        with np.errstate(divide="ignore"):
+            d_sp = np.where(sp["n2"] > 0, sp["n2"] / sp[f"N_{mode}2"], 0.0)
+            d_pr = np.where(pr["n1"] > 0, pr["n1"] / pr[f"N_{mode}1"], 0.0)
+        flanks = (float(d_sp[sp_pos].sum() + d_pr[~pr_pos].sum()), float(d_sp[~sp_pos].sum() + d_pr[pr_pos].sum()))
+        out["planet_flanks"][mode] = flanks
+        out[f"D_{mode}_planet"] = max(flanks)
+    for key in [k for k in out if k.startswith("D_")]:
+        out["life_h_" + key[2:]] = required / out[key] if out[key] > 0 else math.inf
+    return out

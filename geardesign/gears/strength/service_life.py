@@ -22,7 +22,8 @@ upward there and the result flags the bin (``static_exceeded``).
 Alternating bending: a tooth whose flanks are both loaded (a spectrum with negative torques) bends its root
 both ways; ISO 6336-3:2019 reduces its bending strength by a mean stress influence factor Y_M. Its formula was
 not found in a source we could read, so Y_M is the caller's (``mean_stress_factor``, one per gear) and a
-reversing spectrum without it is refused, never rated as one-sided.
+reversing spectrum without it is refused, never rated as one-sided. A gear whose teeth meet two mates on opposite
+flanks (an idler, a planet) bends both ways whatever the spectrum's sign (``alternating``).
 """
 from __future__ import annotations
 
@@ -34,6 +35,7 @@ import numpy as np
 
 from ...errors import GearDesignError
 from ...validate import one_number, require_choice, require_finite, require_range
+from ..mesh import Mesh, mesh_of
 from ..spectrum import MEAN_STRESS_FACTOR_RANGE, SN_CURVES, LoadSpectrum
 from . import root_factors as rf
 from .blocks import BLOCK
@@ -210,6 +212,13 @@ def _bins_load(spectrum: LoadSpectrum, sel) -> Load:
     return load
 
 
+def _alternating(value) -> tuple:
+    """``alternating`` of :func:`pair_life` checked: two booleans."""
+    if not (isinstance(value, (tuple, list)) and len(value) == 2 and all(isinstance(v, (bool, np.bool_)) for v in value)):
+        raise GearDesignError(f"alternating must be two booleans (gear 1, gear 2), got {value!r}")
+    return (bool(value[0]), bool(value[1]))
+
+
 def _mean_stress(value, reverses) -> tuple:
     if value is None:
         if reverses:
@@ -224,8 +233,9 @@ def _mean_stress(value, reverses) -> tuple:
     return tuple(one_number("mean_stress_factor", require_range("mean_stress_factor", v, *MEAN_STRESS_FACTOR_RANGE)) for v in pair)
 
 
-def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2=None, face_width_mm,
-              life_h=None, sn_curve: str = "iso", mean_stress_factor=None, bins: bool = False, **options) -> dict:
+def pair_life(m, z1=None, z2=None, x1=0.0, x2=0.0, *, spectrum: LoadSpectrum, material1, material2=None,
+              face_width_mm=None, life_h=None, sn_curve: str = "iso", mean_stress_factor=None, bins: bool = False,
+              mesh: Mesh | None = None, alternating=(False, False), **options) -> dict:
     """ISO 6336-6 service life of gear pairs under ``spectrum`` (a :class:`~geardesign.gears.spectrum.LoadSpectrum`),
     vectorised over designs like :func:`~geardesign.gears.strength.chain.pair_strength` (m, z1, z2, x1, x2 and the
     face width broadcast; ``options`` are its options: accuracy grade, lubricant, given factors, ``geometry``, ...).
@@ -238,8 +248,24 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     factors for the required life: the factor on the stresses that makes D = 1; one design only); ``bins=True``
     adds the chain's per-bin fields (``bin_<field>``, shape designs × bins) and each bin's ``N_<mode>`` and
     ``n<gear>`` cycles.
+    ``mesh``: a :class:`~geardesign.gears.mesh.Mesh` instead of z1, z2, ``rack``, ``tip_shortening``, ``beta_deg``,
+    ``internal`` and ``face_width_mm``, as :func:`~geardesign.gears.strength.chain.pair_strength` takes it (giving
+    both ways is refused by name).
+    ``alternating``: (gear 1, gear 2), True for a gear whose root bends both ways whatever the spectrum's sign (an
+    idler, a planet: its teeth meet two mates on opposite flanks): its root limit is times Y_M in every bin, as a
+    reversing tooth's is, so it needs ``mean_stress_factor``.
     """
     from .chain import _material, pair_strength
+
+    if mesh is not None or z1 is None or z2 is None:
+        mesh = mesh_of(mesh, z1, z2, options.get("rack"), options.get("tip_shortening", True),
+                       options.get("beta_deg", 0.0), options.get("internal", False), face_width_mm)
+        z1, z2, face_width_mm = mesh.z1, mesh.z2, mesh.face_width_mm
+        options.update(rack=mesh.rack, tip_shortening=mesh.tip_shortening, beta_deg=mesh.beta_deg,
+                       internal=mesh.internal)
+    if face_width_mm is None:
+        raise GearDesignError("face_width_mm (mm) is needed for the service life: give it, or a mesh= with its "
+                              "face_width_mm")
 
     if not isinstance(spectrum, LoadSpectrum):
         raise GearDesignError(f"spectrum must be a geardesign LoadSpectrum, got {type(spectrum).__name__}")
@@ -247,6 +273,12 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     if life_h is not None:
         life_h = one_number("life_h", require_range("life_h", life_h, *LIFE_RANGE_H, lo_open=True, unit="h"))
     prep = _prepared(spectrum)
+    alternating = _alternating(alternating)
+    if mean_stress_factor is None and any(alternating) and not prep.reverses:
+        raise GearDesignError(f"gear {alternating.index(True) + 1}'s root bends both ways (alternating=True: its teeth "
+                              f"meet two mates on opposite flanks): give mean_stress_factor=Y_M, the mean stress "
+                              f"influence factor of ISO 6336-3:2019 for alternating bending, in "
+                              f"[{MEAN_STRESS_FACTOR_RANGE[0]:g}, {MEAN_STRESS_FACTOR_RANGE[1]:g}]")
     y_m = _mean_stress(mean_stress_factor, prep.reverses)
     if options.get("root", True) is not True:
         raise GearDesignError("pair_life rates pitting and root together: root=False is not an option here")
@@ -272,7 +304,8 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
         # into blocks of its own, which would part them from the bins)
         return _in_chunks(shape, loaded.size, dict(m=m, z1=z1, z2=z2, x1=x1, x2=x2, face_width_mm=face_width_mm),
                           dict(spectrum=spectrum, material1=material1, material2=material2, life_h=life_h,
-                               sn_curve=sn_curve, mean_stress_factor=mean_stress_factor, **options))
+                               sn_curve=sn_curve, mean_stress_factor=mean_stress_factor, alternating=alternating,
+                               **options))
     zz = _teeth(spectrum, z1, z2)      # before the chain: a wrong spectrum costs nothing
     designs = [np.asarray(v, dtype=float) for v in (m, x1, x2)]
     # designs × bins; one design in Python floats, which the chain runs on math with the bins' arrays on numpy
@@ -298,7 +331,9 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     for r, mode in enumerate(MODES):
         g = int(mode[1])
         sig, ref = (out[k] for k in _CHAIN[mode])
-        if mode[0] == "F" and prep.reversing_any[g]:
+        if mode[0] == "F" and alternating[g - 1]:
+            ref = ref * y_m[g - 1]
+        elif mode[0] == "F" and prep.reversing_any[g]:
             ref = ref * np.where(prep.reversing[g], y_m[g - 1], 1.0)
         np.divide(sig, ref, out=ratio[r])
     # N of the modes that share an S-N curve (both gears of one material) in one call
@@ -331,8 +366,8 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
     if bins:
         res.update(("N_" + m, N[r]) for r, m in enumerate(MODES))
         res.update({"bin_" + k: np.broadcast_to(np.asarray(out[k], dtype=float), full) for k in _FIELDS})
-        res.update(bin_index=loaded, n1=n[0], n2=n[1], bin_reversing1=prep.reversing[1],
-                   bin_reversing2=prep.reversing[2], curves=curves, ratio=dict(zip(MODES, ratio)),
+        res.update(bin_index=loaded, n1=n[0], n2=n[1], bin_reversing1=prep.reversing[1] | alternating[0],
+                   bin_reversing2=prep.reversing[2] | alternating[1], curves=curves, ratio=dict(zip(MODES, ratio)),
                    mean_stress_factor=y_m)
     return res
 

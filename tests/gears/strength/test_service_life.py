@@ -355,3 +355,53 @@ def test_one_design_in_numbers_is_the_array_call_of_one_design():
         np.testing.assert_allclose(one["N_" + mode], arr["N_" + mode][0], rtol=1e-13)
     for k in ("K_v", "K_Hbeta", "sigma_H1", "sigma_F2", "sigma_FG1"):
         np.testing.assert_allclose(one["bin_" + k], arr["bin_" + k][0], rtol=1e-14)
+
+
+def test_pair_life_takes_a_mesh_too():
+    # issue 36 §4: pair_life restated the mesh keywords without taking a Mesh (as pair_strength did before); the
+    # mesh's face width is the pair's, and the results are the loose call's bit for bit (spur and helical, one
+    # design and arrays, a reversing spectrum with Y_M)
+    spec = LoadSpectrum.from_bins([700, -400], 1000, time_h=[2000, 8000])
+    for beta in (0.0, 12.0):
+        mesh = gd.Mesh(20, 60, beta_deg=beta, face_width_mm=30.0)
+        for m, x1 in ((3.0, 0.3), (np.array([2.5, 3.0]), np.array([0.2, 0.4]))):
+            loose = pair_life(m, 20, 60, x1, 0.1, spectrum=spec, material1="42CrMo4", face_width_mm=30.0,
+                              beta_deg=beta, mean_stress_factor=0.7)
+            meshed = pair_life(m, x1=x1, x2=0.1, spectrum=spec, material1="42CrMo4", mesh=mesh,
+                               mean_stress_factor=0.7)
+            keys = ("D_H1", "D_H2", "D_F1", "D_F2") + (("S_H1", "S_F2") if np.ndim(m) == 0 else ())
+            for k in keys:
+                assert np.array_equal(np.asarray(meshed[k]), np.asarray(loose[k])), k
+            assert np.all(np.asarray(loose["D_F1"]) > 0)
+
+
+@pytest.mark.parametrize("kw, words", [
+    (dict(mesh=gd.Mesh(20, 60)), "face_width_mm .* is needed"),
+    (dict(z1=20, z2=60), "face_width_mm .* is needed"),
+    (dict(mesh=gd.Mesh(20, 60, face_width_mm=30.0), face_width_mm=30.0), "face_width_mm, not both"),
+    (dict(mesh=gd.Mesh(20, 60, face_width_mm=30.0), beta_deg=10.0), "beta_deg, not both"),
+    (dict(mesh=gd.Mesh(20, 60, face_width_mm=30.0), z1=20), "z1, not both"),
+    (dict(mesh=(20, 60)), "mesh must be a geardesign.Mesh"),
+    (dict(face_width_mm=30.0), "z1 and z2"),
+])
+def test_pair_life_mesh_refusals_name_the_input(kw, words):
+    spec = LoadSpectrum.from_bins([120, 60], 1000, time_h=[2000, 8000])
+    with pytest.raises(GearDesignError, match=words):
+        pair_life(3.0, x1=0.3, x2=0.1, spectrum=spec, material1="42CrMo4", **kw)
+
+
+def test_an_alternating_gear_bends_both_ways_in_every_bin():
+    # an idler or a planet: its teeth meet two mates on opposite flanks, so its root's limit is times Y_M
+    # (ISO 6336-3:2019's alternating bending) even under a one-sided spectrum; the other gear is rated one-sided
+    spec = LoadSpectrum.from_bins([800.0], 1000.0, time_h=[10000.0])
+    with pytest.raises(GearDesignError, match="gear 2's root bends both ways .*mean_stress_factor"):
+        _life(spec, alternating=(False, True))
+    with pytest.raises(GearDesignError, match="alternating must be two booleans"):
+        _life(spec, alternating=True, mean_stress_factor=0.7)
+    out = _life(spec, alternating=(False, True), mean_stress_factor=0.7)
+    ch = _chain(800.0)
+    n2 = 1000 * 60 * 10000 * 20 / 60                  # the wheel's revolutions
+    assert out["D_F2"] == pytest.approx(n2 / _root_N(ch["sigma_F2"] / (0.7 * ch["sigma_FG2"])), rel=1e-11)
+    assert out["D_F1"] == pytest.approx(60 * 1000 * 10000 / _root_N(ch["sigma_F1"] / ch["sigma_FG1"]), rel=1e-11)
+    # σ_F2/σ_FG2 ≈ 0.65 lies below the curve's end (0.85): no damage one-sided, some with the limit times 0.7
+    assert out["D_F2"] > 0.0 == _life(spec)["D_F2"]
