@@ -388,6 +388,12 @@ def _mesh_options(opts: dict, meshes: PlanetaryMeshes, arrangement: str) -> tupl
     spectra = None
     if opts.get("spectrum") is not None:
         given = opts["spectrum"]
+        if any(getattr(s, "reverses", False) for s in (given if isinstance(given, (list, tuple)) else [given])):
+            # a reversed bin loads the planet's other flank from the other mesh: its sums run across both meshes,
+            # which per-mesh checks cannot hold (they would pair its flanks within each mesh and miss damage)
+            raise GearDesignError("spectrum: a reversing spectrum (a bin with torque < 0) on a planetary set's checks "
+                                  "is not rated: the planet's flanks sum across its two meshes; rate it with "
+                                  "geardesign.gears.strength.planetary_life, or give the checks one-sided bins")
         spectra = [mesh_spectra(*z, s) for s in (given if isinstance(given, (list, tuple)) else [given])]
         cycles = {tag: spectra[0][tag][1] for tag in MESH_NAMES}
         if cases is not None and any(cases[tag][1] != cycles[tag] for tag in MESH_NAMES):

@@ -68,7 +68,7 @@ face_width_mm = 25
 """
 
 
-def _planetary(tmp_path, csv="torque_nm,n_rpm,time_h\n600,1500,2000\n-450,1500,5000\n250,1500,3000\n",
+def _planetary(tmp_path, csv="torque_nm,n_rpm,time_h\n600,1500,2000\n450,1500,5000\n250,1500,3000\n",
                extra="mean_stress_factor = 0.7\nlife_h = 20000"):
     (tmp_path / "spec.csv").write_text(csv, encoding="utf-8")
     path = tmp_path / "p.toml"
@@ -96,6 +96,8 @@ def test_a_planetary_scene_takes_a_spectrum_on_the_sun(tmp_path):
 
 
 @pytest.mark.parametrize("csv, extra, words", [
+    ("torque_nm,n_rpm,time_h\n600,1500,2000\n-450,1500,5000\n", "mean_stress_factor = 0.7",
+     r"reversing spectrum .*planetary_life"),
     ("torque_nm,n_rpm,time_h\n60,abc,2000\n", "mean_stress_factor = 0.7",
      r"\[planetary.spectrum\] file: .*row 2, column 'n_rpm'"),
     ("torque_nm,n_rpm,time_h\n60,1500,2000\n", "", r"\[planetary.spectrum\] mean_stress_factor: missing"),
