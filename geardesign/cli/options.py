@@ -156,26 +156,30 @@ def add_load_args(p, planetary: bool = False, limits: bool = False, spectrum: bo
     if not planetary:
         g.add_argument("--strength-width", type=float, default=None, metavar="MM",
                        help="face width for the strength checks, mm (default: --face-width)")
-        if spectrum:
-            add_spectrum_args(p)
+    if spectrum:
+        add_spectrum_args(p, planetary)
     add_strength_args(g, limits=limits)
 
 
-def add_spectrum_args(p) -> None:
+def add_spectrum_args(p, planetary: bool = False) -> None:
     """A load spectrum (ISO 6336-6): --spectrum FILE (a CSV), the S-N curve beyond the knee, Y_M; given, the damage
-    checks join the others (with --material, --life-h the required life)."""
+    checks join the others (with --material, --life-h the required life). ``planetary``: the sun's spectrum of a
+    planetary set (its planets' roots bend both ways: Y_M needed)."""
     g = p.add_argument_group("service life under a load spectrum (ISO 6336-6; --spectrum switches the damage "
                              "checks on)")
     g.add_argument("--spectrum", default=None, metavar="CSV",
                    help="the load spectrum: a CSV with columns torque_nm, n_rpm (or --speed for all bins) and one of "
-                        "time_h, cycles, share (share: with --life-h); torques of gear --on-gear, negative on the "
-                        "other flank")
+                        "time_h, cycles, share (share: with --life-h); "
+                        + ("torques on the sun, each >= 0 for the set's checks (a reversing one: planetary_life)"
+                           if planetary else "torques of gear --on-gear, negative on the other flank"))
     from ..gears.spectrum import SN_CURVES   # a light module (numpy, csv)
 
     g.add_argument("--sn-curve", default="iso", choices=SN_CURVES,
                    help="the S-N curve beyond its knee (iso: ISO 6336-2/-3 as tabled; docs/life.md)")
     g.add_argument("--mean-stress-factor", type=float, default=None, metavar="Y_M",
-                   help="Y_M of both gears' roots for a spectrum whose torque reverses (ISO 6336-3:2019)")
+                   help=("Y_M of the planets' roots, which bend both ways (ISO 6336-3:2019; needed with --spectrum)"
+                         if planetary else
+                         "Y_M of both gears' roots for a spectrum whose torque reverses (ISO 6336-3:2019)"))
 
 
 def spectrum_from_args(args) -> dict:
@@ -289,8 +293,10 @@ def load_from_args(args) -> dict:
         if args.material is None:
             raise GearDesignError("--spectrum needs --material")
         width = args.strength_width if args.strength_width is not None else getattr(args, "face_width_mm", None)
-        return {**spectrum, "material": args.material, "material2": getattr(args, "material2", None),
-                "face_width_mm": width, **({"strength": options} if options else {})}
+        out = {**spectrum, "material": args.material, "face_width_mm": width, **extra}
+        if hasattr(args, "k_gamma"):      # a planetary set's sun spectrum
+            return {**out, "strength": {"K_gamma": args.k_gamma, **options}}
+        return {**out, "material2": getattr(args, "material2", None), **({"strength": options} if options else {})}
     if all(v is None for v in given):
         if options:
             from ..gears.strength.user_options import FACTORS_FLAG, strength_option

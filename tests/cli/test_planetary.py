@@ -78,3 +78,33 @@ def test_ratio_is_signed_on_the_command_line_too(capsys):
     out = json.loads(capsys.readouterr().out)
     assert out["ok"] and out["table"][0]["ratio"] == -144 / 12
     assert all(row["ratio"] == -row["z_ring"] / row["z_sun"] for row in out["table"])
+
+
+def test_a_sun_spectrum_gives_the_sets_damage_checks(tmp_path, capsys):
+    # --spectrum on the planetary command: the damage checks of both meshes, as the Python set's checks give them
+    # for the same spectrum, and the planet's root damage as planetary_life rates it (bent both ways, Y_M 0.7)
+    import geardesign as gd
+    from geardesign.gears.strength import planetary_life
+
+    csv = tmp_path / "sun.csv"
+    csv.write_text("torque_nm,n_rpm,time_h\n450,1500,2000\n300,1500,3000\n200,1500,5000\n", encoding="utf-8")
+    args = ["planetary", "-m", "2", "--planets", "3", "--z-sun", "20", "--z-planet", "31", "--z-ring", "82",
+            "--x-sun", "0.3", "--x-planet", "0.1", "--spectrum", str(csv), "--material", "18CrNiMo7-6",
+            "--face-width", "25"]
+    assert main(args + ["--mean-stress-factor", "0.7", "--json"]) == 1     # the sun's flank is worn out
+    got = {c["check"]: c["value"] for c in json.loads(capsys.readouterr().out)["checks"]}
+    s = gd.PlanetarySet.coaxial(2, 20, 31, 82, 3, 0.3, 0.1)
+    spec = gd.LoadSpectrum.from_csv(csv)
+    want = s.checks({"spectrum": spec, "material": "18CrNiMo7-6", "face_width_mm": 25.0,
+                     "mean_stress_factor": 0.7}).set_index("check")["value"]
+    names = [n for n in want.index if "damage" in n]
+    assert len(names) == 8 and all(got[n] == pytest.approx(float(want[n]), rel=1e-12) for n in names)
+    life = planetary_life(s, spec, "18CrNiMo7-6", face_width_mm=25.0, mean_stress_factor=0.7)
+    assert life["D_F_planet"] > 0 and got["sun-planet:root_damage_planet"] == pytest.approx(life["D_F_planet"], rel=1e-12)
+    # without Y_M, and with a reversing spectrum: one line naming the option or planetary_life, exit 2
+    assert main(args) == 2
+    assert "--mean-stress-factor" in capsys.readouterr().err
+    csv.write_text("torque_nm,n_rpm,time_h\n450,1500,2000\n-300,1500,3000\n", encoding="utf-8")
+    assert main(args + ["--mean-stress-factor", "0.7"]) == 2
+    err = capsys.readouterr().err
+    assert "planetary_life" in err and len(err.strip().splitlines()) == 1
