@@ -312,8 +312,7 @@ def pair_context(context: dict, what: str) -> tuple:
     frozen = tuple(sorted((k, _hashable(v)) for k, v in check_options(options).items()))
     width = context.get("face_width_mm")
     if width is not None:      # one number: the spec is hashed (its values are memoised per geometry)
-        width = one_number("face_width_mm", require_range("face_width_mm", width, *FACE_WIDTH_RANGE_MM, lo_open=True,
-                                                          unit="mm"))
+        width = one_number("face_width_mm", require_range("face_width_mm", width, *FACE_WIDTH_RANGE_MM, unit="mm"))
     return mat1, mat2, width, frozen
 
 
