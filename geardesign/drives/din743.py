@@ -39,7 +39,7 @@ import numpy as np
 from ..catalogs.tables import load_catalog
 from ..errors import GearDesignError
 from ..results import Result
-from ..validate import one_number, require_bool, require_choice, require_range
+from ..validate import _show, one_number, require_bool, require_choice, require_range
 
 if TYPE_CHECKING:       # pandas loads with the first table (the command's start-up stays light)
     import pandas as pd
@@ -419,9 +419,9 @@ def _chain(mat, notches, d, D, bore, d_eff, Rz_um, K_V, hard_surface, load_case,
     require_range("d_eff_mm", d_eff, 1.0, D_EFF_MAX_MM, unit="mm")
     require_range("Rz_um", Rz_um, 1.0, 200.0, unit="µm")
     require_range("K_V", K_V, 0.5, 3.0)
-    if load_case not in (1, 2):
+    if np.ndim(load_case) != 0 or load_case not in (1, 2):    # an array: one case for every section (fuzz)
         raise GearDesignError(f"load_case must be 1 (mean stress constant) or 2 (mean/amplitude constant), "
-                              f"got {load_case!r}")
+                              f"got {_show(load_case)}")
     for name, v in loads.items():
         if not np.all(np.abs(v) <= 1e12):      # NaN fails too: then the one check that names it
             require_range(name, v, -1e12, 1e12)
@@ -645,7 +645,7 @@ def shaft_safety(analysis, notches, material, *, peak_factor=1.0, torque_amplitu
     for i, sn in enumerate(notches):
         if not isinstance(sn, ShaftNotch):
             raise GearDesignError(f"notches[{i}] must be a ShaftNotch, got {type(sn).__name__}")
-        require_range(f"notches[{i}].x_mm", sn.x_mm, 0.0, model.length_mm, unit="mm")
+        one_number(f"notches[{i}].x_mm", require_range(f"notches[{i}].x_mm", sn.x_mm, 0.0, model.length_mm, unit="mm"))
     diag = analysis._arrays["diagrams"]
     x = diag["x_mm"]
     xs = np.array([float(sn.x_mm) for sn in notches])
@@ -675,6 +675,11 @@ def shaft_safety(analysis, notches, material, *, peak_factor=1.0, torque_amplitu
     bore = np.where(groove, br, bore_thin)
     d_eff = max(s[1] for s in model.sections) if d_eff_mm is None else d_eff_mm
     require_range("d_mm", d, 1.0, D_EFF_MAX_MM, unit="mm")
+    through = groove & (d <= bore)
+    if through.any():     # the root inside the bore: d² − bore² and d⁴ − bore⁴ <= 0, stresses of no section
+        i = int(np.flatnonzero(through)[0])
+        raise GearDesignError(f"notches[{i}]: the groove's depth t_mm = {t_groove[i]:g} cuts through the wall: root "
+                              f"d − 2t = {d[i]:g} mm <= bore {bore[i]:g} mm")
     loads = {"F_zdm": N, "F_zda": np.zeros_like(N), "M_bm": np.zeros_like(N), "M_ba": Mb, "T_m": T,
              "T_a": torque_amplitude * T, "F_zdmax": peak_factor * np.abs(N), "M_bmax": peak_factor * Mb,
              "T_max": peak_factor * T * (1.0 + torque_amplitude)}
