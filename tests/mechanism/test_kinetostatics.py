@@ -304,3 +304,14 @@ def test_a_vanishing_speed_gives_the_static_torque_and_a_list_of_speeds_is_refus
         for speeds in ([1.0, 2.0], (), np.array([1700.0])):
             with pytest.raises(GearDesignError, match="n_rpm must be"):
                 fn(mech, np.linspace(0.0, 720.0, 37), speeds, 1e4)
+
+
+def test_the_fuzz_case_of_a_micrometre_crank_in_a_2000_mm_bore():
+    """The reproducer reported as 'r = 0.001 mm on a 2000 mm bore' (a crank of radius 1 µm in a 2 m cylinder at
+    n = 5e-324 rpm): virtual_power_torque gave NaN (0/0); both routes now agree on a finite torque."""
+    mech = SliderCrank(crank_radius_mm=0.001, rod_length_mm=0.0035, rod_cg_mm=0.0, piston_mass_kg=0.6,
+                       rod_mass_kg=0.7, rod_inertia_kg_m2=0.0617, cylinder_bore_mm=2000.0, offset_mm=0.00099)
+    phi = np.linspace(0.0, 720.0, 37)
+    t = virtual_power_torque(mech, phi, 5e-324, 1e7)
+    f = joint_forces(mech, phi, 5e-324, 1e7)
+    assert np.all(np.isfinite(t)) and np.allclose(t, f.torque_nm, rtol=1e-12, atol=1e-12 * np.abs(t).max())
