@@ -291,18 +291,22 @@ class Notch:
             raise GearDesignError(f"a {self.kind} notch needs its radius r_mm")
         if self.kind == "groove" and self.t_mm is None:
             raise GearDesignError("a groove notch needs its depth t_mm")
+        # one number each (an array radius broke the notch table's array, fuzz)
         if self.r_mm is not None:
-            require_range("r_mm", self.r_mm, 0.0, 1e4, lo_open=True, unit="mm")
+            object.__setattr__(self, "r_mm", one_number("r_mm", require_range("r_mm", self.r_mm, 0.0, 1e4,
+                                                                              lo_open=True, unit="mm")))
         if self.t_mm is not None:
-            require_range("t_mm", self.t_mm, 0.0, 1e4, lo_open=True, unit="mm")
+            object.__setattr__(self, "t_mm", one_number("t_mm", require_range("t_mm", self.t_mm, 0.0, 1e4,
+                                                                              lo_open=True, unit="mm")))
         if self.keys not in (1, 2):
             raise GearDesignError(f"keys must be 1 or 2, got {self.keys!r}")
         if self.kind == "given" and (self.beta_sigma is None or self.beta_tau is None):
             raise GearDesignError("a notch of kind 'given' needs beta_sigma and beta_tau (DIN 743-2's tables)")
         for name in ("beta_sigma", "beta_tau"):
             if getattr(self, name) is not None:
-                require_range(name, getattr(self, name), 1.0, 20.0)
-        require_range("alpha_sigma", self.alpha_sigma, 1.0, 20.0)
+                object.__setattr__(self, name, one_number(name, require_range(name, getattr(self, name), 1.0, 20.0)))
+        object.__setattr__(self, "alpha_sigma", one_number("alpha_sigma", require_range("alpha_sigma", self.alpha_sigma,
+                                                                                        1.0, 20.0)))
 
 
 def _gamma_F(alpha):

@@ -250,3 +250,15 @@ def test_a_groove_through_a_hollow_shafts_wall_and_array_inputs_are_refused_by_n
     with pytest.raises(GearDesignError, match="load_case must be 1 .* or 2"):
         shaft_safety(a, [ShaftNotch(40.0, Notch("key"))], "42CrMo4", load_case=[1.0, math.nan])
     assert shaft_safety(a, [ShaftNotch(40.0, Notch("key"))], "42CrMo4", load_case=1).table["S_D"].iloc[0] > 0
+
+
+def test_a_notch_takes_one_number_per_size():
+    """Fuzzing found 'ValueError: setting an array element with a sequence' from shaft_safety for a groove of radius
+    array([1.]): each size of a Notch is one number, refused by name otherwise."""
+    with pytest.raises(GearDesignError, match="r_mm must be one number"):
+        Notch("groove", r_mm=[1.0], t_mm=2.0)
+    with pytest.raises(GearDesignError, match="t_mm must be one number"):
+        Notch("groove", r_mm=1.0, t_mm=[1.0, 2.0])
+    with pytest.raises(GearDesignError, match="beta_sigma must be one number"):
+        Notch("given", beta_sigma=[2.0], beta_tau=1.5)
+    assert Notch("groove", r_mm=1, t_mm=2).r_mm == 1.0
