@@ -285,7 +285,7 @@ def pair_life(m, z1, z2, x1, x2, *, spectrum: LoadSpectrum, material1, material2
         static[mode] = ratio[mode] > pts[0][1]
         D = _grouped_max(n[g] / N, groups[g])
         res["D_" + mode] = D
-        with np.errstate(divide="ignore"):
+        with np.errstate(divide="ignore", over="ignore"):    # a subnormal D (n = 5e-324 rpm): an infinite life
             res["life_h_" + mode] = np.where(D > 0, res["required_life_h"] / D, np.inf)
         if bins:
             res["N_" + mode] = N

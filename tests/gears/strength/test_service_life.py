@@ -335,3 +335,17 @@ def test_pair_life_refuses_an_empty_list_of_teeth_by_name():
     spec = LoadSpectrum.from_bins([241.0], 1000.0, time_h=[100.0])
     with pytest.raises(GearDesignError, match="z1 and z2 must each give a tooth count, got 0 and 1 values"):
         pair_life(20.0, [], 26, 0.3, 0.1, spectrum=spec, material1="42CrMo4", face_width_mm=40.0)
+
+
+def test_a_vanishing_speed_gives_an_infinite_life_without_a_warning():
+    """Fuzzing found 'RuntimeWarning: overflow encountered in scalar divide' from pair_life for a spectrum at
+    n = 5e-324 rpm: a subnormal damage D = n·t/N, whose life t/D is +inf (nothing loads the teeth)."""
+    import warnings
+
+    s = gd.LoadSpectrum.from_bins(torque_nm=[665.2], n_rpm=5e-324, time_h=[20000.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        r = pair_life(2.0, 17, 200, 0.3, 0.1, spectrum=s, material1="18CrNiMo7-6", face_width_mm=400.0,
+                      mean_stress_factor=1.0)
+    assert all(r[f"life_h_{k}"] == np.inf for k in ("H1", "H2", "F1", "F2"))
+    assert 0.0 <= r["D_H1"] < 1e-300
