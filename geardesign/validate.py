@@ -186,15 +186,19 @@ def broadcast_inputs(**arrays) -> list[np.ndarray]:
 _INT_MAX = 10**15
 
 
-def hint_unknown_arguments(cls, hints: dict):
+def hint_unknown_arguments(cls, hints: dict, needs: dict | None = None):
     """Wrap the dataclass ``cls``'s ``__init__`` so that an unknown keyword is refused by name: the class's own
     arguments listed, and where ``hints`` holds the name, a hint to the right one (``{value!r}``: what was given),
-    in place of Python's bare TypeError. Returns ``cls``."""
+    in place of Python's bare TypeError. A required argument left out is refused by name too, with what
+    ``needs`` says of it (its meaning, unit and range). Returns ``cls``."""
     import dataclasses
     import functools
 
     init = cls.__init__
     known = [f.name for f in dataclasses.fields(cls) if f.init]
+    required = [f.name for f in dataclasses.fields(cls) if f.init and f.default is dataclasses.MISSING
+                and f.default_factory is dataclasses.MISSING]
+    needs = needs or {}
 
     @functools.wraps(init)
     def checked_init(self, *args, **kwargs):
@@ -206,6 +210,10 @@ def hint_unknown_arguments(cls, hints: dict):
         if len(args) > len(known):
             raise GearDesignError(f"{cls.__name__} takes at most {len(known)} arguments ({', '.join(known)}), "
                                   f"got {len(args)}")
+        missing = [name for name in required[len(args):] if name not in kwargs]
+        if missing:
+            said = "; ".join(f"{name}: {needs[name]}" if name in needs else name for name in missing)
+            raise GearDesignError(f"{cls.__name__} needs {', '.join(missing)} (missing): {said}")
         init(self, *args, **kwargs)
 
     cls.__init__ = checked_init

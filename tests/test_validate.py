@@ -20,3 +20,13 @@ import geardesign as gd
 def test_type_confusion_and_extremes_are_one_clear_error(call):
     with pytest.raises(gd.GearDesignError):
         call()
+
+
+def test_a_missing_required_argument_is_named_not_a_type_error():
+    """hint_unknown_arguments also names required arguments left out (Python's TypeError 'missing 1 required
+    positional argument' was the answer), for every class it wraps."""
+    with pytest.raises(gd.GearDesignError, match=r"^GearPair needs z2 \(missing\)"):
+        gd.GearPair(4, 20)
+    with pytest.raises(gd.GearDesignError, match=r"^GearPair needs z1, z2 \(missing\)"):
+        gd.GearPair(m=4)
+    assert gd.GearPair(4, z2=60, z1=20).z1 == 20

@@ -442,8 +442,10 @@ def _evaluate(rows, fr, fa, n, life, a1, kappa, e_c, lubrication, s0_min):
     # checks have no value (NaN) and the axial check is the limiting one; without a required life the life
     # check is not made (NaN)
     ok = loads["axial_ok"]
+    with np.errstate(over="ignore"):      # a required life of 5e-324 h: the life margin is +inf, not a warning (fuzz)
+        life_margin = Lnmh / life - 1.0 if life is not None else np.full(len(rows), np.nan)
     margins = {"axial_load": np.where(ok, 1.0, -1.0),
-               "life": np.where(ok, Lnmh / life - 1.0, np.nan) if life is not None else np.full(len(rows), np.nan),
+               "life": np.where(ok, life_margin, np.nan),
                "static_safety": np.where(ok, s0 / s0_need - 1.0, np.nan),
                "speed": np.where(np.isfinite(speed), 1.0 - n / speed, 0.0)}
     for name, m in margins.items():

@@ -39,7 +39,7 @@ import numpy as np
 from ..catalogs.tables import load_catalog
 from ..errors import GearDesignError
 from ..results import Result
-from ..validate import one_number, require_bool, require_choice, require_range
+from ..validate import _show, one_number, require_bool, require_choice, require_range
 
 if TYPE_CHECKING:       # pandas loads with the first table (the command's start-up stays light)
     import pandas as pd
@@ -291,18 +291,22 @@ class Notch:
             raise GearDesignError(f"a {self.kind} notch needs its radius r_mm")
         if self.kind == "groove" and self.t_mm is None:
             raise GearDesignError("a groove notch needs its depth t_mm")
+        # one number each (an array radius broke the notch table's array, fuzz)
         if self.r_mm is not None:
-            require_range("r_mm", self.r_mm, 0.0, 1e4, lo_open=True, unit="mm")
+            object.__setattr__(self, "r_mm", one_number("r_mm", require_range("r_mm", self.r_mm, 0.0, 1e4,
+                                                                              lo_open=True, unit="mm")))
         if self.t_mm is not None:
-            require_range("t_mm", self.t_mm, 0.0, 1e4, lo_open=True, unit="mm")
+            object.__setattr__(self, "t_mm", one_number("t_mm", require_range("t_mm", self.t_mm, 0.0, 1e4,
+                                                                              lo_open=True, unit="mm")))
         if self.keys not in (1, 2):
             raise GearDesignError(f"keys must be 1 or 2, got {self.keys!r}")
         if self.kind == "given" and (self.beta_sigma is None or self.beta_tau is None):
             raise GearDesignError("a notch of kind 'given' needs beta_sigma and beta_tau (DIN 743-2's tables)")
         for name in ("beta_sigma", "beta_tau"):
             if getattr(self, name) is not None:
-                require_range(name, getattr(self, name), 1.0, 20.0)
-        require_range("alpha_sigma", self.alpha_sigma, 1.0, 20.0)
+                object.__setattr__(self, name, one_number(name, require_range(name, getattr(self, name), 1.0, 20.0)))
+        object.__setattr__(self, "alpha_sigma", one_number("alpha_sigma", require_range("alpha_sigma", self.alpha_sigma,
+                                                                                        1.0, 20.0)))
 
 
 def _gamma_F(alpha):
@@ -419,9 +423,9 @@ def _chain(mat, notches, d, D, bore, d_eff, Rz_um, K_V, hard_surface, load_case,
     require_range("d_eff_mm", d_eff, 1.0, D_EFF_MAX_MM, unit="mm")
     require_range("Rz_um", Rz_um, 1.0, 200.0, unit="µm")
     require_range("K_V", K_V, 0.5, 3.0)
-    if load_case not in (1, 2):
+    if np.ndim(load_case) != 0 or load_case not in (1, 2):    # an array: one case for every section (fuzz)
         raise GearDesignError(f"load_case must be 1 (mean stress constant) or 2 (mean/amplitude constant), "
-                              f"got {load_case!r}")
+                              f"got {_show(load_case)}")
     for name, v in loads.items():
         if not np.all(np.abs(v) <= 1e12):      # NaN fails too: then the one check that names it
             require_range(name, v, -1e12, 1e12)
@@ -645,7 +649,7 @@ def shaft_safety(analysis, notches, material, *, peak_factor=1.0, torque_amplitu
     for i, sn in enumerate(notches):
         if not isinstance(sn, ShaftNotch):
             raise GearDesignError(f"notches[{i}] must be a ShaftNotch, got {type(sn).__name__}")
-        require_range(f"notches[{i}].x_mm", sn.x_mm, 0.0, model.length_mm, unit="mm")
+        one_number(f"notches[{i}].x_mm", require_range(f"notches[{i}].x_mm", sn.x_mm, 0.0, model.length_mm, unit="mm"))
     diag = analysis._arrays["diagrams"]
     x = diag["x_mm"]
     xs = np.array([float(sn.x_mm) for sn in notches])
@@ -675,6 +679,11 @@ def shaft_safety(analysis, notches, material, *, peak_factor=1.0, torque_amplitu
     bore = np.where(groove, br, bore_thin)
     d_eff = max(s[1] for s in model.sections) if d_eff_mm is None else d_eff_mm
     require_range("d_mm", d, 1.0, D_EFF_MAX_MM, unit="mm")
+    through = groove & (d <= bore)
+    if through.any():     # the root inside the bore: d² − bore² and d⁴ − bore⁴ <= 0, stresses of no section
+        i = int(np.flatnonzero(through)[0])
+        raise GearDesignError(f"notches[{i}]: the groove's depth t_mm = {t_groove[i]:g} cuts through the wall: root "
+                              f"d − 2t = {d[i]:g} mm <= bore {bore[i]:g} mm")
     loads = {"F_zdm": N, "F_zda": np.zeros_like(N), "M_bm": np.zeros_like(N), "M_ba": Mb, "T_m": T,
              "T_a": torque_amplitude * T, "F_zdmax": peak_factor * np.abs(N), "M_bmax": peak_factor * Mb,
              "T_max": peak_factor * T * (1.0 + torque_amplitude)}

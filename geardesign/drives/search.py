@@ -439,6 +439,7 @@ class Search:
         their solved options (solutions ``sols``), written into ``ex``."""
         ex = self.ex
         gsize = gmass = 0.0
+        gfactor = 1.0       # the stages' preferences on the ranking (StageKind.rank_factor)
         gmm, glim, gfeas, why = math.inf, "", True, ""
         for k, sol in zip(self.solved_k, sols):
             st, kind = self.stages[k], self.kinds[k]
@@ -451,6 +452,7 @@ class Search:
             s, w = kind.solved_cost(st, sol)
             gsize += s
             gmass += w
+            gfactor *= kind.rank_factor(st, sol)
         ng = self.batch_min[members]
         mm = np.minimum(ng, gmm)
         size, mass = self.batch_size[members] + gsize, self.batch_mass[members] + gmass
@@ -463,7 +465,7 @@ class Search:
             ex["reasons"].append(why)
             ex["why"][members] = len(ex["reasons"]) - 1
         ex["done"][members] = True
-        ex["cost"][members] = {"min_size": size, "min_mass": mass, "max_margin": -mm}[self.objective]
+        ex["cost"][members] = {"min_size": size * gfactor, "min_mass": mass * gfactor, "max_margin": -mm}[self.objective]
 
     # -- 6: the result
     def no_split(self, why: str) -> DriveOptimum:
@@ -499,9 +501,14 @@ class Search:
             if rank == 0:
                 row["reason"] = "best"
             else:
-                c0, d = ex["cost"][feas[0]], ex["cost"][c] - ex["cost"][feas[0]]
+                true = {"min_size": ex["size"], "min_mass": ex["mass"], "max_margin": -ex["mm"]}[self.objective]
+                c0, d = true[feas[0]], true[c] - true[feas[0]]
+                preferred = ex["cost"][c] > true[c] * (1.0 + 1e-12) and ex["cost"][feas[0]] <= true[feas[0]] * (
+                    1.0 + 1e-12)     # a stage's preference (a series II module) ranks it behind
                 row["reason"] = (f"{what} {100 * abs(d) / max(abs(c0), 1e-300):.3g} % worse than rank 1"
                                  if d > 1e-9 * max(abs(c0), 1e-300) else
+                                 f"{what} {100 * abs(d) / max(abs(c0), 1e-300):.3g} % better than rank 1, ranked "
+                                 f"behind it for a series II module" if preferred and d < 0 else
                                  "ties rank 1 on the objective; loses on ratio error or size")
             rows.append(row)
         return rows

@@ -133,6 +133,10 @@ class GivenStage:
         return {"rated_torque": 1.0 - np.asarray(torque_out_nm, dtype=float) / self.rated_output_torque_nm}
 
 
+# GearStage.module_series: ISO 54 series I first (series II only where no series I module gives a design), or both
+MODULE_SERIES_RULES = ("preferred", "both")
+
+
 @dataclass(frozen=True)
 class GearStage:
     """A spur or helical external gear pair of module ``m`` [mm] (normal module when helical).
@@ -149,6 +153,12 @@ class GearStage:
     narrowest face width) whose ISO 6336 strength checks hold at each design's torque and speed
     (:mod:`geardesign.drives.stage_kinds.gear_strength`); or the sizing function installed with
     :func:`geardesign.drives.stage_kinds.set_sizing`. Without either such a stage is refused by name.
+
+    ``module_series`` is how such a stage takes the ISO 54 series: "preferred" (the default) takes a module of
+    series I (1, 1.25, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, ...) wherever one gives the tooth pair a design that holds
+    every check, and a series II module (1.125, 1.375, 1.75, 2.25, 2.75, 3.5, 4.5, 5.5, 7, 9, ...) only where none
+    does (ISO 54:1996, DIN 780-1: series I is to be preferred to series II); "both" takes the smallest module of
+    either series.
 
     ``life_h`` (None: endurance, Z_NT = Y_NT = 1) and ``application_factor`` (K_A) are the load case of
     the strength checks of a stage with a ``material``, as in :class:`geardesign.gears.strength.Load`.
@@ -205,6 +215,7 @@ class GearStage:
     sn_curve: str = "iso"
     mean_stress_factor: object = None
     single_load: bool = True
+    module_series: str = "preferred"
     efficiency_given: bool | None = field(default=None, repr=False)
 
     kind = "gear"
@@ -277,6 +288,9 @@ class GearStage:
             if self.shift_objective not in OBJECTIVES:
                 raise GearDesignError(f"shift_objective must be one of {', '.join(OBJECTIVES)}, "
                                       f"got {self.shift_objective!r}")
+        if self.module_series not in MODULE_SERIES_RULES:
+            raise GearDesignError(f"module_series must be one of {', '.join(MODULE_SERIES_RULES)} (ISO 54 series I "
+                                  f"first, or both series alike), got {_show(self.module_series)}")
 
     def _check_spectrum(self) -> None:
         """The service-life load case (``spectrum``, ``sn_curve``, ``mean_stress_factor``, ``single_load``) checked

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import GearDesignError
-from ..validate import one_number, require_positive, require_range
+from ..validate import hint_unknown_arguments, one_number, require_positive, require_range
 
 __all__ = ["WALTHER_C_ASTM", "WALTHER_C_DIN", "ISO_VG_GRADES", "LUBRICANT_FACTORS", "Lubricant", "walther_constants",
            "kinematic_viscosity", "oil_density", "dynamic_viscosity", "mean_friction_coefficient",
@@ -159,6 +159,21 @@ class Lubricant:
     def dynamic_viscosity_mpas(self, temperature_c):
         """Dynamic viscosity (mPa·s) at ``temperature_c``."""
         return dynamic_viscosity(self.viscosity_mm2s(temperature_c), oil_density(self.density15_kg_m3, temperature_c))
+
+
+# Lubricant() without its viscosities: what each one is and where it lies (not Python's "missing 2 required
+# positional arguments")
+hint_unknown_arguments(Lubricant, {
+    "nu": "give the viscosities at 40 and 100 °C as nu40= and nu100= (mm²/s)",
+    "viscosity": "give the viscosities at 40 and 100 °C as nu40= and nu100= (mm²/s)",
+    "grade": "for an ISO VG grade use Lubricant.iso_vg({value!r}, nu100)",
+    "density_kg_m3": "the density at 15 °C is density15_kg_m3={value!r}",
+}, needs={
+    "nu40": f"the kinematic viscosity at 40 °C, mm²/s, in [{NU_MIN_MM2S:g}, 1e6] (an ISO VG grade's number, "
+            "ISO 3448; or Lubricant.iso_vg(grade, nu100))",
+    "nu100": f"the kinematic viscosity at 100 °C from the oil's data sheet, mm²/s, in [{NU_MIN_MM2S:g}, 1e6] and "
+             "below nu40",
+})
 
 
 def mean_friction_coefficient(F_bt_per_b_n_mm, v_sum_c_m_s, rho_red_c_mm, eta_mpas, Ra_um, lubricant_factor=1.0):

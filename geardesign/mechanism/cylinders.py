@@ -8,6 +8,8 @@ coefficient of fluctuation δ = ΔE/(J·ω²)).
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ..errors import GearDesignError
@@ -148,7 +150,12 @@ def fluctuation_coefficient(excess_work_j, inertia_kg_m2, n_rpm) -> float:
     de = one_number("excess_work_j", require_finite("excess_work_j", excess_work_j))
     j = one_number("inertia_kg_m2", require_positive("inertia_kg_m2", inertia_kg_m2, "kg·m²"))
     w = float(crank_speed(n_rpm))
-    return de / (j * w * w)
+    den = j * w * w
+    delta = de / den if den > 0 else math.inf
+    if not math.isfinite(delta):    # ω² underflowed (n = 5e-324 rpm was a ZeroDivisionError, fuzz)
+        raise GearDesignError(f"n_rpm = {one_number('n_rpm', n_rpm):g} rpm is too slow for a fluctuation coefficient "
+                              f"with inertia_kg_m2 = {j:g}: ΔE/(J·ω²) overflows (no flywheel carries such a cycle)")
+    return delta
 
 
 def reversal_angles(crank_angle_deg, torque_nm, cycle_deg: float | None = None) -> np.ndarray:

@@ -87,8 +87,11 @@ def state(phi, r, l_, e, omega) -> State:
     """The kinematics at crank angles ``phi`` (radians) for r, l, e in mm and ω in rad/s, unchecked: the formulas
     of the functions below, computed once (Artobolevsky 1988 §4; Kolchin & Demidov 1980 §9.1)."""
     sp, cp = np.sin(phi), np.cos(phi)
-    sb = (r * sp - e) / l_                       # sin β = (r·sin φ − e)/l
-    cb = np.sqrt((1.0 - sb) * (1.0 + sb))        # (1 − s)(1 + s): no cancellation near |s| = 1
+    y = r * sp - e
+    sb = y / l_                                  # sin β = (r·sin φ − e)/l
+    # cos² β = (1 − s)(1 + s) = (l − y)(l + y)/l²: the differences of lengths, not 1 − s after s was rounded
+    # (near the dead point of l/r → 1, 1 − r/l loses the digits its rounding had: 1e-4 relative at l/r = 1 + 1e-12)
+    cb = np.sqrt((l_ - y) * (l_ + y)) / l_
     lam = r / l_
     rm = r * MM
     y_b = rm * cp + l_ * MM * cb                 # y_B = r·cos φ + l·cos β

@@ -37,6 +37,10 @@ __all__ = ["JointForces", "joint_forces", "forces_from_state", "virtual_power_to
            "GRAVITY_M_S2"]
 
 GRAVITY_M_S2 = 9.80665     # standard gravity (ISO 80000-3)
+# |F_g| at most 10 GN: a 1 m bore at 30 MPa (the largest two-stroke diesels) is 24 MN, the largest mechanical press
+# 0.2 GN. Near the dead point (l/r → 1) the joint forces grow as F_g/cos β_max: an unbounded F_g (1e308 N)
+# overflowed them to inf − inf = NaN (fuzz)
+GAS_FORCE_MAX_N = 1e10
 
 
 def _gravity(gravity_m_s2, axis_tilt_deg):
@@ -121,10 +125,12 @@ def _inputs(mech, crank_angle_deg, n_rpm, gas_force_n, gravity_m_s2, axis_tilt_d
     if not isinstance(mech, SliderCrank):
         raise GearDesignError(f"mechanism must be a SliderCrank, got {type(mech).__name__}")
     phi_deg = require_finite("crank_angle_deg", crank_angle_deg).astype(float)
-    phi_deg, fg = (a.astype(float) for a in broadcast_inputs(crank_angle_deg=phi_deg,
-                                                              gas_force_n=require_finite("gas_force_n", gas_force_n)))
+    fg = require_range("gas_force_n", gas_force_n, -GAS_FORCE_MAX_N, GAS_FORCE_MAX_N, unit="N")
+    phi_deg, fg = (a.astype(float) for a in broadcast_inputs(crank_angle_deg=phi_deg, gas_force_n=fg))
     gx, gy = _gravity(gravity_m_s2, axis_tilt_deg)
-    st = state(np.radians(phi_deg), mech.crank_radius_mm, mech.rod_length_mm, mech.offset_mm, crank_speed(n_rpm))
+    # one speed for the whole cycle (an array would broadcast against the angles, or not at all)
+    omega = crank_speed(one_number("n_rpm", require_finite("n_rpm", n_rpm)))
+    st = state(np.radians(phi_deg), mech.crank_radius_mm, mech.rod_length_mm, mech.offset_mm, omega)
     return phi_deg, fg, st, gx, gy
 
 
@@ -171,20 +177,22 @@ def virtual_power_torque(mechanism: SliderCrank, crank_angle_deg, n_rpm, gas_for
     phi_deg, fg, st, gx, gy = _inputs(mech, crank_angle_deg, n_rpm, gas_force_n, gravity_m_s2, axis_tilt_deg)
     r = mech.crank_radius_mm * MM
     mp, mr, mc, js = mech.piston_mass_kg, mech.rod_mass_kg, mech.crank_mass_kg, mech.rod_inertia_kg_m2
-    w = st.omega
     k = mech.rod_cg_mm / mech.rod_length_mm
-    vax, vay = -w * r * st.cos_phi, -w * r * st.sin_phi      # ω ẑ × A, A = r·(−sin φ, cos φ)
-    vby = -st.v                                             # v_B = (0, −ṡ)
+    # the velocities per unit crank speed (v/ω, m): M = Σ F·v/ω without dividing by an ω that may underflow to 0
+    # (n = 5e-324 rpm gave 0/0) or multiplying by one that is large
+    vax, vay = -r * st.cos_phi, -r * st.sin_phi              # ẑ × A, A = r·(−sin φ, cos φ)
+    vby = -r * (st.sin_phi * st.cos_beta + st.cos_phi * st.sin_beta) / st.cos_beta   # v_B/ω = (0, −ṡ/ω)
     vsx, vsy = (1.0 - k) * vax, (1.0 - k) * vay + k * vby
     asx, asy = cg_acceleration(st, mech.crank_radius_mm, k)
     # the piston (gas force (0, −F_g), weight, inertia (0, m_p·s̈)): it moves along y only
-    power = (-fg + mp * gy + mp * st.a) * vby
+    torque = (-fg + mp * gy + mp * st.a) * vby
     # the rod: weight and inertia force at S; inertia couple −J_S·ε_r at ω_r = −β̇ (ε_r = −β̈)
-    power = power + (mr * gx - mr * asx) * vsx + (mr * gy - mr * asy) * vsy + (js * st.beta_ddot) * (-st.beta_dot)
+    lam = mech.crank_radius_mm / mech.rod_length_mm
+    torque = torque + (mr * gx - mr * asx) * vsx + (mr * gy - mr * asy) * vsy + (js * st.beta_ddot) * (
+        -lam * st.cos_phi / st.cos_beta)                    # ω_r/ω = −β̇/ω
     # the crank: its weight at S_c = (ρ_c/r)·A (its inertia force is normal to the path)
     kc = mech.crank_cg_mm / mech.crank_radius_mm
-    power = power + mc * kc * (gx * vax + gy * vay)
-    return power / w
+    return torque + mc * kc * (gx * vax + gy * vay)          # Σ F·v/ω = M
 
 
 def piston_force_torque(force_n, crank_angle_deg, crank_radius_mm, rod_length_mm, offset_mm=0.0) -> np.ndarray:

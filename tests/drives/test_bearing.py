@@ -502,3 +502,15 @@ def test_a_least_static_safety_out_of_range_is_refused_by_name(s0_min, match):
                  lambda: b.select_bearing("62", 40, 3200.0, 0.0, 650.0, life_h=1e4, s0_min=s0_min)):
         with pytest.raises(GearDesignError, match=match):
             call()
+
+
+def test_a_vanishing_required_life_gives_an_infinite_life_margin_without_a_warning():
+    """Fuzzing found 'RuntimeWarning: overflow encountered in divide' from select_bearing at life_h = 5e-324: the life
+    margin L_nmh/L_h − 1 is +inf there (any bearing lasts that long), without the warning."""
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        s = b.select_bearing("302", 5.0, F_r_n=0.001, F_a_n=1e5, n_rpm=650.0, life_h=5e-324, reliability=99,
+                             lubrication="grease")
+    assert s.found and math.isinf(float(s.best["margin_life"]))

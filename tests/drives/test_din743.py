@@ -233,3 +233,32 @@ def test_shaft_safety_takes_one_number_per_shaft(kw, match):
     notches = [ShaftNotch(140.0, Notch("key")), ShaftNotch(80.0, Notch("shoulder", r_mm=1.6))]
     with pytest.raises(GearDesignError, match=match):
         shaft_safety(an, notches, "42CrMo4", **kw)
+
+
+def test_a_groove_through_a_hollow_shafts_wall_and_array_inputs_are_refused_by_name():
+    """A groove of depth t on a tube of bore b with d − 2t <= b left no section (d² − b² < 0: a negative area and
+    section moduli) yet gave safeties (S_D 0.197, S_F 1.85 here); fuzzing found a notch position as an empty array
+    (TypeError) and load_case as an array (ValueError, 'truth value of an array is ambiguous')."""
+    model = ShaftModel(sections=[(50.0, 3.0, 2.9), (50.0, 3.0, 2.9)], supports_mm=[0.0, 100.0],
+                          loads=[ShaftLoad(x_mm=50.0, fy_n=-10.0, torque_nm=1.0), ShaftLoad(x_mm=100.0,
+                                                                                                  torque_nm=-1.0)])
+    a = analyse_shaft(model)
+    with pytest.raises(GearDesignError, match=r"cuts through the wall: root d − 2t = 2\.8 mm <= bore 2\.9 mm"):
+        shaft_safety(a, [ShaftNotch(40.0, Notch("groove", r_mm=0.01, t_mm=0.1))], "42CrMo4")
+    with pytest.raises(GearDesignError, match=r"notches\[0\]\.x_mm must be"):
+        shaft_safety(a, [ShaftNotch([], Notch("key"))], "42CrMo4")
+    with pytest.raises(GearDesignError, match="load_case must be 1 .* or 2"):
+        shaft_safety(a, [ShaftNotch(40.0, Notch("key"))], "42CrMo4", load_case=[1.0, math.nan])
+    assert shaft_safety(a, [ShaftNotch(40.0, Notch("key"))], "42CrMo4", load_case=1).table["S_D"].iloc[0] > 0
+
+
+def test_a_notch_takes_one_number_per_size():
+    """Fuzzing found 'ValueError: setting an array element with a sequence' from shaft_safety for a groove of radius
+    array([1.]): each size of a Notch is one number, refused by name otherwise."""
+    with pytest.raises(GearDesignError, match="r_mm must be one number"):
+        Notch("groove", r_mm=[1.0], t_mm=2.0)
+    with pytest.raises(GearDesignError, match="t_mm must be one number"):
+        Notch("groove", r_mm=1.0, t_mm=[1.0, 2.0])
+    with pytest.raises(GearDesignError, match="beta_sigma must be one number"):
+        Notch("given", beta_sigma=[2.0], beta_tau=1.5)
+    assert Notch("groove", r_mm=1, t_mm=2).r_mm == 1.0

@@ -129,3 +129,35 @@ def test_a_three_stage_reducer_finishes_at_default_ranges(housing):
     r = gd.Drive(power_kw=15, n_in_rpm=1460, stages=st).optimize(total_ratio=70)
     assert r.success and r.best.success and r.best.min_margin >= 0
     assert math.prod(s["summary"]["ratio"] for s in r.best.stages) == pytest.approx(r.best.total_ratio, rel=1e-12)
+
+
+def _sized_modules(best):
+    return {s.name: s.m for s in best.drive.stages if getattr(s, "kind", "") == "gear"}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("job", ["conveyor", "three_stage"])
+def test_the_ordinary_jobs_size_their_stages_in_iso54_series_I(job):
+    """ISO 54:1996 / DIN 780-1 prefer series I modules (1, 1.25, 1.5, 2, 2.5, 3, 4, 5, 6, 8, ...) to series II. Issue
+    35's conveyor and three-stage reducer (standard housings) took 5.5 mm, and 3.5, 4.5 and 7 mm: each stage's module
+    is series I now. With module_series="both" the conveyor's best takes a series II module again (its slow stage:
+    4.5 mm), less than SERIES_II_MARGIN (5 %) smaller than the default's series I design."""
+    from geardesign.catalogs.tables import module_series
+    from geardesign.drives.stage_kinds.gear import SERIES_II_MARGIN
+
+    motor = gd.motor.select(15.0, 1460)
+    u = motor.motor["rated_speed_rpm"] / (60 if job == "conveyor" else 20)
+
+    def run(rule):
+        names = ("fast", "slow") if job == "conveyor" else ("g1", "g2", "g3")
+        st = [gd.GearStage(None, material="42CrMo4", name=nm, module_series=rule) for nm in names]
+        return gd.Drive(motor=motor, stages=st + ([gd.ChainStage()] if job == "conveyor" else [])).optimize(u)
+
+    first = set(module_series(1).tolist())
+    r = run("preferred")
+    assert r.success and r.best.min_margin >= 0
+    assert set(_sized_modules(r.best).values()) <= first, _sized_modules(r.best)
+    if job == "conveyor":
+        both = run("both")
+        assert both.success and not set(_sized_modules(both.best).values()) <= first
+        assert both.best.size_mm2 < r.best.size_mm2 < both.best.size_mm2 * (1 + SERIES_II_MARGIN)

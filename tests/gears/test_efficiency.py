@@ -289,3 +289,20 @@ def test_a_vanishing_helix_or_width_gives_a_number_or_one_line():
     assert math.isfinite(tiny.loss_w) and tiny.loss_w == pytest.approx(spur.loss_w, rel=1e-12)
     with pytest.raises(GearDesignError, match="face_width_mm must be in"):
         mesh_loss(GearPair(10, 21, 26, 0.3, 0.2, face_width_mm=5e-324), 100.0, 1450, 50.0)
+
+
+@pytest.mark.parametrize("args, kwargs, missing", [((), {}, ("nu40", "nu100")), ((320.0,), {}, ("nu100",)),
+                                                    ((), {"nu100": 24.0}, ("nu40",)),
+                                                    ((), {"density15_kg_m3": 880.0}, ("nu40", "nu100"))])
+def test_a_lubricant_without_its_viscosities_is_refused_by_name(args, kwargs, missing):
+    """Lubricant() raised Python's own TypeError ('missing 2 required positional arguments'): now one
+    GearDesignError naming each missing viscosity with its unit and range (as gd.Load(torque=100) hints)."""
+    with pytest.raises(GearDesignError) as e:
+        Lubricant(*args, **kwargs)
+    text = str(e.value)
+    assert text.startswith(f"Lubricant needs {', '.join(missing)} (missing)")
+    for name in missing:
+        assert f"{name}: the kinematic viscosity at {name[2:]} °C" in text and "mm²/s, in [2, 1e6]" in text
+    with pytest.raises(GearDesignError, match=r"Lubricant.iso_vg\(220, nu100\)"):
+        Lubricant(grade=220)
+    assert Lubricant(nu100=24.0, nu40=320.0) == Lubricant(320.0, 24.0)

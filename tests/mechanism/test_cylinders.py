@@ -82,3 +82,12 @@ def test_the_last_journal_carries_the_resultant(m):
     assert mz.shape == (m.shape[0] + 1, m.shape[1])
     np.testing.assert_allclose(mz[-1], m.sum(axis=0), rtol=1e-12, atol=1e-9)
     assert np.all(mz[0] == 0)
+
+
+def test_a_speed_too_low_for_any_flywheel_is_refused_by_name():
+    """Fuzzing found a ZeroDivisionError from Engine.analyse at n_rpm = 5e-324 (a 1 µm crank in a 2 m bore: ω²
+    underflows in δ = ΔE/(J·ω²)); a δ that overflows is refused by name, a slow but finite one answers."""
+    with pytest.raises(GearDesignError, match="n_rpm = 4.94066e-324 rpm is too slow for a fluctuation coefficient"):
+        fluctuation_coefficient(1000.0, 1e-6, 5e-324)
+    # ω = π/30·(30/π) = 1 rad/s: δ = ΔE/J
+    assert fluctuation_coefficient(1000.0, 2.0, 30 / math.pi) == pytest.approx(500.0, rel=1e-15)

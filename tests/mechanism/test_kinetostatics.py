@@ -254,3 +254,64 @@ def test_one_axis_tilt_as_a_list_is_refused_by_name():
         virtual_power_torque(MECHS[0], [0.0, 90.0], 1700, axis_tilt_deg=np.array([1.0]))
     with pytest.raises(GearDesignError, match="gravity_m_s2 must be one number"):
         joint_forces(MECHS[0], [0.0, 90.0], 1700, gravity_m_s2=[9.81, 0.0])
+
+
+def test_a_gas_force_beyond_any_engine_is_refused_by_name_near_the_dead_point():
+    """Fuzzing found NaN joint forces at l/r = 1.0000001 with gas_force_n = 1e308: near the dead point the forces grow
+    as F_g/cos β_max and overflowed (inf − inf). Every l/r > 1 is a mechanism whose forces are finite; the gas force
+    is bounded instead, |F_g| <= 1e10 N (24 MN is a 1 m bore at 30 MPa)."""
+    mech = SliderCrank(45.0, 45.0000045, rod_cg_mm=0.0, piston_mass_kg=1000.0, crank_mass_kg=10.5, crank_cg_mm=450.0)
+    phi = np.linspace(0.0, 720.0, 37)
+    for fn in (joint_forces, virtual_power_torque):
+        for gas in (1e308, -1e308, [1e4, 2e10]):
+            with pytest.raises(GearDesignError, match=r"gas_force_n must be in \[-1e\+10, 1e\+10\] N"):
+                fn(mech, phi if np.ndim(gas) == 0 else [0.0, 90.0], 1700.0, gas)
+    f = joint_forces(mech, phi, 1700.0, 1e10)
+    assert all(np.all(np.isfinite(getattr(f, name))) for name in f.__dataclass_fields__ if name != "success")
+
+
+@pytest.mark.parametrize("excess", [1e-7, 1e-12])
+def test_forces_at_the_dead_point_match_an_exact_computation(excess):
+    """l/r = 1 + ε, φ = 90°: the rod stands at sin β = r/l, and with massless links the piston pin carries F·tan β
+    across the cylinder and the crank F·r (Kolchin & Demidov §10.1: T = F·sin(φ + β)/cos β). cos β = √(1 − (r/l)²)
+    in 40 digits (mpmath): 1 − r/l computed after r/l was rounded lost 2.5e-5 of it at ε = 1e-12; it is
+    (l − r)(l + r)/l² now, to 1e-13."""
+    r = 70.0
+    l_ = r * (1.0 + excess)
+    mech = SliderCrank(r, l_, rod_cg_mm=0.0)
+    F = 1e4
+    f = joint_forces(mech, [90.0], 1700.0, F, gravity_m_s2=0.0)
+    phi = mp.mpf(float(np.radians(90.0)))         # the double the function turns 90° into: cos φ = 6e-17, not 0
+    s = mp.mpf(r) * mp.sin(phi) / mp.mpf(l_)
+    tan_beta = s / mp.sqrt((1 - s) * (1 + s))
+    assert float(f.piston_pin_x_n[0]) == pytest.approx(float(F * tan_beta), rel=1e-12)
+    # M = F·r·sin(φ + β)/cos β = F·r·(sin φ + cos φ·tan β)
+    exact = F * mp.mpf(r) / 1000 * (mp.sin(phi) + mp.cos(phi) * tan_beta)
+    assert float(f.torque_nm[0]) == pytest.approx(float(exact), rel=1e-12)
+    cb = k.state(np.array([float(phi)]), r, l_, 0.0, 1.0).cos_beta[0]
+    assert float(cb) == pytest.approx(float(mp.sqrt((1 - s) * (1 + s))), rel=1e-13)
+
+
+def test_a_vanishing_speed_gives_the_static_torque_and_a_list_of_speeds_is_refused():
+    """Fuzzing found a NaN torque from virtual_power_torque at n_rpm = 5e-324 (ω underflows to 0: the power over ω
+    was 0/0; the velocities per unit ω are used now) and a broadcasting ValueError for n_rpm = [1, 2] (one speed a
+    cycle). At φ = 90° with massless links the static torque is F·r."""
+    mech = SliderCrank(70.0, 250.0, rod_cg_mm=0.0)
+    for fn in (joint_forces, virtual_power_torque):
+        t = fn(mech, [90.0], 5e-324, 1e4, gravity_m_s2=0.0)
+        t = t.torque_nm if hasattr(t, "torque_nm") else t
+        assert float(t[0]) == pytest.approx(700.0, rel=1e-12)
+        for speeds in ([1.0, 2.0], (), np.array([1700.0])):
+            with pytest.raises(GearDesignError, match="n_rpm must be"):
+                fn(mech, np.linspace(0.0, 720.0, 37), speeds, 1e4)
+
+
+def test_the_fuzz_case_of_a_micrometre_crank_in_a_2000_mm_bore():
+    """The reproducer reported as 'r = 0.001 mm on a 2000 mm bore' (a crank of radius 1 µm in a 2 m cylinder at
+    n = 5e-324 rpm): virtual_power_torque gave NaN (0/0); both routes now agree on a finite torque."""
+    mech = SliderCrank(crank_radius_mm=0.001, rod_length_mm=0.0035, rod_cg_mm=0.0, piston_mass_kg=0.6,
+                       rod_mass_kg=0.7, rod_inertia_kg_m2=0.0617, cylinder_bore_mm=2000.0, offset_mm=0.00099)
+    phi = np.linspace(0.0, 720.0, 37)
+    t = virtual_power_torque(mech, phi, 5e-324, 1e7)
+    f = joint_forces(mech, phi, 5e-324, 1e7)
+    assert np.all(np.isfinite(t)) and np.allclose(t, f.torque_nm, rtol=1e-12, atol=1e-12 * np.abs(t).max())

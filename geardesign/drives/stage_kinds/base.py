@@ -171,6 +171,11 @@ class StageKind:
         """(size mm², mass kg) of a feasible solved option."""
         return 0.0, 0.0
 
+    def rank_factor(self, stage, sol: dict) -> float:
+        """The factor on the size or mass of a drive with this feasible solved option when the search ranks it (the
+        size and mass it reports stay as they are): 1, a preference none."""
+        return 1.0
+
     def bound(self, stage, options: dict) -> tuple:
         """Lower bounds (size mm², mass kg) of each option whatever the solve gives (arrays)."""
         zero = np.zeros(options["ratio"].shape)

@@ -35,7 +35,8 @@ from ...shifts.centres import margin_centres
 from ...shifts.objectives import OBJECTIVES
 from ...shifts.optimize import optimize_shifts
 from ..limits import LOOK_AHEAD, MARGIN_AHEAD, MARGIN_TOL, SHIFT_CACHE, SIZING_TRIES
-from ..stages import EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, GearStage, disc_mass_kg, stage_area_mm2, stage_material
+from ..stages import (EFFICIENCY_RANGE, FACE_WIDTH_PITCHES, MODULE_SERIES_RULES, GearStage, disc_mass_kg,
+                      stage_area_mm2, stage_material)
 from .base import ToothedKind
 from .gear_strength import _widths, check_names, life_options, safety_limits, strength_margins, strength_sizes, strength_sizes_many, widest_width
 from ...gears.center_distance import x_sum_from_center_distance
@@ -237,12 +238,33 @@ def set_sizing(fn):
     return before
 
 
-@lru_cache(maxsize=1)
-def _series() -> np.ndarray:
-    """The ISO 54 modules (read once: the catalog lookup costs ~3 ms, the search asks per tooth pair)."""
-    series = np.array(module_series(), dtype=float)
+@lru_cache(maxsize=2)
+def _series(which=(1, 2)) -> np.ndarray:
+    """The ISO 54 modules of series ``which`` (read once: the catalog lookup costs ~3 ms, the search asks per tooth
+    pair), sorted."""
+    series = np.array(module_series(which), dtype=float)
     series.flags.writeable = False
     return series
+
+
+def _series_rounds(stage: GearStage) -> tuple:
+    """The module lists a stage sized by its strength tries in turn (``GearStage.module_series``): "preferred"
+    series I, then both series (a tooth pair none of whose series I modules holds its checks takes the smallest
+    module of either that does: one of series II); "both" both at once."""
+    return (_series(1), _series()) if stage.module_series == "preferred" else (_series(),)
+
+
+def _series_one_above(stage: GearStage, modules: np.ndarray, m: float):
+    """On a standard centre distance, where a tooth pair's fit depends on each module's standard a_w: the index in
+    ``modules`` of the series I module next above ``m`` when ``m`` is a series II module the stage would take
+    (``module_series`` "preferred": it takes that series I module instead wherever it holds), else None. Only the
+    next one: each module tried costs a shift solve, and the one after is 25-45 % larger than the series II one."""
+    first = _series(1)
+    if stage.module_series != "preferred" or np.any(first == m):
+        return None
+    above = first[first > m]
+    at = np.flatnonzero(modules == above[0]) if above.size else ()
+    return int(at[0]) if len(at) else None
 
 
 def _shifts_scale_free(stage: GearStage) -> bool:
@@ -264,6 +286,10 @@ def _scale_free_checks(checks_key: tuple, helical: bool) -> bool:
     return all(type(c) in free for c in resolve_checks(dict(checks_key) or None))
 
 
+# a drive with a sized series II module ranks as this much larger (or heavier) than it is: it wins over drives of
+# series I modules only when more than 5 % smaller (ISO 54, DIN 780-1: series I preferred); a neighbouring module
+# of the other series is 9-14 % larger or smaller, its stage about twice that in area
+SERIES_II_MARGIN = 0.05
 CONTACT_SCREEN = 0.1   # a module whose contact margin at the even split is below −0.1 is not solved
 STANDARD_TRIES = 1     # modules per pair and round of the standard-housing sizing
 RESIZE_FIXED_POINT = 6  # sizings of a stage re-sized for its shafts' f_sh (GearKind.resize) before it gives up
@@ -418,14 +444,17 @@ class GearKind(ToothedKind):
         ref = gear_solution(_at_module(stage, 1.0, b_ref), z1, z2, objective)
         if "x1" not in ref:
             return dict(ref, m=math.nan, face_width_mm=None)
-        cands, best = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
-                                     _series(), MARGIN_TOL, 1 if free else SIZING_TRIES)
-        if free:   # the reference shifts are those of the first candidate (or the closest)
-            return self._scaled(ref, *best) if cands else self._unsized(ref, *best)
-        for m, b in cands:
-            sol = self._candidate(stage, m, b, z1, z2, objective, flow)
-            if sol["feasible"]:
-                return sol
+        for series in _series_rounds(stage):    # series I first: series II only where no series I module holds
+            cands, best = strength_sizes(stage, flow.torque_in_nm, flow.n_in_rpm, z1, z2, ref["x1"], ref["x2"],
+                                         series, MARGIN_TOL, 1 if free else SIZING_TRIES)
+            if free and cands:   # the reference shifts are those of the first candidate (or the closest)
+                return self._scaled(ref, *best)
+            for m, b in ([] if free else cands):
+                sol = self._candidate(stage, m, b, z1, z2, objective, flow)
+                if sol["feasible"]:
+                    return sol
+        if free:
+            return self._unsized(ref, *best)
         if cands:
             return sol
         sol = self._candidate(stage, best[0], best[1], z1, z2, objective, flow)
@@ -452,6 +481,7 @@ class GearKind(ToothedKind):
         todo = [list(np.flatnonzero(ok)) for ok in screen]
         out: list = [None] * len(pairs)
         closest: list = [None] * len(pairs)
+        held: list = [None] * len(pairs)      # a series II design, while the series I module above it is tried
         while True:
             batch = []          # (pair index, module, solution)
             for i, (z1, z2) in enumerate(pairs):
@@ -472,10 +502,16 @@ class GearKind(ToothedKind):
                 full = dict(sol, margins={**sol["margins"], **margins}, m=m, face_width_mm=b)
                 worst = min(margins.values())
                 if worst >= -MARGIN_TOL:
-                    out[i] = full
+                    k = _series_one_above(stage, cands[i][0], m) if held[i] is None else None
+                    if k is None:
+                        out[i] = full
+                    else:
+                        held[i], todo[i] = full, [k]
                 elif closest[i] is None or worst > closest[i][0]:
                     closest[i] = (worst, full)
         for i, (z1, z2) in enumerate(pairs):
+            if out[i] is None and held[i] is not None:     # the series I module above holds no design
+                out[i] = held[i]
             if out[i] is not None:
                 continue
             if closest[i] is None:
@@ -584,10 +620,15 @@ class GearKind(ToothedKind):
             if "x1" in ref:
                 by_flow.setdefault((flow.torque_in_nm, flow.n_in_rpm), []).append(i)
         for (torque, speed), idx in by_flow.items():
-            sizes = strength_sizes_many(stage, torque, speed, [(*pairs[i], refs[i]["x1"], refs[i]["x2"]) for i in idx],
-                                        _series(), MARGIN_TOL)
-            for i, (cands, best) in zip(idx, sizes):
-                out[i] = self._scaled(refs[i], *best) if cands else self._unsized(refs[i], *best)
+            for series in _series_rounds(stage):    # series I first: the pairs no series I module carries again
+                sizes = strength_sizes_many(stage, torque, speed,
+                                            [(*pairs[i], refs[i]["x1"], refs[i]["x2"]) for i in idx], series,
+                                            MARGIN_TOL)
+                for i, (cands, best) in zip(idx, sizes):
+                    out[i] = self._scaled(refs[i], *best) if cands else self._unsized(refs[i], *best)
+                idx = [i for i, (cands, _) in zip(idx, sizes) if not cands]
+                if not idx:
+                    break
         return [sol if sol is not None else self.solve(stage, o, objective, f)      # unsized: as one by one
                 for sol, o, f in zip(out, options, flows)]
 
@@ -620,6 +661,15 @@ class GearKind(ToothedKind):
             return stage.width_mm
         b = sol.get("face_width_mm")
         return b if b is not None else FACE_WIDTH_PITCHES * math.pi * sol["m"]
+
+    def rank_factor(self, stage, sol: dict) -> float:
+        """1 + :data:`SERIES_II_MARGIN` for a module of ISO 54 series II that the stage's strength sized
+        (``module_series`` "preferred"; an installed sizing function's modules are its own choice): a drive with one
+        ranks behind a drive of series I modules unless it is more than that much smaller (or lighter)."""
+        if (stage.m is not None or _SIZING[0] is not None or stage.module_series != "preferred"
+                or np.any(_series(1) == sol.get("m"))):
+            return 1.0
+        return 1.0 + SERIES_II_MARGIN
 
     def solved_cost(self, stage, sol: dict) -> tuple:
         w = self._width(stage, sol)
@@ -810,6 +860,7 @@ class GearKind(ToothedKind):
                                         hi=CENTER_DISTANCE_RANGE_MM[1], choices=("free",) + tuple(CENTER_DISTANCE_SERIES)),
                 "shift_bounds": dict(kind="floats", lo=-3.0, hi=3.0, length=2),
                 "mating_type": dict(kind="choice", choices=GOST1643_TYPES + ("none",)),
+                "module_series": dict(kind="choice", choices=MODULE_SERIES_RULES),
                 "checks": dict(table="checks", without=("jamming",)),
                 # the service life (GearStage: spectrum): the stage's own [drive.stage.spectrum], its pinion's loads
                 # (a CSV beside the scene, as [gear.spectrum] reads it), or the drive's [drive.spectrum]

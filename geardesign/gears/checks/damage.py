@@ -174,6 +174,7 @@ def _where_it_holds(call, n: int) -> dict:
 
 
 _STENCIL = _GRADIENT_STENCIL
+LN_DAMAGE_MAX = 600.0    # the Taylor model's ln D is read up to this (DamageModel.damage)
 
 
 class DamageModel:
@@ -195,7 +196,9 @@ class DamageModel:
                 continue
             _, q0, (g1, g2), (h11, h12, h22) = part
             a1, a2 = g1 + h11 * d1 + h12 * d2, g2 + h12 * d1 + h22 * d2
-            D = np.exp(q0 + 0.5 * ((g1 + a1) * d1 + (g2 + a2) * d2))
+            # ln D at most 600 (D = 4e260, far past any damage_max <= 10): far from its centre the quadratic overflowed
+            # exp (fuzz: a warning, inf damage); the margin's sign and the walk's direction D·a stay as they were
+            D = np.exp(np.minimum(q0 + 0.5 * ((g1 + a1) * d1 + (g2 + a2) * d2), LN_DAMAGE_MAX))
             out["D_" + mode], out["dD_" + mode] = D, (D * a1, D * a2)
         if isinstance(geo["_x1"], float):
             out = {k: (tuple(map(float, v)) if isinstance(v, tuple) else float(v)) for k, v in out.items()}

@@ -124,11 +124,20 @@ class StrengthSpec:
                 if per_design:
                     flat["_b"] = np.broadcast_to(np.broadcast_to(np.asarray(width, dtype=float), x1.shape).reshape(1, -1),
                                                  X1.shape).ravel()
+                # a load per design (Load.per_design: a drive sizing a stage at each flow) goes with its designs: the
+                # designs in range, and the halves _where_it_holds tries, took all its values (a broadcast error, fuzz)
+                per_load = np.ndim(self.load.torque_nm) > 0
+                if per_load:
+                    for key, v in (("_T", self.load.torque_nm), ("_n", self.load.n_rpm)):
+                        flat[key] = np.broadcast_to(np.broadcast_to(np.asarray(v, dtype=float), x1.shape).reshape(1, -1),
+                                                    X1.shape).ravel()
 
                 def call(sel):
                     at = {k: v[idx[sel]] for k, v in flat.items()}
                     b = at.pop("_b") if per_design else width
-                    out = pair_strength(at["_m"], at["_z1"], at["_z2"], at["_x1"], at["_x2"], load=self.load,
+                    load = (type(self.load).per_design(at.pop("_T"), at.pop("_n"), self.load.application_factor,
+                                                       self.load.life_h) if per_load else self.load)
+                    out = pair_strength(at["_m"], at["_z1"], at["_z2"], at["_x1"], at["_x2"], load=load,
                                         material1=self.material1, material2=self.material2, face_width_mm=b,
                                         beta_deg=mesh.beta_deg, internal=mesh.internal, rack=mesh.rack,
                                         tip_shortening=mesh.tip_shortening, geometry=at, **self.keywords())
@@ -310,8 +319,7 @@ def pair_context(context: dict, what: str) -> tuple:
     frozen = tuple(sorted((k, _hashable(v)) for k, v in check_options(options).items()))
     width = context.get("face_width_mm")
     if width is not None:      # one number: the spec is hashed (its values are memoised per geometry)
-        width = one_number("face_width_mm", require_range("face_width_mm", width, *FACE_WIDTH_RANGE_MM, lo_open=True,
-                                                          unit="mm"))
+        width = one_number("face_width_mm", require_range("face_width_mm", width, *FACE_WIDTH_RANGE_MM, unit="mm"))
     return mat1, mat2, width, frozen
 
 

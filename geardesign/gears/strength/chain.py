@@ -142,10 +142,10 @@ def chain_geometry(geo: dict, rack: BasicRack, beta_deg: float, xp=ArrayOps) -> 
 def _widths(face_width_mm, face_width2_mm, m, xp):
     """(b, b1, b2): the common width for contact and each gear's width for its root stress, the wider gear
     counted at most one module wider on each side (ISO 6336-3:2019 clause 5, b)."""
-    b1 = checked("face_width_mm", face_width_mm, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
+    b1 = checked("face_width_mm", face_width_mm, *dflt.FACE_WIDTH_RANGE_MM, unit="mm")
     if face_width2_mm is None:      # one width: min(b1, b1 + 2m) is b1
         return b1, b1, b1
-    b2 = checked("face_width2_mm", face_width2_mm, *dflt.FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
+    b2 = checked("face_width2_mm", face_width2_mm, *dflt.FACE_WIDTH_RANGE_MM, unit="mm")
     b = xp.minimum(b1, b2)
     return b, xp.minimum(b1, b + 2.0 * m), xp.minimum(b2, b + 2.0 * m)
 

@@ -25,6 +25,8 @@ NU40_RANGE = (1.0, 10_000.0)       # mm²/s: from thin spindle oils to the heavi
 RZ_RANGE_UM = (0.01, 100.0)
 RZ_ROOT_MAX_UM = 40.0              # the end of the Y_RrelT curves (ISO 6336-3:2019 clause 14)
 K_GAMMA_RANGE = (1.0, 3.0)         # mesh load factor of planetary sets (ISO 6336-1:2019 6.4: 1.0 to about 1.6)
-FACE_WIDTH_RANGE_MM = (0.0, 1e5)   # open below
+# a loaded face width: at least a micrometre (closed below; a subnormal width made the line load F_t/b infinite:
+# NaN damage and lives, fuzz), as the mesh loss of gears/efficiency.py
+FACE_WIDTH_RANGE_MM = (1e-3, 1e5)
 FACTOR_RANGE = (0.01, 100.0)       # a given factor outside this is a typo, not a measurement
 EPS_BETA_MAX = 50.0      # the overlap ratio up to which the helix factors are taken (far beyond any gear)

@@ -350,7 +350,7 @@ def pair_life(m, z1=None, z2=None, x1=0.0, x2=0.0, *, spectrum: LoadSpectrum, ma
         if prep.grouped[int(mode[1])]:
             D[r] = _grouped_max(d[r], prep.groups[int(mode[1])])
     if shape:
-        with np.errstate(divide="ignore"):
+        with np.errstate(divide="ignore", over="ignore"):    # a subnormal D (n = 5e-324 rpm): an infinite life
             life = np.where(D > 0, required / D, np.inf)
         res.update(zip(("D_" + m for m in MODES), D))
         res.update(zip(("life_h_" + m for m in MODES), life))

@@ -152,3 +152,38 @@ def test_resize_for_the_shafts_f_sh():
     assert min(float(v) for v in margins.values()) >= -1e-9
     assert kind.resize(replace(st, strength={"factors": {"f_sh": 5.0}}), fixed, option, "min_size", flow, 60.0) is None
     assert kind.resize(fixed, fixed, option, "min_size", flow, 60.0) is None      # a module given: not sized by load
+
+
+def _holds_at(m, z1, z2, torque_nm, n_rpm):
+    """Whether z1/z2 at the fixed module m (the widest face width the sizing tries, ψ_d = b/d1 = 1) holds every check
+    of a sized stage (42CrMo4, GOST 2185 centre distance, mating type B, x window ±1.2) at gear 1's torque and speed:
+    a stage of given module, not the sizing."""
+    st = gd.GearStage(m, z1=z1, z2=z2, material="42CrMo4", center_distance="gost2185", mating_type="B",
+                      shift_bounds=(-1.2, 1.2), face_width_mm=m * z1)
+    drive = gd.Drive(power_kw=torque_nm * n_rpm * math.pi / 30 / 1000, n_in_rpm=n_rpm, stages=[st])
+    return drive.optimize(total_ratio=z2 / z1).success
+
+
+def test_a_sized_stage_takes_the_series_I_module_above_a_series_II_one_where_it_holds():
+    """ISO 54:1996 / DIN 780-1: series I modules are preferred to series II. 20/59 at 289.4 N·m, 485 rpm (the slow
+    stage of issue 35's conveyor) holds at 4.5 mm (series II) and 5 mm (series I, next above) but not at 4 mm, each
+    checked as a stage of given module: the default sizing takes 5 mm, module_series="both" the smallest, 4.5."""
+    from types import SimpleNamespace
+
+    from geardesign.catalogs.tables import module_series
+    from geardesign.drives.stage_kinds.gear import GearKind
+
+    T, n = 289.43228826196224, 485.0
+    assert (_holds_at(4.0, 20, 59, T, n), _holds_at(4.5, 20, 59, T, n), _holds_at(5.0, 20, 59, T, n)) == (
+        False, True, True)
+    assert 4.5 in module_series(2) and 4.0 in module_series(1) and 5.0 in module_series(1)
+    flow = SimpleNamespace(torque_in_nm=T, n_in_rpm=n)
+    got = {rule: GearKind().solve(gd.GearStage(None, material="42CrMo4", module_series=rule), {"z1": 20, "z2": 59},
+                                  "min_size", flow) for rule in ("preferred", "both")}
+    assert got["preferred"]["feasible"] and got["preferred"]["m"] == 5.0
+    assert got["both"]["feasible"] and got["both"]["m"] == 4.5
+    with pytest.raises(GearDesignError, match="module_series must be one of preferred, both"):
+        gd.GearStage(None, material="42CrMo4", module_series="II")
+    # a scene's gear stage takes it too
+    assert GearKind().scene_keys()["module_series"]["choices"] == ("preferred", "both")
+    assert GearKind().from_scene({"module_series": "both", "material": "42CrMo4"}).module_series == "both"

@@ -132,3 +132,17 @@ def test_a_spectrum_counted_for_other_teeth_is_refused_by_name(method):
     with pytest.raises(GearDesignError, match=r"counted per tooth for teeth \(101, 103\), the pair has \(17, 26\)"):
         gd.optimize_shifts(17, 26, m=4.0, method=method,
                            checks={"spectrum": curve, "material": "42CrMo4", "face_width_mm": 10.0})
+
+
+def test_the_damage_model_far_from_its_centre_gives_no_overflow():
+    """Fuzzing found 'RuntimeWarning: overflow encountered in exp' (12 of them) from optimize_shifts with the damage
+    checks of a 13/40 pair at m = 8 under 2675 N·m, 10 000 rpm: the Taylor model of ln D read far from its centre.
+    Its ln D is read up to 600 now; the answer is the same refusal, naming the check that holds nowhere."""
+    import warnings
+
+    s = gd.LoadSpectrum.from_bins(torque_nm=[1876.2, 1104.8, 2675.3], n_rpm=10000.0, time_h=[20000.0, 20000.0, 100.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        r = gd.optimize_shifts(13, 40, checks={"spectrum": s, "material": "18CrNiMo7-6", "face_width_mm": 40.0,
+                                               "damage_max": 1.0, "mean_stress_factor": 1.0}, m=8.0, method="exact")
+    assert not r.success and "damage" in r.message and "holds nowhere" in r.message

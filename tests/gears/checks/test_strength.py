@@ -173,3 +173,12 @@ def test_the_solvers_quadratic_model_of_the_chain_matches_it():
         linear = exact[name] + (exact["d" + name][0] - exact["d" + name][1]) * d
         error = abs(model.safety(near)[name] - truth[name])
         assert error < 1e-8 and error < abs(linear - truth[name]) / 10
+
+
+def test_a_load_per_design_goes_with_its_designs_when_the_chain_refuses_some():
+    """Fuzzing (strength_drive) found 'ValueError: operands could not be broadcast together with shapes (272,)
+    (136,)' from a drive sizing a stage of a V material without yield_mpa: the chain refused the call, the halves
+    it then tried took the whole per-design load. Now the refusal itself, by name."""
+    mat = gd.material("V_alloy", hardness=360.0)
+    with pytest.raises(GearDesignError, match="needs yield_mpa"):
+        gd.Drive(power_kw=2.0, n_in_rpm=950.0, stages=[gd.GearStage(material=mat, m=None)]).optimize(2.81)

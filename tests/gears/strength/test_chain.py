@@ -156,7 +156,7 @@ def test_load_refusals(kwargs, message):
 @pytest.mark.parametrize("kwargs, message", [
     (dict(material1="unobtainium"), "material must be a name of the catalog or an ISO 6336-5 group"),
     (dict(material1=3), "material1 must be a geardesign Material or a material name, got int"),
-    (dict(face_width_mm=0), "face_width_mm must be in (0, 100000] mm, got 0"),
+    (dict(face_width_mm=0), "face_width_mm must be in [0.001, 100000] mm, got 0"),
     (dict(accuracy_grade=13), "accuracy_grade must be in [0, 12], got 13"),
     (dict(nu40=0.5), "nu40 must be in [1, 10000] mm²/s, got 0.5"),
     (dict(Rz_flank_um=0.0), "Rz_flank_um must be in [0.01, 100] µm, got 0.0"),

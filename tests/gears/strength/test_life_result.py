@@ -117,3 +117,19 @@ def test_a_result_pickled_before_its_table_is_read_keeps_the_table():
     assert sent.bins.equals(r.bins)
     assert sent.bins["D_H1"].sum() == pytest.approx(sent.D_H1, rel=1e-12)
     assert json.loads(sent.to_json())["bins"][0]["torque_nm"] == 120.0
+
+
+@pytest.mark.parametrize("width", [1e-300, 5e-324, 9.99e-4])
+def test_a_face_width_below_a_micrometre_is_refused_by_name(width):
+    """Fuzzing found NaN (and infinite) damage from pair.life at a 1e-300 mm face width (the line load F_t/b
+    overflows): the strength chain, its checks and the life take b >= 1 µm, as the mesh loss does."""
+    s = gd.LoadSpectrum.from_bins([500.0, 1000.0], 1000.0, time_h=[1e3, 1e2])
+    calls = (lambda: gd.GearPair(4, 20, 60, 0.3, 0.1, face_width_mm=width).life(s, "42CrMo4"),
+             lambda: gd.pair_life(4, 20, 60, 0.3, 0.1, spectrum=s, material1="42CrMo4", face_width_mm=width),
+             lambda: gd.GearPair(4, 20, 60, 0.3, 0.1, face_width_mm=width).strength(
+                 gd.Load(torque_nm=100.0, n_rpm=1000.0), "42CrMo4"))
+    for call in calls:
+        with pytest.raises(GearDesignError, match=r"face_width_mm must be in \[0\.001, 100000\] mm"):
+            call()
+    r = gd.GearPair(4, 20, 60, 0.3, 0.1, face_width_mm=1e-3).life(s, "42CrMo4")     # the least width answers
+    assert all(np.isfinite(v) for v in r.to_dict().values() if isinstance(v, float))

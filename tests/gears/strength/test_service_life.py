@@ -405,3 +405,17 @@ def test_an_alternating_gear_bends_both_ways_in_every_bin():
     assert out["D_F1"] == pytest.approx(60 * 1000 * 10000 / _root_N(ch["sigma_F1"] / ch["sigma_FG1"]), rel=1e-11)
     # σ_F2/σ_FG2 ≈ 0.65 lies below the curve's end (0.85): no damage one-sided, some with the limit times 0.7
     assert out["D_F2"] > 0.0 == _life(spec)["D_F2"]
+
+
+def test_a_vanishing_speed_gives_an_infinite_life_without_a_warning():
+    """Fuzzing found 'RuntimeWarning: overflow encountered in scalar divide' from pair_life for a spectrum at
+    n = 5e-324 rpm: a subnormal damage D = n·t/N, whose life t/D is +inf (nothing loads the teeth)."""
+    import warnings
+
+    s = gd.LoadSpectrum.from_bins(torque_nm=[665.2], n_rpm=5e-324, time_h=[20000.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        r = pair_life(2.0, 17, 200, 0.3, 0.1, spectrum=s, material1="18CrNiMo7-6", face_width_mm=400.0,
+                      mean_stress_factor=1.0)
+    assert all(r[f"life_h_{k}"] == np.inf for k in ("H1", "H2", "F1", "F2"))
+    assert 0.0 <= r["D_H1"] < 1e-300
