@@ -106,7 +106,9 @@ def kinds(ps, rounds=5):
     """exact per pair for each kind on the same tooth counts (a ring keeps >= 10 more teeth than its
     pinion), the kinds interleaved pair by pair and timed in CPU seconds, ``rounds`` times: a pair's time is the
     least of its rounds (the load of other processes only ever adds), the figure the median over the pairs; the
-    ratio of each round's medians shows the spread."""
+    ratio of each round's medians shows the spread; then internal/spur over the pairs whose internal solve used one
+    start point and over those that used several (separate feasible pieces of the start grid, each solved; the
+    message says "best of N starts")."""
     ps = [(z1, max(z2, z1 + 10)) for z1, z2 in ps]
     kinds = (("spur", {}), ("helical 15°", dict(beta_deg=15.0)), ("internal", dict(internal=True)))
     times = {name: np.full((rounds, len(ps)), np.inf) for name, _ in kinds}
