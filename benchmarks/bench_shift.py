@@ -106,24 +106,34 @@ def kinds(ps, rounds=5):
     """exact per pair for each kind on the same tooth counts (a ring keeps >= 10 more teeth than its
     pinion), the kinds interleaved pair by pair and timed in CPU seconds, ``rounds`` times: a pair's time is the
     least of its rounds (the load of other processes only ever adds), the figure the median over the pairs; the
-    ratio of each round's medians shows the spread."""
+    ratio of each round's medians shows the spread; then internal/spur over the pairs whose internal solve used one
+    start point and over those that used several (separate feasible pieces of the start grid, each solved; the
+    message says "best of N starts")."""
     ps = [(z1, max(z2, z1 + 10)) for z1, z2 in ps]
     kinds = (("spur", {}), ("helical 15°", dict(beta_deg=15.0)), ("internal", dict(internal=True)))
     times = {name: np.full((rounds, len(ps)), np.inf) for name, _ in kinds}
     for name, kind in kinds:
         gd.optimize_shifts(*ps[0], **kind)
+    several = np.zeros(len(ps), bool)   # internal pairs solved from more than one start (separate feasible pieces)
     for r in range(rounds):
         for j, p in enumerate(ps):
             for name, kind in kinds:
                 t0 = time.process_time()
-                gd.optimize_shifts(*p, method="exact", **kind)
+                res = gd.optimize_shifts(*p, method="exact", **kind)
                 times[name][r, j] = time.process_time() - t0
+                if name == "internal":
+                    several[j] = "best of" in res.message
     med = {k: np.median(v.min(axis=0)) for k, v in times.items()}
     spread = np.median(times["internal"], axis=1) / np.median(times["spur"], axis=1)
     print(f"exact per kind ({len(ps)} pairs, z2 {min(p[1] for p in ps)}..{max(p[1] for p in ps)}, z2 >= z1 + 10, "
           f"CPU time, least of {rounds} rounds): " + "; ".join(
         f"{k} {v * 1e3:.2f} ms median ({v / med['spur']:.2f}x spur)" for k, v in med.items())
           + f"; internal/spur round by round {spread.min():.2f}-{spread.max():.2f}x")
+    least = {k: v.min(axis=0) for k, v in times.items()}
+    for label, sel in (("one start", ~several), ("several starts", several)):
+        if sel.any():
+            print(f"  internal pairs solved from {label}: {sel.sum()}, internal/spur "
+                  f"{np.median(least['internal'][sel]) / np.median(least['spur'][sel]):.2f}x")
 
 
 if __name__ == "__main__":
