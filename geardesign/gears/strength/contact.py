@@ -172,7 +172,10 @@ def velocity_factor(v_m_s, sigma_Hlim_mpa):
     """
     c = _c_zl(sigma_Hlim_mpa) + 0.02
     xp = ops_of(v_m_s, c)
-    return c + 2.0 * (1.0 - c) / xp.sqrt(0.8 + 32.0 / xp.asarray(v_m_s))
+    v = xp.asarray(v_m_s)
+    # 1/√(0.8 + 32/v) written as √(v/(0.8v + 32)): the same value, and a standing gear (v = 0, e.g. a subnormal
+    # speed) gives Z_v = C_Zv without dividing by zero
+    return c + 2.0 * (1.0 - c) * xp.sqrt(v / (0.8 * v + 32.0))
 
 
 def roughness_factor(Rz1_um, Rz2_um, rho_red_mm, sigma_Hlim_mpa):
