@@ -50,6 +50,18 @@ def compact_repr(obj) -> str:
     return f"{type(obj).__name__}({', '.join(parts)})"
 
 
+def notes_text(notes, shown: int = 3) -> list:
+    """A result's repr lines for its notes: the first ``shown``, then how many more ``.notes`` holds.
+
+    >>> notes_text(["a", "b", "c", "d"])
+    ['  note: a', '  note: b', '  note: c', '  ... 1 more notes (.notes)']
+    """
+    lines = [f"  note: {n}" for n in notes[:shown]]
+    if len(notes) > shown:
+        lines.append(f"  ... {len(notes) - shown} more notes (.notes)")
+    return lines
+
+
 def short_value(v) -> str:
     """A value in a few characters: arrays and tables by their shape, floats to 6 digits."""
     if isinstance(v, np.ndarray):

@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from ...results import Result, plain
+from ...results import Result, notes_text, plain
 from .defaults import MIN_SAFETY_SOURCE
 
 __all__ = ["StrengthResult", "FACTOR_TABLE", "from_chain", "load_case", "case_text"]
@@ -164,9 +164,7 @@ class StrengthResult(Result):
             lines.extend(f"  {line}" for line in case_text(self.case))
         if self.given:
             lines.append(f"  given: {', '.join(self.given)}")
-        lines.extend(f"  note: {n}" for n in self.notes[:3])
-        if len(self.notes) > 3:
-            lines.append(f"  ... {len(self.notes) - 3} more notes (.notes)")
+        lines.extend(notes_text(self.notes))
         return "\n".join(lines)
 
     def _repr_html_(self) -> str:

@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...errors import GearDesignError
-from ...results import Result, plain
+from ...results import Result, notes_text, plain
 from ...validate import one_number, require_positive, require_range
 from . import agma
 from . import efficiency as eff
@@ -251,9 +251,7 @@ class WormRating(Result):
         for k in _CHECKS:
             s = getattr(self, k)
             lines.append(f"  {k:8}{_shown(s):>14}   (min {self.minimums[k]:g})")
-        lines.extend(f"  note: {n}" for n in self.notes[:3])
-        if len(self.notes) > 3:
-            lines.append(f"  ... {len(self.notes) - 3} more notes (.notes)")
+        lines.extend(notes_text(self.notes))
         return "\n".join(lines)
 
     def _repr_html_(self) -> str:
