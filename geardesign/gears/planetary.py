@@ -353,6 +353,14 @@ def set_checks(meshes: PlanetaryMeshes, checks=None, cutter=None, arrangement: s
     # the planet's undercut and tip thickness are one condition in both meshes: kept once
     out = [MeshCheck(inner=c, mesh="sun-planet") for c in sp]
     out += [MeshCheck(inner=c, mesh="planet-ring") for c in pr if c.name not in ("undercut1", "tip_thickness1")]
+    given = sp_opts.get("spectrum")
+    if given is not None and any(s.reverses for s in (given if isinstance(given, (list, tuple)) else [given])):
+        # a reversed bin loads the planet's other flank from the other mesh: its damage sums run across both meshes
+        from .planet_damage import is_planet_damage, planet_damage_checks
+
+        out = [c for c in out if not is_planet_damage(c)]
+        out += planet_damage_checks({"sun-planet": sp_opts, "planet-ring": pr_opts},
+                                    lambda c, tag: MeshCheck(inner=c, mesh=tag))
     if clearance is not None and meshes.n_planets > 1:
         clearance = one_number("neighbour_clearance", require_range("neighbour_clearance", clearance,
                                                                     *NEIGHBOUR_CLEARANCE_RANGE, unit="m"))
@@ -388,12 +396,6 @@ def _mesh_options(opts: dict, meshes: PlanetaryMeshes, arrangement: str) -> tupl
     spectra = None
     if opts.get("spectrum") is not None:
         given = opts["spectrum"]
-        if any(getattr(s, "reverses", False) for s in (given if isinstance(given, (list, tuple)) else [given])):
-            # a reversed bin loads the planet's other flank from the other mesh: its sums run across both meshes,
-            # which per-mesh checks cannot hold (they would pair its flanks within each mesh and miss damage)
-            raise GearDesignError("spectrum: a reversing spectrum (a bin with torque < 0) on a planetary set's checks "
-                                  "is not rated: the planet's flanks sum across its two meshes; rate it with "
-                                  "geardesign.gears.strength.planetary_life, or give the checks one-sided bins")
         spectra = [mesh_spectra(*z, s) for s in (given if isinstance(given, (list, tuple)) else [given])]
         cycles = {tag: spectra[0][tag][1] for tag in MESH_NAMES}
         if cases is not None and any(cases[tag][1] != cycles[tag] for tag in MESH_NAMES):

@@ -243,13 +243,31 @@ def _exists(prob: Problem, v) -> bool:
     return bool(np.isfinite(P).all() and np.isfinite(M).all())
 
 
-def solve(prob: Problem, starts: list, bounds, tol: float, h: float) -> Outcome:
+def _settled(ceiling: float, v0, best, solved, h: float) -> bool:
+    """True when the start v0 cannot beat the best point found, a point that holds every check: its piece's
+    ceiling (the first-order most of its grid piece) is below it, or, for a near node (ceiling NaN: a piece
+    too thin for the grid was looked for there), a point already solved that holds every check lies within
+    two node spacings of it: a near node is looked at only beyond two nodes of every feasible node
+    (:func:`~geardesign.shifts.nodes.grid_starts`), and a feasible point found that close is such a node's
+    stand-in."""
+    if best is None or not best[0]:
+        return False
+    if math.isnan(ceiling):
+        return any(np.abs(np.asarray(v0) - x).max() <= 2 * h * (1 + 1e-9) for x in solved)
+    return ceiling < best[1] - 1e-12
+
+
+def solve(prob: Problem, starts: list, bounds, tol: float, h: float, ceilings=None) -> Outcome:
     """The best of the local optima from each start (a region may have several pieces and corners);
-    ``h`` is the start grid's spacing, which bounds how far Newton may move."""
+    ``h`` is the start grid's spacing, which bounds how far Newton may move. A start whose ``ceilings``
+    entry shows it cannot beat the best point found is not solved (:func:`_settled`)."""
     ev = Evaluator(prob, window=window_box(prob, bounds))
     nv = prob.nvar
-    best, nit = None, 0
-    for v0 in starts:
+    best, nit, solved, skipped = None, 0, [], 0
+    for v0, ceiling in zip(starts, ceilings if ceilings is not None else [math.inf] * len(starts)):
+        if _settled(ceiling, v0, best, solved, h):
+            skipped += 1
+            continue
         w, it, msg, kind = exact_from(prob, ev, v0, bounds, tol, h)
         nit += it
         Mw = ev(w[:nv])[1]
@@ -257,6 +275,8 @@ def solve(prob: Problem, starts: list, bounds, tol: float, h: float) -> Outcome:
         # a point that holds every check ranks above one that misses a check by less than tol (SLSQP's
         # own points do, and gain ~multiplier × tol in the objective by it)
         holds = score > -math.inf and not (Mw.size and Mw.min() < -FEASIBILITY_TOL)
+        if holds:
+            solved.append(w[:nv])
         if best is None or (holds, score) > (best[0], best[1] + 1e-12):
             best = (holds, score, w, msg, kind)
     _, score, w, msg, kind = best
@@ -264,8 +284,11 @@ def solve(prob: Problem, starts: list, bounds, tol: float, h: float) -> Outcome:
         return Outcome(starts[0], nit, False, _NO_OPTIMUM.format(objective=prob.objective.name))
     Mv = ev(w[:nv])[1][:len(prob.part_check)]
     ok = not (Mv.size and Mv.min() < -tol)
-    if len(starts) > 1:
-        msg += f" (best of {len(starts)} starts)"
+    if len(starts) - skipped > 1:
+        msg += f" (best of {len(starts) - skipped} starts)"
+    if skipped:
+        msg += (f" ({skipped} other start{'s' if skipped > 1 else ''} not solved: a piece whose first-order "
+                "ceiling is below it, or a near node beside a point solved)")
     sens, sides = sensitivities_at(prob, ev, w, act_tol=1e-9)
     # SLSQP's own point (no KKT point found near it) is not the Newton-polished one the method's table describes
     accuracy = None if kind == "kkt" else SLSQP_ACCURACY.format(tol=tol)

@@ -49,7 +49,7 @@ def _solve_grid(prob, bounds, tol, grid_n=None, start=None):
 
 
 def _solve_convex(prob, bounds, tol, grid_n=None, start=None):
-    starts, infeasible = feasible_starts(prob, bounds, start)
+    starts, infeasible, _ = feasible_starts(prob, bounds, start)
     return infeasible if infeasible is not None else scp.solve(prob, starts, bounds, tol)
 
 
@@ -62,11 +62,11 @@ def _solve_exact(prob, bounds, tol, grid_n=None, start=None):
         out = balance.solve(prob, bounds)
         if out is not None:
             return out
-    starts, infeasible = feasible_starts(prob, bounds, start)
+    starts, infeasible, ceilings = feasible_starts(prob, bounds, start)
     if infeasible is not None:
         return infeasible
     h = (bounds[1] - bounds[0]) / (start_nodes(prob) - 1)
-    return kkt.solve(prob, starts, bounds, tol, h)
+    return kkt.solve(prob, starts, bounds, tol, h, ceilings)
 
 
 register_method(Method("grid", 1e-2, "best grid node: fun within one node spacing's change of the optimum; x within "

@@ -3,6 +3,7 @@ in one vectorised call; its best feasible node, and the start points it gives th
 from __future__ import annotations
 
 import functools
+import math
 
 import numpy as np
 
@@ -10,7 +11,7 @@ from ..gears.checks import FEASIBILITY_TOL
 from ..gears.geometry import exact_sum_nodes
 from .problem import Problem
 
-__all__ = ["grid_points", "best_feasible", "grid_starts", "START_N", "MAX_STARTS"]
+__all__ = ["grid_points", "best_feasible", "grid_starts", "one_node_change", "START_N", "MAX_STARTS"]
 
 
 START_N = 31          # grid nodes per axis for the start of convex and exact (spacing 0.15)
@@ -64,7 +65,10 @@ def grid_starts(prob: Problem, V: np.ndarray, n: int):
     maxima of the objective over the nodes that miss feasibility by less than one node
     spacing (first-order distance to every violated boundary), away from the feasible nodes,
     where they beat every feasible node: a piece thinner than the grid holds no node, but its
-    neighbours come that close. Returns (starts, margins at V)."""
+    neighbours come that close. Returns (starts, margins at V, ceilings): a start's ceiling is the most
+    its piece can reach to first order (its best node plus one node's change of the objective along each
+    axis, :func:`one_node_change`), NaN for a near node (its piece is not on the grid), inf for a grid's
+    only piece or a given start."""
     from scipy import ndimage
 
     P, M = prob.evaluate(V, grads=False)
@@ -73,15 +77,26 @@ def grid_starts(prob: Problem, V: np.ndarray, n: int):
     fun = np.where(np.isnan(fun), -np.inf, fun)
     score = np.where(feasible, fun, -np.inf)
     if n < 2 or V.shape[0] < n ** prob.nvar:              # a given start, no grid
-        return ([V[int(np.argmax(score))]] if np.isfinite(score).any() else []), M
+        found = np.isfinite(score).any()
+        return ([V[int(np.argmax(score))]] if found else []), M, ([math.inf] if found else [])
     shape = (n, n) if prob.nvar == 2 else (n,)
     box = np.ones((3,) * prob.nvar, bool)
     labels, count = ndimage.label(feasible.reshape(shape), structure=box)
     if count <= 1:
         idx = [int(np.argmax(score))] if count else []
+        ceiling = {i: math.inf for i in idx}
     else:
-        best_of = ndimage.maximum_position(score.reshape(shape), labels, range(1, count + 1))
-        idx = [int(np.ravel_multi_index(p, shape)) for p in best_of]
+        # a piece's best node and its ceiling, piece by piece (few pieces: cheaper than ndimage's
+        # per-label reductions, which sort every node)
+        with np.errstate(invalid="ignore"):   # -inf + inf where a node's pair does not exist: not in a piece
+            reach = np.where(feasible, fun + one_node_change(fun.reshape(shape)).ravel(), -np.inf)
+        labels = labels.ravel()
+        idx, ceiling = [], {}
+        for k in range(1, count + 1):
+            inside = labels == k
+            i = int(np.argmax(np.where(inside, score, -np.inf)))
+            idx.append(i)
+            ceiling[i] = float(reach[inside].max())
     best = score.max()
     # beyond two nodes of every feasible node, better than all of them
     far = ~ndimage.maximum_filter(feasible.reshape(shape), size=5, mode="constant", cval=False).ravel()
@@ -110,4 +125,27 @@ def grid_starts(prob: Problem, V: np.ndarray, n: int):
             chosen.append(i)
         if len(chosen) == MAX_STARTS:
             break
-    return [V[i] for i in chosen], M
+    return [V[i] for i in chosen], M, [float(ceiling.get(i, math.nan)) for i in chosen]
+
+
+def one_node_change(F: np.ndarray) -> np.ndarray:
+    """At each node of the grid values F, the sum over the axes of the largest change of F to a neighbour
+    along that axis: to first order, F anywhere within one node spacing of the node is at most F there plus
+    this. Inf where a neighbour's value is not finite (the pair stops existing there: no bound).
+
+    >>> one_node_change(np.array([[0.0, 1.0], [3.0, 3.5]]))
+    array([[4. , 3.5],
+           [3.5, 3. ]])
+    """
+    total = np.zeros_like(F, dtype=float)
+    for ax in range(F.ndim):
+        step = np.zeros_like(total)
+        before = (slice(None),) * ax + (slice(1, None),)
+        after = (slice(None),) * ax + (slice(None, -1),)
+        with np.errstate(invalid="ignore"):
+            d = np.abs(F[before] - F[after])
+        d = np.where(np.isnan(d), np.inf, d)
+        np.fmax(step[before], d, out=step[before])
+        np.fmax(step[after], d, out=step[after])
+        total += step
+    return total

@@ -25,6 +25,7 @@ import numpy as np
 
 from ..errors import GearDesignError
 from ..gears.geometry import A_W_RANGE_MM, min_center_distance, require_module
+from ..gears.planet_damage import PlanetDamage
 from ..gears.planetary import (ARRANGEMENTS, MESH_NAMES, Assembly, MeshCheck, PlanetaryMeshes, planetary_ratio,
                                set_checks, set_geometry)
 from ..inline import html_view
@@ -32,7 +33,7 @@ from ..results import Result
 from ..validate import one_number, require_choice, require_count, require_range
 from .center_distance import x_sum_for_housing
 from .grid import GRID_N_MAX
-from .objectives import CustomObjective, Objective, default_objective
+from .objectives import DAMAGE_FLOOR, CustomObjective, Objective, default_objective
 from .optimize import DEFAULT_TOL, METHODS, solve_problem
 from .problem import _FLOAT_FAULTS, DEFAULT_BOUNDS, Problem, _holds_meshing, validate_bounds, with_meshing
 from .looks import margin_bars
@@ -54,6 +55,7 @@ class _SetObjective(Objective):
             setattr(self, name, getattr(inner, name))
         self.meshes = MESH_NAMES[:1] if inner.name == "max_x_sum" else MESH_NAMES
         self.of_mesh = {tag: inner for tag in self.meshes}
+        self.planet = ()     # max_life under a reversing spectrum: the planet's damage, summed over both meshes
         if isinstance(inner, CustomObjective) or type(inner).piece_gradients is Objective.piece_gradients:
             self.piece_gradients = lambda geo: None   # central differences in the set's shifts
 
@@ -65,18 +67,28 @@ class _SetObjective(Objective):
         out = copy.copy(self)
         out.of_mesh = {tag: self.inner.bound([c.inner for c in checks if isinstance(c, MeshCheck) and c.mesh == tag])
                        for tag in self.meshes}
+        if self.inner.name == "max_life":
+            out.planet = tuple(c for c in checks if isinstance(c, PlanetDamage))
         return out
 
     def pieces(self, geo):
         if isinstance(self.inner, CustomObjective):
             return self.inner.pieces(geo)
-        return tuple(p for tag in self.meshes for p in self.of_mesh[tag].pieces(geo[tag]))
+        # the planet's flanks as max_life reads a pair's damage: −ln D of each
+        planet = tuple(-np.log(np.maximum(np.asarray(D, dtype=float)[()], DAMAGE_FLOOR))
+                       for c in self.planet for D in c.flank_damage(geo))
+        return tuple(p for tag in self.meshes for p in self.of_mesh[tag].pieces(geo[tag])) + planet
 
     def piece_gradients(self, geo):
         out = []
         for tag in self.meshes:
             for g1, g2 in self.of_mesh[tag].piece_gradients(geo[tag]):
                 out.append((g1, g2) if tag == "sun-planet" else (g2 * geo["_r"], g1 + g2 * (1.0 + geo["_r"])))
+        for c in self.planet:       # ∂(−ln D)/∂x = −(∂D/∂x)/D; 0 where there is no damage
+            for D, grad in zip(c.flank_damage(geo), c.flank_damage_gradients(geo)):
+                D = np.asarray(D, dtype=float)[()]
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    out.append(tuple(np.where(D > DAMAGE_FLOOR, -np.asarray(g) / D, 0.0)[()] for g in grad))
         return out
 
 

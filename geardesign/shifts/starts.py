@@ -2,6 +2,8 @@
 feasible piece of a coarse grid, or of a given start; the most central point when no node is feasible."""
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from .conflict import INFEASIBLE_ACCURACY, conflict_message, smallest_conflict
@@ -27,24 +29,25 @@ def feasible_at(prob: Problem, v) -> bool:
 
 
 def feasible_starts(prob: Problem, bounds, start=None):
-    """(starts, None) best first, or ([], Outcome) naming the conflicting checks."""
+    """(starts, None, ceilings) best first, or ([], Outcome, []) naming the conflicting checks; each start's
+    ceiling bounds what its piece can reach (:func:`~geardesign.shifts.nodes.grid_starts`)."""
     n = start_nodes(prob)
     if start is not None and prob.nvar == 2:
         V = np.asarray(start, dtype=float).reshape(1, 2)
-        starts, M = grid_starts(prob, V, 1)
+        starts, M, ceilings = grid_starts(prob, V, 1)
         if not starts:
             V = grid_points(prob, START_N, bounds)
-            starts, M = grid_starts(prob, V, START_N)
+            starts, M, ceilings = grid_starts(prob, V, START_N)
     else:
         V = grid_points(prob, n, bounds)
-        starts, M = grid_starts(prob, V, n)
+        starts, M, ceilings = grid_starts(prob, V, n)
     if starts and feasible_at(prob, starts[0]):
-        return starts, None
+        return starts, None, ceilings
     # no feasible node: the region, if any, is thinner than the grid; the most central point near
     # the least infeasible node starts the solve
     w = central_point(prob, V, M, bounds)
     if w[-1] < 0:
         conflict = smallest_conflict(prob, bounds)
         return [], Outcome(w[:-1], 1, False, conflict_message(conflict), conflict=conflict,
-                           accuracy=INFEASIBLE_ACCURACY)
-    return [w[:-1]] + starts[:MAX_STARTS - 1], None
+                           accuracy=INFEASIBLE_ACCURACY), []
+    return [w[:-1]] + starts[:MAX_STARTS - 1], None, [math.inf] + ceilings[:MAX_STARTS - 1]

@@ -68,10 +68,16 @@ def test_grid_starts_one_per_separate_piece_best_first():
 
     n = 31
     V = grid_points(TwoDiscs(), n, (-1.5, 3.0))
-    starts, _ = grid_starts(TwoDiscs(), V, n)
+    starts, _, _ = grid_starts(TwoDiscs(), V, n)
     assert len(starts) == 2
     near = [int(np.argmin(((TwoDiscs.centres - s) ** 2).sum(axis=1))) for s in starts]
     assert near == [1, 0]          # the upper disc has the larger x1 + x2: first
     for s in starts:
         assert np.min(((TwoDiscs.centres - s) ** 2).sum(axis=1)) <= 0.3 ** 2
+    # each piece's ceiling is at least the most x1 + x2 reaches on its disc (c1 + c2 + r√2, exact), and the
+    # lower disc's is below the upper disc's best node: its start need not be solved
+    ceilings = grid_starts(TwoDiscs(), V, n)[2]
+    for c, centre in zip(ceilings, TwoDiscs.centres[[1, 0]]):
+        assert c >= centre.sum() + 0.3 * np.sqrt(2)
+    assert ceilings[1] < starts[0].sum()
 

@@ -163,8 +163,8 @@ def test_planetary_cli_strength_objective(capsys):
 def test_max_life_of_a_set_under_a_spectrum():
     """The damage checks of both meshes (a spectrum on the sun) in the set's solver: max_life's optimum holds every
     check, its fun is −ln of the largest damage of the set's checks there, and the max_x_sum optimum (another
-    feasible point) lives no longer. A reversing spectrum is refused by name there (the planet's flanks sum across
-    both meshes: planetary_life rates it)."""
+    feasible point) lives no longer. A reversing spectrum is solved too, the planet's damage a check of the set
+    (tests/gears/test_planet_damage.py)."""
     import numpy as np
 
     import geardesign as gd
@@ -172,10 +172,13 @@ def test_max_life_of_a_set_under_a_spectrum():
     from geardesign.shifts.planetary import optimize_planetary_shifts
 
     reversing = gd.LoadSpectrum.from_bins([20.0, 12.0, -6.0], 1500, time_h=[2000, 6000, 2000])
-    with pytest.raises(GearDesignError, match="reversing spectrum.*planetary_life"):
-        optimize_planetary_shifts(20, 31, 82, 3, 2, checks={"spectrum": reversing, "material": "42CrMo4",
+    r = optimize_planetary_shifts(20, 31, 82, 3, 2, checks={"spectrum": reversing, "material": "42CrMo4",
                                                             "face_width_mm": 25.0, "mean_stress_factor": 0.7},
                                   objective="max_life")
+    assert r.success and "set:pitting_damage_planet" in r.margins
+    with pytest.raises(GearDesignError, match="mean_stress_factor"):      # a reversing spectrum still needs Y_M
+        optimize_planetary_shifts(20, 31, 82, 3, 2, checks={"spectrum": reversing, "material": "42CrMo4",
+                                                            "face_width_mm": 25.0}, objective="max_life")
     spec = gd.LoadSpectrum.from_bins([20.0, 12.0, 6.0], 1500, time_h=[2000, 6000, 2000])
     checks = {"spectrum": spec, "material": "42CrMo4", "face_width_mm": 25.0, "mean_stress_factor": 0.7,
               "damage_max": 10.0}

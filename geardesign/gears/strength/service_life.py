@@ -256,6 +256,7 @@ def pair_life(m, z1=None, z2=None, x1=0.0, x2=0.0, *, spectrum: LoadSpectrum, ma
     reversing tooth's is, so it needs ``mean_stress_factor``.
     """
     from .chain import _material, pair_strength
+    from .options import gathered
 
     if mesh is not None or z1 is None or z2 is None:
         mesh = mesh_of(mesh, z1, z2, options.get("rack"), options.get("tip_shortening", True),
@@ -318,7 +319,7 @@ def pair_life(m, z1=None, z2=None, x1=0.0, x2=0.0, *, spectrum: LoadSpectrum, ma
     out = pair_strength(expand(designs[0]), expand(z1) if np.ndim(z1) else z1, expand(z2) if np.ndim(z2) else z2,
                         expand(designs[1]), expand(designs[2]), load=prep.load, material1=mats[0],
                         material2=mats[1], face_width_mm=width, geometry=geometry,
-                        fields=_FIELDS if bins else _STRESS_FIELDS, **options)
+                        fields=_FIELDS if bins else _STRESS_FIELDS, **gathered(options))
     nb = loaded.size
     full = shape + (nb,)
     scale = 1.0 if life_h is None else life_h / spectrum.duration_h
