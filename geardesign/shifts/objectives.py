@@ -12,6 +12,7 @@ problem builds itself (``kind = "margin"``).
 """
 from __future__ import annotations
 
+import math
 from typing import Callable
 
 import numpy as np
@@ -21,7 +22,7 @@ from ..gears.checks import ContactRatio, sliding_root_gradient
 from ..gears.checks.damage import PittingDamage, RootDamage
 from ..validate import _short
 
-__all__ = ["Objective", "CustomObjective", "MaxLife", "DAMAGE_FLOOR", "OBJECTIVES", "register_objective", "unregister_objective",
+__all__ = ["Objective", "CustomObjective", "MaxLife", "DAMAGE_FLOOR", "unlimited_life_note", "OBJECTIVES", "register_objective", "unregister_objective",
            "resolve_objective", "default_objective"]
 
 
@@ -157,6 +158,25 @@ class MaxMinSafety(_StrengthObjective):
 # D below this counts as no damage: ln D stays finite (a piece of ~690, never the smallest where some gear is
 # damaged) and its gradient is taken as 0 (the S-N curve's horizontal end, where the life is unbounded)
 DAMAGE_FLOOR = 1e-300
+# max_life's fun where no gear takes damage: −ln DAMAGE_FLOOR
+UNLIMITED_LIFE_FUN = -math.log(DAMAGE_FLOOR)
+
+
+def unlimited_life_note(objective: str, fun: float) -> str:
+    """What a ``max_life`` result whose every damage sum is 0 means, appended to its message ("" otherwise): every bin
+    lies below each S-N curve's endurance, so the life is unlimited there and max_life cannot rank such designs.
+
+    >>> unlimited_life_note("max_life", UNLIMITED_LIFE_FUN)[:41]
+    '; no gear takes damage at this point (the'
+    >>> unlimited_life_note("max_life", 2.0), unlimited_life_note("max_x_sum", UNLIMITED_LIFE_FUN)
+    ('', '')
+    """
+    if objective != "max_life" or fun < UNLIMITED_LIFE_FUN * (1 - 1e-12):
+        return ""
+    return ("; no gear takes damage at this point (the spectrum's every bin below the S-N curves' endurance: the life "
+            f"is unlimited, and fun is its cap ln(1/{DAMAGE_FLOOR:g})): max_life cannot rank designs that all live "
+            "for ever, so the point is one corner of the other checks among equally good ones; another objective "
+            "chooses among them")
 
 
 class MaxLife(Objective):

@@ -39,7 +39,7 @@ from ..validate import _show, one_number, require_choice, require_count, require
 from .center_distance import reachable_center_distance, x_sum_for_housing
 from .conflict import smallest_conflict
 from .grid import GRID_N_MAX
-from .objectives import OBJECTIVES, default_objective
+from .objectives import OBJECTIVES, default_objective, unlimited_life_note
 from .problem import DEFAULT_BOUNDS, Problem, validate_bounds
 from .methods import ACCURACY, DEFAULT_TOL, METHOD_TABLE, METHODS
 from .result import Outcome, ShiftResult
@@ -185,7 +185,7 @@ def _result(prob: Problem, out: Outcome, method: str, tol: float, a_w, t0: float
     if prob.x_sum is not None:
         xs_name = "x2 - x1" if prob.mesh.internal else "x1 + x2"
         message += f"; {xs_name} = {prob.x_sum:.10g} fixed by a_w = {a_w:.10g} mm, objective {prob.objective.name}"
-    message += _sliding_hint(prob, geo, out.success)
+    message += _sliding_hint(prob, geo, out.success) + unlimited_life_note(prob.objective.name, fun)
     active = [k for k, v in mg.items() if abs(v) <= max(tol, 1e-9) * 10]
     return ShiftResult(
         x1=x1, x2=x2, fun=fun, objective=prob.objective.name, success=success, message=message,

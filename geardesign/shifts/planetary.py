@@ -33,7 +33,7 @@ from ..results import Result
 from ..validate import one_number, require_choice, require_count, require_range
 from .center_distance import x_sum_for_housing
 from .grid import GRID_N_MAX
-from .objectives import DAMAGE_FLOOR, CustomObjective, Objective, default_objective
+from .objectives import DAMAGE_FLOOR, CustomObjective, Objective, default_objective, unlimited_life_note
 from .optimize import DEFAULT_TOL, METHODS, solve_problem
 from .problem import _FLOAT_FAULTS, DEFAULT_BOUNDS, Problem, _holds_meshing, validate_bounds, with_meshing
 from .looks import margin_bars
@@ -338,6 +338,7 @@ def _result(prob: PlanetaryProblem, out, method, tol, a_w, arrangement, t0) -> P
                    f"({q:.6g}); the shifts below are the best for the meshes alone")
     if prob.x_sum is not None:
         message += f"; x_sun + x_planet = {prob.x_sum:.10g} fixed by a_w = {a_w:.10g} mm, objective {prob.objective.name}"
+    message += unlimited_life_note(prob.objective.name, fun)
     active = [k for k, v in margins.items() if abs(v) <= max(tol, 1e-9) * 10]
     return PlanetaryShiftResult(
         x_sun=x_s, x_planet=x_p, x_ring=x_r, fun=fun, objective=prob.objective.name, success=success,

@@ -68,6 +68,25 @@ def test_max_life_is_the_longest_life_of_a_spectrum():
     assert ok.sum() > 20 and np.all(-np.log(nodes) <= res.fun + 1e-9)
 
 
+def test_max_life_where_no_gear_takes_damage_says_the_life_is_unlimited():
+    """A spectrum below every S-N curve's endurance (pair_life: D = 0 for both gears and modes at the optimum): fun
+    is the cap −ln 1e-300, which ranks nothing; the message says so (a pair and a set). A spectrum that does damage
+    does not get the note."""
+    light = gd.LoadSpectrum.from_bins([20.0, 10.0], 1500, time_h=[2000.0, 3000.0])
+    res = gd.optimize_shifts(20, 60, m=4, checks={"spectrum": light, "material": "18CrNiMo7-6", "face_width_mm": 40.0},
+                             objective="max_life")
+    D = gd.pair_life(4.0, 20, 60, res.x1, res.x2, spectrum=light, material1="18CrNiMo7-6", face_width_mm=40.0)
+    assert all(D[f"D_{m}"] == 0 for m in ("H1", "H2", "F1", "F2"))
+    assert res.fun == pytest.approx(-np.log(1e-300), rel=1e-12) and "life is unlimited" in res.message
+    s = gd.optimize_planetary_shifts(20, 31, 82, 3, 2, objective="max_life", checks={
+        "spectrum": light, "material": "18CrNiMo7-6", "face_width_mm": 40.0, "mean_stress_factor": 0.7})
+    assert "life is unlimited" in s.message
+    heavy = gd.LoadSpectrum.from_bins([120.0], 1000, time_h=[20000.0])
+    res = gd.optimize_shifts(20, 60, m=4, objective="max_life", checks={
+        "spectrum": heavy, "material": "42CrMo4", "face_width_mm": 40.0, "damage_max": 10.0})
+    assert res.fun < 50 and "unlimited" not in res.message
+
+
 def _holds(x1, x2) -> bool:
     """The default checks (a subset of the nodes the optimiser may reach: the table adds jamming)."""
     try:
