@@ -55,7 +55,10 @@ def check_style(name: str) -> tuple[str, str]:
     custom = _CUSTOM_COLOURS[sum(map(ord, kind if mesh else name)) % len(_CUSTOM_COLOURS)]
     if mesh is not None:
         colour = (PLANET_RING_COLOURS.get(kind) if mesh == "planet-ring" else None) or check_colour(kind) or custom
-        style = {"sun": "-", "planet": "--", "ring": "-."}.get(gear) or {"sun-planet": "-", "planet-ring": "--"}.get(mesh, ":")
+        # the set's own checks dotted, whichever gear they name (the planet's damage over both meshes beside the
+        # planet-ring mesh's dashed planet checks)
+        style = ":" if mesh == "set" else ({"sun": "-", "planet": "--", "ring": "-."}.get(gear)
+                                           or {"sun-planet": "-", "planet-ring": "--"}.get(mesh, ":"))
         return colour, style
     colour = check_colour(name)
     if colour is not None:
@@ -69,7 +72,10 @@ def check_legend(check) -> str:
     _, kind, gear = _parts(check.name)
     text = CHECK_LEGENDS.get(kind)
     if text is None:
-        return f"{check.name}: {check.label}" if check.label else check.name
+        mesh = check.name.split(":", 1)[0] + ": " if ":" in check.name else None
+        # a mesh's check says its mesh in its name already ("sun-planet:pitting_damage_sun"): not twice
+        label = check.label[len(mesh):] if mesh and check.label.startswith(mesh) else check.label
+        return f"{check.name}: {label}" if label else check.name
     g = "" if gear is None else (gear if gear.isdigit() else f",{gear}")
     words = "" if gear is None else (f"gear {gear}" if gear.isdigit() else f"the {gear}")
     return f"{check.name}: " + text.format(g=g, gear=words, limit=check.limit)

@@ -18,6 +18,9 @@ def test_styles_by_kind_and_gear():
     assert check_style("contact_ratio") == (check_colour("contact_ratio"), "-")
     assert check_style("planet-ring:interference_planet") == (PLANET_RING_COLOURS["interference"], "--")
     assert check_style("sun-planet:interference_sun")[1] == "-" and check_style("planet-ring:ring_tip")[1] == "--"
+    # the set's own checks dotted, the planet's damage over both meshes too (it named the planet: dashed, as the
+    # planet-ring mesh's pink interference_planet beside it)
+    assert check_style("set:neighbours")[1] == ":" and check_style("set:pitting_damage_planet")[1] == ":"
     custom = check_style("my_check")
     assert custom[1] == "-." and custom == check_style("my_check")               # the same every time
 
@@ -25,6 +28,12 @@ def test_styles_by_kind_and_gear():
 def test_legends_say_the_limit():
     assert check_legend(ContactRatio(limit=1.3)) == "contact_ratio: ε_α ≥ 1.3"
     assert check_legend(TipThickness(gear=2, limit=0.4)) == "tip_thickness2: s_a2/m ≥ 0.4"
+    # a set's mesh check of a kind without a legend line: its label, the mesh said once (in the name)
+    from geardesign.gears.checks.damage import PittingDamage
+    from geardesign.gears.planetary import MeshCheck
+
+    text = check_legend(MeshCheck(inner=PittingDamage(gear=1), mesh="sun-planet"))
+    assert text == "sun-planet:pitting_damage_sun: pitting damage of sun D_H <= 1 (ISO 6336-6)"
 
 
 def test_margin_bars_of_an_optimum():
