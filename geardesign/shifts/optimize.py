@@ -140,8 +140,21 @@ def _sliding_hint(prob: Problem, geo, success: bool) -> str:
     lo, hi = sorted((abs(s1), abs(s2)))
     if not (math.isfinite(lo) and math.isfinite(hi)) or hi <= SLIDING_IMBALANCE * lo:
         return ""
-    return (f"; root sliding is unbalanced (ϑ1 = {s1:.3g}, ϑ2 = {s2:.3g}): objective='balanced_sliding' "
-            "equalises it" + (" on this a_w" if prob.x_sum is not None else ""))
+    return (f"; root sliding is unbalanced (ϑ1 = {_sliding_text(s1)}, ϑ2 = {_sliding_text(s2)}): "
+            "objective='balanced_sliding' equalises it" + (" on this a_w" if prob.x_sum is not None else ""))
+
+
+def _sliding_text(value: float) -> str:
+    """A root's specific sliding as a message shows it: where the contact starts at the base circle (the
+    interference limit active) the flank's rolling speed is 0 and ϑ = −∞, which rounding turns into ±1e15 (either
+    sign): said as the limit rather than as that number.
+
+    >>> _sliding_text(-1.4412), _sliding_text(-8.9e15), _sliding_text(3.1e15)
+    ('-1.44', '-∞ (the contact starts at the base circle)', '-∞ (the contact starts at the base circle)')
+    """
+    if abs(value) < 1e9:
+        return f"{value:.3g}"
+    return "-∞ (the contact starts at the base circle)"
 
 
 # The stationarity of an edge is read from central differences of gradients that are central differences

@@ -32,6 +32,17 @@ def test_max_x_sum_points_to_balanced_sliding():
     assert abs(float(gb.sliding1_root)) == pytest.approx(abs(float(gb.sliding2_root)), rel=1e-6)
 
 
+def test_root_sliding_at_the_base_circle_is_said_as_minus_infinity():
+    """17/26 at its max_eps_alpha optimum: undercut1 and interference1 active, so the pinion's contact starts at its
+    base circle, where its rolling speed is 0 (ρ1 = 0 on the geometry, to rounding) and ϑ1 = −∞; the message said
+    "+8.9e+15" or so, a number with a sign rounding chose."""
+    r = gd.optimize_shifts(17, 26, objective="max_eps_alpha")
+    assert {"undercut1", "interference1"} <= set(r.active)
+    g = gd.pair_geometry(1, 17, 26, r.x1, r.x2)
+    assert abs(float(g.sliding1_root)) > 1e9
+    assert "ϑ1 = -∞ (the contact starts at the base circle)" in r.message and "e+15" not in r.message
+
+
 def test_select_teeth_says_why_the_largest_pair_wins():
     sel = gd.select_teeth(1.5, m=8, z1_range=(14, 24))
     best = sel.best
