@@ -103,10 +103,13 @@ def one_sided(spectrum, positive: bool, life_h):
     >>> sub, life = one_sided(s, False, 8000.0)
     >>> sub.torque_nm.tolist(), sub.time_h.tolist(), life       # 8000 h × 5/40
     ([-150.0], [5.0], 1000.0)
+    >>> one_sided(LoadSpectrum.from_bins([300, -150], 1000, time_h=[10, 0]), False, None)
+    (None, None)
     """
     from .spectrum import LoadSpectrum
 
-    sel = spectrum.torque_nm > 0 if positive else spectrum.torque_nm < 0
+    # a bin of no time does no damage (and a spectrum of such bins alone is refused as empty)
+    sel = (spectrum.torque_nm > 0 if positive else spectrum.torque_nm < 0) & (spectrum.time_h > 0)
     if not sel.any():
         return None, None
     sub = LoadSpectrum(spectrum.torque_nm[sel], spectrum.n_rpm[sel], spectrum.time_h[sel], spectrum.on_gear)
