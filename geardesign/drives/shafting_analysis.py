@@ -763,6 +763,9 @@ def _mesh_f_sh(drive, stages_out, T, elements, placed) -> dict:
     return out
 
 
+NU_PAIR_MOUNTING = "NU pair, both non-locating (axial location not modelled)"
+
+
 def _f_sh_from_shafts(strength, nominal_um: float, value_um: float):
     """``strength`` (a StrengthResult whose chain took f_sh as a given factor) with that f_sh said to be the
     shafts' (its note and its factor-table row), not a value the user gave."""
@@ -839,7 +842,10 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
         analyses[k] = analysis
         d_seat = [float(v) for v in model.diameter_at(list(geo.supports))[0]]
         kinds = _types_of(checks)
-        mounting = f"tapered pair ({sh.arrangement})" if set(kinds) == {"tapered_roller"} else "locating A, floating B"
+        # an NU bearing has no ribs on its inner ring: it locates nothing (SKF 17000 C.3 calls it non-locating), so a
+        # shaft on two of them is not "locating A"; its axial location (an NJ, NUP or ball bearing) is not modelled
+        mounting = (f"tapered pair ({sh.arrangement})" if set(kinds) == {"tapered_roller"} else
+                    NU_PAIR_MOUNTING if set(kinds) == {"cylindrical_roller"} else "locating A, floating B")
         for tag, chk, d_s, kind in zip("AB", checks, d_seat, kinds):
             item = f"bearing {k}{tag} {chk.designation}"     # the checks table names the bearing chosen
             bearing_rows.append(dict(name=item, shaft=k, x_mm=geo.supports["AB".index(tag)],

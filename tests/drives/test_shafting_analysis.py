@@ -167,6 +167,19 @@ def test_f_sh_from_the_shafts_is_said_to_be_theirs(two_stage):
     assert res.factors.set_index("symbol").loc["f_sh", "clause"] == "given by the caller, not computed"
 
 
+def test_a_shaft_on_two_nu_bearings_is_not_said_to_locate():
+    # an NU bearing's inner ring has no ribs: SKF 17000 example C.3 (tests/data/bearing_life_examples.csv,
+    # skf_c3_non_locating) calls its NU 311 the non-locating bearing; the table said "locating A, floating B"
+    drive = gd.Drive(power_kw=15, n_in_rpm=1450, stages=[gd.GearStage(4, 23, 117, 0.3, -0.3, material="42CrMo4",
+                                                                       face_width_mm=40, name="g")],
+                     shafting=Shafting(bearing_type="cylindrical_roller"))
+    bearings = drive.analyse().table("bearings")
+    assert set(bearings["bearing_type"]) == {"cylindrical_roller"}
+    assert not any(bearings["mounting"].str.contains("locating A")) and all(bearings["mounting"].str.startswith("NU pair"))
+    ball = gd.Drive(power_kw=15, n_in_rpm=1450, stages=drive.stages, shafting=Shafting(bearing_type="deep_groove"))
+    assert set(ball.analyse().table("bearings")["mounting"]) == {"locating A, floating B"}
+
+
 # ------------------------------------------------------------------------------------------- efficiency
 
 def test_computed_efficiencies_in_the_power_flow():
