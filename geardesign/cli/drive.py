@@ -52,9 +52,25 @@ def add_parser(subparsers):
     add_json_flag(p)
     add_progress_flag(p)
     add_load_args(p, limits=True)     # --spectrum: the drive's, at its input shaft (every gear stage's duty cycle)
+    for action in p._actions:         # a pair's wording ("torque on gear 1 (--on-gear)") said as a drive means it
+        action.help = _DRIVE_LOAD_HELP.get(action.dest, action.help)
     _add_shafting_args(p)
     add_cluster_args(p)
     return p
+
+
+_DRIVE_LOAD_HELP = {
+    "torque": "the drive's input torque (on its input shaft), N·m, instead of the scene's input",
+    "power": "the drive's input power, kW (instead of --torque), instead of the scene's input",
+    "speed": "the drive's input speed, rpm (alone: the scene's input at this speed)",
+    "on_gear": "refused: a drive's load is at its input shaft, the pinion of its first stage (1)",
+    "material": "material of the gear stages that set none (both gears of each), a name of the ISO 6336-5 catalog, "
+                "e.g. 42CrMo4, 18CrNiMo7-6, C45",
+    "material2": "refused: a drive's gear stages take one material for both gears (--material)",
+    "spectrum": "the drive's load spectrum at its input shaft: a CSV with columns torque_nm, n_rpm (or none: the "
+                "input speed) and one of time_h, cycles, share, read relative to the nominal input torque P/ω as "
+                "every gear stage's duty cycle",
+}
 
 
 # option -> Shafting keyword (docs/shafts_in_drive.md); any of them puts the drive's gears on shafts

@@ -333,3 +333,14 @@ def test_bearing_type_per_shaft_from_scene_and_options(tmp_path, capsys):
     assert {t for t, _ in types.values()} == {"tapered_roller"}
     with pytest.raises(Exception, match="bearing_type"):
         load_scene(_scene(tmp_path, REDUCER + "[[drive.shaft]]\nat = 1\nbearing_type = 'spherical'\n"))
+
+
+def test_drive_help_says_the_load_options_as_a_drive_takes_them(capsys):
+    # the pair's wording: "--torque: torque on gear 1 (--on-gear)", "--spectrum ... torques of gear --on-gear",
+    # though a drive refuses --on-gear and takes its load at the input shaft
+    with pytest.raises(SystemExit):
+        main(["drive", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "--torque NM the drive's input torque (on its input shaft)" in text
+    assert "--speed RPM the drive's input speed" in text and "--on-gear {1,2} refused" in text
+    assert "(--on-gear)" not in text and "torques of gear --on-gear" not in text and "of gear 1 with" not in text
