@@ -60,6 +60,11 @@ def add_parser(sub):
 
 def _checks(args) -> dict:
     out = checks_from_args(args)      # with the sun's load when one is given
+    if out.get("spectrum") is not None and out.get("mean_stress_factor") is None:
+        # said of the planet (the damage check's own message names a pair's "gear 2"): every spectrum needs it
+        raise GearDesignError("--mean-stress-factor is needed with --spectrum: the planet's root bends both ways (it "
+                              "meets the sun on one flank and the ring on the other); give Y_M of ISO 6336-3:2019 "
+                              "for alternating bending (0.7 in older texts for an idler)")
     out["neighbour_clearance"] = args.neighbour_clearance
     return out
 

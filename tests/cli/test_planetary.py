@@ -138,3 +138,17 @@ def test_a_loaded_set_shows_each_meshs_strength(capsys, shifts):
         for s, g in zip(s_f, gears):
             assert s / 1.4 - 1 == pytest.approx(margin[f"{mesh}:root_strength_{g}"], abs=1e-3)
         assert len(root) == 2
+
+
+def test_a_spectrum_without_y_m_names_the_planet_not_a_pairs_gear_2(tmp_path, capsys):
+    # the damage check's message said "gear 2's root bends both ways": a planetary set has no gear 2
+    csv = tmp_path / "sun.csv"
+    csv.write_text("torque_nm,share\n120,0.05\n80,0.95\n", encoding="utf-8")
+    argv = ["planetary", "-m", "2", "--planets", "3", "--z-sun", "24", "--z-planet", "36", "--z-ring", "96",
+            "--speed", "1450", "--material", "18CrNiMo7-6", "--face-width", "25", "--life-h", "20000",
+            "--spectrum", str(csv)]
+    for shifts in ([], ["--x-sun", "0.3", "--x-planet", "0.2"]):
+        assert main(argv + shifts) == 2
+        err = capsys.readouterr().err.strip()
+        assert len(err.splitlines()) == 1 and "--mean-stress-factor" in err and "planet's root" in err
+        assert "gear 2" not in err
