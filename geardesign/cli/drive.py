@@ -52,9 +52,25 @@ def add_parser(subparsers):
     add_json_flag(p)
     add_progress_flag(p)
     add_load_args(p, limits=True)     # --spectrum: the drive's, at its input shaft (every gear stage's duty cycle)
+    for action in p._actions:         # a pair's wording ("torque on gear 1 (--on-gear)") said as a drive means it
+        action.help = _DRIVE_LOAD_HELP.get(action.dest, action.help)
     _add_shafting_args(p)
     add_cluster_args(p)
     return p
+
+
+_DRIVE_LOAD_HELP = {
+    "torque": "the drive's input torque (on its input shaft), N·m, instead of the scene's input",
+    "power": "the drive's input power, kW (instead of --torque), instead of the scene's input",
+    "speed": "the drive's input speed, rpm (alone: the scene's input at this speed)",
+    "on_gear": "refused: a drive's load is at its input shaft, the pinion of its first stage (1)",
+    "material": "material of the gear stages that set none (both gears of each), a name of the ISO 6336-5 catalog, "
+                "e.g. 42CrMo4, 18CrNiMo7-6, C45",
+    "material2": "refused: a drive's gear stages take one material for both gears (--material)",
+    "spectrum": "the drive's load spectrum at its input shaft: a CSV with columns torque_nm, n_rpm (or none: the "
+                "input speed) and one of time_h, cycles, share, read relative to the nominal input torque P/ω as "
+                "every gear stage's duty cycle",
+}
 
 
 # option -> Shafting keyword (docs/shafts_in_drive.md); any of them puts the drive's gears on shafts
@@ -165,6 +181,11 @@ def _input_from_args(section: dict, args) -> dict:
                               "give either the motor or these options")
     from ..gears.strength import Load   # validates the options by their names and ranges
 
+    if args.speed is not None:    # named by the option, not by the Drive's n_in_rpm it becomes
+        from ..drives.drive import SPEED_RANGE_RPM
+        from ..validate import require_range
+
+        require_range("--speed", args.speed, *SPEED_RANGE_RPM, unit="rpm")
     speed = args.speed if args.speed is not None else section.get("n_in_rpm")
     if speed is None:
         raise GearDesignError("--speed: the drive's input speed is needed (the scene's [drive] gives no n_in_rpm)")
@@ -207,6 +228,11 @@ def _with_load(section: dict, args) -> dict:
         raise GearDesignError(f"--material2: a drive's gear stages take one material for both gears (--material); "
                               f"got {args.material2!r}")
     out = _spectrum_from_args(_input_from_args(section, args), args)
+    if args.strength_width is not None:   # named by the option (the drive has no --face-width to name it by)
+        from ..gears.mesh import FACE_WIDTH_RANGE_MM
+        from ..validate import require_range
+
+        require_range("--strength-width", args.strength_width, *FACE_WIDTH_RANGE_MM, lo_open=True, unit="mm")
     given = {key: getattr(args, opt) for opt, key in _STAGE_LOAD
              if getattr(args, opt) is not None and not (opt == "application_factor" and args.application_factor == 1.0)}
     given.update(strength_from_args(args))   # the strength options, keys of a gear stage as in a scene
@@ -214,6 +240,12 @@ def _with_load(section: dict, args) -> dict:
     if given and not gears:
         raise GearDesignError(f"{_flag(next(iter(given)))}: the scene's drive has no gear stage")
     stages = list(out["stages"])
+    if given and gears:
+        # checked here also where every gear stage sets its own (the option then fills nothing in): a bad value
+        # is refused by name, never silently passed over
+        from ..scene.drive import _stage
+
+        _stage({"kind": "gear", "z1": 20, "z2": 60, "material": "42CrMo4", **given})
     for i in gears:
         stages[i] = {**given, **stages[i]}     # the stage's own keys win
     if args.spectrum is not None:      # the damage checks need each stage's S-N curves: said of the option
@@ -270,6 +302,10 @@ def run(args) -> int:
     if args.report and an is not None:
         drive_report(an, args.report, overwrite=args.overwrite)
         print(f"report written to {args.report}", file=sys.stderr)
+    unwritten = [flag for flag, asked in (("--plot", args.plot), ("--layout-plot", args.layout_plot),
+                                          ("--report", args.report)) if asked]
+    if an is None and unwritten:       # the search found no design to draw: said, not silently skipped
+        print(f"no design to draw or report: {', '.join(unwritten)} not written", file=sys.stderr)
     ok = (opt.success if opt is not None else an.success)
     if args.json:
         out = {"ok": bool(ok), "scene": str(args.scene), "motor": None if motor is None else motor.to_dict(),

@@ -60,6 +60,11 @@ def add_parser(sub):
 
 def _checks(args) -> dict:
     out = checks_from_args(args)      # with the sun's load when one is given
+    if out.get("spectrum") is not None and out.get("mean_stress_factor") is None:
+        # said of the planet (the damage check's own message names a pair's "gear 2"): every spectrum needs it
+        raise GearDesignError("--mean-stress-factor is needed with --spectrum: the planet's root bends both ways (it "
+                              "meets the sun on one flank and the ring on the other); give Y_M of ISO 6336-3:2019 "
+                              "for alternating bending (0.7 in older texts for an idler)")
     out["neighbour_clearance"] = args.neighbour_clearance
     return out
 
@@ -138,7 +143,26 @@ def _check(args) -> int:
     print_wrapped(f"Planetary set {s.meshes.title}, m = {s.m:g} mm: x = {s.x_sun:.6g}/{s.x_planet:.6g}/{s.x_ring:.6g}, "
           f"a_w = {s.a_w:.8g} mm (planet-ring {s.a_w_planet_ring:.8g} mm), ratio {s.ratio:.6g} ({s.arrangement})")
     print_frame(table[["check", "margin", "ok", "value", "limit"]])
+    _print_strength(args, s)
     return 0 if ok else 1
+
+
+def _print_strength(args, s) -> None:
+    """With a load: each mesh's ISO 6336 result (S_H, S_F of its gears, the stresses, the governing check), as
+    ``pair`` and ``drive`` show a pair's; the checks table alone gave only the margins."""
+    ch = _checks(args)
+    if ch.get("load") is None:
+        return
+    from ..gears.strength.planetary_meshes import planetary_strength   # here: loads pandas
+
+    opts = {"S_Hmin": ch["S_Hmin"], "S_Fmin": ch["S_Fmin"], **(ch.get("strength") or {})}
+    res = planetary_strength(s, ch["load"], ch["material"], face_width_mm=ch["face_width_mm"],
+                             K_gamma=opts.pop("K_gamma", 1.0), planet_material=ch.get("planet_material"),
+                             ring_material=ch.get("ring_material"), **opts)
+    for tag, r in res.items():
+        print(f"\nstrength of the {tag} mesh (ISO 6336; the sun's {ch['load'].torque_nm:.6g} N·m at "
+              f"{ch['load'].n_rpm:.6g} rpm shared over {s.n_planets} planets):")
+        print(r)
 
 
 def _optimize(args) -> int:
@@ -173,6 +197,8 @@ def _optimize(args) -> int:
         print_wrapped(line, indent=" " * 14)
     if r.success:
         print_frame(r.to_frame(), "\nChecks at the optimum (margin >= 0 holds; sensitivity = d fun / d limit)")
+        _print_strength(args, PlanetarySet(args.module, args.z_sun, args.z_planet, args.z_ring, args.planets, r.x_sun,
+                                           r.x_planet, r.x_ring, arrangement=args.arrangement, **kw))
     for flag, what in (("plot", "region"), ("drawing", "drawing"), ("html", "interactive region")):
         if getattr(args, flag, None) and write:
             print(f"{what} written to {getattr(args, flag)}")

@@ -763,6 +763,20 @@ def _mesh_f_sh(drive, stages_out, T, elements, placed) -> dict:
     return out
 
 
+NU_PAIR_MOUNTING = "NU pair, both non-locating (axial location not modelled)"
+
+
+def _f_sh_from_shafts(strength, nominal_um: float, value_um: float):
+    """``strength`` (a StrengthResult whose chain took f_sh as a given factor) with that f_sh said to be the
+    shafts' (its note and its factor-table row), not a value the user gave."""
+    from ..gears.strength.result import from_chain
+
+    text = (f"f_sh {value_um:.4g} µm from the shafts' deflection ({nominal_um:.4g} µm at the nominal load × K_A·K_v; "
+            f"docs/shafts_in_drive.md), not ISO 6336-1 eq. (44)")
+    chain = dict(strength._chain, given_source={**(strength._chain.get("given_source") or {}), "f_sh": text})
+    return from_chain(chain, strength.title, strength.case)
+
+
 def iso_f_sh_um(stage, pair, torque1_nm) -> float:
     """ISO 6336-1:2006 eq. (44)'s f_sh (µm) of a gear stage at the nominal load (F_m/b = F_t/b, F_t on the
     reference circle), with the stage's ``shaft`` strength option if it gives one: the misalignment the strength
@@ -828,7 +842,10 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
         analyses[k] = analysis
         d_seat = [float(v) for v in model.diameter_at(list(geo.supports))[0]]
         kinds = _types_of(checks)
-        mounting = f"tapered pair ({sh.arrangement})" if set(kinds) == {"tapered_roller"} else "locating A, floating B"
+        # an NU bearing has no ribs on its inner ring: it locates nothing (SKF 17000 C.3 calls it non-locating), so a
+        # shaft on two of them is not "locating A"; its axial location (an NJ, NUP or ball bearing) is not modelled
+        mounting = (f"tapered pair ({sh.arrangement})" if set(kinds) == {"tapered_roller"} else
+                    NU_PAIR_MOUNTING if set(kinds) == {"cylindrical_roller"} else "locating A, floating B")
         for tag, chk, d_s, kind in zip("AB", checks, d_seat, kinds):
             item = f"bearing {k}{tag} {chk.designation}"     # the checks table names the bearing chosen
             bearing_rows.append(dict(name=item, shaft=k, x_mm=geo.supports["AB".index(tag)],
@@ -985,6 +1002,8 @@ def with_shaft_misalignment(drive, kinds, stages_out, stage_rows, f_sh: dict, ob
             factors["f_sh"] = value
             new = replace(stage, strength={**(stage.strength or {}), "factors": factors})
             out = kind.analyse(new, res["flow"], objective)
+            if out.get("strength") is not None:   # the f_sh is the shafts', not the user's: its note and row say so
+                out["strength"] = _f_sh_from_shafts(out["strength"], f_sh[st.name], value)
             rows_by_stage[st.name] = [(st.name, k, v) for k, v in out.pop("margins").items()]
             out.pop("size", None)
             out.pop("mass", None)

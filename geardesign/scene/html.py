@@ -442,7 +442,9 @@ def _stage_parts(k: int, st: dict) -> list:
         return parts + [f"<h3>Drawing data</h3><p>{what}.</p>", _data_blocks(pair, shop)]
     if s["kind"] == "chain" and st.get("row") is not None:
         return [head, at, *_chain_part(st)]
-    rest = ", ".join(f"{key} {html.escape(str(v))}" for key, v in s.items() if key not in ("name", "kind"))
+    # a worm's or a bought unit's summary: its numbers to the overview's precision, not the float's 16 digits
+    rest = ", ".join(f"{key} {_fmt('{:.6g}', v) if isinstance(v, float) else html.escape(str(v))}"
+                     for key, v in s.items() if key not in ("name", "kind"))
     return [head, at, f"<p>{rest}</p>"]
 
 

@@ -155,6 +155,39 @@ def test_drive_bad_load_options_one_line_exit_2(tmp_path, capsys, options, words
     assert len(err.splitlines()) == 1 and words in err
 
 
+# every gear stage sets its own load case: the options fill nothing in, yet a bad value was passed over with exit 0
+OWN = LOADED.replace("face_width_mm = 40\n", "face_width_mm = 40\nmaterial = 'C45'\nlife_h = 20000\n"
+                     "application_factor = 1.25\naccuracy_grade = 7\nS_Hmin = 1.1\n[drive.stage.factors]\nK_Hbeta = 1.3\n")
+
+
+@pytest.mark.parametrize("options, words", [
+    (["--material", "unobtainium"], "--material must be a name"),
+    (["--life-h", "nan"], "--life-h must be finite"),
+    (["--application-factor", "nan"], "--application-factor must be finite"),
+    (["--sh-min", "0"], "--sh-min must be in"),
+    (["--accuracy-grade", "20"], "--accuracy-grade must be in"),
+    (["--factor", "K_Hbeta=-3"], "--factor K_Hbeta must be in"),
+    (["--strength-width", "-4"], "--strength-width must be in"),
+    (["--speed", "0"], "--speed must be in"),            # named by the option, not by the Drive's n_in_rpm
+])
+def test_drive_bad_load_options_refused_where_every_stage_sets_its_own(tmp_path, capsys, options, words):
+    assert main(["drive", _scene(tmp_path, OWN), *options]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and words in err
+
+
+def test_drive_without_a_design_says_its_files_are_not_written(tmp_path, capsys):
+    # no chain carries 4 kW·12.5/0.87 through the key of a 20 mm shaft: the search ends without a design, and the
+    # asked-for plot and report were silently not written
+    body = GIVEN.replace("n_in_rpm = 1500\n", "n_in_rpm = 1500\ntotal_ratio = 25\n") + (
+        "[[drive.stage]]\nkind = 'chain'\n[[drive.shaft]]\nat = 1\nname = 'out'\nd_mm = 20\nhub_length_mm = 25\n")
+    png, html = tmp_path / "d.png", tmp_path / "d.html"
+    assert main(["drive", _scene(tmp_path, body), "--plot", str(png), "--report", str(html)]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["no design to draw or report: --plot, --report not written"]
+    assert not png.exists() and not html.exists()
+
+
 def test_drive_load_options_without_a_gear_stage_or_beside_a_motor_are_refused(tmp_path, capsys):
     assert main(["drive", _scene(tmp_path, GIVEN), "--material", "C45"]) == 2
     assert "no gear stage" in capsys.readouterr().err
@@ -300,3 +333,14 @@ def test_bearing_type_per_shaft_from_scene_and_options(tmp_path, capsys):
     assert {t for t, _ in types.values()} == {"tapered_roller"}
     with pytest.raises(Exception, match="bearing_type"):
         load_scene(_scene(tmp_path, REDUCER + "[[drive.shaft]]\nat = 1\nbearing_type = 'spherical'\n"))
+
+
+def test_drive_help_says_the_load_options_as_a_drive_takes_them(capsys):
+    # the pair's wording: "--torque: torque on gear 1 (--on-gear)", "--spectrum ... torques of gear --on-gear",
+    # though a drive refuses --on-gear and takes its load at the input shaft
+    with pytest.raises(SystemExit):
+        main(["drive", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "--torque NM the drive's input torque (on its input shaft)" in text
+    assert "--speed RPM the drive's input speed" in text and "--on-gear {1,2} refused" in text
+    assert "(--on-gear)" not in text and "torques of gear --on-gear" not in text and "of gear 1 with" not in text

@@ -110,3 +110,45 @@ def test_a_sun_spectrum_gives_the_sets_damage_checks(tmp_path, capsys):
     got = {c["check"]: c["value"] for c in json.loads(capsys.readouterr().out)["checks"]}
     life = planetary_life(s, gd.LoadSpectrum.from_csv(csv), "18CrNiMo7-6", face_width_mm=25.0, mean_stress_factor=0.7)
     assert got["set:pitting_damage_planet"] == pytest.approx(life["D_H_planet"], rel=1e-12) and life["D_H_planet"] > 0
+
+
+@pytest.mark.parametrize("shifts", [["--x-sun", "0.3", "--x-planet", "0.2"], []])   # given, and the optimum
+def test_a_loaded_set_shows_each_meshs_strength(capsys, shifts):
+    # with --torque/--material the output gave only the strength checks' margins, never S_H, S_F or the stresses;
+    # each mesh's result now follows its checks, and its safety factors are those the checks compared (the sun and
+    # the ring 18CrNiMo7-6, the planet 42CrMo4: each mesh's S_H the smaller of its two gears')
+    argv = ["planetary", "--module", "2", "--planets", "3", "--z-sun", "24", "--z-planet", "36", "--z-ring", "96",
+            "--torque", "60", "--speed", "1450", "--material", "18CrNiMo7-6", "--planet-material", "42CrMo4",
+            "--face-width", "25", "--life-h", "20000", "--k-gamma", "1.15", "--sh-min", "1.1", "--accuracy-grade", "6",
+            "--factor", "K_Hbeta=1.2", *shifts]
+    assert main(argv) == 0
+    text = capsys.readouterr().out
+    assert main(argv + ["--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    rows = data["checks"] if "checks" in data else [dict(check=k, margin=v) for k, v in data["margins"].items()]
+    margin = {r["check"]: r["margin"] for r in rows}
+    for mesh in ("sun-planet", "planet-ring"):
+        block = text.split(f"strength of the {mesh} mesh")[1].split("strength of the")[0]
+        line = {ln.split()[0]: ln.split()[1:] for ln in block.splitlines() if ln.startswith("  S_")}
+        s_h, s_f = ([float(v) for v in line[k]] for k in ("S_H", "S_F"))
+        assert "(S_Hmin 1.1, S_Fmin 1.4)" in block and "sigma_H" in block
+        assert min(s_h) / 1.1 - 1 == pytest.approx(margin[f"{mesh}:contact_strength"], abs=1e-3)
+        root = sorted(k for k in margin if k.startswith(f"{mesh}:root_strength"))
+        gears = ("sun", "planet") if mesh == "sun-planet" else ("planet", "ring")
+        for s, g in zip(s_f, gears):
+            assert s / 1.4 - 1 == pytest.approx(margin[f"{mesh}:root_strength_{g}"], abs=1e-3)
+        assert len(root) == 2
+
+
+def test_a_spectrum_without_y_m_names_the_planet_not_a_pairs_gear_2(tmp_path, capsys):
+    # the damage check's message said "gear 2's root bends both ways": a planetary set has no gear 2
+    csv = tmp_path / "sun.csv"
+    csv.write_text("torque_nm,share\n120,0.05\n80,0.95\n", encoding="utf-8")
+    argv = ["planetary", "-m", "2", "--planets", "3", "--z-sun", "24", "--z-planet", "36", "--z-ring", "96",
+            "--speed", "1450", "--material", "18CrNiMo7-6", "--face-width", "25", "--life-h", "20000",
+            "--spectrum", str(csv)]
+    for shifts in ([], ["--x-sun", "0.3", "--x-planet", "0.2"]):
+        assert main(argv + shifts) == 2
+        err = capsys.readouterr().err.strip()
+        assert len(err.splitlines()) == 1 and "--mean-stress-factor" in err and "planet's root" in err
+        assert "gear 2" not in err

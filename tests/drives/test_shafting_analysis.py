@@ -149,6 +149,37 @@ def test_user_given_f_sh_wins():
     assert float(fac.loc["f_sh", "value"]) == 7.0
 
 
+def test_f_sh_from_the_shafts_is_said_to_be_theirs(two_stage):
+    # the chain takes the shafts' f_sh as a given factor: its result said "given: f_sh", "f_sh given, not computed"
+    # and cited eq. (44) for it, though the user gave nothing
+    mm = two_stage.table("mesh_misalignment").set_index("stage")
+    for stage in two_stage.stages:
+        res = stage["strength"]
+        assert mm.loc[stage["stage"].name, "source"] == "shafts"
+        assert "f_sh" not in res.given and not any("f_sh given" in n for n in res.notes)
+        assert any("from the shafts" in n for n in res.notes)
+        clause = res.factors.set_index("symbol").loc["f_sh", "clause"]
+        assert "from the shafts" in clause and float(res.factors.set_index("symbol").loc["f_sh", "value"]) == \
+            pytest.approx(mm.loc[stage["stage"].name, "f_sh_um"], rel=1e-12)
+    user = _two_stage(strength={"factors": {"f_sh": 7.0}}).analyse()
+    res = next(s for s in user.stages if s["stage"].name == "fast")["strength"]
+    assert "f_sh" in res.given and "f_sh given, not computed" in res.notes     # the user's own stays given
+    assert res.factors.set_index("symbol").loc["f_sh", "clause"] == "given by the caller, not computed"
+
+
+def test_a_shaft_on_two_nu_bearings_is_not_said_to_locate():
+    # an NU bearing's inner ring has no ribs: SKF 17000 example C.3 (tests/data/bearing_life_examples.csv,
+    # skf_c3_non_locating) calls its NU 311 the non-locating bearing; the table said "locating A, floating B"
+    drive = gd.Drive(power_kw=15, n_in_rpm=1450, stages=[gd.GearStage(4, 23, 117, 0.3, -0.3, material="42CrMo4",
+                                                                       face_width_mm=40, name="g")],
+                     shafting=Shafting(bearing_type="cylindrical_roller"))
+    bearings = drive.analyse().table("bearings")
+    assert set(bearings["bearing_type"]) == {"cylindrical_roller"}
+    assert not any(bearings["mounting"].str.contains("locating A")) and all(bearings["mounting"].str.startswith("NU pair"))
+    ball = gd.Drive(power_kw=15, n_in_rpm=1450, stages=drive.stages, shafting=Shafting(bearing_type="deep_groove"))
+    assert set(ball.analyse().table("bearings")["mounting"]) == {"locating A, floating B"}
+
+
 # ------------------------------------------------------------------------------------------- efficiency
 
 def test_computed_efficiencies_in_the_power_flow():

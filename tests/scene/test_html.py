@@ -36,3 +36,21 @@ def test_a_passing_pair_and_the_refusals(tmp_path):
     assert gd.pair_report(ok, tmp_path / "ok.html", overwrite=True).exists()
     with pytest.raises(GearDesignError):
         gd.pair_report(ok, tmp_path / "ok.txt")
+
+
+def test_a_worm_stage_section_shows_its_numbers_rounded_not_the_floats_sixteen_digits():
+    # seed 002's brake stand with its worm computed (studies/scenes/seed002_worm_drive.toml): the worm stage's
+    # section printed "efficiency 0.9222413..., gamma_m_deg 17.744671..." to the float's last digit. γ_m of z1 = 4,
+    # q = 12.5 is atan(z1/q) (DIN 3975), computed here
+    import math
+
+    from geardesign.scene.html import drive_report_html
+
+    drive = gd.Drive(power_kw=4, n_in_rpm=1500, stages=[gd.WormStage(4, 12.5, 4, 50, a=125, efficiency=0.87,
+                                                                       name="gear motor")])
+    page = drive_report_html(drive.analyse(), pictures=False)
+    section = page[page.index("Stage 1, 'gear motor'"):]
+    section = section[:section.index("</p>", section.index("<p>", section.index("</p>") + 1))]
+    gamma = math.degrees(math.atan(4 / 12.5))
+    assert f"gamma_m_deg {gamma:.6g}" in section
+    assert not re.search(r"\d\.\d{8,}", section)                     # no 16-digit float left

@@ -269,3 +269,18 @@ def test_a_centre_distance_beyond_any_gear_is_refused_by_name(a_w):
         # the largest one allowed runs without a warning: no pair reaches it
         sel = select_teeth(3.497, ratio_tol=0.05, z1_range=(13, 16), m=2, a_w=A_W_RANGE_MM[1], internal=True)
         assert sel.best is None and len(sel.skipped) > 0
+
+
+def test_standard_centre_distance_of_a_tooth_search_is_the_nearest_above_a_whatever_its_x_sum():
+    # docs/drive_train.md said a_w="standard" keeps a reducer's x-sum window (-0.5 ... 1.0) as a drive stage does;
+    # it takes the nearest GOST 2185-66 value >= a: 18/90 at m = 4 (a = 216 mm) goes to 225 mm, and x_Σ follows
+    # from ISO 21771 eq. (62), computed here: inv α_w = inv α + 2 tan α x_Σ / z_Σ, cos α_w = a cos α / a_w
+    alpha = math.radians(20.0)
+    alpha_w = math.acos(216.0 * math.cos(alpha) / 225.0)
+    x_sum = (math.tan(alpha_w) - alpha_w - (math.tan(alpha) - alpha)) * 108 / (2 * math.tan(alpha))
+    t = gd.select_teeth(5, m=4, a_w="standard").table
+    row = t[(t.z1 == 18) & (t.z2 == 90)].iloc[0]
+    assert row.a_w_mm == pytest.approx(225.0, abs=1e-9) and row.x_sum == pytest.approx(x_sum, rel=1e-12) and row.x_sum > 1
+    held = gd.select_teeth(5, m=4, a_w="standard", x_sum_window=(-0.5, 1.0)).table
+    assert ((held.x_sum >= -0.5 - 1e-12) & (held.x_sum <= 1.0 + 1e-12)).all()
+    assert not ((held.z1 == 18) & (held.z2 == 90)).any()

@@ -143,8 +143,9 @@ class WormStage:
             raise GearDesignError(f"worm stage '{self.name}': efficiency is needed when z2 is free (each wheel would "
                                   "have its own; the drive's power flow holds one number per stage)")
         elif _EFFICIENCY[0] is None:
-            raise GearDesignError(f"worm stage '{self.name}': efficiency is needed (a number in (0, 1]): no worm "
-                                  "efficiency model is installed (geardesign.drives.stage_kinds.set_worm_efficiency)")
+            raise GearDesignError(f"worm stage '{self.name}': efficiency is needed: a number in (0, 1] or 'computed' "
+                                  "(the mesh efficiency at the worm speed, docs/worm_rating.md); no default model is "
+                                  "installed (geardesign.drives.stage_kinds.set_worm_efficiency)")
         else:
             object.__setattr__(self, "efficiency", _efficiency(_EFFICIENCY[0](self.pair())))
 

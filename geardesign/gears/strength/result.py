@@ -214,7 +214,11 @@ def _scalar(v) -> float:
 
 def _factor_rows(out: dict) -> list:
     """(symbol, gear, value, clause) of every factor in the chain's one-design dict."""
-    rows = [(sym, gear, _scalar(out[key]), clause) for sym, key, gear, clause in FACTOR_TABLE if key in out]
+    given = set(out.get("given", ()))   # a given factor was not computed by its clause: its row says where it came from
+    source = out.get("given_source") or {}
+    rows = [(sym, gear, _scalar(out[key]),
+             (source.get(key, "given by the caller, not computed") if key in given else clause))
+            for sym, key, gear, clause in FACTOR_TABLE if key in out]
     rows.append(("Y_ST", 0, 2.0, "ISO 6336-3:2019 (reference test gear: sigma_FE = sigma_Flim Y_ST)"))
     return rows
 
@@ -227,12 +231,13 @@ def from_chain(out: dict, title: str = "", case: dict | None = None) -> Strength
         if flag in out and (out[flag] if type(out[flag]) is bool else bool(np.any(out[flag]))):
             notes.append(text)
     for name in out.get("given", ()):
-        notes.append(f"{name} given, not computed")
+        notes.append((out.get("given_source") or {}).get(name) or f"{name} given, not computed")
     for name in out.get("given_unused", ()):
         notes.append(f"{name} given but not used (another given factor or the root method makes it unneeded)")
     fields = {k: _scalar(out[k]) for k in _STRESSES}
     fields.update(S_Hmin=float(out["S_Hmin"]), S_Fmin=float(out["S_Fmin"]), _chain=out,
-                  given=tuple(out.get("given", ())), notes=tuple(notes), title=title, case=case)
+                  given=tuple(n for n in out.get("given", ()) if n not in (out.get("given_source") or {})),
+                  notes=tuple(notes), title=title, case=case)
     # every field set at once: the frozen dataclass's __init__ sets them one by one through object.__setattr__,
     # which costs as much again as the rest of this function (there is no __post_init__ to skip)
     result = object.__new__(StrengthResult)

@@ -69,8 +69,9 @@ def test_the_search_picks_the_wheel_teeth():
 
 
 def test_efficiency_given_or_from_the_installed_function():
-    with pytest.raises(gd.GearDesignError, match="efficiency is needed"):
+    with pytest.raises(gd.GearDesignError, match="efficiency is needed") as err:
         WormStage(m_x=4, q=12.5, z1=4, z2=50)
+    assert "'computed'" in str(err.value)     # the way out a Python user has, not only the installer's hook
     with pytest.raises(gd.GearDesignError, match="efficiency is needed when z2 is free"):
         WormStage(m_x=4, q=12.5, z1=4)
 

@@ -42,6 +42,13 @@ def test_the_factor_table_has_each_factor_with_its_clause(result):
     assert all(isinstance(row[3], str) and row[3] for row in FACTOR_TABLE)
 
 
+def test_a_given_factor_row_says_it_was_given_not_its_formulas_clause(result):
+    # K_Hβ = 1.16 and K_v = 1.003 are the example's given values: their rows cited the clauses they were not from
+    fac = result.factors.set_index("symbol")
+    assert fac.loc["K_Hbeta", "clause"] == fac.loc["K_v", "clause"] == "given by the caller, not computed"
+    assert fac.loc["K_Hbeta", "value"] == 1.16 and "6336-1" in fac.loc["K_Halpha", "clause"]
+
+
 def test_given_factors_are_noted_and_the_json_form_is_plain(result):
     assert set(result.given) == {"K_Hbeta", "K_v"}
     assert any("K_v given" in n for n in result.notes)
