@@ -277,11 +277,12 @@ class Drive:
                 break
             eta = computed
         if shafting is not None:
-            from .shafting_analysis import with_shaft_misalignment
+            from .shafting_analysis import stiffened_for_gears
 
-            stages_out, stage_rows, shafting["mesh_misalignment"] = with_shaft_misalignment(
-                self, kinds, stages_out, stage_rows, shafting["f_sh"], objective)
             shafting["efficiency"] = efficiency
+            stages_out, stage_rows, mesh, shafting = stiffened_for_gears(self, kinds, stages_out, stage_rows,
+                                                                         shafting, n, T, objective)
+            shafting["mesh_misalignment"] = mesh
             for st, e in zip(stages_out, eta):      # the η the power flow took (computed where not given)
                 st["summary"]["efficiency"] = float(e)
         rows = [("motor", name, float(v)) for name, v in self._motor_margins(P[0]).items()] + stage_rows

@@ -653,7 +653,13 @@ class Search:
                 new[k], changed = sized, True
             if not changed:
                 break
-            fixed = replace(drive, stages=tuple(new))
+            # the re-sized gears on shafts at least as thick as these: DIN 743 alone would thin them (a larger gear
+            # has smaller forces), tilting the mesh more, and the re-sizing would run away (a conveyor reducer's fast
+            # stage grew from m 4 to m 20 so)
+            bores = {k: d for k, d in an.shafting["seat_bores"].items() if d is not None}
+            sh = drive.shafting
+            fixed = replace(drive, stages=tuple(new), shafting=replace(sh, min_bore_mm={
+                **sh.min_bore_mm, **{k: max(d, sh.min_bore_mm.get(k, 0.0)) for k, d in bores.items()}}))
             object.__setattr__(fixed, "_load_from_motor", self.drive._load_from_motor)
             try:
                 drive, an = fixed, fixed.analyse(self.objective)

@@ -29,6 +29,7 @@ toward +x (its helix hand chosen so; the wheel's toward −x), taken by bearing 
 """
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass, field
 
 from ..errors import GearDesignError
@@ -151,11 +152,15 @@ class Shafting:
     with ``oil_temperature_c``, ``Ra_um`` and ``lubrication``: the gear stages' efficiencies computed (ISO/TR
     14179-2 mesh loss, SKF bearing friction) and used in the power flow where the stage's efficiency was not
     given (None: the stages' efficiencies as they are); ``no_load_loss_w``: a churning loss per gear stage;
-    ``stiff``: thicken a default shaft until the mesh misalignment f_sh of its gear pairs is at most ISO 6336-1
-    eq. (44)'s estimate, the one the gear's strength (and a stage sized by its load) assumed (the default False:
-    DIN 743, the keys and the bearings size it, and K_Hβ takes the f_sh it gives; eq. (44) models a pinion shaft
-    alone, and an intermediate shaft whose wheel sits beside a heavily loaded pinion tilts far more: True can ask
-    for shafts thicker than the pinion, docs/shafts_in_drive.md).
+    ``stiff``: how stiff the default shafts are made: False, as DIN 743, the keys and the bearings size them (K_Hβ
+    takes the f_sh they give); "gears" (the default), besides that a gear pair that fails a check with K_Hβ from its
+    shafts gets them one or two bores thicker where that makes it hold
+    (:func:`~geardesign.drives.shafting_analysis.stiffened_for_gears`); True, thickened until the mesh misalignment
+    f_sh of each gear pair is at most ISO 6336-1 eq. (44)'s estimate, the one the gear's strength (and a stage sized
+    by its load) assumed (eq. (44) models a pinion shaft alone, and an intermediate shaft whose wheel sits beside a
+    heavily loaded pinion tilts far more: True can ask for shafts thicker than the pinion,
+    docs/shafts_in_drive.md); ``min_bore_mm``: {shaft k: mm}, the least bearing
+    bore of a default shaft (the search keeps a re-sized design's shafts at least as thick as before).
     """
 
     layout: tuple = ()
@@ -175,7 +180,8 @@ class Shafting:
     Ra_um: float = 0.5
     lubrication: str = "oil_bath"
     no_load_loss_w: float = 0.0
-    stiff: bool = False
+    stiff: object = "gears"
+    min_bore_mm: object = None
     _material: dict = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self):
@@ -237,7 +243,9 @@ class Shafting:
         require_choice("lubrication", self.lubrication, tuple(K_RS))
         from ..validate import require_bool
 
-        object.__setattr__(self, "stiff", require_bool("stiff", self.stiff))
+        if self.stiff != "gears":
+            object.__setattr__(self, "stiff", require_bool("stiff", self.stiff))
+        object.__setattr__(self, "min_bore_mm", _min_bores(self.min_bore_mm))
         object.__setattr__(self, "no_load_loss_w", one_number("no_load_loss_w", require_range(
             "no_load_loss_w", self.no_load_loss_w, 0.0, 1e9, unit="W")))
 
@@ -267,6 +275,21 @@ class Shafting:
     def given(self, at: int):
         """The DriveShaft the user gave for shaft ``at``, or None."""
         return next((s for s in self.layout if s.at == at), None)
+
+
+def _min_bores(given) -> dict:
+    """``min_bore_mm`` checked by name: None or {shaft k >= 0: a bore in mm}."""
+    if given is None:
+        return {}
+    if not isinstance(given, dict):
+        raise GearDesignError(f"min_bore_mm must be a dict {{shaft: bore mm}}, got {type(given).__name__}")
+    out = {}
+    for k, d in given.items():
+        if isinstance(k, bool) or not isinstance(k, numbers.Integral) or k < 0:
+            raise GearDesignError(f"min_bore_mm: a shaft is a whole number >= 0, got {k!r}")
+        out[int(k)] = one_number(f"min_bore_mm[{k}]", require_range(f"min_bore_mm[{k}]", d, 0.0, 2000.0,
+                                                                      lo_open=True, unit="mm"))
+    return out
 
 
 def default_positions(widths: list, clearance_mm: float, gap_mm: float) -> tuple:

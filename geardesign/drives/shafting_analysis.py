@@ -789,7 +789,7 @@ def iso_f_sh_um(stage, pair, torque1_nm) -> float:
     return float(shaft_misalignment(2000.0 * torque1_nm / d1 / b, b, d1, **shaft))
 
 
-def analyse_shafting(drive, stages_out, n, T) -> dict:
+def analyse_shafting(drive, stages_out, n, T, least_bore=None) -> dict:
     """Every shaft of the drive that carries a gear: its geometry (drawn, or the default one sized by DIN 743, its
     keys, its bearings' life and, with ``Shafting(stiff=True)``, its stiffness), bearing reactions and bearings,
     safeties, deflections; each gear stage's nominal f_sh; the keys at the seats.
@@ -814,9 +814,11 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
                                   f"{', '.join(map(str, sorted(elements))) or 'none'})")
     planes = _gear_planes(drive, stages_out, elements)
     grids = {k: _seat_bores(sh, k) for k in elements}
-    placed = {k: _placed(sh, k, elements[k], planes, grids[k], float(n[k]), grids[k][0]) for k in sorted(elements)}
-    stiffened = set()
-    if sh.stiff:
+    least_bore = {**sh.min_bore_mm, **{k: max(d, sh.min_bore_mm.get(k, 0.0)) for k, d in (least_bore or {}).items()}}
+    placed = {k: _placed(sh, k, elements[k], planes, grids[k], float(n[k]), _at_least(grids[k], least_bore.get(k)))
+              for k in sorted(elements)}
+    stiffened = {k for k, d in least_bore.items() if k in grids and sh.given(k) is None and d > grids[k][0]}
+    if sh.stiff is True:
         limits = {st.name: iso_f_sh_um(res["stage"], res["pair"], float(T[k - 1]))
                   for k, (st, res) in enumerate(zip(drive.stages, stages_out), start=1)
                   if getattr(st, "kind", "") == "gear"}
@@ -902,7 +904,59 @@ def analyse_shafting(drive, stages_out, n, T) -> dict:
                 sections=pd.DataFrame(section_rows), seat_keys=pd.DataFrame(key_rows),
                 gear_deflections=pd.DataFrame(deflection_rows), rows=rows,
                 f_sh=_mesh_f_sh(drive, stages_out, T, elements, placed), bearing_loads=bearing_loads,
-                analyses=analyses, elements=elements)
+                analyses=analyses, elements=elements,
+                seat_bores={k: (None if sh.given(k) is not None else placed[k][0].d_b) for k in placed},
+                bore_grids=grids)
+
+
+def _at_least(bores: list, d_mm) -> float:
+    """The least of ``bores`` >= d_mm (the first without one; the largest where none is)."""
+    if d_mm is None:
+        return bores[0]
+    return next((d for d in bores if d >= d_mm - 1e-9), bores[-1])
+
+
+STIFFEN_ROUNDS = 2   # bore steps a gear pair's default shafts may take for its K_Hβ (stiffened_for_gears)
+
+
+def stiffened_for_gears(drive, kinds, stages_out, stage_rows, shafting, n, T, objective) -> tuple:
+    """The gear stages with K_Hβ from their shafts (:func:`with_shaft_misalignment`), a gear stage that fails
+    there with K_Hβ above the ISO 6336-1 default's having its default shafts thickened a bore step at a time (the
+    next bore of the bearing series; a drawn shaft stays as drawn) until it holds, at most :data:`STIFFEN_ROUNDS`
+    steps: the deflection that tilts the mesh falls as d⁴, while a larger gear on the same shafts tilts it as much
+    (F_t/b and f_sh fall together) — an engineer stiffens the shaft. The thickened shafts are kept only if every
+    stage that failed so then holds; else the shafts as DIN 743, the keys and the bearings sized them (the stage
+    fails, named). Returns (stages, check rows, the f_sh table, the shafting)."""
+    first = with_shaft_misalignment(drive, kinds, stages_out, stage_rows, shafting["f_sh"], objective)
+    least, now, shafts = {}, first, shafting
+    for _ in range(STIFFEN_ROUNDS if drive.shafting.stiff == "gears" else 0):
+        failing = _shaft_failures(now[1], now[2])
+        if not failing:
+            break
+        grow = {}
+        for k, st in enumerate(drive.stages, start=1):
+            if st.name not in failing:
+                continue
+            for j in (k - 1, k):
+                d = shafts["seat_bores"].get(j)
+                nxt = None if d is None else next((b for b in shafts["bore_grids"][j] if b > d + 1e-9), None)
+                if nxt is not None:
+                    grow[j] = max(grow.get(j, 0.0), nxt)
+        if not grow:
+            break
+        least = {**least, **grow}
+        shafts = analyse_shafting(drive, stages_out, n, T, least_bore=least)
+        shafts["efficiency"] = shafting.get("efficiency")
+        now = with_shaft_misalignment(drive, kinds, stages_out, stage_rows, shafts["f_sh"], objective)
+    if least and not _shaft_failures(now[1], now[2]) and _shaft_failures(first[1], first[2]):
+        return (*now, shafts)
+    return (*first, shafting)
+
+
+def _shaft_failures(rows, table) -> set:
+    """The gear stages that fail a check with K_Hβ from their shafts above the ISO 6336-1 default's."""
+    worse = {r["stage"] for _, r in table.iterrows() if r["source"] == "shafts" and r["K_Hbeta"] > r["K_Hbeta_default"]}
+    return {item for item, _, margin in rows if item in worse and margin < 0}
 
 
 # -- efficiencies and K_Hβ ----------------------------------------------------------------------------------------

@@ -664,3 +664,75 @@ def test_beam_deflections_plain_float_path_equals_the_array_path():
 def test_two_support_reactions_refuse_lists_of_different_lengths():
     with pytest.raises(GearDesignError, match="must be of one length, got 2, 1"):
         two_support_reactions([10.0, 20.0], [1.0], [0.0, 0.0], [0.0, 0.0], [0.0, 0.0], 0.0, 100.0)
+
+
+# ------------------------------------------------------------ default shafts stiffened for their gears' K_Hβ
+
+def _conveyor_fixed(power_kw, **shafting):
+    # a conveyor reducer's two stages (the search's rank 1 for 15 kW, 1450 rpm, u 24.17), through-hardened 42CrMo4
+    return gd.Drive(power_kw=power_kw, n_in_rpm=1450, shafting=Shafting(life_h=20000, **shafting), stages=[
+        gd.GearStage(4, 23, 117, 0.338, -0.338, face_width_mm=38, material="42CrMo4", life_h=20000, name="fast"),
+        gd.GearStage(6, 21, 96, 0.436, 0.258, face_width_mm=57, material="42CrMo4", life_h=20000, name="slow")])
+
+
+def test_a_stage_failing_with_its_default_shafts_gets_them_a_bore_step_thicker(monkeypatch):
+    """At 8 kW the fast stage holds with ISO 6336-1's default f_sh but fails its contact strength with K_Hβ from its
+    shafts as DIN 743 sizes them: a larger gear would not help (F_t/b and f_sh fall together), a stiffer shaft does
+    (f_sh ∝ 1/d⁴). The pair's two default shafts go to the next bore of their bearing series and the drive holds;
+    without the step (STIFFEN_ROUNDS 0) it fails, named. The stiffened drive is what Shafting(min_bore_mm=...) at
+    those bores gives, every margin to the bit."""
+    from geardesign.drives import shafting_analysis as sa
+
+    monkeypatch.setattr(sa, "STIFFEN_ROUNDS", 0)
+    thin = _conveyor_fixed(8).analyse()
+    bad = thin.checks[~thin.checks["ok"]]
+    assert list(zip(bad["item"], bad["check"])) == [("fast", "contact_strength")]
+    mm = thin.table("mesh_misalignment").set_index("stage").loc["fast"]
+    assert mm["source"] == "shafts" and mm["K_Hbeta"] > mm["K_Hbeta_default"]
+    monkeypatch.setattr(sa, "STIFFEN_ROUNDS", 2)
+    stiff = _conveyor_fixed(8).analyse()
+    assert stiff.success
+    before = thin.table("shafts").set_index("shaft")["d_bearing_mm"]
+    after = stiff.table("shafts").set_index("shaft")
+    for k in (0, 1):          # the fast pair's shafts: the seat's next bores of their bearing series (one or two steps)
+        bores = sa._seat_bores(Shafting(life_h=20000), k)
+        assert after.loc[k, "stiffened"] and after.loc[k, "d_bearing_mm"] in bores[bores.index(before[k]) + 1:][:2]
+    assert not after.loc[2, "stiffened"] and after.loc[2, "d_bearing_mm"] == before[2]
+    given = _conveyor_fixed(8, min_bore_mm={k: float(after.loc[k, "d_bearing_mm"]) for k in (0, 1)}).analyse()
+    assert given.checks["margin"].tolist() == stiff.checks["margin"].tolist()
+
+
+def test_stiffening_that_does_not_make_the_stage_hold_is_not_kept():
+    # at 15 kW two bore steps do not save the fast stage: its shafts stay as DIN 743 sized them, and it fails, named
+    r = _conveyor_fixed(15).analyse()
+    assert not r.success and ("fast", "contact_strength") in set(zip(r.checks["item"], r.checks["check"]))
+    assert not r.table("shafts")["stiffened"].any()
+
+
+def test_min_bore_is_checked_by_name_and_only_thickens():
+    with pytest.raises(GearDesignError, match=r"min_bore_mm\[1\]"):
+        Shafting(min_bore_mm={1: -5})
+    with pytest.raises(GearDesignError, match="min_bore_mm: a shaft is a whole number"):
+        Shafting(min_bore_mm={"a": 30})
+    with pytest.raises(GearDesignError, match="min_bore_mm must be a dict"):
+        Shafting(min_bore_mm=30)
+    free = _conveyor_fixed(4).analyse().table("shafts").set_index("shaft")["d_bearing_mm"]
+    held = _conveyor_fixed(4, min_bore_mm={1: 60.0}).analyse().table("shafts").set_index("shaft")
+    assert held.loc[1, "d_bearing_mm"] >= 60.0 and held.loc[1, "stiffened"] and free[1] < 60.0
+
+
+@pytest.mark.slow
+def test_a_conveyor_reducer_search_on_shafts_finds_a_design():
+    """The new user's conveyor (15 kW, 1450 rpm, u 24.17 ± 4 %, two sized 42CrMo4 stages, min_mass): every ranked
+    design failed on its shafts — re-sizing a stage thinned its shafts (a larger gear has smaller forces, DIN 743
+    asks less), which tilted the mesh more, and the fast stage ran away from m 4 to m 20. Re-sized designs now keep
+    shafts at least as thick as before: a design that holds, and holds again when analysed on its own."""
+    d = gd.Drive(power_kw=15, n_in_rpm=1450, shafting=Shafting(life_h=20000), stages=[
+        gd.GearStage(None, material="42CrMo4", life_h=20000, name="fast"),
+        gd.GearStage(None, material="42CrMo4", life_h=20000, name="slow")])
+    r = d.optimize(total_ratio=24.17, ratio_tol=0.04, objective="min_mass")
+    assert r.success and r.best.success
+    for st in r.best.drive.stages:
+        assert st.m <= 8
+    again = r.best.drive.analyse("min_mass")
+    assert again.success and again.min_margin == pytest.approx(r.best.min_margin, rel=1e-9, abs=1e-12)
