@@ -374,6 +374,10 @@ def option_names(message: str, parser) -> str:
     if FACTORS_FLAG in flags:
         message = re.sub(r"(?<![\w\-.])factors\[['\"](\w+)['\"]\]", lambda m: f"{FACTORS_FLAG} {m.group(1)}",
                          message)
+    # an option spelled as its keyword with dashes (--z1 for z1, --z-sun-range for z_sun_range): named so too, where
+    # the keyword is an identifier (an underscore or a digit in it: never a word of the prose)
+    same = {f[2:].replace("-", "_"): f for f in flags if f.startswith("--")}
+    table.update({k: f for k, f in same.items() if k not in table and ("_" in k or any(c.isdigit() for c in k))})
     for keyword, flag in table.items():
         if flag not in flags:
             continue

@@ -38,7 +38,7 @@ def test_measure_flags_exit_1(capsys):
     (["measure", "-m", "3", "--z", "2"], ["z", "[3, 100000]"]),
     (["measure", "-m", "3", "--z", "24", "--allowance", "-0.1", "-0.05"], ["A_sni"]),
     (["measure", "-m", "3", "--z", "24", "--allowance", "1", "2", "3"], ["--allowance"]),
-    (["measure", "-m", "3", "--z", "24", "--accuracy-class", "12"], ["accuracy_class", "[1, 11]"]),
+    (["measure", "-m", "3", "--z", "24", "--accuracy-class", "12"], ["--accuracy-class", "[1, 11]"]),
     (["measure", "-m", "0.1", "--z", "24", "--accuracy-class", "5"], ["m (ISO 1328-1:2013 range)", "[0.5, 70]"]),
 ])
 def test_errors_are_one_line_exit_2(argv, words):

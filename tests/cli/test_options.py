@@ -66,3 +66,18 @@ def test_a_spectrum_that_is_a_device_is_refused_naming_the_option(command, tmp_p
     lines = proc.stderr.strip().splitlines()
     assert proc.returncode == 2 and len(lines) == 1, proc.stderr
     assert "--spectrum: spectrum file '/dev/zero' is not a regular file" in lines[0]
+
+
+@pytest.mark.parametrize("argv, said, not_said", [
+    (["pair", "--z1", "2", "--z2", "30", "--module", "2"], "--z1 must be a whole number", "error: z1"),
+    (["planetary", "-m", "2", "--planets", "3", "--ratio", "5", "--z-sun-range", "40:12"],
+     "--z-sun-range must be (lo, hi)", "z_sun_range"),
+])
+def test_an_error_names_the_option_spelled_like_its_keyword(argv, said, not_said, capsys):
+    # the new user's finding: the library's keyword (z1, z_sun_range) was printed where the option (--z1,
+    # --z-sun-range) is what the user typed
+    from geardesign.cli import main
+
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and said in err and not_said not in err

@@ -38,7 +38,7 @@ def test_teeth_search_and_files(tmp_path, capsys):
 
 @pytest.mark.parametrize("argv, words", [
     (["--z-sun", "20"], "--z-planet, --z-ring needed"),
-    (["--z-sun", "20", "--z-planet", "30", "--z-ring", "30"], "z_ring must exceed z_planet"),
+    (["--z-sun", "20", "--z-planet", "30", "--z-ring", "30"], "--z-ring must exceed --z-planet"),
     (["--z-sun", "20", "--z-planet", "25", "--z-ring", "72", "--x-sun", "0.1"], "--x-sun and --x-planet go together"),
     (["--ratio", "0.5"], "ratio = 0.5"),
     (["--ratio", "5", "--z-sun-range", "a:b"], "--z-sun-range"),

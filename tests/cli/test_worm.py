@@ -62,7 +62,7 @@ def test_choice_from_the_series(capsys):
      ["--optimize-x2 must be one of"]),
     (["--module", "2", "--z1", "1", "--q", "10"], ["--z2 is needed"]),
     (["--module", "2", "--z1", "1", "--z2", "40", "--q", "10", "--worm-length", "-5"], ["--worm-length", "-5"]),
-    (["--module", "2", "--z1", "1", "--z2", "40", "--q", "10", "--x2-abs-max", "9"], ["x2_abs_max must be in"]),
+    (["--module", "2", "--z1", "1", "--z2", "40", "--q", "10", "--x2-abs-max", "9"], ["--x2-abs-max must be in"]),
     (["--module", "abc"], ["--module", "invalid float value"]),
     ([], ["--module is needed"]),
 ])
