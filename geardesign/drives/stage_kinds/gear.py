@@ -770,7 +770,9 @@ class GearKind(ToothedKind):
                    size=float(stage_area_mm2(geo.a_w, geo.da1, geo.da2)),
                    mass=float(disc_mass_kg(geo.da1, st.width_mm) + disc_mass_kg(geo.da2, st.width_mm)),
                    summary=dict(name=st.name, kind="gear", m=st.m, z1=st.z1, z2=st.z2, x1=pair.x1, x2=pair.x2,
-                                a_w_mm=geo.a_w, da1_mm=geo.da1, da2_mm=geo.da2, ratio=st.z2 / st.z1,
+                                # to 1e-9 mm: a standard a_w the shifts were solved for reads 355, not
+                                # 354.99999999999994 (the solve's last bit), in tables and JSON
+                                a_w_mm=round(float(geo.a_w), 9), da1_mm=geo.da1, da2_mm=geo.da2, ratio=st.z2 / st.z1,
                                 efficiency=st.efficiency))
         if "allowances" in sol:
             out["allowances"] = sol["allowances"]

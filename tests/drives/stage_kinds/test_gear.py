@@ -187,3 +187,15 @@ def test_a_sized_stage_takes_the_series_I_module_above_a_series_II_one_where_it_
     # a scene's gear stage takes it too
     assert GearKind().scene_keys()["module_series"]["choices"] == ("preferred", "both")
     assert GearKind().from_scene({"module_series": "both", "material": "42CrMo4"}).module_series == "both"
+
+
+def test_a_sized_stage_on_a_standard_centre_distance_reports_it_exactly():
+    # the new user's finding: a_w 354.99999999999994 in tables and JSON (the shift solve's last bit) for a stage on
+    # GOST 2185-66's 355 mm; the summary says the standard value (GOST 2185-66 row 1: 40, 50, 63, 80, 100, 125, 160,
+    # 200, 250, 315, 400, 500 …; row 2: 71, 90, 112, 140, 180, 225, 280, 355, 450 …)
+    gost2185 = {40, 50, 63, 71, 80, 90, 100, 112, 125, 140, 160, 180, 200, 225, 250, 280, 315, 355, 400, 450, 500}
+    for u in (3.5, 4.6):     # 15 kW at u 4.6: 199.99999999999997 before
+        r = gd.Drive(power_kw=15, n_in_rpm=1450, stages=[gd.GearStage(None, material="42CrMo4", name="g", z1_range=(
+            18, 22), ratio_range=(2.5, 5.5))]).optimize(total_ratio=u, ratio_tol=0.05)
+        a_w = r.best.stages[0]["summary"]["a_w_mm"]
+        assert r.success and a_w in gost2185 and type(a_w) is float
