@@ -140,7 +140,7 @@ def planet_damage_checks(mesh_opts: dict, wrap) -> list:
                 terms[tag][positive] = [wrap(c, tag) for c in built if isinstance(c, (PittingDamage, RootDamage))
                                         and c.gear == PLANET_GEAR[tag]]
         for cls, mode in ((PittingDamage, "H"), (RootDamage, "F")):
-            def of(tag, positive, cls=cls):
+            def of(tag, positive, cls=cls, terms=terms):
                 return tuple(t for t in terms[tag][positive] if isinstance(t.inner, cls))
 
             # flank A: the sun mesh's positive bins and the ring mesh's negative ones; flank B the others
