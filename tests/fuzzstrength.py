@@ -391,16 +391,18 @@ def _strength_planetary(rng):
 
 def _set_spectrum_spec(rng, sizes, m, width) -> dict:
     """The keywords of one LoadSpectrum.from_bins on the sun of a set: 1 to 8 bins of random sign whose torques span
-    zero damage to worn out (a planet's line load w from 0.1 to 1e4 N/mm: T_sun = w·N·d_s·b/2000), odd speeds,
+    zero damage to worn out (a planet's line load w from 0.001 to 1e4 N/mm, within two decades in one spectrum:
+    T_sun = w·N·d_s·b/2000), odd speeds,
     hours, cycles or time shares; now and then (at the case's rate) a bad value."""
     n = rng.randint(1, 8)
     z_s, n_pl = (sizes[0], sizes[3]) if all(type(v) is int and 0 < v < 1e4 for v in (sizes[0], sizes[3])) else (20, 3)
     scale = n_pl * float(m if type(m) in (int, float) and 0 < m < 1e3 else 2.0) * z_s * float(
         width if type(width) is float and 0 < width < 1e5 else 25.0) / 2000.0
     signs = rng.choice(["+", "+", "-", "mixed", "mixed", "mixed"])
+    top = rng.uniform(-1, 4)       # the case's severity: its largest line load 10^top N/mm, the others up to 100x less
 
     def torque(g):
-        t = scale * 10.0 ** g.uniform(-1, 4)
+        t = scale * 10.0 ** g.uniform(top - 2, top)
         t = round(t, 6) if g.random() < 0.8 else t
         sign = 1 if signs == "+" else -1 if signs == "-" else g.choice([1, -1])
         return 0.0 if g.random() < 0.04 else sign * t
@@ -494,7 +496,9 @@ def _planetary_spectrum(rng):
     kind = rng.choice(["set", "set", "optimize", "optimize", "optimize", "region", "cli"])
     objective = _pick(rng, ["max_life", "max_life", "max_x_sum", "max_min_safety"], ["min_life"])
     if kind in ("optimize", "region") and (objective == "max_min_safety" or rng.random() < 0.3):
-        case["load"] = ("Load", {"torque_nm": _pick(rng, lambda g: round(g.uniform(1, 3000), 2), [-1.0]),
+        plain = all(type(v) is int and 0 < v < 1e4 for v in sizes) and type(m) is float and type(width) is float
+        scale = sizes[3] * m * sizes[0] * width / 2000.0 if plain else 100.0     # T_sun at 1 N/mm
+        case["load"] = ("Load", {"torque_nm": _pick(rng, lambda g: round(scale * 10 ** g.uniform(-1, 3), 4), [-1.0]),
                                  "n_rpm": _pick(rng, [1450.0, 100.0, 1e4])})
     geo = {}
     if rng.random() < 0.2:
