@@ -389,6 +389,219 @@ def _strength_planetary(rng):
     return f"planetary {kind}({z_s}/{z_p}/{z_r} x{n}, m={m}, {method}, x={xs}, checks={case})", call
 
 
+def _set_spectrum_spec(rng, sizes, m, width) -> dict:
+    """The keywords of one LoadSpectrum.from_bins on the sun of a set: 1 to 8 bins of random sign whose torques span
+    zero damage to worn out (a planet's line load w from 0.001 to 1e4 N/mm, within two decades in one spectrum:
+    T_sun = w·N·d_s·b/2000), odd speeds,
+    hours, cycles or time shares; now and then (at the case's rate) a bad value."""
+    n = rng.randint(1, 8)
+    z_s, n_pl = (sizes[0], sizes[3]) if all(type(v) is int and 0 < v < 1e4 for v in (sizes[0], sizes[3])) else (20, 3)
+    scale = n_pl * float(m if type(m) in (int, float) and 0 < m < 1e3 else 2.0) * z_s * float(
+        width if type(width) is float and 0 < width < 1e5 else 25.0) / 2000.0
+    signs = rng.choice(["+", "+", "-", "mixed", "mixed", "mixed"])
+    top = rng.uniform(-1, 4)       # the case's severity: its largest line load 10^top N/mm, the others up to 100x less
+
+    def torque(g):
+        t = scale * 10.0 ** g.uniform(top - 2, top)
+        t = round(t, 6) if g.random() < 0.8 else t
+        sign = 1 if signs == "+" else -1 if signs == "-" else g.choice([1, -1])
+        return 0.0 if g.random() < 0.04 else sign * t
+    kw = dict(torque_nm=_pick(rng, lambda g: [torque(g) for _ in range(n)], [[float("nan")] * n, [], [1e10] * n]),
+              n_rpm=_pick(rng, lambda g: g.choice([1450.0, round(g.uniform(0.5, 2e4), 3), 1e-3, 7777.7,
+                                                   [round(g.uniform(1, 9000), 2) for _ in range(n)]]),
+                          [0.0, -1.0, [1.0] * (n + 1)]))
+    how = rng.choice(["time_h", "time_h", "share", "cycles"])
+    if how == "time_h":
+        kw["time_h"] = _pick(rng, lambda g: [g.choice([0.0] * (g.random() < 0.1) + [1e-3, round(10 ** g.uniform(-1, 5), 3), round(10 ** g.uniform(-1, 5), 3)])
+                                             for _ in range(n)], [[-1.0] * n, [1e10] * n])
+    elif how == "share":
+        w = [rng.random() + 1e-3 for _ in range(n)]
+        kw["share"] = _pick(rng, [[v / sum(w) for v in w], [1.0 / n] * n], [[0.5] * (n + 1), [2.0] + [0.0] * (n - 1)])
+        kw["duration_h"] = _pick(rng, [2e4, 1.0, 1e6, 333.3], [0.0, -1.0])
+    else:
+        kw["cycles"] = _pick(rng, lambda g: [g.choice([0.0] * (g.random() < 0.1) + [1e3, 1e7, 3.3e9, round(10 ** g.uniform(2, 10))]) for _ in range(n)], [[1e30] * n])
+    if rng.random() < 0.01:
+        kw["on_gear"] = 2      # a set's spectrum is on the sun: refused
+    return kw
+
+
+def _recheck_planetary_life(pset, table, checks) -> None:
+    """The set's damage checks against planetary_life's bin-by-bin sums (the independent reference), each load case:
+    the sun's and ring's mesh checks D_<mode>_sun/ring, the planet's set check (a reversing case among them) or its
+    two mesh checks' larger (one-sided) D_<mode>_planet, rel 1e-12."""
+    from geardesign.gears.strength.planetary_meshes import planetary_life
+
+    spectra = checks["spectrum"] if isinstance(checks["spectrum"], (list, tuple)) else [checks["spectrum"]]
+    reversing = any(s.reverses for s in spectra)
+    value = dict(zip(table["check"], table["value"]))
+    opts = dict(checks.get("strength") or {})
+    for k, spec in enumerate(spectra, start=1):
+        case = "" if k == 1 else f"case{k}_"
+        try:
+            ref = planetary_life(pset, spec, checks["material"], face_width_mm=checks["face_width_mm"],
+                                 mean_stress_factor=checks.get("mean_stress_factor"), life_h=checks.get("life_h"),
+                                 planet_material=checks.get("planet_material"),
+                                 ring_material=checks.get("ring_material"), sn_curve=checks.get("sn_curve") or "iso",
+                                 **opts)
+        except gd.GearDesignError as exc:
+            # a mesh the chain cannot rate (a shift past its range): the set's checks must call it undefined
+            if not any(math.isnan(float(v)) for n, v in value.items() if "_damage_" in n and case in n):
+                raise FailsChecks(f"case {k}: planetary_life refuses ({exc}) but the set's checks rate it") from None
+            continue
+        for mode, kind in (("H", "pitting_damage"), ("F", "root_damage")):
+            got = {"sun": value[f"sun-planet:{case}{kind}_sun"], "ring": value[f"planet-ring:{case}{kind}_ring"],
+                   "planet": value[f"set:{case}{kind}_planet"] if reversing else max(
+                       value[f"sun-planet:{case}{kind}_planet"], value[f"planet-ring:{case}{kind}_planet"])}
+            for gear, v in got.items():
+                want = ref[f"D_{mode}_{gear}"]
+                if not math.isclose(float(v), want, rel_tol=1e-12, abs_tol=1e-300):
+                    raise FailsChecks(f"case {k} D_{mode}_{gear}: the set's check {float(v)!r}, planetary_life "
+                                      f"{want!r}")
+
+
+def _planetary_spectrum(rng):
+    """Planetary sets under load spectra on the sun (issue 38): reversing or one-sided bins, several load cases, Y_M,
+    a required life, materials, damage_max; the set's checks (re-checked against planetary_life), the optimiser
+    (max_life, max_x_sum, max_min_safety; with and without a load) and the region. An optimum must hold its checks,
+    max_life's fun must be −ln of the largest damage there."""
+    from tests.fuzzcases import _planetary_sizes
+
+    _set_rate(rng)
+    sizes = _planetary_sizes(rng) if rng.random() < 0.5 else rng.choice(
+        [(20, 31, 82, 3), (21, 43, 108, 3), (15, 30, 75, 3), (24, 24, 72, 4), (12, 60, 132, 3), (19, 17, 56, 3),
+         (30, 15, 60, 5)])
+    m = _pick(rng, [2.0, 1.75, 1.0, 3.0, 5.0, 0.5, 12.0])
+    width = _pick(rng, lambda g: round(float(m if type(m) is float else 2.0) * g.choice([8.0, 12.5, 20.0,
+                                                                                           g.uniform(2, 40)]), 3),
+                  [0.0, -1.0])
+    n_cases = rng.choice([1, 1, 1, 2, 3])
+    spectra = [_set_spectrum_spec(rng, sizes, m, width) for _ in range(n_cases)]
+    case = {"material": _material_spec(rng), "face_width_mm": width}
+    ym = rng.random()
+    if ym < 0.92:
+        case["mean_stress_factor"] = _pick(rng, lambda g: g.choice([0.7, 1.0, 0.3, round(g.uniform(0.3, 1.0), 4),
+                                                                    (0.7, 0.8)]), [0.29, 1.01, (0.7,), "0.7"])
+    if rng.random() < 0.5:
+        case["life_h"] = _pick(rng, [2e4, 1.0, 1e7, 1e-3, 5e5], [0.0, -1.0, 1e8])
+    for k in ("planet_material", "ring_material"):
+        if rng.random() < 0.25:
+            case[k] = _material_spec(rng)
+    if rng.random() < 0.4:
+        case["damage_max"] = _pick(rng, lambda g: g.choice([1.0, 0.5, 10.0, 1e-6, round(g.uniform(0.01, 10), 4)]),
+                                   [0.0, 11.0, -1.0])
+    if rng.random() < 0.15:
+        case["sn_curve"] = _pick(rng, ["iso", "original", "elementary", "haibach"], ["nope"])
+    if rng.random() < 0.15:
+        case["strength"] = _pick(rng, [{"K_gamma": 1.1}, {"accuracy_grade": 6}], [{"K_gamma": 0.5}, {"bogus": 1}])
+    kind = rng.choice(["set", "set", "optimize", "optimize", "optimize", "region", "cli"])
+    objective = _pick(rng, ["max_life", "max_life", "max_x_sum", "max_min_safety"], ["min_life"])
+    if kind in ("optimize", "region") and (objective == "max_min_safety" or rng.random() < 0.3):
+        plain = all(type(v) is int and 0 < v < 1e4 for v in sizes) and type(m) is float and type(width) is float
+        scale = sizes[3] * m * sizes[0] * width / 2000.0 if plain else 100.0     # T_sun at 1 N/mm
+        case["load"] = ("Load", {"torque_nm": _pick(rng, lambda g: round(scale * 10 ** g.uniform(-1, 3), 4), [-1.0]),
+                                 "n_rpm": _pick(rng, [1450.0, 100.0, 1e4])})
+    geo = {}
+    if rng.random() < 0.2:
+        geo["beta_deg"] = _pick(rng, [10.0, 20.0, 30.0])
+    if rng.random() < 0.15:
+        geo["arrangement"] = _pick(rng, ["carrier_fixed", "carrier_fixed", "sun_fixed"])
+    method = _pick(rng, ["exact", "exact", "grid"])
+    xs = (round(rng.uniform(-0.4, 1.0), 3), round(rng.uniform(-0.4, 1.0), 3))
+    n_region = rng.choice([11, 15, 21])
+    rng_cli = random.Random(rng.random())
+
+    def call():
+        built = [gd.LoadSpectrum.from_bins(**s) for s in spectra]
+        if kind == "cli":
+            return _planetary_spectrum_cli(sizes, m, case, geo, built[0], objective, method, xs, rng_cli)
+        checks = _built({**case, "spectrum": built if n_cases > 1 else built[0]})
+        if kind == "set":
+            s = gd.PlanetarySet.coaxial(m, *sizes, *xs, **geo)
+            table = s.checks(checks)
+            margin = table["margin"].to_numpy(dtype=float)
+            # −inf is a check undefined for the design (its label says so, it fails); anything else must be finite
+            undefined = (margin == -np.inf) & table["label"].str.contains("undefined for this design").to_numpy()
+            if not (np.isfinite(margin) | undefined).all():
+                return float("nan")
+            _recheck_planetary_life(s, table, checks)
+            return table
+        if kind == "region":
+            return gd.planetary_region(*sizes, m, checks=checks, n=n_region, method=method, **geo)
+        r = gd.optimize_planetary_shifts(*sizes, m, checks=checks, objective=objective, method=method, **geo)
+        if r.success:
+            s = gd.PlanetarySet(m, *sizes, r.x_sun, r.x_planet, r.x_ring, **geo)
+            table = s.checks(checks)
+            _judge_set(table, "optimum")
+            _recheck_planetary_life(gd.PlanetarySet.coaxial(m, *sizes, r.x_sun, r.x_planet, **geo), table, checks)
+            if objective == "max_life":
+                damage = table.loc[table["check"].str.contains("_damage_"), "value"].astype(float)
+                want = -math.log(max(float(damage.max()), 1e-300))
+                if not math.isclose(r.fun, want, rel_tol=1e-9, abs_tol=1e-9):
+                    raise FailsChecks(f"max_life's fun {r.fun!r} is not -ln of the largest damage there ({want!r})")
+        return r
+    shown = [{k: (v if not isinstance(v, list) or len(v) < 9 else f"{len(v)} values") for k, v in s.items()}
+             for s in spectra]
+    return (f"planetary_spectrum {kind}({sizes}, m={m}, {objective}, {method}, x={xs}, n={n_region}, {geo}, "
+            f"checks={case}, spectra={shown})", call)
+
+
+def _planetary_spectrum_cli(sizes, m, case, geo, spectrum, objective, method, xs, rng) -> int:
+    """``geardesign planetary ... --spectrum CSV`` with the case's bins written as a CSV (torque_nm, n_rpm, time_h):
+    exit 0 or 1 with a result and no NaN printed, or exit 2 with one stderr line; nothing left beside the CSV."""
+    names = {k: (v if isinstance(v, str) else "42CrMo4") for k, v in case.items() if "material" in k}
+    argv = ["planetary", "--module", str(m), "--planets", str(sizes[3]), "--z-sun", str(sizes[0]),
+            "--z-planet", str(sizes[1]), "--z-ring", str(sizes[2]), "--material", names["material"],
+            "--face-width", str(case["face_width_mm"]), "--method", str(method)]
+    for k in ("planet_material", "ring_material"):
+        if k in names:
+            argv += ["--" + k.replace("_", "-"), names[k]]
+    ym = case.get("mean_stress_factor")
+    if ym is not None:
+        argv += ["--mean-stress-factor", str(ym[0] if isinstance(ym, tuple) and ym else ym)]
+    for key, flag in (("life_h", "--life-h"), ("damage_max", "--damage-max"), ("sn_curve", "--sn-curve")):
+        if case.get(key) is not None:
+            argv += [flag, str(case[key])]
+    if geo.get("beta_deg"):
+        argv += ["--beta", str(geo["beta_deg"])]
+    if geo.get("arrangement"):
+        argv += ["--arrangement", str(geo["arrangement"])]
+    if rng.random() < 0.4:
+        argv += ["--x-sun", str(xs[0]), "--x-planet", str(xs[1])]
+    elif rng.random() < 0.7:
+        argv += ["--objective", str(objective)]
+    if rng.random() < 0.3:
+        argv.append("--json")
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "sun.csv")
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write("torque_nm,n_rpm,time_h\n" + "".join(f"{t!r},{n!r},{h!r}\n" for t, n, h in zip(
+                spectrum.torque_nm.tolist(), spectrum.n_rpm.tolist(), spectrum.time_h.tolist())))
+        out, err = io.StringIO(), io.StringIO()
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            try:
+                code = cli_main(argv + ["--spectrum", path])
+            except SystemExit as exc:
+                code = exc.code
+        if os.listdir(tmp) != ["sun.csv"]:
+            raise HalfWritten(f"exit {code} and left {os.listdir(tmp)}")
+    lines = err.getvalue().strip().splitlines()
+    if "Traceback" in err.getvalue():
+        raise AssertionError(f"traceback printed: {lines[-1][:200]!r}")
+    if code == 2 and len(lines) != 1:
+        raise AssertionError(f"exit 2 with {len(lines)} stderr lines: {err.getvalue()[:300]!r}")
+    if code not in (0, 1, 2):
+        raise AssertionError(f"exit {code}: {err.getvalue()[:200]!r}")
+    if code == 2:
+        raise gd.GearDesignError(lines[0])        # counted as the clean refusal it is
+    # a check undefined for the design fails with margin −inf (its table row: "-inf False", the value blank), as
+    # PlanetarySet.checks() has it; any other NaN or infinity printed is one passed off as a result
+    text = re.sub(r"\s-inf\s+False\s", " ", out.getvalue())
+    words = text.replace("|", " ").replace('"', " ").split()
+    if any(w.strip(",;:()%[]{}").lower() in ("nan", "-nan", "inf", "-inf", "infinity", "-infinity") for w in words):
+        return float("nan")
+    return code
+
+
 def _judge_set(table, what) -> None:
     rows = table[table["margin"].notna()]
     if len(rows) and rows["margin"].min() < -FEASIBILITY_SLACK:
@@ -537,4 +750,5 @@ def _strength_report(rng):
 
 STRENGTH = {"strength_pair": _strength_pair, "pair_strength": _pair_strength, "strength_solvers": _strength_solvers,
             "strength_planetary": _strength_planetary, "strength_cli": _strength_cli, "strength_drive": _strength_drive,
-            "strength_report": _strength_report}
+            "strength_report": _strength_report,
+            "planetary_spectrum": _planetary_spectrum}

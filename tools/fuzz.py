@@ -9,8 +9,10 @@ tests/fuzzcases.py, tests/fuzzsurfaces.py, tests/fuzzstrength.py and tests/fuzzm
 sample is tests/test_fuzz.py); the load-capacity targets alone:
 
     python tools/fuzz.py --targets strength_pair,pair_strength,strength_solvers,strength_planetary,\
-strength_cli,strength_drive,strength_report
+strength_cli,strength_drive,strength_report,planetary_spectrum
 
+(planetary_spectrum: sets under load spectra on the sun, reversing ones among them, re-checked against
+planetary_life);
 the machine elements (engine, spectra and life, worms, bearings, shafts, efficiency, their commands):
 
     python tools/fuzz.py --targets engine,joint_forces,load_spectrum,pair_life,damage_optimize,worm,\

@@ -170,7 +170,8 @@ def add_spectrum_args(p, planetary: bool = False) -> None:
     g.add_argument("--spectrum", default=None, metavar="CSV",
                    help="the load spectrum: a CSV with columns torque_nm, n_rpm (or --speed for all bins) and one of "
                         "time_h, cycles, share (share: with --life-h); "
-                        + ("torques on the sun, each >= 0 for the set's checks (a reversing one: planetary_life)"
+                        + ("torques on the sun, negative on the other flank (the planet's flanks then summed over "
+                           "both meshes: set:pitting_damage_planet, set:root_damage_planet)"
                            if planetary else "torques of gear --on-gear, negative on the other flank"))
     from ..gears.spectrum import SN_CURVES   # a light module (numpy, csv)
 

@@ -230,7 +230,8 @@ def failing_margins(margins: dict, names=None) -> str:
 
 
 def check_details(table: pd.DataFrame | Rows) -> dict:
-    """``check -> "value 1.153 against limit 1.2"`` for a checks table's failing rows."""
+    """``check -> "value 1.153, limit 1.2"`` for a checks table's failing rows ("undefined for this design" for a
+    value the check has none of there)."""
     out = {}
     rows = ([dict(zip(table.columns, r)) for r in table.rows] if isinstance(table, Rows)
             else [r for _, r in table.iterrows()])
@@ -238,9 +239,13 @@ def check_details(table: pd.DataFrame | Rows) -> dict:
         if row["ok"]:
             continue
         try:
-            out[row["check"]] = f"value {float(row['value']) + 0.0:.4g}, limit {float(row['limit']) + 0.0:.4g}"
+            value, limit = float(row["value"]) + 0.0, float(row["limit"]) + 0.0
         except (TypeError, ValueError):
             out[row["check"]] = ""
+            continue
+        # NaN: a check undefined for the design (its label says so), which fails; not a value to print as "nan"
+        out[row["check"]] = (f"value {value:.4g}" if math.isfinite(value) else "undefined for this design") + (
+            f", limit {limit:.4g}" if math.isfinite(limit) else "")
     return out
 
 

@@ -183,3 +183,15 @@ def test_rows_print_as_pandas_prints_the_same_frame(seed, monkeypatch, capsys):
                     == _printed(table.to_frame(), width, monkeypatch, capsys, fmt))
     ints = Rows(("k", "n"), [("a", 1), ("bb", -20)])
     assert _printed(ints, 80, monkeypatch, capsys) == _printed(ints.to_frame(), 80, monkeypatch, capsys)
+
+
+def test_a_failing_check_undefined_for_the_design_is_said_so_not_printed_as_nan():
+    """A check with no value at the design (NaN: PlanetarySet.checks() labels it "undefined for this design", margin
+    −inf) printed "value nan" in the FAILS line (fuzz planetary_spectrum: a set whose ring mesh the chain cannot
+    rate). The rows here: a failing number, an undefined value, a passing row (left out)."""
+    from geardesign.cli.output import check_details
+
+    table = pd.DataFrame({"check": ["contact_ratio", "set:root_damage_planet", "undercut1"],
+                          "value": [0.9857, np.nan, 0.3], "limit": [1.2, 1.0, -0.1], "ok": [False, False, True]})
+    assert check_details(table) == {"contact_ratio": "value 0.9857, limit 1.2",
+                                    "set:root_damage_planet": "undefined for this design, limit 1"}

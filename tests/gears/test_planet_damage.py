@@ -82,3 +82,21 @@ def test_max_life_of_a_set_under_a_reversing_spectrum_reads_the_planets_flanks()
             if ok:
                 beaten += worst(xs, xp)[0] < d_best * (1 - 1e-9)
     assert beaten == 0 and feasible >= 10
+
+
+@pytest.mark.parametrize("torques", [[20.0, 80.0], [20.0, -80.0]])
+def test_a_planet_root_the_chain_cannot_rate_fails_its_damage_check(torques):
+    """30/15/60 × 5 at x = (−0.119, −0.298), m 1: the planet-ring mesh's ε_α is 2.75, past the 2.42 at which ISO 6336-3
+    method B's outer point of single contact leaves the planet's base circle, so the planet's root has no load point
+    there: planetary_life (each mesh's pair_life, the independent rating) refuses it. The set's damage check of that
+    root (the ring mesh's one-sided, or the set's summed over both meshes when the spectrum reverses) must fail as
+    undefined; before the fix (fuzz planetary_spectrum) the chain's NaN stress fell onto the S-N curve's horizontal
+    tail: D = 0, the check held."""
+    s = gd.PlanetarySet.coaxial(1.0, 30, 15, 60, 5, -0.119, -0.298)
+    spec = gd.LoadSpectrum.from_bins(torques, 3500, time_h=[500, 500])
+    with pytest.raises(gd.GearDesignError, match="eps_alpha_n"):
+        planetary_life(s, spec, "42CrMo4", face_width_mm=20.0, mean_stress_factor=1.0)
+    t = s.checks({"spectrum": spec, "material": "42CrMo4", "face_width_mm": 20.0, "mean_stress_factor": 1.0})
+    row = t.set_index("check").loc["set:root_damage_planet" if min(torques) < 0 else "planet-ring:root_damage_planet"]
+    assert np.isnan(row["value"]) and row["margin"] == -np.inf and not row["ok"]
+    assert "undefined for this design" in row["label"]

@@ -20,7 +20,8 @@ import numpy as np
 
 from ...errors import GearDesignError
 from .base import Check, Option, register, register_context
-from .strength import _GRADIENT_STENCIL, _HESSIAN_STENCIL, _HESSIAN_STEP, _difference, _in_range, pair_context
+from .strength import (_GRADIENT_STENCIL, _HESSIAN_STENCIL, _HESSIAN_STEP, _difference, _in_range, _where_it_holds,
+                       pair_context)
 
 __all__ = ["DamageSpec", "PittingDamage", "RootDamage", "damage_spec", "DAMAGE_CONTEXT", "DAMAGE_MAX"]
 
@@ -150,27 +151,12 @@ class DamageSpec:
                                         **dict(self.options))
                         return {k: np.asarray(out["D_" + k], dtype=float) for k in _MODES}
 
-                    for k, v in _where_it_holds(call, mine.size).items():
+                    # the designs the chain refuses alone get NaN (a failing margin), found by halving; a refusal
+                    # of every design (a material the root needs more of, a bad option) is raised, as the strength
+                    # checks raise it: design by design it cost a call per design and ended as "no finite result"
+                    for k, v in _where_it_holds(call, mine.size, _MODES).items():
                         D[k][idx[mine]] = v
         return {k: v.reshape((n_pts,) + shape) for k, v in D.items()}
-
-
-def _where_it_holds(call, n: int) -> dict:
-    """``call`` on every design, or design by design where the chain refuses the batch (NaN: a failing margin)."""
-    try:
-        return call(np.arange(n))
-    except GearDesignError:
-        if n == 1:
-            raise
-    out = {k: np.full(n, np.nan) for k in _MODES}
-    for i in range(n):
-        try:
-            one = call(np.array([i]))
-        except GearDesignError:
-            continue
-        for k in _MODES:
-            out[k][i] = one[k][0]
-    return out
 
 
 _STENCIL = _GRADIENT_STENCIL

@@ -208,11 +208,11 @@ class StrengthSpec:
 _REFUSAL_SPLITS = 64   # calls of the chain spent finding the designs it refuses among many
 
 
-def _where_it_holds(call, n: int) -> dict:
-    """``call(sel)`` for the designs 0 … n−1. The chain refuses a whole call for one design outside a range it
-    checks inside itself (the root's notch parameter q_s, say, of a design the geometry fails anyway): the
-    designs it refuses alone then get NaN (a failing margin), found by halving. A refusal of every design
-    (a bad option, or a single design out of range) is raised, as is one that takes more than
+def _where_it_holds(call, n: int, keys=_QUANTITIES) -> dict:
+    """``call(sel)`` for the designs 0 … n−1 (a dict of arrays by ``keys``). The chain refuses a whole call for one
+    design outside a range it checks inside itself (the root's notch parameter q_s, say, of a design the geometry
+    fails anyway): the designs it refuses alone then get NaN (a failing margin), found by halving. A refusal of
+    every design (a bad option, or a single design out of range) is raised, as is one that takes more than
     _REFUSAL_SPLITS calls to pin down."""
     budget = [_REFUSAL_SPLITS]
 
@@ -228,9 +228,9 @@ def _where_it_holds(call, n: int) -> dict:
             halves = [part(h) for h in (sel[:sel.size // 2], sel[sel.size // 2:])]
             if all(h is None for h in halves):
                 return None
-            halves = [h if h is not None else {k: np.full(s.size, np.nan) for k in _QUANTITIES}
+            halves = [h if h is not None else {k: np.full(s.size, np.nan) for k in keys}
                       for h, s in zip(halves, (sel[:sel.size // 2], sel[sel.size // 2:]))]
-            return {k: np.concatenate([h[k] for h in halves]) for k in _QUANTITIES}
+            return {k: np.concatenate([h[k] for h in halves]) for k in keys}
 
     try:
         return call(np.arange(n))

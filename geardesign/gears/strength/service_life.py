@@ -119,6 +119,8 @@ def cycles_to_failure(ratio, points, sn_curve: str = "iso"):
     [5.0, 682.969341, inf]
     >>> round(float(cycles_to_failure(1.6 ** 0.5, pts)) / 1e6, 4)    # halfway in log-log: √(1e5·5e7)
     2.2361
+    >>> float(cycles_to_failure(float("nan"), pts))        # a stress not rated: no life, not an infinite one
+    nan
     """
     x, y, tail, slopes = _segments(points, sn_curve)
     yr = np.log(np.asarray(ratio, dtype=float))
@@ -132,8 +134,10 @@ def cycles_to_failure(ratio, points, sn_curve: str = "iso"):
     jj = np.minimum(np.maximum(j, 0), last - 1)
     inside = x[jj] + (yr - y[jj]) * slopes[jj]
     beyond = np.inf if tail is None else x[last] + tail * (y[last] - yr)
+    # a NaN ratio (a stress the chain could not rate: a root without a section where a caller's geometry is taken
+    # unvalidated) endures NaN cycles, not the horizontal tail's infinity: no damage is not its answer
     with np.errstate(over="ignore"):
-        return np.exp(np.where(j >= last, beyond, inside))
+        return np.exp(np.where(j >= last, np.where(np.isnan(yr), np.nan, beyond), inside))
 
 
 @functools.lru_cache(maxsize=256)

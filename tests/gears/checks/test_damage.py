@@ -146,3 +146,24 @@ def test_the_damage_model_far_from_its_centre_gives_no_overflow():
         r = gd.optimize_shifts(13, 40, checks={"spectrum": s, "material": "18CrNiMo7-6", "face_width_mm": 40.0,
                                                "damage_max": 1.0, "mean_stress_factor": 1.0}, m=8.0, method="exact")
     assert not r.success and "damage" in r.message and "holds nowhere" in r.message
+
+
+_NO_YIELD = dict(name="custom", kind="V", E_mpa=170000.0, nu=0.3, hardness=600.0, hardness_scale="HV",
+                 sigma_Hlim_mpa=740.0, sigma_Flim_mpa=300.0)
+
+
+@pytest.mark.parametrize("where", ["pair", "set"])
+def test_a_material_the_root_cannot_rate_is_refused_by_name_as_with_a_load(where):
+    """A through-hardened material without yield_mpa: the root's Y_δrelT needs it (ISO 6336-3:2019 clause 13), so the
+    chain refuses every design. With a load the solvers say so by name; with a spectrum the damage checks took the
+    refusal design by design (a chain call per grid node: minutes for a set), every margin NaN, and ended in
+    "no finite result ... check the window" (fuzz planetary_spectrum). Now the same refusal as with a load."""
+    mat = gd.Material(**_NO_YIELD)
+    spec = gd.LoadSpectrum.from_bins([100.0, -40.0], 1000, time_h=[100, 50])
+    for case in ({"load": gd.Load(torque_nm=100, n_rpm=1000)}, {"spectrum": spec, "mean_stress_factor": 0.7}):
+        checks = {**case, "material": mat, "face_width_mm": 20.0}
+        with pytest.raises(GearDesignError, match="needs yield_mpa"):
+            if where == "pair":
+                gd.optimize_shifts(20, 60, m=2, checks=checks, method="grid", grid_n=21)
+            else:
+                gd.optimize_planetary_shifts(21, 43, 108, 3, 1.0, checks=checks, method="grid", grid_n=21)

@@ -110,6 +110,18 @@ def test_sn_curve_variants_beyond_the_knee():
         cycles_to_failure(1.0, pts, "miner")
 
 
+@pytest.mark.parametrize("variant", ["iso", "original", "elementary", "haibach"])
+def test_a_stress_not_rated_endures_no_counted_cycles(variant):
+    """A NaN ratio (the chain's stress where a caller's unvalidated geometry has no root section) is NaN cycles in
+    every variant, so its damage is NaN (the check fails as undefined), never the infinite life of a stress below
+    the endurance limit: before the fix (fuzz planetary_spectrum) NaN fell past every point onto the horizontal
+    tail, D = 0. The ratios around it keep their values (_contact_N)."""
+    pts = life_curve("H", "Eh")
+    N = cycles_to_failure(np.array([1.2, np.nan, 0.8]), pts, variant)
+    assert math.isnan(N[1]) and N[0] == pytest.approx(_contact_N(1.2), rel=1e-12)
+    assert N[2] == math.inf if variant in ("iso", "original") else N[2] > 5e7
+
+
 def test_torque_exponents_of_annex_a():
     # the stress exponents of the finite-life lines, in torque (contact halves them)
     assert torque_exponent("H", "Eh") == pytest.approx(math.log(500) / math.log(1.6) / 2, rel=1e-14)
