@@ -299,6 +299,8 @@ def run(args) -> int:
                                                                           format="png"))
         finally:
             plt.close(ax.figure)
+        # said as the report is (stderr: --json keeps stdout pure)
+        print(f"{'diagram' if draw == 'plot' else 'shaft layout'} written to {path}", file=sys.stderr)
     if args.report and an is not None:
         drive_report(an, args.report, overwrite=args.overwrite)
         print(f"report written to {args.report}", file=sys.stderr)

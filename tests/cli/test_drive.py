@@ -37,7 +37,8 @@ def test_drive_plot_written_whole_and_not_overwritten(tmp_path, capsys):
     png = tmp_path / "drive.png"
     assert main(["drive", SEED, "--plot", str(png)]) == 0
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    capsys.readouterr()
+    # said as the report is (the new user's finding: --report said so, --plot did not)
+    assert f"diagram written to {png}" in capsys.readouterr().err
     assert main(["drive", SEED, "--plot", str(png)]) == 2
     assert "--overwrite" in capsys.readouterr().err
 
@@ -295,6 +296,7 @@ def test_layout_plot_needs_shafts_and_is_written_whole(tmp_path, capsys):
     assert len(err) == 1 and "--layout-plot" in err[0] and not png.exists()
     assert main(["drive", path, "--shafts", "--layout-plot", str(png)]) in (0, 1)
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert f"shaft layout written to {png}" in capsys.readouterr().err
 
 
 def test_reports_carry_the_shafting(tmp_path, capsys):
