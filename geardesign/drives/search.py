@@ -36,6 +36,7 @@ from .limits import (CANDIDATES_MAX, COMBINATION_BLOCK, COMBINATIONS_MAX, INFEAS
 from .pruning import StageBounds, pruned_combinations
 from .stage_kinds import Designs, StageFlow, kind_of   # Designs: re-exported here, where it was defined before
 from .spread import solve_spread
+from .shafting import thicker_bores
 from .stages import Shaft
 
 __all__ = ["Search", "Designs", "min_margin", "WALK_LABEL"]
@@ -657,9 +658,8 @@ class Search:
             # has smaller forces), tilting the mesh more, and the re-sizing would run away (a conveyor reducer's fast
             # stage grew from m 4 to m 20 so)
             bores = {k: d for k, d in an.shafting["seat_bores"].items() if d is not None}
-            sh = drive.shafting
-            fixed = replace(drive, stages=tuple(new), shafting=replace(sh, min_bore_mm={
-                **sh.min_bore_mm, **{k: max(d, sh.min_bore_mm.get(k, 0.0)) for k, d in bores.items()}}))
+            fixed = replace(drive, stages=tuple(new), shafting=replace(
+                drive.shafting, min_bore_mm=thicker_bores(drive.shafting.min_bore_mm, bores)))
             object.__setattr__(fixed, "_load_from_motor", self.drive._load_from_motor)
             try:
                 drive, an = fixed, fixed.analyse(self.objective)

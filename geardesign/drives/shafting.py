@@ -277,6 +277,15 @@ class Shafting:
         return next((s for s in self.layout if s.at == at), None)
 
 
+def thicker_bores(bores: dict, more: dict) -> dict:
+    """{shaft: least bore} of ``bores`` and ``more`` together, each shaft's larger (a least bore only grows).
+
+    >>> thicker_bores({0: 30.0, 1: 40.0}, {1: 35.0, 2: 50.0})
+    {0: 30.0, 1: 40.0, 2: 50.0}
+    """
+    return {**bores, **{k: max(d, bores.get(k, 0.0)) for k, d in more.items()}}
+
+
 def _min_bores(given) -> dict:
     """``min_bore_mm`` checked by name: None or {shaft k >= 0: a bore in mm}."""
     if given is None:

@@ -39,7 +39,7 @@ import numpy as np
 
 from ..errors import GearDesignError
 from .shaft_beam import E_STEEL_MPA
-from .shafting import FILLET_MM, STEP_MM, default_positions
+from .shafting import FILLET_MM, STEP_MM, default_positions, thicker_bores
 
 __all__ = ["Element", "element_loads", "two_support_reactions", "shaft_deflections", "beam_deflections",
            "analyse_shafting", "iso_f_sh_um", "cut_on_shaft",
@@ -814,7 +814,7 @@ def analyse_shafting(drive, stages_out, n, T, least_bore=None) -> dict:
                                   f"{', '.join(map(str, sorted(elements))) or 'none'})")
     planes = _gear_planes(drive, stages_out, elements)
     grids = {k: _seat_bores(sh, k) for k in elements}
-    least_bore = {**sh.min_bore_mm, **{k: max(d, sh.min_bore_mm.get(k, 0.0)) for k, d in (least_bore or {}).items()}}
+    least_bore = thicker_bores(sh.min_bore_mm, least_bore or {})
     placed = {k: _placed(sh, k, elements[k], planes, grids[k], float(n[k]), _at_least(grids[k], least_bore.get(k)))
               for k in sorted(elements)}
     stiffened = {k for k, d in least_bore.items() if k in grids and sh.given(k) is None and d > grids[k][0]}
@@ -944,7 +944,7 @@ def stiffened_for_gears(drive, kinds, stages_out, stage_rows, shafting, n, T, ob
                     grow[j] = max(grow.get(j, 0.0), nxt)
         if not grow:
             break
-        least = {**least, **grow}
+        least = thicker_bores(least, grow)
         shafts = analyse_shafting(drive, stages_out, n, T, least_bore=least)
         shafts["efficiency"] = shafting.get("efficiency")
         now = with_shaft_misalignment(drive, kinds, stages_out, stage_rows, shafts["f_sh"], objective)

@@ -105,13 +105,8 @@ def grid_starts(prob: Problem, V: np.ndarray, n: int):
         # only the margins some candidate misses decide whether it is near
         missed = M[((M < 0) & cand).any(axis=1)]
         Mg = np.where(np.isfinite(missed), missed, np.nan).reshape((-1,) + shape)
-        step = np.zeros_like(Mg)   # the largest one-node change of each margin, along either axis
-        for ax in range(1, prob.nvar + 1):
-            before = (slice(None),) * ax + (slice(1, None),)
-            after = (slice(None),) * ax + (slice(None, -1),)
-            d = np.abs(Mg[before] - Mg[after])
-            np.fmax(step[before], d, out=step[before])     # the change to the node before
-            np.fmax(step[after], d, out=step[after])       # and to the node after (NaN where one is missing)
+        # the largest one-node change of each margin, along either axis (a missing neighbour ignored)
+        step = functools.reduce(np.fmax, _axis_changes(Mg, range(1, prob.nvar + 1)))
         near = (missed + step.reshape(missed.shape) >= 0).all(axis=0)   # step >= 0, never NaN
         near_score = np.where(cand & near, fun, -np.inf).reshape(shape)
         if np.isfinite(near_score).any():
@@ -137,15 +132,22 @@ def one_node_change(F: np.ndarray) -> np.ndarray:
     array([[4. , 3.5],
            [3.5, 3. ]])
     """
-    total = np.zeros_like(F, dtype=float)
-    for ax in range(F.ndim):
-        step = np.zeros_like(total)
+    return sum(_axis_changes(F, range(F.ndim), missing=np.inf))
+
+
+def _axis_changes(F: np.ndarray, axes, missing=None) -> list:
+    """For each of ``axes``, the largest change of F from each node to a neighbour along that axis; a change to a
+    neighbour whose value is not finite (NaN) is ignored, or is ``missing`` when given."""
+    out = []
+    for ax in axes:
+        step = np.zeros(F.shape)
         before = (slice(None),) * ax + (slice(1, None),)
         after = (slice(None),) * ax + (slice(None, -1),)
         with np.errstate(invalid="ignore"):
             d = np.abs(F[before] - F[after])
-        d = np.where(np.isnan(d), np.inf, d)
-        np.fmax(step[before], d, out=step[before])
-        np.fmax(step[after], d, out=step[after])
-        total += step
-    return total
+        if missing is not None:
+            d = np.where(np.isnan(d), missing, d)
+        np.fmax(step[before], d, out=step[before])     # the change to the node before
+        np.fmax(step[after], d, out=step[after])       # and to the node after
+        out.append(step)
+    return out

@@ -202,17 +202,24 @@ class MaxLife(Objective):
         return out
 
     def pieces(self, geo):
-        return tuple(-np.log(np.maximum(np.asarray(c.value(geo), dtype=float)[()], DAMAGE_FLOOR))
-                     for c in self.checks)
+        return tuple(life_piece(c.value(geo)) for c in self.checks)
 
     def piece_gradients(self, geo):
-        out = []
-        for c in self.checks:      # ∂(−ln D)/∂x = −(∂D/∂x)/D; 0 where there is no damage
-            D = np.asarray(c.value(geo), dtype=float)[()]
-            g1, g2 = c.spec.damage(geo, gradients=True)[f"dD_{c.mode}{c.gear}"]
-            with np.errstate(divide="ignore", invalid="ignore"):
-                out.append(tuple(np.where(D > DAMAGE_FLOOR, -np.asarray(g) / D, 0.0)[()] for g in (g1, g2)))
+        out = [life_piece_gradient(c.value(geo), c.spec.damage(geo, gradients=True)[f"dD_{c.mode}{c.gear}"])
+               for c in self.checks]
         return [tuple(float(v) if np.ndim(v) == 0 else v for v in g) for g in out]
+
+
+def life_piece(D):
+    """max_life's piece of a damage sum D: −ln D = ln(L/L_req), D floored at :data:`DAMAGE_FLOOR` (no damage)."""
+    return -np.log(np.maximum(np.asarray(D, dtype=float)[()], DAMAGE_FLOOR))
+
+
+def life_piece_gradient(D, grad) -> tuple:
+    """∂(−ln D)/∂x = −(∂D/∂x)/D of :func:`life_piece` for ``grad`` = (∂D/∂x1, ∂D/∂x2); 0 where there is no damage."""
+    D = np.asarray(D, dtype=float)[()]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return tuple(np.where(D > DAMAGE_FLOOR, -np.asarray(g) / D, 0.0)[()] for g in grad)
 
 
 class CustomObjective(Objective):

@@ -33,7 +33,8 @@ from ..results import Result
 from ..validate import one_number, require_choice, require_count, require_range
 from .center_distance import x_sum_for_housing
 from .grid import GRID_N_MAX
-from .objectives import DAMAGE_FLOOR, CustomObjective, Objective, default_objective, unlimited_life_note
+from .objectives import (CustomObjective, Objective, default_objective, life_piece, life_piece_gradient,
+                         unlimited_life_note)
 from .optimize import DEFAULT_TOL, METHODS, solve_problem
 from .problem import _FLOAT_FAULTS, DEFAULT_BOUNDS, Problem, _holds_meshing, validate_bounds, with_meshing
 from .looks import margin_bars
@@ -75,8 +76,7 @@ class _SetObjective(Objective):
         if isinstance(self.inner, CustomObjective):
             return self.inner.pieces(geo)
         # the planet's flanks as max_life reads a pair's damage: −ln D of each
-        planet = tuple(-np.log(np.maximum(np.asarray(D, dtype=float)[()], DAMAGE_FLOOR))
-                       for c in self.planet for D in c.flank_damage(geo))
+        planet = tuple(life_piece(D) for c in self.planet for D in c.flank_damage(geo))
         return tuple(p for tag in self.meshes for p in self.of_mesh[tag].pieces(geo[tag])) + planet
 
     def piece_gradients(self, geo):
@@ -84,11 +84,8 @@ class _SetObjective(Objective):
         for tag in self.meshes:
             for g1, g2 in self.of_mesh[tag].piece_gradients(geo[tag]):
                 out.append((g1, g2) if tag == "sun-planet" else (g2 * geo["_r"], g1 + g2 * (1.0 + geo["_r"])))
-        for c in self.planet:       # ∂(−ln D)/∂x = −(∂D/∂x)/D; 0 where there is no damage
-            for D, grad in zip(c.flank_damage(geo), c.flank_damage_gradients(geo)):
-                D = np.asarray(D, dtype=float)[()]
-                with np.errstate(divide="ignore", invalid="ignore"):
-                    out.append(tuple(np.where(D > DAMAGE_FLOOR, -np.asarray(g) / D, 0.0)[()] for g in grad))
+        for c in self.planet:
+            out += [life_piece_gradient(D, grad) for D, grad in zip(c.flank_damage(geo), c.flank_damage_gradients(geo))]
         return out
 
 
