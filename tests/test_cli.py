@@ -66,3 +66,19 @@ def test_without_ctrl_c_the_same_child_runs_the_command(tmp_path):
                            "--z1", "20", "--z2", "40"], capture_output=True, text=True, cwd=tmp_path, env=env,
                           timeout=120)
     assert proc.returncode == 0 and proc.stdout.startswith("OK:") and "Spur pair" in proc.stdout, proc.stderr
+
+
+def test_a_reader_that_stops_early_is_not_a_pass():
+    # `geardesign pair ... | head -1` on a failing design exited 0 when head closed the pipe first (the verdict
+    # line read, the rest not written): now 141, the shell's status of a writer whose reader went away. The pipe's
+    # timing decides whether it closes first, so the command's run is made to meet a closed pipe here
+    import subprocess
+    import sys
+
+    script = ("import sys, geardesign.cli.pair as p\n"
+              "def cut(args):\n    raise BrokenPipeError\n"
+              "p.run = cut\n"
+              "from geardesign.cli import main\n"
+              "sys.exit(main(['pair', '--module', '8', '--z1', '17', '--z2', '26']))\n")
+    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert proc.returncode == 141 and proc.stdout == "" and proc.stderr == ""

@@ -38,9 +38,13 @@ def build_parser():
     return parser
 
 
+BROKEN_PIPE = 141   # the exit status when the output's reader stops early (`geardesign pair ... | head -1`)
+
+
 def main(argv=None) -> int:
     """Run one command; exit status 0 (done), 1 (no feasible design), 2 (bad input, one line on
-    stderr) or 130 (Ctrl-C, one line on stderr, no traceback, nothing written)."""
+    stderr), 130 (Ctrl-C, one line on stderr, no traceback, nothing written) or 141 (the output's reader stopped
+    reading early)."""
     try:
         code = _main(argv)
     except KeyboardInterrupt:   # during start-up: the imports and the parser
@@ -84,7 +88,9 @@ def _main(argv) -> int:
         import os
 
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return 0
+        # 141 (128 + SIGPIPE), as a writer whose reader went away ends in a shell: not 0, which would say a design
+        # passes when its verdict line was read but its checks were not all written
+        return BROKEN_PIPE
     except KeyboardInterrupt:   # outputs are written whole or not at all (geardesign.files)
         print(f"geardesign {args.command}: interrupted, nothing written", file=sys.stderr)
         return 130
